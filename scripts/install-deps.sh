@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs every Debian package pamsim needs to build, test, plot and render.
+# Idempotent: when all are present it only asks dpkg, which takes well under a second.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libmujoco-dev libqhull-dev libgl-dev      # MuJoCo 2.2.2; its CMake config needs qhull and OpenGL
+  libsundials-dev                            # CVODE 6.4 for the valve and chamber ODE
+  libeigen3-dev                              # least squares in identification
+  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+  libsqlite3-dev                             # sweep results
+  libosmesa6-dev                             # headless rendering
+  libavcodec-dev libavformat-dev libswscale-dev libavutil-dev   # MP4 encoding
+  gnuplot-nox                                # plots (pngcairo terminal)
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+if [ "$(id -u)" -ne 0 ]; then
+  SUDO=sudo
+else
+  SUDO=
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
