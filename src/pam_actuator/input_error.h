@@ -14,3 +14,14 @@ class InputError : public std::runtime_error {
 };
 
 }  // namespace pamsim
+
+namespace pamsim {
+
+// Thrown by a command whose run finished but whose simulation diverged: the details were
+// already printed, one line per trial; main() exits non-zero without another message.
+class SimulationFailed : public std::runtime_error {
+ public:
+  SimulationFailed() : std::runtime_error("simulation diverged") {}
+};
+
+}  // namespace pamsim

@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const pamsim::SimulationFailed&) {
+    return 4;
   } catch (const pamsim::InputError& e) {
     std::cerr << "pamsim: " << e.what() << "\n";
     return 2;

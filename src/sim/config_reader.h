@@ -1,0 +1,66 @@
+// config_reader.h: typed, validated access to a TOML document (scenarios, sweeps).
+// Every key read is marked; reject_unknown() then names the first key nobody asked for,
+// so a typo is an error, not a silently ignored setting. `--set a.b=v` overrides are
+// applied to the document before reading and go through exactly the same checks.
+#pragma once
+
+#include <cstdint>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+namespace pamsim {
+
+class ConfigReader {
+ public:
+  // Parses `path`. Throws InputError "<path>: <problem>" (missing file, syntax error + line).
+  explicit ConfigReader(const std::string& path);
+  // For tests and inline documents.
+  ConfigReader(const std::string& text, const std::string& name);
+
+  // Applies "a.b=value" (value parsed as TOML: 1.5, true, "x", [1,2]; bare words become
+  // strings). Throws InputError "--set <arg>: ..." when malformed.
+  void apply_override(const std::string& assignment);
+
+  bool has(const std::string& key) const;
+  double get_double(const std::string& key, double fallback);
+  double require_double(const std::string& key);
+  std::int64_t get_int(const std::string& key, std::int64_t fallback);
+  bool get_bool(const std::string& key, bool fallback);
+  std::string get_string(const std::string& key, const std::string& fallback);
+  std::string require_string(const std::string& key);
+  // A path value, resolved relative to the folder of the file that holds the document.
+  std::string get_path(const std::string& key, const std::string& fallback);
+  // A table of tables or values the caller interprets itself (marks the whole subtree read).
+  const toml::node* raw(const std::string& key);
+
+  // Throws InputError naming the first key that was never read.
+  void reject_unknown() const;
+
+  // "<file>: <key> <problem>" (with "--set" named when the key came from an override).
+  [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
+  const std::string& name() const { return name_; }
+  std::string directory() const;
+
+  // Convenience checks that throw through fail().
+  void check(bool ok, const std::string& key, const std::string& problem) const {
+    if (!ok) fail(key, problem);
+  }
+
+ private:
+  const toml::node* find(const std::string& key) const;
+  void collect_leaves(const toml::table& t, const std::string& prefix,
+                      std::vector<std::string>* out) const;
+
+  toml::table doc_;
+  std::string name_;
+  std::set<std::string> read_;
+  std::set<std::string> overridden_;
+};
+
+// Formats a double for messages without trailing noise ("-0.2", "1e-09", "nan").
+std::string format_value(double v);
+
+}  // namespace pamsim

@@ -1,0 +1,41 @@
+// pam_callback.h: the MuJoCo binding of the PAM force law (Eq. (1)-(5)).
+//
+// MuJoCo 2.2.2 has no plugins: each PAM is a `general` actuator on its tendon with
+// biastype="user"; the process-global mjcb_act_bias calls pam_actuator_force, a pure
+// function of (m, d, id). Everything it needs is in the model or the trial's data:
+//   m->actuator_user[id * nuser_actuator + k], k = 0..10 (written by store_pam_in_model):
+//     0 law (0 eq3, 1 eq4, 2 eq5), 1 m [m/Pa], 2 h [m], 3..8 SI coefficients,
+//     9 line length [m], 10 index into d->userdata of this PAM's chamber gauge pressure [Pa]
+// PAM length l = tendon length - line length; d = l - l_n(p); the force pulls only
+// (the actuator force is -f, f >= 0) and is zero when the PAM is slack (d <= 0).
+#pragma once
+
+#include <mujoco/mujoco.h>
+
+#include "pam_actuator/spring_model.h"
+
+namespace pamsim {
+
+inline constexpr int kPamUserSize = 11;
+
+// Writes the PAM's parameters into actuator `id`'s user slots. Throws InputError if the
+// model declares nuser_actuator < kPamUserSize or the actuator is not a user-bias tendon
+// actuator; `path` names the model file in the message.
+void store_pam_in_model(mjModel* m, int actuator_id, const SpringModel& spring,
+                        double line_length_m, int userdata_index, const char* path);
+
+// The spring model stored in actuator `id`'s user slots.
+SpringModel pam_spring_from_model(const mjModel* m, int actuator_id);
+double pam_line_length(const mjModel* m, int actuator_id);
+int pam_userdata_index(const mjModel* m, int actuator_id);
+
+// PAM length [m] from the actuator's (tendon) length.
+double pam_length(const mjModel* m, const mjData* d, int actuator_id);
+
+// The mjcb_act_bias callback: actuator force [N] (<= 0, a pull).
+mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int actuator_id);
+
+// Sets mjcb_act_bias once per process (called by install_mujoco_handlers).
+void install_pam_actuator_callback();
+
+}  // namespace pamsim

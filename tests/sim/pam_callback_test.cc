@@ -1,0 +1,121 @@
+// pam_callback_test.cc: the MuJoCo binding applies exactly the pam_actuator force law.
+#include "sim/pam_callback.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <memory>
+
+#include "pam_actuator/input_error.h"
+#include "pam_actuator/units.h"
+#include "sim/mujoco_util.h"
+
+namespace pamsim {
+namespace {
+
+// A slider pulled by one PAM on a fixed tendon: tendon length = qpos, moment arm 1.
+constexpr char kSliderXml[] = R"(
+<mujoco>
+  <size nuser_actuator="11" nuserdata="2"/>
+  <option gravity="0 0 0"/>
+  <worldbody>
+    <body>
+      <joint name="slide" type="slide" axis="1 0 0"/>
+      <geom type="sphere" size="0.01" mass="1"/>
+    </body>
+  </worldbody>
+  <tendon><fixed name="t"><joint joint="slide" coef="1"/></fixed></tendon>
+  <actuator>
+    <general name="pam" tendon="t" biastype="user" gaintype="fixed" gainprm="0"
+             forcelimited="true" forcerange="-5000 0"/>
+  </actuator>
+</mujoco>)";
+
+// Loads MJCF text through MuJoCo's virtual file system (mjVFS is large: heap, not stack).
+MjModelPtr load_inline(const char* xml, const char* name) {
+  install_mujoco_handlers();
+  auto vfs = std::make_unique<mjVFS>();
+  mj_defaultVFS(vfs.get());
+  const int size = static_cast<int>(std::strlen(xml));
+  mj_makeEmptyFileVFS(vfs.get(), name, size);
+  std::memcpy(vfs->filedata[vfs->nfile - 1], xml, size);
+  char error[512] = "";
+  MjModelPtr m(mj_loadXML(name, vfs.get(), error, sizeof(error)));
+  mj_deleteVFS(vfs.get());
+  EXPECT_TRUE(m) << error;
+  return m;
+}
+
+class PamCallbackTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    model_ = load_inline(kSliderXml, "slider.xml");
+    ASSERT_TRUE(model_);
+    spring_ = spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,
+                                            {0.911, 0.256, 7.00, -0.201, 0, 0});
+    store_pam_in_model(model_.get(), 0, spring_, kLineLength, 1, "slider.xml");
+    data_ = make_data(model_.get());
+  }
+
+  // actuator force for a PAM length (through the tendon) and a pressure
+  double actuator_force(double pam_length_m, double p_pa) {
+    data_->qpos[0] = pam_length_m + kLineLength;
+    data_->userdata[1] = p_pa;
+    mj_forward(model_.get(), data_.get());
+    return data_->actuator_force[0];
+  }
+
+  static constexpr double kLineLength = 0.3;
+  MjModelPtr model_;
+  MjDataPtr data_;
+  SpringModel spring_;
+};
+
+TEST_F(PamCallbackTest, AppliedForceEqualsTheLaw) {
+  for (double p_mpa : {0.1, 0.25, 0.4, 0.6, 0.8}) {
+    const double p = units::mpa_to_pa(p_mpa);
+    for (double d_mm : {0.5, 2.0, 5.0, 10.0, 20.0}) {
+      const double l = natural_length(spring_, p) + units::mm_to_m(d_mm);
+      const double expected = spring_force(spring_, p, units::mm_to_m(d_mm));
+      ASSERT_GT(expected, 0.0);
+      EXPECT_NEAR(-actuator_force(l, p), expected, 1e-9 * expected) << p_mpa << " MPa " << d_mm;
+    }
+  }
+}
+
+TEST_F(PamCallbackTest, Table4AgonistAt10mmPulls54_67N) {
+  const double p = units::mpa_to_pa(0.4);
+  const double l = natural_length(spring_, p) + 0.010;
+  EXPECT_NEAR(-actuator_force(l, p), 54.67, 1e-9 * 54.67);
+}
+
+TEST_F(PamCallbackTest, ShorterThanNaturalLengthIsSlack) {
+  const double p = units::mpa_to_pa(0.4);
+  for (double short_by_mm : {0.0, 0.1, 5.0, 40.0}) {
+    const double l = natural_length(spring_, p) - units::mm_to_m(short_by_mm);
+    EXPECT_EQ(actuator_force(l, p), 0.0) << short_by_mm;
+  }
+}
+
+TEST_F(PamCallbackTest, PullsOnlyAndMovesTheSliderTowardShorter) {
+  const double p = units::mpa_to_pa(0.4);
+  data_->qpos[0] = natural_length(spring_, p) + 0.01 + kLineLength;
+  data_->userdata[1] = p;
+  mj_forward(model_.get(), data_.get());
+  EXPECT_LT(data_->actuator_force[0], 0.0);
+  EXPECT_LT(data_->qacc[0], 0.0);
+}
+
+TEST_F(PamCallbackTest, RejectsModelsWithoutRoomForParameters) {
+  constexpr char kSmall[] = R"(<mujoco><size nuser_actuator="3"/><worldbody><body>
+    <joint name="j" type="slide"/><geom size="0.1" mass="1"/></body></worldbody>
+    <tendon><fixed name="t"><joint joint="j" coef="1"/></fixed></tendon>
+    <actuator><general tendon="t" biastype="user"/></actuator></mujoco>)";
+  MjModelPtr small = load_inline(kSmall, "small.xml");
+  ASSERT_TRUE(small);
+  EXPECT_THROW(store_pam_in_model(small.get(), 0, spring_, 0.1, 0, "small.xml"), InputError);
+}
+
+}  // namespace
+}  // namespace pamsim
