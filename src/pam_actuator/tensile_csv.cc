@@ -1,0 +1,127 @@
+// tensile_csv.cc: write and read tensile-test CSV files, see tensile_csv.h.
+#include "pam_actuator/tensile_csv.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "pam_actuator/input_error.h"
+
+namespace pamsim {
+namespace {
+
+constexpr const char* kRequired[] = {"pressure_MPa", "deformation_mm", "force_N", "length_mm"};
+
+// shortest decimal text that reads back to the same double
+std::string format_number(double x) {
+  char buf[40];
+  for (int digits : {15, 16, 17}) {
+    std::snprintf(buf, sizeof(buf), "%.*g", digits, x);
+    if (std::strtod(buf, nullptr) == x) break;
+  }
+  return buf;
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream in(line);
+  std::string cell;
+  while (std::getline(in, cell, ',')) cells.push_back(trim(cell));
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+// a finite number, the whole cell consumed
+double parse_cell(const std::string& cell, const std::string& where) {
+  if (cell.empty()) throw InputError(where + ": empty cell, a number is required");
+  char* end = nullptr;
+  const double v = std::strtod(cell.c_str(), &end);
+  if (end != cell.c_str() + cell.size()) {
+    throw InputError(where + ": \"" + cell + "\" is not a number");
+  }
+  if (!std::isfinite(v)) {
+    throw InputError(where + ": \"" + cell + "\" is not finite");
+  }
+  return v;
+}
+
+}  // namespace
+
+std::string tensile_rows_to_csv(const std::vector<TensileRow>& rows) {
+  std::string out = "pressure_MPa,deformation_mm,force_N,length_mm,direction\n";
+  for (const TensileRow& r : rows) {
+    out += format_number(r.pressure_mpa) + "," + format_number(r.deformation_mm) + "," +
+           format_number(r.force_n) + "," + format_number(r.length_mm) + "," +
+           to_string(r.direction) + "\n";
+  }
+  return out;
+}
+
+std::vector<TensileRow> read_tensile_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open tensile data file");
+
+  // header: locate the required columns and the optional direction
+  std::string line;
+  if (!std::getline(in, line)) throw InputError(path + ": empty file, no header row");
+  const std::vector<std::string> header = split(line);
+  int col[4];
+  int direction_col = -1;
+  for (int k = 0; k < 4; ++k) {
+    col[k] = -1;
+    for (size_t c = 0; c < header.size(); ++c) {
+      if (header[c] == kRequired[k]) col[k] = static_cast<int>(c);
+    }
+    if (col[k] < 0) {
+      throw InputError(path + ": header: missing column " + kRequired[k] +
+                       " (required: pressure_MPa, deformation_mm, force_N, length_mm)");
+    }
+  }
+  for (size_t c = 0; c < header.size(); ++c) {
+    if (header[c] == "direction") direction_col = static_cast<int>(c);
+  }
+
+  // data rows; row numbers count file lines, the header is row 1
+  std::vector<TensileRow> rows;
+  for (int line_no = 2; std::getline(in, line); ++line_no) {
+    if (trim(line).empty()) continue;
+    const std::vector<std::string> cells = split(line);
+    const std::string row_name = path + ": row " + std::to_string(line_no);
+    if (cells.size() < header.size()) {
+      throw InputError(row_name + ": " + std::to_string(cells.size()) + " cells, the header has " +
+                       std::to_string(header.size()));
+    }
+    double v[4];
+    for (int k = 0; k < 4; ++k) {
+      v[k] = parse_cell(cells[col[k]], row_name + ", column " + kRequired[k]);
+    }
+    if (v[0] < 0.0) {
+      throw InputError(row_name + ", column pressure_MPa: negative pressure " + cells[col[0]] +
+                       " (gauge pressure must be >= 0)");
+    }
+    TensileRow r{v[0], v[1], v[2], v[3], StrokeDirection::kLoading};
+    if (direction_col >= 0) {
+      const std::string& d = cells[direction_col];
+      if (d == "unloading") {
+        r.direction = StrokeDirection::kUnloading;
+      } else if (d != "loading") {
+        throw InputError(row_name + ", column direction: \"" + d +
+                         "\" (allowed: loading, unloading)");
+      }
+    }
+    rows.push_back(r);
+  }
+  if (rows.empty()) throw InputError(path + ": no data rows after the header");
+  return rows;
+}
+
+}  // namespace pamsim

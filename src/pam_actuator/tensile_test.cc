@@ -1,0 +1,99 @@
+// tensile_test.cc: the virtual static tensile test, see tensile_test.h.
+#include "pam_actuator/tensile_test.h"
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "pam_actuator/input_error.h"
+#include "pam_actuator/units.h"
+
+namespace pamsim {
+namespace {
+
+void require(bool ok, const std::string& message) {
+  if (!ok) throw InputError(message);
+}
+
+// deformation set points of one pressure: up in steps to max, then back down to 0;
+// the turning point is recorded on both strokes (once reached while loading, again
+// after the reversal), so every set point has a loading and an unloading sample
+std::vector<std::pair<double, StrokeDirection>> stroke(double step, double max) {
+  std::vector<double> up;
+  for (int k = 0; k * step < max - 1e-9 * step; ++k) up.push_back(k * step);
+  up.push_back(max);
+  std::vector<std::pair<double, StrokeDirection>> out;
+  for (double d : up) out.emplace_back(d, StrokeDirection::kLoading);
+  for (int k = static_cast<int>(up.size()) - 1; k >= 0; --k) {
+    out.emplace_back(up[k], StrokeDirection::kUnloading);
+  }
+  return out;
+}
+
+}  // namespace
+
+const char* to_string(StrokeDirection direction) {
+  return direction == StrokeDirection::kLoading ? "loading" : "unloading";
+}
+
+void validate_tensile_options(const TensileTestOptions& o) {
+  require(!o.pressures_mpa.empty(), "tensile test: pressures_MPa: the list is empty");
+  for (double p : o.pressures_mpa) {
+    require(std::isfinite(p) && p > 0.0,
+            "tensile test: pressures_MPa: every pressure must be > 0 MPa, got " +
+                std::to_string(p));
+  }
+  require(std::isfinite(o.step_mm) && o.step_mm > 0.0,
+          "tensile test: step_mm must be > 0, got " + std::to_string(o.step_mm));
+  require(std::isfinite(o.max_deformation_mm) && o.max_deformation_mm >= o.step_mm,
+          "tensile test: max_deformation_mm must be >= the step (" +
+              std::to_string(o.step_mm) + " mm), got " + std::to_string(o.max_deformation_mm));
+  require(std::isfinite(o.hysteresis) && o.hysteresis >= 0.0 && o.hysteresis < 0.5,
+          "tensile test: hysteresis must be in [0, 0.5), got " + std::to_string(o.hysteresis));
+  const std::pair<const char*, double> noises[] = {{"noise_pressure_MPa", o.noise_pressure_mpa},
+                                                   {"noise_force_N", o.noise_force_n},
+                                                   {"noise_length_mm", o.noise_length_mm}};
+  for (const auto& [name, sd] : noises) {
+    require(std::isfinite(sd) && sd >= 0.0, std::string("tensile test: ") + name +
+                                                " must be a finite standard deviation >= 0, "
+                                                "got " + std::to_string(sd));
+  }
+}
+
+std::vector<TensileRow> run_tensile_test(const ForceLaw& force, const NaturalLengthLaw& l_n,
+                                         const TensileTestOptions& options) {
+  validate_tensile_options(options);
+  std::mt19937_64 rng(options.seed);
+  std::normal_distribution<double> unit_normal(0.0, 1.0);
+  const auto noise = [&](double sd) { return sd > 0.0 ? sd * unit_normal(rng) : 0.0; };
+
+  std::vector<TensileRow> rows;
+  for (double p_mpa : options.pressures_mpa) {
+    const double p_pa = units::mpa_to_pa(p_mpa);
+    const double l_n_mm = units::m_to_mm(l_n(p_pa));
+    for (const auto& [d_mm, direction] : stroke(options.step_mm, options.max_deformation_mm)) {
+      // true force with friction hysteresis: higher while loading, lower while unloading
+      const double sign = direction == StrokeDirection::kLoading ? 1.0 : -1.0;
+      const double f = force(p_pa, units::mm_to_m(d_mm)) * (1.0 + sign * options.hysteresis);
+
+      // sensors: pressure gauge, force gauge, length encoder
+      TensileRow row;
+      row.direction = direction;
+      row.pressure_mpa = p_mpa + noise(options.noise_pressure_mpa);
+      row.force_n = f + noise(options.noise_force_n);
+      const double e_l = noise(options.noise_length_mm);
+      row.deformation_mm = d_mm + e_l;
+      row.length_mm = l_n_mm + d_mm + e_l;   // Eq. (1)
+      rows.push_back(row);
+    }
+  }
+  return rows;
+}
+
+std::vector<TensileRow> run_tensile_test(const SpringModel& model,
+                                         const TensileTestOptions& options) {
+  return run_tensile_test([&model](double p, double d) { return spring_force(model, p, d); },
+                          [&model](double p) { return natural_length(model, p); }, options);
+}
+
+}  // namespace pamsim

@@ -1,0 +1,61 @@
+// tensile_test.h: a virtual static tensile test following the protocol of seeds/000,
+// Sec. II-B: at each constant pressure the PAM is stretched from its natural length in
+// 2.5 mm steps up to a maximum deformation, then relaxed in 2.5 mm steps back to 0;
+// pressure, deformation, force and length are recorded at every point. Optional
+// hysteresis and Gaussian sensor noise make the data look like a real test.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "pam_actuator/spring_model.h"
+
+namespace pamsim {
+
+enum class StrokeDirection { kLoading, kUnloading };
+// "loading", "unloading"
+const char* to_string(StrokeDirection direction);
+
+// One measured point in the paper's units.
+struct TensileRow {
+  double pressure_mpa = 0.0;     // measured gauge pressure p [MPa]
+  double deformation_mm = 0.0;   // measured deformation d from l_n [mm]
+  double force_n = 0.0;          // measured force f [N]
+  double length_mm = 0.0;        // measured length l = l_n + d [mm], Eq. (1)
+  StrokeDirection direction = StrokeDirection::kLoading;
+};
+
+struct TensileTestOptions {
+  std::vector<double> pressures_mpa{0.4, 0.5, 0.6, 0.7, 0.8};   // the paper's PAM A-C set
+  double step_mm = 2.5;                  // > 0
+  double max_deformation_mm = 20.0;      // >= step_mm
+  double hysteresis = 0.0;               // in [0, 0.5): loading f (1+h), unloading f (1-h)
+  double noise_pressure_mpa = 0.0;       // standard deviations, >= 0
+  double noise_force_n = 0.0;
+  double noise_length_mm = 0.0;
+  std::uint64_t seed = 1;                // std::mt19937_64 seed: same seed, same data
+};
+
+// Throws InputError naming the option for an empty or non-positive pressure list, a
+// non-positive step, max < step, hysteresis outside [0, 0.5), negative or non-finite noise.
+void validate_tensile_options(const TensileTestOptions& options);
+
+// force [N] from gauge pressure [Pa] and deformation [m]
+using ForceLaw = std::function<double(double p_pa, double d_m)>;
+// natural length [m] from gauge pressure [Pa]
+using NaturalLengthLaw = std::function<double(double p_pa)>;
+
+// Runs the protocol with any force law. Rows are ordered by pressure, then loading
+// (d = 0, step, ..., max) and unloading (max, max - step, ..., 0). The paper does not say
+// whether the turning point is measured twice; recording it on both strokes keeps the
+// two hysteresis branches balanced in a least-squares fit. Noise: one length sample per
+// point is added to both the deformation and the length (the encoder reads l).
+std::vector<TensileRow> run_tensile_test(const ForceLaw& force, const NaturalLengthLaw& l_n,
+                                         const TensileTestOptions& options);
+
+// Same with the spring model's Eq. (2) and Eq. (3)-(5).
+std::vector<TensileRow> run_tensile_test(const SpringModel& model,
+                                         const TensileTestOptions& options);
+
+}  // namespace pamsim
