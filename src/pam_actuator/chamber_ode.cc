@@ -1,0 +1,134 @@
+// chamber_ode.cc: valve + chamber right-hand side (see chamber_ode.h for the equations).
+#include "pam_actuator/chamber_ode.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "pam_actuator/input_error.h"
+
+namespace pamsim {
+
+ValveModel parse_valve_model(const std::string& name, const std::string& context) {
+  if (name == "iso6358") return ValveModel::kIso6358;
+  if (name == "first_order") return ValveModel::kFirstOrder;
+  throw InputError(context + ": unknown valve model \"" + name +
+                   "\", allowed iso6358 | first_order");
+}
+
+const char* valve_model_name(ValveModel model) {
+  return model == ValveModel::kIso6358 ? "iso6358" : "first_order";
+}
+
+double iso6358_flow_function(double r, double b, double r_lam) {
+  // choked (sonic) flow
+  if (r <= b) return 1.0;
+  // subsonic ellipse of ISO 6358-1
+  auto ellipse = [b](double x) {
+    const double s = (x - b) / (1.0 - b);
+    return std::sqrt(std::max(0.0, 1.0 - s * s));
+  };
+  if (r <= r_lam) return ellipse(r);
+  // laminar linearisation to zero flow at r = 1 (finite slope at equilibrium)
+  return ellipse(r_lam) * (1.0 - std::min(r, 1.0)) / (1.0 - r_lam);
+}
+
+double iso6358_mass_flow(const PneumaticParams& p, double p_up_pa, double p_down_pa) {
+  assert(p_up_pa > 0.0 && p_down_pa <= p_up_pa);
+  const double psi =
+      iso6358_flow_function(p_down_pa / p_up_pa, p.critical_pressure_ratio, p.laminar_ratio);
+  return p.sonic_conductance_m3_per_s_pa * kIso6358ReferenceDensityKgM3 * p_up_pa *
+         std::sqrt(kIso6358ReferenceTemperatureK / p.temperature_k) * psi;
+}
+
+PneumaticOde::PneumaticOde(const PneumaticParams& params, ValveModel model,
+                           std::vector<BraidGeometry> braid)
+    : params_(params), model_(model), braid_(std::move(braid)) {
+  validate_pneumatic_params(params_, "pneumatic parameters");
+  if (braid_.empty()) throw InputError("pneumatic ODE: at least one muscle is required");
+  for (std::size_t i = 0; i < braid_.size(); ++i) {
+    if (!(braid_[i].fibre_length_m > 0.0) || !(braid_[i].turns > 0.0)) {
+      throw InputError("pneumatic ODE: muscle " + std::to_string(i) +
+                       ": braid fibre length and turns must be > 0");
+    }
+  }
+  input_.resize(braid_.size());
+  for (Input& in : input_) in.p_cmd_abs = params_.atmospheric_pa;
+  flow_coefficient_ = params_.sonic_conductance_m3_per_s_pa * kIso6358ReferenceDensityKgM3 *
+                      std::sqrt(kIso6358ReferenceTemperatureK / params_.temperature_k);
+  n_r_t_ = params_.polytropic_index * params_.gas_constant_j_per_kg_k * params_.temperature_k;
+}
+
+int PneumaticOde::chamber_index(int muscle) const {
+  return model_ == ValveModel::kIso6358 ? 2 * muscle + 1 : muscle;
+}
+
+int PneumaticOde::regulator_index(int muscle) const {
+  return model_ == ValveModel::kIso6358 ? 2 * muscle : -1;
+}
+
+void PneumaticOde::set_kinematics(int muscle, double t0_s, double length_m,
+                                  double velocity_m_s) {
+  Input& in = input_[muscle];
+  in.t0 = t0_s;
+  in.l0 = length_m;
+  in.ldot = velocity_m_s;
+}
+
+double PneumaticOde::volume_m3(int muscle, double t) const {
+  const Input& in = input_[muscle];
+  const double l = in.l0 + in.ldot * (t - in.t0);
+  return chou_hannaford_volume(braid_[muscle], l) + params_.tube_dead_volume_m3;
+}
+
+double PneumaticOde::volume_rate_m3_s(int muscle, double t) const {
+  const Input& in = input_[muscle];
+  const double l = in.l0 + in.ldot * (t - in.t0);
+  return chou_hannaford_dvolume_dlength(braid_[muscle], l) * in.ldot;
+}
+
+void PneumaticOde::rhs(double t, const double* y, double* ydot) {
+  const int n_muscles = muscle_count();
+  if (model_ == ValveModel::kFirstOrder) {
+    // first-order lag toward the held command
+    const double inv_tau = 1.0 / params_.first_order_time_constant_s;
+    for (int i = 0; i < n_muscles; ++i) ydot[i] = (input_[i].p_cmd_abs - y[i]) * inv_tau;
+    return;
+  }
+
+  const double inv_tau_reg = 1.0 / params_.regulator_time_constant_s;
+  const double n = params_.polytropic_index;
+  for (int i = 0; i < n_muscles; ++i) {
+    const double p_reg = y[2 * i];
+    const double p = y[2 * i + 1];
+    // the Newton iteration may probe states outside the gas model's domain: retry smaller
+    if (!(p > 0.0) || !(p_reg > 0.0)) {
+      throw RecoverableRhsError("non-positive absolute pressure");
+    }
+
+    // regulator output follows the command
+    ydot[2 * i] = (input_[i].p_cmd_abs - p_reg) * inv_tau_reg;
+
+    // ISO 6358 flow: in from the regulator, or out through its relief port
+    double qm_in = 0.0;
+    if (p_reg >= p) {
+      qm_in = flow_coefficient_ * p_reg *
+              iso6358_flow_function(p / p_reg, params_.critical_pressure_ratio,
+                                    params_.laminar_ratio);
+    } else {
+      qm_in = -flow_coefficient_ * p *
+              iso6358_flow_function(p_reg / p, params_.critical_pressure_ratio,
+                                    params_.laminar_ratio);
+    }
+
+    // polytropic chamber with moving wall
+    const double volume = volume_m3(i, t);
+    if (!(volume > 0.0)) throw RecoverableRhsError("non-positive chamber volume");
+    const double volume_rate = volume_rate_m3_s(i, t);
+    ydot[2 * i + 1] = (n_r_t_ * qm_in - n * p * volume_rate) / volume;
+  }
+}
+
+}  // namespace pamsim

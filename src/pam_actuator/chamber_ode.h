@@ -1,0 +1,104 @@
+// chamber_ode.h: the right-hand side of the valve + muscle-chamber ODE, without any solver.
+// OdeSystem is the small f(t, y) -> ydot interface that CvodeIntegrator integrates
+// (Cantera's split between a reactor's equations and the integrator); PneumaticOde
+// implements it for N muscles with one of two valve models.
+//
+// kIso6358 (two states per muscle, absolute pressures [Pa]):
+//   regulator  dp_reg/dt = (p_cmd - p_reg) / tau_reg                (first-order regulator)
+//   restriction (ISO 6358-1) qm = C rho0 p_up sqrt(T0/T) psi(r),  r = p_down / p_up,
+//     psi(r) = 1 for r <= b,  sqrt(1 - ((r-b)/(1-b))^2) for b < r <= r_lam,
+//     psi(r) = psi(r_lam) (1 - r) / (1 - r_lam) for r > r_lam  (laminar linearisation),
+//     filling (p_reg > p): p_up = p_reg, p_down = p, air flows in;
+//     venting (p > p_reg): p_up = p, p_down = p_reg, air leaves through the relief port;
+//   chamber    dp/dt = n R T / V qm_in - n p / V dV/dt,  V = V_CH(l) + V_dead,
+//              dV/dt = dV_CH/dl * ldot   (Chou-Hannaford volume, chou_hannaford.h).
+// kFirstOrder (one state per muscle): dp/dt = (p_cmd - p) / tau; the analytic step
+//   response is p(t) = p_cmd + (p0 - p_cmd) exp(-t / tau).
+// Inputs per muscle, held over a step: command (absolute Pa inside this class), length l0
+// [m] and velocity ldot [m/s] at time t0 [s]; inside the step l(t) = l0 + ldot (t - t0), so
+// V(t) and dV/dt are consistent.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "pam_actuator/chou_hannaford.h"
+#include "pam_actuator/pneumatic_params.h"
+
+namespace pamsim {
+
+// f(t, y) -> ydot for an ODE of fixed size. rhs() may throw: RecoverableRhsError asks the
+// integrator to retry with a smaller step (a non-physical trial state), anything else
+// aborts the integration.
+class OdeSystem {
+ public:
+  virtual ~OdeSystem() = default;
+  virtual int size() const = 0;
+  virtual void rhs(double t, const double* y, double* ydot) = 0;
+};
+
+// Thrown by rhs() for a trial state outside the model's domain (e.g. p <= 0 absolute).
+class RecoverableRhsError : public std::runtime_error {
+ public:
+  explicit RecoverableRhsError(const std::string& m) : std::runtime_error(m) {}
+};
+
+enum class ValveModel { kIso6358, kFirstOrder };
+
+// "iso6358" -> kIso6358, "first_order" -> kFirstOrder; otherwise throws InputError
+// "<context>: unknown valve model \"x\", allowed iso6358 | first_order".
+ValveModel parse_valve_model(const std::string& name, const std::string& context);
+const char* valve_model_name(ValveModel model);
+
+// ISO 6358 flow function psi(r) with the laminar linearisation above r_lam (see above);
+// r = p_down / p_up in [0, 1]. b in [0, 1), r_lam in (b, 1).
+double iso6358_flow_function(double r, double b, double r_lam);
+
+// ISO 6358 mass flow [kg/s] from p_up to p_down (absolute Pa, p_up >= p_down > 0) through
+// sonic conductance C [m^3/(s Pa)] with gas at temperature T [K].
+double iso6358_mass_flow(const PneumaticParams& params, double p_up_pa, double p_down_pa);
+
+class PneumaticOde : public OdeSystem {
+ public:
+  // One muscle per braid entry. Throws InputError if params fail validation or braid is
+  // empty / has non-positive fibre length or turns.
+  PneumaticOde(const PneumaticParams& params, ValveModel model,
+               std::vector<BraidGeometry> braid);
+
+  int size() const override { return states_per_muscle() * muscle_count(); }
+  void rhs(double t, const double* y, double* ydot) override;
+
+  int muscle_count() const { return static_cast<int>(braid_.size()); }
+  int states_per_muscle() const { return model_ == ValveModel::kIso6358 ? 2 : 1; }
+  // index in y of muscle i's chamber pressure and of its regulator pressure (-1 when the
+  // model has none)
+  int chamber_index(int muscle) const;
+  int regulator_index(int muscle) const;
+  ValveModel model() const { return model_; }
+  const BraidGeometry& braid(int muscle) const { return braid_[muscle]; }
+  const PneumaticParams& params() const { return params_; }
+
+  // held inputs: command as absolute pressure [Pa]; kinematics at time t0_s
+  void set_command_abs(int muscle, double p_cmd_abs_pa) { input_[muscle].p_cmd_abs = p_cmd_abs_pa; }
+  void set_kinematics(int muscle, double t0_s, double length_m, double velocity_m_s);
+  // total gas volume V = V_CH(l(t)) + V_dead [m^3] and its rate [m^3/s] at time t
+  double volume_m3(int muscle, double t) const;
+  double volume_rate_m3_s(int muscle, double t) const;
+
+ private:
+  struct Input {
+    double p_cmd_abs = 0.0;
+    double t0 = 0.0;
+    double l0 = 0.0;
+    double ldot = 0.0;
+  };
+  PneumaticParams params_;
+  ValveModel model_;
+  std::vector<BraidGeometry> braid_;
+  std::vector<Input> input_;
+  double flow_coefficient_ = 0.0;  // C rho0 sqrt(T0/T)
+  double n_r_t_ = 0.0;             // n R T
+};
+
+}  // namespace pamsim

@@ -1,0 +1,235 @@
+// pneumatic_params.cc: TOML loader and validation for PneumaticParams (see the header).
+#include "pam_actuator/pneumatic_params.h"
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "pam_actuator/input_error.h"
+#include "pam_actuator/units.h"
+
+namespace pamsim {
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
+}
+
+// one numeric key: allowed interval in the file's units and the conversion to SI
+struct NumberKey {
+  const char* name;
+  double lo;
+  double hi;
+  bool lo_open;
+  bool hi_open;
+  double to_si;
+  double* target;
+};
+
+struct StringKey {
+  const char* name;
+  std::vector<std::string> allowed;
+  std::function<void(const std::string&)> set;
+};
+
+struct Table {
+  const char* name;
+  std::vector<NumberKey> numbers;
+  std::vector<StringKey> strings;
+};
+
+std::string interval(const NumberKey& k) {
+  std::string lo = k.lo_open ? "(" : "[";
+  std::string hi = k.hi_open ? ")" : "]";
+  std::string hi_value = std::isinf(k.hi) ? "inf" : fmt(k.hi);
+  return lo + fmt(k.lo) + ", " + hi_value + hi;
+}
+
+void read_number(const std::string& path, const std::string& table, const NumberKey& k,
+                 const toml::node& node) {
+  const std::string where = path + ": " + table + "." + k.name + ": ";
+  if (!node.is_number()) {
+    std::ostringstream type;
+    type << node.type();
+    throw InputError(where + "must be a number, got a " + type.str());
+  }
+  const double v = node.value<double>().value();
+  const bool ok = std::isfinite(v) && (k.lo_open ? v > k.lo : v >= k.lo) &&
+                  (k.hi_open ? v < k.hi : v <= k.hi);
+  if (!ok) {
+    throw InputError(where + "value " + fmt(v) + " out of range, allowed " + interval(k));
+  }
+  *k.target = v * k.to_si;
+}
+
+}  // namespace
+
+void validate_pneumatic_params(const PneumaticParams& p, const std::string& context) {
+  auto require = [&](bool ok, const std::string& what) {
+    if (!ok) throw InputError(context + ": " + what);
+  };
+  auto finite = [](double v) { return std::isfinite(v); };
+  require(finite(p.supply_gauge_pa) && p.supply_gauge_pa > 0.0,
+          "supply pressure must be > 0 Pa, got " + fmt(p.supply_gauge_pa));
+  require(finite(p.atmospheric_pa) && p.atmospheric_pa > 0.0,
+          "atmospheric pressure must be > 0 Pa, got " + fmt(p.atmospheric_pa));
+  require(finite(p.gas_constant_j_per_kg_k) && p.gas_constant_j_per_kg_k > 0.0,
+          "gas constant must be > 0, got " + fmt(p.gas_constant_j_per_kg_k));
+  require(finite(p.temperature_k) && p.temperature_k > 0.0,
+          "temperature must be > 0 K, got " + fmt(p.temperature_k));
+  require(p.polytropic_index >= 1.0 && p.polytropic_index <= 1.4,
+          "polytropic index must be in [1, 1.4], got " + fmt(p.polytropic_index));
+  require(finite(p.sonic_conductance_m3_per_s_pa) && p.sonic_conductance_m3_per_s_pa >= 0.0,
+          "sonic conductance must be >= 0, got " + fmt(p.sonic_conductance_m3_per_s_pa));
+  require(p.critical_pressure_ratio >= 0.0 && p.critical_pressure_ratio < 1.0,
+          "critical pressure ratio must be in [0, 1), got " + fmt(p.critical_pressure_ratio));
+  require(p.laminar_ratio > p.critical_pressure_ratio && p.laminar_ratio < 1.0,
+          "laminar ratio must be in (critical ratio, 1), got " + fmt(p.laminar_ratio));
+  require(finite(p.regulator_time_constant_s) && p.regulator_time_constant_s > 0.0,
+          "regulator time constant must be > 0 s, got " + fmt(p.regulator_time_constant_s));
+  require(p.command_min_gauge_pa >= 0.0 && p.command_min_gauge_pa < p.command_max_gauge_pa &&
+              p.command_max_gauge_pa <= p.supply_gauge_pa,
+          "command range must satisfy 0 <= min < max <= supply, got [" +
+              fmt(p.command_min_gauge_pa) + ", " + fmt(p.command_max_gauge_pa) +
+              "] Pa with supply " + fmt(p.supply_gauge_pa) + " Pa");
+  require(finite(p.tube_dead_volume_m3) && p.tube_dead_volume_m3 >= 0.0,
+          "tube dead volume must be >= 0 m^3, got " + fmt(p.tube_dead_volume_m3));
+  require(finite(p.first_order_time_constant_s) && p.first_order_time_constant_s > 0.0,
+          "first-order time constant must be > 0 s, got " +
+              fmt(p.first_order_time_constant_s));
+  require(p.solver.relative_tolerance > 0.0 && p.solver.relative_tolerance <= 1e-2,
+          "solver relative tolerance must be in (0, 1e-2], got " +
+              fmt(p.solver.relative_tolerance));
+  require(finite(p.solver.absolute_tolerance_pa) && p.solver.absolute_tolerance_pa > 0.0,
+          "solver absolute tolerance must be > 0 Pa, got " +
+              fmt(p.solver.absolute_tolerance_pa));
+}
+
+PneumaticParams load_pneumatic_params(const std::string& path) {
+  toml::table doc;
+  try {
+    doc = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    const auto& where = e.source().begin;
+    std::string what(e.description());
+    if (where.line == 0) {
+      throw InputError(path + ": cannot read file (" + what + ")");
+    }
+    throw InputError(path + ":" + std::to_string(where.line) + ": TOML syntax error: " + what);
+  }
+
+  PneumaticParams p;
+  PneumaticSolverParams& s = p.solver;
+  const double inf = std::numeric_limits<double>::infinity();
+  // the file's schema: table, key (unit in the name), allowed interval, factor to SI
+  const std::vector<Table> schema = {
+      {"supply",
+       {{"supply_MPa", 0.0, 2.0, true, false, units::kPaPerMPa, &p.supply_gauge_pa},
+        {"atmospheric_kPa", 50.0, 120.0, false, false, 1e3, &p.atmospheric_pa}},
+       {}},
+      {"gas",
+       {{"gas_constant_J_per_kg_K", 0.0, inf, true, true, 1.0, &p.gas_constant_j_per_kg_k},
+        {"temperature_K", 200.0, 400.0, false, false, 1.0, &p.temperature_k},
+        {"polytropic_index", 1.0, 1.4, false, false, 1.0, &p.polytropic_index}},
+       {}},
+      {"valve",
+       {{"sonic_conductance_dm3_per_s_bar", 0.0, 100.0, false, false, 1e-3 / units::kPaPerBar,
+         &p.sonic_conductance_m3_per_s_pa},
+        {"critical_pressure_ratio", 0.0, 1.0, false, true, 1.0, &p.critical_pressure_ratio},
+        {"laminar_ratio", 0.9, 1.0, false, true, 1.0, &p.laminar_ratio},
+        {"regulator_time_constant_ms", 0.0, 10000.0, true, false, 1e-3,
+         &p.regulator_time_constant_s},
+        {"command_min_MPa", 0.0, 2.0, false, false, units::kPaPerMPa, &p.command_min_gauge_pa},
+        {"command_max_MPa", 0.0, 2.0, true, false, units::kPaPerMPa,
+         &p.command_max_gauge_pa}},
+       {}},
+      {"chamber",
+       {{"tube_dead_volume_cm3", 0.0, 10000.0, false, false, 1e-6, &p.tube_dead_volume_m3}},
+       {}},
+      {"first_order",
+       {{"time_constant_ms", 0.0, 100000.0, true, false, 1e-3,
+         &p.first_order_time_constant_s}},
+       {}},
+      {"solver",
+       {{"relative_tolerance", 0.0, 1e-2, true, false, 1.0, &s.relative_tolerance},
+        {"absolute_tolerance_Pa", 0.0, 1e4, true, false, 1.0, &s.absolute_tolerance_pa}},
+       {{"method",
+         {"bdf", "adams"},
+         [&s](const std::string& v) {
+           s.method = v == "bdf" ? CvodeMethod::kBdf : CvodeMethod::kAdams;
+         }},
+        {"on_command_change",
+         {"warm", "reinit"},
+         [&s](const std::string& v) {
+           s.on_command_change =
+               v == "warm" ? CommandChangePolicy::kWarm : CommandChangePolicy::kReinit;
+         }}}},
+  };
+
+  // walk the document: every table and key must be in the schema
+  for (const auto& [table_key, table_node] : doc) {
+    const std::string table_name(table_key.str());
+    const Table* table = nullptr;
+    for (const Table& t : schema) {
+      if (table_name == t.name) table = &t;
+    }
+    if (table == nullptr) {
+      throw InputError(path + ": " + table_name +
+                       ": unknown table (allowed: supply, gas, valve, chamber, first_order, "
+                       "solver)");
+    }
+    const toml::table* tbl = table_node.as_table();
+    if (tbl == nullptr) {
+      throw InputError(path + ": " + table_name + ": must be a table");
+    }
+    for (const auto& [key, node] : *tbl) {
+      const std::string key_name(key.str());
+      bool known = false;
+      for (const NumberKey& k : table->numbers) {
+        if (key_name == k.name) {
+          read_number(path, table_name, k, node);
+          known = true;
+        }
+      }
+      for (const StringKey& k : table->strings) {
+        if (key_name != k.name) continue;
+        known = true;
+        std::string allowed;
+        for (const std::string& a : k.allowed) allowed += (allowed.empty() ? "" : " | ") + a;
+        const auto value = node.value<std::string>();
+        if (!value) {
+          throw InputError(path + ": " + table_name + "." + key_name +
+                           ": must be a string, allowed " + allowed);
+        }
+        bool ok = false;
+        for (const std::string& a : k.allowed) ok = ok || *value == a;
+        if (!ok) {
+          throw InputError(path + ": " + table_name + "." + key_name + ": unknown value \"" +
+                           *value + "\", allowed " + allowed);
+        }
+        k.set(*value);
+      }
+      if (!known) {
+        std::string allowed;
+        for (const NumberKey& k : table->numbers) allowed += std::string(allowed.empty() ? "" : ", ") + k.name;
+        for (const StringKey& k : table->strings) allowed += std::string(allowed.empty() ? "" : ", ") + k.name;
+        throw InputError(path + ": " + table_name + "." + key_name + ": unknown key (allowed: " +
+                         allowed + ")");
+      }
+    }
+  }
+
+  // cross-field checks (command range within supply, laminar ratio above b)
+  validate_pneumatic_params(p, path);
+  return p;
+}
+
+}  // namespace pamsim

@@ -1,0 +1,64 @@
+// pneumatic_params.h: parameters of the valve (proportional pressure regulator + ISO 6358
+// restriction), the muscle chamber gas and the CVODE solver, read from one TOML file
+// (models/pams/pneumatics.toml). The file uses named practical units (MPa, kPa,
+// dm^3/(s bar), cm^3, ms); this struct is SI (Pa, m^3, s, K) and is filled once by
+// load_pneumatic_params(), which validates every value.
+#pragma once
+
+#include <string>
+
+namespace pamsim {
+
+// How the integrator treats a change of valve command (a jump in the regulator's
+// derivative): keep CVODE's history (warm) or re-initialise it at the change (reinit).
+enum class CommandChangePolicy { kWarm, kReinit };
+
+// Linear multistep family used by CVODE.
+enum class CvodeMethod { kBdf, kAdams };
+
+struct PneumaticSolverParams {
+  CvodeMethod method = CvodeMethod::kBdf;
+  double relative_tolerance = 1e-4;   // [-], (0, 1e-2]
+  double absolute_tolerance_pa = 1.0;  // [Pa], > 0
+  CommandChangePolicy on_command_change = CommandChangePolicy::kReinit;
+};
+
+struct PneumaticParams {
+  // supply and ambient
+  double supply_gauge_pa = 0.7e6;        // regulator inlet, gauge [Pa], > 0
+  double atmospheric_pa = 101325.0;      // absolute [Pa], > 0
+  // gas
+  double gas_constant_j_per_kg_k = 287.0;  // air [J/(kg K)]
+  double temperature_k = 293.15;           // supply and chamber gas [K]
+  double polytropic_index = 1.2;           // n in [1.0, 1.4]
+  // valve: ISO 6358 restriction between regulator and chamber
+  double sonic_conductance_m3_per_s_pa = 1e-8;  // C [m^3/(s Pa)], >= 0 (0 = closed)
+  double critical_pressure_ratio = 0.3;         // b in [0, 1)
+  double laminar_ratio = 0.999;  // r above which psi(r) is linearised to 0 at r = 1; (b, 1)
+  // regulator: command -> regulated pressure, first order
+  double regulator_time_constant_s = 0.02;  // > 0
+  double command_min_gauge_pa = 0.0;        // commands are clamped to [min, max]
+  double command_max_gauge_pa = 0.7e6;      // <= supply
+  // chamber: tube between valve and muscle
+  double tube_dead_volume_m3 = 12.566e-6;   // >= 0
+  // first-order valve option: dp/dt = (p_cmd - p) / tau
+  double first_order_time_constant_s = 0.1;  // > 0
+  PneumaticSolverParams solver;
+};
+
+// ISO 6358-1 reference conditions (ANR: 20 degC, 100 kPa, 65 % RH): the sonic conductance
+// C is defined with the density rho0 and temperature T0 below.
+inline constexpr double kIso6358ReferenceDensityKgM3 = 1.185;
+inline constexpr double kIso6358ReferenceTemperatureK = 293.15;
+
+// Reads and validates `path`. Every key is optional (missing keys keep the defaults
+// above). Throws InputError with a one-line message "<path>: <table.key>: <problem>" for a
+// missing or unreadable file, a TOML syntax error, an unknown table or key, a value of the
+// wrong type, or a non-finite / out-of-range value.
+PneumaticParams load_pneumatic_params(const std::string& path);
+
+// Checks the cross-field and range constraints listed above; `context` prefixes the
+// messages (a file name, or "pneumatic parameters"). Throws InputError.
+void validate_pneumatic_params(const PneumaticParams& params, const std::string& context);
+
+}  // namespace pamsim

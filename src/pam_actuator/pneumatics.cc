@@ -1,0 +1,145 @@
+// pneumatics.cc: PneumaticSystem, the valve + chamber pneumatics of one trial (see header).
+#include "pam_actuator/pneumatics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "pam_actuator/input_error.h"
+
+namespace pamsim {
+
+PneumaticSystem::PneumaticSystem(const PneumaticParams& params, ValveModel model,
+                                 std::vector<BraidGeometry> braid,
+                                 std::vector<double> initial_gauge_pa, double t0_s)
+    : params_(params) {
+  // validate sizes and initial pressures
+  if (initial_gauge_pa.size() != braid.size()) {
+    throw InputError("pneumatic system: " + std::to_string(braid.size()) +
+                     " muscles but " + std::to_string(initial_gauge_pa.size()) +
+                     " initial pressures");
+  }
+  for (std::size_t i = 0; i < initial_gauge_pa.size(); ++i) {
+    const double p = initial_gauge_pa[i];
+    if (!(p >= 0.0 && p <= params_.supply_gauge_pa)) {
+      throw InputError("pneumatic system: muscle " + std::to_string(i) +
+                       ": initial pressure must be in [0, " +
+                       std::to_string(params_.supply_gauge_pa) + "] Pa, got " +
+                       std::to_string(p));
+    }
+  }
+  ode_ = std::make_unique<PneumaticOde>(params_, model, std::move(braid));
+
+  // commands start at the initial pressures: the system starts in equilibrium
+  const int n = ode_->muscle_count();
+  command_gauge_pa_.assign(n, 0.0);
+  kinematics_set_.assign(n, false);
+  for (int i = 0; i < n; ++i) {
+    command_gauge_pa_[i] = initial_gauge_pa[i];
+    ode_->set_command_abs(i, initial_gauge_pa[i] + params_.atmospheric_pa);
+    set_command(i, initial_gauge_pa[i]);  // clamps into the command range
+  }
+  reinit_pending_ = false;
+
+  std::vector<double> y0(ode_->size());
+  for (int i = 0; i < n; ++i) {
+    const double p_abs = initial_gauge_pa[i] + params_.atmospheric_pa;
+    y0[ode_->chamber_index(i)] = p_abs;
+    if (ode_->regulator_index(i) >= 0) y0[ode_->regulator_index(i)] = p_abs;
+  }
+  CvodeOptions options;
+  options.method = params_.solver.method;
+  options.relative_tolerance = params_.solver.relative_tolerance;
+  options.absolute_tolerance = params_.solver.absolute_tolerance_pa;
+  integrator_ = std::make_unique<CvodeIntegrator>(*ode_, options, t0_s, y0);
+}
+
+PneumaticSystem::~PneumaticSystem() = default;
+
+int PneumaticSystem::muscle_count() const { return ode_->muscle_count(); }
+
+void PneumaticSystem::check_muscle(int muscle) const {
+  if (muscle < 0 || muscle >= muscle_count()) {
+    throw std::out_of_range("pneumatic system: muscle index " + std::to_string(muscle) +
+                            " out of range [0, " + std::to_string(muscle_count()) + ")");
+  }
+}
+
+void PneumaticSystem::set_command(int muscle, double p_cmd_gauge_pa) {
+  check_muscle(muscle);
+  if (!std::isfinite(p_cmd_gauge_pa)) {
+    throw std::invalid_argument("pneumatic system: muscle " + std::to_string(muscle) +
+                                ": non-finite valve command");
+  }
+  // the regulator accepts only its command range
+  const double p = std::clamp(p_cmd_gauge_pa, params_.command_min_gauge_pa,
+                              params_.command_max_gauge_pa);
+  if (p == command_gauge_pa_[muscle]) return;
+  command_gauge_pa_[muscle] = p;
+  ode_->set_command_abs(muscle, p + params_.atmospheric_pa);
+  if (params_.solver.on_command_change == CommandChangePolicy::kReinit) reinit_pending_ = true;
+}
+
+void PneumaticSystem::set_kinematics(int muscle, double length_m, double velocity_m_s) {
+  check_muscle(muscle);
+  if (!std::isfinite(length_m) || !std::isfinite(velocity_m_s)) {
+    throw std::invalid_argument("pneumatic system: muscle " + std::to_string(muscle) +
+                                ": non-finite length or velocity");
+  }
+  // the Chou-Hannaford volume is positive only for 0 < l < b
+  const double b = ode_->braid(muscle).fibre_length_m;
+  if (!(length_m > 0.0 && length_m < b)) {
+    throw std::invalid_argument("pneumatic system: muscle " + std::to_string(muscle) +
+                                ": length must be in (0, " + std::to_string(b) +
+                                ") m, got " + std::to_string(length_m));
+  }
+  ode_->set_kinematics(muscle, integrator_->time(), length_m, velocity_m_s);
+  kinematics_set_[muscle] = true;
+}
+
+std::vector<double> PneumaticSystem::current_state() const {
+  const double* y = integrator_->state();
+  return std::vector<double>(y, y + integrator_->size());
+}
+
+void PneumaticSystem::advance(double t_end_s) {
+  for (int i = 0; i < muscle_count(); ++i) {
+    if (!kinematics_set_[i]) {
+      throw std::logic_error("pneumatic system: muscle " + std::to_string(i) +
+                             ": set_kinematics() was never called");
+    }
+  }
+  // optional restart at a command change (solver.on_command_change = "reinit")
+  if (reinit_pending_) {
+    integrator_->reset(integrator_->time(), current_state());
+    reinit_pending_ = false;
+    ++reinits_;
+  }
+  integrator_->advance_to(t_end_s);
+}
+
+double PneumaticSystem::time_s() const { return integrator_->time(); }
+
+double PneumaticSystem::pressure_pa(int muscle) const {
+  check_muscle(muscle);
+  return integrator_->state()[ode_->chamber_index(muscle)] - params_.atmospheric_pa;
+}
+
+double PneumaticSystem::regulator_pressure_pa(int muscle) const {
+  check_muscle(muscle);
+  const int k = ode_->regulator_index(muscle);
+  if (k < 0) return command_gauge_pa_[muscle];
+  return integrator_->state()[k] - params_.atmospheric_pa;
+}
+
+double PneumaticSystem::command_pa(int muscle) const {
+  check_muscle(muscle);
+  return command_gauge_pa_[muscle];
+}
+
+long PneumaticSystem::steps() const { return integrator_->steps(); }
+long PneumaticSystem::rhs_evals() const { return integrator_->rhs_evals(); }
+
+}  // namespace pamsim

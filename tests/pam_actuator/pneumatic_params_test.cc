@@ -1,0 +1,139 @@
+// pneumatic_params_test.cc: tests for load_pneumatic_params (models/pams/pneumatics.toml):
+// the shipped file, unit conversion, and one bad-value test per key.
+#include "pam_actuator/pneumatic_params.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "pam_actuator/input_error.h"
+
+namespace pamsim {
+namespace {
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  // ctest runs each test in its own process, in parallel: keep their files apart
+  const std::string path = ::testing::TempDir() + std::to_string(::getpid()) + "_" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// the message of the InputError thrown by loading `text`, or "" if none
+std::string load_error(const std::string& text) {
+  const std::string path = write_temp("pneumatics_bad.toml", text);
+  try {
+    load_pneumatic_params(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(PneumaticParamsTest, ShippedFileLoadsAndConvertsToSi) {
+  const PneumaticParams p =
+      load_pneumatic_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/pneumatics.toml");
+  EXPECT_DOUBLE_EQ(p.supply_gauge_pa, 0.7e6);
+  EXPECT_DOUBLE_EQ(p.atmospheric_pa, 101325.0);
+  EXPECT_DOUBLE_EQ(p.polytropic_index, 1.2);
+  EXPECT_NEAR(p.sonic_conductance_m3_per_s_pa, 1e-8, 1e-22);
+  EXPECT_DOUBLE_EQ(p.critical_pressure_ratio, 0.3);
+  EXPECT_DOUBLE_EQ(p.regulator_time_constant_s, 0.02);
+  EXPECT_NEAR(p.tube_dead_volume_m3, 12.566e-6, 1e-15);
+  EXPECT_DOUBLE_EQ(p.first_order_time_constant_s, 0.1);
+  EXPECT_DOUBLE_EQ(p.command_max_gauge_pa, 0.7e6);
+  EXPECT_EQ(p.solver.method, CvodeMethod::kBdf);
+  EXPECT_EQ(p.solver.on_command_change, CommandChangePolicy::kReinit);
+}
+
+TEST(PneumaticParamsTest, EmptyFileGivesDefaults) {
+  const PneumaticParams p = load_pneumatic_params(write_temp("empty.toml", ""));
+  EXPECT_DOUBLE_EQ(p.supply_gauge_pa, PneumaticParams{}.supply_gauge_pa);
+  EXPECT_NO_THROW(validate_pneumatic_params(PneumaticParams{}, "defaults"));
+}
+
+TEST(PneumaticParamsTest, MissingFileNamesThePath) {
+  try {
+    load_pneumatic_params("/nonexistent/pneumatics.toml");
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/pneumatics.toml"), std::string::npos);
+  }
+}
+
+TEST(PneumaticParamsTest, SyntaxErrorNamesLine) {
+  const std::string m = load_error("[valve]\ncritical_pressure_ratio = = 3\n");
+  EXPECT_NE(m.find(":2:"), std::string::npos) << m;
+}
+
+TEST(PneumaticParamsTest, UnknownTableAndKeyAreNamed) {
+  EXPECT_NE(load_error("[valves]\n").find("valves: unknown table"), std::string::npos);
+  const std::string m = load_error("[valve]\nsonic_conductance = 1.0\n");
+  EXPECT_NE(m.find("valve.sonic_conductance: unknown key"), std::string::npos) << m;
+}
+
+struct BadValue {
+  const char* table;
+  const char* key;
+  const char* value;
+};
+
+TEST(PneumaticParamsTest, EveryNumericKeyRejectsBadValues) {
+  const char* keys[][2] = {
+      {"supply", "supply_MPa"},
+      {"supply", "atmospheric_kPa"},
+      {"gas", "gas_constant_J_per_kg_K"},
+      {"gas", "temperature_K"},
+      {"gas", "polytropic_index"},
+      {"valve", "sonic_conductance_dm3_per_s_bar"},
+      {"valve", "critical_pressure_ratio"},
+      {"valve", "laminar_ratio"},
+      {"valve", "regulator_time_constant_ms"},
+      {"valve", "command_min_MPa"},
+      {"valve", "command_max_MPa"},
+      {"chamber", "tube_dead_volume_cm3"},
+      {"first_order", "time_constant_ms"},
+      {"solver", "relative_tolerance"},
+      {"solver", "absolute_tolerance_Pa"},
+  };
+  for (const auto& k : keys) {
+    for (const char* bad : {"-1.0", "nan", "inf", "\"abc\""}) {
+      const std::string text = std::string("[") + k[0] + "]\n" + k[1] + " = " + bad + "\n";
+      const std::string m = load_error(text);
+      const std::string name = std::string(k[0]) + "." + k[1] + ": ";
+      EXPECT_NE(m.find(name), std::string::npos) << "value " << bad << ": " << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    }
+  }
+}
+
+TEST(PneumaticParamsTest, PolytropicIndexOutsideOneToOnePointFour) {
+  const std::string m = load_error("[gas]\npolytropic_index = 1.5\n");
+  EXPECT_NE(m.find("gas.polytropic_index: value 1.5 out of range, allowed [1, 1.4]"),
+            std::string::npos)
+      << m;
+}
+
+TEST(PneumaticParamsTest, CommandRangeMustBeWithinSupply) {
+  const std::string m = load_error("[valve]\ncommand_max_MPa = 0.8\n");
+  EXPECT_NE(m.find("command range"), std::string::npos) << m;
+  EXPECT_NE(load_error("[supply]\nsupply_MPa = 0.5\n").find("command range"),
+            std::string::npos);
+}
+
+TEST(PneumaticParamsTest, SolverStringsAreChecked) {
+  EXPECT_NE(load_error("[solver]\nmethod = \"rk4\"\n")
+                .find("solver.method: unknown value \"rk4\", allowed bdf | adams"),
+            std::string::npos);
+  EXPECT_NE(load_error("[solver]\non_command_change = 3\n").find("solver.on_command_change"),
+            std::string::npos);
+  const PneumaticParams p = load_pneumatic_params(write_temp(
+      "adams.toml", "[solver]\nmethod = \"adams\"\non_command_change = \"warm\"\n"));
+  EXPECT_EQ(p.solver.method, CvodeMethod::kAdams);
+  EXPECT_EQ(p.solver.on_command_change, CommandChangePolicy::kWarm);
+}
+
+}  // namespace
+}  // namespace pamsim
