@@ -35,6 +35,7 @@ struct MuscleTelemetry {
   double length_est_m = kNone;        // Eq. (1) with d from inverting Eq. (3)/(10)
   double velocity_est_m_s = kNone;    // Eq. (11), filtered if configured
   bool reflex_active = false;
+  double fiber_length_m = kNone;      // fiber rate integrated from the encoder at t = 0
 };
 
 struct ControlOutput {

@@ -1,0 +1,100 @@
+// sensors.cc: pressure sensor, strain gauge, fiber sensor and ADC models.
+#include "reflex/sensors.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "pam_actuator/units.h"
+
+namespace pamsim {
+
+namespace {
+
+// PSE540: 1-5 V over 0-1 MPa
+constexpr double kPse540ZeroV = 1.0;
+constexpr double kPse540VoltPerMPa = 4.0;
+
+}  // namespace
+
+double standard_normal(std::mt19937_64& rng) {
+  // a fresh distribution per draw: no cached second value carried between sensors
+  std::normal_distribution<double> normal(0.0, 1.0);
+  return normal(rng);
+}
+
+double adc_step_v(const AdcParams& adc) {
+  if (adc.bits == 0) return 0.0;
+  const double levels = std::ldexp(1.0, adc.bits) - 1.0;
+  return (adc.v_max_v - adc.v_min_v) / levels;
+}
+
+double adc_read(const AdcParams& adc, double v) {
+  assert(adc.v_max_v > adc.v_min_v);
+  // saturate at the input range (NaN reads as the bottom of the range)
+  if (!(v > adc.v_min_v)) return adc.v_min_v;
+  if (v >= adc.v_max_v) return adc.v_max_v;
+  if (adc.bits == 0) return v;
+  // round to the nearest code
+  const double step = adc_step_v(adc);
+  const double code = std::round((v - adc.v_min_v) / step);
+  return std::min(adc.v_min_v + code * step, adc.v_max_v);
+}
+
+double pse540_voltage(double p_pa) {
+  return kPse540ZeroV + kPse540VoltPerMPa * units::pa_to_mpa(p_pa);
+}
+
+double pse540_pressure_pa(double v) {
+  return units::mpa_to_pa((v - kPse540ZeroV) / kPse540VoltPerMPa);
+}
+
+PressureSensor::PressureSensor(const SensorConfig& config)
+    : noise_pa_(units::mpa_to_pa(config.pressure_noise_mpa)),
+      bias_pa_(units::mpa_to_pa(config.pressure_bias_mpa)),
+      adc_{config.pressure_adc_bits, config.pressure_adc_min_v, config.pressure_adc_max_v} {}
+
+PressureReading PressureSensor::sample(double p_true_pa, std::mt19937_64& rng) const {
+  // sensed pressure: truth + bias + random noise
+  const double p_sensed = p_true_pa + bias_pa_ + noise_pa_ * standard_normal(rng);
+  // analog output, then the ADC (saturating at its range)
+  PressureReading reading;
+  reading.voltage_v = adc_read(adc_, pse540_voltage(p_sensed));
+  reading.pressure_pa = pse540_pressure_pa(reading.voltage_v);
+  return reading;
+}
+
+StrainGauge::StrainGauge(const StrainGaugeParams& gauge, const SensorConfig& config)
+    : gauge_(gauge),
+      noise_v_(config.gauge_noise_v),
+      adc_{config.gauge_adc_bits, config.gauge_adc_min_v, config.gauge_adc_max_v} {}
+
+double StrainGauge::sample(double f_true_n, std::mt19937_64& rng) const {
+  // the gauge sees tension only; a slack line reads V_base, Eq. (8)
+  const double f = std::max(f_true_n, 0.0);
+  const double v = gauge_.q_v_per_n * f + gauge_.v_base_v + noise_v_ * standard_normal(rng);
+  return adc_read(adc_, v);
+}
+
+FiberSensor::FiberSensor(const SensorConfig& config, double sample_period_s)
+    : noise_m_s_(units::mm_to_m(config.fiber_noise_mm_s)), dt_s_(sample_period_s) {
+  assert(sample_period_s > 0.0);
+}
+
+double FiberSensor::sample(double encoder_length_m, std::mt19937_64& rng) {
+  const double noise = noise_m_s_ * standard_normal(rng);
+  // first sample: calibrate the absolute length to the encoder
+  if (!started_) {
+    started_ = true;
+    last_encoder_m_ = encoder_length_m;
+    length_m_ = encoder_length_m;
+    return noise;
+  }
+  // true mean rate over the last period, plus noise, integrated to a length
+  const double rate = (encoder_length_m - last_encoder_m_) / dt_s_ + noise;
+  last_encoder_m_ = encoder_length_m;
+  length_m_ += rate * dt_s_;
+  return rate;
+}
+
+}  // namespace pamsim
