@@ -14,5 +14,6 @@ void add_estimate_command(CLI::App& app);   // deformation and length from (p, f
 void add_tensile_command(CLI::App& app);    // virtual static tensile test
 void add_calibrate_command(CLI::App& app);  // solve the arm's line lengths
 void add_run_command(CLI::App& app);        // run a scenario (one or many trials)
+void add_compare_command(CLI::App& app);    // two runs' angle bands and metrics side by side
 
 }  // namespace pamsim

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   pamsim::add_tensile_command(app);
   pamsim::add_calibrate_command(app);
   pamsim::add_run_command(app);
+  pamsim::add_compare_command(app);
 
   try {
     app.parse(argc, argv);

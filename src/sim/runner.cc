@@ -13,7 +13,9 @@ namespace pamsim {
 
 ArmModel load_arm_for(const Scenario& sc) {
   const ArmCalibration calibration = load_calibration(sc.calibration_file);
-  return load_arm_model(sc.model_file, sc.pam, calibration, sc.drop_mass_kg);
+  ArmModel arm = load_arm_model(sc.model_file, sc.pam, calibration, sc.drop_mass_kg);
+  arm.model->opt.timestep = sc.timestep_s;   // the scenario's step, not the MJCF's
+  return arm;
 }
 
 int default_thread_count() {

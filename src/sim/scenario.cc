@@ -35,6 +35,9 @@ void read_reflex(ConfigReader& in, ReflexControllerConfig* c) {
   r.refractory_s = in.get_double("reflex.refractory_s", r.refractory_s);
   r.arm_after_s = in.get_double("reflex.arm_after_s", r.arm_after_s);
   r.lowpass_hz = in.get_double("reflex.lowpass_hz", r.lowpass_hz);
+  r.min_tension_n = in.get_double("reflex.min_tension_N", r.min_tension_n);
+  r.reciprocal_trigger_inhibition =
+      in.get_bool("reflex.reciprocal_trigger_inhibition", r.reciprocal_trigger_inhibition);
 
   SensorConfig& s = c->sensors;
   s.pressure_noise_mpa = in.get_double("sensors.pressure_noise_MPa", s.pressure_noise_mpa);

@@ -142,6 +142,10 @@ std::size_t Trajectory::column(const std::string& name) const {
 TrialResult run_trial(const ArmModel& arm, const Scenario& sc, std::uint64_t seed,
                       bool keep_trajectory) {
   const mjModel* m = arm.model.get();
+  if (m->opt.timestep != sc.timestep_s) {
+    throw std::logic_error("run_trial: the model's timestep differs from sim.timestep_s "
+                           "(load the arm with load_arm_for)");
+  }
   MjDataPtr data = make_data(m);
   mjData* d = data.get();
   TrialResult result;

@@ -1,0 +1,100 @@
+// drop_mass_test.cc: the stretch reflex in the falling-mass experiment, end to end
+// (scenarios/drop_mass.toml and drop_mass_fiber.toml against the passive baseline).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "pam_actuator/units.h"
+#include "sim/runner.h"
+
+namespace pamsim {
+namespace {
+
+std::string scenario_path(const char* name) {
+  return std::string(PAMSIM_SOURCE_DIR) + "/scenarios/" + name;
+}
+
+TrialResult run(const char* name, const std::vector<std::string>& overrides = {},
+                std::uint64_t seed = 1) {
+  const Scenario sc = load_scenario(scenario_path(name), overrides);
+  const ArmModel arm = load_arm_for(sc);
+  return run_trial(arm, sc, seed);
+}
+
+TEST(DropMassTest, ModelReflexTriggersPromptlyWithoutMistripAndReducesTheDrop) {
+  for (std::uint64_t seed : {1, 2, 3}) {
+    const TrialResult reflex = run("drop_mass.toml", {}, seed);
+    const TrialResult passive = run("drop_mass_passive.toml", {}, seed);
+    const TrialSummary& s = reflex.summary;
+    ASSERT_EQ(s.status, "ok") << s.message;
+    ASSERT_TRUE(std::isfinite(s.impact_time_s));
+
+    // no trigger in the quiet second before the impact; the agonist fires within 50 ms
+    EXPECT_EQ(s.mistrips, 0) << "seed " << seed;
+    EXPECT_GE(s.reflex_triggers_ago, 1);
+    EXPECT_GE(s.first_trigger_time_s, s.impact_time_s);
+    EXPECT_LE(s.first_trigger_time_s - s.impact_time_s, 0.050);
+
+    // the arm drops less than without the reflex, with the same impact
+    EXPECT_NEAR(passive.summary.impact_time_s, s.impact_time_s, 1e-9);
+    EXPECT_GT(s.min_angle_deg, passive.summary.min_angle_deg + 0.5) << "seed " << seed;
+  }
+}
+
+TEST(DropMassTest, AgonistCommandRisesDuringTheReflexWindow) {
+  const TrialResult r = run("drop_mass.toml");
+  const Trajectory& tr = r.trajectory;
+  const std::size_t reflex = tr.column("reflex_ago"), cmd = tr.column("p_cmd_ago_MPa");
+  const std::size_t cmd_anta = tr.column("p_cmd_anta_MPa");
+  double peak = 0.0, trough_anta = 1.0;
+  int window_rows = 0;
+  for (std::size_t row = 0; row < tr.rows(); ++row) {
+    if (tr.at(row, reflex) != 1.0) {
+      EXPECT_NEAR(tr.at(row, cmd), 0.4, 1e-12) << "outside the window the goal holds";
+      continue;
+    }
+    ++window_rows;
+    peak = std::max(peak, tr.at(row, cmd));
+    trough_anta = std::min(trough_anta, tr.at(row, cmd_anta));
+  }
+  EXPECT_EQ(window_rows, 20) << "one 200 ms window at 100 Hz";
+  EXPECT_GT(peak, 0.45);              // excitation, Eq. (12)
+  EXPECT_LT(trough_anta, 0.35);       // reciprocal inhibition, Eq. (13)
+}
+
+TEST(DropMassTest, FiberSensorReflexTriggersToo) {
+  const TrialResult r = run("drop_mass_fiber.toml");
+  EXPECT_EQ(r.summary.mistrips, 0);
+  EXPECT_GE(r.summary.reflex_triggers_ago, 1);
+  EXPECT_LE(r.summary.first_trigger_time_s - r.summary.impact_time_s, 0.050);
+}
+
+// The paper's Fig. 7: once the line is slack the gauge reads V_base and the estimated
+// deformation is zero, so the length estimate is the natural length l_n(p), Eq. (2).
+TEST(DropMassTest, SlackLineReadsVBaseAndEstimatesZeroDeformation) {
+  const TrialResult r = run("drop_mass_passive.toml",
+                            {"pressure.antagonist_MPa=0.1", "drop.enabled=false",
+                             "sim.duration_s=1.5", "sensors.gauge_noise_V=0.0",
+                             "sensors.gauge_adc_bits=0"});
+  const Scenario sc = load_scenario(scenario_path("drop_mass_passive.toml"));
+  const SpringModel& anta = sc.pam[kAntagonist].spring;
+  const double v_base = sc.pam[kAntagonist].strain_gauge->v_base_v;
+  const Trajectory& tr = r.trajectory;
+  const std::size_t force = tr.column("force_anta_N"), gauge = tr.column("gauge_anta_V");
+  const std::size_t est = tr.column("length_est_anta_mm"), p = tr.column("p_meas_anta_MPa");
+  int slack_rows = 0;
+  for (std::size_t row = tr.rows() / 2; row < tr.rows(); ++row) {
+    if (tr.at(row, force) > 0.0) continue;
+    ++slack_rows;
+    EXPECT_NEAR(tr.at(row, gauge), v_base, 1e-12);
+    const double l_n_mm =
+        units::m_to_mm(natural_length(anta, units::mpa_to_pa(tr.at(row, p))));
+    EXPECT_NEAR(tr.at(row, est), l_n_mm, 1e-6) << "row " << row;
+  }
+  EXPECT_GT(slack_rows, 40) << "at 0.1 MPa the antagonist must be slack";
+}
+
+}  // namespace
+}  // namespace pamsim

@@ -1,0 +1,181 @@
+// scenario_test.cc: every scenario key is validated with one clear message naming the file
+// and the key; unknown keys, broken files and broken models are refused.
+#include "sim/scenario.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "pam_actuator/input_error.h"
+#include "sim/runner.h"
+
+namespace pamsim {
+namespace {
+
+const std::string kScenario = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml";
+
+// The message of the InputError thrown by loading with `overrides`, or "" if none.
+std::string error_of(const std::vector<std::string>& overrides,
+                     const std::string& path = kScenario) {
+  try {
+    const Scenario sc = load_scenario(path, overrides);
+    load_arm_for(sc);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  // ctest runs each test in its own process, in parallel: keep their files apart
+  const std::string path = ::testing::TempDir() + std::to_string(::getpid()) + "_" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(ScenarioTest, ShippedScenariosLoad) {
+  for (const char* name : {"drop_mass.toml", "drop_mass_passive.toml", "drop_mass_fiber.toml"}) {
+    EXPECT_EQ(error_of({}, std::string(PAMSIM_SOURCE_DIR) + "/scenarios/" + name), "") << name;
+  }
+  const Scenario sc = load_scenario(kScenario);
+  EXPECT_DOUBLE_EQ(sc.reflex.reflex.v_thr_mm_s, 70.0);
+  EXPECT_DOUBLE_EQ(sc.reflex.reflex.k_MPa_s_per_mm, 1.0 / 800.0);
+  EXPECT_DOUBLE_EQ(sc.p_goal_agonist_pa, 0.4e6);
+}
+
+TEST(ScenarioTest, OverridesTakeEffect) {
+  const Scenario sc = load_scenario(kScenario, {"reflex.v_thr_mm_s=55", "seed=9",
+                                                "valve.model=first_order"});
+  EXPECT_DOUBLE_EQ(sc.reflex.reflex.v_thr_mm_s, 55.0);
+  EXPECT_EQ(sc.seed, 9u);
+  EXPECT_EQ(sc.valve_model, ValveModel::kFirstOrder);
+}
+
+struct BadValue {
+  std::string assignment;
+  std::string key;
+};
+
+TEST(ScenarioTest, EveryBadValueNamesItsKey) {
+  const std::vector<BadValue> cases = {
+      {"seed=-1", "seed"},
+      {"seed=1.5", "seed"},
+      {"sim.timestep_s=0", "sim.timestep_s"},
+      {"sim.timestep_s=-0.001", "sim.timestep_s"},
+      {"sim.timestep_s=nan", "sim.timestep_s"},
+      {"sim.timestep_s=0.5", "sim.timestep_s"},
+      {"sim.duration_s=0", "sim.duration_s"},
+      {"sim.duration_s=inf", "sim.duration_s"},
+      {"sim.control_hz=0", "sim.control_hz"},
+      {"sim.control_hz=300", "sim.control_hz"},
+      {"sim.control_hz=5000", "sim.control_hz"},
+      {"drop.mass_kg=0", "drop.mass_kg"},
+      {"drop.mass_kg=-0.2", "drop.mass_kg"},
+      {"drop.height_m=-0.1", "drop.height_m"},
+      {"drop.height_m=5", "drop.height_m"},
+      {"drop.time_s=-1", "drop.time_s"},
+      {"drop.time_s=10", "drop.time_s"},
+      {"drop.enabled=3", "drop.enabled"},
+      {"pressure.agonist_MPa=-0.1", "pressure.agonist_MPa"},
+      {"pressure.agonist_MPa=2", "pressure.agonist_MPa"},
+      {"pressure.antagonist_MPa=nan", "pressure.antagonist_MPa"},
+      {"pressure.antagonist_MPa=\"high\"", "pressure.antagonist_MPa"},
+      {"valve.model=\"bang_bang\"", "valve.model"},
+      {"reflex.enabled=\"yes\"", "reflex.enabled"},
+      {"reflex.sensor=\"laser\"", "reflex.sensor"},
+      {"reflex.v_thr_mm_s=0", "reflex.v_thr_mm_s"},
+      {"reflex.v_thr_mm_s=-70", "reflex.v_thr_mm_s"},
+      {"reflex.k_MPa_s_per_mm=-0.001", "reflex.k_MPa_s_per_mm"},
+      {"reflex.k_MPa_s_per_mm=nan", "reflex.k_MPa_s_per_mm"},
+      {"reflex.duration_s=0", "reflex.duration_s"},
+      {"reflex.duration_s=0.001", "reflex.duration_s"},
+      {"reflex.lowpass_hz=-5", "reflex.lowpass_hz"},
+      {"reflex.lowpass_hz=80", "reflex.lowpass_hz"},
+      {"reflex.mode=\"sticky\"", "reflex.mode"},
+      {"reflex.refractory_s=-1", "reflex.refractory_s"},
+      {"reflex.arm_after_s=-1", "reflex.arm_after_s"},
+      {"reflex.min_tension_N=-1", "reflex.min_tension_N"},
+      {"reflex.reciprocal_trigger_inhibition=1", "reflex.reciprocal_trigger_inhibition"},
+      {"sensors.pressure_noise_MPa=-0.001", "sensors.pressure_noise_MPa"},
+      {"sensors.pressure_bias_MPa=2", "sensors.pressure_bias_MPa"},
+      {"sensors.pressure_adc_bits=2", "sensors.pressure_adc"},
+      {"sensors.pressure_adc_max_V=-1", "sensors.pressure_adc"},
+      {"sensors.pressure_lowpass_hz=-1", "sensors.pressure_lowpass_hz"},
+      {"sensors.gauge_noise_V=-1", "sensors.gauge_noise_V"},
+      {"sensors.gauge_adc_bits=40", "sensors.gauge_adc"},
+      {"sensors.fiber_noise_mm_s=-2", "sensors.fiber_noise_mm_s"},
+      {"controller.p_max_MPa=0", "controller.p_max_MPa"},
+      {"model.file=\"missing.xml\"", "missing.xml"},
+      {"model.agonist_params=\"missing.toml\"", "missing.toml"},
+      {"model.calibration=\"missing.toml\"", "missing.toml"},
+      {"model.pneumatics=\"missing.toml\"", "missing.toml"},
+      {"sim.timestepp_s=0.001", "sim.timestepp_s"},
+      {"reflex.threshold=70", "reflex.threshold"},
+  };
+  for (const auto& c : cases) {
+    const std::string message = error_of({c.assignment});
+    EXPECT_NE(message.find(c.key), std::string::npos) << c.assignment << " -> " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
+  }
+}
+
+TEST(ScenarioTest, UnknownKeyInTheFileIsRefusedByName) {
+  std::ifstream in(kScenario);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text += "\n[drop2]\nmass_kg = 0.3\n";
+  // keep the relative paths working: write next to the real scenario's models
+  const std::string path = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/.unknown_key_test.toml";
+  std::ofstream(path) << text;
+  const std::string message = error_of({}, path);
+  std::remove(path.c_str());
+  EXPECT_NE(message.find("drop2.mass_kg"), std::string::npos) << message;
+  EXPECT_NE(message.find(".unknown_key_test.toml"), std::string::npos) << message;
+}
+
+TEST(ScenarioTest, SyntaxErrorAndMissingFileNameTheFile) {
+  const std::string broken = write_temp("broken.toml", "seed = 1\n[sim\ntimestep_s = 0.001\n");
+  EXPECT_NE(error_of({}, broken).find("broken.toml:2"), std::string::npos) << error_of({}, broken);
+  EXPECT_NE(error_of({}, "/nonexistent/scenario.toml").find("/nonexistent/scenario.toml"),
+            std::string::npos);
+  EXPECT_NE(error_of({"=3"}).find("--set"), std::string::npos);
+  EXPECT_NE(error_of({"novalue"}).find("--set"), std::string::npos);
+}
+
+TEST(ScenarioTest, ModelThatFailsToLoadIsNamed) {
+  const std::string xml = write_temp("bad_arm.xml", "<mujoco><worldbody><body></mujoco>");
+  const std::string message = error_of({"model.file=\"" + xml + "\""});
+  EXPECT_NE(message.find("bad_arm.xml"), std::string::npos) << message;
+  const std::string no_arm = write_temp("no_arm.xml", "<mujoco><worldbody/></mujoco>");
+  const std::string m2 = error_of({"model.file=\"" + no_arm + "\""});
+  EXPECT_NE(m2.find("agonist"), std::string::npos) << m2;
+}
+
+TEST(ScenarioTest, ParamsFileMissingAFieldIsNamed) {
+  const std::string params = write_temp("no_a2.toml", R"(name = "agonist"
+[spring]
+law = "eq3"
+units = { pressure = "MPa", length = "mm", force = "N" }
+m = -60.1
+h = 170.1
+a0 = 0.911
+a1 = 0.256
+a3 = -0.201
+[strain_gauge]
+q_V_per_N = 2.25e-3
+[geometry]
+length_mm = 180
+sleeve_diameter_mm = 16.0
+bladder_diameter_mm = 4.0
+braid_angle_deg = 25
+)");
+  const std::string message = error_of({"model.agonist_params=\"" + params + "\""});
+  EXPECT_NE(message.find("no_a2.toml"), std::string::npos) << message;
+  EXPECT_NE(message.find("a2"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace pamsim
