@@ -22,8 +22,12 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
+  } catch (const CLI::Success& e) {   // --help, --version
     return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // one line, like every other input error (CLI11's own exit adds a second one)
+    std::cerr << "pamsim: " << e.what() << "\n";
+    return e.get_exit_code() != 0 ? e.get_exit_code() : 2;
   } catch (const pamsim::SimulationFailed&) {
     return 4;
   } catch (const pamsim::InputError& e) {
