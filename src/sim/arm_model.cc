@@ -111,4 +111,24 @@ ArmModel load_arm_model(const std::string& mjcf_path,
   return arm;
 }
 
+void hold_ball(const ArmModel& arm, mjData* d, const double hold_pos[3]) {
+  double* q = d->qpos + arm.ball_qpos;
+  q[0] = hold_pos[0];
+  q[1] = hold_pos[1];
+  q[2] = hold_pos[2];
+  q[3] = 1.0;
+  q[4] = q[5] = q[6] = 0.0;
+  for (int k = 0; k < 6; ++k) d->qvel[arm.ball_dof + k] = 0.0;
+}
+
+bool ball_touches_basket(const ArmModel& arm, const mjModel* m, const mjData* d) {
+  for (int c = 0; c < d->ncon; ++c) {
+    const mjContact& con = d->contact[c];
+    const int other = con.geom1 == arm.ball_geom ? con.geom2
+                      : con.geom2 == arm.ball_geom ? con.geom1 : -1;
+    if (other >= 0 && m->geom_bodyid[other] == arm.basket_body) return true;
+  }
+  return false;
+}
+
 }  // namespace pamsim

@@ -59,6 +59,12 @@ ArmModel load_arm_model(const std::string& mjcf_path,
                         const std::array<PamParams, kMuscleCount>& pam,
                         const ArmCalibration& calibration, double ball_mass_kg);
 
+// The ball waits, held kinematically, at `hold_pos` (world, m): upright and at rest.
+void hold_ball(const ArmModel& arm, mjData* d, const double hold_pos[3]);
+
+// True while the ball touches any geom of the basket (the impact event).
+bool ball_touches_basket(const ArmModel& arm, const mjModel* m, const mjData* d);
+
 // Angle of the shoulder [rad], 0 = horizontal, positive up.
 inline double shoulder_angle(const ArmModel& arm, const mjData* d) {
   return d->qpos[arm.shoulder_qpos];

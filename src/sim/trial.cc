@@ -37,27 +37,6 @@ std::unique_ptr<Controller> make_controller(const ArmModel& arm, const Scenario&
   return std::make_unique<ReflexController>(config);
 }
 
-// The ball waits above the basket (held kinematically) until it is released.
-void hold_ball(const ArmModel& arm, mjData* d, const double hold_pos[3]) {
-  double* q = d->qpos + arm.ball_qpos;
-  q[0] = hold_pos[0];
-  q[1] = hold_pos[1];
-  q[2] = hold_pos[2];
-  q[3] = 1.0;
-  q[4] = q[5] = q[6] = 0.0;
-  for (int k = 0; k < 6; ++k) d->qvel[arm.ball_dof + k] = 0.0;
-}
-
-bool ball_touches_basket(const ArmModel& arm, const mjModel* m, const mjData* d) {
-  for (int c = 0; c < d->ncon; ++c) {
-    const mjContact& con = d->contact[c];
-    const int other = con.geom1 == arm.ball_geom ? con.geom2
-                      : con.geom2 == arm.ball_geom ? con.geom1 : -1;
-    if (other >= 0 && m->geom_bodyid[other] == arm.basket_body) return true;
-  }
-  return false;
-}
-
 std::string diverged_reason(const mjData* d) {
   if (d->warning[mjWARN_BADQACC].number > 0) return "MuJoCo: bad acceleration (unstable)";
   if (d->warning[mjWARN_BADQVEL].number > 0) return "MuJoCo: bad velocity (unstable)";

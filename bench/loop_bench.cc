@@ -1,0 +1,122 @@
+// loop_bench.cc: cost of the co-simulation loop against bare MuJoCo, on the 3 s drop-mass
+// trial (3000 physics steps of 1 ms), all in one run so the ratios are meaningful:
+//   BM_BareMjStep           mj_step alone on the same arm (the PAM force callback included,
+//                           pressures fixed at 0.4 MPa, the ball held until 1 s then dropped)
+//   BM_TrialLoop/passive    run_trial: + CVODE pneumatics, sensors, controller and logging
+//   BM_TrialLoop/reflex     the same with the stretch reflex on
+//   BM_TwentyTrials         run_trials(20) wall time on 1 and 2 threads (CPU column: all
+//                           threads of the process, so CPU / (threads * Time) is the
+//                           share of the cores the workers got)
+// Counters: s_per_step (seconds per physics step, SI-prefixed: "4.1u" = 4.1 us) and
+// items_per_second (physics steps per second); for the trial loop also CVODE steps and
+// right-hand-side evaluations per physics step; trials_per_s for the batch.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <string>
+
+#include "sim/pam_callback.h"
+#include "sim/runner.h"
+#include "sim/scenario.h"
+#include "sim/trial.h"
+
+namespace pamsim {
+namespace {
+
+constexpr double kFixedPressurePa = 0.4e6;
+constexpr int kBatchTrials = 20;
+
+Scenario scenario_named(const std::string& file) {
+  return load_scenario(std::string(PAMSIM_SOURCE_DIR) + "/scenarios/" + file);
+}
+
+// seconds per physics step from the benchmark's time (CPU or real, as the benchmark uses)
+void report_steps(benchmark::State& state, long steps_per_iteration) {
+  const double steps = static_cast<double>(steps_per_iteration);
+  state.counters["s_per_step"] = benchmark::Counter(
+      steps, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.SetItemsProcessed(state.iterations() * steps_per_iteration);
+}
+
+
+void BM_BareMjStep(benchmark::State& state) {
+  const Scenario sc = scenario_named("drop_mass.toml");
+  const ArmModel arm = load_arm_for(sc);
+  const mjModel* m = arm.model.get();
+  MjDataPtr data = make_data(m);
+  mjData* d = data.get();
+  const long n_steps = std::lround(sc.duration_s / sc.timestep_s);
+
+  for (auto _ : state) {
+    // the trial's initial state: calibrated angle, fixed pressures, ball above the basket
+    mj_resetData(m, d);
+    d->qpos[arm.shoulder_qpos] = arm.calibration.start_angle_rad;
+    for (int i = 0; i < kMuscleCount; ++i) {
+      d->userdata[pam_userdata_index(m, arm.actuator[i])] = kFixedPressurePa;
+    }
+    mj_forward(m, d);
+    const double* floor = d->site_xpos + 3 * arm.basket_floor_site;
+    const double hold_pos[3] = {floor[0], floor[1],
+                                floor[2] + sc.drop_height_m + arm.ball_radius_m};
+
+    // hold until drop.time_s, then let the ball fall into the basket
+    for (long step = 0; step < n_steps; ++step) {
+      const double t = step * sc.timestep_s;
+      if (!(sc.drop_enabled && t >= sc.drop_time_s - 1e-12)) hold_ball(arm, d, hold_pos);
+      mj_step(m, d);
+    }
+    benchmark::DoNotOptimize(d->qpos[arm.shoulder_qpos]);
+  }
+  if (!std::isfinite(d->qpos[arm.shoulder_qpos]) || d->warning[mjWARN_BADQACC].number > 0) {
+    state.SkipWithError("bare mj_step loop diverged");
+  } else if (!ball_touches_basket(arm, m, d)) {
+    state.SkipWithError("bare mj_step loop: the ball did not land in the basket");
+  }
+  report_steps(state, n_steps);
+}
+BENCHMARK(BM_BareMjStep)->Unit(benchmark::kMillisecond);
+
+void BM_TrialLoop(benchmark::State& state, const char* scenario_file) {
+  const Scenario sc = scenario_named(scenario_file);
+  const ArmModel arm = load_arm_for(sc);
+  TrialSummary summary;
+  for (auto _ : state) {
+    const TrialResult r = run_trial(arm, sc, sc.seed);
+    summary = r.summary;
+    if (r.summary.status != "ok") {
+      state.SkipWithError(("trial " + r.summary.status + ": " + r.summary.message).c_str());
+      break;
+    }
+    benchmark::DoNotOptimize(r.summary.min_angle_deg);
+  }
+  report_steps(state, summary.steps);
+
+  // the pneumatics' share: CVODE work per physics step (compare BM_PneumaticsStep)
+  const double steps = static_cast<double>(summary.steps > 0 ? summary.steps : 1);
+  state.counters["cvode_steps_per_step"] = static_cast<double>(summary.cvode_steps) / steps;
+  state.counters["rhs_evals_per_step"] = static_cast<double>(summary.cvode_rhs_evals) / steps;
+}
+BENCHMARK_CAPTURE(BM_TrialLoop, passive, "drop_mass_passive.toml")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TrialLoop, reflex, "drop_mass.toml")->Unit(benchmark::kMillisecond);
+
+void BM_TwentyTrials(benchmark::State& state) {
+  const Scenario sc = scenario_named("drop_mass.toml");
+  const ArmModel arm = load_arm_for(sc);
+  const int threads = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    const auto results = run_trials(arm, sc, kBatchTrials, threads);
+    benchmark::DoNotOptimize(results.data());
+  }
+  state.counters["trials_per_s"] =
+      benchmark::Counter(kBatchTrials, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_TwentyTrials)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace pamsim
