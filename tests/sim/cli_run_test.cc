@@ -1,0 +1,125 @@
+// cli_run_test.cc: `pamsim run` and `pamsim calibrate` as a user runs them: outputs appear
+// whole, bad input gives one line on stderr, a non-zero exit, and no output at all.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int exit_code;
+  std::string err;
+};
+
+// Runs the binary from the source folder with `args`; stderr is captured.
+Result pamsim(const std::string& args) {
+  const std::string err_file = ::testing::TempDir() + "pamsim_err_" + std::to_string(::getpid());
+  const std::string cmd = std::string("cd ") + PAMSIM_SOURCE_DIR + " && " + PAMSIM_BINARY +
+                          " " + args + " > /dev/null 2> " + err_file;
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(err_file);
+  std::stringstream err;
+  err << in.rdbuf();
+  std::remove(err_file.c_str());
+  return {WEXITSTATUS(status), err.str()};
+}
+
+int line_count(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+fs::path fresh_dir(const std::string& name) {
+  fs::path dir = fs::path(::testing::TempDir()) / (name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  return dir;
+}
+
+TEST(CliRunTest, RunWritesTrajectorySummaryAndPlot) {
+  const fs::path out = fresh_dir("run_ok");
+  const Result r = pamsim("run scenarios/drop_mass.toml --set sim.duration_s=1.5 --out " +
+                          out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* f : {"trajectory.csv", "summary.json", "angle.png"}) {
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  }
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json s = nlohmann::json::parse(in);
+  EXPECT_EQ(s["status"], "ok");
+  for (const char* key : {"seed", "start_angle_deg", "min_angle_deg", "peak_drop_deg",
+                          "final_angle_deg", "impact_time_s", "steps", "sim_time_s",
+                          "wall_time_s", "realtime_factor", "reflex_triggers_ago",
+                          "reflex_triggers_anta", "first_trigger_time_s", "mistrips",
+                          "recovery_time_s", "length_est_rmse_mm", "length_est_max_error_mm"}) {
+    EXPECT_TRUE(s.contains(key)) << key;
+  }
+  EXPECT_EQ(s["steps"], 1500);
+  // no temp file left beside the outputs
+  for (const auto& e : fs::directory_iterator(out)) {
+    EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+  }
+}
+
+TEST(CliRunTest, TrialsWriteEachTrialAndTheAggregate) {
+  const fs::path out = fresh_dir("run_trials");
+  const Result r = pamsim("run scenarios/drop_mass.toml --set sim.duration_s=1.3 --trials 3 "
+                          "--threads 2 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* f : {"summary.json", "angle_band.png", "trial_0000/trajectory.csv",
+                        "trial_0002/summary.json"}) {
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  }
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json s = nlohmann::json::parse(in);
+  EXPECT_EQ(s["trials"], 3);
+  EXPECT_TRUE(s["metrics"]["min_angle_deg"].contains("mean"));
+}
+
+TEST(CliRunTest, BadInputIsOneLineNonZeroAndWritesNothing) {
+  const fs::path out = fresh_dir("run_bad");
+  for (const std::string args :
+       {"run scenarios/missing.toml", "run scenarios/drop_mass.toml --set reflex.v_thr_mm_s=-1",
+        "run scenarios/drop_mass.toml --set sim.timestep_s=nan",
+        "run scenarios/drop_mass.toml --set nosuch.key=1",
+        "run scenarios/drop_mass.toml --set model.file=\\\"/nonexistent.xml\\\"",
+        "run scenarios/drop_mass.toml --trials 0", "run scenarios/drop_mass.toml --threads -1",
+        "run"}) {
+    const Result r = pamsim(args + " --out " + out.string());
+    EXPECT_NE(r.exit_code, 0) << args;
+    EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("pamsim: ", 0), 0u) << r.err;
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
+}
+
+TEST(CliRunTest, CalibrateReproducesTheShippedCalibration) {
+  const fs::path out = fresh_dir("calib");
+  fs::create_directories(out);
+  const Result r = pamsim("calibrate scenarios/drop_mass_passive.toml -o " +
+                          (out / "c.toml").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream a(out / "c.toml"), b(std::string(PAMSIM_SOURCE_DIR) +
+                                     "/models/arm_2pam_calibration.toml");
+  std::string la, lb;
+  // same numbers (the provenance line names the scenario path)
+  while (std::getline(a, la) && std::getline(b, lb)) {
+    if (la.rfind("written_by", 0) == 0) continue;
+    EXPECT_EQ(la, lb);
+  }
+  const Result bad = pamsim("calibrate scenarios/drop_mass_passive.toml --angle-deg 95 -o " +
+                            (out / "d.toml").string());
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_FALSE(fs::exists(out / "d.toml"));
+}
+
+}  // namespace
