@@ -11,6 +11,7 @@
 #include <toml++/toml.h>
 
 #include "pam_actuator/input_error.h"
+#include "pam_actuator/toml_file.h"
 #include "pam_actuator/units.h"
 
 namespace pamsim {
@@ -85,21 +86,6 @@ struct Section {
   }
 };
 
-toml::table parse_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open parameter file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  try {
-    return toml::parse(buffer.str(), path);
-  } catch (const toml::parse_error& e) {
-    const auto& where = e.source().begin;
-    throw InputError(path + ":" + std::to_string(where.line) + ":" +
-                     std::to_string(where.column) + ": TOML syntax error: " +
-                     std::string(e.description()));
-  }
-}
-
 // spring.units must name the paper's units exactly
 void check_units(const Section& spring) {
   const Section u = spring.sub("units");
@@ -166,7 +152,7 @@ std::string quoted(const std::string& s) {
 }  // namespace
 
 PamParams load_pam_params(const std::string& path) {
-  const toml::table root = parse_file(path);
+  const toml::table root = parse_toml_file(path);
   const Section top{path, "", root};
   top.reject_unknown({"geometry", "name", "source", "spring", "strain_gauge"});
 

@@ -11,6 +11,7 @@
 #include <toml++/toml.h>
 
 #include "pam_actuator/input_error.h"
+#include "pam_actuator/toml_file.h"
 #include "pam_actuator/units.h"
 
 namespace pamsim {
@@ -114,17 +115,7 @@ void validate_pneumatic_params(const PneumaticParams& p, const std::string& cont
 }
 
 PneumaticParams load_pneumatic_params(const std::string& path) {
-  toml::table doc;
-  try {
-    doc = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    const auto& where = e.source().begin;
-    std::string what(e.description());
-    if (where.line == 0) {
-      throw InputError(path + ": cannot read file (" + what + ")");
-    }
-    throw InputError(path + ":" + std::to_string(where.line) + ": TOML syntax error: " + what);
-  }
+  const toml::table doc = parse_toml_file(path);
 
   PneumaticParams p;
   PneumaticSolverParams& s = p.solver;

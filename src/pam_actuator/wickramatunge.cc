@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "pam_actuator/input_error.h"
+#include "pam_actuator/toml_file.h"
 #include "pam_actuator/units.h"
 
 namespace pamsim {
@@ -52,20 +53,6 @@ const toml::table& read_table(const std::string& file, const std::string& key,
   const toml::node* n = t.get(name);
   if (n == nullptr || !n->is_table()) fail(file, key, "missing table");
   return *n->as_table();
-}
-
-toml::table parse_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open parameter file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  try {
-    return toml::parse(buffer.str(), path);
-  } catch (const toml::parse_error& e) {
-    throw InputError(path + ":" + std::to_string(e.source().begin.line) + ":" +
-                     std::to_string(e.source().begin.column) + ": TOML syntax error: " +
-                     std::string(e.description()));
-  }
 }
 
 void check_units(const std::string& path, const toml::table& root) {
@@ -129,7 +116,7 @@ DeformationEstimate invert_wickramatunge(const WickramatungeModel& model, double
 }
 
 WickramatungeModel load_wickramatunge(const std::string& path) {
-  const toml::table root = parse_file(path);
+  const toml::table root = parse_toml_file(path);
   reject_unknown(path, "", root, "name,source,units,pressure_split_bar,extension,contraction");
   check_units(path, root);
 

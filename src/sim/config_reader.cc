@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "pam_actuator/input_error.h"
+#include "pam_actuator/toml_file.h"
 
 namespace pamsim {
 namespace {
@@ -19,15 +20,6 @@ std::vector<std::string> split_key(const std::string& key) {
   return parts;
 }
 
-toml::table parse_or_throw(const std::string& text, const std::string& name) {
-  try {
-    return toml::parse(text, name);
-  } catch (const toml::parse_error& e) {
-    throw InputError(name + ":" + std::to_string(e.source().begin.line) +
-                     ": TOML syntax error: " + std::string(e.description()));
-  }
-}
-
 }  // namespace
 
 std::string format_value(double v) {
@@ -37,15 +29,11 @@ std::string format_value(double v) {
 }
 
 ConfigReader::ConfigReader(const std::string& path) : name_(path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open file");
-  std::stringstream text;
-  text << in.rdbuf();
-  doc_ = parse_or_throw(text.str(), path);
+  doc_ = parse_toml_file(path);
 }
 
 ConfigReader::ConfigReader(const std::string& text, const std::string& name) : name_(name) {
-  doc_ = parse_or_throw(text, name);
+  doc_ = parse_toml_text(text, name);
 }
 
 void ConfigReader::apply_override(const std::string& assignment) {
