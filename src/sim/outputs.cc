@@ -111,12 +111,15 @@ nlohmann::json aggregate_summaries(const std::vector<TrialSummary>& summaries,
   // mean, min and max over the trials where the metric is defined
   nlohmann::json metrics = nlohmann::json::object();
   if (!summaries.empty()) {
-    const auto names = numeric_metrics(summaries.front());
+    std::vector<std::vector<std::pair<std::string, double>>> table;
+    table.reserve(summaries.size());
+    for (const auto& s : summaries) table.push_back(numeric_metrics(s));
+    const auto& names = table.front();
     for (std::size_t k = 0; k < names.size(); ++k) {
       double sum = 0, lo = INFINITY, hi = -INFINITY;
       int n = 0;
-      for (const auto& s : summaries) {
-        const double v = numeric_metrics(s)[k].second;
+      for (const auto& row : table) {
+        const double v = row[k].second;
         if (!std::isfinite(v)) continue;
         sum += v;
         lo = std::min(lo, v);

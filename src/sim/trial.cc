@@ -37,15 +37,15 @@ std::unique_ptr<Controller> make_controller(const ArmModel& arm, const Scenario&
   return std::make_unique<ReflexController>(config);
 }
 
-std::string diverged_reason(const mjData* d) {
+// Why the step went unstable, or nullptr (no allocation: called at every physics step).
+const char* diverged_reason(const mjData* d) {
   if (d->warning[mjWARN_BADQACC].number > 0) return "MuJoCo: bad acceleration (unstable)";
   if (d->warning[mjWARN_BADQVEL].number > 0) return "MuJoCo: bad velocity (unstable)";
   if (d->warning[mjWARN_BADQPOS].number > 0) return "MuJoCo: bad position (unstable)";
-  return "";
+  return nullptr;
 }
 
-void compute_metrics(const Trajectory& tr, const ReflexController* reflex, double drop_time,
-                     TrialSummary* s) {
+void compute_metrics(const Trajectory& tr, const ReflexController* reflex, TrialSummary* s) {
   const std::size_t n = tr.rows();
   if (n == 0) return;
   s->final_angle_deg = tr.at(n - 1, kAngle);
@@ -80,21 +80,19 @@ void compute_metrics(const Trajectory& tr, const ReflexController* reflex, doubl
   s->length_est_rmse_mm = count ? std::sqrt(sum_sq / count) : kNaN;
   s->length_est_max_error_mm = count ? max_err : kNaN;
 
-  // reflex triggers
+  // reflex triggers; a mistrip is any trigger before the impact (or without one)
   s->first_trigger_time_s = kNaN;
   s->mistrips = 0;
   if (reflex) {
     s->reflex_triggers_ago = reflex->trigger_count(kAgonist);
     s->reflex_triggers_anta = reflex->trigger_count(kAntagonist);
-    for (int i = 0; i < kMuscleCount; ++i) {
-      for (double t : reflex->trigger_times_s(static_cast<Muscle>(i))) {
-        if (!(s->first_trigger_time_s <= t)) s->first_trigger_time_s = t;
-        const double impact = std::isfinite(s->impact_time_s) ? s->impact_time_s : 1e300;
-        if (t < impact) ++s->mistrips;
+    s->first_trigger_time_s = reflex->first_trigger_time_s();
+    for (Muscle muscle : {kAgonist, kAntagonist}) {
+      for (double t : reflex->trigger_times_s(muscle)) {
+        if (!(t >= s->impact_time_s)) ++s->mistrips;
       }
     }
   }
-  (void)drop_time;
 }
 
 }  // namespace
@@ -221,11 +219,12 @@ TrialResult run_trial(const ArmModel& arm, const Scenario& sc, std::uint64_t see
 
     // physics: forces with the pressures at t, then integrate to t + dt
     mj_step2(m, d);
-    std::string reason = diverged_reason(d);
-    if (reason.empty() && !std::isfinite(d->qpos[arm.shoulder_qpos])) reason = "non-finite angle";
+    const char* unstable = diverged_reason(d);
+    if (!unstable && !std::isfinite(d->qpos[arm.shoulder_qpos])) unstable = "non-finite angle";
+    std::string reason = unstable ? unstable : "";
 
     // pneumatics over [t, t + dt] with this step's PAM length and velocity
-    if (reason.empty()) {
+    if (!unstable) {
       try {
         for (int i = 0; i < kMuscleCount; ++i) {
           pneumatics.set_kinematics(i, pam_length(m, d, arm.actuator[i]),
@@ -272,7 +271,7 @@ TrialResult run_trial(const ArmModel& arm, const Scenario& sc, std::uint64_t see
   } else {
     s.min_angle_deg = s.peak_drop_deg = s.min_angle_time_s = kNaN;
   }
-  compute_metrics(result.trajectory, reflex, sc.drop_time_s, &s);
+  compute_metrics(result.trajectory, reflex, &s);
   if (!keep_trajectory) result.trajectory.values.clear();
   return result;
 }
