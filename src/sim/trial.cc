@@ -183,8 +183,15 @@ TrialResult run_trial(const ArmModel& arm, const Scenario& sc, std::uint64_t see
         mt.force_n = -pam_actuator_force(m, d, arm.actuator[i]);
         mt.length_m = pam_length(m, d, arm.actuator[i]);
       }
-      const ControlOutput out = controller->update(sample);
-      for (int i = 0; i < kMuscleCount; ++i) pneumatics.set_command(i, out.p_cmd_pa[i]);
+      ControlOutput out;
+      try {   // an absurd gain can drive the command out of range (e.g. to infinity)
+        out = controller->update(sample);
+        for (int i = 0; i < kMuscleCount; ++i) pneumatics.set_command(i, out.p_cmd_pa[i]);
+      } catch (const std::exception& e) {
+        s.status = "diverged";
+        s.message = std::string("controller: ") + e.what() + " at t = " + std::to_string(t) + " s";
+        break;
+      }
 
       {
         double row[kColumnCount];
