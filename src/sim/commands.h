@@ -3,6 +3,9 @@
 // one line on stderr and a non-zero exit.
 #pragma once
 
+#include <stdexcept>
+#include <string>
+
 namespace CLI {
 class App;
 }
@@ -15,5 +18,16 @@ void add_tensile_command(CLI::App& app);    // virtual static tensile test
 void add_calibrate_command(CLI::App& app);  // solve the arm's line lengths
 void add_run_command(CLI::App& app);        // run a scenario (one or many trials)
 void add_compare_command(CLI::App& app);    // two runs' angle bands and metrics side by side
+void add_sweep_command(CLI::App& app);      // run a parameter sweep into SQLite
+void add_export_command(CLI::App& app);     // a sweep database as CSV
+void add_report_command(CLI::App& app);     // per-point statistics, heat maps, best setting
+
+// Thrown by a command that has printed its own message and ends with `code` (e.g. 130 for
+// an interrupted sweep).
+class CommandExit : public std::runtime_error {
+ public:
+  explicit CommandExit(int code) : std::runtime_error("exit " + std::to_string(code)), code(code) {}
+  int code;
+};
 
 }  // namespace pamsim

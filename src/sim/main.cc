@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
   pamsim::add_calibrate_command(app);
   pamsim::add_run_command(app);
   pamsim::add_compare_command(app);
+  pamsim::add_sweep_command(app);
+  pamsim::add_export_command(app);
 
   try {
     app.parse(argc, argv);
@@ -28,6 +30,8 @@ int main(int argc, char** argv) {
     // one line, like every other input error (CLI11's own exit adds a second one)
     std::cerr << "pamsim: " << e.what() << "\n";
     return e.get_exit_code() != 0 ? e.get_exit_code() : 2;
+  } catch (const pamsim::CommandExit& e) {
+    return e.code;
   } catch (const pamsim::SimulationFailed&) {
     return 4;
   } catch (const pamsim::InputError& e) {

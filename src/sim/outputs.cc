@@ -17,8 +17,21 @@ nlohmann::json number_or_null(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
-// The numeric metrics of a summary, by their public names.
-std::vector<std::pair<std::string, double>> numeric_metrics(const TrialSummary& s) {
+nlohmann::json scenario_json(const Scenario& sc) {
+  return {{"file", sc.path},
+          {"valve_model", valve_model_name(sc.valve_model)},
+          {"reflex_enabled", sc.reflex.reflex.enabled},
+          {"reflex_sensor", to_string(sc.reflex.reflex.sensor)},
+          {"v_thr_mm_s", sc.reflex.reflex.v_thr_mm_s},
+          {"k_MPa_s_per_mm", sc.reflex.reflex.k_MPa_s_per_mm},
+          {"drop_time_s", sc.drop_time_s},
+          {"timestep_s", sc.timestep_s},
+          {"control_hz", sc.control_hz}};
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, double>> trial_metrics(const TrialSummary& s) {
   return {
       {"start_angle_deg", s.start_angle_deg},
       {"min_angle_deg", s.min_angle_deg},
@@ -42,19 +55,9 @@ std::vector<std::pair<std::string, double>> numeric_metrics(const TrialSummary& 
   };
 }
 
-nlohmann::json scenario_json(const Scenario& sc) {
-  return {{"file", sc.path},
-          {"valve_model", valve_model_name(sc.valve_model)},
-          {"reflex_enabled", sc.reflex.reflex.enabled},
-          {"reflex_sensor", to_string(sc.reflex.reflex.sensor)},
-          {"v_thr_mm_s", sc.reflex.reflex.v_thr_mm_s},
-          {"k_MPa_s_per_mm", sc.reflex.reflex.k_MPa_s_per_mm},
-          {"drop_time_s", sc.drop_time_s},
-          {"timestep_s", sc.timestep_s},
-          {"control_hz", sc.control_hz}};
+bool is_timing_metric(const std::string& name) {
+  return name == "wall_time_s" || name == "realtime_factor";
 }
-
-}  // namespace
 
 std::string trajectory_to_csv(const Trajectory& tr) {
   std::string out;
@@ -84,7 +87,7 @@ nlohmann::json summary_to_json(const TrialSummary& s, const Scenario& sc) {
   j["status"] = s.status;
   if (!s.message.empty()) j["message"] = s.message;
   j["seed"] = s.seed;
-  for (const auto& [name, value] : numeric_metrics(s)) j[name] = number_or_null(value);
+  for (const auto& [name, value] : trial_metrics(s)) j[name] = number_or_null(value);
   j["steps"] = s.steps;
   j["reflex_triggers_ago"] = s.reflex_triggers_ago;
   j["reflex_triggers_anta"] = s.reflex_triggers_anta;
@@ -113,7 +116,7 @@ nlohmann::json aggregate_summaries(const std::vector<TrialSummary>& summaries,
   if (!summaries.empty()) {
     std::vector<std::vector<std::pair<std::string, double>>> table;
     table.reserve(summaries.size());
-    for (const auto& s : summaries) table.push_back(numeric_metrics(s));
+    for (const auto& s : summaries) table.push_back(trial_metrics(s));
     const auto& names = table.front();
     for (std::size_t k = 0; k < names.size(); ++k) {
       double sum = 0, lo = INFINITY, hi = -INFINITY;

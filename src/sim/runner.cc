@@ -18,6 +18,12 @@ ArmModel load_arm_for(const Scenario& sc) {
   return arm;
 }
 
+bool same_arm(const Scenario& a, const Scenario& b) {
+  return a.model_file == b.model_file && a.agonist_params == b.agonist_params &&
+         a.antagonist_params == b.antagonist_params && a.calibration_file == b.calibration_file &&
+         a.drop_mass_kg == b.drop_mass_kg && a.timestep_s == b.timestep_s;
+}
+
 int default_thread_count() {
   const unsigned n = std::thread::hardware_concurrency();
   return n == 0 ? 1 : static_cast<int>(n);

@@ -14,6 +14,10 @@ namespace pamsim {
 // The arm for a scenario: its MJCF, PAM parameters, calibration and falling mass.
 ArmModel load_arm_for(const Scenario& scenario);
 
+// True if two scenarios build the same arm (load_arm_for reads the same files and values),
+// so a worker can keep its arm when a sweep moves to a point that changes only other keys.
+bool same_arm(const Scenario& a, const Scenario& b);
+
 // Default thread count: all cores.
 int default_thread_count();
 

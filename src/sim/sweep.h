@@ -1,0 +1,76 @@
+// sweep.h: a parameter sweep read from a sweep TOML file: a base scenario, fixed overrides,
+// the axes (any scenario key, as a list or a linear/log range), the design that turns the axes
+// into points (full grid, uniform random, or Latin hypercube) and the seeds per point.
+// Trial t is point t / seeds with seed base.seed + t % seeds, so every point sees the same
+// noise seeds (common random numbers: differences between points are not sampling noise).
+//
+// Sweep file keys:
+//   base         scenario file (path, relative to the sweep file)            required
+//   seeds        seeds per point, >= 1                                         default 1
+//   design       "grid" | "random" | "lhs"                                     default "grid"
+//   samples      points of a random or lhs design, >= 1                        (not for grid)
+//   design_seed  seed of the random or lhs design, >= 0                        default 1
+//   [fixed]      scenario keys set at every point, as in the scenario: [fixed.sim] duration_s = 2
+//   [[axis]]     key = "reflex.v_thr_mm_s", and either
+//                  values = [..]                       (grid only), or
+//                  from, to, count, scale = "linear"|"log"   (count for grid only)
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pamsim {
+
+enum class SweepDesign { kGrid, kRandom, kLatinHypercube };
+const char* sweep_design_name(SweepDesign design);
+
+// One value of an axis: a number (as a double), or a string or boolean scenario value.
+struct AxisValue {
+  enum class Kind { kNumber, kString, kBool } kind = Kind::kNumber;
+  double number = 0;
+  std::string text;    // kString
+  bool flag = false;   // kBool
+  // The value as TOML source for a `key=value` override (numbers round-trip exactly).
+  std::string toml() const;
+};
+
+struct SweepAxis {
+  std::string key;                  // scenario key, e.g. "reflex.v_thr_mm_s"
+  std::vector<AxisValue> values;    // grid levels (grid design)
+  bool is_range = false;            // from/to given (random and lhs sample inside it)
+  double from = 0, to = 0;
+  bool log_scale = false;
+};
+
+struct SweepDefinition {
+  std::string file;               // the sweep file, as given
+  std::string base_path;          // the base scenario, resolved
+  std::string base_text;          // its content (part of the definition)
+  std::vector<std::string> fixed; // "key=value" overrides at every point
+  std::vector<SweepAxis> axes;
+  SweepDesign design = SweepDesign::kGrid;
+  std::int64_t samples = 0;       // random, lhs
+  std::uint64_t design_seed = 1;  // random, lhs
+  std::int64_t seeds = 1;
+  std::uint64_t base_seed = 1;    // the base scenario's seed (with fixed overrides)
+
+  // The points' coordinates, point-major: point_values[p * axes.size() + a].
+  std::vector<AxisValue> point_values;
+
+  std::int64_t points() const;
+  std::int64_t trials() const { return points() * seeds; }
+  const AxisValue& value(std::int64_t point, std::size_t axis) const;
+  // "key=value" overrides for a point: the fixed ones, then the axes'.
+  std::vector<std::string> overrides(std::int64_t point) const;
+  std::uint64_t seed_of(std::int64_t trial) const;
+  // What makes two sweeps the same experiment, as canonical JSON text: base scenario content,
+  // fixed overrides, axes, design and seeds (not the file names or the project version).
+  std::string canonical_json() const;
+};
+
+// Reads and validates a sweep file, including every point's scenario. Throws InputError
+// "<file>: <key> <problem>" for the first problem found.
+SweepDefinition load_sweep(const std::string& path);
+
+}  // namespace pamsim
