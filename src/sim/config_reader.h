@@ -36,6 +36,9 @@ class ConfigReader {
   // A table of tables or values the caller interprets itself (marks the whole subtree read).
   const toml::node* raw(const std::string& key);
 
+  // The document with the overrides applied (to write it back out, e.g. a sweep's best setting).
+  const toml::table& document() const { return doc_; }
+
   // Throws InputError naming the first key that was never read.
   void reject_unknown() const;
 

@@ -2,6 +2,7 @@
 #include "sim/scenario.h"
 
 #include <cmath>
+#include <iterator>
 
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/units.h"
@@ -57,6 +58,13 @@ void read_reflex(ConfigReader& in, ReflexControllerConfig* c) {
 
 }  // namespace
 
+const std::vector<std::string>& scenario_path_keys() {
+  static const std::vector<std::string> keys = {"model.file", "model.agonist_params",
+                                                "model.antagonist_params", "model.calibration",
+                                                "model.pneumatics"};
+  return keys;
+}
+
 Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides) {
   ConfigReader in(path);
   for (const auto& o : overrides) in.apply_override(o);
@@ -69,16 +77,14 @@ Scenario load_scenario(const std::string& path, const std::vector<std::string>& 
   sc.seed = static_cast<std::uint64_t>(seed);
 
   // files
-  sc.model_file = in.get_path("model.file", "");
-  in.check(!sc.model_file.empty(), "model.file", "is required");
-  sc.agonist_params = in.get_path("model.agonist_params", "");
-  in.check(!sc.agonist_params.empty(), "model.agonist_params", "is required");
-  sc.antagonist_params = in.get_path("model.antagonist_params", "");
-  in.check(!sc.antagonist_params.empty(), "model.antagonist_params", "is required");
-  sc.calibration_file = in.get_path("model.calibration", "");
-  in.check(!sc.calibration_file.empty(), "model.calibration", "is required");
-  sc.pneumatics_file = in.get_path("model.pneumatics", "");
-  in.check(!sc.pneumatics_file.empty(), "model.pneumatics", "is required");
+  std::string* const files[] = {&sc.model_file, &sc.agonist_params, &sc.antagonist_params,
+                                &sc.calibration_file, &sc.pneumatics_file};
+  static_assert(std::size(files) == 5, "one target per scenario_path_keys() entry");
+  for (std::size_t i = 0; i < std::size(files); ++i) {
+    const std::string& key = scenario_path_keys()[i];
+    *files[i] = in.get_path(key, "");
+    in.check(!files[i]->empty(), key, "is required");
+  }
 
   // time
   sc.timestep_s = in.get_double("sim.timestep_s", sc.timestep_s);

@@ -31,6 +31,10 @@
 
 namespace pamsim {
 
+// The keys that hold file paths (relative to the scenario file): model.file and the
+// other model.* files.
+const std::vector<std::string>& scenario_path_keys();
+
 struct Scenario {
   std::string path;   // the scenario file (for messages and summaries)
 

@@ -1,6 +1,7 @@
 // sweep.cc: see sweep.h.
 #include "sim/sweep.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -226,10 +227,11 @@ std::string AxisValue::toml() const {
     case Kind::kBool: return flag ? "true" : "false";
     case Kind::kNumber: break;
   }
+  if (!std::isfinite(number)) return std::isnan(number) ? "nan" : number > 0 ? "inf" : "-inf";
   char buf[40];
-  std::snprintf(buf, sizeof(buf), "%.17g", number);
-  std::string s = buf;
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";   // stay a float in TOML
+  const auto end = std::to_chars(buf, buf + sizeof(buf), number).ptr;   // shortest exact form
+  std::string s(buf, end);
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";   // stay a float in TOML
   return s;
 }
 
