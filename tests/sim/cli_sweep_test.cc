@@ -1,0 +1,263 @@
+// cli_sweep_test.cc: `pamsim sweep`, `export` and `report` as a user runs them: the same
+// export on 1 and 2 threads; a sweep killed with SIGKILL and resumed exports exactly what an
+// uninterrupted one does; a diverging trial is stored and the sweep goes on; bad sweep files
+// give one line, a non-zero exit and no database; the best setting runs as a scenario.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cli_util.h"
+#include "sim/results_db.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using pamsim_test::fresh_dir;
+using pamsim_test::line_count;
+using pamsim_test::read_file;
+using pamsim_test::run_pamsim;
+using pamsim_test::write_text;
+
+const std::string kDropMass = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml";
+
+// A sweep file on the drop-mass scenario with short trials and the given extra text.
+std::string short_sweep(const std::string& body) {
+  return "base = \"" + kDropMass + "\"\n" + body +
+         "\n[fixed.sim]\nduration_s = 0.8\n[fixed.drop]\ntime_s = 0.2\n";
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::stringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+TEST(CliSweepTest, SmokeSweepExportsTheSameCsvOnOneAndTwoThreads) {
+  const fs::path dir = fresh_dir("sweep_threads");
+  for (int threads : {1, 2}) {
+    const std::string db = (dir / ("t" + std::to_string(threads) + ".db")).string();
+    const auto r = run_pamsim("sweep scenarios/sweep_smoke.toml --threads " +
+                              std::to_string(threads) + " --db " + db);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto e = run_pamsim("export " + db + " --csv " + db + ".csv");
+    ASSERT_EQ(e.exit_code, 0) << e.err;
+  }
+  const std::string one = read_file(dir / "t1.db.csv");
+  const std::string two = read_file(dir / "t2.db.csv");
+  EXPECT_EQ(one, two);
+
+  // 4 x 4 points x 2 seeds, in trial order, every metric present, all ok
+  const auto lines = lines_of(one);
+  ASSERT_EQ(lines.size(), 1u + 32u);
+  EXPECT_EQ(lines[0].rfind("trial,point,seed_index,seed,reflex.v_thr_mm_s,reflex.k_MPa_s_per_mm,"
+                           "status,message,", 0), 0u) << lines[0];
+  for (const char* metric : {"peak_drop_deg", "mistrips", "recovery_time_s", "impact_time_s"}) {
+    EXPECT_NE(lines[0].find(metric), std::string::npos) << metric;
+  }
+  EXPECT_EQ(lines[0].find("wall_time_s"), std::string::npos) << "timing is not exported by default";
+  for (std::size_t t = 0; t < 32; ++t) {
+    EXPECT_EQ(lines[t + 1].rfind(std::to_string(t) + ",", 0), 0u) << lines[t + 1];
+    EXPECT_NE(lines[t + 1].find(",ok,"), std::string::npos) << lines[t + 1];
+  }
+}
+
+// Waits until `db` holds at least `n` trials (or the process has exited); returns the count.
+std::int64_t wait_for_trials(const std::string& db, std::int64_t n, pid_t pid) {
+  for (int i = 0; i < 20000; ++i) {
+    if (fs::exists(db)) {
+      try {
+        const std::int64_t stored = pamsim::ResultsDb::open_read_only(db).trial_count();
+        if (stored >= n) return stored;
+      } catch (const std::exception&) {   // mid-creation: try again
+      }
+    }
+    if (::waitpid(pid, nullptr, WNOHANG) == pid) return -1;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return -1;
+}
+
+TEST(CliSweepTest, SweepKilledHalfwayAndResumedEqualsTheUninterruptedOne) {
+  const fs::path dir = fresh_dir("sweep_kill");
+  const fs::path sweep = dir / "sweep.toml";
+  write_text(sweep, short_sweep("seeds = 10\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\n"
+                                "values = [40.0, 70.0, 100.0]\n[[axis]]\n"
+                                "key = \"reflex.k_MPa_s_per_mm\"\nfrom = 0.0005\nto = 0.004\n"
+                                "count = 4\nscale = \"log\"\n"));
+  const int total = 3 * 4 * 10;
+
+  // the reference, uninterrupted
+  const std::string ref_db = (dir / "ref.db").string();
+  ASSERT_EQ(run_pamsim("sweep " + sweep.string() + " --threads 2 --db " + ref_db).exit_code, 0);
+  ASSERT_EQ(run_pamsim("export " + ref_db + " --csv " + ref_db + ".csv").exit_code, 0);
+
+  // the same sweep, killed with SIGKILL once about half the trials are stored
+  const std::string db = (dir / "killed.db").string();
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    ::freopen("/dev/null", "w", stderr);
+    ::freopen("/dev/null", "w", stdout);
+    ::execl(PAMSIM_BINARY, PAMSIM_BINARY, "sweep", sweep.c_str(), "--threads", "2", "--db",
+            db.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const std::int64_t seen = wait_for_trials(db, total / 2, pid);
+  ASSERT_GT(seen, 0) << "the sweep finished or failed before it could be killed";
+  ASSERT_EQ(::kill(pid, SIGKILL), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
+  const std::int64_t after_kill = pamsim::ResultsDb::open_read_only(db).trial_count();
+  EXPECT_GE(after_kill, seen);
+  EXPECT_LT(after_kill, total) << "killed too late to test a resume";
+
+  // without --resume the database is refused; with it the rest runs
+  const auto refused = run_pamsim("sweep " + sweep.string() + " --db " + db);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("--resume"), std::string::npos) << refused.err;
+  const auto resumed = run_pamsim("sweep " + sweep.string() + " --threads 2 --resume --db " + db);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  ASSERT_EQ(run_pamsim("export " + db + " --csv " + db + ".csv").exit_code, 0);
+  EXPECT_EQ(read_file(db + ".csv"), read_file(ref_db + ".csv"));
+  EXPECT_EQ(lines_of(read_file(db + ".csv")).size(), 1u + total);
+}
+
+TEST(CliSweepTest, DivergingTrialIsStoredAndTheSweepGoesOn) {
+  const fs::path dir = fresh_dir("sweep_diverge");
+  const fs::path sweep = dir / "sweep.toml";
+  // an absurd gain drives the valve command to infinity right after the trigger
+  write_text(sweep, short_sweep("[[axis]]\nkey = \"reflex.k_MPa_s_per_mm\"\n"
+                                "values = [1e300, 0.00125]\n"));
+  const std::string db = (dir / "s.db").string();
+  const auto r = run_pamsim("sweep " + sweep.string() + " --db " + db);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("1 diverged"), std::string::npos) << r.err;
+  ASSERT_EQ(run_pamsim("export " + db + " --csv " + db + ".csv").exit_code, 0);
+  const auto lines = lines_of(read_file(db + ".csv"));
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_NE(lines[1].find(",diverged,"), std::string::npos) << lines[1];
+  EXPECT_NE(lines[1].find("controller:"), std::string::npos) << lines[1];
+  EXPECT_NE(lines[2].find(",ok,"), std::string::npos) << lines[2];
+}
+
+TEST(CliSweepTest, BadSweepFilesFailWithOneLineAndNoDatabase) {
+  const fs::path dir = fresh_dir("sweep_bad");
+  const std::string axis = "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 70.0]\n";
+  struct Case {
+    const char* name;
+    std::string text;
+    const char* message;   // expected in the error line
+  };
+  const std::vector<Case> cases = {
+      {"unknown_key", short_sweep("seedz = 2\n" + axis), "seedz"},
+      {"unknown_axis_key", short_sweep("[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalue = [1.0]\n"),
+       "axis[0].value"},
+      {"empty_axis", short_sweep("[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = []\n"),
+       "axis[0].values is empty"},
+      {"zero_count", short_sweep("[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nfrom = 1.0\nto = 2.0\n"
+                                 "count = 0\n"), "count must be >= 1"},
+      {"negative_seeds", short_sweep("seeds = -1\n" + axis), "seeds must be >= 1"},
+      {"no_axis", short_sweep(""), "axis is required"},
+      {"nan_value", short_sweep("[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [nan]\n"),
+       "must be finite"},
+      {"log_from_zero", short_sweep("[[axis]]\nkey = \"reflex.k_MPa_s_per_mm\"\nfrom = 0.0\n"
+                                    "to = 1.0\ncount = 3\nscale = \"log\"\n"), "log scale"},
+      {"unknown_design", short_sweep("design = \"sobol\"\n" + axis), "design must be"},
+      {"lhs_without_samples", short_sweep("design = \"lhs\"\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\n"
+                                          "from = 1.0\nto = 2.0\n"), "samples must be >= 1"},
+      {"base_fails", short_sweep("[fixed.reflex]\nduration_s = -1.0\n" + axis), "base scenario"},
+      {"point_fails", short_sweep("[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, -5.0]\n"),
+       "point 1"},
+      {"unknown_scenario_key", short_sweep("[[axis]]\nkey = \"reflex.v_thr\"\nvalues = [50.0]\n"),
+       "reflex.v_thr"},
+      {"missing_base", "base = \"nowhere.toml\"\n" + axis, "nowhere.toml"},
+  };
+  for (const Case& c : cases) {
+    const fs::path file = dir / (std::string(c.name) + ".toml");
+    write_text(file, c.text);
+    const fs::path out = dir / (std::string(c.name) + "_out");
+    const auto r = run_pamsim("sweep " + file.string() + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << c.name << ": " << r.err;
+    EXPECT_NE(r.err.find(file.string()), std::string::npos) << c.name << ": " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.name << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out / "sweep.db")) << c.name;
+  }
+  const auto missing = run_pamsim("sweep " + (dir / "absent.toml").string());
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_EQ(line_count(missing.err), 1) << missing.err;
+}
+
+TEST(CliSweepTest, ResumeRefusesADatabaseOfAnotherSweep) {
+  const fs::path dir = fresh_dir("sweep_other");
+  const fs::path a = dir / "a.toml", b = dir / "b.toml";
+  write_text(a, short_sweep("[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0]\n"));
+  write_text(b, short_sweep("[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [60.0]\n"));
+  const std::string db = (dir / "a.db").string();
+  ASSERT_EQ(run_pamsim("sweep " + a.string() + " --db " + db).exit_code, 0);
+  const std::string before = read_file(db);
+  const auto r = run_pamsim("sweep " + b.string() + " --resume --db " + db);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("holds a different sweep (its axes differ"), std::string::npos) << r.err;
+  EXPECT_EQ(read_file(db), before);
+  // resuming a finished sweep runs nothing and keeps every trial
+  const auto again = run_pamsim("sweep " + a.string() + " --resume --db " + db);
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(pamsim::ResultsDb::open_read_only(db).trial_count(), 1);
+}
+
+TEST(CliSweepTest, ReportWritesHeatMapsAndABestSettingThatRuns) {
+  const fs::path dir = fresh_dir("sweep_report");
+  const std::string db = (dir / "smoke.db").string();
+  ASSERT_EQ(run_pamsim("sweep scenarios/sweep_smoke.toml --db " + db).exit_code, 0);
+  const fs::path out = dir / "report";
+  const auto r = run_pamsim("report " + db + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("criterion: smallest mean peak_drop_deg"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("best: point "), std::string::npos) << r.out;
+  for (const char* f : {"points.csv", "heatmap_mistrip_rate.png", "heatmap_peak_drop_deg.png",
+                        "heatmap_recovery_time_s.png", "best.toml"}) {
+    EXPECT_GT(fs::file_size(out / f), 100u) << f;
+  }
+  EXPECT_EQ(lines_of(read_file(out / "points.csv")).size(), 1u + 16u);
+
+  // the best setting runs as a scenario, from another folder than the sweep's
+  const auto run = run_pamsim("run " + (out / "best.toml").string() + " --out " +
+                              (dir / "best_run").string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(fs::exists(dir / "best_run" / "summary.json"));
+
+  const auto bad = run_pamsim("report " + db + " --metric nope --out " + (dir / "bad").string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--metric nope"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir / "bad"));
+}
+
+TEST(CliSweepTest, ExportAndReportRefuseWhatIsNotASweepDatabase) {
+  const fs::path dir = fresh_dir("sweep_not_db");
+  write_text(dir / "junk.db", "not a database at all, just some text that is long enough\n");
+  for (const std::string& args : {"export " + (dir / "junk.db").string() + " --csv " +
+                                      (dir / "x.csv").string(),
+                                  "export " + (dir / "absent.db").string() + " --csv " +
+                                      (dir / "x.csv").string(),
+                                  "report " + (dir / "junk.db").string()}) {
+    const auto r = run_pamsim(args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "x.csv"));
+  EXPECT_FALSE(fs::exists(dir / "absent.db"));
+}
+
+}  // namespace

@@ -1,0 +1,68 @@
+// cli_util.h: running the real `pamsim` binary from a test, as a user would from the source
+// folder, with its exit code, stderr and (optionally) stdout captured; and fresh temp folders.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace pamsim_test {
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+inline std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Runs `pamsim <args>` in the source folder (so scenarios/... paths work).
+inline CliResult run_pamsim(const std::string& args) {
+  static int counter = 0;
+  const std::string base = ::testing::TempDir() + "pamsim_cli_" + std::to_string(::getpid()) +
+                           "_" + std::to_string(counter++);
+  const std::string cmd = std::string("cd ") + PAMSIM_SOURCE_DIR + " && " + PAMSIM_BINARY + " " +
+                          args + " > " + base + ".out 2> " + base + ".err";
+  const int status = std::system(cmd.c_str());
+  CliResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = read_file(base + ".out");
+  r.err = read_file(base + ".err");
+  std::remove((base + ".out").c_str());
+  std::remove((base + ".err").c_str());
+  return r;
+}
+
+inline int line_count(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+// An empty folder under the test temp folder, unique to this process.
+inline std::filesystem::path fresh_dir(const std::string& name) {
+  const std::filesystem::path dir =
+      std::filesystem::path(::testing::TempDir()) / (name + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+inline void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+}  // namespace pamsim_test

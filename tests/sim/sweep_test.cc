@@ -1,0 +1,253 @@
+// sweep_test.cc: sweep definitions (grid order, linear and log ranges, Latin hypercube
+// strata, exact values), the results database (round trip, refused duplicates and other
+// sweeps) and the report's statistics, best point and heat-map placement.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "cli_util.h"
+#include "pam_actuator/input_error.h"
+#include "sim/progress.h"
+#include "sim/report.h"
+#include "sim/results_db.h"
+#include "sim/sweep.h"
+#include "sim/sweep_runner.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using pamsim::AxisValue;
+using pamsim::InputError;
+using pamsim::ResultsDb;
+using pamsim::SweepDefinition;
+using pamsim_test::fresh_dir;
+using pamsim_test::write_text;
+
+const std::string kDropMass = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml";
+
+SweepDefinition sweep_from(const fs::path& dir, const std::string& body) {
+  const fs::path file = dir / "sweep.toml";
+  write_text(file, "base = \"" + kDropMass + "\"\n" + body);
+  return pamsim::load_sweep(file.string());
+}
+
+class SweepTest : public ::testing::Test {
+ protected:
+  fs::path dir_ = fresh_dir("sweep_unit");
+};
+
+TEST_F(SweepTest, GridIsRowMajorWithTheFirstAxisSlowest) {
+  const SweepDefinition s = sweep_from(dir_,
+      "seeds = 3\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 60.0]\n"
+      "[[axis]]\nkey = \"reflex.sensor\"\nvalues = [\"model\", \"fiber\", \"model\"]\n");
+  ASSERT_EQ(s.points(), 6);
+  EXPECT_EQ(s.trials(), 18);
+  EXPECT_EQ(s.value(0, 0).number, 50.0);
+  EXPECT_EQ(s.value(2, 0).number, 50.0);
+  EXPECT_EQ(s.value(3, 0).number, 60.0);
+  EXPECT_EQ(s.value(1, 1).text, "fiber");
+  EXPECT_EQ(s.value(4, 1).text, "fiber");
+  // every point sees the same seeds: base seed 1, then 2, 3
+  EXPECT_EQ(s.seed_of(0), 1u);
+  EXPECT_EQ(s.seed_of(5), 3u);
+  EXPECT_EQ(s.seed_of(6), 1u);
+  const auto o = s.overrides(4);
+  EXPECT_EQ(o.back(), "reflex.sensor='fiber'");   // a TOML literal string
+  EXPECT_EQ(o[o.size() - 2], "reflex.v_thr_mm_s=60.0");
+}
+
+TEST_F(SweepTest, RangesHitTheirEndsExactlyAndLogRangesAreGeometric) {
+  const SweepDefinition s = sweep_from(dir_,
+      "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nfrom = 10.0\nto = 200.0\ncount = 20\n"
+      "[[axis]]\nkey = \"reflex.k_MPa_s_per_mm\"\nfrom = 0.0001\nto = 0.01\ncount = 5\n"
+      "scale = \"log\"\n[fixed.sim]\nduration_s = 1.5\n");
+  const auto& v = s.axes[0].values;
+  const auto& k = s.axes[1].values;
+  ASSERT_EQ(v.size(), 20u);
+  ASSERT_EQ(k.size(), 5u);
+  EXPECT_EQ(v.front().number, 10.0);
+  EXPECT_EQ(v.back().number, 200.0);
+  EXPECT_DOUBLE_EQ(v[1].number - v[0].number, 10.0);
+  EXPECT_EQ(k.front().number, 0.0001);
+  EXPECT_EQ(k.back().number, 0.01);
+  for (std::size_t i = 1; i < k.size(); ++i) {
+    EXPECT_NEAR(k[i].number / k[i - 1].number, std::sqrt(10.0), 1e-9);
+  }
+  EXPECT_EQ(k[2].toml(), "0.001");   // tidy levels, exact as written
+  EXPECT_EQ(s.fixed, std::vector<std::string>{"sim.duration_s=1.5"});
+}
+
+TEST_F(SweepTest, AxisValuesRoundTripExactlyThroughToml) {
+  for (double x : {0.1, 1.0 / 3.0, 1e-300, 123456789.125, -2.5e17, 20.0}) {
+    AxisValue a;
+    a.number = x;
+    const std::string text = a.toml();
+    EXPECT_EQ(std::strtod(text.c_str(), nullptr), x) << text;
+    EXPECT_NE(text.find_first_of(".e"), std::string::npos) << text << " must stay a float";
+  }
+}
+
+TEST_F(SweepTest, LatinHypercubePutsOnePointInEveryStratumOfEveryAxis) {
+  const std::string body =
+      "design = \"lhs\"\nsamples = 16\ndesign_seed = 7\n"
+      "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nfrom = 20.0\nto = 180.0\n"
+      "[[axis]]\nkey = \"reflex.k_MPa_s_per_mm\"\nfrom = 0.0001\nto = 0.01\nscale = \"log\"\n";
+  const SweepDefinition s = sweep_from(dir_, body);
+  ASSERT_EQ(s.points(), 16);
+  std::set<int> v_strata, k_strata;
+  for (std::int64_t p = 0; p < 16; ++p) {
+    const double u_v = (s.value(p, 0).number - 20.0) / 160.0;
+    const double u_k = std::log(s.value(p, 1).number / 0.0001) / std::log(100.0);
+    ASSERT_TRUE(u_v >= 0 && u_v < 1 && u_k >= 0 && u_k < 1);
+    v_strata.insert(static_cast<int>(u_v * 16));
+    k_strata.insert(static_cast<int>(u_k * 16));
+  }
+  EXPECT_EQ(v_strata.size(), 16u);
+  EXPECT_EQ(k_strata.size(), 16u);
+  // the design is a function of its seed
+  EXPECT_EQ(sweep_from(dir_, body).canonical_json(), s.canonical_json());
+  const SweepDefinition other = sweep_from(dir_, body.substr(0, body.find("design_seed")) +
+                                                     "design_seed = 8\n" +
+                                                     body.substr(body.find("[[axis]]")));
+  EXPECT_NE(other.value(0, 0).number, s.value(0, 0).number);
+}
+
+TEST_F(SweepTest, RandomDesignStaysInsideItsRanges) {
+  const SweepDefinition s = sweep_from(dir_,
+      "design = \"random\"\nsamples = 50\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\n"
+      "from = 30.0\nto = 90.0\n");
+  ASSERT_EQ(s.points(), 50);
+  double lo = 1e9, hi = -1e9;
+  for (std::int64_t p = 0; p < 50; ++p) {
+    lo = std::min(lo, s.value(p, 0).number);
+    hi = std::max(hi, s.value(p, 0).number);
+  }
+  EXPECT_GE(lo, 30.0);
+  EXPECT_LT(hi, 90.0);
+  EXPECT_GT(hi - lo, 30.0);   // spread over the range, not one value
+}
+
+TEST_F(SweepTest, TheDefinitionIsTheExperimentNotTheFileName) {
+  const std::string body = "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0]\n";
+  const SweepDefinition a = sweep_from(dir_, body);
+  const fs::path other = dir_ / "renamed.toml";
+  fs::copy_file(dir_ / "sweep.toml", other);
+  EXPECT_EQ(pamsim::load_sweep(other.string()).canonical_json(), a.canonical_json());
+  EXPECT_NE(sweep_from(dir_, "seeds = 2\n" + body).canonical_json(), a.canonical_json());
+}
+
+TEST_F(SweepTest, DatabaseRefusesDuplicateTrialsAndKeepsTheBatchAtomic) {
+  const SweepDefinition s = sweep_from(dir_,
+      "seeds = 2\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 60.0]\n");
+  const std::string path = (dir_ / "r.db").string();
+  ResultsDb db = ResultsDb::create(path, s);
+  EXPECT_THROW(ResultsDb::create(path, s), InputError);
+  pamsim::TrialRecord a;
+  a.trial = 1;
+  a.point = 0;
+  a.seed_index = 1;
+  a.summary.seed = 2;
+  a.summary.peak_drop_deg = 7.5;
+  db.insert(s, {a});
+  EXPECT_EQ(db.trial_count(), 1);
+  pamsim::TrialRecord b = a;
+  b.trial = 2;
+  EXPECT_THROW(db.insert(s, {b, a}), std::runtime_error);   // a again: the whole batch rolls back
+  EXPECT_EQ(db.trial_count(), 1);
+  const std::vector<bool> finished = db.finished_trials(s.trials());
+  EXPECT_EQ(finished, (std::vector<bool>{false, true, false, false}));
+}
+
+// A sweep database with hand-made results: point p, seed i has peak drop 10 + p + i and
+// mistrips only at point 0.
+pamsim::SweepSummary synthetic_summary(const fs::path& dir) {
+  const SweepDefinition s = sweep_from(dir,
+      "seeds = 3\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 60.0]\n"
+      "[[axis]]\nkey = \"reflex.k_MPa_s_per_mm\"\nvalues = [0.001, 0.002, 0.003]\n");
+  const std::string path = (dir / "synthetic.db").string();
+  fs::remove(path);
+  ResultsDb db = ResultsDb::create(path, s);
+  std::vector<pamsim::TrialRecord> records;
+  for (std::int64_t t = 0; t < s.trials(); ++t) {
+    pamsim::TrialRecord r;
+    r.trial = t;
+    r.point = t / 3;
+    r.seed_index = t % 3;
+    r.summary.seed = s.seed_of(t);
+    r.summary.peak_drop_deg = 10.0 + static_cast<double>(r.point) + static_cast<double>(r.seed_index);
+    r.summary.mistrips = r.point == 0 ? 1 : 0;
+    if (r.point == 5 && r.seed_index == 2) r.summary.status = "diverged";
+    records.push_back(r);
+  }
+  db.insert(s, records);
+  return pamsim::summarize_sweep(db);
+}
+
+TEST_F(SweepTest, ReportStatisticsAndBestPointFollowTheCriterion) {
+  const pamsim::SweepSummary sweep = synthetic_summary(dir_);
+  ASSERT_EQ(sweep.points.size(), 6u);
+  EXPECT_EQ(sweep.trials_not_ok, 1);
+  const int m = sweep.metric_index("peak_drop_deg");
+  ASSERT_GE(m, 0);
+  const pamsim::MetricStats& p2 = sweep.points[2].metrics[m];
+  EXPECT_EQ(p2.count, 3);
+  EXPECT_DOUBLE_EQ(p2.mean, 13.0);   // 12, 13, 14
+  EXPECT_DOUBLE_EQ(p2.std, 1.0);
+  EXPECT_EQ(p2.min, 12.0);
+  EXPECT_EQ(p2.max, 14.0);
+  EXPECT_EQ(sweep.points[0].mistrip_rate(), 1.0);
+  EXPECT_EQ(sweep.points[1].mistrip_rate(), 0.0);
+  EXPECT_EQ(sweep.points[5].ok, 2);
+
+  // point 0 has the smallest drop but mistrips: the best is point 1
+  const pamsim::PointSummary* best = pamsim::best_point(sweep, "peak_drop_deg");
+  ASSERT_NE(best, nullptr);
+  EXPECT_EQ(best->point, 1);
+
+  // heat map cells: x = v_thr level, y = k level
+  const pamsim::HeatMap map = pamsim::sweep_heat_map(sweep, "peak_drop_deg", best, "peak_drop_deg");
+  ASSERT_EQ(map.cells.size(), 6u);
+  EXPECT_DOUBLE_EQ(map.cells[0 * 2 + 1], 14.0);   // v = 60 (ix 1), k = 0.001 (iy 0): point 3
+  EXPECT_DOUBLE_EQ(map.cells[2 * 2 + 0], 13.0);   // v = 50, k = 0.003: point 2
+  EXPECT_EQ(map.mark_x, 0.0);
+  EXPECT_EQ(map.mark_y, 1.0);
+  EXPECT_EQ(map.x_levels, (std::vector<std::string>{"50", "60"}));
+}
+
+TEST_F(SweepTest, BestScenarioKeepsTheBaseAndSetsThePoint) {
+  const pamsim::SweepSummary sweep = synthetic_summary(dir_);
+  const pamsim::PointSummary* best = pamsim::best_point(sweep, "peak_drop_deg");
+  ASSERT_NE(best, nullptr);
+  const fs::path out = dir_ / "elsewhere" / "deeper";
+  fs::create_directories(out);
+  const std::string text = pamsim::point_scenario_toml(sweep, *best, out.string(), "# header\n");
+  write_text(out / "best.toml", text);
+  const pamsim::Scenario sc = pamsim::load_scenario((out / "best.toml").string(), {});
+  const pamsim::Scenario base = pamsim::load_scenario(kDropMass, {});
+  EXPECT_EQ(sc.reflex.reflex.v_thr_mm_s, 50.0);
+  EXPECT_EQ(sc.reflex.reflex.k_MPa_s_per_mm, 0.002);
+  EXPECT_EQ(fs::weakly_canonical(sc.model_file), fs::weakly_canonical(base.model_file));
+  EXPECT_EQ(sc.duration_s, base.duration_s);
+  EXPECT_EQ(text.rfind("# header\n", 0), 0u);
+}
+
+TEST_F(SweepTest, RunnerRejectsZeroThreads) {
+  const SweepDefinition s = sweep_from(dir_, "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0]\n");
+  ResultsDb db = ResultsDb::create((dir_ / "z.db").string(), s);
+  pamsim::SweepRunOptions options;
+  options.threads = 0;
+  EXPECT_THROW(pamsim::run_sweep(s, db, options), InputError);
+}
+
+TEST(ProgressTest, DurationsReadAsClockTime) {
+  EXPECT_EQ(pamsim::format_duration(0), "0:00");
+  EXPECT_EQ(pamsim::format_duration(83), "1:23");
+  EXPECT_EQ(pamsim::format_duration(3723), "1:02:03");
+  EXPECT_EQ(pamsim::format_duration(NAN), "--:--");
+}
+
+}  // namespace
