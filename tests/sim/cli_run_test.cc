@@ -11,43 +11,20 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_util.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exit_code;
-  std::string err;
-};
-
-// Runs the binary from the source folder with `args`; stderr is captured.
-Result pamsim(const std::string& args) {
-  const std::string err_file = ::testing::TempDir() + "pamsim_err_" + std::to_string(::getpid());
-  const std::string cmd = std::string("cd ") + PAMSIM_SOURCE_DIR + " && " + PAMSIM_BINARY +
-                          " " + args + " > /dev/null 2> " + err_file;
-  const int status = std::system(cmd.c_str());
-  std::ifstream in(err_file);
-  std::stringstream err;
-  err << in.rdbuf();
-  std::remove(err_file.c_str());
-  return {WEXITSTATUS(status), err.str()};
-}
-
-int line_count(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
-
-fs::path fresh_dir(const std::string& name) {
-  fs::path dir = fs::path(::testing::TempDir()) / (name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  return dir;
-}
+using pamsim_test::CliResult;
+using pamsim_test::fresh_dir;
+using pamsim_test::line_count;
+using pamsim_test::run_pamsim;
 
 TEST(CliRunTest, RunWritesTrajectorySummaryAndPlot) {
   const fs::path out = fresh_dir("run_ok");
-  const Result r = pamsim("run scenarios/drop_mass.toml --set sim.duration_s=1.5 --out " +
+  const CliResult r = run_pamsim("run scenarios/drop_mass.toml --set sim.duration_s=1.5 --out " +
                           out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* f : {"trajectory.csv", "summary.json", "angle.png"}) {
@@ -72,7 +49,7 @@ TEST(CliRunTest, RunWritesTrajectorySummaryAndPlot) {
 
 TEST(CliRunTest, TrialsWriteEachTrialAndTheAggregate) {
   const fs::path out = fresh_dir("run_trials");
-  const Result r = pamsim("run scenarios/drop_mass.toml --set sim.duration_s=1.3 --trials 3 "
+  const CliResult r = run_pamsim("run scenarios/drop_mass.toml --set sim.duration_s=1.3 --trials 3 "
                           "--threads 2 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* f : {"summary.json", "angle_band.png", "trial_0000/trajectory.csv",
@@ -86,7 +63,7 @@ TEST(CliRunTest, TrialsWriteEachTrialAndTheAggregate) {
 }
 
 TEST(CliRunTest, BadInputIsOneLineNonZeroAndWritesNothing) {
-  const fs::path out = fresh_dir("run_bad");
+  const fs::path out = fresh_dir("run_bad") / "out";
   for (const std::string args :
        {"run scenarios/missing.toml", "run scenarios/drop_mass.toml --set reflex.v_thr_mm_s=-1",
         "run scenarios/drop_mass.toml --set sim.timestep_s=nan",
@@ -94,7 +71,7 @@ TEST(CliRunTest, BadInputIsOneLineNonZeroAndWritesNothing) {
         "run scenarios/drop_mass.toml --set model.file=\\\"/nonexistent.xml\\\"",
         "run scenarios/drop_mass.toml --trials 0", "run scenarios/drop_mass.toml --threads -1",
         "run"}) {
-    const Result r = pamsim(args + " --out " + out.string());
+    const CliResult r = run_pamsim(args + " --out " + out.string());
     EXPECT_NE(r.exit_code, 0) << args;
     EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
     EXPECT_EQ(r.err.rfind("pamsim: ", 0), 0u) << r.err;
@@ -105,7 +82,7 @@ TEST(CliRunTest, BadInputIsOneLineNonZeroAndWritesNothing) {
 TEST(CliRunTest, CalibrateReproducesTheShippedCalibration) {
   const fs::path out = fresh_dir("calib");
   fs::create_directories(out);
-  const Result r = pamsim("calibrate scenarios/drop_mass_passive.toml -o " +
+  const CliResult r = run_pamsim("calibrate scenarios/drop_mass_passive.toml -o " +
                           (out / "c.toml").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::ifstream a(out / "c.toml"), b(std::string(PAMSIM_SOURCE_DIR) +
@@ -116,7 +93,7 @@ TEST(CliRunTest, CalibrateReproducesTheShippedCalibration) {
     if (la.rfind("written_by", 0) == 0) continue;
     EXPECT_EQ(la, lb);
   }
-  const Result bad = pamsim("calibrate scenarios/drop_mass_passive.toml --angle-deg 95 -o " +
+  const CliResult bad = run_pamsim("calibrate scenarios/drop_mass_passive.toml --angle-deg 95 -o " +
                             (out / "d.toml").string());
   EXPECT_NE(bad.exit_code, 0);
   EXPECT_FALSE(fs::exists(out / "d.toml"));
