@@ -86,14 +86,33 @@ std::int64_t wait_for_trials(const std::string& db, std::int64_t n, pid_t pid) {
   return -1;
 }
 
-TEST(CliSweepTest, SweepKilledHalfwayAndResumedEqualsTheUninterruptedOne) {
-  const fs::path dir = fresh_dir("sweep_kill");
+// `pamsim sweep SWEEP --threads 2 --db DB` in the background, output discarded; its pid.
+pid_t spawn_sweep(const fs::path& sweep, const std::string& db) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    if (!::freopen("/dev/null", "w", stderr) || !::freopen("/dev/null", "w", stdout)) ::_exit(126);
+    ::execl(PAMSIM_BINARY, PAMSIM_BINARY, "sweep", sweep.c_str(), "--threads", "2", "--db",
+            db.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// 120 short trials: long enough to stop in the middle
+fs::path interruptible_sweep(const fs::path& dir) {
   const fs::path sweep = dir / "sweep.toml";
   write_text(sweep, short_sweep("seeds = 10\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\n"
                                 "values = [40.0, 70.0, 100.0]\n[[axis]]\n"
                                 "key = \"reflex.k_MPa_s_per_mm\"\nfrom = 0.0005\nto = 0.004\n"
                                 "count = 4\nscale = \"log\"\n"));
-  const int total = 3 * 4 * 10;
+  return sweep;
+}
+constexpr int kInterruptibleTrials = 3 * 4 * 10;
+
+TEST(CliSweepTest, SweepKilledHalfwayAndResumedEqualsTheUninterruptedOne) {
+  const fs::path dir = fresh_dir("sweep_kill");
+  const fs::path sweep = interruptible_sweep(dir);
+  const int total = kInterruptibleTrials;
 
   // the reference, uninterrupted
   const std::string ref_db = (dir / "ref.db").string();
@@ -102,15 +121,8 @@ TEST(CliSweepTest, SweepKilledHalfwayAndResumedEqualsTheUninterruptedOne) {
 
   // the same sweep, killed with SIGKILL once about half the trials are stored
   const std::string db = (dir / "killed.db").string();
-  const pid_t pid = ::fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    ::freopen("/dev/null", "w", stderr);
-    ::freopen("/dev/null", "w", stdout);
-    ::execl(PAMSIM_BINARY, PAMSIM_BINARY, "sweep", sweep.c_str(), "--threads", "2", "--db",
-            db.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
+  const pid_t pid = spawn_sweep(sweep, db);
+  ASSERT_GT(pid, 0);
   const std::int64_t seen = wait_for_trials(db, total / 2, pid);
   ASSERT_GT(seen, 0) << "the sweep finished or failed before it could be killed";
   ASSERT_EQ(::kill(pid, SIGKILL), 0);
@@ -130,6 +142,27 @@ TEST(CliSweepTest, SweepKilledHalfwayAndResumedEqualsTheUninterruptedOne) {
   ASSERT_EQ(run_pamsim("export " + db + " --csv " + db + ".csv").exit_code, 0);
   EXPECT_EQ(read_file(db + ".csv"), read_file(ref_db + ".csv"));
   EXPECT_EQ(lines_of(read_file(db + ".csv")).size(), 1u + total);
+}
+
+TEST(CliSweepTest, SigintStopsCleanlyWithExit130AndResumeFinishes) {
+  const fs::path dir = fresh_dir("sweep_sigint");
+  const fs::path sweep = interruptible_sweep(dir);
+  const std::string db = (dir / "s.db").string();
+  const pid_t pid = spawn_sweep(sweep, db);
+  ASSERT_GT(pid, 0);
+  ASSERT_GT(wait_for_trials(db, kInterruptibleTrials / 3, pid), 0);
+  ASSERT_EQ(::kill(pid, SIGINT), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << "SIGINT must stop the sweep, not kill it";
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const std::int64_t stored = pamsim::ResultsDb::open_read_only(db).trial_count();
+  EXPECT_LT(stored, kInterruptibleTrials);
+  const auto resumed = run_pamsim("sweep " + sweep.string() + " --resume --db " + db);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find(std::to_string(stored) + " stored before"), std::string::npos)
+      << resumed.err;
+  EXPECT_EQ(pamsim::ResultsDb::open_read_only(db).trial_count(), kInterruptibleTrials);
 }
 
 TEST(CliSweepTest, DivergingTrialIsStoredAndTheSweepGoesOn) {
