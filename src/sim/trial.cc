@@ -2,6 +2,7 @@
 #include "sim/trial.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -16,6 +17,8 @@ namespace pamsim {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kObservationToleranceS = 1e-9;   // d->time accumulates rounding
 constexpr double kRecoveryBandDeg = 2.0;
 
 enum Col : std::size_t {
@@ -117,7 +120,7 @@ std::size_t Trajectory::column(const std::string& name) const {
 }
 
 TrialResult run_trial(const ArmModel& arm, const Scenario& sc, std::uint64_t seed,
-                      bool keep_trajectory) {
+                      const TrialOptions& options) {
   const mjModel* m = arm.model.get();
   if (m->opt.timestep != sc.timestep_s) {
     throw std::logic_error("run_trial: the model's timestep differs from sim.timestep_s "
@@ -157,7 +160,33 @@ TrialResult run_trial(const ArmModel& arm, const Scenario& sc, std::uint64_t see
   s.start_angle_deg = kNaN;
   double min_angle = std::numeric_limits<double>::infinity();
 
+  // the observer is shown the state when it asks; without one a step costs one compare
+  TrialObserver* const observer = options.observer;
+  double next_observation_s = kInfinity;
+  std::array<bool, kMuscleCount> reflex_active{};
+  std::chrono::steady_clock::duration observer_wall{};
+  auto show_observer = [&] {
+    const auto start = std::chrono::steady_clock::now();
+    TrialSnapshot snapshot;
+    snapshot.model = m;
+    snapshot.data = d;
+    snapshot.time_s = d->time;
+    snapshot.angle_deg = units::rad_to_deg(shoulder_angle(arm, d));
+    for (int i = 0; i < kMuscleCount; ++i) {
+      snapshot.pressure_pa[i] = pneumatics.pressure_pa(i);
+      snapshot.command_pa[i] = pneumatics.command_pa(i);
+    }
+    snapshot.reflex_active = reflex_active;
+    observer->observe(snapshot);
+    next_observation_s = observer->next_observation_time_s() - kObservationToleranceS;
+    observer_wall += std::chrono::steady_clock::now() - start;
+  };
+
   const auto wall_start = std::chrono::steady_clock::now();
+  if (observer) {
+    next_observation_s = observer->next_observation_time_s() - kObservationToleranceS;
+    if (d->time >= next_observation_s) show_observer();
+  }
   long step = 0;
   for (; step < n_steps; ++step) {
     const double t = step * sc.timestep_s;
@@ -219,6 +248,7 @@ TrialResult run_trial(const ArmModel& arm, const Scenario& sc, std::uint64_t see
           row[fb[i]] = units::m_to_mm(tel.fiber_rate);
           row[pm[i]] = units::pa_to_mpa(tel.pressure_meas_pa);
           row[fm[i]] = tel.force_meas_n;
+          reflex_active[i] = tel.reflex_active;
         }
         result.trajectory.values.insert(result.trajectory.values.end(), row, row + kColumnCount);
       }
@@ -263,12 +293,14 @@ TrialResult run_trial(const ArmModel& arm, const Scenario& sc, std::uint64_t see
         s.min_angle_time_s = d->time;
       }
     }
+
+    if (d->time >= next_observation_s) show_observer();
   }
   const auto wall_end = std::chrono::steady_clock::now();
 
   s.steps = step;
   s.sim_time_s = step * sc.timestep_s;
-  s.wall_time_s = std::chrono::duration<double>(wall_end - wall_start).count();
+  s.wall_time_s = std::chrono::duration<double>(wall_end - wall_start - observer_wall).count();
   s.realtime_factor = s.wall_time_s > 0 ? s.sim_time_s / s.wall_time_s : kNaN;
   s.cvode_steps = pneumatics.steps();
   s.cvode_rhs_evals = pneumatics.rhs_evals();
@@ -279,7 +311,7 @@ TrialResult run_trial(const ArmModel& arm, const Scenario& sc, std::uint64_t see
     s.min_angle_deg = s.peak_drop_deg = s.min_angle_time_s = kNaN;
   }
   compute_metrics(result.trajectory, reflex, &s);
-  if (!keep_trajectory) result.trajectory.values.clear();
+  if (!options.keep_trajectory) result.trajectory.values.clear();
   return result;
 }
 

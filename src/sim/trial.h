@@ -4,8 +4,10 @@
 //   applies the PAM force law through the actuator callback with the pressures at t;
 //   control at sim.control_hz: the controller samples the plant, returns valve commands;
 //   logging at the control rate; metrics at the end.
+// An optional observer (the video renderer) is shown the state at the times it asks for.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -59,9 +61,44 @@ struct TrialResult {
   Trajectory trajectory;
 };
 
+// What a trial shows its observer: the state after a physics step (or the initial state),
+// read-only and valid only during the call.
+struct TrialSnapshot {
+  const mjModel* model = nullptr;
+  const mjData* data = nullptr;
+  double time_s = 0.0;
+  double angle_deg = 0.0;
+  std::array<double, kMuscleCount> pressure_pa{};   // chamber pressures
+  std::array<double, kMuscleCount> command_pa{};    // valve commands
+  std::array<bool, kMuscleCount> reflex_active{};   // as of the last control tick
+};
+
+// Watches a trial without taking part in it: the trial runs bit-identically with or without
+// one. run_trial shows it the initial state and then the state after every physics step
+// whose time has reached next_observation_time_s() (within 1 ns); an observer that wants
+// no more returns +infinity. Exceptions from observe() end the trial and propagate.
+class TrialObserver {
+ public:
+  virtual ~TrialObserver() = default;
+  virtual double next_observation_time_s() const = 0;
+  virtual void observe(const TrialSnapshot& snapshot) = 0;
+};
+
+struct TrialOptions {
+  bool keep_trajectory = true;
+  TrialObserver* observer = nullptr;   // not owned; none by default (nothing to pay for)
+};
+
 // Runs one trial of `scenario` with `seed` on `arm` (shared, read-only).
 // Never throws for a diverging simulation: it ends the trial with status "diverged".
+// The summary's wall_time_s is the simulation's alone, without the observer's time.
 TrialResult run_trial(const ArmModel& arm, const Scenario& scenario, std::uint64_t seed,
-                      bool keep_trajectory = true);
+                      const TrialOptions& options);
+inline TrialResult run_trial(const ArmModel& arm, const Scenario& scenario, std::uint64_t seed,
+                             bool keep_trajectory = true) {
+  TrialOptions options;
+  options.keep_trajectory = keep_trajectory;
+  return run_trial(arm, scenario, seed, options);
+}
 
 }  // namespace pamsim

@@ -118,5 +118,47 @@ TEST(TrialTest, EightTrialsOnTwoThreadsEqualOneThread) {
                            one[0].trajectory.values.size() * sizeof(double)));
 }
 
+// Records what it is shown, every `period_s` of simulated time, and nothing else.
+class RecordingObserver : public TrialObserver {
+ public:
+  explicit RecordingObserver(double period_s) : period_s_(period_s) {}
+  double next_observation_time_s() const override { return period_s_ * times_s.size(); }
+  void observe(const TrialSnapshot& snapshot) override {
+    times_s.push_back(snapshot.time_s);
+    angles_deg.push_back(snapshot.angle_deg);
+    any_reflex = any_reflex || snapshot.reflex_active[kAgonist];
+  }
+  std::vector<double> times_s;
+  std::vector<double> angles_deg;
+  bool any_reflex = false;
+
+ private:
+  double period_s_;
+};
+
+TEST(TrialTest, ObserverSeesItsTimesAndChangesNothing) {
+  const Scenario sc = load_scenario(kPassive, {"sim.duration_s=1.5", "reflex.enabled=true"});
+  const ArmModel arm = load_arm_for(sc);
+  RecordingObserver observer(0.1);
+  TrialOptions options;
+  options.observer = &observer;
+  const TrialResult watched = run_trial(arm, sc, 3, options);
+  const TrialResult alone = run_trial(arm, sc, 3);
+
+  // the initial state, then the first step at or after each multiple of 0.1 s, up to 1.5 s
+  ASSERT_EQ(observer.times_s.size(), 16u);
+  for (std::size_t k = 0; k < observer.times_s.size(); ++k) {
+    EXPECT_NEAR(observer.times_s[k], 0.1 * k, 1e-9) << k;   // 0.1 s is a whole 100 steps
+  }
+  EXPECT_NEAR(observer.angles_deg.front(), -36.0, 0.5);
+  EXPECT_TRUE(observer.any_reflex) << "the reflex fires after the impact at 1.17 s";
+
+  // bit-identical physics with and without the observer
+  const auto& va = watched.trajectory.values;
+  const auto& vb = alone.trajectory.values;
+  ASSERT_EQ(va.size(), vb.size());
+  EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(double)));
+}
+
 }  // namespace
 }  // namespace pamsim
