@@ -10,7 +10,8 @@ packages=(
   libeigen3-dev                              # least squares in identification
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libsqlite3-dev                             # sweep results
-  libosmesa6-dev                             # headless rendering
+  libosmesa6-dev                             # headless rendering (OSMesa, llvmpipe)
+  libegl-dev libgl1-mesa-dri                 # the EGL backend and Mesa's software driver for it
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev   # MP4 encoding
   gnuplot-nox                                # plots (pngcairo terminal)
   libgtest-dev libgmock-dev libbenchmark-dev

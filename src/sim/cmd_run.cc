@@ -1,6 +1,7 @@
 // cmd_run.cc: `pamsim run SCENARIO.toml [--set key=value ...] [--out DIR] [--trials N]
-// [--threads T]`: one trial (outputs in DIR) or N trials (DIR/trial_<seed>/ each, plus the
-// aggregate DIR/summary.json and the angle band plot).
+// [--threads T] [--video FILE.mp4]`: one trial (outputs in DIR, and with --video its video,
+// rendered as in `pamsim render` with the default settings) or N trials (DIR/trial_<seed>/
+// each, plus the aggregate DIR/summary.json and the angle band plot; no video).
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include "sim/outputs.h"
 #include "sim/plot.h"
 #include "sim/runner.h"
+#include "sim/trial_video.h"
 
 namespace pamsim {
 namespace {
@@ -23,6 +25,7 @@ struct RunOptions {
   std::string out;
   int trials = 1;
   int threads = 0;
+  std::string video;   // MP4 of the single trial
 };
 
 std::string default_out_dir(const std::string& scenario) {
@@ -44,12 +47,28 @@ int report_diverged(const Scenario& sc, const std::vector<TrialResult>& results)
 void run(const RunOptions& opt) {
   if (opt.trials < 1) throw InputError("--trials must be >= 1, got " + std::to_string(opt.trials));
   if (opt.threads < 0) throw InputError("--threads must be >= 1, got " + std::to_string(opt.threads));
+  VideoOptions video;
+  if (!opt.video.empty()) {
+    if (opt.trials != 1) {
+      throw InputError("--video renders a single trial; drop --trials " +
+                       std::to_string(opt.trials) + " (or use pamsim render)");
+    }
+    video.mp4_path = opt.video;
+    video.backend = choose_gl_backend("");
+    validate_video_options(video, "--video");
+  }
   const Scenario sc = load_scenario(opt.scenario, opt.overrides);
   const ArmModel arm = load_arm_for(sc);
   const std::string out = opt.out.empty() ? default_out_dir(opt.scenario) : opt.out;
   make_directories(out);
   const int threads = opt.threads > 0 ? opt.threads : default_thread_count();
-  const std::vector<TrialResult> results = run_trials(arm, sc, opt.trials, threads);
+  std::vector<TrialResult> results;
+  if (opt.video.empty()) {
+    results = run_trials(arm, sc, opt.trials, threads);
+  } else {
+    // the same trial as run_trials' first, watched by the renderer
+    results.push_back(run_rendered_trial(arm, sc, sc.seed, video, true).trial);
+  }
 
   if (opt.trials == 1) {
     const TrialResult& r = results.front();
@@ -86,6 +105,8 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--out", opt->out, "Output folder (default renders/<scenario name>)");
   cmd->add_option("--trials", opt->trials, "Number of trials, seeds seed..seed+N-1");
   cmd->add_option("--threads", opt->threads, "Worker threads (default: all cores)");
+  cmd->add_option("--video", opt->video,
+                  "Also render the trial to this MP4 (1280x720, 30 fps; see pamsim render)");
   cmd->callback([opt] { run(*opt); });
 }
 

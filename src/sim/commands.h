@@ -18,6 +18,7 @@ void add_tensile_command(CLI::App& app);    // virtual static tensile test
 void add_calibrate_command(CLI::App& app);  // solve the arm's line lengths
 void add_run_command(CLI::App& app);        // run a scenario (one or many trials)
 void add_compare_command(CLI::App& app);    // two runs' angle bands and metrics side by side
+void add_render_command(CLI::App& app);     // a trial as MP4/PNG video, headless
 void add_sweep_command(CLI::App& app);      // run a parameter sweep into SQLite
 void add_export_command(CLI::App& app);     // a sweep database as CSV
 void add_report_command(CLI::App& app);     // per-point statistics, heat maps, best setting

@@ -4,15 +4,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
-#include <memory>
 
+#include "inline_mjcf.h"
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/units.h"
 #include "sim/mujoco_util.h"
 
 namespace pamsim {
 namespace {
+
+using pamsim_test::load_inline;
 
 // A slider pulled by one PAM on a fixed tendon: tendon length = qpos, moment arm 1.
 constexpr char kSliderXml[] = R"(
@@ -31,21 +32,6 @@ constexpr char kSliderXml[] = R"(
              forcelimited="true" forcerange="-5000 0"/>
   </actuator>
 </mujoco>)";
-
-// Loads MJCF text through MuJoCo's virtual file system (mjVFS is large: heap, not stack).
-MjModelPtr load_inline(const char* xml, const char* name) {
-  install_mujoco_handlers();
-  auto vfs = std::make_unique<mjVFS>();
-  mj_defaultVFS(vfs.get());
-  const int size = static_cast<int>(std::strlen(xml));
-  mj_makeEmptyFileVFS(vfs.get(), name, size);
-  std::memcpy(vfs->filedata[vfs->nfile - 1], xml, size);
-  char error[512] = "";
-  MjModelPtr m(mj_loadXML(name, vfs.get(), error, sizeof(error)));
-  mj_deleteVFS(vfs.get());
-  EXPECT_TRUE(m) << error;
-  return m;
-}
 
 class PamCallbackTest : public ::testing::Test {
  protected:

@@ -1,0 +1,148 @@
+// cli_render_test.cc: `pamsim render` and `pamsim run --video` as a user runs them on a
+// machine without a display: the MP4 decodes (through libavformat) at the asked size with
+// duration x fps frames, the trial in the video is the trial without video (same
+// trajectory.csv, byte for byte), both GL backends and the PNG sequence work, and every bad
+// input is one line on stderr, a non-zero exit, and no file or temp file left behind.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli_util.h"
+#include "video_decode.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using pamsim_test::CliResult;
+using pamsim_test::decode_video;
+using pamsim_test::fresh_dir;
+using pamsim_test::line_count;
+using pamsim_test::read_file;
+using pamsim_test::run_pamsim;
+
+// No display, and no backend chosen by the environment, for every test here.
+class CliRenderTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ::unsetenv("DISPLAY");
+    ::unsetenv("PAMSIM_GL_BACKEND");
+  }
+};
+
+// Only the files named, nothing else (no temp file, no partial output).
+void expect_exactly(const fs::path& dir, std::vector<std::string> names) {
+  std::vector<std::string> found;
+  for (const auto& e : fs::directory_iterator(dir)) found.push_back(e.path().filename().string());
+  std::sort(found.begin(), found.end());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(found, names) << dir;
+}
+
+TEST_F(CliRenderTest, DropMassVideoDecodesWithDurationTimesFpsFrames) {
+  const fs::path dir = fresh_dir("render_mp4");
+  const std::string mp4 = (dir / "v.mp4").string();
+  const CliResult r = run_pamsim("render scenarios/drop_mass.toml -o " + mp4 + " --fps 30");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto video = decode_video(mp4);
+  ASSERT_TRUE(video.opened) << mp4;
+  EXPECT_EQ(video.codec, "h264");
+  EXPECT_EQ(video.width, 1280);
+  EXPECT_EQ(video.height, 720);
+  EXPECT_EQ(video.frames, 90) << "3 s x 30 fps";
+  expect_exactly(dir, {"v.mp4"});
+}
+
+TEST_F(CliRenderTest, VideoDoesNotChangeTheTrial) {
+  const fs::path dir = fresh_dir("render_physics");
+  const std::string common = "run scenarios/drop_mass.toml --set sim.duration_s=1.5 --out ";
+  const CliResult plain = run_pamsim(common + (dir / "plain").string());
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  const CliResult filmed = run_pamsim(common + (dir / "filmed").string() + " --video " +
+                                      (dir / "filmed" / "trial.mp4").string());
+  ASSERT_EQ(filmed.exit_code, 0) << filmed.err;
+
+  const std::string a = read_file(dir / "plain" / "trajectory.csv");
+  const std::string b = read_file(dir / "filmed" / "trajectory.csv");
+  ASSERT_GT(a.size(), 1000u);
+  EXPECT_TRUE(a == b) << "trajectory.csv differs with --video";
+  const auto video = decode_video((dir / "filmed" / "trial.mp4").string());
+  EXPECT_EQ(video.frames, 45);
+  expect_exactly(dir / "filmed", {"angle.png", "summary.json", "trajectory.csv", "trial.mp4"});
+}
+
+TEST_F(CliRenderTest, EglAndOsmesaDrawTheSameFrames) {
+  const fs::path dir = fresh_dir("render_backends");
+  const std::string common =
+      "render scenarios/drop_mass.toml --set sim.duration_s=0.2 --set drop.time_s=0.1 "
+      "--width 320 --height 180 --fps 10 --quality fast --plot --png-dir ";
+  const CliResult osmesa = run_pamsim(common + (dir / "osmesa").string() + " --backend osmesa");
+  ASSERT_EQ(osmesa.exit_code, 0) << osmesa.err;
+  ::setenv("PAMSIM_GL_BACKEND", "egl", 1);   // the environment picks the backend too
+  const CliResult egl = run_pamsim(common + (dir / "egl").string());
+  ASSERT_EQ(egl.exit_code, 0) << egl.err;
+  EXPECT_NE(egl.err.find("egl"), std::string::npos) << egl.err;
+
+  expect_exactly(dir / "osmesa", {"frame_00000.png", "frame_00001.png"});
+  for (const char* frame : {"frame_00000.png", "frame_00001.png"}) {
+    const auto a = decode_video((dir / "osmesa" / frame).string(), 1);
+    const auto b = decode_video((dir / "egl" / frame).string(), 1);
+    ASSERT_TRUE(a.opened && b.opened) << frame;
+    EXPECT_EQ(a.width, 320);
+    EXPECT_EQ(a.height, 180);
+    EXPECT_TRUE(a.rgb.at(0) == b.rgb.at(0)) << frame << ": both are Mesa's llvmpipe";
+  }
+}
+
+TEST_F(CliRenderTest, BadInputIsOneLineNonZeroAndLeavesNothing) {
+  const fs::path dir = fresh_dir("render_bad");
+  const fs::path blocker = dir / "a_file";
+  pamsim_test::write_text(blocker, "not a folder");
+  const std::string mp4 = (dir / "v.mp4").string();
+  const std::string render =
+      "render scenarios/drop_mass.toml --set sim.duration_s=0.1 --set drop.time_s=0.05 ";
+  const std::vector<std::string> cases = {
+      render + "-o /proc/pamsim_no_such/v.mp4",                 // unwritable
+      render + "-o " + (blocker / "v.mp4").string(),            // parent is a file
+      render + "-o " + (dir / "v.avi").string(),                // not .mp4
+      render + "-o " + mp4 + " --width 0",
+      render + "-o " + mp4 + " --height 0",
+      render + "-o " + mp4 + " --width 100000",
+      render + "-o " + mp4 + " --height 100000",
+      render + "-o " + mp4 + " --width 641",                    // odd: 4:2:0 needs even
+      render + "-o " + mp4 + " --fps 0",
+      render + "-o " + mp4 + " --fps -5",
+      render + "-o " + mp4 + " --fps 1000",
+      render + "-o " + mp4 + " --fps abc",
+      render + "-o " + mp4 + " --quality best",
+      render + "-o " + mp4 + " --camera top",
+      render + "-o " + mp4 + " --backend vulkan",
+      "render scenarios/missing.toml -o " + mp4,
+      render + "--png-dir " + dir.string(),                     // holds other files
+      "run scenarios/drop_mass.toml --trials 2 --video " + mp4 + " --out " + (dir / "o").string(),
+      "run scenarios/drop_mass.toml --video " + (dir / "v.mov").string() + " --out " +
+          (dir / "o").string(),
+  };
+  for (const std::string& args : cases) {
+    const CliResult r = run_pamsim(args);
+    EXPECT_NE(r.exit_code, 0) << args;
+    EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("pamsim: ", 0), 0u) << args << ": " << r.err;
+    expect_exactly(dir, {"a_file"});
+  }
+
+  // the unknown camera's message lists the model's cameras; the environment is checked too
+  const CliResult camera = run_pamsim(render + "-o " + mp4 + " --camera top");
+  EXPECT_NE(camera.err.find("(the model's cameras: side, wide)"), std::string::npos)
+      << camera.err;
+  ::setenv("PAMSIM_GL_BACKEND", "vulkan", 1);
+  const CliResult env = run_pamsim(render + "-o " + mp4);
+  EXPECT_EQ(env.exit_code, 2);
+  EXPECT_EQ(env.err, "pamsim: PAMSIM_GL_BACKEND must be osmesa or egl, got 'vulkan'\n");
+  expect_exactly(dir, {"a_file"});
+}
+
+}  // namespace

@@ -1,0 +1,143 @@
+// scene_renderer_test.cc: SceneRenderer on a tiny inline model, offscreen through OSMesa: the
+// frame is not empty, a falling ball moves down in it, drawing never writes to the caller's
+// mjData, and an unknown camera or a bad size is refused with a clear message.
+#include "sim/scene_renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "inline_mjcf.h"
+#include "pam_actuator/input_error.h"
+
+namespace pamsim {
+namespace {
+
+using pamsim_test::load_inline;
+
+// A red ball falling in front of a camera that looks along +y; nothing else to see.
+constexpr char kFallingBallXml[] = R"(
+<mujoco>
+  <option timestep="0.002"/>
+  <worldbody>
+    <light pos="0 -1 2" dir="0 0.5 -1"/>
+    <camera name="front" pos="0 -2 0" xyaxes="1 0 0 0 0 1" fovy="60"/>
+    <camera name="top" pos="0 0 3" xyaxes="1 0 0 0 1 0"/>
+    <body name="ball" pos="0 0 0.6">
+      <freejoint/>
+      <geom type="sphere" size="0.25" rgba="1 0 0 1"/>
+    </body>
+  </worldbody>
+</mujoco>)";
+
+constexpr int kWidth = 160;
+constexpr int kHeight = 120;
+
+struct RedBlob {
+  int pixels = 0;
+  double mean_row = 0;   // counted from the bottom, as OpenGL reads them
+};
+
+RedBlob find_red(const unsigned char* rgb) {
+  RedBlob blob;
+  for (int row = 0; row < kHeight; ++row) {
+    for (int x = 0; x < kWidth; ++x) {
+      const unsigned char* px = rgb + 3 * (row * kWidth + x);
+      if (px[0] > 100 && px[1] < 60 && px[2] < 60) {
+        ++blob.pixels;
+        blob.mean_row += row;
+      }
+    }
+  }
+  if (blob.pixels > 0) blob.mean_row /= blob.pixels;
+  return blob;
+}
+
+int distinct_colours(const unsigned char* rgb) {
+  std::vector<bool> seen(1 << 24);
+  int n = 0;
+  for (int i = 0; i < kWidth * kHeight; ++i) {
+    const int c = (rgb[3 * i] << 16) | (rgb[3 * i + 1] << 8) | rgb[3 * i + 2];
+    if (!seen[c]) {
+      seen[c] = true;
+      ++n;
+    }
+  }
+  return n;
+}
+
+SceneRenderOptions small_frame(const std::string& camera = "front") {
+  SceneRenderOptions options;
+  options.width_px = kWidth;
+  options.height_px = kHeight;
+  options.camera = camera;
+  return options;
+}
+
+TEST(SceneRendererTest, FrameIsNotEmptyAndTheFallingBallMovesDown) {
+  MjModelPtr model = load_inline(kFallingBallXml, "ball.xml");
+  ASSERT_TRUE(model);
+  MjDataPtr data = make_data(model.get());
+  mj_forward(model.get(), data.get());
+  SceneRenderer renderer(model.get(), "ball.xml", small_frame());
+
+  renderer.draw_scene(data.get());
+  std::vector<unsigned char> before(renderer.read_pixels(),
+                                    renderer.read_pixels() + 3 * kWidth * kHeight);
+  const RedBlob start = find_red(before.data());
+  EXPECT_GT(distinct_colours(before.data()), 10) << "not one flat colour";
+  ASSERT_GT(start.pixels, 200) << "the ball is in view";
+  EXPECT_GT(start.mean_row, kHeight / 2) << "upper half at the start";
+
+  // 0.4 s of free fall: 0.78 m down, from z = 0.6 to -0.18 (the view spans z = +-1.15 m)
+  for (int i = 0; i < 200; ++i) mj_step(model.get(), data.get());
+  renderer.draw_scene(data.get());
+  const RedBlob later = find_red(renderer.read_pixels());
+  ASSERT_GT(later.pixels, 200);
+  EXPECT_LT(later.mean_row, start.mean_row - 20) << "the ball moved down the frame";
+}
+
+TEST(SceneRendererTest, DrawingNeverWritesTheCallersData) {
+  MjModelPtr model = load_inline(kFallingBallXml, "ball.xml");
+  ASSERT_TRUE(model);
+  MjDataPtr data = make_data(model.get());
+  for (int i = 0; i < 10; ++i) mj_step(model.get(), data.get());
+  const std::vector<unsigned char> buffer_before(
+      static_cast<unsigned char*>(data->buffer),
+      static_cast<unsigned char*>(data->buffer) + model->nbuffer);
+
+  SceneRenderer renderer(model.get(), "ball.xml", small_frame());
+  renderer.draw_scene(data.get());
+  renderer.draw_text("time", "0.020 s");
+  renderer.read_pixels();
+  EXPECT_EQ(std::memcmp(buffer_before.data(), data->buffer, model->nbuffer), 0);
+}
+
+TEST(SceneRendererTest, UnknownCameraNamesTheModelsCameras) {
+  MjModelPtr model = load_inline(kFallingBallXml, "ball.xml");
+  ASSERT_TRUE(model);
+  try {
+    SceneRenderer renderer(model.get(), "ball.xml", small_frame("back"));
+    FAIL() << "no camera 'back' in the model";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "ball.xml: no camera named 'back' (the model's cameras: front, top)");
+  }
+}
+
+TEST(SceneRendererTest, SizeOutsideTheLimitsIsRefused) {
+  MjModelPtr model = load_inline(kFallingBallXml, "ball.xml");
+  ASSERT_TRUE(model);
+  for (const auto& [w, h] :
+       {std::pair{0, 120}, {160, 8}, {100000, 120}, {160, kMaxFrameSidePx + 1}}) {
+    SceneRenderOptions options = small_frame();
+    options.width_px = w;
+    options.height_px = h;
+    EXPECT_THROW(SceneRenderer(model.get(), "ball.xml", options), InputError) << w << "x" << h;
+  }
+}
+
+}  // namespace
+}  // namespace pamsim
