@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # The main job: the falling-mass experiment with the model-based stretch reflex, and its
 # passive baseline with the same seed. Outputs: renders/drop_mass/{trajectory.csv,
-# summary.json, angle.png} and renders/drop_mass_passive/ (the same three files).
+# summary.json, angle.png, drop_mass.mp4} and renders/drop_mass_passive/ (the first three).
+# The video is the same trial (same seed, bit-identical physics), rendered headlessly.
 set -euo pipefail
 pamsim="${1:-build/src/sim/pamsim}"
 cd "$(dirname "$0")/.."
 
 "$pamsim" run scenarios/drop_mass_passive.toml --out renders/drop_mass_passive > /dev/null
 "$pamsim" run scenarios/drop_mass.toml --out renders/drop_mass > /dev/null
+"$pamsim" render scenarios/drop_mass.toml --plot -o renders/drop_mass/drop_mass.mp4
 
 # the headline numbers, reflex vs passive
 python3 - <<'PY' 2>/dev/null || cat renders/drop_mass/summary.json
@@ -18,5 +20,5 @@ print(f"impact at {r['impact_time_s']:.3f} s; reflex triggered at {r['first_trig
       f"{r['mistrips']} mistrips")
 print(f"lowest angle: {r['min_angle_deg']:.2f} deg with the reflex, "
       f"{p['min_angle_deg']:.2f} deg passive (start {r['start_angle_deg']:.2f} deg)")
-print("outputs: renders/drop_mass/{trajectory.csv,summary.json,angle.png}")
+print("outputs: renders/drop_mass/{trajectory.csv,summary.json,angle.png,drop_mass.mp4}")
 PY
