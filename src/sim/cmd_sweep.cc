@@ -1,13 +1,14 @@
 // cmd_sweep.cc: `pamsim sweep SWEEP.toml [--threads N] [--db FILE] [--resume] [--out DIR]`:
 // validates the sweep file and every point's scenario, then runs the trials into the results
 // database (default DIR/sweep.db, DIR default renders/<sweep name>). SIGINT or SIGTERM stops
-// it cleanly (running trials finish and are stored; exit 130); --resume finishes the rest.
+// it cleanly (running trials finish and are stored; exit 130 or 143); --resume finishes the
+// rest.
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
 
 #include <atomic>
-#include <csignal>
+#include <signal.h>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -24,31 +25,40 @@
 namespace pamsim {
 namespace {
 
-constexpr int kInterruptedExit = 130;   // the shell's code for SIGINT
-
 std::atomic<bool> g_stop_requested{false};
-static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+std::atomic<int> g_stop_signal{0};
+static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free,
+              "set from a signal handler");
 
-extern "C" void request_stop(int) { g_stop_requested = true; }
+extern "C" void request_stop(int signal_number) {
+  g_stop_signal = signal_number;
+  g_stop_requested = true;
+}
 
-// Installs SIGINT/SIGTERM handlers for its lifetime.
+// SIGINT/SIGTERM ask the sweep to stop for its lifetime; the handler is one-shot
+// (SA_RESETHAND), so a second Ctrl-C kills the process at once.
 class StopOnSignal {
  public:
   StopOnSignal() {
     g_stop_requested = false;
-    old_int_ = std::signal(SIGINT, request_stop);
-    old_term_ = std::signal(SIGTERM, request_stop);
+    g_stop_signal = 0;
+    struct sigaction action {};
+    action.sa_handler = request_stop;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESETHAND;
+    sigaction(SIGINT, &action, &old_int_);
+    sigaction(SIGTERM, &action, &old_term_);
   }
   ~StopOnSignal() {
-    std::signal(SIGINT, old_int_);
-    std::signal(SIGTERM, old_term_);
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
   }
   StopOnSignal(const StopOnSignal&) = delete;
   StopOnSignal& operator=(const StopOnSignal&) = delete;
 
  private:
-  void (*old_int_)(int);
-  void (*old_term_)(int);
+  struct sigaction old_int_ {};
+  struct sigaction old_term_ {};
 };
 
 struct SweepOptions {
@@ -60,7 +70,9 @@ struct SweepOptions {
 };
 
 void sweep(const SweepOptions& opt) {
-  if (opt.threads < 0) throw InputError("--threads must be >= 1, got " + std::to_string(opt.threads));
+  if (opt.threads < 0) {
+    throw InputError("--threads must be >= 1 (or 0 for all cores), got " + std::to_string(opt.threads));
+  }
   const SweepDefinition def = load_sweep(opt.sweep_file);   // everything validated first
   const std::string out = opt.out.empty()
       ? "renders/" + std::filesystem::path(opt.sweep_file).stem().string() : opt.out;
@@ -75,6 +87,11 @@ void sweep(const SweepOptions& opt) {
   }
   ResultsDb db = opt.resume && exists ? ResultsDb::open_to_resume(db_path, def)
                                       : ResultsDb::create(db_path, def);
+  const std::string made_by = db.meta("pamsim_version");
+  if (made_by != PAMSIM_VERSION) {
+    std::cerr << "pamsim sweep: warning: " << db_path << " was started by pamsim " << made_by
+              << ", this is " << PAMSIM_VERSION << "; its trials may not be comparable\n";
+  }
   std::cerr << "pamsim sweep: " << def.points() << " points x " << def.seeds << " seeds = "
             << def.trials() << " trials (" << sweep_design_name(def.design) << ") on " << threads
             << (threads == 1 ? " thread" : " threads") << " into " << db_path << "\n";
@@ -101,7 +118,7 @@ void sweep(const SweepOptions& opt) {
     std::cerr << "pamsim sweep: interrupted with " << stored << " of " << def.trials()
               << " trials stored; finish with: pamsim sweep " << opt.sweep_file << " --db "
               << db_path << " --resume\n";
-    throw CommandExit(kInterruptedExit);
+    throw CommandExit(128 + g_stop_signal.load());   // the shell's code for that signal
   }
   std::cout << db_path << "\n";
   std::cerr << "pamsim sweep: next: pamsim export " << db_path << " --csv FILE; pamsim report "

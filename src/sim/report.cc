@@ -58,9 +58,14 @@ std::string toml_value(const DbValue& v) {
   return a.toml();
 }
 
-// A TOML value as a CSV cell: a string without its quotes, anything else as written.
+// A TOML value as a person reads it: a string without its quotes ('x' or "x"), anything
+// else as written.
 std::string unquoted(const std::string& toml) {
-  if (toml.size() >= 2 && toml.front() == '"') return toml.substr(1, toml.size() - 2);
+  try {
+    const toml::table t = toml::parse("v = " + toml);
+    if (const auto text = t["v"].value<std::string>()) return *text;
+  } catch (const toml::parse_error&) {
+  }
   return toml;
 }
 
@@ -165,7 +170,17 @@ SweepSummary summarize_sweep(const ResultsDb& db) {
     if (current.trials > 0 && point != current.point) close_point();
     if (current.trials == 0) {
       current.point = point;
-      for (std::size_t c : axis_cols) current.axis_values.push_back(toml_value(row[c]));
+      if (sweep.design == "grid") {   // the levels exactly as the sweep set them (types kept)
+        std::int64_t rest = point;
+        current.axis_values.resize(sweep.axis_levels.size());
+        for (std::size_t a = sweep.axis_levels.size(); a-- > 0;) {
+          const auto levels = static_cast<std::int64_t>(sweep.axis_levels[a].size());
+          current.axis_values[a] = sweep.axis_levels[a][static_cast<std::size_t>(rest % levels)];
+          rest /= levels;
+        }
+      } else {   // random and lhs sample float ranges
+        for (std::size_t c : axis_cols) current.axis_values.push_back(toml_value(row[c]));
+      }
       acc.assign(metric_cols.size(), Accumulator{});
     }
     ++current.trials;
@@ -192,6 +207,8 @@ const PointSummary* best_point(const SweepSummary& sweep, const std::string& met
   double best_value = kNaN;
   for (const PointSummary& p : sweep.points) {
     if (p.ok != sweep.seeds || p.with_mistrips != 0) continue;
+    const int m = sweep.metric_index(metric);
+    if (m >= 0 && p.metrics[static_cast<std::size_t>(m)].count != sweep.seeds) continue;
     const double v = point_value(sweep, p, metric);
     if (!std::isfinite(v)) continue;
     if (!best || v < best_value) {
@@ -204,7 +221,7 @@ const PointSummary* best_point(const SweepSummary& sweep, const std::string& met
 
 std::string best_criterion(const SweepSummary& sweep, const std::string& metric) {
   return "smallest mean " + metric + " over the seeds, among points where all " +
-         std::to_string(sweep.seeds) + " seeds ran ok with zero mistrips";
+         std::to_string(sweep.seeds) + " seeds ran ok with zero mistrips and a defined " + metric;
 }
 
 std::string point_scenario_toml(const SweepSummary& sweep, const PointSummary& point,

@@ -48,8 +48,8 @@ struct SweepSummary {
 // Throws InputError if the database is not a sweep database.
 SweepSummary summarize_sweep(const ResultsDb& db);
 
-// The criterion: among points whose every seed is stored and ran ok with zero mistrips, the
-// smallest mean of `metric`. nullptr if no point qualifies.
+// The criterion: among points whose every seed is stored, ran ok with zero mistrips and has
+// `metric` defined, the smallest mean of `metric`. nullptr if no point qualifies.
 const PointSummary* best_point(const SweepSummary& sweep, const std::string& metric);
 std::string best_criterion(const SweepSummary& sweep, const std::string& metric);
 

@@ -1,6 +1,7 @@
 // results_db.cc: see results_db.h.
 #include "sim/results_db.h"
 
+#include <fcntl.h>
 #include <sqlite3.h>
 #include <unistd.h>
 
@@ -75,6 +76,16 @@ std::string first_difference(const std::string& stored, const std::string& wante
   return "definition";
 }
 
+// fsync(2) on the folder holding `path`, so a rename into it is durable (best effort).
+void sync_directory_of(const std::string& path) {
+  fs::path dir = fs::path(path).parent_path();
+  if (dir.empty()) dir = ".";
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
 }  // namespace
 
 std::vector<std::string> metric_column_names() {
@@ -120,11 +131,26 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
     throw InputError(path + ": already exists; add --resume to finish that sweep, or choose "
                      "another --db");
   }
+  // a WAL left by a killed sweep whose database was then deleted would be replayed into the
+  // new one: refuse rather than mix two sweeps
+  for (const char* suffix : {"-wal", "-shm", "-journal"}) {
+    if (fs::exists(path + suffix, ec)) {
+      throw InputError(path + suffix + ": left over from an earlier database at " + path +
+                       "; remove it to start a new sweep there");
+    }
+  }
   // build it under a temp name, then rename: the database exists whole or not at all
   const std::string tmp = path + ".tmp." + std::to_string(::getpid());
   fs::remove(tmp, ec);
   {
-    ResultsDb db(open_database(tmp, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE), tmp);
+    sqlite3* handle = nullptr;
+    try {
+      handle = open_database(tmp, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+    } catch (const InputError&) {
+      fs::remove(tmp, ec);
+      throw InputError(path + ": cannot create the sweep database (is the folder writable?)");
+    }
+    ResultsDb db(handle, tmp);
     try {
       std::string columns = "trial INTEGER PRIMARY KEY, point INTEGER NOT NULL, "
                             "seed_index INTEGER NOT NULL, seed INTEGER NOT NULL";
@@ -160,6 +186,7 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
     fs::remove(tmp, ec);
     throw InputError(path + ": cannot create the sweep database (" + std::strerror(errno) + ")");
   }
+  sync_directory_of(path);   // the rename itself survives a power cut
   return open_to_resume(path, sweep);
 }
 
@@ -237,6 +264,9 @@ void ResultsDb::insert(const SweepDefinition& sweep, const std::vector<TrialReco
         const AxisValue& v = sweep.value(r.point, a);
         switch (v.kind) {
           case AxisValue::Kind::kNumber: sqlite3_bind_double(st, c++, v.number); break;
+          case AxisValue::Kind::kInteger:
+            sqlite3_bind_int64(st, c++, static_cast<sqlite3_int64>(v.number));
+            break;
           case AxisValue::Kind::kString:
             sqlite3_bind_text(st, c++, v.text.c_str(), -1, SQLITE_TRANSIENT);
             break;
@@ -246,8 +276,9 @@ void ResultsDb::insert(const SweepDefinition& sweep, const std::vector<TrialReco
       sqlite3_bind_text(st, c++, r.summary.status.c_str(), -1, SQLITE_TRANSIENT);
       if (r.summary.message.empty()) sqlite3_bind_null(st, c++);
       else sqlite3_bind_text(st, c++, r.summary.message.c_str(), -1, SQLITE_TRANSIENT);
+      const bool measured = r.summary.status != "failed";   // a failed trial has no metrics
       for (const auto& [name, value] : trial_metrics(r.summary)) {
-        if (std::isfinite(value)) sqlite3_bind_double(st, c++, value);
+        if (measured && std::isfinite(value)) sqlite3_bind_double(st, c++, value);
         else sqlite3_bind_null(st, c++);
       }
       if (sqlite3_step(st) != SQLITE_DONE) fail("cannot store trial " + std::to_string(r.trial));

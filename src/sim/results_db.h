@@ -2,7 +2,8 @@
 //   meta(key, value)   the sweep definition (canonical JSON, sweep.h), pamsim_version,
 //                      sweep_file, base_path, created_utc
 //   trials(trial INTEGER PRIMARY KEY, point, seed_index, seed, <one column per axis key>,
-//          status, message, <every metric of summary.json>)
+//          status, message, <every metric of summary.json>; NULL where undefined, and all
+//          NULL for a trial that failed to run)
 // A new database is built under a temp name and renamed into place, so a half-made file never
 // exists. Results are committed in transactions (WAL journal, synchronous=FULL): a process
 // killed at any moment, or a power loss, loses at most the trials not yet committed, and the

@@ -58,6 +58,10 @@ void read_reflex(ConfigReader& in, ReflexControllerConfig* c) {
 
 }  // namespace
 
+namespace {
+Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrides);
+}  // namespace
+
 const std::vector<std::string>& scenario_path_keys() {
   static const std::vector<std::string> keys = {"model.file", "model.agonist_params",
                                                 "model.antagonist_params", "model.calibration",
@@ -67,9 +71,21 @@ const std::vector<std::string>& scenario_path_keys() {
 
 Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides) {
   ConfigReader in(path);
+  return read_scenario(in, overrides);
+}
+
+Scenario load_scenario_text(const std::string& text, const std::string& path,
+                            const std::vector<std::string>& overrides) {
+  ConfigReader in(text, path);
+  return read_scenario(in, overrides);
+}
+
+namespace {
+
+Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrides) {
   for (const auto& o : overrides) in.apply_override(o);
   Scenario sc;
-  sc.path = path;
+  sc.path = in.name();
 
   // the trial
   const std::int64_t seed = in.get_int("seed", 1);
@@ -143,5 +159,7 @@ Scenario load_scenario(const std::string& path, const std::vector<std::string>& 
   });
   return sc;
 }
+
+}  // namespace
 
 }  // namespace pamsim

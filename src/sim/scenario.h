@@ -66,5 +66,10 @@ struct Scenario {
 
 // Reads and validates. Throws InputError "<file>: <key> <problem>" on the first error.
 Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides = {});
+// The same from the scenario's text, as if read from `path` (relative paths resolve against
+// its folder): a sweep runs every point on the base scenario it validated, even if the file
+// changes on disk meanwhile.
+Scenario load_scenario_text(const std::string& text, const std::string& path,
+                            const std::vector<std::string>& overrides = {});
 
 }  // namespace pamsim

@@ -33,7 +33,10 @@ struct Where {
 
 AxisValue axis_value(const toml::node& n, const Where& where, const std::string& key) {
   AxisValue v;
-  if (n.is_integer() || n.is_floating_point()) {
+  if (n.is_integer()) {
+    v.kind = AxisValue::Kind::kInteger;
+    v.number = static_cast<double>(*n.value<std::int64_t>());
+  } else if (n.is_floating_point()) {
     v.number = *n.value<double>();
     where.check(std::isfinite(v.number), key, "must be finite, got " + format_value(v.number));
   } else if (n.is_string()) {
@@ -225,6 +228,7 @@ std::string AxisValue::toml() const {
       return os.str();
     }
     case Kind::kBool: return flag ? "true" : "false";
+    case Kind::kInteger: return std::to_string(static_cast<std::int64_t>(number));
     case Kind::kNumber: break;
   }
   if (!std::isfinite(number)) return std::isnan(number) ? "nan" : number > 0 ? "inf" : "-inf";
@@ -322,13 +326,13 @@ SweepDefinition load_sweep(const std::string& path) {
 
   // the base scenario, then every point, must validate before anything runs
   try {
-    def.base_seed = load_scenario(def.base_path, def.fixed).seed;
+    def.base_seed = load_scenario_text(def.base_text, def.base_path, def.fixed).seed;
   } catch (const InputError& e) {
     throw InputError(path + ": base scenario: " + e.what());
   }
   for (std::int64_t p = 0; p < def.points(); ++p) {
     try {
-      load_scenario(def.base_path, def.overrides(p));
+      load_scenario_text(def.base_text, def.base_path, def.overrides(p));
     } catch (const InputError& e) {
       throw InputError(path + ": point " + std::to_string(p) + " (" + describe_point(def, p) +
                        "): " + e.what());

@@ -25,10 +25,11 @@ namespace pamsim {
 enum class SweepDesign { kGrid, kRandom, kLatinHypercube };
 const char* sweep_design_name(SweepDesign design);
 
-// One value of an axis: a number (as a double), or a string or boolean scenario value.
+// One value of an axis: a float or an integer (both held in `number`), or a string or
+// boolean scenario value. Integers stay integers (integer keys refuse 12.0).
 struct AxisValue {
-  enum class Kind { kNumber, kString, kBool } kind = Kind::kNumber;
-  double number = 0;
+  enum class Kind { kNumber, kInteger, kString, kBool } kind = Kind::kNumber;
+  double number = 0;   // kNumber, kInteger (exact up to 2^53)
   std::string text;    // kString
   bool flag = false;   // kBool
   // The value as TOML source for a `key=value` override (numbers round-trip exactly).

@@ -27,7 +27,7 @@ class PointCache {
   void move_to(std::int64_t point) {
     if (point == point_) return;
     point_ = -1;
-    Scenario next = load_scenario(sweep_.base_path, sweep_.overrides(point));
+    Scenario next = load_scenario_text(sweep_.base_text, sweep_.base_path, sweep_.overrides(point));
     if (!arm_ || !same_arm(next, scenario_)) arm_ = std::make_unique<ArmModel>(load_arm_for(next));
     scenario_ = std::move(next);
     point_ = point;
@@ -42,6 +42,15 @@ class PointCache {
   std::unique_ptr<ArmModel> arm_;
 };
 
+// A trial that could not run: status "failed" and why (the database stores no metrics).
+TrialSummary failed_summary(std::uint64_t seed, const std::string& why) {
+  TrialSummary s;
+  s.seed = seed;
+  s.status = "failed";
+  s.message = why;
+  return s;
+}
+
 TrialRecord run_one(const SweepDefinition& sweep, PointCache& cache, std::int64_t trial) {
   TrialRecord record;
   record.trial = trial;
@@ -52,10 +61,7 @@ TrialRecord run_one(const SweepDefinition& sweep, PointCache& cache, std::int64_
     cache.move_to(record.point);
     record.summary = run_trial(cache.arm(), cache.scenario(), seed, false).summary;
   } catch (const std::exception& e) {   // anything but a divergence (that is a status already)
-    record.summary = TrialSummary{};
-    record.summary.seed = seed;
-    record.summary.status = "failed";
-    record.summary.message = e.what();
+    record.summary = failed_summary(seed, e.what());
   }
   return record;
 }

@@ -277,6 +277,31 @@ TEST(CliSweepTest, ReportWritesHeatMapsAndABestSettingThatRuns) {
   EXPECT_FALSE(fs::exists(dir / "bad"));
 }
 
+TEST(CliSweepTest, IntegerBooleanAndStringAxesKeepTheirTypesIntoTheBestScenario) {
+  const fs::path dir = fresh_dir("sweep_types");
+  const fs::path sweep = dir / "sweep.toml";
+  write_text(sweep, short_sweep("[[axis]]\nkey = \"sensors.pressure_adc_bits\"\nvalues = [10, 12]\n"
+                                "[[axis]]\nkey = \"reflex.mode\"\nvalues = [\"follow\", \"latch\"]\n"
+                                "[[axis]]\nkey = \"reflex.reciprocal_trigger_inhibition\"\n"
+                                "values = [true, false]\n"));
+  const std::string db = (dir / "s.db").string();
+  const auto r = run_pamsim("sweep " + sweep.string() + " --db " + db);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path out = dir / "report";
+  const auto rep = run_pamsim("report " + db + " --out " + out.string());
+  ASSERT_EQ(rep.exit_code, 0) << rep.err;
+  const auto points = lines_of(read_file(out / "points.csv"));
+  ASSERT_EQ(points.size(), 1u + 8u);
+  EXPECT_EQ(points[1].rfind("0,10,follow,true,", 0), 0u) << points[1];
+  EXPECT_EQ(points[8].rfind("7,12,latch,false,", 0), 0u) << points[8];
+  const std::string best = read_file(out / "best.toml");
+  EXPECT_NE(best.find("pressure_adc_bits = 1"), std::string::npos) << best;   // 10 or 12
+  EXPECT_EQ(best.find("pressure_adc_bits = 1.0"), std::string::npos) << best;
+  const auto run = run_pamsim("run " + (out / "best.toml").string() + " --out " +
+                              (dir / "best_run").string());
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+}
+
 TEST(CliSweepTest, ExportAndReportRefuseWhatIsNotASweepDatabase) {
   const fs::path dir = fresh_dir("sweep_not_db");
   write_text(dir / "junk.db", "not a database at all, just some text that is long enough\n");

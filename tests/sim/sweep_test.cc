@@ -180,6 +180,9 @@ pamsim::SweepSummary synthetic_summary(const fs::path& dir) {
     r.summary.seed = s.seed_of(t);
     r.summary.peak_drop_deg = 10.0 + static_cast<double>(r.point) + static_cast<double>(r.seed_index);
     r.summary.mistrips = r.point == 0 ? 1 : 0;
+    // recovery 1 + p s, but point 1 never recovers in its first seed
+    r.summary.recovery_time_s = r.point == 1 && r.seed_index == 0
+                                    ? std::nan("") : 1.0 + static_cast<double>(r.point);
     if (r.point == 5 && r.seed_index == 2) r.summary.status = "diverged";
     records.push_back(r);
   }
@@ -208,6 +211,11 @@ TEST_F(SweepTest, ReportStatisticsAndBestPointFollowTheCriterion) {
   ASSERT_NE(best, nullptr);
   EXPECT_EQ(best->point, 1);
 
+  // by recovery time, point 1 (one seed never recovers) does not qualify
+  const pamsim::PointSummary* by_recovery = pamsim::best_point(sweep, "recovery_time_s");
+  ASSERT_NE(by_recovery, nullptr);
+  EXPECT_EQ(by_recovery->point, 2);
+
   // heat map cells: x = v_thr level, y = k level
   const pamsim::HeatMap map = pamsim::sweep_heat_map(sweep, "peak_drop_deg", best, "peak_drop_deg");
   ASSERT_EQ(map.cells.size(), 6u);
@@ -233,6 +241,33 @@ TEST_F(SweepTest, BestScenarioKeepsTheBaseAndSetsThePoint) {
   EXPECT_EQ(fs::weakly_canonical(sc.model_file), fs::weakly_canonical(base.model_file));
   EXPECT_EQ(sc.duration_s, base.duration_s);
   EXPECT_EQ(text.rfind("# header\n", 0), 0u);
+}
+
+TEST_F(SweepTest, FailedTrialsStoreNoMetricsAndLeftoverWalFilesAreRefused) {
+  const SweepDefinition s = sweep_from(dir_, "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0]\n");
+  const std::string path = (dir_ / "f.db").string();
+  {
+    ResultsDb db = ResultsDb::create(path, s);
+    pamsim::TrialRecord r;
+    r.summary.status = "failed";
+    r.summary.message = "no model";
+    db.insert(s, {r});
+    const auto columns = db.trial_columns();
+    const auto peak = std::find(columns.begin(), columns.end(), "peak_drop_deg") - columns.begin();
+    const auto mistrips = std::find(columns.begin(), columns.end(), "mistrips") - columns.begin();
+    int rows = 0;
+    db.for_each_trial([&](const std::vector<pamsim::DbValue>& row) {
+      EXPECT_EQ(row[peak].kind, pamsim::DbValue::Kind::kNull);
+      EXPECT_EQ(row[mistrips].kind, pamsim::DbValue::Kind::kNull);
+      ++rows;
+    });
+    EXPECT_EQ(rows, 1);
+  }
+  // a WAL without its database (the database deleted after a kill) is not adopted
+  const std::string other = (dir_ / "g.db").string();
+  write_text(other + "-wal", "stale");
+  EXPECT_THROW(ResultsDb::create(other, s), InputError);
+  EXPECT_FALSE(fs::exists(other));
 }
 
 TEST_F(SweepTest, RunnerRejectsZeroThreads) {
