@@ -31,17 +31,18 @@ namespace {
 
 constexpr const char* kBackendEnvVar = "PAMSIM_GL_BACKEND";
 
-// MuJoCo binds GL functions once per process, through the first backend's loader
-void claim_backend_for_process(GlBackend backend) {
+// MuJoCo binds GL functions once per process, through the first backend's loader. Throws if
+// another backend already drew in this process; with `claim`, records this one.
+void check_backend_for_process(GlBackend backend, bool claim) {
   static std::mutex mutex;
   static std::optional<GlBackend> claimed;
   std::lock_guard<std::mutex> lock(mutex);
-  if (!claimed) claimed = backend;
-  if (*claimed != backend) {
+  if (claimed && *claimed != backend) {
     throw std::logic_error(std::string("GL backend ") + gl_backend_name(backend) +
                            " requested after " + gl_backend_name(*claimed) +
                            ": MuJoCo binds GL functions once per process, use one backend");
   }
+  if (claim) claimed = backend;
 }
 
 // ---- OSMesa ----
@@ -184,7 +185,12 @@ class EglGlContext : public GlContext {
     if (egl_.BindAPI(EGL_OPENGL_API) != EGL_TRUE) throw InputError(egl_error(egl_, "eglBindAPI"));
     context_ = egl_.CreateContext(display_, config, EGL_NO_CONTEXT, nullptr);
     if (context_ == EGL_NO_CONTEXT) throw InputError(egl_error(egl_, "eglCreateContext"));
-    make_current();
+    try {
+      make_current();
+    } catch (...) {   // the destructor does not run for a constructor that throws
+      egl_.DestroyContext(display_, context_);
+      throw;
+    }
   }
 
   ~EglGlContext() override {
@@ -229,13 +235,21 @@ GlBackend choose_gl_backend(const std::string& option_value) {
 }
 
 std::unique_ptr<GlContext> create_gl_context(GlBackend backend, int width, int height) {
-  claim_backend_for_process(backend);
-  if (backend == GlBackend::kOsmesa) return std::make_unique<OsMesaGlContext>(width, height);
+  // checked before, claimed once the context exists: a backend that failed to start does not
+  // block another
+  check_backend_for_process(backend, false);
+  std::unique_ptr<GlContext> context;
+  if (backend == GlBackend::kOsmesa) {
+    context = std::make_unique<OsMesaGlContext>(width, height);
+  } else {
 #ifdef PAMSIM_HAVE_EGL
-  return std::make_unique<EglGlContext>();
+    context = std::make_unique<EglGlContext>();
 #else
-  throw InputError("--backend egl: this pamsim was built without EGL (libegl-dev missing)");
+    throw InputError("--backend egl: this pamsim was built without EGL (libegl-dev missing)");
 #endif
+  }
+  check_backend_for_process(backend, true);
+  return context;
 }
 
 }  // namespace pamsim

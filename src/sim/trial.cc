@@ -18,7 +18,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr double kObservationToleranceS = 1e-9;   // d->time accumulates rounding
 constexpr double kRecoveryBandDeg = 2.0;
 
 enum Col : std::size_t {

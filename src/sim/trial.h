@@ -77,6 +77,10 @@ struct TrialSnapshot {
 // one. run_trial shows it the initial state and then the state after every physics step
 // whose time has reached next_observation_time_s() (within 1 ns); an observer that wants
 // no more returns +infinity. Exceptions from observe() end the trial and propagate.
+// How close d->time (which accumulates rounding) must come to an asked-for time to count as
+// reaching it; observers count their frames with the same tolerance.
+inline constexpr double kObservationToleranceS = 1e-9;
+
 class TrialObserver {
  public:
   virtual ~TrialObserver() = default;

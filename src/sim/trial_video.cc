@@ -19,7 +19,6 @@
 namespace pamsim {
 namespace {
 
-constexpr double kFrameTimeToleranceS = 1e-9;   // frame times vs accumulated sim time
 constexpr double kPlotWidthShare = 0.32;    // of the frame, each plot
 constexpr double kPlotHeightShare = 0.26;
 constexpr double kAngleTickDeg = 10.0;      // the angle plot's range: multiples of this
@@ -27,7 +26,7 @@ constexpr double kPressureTickMpa = 0.1;    // the pressure plot's range: [0, a 
 
 // frames at k / fps strictly before the end of the trial: duration x fps when whole
 long frames_in(double duration_s, int fps) {
-  return static_cast<long>(std::ceil(duration_s * fps - kFrameTimeToleranceS));
+  return static_cast<long>(std::ceil(duration_s * fps - kObservationToleranceS));
 }
 
 // libx264's preset: the fast path favours encoding speed, the default path file size
@@ -180,7 +179,7 @@ void TrialVideo::observe(const TrialSnapshot& snapshot) {
   const unsigned char* rgb = renderer_.read_pixels();
 
   // every frame time up to now shows this state (several only if fps beats the physics rate)
-  const double due_s = snapshot.time_s + kFrameTimeToleranceS;
+  const double due_s = snapshot.time_s + kObservationToleranceS;
   while (next_frame_ < frame_count_ && static_cast<double>(next_frame_) / options_.fps <= due_s) {
     if (mp4_) mp4_->write_frame(rgb);
     if (png_) png_->write_frame(rgb);
