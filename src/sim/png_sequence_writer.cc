@@ -118,11 +118,19 @@ void PngSequenceWriter::write_frame(const unsigned char* rgb_bottom_up) {
 
 void PngSequenceWriter::finish() {
   // replace an earlier sequence (checked again: it may have changed since the start)
+  // the old one is moved aside first, so a failed rename loses neither sequence
   check_replaceable(dir_);
   std::error_code ec;
-  fs::remove_all(dir_, ec);
+  const std::string old_dir = impl_->temp_dir.path() + ".old";
+  const bool had_old = fs::exists(dir_, ec);
+  if (had_old) fs::rename(dir_, old_dir, ec);
   if (!ec) fs::rename(impl_->temp_dir.path(), dir_, ec);
-  if (ec) throw InputError(dir_ + ": cannot put the frames in place (" + ec.message() + ")");
+  if (ec) {
+    std::error_code ignored;
+    if (had_old && !fs::exists(dir_, ignored)) fs::rename(old_dir, dir_, ignored);
+    throw InputError(dir_ + ": cannot put the frames in place (" + ec.message() + ")");
+  }
+  if (had_old) fs::remove_all(old_dir, ec);
   impl_->temp_dir.release();
   impl_.reset();
 }
