@@ -43,7 +43,7 @@ std::string csv_cell(const DbValue& v) {
 }
 
 void export_csv(const ExportOptions& opt) {
-  const ResultsDb db = ResultsDb::open_read_only(opt.db);
+  const ResultsDb db = ResultsDb::open_existing(opt.db);
   const std::vector<std::string> columns = db.trial_columns();
   std::vector<bool> keep(columns.size());
   std::string out;

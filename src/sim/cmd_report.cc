@@ -36,7 +36,7 @@ std::string stats_text(const MetricStats& m) {
 }
 
 void report(const ReportOptions& opt) {
-  const ResultsDb db = ResultsDb::open_read_only(opt.db);
+  const ResultsDb db = ResultsDb::open_existing(opt.db);
   const SweepSummary sweep = summarize_sweep(db);
   if (sweep.metric_index(opt.metric) < 0) {
     std::string names;

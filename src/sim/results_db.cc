@@ -190,7 +190,7 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
   return open_to_resume(path, sweep);
 }
 
-ResultsDb ResultsDb::open_read_only(const std::string& path) {
+ResultsDb ResultsDb::open_existing(const std::string& path) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such sweep database");
   // read-write so that a WAL left by a killed sweep is recovered; nothing is written
@@ -202,7 +202,7 @@ ResultsDb ResultsDb::open_read_only(const std::string& path) {
 }
 
 ResultsDb ResultsDb::open_to_resume(const std::string& path, const SweepDefinition& sweep) {
-  ResultsDb db = open_read_only(path);
+  ResultsDb db = open_existing(path);
   const std::string stored = db.meta("definition");
   const std::string wanted = sweep.canonical_json();
   if (stored != wanted) {

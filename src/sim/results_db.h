@@ -44,8 +44,10 @@ class ResultsDb {
   // Opens `path` to finish `sweep`; throws InputError if it is missing, not a pamsim sweep
   // database, or holds a different sweep definition (naming what differs).
   static ResultsDb open_to_resume(const std::string& path, const SweepDefinition& sweep);
-  // Opens `path` read-only (export, report); throws InputError if it is not a sweep database.
-  static ResultsDb open_read_only(const std::string& path);
+  // Opens an existing sweep database to read it (export, report). Opened read-write so that a
+  // WAL left by a killed sweep is recovered; nothing else is written. Throws InputError if
+  // `path` is missing or not a sweep database.
+  static ResultsDb open_existing(const std::string& path);
 
   ResultsDb(ResultsDb&& other) noexcept;
   ResultsDb& operator=(ResultsDb&& other) noexcept;

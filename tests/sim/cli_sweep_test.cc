@@ -75,7 +75,7 @@ std::int64_t wait_for_trials(const std::string& db, std::int64_t n, pid_t pid) {
   for (int i = 0; i < 20000; ++i) {
     if (fs::exists(db)) {
       try {
-        const std::int64_t stored = pamsim::ResultsDb::open_read_only(db).trial_count();
+        const std::int64_t stored = pamsim::ResultsDb::open_existing(db).trial_count();
         if (stored >= n) return stored;
       } catch (const std::exception&) {   // mid-creation: try again
       }
@@ -129,7 +129,7 @@ TEST(CliSweepTest, SweepKilledHalfwayAndResumedEqualsTheUninterruptedOne) {
   int status = 0;
   ASSERT_EQ(::waitpid(pid, &status, 0), pid);
   ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
-  const std::int64_t after_kill = pamsim::ResultsDb::open_read_only(db).trial_count();
+  const std::int64_t after_kill = pamsim::ResultsDb::open_existing(db).trial_count();
   EXPECT_GE(after_kill, seen);
   EXPECT_LT(after_kill, total) << "killed too late to test a resume";
 
@@ -156,13 +156,13 @@ TEST(CliSweepTest, SigintStopsCleanlyWithExit130AndResumeFinishes) {
   ASSERT_EQ(::waitpid(pid, &status, 0), pid);
   ASSERT_TRUE(WIFEXITED(status)) << "SIGINT must stop the sweep, not kill it";
   EXPECT_EQ(WEXITSTATUS(status), 130);
-  const std::int64_t stored = pamsim::ResultsDb::open_read_only(db).trial_count();
+  const std::int64_t stored = pamsim::ResultsDb::open_existing(db).trial_count();
   EXPECT_LT(stored, kInterruptibleTrials);
   const auto resumed = run_pamsim("sweep " + sweep.string() + " --resume --db " + db);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_NE(resumed.err.find(std::to_string(stored) + " stored before"), std::string::npos)
       << resumed.err;
-  EXPECT_EQ(pamsim::ResultsDb::open_read_only(db).trial_count(), kInterruptibleTrials);
+  EXPECT_EQ(pamsim::ResultsDb::open_existing(db).trial_count(), kInterruptibleTrials);
 }
 
 TEST(CliSweepTest, DivergingTrialIsStoredAndTheSweepGoesOn) {
@@ -247,7 +247,7 @@ TEST(CliSweepTest, ResumeRefusesADatabaseOfAnotherSweep) {
   // resuming a finished sweep runs nothing and keeps every trial
   const auto again = run_pamsim("sweep " + a.string() + " --resume --db " + db);
   EXPECT_EQ(again.exit_code, 0) << again.err;
-  EXPECT_EQ(pamsim::ResultsDb::open_read_only(db).trial_count(), 1);
+  EXPECT_EQ(pamsim::ResultsDb::open_existing(db).trial_count(), 1);
 }
 
 TEST(CliSweepTest, ReportWritesHeatMapsAndABestSettingThatRuns) {
