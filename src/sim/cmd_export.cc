@@ -1,18 +1,23 @@
 // cmd_export.cc: `pamsim export DB --csv FILE [--timing]`: a sweep database as CSV, one row
-// per trial in trial order, the columns of the trials table (results_db.h). Numbers are
-// written in their shortest exact form, missing values as empty cells. The per-run timing
-// metrics (wall_time_s, realtime_factor) are left out unless --timing, so the same sweep
-// exports the same file whatever the machine or thread count.
+// per trial in trial order, the columns of the trials table (results_db.h), streamed to a
+// temp file and renamed into place. Numbers are written in their shortest exact form,
+// missing values as empty cells. The per-run timing metrics (wall_time_s, realtime_factor)
+// are left out unless --timing, so the same sweep exports the same file whatever the machine
+// or thread count.
 #include <CLI/CLI.hpp>
 
 #include <charconv>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
 #include <iostream>
 
-#include "pam_actuator/atomic_file.h"
 #include "pam_actuator/input_error.h"
 #include "sim/commands.h"
 #include "sim/outputs.h"
 #include "sim/results_db.h"
+#include "sim/temp_path.h"
 
 namespace pamsim {
 namespace {
@@ -45,27 +50,40 @@ std::string csv_cell(const DbValue& v) {
 void export_csv(const ExportOptions& opt) {
   const ResultsDb db = ResultsDb::open_existing(opt.db);
   const std::vector<std::string> columns = db.trial_columns();
+
+  // rows stream into the temp file (memory flat whatever the number of trials), then rename
+  TempPath tmp(opt.csv);
+  std::ofstream out(tmp.path(), std::ios::binary | std::ios::trunc);
+  if (!out) throw InputError(opt.csv + ": cannot write (missing folder or no permission)");
   std::vector<bool> keep(columns.size());
-  std::string out;
+  bool first = true;
   for (std::size_t c = 0; c < columns.size(); ++c) {
     keep[c] = opt.timing || !is_timing_metric(columns[c]);
     if (!keep[c]) continue;
-    out += (out.empty() ? "" : ",") + csv_field(columns[c]);
+    out << (first ? "" : ",") << csv_field(columns[c]);
+    first = false;
   }
-  out += "\n";
+  out << '\n';
   std::int64_t rows = 0;
+  std::string line;
   db.for_each_trial([&](const std::vector<DbValue>& cells) {
-    bool first = true;
+    line.clear();
+    bool first_cell = true;
     for (std::size_t c = 0; c < cells.size(); ++c) {
       if (!keep[c]) continue;
-      if (!first) out += ',';
-      out += csv_cell(cells[c]);
-      first = false;
+      if (!first_cell) line += ',';
+      line += csv_cell(cells[c]);
+      first_cell = false;
     }
-    out += '\n';
+    out << line << '\n';
     ++rows;
   });
-  write_file_atomically(opt.csv, out);
+  out.close();
+  if (!out) throw InputError(opt.csv + ": writing failed (disk full?)");
+  if (std::rename(tmp.path().c_str(), opt.csv.c_str()) != 0) {
+    throw InputError(opt.csv + ": cannot move the CSV into place (" + std::strerror(errno) + ")");
+  }
+  tmp.release();
   std::cerr << "pamsim export: " << rows << " trials to " << opt.csv << "\n";
 }
 

@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <sqlite3.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -96,21 +97,46 @@ std::vector<std::string> metric_column_names() {
 
 ResultsDb::ResultsDb(sqlite3* db, std::string path) : db_(db), path_(std::move(path)) {}
 
-ResultsDb::ResultsDb(ResultsDb&& other) noexcept : db_(other.db_), path_(std::move(other.path_)) {
+ResultsDb::ResultsDb(ResultsDb&& other) noexcept
+    : db_(other.db_), path_(std::move(other.path_)), writer_lock_fd_(other.writer_lock_fd_) {
   other.db_ = nullptr;
+  other.writer_lock_fd_ = -1;
 }
 
 ResultsDb& ResultsDb::operator=(ResultsDb&& other) noexcept {
   if (this != &other) {
-    sqlite3_close(db_);
+    close();
     db_ = other.db_;
     path_ = std::move(other.path_);
+    writer_lock_fd_ = other.writer_lock_fd_;
     other.db_ = nullptr;
+    other.writer_lock_fd_ = -1;
   }
   return *this;
 }
 
-ResultsDb::~ResultsDb() { sqlite3_close(db_); }
+ResultsDb::~ResultsDb() { close(); }
+
+void ResultsDb::close() {
+  sqlite3_close(db_);
+  db_ = nullptr;
+  // only after SQLite is done with the file: closing any descriptor of it drops the
+  // process's POSIX locks, SQLite's included
+  if (writer_lock_fd_ >= 0) ::close(writer_lock_fd_);
+  writer_lock_fd_ = -1;
+}
+
+void ResultsDb::lock_for_writing() {
+  // flock(2), independent of SQLite's fcntl locks; released by the kernel if the process dies
+  writer_lock_fd_ = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
+  if (writer_lock_fd_ < 0 || ::flock(writer_lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    const bool busy = errno == EWOULDBLOCK;
+    throw InputError(path_ + (busy ? ": another pamsim sweep is writing to it; wait for it or "
+                                     "stop it first"
+                                   : ": cannot lock the sweep database (" +
+                                         std::string(std::strerror(errno)) + ")"));
+  }
+}
 
 void ResultsDb::fail(const std::string& what) const {
   throw std::runtime_error(path_ + ": " + what + " (" + sqlite3_errmsg(db_) + ")");
@@ -210,6 +236,7 @@ ResultsDb ResultsDb::open_to_resume(const std::string& path, const SweepDefiniti
                      " differs from " + sweep.file + "); use another --db, or the sweep file "
                      "it was made with");
   }
+  db.lock_for_writing();
   db.exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;");
   return db;
 }

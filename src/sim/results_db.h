@@ -41,8 +41,9 @@ class ResultsDb {
  public:
   // Creates `path` for `sweep`; throws InputError if it exists or cannot be written.
   static ResultsDb create(const std::string& path, const SweepDefinition& sweep);
-  // Opens `path` to finish `sweep`; throws InputError if it is missing, not a pamsim sweep
-  // database, or holds a different sweep definition (naming what differs).
+  // Opens `path` to finish `sweep`, as its only writer; throws InputError if it is missing,
+  // not a pamsim sweep database, holds a different sweep definition (naming what differs),
+  // or another process is writing to it.
   static ResultsDb open_to_resume(const std::string& path, const SweepDefinition& sweep);
   // Opens an existing sweep database to read it (export, report). Opened read-write so that a
   // WAL left by a killed sweep is recovered; nothing else is written. Throws InputError if
@@ -73,9 +74,12 @@ class ResultsDb {
   ResultsDb(sqlite3* db, std::string path);
   void exec(const std::string& sql) const;
   [[noreturn]] void fail(const std::string& what) const;
+  void lock_for_writing();
+  void close();
 
   sqlite3* db_ = nullptr;
   std::string path_;
+  int writer_lock_fd_ = -1;   // holds an exclusive flock while this handle writes
 };
 
 // The metric columns of the trials table, in order (trial_metrics() of outputs.h).

@@ -165,6 +165,26 @@ TEST(CliSweepTest, SigintStopsCleanlyWithExit130AndResumeFinishes) {
   EXPECT_EQ(pamsim::ResultsDb::open_existing(db).trial_count(), kInterruptibleTrials);
 }
 
+TEST(CliSweepTest, ASecondWriterIsRefusedWhileASweepRuns) {
+  const fs::path dir = fresh_dir("sweep_lock");
+  const fs::path sweep = interruptible_sweep(dir);
+  const std::string db = (dir / "s.db").string();
+  const pid_t pid = spawn_sweep(sweep, db);
+  ASSERT_GT(pid, 0);
+  ASSERT_GT(wait_for_trials(db, 1, pid), 0);
+  const auto second = run_pamsim("sweep " + sweep.string() + " --resume --db " + db);
+  ::kill(pid, SIGKILL);
+  ::waitpid(pid, nullptr, 0);
+  EXPECT_EQ(second.exit_code, 2) << second.err;
+  EXPECT_EQ(line_count(second.err), 1) << second.err;
+  EXPECT_NE(second.err.find("another pamsim sweep is writing to it"), std::string::npos)
+      << second.err;
+  // the lock dies with its process: a resume now finishes the sweep
+  const auto resumed = run_pamsim("sweep " + sweep.string() + " --resume --db " + db);
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(pamsim::ResultsDb::open_existing(db).trial_count(), kInterruptibleTrials);
+}
+
 TEST(CliSweepTest, DivergingTrialIsStoredAndTheSweepGoesOn) {
   const fs::path dir = fresh_dir("sweep_diverge");
   const fs::path sweep = dir / "sweep.toml";
