@@ -155,23 +155,14 @@ TEST(ScenarioTest, ModelThatFailsToLoadIsNamed) {
 }
 
 TEST(ScenarioTest, ParamsFileMissingAFieldIsNamed) {
-  const std::string params = write_temp("no_a2.toml", R"(name = "agonist"
-[spring]
-law = "eq3"
-units = { pressure = "MPa", length = "mm", force = "N" }
-m = -60.1
-h = 170.1
-a0 = 0.911
-a1 = 0.256
-a3 = -0.201
-[strain_gauge]
-q_V_per_N = 2.25e-3
-[geometry]
-length_mm = 180
-sleeve_diameter_mm = 16.0
-bladder_diameter_mm = 4.0
-braid_angle_deg = 25
-)");
+  // the real agonist file without its a2 line
+  std::ifstream in(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/table4_agonist.toml");
+  std::string text, line;
+  while (std::getline(in, line)) {
+    if (line.rfind("a2 ", 0) != 0) text += line + "\n";
+  }
+  ASSERT_NE(text.find("a3 "), std::string::npos) << "the agonist file moved";
+  const std::string params = write_temp("no_a2.toml", text);
   const std::string message = error_of({"model.agonist_params=\"" + params + "\""});
   EXPECT_NE(message.find("no_a2.toml"), std::string::npos) << message;
   EXPECT_NE(message.find("a2"), std::string::npos) << message;
