@@ -19,12 +19,16 @@ toml::table parse_toml_text(const std::string& text, const std::string& name) {
   }
 }
 
-toml::table parse_toml_file(const std::string& path) {
+std::string read_text_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open file");
   std::stringstream buffer;
   buffer << in.rdbuf();
-  return parse_toml_text(buffer.str(), path);
+  return buffer.str();
+}
+
+toml::table parse_toml_file(const std::string& path) {
+  return parse_toml_text(read_text_file(path), path);
 }
 
 }  // namespace pamsim

@@ -12,6 +12,9 @@ namespace pamsim {
 // Parses `text`, naming it `name` in errors. Throws InputError on a syntax error.
 toml::table parse_toml_text(const std::string& text, const std::string& name);
 
+// The whole file at `path`. Throws InputError "<path>: cannot open file".
+std::string read_text_file(const std::string& path);
+
 // Reads and parses the file at `path`. Throws InputError if it cannot be read or parsed.
 toml::table parse_toml_file(const std::string& path);
 

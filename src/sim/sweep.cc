@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <random>
 #include <set>
 #include <sstream>
@@ -13,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pam_actuator/input_error.h"
+#include "pam_actuator/toml_file.h"
 #include "sim/config_reader.h"
 #include "sim/scenario.h"
 
@@ -193,14 +193,6 @@ void make_points(SweepDefinition* def) {
   }
 }
 
-std::string read_text_file(const std::string& path, const std::string& sweep_file) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(sweep_file + ": base: cannot read " + path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 std::string describe_point(const SweepDefinition& def, std::int64_t point) {
   std::string s;
   for (std::size_t a = 0; a < def.axes.size(); ++a) {
@@ -301,7 +293,11 @@ SweepDefinition load_sweep(const std::string& path) {
 
   def.base_path = in.get_path("base", "");
   in.check(!def.base_path.empty(), "base", "is required (the base scenario file)");
-  def.base_text = read_text_file(def.base_path, path);
+  try {
+    def.base_text = read_text_file(def.base_path);
+  } catch (const InputError& e) {
+    throw InputError(path + ": base: " + e.what());
+  }
 
   if (const toml::node* fixed = in.raw("fixed")) {
     const toml::table* t = fixed->as_table();
