@@ -18,6 +18,7 @@
 
 #include "pam_actuator/input_error.h"
 #include "sim/outputs.h"
+#include "sim/temp_path.h"
 
 namespace pamsim {
 namespace {
@@ -166,52 +167,46 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
     }
   }
   // build it under a temp name, then rename: the database exists whole or not at all
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  TempPath tmp_guard(path);   // removed on any failure below
+  const std::string& tmp = tmp_guard.path();
   fs::remove(tmp, ec);
   {
     sqlite3* handle = nullptr;
     try {
       handle = open_database(tmp, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
     } catch (const InputError&) {
-      fs::remove(tmp, ec);
       throw InputError(path + ": cannot create the sweep database (is the folder writable?)");
     }
-    ResultsDb db(handle, tmp);
-    try {
-      std::string columns = "trial INTEGER PRIMARY KEY, point INTEGER NOT NULL, "
-                            "seed_index INTEGER NOT NULL, seed INTEGER NOT NULL";
-      for (const auto& axis : sweep.axes) columns += ", " + quoted(axis.key);
-      columns += ", status TEXT NOT NULL, message TEXT";
-      for (const auto& name : metric_column_names()) columns += ", " + quoted(name) + " REAL";
-      db.exec("BEGIN; CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL); "
-              "CREATE TABLE trials(" + columns + ");");
-      Statement put = prepare(db.db_, "INSERT INTO meta VALUES (?, ?)");
-      if (!put) db.fail("cannot write the sweep definition");
-      const std::pair<std::string, std::string> meta[] = {
-          {"format", "pamsim-sweep-1"},
-          {"definition", sweep.canonical_json()},
-          {"pamsim_version", PAMSIM_VERSION},
-          {"sweep_file", sweep.file},
-          {"base_path", fs::absolute(sweep.base_path).lexically_normal().string()},
-          {"created_utc", utc_now()}};
-      for (const auto& [key, value] : meta) {
-        sqlite3_bind_text(put.get(), 1, key.c_str(), -1, SQLITE_TRANSIENT);
-        sqlite3_bind_text(put.get(), 2, value.c_str(), -1, SQLITE_TRANSIENT);
-        if (sqlite3_step(put.get()) != SQLITE_DONE) db.fail("cannot write the sweep definition");
-        sqlite3_reset(put.get());
-      }
-      put.reset();
-      db.exec("COMMIT; PRAGMA journal_mode=WAL;");
-    } catch (...) {
-      db = ResultsDb(nullptr, "");
-      fs::remove(tmp, ec);
-      throw;
+    ResultsDb db(handle, tmp);   // closed before tmp_guard removes the file
+    std::string columns = "trial INTEGER PRIMARY KEY, point INTEGER NOT NULL, "
+                          "seed_index INTEGER NOT NULL, seed INTEGER NOT NULL";
+    for (const auto& axis : sweep.axes) columns += ", " + quoted(axis.key);
+    columns += ", status TEXT NOT NULL, message TEXT";
+    for (const auto& name : metric_column_names()) columns += ", " + quoted(name) + " REAL";
+    db.exec("BEGIN; CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL); "
+            "CREATE TABLE trials(" + columns + ");");
+    Statement put = prepare(db.db_, "INSERT INTO meta VALUES (?, ?)");
+    if (!put) db.fail("cannot write the sweep definition");
+    const std::pair<std::string, std::string> meta[] = {
+        {"format", "pamsim-sweep-1"},
+        {"definition", sweep.canonical_json()},
+        {"pamsim_version", PAMSIM_VERSION},
+        {"sweep_file", sweep.file},
+        {"base_path", fs::absolute(sweep.base_path).lexically_normal().string()},
+        {"created_utc", utc_now()}};
+    for (const auto& [key, value] : meta) {
+      sqlite3_bind_text(put.get(), 1, key.c_str(), -1, SQLITE_TRANSIENT);
+      sqlite3_bind_text(put.get(), 2, value.c_str(), -1, SQLITE_TRANSIENT);
+      if (sqlite3_step(put.get()) != SQLITE_DONE) db.fail("cannot write the sweep definition");
+      sqlite3_reset(put.get());
     }
+    put.reset();
+    db.exec("COMMIT; PRAGMA journal_mode=WAL;");
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    fs::remove(tmp, ec);
     throw InputError(path + ": cannot create the sweep database (" + std::strerror(errno) + ")");
   }
+  tmp_guard.release();
   sync_directory_of(path);   // the rename itself survives a power cut
   return open_to_resume(path, sweep);
 }
