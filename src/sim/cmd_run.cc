@@ -14,6 +14,7 @@
 #include "sim/outputs.h"
 #include "sim/plot.h"
 #include "sim/runner.h"
+#include "sim/scene_renderer.h"
 #include "sim/trial_video.h"
 
 namespace pamsim {
@@ -59,8 +60,9 @@ void run(const RunOptions& opt) {
   }
   const Scenario sc = load_scenario(opt.scenario, opt.overrides);
   const ArmModel arm = load_arm_for(sc);
+  if (!opt.video.empty()) check_camera(arm.model.get(), arm.model_path, video.camera);
   const std::string out = opt.out.empty() ? default_out_dir(opt.scenario) : opt.out;
-  make_directories(out);
+  make_directories(out);   // only once every input is known to be good
   const int threads = opt.threads > 0 ? opt.threads : default_thread_count();
   std::vector<TrialResult> results;
   if (opt.video.empty()) {

@@ -24,6 +24,13 @@ std::string camera_names(const mjModel* m) {
 
 }  // namespace
 
+void check_camera(const mjModel* model, const std::string& model_path, const std::string& camera) {
+  if (mj_name2id(model, mjOBJ_CAMERA, camera.c_str()) < 0) {
+    throw InputError(model_path + ": no camera named '" + camera + "' (the model's cameras: " +
+                     camera_names(model) + ")");
+  }
+}
+
 void SceneRenderer::SceneDeleter::operator()(mjvScene* scene) const {
   mjv_freeScene(scene);
   delete scene;
@@ -46,11 +53,8 @@ SceneRenderer::SceneRenderer(const mjModel* model, const std::string& model_path
                        "] pixels per side");
     }
   }
+  check_camera(model, model_path, options.camera);
   const int camera_id = mj_name2id(model, mjOBJ_CAMERA, options.camera.c_str());
-  if (camera_id < 0) {
-    throw InputError(model_path + ": no camera named '" + options.camera +
-                     "' (the model's cameras: " + camera_names(model) + ")");
-  }
 
   // the copy that is drawn: offscreen buffer of the frame's size, quality as asked
   model_.reset(mj_copyModel(nullptr, model));

@@ -33,6 +33,10 @@ struct SceneRenderOptions {
   GlBackend backend = GlBackend::kOsmesa;
 };
 
+// Throws InputError naming `model_path` if `model` has no camera `camera` (the message lists
+// the model's cameras). For commands that check before they create any output.
+void check_camera(const mjModel* model, const std::string& model_path, const std::string& camera);
+
 class SceneRenderer {
  public:
   // Prepares the GL context and MuJoCo's scene and render context for `model` (copied; the

@@ -104,6 +104,11 @@ TEST_F(CliRenderTest, BadInputIsOneLineNonZeroAndLeavesNothing) {
   const std::string mp4 = (dir / "v.mp4").string();
   const std::string render =
       "render scenarios/drop_mass.toml --set sim.duration_s=0.1 --set drop.time_s=0.05 ";
+  // the arm without its "side" camera, kept outside `dir`
+  const fs::path no_side = fresh_dir("render_bad_model") / "arm_no_side.xml";
+  std::string xml = pamsim_test::read_file(std::string(PAMSIM_SOURCE_DIR) + "/models/arm_2pam.xml");
+  xml.replace(xml.find("name=\"side\""), 11, "name=\"back\"");
+  pamsim_test::write_text(no_side, xml);
   const std::vector<std::string> cases = {
       render + "-o /proc/pamsim_no_such/v.mp4",                 // unwritable
       render + "-o " + (blocker / "v.mp4").string(),            // parent is a file
@@ -125,6 +130,8 @@ TEST_F(CliRenderTest, BadInputIsOneLineNonZeroAndLeavesNothing) {
       "run scenarios/drop_mass.toml --trials 2 --video " + mp4 + " --out " + (dir / "o").string(),
       "run scenarios/drop_mass.toml --video " + (dir / "v.mov").string() + " --out " +
           (dir / "o").string(),
+      "run scenarios/drop_mass.toml --set model.file=\\\"" + no_side.string() + "\\\" --video " +
+          mp4 + " --out " + (dir / "o").string(),               // no camera: no output folder
   };
   for (const std::string& args : cases) {
     const CliResult r = run_pamsim(args);
