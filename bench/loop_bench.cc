@@ -15,10 +15,10 @@
 #include <cmath>
 #include <string>
 
-#include "sim/pam_callback.h"
-#include "sim/runner.h"
-#include "sim/scenario.h"
-#include "sim/trial.h"
+#include "sim/core/pam_callback.h"
+#include "sim/core/runner.h"
+#include "sim/io/scenario.h"
+#include "sim/core/trial.h"
 
 namespace pamsim {
 namespace {

@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "sim/mp4_writer.h"
-#include "sim/runner.h"
-#include "sim/scene_renderer.h"
-#include "sim/trial_video.h"
+#include "sim/render/mp4_writer.h"
+#include "sim/core/runner.h"
+#include "sim/render/scene_renderer.h"
+#include "sim/render/trial_video.h"
 
 namespace pamsim {
 namespace {

@@ -11,9 +11,9 @@
 #include <fstream>
 #include <string>
 
-#include "sim/results_db.h"
-#include "sim/sweep.h"
-#include "sim/sweep_runner.h"
+#include "sim/sweep/results_db.h"
+#include "sim/sweep/sweep.h"
+#include "sim/sweep/sweep_runner.h"
 
 namespace pamsim {
 namespace {

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "cli_util.h"
-#include "sim/results_db.h"
+#include "sim/sweep/results_db.h"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "pam_actuator/units.h"
-#include "sim/runner.h"
+#include "sim/core/runner.h"
 
 namespace pamsim {
 namespace {

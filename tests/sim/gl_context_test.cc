@@ -1,6 +1,6 @@
 // gl_context_test.cc: choosing the GL backend (option over environment over the default,
 // one clear line for an unknown name) and the one-backend-per-process rule.
-#include "sim/gl_context.h"
+#include "sim/render/gl_context.h"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 #include <cstring>
 #include <memory>
 
-#include "sim/mujoco_util.h"
+#include "sim/core/mujoco_util.h"
 
 namespace pamsim_test {
 

@@ -1,7 +1,7 @@
 // mp4_writer_test.cc: Mp4Writer against FFmpeg's own decoder: every frame written is decoded
 // back at the right size, OpenGL's bottom-up rows come out top-down, and a writer that does
 // not finish (or cannot start) leaves no file and no temp file behind.
-#include "sim/mp4_writer.h"
+#include "sim/render/mp4_writer.h"
 
 #include <gtest/gtest.h>
 

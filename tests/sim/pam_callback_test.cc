@@ -1,5 +1,5 @@
 // pam_callback_test.cc: the MuJoCo binding applies exactly the pam_actuator force law.
-#include "sim/pam_callback.h"
+#include "sim/core/pam_callback.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include "inline_mjcf.h"
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/units.h"
-#include "sim/mujoco_util.h"
+#include "sim/core/mujoco_util.h"
 
 namespace pamsim {
 namespace {

@@ -17,10 +17,10 @@
 
 #include "pam_actuator/atomic_file.h"
 #include "pam_actuator/input_error.h"
-#include "sim/commands.h"
-#include "sim/outputs.h"
-#include "sim/plot.h"
-#include "sim/trajectory_csv.h"
+#include "sim/cli/commands.h"
+#include "sim/io/outputs.h"
+#include "sim/io/plot.h"
+#include "sim/io/trajectory_csv.h"
 
 namespace pamsim {
 namespace {

@@ -1,7 +1,7 @@
 // png_sequence_writer_test.cc: PngSequenceWriter: numbered PNGs that FFmpeg decodes at the
 // right size and the right way up, an earlier sequence replaced as a whole, a folder with
 // other files refused untouched, and an unfinished sequence leaving nothing behind.
-#include "sim/png_sequence_writer.h"
+#include "sim/render/png_sequence_writer.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

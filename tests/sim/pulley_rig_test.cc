@@ -8,8 +8,8 @@
 
 #include "pam_actuator/pam_params.h"
 #include "pam_actuator/units.h"
-#include "sim/mujoco_util.h"
-#include "sim/pam_callback.h"
+#include "sim/core/mujoco_util.h"
+#include "sim/core/pam_callback.h"
 
 namespace pamsim {
 namespace {

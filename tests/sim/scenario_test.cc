@@ -1,6 +1,6 @@
 // scenario_test.cc: every scenario key is validated with one clear message naming the file
 // and the key; unknown keys, broken files and broken models are refused.
-#include "sim/scenario.h"
+#include "sim/io/scenario.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "pam_actuator/input_error.h"
-#include "sim/runner.h"
+#include "sim/core/runner.h"
 
 namespace pamsim {
 namespace {

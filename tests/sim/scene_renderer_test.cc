@@ -1,7 +1,7 @@
 // scene_renderer_test.cc: SceneRenderer on a tiny inline model, offscreen through OSMesa: the
 // frame is not empty, a falling ball moves down in it, drawing never writes to the caller's
 // mjData, and an unknown camera or a bad size is refused with a clear message.
-#include "sim/scene_renderer.h"
+#include "sim/render/scene_renderer.h"
 
 #include <gtest/gtest.h>
 

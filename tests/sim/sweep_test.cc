@@ -11,11 +11,11 @@
 
 #include "cli_util.h"
 #include "pam_actuator/input_error.h"
-#include "sim/progress.h"
-#include "sim/report.h"
-#include "sim/results_db.h"
-#include "sim/sweep.h"
-#include "sim/sweep_runner.h"
+#include "sim/cli/progress.h"
+#include "sim/sweep/report.h"
+#include "sim/sweep/results_db.h"
+#include "sim/sweep/sweep.h"
+#include "sim/sweep/sweep_runner.h"
 
 namespace {
 

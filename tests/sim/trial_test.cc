@@ -1,6 +1,6 @@
 // trial_test.cc: the co-simulated arm: static equilibrium at the calibrated start angle,
 // the passive drop's events, convergence in the timestep, and determinism across threads.
-#include "sim/trial.h"
+#include "sim/core/trial.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/runner.h"
+#include "sim/core/runner.h"
 
 namespace pamsim {
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/av_handles.h"
+#include "sim/render/av_handles.h"
 
 namespace pamsim_test {
 

@@ -1,0 +1,68 @@
+// cmd_calibrate.cc: `pamsim calibrate SCENARIO.toml [--angle-deg A]
+// [--antagonist-deformation-mm D] [-o FILE]`: solves the arm's line lengths for the
+// scenario's model, PAMs and goal pressures (see calibration.h) and writes them (by default
+// to the scenario's model.calibration file).
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <iostream>
+
+#include "pam_actuator/atomic_file.h"
+#include "pam_actuator/input_error.h"
+#include "pam_actuator/units.h"
+#include "sim/core/calibration.h"
+#include "sim/cli/commands.h"
+#include "sim/io/config_reader.h"
+#include "sim/io/scenario.h"
+
+namespace pamsim {
+namespace {
+
+struct CalibrateOptions {
+  std::string scenario;
+  std::vector<std::string> overrides;
+  double angle_deg = -36.0;
+  double antagonist_deformation_mm = 1.0;
+  std::string out;
+};
+
+void calibrate(const CalibrateOptions& opt) {
+  if (!std::isfinite(opt.angle_deg)) throw InputError("--angle-deg must be finite");
+  if (!(opt.antagonist_deformation_mm > 0)) {
+    throw InputError("--antagonist-deformation-mm must be > 0, got " +
+                     format_value(opt.antagonist_deformation_mm));
+  }
+  const Scenario sc = load_scenario(opt.scenario, opt.overrides);
+  ArmModel arm = load_arm_model(sc.model_file, sc.pam, ArmCalibration{}, sc.drop_mass_kg);
+
+  CalibrationRequest req;
+  req.start_angle_rad = units::deg_to_rad(opt.angle_deg);
+  req.pressure_agonist_pa = sc.p_goal_agonist_pa;
+  req.pressure_antagonist_pa = sc.p_goal_antagonist_pa;
+  req.antagonist_deformation_m = units::mm_to_m(opt.antagonist_deformation_mm);
+  const ArmCalibration c = solve_calibration(arm, req);
+
+  const std::string out = opt.out.empty() ? sc.calibration_file : opt.out;
+  write_file_atomically(out, calibration_to_toml(c, "pamsim calibrate " + opt.scenario));
+  std::cout << "gravity torque at " << opt.angle_deg << " deg: " << c.gravity_torque_nm
+            << " N m\nagonist line: " << units::m_to_mm(c.line_length_m[kAgonist])
+            << " mm\nantagonist line: " << units::m_to_mm(c.line_length_m[kAntagonist])
+            << " mm\nwritten to " << out << "\n";
+}
+
+}  // namespace
+
+void add_calibrate_command(CLI::App& app) {
+  auto opt = std::make_shared<CalibrateOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "calibrate", "Solve the arm's line lengths for its start angle at the goal pressures");
+  cmd->add_option("scenario", opt->scenario, "Scenario file (TOML)")->required();
+  cmd->add_option("--set", opt->overrides, "Override a scenario key")->take_all();
+  cmd->add_option("--angle-deg", opt->angle_deg, "Start angle at rest [deg] (paper: -36)");
+  cmd->add_option("--antagonist-deformation-mm", opt->antagonist_deformation_mm,
+                  "Antagonist pre-deformation at the start [mm]");
+  cmd->add_option("-o,--out", opt->out, "Output file (default: the scenario's model.calibration)");
+  cmd->callback([opt] { calibrate(*opt); });
+}
+
+}  // namespace pamsim

@@ -1,0 +1,104 @@
+// cmd_fit.cc: `pamsim fit --model eq3|eq4|eq5 TENSILE.csv [--json] [-o PARAMS.toml]`,
+// the least-squares identification of seeds/000 Sec. II-B on a tensile CSV file.
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "pam_actuator/atomic_file.h"
+#include "pam_actuator/identification.h"
+#include "pam_actuator/pam_params.h"
+#include "pam_actuator/tensile_csv.h"
+#include "sim/cli/commands.h"
+
+namespace pamsim {
+namespace {
+
+struct FitOptions {
+  std::string model;
+  std::string csv_path;
+  std::string output_path;
+  bool json = false;
+};
+
+// Eq. (2) and the law's coefficients in the paper's units (m mm/MPa, h mm)
+struct PaperFit {
+  double m = 0.0, h = 0.0;
+  std::array<double, 6> coef{};
+};
+
+PaperFit to_paper(const SpringModel& model) {
+  PaperFit out;
+  spring_model_to_paper_units(model, &out.m, &out.h, &out.coef);
+  return out;
+}
+
+void print_json(const SpringFit& fit) {
+  const PaperFit p = to_paper(fit.model);
+  nlohmann::json coefficients = nlohmann::json::object();
+  for (int k = 0; k < coefficient_count(fit.model.law); ++k) {
+    coefficients[coefficient_name(fit.model.law, k)] = p.coef[k];
+  }
+  const nlohmann::json out = {{"model", to_string(fit.model.law)},
+                              {"m", p.m},
+                              {"h", p.h},
+                              {"coefficients", coefficients},
+                              {"rmse_N", fit.rmse_n},
+                              {"r2", fit.r2}};
+  std::cout << out.dump() << "\n";
+}
+
+void print_table(const SpringFit& fit, const std::string& csv_path) {
+  const PaperFit p = to_paper(fit.model);
+  std::printf("%s fitted to %s (%d points); units: p MPa, d mm, f N\n",
+              to_string(fit.model.law), csv_path.c_str(), fit.points);
+  std::printf("  %-4s %14.6g  mm/MPa  (Eq. 2 slope)\n", "m", p.m);
+  std::printf("  %-4s %14.6g  mm      (Eq. 2 intercept)\n", "h", p.h);
+  for (int k = 0; k < coefficient_count(fit.model.law); ++k) {
+    std::printf("  %-4s %14.6g\n", coefficient_name(fit.model.law, k).c_str(), p.coef[k]);
+  }
+  std::printf("  rmse %.6g N, R^2 %.6f\n", fit.rmse_n, fit.r2);
+}
+
+void run_fit(const FitOptions& o) {
+  // validate everything before any output
+  const SpringLaw law = parse_spring_law(o.model, "--model");
+  const std::vector<TensileRow> rows = read_tensile_csv(o.csv_path);
+  const SpringFit fit = fit_spring_model(law, rows, o.csv_path);
+
+  // parameter file that `pamsim estimate` reads
+  if (!o.output_path.empty()) {
+    PamParams params;
+    params.name = "fit";
+    params.source = "pamsim fit --model " + o.model + " " + o.csv_path;
+    params.spring = fit.model;
+    write_file_atomically(o.output_path, pam_params_to_toml(params));
+  }
+
+  if (o.json) {
+    print_json(fit);
+  } else {
+    print_table(fit, o.csv_path);
+    if (!o.output_path.empty()) std::printf("wrote %s\n", o.output_path.c_str());
+  }
+}
+
+}  // namespace
+
+void add_fit_command(CLI::App& app) {
+  auto o = std::make_shared<FitOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "fit", "fit Eq. (2) and a spring law (Eq. 3, 4 or 5) to tensile-test data");
+  cmd->add_option("--model", o->model, "spring law: eq3 | eq4 | eq5")->required();
+  cmd->add_option("tensile_csv", o->csv_path,
+                  "CSV with pressure_MPa, deformation_mm, force_N, length_mm columns")
+      ->required();
+  cmd->add_flag("--json", o->json, "print one JSON object (paper units) on stdout");
+  cmd->add_option("-o,--output", o->output_path, "write a PAM parameter file (TOML)");
+  cmd->callback([o] { run_fit(*o); });
+}
+
+}  // namespace pamsim

@@ -1,0 +1,110 @@
+// cmd_report.cc: `pamsim report DB [--metric NAME] [--out DIR]`: reads a sweep database and
+// writes, in DIR (default: the database's folder):
+//   points.csv                per point: axis values, mean/std/min/max of every metric
+//   heatmap_mistrip_rate.png, heatmap_peak_drop_deg.png, heatmap_recovery_time_s.png
+//                             (and heatmap_<NAME>.png) over the first two axes
+//   best.toml                 the best point (report.h's criterion on NAME, default
+//                             peak_drop_deg) as a scenario: pamsim run DIR/best.toml
+// and prints the criterion and the best point.
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "pam_actuator/atomic_file.h"
+#include "pam_actuator/input_error.h"
+#include "sim/cli/commands.h"
+#include "sim/io/outputs.h"
+#include "sim/sweep/report.h"
+
+namespace pamsim {
+namespace {
+
+struct ReportOptions {
+  std::string db;
+  std::string metric = "peak_drop_deg";
+  std::string out;
+};
+
+std::string stats_text(const MetricStats& m) {
+  char buf[128];
+  std::snprintf(buf, sizeof(buf), "%.4g +- %.2g (min %.4g, max %.4g, n %d)", m.mean,
+                std::isfinite(m.std) ? m.std : 0.0, m.min, m.max, m.count);
+  return buf;
+}
+
+void report(const ReportOptions& opt) {
+  const ResultsDb db = ResultsDb::open_existing(opt.db);
+  const SweepSummary sweep = summarize_sweep(db);
+  if (sweep.metric_index(opt.metric) < 0) {
+    std::string names;
+    for (const auto& n : sweep.metric_names) names += (names.empty() ? "" : ", ") + n;
+    throw InputError("--metric " + opt.metric + ": not a sweep metric (one of " + names + ")");
+  }
+  std::string out = opt.out;
+  if (out.empty()) {
+    out = std::filesystem::path(opt.db).parent_path().string();
+    if (out.empty()) out = ".";
+  }
+  make_directories(out);
+
+  std::cout << "sweep: " << sweep.sweep_file << " (" << sweep.design << ", "
+            << sweep.points_total << " points x " << sweep.seeds << " seeds; "
+            << sweep.trials_stored << " of " << sweep.trials_total << " trials stored, "
+            << sweep.trials_not_ok << " diverged or failed)\n";
+  write_file_atomically(out + "/points.csv", points_csv(sweep));
+
+  const PointSummary* best = best_point(sweep, opt.metric);
+  std::cout << "criterion: " << best_criterion(sweep, opt.metric) << "\n";
+  if (best) {
+    std::string setting;
+    for (std::size_t a = 0; a < sweep.axis_keys.size(); ++a) {
+      setting += (a ? ", " : "") + sweep.axis_keys[a] + " = " + best->axis_values[a];
+    }
+    std::cout << "best: point " << best->point << ": " << setting << "\n";
+    for (const std::string& name : {opt.metric, std::string("recovery_time_s"),
+                                   std::string("first_trigger_time_s"), std::string("impact_time_s")}) {
+      const int m = sweep.metric_index(name);
+      if (m >= 0) std::cout << "  " << name << " " << stats_text(best->metrics[m]) << "\n";
+    }
+    const std::string header =
+        "# Best setting of the sweep " + sweep.sweep_file + " (database " + opt.db + "):\n"
+        "# " + best_criterion(sweep, opt.metric) + ".\n"
+        "# Point " + std::to_string(best->point) + ": " + setting + ".\n"
+        "# Written by pamsim report from the base scenario " + sweep.base_path + ".\n\n";
+    write_file_atomically(out + "/best.toml",
+                          point_scenario_toml(sweep, *best, out, header));
+    std::cout << "  scenario: " << out << "/best.toml (pamsim run " << out << "/best.toml)\n";
+  } else {
+    std::cout << "best: no point meets the criterion\n";
+  }
+
+  if (sweep.axis_keys.size() < 2) {
+    std::cout << "heat maps: none (the sweep has one axis; see points.csv)\n";
+    return;
+  }
+  std::vector<std::string> maps = {"mistrip_rate", "peak_drop_deg", "recovery_time_s"};
+  if (opt.metric != "peak_drop_deg" && opt.metric != "recovery_time_s") maps.push_back(opt.metric);
+  for (const auto& metric : maps) {
+    write_heatmap(out + "/heatmap_" + metric + ".png", sweep_heat_map(sweep, metric, best, opt.metric));
+  }
+  std::cout << "outputs: " << out << "/{points.csv,heatmap_*.png" << (best ? ",best.toml" : "")
+            << "}\n";
+}
+
+}  // namespace
+
+void add_report_command(CLI::App& app) {
+  auto opt = std::make_shared<ReportOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "report", "Per-point statistics, heat maps and the best setting of a sweep database");
+  cmd->add_option("db", opt->db, "Sweep database (from pamsim sweep)")->required();
+  cmd->add_option("--metric", opt->metric,
+                  "Metric to minimise for the best setting (default peak_drop_deg)");
+  cmd->add_option("--out", opt->out, "Output folder (default: the database's folder)");
+  cmd->callback([opt] { report(*opt); });
+}
+
+}  // namespace pamsim

@@ -1,0 +1,141 @@
+// cmd_sweep.cc: `pamsim sweep SWEEP.toml [--threads N] [--db FILE] [--resume] [--out DIR]`:
+// validates the sweep file and every point's scenario, then runs the trials into the results
+// database (default DIR/sweep.db, DIR default renders/<sweep name>). SIGINT or SIGTERM stops
+// it cleanly (running trials finish and are stored; exit 130 or 143); --resume finishes the
+// rest.
+#include <CLI/CLI.hpp>
+
+#include <unistd.h>
+
+#include <atomic>
+#include <signal.h>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "pam_actuator/input_error.h"
+#include "sim/cli/commands.h"
+#include "sim/io/outputs.h"
+#include "sim/cli/progress.h"
+#include "sim/sweep/results_db.h"
+#include "sim/core/runner.h"
+#include "sim/sweep/sweep.h"
+#include "sim/sweep/sweep_runner.h"
+
+namespace pamsim {
+namespace {
+
+std::atomic<bool> g_stop_requested{false};
+std::atomic<int> g_stop_signal{0};
+static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free,
+              "set from a signal handler");
+
+extern "C" void request_stop(int signal_number) {
+  g_stop_signal = signal_number;
+  g_stop_requested = true;
+}
+
+// SIGINT/SIGTERM ask the sweep to stop for its lifetime; the handler is one-shot
+// (SA_RESETHAND), so a second Ctrl-C kills the process at once.
+class StopOnSignal {
+ public:
+  StopOnSignal() {
+    g_stop_requested = false;
+    g_stop_signal = 0;
+    struct sigaction action {};
+    action.sa_handler = request_stop;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESETHAND;
+    sigaction(SIGINT, &action, &old_int_);
+    sigaction(SIGTERM, &action, &old_term_);
+  }
+  ~StopOnSignal() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+  StopOnSignal(const StopOnSignal&) = delete;
+  StopOnSignal& operator=(const StopOnSignal&) = delete;
+
+ private:
+  struct sigaction old_int_ {};
+  struct sigaction old_term_ {};
+};
+
+struct SweepOptions {
+  std::string sweep_file;
+  int threads = 0;
+  std::string db;
+  bool resume = false;
+  std::string out;
+};
+
+void sweep(const SweepOptions& opt) {
+  if (opt.threads < 0) {
+    throw InputError("--threads must be >= 1 (or 0 for all cores), got " + std::to_string(opt.threads));
+  }
+  const SweepDefinition def = load_sweep(opt.sweep_file);   // everything validated first
+  const std::string out = opt.out.empty()
+      ? "renders/" + std::filesystem::path(opt.sweep_file).stem().string() : opt.out;
+  const std::string db_path = opt.db.empty() ? out + "/sweep.db" : opt.db;
+  const int threads = opt.threads > 0 ? opt.threads : default_thread_count();
+
+  std::error_code ec;
+  const bool exists = std::filesystem::exists(db_path, ec);
+  if (!exists) {
+    const auto parent = std::filesystem::path(db_path).parent_path();
+    if (!parent.empty()) make_directories(parent.string());
+  }
+  ResultsDb db = opt.resume && exists ? ResultsDb::open_to_resume(db_path, def)
+                                      : ResultsDb::create(db_path, def);
+  const std::string made_by = db.meta("pamsim_version");
+  if (made_by != PAMSIM_VERSION) {
+    std::cerr << "pamsim sweep: warning: " << db_path << " was started by pamsim " << made_by
+              << ", this is " << PAMSIM_VERSION << "; its trials may not be comparable\n";
+  }
+  std::cerr << "pamsim sweep: " << def.points() << " points x " << def.seeds << " seeds = "
+            << def.trials() << " trials (" << sweep_design_name(def.design) << ") on " << threads
+            << (threads == 1 ? " thread" : " threads") << " into " << db_path << "\n";
+
+  StopOnSignal stop_on_signal;
+  ProgressReporter progress("pamsim sweep", def.trials(), db.trial_count(), std::cerr,
+                            ::isatty(STDERR_FILENO) != 0);
+  SweepRunOptions run_options;
+  run_options.threads = threads;
+  run_options.stop = &g_stop_requested;
+  run_options.on_progress = [&](std::int64_t stored) { progress.update(stored); };
+  const SweepRunResult r = run_sweep(def, db, run_options);
+  const std::int64_t stored = r.already_done + r.ran;
+  progress.finish(stored);
+
+  char rate[32];
+  std::snprintf(rate, sizeof(rate), "%.1f", r.wall_time_s > 0 ? r.ran / r.wall_time_s : 0.0);
+  std::cerr << "pamsim sweep: " << r.ran << " trials run in " << format_duration(r.wall_time_s)
+            << " (" << rate << " trials/s)";
+  if (r.already_done > 0) std::cerr << ", " << r.already_done << " stored before";
+  if (r.diverged > 0) std::cerr << "; " << r.diverged << " diverged or failed (see their status)";
+  std::cerr << "\n";
+  if (r.interrupted) {
+    std::cerr << "pamsim sweep: interrupted with " << stored << " of " << def.trials()
+              << " trials stored; finish with: pamsim sweep " << opt.sweep_file << " --db "
+              << db_path << " --resume\n";
+    throw CommandExit(128 + g_stop_signal.load());   // the shell's code for that signal
+  }
+  std::cout << db_path << "\n";
+  std::cerr << "pamsim sweep: next: pamsim export " << db_path << " --csv FILE; pamsim report "
+            << db_path << "\n";
+}
+
+}  // namespace
+
+void add_sweep_command(CLI::App& app) {
+  auto opt = std::make_shared<SweepOptions>();
+  CLI::App* cmd = app.add_subcommand("sweep", "Run a parameter sweep into an SQLite database");
+  cmd->add_option("sweep", opt->sweep_file, "Sweep file (TOML)")->required();
+  cmd->add_option("--threads", opt->threads, "Worker threads (default: all cores)");
+  cmd->add_option("--db", opt->db, "Results database (default DIR/sweep.db)");
+  cmd->add_flag("--resume", opt->resume, "Finish the sweep stored in the database");
+  cmd->add_option("--out", opt->out, "Output folder (default renders/<sweep name>)");
+  cmd->callback([opt] { sweep(*opt); });
+}
+
+}  // namespace pamsim

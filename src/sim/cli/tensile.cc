@@ -1,0 +1,83 @@
+// cmd_tensile.cc: `pamsim tensile --params FILE ... -o FILE.csv`, the virtual static
+// tensile test of seeds/000 Sec. II-B on a PAM parameter file, written as CSV.
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "pam_actuator/atomic_file.h"
+#include "pam_actuator/input_error.h"
+#include "pam_actuator/pam_params.h"
+#include "pam_actuator/tensile_csv.h"
+#include "pam_actuator/tensile_test.h"
+#include "sim/cli/commands.h"
+
+namespace pamsim {
+namespace {
+
+struct TensileCommand {
+  std::string params_path;
+  std::string output_path;
+  TensileTestOptions test;
+};
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%g", x);
+  return buf;
+}
+
+void require(bool ok, const std::string& option, const std::string& allowed, double value) {
+  if (!ok) throw InputError(option + " must be " + allowed + ", got " + number(value));
+}
+
+// every option checked with the name the user typed
+void validate(const TensileTestOptions& t) {
+  require(std::isfinite(t.noise_pressure_mpa) && t.noise_pressure_mpa >= 0.0,
+          "--noise-pressure-MPa", "a standard deviation >= 0", t.noise_pressure_mpa);
+  require(std::isfinite(t.noise_force_n) && t.noise_force_n >= 0.0, "--noise-force-N",
+          "a standard deviation >= 0", t.noise_force_n);
+  require(std::isfinite(t.noise_length_mm) && t.noise_length_mm >= 0.0, "--noise-length-mm",
+          "a standard deviation >= 0", t.noise_length_mm);
+  require(std::isfinite(t.hysteresis) && t.hysteresis >= 0.0 && t.hysteresis < 0.5,
+          "--hysteresis", "in [0, 0.5)", t.hysteresis);
+  require(std::isfinite(t.max_deformation_mm) && t.max_deformation_mm >= t.step_mm,
+          "--max-deformation-mm", ">= the 2.5 mm step", t.max_deformation_mm);
+  if (t.pressures_mpa.empty()) throw InputError("--pressures-MPa: the list is empty");
+  for (double p : t.pressures_mpa) {
+    require(std::isfinite(p) && p > 0.0, "--pressures-MPa", "a list of pressures > 0 MPa", p);
+  }
+}
+
+void run_tensile(const TensileCommand& c) {
+  validate(c.test);
+  const PamParams params = load_pam_params(c.params_path);
+  const std::vector<TensileRow> rows = run_tensile_test(params.spring, c.test);
+  write_file_atomically(c.output_path, tensile_rows_to_csv(rows));
+  std::printf("wrote %zu rows to %s\n", rows.size(), c.output_path.c_str());
+}
+
+}  // namespace
+
+void add_tensile_command(CLI::App& app) {
+  auto c = std::make_shared<TensileCommand>();
+  TensileTestOptions& t = c->test;
+  CLI::App* cmd = app.add_subcommand(
+      "tensile", "virtual static tensile test (seeds/000 Sec. II-B), written as CSV");
+  cmd->add_option("--params", c->params_path, "PAM parameter file (TOML)")->required();
+  cmd->add_option("-o,--output", c->output_path, "output CSV file")->required();
+  cmd->add_option("--seed", t.seed, "noise seed (same seed, same data)");
+  cmd->add_option("--noise-pressure-MPa", t.noise_pressure_mpa, "pressure sensor noise SD");
+  cmd->add_option("--noise-force-N", t.noise_force_n, "force sensor noise SD");
+  cmd->add_option("--noise-length-mm", t.noise_length_mm, "length encoder noise SD");
+  cmd->add_option("--hysteresis", t.hysteresis,
+                  "loading force x(1+h), unloading x(1-h), h in [0, 0.5)");
+  cmd->add_option("--pressures-MPa", t.pressures_mpa, "comma-separated test pressures")
+      ->delimiter(',');
+  cmd->add_option("--max-deformation-mm", t.max_deformation_mm, "largest deformation");
+  cmd->callback([c] { run_tensile(*c); });
+}
+
+}  // namespace pamsim

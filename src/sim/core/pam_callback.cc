@@ -1,0 +1,74 @@
+// pam_callback.cc: see pam_callback.h.
+#include "sim/core/pam_callback.h"
+
+#include <string>
+
+#include "pam_actuator/input_error.h"
+
+namespace pamsim {
+namespace {
+
+const mjtNum* user_slots(const mjModel* m, int id) {
+  return m->actuator_user + static_cast<long>(id) * m->nuser_actuator;
+}
+
+}  // namespace
+
+void store_pam_in_model(mjModel* m, int id, const SpringModel& spring, double line_length_m,
+                        int userdata_index, const char* path) {
+  const std::string name = mj_id2name(m, mjOBJ_ACTUATOR, id) ? mj_id2name(m, mjOBJ_ACTUATOR, id) : "?";
+  if (m->nuser_actuator < kPamUserSize) {
+    throw InputError(std::string(path) + ": <size nuser_actuator> must be >= " +
+                     std::to_string(kPamUserSize) + " for PAM actuators, got " +
+                     std::to_string(m->nuser_actuator));
+  }
+  if (m->actuator_biastype[id] != mjBIAS_USER || m->actuator_trntype[id] != mjTRN_TENDON) {
+    throw InputError(std::string(path) + ": actuator '" + name +
+                     "' must be a general actuator on a tendon with biastype=\"user\"");
+  }
+  if (userdata_index < 0 || userdata_index >= m->nuserdata) {
+    throw InputError(std::string(path) + ": <size nuserdata> must be > " +
+                     std::to_string(userdata_index) + " to hold the PAM pressures");
+  }
+  mjtNum* u = m->actuator_user + static_cast<long>(id) * m->nuser_actuator;
+  u[0] = static_cast<int>(spring.law);
+  u[1] = spring.m_m_per_pa;
+  u[2] = spring.h_m;
+  for (int k = 0; k < 6; ++k) u[3 + k] = spring.coef[k];
+  u[9] = line_length_m;
+  u[10] = userdata_index;
+}
+
+SpringModel pam_spring_from_model(const mjModel* m, int id) {
+  const mjtNum* u = user_slots(m, id);
+  SpringModel spring;
+  spring.law = static_cast<SpringLaw>(static_cast<int>(u[0]));
+  spring.m_m_per_pa = u[1];
+  spring.h_m = u[2];
+  for (int k = 0; k < 6; ++k) spring.coef[k] = u[3 + k];
+  return spring;
+}
+
+double pam_line_length(const mjModel* m, int id) { return user_slots(m, id)[9]; }
+
+int pam_userdata_index(const mjModel* m, int id) {
+  return static_cast<int>(user_slots(m, id)[10]);
+}
+
+double pam_length(const mjModel* m, const mjData* d, int id) {
+  return d->actuator_length[id] - pam_line_length(m, id);
+}
+
+mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int id) {
+  // parameters from the model, pressure from the trial's userdata
+  const SpringModel spring = pam_spring_from_model(m, id);
+  const double p = d->userdata[pam_userdata_index(m, id)];
+
+  // Eq. (1)-(2): deformation from natural length; Eq. (3)-(5) pull, zero when slack
+  const double deformation = pam_length(m, d, id) - natural_length(spring, p);
+  return -spring_force(spring, p, deformation);
+}
+
+void install_pam_actuator_callback() { mjcb_act_bias = pam_actuator_force; }
+
+}  // namespace pamsim

@@ -1,0 +1,180 @@
+// config_reader.cc: see config_reader.h.
+#include "sim/io/config_reader.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "pam_actuator/input_error.h"
+#include "pam_actuator/toml_file.h"
+
+namespace pamsim {
+namespace {
+
+std::vector<std::string> split_key(const std::string& key) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(key);
+  while (std::getline(in, part, '.')) parts.push_back(part);
+  return parts;
+}
+
+}  // namespace
+
+std::string format_value(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.10g", v);
+  return buf;
+}
+
+ConfigReader::ConfigReader(const std::string& path) : name_(path) {
+  doc_ = parse_toml_file(path);
+}
+
+ConfigReader::ConfigReader(const std::string& text, const std::string& name) : name_(name) {
+  doc_ = parse_toml_text(text, name);
+}
+
+void ConfigReader::apply_override(const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw InputError("--set " + assignment + ": expected key=value");
+  }
+  const std::string key = assignment.substr(0, eq);
+  const std::string value = assignment.substr(eq + 1);
+  const auto parts = split_key(key);
+  for (const auto& p : parts) {
+    if (p.empty()) throw InputError("--set " + assignment + ": malformed key '" + key + "'");
+  }
+
+  // parse the value as TOML; a bare word is taken as a string
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + value);
+  } catch (const toml::parse_error&) {
+    parsed.insert_or_assign("v", value);
+  }
+
+  // walk (and create) the tables down to the key
+  toml::table* t = &doc_;
+  for (size_t i = 0; i + 1 < parts.size(); ++i) {
+    toml::node* n = t->get(parts[i]);
+    if (!n) {
+      t->insert_or_assign(parts[i], toml::table{});
+      n = t->get(parts[i]);
+    }
+    if (!n->is_table()) {
+      throw InputError("--set " + assignment + ": '" + parts[i] + "' is not a table");
+    }
+    t = n->as_table();
+  }
+  t->insert_or_assign(parts.back(), *parsed.get("v"));
+  overridden_.insert(key);
+}
+
+const toml::node* ConfigReader::find(const std::string& key) const {
+  const toml::node* n = &doc_;
+  for (const auto& part : split_key(key)) {
+    const toml::table* t = n->as_table();
+    if (!t) return nullptr;
+    n = t->get(part);
+    if (!n) return nullptr;
+  }
+  return n;
+}
+
+bool ConfigReader::has(const std::string& key) const { return find(key) != nullptr; }
+
+void ConfigReader::fail(const std::string& key, const std::string& problem) const {
+  const std::string where = overridden_.count(key) ? name_ + ": --set " + key : name_ + ": " + key;
+  throw InputError(where + " " + problem);
+}
+
+double ConfigReader::get_double(const std::string& key, double fallback) {
+  read_.insert(key);
+  const toml::node* n = find(key);
+  if (!n) return fallback;
+  std::optional<double> v = n->value<double>();
+  if (!v || n->is_boolean()) fail(key, "must be a number");
+  check(std::isfinite(*v), key, "must be finite, got " + format_value(*v));
+  return *v;
+}
+
+double ConfigReader::require_double(const std::string& key) {
+  if (!has(key)) fail(key, "is required");
+  return get_double(key, 0.0);
+}
+
+std::int64_t ConfigReader::get_int(const std::string& key, std::int64_t fallback) {
+  read_.insert(key);
+  const toml::node* n = find(key);
+  if (!n) return fallback;
+  if (!n->is_integer()) fail(key, "must be an integer");
+  return *n->value<std::int64_t>();
+}
+
+bool ConfigReader::get_bool(const std::string& key, bool fallback) {
+  read_.insert(key);
+  const toml::node* n = find(key);
+  if (!n) return fallback;
+  if (!n->is_boolean()) fail(key, "must be true or false");
+  return *n->value<bool>();
+}
+
+std::string ConfigReader::get_string(const std::string& key, const std::string& fallback) {
+  read_.insert(key);
+  const toml::node* n = find(key);
+  if (!n) return fallback;
+  if (!n->is_string()) fail(key, "must be a string");
+  return *n->value<std::string>();
+}
+
+std::string ConfigReader::require_string(const std::string& key) {
+  if (!has(key)) fail(key, "is required");
+  return get_string(key, "");
+}
+
+std::string ConfigReader::directory() const {
+  const auto slash = name_.find_last_of('/');
+  return slash == std::string::npos ? "." : name_.substr(0, slash);
+}
+
+std::string ConfigReader::get_path(const std::string& key, const std::string& fallback) {
+  const std::string value = get_string(key, fallback);
+  if (value.empty() || value[0] == '/') return value;
+  return directory() + "/" + value;
+}
+
+const toml::node* ConfigReader::raw(const std::string& key) {
+  const toml::node* n = find(key);
+  if (n && n->is_table()) {
+    std::vector<std::string> leaves;
+    collect_leaves(*n->as_table(), key + ".", &leaves);
+    read_.insert(leaves.begin(), leaves.end());
+  }
+  read_.insert(key);
+  return n;
+}
+
+void ConfigReader::collect_leaves(const toml::table& t, const std::string& prefix,
+                                  std::vector<std::string>* out) const {
+  for (const auto& [k, v] : t) {
+    const std::string key = prefix + std::string(k.str());
+    if (v.is_table()) {
+      collect_leaves(*v.as_table(), key + ".", out);
+    } else {
+      out->push_back(key);
+    }
+  }
+}
+
+void ConfigReader::reject_unknown() const {
+  std::vector<std::string> leaves;
+  collect_leaves(doc_, "", &leaves);
+  for (const auto& key : leaves) {
+    if (!read_.count(key)) fail(key, "is not a known key");
+  }
+}
+
+}  // namespace pamsim

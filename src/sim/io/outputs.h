@@ -1,0 +1,35 @@
+// outputs.h: a trial's files: trajectory.csv (header row, one row per control tick, units
+// in the column names) and summary.json (metrics, NaN written as null), and the aggregate
+// summary of repeated trials (mean, min, max of every metric). Written atomically.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/io/scenario.h"
+#include "sim/core/trial.h"
+
+namespace pamsim {
+
+// The numeric metrics of a summary by their public names (summary.json, the sweep database),
+// NaN where the event did not happen. Timing metrics (wall_time_s, realtime_factor) vary from
+// run to run; is_timing_metric() names them.
+std::vector<std::pair<std::string, double>> trial_metrics(const TrialSummary& summary);
+bool is_timing_metric(const std::string& name);
+
+std::string trajectory_to_csv(const Trajectory& trajectory);
+nlohmann::json summary_to_json(const TrialSummary& summary, const Scenario& scenario);
+// {"trials": N, "seeds": [...], "status_counts": {...}, "metrics": {name: {mean,min,max}}}
+nlohmann::json aggregate_summaries(const std::vector<TrialSummary>& summaries,
+                                   const Scenario& scenario);
+
+// Creates `dir` (and parents) or throws InputError naming it.
+void make_directories(const std::string& dir);
+
+// DIR/trajectory.csv and DIR/summary.json.
+void write_trial_outputs(const std::string& dir, const TrialResult& result,
+                         const Scenario& scenario);
+
+}  // namespace pamsim

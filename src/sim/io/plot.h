@@ -1,0 +1,79 @@
+// plot.h: the figures of a run, drawn by gnuplot (pngcairo terminal) driven from the
+// program: data and script go to a temp folder, gnuplot writes a temp PNG, which is
+// renamed into place, so a failed plot leaves no partial file.
+//   angle.png       angle vs time with the impact, the reflex windows and both pressures
+//                   (commanded and chamber), like the paper's Fig. 8;
+//   angle_band.png  mean and range of the angle over repeated trials, like Fig. 9;
+//   compare.png     two runs' bands on one plot (model vs fiber sensor, Fig. 9);
+//   heatmap_*.png   a sweep metric over two axes (pamsim report).
+// The temp folder is <temp_directory_path>/pamsim_plot_<pid>_<n> and the temp PNG is
+// <png>.tmp.<pid>.<n>.png, n a process-wide counter: plots may be drawn from many threads.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "sim/io/scenario.h"
+#include "sim/core/trial.h"
+
+namespace pamsim {
+
+// Image sizes [px].
+inline constexpr int kAnglePlotWidthPx = 1200;   // angle.png
+inline constexpr int kAnglePlotHeightPx = 900;
+inline constexpr int kBandPlotWidthPx = 1200;    // angle_band.png and compare.png
+inline constexpr int kBandPlotHeightPx = 800;
+inline constexpr int kHeatMapWidthPx = 1100;     // heatmap_*.png
+inline constexpr int kHeatMapHeightPx = 900;
+
+// The angle over repeated trials, per time row: mean, min and max of angle_deg [deg] over
+// the trials where it is finite (NaN where none is). time_s is the first trial's; trials of
+// different lengths are cut to the shortest.
+struct BandSeries {
+  std::string label;        // legend text
+  std::size_t trials = 0;   // how many trajectories went in
+  std::vector<double> time_s, mean, min, max;
+};
+
+// Throws std::invalid_argument if `trials` is empty or holds a null pointer, and
+// std::out_of_range if a trajectory lacks time_s or angle_deg.
+BandSeries angle_band(const std::vector<const Trajectory*>& trials, std::string label);
+
+// A value over two sweep axes. On a grid, one cell per pair of levels (index space, the
+// levels as tick labels, so a log axis is evenly spaced); for scattered designs, one
+// coloured point per sample at its coordinates.
+struct HeatMap {
+  std::string title;
+  std::string x_label, y_label, value_label;
+  bool scattered = false;
+  // grid: cells[iy * x_levels.size() + ix], NaN where there is no value (drawn grey)
+  std::vector<std::string> x_levels, y_levels;
+  std::vector<double> cells;
+  // scattered: one value per (x, y)
+  std::vector<double> x, y, values;
+  bool x_log = false, y_log = false;
+  // colour range; NaN: the data's range
+  double value_min = std::numeric_limits<double>::quiet_NaN();
+  double value_max = std::numeric_limits<double>::quiet_NaN();
+  // the value printed in each grid cell (C format, e.g. "%.2g"); empty: none
+  std::string cell_format;
+  // a marked cell (grid: indices) or point (scattered: coordinates), e.g. the best setting
+  bool has_mark = false;
+  double mark_x = 0, mark_y = 0;
+  std::string mark_label;
+};
+
+// Throws std::runtime_error if gnuplot is missing or fails (message names the file).
+void write_angle_plot(const std::string& png_path, const TrialResult& trial,
+                      const Scenario& scenario);
+void write_angle_band_plot(const std::string& png_path,
+                           const std::vector<const Trajectory*>& trials,
+                           const Scenario& scenario);
+// Two (or more) runs' bands on one axis, one colour each, with a legend.
+void write_compare_plot(const std::string& png_path, const std::vector<BandSeries>& runs);
+// Throws std::invalid_argument if the cells or points do not match the levels or each other.
+void write_heatmap(const std::string& png_path, const HeatMap& map);
+
+}  // namespace pamsim

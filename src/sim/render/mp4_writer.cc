@@ -1,0 +1,238 @@
+// mp4_writer.cc: see mp4_writer.h.
+#include "sim/render/mp4_writer.h"
+
+#include <cerrno>
+#include <condition_variable>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "pam_actuator/input_error.h"
+#include "sim/render/av_handles.h"
+#include "sim/io/temp_path.h"
+
+extern "C" {
+#include <libavutil/dict.h>
+}
+
+namespace pamsim {
+namespace {
+
+// libx264 when this FFmpeg has it, else any other H.264 encoder
+const AVCodec* find_h264_encoder() {
+  const AVCodec* codec = avcodec_find_encoder_by_name("libx264");
+  return codec ? codec : avcodec_find_encoder(AV_CODEC_ID_H264);
+}
+
+}  // namespace
+
+// The FFmpeg objects, and the thread that converts, encodes and writes each frame while the
+// caller draws the next one. Members are destroyed bottom-up, after the thread has stopped:
+// the muxer closes the file before the guard removes it (also when the constructor throws
+// half way).
+struct Mp4Writer::Impl {
+  explicit Impl(const std::string& output) : path(output), temp_file(output) {}
+  ~Impl() { stop_encoding_thread(); }
+
+  void encoding_loop();
+  void encode(const unsigned char* rgb_bottom_up);
+  void drain_packets();
+  void stop_encoding_thread();
+
+  std::string path;
+  TempPath temp_file;
+  AvOutputContextPtr muxer;
+  AVStream* stream = nullptr;   // owned by the muxer
+  AvCodecContextPtr encoder;
+  SwsContextPtr rgb_to_yuv;
+  AvFramePtr frame;             // the YUV frame handed to the encoder, reused
+  AvPacketPtr packet;           // reused
+  long frames_encoded = 0;
+
+  // hand-over of one frame at a time from the caller to the encoding thread
+  std::thread encoding_thread;
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::vector<unsigned char> handed_over;   // RGB, bottom-up
+  bool frame_waiting = false;
+  bool closing = false;
+  std::exception_ptr failure;   // from the encoding thread, rethrown to the caller
+};
+
+void Mp4Writer::Impl::encoding_loop() {
+  std::vector<unsigned char> rgb(handed_over.size());
+  for (;;) {
+    // take the next frame (swap buffers) or stop once closing with none left
+    {
+      std::unique_lock<std::mutex> lock(mutex);
+      changed.wait(lock, [&] { return frame_waiting || closing; });
+      if (!frame_waiting) return;
+      rgb.swap(handed_over);
+      frame_waiting = false;
+    }
+    changed.notify_all();
+    try {
+      encode(rgb.data());
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      failure = std::current_exception();
+      changed.notify_all();
+      return;
+    }
+  }
+}
+
+void Mp4Writer::Impl::encode(const unsigned char* rgb_bottom_up) {
+  // the encoder may still hold the previous frame's buffer
+  AVFrame* f = frame.get();
+  check_av(av_frame_make_writable(f), path, "frame buffer");
+
+  // start at the last row and step backwards: the flip costs nothing extra
+  const int row_bytes = 3 * f->width;
+  const uint8_t* src[1] = {rgb_bottom_up + static_cast<std::ptrdiff_t>(f->height - 1) * row_bytes};
+  const int src_stride[1] = {-row_bytes};
+  sws_scale(rgb_to_yuv.get(), src, src_stride, 0, f->height, f->data, f->linesize);
+
+  f->pts = frames_encoded++;
+  check_av(avcodec_send_frame(encoder.get(), f), path, "encoding failed");
+  drain_packets();
+}
+
+void Mp4Writer::Impl::drain_packets() {
+  AVPacket* p = packet.get();
+  for (;;) {
+    const int status = avcodec_receive_packet(encoder.get(), p);
+    if (status == AVERROR(EAGAIN) || status == AVERROR_EOF) return;
+    check_av(status, path, "encoding failed");
+    p->duration = 1;   // one frame: the MP4's length counts the last frame's too
+    av_packet_rescale_ts(p, encoder->time_base, stream->time_base);
+    p->stream_index = stream->index;
+    check_av(av_interleaved_write_frame(muxer.get(), p), path, "write failed");
+  }
+}
+
+// Lets the thread encode what it was handed, then joins it.
+void Mp4Writer::Impl::stop_encoding_thread() {
+  if (!encoding_thread.joinable()) return;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    closing = true;
+  }
+  changed.notify_all();
+  encoding_thread.join();
+}
+
+Mp4Writer::Mp4Writer(const std::string& path, const Mp4Settings& settings)
+    : path_(path), impl_(std::make_unique<Impl>(path)) {
+  const std::string& temp_path = impl_->temp_file.path();
+  quiet_ffmpeg_log();
+  const int w = settings.width_px;
+  const int h = settings.height_px;
+  if (w <= 0 || h <= 0 || w % 2 != 0 || h % 2 != 0) {
+    throw InputError(path + ": H.264 (4:2:0) needs an even width and height, got " +
+                     std::to_string(w) + "x" + std::to_string(h));
+  }
+  if (settings.fps <= 0) throw InputError(path + ": fps must be > 0");
+  const AVCodec* codec = find_h264_encoder();
+  if (!codec) {
+    throw InputError(path + ": this FFmpeg has no H.264 encoder (install libavcodec with "
+                     "libx264, or write a PNG sequence instead)");
+  }
+  encoder_name_ = codec->name;
+
+  // the encoder: yuv420p at fps, a keyframe every second, the encoder's own threads
+  Impl& x = *impl_;
+  x.encoder.reset(avcodec_alloc_context3(codec));
+  if (!x.encoder) throw std::bad_alloc();
+  AVCodecContext* enc = x.encoder.get();
+  enc->width = w;
+  enc->height = h;
+  enc->pix_fmt = AV_PIX_FMT_YUV420P;
+  enc->time_base = AVRational{1, settings.fps};
+  enc->framerate = AVRational{settings.fps, 1};
+  enc->gop_size = settings.fps;
+  enc->thread_count = 0;
+  // the colour swscale produces: BT.601, limited range
+  enc->colorspace = AVCOL_SPC_SMPTE170M;
+  enc->color_primaries = AVCOL_PRI_SMPTE170M;
+  enc->color_trc = AVCOL_TRC_SMPTE170M;
+  enc->color_range = AVCOL_RANGE_MPEG;
+
+  // the muxer, writing the temp file (an unwritable folder fails here, before any work)
+  AVFormatContext* muxer = nullptr;
+  int status = avformat_alloc_output_context2(&muxer, nullptr, "mp4", temp_path.c_str());
+  if (status < 0 || !muxer) throw std::runtime_error("no MP4 muxer: " + av_error_text(status));
+  x.muxer.reset(muxer);
+  if (muxer->oformat->flags & AVFMT_GLOBALHEADER) enc->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  status = avio_open(&muxer->pb, temp_path.c_str(), AVIO_FLAG_WRITE);
+  if (status < 0) throw InputError(path + ": cannot write (" + av_error_text(status) + ")");
+
+  AVDictionary* encoder_options = nullptr;
+  av_dict_set(&encoder_options, "preset", settings.x264_preset.c_str(), 0);
+  av_dict_set(&encoder_options, "crf", std::to_string(settings.x264_crf).c_str(), 0);
+  status = avcodec_open2(enc, codec, &encoder_options);
+  av_dict_free(&encoder_options);
+  check_av(status, path_, "cannot open the H.264 encoder");
+
+  x.stream = avformat_new_stream(muxer, nullptr);
+  if (!x.stream) throw std::bad_alloc();
+  x.stream->time_base = enc->time_base;
+  check_av(avcodec_parameters_from_context(x.stream->codecpar, enc), path_, "codec parameters");
+  AVDictionary* muxer_options = nullptr;
+  av_dict_set(&muxer_options, "movflags", "+faststart", 0);   // playable while downloading
+  status = avformat_write_header(muxer, &muxer_options);
+  av_dict_free(&muxer_options);
+  check_av(status, path_, "cannot write the MP4 header");
+
+  // RGB (bottom-up) -> YUV 4:2:0 at the same size, into a reused frame
+  x.rgb_to_yuv.reset(sws_getContext(w, h, AV_PIX_FMT_RGB24, w, h, AV_PIX_FMT_YUV420P,
+                                    SWS_BILINEAR, nullptr, nullptr, nullptr));
+  x.frame = alloc_frame(w, h, AV_PIX_FMT_YUV420P);
+  x.packet.reset(av_packet_alloc());
+  if (!x.rgb_to_yuv || !x.packet) throw std::bad_alloc();
+
+  // from here on only the encoding thread touches the FFmpeg objects, until finish()
+  x.handed_over.resize(3 * static_cast<std::size_t>(w) * h);
+  x.encoding_thread = std::thread([&x] { x.encoding_loop(); });
+}
+
+Mp4Writer::~Mp4Writer() = default;
+
+void Mp4Writer::write_frame(const unsigned char* rgb_bottom_up) {
+  Impl& x = *impl_;
+  // wait until the encoding thread has taken the previous frame, then hand this one over
+  {
+    std::unique_lock<std::mutex> lock(x.mutex);
+    x.changed.wait(lock, [&] { return !x.frame_waiting || x.failure; });
+    if (x.failure) std::rethrow_exception(x.failure);
+    std::memcpy(x.handed_over.data(), rgb_bottom_up, x.handed_over.size());
+    x.frame_waiting = true;
+  }
+  x.changed.notify_all();
+  ++frames_written_;
+}
+
+void Mp4Writer::finish() {
+  Impl& x = *impl_;
+  x.stop_encoding_thread();
+  if (x.failure) std::rethrow_exception(x.failure);
+
+  // flush the encoder's delayed frames, then the index (moved to the front: faststart)
+  check_av(avcodec_send_frame(x.encoder.get(), nullptr), path_, "encoding failed");
+  x.drain_packets();
+  check_av(av_write_trailer(x.muxer.get()), path_, "cannot complete the MP4");
+  check_av(avio_closep(&x.muxer->pb), path_, "write failed");
+
+  if (std::rename(x.temp_file.path().c_str(), path_.c_str()) != 0) {
+    throw InputError(path_ + ": cannot rename temp file into place (" + std::strerror(errno) +
+                     ")");
+  }
+  x.temp_file.release();
+  impl_.reset();
+}
+
+}  // namespace pamsim

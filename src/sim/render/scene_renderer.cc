@@ -1,0 +1,130 @@
+// scene_renderer.cc: see scene_renderer.h.
+#include "sim/render/scene_renderer.h"
+
+#include <string>
+
+#include "pam_actuator/input_error.h"
+
+namespace pamsim {
+namespace {
+
+constexpr int kMaxSceneGeoms = 1000;
+constexpr int kLargeFontMinHeightPx = 600;   // 150 % font from here up, else 100 %
+
+// "side, top" or "none", for the unknown-camera message
+std::string camera_names(const mjModel* m) {
+  std::string names;
+  for (int i = 0; i < m->ncam; ++i) {
+    const char* name = mj_id2name(m, mjOBJ_CAMERA, i);
+    if (!names.empty()) names += ", ";
+    names += name ? name : "(unnamed camera " + std::to_string(i) + ")";
+  }
+  return names.empty() ? "none" : names;
+}
+
+}  // namespace
+
+void check_camera(const mjModel* model, const std::string& model_path, const std::string& camera) {
+  if (mj_name2id(model, mjOBJ_CAMERA, camera.c_str()) < 0) {
+    throw InputError(model_path + ": no camera named '" + camera + "' (the model's cameras: " +
+                     camera_names(model) + ")");
+  }
+}
+
+void SceneRenderer::SceneDeleter::operator()(mjvScene* scene) const {
+  mjv_freeScene(scene);
+  delete scene;
+}
+
+void SceneRenderer::ContextDeleter::operator()(mjrContext* context) const {
+  mjr_freeContext(context);
+  delete context;
+}
+
+SceneRenderer::SceneRenderer(const mjModel* model, const std::string& model_path,
+                             const SceneRenderOptions& options) {
+  // check what is asked before touching GL
+  const std::string size =
+      std::to_string(options.width_px) + "x" + std::to_string(options.height_px);
+  for (int side : {options.width_px, options.height_px}) {
+    if (side < kMinFrameSidePx || side > kMaxFrameSidePx) {
+      throw InputError(model_path + ": frame size " + size + " outside [" +
+                       std::to_string(kMinFrameSidePx) + ", " + std::to_string(kMaxFrameSidePx) +
+                       "] pixels per side");
+    }
+  }
+  check_camera(model, model_path, options.camera);
+  const int camera_id = mj_name2id(model, mjOBJ_CAMERA, options.camera.c_str());
+
+  // the copy that is drawn: offscreen buffer of the frame's size, quality as asked
+  model_.reset(mj_copyModel(nullptr, model));
+  if (!model_) throw std::runtime_error("mj_copyModel failed");
+  model_->vis.global.offwidth = options.width_px;
+  model_->vis.global.offheight = options.height_px;
+  if (options.quality == RenderQuality::kFast) model_->vis.quality.offsamples = 0;
+  data_ = make_data(model_.get());
+
+  mjv_defaultOption(&option_);
+  mjv_defaultCamera(&camera_);
+  camera_.type = mjCAMERA_FIXED;
+  camera_.fixedcamid = camera_id;
+  viewport_ = {0, 0, options.width_px, options.height_px};
+
+  // GL context, then MuJoCo's scene and render context drawing offscreen
+  gl_ = create_gl_context(options.backend, options.width_px, options.height_px);
+  scene_.reset(new mjvScene);
+  mjv_defaultScene(scene_.get());
+  mjv_makeScene(model_.get(), scene_.get(), kMaxSceneGeoms);
+  if (options.quality == RenderQuality::kFast) {
+    scene_->flags[mjRND_SHADOW] = 0;
+    scene_->flags[mjRND_REFLECTION] = 0;
+    scene_->flags[mjRND_SKYBOX] = 0;
+  }
+  context_.reset(new mjrContext);
+  mjr_defaultContext(context_.get());
+  const int font_scale =
+      options.height_px >= kLargeFontMinHeightPx ? mjFONTSCALE_150 : mjFONTSCALE_100;
+  mjr_makeContext(model_.get(), context_.get(), font_scale);
+  mjr_setBuffer(mjFB_OFFSCREEN, context_.get());
+  if (context_->currentBuffer != mjFB_OFFSCREEN || context_->offWidth != options.width_px ||
+      context_->offHeight != options.height_px) {
+    throw InputError(model_path + ": the GL implementation cannot render " + size +
+                     " offscreen (got " + std::to_string(context_->offWidth) + "x" +
+                     std::to_string(context_->offHeight) + ")");
+  }
+  rgb_.resize(3 * static_cast<std::size_t>(options.width_px) * options.height_px);
+}
+
+SceneRenderer::~SceneRenderer() {
+  // MuJoCo's GL objects belong to this context: make it current before they are freed (if
+  // that fails they go with the context itself)
+  try {
+    gl_->make_current();
+  } catch (const std::exception&) {
+  }
+}
+
+void SceneRenderer::draw_scene(const mjData* data) {
+  gl_->make_current();
+  // positions from the copied qpos: after mj_step2 the caller's own are a step old
+  mj_copyData(data_.get(), model_.get(), data);
+  mj_fwdPosition(model_.get(), data_.get());
+  mjv_updateScene(model_.get(), data_.get(), &option_, nullptr, &camera_, mjCAT_ALL,
+                  scene_.get());
+  mjr_render(viewport_, scene_.get(), context_.get());
+}
+
+void SceneRenderer::draw_text(const char* titles, const char* values) {
+  mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport_, titles, values, context_.get());
+}
+
+void SceneRenderer::draw_figure(const mjrRect& viewport, mjvFigure* figure) {
+  mjr_figure(viewport, figure, context_.get());
+}
+
+const unsigned char* SceneRenderer::read_pixels() {
+  mjr_readPixels(rgb_.data(), nullptr, viewport_, context_.get());
+  return rgb_.data();
+}
+
+}  // namespace pamsim

@@ -1,0 +1,88 @@
+// scene_renderer.h: draws a MuJoCo model's state offscreen, from one of the model's cameras,
+// with MuJoCo's own renderer (mjv_updateScene, mjr_render), adds text and figures on top
+// (mjr_overlay, mjr_figure) and reads the frame back (mjr_readPixels). It renders a copy of
+// the model (its visual settings changed to suit the frame) and a copy of each state it is
+// given, so drawing never touches the simulation.
+#pragma once
+
+#include <mujoco/mujoco.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sim/render/gl_context.h"
+#include "sim/core/mujoco_util.h"
+
+namespace pamsim {
+
+// Frame sides are limited so a typo cannot ask for gigabytes; 8192 covers 8K video.
+inline constexpr int kMinFrameSidePx = 16;
+inline constexpr int kMaxFrameSidePx = 8192;
+
+enum class RenderQuality {
+  kFast,      // no shadows, reflections or skybox, no multisampling
+  kDefault,   // the model's own <visual> settings
+};
+
+struct SceneRenderOptions {
+  int width_px = 1280;
+  int height_px = 720;
+  RenderQuality quality = RenderQuality::kDefault;
+  std::string camera = "side";   // a camera named in the model
+  GlBackend backend = GlBackend::kOsmesa;
+};
+
+// Throws InputError naming `model_path` if `model` has no camera `camera` (the message lists
+// the model's cameras). For commands that check before they create any output.
+void check_camera(const mjModel* model, const std::string& model_path, const std::string& camera);
+
+class SceneRenderer {
+ public:
+  // Prepares the GL context and MuJoCo's scene and render context for `model` (copied; the
+  // original is only read). Throws InputError naming `model_path` for an unknown camera (the
+  // message lists the model's cameras), for a size outside [kMinFrameSidePx,
+  // kMaxFrameSidePx] or beyond what the GL implementation supports, and when the GL context
+  // cannot be created.
+  SceneRenderer(const mjModel* model, const std::string& model_path,
+                const SceneRenderOptions& options);
+  ~SceneRenderer();
+  SceneRenderer(const SceneRenderer&) = delete;
+  SceneRenderer& operator=(const SceneRenderer&) = delete;
+
+  int width_px() const { return viewport_.width; }
+  int height_px() const { return viewport_.height; }
+
+  // Draws the state `data` (of the model given at construction) over the whole frame.
+  void draw_scene(const mjData* data);
+
+  // Two columns of text in the top-left corner, lines separated by '\n'.
+  void draw_text(const char* titles, const char* values);
+
+  // A figure (e.g. a live plot) in `viewport`, pixels from the bottom-left corner.
+  void draw_figure(const mjrRect& viewport, mjvFigure* figure);
+
+  // The frame drawn so far: width * height RGB triplets, rows bottom-up (OpenGL's order).
+  // Valid until the next call; the buffer is reused from frame to frame.
+  const unsigned char* read_pixels();
+
+ private:
+  struct SceneDeleter {
+    void operator()(mjvScene* scene) const;
+  };
+  struct ContextDeleter {
+    void operator()(mjrContext* context) const;
+  };
+
+  MjModelPtr model_;   // the copy that is drawn
+  MjDataPtr data_;     // the state being drawn, copied from the caller's
+  mjvOption option_;
+  mjvCamera camera_;
+  mjrRect viewport_;
+  std::unique_ptr<GlContext> gl_;
+  std::unique_ptr<mjvScene, SceneDeleter> scene_;
+  std::unique_ptr<mjrContext, ContextDeleter> context_;   // freed while gl_ is current
+  std::vector<unsigned char> rgb_;
+};
+
+}  // namespace pamsim

@@ -1,0 +1,243 @@
+// trial_video.cc: see trial_video.h.
+#include "sim/render/trial_video.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <initializer_list>
+#include <limits>
+#include <string>
+
+#include "pam_actuator/input_error.h"
+#include "pam_actuator/units.h"
+#include "sim/io/outputs.h"
+
+namespace pamsim {
+namespace {
+
+constexpr double kPlotWidthShare = 0.32;    // of the frame, each plot
+constexpr double kPlotHeightShare = 0.26;
+constexpr double kAngleTickDeg = 10.0;      // the angle plot's range: multiples of this
+constexpr double kPressureTickMpa = 0.1;    // the pressure plot's range: [0, a multiple]
+
+// frames at k / fps strictly before the end of the trial: duration x fps when whole
+long frames_in(double duration_s, int fps) {
+  return static_cast<long>(std::ceil(duration_s * fps - kObservationToleranceS));
+}
+
+// libx264's preset: the fast path favours encoding speed, the default path file size
+const char* x264_preset_for(RenderQuality quality) {
+  return quality == RenderQuality::kFast ? "ultrafast" : "veryfast";
+}
+
+void check_frame_side(int side_px, const char* option) {
+  if (side_px < kMinFrameSidePx || side_px > kMaxFrameSidePx || side_px % 2 != 0) {
+    throw InputError(std::string(option) + " must be an even number of pixels in [" +
+                     std::to_string(kMinFrameSidePx) + ", " + std::to_string(kMaxFrameSidePx) +
+                     "], got " + std::to_string(side_px));
+  }
+}
+
+bool ends_with_mp4(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return ext == ".mp4";
+}
+
+// Appends (x, y) to a figure line; when the line is full the oldest point goes.
+void append_point(mjvFigure* figure, int line, double x, double y) {
+  int& n = figure->linepnt[line];
+  float* points = figure->linedata[line];
+  if (n == mjMAXLINEPNT) {
+    std::memmove(points, points + 2, sizeof(float) * 2 * (mjMAXLINEPNT - 1));
+    --n;
+  }
+  points[2 * n] = static_cast<float>(x);
+  points[2 * n + 1] = static_cast<float>(y);
+  ++n;
+}
+
+// A translucent figure over [0, duration] s with lines of the given colours; the title says
+// which line is which (a legend does not fit a plot this small).
+void init_figure(mjvFigure* figure, const char* title, const char* y_format, double duration_s,
+                 std::initializer_list<std::array<float, 3>> line_rgb) {
+  mjv_defaultFigure(figure);
+  std::snprintf(figure->title, sizeof(figure->title), "%s", title);
+  std::snprintf(figure->xformat, sizeof(figure->xformat), "%%.0f");
+  std::snprintf(figure->yformat, sizeof(figure->yformat), "%s", y_format);
+  figure->flg_legend = 0;
+  figure->range[0][0] = 0.0f;
+  figure->range[0][1] = static_cast<float>(duration_s);
+  figure->figurergba[3] = 0.6f;
+  figure->panergba[3] = 0.6f;
+  figure->gridsize[0] = 4;
+  figure->gridsize[1] = 3;
+  int i = 0;
+  for (const auto& rgb : line_rgb) std::copy(rgb.begin(), rgb.end(), figure->linergb[i++]);
+}
+
+// y range [lo, hi] of whole multiples of `tick` around [min, max]
+void set_y_range(mjvFigure* figure, double min, double max, double tick) {
+  figure->range[1][0] = static_cast<float>(tick * std::floor(min / tick));
+  figure->range[1][1] = static_cast<float>(tick * std::ceil(max / tick));
+  if (figure->range[1][1] <= figure->range[1][0]) figure->range[1][1] += static_cast<float>(tick);
+}
+
+const char* reflex_state(const std::array<bool, kMuscleCount>& active) {
+  if (active[kAgonist] && active[kAntagonist]) return "agonist + antagonist";
+  if (active[kAgonist]) return "agonist";
+  if (active[kAntagonist]) return "antagonist";
+  return "off";
+}
+
+}  // namespace
+
+// The live plots: angle above, pressures (chamber and command, both muscles) below, and
+// the extremes so far that set their ranges.
+struct TrialVideo::Plots {
+  mjvFigure angle;
+  mjvFigure pressure;
+  double angle_min_deg = std::numeric_limits<double>::infinity();
+  double angle_max_deg = -std::numeric_limits<double>::infinity();
+  double pressure_max_mpa = 0.0;
+};
+
+RenderQuality parse_render_quality(const std::string& name) {
+  if (name == "fast") return RenderQuality::kFast;
+  if (name == "default") return RenderQuality::kDefault;
+  throw InputError("--quality must be fast or default, got '" + name + "'");
+}
+
+void validate_video_options(const VideoOptions& o, const std::string& mp4_option) {
+  check_frame_side(o.width_px, "--width");
+  check_frame_side(o.height_px, "--height");
+  if (o.fps < 1 || o.fps > kMaxVideoFps) {
+    throw InputError("--fps must be in [1, " + std::to_string(kMaxVideoFps) + "], got " +
+                     std::to_string(o.fps));
+  }
+  if (o.mp4_path.empty() && o.png_dir.empty()) {
+    throw InputError("nothing to write: give " + mp4_option + " FILE.mp4 or --png-dir DIR");
+  }
+  if (!o.mp4_path.empty()) {
+    if (!ends_with_mp4(o.mp4_path)) {
+      throw InputError(mp4_option + " " + o.mp4_path + ": the video is an MP4 file, name it .mp4");
+    }
+    if (std::filesystem::is_directory(o.mp4_path)) {
+      throw InputError(mp4_option + " " + o.mp4_path + ": is a folder, name the .mp4 file");
+    }
+  }
+}
+
+TrialVideo::TrialVideo(const ArmModel& arm, const Scenario& sc, const VideoOptions& options)
+    : options_(options),
+      frame_count_(frames_in(sc.duration_s, options.fps)),
+      renderer_(arm.model.get(), arm.model_path,
+                SceneRenderOptions{options.width_px, options.height_px, options.quality,
+                                   options.camera, options.backend}) {
+  if (options.plot) {
+    plots_ = std::make_unique<Plots>();
+    // the muscles in their tendons' colours, commands dimmer
+    init_figure(&plots_->angle, "angle [deg]", "%.0f", sc.duration_s, {{0.9f, 0.75f, 0.1f}});
+    init_figure(&plots_->pressure, "pressure [MPa] (dim: command)", "%.1f",
+                sc.duration_s,
+                {{0.95f, 0.3f, 0.3f}, {0.35f, 0.45f, 1.0f},     // agonist, antagonist
+                 {0.5f, 0.2f, 0.2f}, {0.2f, 0.25f, 0.55f}});    // their commands
+  }
+
+  // outputs last: their temp files exist only once everything else is ready
+  if (!options.mp4_path.empty()) {
+    const std::string folder = std::filesystem::path(options.mp4_path).parent_path().string();
+    if (!folder.empty()) make_directories(folder);
+    Mp4Settings settings;
+    settings.width_px = options.width_px;
+    settings.height_px = options.height_px;
+    settings.fps = options.fps;
+    settings.x264_preset = x264_preset_for(options.quality);
+    mp4_ = std::make_unique<Mp4Writer>(options.mp4_path, settings);
+  }
+  if (!options.png_dir.empty()) {
+    png_ = std::make_unique<PngSequenceWriter>(options.png_dir, options.width_px,
+                                               options.height_px);
+  }
+}
+
+TrialVideo::~TrialVideo() = default;
+
+double TrialVideo::next_observation_time_s() const {
+  if (next_frame_ >= frame_count_) return std::numeric_limits<double>::infinity();
+  return static_cast<double>(next_frame_) / options_.fps;
+}
+
+void TrialVideo::observe(const TrialSnapshot& snapshot) {
+  renderer_.draw_scene(snapshot.data);
+  draw_overlays(snapshot);
+  const unsigned char* rgb = renderer_.read_pixels();
+
+  // every frame time up to now shows this state (several only if fps beats the physics rate)
+  const double due_s = snapshot.time_s + kObservationToleranceS;
+  while (next_frame_ < frame_count_ && static_cast<double>(next_frame_) / options_.fps <= due_s) {
+    if (mp4_) mp4_->write_frame(rgb);
+    if (png_) png_->write_frame(rgb);
+    ++next_frame_;
+  }
+}
+
+void TrialVideo::draw_overlays(const TrialSnapshot& snap) {
+  // the numbers, top left
+  char values[256];
+  std::snprintf(values, sizeof(values),
+                "%.3f s\n%.2f deg\n%.3f MPa (cmd %.3f)\n%.3f MPa (cmd %.3f)\n%s", snap.time_s,
+                snap.angle_deg, units::pa_to_mpa(snap.pressure_pa[kAgonist]),
+                units::pa_to_mpa(snap.command_pa[kAgonist]),
+                units::pa_to_mpa(snap.pressure_pa[kAntagonist]),
+                units::pa_to_mpa(snap.command_pa[kAntagonist]), reflex_state(snap.reflex_active));
+  renderer_.draw_text("time\nangle\nagonist\nantagonist\nreflex", values);
+  if (!plots_) return;
+
+  // the live plots, bottom left: pressures at the bottom, the angle above
+  Plots& p = *plots_;
+  append_point(&p.angle, 0, snap.time_s, snap.angle_deg);
+  p.angle_min_deg = std::min(p.angle_min_deg, snap.angle_deg);
+  p.angle_max_deg = std::max(p.angle_max_deg, snap.angle_deg);
+  for (int i = 0; i < kMuscleCount; ++i) {
+    const double p_mpa = units::pa_to_mpa(snap.pressure_pa[i]);
+    const double cmd_mpa = units::pa_to_mpa(snap.command_pa[i]);
+    append_point(&p.pressure, i, snap.time_s, p_mpa);
+    append_point(&p.pressure, kMuscleCount + i, snap.time_s, cmd_mpa);
+    p.pressure_max_mpa = std::max({p.pressure_max_mpa, p_mpa, cmd_mpa});
+  }
+  set_y_range(&p.angle, p.angle_min_deg, p.angle_max_deg, kAngleTickDeg);
+  set_y_range(&p.pressure, 0.0, p.pressure_max_mpa, kPressureTickMpa);
+  const int w = static_cast<int>(kPlotWidthShare * renderer_.width_px());
+  const int h = static_cast<int>(kPlotHeightShare * renderer_.height_px());
+  renderer_.draw_figure(mjrRect{0, 0, w, h}, &p.pressure);
+  renderer_.draw_figure(mjrRect{0, h, w, h}, &p.angle);
+}
+
+void TrialVideo::finish() {
+  if (mp4_) mp4_->finish();
+  if (png_) png_->finish();
+}
+
+std::string TrialVideo::encoder_name() const { return mp4_ ? mp4_->encoder_name() : "png"; }
+
+RenderedTrial run_rendered_trial(const ArmModel& arm, const Scenario& sc, std::uint64_t seed,
+                                 const VideoOptions& options, bool keep_trajectory) {
+  TrialVideo video(arm, sc, options);
+  TrialOptions trial_options;
+  trial_options.keep_trajectory = keep_trajectory;
+  trial_options.observer = &video;
+  RenderedTrial rendered;
+  rendered.trial = run_trial(arm, sc, seed, trial_options);
+  video.finish();
+  rendered.frames = video.frames_written();
+  rendered.encoder = video.encoder_name();
+  return rendered;
+}
+
+}  // namespace pamsim

@@ -1,0 +1,86 @@
+// trial_video.h: a trial's video, made while the trial runs. A TrialObserver that, at each
+// frame time k / fps (k = 0 .. ceil(duration * fps) - 1), draws the arm from one of the
+// model's cameras, writes the trial's numbers on top (time, angle, both chamber pressures
+// with their commands, reflex state) and optionally live plots of the angle and the
+// pressures in the bottom-left corner, and streams the frame to an MP4 and/or a PNG
+// sequence. Nothing appears at the output paths before finish(). What `pamsim render` and
+// `pamsim run --video` use.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "sim/core/arm_model.h"
+#include "sim/render/gl_context.h"
+#include "sim/render/mp4_writer.h"
+#include "sim/render/png_sequence_writer.h"
+#include "sim/io/scenario.h"
+#include "sim/render/scene_renderer.h"
+#include "sim/core/trial.h"
+
+namespace pamsim {
+
+inline constexpr int kMaxVideoFps = 240;
+
+struct VideoOptions {
+  std::string mp4_path;   // H.264 MP4 file (.mp4); empty: none
+  std::string png_dir;    // folder for frame_00000.png, ...; empty: none
+  int width_px = 1280;    // even (4:2:0 video), [kMinFrameSidePx, kMaxFrameSidePx]
+  int height_px = 720;
+  int fps = 30;           // [1, kMaxVideoFps]
+  RenderQuality quality = RenderQuality::kDefault;
+  std::string camera = "side";
+  GlBackend backend = GlBackend::kOsmesa;
+  bool plot = false;      // live plots of angle and pressures
+};
+
+// "fast" | "default". Throws InputError "--quality must be fast or default, got '<name>'".
+RenderQuality parse_render_quality(const std::string& name);
+
+// Checks what needs no model: size, fps, the outputs' names. `mp4_option` names the option
+// that gave mp4_path in messages ("-o", "--video"). Throws InputError naming the option.
+void validate_video_options(const VideoOptions& options, const std::string& mp4_option);
+
+class TrialVideo : public TrialObserver {
+ public:
+  // Sets up rendering of `arm` (the camera is checked against its model) and opens the
+  // outputs as temp files. Throws InputError (see validate_video_options, SceneRenderer,
+  // Mp4Writer, PngSequenceWriter); `options` are expected to be validated already.
+  TrialVideo(const ArmModel& arm, const Scenario& scenario, const VideoOptions& options);
+  ~TrialVideo() override;   // unfinished outputs are removed
+
+  double next_observation_time_s() const override;
+  void observe(const TrialSnapshot& snapshot) override;
+
+  // Completes the outputs and puts them in place.
+  void finish();
+
+  long frames_written() const { return next_frame_; }
+  std::string encoder_name() const;   // the MP4's H.264 encoder; "png" without an MP4
+
+ private:
+  struct Plots;
+  void draw_overlays(const TrialSnapshot& snapshot);
+
+  VideoOptions options_;
+  long frame_count_ = 0;   // frames the whole trial makes
+  long next_frame_ = 0;
+  SceneRenderer renderer_;
+  std::unique_ptr<Plots> plots_;   // with --plot
+  std::unique_ptr<Mp4Writer> mp4_;
+  std::unique_ptr<PngSequenceWriter> png_;
+};
+
+struct RenderedTrial {
+  TrialResult trial;
+  long frames = 0;       // written to each output
+  std::string encoder;   // the MP4's H.264 encoder; "png" without an MP4
+};
+
+// Runs `scenario`'s trial with `seed` on `arm`, rendered as it runs into the outputs of
+// `options` (validated), which are complete and in place on return. Throws as TrialVideo.
+RenderedTrial run_rendered_trial(const ArmModel& arm, const Scenario& scenario,
+                                 std::uint64_t seed, const VideoOptions& options,
+                                 bool keep_trajectory);
+
+}  // namespace pamsim

@@ -1,0 +1,333 @@
+// report.cc: see report.h.
+#include "sim/sweep/report.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "pam_actuator/input_error.h"
+#include "sim/io/config_reader.h"
+#include "sim/io/outputs.h"
+#include "sim/io/scenario.h"
+#include "sim/sweep/sweep.h"
+
+namespace pamsim {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr const char* kMistripRate = "mistrip_rate";
+
+// Welford's running mean and variance, with the range.
+struct Accumulator {
+  int n = 0;
+  double mean = 0, m2 = 0, min = kNaN, max = kNaN;
+  void add(double v) {
+    ++n;
+    const double delta = v - mean;
+    mean += delta / n;
+    m2 += delta * (v - mean);
+    min = n == 1 ? v : std::min(min, v);
+    max = n == 1 ? v : std::max(max, v);
+  }
+  MetricStats stats() const {
+    MetricStats s;
+    s.count = n;
+    s.mean = n ? mean : kNaN;
+    s.std = n > 1 ? std::sqrt(m2 / (n - 1)) : kNaN;
+    s.min = min;
+    s.max = max;
+    return s;
+  }
+};
+
+// A database cell as a TOML value (numbers exact, as the sweep wrote them).
+std::string toml_value(const DbValue& v) {
+  AxisValue a;
+  if (v.kind == DbValue::Kind::kText) {
+    a.kind = AxisValue::Kind::kString;
+    a.text = v.text;
+  } else {
+    a.number = v.kind == DbValue::Kind::kNumber ? v.number : kNaN;
+  }
+  return a.toml();
+}
+
+// A TOML value as a person reads it: a string without its quotes ('x' or "x"), anything
+// else as written.
+std::string unquoted(const std::string& toml) {
+  try {
+    const toml::table t = toml::parse("v = " + toml);
+    if (const auto text = t["v"].value<std::string>()) return *text;
+  } catch (const toml::parse_error&) {
+  }
+  return toml;
+}
+
+// A level for a tick label: numbers to 3 significant digits, strings without quotes.
+std::string level_label(const std::string& toml) {
+  double v;
+  const auto r = std::from_chars(toml.data(), toml.data() + toml.size(), v);
+  if (r.ec == std::errc() && r.ptr == toml.data() + toml.size()) {
+    char buf[32];
+    std::snprintf(buf, sizeof(buf), "%.3g", v);
+    return buf;
+  }
+  return unquoted(toml);
+}
+
+std::string number_text(double v) {
+  if (!std::isfinite(v)) return "";
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof(buf), v);
+  return std::string(buf, r.ptr);
+}
+
+// Index of a column by name; throws InputError if the table lacks it.
+std::size_t column_of(const std::vector<std::string>& columns, const std::string& name,
+                      const std::string& db) {
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    if (columns[c] == name) return c;
+  }
+  throw InputError(db + ": the trials table has no column " + name);
+}
+
+// The value shown for a point: a metric's mean, or the mistrip rate.
+double point_value(const SweepSummary& sweep, const PointSummary& p, const std::string& metric) {
+  if (metric == kMistripRate) return p.mistrip_rate();
+  const int m = sweep.metric_index(metric);
+  return m < 0 ? kNaN : p.metrics[static_cast<std::size_t>(m)].mean;
+}
+
+}  // namespace
+
+double PointSummary::mistrip_rate() const {
+  return ok > 0 ? static_cast<double>(with_mistrips) / ok : kNaN;
+}
+
+int SweepSummary::metric_index(const std::string& name) const {
+  for (std::size_t i = 0; i < metric_names.size(); ++i) {
+    if (metric_names[i] == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+SweepSummary summarize_sweep(const ResultsDb& db) {
+  SweepSummary sweep;
+  sweep.db_path = db.path();
+  sweep.sweep_file = db.meta("sweep_file");
+  sweep.base_path = db.meta("base_path");
+  const auto def = nlohmann::json::parse(db.meta("definition"), nullptr, false);
+  if (def.is_discarded() || !def.is_object()) {
+    throw InputError(db.path() + ": the sweep definition is unreadable");
+  }
+  try {
+    sweep.design = def.at("design").get<std::string>();
+    sweep.seeds = def.at("seeds").get<std::int64_t>();
+    sweep.base_scenario = def.at("base_scenario").get<std::string>();
+    sweep.fixed = def.at("fixed").get<std::vector<std::string>>();
+    sweep.points_total = sweep.design == "grid" ? 1 : def.at("samples").get<std::int64_t>();
+    for (const auto& axis : def.at("axes")) {
+      sweep.axis_keys.push_back(axis.at("key").get<std::string>());
+      sweep.axis_log.push_back(axis.contains("range") && axis["range"].at("log").get<bool>());
+      std::vector<std::string> levels = axis.at("values").get<std::vector<std::string>>();
+      if (sweep.design == "grid") sweep.points_total *= static_cast<std::int64_t>(levels.size());
+      sweep.axis_levels.push_back(std::move(levels));
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(db.path() + ": the sweep definition is incomplete (" + e.what() + ")");
+  }
+  sweep.trials_total = sweep.points_total * sweep.seeds;
+  for (const auto& name : metric_column_names()) {
+    if (!is_timing_metric(name)) sweep.metric_names.push_back(name);
+  }
+
+  // column positions
+  const std::vector<std::string> columns = db.trial_columns();
+  const std::size_t point_col = column_of(columns, "point", db.path());
+  const std::size_t status_col = column_of(columns, "status", db.path());
+  const std::size_t mistrips_col = column_of(columns, "mistrips", db.path());
+  std::vector<std::size_t> axis_cols, metric_cols;
+  for (const auto& key : sweep.axis_keys) axis_cols.push_back(column_of(columns, key, db.path()));
+  for (const auto& name : sweep.metric_names) metric_cols.push_back(column_of(columns, name, db.path()));
+
+  // one pass in trial order; a point's trials are consecutive
+  PointSummary current;
+  std::vector<Accumulator> acc;
+  auto close_point = [&] {
+    if (current.trials == 0) return;
+    for (const auto& a : acc) current.metrics.push_back(a.stats());
+    sweep.points.push_back(std::move(current));
+    current = PointSummary{};
+  };
+  db.for_each_trial([&](const std::vector<DbValue>& row) {
+    const auto point = static_cast<std::int64_t>(row[point_col].number);
+    if (current.trials > 0 && point != current.point) close_point();
+    if (current.trials == 0) {
+      current.point = point;
+      if (sweep.design == "grid") {   // the levels exactly as the sweep set them (types kept)
+        std::int64_t rest = point;
+        current.axis_values.resize(sweep.axis_levels.size());
+        for (std::size_t a = sweep.axis_levels.size(); a-- > 0;) {
+          const auto levels = static_cast<std::int64_t>(sweep.axis_levels[a].size());
+          current.axis_values[a] = sweep.axis_levels[a][static_cast<std::size_t>(rest % levels)];
+          rest /= levels;
+        }
+      } else {   // random and lhs sample float ranges
+        for (std::size_t c : axis_cols) current.axis_values.push_back(toml_value(row[c]));
+      }
+      acc.assign(metric_cols.size(), Accumulator{});
+    }
+    ++current.trials;
+    ++sweep.trials_stored;
+    if (row[status_col].text != "ok") {
+      ++sweep.trials_not_ok;
+      return;
+    }
+    ++current.ok;
+    if (row[mistrips_col].kind == DbValue::Kind::kNumber && row[mistrips_col].number > 0) {
+      ++current.with_mistrips;
+    }
+    for (std::size_t m = 0; m < metric_cols.size(); ++m) {
+      const DbValue& v = row[metric_cols[m]];
+      if (v.kind == DbValue::Kind::kNumber && std::isfinite(v.number)) acc[m].add(v.number);
+    }
+  });
+  close_point();
+  return sweep;
+}
+
+const PointSummary* best_point(const SweepSummary& sweep, const std::string& metric) {
+  const PointSummary* best = nullptr;
+  double best_value = kNaN;
+  for (const PointSummary& p : sweep.points) {
+    if (p.ok != sweep.seeds || p.with_mistrips != 0) continue;
+    const int m = sweep.metric_index(metric);
+    if (m >= 0 && p.metrics[static_cast<std::size_t>(m)].count != sweep.seeds) continue;
+    const double v = point_value(sweep, p, metric);
+    if (!std::isfinite(v)) continue;
+    if (!best || v < best_value) {
+      best = &p;
+      best_value = v;
+    }
+  }
+  return best;
+}
+
+std::string best_criterion(const SweepSummary& sweep, const std::string& metric) {
+  return "smallest mean " + metric + " over the seeds, among points where all " +
+         std::to_string(sweep.seeds) + " seeds ran ok with zero mistrips and a defined " + metric;
+}
+
+std::string point_scenario_toml(const SweepSummary& sweep, const PointSummary& point,
+                                const std::string& scenario_dir, const std::string& header) {
+  ConfigReader in(sweep.base_scenario, sweep.base_path);
+  for (const auto& o : sweep.fixed) in.apply_override(o);
+  for (std::size_t a = 0; a < sweep.axis_keys.size(); ++a) {
+    in.apply_override(sweep.axis_keys[a] + "=" + point.axis_values[a]);
+  }
+  // file paths: relative to the new file's folder
+  const fs::path dir = fs::weakly_canonical(fs::absolute(scenario_dir));
+  for (const auto& key : scenario_path_keys()) {
+    if (!in.has(key)) continue;
+    const fs::path target = fs::weakly_canonical(fs::absolute(in.get_path(key, "")));
+    AxisValue path;
+    path.kind = AxisValue::Kind::kString;
+    path.text = target.lexically_relative(dir).generic_string();
+    if (path.text.empty()) path.text = target.generic_string();
+    in.apply_override(key + "=" + path.toml());
+  }
+  std::ostringstream out;
+  out << header << toml::toml_formatter{in.document()} << "\n";
+  return out.str();
+}
+
+std::string points_csv(const SweepSummary& sweep) {
+  std::string out = "point";
+  for (const auto& key : sweep.axis_keys) out += "," + key;
+  out += ",trials,ok,mistrip_rate";
+  for (const auto& name : sweep.metric_names) {
+    out += "," + name + "_mean," + name + "_std," + name + "_min," + name + "_max";
+  }
+  out += "\n";
+  for (const PointSummary& p : sweep.points) {
+    out += std::to_string(p.point);
+    for (const auto& v : p.axis_values) out += "," + unquoted(v);
+    out += "," + std::to_string(p.trials) + "," + std::to_string(p.ok) + "," +
+           number_text(p.mistrip_rate());
+    for (const MetricStats& m : p.metrics) {
+      out += "," + number_text(m.mean) + "," + number_text(m.std) + "," + number_text(m.min) +
+             "," + number_text(m.max);
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+HeatMap sweep_heat_map(const SweepSummary& sweep, const std::string& metric,
+                       const PointSummary* mark, const std::string& best_metric) {
+  if (sweep.axis_keys.size() < 2) {
+    throw InputError(sweep.db_path + ": heat maps need two axes, the sweep has " +
+                     std::to_string(sweep.axis_keys.size()));
+  }
+  HeatMap map;
+  map.x_label = sweep.axis_keys[0];
+  map.y_label = sweep.axis_keys[1];
+  map.value_label = metric == kMistripRate ? "mistrip rate (fraction of seeds)" : metric + " (mean)";
+  map.title = metric + " over " + std::to_string(sweep.seeds) + " seeds per point";
+  if (metric == kMistripRate) {
+    map.value_min = 0;
+    map.value_max = 1;
+  }
+  if (mark) {
+    map.has_mark = true;
+    map.mark_label = "best (smallest mean " + best_metric + ", no mistrips)";
+  }
+
+  if (sweep.design != "grid") {
+    map.scattered = true;
+    map.x_log = sweep.axis_log[0];
+    map.y_log = sweep.axis_log[1];
+    for (const PointSummary& p : sweep.points) {
+      map.x.push_back(std::strtod(p.axis_values[0].c_str(), nullptr));
+      map.y.push_back(std::strtod(p.axis_values[1].c_str(), nullptr));
+      map.values.push_back(point_value(sweep, p, metric));
+      if (&p == mark) {
+        map.mark_x = map.x.back();
+        map.mark_y = map.y.back();
+      }
+    }
+    return map;
+  }
+
+  // grid: the point's level on each of the first two axes (row-major, first axis slowest)
+  const std::size_t nx = sweep.axis_levels[0].size(), ny = sweep.axis_levels[1].size();
+  std::int64_t inner = 1;   // points per level of axis 1
+  for (std::size_t a = 2; a < sweep.axis_levels.size(); ++a) {
+    inner *= static_cast<std::int64_t>(sweep.axis_levels[a].size());
+  }
+  if (sweep.axis_keys.size() > 2) map.title += " (cells average the other axes)";
+  for (const auto& l : sweep.axis_levels[0]) map.x_levels.push_back(level_label(l));
+  for (const auto& l : sweep.axis_levels[1]) map.y_levels.push_back(level_label(l));
+  std::vector<Accumulator> cells(nx * ny);
+  for (const PointSummary& p : sweep.points) {
+    const std::size_t iy = static_cast<std::size_t>(p.point / inner) % ny;
+    const std::size_t ix = static_cast<std::size_t>(p.point / inner / static_cast<std::int64_t>(ny));
+    const double v = point_value(sweep, p, metric);
+    if (std::isfinite(v)) cells[iy * nx + ix].add(v);
+    if (&p == mark) {
+      map.mark_x = static_cast<double>(ix);
+      map.mark_y = static_cast<double>(iy);
+    }
+  }
+  for (const auto& c : cells) map.cells.push_back(c.stats().mean);
+  map.cell_format = metric == kMistripRate ? "%.1f" : "%.3g";
+  return map;
+}
+
+}  // namespace pamsim

@@ -1,0 +1,72 @@
+// report.h: what a sweep database says, per grid point: mean, spread (sample standard
+// deviation), min and max of every metric over the seeds that ran ok, the mistrip rate
+// (fraction of those seeds with a trigger before the impact), and the best point under a
+// stated criterion, written back as a ready-to-run scenario. Reads the database in trial
+// order and keeps one summary per point, never the trials.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sim/io/plot.h"
+#include "sim/sweep/results_db.h"
+
+namespace pamsim {
+
+struct MetricStats {
+  int count = 0;   // seeds where the metric is defined
+  double mean = 0, std = 0, min = 0, max = 0;   // NaN when count == 0 (std NaN when count < 2)
+};
+
+struct PointSummary {
+  std::int64_t point = 0;
+  std::vector<std::string> axis_values;   // as TOML values (numbers exact), one per axis
+  int trials = 0;          // stored
+  int ok = 0;              // of those, status "ok"
+  int with_mistrips = 0;   // of the ok ones, with mistrips > 0
+  std::vector<MetricStats> metrics;   // one per SweepSummary::metric_names
+  double mistrip_rate() const;        // with_mistrips / ok; NaN if none ran ok
+};
+
+struct SweepSummary {
+  std::string db_path, sweep_file, base_path, design;
+  std::string base_scenario;               // its text at the time of the sweep
+  std::vector<std::string> fixed;          // "key=value" at every point
+  std::int64_t seeds = 0, points_total = 0, trials_total = 0;
+  std::int64_t trials_stored = 0, trials_not_ok = 0;
+  std::vector<std::string> axis_keys;
+  std::vector<bool> axis_log;
+  std::vector<std::vector<std::string>> axis_levels;   // grid designs: each axis's values
+  std::vector<std::string> metric_names;
+  std::vector<PointSummary> points;        // stored points, in point order
+
+  // index of a metric, or -1
+  int metric_index(const std::string& name) const;
+};
+
+// Throws InputError if the database is not a sweep database.
+SweepSummary summarize_sweep(const ResultsDb& db);
+
+// The criterion: among points whose every seed is stored, ran ok with zero mistrips and has
+// `metric` defined, the smallest mean of `metric`. nullptr if no point qualifies.
+const PointSummary* best_point(const SweepSummary& sweep, const std::string& metric);
+std::string best_criterion(const SweepSummary& sweep, const std::string& metric);
+
+// The base scenario with the sweep's fixed keys and the point's axis values set, its file
+// paths rewritten relative to `scenario_dir` (where it will be written), as TOML text with a
+// header saying where it came from.
+std::string point_scenario_toml(const SweepSummary& sweep, const PointSummary& point,
+                                const std::string& scenario_dir, const std::string& header);
+
+// points.csv: point, the axis values, trials, ok, mistrip_rate, then <metric>_mean, _std,
+// _min, _max for every metric (timing metrics left out).
+std::string points_csv(const SweepSummary& sweep);
+
+// A heat map of `metric` (or "mistrip_rate") over the first two axes, with `best` (chosen
+// on `best_metric`) marked if not null; on a grid with more axes each cell averages the
+// points that share its two levels. Throws InputError if the sweep has fewer than two axes.
+HeatMap sweep_heat_map(const SweepSummary& sweep, const std::string& metric,
+                       const PointSummary* best, const std::string& best_metric);
+
+}  // namespace pamsim

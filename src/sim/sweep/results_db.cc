@@ -1,0 +1,351 @@
+// results_db.cc: see results_db.h.
+#include "sim/sweep/results_db.h"
+
+#include <fcntl.h>
+#include <sqlite3.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "pam_actuator/input_error.h"
+#include "sim/io/outputs.h"
+#include "sim/io/temp_path.h"
+
+namespace pamsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+// "name" as an SQL identifier (axis keys hold dots)
+std::string quoted(const std::string& name) {
+  std::string out = "\"";
+  for (char c : name) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+struct StatementDeleter {
+  void operator()(sqlite3_stmt* s) const { sqlite3_finalize(s); }
+};
+using Statement = std::unique_ptr<sqlite3_stmt, StatementDeleter>;
+
+Statement prepare(sqlite3* db, const std::string& sql) {
+  sqlite3_stmt* s = nullptr;
+  if (sqlite3_prepare_v2(db, sql.c_str(), -1, &s, nullptr) != SQLITE_OK) {
+    sqlite3_finalize(s);
+    return nullptr;
+  }
+  return Statement(s);
+}
+
+sqlite3* open_database(const std::string& path, int flags) {
+  sqlite3* db = nullptr;
+  const int rc = sqlite3_open_v2(path.c_str(), &db, flags, nullptr);
+  if (rc != SQLITE_OK) {
+    const std::string why = db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
+    sqlite3_close(db);
+    throw InputError(path + ": cannot open the sweep database (" + why + ")");
+  }
+  sqlite3_busy_timeout(db, 10000);
+  return db;
+}
+
+std::string utc_now() {
+  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof(buf), "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+// The first top-level field in which two canonical definitions differ.
+std::string first_difference(const std::string& stored, const std::string& wanted) {
+  const auto a = nlohmann::json::parse(stored, nullptr, false);
+  const auto b = nlohmann::json::parse(wanted, nullptr, false);
+  if (a.is_discarded() || !a.is_object()) return "definition";
+  for (const auto& [key, value] : b.items()) {
+    if (!a.contains(key) || a[key] != value) return key;
+  }
+  return "definition";
+}
+
+// fsync(2) on the folder holding `path`, so a rename into it is durable (best effort).
+void sync_directory_of(const std::string& path) {
+  fs::path dir = fs::path(path).parent_path();
+  if (dir.empty()) dir = ".";
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
+}  // namespace
+
+std::vector<std::string> metric_column_names() {
+  std::vector<std::string> names;
+  for (const auto& [name, _] : trial_metrics(TrialSummary{})) names.push_back(name);
+  return names;
+}
+
+ResultsDb::ResultsDb(sqlite3* db, std::string path) : db_(db), path_(std::move(path)) {}
+
+ResultsDb::ResultsDb(ResultsDb&& other) noexcept
+    : db_(other.db_), path_(std::move(other.path_)), writer_lock_fd_(other.writer_lock_fd_) {
+  other.db_ = nullptr;
+  other.writer_lock_fd_ = -1;
+}
+
+ResultsDb& ResultsDb::operator=(ResultsDb&& other) noexcept {
+  if (this != &other) {
+    close();
+    db_ = other.db_;
+    path_ = std::move(other.path_);
+    writer_lock_fd_ = other.writer_lock_fd_;
+    other.db_ = nullptr;
+    other.writer_lock_fd_ = -1;
+  }
+  return *this;
+}
+
+ResultsDb::~ResultsDb() { close(); }
+
+void ResultsDb::close() {
+  sqlite3_close(db_);
+  db_ = nullptr;
+  // only after SQLite is done with the file: closing any descriptor of it drops the
+  // process's POSIX locks, SQLite's included
+  if (writer_lock_fd_ >= 0) ::close(writer_lock_fd_);
+  writer_lock_fd_ = -1;
+}
+
+void ResultsDb::lock_for_writing() {
+  // flock(2), independent of SQLite's fcntl locks; released by the kernel if the process dies
+  writer_lock_fd_ = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
+  if (writer_lock_fd_ < 0 || ::flock(writer_lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    const bool busy = errno == EWOULDBLOCK;
+    throw InputError(path_ + (busy ? ": another pamsim sweep is writing to it; wait for it or "
+                                     "stop it first"
+                                   : ": cannot lock the sweep database (" +
+                                         std::string(std::strerror(errno)) + ")"));
+  }
+}
+
+void ResultsDb::fail(const std::string& what) const {
+  throw std::runtime_error(path_ + ": " + what + " (" + sqlite3_errmsg(db_) + ")");
+}
+
+void ResultsDb::exec(const std::string& sql) const {
+  char* err = nullptr;
+  if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &err) != SQLITE_OK) {
+    const std::string why = err ? err : "unknown error";
+    sqlite3_free(err);
+    throw std::runtime_error(path_ + ": " + why);
+  }
+}
+
+ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& sweep) {
+  std::error_code ec;
+  if (fs::exists(path, ec)) {
+    throw InputError(path + ": already exists; add --resume to finish that sweep, or choose "
+                     "another --db");
+  }
+  // a WAL left by a killed sweep whose database was then deleted would be replayed into the
+  // new one: refuse rather than mix two sweeps
+  for (const char* suffix : {"-wal", "-shm", "-journal"}) {
+    if (fs::exists(path + suffix, ec)) {
+      throw InputError(path + suffix + ": left over from an earlier database at " + path +
+                       "; remove it to start a new sweep there");
+    }
+  }
+  // build it under a temp name, then rename: the database exists whole or not at all
+  TempPath tmp_guard(path);   // removed on any failure below
+  const std::string& tmp = tmp_guard.path();
+  fs::remove(tmp, ec);
+  {
+    sqlite3* handle = nullptr;
+    try {
+      handle = open_database(tmp, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+    } catch (const InputError&) {
+      throw InputError(path + ": cannot create the sweep database (is the folder writable?)");
+    }
+    ResultsDb db(handle, tmp);   // closed before tmp_guard removes the file
+    std::string columns = "trial INTEGER PRIMARY KEY, point INTEGER NOT NULL, "
+                          "seed_index INTEGER NOT NULL, seed INTEGER NOT NULL";
+    for (const auto& axis : sweep.axes) columns += ", " + quoted(axis.key);
+    columns += ", status TEXT NOT NULL, message TEXT";
+    for (const auto& name : metric_column_names()) columns += ", " + quoted(name) + " REAL";
+    db.exec("BEGIN; CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL); "
+            "CREATE TABLE trials(" + columns + ");");
+    Statement put = prepare(db.db_, "INSERT INTO meta VALUES (?, ?)");
+    if (!put) db.fail("cannot write the sweep definition");
+    const std::pair<std::string, std::string> meta[] = {
+        {"format", "pamsim-sweep-1"},
+        {"definition", sweep.canonical_json()},
+        {"pamsim_version", PAMSIM_VERSION},
+        {"sweep_file", sweep.file},
+        {"base_path", fs::absolute(sweep.base_path).lexically_normal().string()},
+        {"created_utc", utc_now()}};
+    for (const auto& [key, value] : meta) {
+      sqlite3_bind_text(put.get(), 1, key.c_str(), -1, SQLITE_TRANSIENT);
+      sqlite3_bind_text(put.get(), 2, value.c_str(), -1, SQLITE_TRANSIENT);
+      if (sqlite3_step(put.get()) != SQLITE_DONE) db.fail("cannot write the sweep definition");
+      sqlite3_reset(put.get());
+    }
+    put.reset();
+    db.exec("COMMIT; PRAGMA journal_mode=WAL;");
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    throw InputError(path + ": cannot create the sweep database (" + std::strerror(errno) + ")");
+  }
+  tmp_guard.release();
+  sync_directory_of(path);   // the rename itself survives a power cut
+  return open_to_resume(path, sweep);
+}
+
+ResultsDb ResultsDb::open_existing(const std::string& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such sweep database");
+  // read-write so that a WAL left by a killed sweep is recovered; nothing is written
+  ResultsDb db(open_database(path, SQLITE_OPEN_READWRITE), path);
+  if (db.meta("format") != "pamsim-sweep-1") {
+    throw InputError(path + ": not a pamsim sweep database");
+  }
+  return db;
+}
+
+ResultsDb ResultsDb::open_to_resume(const std::string& path, const SweepDefinition& sweep) {
+  ResultsDb db = open_existing(path);
+  const std::string stored = db.meta("definition");
+  const std::string wanted = sweep.canonical_json();
+  if (stored != wanted) {
+    throw InputError(path + ": holds a different sweep (its " + first_difference(stored, wanted) +
+                     " differs from " + sweep.file + "); use another --db, or the sweep file "
+                     "it was made with");
+  }
+  db.lock_for_writing();
+  db.exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;");
+  return db;
+}
+
+std::string ResultsDb::meta(const std::string& key) const {
+  Statement s = prepare(db_, "SELECT value FROM meta WHERE key = ?");
+  if (!s) return "";   // no meta table: not a sweep database
+  sqlite3_bind_text(s.get(), 1, key.c_str(), -1, SQLITE_TRANSIENT);
+  if (sqlite3_step(s.get()) != SQLITE_ROW) return "";
+  const auto* text = sqlite3_column_text(s.get(), 0);
+  return text ? reinterpret_cast<const char*>(text) : "";
+}
+
+std::vector<bool> ResultsDb::finished_trials(std::int64_t trials) const {
+  std::vector<bool> finished(static_cast<std::size_t>(trials), false);
+  Statement s = prepare(db_, "SELECT trial FROM trials");
+  if (!s) fail("cannot read the trials");
+  int rc;
+  while ((rc = sqlite3_step(s.get())) == SQLITE_ROW) {
+    const std::int64_t t = sqlite3_column_int64(s.get(), 0);
+    if (t < 0 || t >= trials) fail("trial " + std::to_string(t) + " is outside this sweep");
+    finished[static_cast<std::size_t>(t)] = true;
+  }
+  if (rc != SQLITE_DONE) fail("cannot read the trials");
+  return finished;
+}
+
+std::int64_t ResultsDb::trial_count() const {
+  Statement s = prepare(db_, "SELECT COUNT(*) FROM trials");
+  if (!s || sqlite3_step(s.get()) != SQLITE_ROW) fail("cannot count the trials");
+  return sqlite3_column_int64(s.get(), 0);
+}
+
+void ResultsDb::insert(const SweepDefinition& sweep, const std::vector<TrialRecord>& records) {
+  if (records.empty()) return;
+  const std::size_t n_columns = 4 + sweep.axes.size() + 2 + metric_column_names().size();
+  std::string sql = "INSERT INTO trials VALUES (?";
+  for (std::size_t i = 1; i < n_columns; ++i) sql += ", ?";
+  sql += ")";
+  Statement s = prepare(db_, sql);
+  if (!s) fail("cannot store trials");
+  exec("BEGIN IMMEDIATE");
+  try {
+    for (const TrialRecord& r : records) {
+      sqlite3_stmt* st = s.get();
+      int c = 1;
+      sqlite3_bind_int64(st, c++, r.trial);
+      sqlite3_bind_int64(st, c++, r.point);
+      sqlite3_bind_int64(st, c++, r.seed_index);
+      sqlite3_bind_int64(st, c++, static_cast<sqlite3_int64>(r.summary.seed));
+      for (std::size_t a = 0; a < sweep.axes.size(); ++a) {
+        const AxisValue& v = sweep.value(r.point, a);
+        switch (v.kind) {
+          case AxisValue::Kind::kNumber: sqlite3_bind_double(st, c++, v.number); break;
+          case AxisValue::Kind::kInteger:
+            sqlite3_bind_int64(st, c++, static_cast<sqlite3_int64>(v.number));
+            break;
+          case AxisValue::Kind::kString:
+            sqlite3_bind_text(st, c++, v.text.c_str(), -1, SQLITE_TRANSIENT);
+            break;
+          case AxisValue::Kind::kBool: sqlite3_bind_int(st, c++, v.flag ? 1 : 0); break;
+        }
+      }
+      sqlite3_bind_text(st, c++, r.summary.status.c_str(), -1, SQLITE_TRANSIENT);
+      if (r.summary.message.empty()) sqlite3_bind_null(st, c++);
+      else sqlite3_bind_text(st, c++, r.summary.message.c_str(), -1, SQLITE_TRANSIENT);
+      const bool measured = r.summary.status != "failed";   // a failed trial has no metrics
+      for (const auto& [name, value] : trial_metrics(r.summary)) {
+        if (measured && std::isfinite(value)) sqlite3_bind_double(st, c++, value);
+        else sqlite3_bind_null(st, c++);
+      }
+      if (sqlite3_step(st) != SQLITE_DONE) fail("cannot store trial " + std::to_string(r.trial));
+      sqlite3_reset(st);
+    }
+    exec("COMMIT");
+  } catch (...) {
+    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+    throw;
+  }
+}
+
+std::vector<std::string> ResultsDb::trial_columns() const {
+  Statement s = prepare(db_, "SELECT * FROM trials LIMIT 0");
+  if (!s) fail("cannot read the trials");
+  std::vector<std::string> names;
+  for (int c = 0; c < sqlite3_column_count(s.get()); ++c) names.push_back(sqlite3_column_name(s.get(), c));
+  return names;
+}
+
+void ResultsDb::for_each_trial(const std::function<void(const std::vector<DbValue>&)>& row) const {
+  Statement s = prepare(db_, "SELECT * FROM trials ORDER BY trial");
+  if (!s) fail("cannot read the trials");
+  const int n = sqlite3_column_count(s.get());
+  std::vector<DbValue> cells(static_cast<std::size_t>(n));
+  int rc;
+  while ((rc = sqlite3_step(s.get())) == SQLITE_ROW) {
+    for (int c = 0; c < n; ++c) {
+      DbValue& v = cells[static_cast<std::size_t>(c)];
+      switch (sqlite3_column_type(s.get(), c)) {
+        case SQLITE_NULL: v.kind = DbValue::Kind::kNull; break;
+        case SQLITE_INTEGER:
+        case SQLITE_FLOAT:
+          v.kind = DbValue::Kind::kNumber;
+          v.number = sqlite3_column_double(s.get(), c);
+          break;
+        default:
+          v.kind = DbValue::Kind::kText;
+          v.text = reinterpret_cast<const char*>(sqlite3_column_text(s.get(), c));
+          break;
+      }
+    }
+    row(cells);
+  }
+  if (rc != SQLITE_DONE) fail("cannot read the trials");
+}
+
+}  // namespace pamsim

@@ -1,0 +1,88 @@
+// results_db.h: a sweep's results in SQLite, one file per sweep.
+//   meta(key, value)   the sweep definition (canonical JSON, sweep.h), pamsim_version,
+//                      sweep_file, base_path, created_utc
+//   trials(trial INTEGER PRIMARY KEY, point, seed_index, seed, <one column per axis key>,
+//          status, message, <every metric of summary.json>; NULL where undefined, and all
+//          NULL for a trial that failed to run)
+// A new database is built under a temp name and renamed into place, so a half-made file never
+// exists. Results are committed in transactions (WAL journal, synchronous=FULL): a process
+// killed at any moment, or a power loss, loses at most the trials not yet committed, and the
+// trial primary key makes a repeated trial an error rather than a duplicate row.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sim/sweep/sweep.h"
+#include "sim/core/trial.h"
+
+struct sqlite3;
+
+namespace pamsim {
+
+// One finished trial, as stored.
+struct TrialRecord {
+  std::int64_t trial = 0;
+  std::int64_t point = 0;
+  std::int64_t seed_index = 0;
+  TrialSummary summary;   // summary.seed is the trial's seed
+};
+
+// A cell read back: NULL, a number or text.
+struct DbValue {
+  enum class Kind { kNull, kNumber, kText } kind = Kind::kNull;
+  double number = 0;
+  std::string text;
+};
+
+class ResultsDb {
+ public:
+  // Creates `path` for `sweep`; throws InputError if it exists or cannot be written.
+  static ResultsDb create(const std::string& path, const SweepDefinition& sweep);
+  // Opens `path` to finish `sweep`, as its only writer; throws InputError if it is missing,
+  // not a pamsim sweep database, holds a different sweep definition (naming what differs),
+  // or another process is writing to it.
+  static ResultsDb open_to_resume(const std::string& path, const SweepDefinition& sweep);
+  // Opens an existing sweep database to read it (export, report). Opened read-write so that a
+  // WAL left by a killed sweep is recovered; nothing else is written. Throws InputError if
+  // `path` is missing or not a sweep database.
+  static ResultsDb open_existing(const std::string& path);
+
+  ResultsDb(ResultsDb&& other) noexcept;
+  ResultsDb& operator=(ResultsDb&& other) noexcept;
+  ResultsDb(const ResultsDb&) = delete;
+  ResultsDb& operator=(const ResultsDb&) = delete;
+  ~ResultsDb();
+
+  const std::string& path() const { return path_; }
+  std::string meta(const std::string& key) const;   // "" if absent
+
+  // finished[t] is true for every trial already stored; `trials` is the sweep's count.
+  std::vector<bool> finished_trials(std::int64_t trials) const;
+  std::int64_t trial_count() const;
+  // Stores `records` in one transaction; `sweep` gives the axis values of their points.
+  void insert(const SweepDefinition& sweep, const std::vector<TrialRecord>& records);
+
+  // The trials table's columns, in order.
+  std::vector<std::string> trial_columns() const;
+  // Calls `row` for every trial in trial order with its cells (columns of trial_columns()).
+  void for_each_trial(const std::function<void(const std::vector<DbValue>&)>& row) const;
+
+ private:
+  ResultsDb(sqlite3* db, std::string path);
+  void exec(const std::string& sql) const;
+  [[noreturn]] void fail(const std::string& what) const;
+  void lock_for_writing();
+  void close();
+
+  sqlite3* db_ = nullptr;
+  std::string path_;
+  int writer_lock_fd_ = -1;   // holds an exclusive flock while this handle writes
+};
+
+// The metric columns of the trials table, in order (trial_metrics() of outputs.h).
+std::vector<std::string> metric_column_names();
+
+}  // namespace pamsim

@@ -1,0 +1,140 @@
+// sweep_runner.cc: see sweep_runner.h.
+#include "sim/sweep/sweep_runner.h"
+
+#include <chrono>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "pam_actuator/input_error.h"
+#include "sim/core/runner.h"
+#include "sim/io/scenario.h"
+#include "sim/core/trial.h"
+
+namespace pamsim {
+namespace {
+
+constexpr auto kProgressInterval = std::chrono::milliseconds(200);   // progress when idle
+
+// A worker's scenario and arm for the point it is on.
+class PointCache {
+ public:
+  explicit PointCache(const SweepDefinition& sweep) : sweep_(sweep) {}
+
+  // The scenario and arm of `point`, loading only what changed since the last point.
+  void move_to(std::int64_t point) {
+    if (point == point_) return;
+    point_ = -1;
+    Scenario next = load_scenario_text(sweep_.base_text, sweep_.base_path, sweep_.overrides(point));
+    if (!arm_ || !same_arm(next, scenario_)) arm_ = std::make_unique<ArmModel>(load_arm_for(next));
+    scenario_ = std::move(next);
+    point_ = point;
+  }
+  const Scenario& scenario() const { return scenario_; }
+  const ArmModel& arm() const { return *arm_; }
+
+ private:
+  const SweepDefinition& sweep_;
+  std::int64_t point_ = -1;
+  Scenario scenario_;
+  std::unique_ptr<ArmModel> arm_;
+};
+
+// A trial that could not run: status "failed" and why (the database stores no metrics).
+TrialSummary failed_summary(std::uint64_t seed, const std::string& why) {
+  TrialSummary s;
+  s.seed = seed;
+  s.status = "failed";
+  s.message = why;
+  return s;
+}
+
+TrialRecord run_one(const SweepDefinition& sweep, PointCache& cache, std::int64_t trial) {
+  TrialRecord record;
+  record.trial = trial;
+  record.point = trial / sweep.seeds;
+  record.seed_index = trial % sweep.seeds;
+  const std::uint64_t seed = sweep.seed_of(trial);
+  try {
+    cache.move_to(record.point);
+    record.summary = run_trial(cache.arm(), cache.scenario(), seed, false).summary;
+  } catch (const std::exception& e) {   // anything but a divergence (that is a status already)
+    record.summary = failed_summary(seed, e.what());
+  }
+  return record;
+}
+
+}  // namespace
+
+SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
+                         const SweepRunOptions& options) {
+  if (options.threads < 1) {
+    throw InputError("--threads must be >= 1, got " + std::to_string(options.threads));
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const std::int64_t total = sweep.trials();
+  const std::vector<bool> finished = db.finished_trials(total);
+  SweepRunResult result;
+  for (bool f : finished) result.already_done += f ? 1 : 0;
+
+  std::atomic<std::int64_t> next{0};
+  std::atomic<bool> abort{false};   // the writer failed: workers stop too
+  std::mutex mutex;
+  std::condition_variable finished_cv;
+  std::vector<TrialRecord> queue;
+  int workers_left = options.threads;
+
+  auto stopping = [&] {
+    return abort.load() || (options.stop && options.stop->load());
+  };
+  auto worker = [&] {
+    PointCache cache(sweep);
+    while (!stopping()) {
+      const std::int64_t t = next++;
+      if (t >= total) break;
+      if (finished[static_cast<std::size_t>(t)]) continue;
+      TrialRecord record = run_one(sweep, cache, t);
+      std::lock_guard<std::mutex> lock(mutex);
+      queue.push_back(std::move(record));
+      finished_cv.notify_one();   // commit it now: a kill loses only the trials still running
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    --workers_left;
+    finished_cv.notify_one();
+  };
+  std::vector<std::thread> pool;
+  for (int i = 0; i < options.threads; ++i) pool.emplace_back(worker);
+
+  // the writer: commit whatever has finished, until every worker is done
+  std::int64_t stored = result.already_done;
+  std::vector<TrialRecord> batch;
+  try {
+    for (bool last = false; !last;) {
+      {
+        std::unique_lock<std::mutex> lock(mutex);
+        finished_cv.wait_for(lock, kProgressInterval,
+                             [&] { return !queue.empty() || workers_left == 0; });
+        batch.swap(queue);
+        last = workers_left == 0;
+      }
+      db.insert(sweep, batch);
+      for (const TrialRecord& r : batch) result.diverged += r.summary.status != "ok" ? 1 : 0;
+      result.ran += static_cast<std::int64_t>(batch.size());
+      stored += static_cast<std::int64_t>(batch.size());
+      batch.clear();
+      if (options.on_progress) options.on_progress(stored);
+    }
+  } catch (...) {
+    abort = true;
+    for (auto& t : pool) t.join();
+    throw;
+  }
+  for (auto& t : pool) t.join();
+  result.interrupted = stored < total;
+  result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace pamsim

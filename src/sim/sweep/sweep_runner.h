@@ -1,0 +1,43 @@
+// sweep_runner.h: runs a sweep's unfinished trials on a pool of worker threads and streams
+// each result into the results database. Every worker owns its arm (mjModel, reloaded only
+// when a point changes the arm, see same_arm) and creates a fresh mjData and CVODE context
+// for each trial inside run_trial, so a trial's result depends only on its point and seed,
+// never on the thread that ran it or on the trials before it. The calling thread is the only
+// writer: as soon as trials finish it commits them (all that finished meanwhile in one
+// transaction), so memory holds only the trials waiting for that commit and a kill loses only
+// the trials still running.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+
+#include "sim/sweep/results_db.h"
+#include "sim/sweep/sweep.h"
+
+namespace pamsim {
+
+struct SweepRunOptions {
+  int threads = 1;
+  // Set (e.g. by a SIGINT handler) to stop: trials in flight finish and are committed,
+  // no new one starts.
+  const std::atomic<bool>* stop = nullptr;
+  // Called on the calling thread after each commit with the trials stored so far.
+  std::function<void(std::int64_t stored)> on_progress;
+};
+
+struct SweepRunResult {
+  std::int64_t already_done = 0;   // stored before this run (--resume)
+  std::int64_t ran = 0;            // run and stored now
+  std::int64_t diverged = 0;       // of those, status "diverged" or "failed"
+  bool interrupted = false;        // stopped before every trial was stored
+  double wall_time_s = 0;
+};
+
+// Runs every trial of `sweep` not yet in `db`. Trial failures (divergence, an exception in a
+// trial) are stored with their status and message; the sweep goes on. Throws InputError if
+// threads < 1, std::runtime_error if the database cannot be written.
+SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
+                         const SweepRunOptions& options);
+
+}  // namespace pamsim
