@@ -17,7 +17,7 @@
 
 #include "sim/core/pam_callback.h"
 #include "sim/core/runner.h"
-#include "sim/io/scenario.h"
+#include "sim/io/scenario_file.h"
 #include "sim/core/trial.h"
 
 namespace pamsim {
@@ -39,37 +39,57 @@ void report_steps(benchmark::State& state, long steps_per_iteration) {
 }
 
 
+// the ball held at rest at `pos`, as the trial's hold does it (trial.cc)
+void hold_at(const BoundHold& hold, mjData* d, const double pos[3]) {
+  double* q = d->qpos + hold.qpos;
+  q[0] = pos[0];
+  q[1] = pos[1];
+  q[2] = pos[2];
+  q[3] = 1.0;
+  q[4] = q[5] = q[6] = 0.0;
+  for (int k = 0; k < 6; ++k) d->qvel[hold.dof + k] = 0.0;
+}
+
+bool bodies_touch(const mjModel* m, const mjData* d, int a, int b) {
+  for (int i = 0; i < d->ncon; ++i) {
+    const int b1 = m->geom_bodyid[d->contact[i].geom1], b2 = m->geom_bodyid[d->contact[i].geom2];
+    if ((b1 == a && b2 == b) || (b1 == b && b2 == a)) return true;
+  }
+  return false;
+}
+
 void BM_BareMjStep(benchmark::State& state) {
   const Scenario sc = scenario_named("drop_mass.toml");
-  const ArmModel arm = load_arm_for(sc);
+  const TrialModel arm = load_trial_model(sc);
   const mjModel* m = arm.model.get();
   MjDataPtr data = make_data(m);
   mjData* d = data.get();
   const long n_steps = std::lround(sc.duration_s / sc.timestep_s);
+  const BoundHold& ball = arm.holds.at(0);
+  const double drop_time_s = sc.event("release")->when.at_s;
+  const int basket = mj_name2id(m, mjOBJ_BODY, "basket");
 
   for (auto _ : state) {
     // the trial's initial state: calibrated angle, fixed pressures, ball above the basket
     mj_resetData(m, d);
-    d->qpos[arm.shoulder_qpos] = arm.calibration.start_angle_rad;
-    for (int i = 0; i < kMuscleCount; ++i) {
-      d->userdata[pam_userdata_index(m, arm.actuator[i])] = kFixedPressurePa;
-    }
+    d->qpos[arm.joint.qpos] = sc.start_position;
+    for (std::size_t i = 0; i < arm.muscles.size(); ++i) d->userdata[i] = kFixedPressurePa;
     mj_forward(m, d);
-    const double* floor = d->site_xpos + 3 * arm.basket_floor_site;
+    const double* floor = d->site_xpos + 3 * ball.site;
     const double hold_pos[3] = {floor[0], floor[1],
-                                floor[2] + sc.drop_height_m + arm.ball_radius_m};
+                                floor[2] + sc.holds.at(0).height_m + ball.radius_m};
 
-    // hold until drop.time_s, then let the ball fall into the basket
+    // hold until the release, then let the ball fall into the basket
     for (long step = 0; step < n_steps; ++step) {
       const double t = step * sc.timestep_s;
-      if (!(sc.drop_enabled && t >= sc.drop_time_s - 1e-12)) hold_ball(arm, d, hold_pos);
+      if (!(t >= drop_time_s - 1e-12)) hold_at(ball, d, hold_pos);
       mj_step(m, d);
     }
-    benchmark::DoNotOptimize(d->qpos[arm.shoulder_qpos]);
+    benchmark::DoNotOptimize(d->qpos[arm.joint.qpos]);
   }
-  if (!std::isfinite(d->qpos[arm.shoulder_qpos]) || d->warning[mjWARN_BADQACC].number > 0) {
+  if (!std::isfinite(d->qpos[arm.joint.qpos]) || d->warning[mjWARN_BADQACC].number > 0) {
     state.SkipWithError("bare mj_step loop diverged");
-  } else if (!ball_touches_basket(arm, m, d)) {
+  } else if (!bodies_touch(m, d, ball.body, basket)) {
     state.SkipWithError("bare mj_step loop: the ball did not land in the basket");
   }
   report_steps(state, n_steps);
@@ -78,7 +98,7 @@ BENCHMARK(BM_BareMjStep)->Unit(benchmark::kMillisecond);
 
 void BM_TrialLoop(benchmark::State& state, const char* scenario_file) {
   const Scenario sc = scenario_named(scenario_file);
-  const ArmModel arm = load_arm_for(sc);
+  const TrialModel arm = load_trial_model(sc);
   TrialSummary summary;
   for (auto _ : state) {
     const TrialResult r = run_trial(arm, sc, sc.seed);
@@ -87,21 +107,22 @@ void BM_TrialLoop(benchmark::State& state, const char* scenario_file) {
       state.SkipWithError(("trial " + r.summary.status + ": " + r.summary.message).c_str());
       break;
     }
-    benchmark::DoNotOptimize(r.summary.min_angle_deg);
+    benchmark::DoNotOptimize(r.summary.metric("min_angle_deg"));
   }
-  report_steps(state, summary.steps);
+  const long steps = std::lround(summary.metric("steps"));
+  report_steps(state, steps);
 
   // the pneumatics' share: CVODE work per physics step (compare BM_PneumaticsStep)
-  const double steps = static_cast<double>(summary.steps > 0 ? summary.steps : 1);
-  state.counters["cvode_steps_per_step"] = static_cast<double>(summary.cvode_steps) / steps;
-  state.counters["rhs_evals_per_step"] = static_cast<double>(summary.cvode_rhs_evals) / steps;
+  const double per = static_cast<double>(steps > 0 ? steps : 1);
+  state.counters["cvode_steps_per_step"] = summary.metric("cvode_steps") / per;
+  state.counters["rhs_evals_per_step"] = summary.metric("cvode_rhs_evals") / per;
 }
 BENCHMARK_CAPTURE(BM_TrialLoop, passive, "drop_mass_passive.toml")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_TrialLoop, reflex, "drop_mass.toml")->Unit(benchmark::kMillisecond);
 
 void BM_TwentyTrials(benchmark::State& state) {
   const Scenario sc = scenario_named("drop_mass.toml");
-  const ArmModel arm = load_arm_for(sc);
+  const TrialModel arm = load_trial_model(sc);
   const int threads = static_cast<int>(state.range(0));
   for (auto _ : state) {
     const auto results = run_trials(arm, sc, kBatchTrials, threads);

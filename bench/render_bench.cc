@@ -20,6 +20,7 @@
 
 #include "sim/render/mp4_writer.h"
 #include "sim/core/runner.h"
+#include "sim/io/scenario_file.h"
 #include "sim/render/scene_renderer.h"
 #include "sim/render/trial_video.h"
 
@@ -38,7 +39,7 @@ std::string temp_mp4() {
 
 void BM_RenderTrial(benchmark::State& state, int width, int height, RenderQuality quality) {
   const Scenario sc = drop_mass();
-  const ArmModel arm = load_arm_for(sc);
+  const TrialModel arm = load_trial_model(sc);
   VideoOptions video;
   video.mp4_path = temp_mp4();
   video.width_px = width;
@@ -66,17 +67,17 @@ BENCHMARK_CAPTURE(BM_RenderTrial, 1280x720/default, 1280, 720, RenderQuality::kD
     ->MinTime(10.0);
 
 // the arm at its start angle (what is drawn costs about the same in every state)
-MjDataPtr start_state(const ArmModel& arm) {
+MjDataPtr start_state(const TrialModel& arm, const Scenario& sc) {
   MjDataPtr data = make_data(arm.model.get());
-  data->qpos[arm.shoulder_qpos] = arm.calibration.start_angle_rad;
+  data->qpos[arm.joint.qpos] = sc.start_position;
   mj_forward(arm.model.get(), data.get());
   return data;
 }
 
 void BM_DrawFrame(benchmark::State& state, int width, int height, RenderQuality quality) {
   const Scenario sc = drop_mass();
-  const ArmModel arm = load_arm_for(sc);
-  const MjDataPtr data = start_state(arm);
+  const TrialModel arm = load_trial_model(sc);
+  const MjDataPtr data = start_state(arm, sc);
   SceneRenderer renderer(arm.model.get(), arm.model_path,
                          SceneRenderOptions{width, height, quality, "side", GlBackend::kOsmesa});
   for (auto _ : state) {
@@ -97,8 +98,8 @@ BENCHMARK_CAPTURE(BM_DrawFrame, 1280x720/default, 1280, 720, RenderQuality::kDef
 void BM_EncodeFrame(benchmark::State& state, int width, int height, const char* preset) {
   // a rendered frame: the encoder's work depends on the picture
   const Scenario sc = drop_mass();
-  const ArmModel arm = load_arm_for(sc);
-  const MjDataPtr data = start_state(arm);
+  const TrialModel arm = load_trial_model(sc);
+  const MjDataPtr data = start_state(arm, sc);
   std::vector<unsigned char> rgb;
   {
     SceneRenderer renderer(arm.model.get(), arm.model_path,

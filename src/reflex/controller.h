@@ -1,16 +1,15 @@
-// controller.h: the interface between the co-simulation loop (src/sim) and a controller.
-// At every control tick (sim.control_hz, 100 Hz as in the paper) the loop hands the
-// controller the plant's true state; the controller samples its own sensors (with noise),
-// estimates, decides, and returns valve commands plus what it measured, for the log.
+// controller.h: the interface between the co-simulation loop (src/sim/core) and a controller.
+// At every control tick (sim.control_hz, 100 Hz as in the paper) the loop samples every
+// muscle's sensors (sensing.h) and hands the controller those readings alone, with the
+// pressures the scenario's schedules command at that time (the paper's top controller,
+// p_tp of Eq. (12)-(13)); the controller returns one valve command per muscle.
+// Muscles are indexed in the model's actuator order.
 #pragma once
 
-#include <array>
 #include <limits>
+#include <vector>
 
 namespace pamsim {
-
-enum Muscle : int { kAgonist = 0, kAntagonist = 1 };
-inline constexpr int kMuscleCount = 2;
 
 // Ground truth of one muscle at a control tick (what ideal sensors would read).
 struct MuscleTruth {
@@ -19,51 +18,63 @@ struct MuscleTruth {
   double length_m = 0.0;      // PAM length (the linear encoder's reading)
 };
 
-struct PlantSample {
-  double time_s = 0.0;
-  std::array<MuscleTruth, kMuscleCount> muscle{};
+// What one muscle's sensors read at a tick and what the model-based estimator makes of them
+// (sensing.h); NaN where not applicable.
+struct MuscleReading {
+  static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  double pressure_sensor_v = kNone;    // raw pressure sensor output [V]
+  double gauge_v = kNone;              // raw strain gauge output [V], Eq. (8)
+  double fiber_rate_m_s = kNone;       // raw fiber sensor: rate of length change [m/s]
+  double fiber_length_m = kNone;       // fiber rate integrated from the encoder at t = 0
+  double fiber_velocity_m_s = kNone;   // fiber rate, low-passed at reflex.lowpass_hz
+  double pressure_meas_pa = kNone;     // pressure as the controller believes it
+  double force_meas_n = kNone;         // f = dV / q, Eq. (9)
+  double length_est_m = kNone;         // Eq. (1) with d from inverting Eq. (3)/(10)
+  double velocity_est_m_s = kNone;     // Eq. (11), low-passed at reflex.lowpass_hz
 };
 
-// What the controller measured and estimated for one muscle; NaN where not applicable.
-struct MuscleTelemetry {
-  static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-  double pressure_sensor_v = kNone;   // raw pressure sensor output [V]
-  double gauge_v = kNone;             // raw strain gauge output [V], Eq. (8)
-  double fiber_rate = kNone;          // raw fiber sensor: rate of length change [m/s]
-  double pressure_meas_pa = kNone;    // pressure as the controller believes it
-  double force_meas_n = kNone;        // f = dV / q, Eq. (9)
-  double length_est_m = kNone;        // Eq. (1) with d from inverting Eq. (3)/(10)
-  double velocity_est_m_s = kNone;    // Eq. (11), filtered if configured
-  bool reflex_active = false;
-  double fiber_length_m = kNone;      // fiber rate integrated from the encoder at t = 0
+struct ControlInput {
+  double time_s = 0.0;
+  // false while an event has switched the controller off: it then passes p_tp through
+  bool enabled = true;
+  const std::vector<MuscleReading>* readings = nullptr;   // one per muscle
+  const std::vector<double>* p_tp_pa = nullptr;           // scheduled commands, gauge [Pa]
 };
 
 struct ControlOutput {
-  std::array<double, kMuscleCount> p_cmd_pa{};   // valve commands, gauge [Pa]
-  std::array<MuscleTelemetry, kMuscleCount> telemetry{};
+  std::vector<double> p_cmd_pa;       // valve commands, gauge [Pa]
+  std::vector<double> velocity_m_s;   // the velocity each muscle's control acted on (logged)
+  std::vector<char> reflex_active;    // 1 while the muscle's reflex window is open
+  void resize(int muscle_count) {
+    p_cmd_pa.assign(muscle_count, 0.0);
+    velocity_m_s.assign(muscle_count, 0.0);
+    reflex_active.assign(muscle_count, 0);
+  }
 };
 
 class Controller {
  public:
   virtual ~Controller() = default;
-  // Called once per control tick, in time order, starting at t = 0.
-  virtual ControlOutput update(const PlantSample& sample) = 0;
+  // Called once per control tick, in time order, starting at t = 0; `out` is sized by the
+  // caller (ControlOutput::resize) and every element is written.
+  virtual void update(const ControlInput& in, ControlOutput* out) = 0;
+  // Reflex trigger times per muscle so far (nullptr for a controller without reflexes).
+  virtual const std::vector<std::vector<double>>* trigger_times_s() const { return nullptr; }
 };
 
-// The top controller of the paper (Eq. (12)-(13)'s p_tp): holds goal pressures.
-class TopController final : public Controller {
+// Controller "none": the scheduled commands pass through unchanged; the velocity logged is
+// the model-based estimate. Sensors are still sampled by the loop, so the estimates are
+// logged (the papers' length-estimation and reaching experiments run without a reflex).
+class PassThroughController final : public Controller {
  public:
-  TopController(double p_goal_agonist_pa, double p_goal_antagonist_pa)
-      : goal_{p_goal_agonist_pa, p_goal_antagonist_pa} {}
-  ControlOutput update(const PlantSample&) override {
-    ControlOutput out;
-    out.p_cmd_pa = goal_;
-    return out;
+  void update(const ControlInput& in, ControlOutput* out) override {
+    const std::vector<MuscleReading>& readings = *in.readings;
+    for (std::size_t j = 0; j < readings.size(); ++j) {
+      out->p_cmd_pa[j] = (*in.p_tp_pa)[j];
+      out->velocity_m_s[j] = readings[j].velocity_est_m_s;
+      out->reflex_active[j] = 0;
+    }
   }
-  const std::array<double, kMuscleCount>& goal_pa() const { return goal_; }
-
- private:
-  std::array<double, kMuscleCount> goal_;
 };
 
 }  // namespace pamsim

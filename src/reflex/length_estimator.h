@@ -39,7 +39,7 @@ struct LengthEstimate {
 class LengthEstimator {
  public:
   // sample_period_s > 0 (dt of Eq. (11)); cutoffs >= 0. Asserted: validate() in
-  // reflex_controller.h checks the scenario keys before anything is built.
+  // sensing.h checks the scenario keys before anything is built.
   LengthEstimator(const SpringModel& spring, const StrainGaugeParams& gauge,
                   const LengthEstimatorParams& params, double sample_period_s);
 

@@ -20,7 +20,7 @@ namespace pamsim {
 class LowpassFilter {
  public:
   // cutoff_hz >= 0 (0 = off), sample_period_s > 0; both finite. Violations are internal
-  // errors (the scenario keys are checked by validate() in reflex_controller.h): asserted.
+  // errors (the scenario keys are checked by validate() in sensing.h): asserted.
   LowpassFilter(double cutoff_hz, double sample_period_s);
 
   // One sample in, one sample out. The first call returns its input.

@@ -4,7 +4,7 @@
 // and the linear encoder (ground truth: PlantSample's length, used only to calibrate the
 // fiber sensor at the start and logged by the simulation).
 //
-// Noise is drawn from a std::mt19937_64 the caller owns (the ReflexController seeds one per
+// Noise is drawn from a std::mt19937_64 the caller owns (the SensorSuite seeds one per
 // trial from the trial seed), so a trial is deterministic. Every sample() call draws exactly
 // one standard normal even when its noise level is 0, so the random stream, and therefore the
 // noise of the other sensors, does not depend on which noise levels a sweep sets to 0.
@@ -35,7 +35,7 @@
 
 namespace pamsim {
 
-// Scenario keys sensors.* (paper units, named). Checked by validate() in reflex_controller.h.
+// Scenario keys sensors.* (paper units, named). Checked by validate() in sensing.h.
 struct SensorConfig {
   double pressure_noise_mpa = 0.001;   // sensors.pressure_noise_MPa, std dev, >= 0
   double pressure_bias_mpa = 0.0;      // sensors.pressure_bias_MPa, constant offset, |.| < 1

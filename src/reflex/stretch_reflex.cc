@@ -67,11 +67,9 @@ double StretchReflex::update(double time_s, double velocity_m_s, bool may_trigge
   return dp;
 }
 
-std::array<double, kMuscleCount> reflex_commands(const std::array<double, kMuscleCount>& p_tp_pa,
-                                                 const std::array<double, kMuscleCount>& dp_pa,
-                                                 double p_max_pa) {
+PairValues reflex_commands(const PairValues& p_tp_pa, const PairValues& dp_pa, double p_max_pa) {
   // Eq. (12)-(13): own excitation up, the other muscle's inhibition down; valve range
-  std::array<double, kMuscleCount> p;
+  PairValues p;
   p[kAgonist] = p_tp_pa[kAgonist] + dp_pa[kAgonist] - dp_pa[kAntagonist];
   p[kAntagonist] = p_tp_pa[kAntagonist] + dp_pa[kAntagonist] - dp_pa[kAgonist];
   for (double& pj : p) pj = std::clamp(pj, 0.0, p_max_pa);

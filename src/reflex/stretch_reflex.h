@@ -29,8 +29,6 @@
 #include <string>
 #include <vector>
 
-#include "reflex/controller.h"
-
 namespace pamsim {
 
 enum class ReflexMode { kFollow, kLatch };
@@ -86,10 +84,12 @@ class StretchReflex {
   std::vector<double> trigger_times_s_;
 };
 
-// Eq. (12)-(13): commands [Pa] from goal pressures and the two reflexes' dp [Pa], each
-// clamped to [0, p_max_pa].
-std::array<double, kMuscleCount> reflex_commands(const std::array<double, kMuscleCount>& p_tp_pa,
-                                                 const std::array<double, kMuscleCount>& dp_pa,
-                                                 double p_max_pa);
+// The two muscles of an antagonistic pair, in the order of Eq. (12)-(13).
+enum PairRole : int { kAgonist = 0, kAntagonist = 1 };
+using PairValues = std::array<double, 2>;   // indexed by PairRole
+
+// Eq. (12)-(13): a pair's commands [Pa] from its goal pressures and the two reflexes' dp
+// [Pa], each clamped to [0, p_max_pa].
+PairValues reflex_commands(const PairValues& p_tp_pa, const PairValues& dp_pa, double p_max_pa);
 
 }  // namespace pamsim

@@ -32,7 +32,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // a falling-mass trial shape: rest at -36 deg, impact at 1 s, damped swing, reflex windows
 Trajectory synthetic_trajectory(double offset_deg, std::size_t rows = 301) {
   Trajectory tr;
-  tr.columns = trajectory_columns();
+  tr.columns = make_log_layout(true, {"ball"}, {"ago", "anta"}, true).columns;
   tr.values.assign(rows * tr.columns.size(), 0.0);
   auto set = [&](std::size_t r, const char* name, double v) {
     tr.values[r * tr.columns.size() + tr.column(name)] = v;
@@ -59,8 +59,7 @@ Trajectory synthetic_trajectory(double offset_deg, std::size_t rows = 301) {
 TrialResult synthetic_trial() {
   TrialResult r;
   r.summary.seed = 7;
-  r.summary.start_angle_deg = -36.0;
-  r.summary.impact_time_s = 1.0;
+  r.summary.metrics = {{"start_angle_deg", -36.0}, {"impact_time_s", 1.0}};
   r.trajectory = synthetic_trajectory(0.0);
   return r;
 }
@@ -139,8 +138,7 @@ TEST_F(PlotTest, AnglePlotWithoutImpactOrReflexOrAngle) {
   TrialResult r = synthetic_trial();
   r.summary.status = "diverged";
   r.summary.message = "CVODE failed at t = 1.2 s";
-  r.summary.impact_time_s = kNaN;
-  r.summary.start_angle_deg = kNaN;
+  r.summary.metrics = {{"start_angle_deg", kNaN}, {"impact_time_s", kNaN}};
   for (std::size_t row = 0; row < r.trajectory.rows(); ++row) {
     for (const char* name : {"reflex_ago", "reflex_anta", "angle_deg"}) {
       r.trajectory.values[row * r.trajectory.columns.size() + r.trajectory.column(name)] =
@@ -344,7 +342,7 @@ void write_run(const fs::path& dir, int trials, double offset_deg) {
     TrialResult r = synthetic_trial();
     r.trajectory = synthetic_trajectory(offset_deg + 0.5 * k);
     r.summary.seed = 1 + k;
-    r.summary.peak_drop_deg = 10.0 + k;
+    r.summary.metrics.push_back({"peak_drop_deg", 10.0 + k});
     summaries.push_back(r.summary);
     char name[32];
     std::snprintf(name, sizeof(name), "trial_%04d", k);

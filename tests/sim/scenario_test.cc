@@ -1,6 +1,6 @@
 // scenario_test.cc: every scenario key is validated with one clear message naming the file
 // and the key; unknown keys, broken files and broken models are refused.
-#include "sim/io/scenario.h"
+#include "sim/io/scenario_file.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -23,7 +23,7 @@ std::string error_of(const std::vector<std::string>& overrides,
                      const std::string& path = kScenario) {
   try {
     const Scenario sc = load_scenario(path, overrides);
-    load_arm_for(sc);
+    load_trial_model(sc);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -44,7 +44,7 @@ TEST(ScenarioTest, ShippedScenariosLoad) {
   const Scenario sc = load_scenario(kScenario);
   EXPECT_DOUBLE_EQ(sc.reflex.reflex.v_thr_mm_s, 70.0);
   EXPECT_DOUBLE_EQ(sc.reflex.reflex.k_MPa_s_per_mm, 1.0 / 800.0);
-  EXPECT_DOUBLE_EQ(sc.p_goal_agonist_pa, 0.4e6);
+  EXPECT_DOUBLE_EQ(sc.muscle("agonist")->command.at(0.0), 0.4e6);
 }
 
 TEST(ScenarioTest, OverridesTakeEffect) {

@@ -11,6 +11,7 @@
 
 #include "cli_util.h"
 #include "pam_actuator/input_error.h"
+#include "sim/io/scenario_file.h"
 #include "sim/cli/progress.h"
 #include "sim/sweep/report.h"
 #include "sim/sweep/results_db.h"
@@ -151,7 +152,7 @@ TEST_F(SweepTest, DatabaseRefusesDuplicateTrialsAndKeepsTheBatchAtomic) {
   a.point = 0;
   a.seed_index = 1;
   a.summary.seed = 2;
-  a.summary.peak_drop_deg = 7.5;
+  a.summary.metrics = {{"peak_drop_deg", 7.5}};
   db.insert(s, {a});
   EXPECT_EQ(db.trial_count(), 1);
   pamsim::TrialRecord b = a;
@@ -178,11 +179,12 @@ pamsim::SweepSummary synthetic_summary(const fs::path& dir) {
     r.point = t / 3;
     r.seed_index = t % 3;
     r.summary.seed = s.seed_of(t);
-    r.summary.peak_drop_deg = 10.0 + static_cast<double>(r.point) + static_cast<double>(r.seed_index);
-    r.summary.mistrips = r.point == 0 ? 1 : 0;
     // recovery 1 + p s, but point 1 never recovers in its first seed
-    r.summary.recovery_time_s = r.point == 1 && r.seed_index == 0
-                                    ? std::nan("") : 1.0 + static_cast<double>(r.point);
+    r.summary.metrics = {
+        {"peak_drop_deg", 10.0 + static_cast<double>(r.point) + static_cast<double>(r.seed_index)},
+        {"mistrips", r.point == 0 ? 1.0 : 0.0, true},
+        {"recovery_time_s",
+         r.point == 1 && r.seed_index == 0 ? std::nan("") : 1.0 + static_cast<double>(r.point)}};
     if (r.point == 5 && r.seed_index == 2) r.summary.status = "diverged";
     records.push_back(r);
   }

@@ -1,5 +1,6 @@
 // trial_test.cc: the co-simulated arm: static equilibrium at the calibrated start angle,
 // the passive drop's events, convergence in the timestep, and determinism across threads.
+#include "sim/io/scenario_file.h"
 #include "sim/core/trial.h"
 
 #include <gtest/gtest.h>
@@ -18,7 +19,7 @@ const std::string kPassive = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_m
 
 TrialResult run_passive(const std::vector<std::string>& overrides, std::uint64_t seed = 1) {
   const Scenario sc = load_scenario(kPassive, overrides);
-  const ArmModel arm = load_arm_for(sc);
+  const TrialModel arm = load_trial_model(sc);
   return run_trial(arm, sc, seed);
 }
 
@@ -42,7 +43,7 @@ TEST(TrialTest, RestsAtTheCalibratedStartAngle) {
   for (std::size_t row = 0; row < tr.rows(); ++row) {
     EXPECT_NEAR(tr.at(row, angle), -36.0, 0.5) << "row " << row;
   }
-  EXPECT_NEAR(r.summary.final_angle_deg, -36.0, 0.5);
+  EXPECT_NEAR(r.summary.metric("final_angle_deg"), -36.0, 0.5);
 }
 
 TEST(TrialTest, PassiveDropLandsDropsAndSettlesHoldingTheMass) {
@@ -51,15 +52,15 @@ TEST(TrialTest, PassiveDropLandsDropsAndSettlesHoldingTheMass) {
   ASSERT_EQ(s.status, "ok") << s.message;
 
   // the mass lands after falling 14 cm: sqrt(2 h / g) = 0.169 s after the release
-  EXPECT_NEAR(s.start_angle_deg, -36.0, 0.5);
-  EXPECT_NEAR(s.impact_time_s - 1.0, std::sqrt(2 * 0.14 / 9.81), 0.01);
+  EXPECT_NEAR(s.metric("start_angle_deg"), -36.0, 0.5);
+  EXPECT_NEAR(s.metric("impact_time_s") - 1.0, std::sqrt(2 * 0.14 / 9.81), 0.01);
 
   // the arm drops after the impact, then comes back up and settles below its start
-  EXPECT_GT(s.min_angle_time_s, s.impact_time_s);
-  EXPECT_LT(s.min_angle_deg, s.start_angle_deg - 3.0);
-  EXPECT_GT(s.final_angle_deg, s.min_angle_deg + 3.0);
-  EXPECT_LT(s.final_angle_deg, s.start_angle_deg);
-  EXPECT_NEAR(s.peak_drop_deg, s.start_angle_deg - s.min_angle_deg, 1e-9);
+  EXPECT_GT(s.metric("min_angle_time_s"), s.metric("impact_time_s"));
+  EXPECT_LT(s.metric("min_angle_deg"), s.metric("start_angle_deg") - 3.0);
+  EXPECT_GT(s.metric("final_angle_deg"), s.metric("min_angle_deg") + 3.0);
+  EXPECT_LT(s.metric("final_angle_deg"), s.metric("start_angle_deg"));
+  EXPECT_NEAR(s.metric("peak_drop_deg"), s.metric("start_angle_deg") - s.metric("min_angle_deg"), 1e-9);
 
   // settled: the last 0.5 s hardly move, and the mass is still in the basket (it rides
   // about 0.3 m below the shoulder at 1.0 m)
@@ -85,12 +86,12 @@ TEST(TrialTest, ConvergesAsTheTimestepHalves) {
   for (double t : {1.15, 1.2, 1.25, 1.3, 1.4, 1.6, 1.9}) {
     EXPECT_NEAR(angle_at(coarse.trajectory, t), angle_at(fine.trajectory, t), 0.25) << "t " << t;
   }
-  EXPECT_NEAR(coarse.summary.min_angle_deg, fine.summary.min_angle_deg, 0.25);
+  EXPECT_NEAR(coarse.summary.metric("min_angle_deg"), fine.summary.metric("min_angle_deg"), 0.25);
 }
 
 TEST(TrialTest, SameSeedGivesBitIdenticalTrajectories) {
   const Scenario sc = load_scenario(kPassive, {"sim.duration_s=1.5", "reflex.enabled=true"});
-  const ArmModel arm = load_arm_for(sc);
+  const TrialModel arm = load_trial_model(sc);
   const TrialResult a = run_trial(arm, sc, 7);
   const TrialResult b = run_trial(arm, sc, 7);
   ASSERT_EQ(a.trajectory.values.size(), b.trajectory.values.size());
@@ -100,7 +101,7 @@ TEST(TrialTest, SameSeedGivesBitIdenticalTrajectories) {
 
 TEST(TrialTest, EightTrialsOnTwoThreadsEqualOneThread) {
   const Scenario sc = load_scenario(kPassive, {"sim.duration_s=1.4", "reflex.enabled=true"});
-  const ArmModel arm = load_arm_for(sc);
+  const TrialModel arm = load_trial_model(sc);
   const auto one = run_trials(arm, sc, 8, 1);
   const auto two = run_trials(arm, sc, 8, 2);
   ASSERT_EQ(one.size(), 8u);
@@ -125,8 +126,8 @@ class RecordingObserver : public TrialObserver {
   double next_observation_time_s() const override { return period_s_ * times_s.size(); }
   void observe(const TrialSnapshot& snapshot) override {
     times_s.push_back(snapshot.time_s);
-    angles_deg.push_back(snapshot.angle_deg);
-    any_reflex = any_reflex || snapshot.reflex_active[kAgonist];
+    angles_deg.push_back(snapshot.joint_position);
+    any_reflex = any_reflex || (*snapshot.reflex_active)[0];
   }
   std::vector<double> times_s;
   std::vector<double> angles_deg;
@@ -138,7 +139,7 @@ class RecordingObserver : public TrialObserver {
 
 TEST(TrialTest, ObserverSeesItsTimesAndChangesNothing) {
   const Scenario sc = load_scenario(kPassive, {"sim.duration_s=1.5", "reflex.enabled=true"});
-  const ArmModel arm = load_arm_for(sc);
+  const TrialModel arm = load_trial_model(sc);
   RecordingObserver observer(0.1);
   TrialOptions options;
   options.observer = &observer;

@@ -1,7 +1,7 @@
-// cmd_calibrate.cc: `pamsim calibrate SCENARIO.toml [--angle-deg A]
-// [--antagonist-deformation-mm D] [-o FILE]`: solves the arm's line lengths for the
-// scenario's model, PAMs and goal pressures (see calibration.h) and writes them (by default
-// to the scenario's model.calibration file).
+// calibrate.cc: `pamsim calibrate SCENARIO.toml [--angle-deg A]
+// [--antagonist-deformation-mm D] [-o FILE]`: solves the line lengths of the scenario's
+// first reflex pair (its agonist and antagonist) for its model, PAMs and pressures at t = 0
+// (see core/calibration.h) and writes them (by default to the scenario's model.calibration).
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -13,7 +13,8 @@
 #include "sim/core/calibration.h"
 #include "sim/cli/commands.h"
 #include "sim/io/config_reader.h"
-#include "sim/io/scenario.h"
+#include "sim/io/calibration_file.h"
+#include "sim/io/scenario_file.h"
 
 namespace pamsim {
 namespace {
@@ -32,22 +33,26 @@ void calibrate(const CalibrateOptions& opt) {
     throw InputError("--antagonist-deformation-mm must be > 0, got " +
                      format_value(opt.antagonist_deformation_mm));
   }
-  const Scenario sc = load_scenario(opt.scenario, opt.overrides);
-  ArmModel arm = load_arm_model(sc.model_file, sc.pam, ArmCalibration{}, sc.drop_mass_kg);
+  const Scenario sc = load_scenario_for_calibration(opt.scenario, opt.overrides);
+  const TrialModel model = load_trial_model(sc);
+  if (model.pairs.empty()) throw InputError(sc.path + ": reflex.pairs: calibrate needs a pair");
+  const ReflexPair pair = model.pairs.front();
 
   CalibrationRequest req;
   req.start_angle_rad = units::deg_to_rad(opt.angle_deg);
-  req.pressure_agonist_pa = sc.p_goal_agonist_pa;
-  req.pressure_antagonist_pa = sc.p_goal_antagonist_pa;
+  req.pressure_agonist_pa = sc.muscles[model.muscles[pair.agonist].spec].command.at(0.0);
+  req.pressure_antagonist_pa = sc.muscles[model.muscles[pair.antagonist].spec].command.at(0.0);
   req.antagonist_deformation_m = units::mm_to_m(opt.antagonist_deformation_mm);
-  const ArmCalibration c = solve_calibration(arm, req);
+  const ArmCalibration c = solve_calibration(model, sc, pair, req);
 
   const std::string out = opt.out.empty() ? sc.calibration_file : opt.out;
+  if (out.empty()) throw InputError(sc.path + ": model.calibration is not set; give -o FILE");
   write_file_atomically(out, calibration_to_toml(c, "pamsim calibrate " + opt.scenario));
-  std::cout << "gravity torque at " << opt.angle_deg << " deg: " << c.gravity_torque_nm
-            << " N m\nagonist line: " << units::m_to_mm(c.line_length_m[kAgonist])
-            << " mm\nantagonist line: " << units::m_to_mm(c.line_length_m[kAntagonist])
-            << " mm\nwritten to " << out << "\n";
+  std::cout << "gravity torque at " << opt.angle_deg << " deg: " << c.gravity_torque_nm << " N m\n";
+  for (const CalibratedLine& line : c.lines) {
+    std::cout << line.actuator << " line: " << units::m_to_mm(line.line_length_m) << " mm\n";
+  }
+  std::cout << "written to " << out << "\n";
 }
 
 }  // namespace

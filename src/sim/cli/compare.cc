@@ -1,4 +1,4 @@
-// cmd_compare.cc: `pamsim compare DIR_A DIR_B [-o FILE.png] [--label-a A --label-b B]`:
+// compare.cc: `pamsim compare DIR_A DIR_B [-o FILE.png] [--label-a A --label-b B]`:
 // two runs of `pamsim run` (e.g. the reflex with the model vs with the fiber sensor, the
 // paper's Fig. 9) as angle bands on one plot, and their metrics side by side on stdout.
 // A DIR is either a repeated run (DIR/summary.json with "metrics", DIR/trial_*/trajectory.csv)

@@ -1,4 +1,4 @@
-// cmd_estimate.cc: `pamsim estimate --params FILE --pressure-MPa P --force-N F [--json]`,
+// estimate.cc: `pamsim estimate --params FILE --pressure-MPa P --force-N F [--json]`,
 // length estimation from pressure and force: d by inverting Eq. (3)-(5), l = l_n + d
 // with l_n from Eq. (2) (Eq. (1) of seeds/000).
 #include <CLI/CLI.hpp>

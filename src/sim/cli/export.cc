@@ -1,4 +1,4 @@
-// cmd_export.cc: `pamsim export DB --csv FILE [--timing]`: a sweep database as CSV, one row
+// export.cc: `pamsim export DB --csv FILE [--timing]`: a sweep database as CSV, one row
 // per trial in trial order, the columns of the trials table (results_db.h), streamed to a
 // temp file and renamed into place. Numbers are written in their shortest exact form,
 // missing values as empty cells. The per-run timing metrics (wall_time_s, realtime_factor)

@@ -1,4 +1,4 @@
-// cmd_fit.cc: `pamsim fit --model eq3|eq4|eq5 TENSILE.csv [--json] [-o PARAMS.toml]`,
+// fit.cc: `pamsim fit --model eq3|eq4|eq5 TENSILE.csv [--json] [-o PARAMS.toml]`,
 // the least-squares identification of seeds/000 Sec. II-B on a tensile CSV file.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-// cmd_render.cc: `pamsim render SCENARIO.toml [--set key=value ...] [-o FILE.mp4]
+// render.cc: `pamsim render SCENARIO.toml [--set key=value ...] [-o FILE.mp4]
 // [--png-dir DIR] [--width W] [--height H] [--fps F] [--quality fast|default] [--camera NAME]
 // [--backend osmesa|egl] [--plot]`: runs the scenario's trial (its own seed) and renders it
 // headlessly while it runs (TrialVideo): H.264 MP4 (default renders/<scenario>/<scenario>.mp4)
@@ -12,6 +12,7 @@
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/core/runner.h"
+#include "sim/io/scenario_file.h"
 #include "sim/render/trial_video.h"
 
 namespace pamsim {
@@ -36,11 +37,11 @@ void render(RenderCommandOptions opt) {
   }
   validate_video_options(video, "-o");
   const Scenario sc = load_scenario(opt.scenario, opt.overrides);
-  const ArmModel arm = load_arm_for(sc);
+  const TrialModel model = load_trial_model(sc);
 
   // the trial, rendered as it runs; the time includes setting up GL and the encoder
   const auto start = std::chrono::steady_clock::now();
-  const RenderedTrial r = run_rendered_trial(arm, sc, sc.seed, video, false);
+  const RenderedTrial r = run_rendered_trial(model, sc, sc.seed, video, false);
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

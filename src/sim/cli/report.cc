@@ -1,4 +1,4 @@
-// cmd_report.cc: `pamsim report DB [--metric NAME] [--out DIR]`: reads a sweep database and
+// report.cc: `pamsim report DB [--metric NAME] [--out DIR]`: reads a sweep database and
 // writes, in DIR (default: the database's folder):
 //   points.csv                per point: axis values, mean/std/min/max of every metric
 //   heatmap_mistrip_rate.png, heatmap_peak_drop_deg.png, heatmap_recovery_time_s.png

@@ -1,4 +1,4 @@
-// cmd_run.cc: `pamsim run SCENARIO.toml [--set key=value ...] [--out DIR] [--trials N]
+// run.cc: `pamsim run SCENARIO.toml [--set key=value ...] [--out DIR] [--trials N]
 // [--threads T] [--video FILE.mp4]`: one trial (outputs in DIR, and with --video its video,
 // rendered as in `pamsim render` with the default settings) or N trials (DIR/trial_<seed>/
 // each, plus the aggregate DIR/summary.json and the angle band plot; no video).
@@ -14,6 +14,7 @@
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
 #include "sim/core/runner.h"
+#include "sim/io/scenario_file.h"
 #include "sim/render/scene_renderer.h"
 #include "sim/render/trial_video.h"
 
@@ -59,23 +60,23 @@ void run(const RunOptions& opt) {
     validate_video_options(video, "--video");
   }
   const Scenario sc = load_scenario(opt.scenario, opt.overrides);
-  const ArmModel arm = load_arm_for(sc);
-  if (!opt.video.empty()) check_camera(arm.model.get(), arm.model_path, video.camera);
+  const TrialModel model = load_trial_model(sc);
+  if (!opt.video.empty()) check_camera(model.model.get(), model.model_path, video.camera);
   const std::string out = opt.out.empty() ? default_out_dir(opt.scenario) : opt.out;
   make_directories(out);   // only once every input is known to be good
   const int threads = opt.threads > 0 ? opt.threads : default_thread_count();
   std::vector<TrialResult> results;
   if (opt.video.empty()) {
-    results = run_trials(arm, sc, opt.trials, threads);
+    results = run_trials(model, sc, opt.trials, threads);
   } else {
     // the same trial as run_trials' first, watched by the renderer
-    results.push_back(run_rendered_trial(arm, sc, sc.seed, video, true).trial);
+    results.push_back(run_rendered_trial(model, sc, sc.seed, video, true).trial);
   }
 
   if (opt.trials == 1) {
     const TrialResult& r = results.front();
     write_trial_outputs(out, r, sc);
-    write_angle_plot(out + "/angle.png", r, sc);
+    write_angle_plot(out + "/" + trial_plot_name(r.trajectory), r, sc);
     std::cout << summary_to_json(r.summary, sc).dump(2) << "\n";
   } else {
     std::vector<TrialSummary> summaries;

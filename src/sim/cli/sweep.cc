@@ -1,4 +1,4 @@
-// cmd_sweep.cc: `pamsim sweep SWEEP.toml [--threads N] [--db FILE] [--resume] [--out DIR]`:
+// sweep.cc: `pamsim sweep SWEEP.toml [--threads N] [--db FILE] [--resume] [--out DIR]`:
 // validates the sweep file and every point's scenario, then runs the trials into the results
 // database (default DIR/sweep.db, DIR default renders/<sweep name>). SIGINT or SIGTERM stops
 // it cleanly (running trials finish and are stored; exit 130 or 143); --resume finishes the

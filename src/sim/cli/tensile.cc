@@ -1,4 +1,4 @@
-// cmd_tensile.cc: `pamsim tensile --params FILE ... -o FILE.csv`, the virtual static
+// tensile.cc: `pamsim tensile --params FILE ... -o FILE.csv`, the virtual static
 // tensile test of seeds/000 Sec. II-B on a PAM parameter file, written as CSV.
 #include <CLI/CLI.hpp>
 

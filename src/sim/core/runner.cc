@@ -11,25 +11,12 @@
 
 namespace pamsim {
 
-ArmModel load_arm_for(const Scenario& sc) {
-  const ArmCalibration calibration = load_calibration(sc.calibration_file);
-  ArmModel arm = load_arm_model(sc.model_file, sc.pam, calibration, sc.drop_mass_kg);
-  arm.model->opt.timestep = sc.timestep_s;   // the scenario's step, not the MJCF's
-  return arm;
-}
-
-bool same_arm(const Scenario& a, const Scenario& b) {
-  return a.model_file == b.model_file && a.agonist_params == b.agonist_params &&
-         a.antagonist_params == b.antagonist_params && a.calibration_file == b.calibration_file &&
-         a.drop_mass_kg == b.drop_mass_kg && a.timestep_s == b.timestep_s;
-}
-
 int default_thread_count() {
   const unsigned n = std::thread::hardware_concurrency();
   return n == 0 ? 1 : static_cast<int>(n);
 }
 
-std::vector<TrialResult> run_trials(const ArmModel& arm, const Scenario& sc, int trials,
+std::vector<TrialResult> run_trials(const TrialModel& model, const Scenario& sc, int trials,
                                     int threads, bool keep_trajectory) {
   if (trials < 1) throw InputError("--trials must be >= 1, got " + std::to_string(trials));
   if (threads < 1) throw InputError("--threads must be >= 1, got " + std::to_string(threads));
@@ -42,7 +29,7 @@ std::vector<TrialResult> run_trials(const ArmModel& arm, const Scenario& sc, int
   auto worker = [&] {
     for (int k = next++; k < trials; k = next++) {
       try {
-        results[k] = run_trial(arm, sc, sc.seed + static_cast<std::uint64_t>(k), keep_trajectory);
+        results[k] = run_trial(model, sc, sc.seed + static_cast<std::uint64_t>(k), keep_trajectory);
       } catch (...) {
         std::lock_guard<std::mutex> lock(failure_mutex);
         if (!failure) failure = std::current_exception();

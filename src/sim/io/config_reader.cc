@@ -146,6 +146,64 @@ std::string ConfigReader::get_path(const std::string& key, const std::string& fa
   return directory() + "/" + value;
 }
 
+std::vector<std::string> ConfigReader::get_string_list(const std::string& key,
+                                                     const std::vector<std::string>& fallback) {
+  read_.insert(key);
+  const toml::node* n = find(key);
+  if (!n) return fallback;
+  const toml::array* a = n->as_array();
+  if (!a) fail(key, "must be a list of strings");
+  std::vector<std::string> out;
+  for (const toml::node& item : *a) {
+    if (!item.is_string()) fail(key, "must be a list of strings");
+    out.push_back(*item.value<std::string>());
+  }
+  return out;
+}
+
+std::vector<double> ConfigReader::get_double_list(const std::string& key,
+                                                  const std::vector<double>& fallback) {
+  read_.insert(key);
+  const toml::node* n = find(key);
+  if (!n) return fallback;
+  const toml::array* a = n->as_array();
+  if (!a) fail(key, "must be a list of numbers");
+  std::vector<double> out;
+  for (const toml::node& item : *a) {
+    const std::optional<double> v = item.value<double>();
+    if (!v || item.is_boolean()) fail(key, "must be a list of numbers");
+    check(std::isfinite(*v), key, "must hold finite numbers, got " + format_value(*v));
+    out.push_back(*v);
+  }
+  return out;
+}
+
+std::vector<std::string> ConfigReader::child_keys(const std::string& table) const {
+  const toml::node* n = table.empty() ? &doc_ : find(table);
+  std::vector<std::string> keys;
+  if (!n || !n->is_table()) return keys;
+  for (const auto& [k, v] : *n->as_table()) keys.emplace_back(k.str());
+  return keys;
+}
+
+std::vector<std::string> ConfigReader::leaf_keys() const {
+  std::vector<std::string> leaves;
+  collect_leaves(doc_, "", &leaves);
+  return leaves;
+}
+
+bool ConfigReader::is_table(const std::string& key) const {
+  const toml::node* n = find(key);
+  return n && n->is_table();
+}
+
+bool ConfigReader::overridden(const std::string& key) const {
+  for (const std::string& o : overridden_) {
+    if (o == key || o.rfind(key + ".", 0) == 0) return true;
+  }
+  return false;
+}
+
 const toml::node* ConfigReader::raw(const std::string& key) {
   const toml::node* n = find(key);
   if (n && n->is_table()) {

@@ -33,8 +33,20 @@ class ConfigReader {
   std::string require_string(const std::string& key);
   // A path value, resolved relative to the folder of the file that holds the document.
   std::string get_path(const std::string& key, const std::string& fallback);
+  // A list of strings or of finite numbers (a single value is not a list).
+  std::vector<std::string> get_string_list(const std::string& key,
+                                           const std::vector<std::string>& fallback);
+  std::vector<double> get_double_list(const std::string& key, const std::vector<double>& fallback);
   // A table of tables or values the caller interprets itself (marks the whole subtree read).
   const toml::node* raw(const std::string& key);
+  // The names of a table's entries, in the document's order; empty if `table` is not one
+  // ("" for the top level). Marks nothing read.
+  std::vector<std::string> child_keys(const std::string& table) const;
+  bool is_table(const std::string& key) const;
+  // Every value's dotted key (tables descended into, arrays are values).
+  std::vector<std::string> leaf_keys() const;
+  // True if the key (or a key under it) came from a --set override.
+  bool overridden(const std::string& key) const;
 
   // The document with the overrides applied (to write it back out, e.g. a sweep's best setting).
   const toml::table& document() const { return doc_; }

@@ -8,16 +8,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/io/scenario.h"
+#include "sim/core/scenario.h"
 #include "sim/core/trial.h"
 
 namespace pamsim {
-
-// The numeric metrics of a summary by their public names (summary.json, the sweep database),
-// NaN where the event did not happen. Timing metrics (wall_time_s, realtime_factor) vary from
-// run to run; is_timing_metric() names them.
-std::vector<std::pair<std::string, double>> trial_metrics(const TrialSummary& summary);
-bool is_timing_metric(const std::string& name);
 
 std::string trajectory_to_csv(const Trajectory& trajectory);
 nlohmann::json summary_to_json(const TrialSummary& summary, const Scenario& scenario);

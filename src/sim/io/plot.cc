@@ -28,10 +28,10 @@ namespace fs = std::filesystem;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // colours: agonist red, antagonist blue (lines and their reflex windows); bands cycle
-constexpr const char* kAgoColour = "#c0392b";
-constexpr const char* kAntaColour = "#2166ac";
-constexpr const char* kAgoShade = "#f4a582";
-constexpr const char* kAntaShade = "#92c5de";
+// per muscle, in model order (the arm's agonist red, antagonist blue), then repeating
+constexpr const char* kMuscleColour[] = {"#c0392b", "#2166ac", "#1b7837", "#762a83", "#e08214"};
+constexpr const char* kMuscleShade[] = {"#f4a582", "#92c5de", "#a6dba0", "#c2a5cf", "#fdb863"};
+constexpr std::size_t kPalette = 5;
 constexpr const char* kBandColours[] = {"#2166ac", "#c0392b", "#1b9e77", "#7570b3",
                                         "#d95f02", "#e7298a"};
 
@@ -336,7 +336,7 @@ BandSeries angle_band(const std::vector<const Trajectory*>& trials, std::string 
   b.max.assign(rows, kNaN);
   const std::size_t time_col = trials.front()->column("time_s");
   std::vector<std::size_t> angle_col;
-  for (const Trajectory* t : trials) angle_col.push_back(t->column("angle_deg"));
+  for (const Trajectory* t : trials) angle_col.push_back(t->column(joint_column(*t)));
 
   // per row, over the trials where the angle is finite
   for (std::size_t r = 0; r < rows; ++r) {
@@ -360,28 +360,64 @@ BandSeries angle_band(const std::vector<const Trajectory*>& trials, std::string 
   return b;
 }
 
+std::string joint_column(const Trajectory& tr) {
+  for (const char* name : {"angle_deg", "position_mm"}) {
+    if (tr.has_column(name)) return name;
+  }
+  throw std::out_of_range("no trajectory column angle_deg or position_mm");
+}
+
+std::string trial_plot_name(const Trajectory& tr) {
+  return tr.has_column("position_mm") && !tr.has_column("angle_deg") ? "position.png" : "angle.png";
+}
+
+namespace {
+
+// the muscles' labels, from their p_cmd_<m>_MPa columns
+std::vector<std::string> muscle_labels(const Trajectory& tr) {
+  std::vector<std::string> labels;
+  const std::string prefix = "p_cmd_", suffix = "_MPa";
+  for (const std::string& c : tr.columns) {
+    if (c.size() > prefix.size() + suffix.size() && c.rfind(prefix, 0) == 0 &&
+        c.compare(c.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      labels.push_back(c.substr(prefix.size(), c.size() - prefix.size() - suffix.size()));
+    }
+  }
+  return labels;
+}
+
+}  // namespace
+
 void write_angle_plot(const std::string& png_path, const TrialResult& trial,
                       const Scenario& scenario) {
   const Trajectory& tr = trial.trajectory;
   const TrialSummary& sum = trial.summary;
   if (tr.rows() == 0) throw std::runtime_error(png_path + ": no trajectory rows to plot");
 
-  // the columns drawn
+  // the columns drawn: the joint, each muscle's command and chamber pressure and reflex
+  const std::string joint = joint_column(tr);
+  const bool hinge = joint == "angle_deg";
   const std::vector<double> t = column_values(tr, "time_s");
-  const std::vector<double> angle = column_values(tr, "angle_deg");
-  const char* pressure_names[] = {"p_cmd_ago_MPa", "p_ago_MPa", "p_cmd_anta_MPa", "p_anta_MPa"};
+  const std::vector<double> q = column_values(tr, joint);
+  const std::vector<std::string> labels = muscle_labels(tr);
   std::vector<std::vector<double>> pressure;
-  for (const char* name : pressure_names) pressure.push_back(column_values(tr, name));
-  const auto ago_windows = windows(t, column_values(tr, "reflex_ago"));
-  const auto anta_windows = windows(t, column_values(tr, "reflex_anta"));
+  std::vector<std::vector<std::pair<double, double>>> reflex;
+  for (const std::string& m : labels) {
+    pressure.push_back(column_values(tr, "p_cmd_" + m + "_MPa"));
+    pressure.push_back(column_values(tr, "p_" + m + "_MPa"));
+    reflex.push_back(tr.has_column("reflex_" + m) ? windows(t, column_values(tr, "reflex_" + m))
+                                                  : std::vector<std::pair<double, double>>{});
+  }
 
-  // data: time, angle, the four pressures
+  // data: time, the joint, then command and chamber pressure per muscle
   GnuplotJob job;
   job.width_px = kAnglePlotWidthPx;
   job.height_px = kAnglePlotHeightPx;
-  std::string dat = "# time_s angle_deg p_cmd_ago_MPa p_ago_MPa p_cmd_anta_MPa p_anta_MPa\n";
+  std::string dat = "# time_s " + joint;
+  for (const std::string& m : labels) dat += " p_cmd_" + m + "_MPa p_" + m + "_MPa";
+  dat += "\n";
   for (std::size_t r = 0; r < t.size(); ++r) {
-    dat += num(t[r]) + " " + num(angle[r]);
+    dat += num(t[r]) + " " + num(q[r]);
     for (const auto& p : pressure) dat += " " + num(p[r]);
     dat += "\n";
   }
@@ -398,38 +434,37 @@ void write_angle_plot(const std::string& png_path, const TrialResult& trial,
     << "set lmargin at screen 0.08\nset rmargin at screen 0.97\n"
     << xrange_line(t) << "set grid\nset key top right box opaque\n";
 
-  // top panel: angle, impact, reflex windows, start angle
+  // top panel: the joint, the impact, the reflex windows, the start angle
   double lo, hi;
   s << "set tmargin at screen 0.92\nset bmargin at screen 0.42\n"
-    << "set format x ''\nunset xlabel\nset ylabel 'angle (deg)'\n";
-  if (!finite_range(angle, lo, hi)) s << "set yrange [-1:1]\n";
+    << "set format x ''\nunset xlabel\nset ylabel '" << (hinge ? "angle (deg)" : "position (mm)")
+    << "'\n";
+  if (!finite_range(q, lo, hi)) s << "set yrange [-1:1]\n";
   int object = 1;
-  for (const auto& [w0, w1] : ago_windows) {
-    s << "set object " << object++ << " rect from " << num(w0) << ", graph 0 to " << num(w1)
-      << ", graph 1 behind fc rgb '" << kAgoShade << "' fs transparent solid 0.45 noborder\n";
-  }
-  for (const auto& [w0, w1] : anta_windows) {
-    s << "set object " << object++ << " rect from " << num(w0) << ", graph 0 to " << num(w1)
-      << ", graph 1 behind fc rgb '" << kAntaShade << "' fs transparent solid 0.45 noborder\n";
-  }
   std::string keys;
-  if (std::isfinite(sum.impact_time_s)) {
-    s << "set arrow 1 from " << num(sum.impact_time_s) << ", graph 0 to "
-      << num(sum.impact_time_s) << ", graph 1 nohead dt 2 lw 1.5 lc rgb 'black'\n";
+  const double impact = sum.metric("impact_time_s");
+  if (std::isfinite(impact)) {
+    s << "set arrow 1 from " << num(impact) << ", graph 0 to " << num(impact)
+      << ", graph 1 nohead dt 2 lw 1.5 lc rgb 'black'\n";
     keys += ", keyentry with lines dt 2 lw 1.5 lc rgb 'black' title 'impact'";
   }
-  if (!ago_windows.empty()) {
-    keys += std::string(", keyentry with boxes fs solid 0.6 noborder fc rgb '") + kAgoShade +
-            "' title 'reflex agonist'";
+  for (std::size_t j = 0; j < labels.size(); ++j) {
+    const char* shade = kMuscleShade[j % kPalette];
+    for (const auto& [w0, w1] : reflex[j]) {
+      s << "set object " << object++ << " rect from " << num(w0) << ", graph 0 to " << num(w1)
+        << ", graph 1 behind fc rgb '" << shade << "' fs transparent solid 0.45 noborder\n";
+    }
+    if (!reflex[j].empty()) {
+      keys += std::string(", keyentry with boxes fs solid 0.6 noborder fc rgb '") + shade +
+              "' title " + gp_quote("reflex " + labels[j]);
+    }
   }
-  if (!anta_windows.empty()) {
-    keys += std::string(", keyentry with boxes fs solid 0.6 noborder fc rgb '") + kAntaShade +
-            "' title 'reflex antagonist'";
-  }
-  s << "plot 'angle.dat' using 1:2 with lines lw 2 lc rgb 'black' title 'angle'";
-  if (std::isfinite(sum.start_angle_deg)) {
-    s << ", " << num(sum.start_angle_deg) << " with lines dt 3 lw 1.5 lc rgb '#555555' title "
-      << gp_quote("start angle " + num(std::round(sum.start_angle_deg * 10) / 10) + " deg");
+  s << "plot 'angle.dat' using 1:2 with lines lw 2 lc rgb 'black' title "
+    << gp_quote(hinge ? "angle" : "position");
+  const double start = sum.metric("start_angle_deg");
+  if (hinge && std::isfinite(start)) {
+    s << ", " << num(start) << " with lines dt 3 lw 1.5 lc rgb '#555555' title "
+      << gp_quote("start angle " + num(std::round(start * 10) / 10) + " deg");
   }
   s << keys << "\n";
 
@@ -440,13 +475,15 @@ void write_angle_plot(const std::string& png_path, const TrialResult& trial,
   std::vector<double> all_p;
   for (const auto& p : pressure) all_p.insert(all_p.end(), p.begin(), p.end());
   if (!finite_range(all_p, lo, hi)) s << "set yrange [0:1]\n";
-  s << "plot 'angle.dat' using 1:3 with lines dt 2 lw 1.5 lc rgb '" << kAgoColour
-    << "' title 'agonist command', "
-    << "'' using 1:4 with lines lw 2 lc rgb '" << kAgoColour << "' title 'agonist chamber', "
-    << "'' using 1:5 with lines dt 2 lw 1.5 lc rgb '" << kAntaColour
-    << "' title 'antagonist command', "
-    << "'' using 1:6 with lines lw 2 lc rgb '" << kAntaColour << "' title 'antagonist chamber'\n"
-    << "unset multiplot\n";
+  if (labels.empty()) s << "set label 1 'no muscles' at graph 0.5, 0.5 center\nplot NaN notitle\n";
+  for (std::size_t j = 0; j < labels.size(); ++j) {
+    const char* colour = kMuscleColour[j % kPalette];
+    s << (j == 0 ? "plot " : ", ") << "'angle.dat' using 1:" << 3 + 2 * j
+      << " with lines dt 2 lw 1.5 lc rgb '" << colour << "' title " << gp_quote(labels[j] + " command")
+      << ", '' using 1:" << 4 + 2 * j << " with lines lw 2 lc rgb '" << colour << "' title "
+      << gp_quote(labels[j] + " chamber");
+  }
+  s << "\nunset multiplot\n";
   job.script = s.str();
   run_gnuplot(png_path, job);
 }
@@ -460,8 +497,10 @@ void write_angle_band_plot(const std::string& png_path,
   if (band.time_s.empty()) throw std::runtime_error(png_path + ": no trajectory rows to plot");
   const std::string title = file_name(scenario.path) + ": angle over " +
                             std::to_string(trials.size()) + " trials (mean and range)";
-  run_gnuplot(png_path, band_job({band}, title,
-                                 scenario.drop_enabled ? scenario.drop_time_s : kNaN));
+  const EventSpec* release = scenario.event("release");
+  const double drop_time_s =
+      release && release->when.kind == ConditionKind::kTime ? release->when.at_s : kNaN;
+  run_gnuplot(png_path, band_job({band}, title, std::isfinite(drop_time_s) ? drop_time_s : kNaN));
 }
 
 void write_compare_plot(const std::string& png_path, const std::vector<BandSeries>& runs) {

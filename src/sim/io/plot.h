@@ -1,8 +1,9 @@
 // plot.h: the figures of a run, drawn by gnuplot (pngcairo terminal) driven from the
 // program: data and script go to a temp folder, gnuplot writes a temp PNG, which is
 // renamed into place, so a failed plot leaves no partial file.
-//   angle.png       angle vs time with the impact, the reflex windows and both pressures
-//                   (commanded and chamber), like the paper's Fig. 8;
+//   angle.png       the joint vs time with the impact, the reflex windows and every muscle's
+//                   pressures (commanded and chamber), like the paper's Fig. 8
+//                   (position.png for a slide joint, e.g. the pulley rig);
 //   angle_band.png  mean and range of the angle over repeated trials, like Fig. 9;
 //   compare.png     two runs' bands on one plot (model vs fiber sensor, Fig. 9);
 //   heatmap_*.png   a sweep metric over two axes (pamsim report).
@@ -15,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/io/scenario.h"
+#include "sim/core/scenario.h"
 #include "sim/core/trial.h"
 
 namespace pamsim {
@@ -37,8 +38,14 @@ struct BandSeries {
   std::vector<double> time_s, mean, min, max;
 };
 
-// Throws std::invalid_argument if `trials` is empty or holds a null pointer, and
-// std::out_of_range if a trajectory lacks time_s or angle_deg.
+// The joint's column of a trajectory: angle_deg (hinge) or position_mm (slide); throws
+// std::out_of_range if it has neither. trial_plot_name: "angle.png" or "position.png".
+std::string joint_column(const Trajectory& trajectory);
+std::string trial_plot_name(const Trajectory& trajectory);
+
+// The band of the joint's column (angle_deg or position_mm). Throws std::invalid_argument
+// if `trials` is empty or holds a null pointer, and std::out_of_range if a trajectory lacks
+// time_s or the joint.
 BandSeries angle_band(const std::vector<const Trajectory*>& trials, std::string label);
 
 // A value over two sweep axes. On a grid, one cell per pair of levels (index space, the

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "sim/core/trial.h"
+#include "sim/core/trial_log.h"
 
 namespace pamsim {
 

@@ -65,7 +65,7 @@ void append_point(mjvFigure* figure, int line, double x, double y) {
 // A translucent figure over [0, duration] s with lines of the given colours; the title says
 // which line is which (a legend does not fit a plot this small).
 void init_figure(mjvFigure* figure, const char* title, const char* y_format, double duration_s,
-                 std::initializer_list<std::array<float, 3>> line_rgb) {
+                 const std::vector<std::array<float, 3>>& line_rgb) {
   mjv_defaultFigure(figure);
   std::snprintf(figure->title, sizeof(figure->title), "%s", title);
   std::snprintf(figure->xformat, sizeof(figure->xformat), "%%.0f");
@@ -88,11 +88,25 @@ void set_y_range(mjvFigure* figure, double min, double max, double tick) {
   if (figure->range[1][1] <= figure->range[1][0]) figure->range[1][1] += static_cast<float>(tick);
 }
 
-const char* reflex_state(const std::array<bool, kMuscleCount>& active) {
-  if (active[kAgonist] && active[kAntagonist]) return "agonist + antagonist";
-  if (active[kAgonist]) return "agonist";
-  if (active[kAntagonist]) return "antagonist";
-  return "off";
+// the muscles whose reflex window is open, or "off"
+std::string reflex_state(const TrialSnapshot& snap) {
+  std::string state;
+  for (std::size_t i = 0; i < snap.reflex_active->size(); ++i) {
+    if ((*snap.reflex_active)[i]) state += (state.empty() ? "" : " + ") + (*snap.labels)[i];
+  }
+  return state.empty() ? "off" : state;
+}
+
+// muscle i's line colour in the pressure plot (the arm's agonist red, antagonist blue),
+// its command dimmer
+std::array<float, 3> muscle_rgb(std::size_t i, bool command) {
+  static const std::array<float, 3> kRgb[] = {
+      {0.95f, 0.3f, 0.3f}, {0.35f, 0.45f, 1.0f}, {0.3f, 0.8f, 0.35f}, {0.75f, 0.4f, 0.9f}};
+  std::array<float, 3> c = kRgb[i % 4];
+  if (command) {
+    for (float& v : c) v *= 0.55f;
+  }
+  return c;
 }
 
 }  // namespace
@@ -133,20 +147,22 @@ void validate_video_options(const VideoOptions& o, const std::string& mp4_option
   }
 }
 
-TrialVideo::TrialVideo(const ArmModel& arm, const Scenario& sc, const VideoOptions& options)
+TrialVideo::TrialVideo(const TrialModel& model, const Scenario& sc, const VideoOptions& options)
     : options_(options),
       frame_count_(frames_in(sc.duration_s, options.fps)),
-      renderer_(arm.model.get(), arm.model_path,
+      renderer_(model.model.get(), model.model_path,
                 SceneRenderOptions{options.width_px, options.height_px, options.quality,
                                    options.camera, options.backend}) {
   if (options.plot) {
     plots_ = std::make_unique<Plots>();
     // the muscles in their tendons' colours, commands dimmer
-    init_figure(&plots_->angle, "angle [deg]", "%.0f", sc.duration_s, {{0.9f, 0.75f, 0.1f}});
-    init_figure(&plots_->pressure, "pressure [MPa] (dim: command)", "%.1f",
-                sc.duration_s,
-                {{0.95f, 0.3f, 0.3f}, {0.35f, 0.45f, 1.0f},     // agonist, antagonist
-                 {0.5f, 0.2f, 0.2f}, {0.2f, 0.25f, 0.55f}});    // their commands
+    init_figure(&plots_->angle, model.joint.hinge ? "angle [deg]" : "position [mm]", "%.0f",
+                sc.duration_s, {{0.9f, 0.75f, 0.1f}});   // yellow
+    std::vector<std::array<float, 3>> lines;
+    const std::size_t n = std::min<std::size_t>(model.muscles.size(), mjMAXLINE / 2);
+    for (std::size_t i = 0; i < n; ++i) lines.push_back(muscle_rgb(i, false));
+    for (std::size_t i = 0; i < n; ++i) lines.push_back(muscle_rgb(i, true));
+    init_figure(&plots_->pressure, "pressure [MPa] (dim: command)", "%.1f", sc.duration_s, lines);
   }
 
   // outputs last: their temp files exist only once everything else is ready
@@ -188,27 +204,33 @@ void TrialVideo::observe(const TrialSnapshot& snapshot) {
 }
 
 void TrialVideo::draw_overlays(const TrialSnapshot& snap) {
-  // the numbers, top left
-  char values[256];
-  std::snprintf(values, sizeof(values),
-                "%.3f s\n%.2f deg\n%.3f MPa (cmd %.3f)\n%.3f MPa (cmd %.3f)\n%s", snap.time_s,
-                snap.angle_deg, units::pa_to_mpa(snap.pressure_pa[kAgonist]),
-                units::pa_to_mpa(snap.command_pa[kAgonist]),
-                units::pa_to_mpa(snap.pressure_pa[kAntagonist]),
-                units::pa_to_mpa(snap.command_pa[kAntagonist]), reflex_state(snap.reflex_active));
-  renderer_.draw_text("time\nangle\nagonist\nantagonist\nreflex", values);
+  // the numbers, top left: time, the joint, each muscle's chamber pressure and command
+  const std::vector<std::string>& labels = *snap.labels;
+  std::string names = snap.hinge ? "time\nangle" : "time\nposition";
+  char line[96];
+  std::snprintf(line, sizeof(line), "%.3f s\n%.2f %s", snap.time_s, snap.joint_position,
+                snap.hinge ? "deg" : "mm");
+  std::string values = line;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    names += "\n" + labels[i];
+    std::snprintf(line, sizeof(line), "\n%.3f MPa (cmd %.3f)",
+                  units::pa_to_mpa((*snap.pressure_pa)[i]), units::pa_to_mpa((*snap.command_pa)[i]));
+    values += line;
+  }
+  renderer_.draw_text((names + "\nreflex").c_str(), (values + "\n" + reflex_state(snap)).c_str());
   if (!plots_) return;
 
-  // the live plots, bottom left: pressures at the bottom, the angle above
+  // the live plots, bottom left: pressures at the bottom, the joint above
   Plots& p = *plots_;
-  append_point(&p.angle, 0, snap.time_s, snap.angle_deg);
-  p.angle_min_deg = std::min(p.angle_min_deg, snap.angle_deg);
-  p.angle_max_deg = std::max(p.angle_max_deg, snap.angle_deg);
-  for (int i = 0; i < kMuscleCount; ++i) {
-    const double p_mpa = units::pa_to_mpa(snap.pressure_pa[i]);
-    const double cmd_mpa = units::pa_to_mpa(snap.command_pa[i]);
-    append_point(&p.pressure, i, snap.time_s, p_mpa);
-    append_point(&p.pressure, kMuscleCount + i, snap.time_s, cmd_mpa);
+  append_point(&p.angle, 0, snap.time_s, snap.joint_position);
+  p.angle_min_deg = std::min(p.angle_min_deg, snap.joint_position);
+  p.angle_max_deg = std::max(p.angle_max_deg, snap.joint_position);
+  const std::size_t n = std::min<std::size_t>(labels.size(), mjMAXLINE / 2);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double p_mpa = units::pa_to_mpa((*snap.pressure_pa)[i]);
+    const double cmd_mpa = units::pa_to_mpa((*snap.command_pa)[i]);
+    append_point(&p.pressure, static_cast<int>(i), snap.time_s, p_mpa);
+    append_point(&p.pressure, static_cast<int>(n + i), snap.time_s, cmd_mpa);
     p.pressure_max_mpa = std::max({p.pressure_max_mpa, p_mpa, cmd_mpa});
   }
   set_y_range(&p.angle, p.angle_min_deg, p.angle_max_deg, kAngleTickDeg);
@@ -226,14 +248,14 @@ void TrialVideo::finish() {
 
 std::string TrialVideo::encoder_name() const { return mp4_ ? mp4_->encoder_name() : "png"; }
 
-RenderedTrial run_rendered_trial(const ArmModel& arm, const Scenario& sc, std::uint64_t seed,
+RenderedTrial run_rendered_trial(const TrialModel& model, const Scenario& sc, std::uint64_t seed,
                                  const VideoOptions& options, bool keep_trajectory) {
-  TrialVideo video(arm, sc, options);
+  TrialVideo video(model, sc, options);
   TrialOptions trial_options;
   trial_options.keep_trajectory = keep_trajectory;
   trial_options.observer = &video;
   RenderedTrial rendered;
-  rendered.trial = run_trial(arm, sc, seed, trial_options);
+  rendered.trial = run_trial(model, sc, seed, trial_options);
   video.finish();
   rendered.frames = video.frames_written();
   rendered.encoder = video.encoder_name();

@@ -1,7 +1,7 @@
 // trial_video.h: a trial's video, made while the trial runs. A TrialObserver that, at each
-// frame time k / fps (k = 0 .. ceil(duration * fps) - 1), draws the arm from one of the
-// model's cameras, writes the trial's numbers on top (time, angle, both chamber pressures
-// with their commands, reflex state) and optionally live plots of the angle and the
+// frame time k / fps (k = 0 .. ceil(duration * fps) - 1), draws the model from one of its
+// cameras, writes the trial's numbers on top (time, the joint, every muscle's chamber
+// pressure with its command, reflex state) and optionally live plots of the joint and the
 // pressures in the bottom-left corner, and streams the frame to an MP4 and/or a PNG
 // sequence. Nothing appears at the output paths before finish(). What `pamsim render` and
 // `pamsim run --video` use.
@@ -10,13 +10,13 @@
 #include <memory>
 #include <string>
 
-#include "sim/core/arm_model.h"
+#include "sim/core/scenario.h"
+#include "sim/core/trial.h"
+#include "sim/core/trial_model.h"
 #include "sim/render/gl_context.h"
 #include "sim/render/mp4_writer.h"
 #include "sim/render/png_sequence_writer.h"
-#include "sim/io/scenario.h"
 #include "sim/render/scene_renderer.h"
-#include "sim/core/trial.h"
 
 namespace pamsim {
 
@@ -43,10 +43,10 @@ void validate_video_options(const VideoOptions& options, const std::string& mp4_
 
 class TrialVideo : public TrialObserver {
  public:
-  // Sets up rendering of `arm` (the camera is checked against its model) and opens the
+  // Sets up rendering of `model` (the camera is checked against it) and opens the
   // outputs as temp files. Throws InputError (see validate_video_options, SceneRenderer,
   // Mp4Writer, PngSequenceWriter); `options` are expected to be validated already.
-  TrialVideo(const ArmModel& arm, const Scenario& scenario, const VideoOptions& options);
+  TrialVideo(const TrialModel& model, const Scenario& scenario, const VideoOptions& options);
   ~TrialVideo() override;   // unfinished outputs are removed
 
   double next_observation_time_s() const override;
@@ -77,9 +77,9 @@ struct RenderedTrial {
   std::string encoder;   // the MP4's H.264 encoder; "png" without an MP4
 };
 
-// Runs `scenario`'s trial with `seed` on `arm`, rendered as it runs into the outputs of
+// Runs `scenario`'s trial with `seed` on `model`, rendered as it runs into the outputs of
 // `options` (validated), which are complete and in place on return. Throws as TrialVideo.
-RenderedTrial run_rendered_trial(const ArmModel& arm, const Scenario& scenario,
+RenderedTrial run_rendered_trial(const TrialModel& model, const Scenario& scenario,
                                  std::uint64_t seed, const VideoOptions& options,
                                  bool keep_trajectory);
 

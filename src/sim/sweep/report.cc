@@ -1,6 +1,7 @@
 // report.cc: see report.h.
 #include "sim/sweep/report.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -13,7 +14,8 @@
 #include "pam_actuator/input_error.h"
 #include "sim/io/config_reader.h"
 #include "sim/io/outputs.h"
-#include "sim/io/scenario.h"
+#include "sim/core/metrics.h"
+#include "sim/io/scenario_file.h"
 #include "sim/sweep/sweep.h"
 
 namespace pamsim {
@@ -143,7 +145,7 @@ SweepSummary summarize_sweep(const ResultsDb& db) {
     throw InputError(db.path() + ": the sweep definition is incomplete (" + e.what() + ")");
   }
   sweep.trials_total = sweep.points_total * sweep.seeds;
-  for (const auto& name : metric_column_names()) {
+  for (const auto& name : db.metric_columns()) {
     if (!is_timing_metric(name)) sweep.metric_names.push_back(name);
   }
 
@@ -151,7 +153,9 @@ SweepSummary summarize_sweep(const ResultsDb& db) {
   const std::vector<std::string> columns = db.trial_columns();
   const std::size_t point_col = column_of(columns, "point", db.path());
   const std::size_t status_col = column_of(columns, "status", db.path());
-  const std::size_t mistrips_col = column_of(columns, "mistrips", db.path());
+  // a sweep without reflex metrics has no mistrips column: no trial mistripped
+  const auto mistrips_at = std::find(columns.begin(), columns.end(), "mistrips");
+  const std::size_t mistrips_col = static_cast<std::size_t>(mistrips_at - columns.begin());
   std::vector<std::size_t> axis_cols, metric_cols;
   for (const auto& key : sweep.axis_keys) axis_cols.push_back(column_of(columns, key, db.path()));
   for (const auto& name : sweep.metric_names) metric_cols.push_back(column_of(columns, name, db.path()));
@@ -190,7 +194,8 @@ SweepSummary summarize_sweep(const ResultsDb& db) {
       return;
     }
     ++current.ok;
-    if (row[mistrips_col].kind == DbValue::Kind::kNumber && row[mistrips_col].number > 0) {
+    if (mistrips_col < row.size() && row[mistrips_col].kind == DbValue::Kind::kNumber &&
+        row[mistrips_col].number > 0) {
       ++current.with_mistrips;
     }
     for (std::size_t m = 0; m < metric_cols.size(); ++m) {
@@ -233,8 +238,8 @@ std::string point_scenario_toml(const SweepSummary& sweep, const PointSummary& p
   }
   // file paths: relative to the new file's folder
   const fs::path dir = fs::weakly_canonical(fs::absolute(scenario_dir));
-  for (const auto& key : scenario_path_keys()) {
-    if (!in.has(key)) continue;
+  for (const auto& key : in.leaf_keys()) {
+    if (!is_scenario_path_key(key)) continue;
     const fs::path target = fs::weakly_canonical(fs::absolute(in.get_path(key, "")));
     AxisValue path;
     path.kind = AxisValue::Kind::kString;

@@ -1,6 +1,7 @@
 // results_db.cc: see results_db.h.
 #include "sim/sweep/results_db.h"
 
+#include <algorithm>
 #include <fcntl.h>
 #include <sqlite3.h>
 #include <sys/file.h>
@@ -90,10 +91,11 @@ void sync_directory_of(const std::string& path) {
 
 }  // namespace
 
-std::vector<std::string> metric_column_names() {
-  std::vector<std::string> names;
-  for (const auto& [name, _] : trial_metrics(TrialSummary{})) names.push_back(name);
-  return names;
+std::vector<std::string> ResultsDb::metric_columns() const {
+  const std::vector<std::string> columns = trial_columns();
+  const auto message = std::find(columns.begin(), columns.end(), "message");
+  if (message == columns.end()) fail("is not a pamsim sweep database (no message column)");
+  return std::vector<std::string>(message + 1, columns.end());
 }
 
 ResultsDb::ResultsDb(sqlite3* db, std::string path) : db_(db), path_(std::move(path)) {}
@@ -182,7 +184,7 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
                           "seed_index INTEGER NOT NULL, seed INTEGER NOT NULL";
     for (const auto& axis : sweep.axes) columns += ", " + quoted(axis.key);
     columns += ", status TEXT NOT NULL, message TEXT";
-    for (const auto& name : metric_column_names()) columns += ", " + quoted(name) + " REAL";
+    for (const auto& name : sweep.metric_names) columns += ", " + quoted(name) + " REAL";
     db.exec("BEGIN; CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL); "
             "CREATE TABLE trials(" + columns + ");");
     Statement put = prepare(db.db_, "INSERT INTO meta VALUES (?, ?)");
@@ -267,7 +269,7 @@ std::int64_t ResultsDb::trial_count() const {
 
 void ResultsDb::insert(const SweepDefinition& sweep, const std::vector<TrialRecord>& records) {
   if (records.empty()) return;
-  const std::size_t n_columns = 4 + sweep.axes.size() + 2 + metric_column_names().size();
+  const std::size_t n_columns = 4 + sweep.axes.size() + 2 + sweep.metric_names.size();
   std::string sql = "INSERT INTO trials VALUES (?";
   for (std::size_t i = 1; i < n_columns; ++i) sql += ", ?";
   sql += ")";
@@ -299,7 +301,8 @@ void ResultsDb::insert(const SweepDefinition& sweep, const std::vector<TrialReco
       if (r.summary.message.empty()) sqlite3_bind_null(st, c++);
       else sqlite3_bind_text(st, c++, r.summary.message.c_str(), -1, SQLITE_TRANSIENT);
       const bool measured = r.summary.status != "failed";   // a failed trial has no metrics
-      for (const auto& [name, value] : trial_metrics(r.summary)) {
+      for (const std::string& name : sweep.metric_names) {
+        const double value = r.summary.metric(name);
         if (measured && std::isfinite(value)) sqlite3_bind_double(st, c++, value);
         else sqlite3_bind_null(st, c++);
       }

@@ -67,6 +67,8 @@ class ResultsDb {
 
   // The trials table's columns, in order.
   std::vector<std::string> trial_columns() const;
+  // The metric columns (after status and message), in order.
+  std::vector<std::string> metric_columns() const;
   // Calls `row` for every trial in trial order with its cells (columns of trial_columns()).
   void for_each_trial(const std::function<void(const std::vector<DbValue>&)>& row) const;
 
@@ -82,7 +84,5 @@ class ResultsDb {
   int writer_lock_fd_ = -1;   // holds an exclusive flock while this handle writes
 };
 
-// The metric columns of the trials table, in order (trial_metrics() of outputs.h).
-std::vector<std::string> metric_column_names();
 
 }  // namespace pamsim

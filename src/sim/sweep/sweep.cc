@@ -14,7 +14,9 @@
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/toml_file.h"
 #include "sim/io/config_reader.h"
-#include "sim/io/scenario.h"
+#include "sim/core/metrics.h"
+#include "sim/core/trial_model.h"
+#include "sim/io/scenario_file.h"
 
 namespace pamsim {
 namespace {
@@ -320,15 +322,30 @@ SweepDefinition load_sweep(const std::string& path) {
   in.reject_unknown();
   make_points(&def);
 
-  // the base scenario, then every point, must validate before anything runs
+  // the base scenario (with its model bound), then every point, must validate before
+  // anything runs; every point must summarise its trials in the same metrics (the columns)
+  Scenario base;
   try {
-    def.base_seed = load_scenario_text(def.base_text, def.base_path, def.fixed).seed;
+    base = load_scenario_text(def.base_text, def.base_path, def.fixed);
+    const TrialModel model = load_trial_model(base);
+    std::vector<std::string> labels;
+    for (const BoundMuscle& m : model.muscles) labels.push_back(m.label);
+    def.metric_names = metric_names(base, labels, model.joint.hinge);
   } catch (const InputError& e) {
     throw InputError(path + ": base scenario: " + e.what());
   }
+  def.base_seed = base.seed;
   for (std::int64_t p = 0; p < def.points(); ++p) {
     try {
-      load_scenario_text(def.base_text, def.base_path, def.overrides(p));
+      const Scenario point = load_scenario_text(def.base_text, def.base_path, def.overrides(p));
+      bool same_metrics = point.metrics == base.metrics && point.muscles.size() == base.muscles.size();
+      for (std::size_t k = 0; same_metrics && k < point.muscles.size(); ++k) {
+        same_metrics = point.muscles[k].label == base.muscles[k].label;
+      }
+      if (!same_metrics) {
+        throw InputError("changes the metrics or the muscles' labels, which a sweep's columns "
+                         "cannot follow");
+      }
     } catch (const InputError& e) {
       throw InputError(path + ": point " + std::to_string(p) + " (" + describe_point(def, p) +
                        "): " + e.what());

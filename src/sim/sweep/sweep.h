@@ -55,6 +55,8 @@ struct SweepDefinition {
   std::uint64_t design_seed = 1;  // random, lhs
   std::int64_t seeds = 1;
   std::uint64_t base_seed = 1;    // the base scenario's seed (with fixed overrides)
+  // the metrics each trial stores (the database's metric columns), from the base scenario
+  std::vector<std::string> metric_names;
 
   // The points' coordinates, point-major: point_values[p * axes.size() + a].
   std::vector<AxisValue> point_values;

@@ -10,7 +10,7 @@
 
 #include "pam_actuator/input_error.h"
 #include "sim/core/runner.h"
-#include "sim/io/scenario.h"
+#include "sim/io/scenario_file.h"
 #include "sim/core/trial.h"
 
 namespace pamsim {
@@ -18,28 +18,30 @@ namespace {
 
 constexpr auto kProgressInterval = std::chrono::milliseconds(200);   // progress when idle
 
-// A worker's scenario and arm for the point it is on.
+// A worker's scenario and model for the point it is on.
 class PointCache {
  public:
   explicit PointCache(const SweepDefinition& sweep) : sweep_(sweep) {}
 
-  // The scenario and arm of `point`, loading only what changed since the last point.
+  // The scenario and model of `point`, loading the model only when the point changes it.
   void move_to(std::int64_t point) {
     if (point == point_) return;
     point_ = -1;
     Scenario next = load_scenario_text(sweep_.base_text, sweep_.base_path, sweep_.overrides(point));
-    if (!arm_ || !same_arm(next, scenario_)) arm_ = std::make_unique<ArmModel>(load_arm_for(next));
+    if (!model_ || !same_trial_model(next, scenario_)) {
+      model_ = std::make_unique<TrialModel>(load_trial_model(next));
+    }
     scenario_ = std::move(next);
     point_ = point;
   }
   const Scenario& scenario() const { return scenario_; }
-  const ArmModel& arm() const { return *arm_; }
+  const TrialModel& model() const { return *model_; }
 
  private:
   const SweepDefinition& sweep_;
   std::int64_t point_ = -1;
   Scenario scenario_;
-  std::unique_ptr<ArmModel> arm_;
+  std::unique_ptr<TrialModel> model_;
 };
 
 // A trial that could not run: status "failed" and why (the database stores no metrics).
@@ -59,7 +61,7 @@ TrialRecord run_one(const SweepDefinition& sweep, PointCache& cache, std::int64_
   const std::uint64_t seed = sweep.seed_of(trial);
   try {
     cache.move_to(record.point);
-    record.summary = run_trial(cache.arm(), cache.scenario(), seed, false).summary;
+    record.summary = run_trial(cache.model(), cache.scenario(), seed, false).summary;
   } catch (const std::exception& e) {   // anything but a divergence (that is a status already)
     record.summary = failed_summary(seed, e.what());
   }

@@ -1,6 +1,6 @@
 // sweep_runner.h: runs a sweep's unfinished trials on a pool of worker threads and streams
-// each result into the results database. Every worker owns its arm (mjModel, reloaded only
-// when a point changes the arm, see same_arm) and creates a fresh mjData and CVODE context
+// each result into the results database. Every worker owns its model (mjModel, reloaded
+// only when a point changes it, see same_trial_model) and creates a fresh mjData and CVODE context
 // for each trial inside run_trial, so a trial's result depends only on its point and seed,
 // never on the thread that ran it or on the trials before it. The calling thread is the only
 // writer: as soon as trials finish it commits them (all that finished meanwhile in one

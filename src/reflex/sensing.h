@@ -1,0 +1,71 @@
+// sensing.h: every muscle's sensors and its model-based length estimate, sampled once per
+// control tick: what a controller sees of the plant (controller.h), and all it sees.
+//
+// Per tick, muscle by muscle in the model's actuator order (so the noise stream, and
+// therefore a trial, is fixed by the seed alone):
+//   1. sample the PSE540 pressure sensor, the strain gauge and the fiber sensor (sensors.h),
+//      in that order, each drawing one normal from the suite's std::mt19937_64;
+//   2. estimate length and velocity from pressure and force, Eq. (9)-(11)
+//      (length_estimator.h), with the muscle's estimator law;
+//   3. low-pass the fiber rate at reflex.lowpass_hz (the velocity a fiber reflex uses).
+// All sensors are sampled whatever the controller uses, so a model-based and a fiber-based
+// trial with the same seed see the same noise.
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "pam_actuator/pam_params.h"
+#include "pam_actuator/spring_model.h"
+#include "reflex/controller.h"
+#include "reflex/length_estimator.h"
+#include "reflex/lowpass_filter.h"
+#include "reflex/sensors.h"
+
+namespace pamsim {
+
+// One muscle as the sensing sees it: the law its estimator inverts and its gauge's Eq. (8)
+// constants. `key` names the muscle in messages (e.g. "muscles.agonist").
+struct MuscleSensorSpec {
+  std::string key;
+  SpringModel estimator;
+  StrainGaugeParams gauge;
+};
+
+struct SensingConfig {
+  SensorConfig sensors;              // sensors.*
+  double velocity_lowpass_hz = 0.0;  // reflex.lowpass_hz: on Eq. (11)'s v and the fiber rate
+  double control_hz = 100.0;         // sim.control_hz
+};
+
+// Throw InputError "<key> must be ..., got <value>" naming the scenario key:
+// sim.control_hz, sensors.*, reflex.lowpass_hz; and for a muscle
+// <key>.strain_gauge.q_V_per_N (> 0), .V_base_V and .spring.* (finite, h > 0).
+void validate(const SensingConfig& config);
+void validate(const MuscleSensorSpec& muscle);
+
+class SensorSuite {
+ public:
+  // Validates (throws InputError) and seeds the generator with `seed`.
+  SensorSuite(const SensingConfig& config, const std::vector<MuscleSensorSpec>& muscles,
+              std::uint64_t seed);
+
+  int muscle_count() const { return static_cast<int>(channels_.size()); }
+  // One tick: truth[j] -> (*readings)[j]; both sized muscle_count().
+  void sample(const std::vector<MuscleTruth>& truth, std::vector<MuscleReading>* readings);
+
+ private:
+  struct Channel {
+    StrainGauge gauge;
+    FiberSensor fiber;
+    LengthEstimator estimator;
+    LowpassFilter fiber_velocity_filter;
+  };
+  std::mt19937_64 rng_;
+  PressureSensor pressure_sensor_;
+  std::vector<Channel> channels_;
+};
+
+}  // namespace pamsim

@@ -1,0 +1,169 @@
+// stretch_reflex_controller.cc: configuration checks and the per-tick pipeline
+// reading -> reflex -> Eq. (12)-(13).
+#include "reflex/stretch_reflex_controller.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "pam_actuator/input_error.h"
+#include "pam_actuator/units.h"
+#include "reflex/checks.h"
+
+namespace pamsim {
+namespace {
+
+using namespace checks;
+
+const StretchReflexControllerConfig& validated(const StretchReflexControllerConfig& config) {
+  validate(config);
+  return config;
+}
+
+}  // namespace
+
+const char* to_string(ReflexSensor sensor) {
+  switch (sensor) {
+    case ReflexSensor::kModel:
+      return "model";
+    case ReflexSensor::kFiber:
+      return "fiber";
+  }
+  return "?";
+}
+
+ReflexSensor parse_reflex_sensor(const std::string& name) {
+  if (name == "model") return ReflexSensor::kModel;
+  if (name == "fiber") return ReflexSensor::kFiber;
+  throw InputError("reflex.sensor must be \"model\" or \"fiber\", got \"" + name + "\"");
+}
+
+ReflexConfig table_ii_reflex_config(ReflexSensor sensor) {
+  ReflexConfig reflex;
+  reflex.sensor = sensor;
+  if (sensor == ReflexSensor::kFiber) {
+    reflex.v_thr_mm_s = 25.0;
+    reflex.k_MPa_s_per_mm = 1.0 / 300.0;
+  } else {
+    reflex.v_thr_mm_s = 70.0;
+    reflex.k_MPa_s_per_mm = 1.0 / 800.0;
+  }
+  return reflex;
+}
+
+void validate(const StretchReflexControllerConfig& config) {
+  // control rate first: the window is checked against it
+  require_positive("sim.control_hz", config.control_hz);
+  const double dt = 1.0 / config.control_hz;
+
+  // reflex.*
+  const ReflexConfig& reflex = config.reflex;
+  if (reflex.sensor != ReflexSensor::kModel && reflex.sensor != ReflexSensor::kFiber) {
+    fail("reflex.sensor", "\"model\" or \"fiber\"", static_cast<int>(reflex.sensor));
+  }
+  if (reflex.mode != ReflexMode::kFollow && reflex.mode != ReflexMode::kLatch) {
+    fail("reflex.mode", "\"follow\" or \"latch\"", static_cast<int>(reflex.mode));
+  }
+  require_positive("reflex.v_thr_mm_s", reflex.v_thr_mm_s);
+  require_non_negative("reflex.k_MPa_s_per_mm", reflex.k_MPa_s_per_mm);
+  if (!(std::isfinite(reflex.duration_s) && reflex.duration_s >= dt * (1.0 - 1e-9))) {
+    fail("reflex.duration_s", ">= one control period (" + format_value(dt) + " s)",
+         reflex.duration_s);
+  }
+  require_cutoff("reflex.lowpass_hz", reflex.lowpass_hz, config.control_hz);
+  require_non_negative("reflex.refractory_s", reflex.refractory_s);
+  require_non_negative("reflex.arm_after_s", reflex.arm_after_s);
+  require_non_negative("reflex.min_tension_N", reflex.min_tension_n);
+
+  // the valve range, in MPa as in the scenario file
+  require_positive("controller.p_max_MPa", units::pa_to_mpa(config.p_max_pa));
+
+  // pairs: two distinct muscles in range, each muscle in one pair at most
+  if (config.muscle_count < 0) fail("the muscle count", ">= 0", config.muscle_count);
+  std::vector<char> paired(config.muscle_count, 0);
+  for (std::size_t k = 0; k < config.pairs.size(); ++k) {
+    const std::string key = "reflex.pairs[" + std::to_string(k) + "]";
+    if (config.pairs[k].agonist == config.pairs[k].antagonist) {
+      fail(key, "two different muscles, not one paired with itself (muscle index)",
+           config.pairs[k].agonist);
+    }
+    for (int j : {config.pairs[k].agonist, config.pairs[k].antagonist}) {
+      if (j < 0 || j >= config.muscle_count) {
+        fail(key, "a muscle index in [0, " + std::to_string(config.muscle_count) + ")", j);
+      }
+      if (paired[j]) fail(key, "muscles not already in a pair (muscle index)", j);
+      paired[j] = 1;
+    }
+  }
+}
+
+StretchReflexController::StretchReflexController(const StretchReflexControllerConfig& config)
+    : config_(validated(config)),
+      partner_(config.muscle_count, -1),
+      reflexes_(config.muscle_count, StretchReflex(config.reflex, 1.0 / config.control_hz)),
+      dp_pa_(config.muscle_count, 0.0),
+      was_active_(config.muscle_count, 0),
+      trigger_times_s_(config.muscle_count) {
+  for (const ReflexPair& pair : config.pairs) {
+    partner_[pair.agonist] = pair.antagonist;
+    partner_[pair.antagonist] = pair.agonist;
+  }
+}
+
+void StretchReflexController::update(const ControlInput& in, ControlOutput* out) {
+  const std::vector<MuscleReading>& readings = *in.readings;
+  const std::vector<double>& p_tp = *in.p_tp_pa;
+  const ReflexConfig& rc = config_.reflex;
+  const bool run_reflexes = rc.enabled && in.enabled;
+  for (std::size_t j = 0; j < reflexes_.size(); ++j) was_active_[j] = reflexes_[j].active();
+
+  for (std::size_t j = 0; j < reflexes_.size(); ++j) {
+    // the velocity the reflex sees
+    const MuscleReading& r = readings[j];
+    const double v = rc.sensor == ReflexSensor::kFiber ? r.fiber_velocity_m_s : r.velocity_est_m_s;
+    out->velocity_m_s[j] = v;
+    dp_pa_[j] = 0.0;
+    out->reflex_active[j] = 0;
+
+    // this muscle's reflex, Eq. (14), behind the tension and reciprocal gates; while the
+    // controller is switched off its windows and refractory time run out without acting
+    const int partner = partner_[j];
+    if (rc.enabled && !in.enabled && partner >= 0) reflexes_[j].update(in.time_s, v, false);
+    if (run_reflexes && partner >= 0) {
+      const bool loaded = rc.min_tension_n <= 0.0 || r.force_meas_n >= rc.min_tension_n;
+      const bool other_quiet = !(rc.reciprocal_trigger_inhibition && was_active_[partner]);
+      const std::size_t before = reflexes_[j].trigger_times_s().size();
+      dp_pa_[j] = reflexes_[j].update(in.time_s, v, loaded && other_quiet);
+      out->reflex_active[j] = reflexes_[j].active() ? 1 : 0;
+      if (reflexes_[j].trigger_times_s().size() != before) {
+        trigger_times_s_[j].push_back(reflexes_[j].trigger_times_s().back());
+      }
+    }
+  }
+
+  // Eq. (12)-(13) per pair, clamped to the valve's range; unpaired muscles get p_tp
+  for (std::size_t j = 0; j < reflexes_.size(); ++j) {
+    if (partner_[j] < 0) out->p_cmd_pa[j] = std::clamp(p_tp[j], 0.0, config_.p_max_pa);
+  }
+  for (const ReflexPair& pair : config_.pairs) {
+    const PairValues p = reflex_commands({p_tp[pair.agonist], p_tp[pair.antagonist]},
+                                         {dp_pa_[pair.agonist], dp_pa_[pair.antagonist]},
+                                         config_.p_max_pa);
+    out->p_cmd_pa[pair.agonist] = p[kAgonist];
+    out->p_cmd_pa[pair.antagonist] = p[kAntagonist];
+  }
+}
+
+int StretchReflexController::trigger_count(int muscle) const {
+  return static_cast<int>(trigger_times_s_[muscle].size());
+}
+
+double StretchReflexController::first_trigger_time_s() const {
+  double first = std::numeric_limits<double>::quiet_NaN();
+  for (const std::vector<double>& times : trigger_times_s_) {
+    if (!times.empty() && !(times.front() >= first)) first = times.front();
+  }
+  return first;
+}
+
+}  // namespace pamsim

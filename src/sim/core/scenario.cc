@@ -1,0 +1,20 @@
+// scenario.cc: see scenario.h.
+#include "sim/core/scenario.h"
+
+namespace pamsim {
+
+const MuscleSpec* Scenario::muscle(const std::string& actuator) const {
+  for (const MuscleSpec& m : muscles) {
+    if (m.actuator == actuator) return &m;
+  }
+  return nullptr;
+}
+
+const EventSpec* Scenario::event(const std::string& name) const {
+  for (const EventSpec& e : events) {
+    if (e.name == name) return &e;
+  }
+  return nullptr;
+}
+
+}  // namespace pamsim

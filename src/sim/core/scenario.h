@@ -1,0 +1,128 @@
+// scenario.h: a trial's complete description, as plain data: which model, which of its PAM
+// actuators with which parameter files and command schedules, what happens when (holds and
+// events), which controller, which metrics. The core (trial.h) runs any such description
+// and knows no experiment by name: the falling mass, the pulley's sinusoid and the reaching
+// ramps are scenario files (scenarios/*.toml), read and validated by io/scenario_file.h,
+// which documents every key.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "pam_actuator/pam_params.h"
+#include "pam_actuator/pneumatics.h"
+#include "reflex/sensing.h"
+#include "reflex/stretch_reflex_controller.h"
+#include "sim/core/schedule.h"
+
+namespace pamsim {
+
+// How a muscle's fishing-line length (tendon length minus PAM length) is set.
+enum class LineSource {
+  kFixed,         // muscles.<name>.line_mm, or <actuator>_line_mm of model.calibration
+  kEquilibrium,   // solved so the start state is static (trial_model.h)
+};
+
+// Every spec carries the scenario key it was read from (e.g. "muscles.agonist",
+// "events.release", "drop"), so an error found when the model is bound can name it.
+
+struct MuscleSpec {
+  std::string key;
+  std::string actuator;        // the model's PAM actuator (MJCF name)
+  std::string label;           // in log columns and metric names (default: actuator)
+  std::string params_file;     // muscles.<name>.params
+  PamParams pam;               // the PAM's law, gauge and geometry
+  PressureSchedule command;    // muscles.<name>.command
+  LineSource line = LineSource::kFixed;
+  double line_length_m = 0.0;  // kFixed
+};
+
+// A free body held kinematically (at rest, upright) until an event releases it.
+struct HoldSpec {
+  std::string key;
+  std::string body;
+  std::string above_site;      // held height_m above this site (its bottom, for a sphere)...
+  double height_m = 0.0;
+  bool at_position = false;    // ...or at position_m in the world
+  std::array<double, 3> position_m{};
+};
+
+// A body's mass as the scenario sets it (inertia scaled with it).
+struct BodyMassSpec {
+  std::string key;
+  std::string body;
+  double mass_kg = 0.0;
+};
+
+// When an event fires: at a time, or on the first physics step a condition holds; either
+// only after another event has fired (`after`).
+enum class ConditionKind { kTime, kContact, kJointBelow, kJointAbove, kBodyBelow };
+struct ConditionSpec {
+  ConditionKind kind = ConditionKind::kTime;
+  double at_s = 0.0;           // kTime
+  std::string body_a, body_b;  // kContact: any geom of one touches any geom of the other;
+                               // kBodyBelow: body_a's origin height
+  std::string joint;           // kJointBelow / kJointAbove
+  double threshold = 0.0;      // SI: rad (hinge) or m (slide, body height)
+  std::string after;           // another event's name, or empty
+};
+
+enum class EventAction {
+  kMark,            // only records its time (e.g. the impact, for metrics)
+  kRelease,         // stops holding `body`
+  kAddMass,         // adds mass_kg to `body` (at its centre of mass)
+  kControllerOff,   // the controller passes the schedules through
+  kControllerOn,
+  kEnd,             // ends the trial (status ok)
+};
+
+struct EventSpec {
+  std::string key;
+  std::string name;            // unique; metrics look events up by name
+  EventAction action = EventAction::kMark;
+  ConditionSpec when;
+  std::string body;            // kRelease, kAddMass
+  double mass_kg = 0.0;        // kAddMass
+};
+
+enum class ControllerKind { kNone, kStretchReflex };
+
+struct Scenario {
+  std::string path;            // the scenario file (for messages and summaries)
+
+  std::string model_file;      // model.file
+  std::string joint;           // model.joint: logged as angle/omega or position/velocity
+  std::string calibration_file;   // model.calibration (optional): start angle, line lengths
+  std::string pneumatics_file;    // model.pneumatics
+  bool has_start_position = false;   // the joint's start [rad or m] (from the calibration);
+  double start_position = 0.0;       // otherwise the model's qpos0
+
+  std::uint64_t seed = 1;
+  double timestep_s = 0.001;
+  double duration_s = 3.0;
+  double control_hz = 100.0;
+
+  std::vector<MuscleSpec> muscles;
+  std::vector<BodyMassSpec> body_masses;
+  std::vector<HoldSpec> holds;
+  std::vector<EventSpec> events;
+
+  ValveModel valve_model = ValveModel::kIso6358;
+  PneumaticParams pneumatics;
+
+  ControllerKind controller = ControllerKind::kStretchReflex;
+  SensingConfig sensing;
+  StretchReflexControllerConfig reflex;   // pairs by index into muscles (scenario order)
+  std::vector<std::array<std::string, 2>> reflex_pairs;   // by actuator name
+
+  std::vector<std::string> metrics;       // metric sets (metrics.h), in output order
+
+  // The muscle with this actuator name, or nullptr.
+  const MuscleSpec* muscle(const std::string& actuator) const;
+  // The event with this name, or nullptr.
+  const EventSpec* event(const std::string& name) const;
+};
+
+}  // namespace pamsim

@@ -1,0 +1,180 @@
+// schedule.cc: see schedule.h.
+#include "sim/core/schedule.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+
+#include "pam_actuator/input_error.h"
+#include "pam_actuator/units.h"
+
+namespace pamsim {
+namespace {
+
+constexpr double kTwoPi = 2.0 * units::kPi;
+
+std::string mpa_text(double pa) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.6g", units::pa_to_mpa(pa));
+  return buf;
+}
+
+// a whole, trimmed cell as a finite number
+bool parse_cell(std::string cell, double* value) {
+  const auto b = cell.find_first_not_of(" \t\r");
+  const auto e = cell.find_last_not_of(" \t\r");
+  if (b == std::string::npos) return false;
+  cell = cell.substr(b, e - b + 1);
+  const char* first = cell.data();
+  if (*first == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, cell.data() + cell.size(), *value);
+  return ec == std::errc() && ptr == cell.data() + cell.size() && std::isfinite(*value);
+}
+
+// index of the last time <= t, or -1 before the first
+long segment(const std::vector<double>& times, double t) {
+  const auto it = std::upper_bound(times.begin(), times.end(), t);
+  return static_cast<long>(it - times.begin()) - 1;
+}
+
+}  // namespace
+
+const char* to_string(ScheduleKind kind) {
+  switch (kind) {
+    case ScheduleKind::kConstant: return "constant";
+    case ScheduleKind::kRamp: return "ramp";
+    case ScheduleKind::kSine: return "sine";
+    case ScheduleKind::kSteps: return "steps";
+    case ScheduleKind::kTable: return "table";
+  }
+  return "?";
+}
+
+ScheduleKind parse_schedule_kind(const std::string& name, const std::string& key) {
+  for (ScheduleKind k : {ScheduleKind::kConstant, ScheduleKind::kRamp, ScheduleKind::kSine,
+                         ScheduleKind::kSteps, ScheduleKind::kTable}) {
+    if (name == to_string(k)) return k;
+  }
+  throw InputError(key + " must be one of \"constant\", \"ramp\", \"sine\", \"steps\", "
+                   "\"table\", got \"" + name + "\"");
+}
+
+double PressureSchedule::at(double t) const {
+  switch (kind) {
+    case ScheduleKind::kConstant:
+      return p0_pa;
+    case ScheduleKind::kRamp: {
+      const double s = std::clamp((t - start_s) / duration_s, 0.0, 1.0);
+      return p0_pa + (p1_pa - p0_pa) * s;
+    }
+    case ScheduleKind::kSine:
+      if (t < start_s) return p0_pa;
+      return p0_pa + amplitude_pa * std::sin(kTwoPi * (t - start_s) / period_s + phase_rad);
+    case ScheduleKind::kSteps: {
+      const long i = segment(times_s, t);
+      return values_pa[i < 0 ? 0 : static_cast<std::size_t>(i)];
+    }
+    case ScheduleKind::kTable: {
+      const long i = segment(times_s, t);
+      if (i < 0) return values_pa.front();
+      const std::size_t k = static_cast<std::size_t>(i);
+      if (k + 1 >= times_s.size()) return values_pa.back();
+      const double w = (t - times_s[k]) / (times_s[k + 1] - times_s[k]);
+      return values_pa[k] + (values_pa[k + 1] - values_pa[k]) * w;
+    }
+  }
+  return p0_pa;
+}
+
+double PressureSchedule::min_pa() const {
+  switch (kind) {
+    case ScheduleKind::kRamp: return std::min(p0_pa, p1_pa);
+    case ScheduleKind::kSine: return std::min(p0_pa, p0_pa - std::fabs(amplitude_pa));
+    case ScheduleKind::kSteps:
+    case ScheduleKind::kTable: return *std::min_element(values_pa.begin(), values_pa.end());
+    default: return p0_pa;
+  }
+}
+
+double PressureSchedule::max_pa() const {
+  switch (kind) {
+    case ScheduleKind::kRamp: return std::max(p0_pa, p1_pa);
+    case ScheduleKind::kSine: return std::max(p0_pa, p0_pa + std::fabs(amplitude_pa));
+    case ScheduleKind::kSteps:
+    case ScheduleKind::kTable: return *std::max_element(values_pa.begin(), values_pa.end());
+    default: return p0_pa;
+  }
+}
+
+PressureSchedule read_schedule_csv(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the schedule file");
+  PressureSchedule s;
+  s.kind = ScheduleKind::kTable;
+  s.source = path;
+  std::string line;
+  long line_no = 0;
+  bool header = false;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto first = line.find_first_not_of(" \t");
+    if (first == std::string::npos || line[first] == '#') continue;
+    const std::string where = path + ": line " + std::to_string(line_no);
+
+    // the header names the two columns and their units
+    if (!header) {
+      std::string h;
+      for (char c : line) if (c != ' ' && c != '\t') h += c;
+      if (h != "time_s,MPa") throw InputError(where + ": expected the header \"time_s,MPa\"");
+      header = true;
+      continue;
+    }
+
+    // time_s, MPa: finite numbers, time strictly increasing
+    const auto comma = line.find(',');
+    double t = 0.0, p = 0.0;
+    if (comma == std::string::npos || line.find(',', comma + 1) != std::string::npos ||
+        !parse_cell(line.substr(0, comma), &t) || !parse_cell(line.substr(comma + 1), &p)) {
+      throw InputError(where + ": expected two finite numbers \"time_s,MPa\"");
+    }
+    if (!s.times_s.empty() && !(t > s.times_s.back())) {
+      throw InputError(where + ": time must increase strictly, got " + std::to_string(t) +
+                       " s after " + std::to_string(s.times_s.back()) + " s");
+    }
+    s.times_s.push_back(t);
+    s.values_pa.push_back(units::mpa_to_pa(p));
+  }
+  if (!header) throw InputError(path + ": empty file, expected the header \"time_s,MPa\"");
+  if (s.times_s.empty()) throw InputError(path + ": no (time_s, MPa) rows");
+  s.p0_pa = s.values_pa.front();
+  return s;
+}
+
+void validate(const PressureSchedule& s, const std::string& key, double supply_pa) {
+  auto fail = [&](const std::string& field, const std::string& problem) {
+    throw InputError(key + (field.empty() ? "" : "." + field) + " " + problem);
+  };
+  for (double v : {s.p0_pa, s.p1_pa, s.amplitude_pa, s.period_s, s.phase_rad, s.start_s,
+                   s.duration_s}) {
+    if (!std::isfinite(v)) fail("", "must have finite values");
+  }
+  if (s.kind == ScheduleKind::kSine && !(s.period_s > 0)) fail("period_s", "must be > 0");
+  if (s.kind == ScheduleKind::kRamp && !(s.duration_s > 0)) fail("duration_s", "must be > 0");
+  if (s.kind == ScheduleKind::kSteps || s.kind == ScheduleKind::kTable) {
+    if (s.times_s.empty() || s.times_s.size() != s.values_pa.size()) {
+      fail(s.kind == ScheduleKind::kSteps ? "times_s" : "file",
+           "must give one pressure per time, at least one");
+    }
+    for (std::size_t i = 1; i < s.times_s.size(); ++i) {
+      if (!(s.times_s[i] > s.times_s[i - 1])) fail("times_s", "must increase strictly");
+    }
+  }
+  if (!(s.min_pa() >= 0.0 && s.max_pa() <= supply_pa)) {
+    fail("", "must stay within [0, " + mpa_text(supply_pa) + "] MPa (the supply), goes from " +
+                 mpa_text(s.min_pa()) + " to " + mpa_text(s.max_pa()) + " MPa");
+  }
+}
+
+}  // namespace pamsim

@@ -1,0 +1,58 @@
+// schedule.h: a muscle's commanded pressure over time, the paper's "top controller" p_tp of
+// Eq. (12)-(13): what the valve is asked for before any reflex acts. One per muscle, from
+// the scenario's muscles.<name>.command table (see io/scenario_file.h for its keys):
+//   constant  p(t) = p0
+//   ramp      p0 until start_s, then linear to p1 over duration_s, then p1 (the reaching
+//             task: 0.2 -> 0.6 MPa over 12 s)
+//   sine      offset + amplitude sin(2 pi (t - start_s) / period_s + phase) for t >= start_s,
+//             offset before (the length-estimation test: 0.2 sin(2 pi t / 5) + 0.6 MPa)
+//   steps     levels[i] from times[i] on, levels[0] before times[0]
+//   table     piecewise linear through (time_s, MPa) points read from a CSV file, held
+//             constant before the first and after the last point
+// Pressures are gauge [Pa] inside; the scenario gives MPa.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace pamsim {
+
+enum class ScheduleKind { kConstant, kRamp, kSine, kSteps, kTable };
+
+// "constant" | "ramp" | "sine" | "steps" | "table"
+const char* to_string(ScheduleKind kind);
+// Throws InputError "<key> must be one of ..., got "<name>"" on anything else.
+ScheduleKind parse_schedule_kind(const std::string& name, const std::string& key);
+
+struct PressureSchedule {
+  ScheduleKind kind = ScheduleKind::kConstant;
+  double p0_pa = 0.4e6;        // constant, ramp start, sine offset
+  double p1_pa = 0.4e6;        // ramp end
+  double amplitude_pa = 0.0;   // sine
+  double period_s = 1.0;       // sine, > 0
+  double phase_rad = 0.0;      // sine
+  double start_s = 0.0;        // ramp, sine
+  double duration_s = 1.0;     // ramp, > 0
+  std::vector<double> times_s;     // steps, table: strictly increasing
+  std::vector<double> values_pa;   // steps, table: one per time
+  std::string source;              // table: the CSV file it came from (for messages)
+
+  // p(t) [Pa]. Constant schedules return p0_pa exactly.
+  double at(double t_s) const;
+  // The smallest and largest value p(t) takes (for range checks against the supply).
+  double min_pa() const;
+  double max_pa() const;
+};
+
+// Reads a piecewise-linear schedule from a CSV file with the header "time_s,MPa" (blank
+// lines and lines starting with '#' skipped). Throws InputError "<path>: line N: <problem>"
+// for a missing file, a bad header, a cell that is not a finite number, fewer than one row,
+// or a time that does not increase strictly.
+PressureSchedule read_schedule_csv(const std::string& path);
+
+// Throws InputError "<key>.<field> <problem>" if the schedule's own fields are inconsistent
+// (period or duration <= 0, steps times not increasing or sizes differing, non-finite
+// values), or if any value leaves [0, supply_pa].
+void validate(const PressureSchedule& schedule, const std::string& key, double supply_pa);
+
+}  // namespace pamsim

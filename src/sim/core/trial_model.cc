@@ -1,0 +1,322 @@
+// trial_model.cc: see trial_model.h.
+#include "sim/core/trial_model.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+
+#include "pam_actuator/input_error.h"
+#include "pam_actuator/units.h"
+#include "sim/core/pam_callback.h"
+
+namespace pamsim {
+namespace {
+
+// "<scenario>: <key> <problem>"
+[[noreturn]] void fail(const Scenario& sc, const std::string& key, const std::string& problem) {
+  throw InputError(sc.path + ": " + key + " " + problem);
+}
+
+int find_id(const mjModel* m, mjtObj type, const std::string& name) {
+  return name.empty() ? -1 : mj_name2id(m, type, name.c_str());
+}
+
+int require(const Scenario& sc, const mjModel* m, mjtObj type, const std::string& name,
+            const std::string& key, const char* what) {
+  const int id = find_id(m, type, name);
+  if (id < 0) fail(sc, key, "names " + std::string(what) + " '" + name + "', which " +
+                                sc.model_file + " does not have");
+  return id;
+}
+
+bool is_pam_actuator(const mjModel* m, int id) {
+  return m->actuator_biastype[id] == mjBIAS_USER && m->actuator_trntype[id] == mjTRN_TENDON;
+}
+
+std::string pam_actuator_names(const mjModel* m) {
+  std::string names;
+  for (int id = 0; id < m->nu; ++id) {
+    if (!is_pam_actuator(m, id)) continue;
+    names += (names.empty() ? "" : ", ") + std::string(mj_id2name(m, mjOBJ_ACTUATOR, id));
+  }
+  return names.empty() ? "none" : names;
+}
+
+// the muscles in actuator order; every PAM actuator has one and every muscle an actuator
+void bind_muscles(const Scenario& sc, TrialModel* tm) {
+  mjModel* m = tm->model.get();
+  for (std::size_t k = 0; k < sc.muscles.size(); ++k) {
+    const MuscleSpec& spec = sc.muscles[k];
+    const int id = find_id(m, mjOBJ_ACTUATOR, spec.actuator);
+    if (id < 0 || !is_pam_actuator(m, id)) {
+      fail(sc, spec.key, "names no PAM actuator of " + sc.model_file + " (it has: " +
+                             pam_actuator_names(m) + ")");
+    }
+  }
+  for (int id = 0; id < m->nu; ++id) {
+    if (!is_pam_actuator(m, id)) continue;
+    const std::string name = mj_id2name(m, mjOBJ_ACTUATOR, id);
+    const MuscleSpec* spec = sc.muscle(name);
+    if (!spec) {
+      fail(sc, "muscles." + name, "is required: " + sc.model_file +
+                                      " has a PAM actuator of that name (give its params)");
+    }
+    BoundMuscle b;
+    b.spec = static_cast<int>(spec - sc.muscles.data());
+    b.actuator = id;
+    b.label = spec->label;
+    if (!spec->pam.geometry) {
+      fail(sc, spec->key + ".params", "(" + spec->params_file + ") needs a [geometry] table "
+                                          "for the chamber volume");
+    }
+    b.braid = braid_from_initial_shape(spec->pam.geometry->length_m,
+                                       spec->pam.geometry->sleeve_diameter_m,
+                                       spec->pam.geometry->braid_angle_rad);
+    tm->muscles.push_back(b);
+  }
+  if (m->nuserdata < static_cast<int>(tm->muscles.size())) {
+    throw InputError(sc.model_file + ": <size nuserdata> must be >= " +
+                     std::to_string(tm->muscles.size()) + " to hold the PAM pressures");
+  }
+}
+
+void bind_joint(const Scenario& sc, TrialModel* tm) {
+  const mjModel* m = tm->model.get();
+  int j = -1;
+  if (sc.joint.empty()) {   // the model's first hinge or slide joint
+    for (int k = 0; k < m->njnt && j < 0; ++k) {
+      if (m->jnt_type[k] == mjJNT_HINGE || m->jnt_type[k] == mjJNT_SLIDE) j = k;
+    }
+    if (j < 0) fail(sc, "model.joint", "is required: " + sc.model_file + " has no hinge or slide joint");
+  } else {
+    j = require(sc, m, mjOBJ_JOINT, sc.joint, "model.joint", "a joint");
+  }
+  if (m->jnt_type[j] != mjJNT_HINGE && m->jnt_type[j] != mjJNT_SLIDE) {
+    fail(sc, "model.joint", "must name a hinge or slide joint");
+  }
+  tm->joint.name = mj_id2name(m, mjOBJ_JOINT, j);
+  tm->joint.hinge = m->jnt_type[j] == mjJNT_HINGE;
+  tm->joint.qpos = m->jnt_qposadr[j];
+  tm->joint.dof = m->jnt_dofadr[j];
+  if (sc.has_start_position && !tm->joint.hinge) {
+    fail(sc, "model.calibration", "gives a start angle, but joint '" + tm->joint.name +
+                                      "' is a slide");
+  }
+}
+
+// a body with a free joint: its qpos and dof addresses
+void free_joint_of(const Scenario& sc, const mjModel* m, int body, const std::string& key,
+                   int* qpos, int* dof) {
+  const int j = m->body_jntadr[body];
+  if (j < 0 || m->jnt_type[j] != mjJNT_FREE) {
+    fail(sc, key, "needs body '" + std::string(mj_id2name(m, mjOBJ_BODY, body)) +
+                      "' to have a free joint");
+  }
+  *qpos = m->jnt_qposadr[j];
+  *dof = m->jnt_dofadr[j];
+}
+
+void bind_holds(const Scenario& sc, TrialModel* tm) {
+  const mjModel* m = tm->model.get();
+  for (const HoldSpec& h : sc.holds) {
+    BoundHold b;
+    b.body = require(sc, m, mjOBJ_BODY, h.body, h.key + ".body", "a body");
+    free_joint_of(sc, m, b.body, h.key, &b.qpos, &b.dof);
+    if (!h.at_position) {
+      b.site = require(sc, m, mjOBJ_SITE, h.above_site, h.key + ".above_site", "a site");
+      // the height is the body's bottom's when its first geom is a sphere
+      const int g = m->body_geomadr[b.body];
+      const bool sphere = m->body_geomnum[b.body] > 0 && m->geom_type[g] == mjGEOM_SPHERE;
+      b.radius_m = sphere ? m->geom_size[3 * g] : 0.0;
+    }
+    tm->holds.push_back(b);
+  }
+}
+
+void bind_events(const Scenario& sc, TrialModel* tm) {
+  const mjModel* m = tm->model.get();
+  for (const EventSpec& e : sc.events) {
+    BoundEvent b;
+    const ConditionSpec& c = e.when;
+    if (c.kind == ConditionKind::kContact || c.kind == ConditionKind::kBodyBelow) {
+      b.body_a = require(sc, m, mjOBJ_BODY, c.body_a, e.key + ".when", "a body");
+    }
+    if (c.kind == ConditionKind::kContact) {
+      b.body_b = require(sc, m, mjOBJ_BODY, c.body_b, e.key + ".when", "a body");
+    }
+    if (c.kind == ConditionKind::kJointBelow || c.kind == ConditionKind::kJointAbove) {
+      const int j = require(sc, m, mjOBJ_JOINT, c.joint, e.key + ".joint", "a joint");
+      if (m->jnt_type[j] != mjJNT_HINGE && m->jnt_type[j] != mjJNT_SLIDE) {
+        fail(sc, e.key + ".joint", "must name a hinge or slide joint");
+      }
+      b.joint_qpos = m->jnt_qposadr[j];
+    }
+    if (e.action == EventAction::kRelease || e.action == EventAction::kAddMass) {
+      b.body = require(sc, m, mjOBJ_BODY, e.body, e.key + ".body", "a body");
+    }
+    if (e.action == EventAction::kRelease) {
+      for (std::size_t h = 0; h < tm->holds.size(); ++h) {
+        if (tm->holds[h].body == b.body) b.hold = static_cast<int>(h);
+      }
+      if (b.hold < 0) fail(sc, e.key + ".body", "names body '" + e.body + "', which no hold holds");
+    }
+    if (e.action == EventAction::kAddMass) tm->events_change_model = true;
+    if (!c.after.empty()) {
+      const EventSpec* after = sc.event(c.after);
+      if (!after || after == &e) {
+        fail(sc, e.key + ".after", "names no other event ('" + c.after + "')");
+      }
+      b.after = static_cast<int>(after - sc.events.data());
+    }
+    tm->events.push_back(b);
+  }
+}
+
+void bind_pairs(const Scenario& sc, TrialModel* tm) {
+  for (std::size_t k = 0; k < sc.reflex_pairs.size(); ++k) {
+    ReflexPair pair;
+    int* slot[2] = {&pair.agonist, &pair.antagonist};
+    for (int r = 0; r < 2; ++r) {
+      *slot[r] = tm->muscle_index(sc, sc.reflex_pairs[k][r]);
+      if (*slot[r] < 0) {
+        fail(sc, "reflex.pairs", "names muscle '" + sc.reflex_pairs[k][r] +
+                                     "', which is not a muscle of the scenario");
+      }
+    }
+    tm->pairs.push_back(pair);
+  }
+}
+
+// the start state: the joint at its start position, held bodies in place, at rest
+MjDataPtr start_state(const Scenario& sc, const TrialModel& tm) {
+  const mjModel* m = tm.model.get();
+  MjDataPtr data = make_data(m);
+  if (sc.has_start_position) data->qpos[tm.joint.qpos] = sc.start_position;
+  for (std::size_t k = 0; k < tm.muscles.size(); ++k) {
+    data->userdata[k] = sc.muscles[tm.muscles[k].spec].command.at(0.0);
+  }
+  mj_forward(m, data.get());
+  return data;
+}
+
+// line lengths: fixed ones first, then at most one muscle solved for a static start
+void set_lines(const Scenario& sc, TrialModel* tm) {
+  mjModel* m = tm->model.get();
+  int solved = -1;
+  for (std::size_t k = 0; k < tm->muscles.size(); ++k) {
+    BoundMuscle& b = tm->muscles[k];
+    const MuscleSpec& spec = sc.muscles[b.spec];
+    b.line_length_m = spec.line_length_m;
+    if (spec.line == LineSource::kEquilibrium) {
+      if (solved >= 0) fail(sc, spec.key + ".line", "\"equilibrium\" is allowed for one muscle only");
+      solved = static_cast<int>(k);
+      b.line_length_m = 1e3;   // slack while the others' forces are computed
+    }
+    store_pam_in_model(m, b.actuator, spec.pam.spring, b.line_length_m, static_cast<int>(k),
+                       sc.model_file.c_str());
+  }
+  if (solved < 0) return;
+
+  // the tension that balances the start state on the degree of freedom it moves most
+  BoundMuscle& b = tm->muscles[solved];
+  const MuscleSpec& spec = sc.muscles[b.spec];
+  MjDataPtr data = start_state(sc, *tm);
+  const mjData* d = data.get();
+  const mjtNum* moment = d->actuator_moment + static_cast<long>(b.actuator) * m->nv;
+  int dof = 0;
+  for (int v = 1; v < m->nv; ++v) dof = std::fabs(moment[v]) > std::fabs(moment[dof]) ? v : dof;
+  const double others = d->qfrc_actuator[dof] + d->qfrc_passive[dof];
+  const double f = m->nv > 0 && moment[dof] != 0 ? (others - d->qfrc_bias[dof]) / moment[dof] : 0.0;
+  const double p0 = spec.command.at(0.0);
+  const DeformationEstimate est = invert_spring_model(spec.pam.spring, p0, f);
+  if (!(f > 0) || est.status != InversionStatus::kOk) {
+    char buf[160];
+    std::snprintf(buf, sizeof(buf), "cannot hold the start state: it needs %.4g N at %.4g MPa",
+                  f, units::pa_to_mpa(p0));
+    fail(sc, spec.key + ".line", std::string("= \"equilibrium\" ") + buf);
+  }
+  b.line_length_m = d->actuator_length[b.actuator] - (natural_length(spec.pam.spring, p0) + est.d_m);
+  if (!(b.line_length_m > 0)) {
+    fail(sc, spec.key + ".line", "= \"equilibrium\" gives a line <= 0: the tendon is shorter "
+                                 "than the PAM it holds");
+  }
+  store_pam_in_model(m, b.actuator, spec.pam.spring, b.line_length_m, solved,
+                     sc.model_file.c_str());
+}
+
+void append_bits(std::ostringstream& os, double v) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &v, sizeof(bits));
+  os << bits << ';';
+}
+
+}  // namespace
+
+int TrialModel::muscle_index(const Scenario& sc, const std::string& actuator) const {
+  for (std::size_t k = 0; k < muscles.size(); ++k) {
+    if (sc.muscles[muscles[k].spec].actuator == actuator) return static_cast<int>(k);
+  }
+  return -1;
+}
+
+void set_body_mass(mjModel* m, int body, double mass_kg) {
+  const double old_mass = m->body_mass[body];
+  if (old_mass > 0) {
+    for (int k = 0; k < 3; ++k) m->body_inertia[3 * body + k] *= mass_kg / old_mass;
+  }
+  m->body_mass[body] = mass_kg;
+  for (int b = body; b > 0; b = m->body_parentid[b]) m->body_subtreemass[b] += mass_kg - old_mass;
+  m->body_subtreemass[0] += mass_kg - old_mass;
+}
+
+TrialModel load_trial_model(const Scenario& sc) {
+  TrialModel tm;
+  tm.model_path = sc.model_file;
+  tm.model = load_mjcf(sc.model_file);
+  mjModel* m = tm.model.get();
+  m->opt.timestep = sc.timestep_s;   // the scenario's step, not the MJCF's
+
+  // the cast by name; masses before the lines: a static start depends on them
+  bind_muscles(sc, &tm);
+  bind_joint(sc, &tm);
+  for (const BodyMassSpec& b : sc.body_masses) {
+    set_body_mass(m, require(sc, m, mjOBJ_BODY, b.body, b.key, "a body"), b.mass_kg);
+  }
+  bind_holds(sc, &tm);
+  bind_events(sc, &tm);
+  bind_pairs(sc, &tm);
+  set_lines(sc, &tm);
+  return tm;
+}
+
+bool same_trial_model(const Scenario& a, const Scenario& b) {
+  // everything load_trial_model reads, as text
+  auto fingerprint = [](const Scenario& sc) {
+    std::ostringstream os;
+    os << sc.model_file << ';' << sc.joint << ';' << sc.has_start_position << ';';
+    append_bits(os, sc.start_position);
+    append_bits(os, sc.timestep_s);
+    for (const MuscleSpec& mu : sc.muscles) {
+      os << mu.actuator << ';' << mu.label << ';' << mu.params_file << ';'
+         << static_cast<int>(mu.line) << ';';
+      append_bits(os, mu.line_length_m);
+      append_bits(os, mu.command.at(0.0));
+    }
+    for (const BodyMassSpec& bm : sc.body_masses) {
+      os << bm.body << ';';
+      append_bits(os, bm.mass_kg);
+    }
+    for (const HoldSpec& h : sc.holds) os << h.body << ';' << h.above_site << ';';
+    for (const EventSpec& e : sc.events) {
+      os << e.name << ';' << static_cast<int>(e.action) << ';' << e.body << ';'
+         << static_cast<int>(e.when.kind) << ';' << e.when.body_a << ';' << e.when.body_b << ';'
+         << e.when.joint << ';' << e.when.after << ';';
+    }
+    for (const auto& pair : sc.reflex_pairs) os << pair[0] << ',' << pair[1] << ';';
+    return os.str();
+  };
+  return fingerprint(a) == fingerprint(b);
+}
+
+}  // namespace pamsim

@@ -1,0 +1,63 @@
+// calibration_file.cc: see calibration_file.h.
+#include "sim/io/calibration_file.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "pam_actuator/units.h"
+#include "sim/io/config_reader.h"
+
+namespace pamsim {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace
+
+ArmCalibration load_calibration(const std::string& path) {
+  ConfigReader in(path);
+  ArmCalibration c;
+  c.start_angle_rad = units::deg_to_rad(in.require_double("start_angle_deg"));
+  in.check(std::fabs(c.start_angle_rad) < units::kPi / 2, "start_angle_deg",
+           "must be within (-90, 90) deg");
+  c.antagonist_deformation_m = units::mm_to_m(in.get_double("antagonist_deformation_mm", 0.0));
+  c.gravity_torque_nm = in.get_double("gravity_torque_Nm", 0.0);
+  in.get_string("written_by", "");
+
+  // <actuator>_line_mm with its <actuator>_pressure_MPa, in the file's order
+  for (const std::string& key : in.child_keys("")) {
+    if (!ends_with(key, "_line_mm")) continue;
+    CalibratedLine line;
+    line.actuator = key.substr(0, key.size() - std::string("_line_mm").size());
+    line.line_length_m = units::mm_to_m(in.require_double(key));
+    in.check(line.line_length_m > 0, key, "must be > 0");
+    line.pressure_pa = units::mpa_to_pa(in.require_double(line.actuator + "_pressure_MPa"));
+    c.lines.push_back(line);
+  }
+  in.reject_unknown();
+  return c;
+}
+
+std::string calibration_to_toml(const ArmCalibration& c, const std::string& provenance) {
+  std::ostringstream out;
+  out.precision(12);
+  out << "# Arm calibration: fishing-line lengths (tendon length minus PAM length) that hold the\n"
+      << "# arm at rest at start_angle_deg with both PAMs at the given pressures and the\n"
+      << "# antagonist stretched by antagonist_deformation_mm (a design choice: a small\n"
+      << "# pre-tension so neither line is slack at the start). Written by `pamsim calibrate`.\n"
+      << "written_by = \"" << provenance << "\"\n"
+      << "start_angle_deg = " << units::rad_to_deg(c.start_angle_rad) << "\n";
+  for (const CalibratedLine& l : c.lines) {
+    out << l.actuator << "_pressure_MPa = " << units::pa_to_mpa(l.pressure_pa) << "\n";
+  }
+  out << "antagonist_deformation_mm = " << units::m_to_mm(c.antagonist_deformation_m) << "\n"
+      << "gravity_torque_Nm = " << c.gravity_torque_nm << "\n";
+  for (const CalibratedLine& l : c.lines) {
+    out << l.actuator << "_line_mm = " << units::m_to_mm(l.line_length_m) << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace pamsim

@@ -1,0 +1,171 @@
+// scenario_events.cc: what happens when: bodies.<body>.mass_kg, holds.<body>, events.<name>,
+// and the pamsim 0.1 drop.* shorthand that expands into them.
+#include <cmath>
+
+#include "pam_actuator/units.h"
+#include "sim/io/scenario_reading.h"
+
+namespace pamsim {
+namespace {
+
+EventAction parse_action(ConfigReader& in, const std::string& key) {
+  const std::string name = in.get_string(key, "mark");
+  const std::pair<const char*, EventAction> actions[] = {
+      {"mark", EventAction::kMark},
+      {"release", EventAction::kRelease},
+      {"add_mass", EventAction::kAddMass},
+      {"controller_off", EventAction::kControllerOff},
+      {"controller_on", EventAction::kControllerOn},
+      {"end", EventAction::kEnd}};
+  for (const auto& [text, action] : actions) {
+    if (name == text) return action;
+  }
+  in.fail(key, "must be \"mark\", \"release\", \"add_mass\", \"controller_off\", "
+               "\"controller_on\" or \"end\", got \"" + name + "\"");
+}
+
+// when.*: exactly one of at_s, contact, joint (with a threshold), body (with below_z_m)
+ConditionSpec read_condition(ConfigReader& in, const std::string& key, const Scenario& sc) {
+  ConditionSpec c;
+  const int given = in.has(key + ".at_s") + in.has(key + ".contact") + in.has(key + ".joint") +
+                    in.has(key + ".body");
+  in.check(given == 1, key, "must give one of at_s, contact, joint or body");
+  if (in.has(key + ".at_s")) {
+    c.kind = ConditionKind::kTime;
+    c.at_s = in.get_double(key + ".at_s", 0.0);
+    in.check(c.at_s >= 0, key + ".at_s", "must be >= 0, got " + format_value(c.at_s));
+    in.check(c.at_s < sc.duration_s, key + ".at_s",
+             "must be before the end of the trial (sim.duration_s = " +
+                 format_value(sc.duration_s) + " s), got " + format_value(c.at_s));
+  } else if (in.has(key + ".contact")) {
+    c.kind = ConditionKind::kContact;
+    const std::vector<std::string> bodies = in.get_string_list(key + ".contact", {});
+    in.check(bodies.size() == 2, key + ".contact", "must name two bodies");
+    c.body_a = bodies[0];
+    c.body_b = bodies[1];
+  } else if (in.has(key + ".joint")) {
+    c.joint = in.get_string(key + ".joint", "");
+    const std::pair<const char*, double> thresholds[] = {
+        {"below_deg", units::deg_to_rad(1.0)}, {"above_deg", units::deg_to_rad(1.0)},
+        {"below_mm", units::mm_to_m(1.0)}, {"above_mm", units::mm_to_m(1.0)}};
+    int n = 0;
+    for (const auto& [field, to_si] : thresholds) {
+      if (!in.has(key + "." + field)) continue;
+      ++n;
+      c.threshold = in.get_double(key + "." + field, 0.0) * to_si;
+      c.kind = field[0] == 'b' ? ConditionKind::kJointBelow : ConditionKind::kJointAbove;
+    }
+    in.check(n == 1, key, "with joint must give one of below_deg, above_deg, below_mm, above_mm");
+  } else {
+    c.kind = ConditionKind::kBodyBelow;
+    c.body_a = in.get_string(key + ".body", "");
+    in.check(in.has(key + ".below_z_m"), key + ".below_z_m", "is required with body");
+    c.threshold = in.get_double(key + ".below_z_m", 0.0);
+  }
+  return c;
+}
+
+}  // namespace
+
+void read_drop(ConfigReader& in, Scenario* sc) {
+  if (!in.is_table("drop")) return;
+  const bool enabled = in.get_bool("drop.enabled", true);
+  const double mass_kg = in.get_double("drop.mass_kg", 0.2);
+  in.check(mass_kg > 0 && mass_kg <= 10, "drop.mass_kg",
+           "must be in (0, 10] kg, got " + format_value(mass_kg));
+  const double height_m = in.get_double("drop.height_m", 0.14);
+  in.check(height_m >= 0 && height_m <= 1, "drop.height_m",
+           "must be in [0, 1] m, got " + format_value(height_m));
+  const double time_s = in.get_double("drop.time_s", 1.0);
+  in.check(time_s >= 0 && time_s < sc->duration_s, "drop.time_s",
+           "must be in [0, sim.duration_s), got " + format_value(time_s));
+  const std::string body = in.get_string("drop.body", "ball");
+  const std::string basket = in.get_string("drop.basket", "basket");
+  const std::string site = in.get_string("drop.site", "basket_floor");
+
+  // the mass, held above the basket floor, released at time_s; the impact marked
+  sc->body_masses.push_back({"drop.mass_kg", body, mass_kg});
+  HoldSpec hold;
+  hold.key = "drop";
+  hold.body = body;
+  hold.above_site = site;
+  hold.height_m = height_m;
+  sc->holds.push_back(hold);
+  EventSpec release;
+  release.key = "drop";
+  release.name = "release";
+  release.action = EventAction::kRelease;
+  release.body = body;
+  release.when.at_s = enabled ? time_s : INFINITY;
+  sc->events.push_back(release);
+  EventSpec impact;
+  impact.key = "drop";
+  impact.name = "impact";
+  impact.when.kind = ConditionKind::kContact;
+  impact.when.body_a = body;
+  impact.when.body_b = basket;
+  impact.when.after = "release";
+  sc->events.push_back(impact);
+}
+
+void read_bodies_and_holds(ConfigReader& in, Scenario* sc) {
+  for (const std::string& body : in.child_keys("bodies")) {
+    const std::string key = "bodies." + body + ".mass_kg";
+    const double mass = in.get_double(key, 0.0);
+    in.check(in.has(key) && mass > 0 && mass <= 1000, key,
+             "must be in (0, 1000] kg, got " + format_value(mass));
+    sc->body_masses.push_back({key, body, mass});
+  }
+  for (const std::string& body : in.child_keys("holds")) {
+    HoldSpec h;
+    h.key = "holds." + body;
+    h.body = body;
+    h.at_position = in.has(h.key + ".position_m");
+    if (h.at_position) {
+      const std::vector<double> p = in.get_double_list(h.key + ".position_m", {});
+      in.check(p.size() == 3, h.key + ".position_m", "must be [x, y, z] in m");
+      h.position_m = {p[0], p[1], p[2]};
+      in.check(!in.has(h.key + ".above_site"), h.key, "gives position_m and above_site; give one");
+    } else {
+      h.above_site = in.get_string(h.key + ".above_site", "");
+      in.check(!h.above_site.empty(), h.key, "must give above_site (with height_m) or position_m");
+      h.height_m = in.get_double(h.key + ".height_m", 0.0);
+      in.check(h.height_m >= 0 && h.height_m <= 10, h.key + ".height_m",
+               "must be in [0, 10] m, got " + format_value(h.height_m));
+    }
+    for (const HoldSpec& other : sc->holds) {
+      in.check(other.body != body, h.key, "holds body '" + body + "', already held by " + other.key);
+    }
+    sc->holds.push_back(h);
+  }
+}
+
+void read_events(ConfigReader& in, Scenario* sc) {
+  for (const std::string& name : in.child_keys("events")) {
+    EventSpec e;
+    e.key = "events." + name;
+    e.name = name;
+    in.check(sc->event(name) == nullptr, e.key, "repeats the name of an event the [drop] table makes");
+    e.action = parse_action(in, e.key + ".action");
+    if (e.action == EventAction::kRelease || e.action == EventAction::kAddMass) {
+      e.body = in.get_string(e.key + ".body", "");
+      in.check(!e.body.empty(), e.key + ".body", "is required for this action");
+    }
+    if (e.action == EventAction::kAddMass) {
+      e.mass_kg = in.get_double(e.key + ".mass_kg", 0.0);
+      in.check(e.mass_kg > 0 && e.mass_kg <= 1000, e.key + ".mass_kg",
+               "must be in (0, 1000] kg, got " + format_value(e.mass_kg));
+    }
+    e.when = read_condition(in, e.key + ".when", *sc);
+    e.when.after = in.get_string(e.key + ".after", "");
+    sc->events.push_back(e);
+  }
+  // `after` names another event
+  for (const EventSpec& e : sc->events) {
+    if (e.when.after.empty()) continue;
+    in.check(sc->event(e.when.after) != nullptr && e.when.after != e.name, e.key + ".after",
+             "names no other event: \"" + e.when.after + "\"");
+  }
+}
+
+}  // namespace pamsim

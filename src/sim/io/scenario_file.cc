@@ -1,0 +1,204 @@
+// scenario_file.cc: see scenario_file.h. The top level (seed, model, sim, valve, controller,
+// reflex, sensors, metrics); muscles and events are read by scenario_muscles.cc and
+// scenario_events.cc.
+#include "sim/io/scenario_file.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pam_actuator/units.h"
+#include "sim/core/metrics.h"
+#include "sim/io/scenario_reading.h"
+
+namespace pamsim {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+void read_time(ConfigReader& in, Scenario* sc) {
+  sc->timestep_s = in.get_double("sim.timestep_s", sc->timestep_s);
+  in.check(sc->timestep_s > 0 && sc->timestep_s <= 0.01, "sim.timestep_s",
+           "must be in (0, 0.01] s, got " + format_value(sc->timestep_s));
+  sc->duration_s = in.get_double("sim.duration_s", sc->duration_s);
+  in.check(sc->duration_s > 0 && sc->duration_s <= 3600, "sim.duration_s",
+           "must be in (0, 3600] s, got " + format_value(sc->duration_s));
+  sc->control_hz = in.get_double("sim.control_hz", sc->control_hz);
+  in.check(sc->control_hz > 0, "sim.control_hz", "must be > 0, got " + format_value(sc->control_hz));
+  const double ratio = 1.0 / (sc->control_hz * sc->timestep_s);
+  in.check(ratio >= 1.0 - 1e-9 && std::fabs(ratio - std::round(ratio)) < 1e-6, "sim.control_hz",
+           "must divide the physics rate 1/sim.timestep_s into whole steps, got " +
+               format_value(sc->control_hz) + " Hz at " + format_value(sc->timestep_s) + " s");
+}
+
+void read_model(ConfigReader& in, Scenario* sc) {
+  sc->model_file = in.get_path("model.file", "");
+  in.check(!sc->model_file.empty(), "model.file", "is required");
+  sc->joint = in.get_string("model.joint", "");
+  sc->calibration_file = in.get_path("model.calibration", "");
+  sc->pneumatics_file = in.get_path("model.pneumatics", "");
+  in.check(!sc->pneumatics_file.empty(), "model.pneumatics", "is required");
+  sc->pneumatics = load_pneumatic_params(sc->pneumatics_file);
+  const std::string valve = in.get_string("valve.model", valve_model_name(sc->valve_model));
+  sc->valve_model = parse_valve_model(valve, in.name() + ": valve.model");
+}
+
+void read_reflex(ConfigReader& in, Scenario* sc) {
+  ReflexConfig& r = sc->reflex.reflex;
+  r.enabled = in.get_bool("reflex.enabled", r.enabled);
+  const std::string sensor = in.get_string("reflex.sensor", to_string(r.sensor));
+  r.sensor = in_file(in, [&] { return parse_reflex_sensor(sensor); });
+  // Table II values are the defaults for the chosen sensor
+  const ReflexConfig table = table_ii_reflex_config(r.sensor);
+  r.v_thr_mm_s = in.get_double("reflex.v_thr_mm_s", table.v_thr_mm_s);
+  r.k_MPa_s_per_mm = in.get_double("reflex.k_MPa_s_per_mm", table.k_MPa_s_per_mm);
+  r.duration_s = in.get_double("reflex.duration_s", r.duration_s);
+  const std::string mode = in.get_string("reflex.mode", to_string(r.mode));
+  r.mode = in_file(in, [&] { return parse_reflex_mode(mode); });
+  r.refractory_s = in.get_double("reflex.refractory_s", r.refractory_s);
+  r.arm_after_s = in.get_double("reflex.arm_after_s", r.arm_after_s);
+  r.lowpass_hz = in.get_double("reflex.lowpass_hz", r.lowpass_hz);
+  r.min_tension_n = in.get_double("reflex.min_tension_N", r.min_tension_n);
+  r.reciprocal_trigger_inhibition =
+      in.get_bool("reflex.reciprocal_trigger_inhibition", r.reciprocal_trigger_inhibition);
+  sc->reflex.p_max_pa = units::mpa_to_pa(
+      in.get_double("controller.p_max_MPa", units::pa_to_mpa(sc->pneumatics.command_max_gauge_pa)));
+  sc->reflex.control_hz = sc->control_hz;
+  sc->reflex.muscle_count = static_cast<int>(sc->muscles.size());
+  sc->reflex.pairs.clear();   // resolved by name when the model is bound (trial_model.h)
+
+  // pairs by actuator name; agonist/antagonist by default
+  const bool has_default_pair = sc->muscle("agonist") && sc->muscle("antagonist");
+  const std::vector<std::string> flat = has_default_pair
+      ? std::vector<std::string>{"agonist", "antagonist"} : std::vector<std::string>{};
+  if (in.has("reflex.pairs")) {
+    const toml::node* n = in.raw("reflex.pairs");
+    const toml::array* a = n->as_array();
+    in.check(a != nullptr, "reflex.pairs", "must be a list of [agonist, antagonist] name pairs");
+    for (const toml::node& item : *a) {
+      const toml::array* pair = item.as_array();
+      const bool ok = pair && pair->size() == 2 && (*pair)[0].is_string() && (*pair)[1].is_string();
+      in.check(ok, "reflex.pairs", "must be a list of [agonist, antagonist] name pairs");
+      sc->reflex_pairs.push_back({*(*pair)[0].value<std::string>(), *(*pair)[1].value<std::string>()});
+    }
+  } else if (has_default_pair) {
+    sc->reflex_pairs.push_back({flat[0], flat[1]});
+  }
+  in.check(!sc->reflex_pairs.empty(), "reflex.pairs",
+           "is required: the scenario has no muscles named agonist and antagonist");
+  in_file(in, [&] {
+    StretchReflexControllerConfig check = sc->reflex;
+    check.pairs.clear();
+    validate(check);
+    return 0;
+  });
+}
+
+void read_sensors(ConfigReader& in, Scenario* sc) {
+  SensorConfig& s = sc->sensing.sensors;
+  s.pressure_noise_mpa = in.get_double("sensors.pressure_noise_MPa", s.pressure_noise_mpa);
+  s.pressure_bias_mpa = in.get_double("sensors.pressure_bias_MPa", s.pressure_bias_mpa);
+  s.pressure_adc_bits = static_cast<int>(in.get_int("sensors.pressure_adc_bits", s.pressure_adc_bits));
+  s.pressure_adc_min_v = in.get_double("sensors.pressure_adc_min_V", s.pressure_adc_min_v);
+  s.pressure_adc_max_v = in.get_double("sensors.pressure_adc_max_V", s.pressure_adc_max_v);
+  s.pressure_lowpass_hz = in.get_double("sensors.pressure_lowpass_hz", s.pressure_lowpass_hz);
+  s.gauge_noise_v = in.get_double("sensors.gauge_noise_V", s.gauge_noise_v);
+  s.gauge_adc_bits = static_cast<int>(in.get_int("sensors.gauge_adc_bits", s.gauge_adc_bits));
+  s.gauge_adc_min_v = in.get_double("sensors.gauge_adc_min_V", s.gauge_adc_min_v);
+  s.gauge_adc_max_v = in.get_double("sensors.gauge_adc_max_V", s.gauge_adc_max_v);
+  s.fiber_noise_mm_s = in.get_double("sensors.fiber_noise_mm_s", s.fiber_noise_mm_s);
+  sc->sensing.control_hz = sc->control_hz;
+  sc->sensing.velocity_lowpass_hz =
+      sc->controller == ControllerKind::kStretchReflex ? sc->reflex.reflex.lowpass_hz : 0.0;
+  in_file(in, [&] {
+    validate(sc->sensing);
+    return 0;
+  });
+}
+
+void read_controller(ConfigReader& in, Scenario* sc) {
+  const std::string kind = in.get_string("controller.kind", "stretch_reflex");
+  if (kind == "none") {
+    sc->controller = ControllerKind::kNone;
+    in.check(!in.has("reflex"), "reflex",
+             "is the stretch_reflex controller's section, but controller.kind is \"none\"");
+  } else if (kind == "stretch_reflex") {
+    sc->controller = ControllerKind::kStretchReflex;
+    read_reflex(in, sc);
+  } else {
+    in.fail("controller.kind", "must be \"none\" or \"stretch_reflex\", got \"" + kind + "\"");
+  }
+}
+
+void read_metrics(ConfigReader& in, Scenario* sc, bool has_drop) {
+  std::vector<std::string> defaults = {"drop", "reflex", "length_estimate"};
+  if (!has_drop) {
+    defaults = {"tracking", "length_estimate"};
+    if (sc->controller == ControllerKind::kStretchReflex) defaults.push_back("reflex");
+  }
+  sc->metrics = in.get_string_list("metrics", defaults);
+  for (const std::string& name : sc->metrics) {
+    bool known = false;
+    for (const std::string& k : metric_set_names()) known = known || k == name;
+    in.check(known, "metrics", "names an unknown set \"" + name +
+                                   "\" (known: drop, reflex, length_estimate, tracking)");
+  }
+  if (std::find(sc->metrics.begin(), sc->metrics.end(), "drop") != sc->metrics.end()) {
+    in.check(sc->event("release") && sc->event("impact"), "metrics",
+             "\"drop\" needs events named \"release\" and \"impact\" (a [drop] table makes them)");
+  }
+}
+
+Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrides,
+                       bool lines_needed = true) {
+  for (const auto& o : overrides) in.apply_override(o);
+  Scenario sc;
+  sc.path = in.name();
+  const std::int64_t seed = in.get_int("seed", 1);
+  in.check(seed >= 0, "seed", "must be >= 0, got " + std::to_string(seed));
+  sc.seed = static_cast<std::uint64_t>(seed);
+
+  read_time(in, &sc);
+  read_model(in, &sc);
+  read_muscles(in, &sc, lines_needed);
+  const bool has_drop = in.is_table("drop");
+  read_drop(in, &sc);
+  read_bodies_and_holds(in, &sc);
+  read_events(in, &sc);
+  read_controller(in, &sc);
+  read_sensors(in, &sc);
+  read_metrics(in, &sc, has_drop);
+  in.reject_unknown();
+  return sc;
+}
+
+}  // namespace
+
+Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides) {
+  ConfigReader in(path);
+  return read_scenario(in, overrides);
+}
+
+Scenario load_scenario_text(const std::string& text, const std::string& path,
+                            const std::vector<std::string>& overrides) {
+  ConfigReader in(text, path);
+  return read_scenario(in, overrides);
+}
+
+Scenario load_scenario_for_calibration(const std::string& path,
+                                       const std::vector<std::string>& overrides) {
+  ConfigReader in(path);
+  return read_scenario(in, overrides, false);
+}
+
+bool is_scenario_path_key(const std::string& key) {
+  if (key == "model.file" || key == "model.calibration" || key == "model.pneumatics") return true;
+  if (key.rfind("model.", 0) == 0 && ends_with(key, "_params")) return true;
+  if (key.rfind("muscles.", 0) == 0) {
+    return ends_with(key, ".params") || ends_with(key, ".command.file");
+  }
+  return false;
+}
+
+}  // namespace pamsim

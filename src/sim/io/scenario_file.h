@@ -1,0 +1,84 @@
+// scenario_file.h: reads a scenario (core/scenario.h) from a TOML file plus `--set key=value`
+// overrides and validates every key once, before anything runs. Keys (units in their names;
+// the papers' MPa and mm at the file, SI inside):
+//   seed                          integer >= 0
+//   metrics                       metric sets (core/metrics.h); default: the drop's
+//                                 ["drop", "reflex", "length_estimate"] with a [drop] table,
+//                                 else ["tracking", "length_estimate"] (+ "reflex" with a
+//                                 stretch_reflex controller)
+//   model.file                    MJCF (path, relative to the scenario file)
+//   model.joint                   the joint logged and measured; default: the model's first
+//                                 hinge or slide joint
+//   model.calibration             optional: start_angle_deg and <actuator>_line_mm (calibrate)
+//   model.pneumatics              valve and chamber parameters (models/pams/pneumatics.toml)
+//   sim.timestep_s                physics step, (0, 0.01], default 0.001
+//   sim.duration_s                (0, 3600], default 3
+//   sim.control_hz                control and logging rate, default 100; a whole divisor of
+//                                 the physics rate
+//   muscles.<actuator>.params     PAM parameter file (models/pams/...), required for every
+//                                 PAM actuator of the model
+//   muscles.<actuator>.label      name in columns and metrics, default the actuator's name
+//   muscles.<actuator>.line_mm    fishing-line length; or .line = "equilibrium" (solved so
+//                                 the start state is static); default: model.calibration's
+//   muscles.<actuator>.command    the commanded pressure (core/schedule.h), a table:
+//       kind = "constant"  MPa
+//       kind = "ramp"      from_MPa, to_MPa, duration_s, start_s (default 0)
+//       kind = "sine"      offset_MPa, amplitude_MPa, period_s, phase_deg (0), start_s (0)
+//       kind = "steps"     times_s = [...], MPa = [...]
+//       kind = "table"     file: a CSV "time_s,MPa", piecewise linear
+//   bodies.<body>.mass_kg         (0, 1000]
+//   holds.<body>                  a free body held at rest until released: above_site and
+//                                 height_m in [0, 10] (its bottom, for a sphere), or
+//                                 position_m = [x, y, z]
+//   events.<name>                 action = "mark" | "release" | "add_mass" | "controller_off"
+//                                 | "controller_on" | "end"; body (release, add_mass);
+//                                 mass_kg (add_mass); after = another event's name; and
+//       when.at_s                 a time >= 0, or
+//       when.contact = [a, b]     two bodies touch, or
+//       when.joint with below_deg / above_deg (hinge) or below_mm / above_mm (slide), or
+//       when.body with below_z_m  a body's origin below a height
+//   controller.kind               "none" | "stretch_reflex" (default)
+//   controller.p_max_MPa          valve range for the reflex's commands, > 0
+//   reflex.*                      the stretch reflex (reflex/stretch_reflex_controller.h)
+//   reflex.pairs                  [[agonist, antagonist], ...] by actuator name; default
+//                                 [["agonist", "antagonist"]] when both muscles exist
+//   sensors.*                     the sensors (reflex/sensors.h)
+//   valve.model                   "iso6358" | "first_order"
+// Shorthands kept from pamsim 0.1 (their keys keep their meaning):
+//   drop.{enabled, mass_kg, height_m, time_s} (and body = "ball", basket = "basket",
+//     site = "basket_floor"): the falling mass: bodies.<body>.mass_kg, a hold of the body
+//     height_m above the site, events "release" (at time_s, if enabled) and "impact" (the
+//     body touches the basket, after the release)
+//   model.<actuator>_params = muscles.<actuator>.params (the agonist and antagonist of
+//     these files are labelled "ago" and "anta", as before)
+//   pressure.<actuator>_MPa = a constant muscles.<actuator>.command
+// A shorthand and its long form may not both be given in the file; a --set of the
+// shorthand replaces the long form.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sim/core/scenario.h"
+
+namespace pamsim {
+
+// Throws InputError "<file>: <key> <problem>" on the first error.
+Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides = {});
+// The same from the scenario's text, as if read from `path` (relative paths resolve against
+// its folder): a sweep runs every point on the base scenario it validated, even if the file
+// changes on disk meanwhile.
+Scenario load_scenario_text(const std::string& text, const std::string& path,
+                            const std::vector<std::string>& overrides = {});
+
+// For `pamsim calibrate`, which solves the line lengths: reads the scenario without its
+// calibration file (which may not exist yet) and with placeholder lines.
+Scenario load_scenario_for_calibration(const std::string& path,
+                                       const std::vector<std::string>& overrides = {});
+
+// True for the keys that hold file paths (relative to the scenario file), for tools that
+// move a scenario elsewhere (a sweep's best.toml): model.file, model.calibration,
+// model.pneumatics, model.<m>_params, muscles.<m>.params, muscles.<m>.command.file.
+bool is_scenario_path_key(const std::string& key);
+
+}  // namespace pamsim

@@ -1,0 +1,175 @@
+// scenario_muscles.cc: muscles.<actuator>.* (parameter file, label, line, command schedule)
+// and the pamsim 0.1 shorthands model.<actuator>_params and pressure.<actuator>_MPa.
+#include <optional>
+#include <set>
+
+#include "pam_actuator/units.h"
+#include "sim/io/calibration_file.h"
+#include "sim/io/scenario_reading.h"
+
+namespace pamsim {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string strip(const std::string& s, const std::string& prefix, const std::string& suffix) {
+  return s.substr(prefix.size(), s.size() - prefix.size() - suffix.size());
+}
+
+// the label pamsim 0.1 gave the arm's muscles in its columns
+std::string legacy_label(const std::string& actuator) {
+  if (actuator == "agonist") return "ago";
+  if (actuator == "antagonist") return "anta";
+  return actuator;
+}
+
+// The long key, or the shorthand in its place: refused if both are in the file, the
+// shorthand wins if it came from --set. Returns the key to read, or "" if neither is given.
+std::string long_or_short(const ConfigReader& in, const std::string& long_key,
+                          const std::string& short_key) {
+  const bool has_long = in.has(long_key), has_short = in.has(short_key);
+  if (has_long && has_short && !in.overridden(short_key)) {
+    in.fail(short_key, "is the shorthand of " + long_key + "; give one of them");
+  }
+  if (has_short) return short_key;
+  return has_long ? long_key : "";
+}
+
+PressureSchedule read_command(ConfigReader& in, const std::string& key) {
+  PressureSchedule s;
+  const std::string kind = in.get_string(key + ".kind", "constant");
+  s.kind = in_file(in, [&] { return parse_schedule_kind(kind, key + ".kind"); });
+  auto mpa = [&](const std::string& field) {
+    if (!in.has(key + "." + field)) in.fail(key + "." + field, "is required for kind \"" + kind + "\"");
+    return units::mpa_to_pa(in.get_double(key + "." + field, 0.0));
+  };
+  switch (s.kind) {
+    case ScheduleKind::kConstant:
+      s.p0_pa = mpa("MPa");
+      break;
+    case ScheduleKind::kRamp:
+      s.p0_pa = mpa("from_MPa");
+      s.p1_pa = mpa("to_MPa");
+      s.start_s = in.get_double(key + ".start_s", 0.0);
+      s.duration_s = in.get_double(key + ".duration_s", 0.0);
+      break;
+    case ScheduleKind::kSine:
+      s.p0_pa = mpa("offset_MPa");
+      s.amplitude_pa = mpa("amplitude_MPa");
+      s.period_s = in.get_double(key + ".period_s", 0.0);
+      s.phase_rad = units::deg_to_rad(in.get_double(key + ".phase_deg", 0.0));
+      s.start_s = in.get_double(key + ".start_s", 0.0);
+      break;
+    case ScheduleKind::kSteps: {
+      s.times_s = in.get_double_list(key + ".times_s", {});
+      for (double p : in.get_double_list(key + ".MPa", {})) s.values_pa.push_back(units::mpa_to_pa(p));
+      in.check(!s.times_s.empty() && s.times_s.size() == s.values_pa.size(), key + ".MPa",
+               "must give one pressure per time in times_s, at least one");
+      break;
+    }
+    case ScheduleKind::kTable: {
+      const std::string file = in.get_path(key + ".file", "");
+      in.check(!file.empty(), key + ".file", "is required for kind \"table\"");
+      s = in_file(in, [&] { return read_schedule_csv(file); });
+      break;
+    }
+  }
+  in_file(in, [&] {
+    validate(s, key, 1.0e12);   // the supply is checked once the pneumatics are known
+    return 0;
+  });
+  return s;
+}
+
+// the names of the muscles: muscles.<name> tables and the shorthands' <name>s
+std::vector<std::string> muscle_names(const ConfigReader& in) {
+  std::vector<std::string> names = in.child_keys("muscles");
+  std::set<std::string> seen(names.begin(), names.end());
+  for (const auto& [table, suffix] : {std::pair{"model", "_params"}, {"pressure", "_MPa"}}) {
+    for (const std::string& k : in.child_keys(table)) {
+      if (!ends_with(k, suffix)) continue;
+      const std::string name = strip(k, "", suffix);
+      if (seen.insert(name).second) names.push_back(name);
+    }
+  }
+  return names;
+}
+
+MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& name,
+                       const ArmCalibration* calibration, bool lines_needed) {
+  MuscleSpec m;
+  m.key = "muscles." + name;
+  m.actuator = name;
+
+  // parameter file (and the legacy label of the shorthand's arm)
+  const std::string params_key = long_or_short(in, m.key + ".params", "model." + name + "_params");
+  in.check(!params_key.empty(), m.key + ".params", "is required");
+  m.params_file = in.get_path(params_key, "");
+  m.pam = in_file(in, [&] { return load_pam_params(m.params_file); });
+  in.check(m.pam.strain_gauge.has_value(), params_key,
+           "(" + m.params_file + ") needs a [strain_gauge] table (Eq. (8)): the sensing reads it");
+  const bool legacy = params_key != m.key + ".params";
+  m.label = in.get_string(m.key + ".label", legacy ? legacy_label(name) : name);
+  in.check(!m.label.empty() && m.label.find_first_of(" ,\"") == std::string::npos, m.key + ".label",
+           "must be a non-empty name without spaces, commas or quotes");
+
+  // the command: a schedule, or the shorthand's constant
+  const std::string command_key = long_or_short(in, m.key + ".command", "pressure." + name + "_MPa");
+  in.check(!command_key.empty(), m.key + ".command", "is required");
+  if (command_key == m.key + ".command") {
+    m.command = read_command(in, command_key);
+  } else {
+    m.command.p0_pa = units::mpa_to_pa(in.get_double(command_key, 0.0));
+  }
+  const double supply = sc.pneumatics.supply_gauge_pa;
+  in.check(m.command.min_pa() >= 0 && m.command.max_pa() <= supply, command_key,
+           "must stay within [0, " + format_value(units::pa_to_mpa(supply)) +
+               "] MPa (the supply), got " + format_value(units::pa_to_mpa(m.command.min_pa())) +
+               (m.command.min_pa() == m.command.max_pa()
+                    ? "" : " to " + format_value(units::pa_to_mpa(m.command.max_pa()))));
+
+  // the line: fixed, solved, or the calibration's
+  const std::string line = in.get_string(m.key + ".line", "");
+  const bool fixed = in.has(m.key + ".line_mm");
+  in.check(line.empty() || line == "equilibrium", m.key + ".line",
+           "must be \"equilibrium\", got \"" + line + "\"");
+  in.check(!(fixed && !line.empty()), m.key + ".line", "and line_mm may not both be given");
+  if (fixed) {
+    m.line_length_m = units::mm_to_m(in.get_double(m.key + ".line_mm", 0.0));
+    in.check(m.line_length_m > 0, m.key + ".line_mm", "must be > 0");
+  } else if (!line.empty()) {
+    m.line = LineSource::kEquilibrium;
+  } else if (!lines_needed) {
+    m.line_length_m = 1.0;   // a placeholder: `pamsim calibrate` solves it
+  } else {
+    const CalibratedLine* c = calibration ? calibration->line(name) : nullptr;
+    in.check(c != nullptr, m.key + ".line_mm",
+             "is required (or .line = \"equilibrium\", or model.calibration with " + name + "_line_mm)");
+    m.line_length_m = c->line_length_m;
+  }
+  return m;
+}
+
+}  // namespace
+
+void read_muscles(ConfigReader& in, Scenario* sc, bool lines_needed) {
+  std::optional<ArmCalibration> calibration;
+  if (!sc->calibration_file.empty() && lines_needed) {
+    calibration = in_file(in, [&] { return load_calibration(sc->calibration_file); });
+    sc->has_start_position = true;
+    sc->start_position = calibration->start_angle_rad;
+  }
+  for (const std::string& name : muscle_names(in)) {
+    sc->muscles.push_back(
+        read_muscle(in, *sc, name, calibration ? &*calibration : nullptr, lines_needed));
+  }
+  in.check(!sc->muscles.empty(), "muscles", "is required: a table per PAM actuator of the model");
+  std::set<std::string> labels;
+  for (const MuscleSpec& m : sc->muscles) {
+    in.check(labels.insert(m.label).second, m.key + ".label", "repeats label \"" + m.label + "\"");
+  }
+}
+
+}  // namespace pamsim

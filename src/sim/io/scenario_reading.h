@@ -1,0 +1,39 @@
+// scenario_reading.h: the parts of scenario_file.cc's reader, one per group of keys
+// (internal to src/sim/io).
+#pragma once
+
+#include "sim/core/scenario.h"
+#include "sim/io/config_reader.h"
+
+namespace pamsim {
+
+// drop.*, bodies.*, holds.*, events.* (scenario_events.cc)
+void read_drop(ConfigReader& in, Scenario* sc);
+void read_bodies_and_holds(ConfigReader& in, Scenario* sc);
+void read_events(ConfigReader& in, Scenario* sc);
+
+// muscles.* with the model.<m>_params and pressure.<m>_MPa shorthands (scenario_muscles.cc)
+// Without `lines_needed` (calibrate) the calibration file is not read and lines not given
+// are placeholders.
+void read_muscles(ConfigReader& in, Scenario* sc, bool lines_needed);
+
+// Runs `parse`, prefixing any InputError with the scenario's name.
+template <typename F>
+auto in_file(const ConfigReader& in, F&& parse) -> decltype(parse());
+
+}  // namespace pamsim
+
+#include "pam_actuator/input_error.h"
+
+namespace pamsim {
+
+template <typename F>
+auto in_file(const ConfigReader& in, F&& parse) -> decltype(parse()) {
+  try {
+    return parse();
+  } catch (const InputError& e) {
+    throw InputError(in.name() + ": " + e.what());
+  }
+}
+
+}  // namespace pamsim
