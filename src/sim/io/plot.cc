@@ -283,7 +283,7 @@ GnuplotJob band_job(const std::vector<BandSeries>& runs, const std::string& titl
   // axes; a fixed y range if no angle is finite (gnuplot refuses an all-missing plot)
   s << "set title " << gp_quote(title) << " font ',14'\n"
     << "set xlabel 'time (s)'\nset ylabel 'angle (deg)'\nset grid\n"
-    << "set key top right box opaque\n"
+    << "set key top right box opaque width 2\n"
     << xrange_line(all_time);
   double lo, hi;
   if (!finite_range(all_angle, lo, hi)) s << "set yrange [-1:1]\n";
@@ -432,7 +432,7 @@ void write_angle_plot(const std::string& png_path, const TrialResult& trial,
   std::ostringstream s;
   s << "set multiplot title " << gp_quote(title) << " font ',14'\n"
     << "set lmargin at screen 0.08\nset rmargin at screen 0.97\n"
-    << xrange_line(t) << "set grid\nset key top right box opaque\n";
+    << xrange_line(t) << "set grid\nset key top right box opaque width 2\n";
 
   // top panel: the joint, the impact, the reflex windows, the start angle
   double lo, hi;

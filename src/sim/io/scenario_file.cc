@@ -42,6 +42,19 @@ void read_model(ConfigReader& in, Scenario* sc) {
   sc->pneumatics = load_pneumatic_params(sc->pneumatics_file);
   const std::string valve = in.get_string("valve.model", valve_model_name(sc->valve_model));
   sc->valve_model = parse_valve_model(valve, in.name() + ": valve.model");
+
+  // a rig's own supply and regulator range, over the pneumatics file's
+  PneumaticParams& p = sc->pneumatics;
+  p.supply_gauge_pa = units::mpa_to_pa(in.get_double("valve.supply_MPa", units::pa_to_mpa(p.supply_gauge_pa)));
+  p.command_max_gauge_pa = units::mpa_to_pa(
+      in.get_double("valve.command_max_MPa", units::pa_to_mpa(p.command_max_gauge_pa)));
+  if (in.has("valve.supply_MPa") || in.has("valve.command_max_MPa")) {
+    const std::string key = in.has("valve.command_max_MPa") ? "valve.command_max_MPa" : "valve.supply_MPa";
+    in_file(in, [&] {
+      validate_pneumatic_params(p, key);
+      return 0;
+    });
+  }
 }
 
 void read_reflex(ConfigReader& in, Scenario* sc) {

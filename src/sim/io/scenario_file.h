@@ -44,6 +44,8 @@
 //                                 [["agonist", "antagonist"]] when both muscles exist
 //   sensors.*                     the sensors (reflex/sensors.h)
 //   valve.model                   "iso6358" | "first_order"
+//   valve.supply_MPa, valve.command_max_MPa   a rig's own supply and regulator range, in
+//                                 place of model.pneumatics' (command max <= supply)
 // Shorthands kept from pamsim 0.1 (their keys keep their meaning):
 //   drop.{enabled, mass_kg, height_m, time_s} (and body = "ball", basket = "basket",
 //     site = "basket_floor"): the falling mass: bodies.<body>.mass_kg, a hold of the body
