@@ -1,0 +1,78 @@
+// trial_run.h: the TrialRun behind run_trial (trial.h), internal to src/sim/core: one
+// trial from start to summary, one method per phase of a physics step. trial.cc sets it up
+// and runs it; trial_step.cc holds the phases.
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pam_actuator/pneumatics.h"
+#include "reflex/sensing.h"
+#include "sim/core/trial.h"
+
+namespace pamsim {
+
+// One trial from start to summary; each method is one phase of a physics step.
+class TrialRun {
+ public:
+  TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed, const TrialOptions& opt);
+  TrialResult run();
+
+ private:
+  void start_state();
+  bool before_step(double t);    // false: an event ended the trial
+  bool control_tick(double t);   // false: the controller failed (diverged)
+  bool physics_step(double t);   // false: the step diverged
+  bool after_step();             // false: an event ended the trial
+  void fire(std::size_t k, double t);
+  bool condition_holds(std::size_t k) const;
+  void hold_bodies();
+  void log_row(double t);
+  void show_observer();
+  double joint_position() const { return d_->qpos[tm_.joint.qpos]; }
+  void set_status(const std::string& status, const std::string& why, double t);
+  TrialSummary finish(long steps, std::chrono::steady_clock::duration wall);
+
+  const TrialModel& tm_;
+  const Scenario& sc_;
+  const TrialOptions& options_;
+  MjModelPtr own_model_;   // a copy, only when events change the model
+  mjModel* mutable_model_ = nullptr;
+  const mjModel* m_;
+  MjDataPtr data_;
+  mjData* d_;
+  const std::size_t n_;    // muscles
+  const std::vector<std::string> labels_;
+  const std::vector<double> start_p_pa_;   // the schedules at t = 0
+  PneumaticSystem pneumatics_;
+  SensorSuite sensors_;
+  std::unique_ptr<Controller> controller_;
+  std::vector<std::unique_ptr<MetricSet>> metrics_;
+  std::vector<MetricSet*> step_metrics_;
+  LogLayout layout_;
+  TrialResult result_;
+
+  // per tick and per step state, allocated once
+  std::vector<MuscleTruth> truth_;
+  std::vector<MuscleReading> readings_;
+  std::vector<double> p_tp_pa_;
+  ControlOutput out_;
+  std::vector<double> row_;
+  std::vector<double> pressure_pa_, command_pa_;
+  std::vector<std::array<double, 3>> hold_pos_;
+  std::vector<char> held_;
+  std::vector<char> fired_;
+  std::vector<double> event_time_s_, event_position_;
+  bool controller_enabled_ = true;
+  std::string end_message_;
+
+  // the observer is shown the state when it asks; without one a step costs one compare
+  double next_observation_s_ = std::numeric_limits<double>::infinity();
+  std::chrono::steady_clock::duration observer_wall_{};
+};
+
+}  // namespace pamsim

@@ -1,0 +1,203 @@
+// gnuplot.cc: see gnuplot.h. Each plot is a gnuplot script plus whitespace-separated .dat
+// files in a private temp folder; gnuplot runs there and writes a temp PNG next to the
+// target, which is then renamed into place.
+#include "sim/io/gnuplot.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <algorithm>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+namespace pamsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+// unique temp names across threads of this process
+std::atomic<unsigned long> g_plot_counter{0};
+
+// a POSIX shell single-quoted word
+std::string sh_quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) {
+    if (c == '\'') out += "'\\''";
+    else out += c;
+  }
+  return out + "'";
+}
+
+// the gnuplot executable on PATH, or "" if there is none
+std::string find_gnuplot() {
+  const char* path = std::getenv("PATH");
+  if (path == nullptr) return "";
+  std::stringstream dirs(path);
+  std::string dir;
+  while (std::getline(dirs, dir, ':')) {
+    if (dir.empty()) dir = ".";
+    const std::string candidate = dir + "/gnuplot";
+    if (::access(candidate.c_str(), X_OK) == 0 && !fs::is_directory(candidate)) return candidate;
+  }
+  return "";
+}
+
+// a private folder under the system temp folder, removed with everything in it
+class TempDir {
+ public:
+  explicit TempDir(const std::string& png_path) {
+    std::error_code ec;
+    const fs::path base = fs::temp_directory_path(ec);
+    if (ec) throw std::runtime_error(png_path + ": no temp folder for gnuplot (" + ec.message() + ")");
+    for (int attempt = 0; attempt < 100; ++attempt) {
+      const fs::path p = base / ("pamsim_plot_" + std::to_string(::getpid()) + "_" +
+                                 std::to_string(g_plot_counter++));
+      if (fs::create_directory(p, ec)) {
+        path_ = p;
+        return;
+      }
+      if (ec) break;
+    }
+    throw std::runtime_error(png_path + ": cannot create a temp folder in " + base.string() +
+                             (ec ? " (" + ec.message() + ")" : ""));
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+// the line of gnuplot's stderr that says what went wrong
+std::string first_error_line(const std::string& err) {
+  static const std::regex located(R"("[^"]*" line [0-9]+: .*)");
+  std::stringstream lines(err);
+  std::string line, first;
+  while (std::getline(lines, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto b = line.find_first_not_of(" \t");
+    if (b == std::string::npos) continue;
+    line = line.substr(b);
+    if (std::regex_match(line, located)) return line;
+    if (first.empty()) first = line;
+  }
+  return first;
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+// a gnuplot single-quoted string literal ('' escapes a quote)
+std::string gp_quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) {
+    if (c == '\'') out += "''";
+    else if (c == '\n') out += ' ';
+    else out += c;
+  }
+  return out + "'";
+}
+
+// a number for a .dat file or a script; non-finite as "nan" (missing, see set datafile)
+std::string gp_num(double v) {
+  if (!std::isfinite(v)) return "nan";
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.9g", v);
+  return buf;
+}
+
+// Runs `job` and moves its PNG to png_path; throws std::runtime_error naming png_path.
+void run_gnuplot(const std::string& png_path, const GnuplotJob& job) {
+  // gnuplot must exist and the target folder too (gnuplot's own message would name a temp file)
+  const std::string gnuplot = find_gnuplot();
+  if (gnuplot.empty()) {
+    throw std::runtime_error(png_path +
+                             ": gnuplot not found on PATH (install gnuplot-nox, pngcairo terminal)");
+  }
+  const fs::path target = fs::absolute(png_path);
+  if (!fs::is_directory(target.parent_path())) {
+    throw std::runtime_error(png_path + ": cannot write the plot, no folder " +
+                             target.parent_path().string());
+  }
+
+  // data and script into the temp folder; output to a temp PNG beside the target
+  const TempDir dir(png_path);
+  const std::string tmp_png = target.string() + ".tmp." + std::to_string(::getpid()) + "." +
+                              std::to_string(g_plot_counter++) + ".png";
+  auto write = [&](const std::string& name, const std::string& content) {
+    std::ofstream out(dir.path() / name, std::ios::binary);
+    out << content;
+    out.close();
+    if (!out) {
+      throw std::runtime_error(png_path + ": cannot write gnuplot input " +
+                               (dir.path() / name).string());
+    }
+  };
+  for (const auto& [name, content] : job.data_files) write(name, content);
+  std::ostringstream script;
+  script << "set terminal pngcairo size " << job.width_px << "," << job.height_px
+         << " noenhanced font 'sans,11'\n"
+         << "set output " << gp_quote(tmp_png) << "\n"
+         << "set datafile missing 'nan'\n"
+         << job.script << "unset output\n";
+  write("plot.gp", script.str());
+
+  // run it in the temp folder, stderr captured
+  const std::string command = "cd " + sh_quote(dir.path().string()) + " && " + sh_quote(gnuplot) +
+                              " plot.gp >gnuplot.out 2>gnuplot.err";
+  const int rc = std::system(command.c_str());
+  std::error_code ec;
+  const bool exited_ok = rc != -1 && WIFEXITED(rc) && WEXITSTATUS(rc) == 0;
+  const bool wrote_png = fs::is_regular_file(tmp_png, ec) && fs::file_size(tmp_png, ec) > 0;
+  if (!exited_ok || !wrote_png) {
+    fs::remove(tmp_png, ec);
+    std::string why = first_error_line(read_text(dir.path() / "gnuplot.err"));
+    if (why.empty()) {
+      why = rc == -1             ? std::string("cannot start a shell")
+            : !WIFEXITED(rc)     ? "killed by signal " + std::to_string(WTERMSIG(rc))
+            : WEXITSTATUS(rc) != 0 ? "exit status " + std::to_string(WEXITSTATUS(rc))
+                                   : std::string("no image written");
+    }
+    throw std::runtime_error(png_path + ": gnuplot failed: " + why);
+  }
+
+  // into place
+  if (std::rename(tmp_png.c_str(), target.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    fs::remove(tmp_png, ec);
+    throw std::runtime_error(png_path + ": cannot move the plot into place: " + why);
+  }
+}
+
+bool finite_range(const std::vector<double>& v, double& lo, double& hi) {
+  lo = INFINITY;
+  hi = -INFINITY;
+  for (double x : v) {
+    if (!std::isfinite(x)) continue;
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+  }
+  return lo <= hi;
+}
+
+}  // namespace pamsim
