@@ -60,7 +60,38 @@ std::vector<std::string> labels_of(const TrialModel& tm) {
   return labels;
 }
 
+// the data this thread lends to trials on one model
+struct ThreadTrialData {
+  std::uint64_t model_id = 0;
+  MjDataPtr data;
+  bool lent = false;
+};
+thread_local ThreadTrialData t_trial_data;
+
 }  // namespace
+
+TrialData::TrialData(const TrialModel& model, const mjModel* m) {
+  ThreadTrialData& cache = t_trial_data;
+  const bool shared_model = m == model.model.get();
+  if (!shared_model || cache.lent) {
+    own_ = make_data(m);
+    d_ = own_.get();
+    return;
+  }
+  if (cache.model_id != model.id || !cache.data) {
+    cache.data = make_data(m);
+    cache.model_id = model.id;
+  } else {
+    mj_resetData(m, cache.data.get());
+  }
+  cache.lent = true;
+  borrowed_ = true;
+  d_ = cache.data.get();
+}
+
+TrialData::~TrialData() {
+  if (borrowed_) t_trial_data.lent = false;
+}
 
 TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
                    const TrialOptions& opt)
@@ -71,7 +102,7 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
                                         : nullptr),
       mutable_model_(own_model_.get()),
       m_(own_model_ ? own_model_.get() : tm.model.get()),
-      data_(make_data(m_)),
+      data_(tm, m_),
       d_(data_.get()),
       n_(tm.muscles.size()),
       labels_(labels_of(tm)),

@@ -1,6 +1,7 @@
 // trial_model.cc: see trial_model.h.
 #include "sim/core/trial_model.h"
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -271,7 +272,9 @@ void set_body_mass(mjModel* m, int body, double mass_kg) {
 }
 
 TrialModel load_trial_model(const Scenario& sc) {
+  static std::atomic<std::uint64_t> next_id{1};
   TrialModel tm;
+  tm.id = next_id++;
   tm.model_path = sc.model_file;
   tm.model = load_mjcf(sc.model_file);
   mjModel* m = tm.model.get();

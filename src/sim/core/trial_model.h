@@ -10,6 +10,7 @@
 // indexed in the model's actuator order (log columns, noise stream, controller).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,7 @@ struct BoundEvent {
 };
 
 struct TrialModel {
+  std::uint64_t id = 0;               // unique per load in this process (trial data reuse)
   std::string model_path;
   MjModelPtr model;
   std::vector<BoundMuscle> muscles;   // model actuator order
