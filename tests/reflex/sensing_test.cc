@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include "reflex_test_util.h"
+
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/spring_model.h"
 #include "pam_actuator/units.h"
@@ -25,23 +27,14 @@
 namespace pamsim {
 namespace {
 
+using test::expect_bad_value;
+using test::table_iv_agonist;
+using test::table_iv_antagonist;
+
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kDt = 0.01;   // 100 Hz, the default sim.control_hz
 
-// the Table IV arm (seeds/000): spring laws and strain gauges of both muscles
-MuscleSensorSpec table_iv_agonist() {
-  return {"muscles.agonist",
-          spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,
-                                        {0.911, 0.256, 7.00, -0.201, 0, 0}),
-          StrainGaugeParams{2.25e-3, 0.0}};
-}
-MuscleSensorSpec table_iv_antagonist() {
-  return {"muscles.antagonist",
-          spring_model_from_paper_units(SpringLaw::kEq3, -70.3, 178.5,
-                                        {22.4, -0.129, 1.24, 0.871, 0, 0}),
-          StrainGaugeParams{4.33e-3, 0.0}};
-}
 std::vector<MuscleSensorSpec> table_iv_muscles() {
   return {table_iv_agonist(), table_iv_antagonist()};
 }
@@ -315,22 +308,6 @@ TEST(SensorSuite, OneSensorsNoiseLevelLeavesTheOthersNoiseAlone) {
 }
 
 // --- bad values: every validated key; the message names the key and quotes the value ---
-
-// `call` throws InputError "<key> must be ..., got <value>"
-void expect_bad_value(const std::function<void()>& call, const std::string& key,
-                      const std::string& value) {
-  try {
-    call();
-    ADD_FAILURE() << "no throw for " << key << " = " << value;
-  } catch (const InputError& e) {
-    const std::string what = e.what();
-    const std::string tail = ", got " + value;
-    EXPECT_EQ(what.rfind(key + " must be ", 0), 0u) << key << ": " << what;
-    EXPECT_TRUE(what.size() >= tail.size() &&
-                what.compare(what.size() - tail.size(), tail.size(), tail) == 0)
-        << "expected to end with \"" << tail << "\": " << what;
-  }
-}
 
 struct BadSensing {
   std::string key;

@@ -17,6 +17,8 @@
 
 #include <gtest/gtest.h>
 
+#include "reflex_test_util.h"
+
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/spring_model.h"
 #include "reflex/controller.h"
@@ -25,23 +27,13 @@
 namespace pamsim {
 namespace {
 
+using test::expect_bad_value;
+using test::table_iv_agonist;
+using test::table_iv_antagonist;
+
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kDt = 0.01;           // 100 Hz, the default sim.control_hz
 constexpr double kRampV_m_s = 0.150;   // the stretch of the ramps below
-
-// the Table IV arm (seeds/000): spring laws and strain gauges of both muscles
-MuscleSensorSpec table_iv_agonist(const std::string& key = "muscles.agonist") {
-  return {key,
-          spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,
-                                        {0.911, 0.256, 7.00, -0.201, 0, 0}),
-          StrainGaugeParams{2.25e-3, 0.0}};
-}
-MuscleSensorSpec table_iv_antagonist(const std::string& key = "muscles.antagonist") {
-  return {key,
-          spring_model_from_paper_units(SpringLaw::kEq3, -70.3, 178.5,
-                                        {22.4, -0.129, 1.24, 0.871, 0, 0}),
-          StrainGaugeParams{4.33e-3, 0.0}};
-}
 
 // Everything a harness is built from. Defaults: the falling-mass operating point (DESIGN.md),
 // both muscles at 0.4 MPa and scheduled at 0.4 MPa, agonist d = 6.66 mm, antagonist
@@ -55,6 +47,18 @@ struct Rig {
   StretchReflexControllerConfig controller;
   std::uint64_t seed = 7;
 };
+
+// Rig plus a third muscle (an agonist, stretched like the first) in no pair, scheduled at
+// p_tp_pa
+Rig with_spare_muscle(double p_tp_pa) {
+  Rig rig;
+  rig.muscles.push_back(table_iv_agonist("muscles.spare"));
+  rig.d_m.push_back(6.66e-3);
+  rig.p_pa.push_back(0.4e6);
+  rig.p_tp_pa.push_back(p_tp_pa);
+  rig.controller.muscle_count = 3;
+  return rig;
+}
 
 // Rig with 4 muscles in two pairs, interleaved so that a partner is never the next index:
 // muscles [agonist A, agonist B, antagonist A, antagonist B], pairs {0, 2} and {1, 3}.
@@ -276,12 +280,7 @@ TEST(StretchReflexController, DeterministicPerSeed) {
 TEST(StretchReflexController, WritesEveryOutputElement) {
   // the harness fills the output with NaN / 2 before each update; three muscles, the third
   // unpaired, with the controller on and off
-  Rig rig;
-  rig.muscles.push_back(table_iv_agonist("muscles.spare"));
-  rig.d_m.push_back(6.66e-3);
-  rig.p_pa.push_back(0.4e6);
-  rig.p_tp_pa.push_back(0.3e6);
-  rig.controller.muscle_count = 3;
+  Rig rig = with_spare_muscle(0.3e6);
   Harness h(rig);
   for (int j = 0; j < 40; ++j) {
     const ControlOutput& out = h.tick(/*enabled=*/j % 2 == 0);
@@ -404,12 +403,7 @@ TEST(StretchReflexController, SlackMuscleDoesNotTriggerBelowMinTension) {
 TEST(StretchReflexController, UnpairedMuscleGetsItsClampedScheduleAndNeverTriggers) {
   // three muscles, pair {0, 1}; muscle 2 is in no pair. Its schedule goes below 0 and
   // above p_max, and it is stretched at twice the ramp speed while the pair's reflex fires.
-  Rig rig;
-  rig.muscles.push_back(table_iv_agonist("muscles.spare"));
-  rig.d_m.push_back(6.66e-3);
-  rig.p_pa.push_back(0.4e6);
-  rig.p_tp_pa.push_back(0.0);
-  rig.controller.muscle_count = 3;
+  Rig rig = with_spare_muscle(0.0);
   Harness h(rig);
   for (int j = 0; j < 200; ++j) {
     h.rig.p_tp_pa[2] = j < 50 ? -0.1e6 : j < 150 ? 0.3e6 + 1e3 * j : 1.0e6;
@@ -507,22 +501,6 @@ TEST(StretchReflexController, TriggerTimesPerMuscleAndTheEarliest) {
 }
 
 // --- bad values: every validated key; the message names the key and quotes the value ---
-
-// `call` throws InputError "<key> must be ..., got <value>"
-void expect_bad_value(const std::function<void()>& call, const std::string& key,
-                      const std::string& value) {
-  try {
-    call();
-    ADD_FAILURE() << "no throw for " << key << " = " << value;
-  } catch (const InputError& e) {
-    const std::string what = e.what();
-    const std::string tail = ", got " + value;
-    EXPECT_EQ(what.rfind(key + " must be ", 0), 0u) << key << ": " << what;
-    EXPECT_TRUE(what.size() >= tail.size() &&
-                what.compare(what.size() - tail.size(), tail.size(), tail) == 0)
-        << "expected to end with \"" << tail << "\": " << what;
-  }
-}
 
 struct BadValue {
   std::string key;

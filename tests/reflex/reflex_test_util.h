@@ -1,0 +1,47 @@
+// reflex_test_util.h: what the sensing and controller tests share: the Table IV arm's
+// muscles as the sensing sees them, and the check that a bad value's message names its key
+// and quotes the value.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "pam_actuator/input_error.h"
+#include "pam_actuator/spring_model.h"
+#include "reflex/sensing.h"
+
+namespace pamsim::test {
+
+// the Table IV arm (seeds/000): spring laws and strain gauges of both muscles
+inline MuscleSensorSpec table_iv_agonist(const std::string& key = "muscles.agonist") {
+  return {key,
+          spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,
+                                        {0.911, 0.256, 7.00, -0.201, 0, 0}),
+          StrainGaugeParams{2.25e-3, 0.0}};
+}
+inline MuscleSensorSpec table_iv_antagonist(const std::string& key = "muscles.antagonist") {
+  return {key,
+          spring_model_from_paper_units(SpringLaw::kEq3, -70.3, 178.5,
+                                        {22.4, -0.129, 1.24, 0.871, 0, 0}),
+          StrainGaugeParams{4.33e-3, 0.0}};
+}
+
+// `call` throws InputError "<key> must be ..., got <value>"
+inline void expect_bad_value(const std::function<void()>& call, const std::string& key,
+                             const std::string& value) {
+  try {
+    call();
+    ADD_FAILURE() << "no throw for " << key << " = " << value;
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    const std::string tail = ", got " + value;
+    EXPECT_EQ(what.rfind(key + " must be ", 0), 0u) << key << ": " << what;
+    EXPECT_TRUE(what.size() >= tail.size() &&
+                what.compare(what.size() - tail.size(), tail.size(), tail) == 0)
+        << "expected to end with \"" << tail << "\": " << what;
+  }
+}
+
+}  // namespace pamsim::test
