@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "pam_actuator/units.h"
 #include "sim/core/metrics.h"
@@ -100,6 +101,17 @@ void read_reflex(ConfigReader& in, Scenario* sc) {
   }
   in.check(!sc->reflex_pairs.empty(), "reflex.pairs",
            "is required: the scenario has no muscles named agonist and antagonist");
+  // each pair two different muscles of the scenario, each muscle in one pair at most
+  std::set<std::string> paired;
+  for (const auto& pair : sc->reflex_pairs) {
+    in.check(pair[0] != pair[1], "reflex.pairs", "pairs muscle '" + pair[0] + "' with itself");
+    for (const std::string& name : pair) {
+      in.check(sc->muscle(name) != nullptr, "reflex.pairs",
+               "names muscle '" + name + "', which is not a muscle of the scenario");
+      in.check(paired.insert(name).second, "reflex.pairs",
+               "puts muscle '" + name + "' in two pairs");
+    }
+  }
   in_file(in, [&] {
     StretchReflexControllerConfig check = sc->reflex;
     check.pairs.clear();
