@@ -26,13 +26,15 @@ std::string legacy_label(const std::string& actuator) {
 }
 
 // The long key, or the shorthand in its place: refused if both are in the file, the
-// shorthand wins if it came from --set. Returns the key to read, or "" if neither is given.
-std::string long_or_short(const ConfigReader& in, const std::string& long_key,
+// shorthand wins if it came from --set (the long form it replaces is then ignored, all of
+// it). Returns the key to read, or "" if neither is given.
+std::string long_or_short(ConfigReader& in, const std::string& long_key,
                           const std::string& short_key) {
   const bool has_long = in.has(long_key), has_short = in.has(short_key);
   if (has_long && has_short && !in.overridden(short_key)) {
     in.fail(short_key, "is the shorthand of " + long_key + "; give one of them");
   }
+  if (has_long && has_short) in.raw(long_key);   // marks the replaced long form read
   if (has_short) return short_key;
   return has_long ? long_key : "";
 }
@@ -72,7 +74,13 @@ PressureSchedule read_command(ConfigReader& in, const std::string& key) {
     case ScheduleKind::kTable: {
       const std::string file = in.get_path(key + ".file", "");
       in.check(!file.empty(), key + ".file", "is required for kind \"table\"");
-      s = in_file(in, [&] { return read_schedule_csv(file); });
+      s = in_file(in, [&] {
+        try {
+          return read_schedule_csv(file);
+        } catch (const InputError& e) {
+          throw InputError(key + ".file: " + e.what());   // the key, then the CSV's own line
+        }
+      });
       break;
     }
   }
