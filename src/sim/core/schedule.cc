@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 #include "pam_actuator/input_error.h"
@@ -140,8 +141,9 @@ PressureSchedule read_schedule_csv(const std::string& path) {
       throw InputError(where + ": expected two finite numbers \"time_s,MPa\"");
     }
     if (!s.times_s.empty() && !(t > s.times_s.back())) {
-      throw InputError(where + ": time must increase strictly, got " + std::to_string(t) +
-                       " s after " + std::to_string(s.times_s.back()) + " s");
+      char buf[96];
+      std::snprintf(buf, sizeof(buf), "got %.9g s after %.9g s", t, s.times_s.back());
+      throw InputError(where + ": time must increase strictly, " + buf);
     }
     s.times_s.push_back(t);
     s.values_pa.push_back(units::mpa_to_pa(p));
