@@ -1,6 +1,6 @@
 // reflex_test_util.h: what the sensing and controller tests share: the Table IV arm's
-// muscles as the sensing sees them, and the check that a bad value's message names its key
-// and quotes the value.
+// muscles as the sensing sees them, and the bad values' cases and the check that a bad
+// value's message names its key and quotes the value.
 #pragma once
 
 #include <functional>
@@ -27,6 +27,15 @@ inline MuscleSensorSpec table_iv_antagonist(const std::string& key = "muscles.an
                                         {22.4, -0.129, 1.24, 0.871, 0, 0}),
           StrainGaugeParams{4.33e-3, 0.0}};
 }
+
+// A bad value of one key of a Config: the key, the value as the message quotes it, and how
+// to put it into a valid Config.
+template <typename Config>
+struct BadValueOf {
+  std::string key;
+  std::string value;
+  std::function<void(Config&)> set;
+};
 
 // `call` throws InputError "<key> must be ..., got <value>"
 inline void expect_bad_value(const std::function<void()>& call, const std::string& key,

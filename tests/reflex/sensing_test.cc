@@ -309,11 +309,7 @@ TEST(SensorSuite, OneSensorsNoiseLevelLeavesTheOthersNoiseAlone) {
 
 // --- bad values: every validated key; the message names the key and quotes the value ---
 
-struct BadSensing {
-  std::string key;
-  std::string value;   // as the message quotes it
-  std::function<void(SensingConfig&)> set;
-};
+using BadSensing = test::BadValueOf<SensingConfig>;
 
 std::vector<BadSensing> bad_sensing_values() {
   using C = SensingConfig&;

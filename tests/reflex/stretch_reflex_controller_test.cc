@@ -502,11 +502,7 @@ TEST(StretchReflexController, TriggerTimesPerMuscleAndTheEarliest) {
 
 // --- bad values: every validated key; the message names the key and quotes the value ---
 
-struct BadValue {
-  std::string key;
-  std::string value;   // as the message quotes it
-  std::function<void(StretchReflexControllerConfig&)> set;
-};
+using BadValue = test::BadValueOf<StretchReflexControllerConfig>;
 
 std::vector<BadValue> bad_values() {
   using C = StretchReflexControllerConfig&;
