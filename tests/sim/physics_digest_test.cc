@@ -55,11 +55,11 @@ TEST(PhysicsDigestTest, Sha256OfAKnownTextIsTheStandardOne) {
 TEST(PhysicsDigestTest, ShortDropTrialsAreUnchanged) {
   const std::vector<std::string> shorter = {"sim.duration_s=1.5", "drop.time_s=0.3"};
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass.toml", shorter)),
-            "f1258fba541ba318620b2098eaa85de5fa960e9c2bc4ba85309080f63d81d6d6");
+            "a041bbc92665969d5d43e7ba37f7d1f3bbe10fc57673e234cf6e27b859c9cec8");
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass_fiber.toml", shorter)),
-            "519caeed8d26300253b698401a7cd67dc64e4db5b9c54bc2bd5b3bb84d2ea2d8");
+            "e9e1eb7098de632181053665c2c2951c1649076d1a40ddc491884f3057750ad4");
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass_passive.toml", shorter)),
-            "ef390530f90ba91a74e977e215052ae302999f0e31b54453124f68586252f21e");
+            "47cdbad070850d32bd64593a5864af3a4444fdb636d8b542f75e7ada62eac7a2");
 }
 
 }  // namespace

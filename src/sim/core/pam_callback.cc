@@ -1,6 +1,8 @@
 // pam_callback.cc: see pam_callback.h.
 #include "sim/core/pam_callback.h"
 
+#include <algorithm>
+
 #include <string>
 
 #include "pam_actuator/input_error.h"
@@ -57,6 +59,14 @@ int pam_userdata_index(const mjModel* m, int id) {
 
 double pam_length(const mjModel* m, const mjData* d, int id) {
   return d->actuator_length[id] - pam_line_length(m, id);
+}
+
+double pam_free_length(const mjModel* m, const mjData* d, int id) {
+  return natural_length(pam_spring_from_model(m, id), d->userdata[pam_userdata_index(m, id)]);
+}
+
+double pam_muscle_length(const mjModel* m, const mjData* d, int id) {
+  return std::max(pam_length(m, d, id), pam_free_length(m, d, id));
 }
 
 mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int id) {

@@ -29,8 +29,17 @@ SpringModel pam_spring_from_model(const mjModel* m, int actuator_id);
 double pam_line_length(const mjModel* m, int actuator_id);
 int pam_userdata_index(const mjModel* m, int actuator_id);
 
-// PAM length [m] from the actuator's (tendon) length.
+// The length [m] the line leaves the PAM: tendon length - line length. While the line is
+// taut it is the muscle's length; when slack it is shorter than the muscle, which then
+// rests at its free length.
 double pam_length(const mjModel* m, const mjData* d, int actuator_id);
+// The PAM's free length [m] at its chamber pressure: where its force is zero, l_n(p) of
+// Eq. (2) for the spring laws.
+double pam_free_length(const mjModel* m, const mjData* d, int actuator_id);
+// The muscle's real length [m]: pam_length while the line is taut, the free length when it
+// is slack (a slack muscle is not pulled below its free length). What the encoder, the
+// fiber sensor, the chamber volume and the error metrics see.
+double pam_muscle_length(const mjModel* m, const mjData* d, int actuator_id);
 
 // The mjcb_act_bias callback: actuator force [N] (<= 0, a pull).
 mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int actuator_id);

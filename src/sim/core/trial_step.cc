@@ -105,7 +105,7 @@ bool TrialRun::control_tick(double t) {
     const int act = tm_.muscles[i].actuator;
     truth_[i].pressure_pa = pneumatics_.pressure_pa(static_cast<int>(i));
     truth_[i].force_n = -pam_actuator_force(m_, d_, act);
-    truth_[i].length_m = pam_length(m_, d_, act);
+    truth_[i].length_m = pam_muscle_length(m_, d_, act);
     p_tp_pa_[i] = sc_.muscles[tm_.muscles[i].spec].command.at(t);
   }
   sensors_.sample(truth_, &readings_);
@@ -165,12 +165,18 @@ bool TrialRun::physics_step(double t) {
     return false;
   }
 
-  // pneumatics over [t, t + dt] with this step's PAM length and velocity
+  // pneumatics over [t, t + dt] with this step's muscle length and velocity: the line's
+  // while it is taut; a slack muscle rests at its free length, which moves with its
+  // pressure (its rate over the last step)
   try {
     for (std::size_t i = 0; i < n_; ++i) {
       const int act = tm_.muscles[i].actuator;
-      pneumatics_.set_kinematics(static_cast<int>(i), pam_length(m_, d_, act),
-                                 d_->actuator_velocity[act]);
+      const double taut = pam_length(m_, d_, act), free = pam_free_length(m_, d_, act);
+      const bool slack = taut < free;
+      const double velocity =
+          slack ? (free - free_length_m_[i]) / sc_.timestep_s : d_->actuator_velocity[act];
+      free_length_m_[i] = free;
+      pneumatics_.set_kinematics(static_cast<int>(i), slack ? free : taut, velocity);
     }
     pneumatics_.advance(t + sc_.timestep_s);
   } catch (const std::exception& e) {
