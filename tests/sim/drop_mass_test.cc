@@ -2,6 +2,7 @@
 // (scenarios/drop_mass.toml and drop_mass_fiber.toml against the passive baseline).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -107,6 +108,45 @@ TEST(DropMassTest, SlackLineLeavesTheMuscleAtItsFreeLength) {
   EXPECT_GT(slack_rows, 100) << "at 0.1 MPa the antagonist must be slack";
   EXPECT_GT(swinging_rows, 5) << "while the arm swings (a slack line's end moves with it)";
   EXPECT_LT(r.summary.metric("length_est_max_error_mm"), 0.5);
+}
+
+// The outcome metrics agree with the trajectory they summarise, whatever each reflex does:
+// mass_retained with where the ball ends, retriggers_after_impact with the trigger counts,
+// the length errors in % with the logged lengths.
+TEST(DropMassTest, OutcomeMetricsAgreeWithTheTrajectory) {
+  for (const char* name : {"drop_mass.toml", "drop_mass_fiber.toml", "drop_mass_passive.toml"}) {
+    SCOPED_TRACE(name);
+    const TrialResult r = run(name);
+    ASSERT_EQ(r.summary.status, "ok") << r.summary.message;
+    const TrialSummary& s = r.summary;
+    const Trajectory& tr = r.trajectory;
+
+    // the ball in the basket (~0.8 m up) or on the floor (its radius, 18 mm)
+    const double ball_z = tr.at(tr.rows() - 1, tr.column("ball_z_m"));
+    ASSERT_TRUE(ball_z > 0.5 || ball_z < 0.05) << ball_z;
+    EXPECT_EQ(s.metric("mass_retained"), ball_z > 0.5 ? 1.0 : 0.0);
+
+    // every trigger is a mistrip, the response to the impact, or a retrigger after it
+    const double triggers = s.metric("reflex_triggers_ago") + s.metric("reflex_triggers_anta");
+    const double after = triggers - s.metric("mistrips");
+    EXPECT_EQ(s.metric("retriggers_after_impact"), std::max(after - 1.0, 0.0));
+
+    // the pooled length error in % of the true length
+    double sum_sq = 0.0, max_abs = 0.0;
+    for (std::size_t row = 0; row < tr.rows(); ++row) {
+      for (const char* m : {"ago", "anta"}) {
+        const double truth = tr.at(row, tr.column(std::string("length_") + m + "_mm"));
+        const double est = tr.at(row, tr.column(std::string("length_est_") + m + "_mm"));
+        const double e = 100.0 * (est - truth) / truth;
+        sum_sq += e * e;
+        max_abs = std::max(max_abs, std::fabs(e));
+      }
+    }
+    EXPECT_NEAR(s.metric("length_est_rmse_pct"), std::sqrt(sum_sq / (2.0 * tr.rows())), 1e-12);
+    EXPECT_EQ(s.metric("length_est_max_error_pct"), max_abs);
+  }
+  // the model-based reflex keeps the mass (the passive arm does too)
+  EXPECT_EQ(run("drop_mass.toml").summary.metric("mass_retained"), 1.0);
 }
 
 }  // namespace

@@ -77,6 +77,8 @@ class DropMetrics final : public MetricSet {
     out->push_back({"final_angle_deg", final_angle});
     out->push_back({"impact_time_s", impact});
     out->push_back({"recovery_time_s", recovery_time(r, impact, final_angle)});
+    const bool retained = std::isfinite(impact) && r.event_holds_at_end[impact_];
+    out->push_back({"mass_retained", retained ? 1.0 : 0.0, true});
   }
 
  private:
@@ -107,7 +109,7 @@ class ReflexMetrics final : public MetricSet {
   void finish(const FinishedTrial& r, std::vector<Metric>* out) const override {
     const auto* triggers = r.trigger_times_s;
     double first = kNaN;
-    int mistrips = 0;
+    int mistrips = 0, after_impact = 0;
     const double impact = event_time(r, impact_);
     for (std::size_t j = 0; j < r.labels.size(); ++j) {
       const std::size_t n = triggers ? (*triggers)[j].size() : 0;
@@ -115,11 +117,16 @@ class ReflexMetrics final : public MetricSet {
       for (std::size_t k = 0; k < n; ++k) {
         const double t = (*triggers)[j][k];
         if (k == 0 && !(t >= first)) first = t;
-        if (!(t >= impact)) ++mistrips;
+        if (t >= impact) {
+          ++after_impact;
+        } else {
+          ++mistrips;
+        }
       }
     }
     out->push_back({"first_trigger_time_s", first});
     out->push_back({"mistrips", static_cast<double>(mistrips), true});
+    out->push_back({"retriggers_after_impact", std::max(after_impact - 1, 0) * 1.0, true});
   }
 
  private:
@@ -130,14 +137,18 @@ class ReflexMetrics final : public MetricSet {
 class LengthEstimateMetrics final : public MetricSet {
  public:
   void finish(const FinishedTrial& r, std::vector<Metric>* out) const override {
-    ErrorStats e;
+    ErrorStats mm, pct;
     for (std::size_t row = 0; row < r.log->rows(); ++row) {
       for (const MuscleColumns& mc : r.layout->muscle) {
-        e.add(r.log->at(row, mc.length_est) - r.log->at(row, mc.length));
+        const double error = r.log->at(row, mc.length_est) - r.log->at(row, mc.length);
+        mm.add(error);
+        pct.add(100.0 * error / r.log->at(row, mc.length));
       }
     }
-    out->push_back({"length_est_rmse_mm", e.rms()});
-    out->push_back({"length_est_max_error_mm", e.max()});
+    out->push_back({"length_est_rmse_mm", mm.rms()});
+    out->push_back({"length_est_max_error_mm", mm.max()});
+    out->push_back({"length_est_rmse_pct", pct.rms()});
+    out->push_back({"length_est_max_error_pct", pct.max()});
   }
 };
 
@@ -248,6 +259,7 @@ std::vector<std::string> metric_names(const Scenario& sc, const std::vector<std:
   record.hinge = hinge;
   record.event_time_s.assign(sc.events.size(), kNaN);
   record.event_position.assign(sc.events.size(), kNaN);
+  record.event_holds_at_end.assign(sc.events.size(), 0);
   std::vector<Metric> metrics;
   for (const auto& set : make_metric_sets(sc)) set->finish(record, &metrics);
   std::vector<std::string> names;

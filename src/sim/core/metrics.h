@@ -4,11 +4,17 @@
 //                     min_angle_deg and min_angle_time_s (every physics step after it),
 //                     peak_drop_deg = start - min, final_angle_deg, impact_time_s (the
 //                     "impact" event), recovery_time_s (impact until the angle stays within
-//                     2 deg of its final value); needs a hinge joint and both events
+//                     2 deg of its final value), mass_retained (1 if the impact's two
+//                     bodies, the mass and the basket, still touch at the end, else 0);
+//                     needs a hinge joint and both events
 //   reflex            reflex_triggers_<m> per muscle, first_trigger_time_s, mistrips
-//                     (triggers before the "impact" event, or all if there is none)
-//   length_estimate   length_est_rmse_mm, length_est_max_error_mm: the model-based length
-//                     estimate against the encoder, all muscles, every tick (Table V's metric)
+//                     (triggers before the "impact" event, or all if there is none),
+//                     retriggers_after_impact (triggers from the impact on, all muscles,
+//                     beyond the first)
+//   length_estimate   length_est_rmse_mm, length_est_max_error_mm, and the same in % of the
+//                     true length (length_est_rmse_pct, length_est_max_error_pct): the
+//                     model-based length estimate against the encoder, all muscles, every
+//                     tick (Table III's and Table V's metric)
 //   tracking          per muscle: pressure_rmse_<m>_MPa (chamber vs command),
 //                     length_est_rmse_<m>_pct, length_est_max_error_<m>_pct (in % of the
 //                     true length, Table III's metric); the joint's start, final, min and
@@ -57,6 +63,7 @@ struct FinishedTrial {
   bool hinge = true;                      // the joint's kind
   std::vector<double> event_time_s;       // per Scenario::events, NaN if it never fired
   std::vector<double> event_position;     // the joint's position when it fired [rad or m]
+  std::vector<char> event_holds_at_end;   // per event: its condition holds in the final state
   const std::vector<std::vector<double>>* trigger_times_s = nullptr;   // per muscle, or none
   long steps = 0;
   double sim_time_s = 0.0;

@@ -169,6 +169,9 @@ TrialSummary TrialRun::finish(long steps, std::chrono::steady_clock::duration wa
   record.hinge = tm_.joint.hinge;
   record.event_time_s = event_time_s_;
   record.event_position = event_position_;
+  for (std::size_t k = 0; k < sc_.events.size(); ++k) {
+    record.event_holds_at_end.push_back(condition_holds(k) ? 1 : 0);
+  }
   record.trigger_times_s = controller_->trigger_times_s();
   record.steps = steps;
   record.sim_time_s = steps * sc_.timestep_s;
