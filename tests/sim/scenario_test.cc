@@ -109,6 +109,7 @@ TEST(ScenarioTest, EveryBadValueNamesItsKey) {
       {"sensors.gauge_adc_bits=40", "sensors.gauge_adc"},
       {"sensors.fiber_noise_mm_s=-2", "sensors.fiber_noise_mm_s"},
       {"controller.p_max_MPa=0", "controller.p_max_MPa"},
+      {"controller.p_max_MPa=0.8", "controller.p_max_MPa"},   // above the 0.7 MPa regulator
       {"model.file=\"missing.xml\"", "missing.xml"},
       {"model.agonist_params=\"missing.toml\"", "missing.toml"},
       {"model.calibration=\"missing.toml\"", "missing.toml"},

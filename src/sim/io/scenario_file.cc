@@ -76,8 +76,14 @@ void read_reflex(ConfigReader& in, Scenario* sc) {
   r.min_tension_n = in.get_double("reflex.min_tension_N", r.min_tension_n);
   r.reciprocal_trigger_inhibition =
       in.get_bool("reflex.reciprocal_trigger_inhibition", r.reciprocal_trigger_inhibition);
-  sc->reflex.p_max_pa = units::mpa_to_pa(
-      in.get_double("controller.p_max_MPa", units::pa_to_mpa(sc->pneumatics.command_max_gauge_pa)));
+  sc->reflex.p_max_pa = in.has("controller.p_max_MPa")
+                            ? units::mpa_to_pa(in.get_double("controller.p_max_MPa", 0.0))
+                            : sc->pneumatics.command_max_gauge_pa;
+  // one pressure limit everywhere: the reflex cannot ask beyond what the regulator gives
+  in.check(!(sc->reflex.p_max_pa > sc->pneumatics.command_max_gauge_pa), "controller.p_max_MPa",
+           "must be <= the regulator's command maximum (" +
+               format_value(units::pa_to_mpa(sc->pneumatics.command_max_gauge_pa)) +
+               " MPa), got " + format_value(units::pa_to_mpa(sc->reflex.p_max_pa)));
   sc->reflex.control_hz = sc->control_hz;
   sc->reflex.muscle_count = static_cast<int>(sc->muscles.size());
   sc->reflex.pairs.clear();   // resolved by name when the model is bound (trial_model.h)
