@@ -23,10 +23,11 @@
 //    around V_base is not clipped): 0.15 mV = 0.07 N per step on the agonist.
 //  - fiber_noise_mm_s = 2 mm/s on the rate: the fiber reflex threshold of Table II (25 mm/s)
 //    is 12 standard deviations away, and the integrated length drifts only ~0.6 mm over 10 s.
-// With these defaults and the 5 Hz pressure low-pass, the velocity estimate at 100 Hz has a
-// standard deviation of about 5-6 mm/s (mostly from the gauge), 12 sigma below the model
-// reflex threshold (70 mm/s): no mistrip (DESIGN.md measured ~1.5 % mistrips per quiet
-// second at 0.002 MPa / 0.2 N without any filter, whose velocity noise is ~19 mm/s).
+// With these defaults (no pressure low-pass), the velocity estimate at 100 Hz has a standard
+// deviation of about 9 mm/s (drop_mass.toml's quiet second: 9.6 mm/s agonist, 8.4 mm/s
+// antagonist, largest 32 mm/s), 7 sigma below the model reflex threshold (70 mm/s): no
+// mistrip (DESIGN.md measured ~1.5 % mistrips per quiet second at 0.002 MPa / 0.2 N, whose
+// velocity noise is ~19 mm/s).
 #pragma once
 
 #include <random>
@@ -47,7 +48,7 @@ struct SensorConfig {
   // turns the reflex's own pressure rise into estimated stretch: the real force rises with
   // the real pressure while the estimate still inverts Eq. (3) at the older, lower one, so d
   // is overestimated; in the drop-mass scenario a 5 Hz filter made the velocity estimate
-  // read ~250 mm/s for a true ~96 mm/s stretch and the reflex pumped the arm's 8.5 Hz mode
+  // read ~250 mm/s for a true ~96 mm/s stretch and the reflex pumped the arm's ~5 Hz mode
   // until the mass was thrown out. At the default noise (0.001 MPa) the unfiltered velocity
   // noise is ~9 mm/s, 7 sigma below the 70 mm/s threshold: no mistrips without the filter.
   double pressure_lowpass_hz = 0.0;

@@ -44,13 +44,15 @@ struct StretchReflexParams {
   double k_MPa_s_per_mm = 1.0 / 800.0;   // reflex.k_MPa_s_per_mm, k >= 0 (fiber: 1/300)
   double duration_s = 0.2;               // reflex.duration_s, >= one control period
   ReflexMode mode = ReflexMode::kFollow; // reflex.mode
-  // reflex.refractory_s >= 0. Default 0.5 s: the arm rings at ~8.5 Hz after the impact
-  // (DESIGN.md), so the rebound stretches come ~120 ms apart; the fiber reflex (25 mm/s)
-  // re-fired on them. 0.5 s after the 0.2 s window covers the first four rebounds, by which
-  // time the damped oscillation is below threshold.
+  // reflex.refractory_s >= 0. Default 0.5 s: the arm rings at ~5 Hz after the impact (the
+  // drop scenarios' angle crosses its final value every ~0.1 s), so the rebound stretches
+  // come ~200 ms apart; the fiber reflex (25 mm/s) re-fired on them. 0.5 s after the 0.2 s
+  // window covers the first three rebounds, by which time the damped oscillation of the
+  // model-based reflex's trial is below threshold. A pamsim addition: 0 switches it off.
   double refractory_s = 0.5;
-  // reflex.arm_after_s >= 0. Default 0.1 s: three time constants (tau = 32 ms) of the 5 Hz
-  // pressure low-pass, and still before a mass dropped from 14 cm at t = 0 lands (0.17 s).
+  // reflex.arm_after_s >= 0. Default 0.1 s: three time constants (tau = 32 ms) of a 5 Hz
+  // pressure low-pass when one is on (sensors.pressure_lowpass_hz), and still before a mass
+  // dropped from 14 cm at t = 0 lands (0.17 s). A pamsim addition: 0 switches it off.
   double arm_after_s = 0.1;
 };
 
