@@ -1,0 +1,333 @@
+// avbdl.cc: the AVBDL plant force law of seeds/003 and its friction term, see avbdl.h.
+#include "pam_actuator/avbdl.h"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <cstddef>
+#include <sstream>
+#include <utility>
+
+#include "pam_actuator/input_error.h"
+
+namespace pamsim {
+namespace {
+
+constexpr double kPi = units::kPi;
+
+// DMSP-20 end region relative to its length: 32 mm of 200 mm (seeds/003 Sec. 2.2, 2.5)
+constexpr double kDmsp20EndFraction = 0.032 / 0.200;
+
+// 8-point Gauss-Legendre rule on [-1, 1] (Abramowitz & Stegun, Table 25.4): positive nodes
+// and their weights; the rule is symmetric
+constexpr std::array<double, 4> kGaussNodes = {0.1834346424956498, 0.5255324099163290,
+                                               0.7966664774136267, 0.9602898564975363};
+constexpr std::array<double, 4> kGaussWeights = {0.3626837833783620, 0.3137066458778873,
+                                                 0.2223810344533745, 0.1012285362903763};
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
+}
+
+// coefficients of eta(s) = sum c[i] s^i, the normalised end profile (avbdl.h)
+std::array<double, 4> profile_coefficients(double a) {
+  return {0.0, a, 3.0 - 2.0 * a, a - 2.0};
+}
+
+double profile(const std::array<double, 4>& c, double s) {
+  return ((c[3] * s + c[2]) * s + c[1]) * s;
+}
+
+// integrals of eta and eta^2 over s in [0, 1]
+struct ProfileMoments {
+  double i1 = 0.0;
+  double i2 = 0.0;
+};
+
+ProfileMoments profile_moments(double a) {
+  const std::array<double, 4> c = profile_coefficients(a);
+  ProfileMoments m;
+  for (int i = 0; i < 4; ++i) {
+    m.i1 += c[i] / (i + 1);
+    for (int j = 0; j < 4; ++j) m.i2 += c[i] * c[j] / (i + j + 1);
+  }
+  return m;
+}
+
+// the braid's middle radius squared, R^2 = (b^2 - L^2) / (2 pi n)^2, and its slope in L
+double radius_squared(const BraidGeometry& g, double length_m) {
+  const double k = 2.0 * kPi * g.turns;
+  return (g.fibre_length_m * g.fibre_length_m - length_m * length_m) / (k * k);
+}
+
+double dradius_squared_dlength(const BraidGeometry& g, double length_m) {
+  const double k = 2.0 * kPi * g.turns;
+  return -2.0 * length_m / (k * k);
+}
+
+// sum over the 8 Gauss nodes in s in [0, 1] of weight * f(s): integral of f over [0, 1]
+template <typename F>
+double integrate_unit_interval(const F& f) {
+  double sum = 0.0;
+  for (std::size_t k = 0; k < kGaussNodes.size(); ++k) {
+    sum += kGaussWeights[k] * (f(0.5 - 0.5 * kGaussNodes[k]) + f(0.5 + 0.5 * kGaussNodes[k]));
+  }
+  return 0.5 * sum;
+}
+
+// reference (unstrained) bladder volume per unit length: an annulus of inner radius R0
+double bladder_area(const AvbdlParams& p) {
+  const double r0 = 0.5 * p.diameter_m;
+  return kPi * p.wall_thickness_m * (2.0 * r0 + p.wall_thickness_m);
+}
+
+// one "<key> must be ..., got <value>" check
+struct Checker {
+  const std::string& prefix;
+  void require(bool ok, const std::string& key, const std::string& allowed, double v) const {
+    if (!ok) throw InputError(prefix + key + " must be " + allowed + ", got " + fmt(v));
+  }
+  void finite(const std::string& key, double v) const {
+    require(std::isfinite(v), key, "finite", v);
+  }
+  void non_negative(const std::string& key, double v) const {
+    require(v >= 0.0, key, ">= 0", v);
+  }
+};
+
+void validate_friction(const AvbdlFriction& f, const Checker& check) {
+  const std::pair<const char*, const AvbdlFrictionCoefficients*> branches[] = {
+      {"friction.extension.", &f.extension}, {"friction.contraction.", &f.contraction}};
+  for (const auto& [name, c] : branches) {
+    const std::string key(name);
+    check.finite(key + "force_n", c->force_n);
+    check.non_negative(key + "force_n", c->force_n);
+    check.finite(key + "pressure_area_m2", c->pressure_area_m2);
+    check.non_negative(key + "pressure_area_m2", c->pressure_area_m2);
+    check.finite(key + "strain_area_m2", c->strain_area_m2);
+    check.non_negative(key + "strain_area_m2", c->strain_area_m2);
+  }
+  check.finite("friction.velocity_scale_m_per_s", f.velocity_scale_m_per_s);
+  check.require(f.velocity_scale_m_per_s > 0.0, "friction.velocity_scale_m_per_s", "> 0 m/s",
+                f.velocity_scale_m_per_s);
+}
+
+}  // namespace
+
+void validate_avbdl_params(const AvbdlParams& p, const std::string& key_prefix) {
+  const Checker check{key_prefix};
+
+  // every number finite
+  check.finite("length_m", p.length_m);
+  check.finite("diameter_m", p.diameter_m);
+  check.finite("braid_angle_rad", p.braid_angle_rad);
+  check.finite("wall_thickness_m", p.wall_thickness_m);
+  check.finite("bladder.c10_pa", p.bladder.c10_pa);
+  check.finite("bladder.c01_pa", p.bladder.c01_pa);
+  check.finite("bladder.c20_pa", p.bladder.c20_pa);
+  check.finite("end_length_m", p.end_length_m);
+  check.finite("end_slope", p.end_slope);
+
+  // geometry: dimensions, and a braid that contracts from L0 (b > L0, L0 > b / sqrt 3)
+  check.require(p.length_m > 0.0, "length_m", "> 0 m", p.length_m);
+  check.require(p.diameter_m > 0.0, "diameter_m", "> 0 m", p.diameter_m);
+  const double max_angle = std::acos(1.0 / std::sqrt(3.0));
+  check.require(p.braid_angle_rad > 0.0 && p.braid_angle_rad < max_angle, "braid_angle_rad",
+                "in (0, " + fmt(max_angle) +
+                    ") rad (fibre longer than L0, braid able to contract from L0)",
+                p.braid_angle_rad);
+  check.require(p.wall_thickness_m >= 0.0, "wall_thickness_m", ">= 0 m", p.wall_thickness_m);
+
+  // bladder material, Eq. (20)
+  check.require(p.bladder.c10_pa + p.bladder.c01_pa > 0.0, "bladder.c10_pa",
+                "> -bladder.c01_pa = " + fmt(-p.bladder.c01_pa) +
+                    " Pa (a positive initial shear modulus 2 (C10 + C01))",
+                p.bladder.c10_pa);
+  check.non_negative("bladder.c20_pa", p.bladder.c20_pa);
+
+  // end regions: both fit in the muscle at its free-contraction length b / sqrt 3
+  const double l_min = avbdl_braid(p).fibre_length_m / std::sqrt(3.0);
+  check.require(p.end_length_m >= 0.0 && 2.0 * p.end_length_m < l_min, "end_length_m",
+                "in [0, " + fmt(0.5 * l_min) + ") m (half the fully contracted length)",
+                p.end_length_m);
+  check.require(p.end_slope >= 0.0 && p.end_slope <= 3.0, "end_slope",
+                "in [0, 3] (a monotone end profile)", p.end_slope);
+
+  validate_friction(p.friction, check);
+}
+
+AvbdlParams avbdl_params_from_geometry(double length_m, double diameter_m,
+                                       double braid_angle_rad, double wall_thickness_m,
+                                       const MooneyRivlinConstants& bladder,
+                                       const std::string& key_prefix) {
+  AvbdlParams p;
+  p.length_m = length_m;
+  p.diameter_m = diameter_m;
+  p.braid_angle_rad = braid_angle_rad;
+  p.wall_thickness_m = wall_thickness_m;
+  p.bladder = bladder;
+  p.end_length_m = kDmsp20EndFraction * length_m;
+  p.end_slope = AvbdlParams{}.end_slope;
+  p.friction = AvbdlFriction{};
+  validate_avbdl_params(p, key_prefix);
+  return p;
+}
+
+BraidGeometry avbdl_braid(const AvbdlParams& p) {
+  return braid_from_initial_shape(p.length_m, p.diameter_m, p.braid_angle_rad);
+}
+
+double avbdl_middle_radius(const AvbdlParams& p, double length_m) {
+  // the braid's diameter sqrt(b^2 - L^2) / (pi n), in place of Eq. (26)
+  const BraidGeometry g = avbdl_braid(p);
+  assert(length_m > 0.0 && length_m < g.fibre_length_m);
+  return std::sqrt(radius_squared(g, length_m));
+}
+
+double avbdl_end_radius(const AvbdlParams& p, double x_m, double length_m) {
+  assert(x_m >= 0.0 && x_m <= p.end_length_m);
+  // Eq. (27): the normalised profile scaled from the fitting radius R0 to the middle R(L);
+  // in Eq. (6)'s terms p4 = R0, p3 = a dR / Ld, p2 = (3 - 2a) dR / Ld^2, p1 = (a - 2) dR / Ld^3
+  const double r0 = 0.5 * p.diameter_m;
+  const double dr = avbdl_middle_radius(p, length_m) - r0;
+  return r0 + dr * profile(profile_coefficients(p.end_slope), x_m / p.end_length_m);
+}
+
+double avbdl_volume(const AvbdlParams& p, double length_m) {
+  const BraidGeometry g = avbdl_braid(p);
+  const double ld = p.end_length_m;
+  assert(length_m >= 2.0 * ld && length_m < g.fibre_length_m);
+  const double r0 = 0.5 * p.diameter_m;
+  const double r_sq = radius_squared(g, length_m);
+  const double r = std::sqrt(r_sq);
+  const double dr = r - r0;
+  const ProfileMoments m = profile_moments(p.end_slope);
+
+  // Eq. (12), (14): A = y_d A_d = 1/2 integral of y^2 over the end region [0, Ld]
+  const double a_ends = 0.5 * ld * (r0 * r0 + 2.0 * r0 * dr * m.i1 + dr * dr * m.i2);
+  // Eq. (13), (15): B = y_r A_r with y_r = R / 2 and A_r = R (L0 - 2 Ld - DL) / 2, the
+  // straight part of one half; the text lost (15)'s typesetting, this reading is the one
+  // that gives the cylinder V = pi R^2 L at Ld = 0
+  const double b_middle = (0.5 * r) * (r * 0.5 * (length_m - 2.0 * ld));
+  // Eq. (16)-(17): Guldin's rule (9) on one half's profile area, both halves: 4 pi (A + B)
+  return 4.0 * kPi * (a_ends + b_middle);
+}
+
+double avbdl_dvolume_dlength(const AvbdlParams& p, double length_m) {
+  const BraidGeometry g = avbdl_braid(p);
+  const double ld = p.end_length_m;
+  const double r0 = 0.5 * p.diameter_m;
+  const double r_sq = radius_squared(g, length_m);
+  const double dr_sq = dradius_squared_dlength(g, length_m);
+  const ProfileMoments m = profile_moments(p.end_slope);
+
+  // dA/dL: the end region's shape moves with R(L); dR/dL = d(R^2)/dL / (2 R)
+  double da = 0.0;
+  if (ld > 0.0) {
+    const double r = std::sqrt(r_sq);
+    da = ld * (r0 * m.i1 + (r - r0) * m.i2) * dr_sq / (2.0 * r);
+  }
+  // dB/dL: the straight part widens and shortens
+  const double db = 0.25 * (dr_sq * (length_m - 2.0 * ld) + r_sq);
+  // Eq. (18) uses F = P dV/dDL with DL = L0 - L: dV/dDL = -dV/dL
+  return 4.0 * kPi * (da + db);
+}
+
+double mooney_rivlin_stress(const MooneyRivlinConstants& c, double stretch) {
+  // Eq. (20), C01 term reconstructed as 2 C01 (1 - 1/lambda^3) (the text lost its fraction
+  // bars); it is the one whose integral gives Eq. (22)'s C01 (1 + 2 lambda) term
+  const double l = stretch;
+  const double i1_minus_3 = l * l + 2.0 / l - 3.0;
+  return 2.0 * c.c10_pa * (l - 1.0 / (l * l)) + 2.0 * c.c01_pa * (1.0 - 1.0 / (l * l * l)) +
+         4.0 * c.c20_pa * (l - 1.0 / (l * l)) * i1_minus_3;
+}
+
+double mooney_rivlin_energy_density(const MooneyRivlinConstants& c, double stretch) {
+  // Eq. (22), the integral (21) of (20) from 1 to lambda:
+  // (lambda - 1)^2 / lambda^2 [C01 (1 + 2 lambda) + C10 lambda (2 + lambda)]
+  //   + C20 (lambda^3 - 3 lambda + 2)^2 / lambda^2
+  const double l = stretch;
+  const double cubic = l * l * l - 3.0 * l + 2.0;
+  const double c10_c01 = c.c01_pa * (1.0 + 2.0 * l) + c.c10_pa * l * (2.0 + l);
+  return (l - 1.0) * (l - 1.0) / (l * l) * c10_c01 + c.c20_pa * cubic * cubic / (l * l);
+}
+
+double avbdl_bladder_energy(const AvbdlParams& p, double length_m) {
+  const double r0 = 0.5 * p.diameter_m;
+  const double r = avbdl_middle_radius(p, length_m);
+  const double area = bladder_area(p);
+  const std::array<double, 4> c = profile_coefficients(p.end_slope);
+
+  // Eq. (23)-(24), middle: V_bl(Lr) W_def(R / R0), with the bladder's reference (material)
+  // volume of the straight part, so that W depends on L only through the stretch
+  const double w_mid = area * (p.length_m - 2.0 * p.end_length_m) *
+                       mooney_rivlin_energy_density(p.bladder, r / r0);
+  // Eq. (24), ends: the paper's sum over x slices, as a Gauss rule over s = x / Ld
+  const double per_end = integrate_unit_interval([&](double s) {
+    return mooney_rivlin_energy_density(p.bladder, (r0 + (r - r0) * profile(c, s)) / r0);
+  });
+  return w_mid + 2.0 * area * p.end_length_m * per_end;
+}
+
+double avbdl_dbladder_energy_dlength(const AvbdlParams& p, double length_m) {
+  const double r0 = 0.5 * p.diameter_m;
+  const double r = avbdl_middle_radius(p, length_m);
+  const double area = bladder_area(p);
+  const std::array<double, 4> c = profile_coefficients(p.end_slope);
+  const double dr = dradius_squared_dlength(avbdl_braid(p), length_m) / (2.0 * r);
+
+  // Eq. (21): dW/dlambda = sigma; the middle's stretch R / R0 moves with dR/dL
+  const double dw_mid = area * (p.length_m - 2.0 * p.end_length_m) *
+                        mooney_rivlin_stress(p.bladder, r / r0) / r0;
+  // at s the end radius moves by eta(s) dR/dL
+  const double per_end = integrate_unit_interval([&](double s) {
+    const double eta = profile(c, s);
+    return mooney_rivlin_stress(p.bladder, (r0 + (r - r0) * eta) / r0) * eta / r0;
+  });
+  return (dw_mid + 2.0 * area * p.end_length_m * per_end) * dr;
+}
+
+double avbdl_static_force(const AvbdlParams& p, double p_pa, double length_m) {
+  // Eq. (19): F dDL = p dV - dW_def with dDL = -dL, so Eq. (25) reads
+  // F = -p dV/dL + dW_def/dL; the text lost (25)'s fraction bars and sign, this is the
+  // sign for which the bladder's work lowers the pull of a contracted muscle
+  return -p_pa * avbdl_dvolume_dlength(p, length_m) +
+         avbdl_dbladder_energy_dlength(p, length_m);
+}
+
+double avbdl_friction_magnitude(const AvbdlParams& p, double p_pa, double length_m,
+                                StretchDirection direction) {
+  const AvbdlFrictionCoefficients& c = direction == StretchDirection::kExtension
+                                           ? p.friction.extension
+                                           : p.friction.contraction;
+  // F_f = F0 + p (A0 + A1 eps): normal load from pressure on a strain-dependent contact
+  const double strain = (p.length_m - length_m) / p.length_m;
+  const double area = std::max(c.pressure_area_m2 + c.strain_area_m2 * strain, 0.0);
+  return c.force_n + std::max(p_pa, 0.0) * area;
+}
+
+double avbdl_friction_force(const AvbdlParams& p, double p_pa, double length_m,
+                            StretchDirection direction) {
+  const double f = avbdl_friction_magnitude(p, p_pa, length_m, direction);
+  return direction == StretchDirection::kExtension ? f : -f;
+}
+
+double avbdl_smooth_friction_force(const AvbdlParams& p, double p_pa, double length_m,
+                                   double length_rate_m_per_s) {
+  const StretchDirection direction = length_rate_m_per_s > 0.0 ? StretchDirection::kExtension
+                                                               : StretchDirection::kContraction;
+  return std::tanh(length_rate_m_per_s / p.friction.velocity_scale_m_per_s) *
+         avbdl_friction_magnitude(p, p_pa, length_m, direction);
+}
+
+double avbdl_force(const AvbdlParams& p, double p_pa, double length_m,
+                   double length_rate_m_per_s) {
+  return avbdl_static_force(p, p_pa, length_m) +
+         avbdl_smooth_friction_force(p, p_pa, length_m, length_rate_m_per_s);
+}
+
+}  // namespace pamsim

@@ -1,0 +1,171 @@
+// avbdl.h: the AVBDL static PAM model of Pipan et al. (Actuators 2025, 14, 560; seeds/003),
+// "Accurate Volume and Bladder Deformation Loss", as a plant force law, plus the fibre
+// friction that the paper names as what it leaves out. Pure functions, SI
+// (Pa, m, N, J); p is gauge pressure, L the muscle length between the end fittings, and
+// tension (pull) is positive. Equation numbers are seeds/003's.
+//
+// Map from the paper to this file:
+//   Eq. (3), (18)  F = P dV/dDL = -p dV/dL            avbdl_dvolume_dlength (dDL = -dL)
+//   Eq. (6)        end-region profile y(x)             avbdl_end_radius
+//   Eq. (8)        p_n(P, DL), the DMSP-20 data matrix (not printed; see below)
+//   Eq. (9)-(17)   volume by Guldin's rule: deformed end regions AR1 (length Ld each)
+//                  + straight middle AR2               avbdl_volume
+//   Eq. (19)       W_out = W_in - W_ob                 avbdl_static_force
+//   Eq. (20)       Mooney-Rivlin uniaxial stress       mooney_rivlin_stress
+//   Eq. (21)-(22)  its work per reference volume       mooney_rivlin_energy_density
+//   Eq. (23)-(24)  bladder work, lambda = R/R0, summed over the end slices and the middle
+//                                                      avbdl_bladder_energy (+ its slope)
+//   Eq. (25)       F = -p dV/dL + dW_def/dL            avbdl_static_force
+//   Eq. (26)       D_max = D0 L0 / L_min (as read)     replaced by the braid (avbdl_middle_radius)
+//   Eq. (27)-(29)  profile scaled to any D, L          avbdl_end_radius, avbdl_params_from_geometry
+//
+// What pamsim builds where the paper gives data instead of formulas:
+// - The middle radius follows the inextensible braid (Chou & Hannaford, chou_hannaford.h):
+//   R(L) = sqrt(b^2 - L^2) / (2 pi n). For the DMSP-20 the braid reaches D = 38.6 mm at its
+//   free-contraction length b/sqrt(3) = 127 mm, where Eq. (26) as read gives 31 mm; the
+//   paper measured D_F20_max = 36 mm.
+// - The DMSP-20 coefficients of Eq. (6)/(8) are not printed. The end profile keeps Eq. (6)'s
+//   four terms (p4 + p3 x + p2 x^2 + p1 x^3) and, as Eq. (27)-(29) do, scales one normalised
+//   shape affinely onto the muscle: y(x) = R0 + (R(L) - R0) eta(x / Ld) with
+//   eta(s) = a s + (3 - 2a) s^2 + (a - 2) s^3: y(0) = R0 (p4 is the initial radius, Sec.
+//   2.2), y(Ld) = R(L) and y'(Ld) = 0 (it meets the straight part without a kink),
+//   y'(0) = a (R(L) - R0) / Ld. eta is monotone exactly for a in [0, 3]. The profile does not
+//   depend on p (the paper's p-dependence comes from fibre stretch, absent here).
+//   Eq. (28)-(29) (K1, K2) lost their fraction bars; they are read as the affine map that
+//   sends the DMSP-20's radii [D_F20, D_F20_max] / 2 onto [D, D_max] / 2; here that map is
+//   applied directly with the muscle's own R0 and R(L).
+// - With Ld = 0 (no end regions) and t = 0 (no bladder) the model is Chou-Hannaford exactly.
+//
+// Friction (pamsim's addition; seeds/003 Sec. 3 asks for "a pressure- and strain-dependent
+// friction term"): dry friction between braid and bladder, proportional to the normal load,
+// i.e. to p times a contact area that changes with contraction strain eps = (L0 - L) / L0,
+// in the spirit of Tondu & Lopez (2000, seeds/003 ref. [4]):
+//   F_f = F0 + max(p, 0) max(A0 + A1 eps, 0) >= 0,
+// with its own (F0, A0, A1) for lengthening (StretchDirection::kExtension) and shortening
+// (kContraction). It opposes motion: +F_f while lengthening, -F_f while shortening, so the
+// muscle pulls harder while being stretched than while shortening at the same (p, L).
+// Two forms: avbdl_friction_force takes the direction as a state (rate-independent, for
+// quasi-static tensile tests); avbdl_smooth_friction_force, used by avbdl_force, is
+// tanh(v / v_s) F_f(direction of v): continuous in v (zero at rest, no jump at reversal) for
+// ODE solvers and MuJoCo steps; v_s sets how fast it saturates. Its price: no stiction, a
+// muscle at rest carries no friction. Friction defaults to zero (no published values):
+// fit it from a measured loop, whose width at (p, eps) is F_f,ext + F_f,con.
+//
+// Domain: 2 Ld <= L < b (validate_avbdl_params makes the whole contraction range
+// [b/sqrt(3), L0] lie inside it). Outside, results are not physical.
+#pragma once
+
+#include <string>
+
+#include "pam_actuator/chou_hannaford.h"
+#include "pam_actuator/units.h"
+#include "pam_actuator/wickramatunge.h"   // StretchDirection
+
+namespace pamsim {
+
+// Eq. (20): W = C10 (I1 - 3) + C01 (I2 - 3) + C20 (I1 - 3)^2, incompressible [Pa].
+struct MooneyRivlinConstants {
+  double c10_pa = 0.0;
+  double c01_pa = 0.0;
+  double c20_pa = 0.0;
+};
+
+// Natural rubber: Eq. (20) fitted here (linear least squares on nominal stress) to Treloar's
+// uniaxial data for vulcanised natural rubber, L. R. G. Treloar, Trans. Faraday Soc. 40, 59
+// (1944), the 9 points with stretch <= 2.42 (a 25 deg braid stretches the bladder's hoop at
+// most 1/sin(25 deg) = 2.37); largest residual 0.010 MPa. Data as tabulated in the FElupe
+// example ex14_hyperelasticity.py (kgf/cm^2 x 0.0980665 = MPa).
+inline constexpr MooneyRivlinConstants kNaturalRubberTreloar{0.0505e6, 0.1771e6, 0.00352e6};
+// Silicone rubber (Wacker Elastosil M4601): Yeoh C10 = 0.11 MPa, C20 = 0.02 MPa, i.e. Eq. (20)
+// with C01 = 0, from Polygerinos et al., "Modeling of Soft Fiber-Reinforced Bending
+// Actuators", IEEE Trans. Robot. 31(3), 778-789 (2015).
+inline constexpr MooneyRivlinConstants kSiliconeElastosilM4601{0.11e6, 0.0, 0.02e6};
+
+// One stroke direction's friction coefficients, all >= 0.
+struct AvbdlFrictionCoefficients {
+  double force_n = 0.0;            // F0: friction at p = 0 [N]
+  double pressure_area_m2 = 0.0;   // A0: per Pa of gauge pressure at eps = 0 [N/Pa = m^2]
+  double strain_area_m2 = 0.0;     // A1: growth of A0 per unit contraction strain [m^2]
+};
+
+struct AvbdlFriction {
+  AvbdlFrictionCoefficients extension;     // while lengthening
+  AvbdlFrictionCoefficients contraction;   // while shortening
+  double velocity_scale_m_per_s = 1e-3;    // v_s of the tanh, > 0
+};
+
+// Defaults: the Festo DMSP-20 as seeds/003 Sec. 2.6 prints it (D 20 mm, L 200 mm, fibre
+// 221 mm, n 1.5, braid 25 deg; b and n follow from L0, D0, alpha0: 220.7 mm, 1.49) and its
+// 32 mm end regions (Sec. 2.2). Its wall thickness and fitted Mooney-Rivlin constants are not
+// in the text (Table 3 and Fig. 7 are lost): 2 mm is pamsim's assumption and the bladder
+// stands in with natural rubber.
+struct AvbdlParams {
+  double length_m = 0.200;                              // L0 at p = 0, > 0
+  double diameter_m = 0.020;                            // D0 = 2 R0, > 0
+  double braid_angle_rad = units::deg_to_rad(25.0);     // alpha0, in (0, 54.74 deg)
+  double wall_thickness_m = 0.002;                      // t >= 0; 0: no bladder loss
+  MooneyRivlinConstants bladder = kNaturalRubberTreloar;
+  double end_length_m = 0.032;                          // Ld >= 0; 0: no end regions
+  double end_slope = 2.0;                               // a in [0, 3]; 2: parabolic shoulder
+  AvbdlFriction friction;
+};
+
+// Throws InputError with one line "<key_prefix><key> must be ..., got <value>" for a
+// non-finite value, L0 or D0 <= 0, a braid angle outside (0, arccos(1/sqrt 3)) (at 0 the
+// fibre is no longer than L0; from 54.74 deg on the braid cannot contract from L0), t < 0,
+// C10 + C01 <= 0 (no initial shear modulus), C20 < 0, Ld < 0 or 2 Ld >= b / sqrt(3) (both
+// end regions must fit in the fully contracted muscle), a outside [0, 3], a negative
+// friction coefficient, or v_s <= 0. Keys are the field paths: "length_m",
+// "bladder.c10_pa", "friction.extension.force_n", ...
+void validate_avbdl_params(const AvbdlParams& params, const std::string& key_prefix);
+
+// Eq. (27)-(29) for any muscle: the given geometry and bladder, end regions as long as the
+// DMSP-20's relative to its length (Ld = 32/200 L0; Fig. 9 normalises x by the length),
+// a = 2, no friction. Validates with `key_prefix` (throws InputError as above).
+AvbdlParams avbdl_params_from_geometry(double length_m, double diameter_m,
+                                       double braid_angle_rad, double wall_thickness_m,
+                                       const MooneyRivlinConstants& bladder,
+                                       const std::string& key_prefix = "");
+
+// b and n of the braid from L0, D0, alpha0 (chou_hannaford.h).
+BraidGeometry avbdl_braid(const AvbdlParams& params);
+
+// Radius of the straight middle part [m]: the braid's sqrt(b^2 - L^2) / (2 pi n).
+double avbdl_middle_radius(const AvbdlParams& params, double length_m);
+
+// Eq. (6), (27): radius [m] of the end region at x in [0, Ld] from the fitting.
+double avbdl_end_radius(const AvbdlParams& params, double x_m, double length_m);
+
+// Eq. (9)-(17): gas volume [m^3] of the muscle at length L.
+double avbdl_volume(const AvbdlParams& params, double length_m);
+// dV/dL [m^2], analytic.
+double avbdl_dvolume_dlength(const AvbdlParams& params, double length_m);
+
+// Eq. (20): nominal uniaxial stress [Pa] at stretch lambda > 0.
+double mooney_rivlin_stress(const MooneyRivlinConstants& c, double stretch);
+// Eq. (21)-(22): its integral from 1 to lambda, work per reference volume [J/m^3].
+double mooney_rivlin_energy_density(const MooneyRivlinConstants& c, double stretch);
+
+// Eq. (23)-(24): work [J] stored in the bladder's radial deformation at length L
+// (0 at L0); and its slope dW/dL [N].
+double avbdl_bladder_energy(const AvbdlParams& params, double length_m);
+double avbdl_dbladder_energy_dlength(const AvbdlParams& params, double length_m);
+
+// Eq. (25): the paper's static force [N], -p dV/dL + dW/dL, without friction.
+double avbdl_static_force(const AvbdlParams& params, double p_pa, double length_m);
+
+// Friction magnitude F_f >= 0 [N] for a stroke direction (see the top of this file).
+double avbdl_friction_magnitude(const AvbdlParams& params, double p_pa, double length_m,
+                                StretchDirection direction);
+// Signed friction [N] with the direction as a state: +F_f lengthening, -F_f shortening.
+double avbdl_friction_force(const AvbdlParams& params, double p_pa, double length_m,
+                            StretchDirection direction);
+// Signed friction [N] from the length rate dL/dt [m/s]: tanh(v / v_s) F_f(direction of v).
+double avbdl_smooth_friction_force(const AvbdlParams& params, double p_pa, double length_m,
+                                   double length_rate_m_per_s);
+
+// The plant force [N]: avbdl_static_force + avbdl_smooth_friction_force.
+double avbdl_force(const AvbdlParams& params, double p_pa, double length_m,
+                   double length_rate_m_per_s);
+
+}  // namespace pamsim
