@@ -14,12 +14,18 @@ namespace pamsim {
 ValveModel parse_valve_model(const std::string& name, const std::string& context) {
   if (name == "iso6358") return ValveModel::kIso6358;
   if (name == "first_order") return ValveModel::kFirstOrder;
+  if (name == "regulator") return ValveModel::kRegulator;
   throw InputError(context + ": unknown valve model \"" + name +
-                   "\", allowed iso6358 | first_order");
+                   "\", allowed iso6358 | first_order | regulator");
 }
 
 const char* valve_model_name(ValveModel model) {
-  return model == ValveModel::kIso6358 ? "iso6358" : "first_order";
+  switch (model) {
+    case ValveModel::kIso6358: return "iso6358";
+    case ValveModel::kFirstOrder: return "first_order";
+    case ValveModel::kRegulator: return "regulator";
+  }
+  return "?";
 }
 
 double iso6358_flow_function(double r, double b, double r_lam) {
@@ -62,11 +68,49 @@ PneumaticOde::PneumaticOde(const PneumaticParams& params, ValveModel model,
 }
 
 int PneumaticOde::chamber_index(int muscle) const {
-  return model_ == ValveModel::kIso6358 ? 2 * muscle + 1 : muscle;
+  return model_ == ValveModel::kFirstOrder ? muscle : 2 * muscle + 1;
 }
 
 int PneumaticOde::regulator_index(int muscle) const {
   return model_ == ValveModel::kIso6358 ? 2 * muscle : -1;
+}
+
+int PneumaticOde::valve_opening_index(int muscle) const {
+  return model_ == ValveModel::kRegulator ? 2 * muscle : -1;
+}
+
+double PneumaticOde::restriction_flow(double opening, double p_a, double p_b) const {
+  const double b = params_.critical_pressure_ratio, r_lam = params_.laminar_ratio;
+  if (p_a >= p_b) {
+    return opening * flow_coefficient_ * p_a * iso6358_flow_function(p_b / p_a, b, r_lam);
+  }
+  return -opening * flow_coefficient_ * p_b * iso6358_flow_function(p_a / p_b, b, r_lam);
+}
+
+void PneumaticOde::regulator_rhs(double t, const double* y, double* ydot) {
+  const double inv_tau_v = 1.0 / params_.regulator_valve_time_constant_s;
+  const double band = params_.regulator_proportional_band_pa;
+  const double p_supply = params_.supply_gauge_pa + params_.atmospheric_pa;
+  const double p_atm = params_.atmospheric_pa;
+  for (int i = 0; i < muscle_count(); ++i) {
+    const double u = y[2 * i];
+    const double p = y[2 * i + 1];
+    if (!(p > 0.0)) throw RecoverableRhsError("non-positive absolute pressure");
+
+    // the main valve opens toward the pressure error, with its own lag
+    const double target = std::clamp((input_[i].p_cmd_abs - p) / band, -1.0, 1.0);
+    ydot[2 * i] = (target - u) * inv_tau_v;
+
+    // filling from the supply, or venting to the atmosphere
+    const double qm_in = u >= 0.0 ? restriction_flow(u, p_supply, p)
+                                  : -restriction_flow(-u, p, p_atm);
+
+    // polytropic chamber with moving wall
+    const double volume = volume_m3(i, t);
+    if (!(volume > 0.0)) throw RecoverableRhsError("non-positive chamber volume");
+    ydot[2 * i + 1] =
+        (n_r_t_ * qm_in - params_.polytropic_index * p * volume_rate_m3_s(i, t)) / volume;
+  }
 }
 
 void PneumaticOde::set_kinematics(int muscle, double t0_s, double length_m,
@@ -95,6 +139,10 @@ void PneumaticOde::rhs(double t, const double* y, double* ydot) {
     // first-order lag toward the held command
     const double inv_tau = 1.0 / params_.first_order_time_constant_s;
     for (int i = 0; i < n_muscles; ++i) ydot[i] = (input_[i].p_cmd_abs - y[i]) * inv_tau;
+    return;
+  }
+  if (model_ == ValveModel::kRegulator) {
+    regulator_rhs(t, y, ydot);
     return;
   }
 

@@ -14,6 +14,15 @@
 //              dV/dt = dV_CH/dl * ldot   (Chou-Hannaford volume, chou_hannaford.h).
 // kFirstOrder (one state per muscle): dp/dt = (p_cmd - p) / tau; the analytic step
 //   response is p(t) = p_cmd + (p0 - p_cmd) exp(-t / tau).
+// kRegulator (two states per muscle: the main valve's opening u in [-1, 1], and p): a
+//   proportional pressure regulator as a closed loop around the chamber it feeds, so that
+//   the chamber is not an ideal pressure source: the command arrives after a dead time
+//   (PneumaticSystem delays it); the valve opens toward the pressure error,
+//     du/dt = (clamp((p_cmd - p) / p_band, -1, 1) - u) / tau_v,
+//   filling from the supply (u > 0) or venting to the atmosphere (u < 0) through the ISO
+//   6358 restriction scaled by |u|; the chamber equation as above. A stretch compresses the
+//   chamber faster than the valve can vent, so its pressure rises toward the closed
+//   chamber's p V^n = const until the loop catches up.
 // Inputs per muscle, held over a step: command (absolute Pa inside this class), length l0
 // [m] and velocity ldot [m/s] at time t0 [s]; inside the step l(t) = l0 + ldot (t - t0), so
 // V(t) and dV/dt are consistent.
@@ -44,10 +53,11 @@ class RecoverableRhsError : public std::runtime_error {
   explicit RecoverableRhsError(const std::string& m) : std::runtime_error(m) {}
 };
 
-enum class ValveModel { kIso6358, kFirstOrder };
+enum class ValveModel { kIso6358, kFirstOrder, kRegulator };
 
-// "iso6358" -> kIso6358, "first_order" -> kFirstOrder; otherwise throws InputError
-// "<context>: unknown valve model \"x\", allowed iso6358 | first_order".
+// "iso6358" -> kIso6358, "first_order" -> kFirstOrder, "regulator" -> kRegulator; otherwise
+// throws InputError "<context>: unknown valve model \"x\", allowed iso6358 | first_order |
+// regulator".
 ValveModel parse_valve_model(const std::string& name, const std::string& context);
 const char* valve_model_name(ValveModel model);
 
@@ -70,11 +80,12 @@ class PneumaticOde : public OdeSystem {
   void rhs(double t, const double* y, double* ydot) override;
 
   int muscle_count() const { return static_cast<int>(braid_.size()); }
-  int states_per_muscle() const { return model_ == ValveModel::kIso6358 ? 2 : 1; }
-  // index in y of muscle i's chamber pressure and of its regulator pressure (-1 when the
-  // model has none)
+  int states_per_muscle() const { return model_ == ValveModel::kFirstOrder ? 1 : 2; }
+  // index in y of muscle i's chamber pressure, of its regulator pressure and of its valve
+  // opening (-1 when the model has none)
   int chamber_index(int muscle) const;
   int regulator_index(int muscle) const;
+  int valve_opening_index(int muscle) const;
   ValveModel model() const { return model_; }
   const BraidGeometry& braid(int muscle) const { return braid_[muscle]; }
   const PneumaticParams& params() const { return params_; }
@@ -97,6 +108,11 @@ class PneumaticOde : public OdeSystem {
   ValveModel model_;
   std::vector<BraidGeometry> braid_;
   std::vector<Input> input_;
+  void regulator_rhs(double t, const double* y, double* ydot);
+  // signed mass flow [kg/s] from a gas at p_a to one at p_b (absolute Pa) through the
+  // restriction opened to `opening` in [0, 1]
+  double restriction_flow(double opening, double p_a, double p_b) const;
+
   double flow_coefficient_ = 0.0;  // C rho0 sqrt(T0/T)
   double n_r_t_ = 0.0;             // n R T
 };

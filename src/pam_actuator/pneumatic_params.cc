@@ -106,6 +106,14 @@ void validate_pneumatic_params(const PneumaticParams& p, const std::string& cont
   require(finite(p.first_order_time_constant_s) && p.first_order_time_constant_s > 0.0,
           "first-order time constant must be > 0 s, got " +
               fmt(p.first_order_time_constant_s));
+  require(finite(p.regulator_dead_time_s) && p.regulator_dead_time_s >= 0.0,
+          "regulator dead time must be >= 0 s, got " + fmt(p.regulator_dead_time_s));
+  require(finite(p.regulator_valve_time_constant_s) && p.regulator_valve_time_constant_s > 0.0,
+          "regulator valve time constant must be > 0 s, got " +
+              fmt(p.regulator_valve_time_constant_s));
+  require(finite(p.regulator_proportional_band_pa) && p.regulator_proportional_band_pa > 0.0,
+          "regulator proportional band must be > 0 Pa, got " +
+              fmt(p.regulator_proportional_band_pa));
   require(p.solver.relative_tolerance > 0.0 && p.solver.relative_tolerance <= 1e-2,
           "solver relative tolerance must be in (0, 1e-2], got " +
               fmt(p.solver.relative_tolerance));
@@ -149,6 +157,13 @@ PneumaticParams load_pneumatic_params(const std::string& path) {
        {{"time_constant_ms", 0.0, 100000.0, true, false, 1e-3,
          &p.first_order_time_constant_s}},
        {}},
+      {"regulator",
+       {{"dead_time_ms", 0.0, 1000.0, false, false, 1e-3, &p.regulator_dead_time_s},
+        {"valve_time_constant_ms", 0.0, 10000.0, true, false, 1e-3,
+         &p.regulator_valve_time_constant_s},
+        {"proportional_band_kPa", 0.0, 2000.0, true, false, 1e3,
+         &p.regulator_proportional_band_pa}},
+       {}},
       {"solver",
        {{"relative_tolerance", 0.0, 1e-2, true, false, 1.0, &s.relative_tolerance},
         {"absolute_tolerance_Pa", 0.0, 1e4, true, false, 1.0, &s.absolute_tolerance_pa}},
@@ -175,7 +190,7 @@ PneumaticParams load_pneumatic_params(const std::string& path) {
     if (table == nullptr) {
       throw InputError(path + ": " + table_name +
                        ": unknown table (allowed: supply, gas, valve, chamber, first_order, "
-                       "solver)");
+                       "regulator, solver)");
     }
     const toml::table* tbl = table_node.as_table();
     if (tbl == nullptr) {

@@ -43,6 +43,13 @@ struct PneumaticParams {
   double tube_dead_volume_m3 = 12.566e-6;   // >= 0
   // first-order valve option: dp/dt = (p_cmd - p) / tau
   double first_order_time_constant_s = 0.1;  // > 0
+  // closed-loop regulator option (valve.model = "regulator", chamber_ode.h): the command
+  // reaches the regulator after a dead time; its main valve opens toward
+  // (p_cmd - p) / proportional band with a first-order lag, filling from the supply or
+  // venting to the atmosphere through the ISO 6358 restriction above
+  double regulator_dead_time_s = 0.005;              // >= 0
+  double regulator_valve_time_constant_s = 0.010;    // > 0
+  double regulator_proportional_band_pa = 20.0e3;    // > 0
   PneumaticSolverParams solver;
 };
 

@@ -42,6 +42,8 @@ PneumaticSystem::PneumaticSystem(const PneumaticParams& params, ValveModel model
     set_command(i, initial_gauge_pa[i]);  // clamps into the command range
   }
   reinit_pending_ = false;
+  // from here on commands reach the valve after the regulator's dead time
+  dead_time_s_ = model == ValveModel::kRegulator ? params_.regulator_dead_time_s : 0.0;
 
   std::vector<double> y0(ode_->size());
   for (int i = 0; i < n; ++i) {
@@ -78,7 +80,15 @@ void PneumaticSystem::set_command(int muscle, double p_cmd_gauge_pa) {
                               params_.command_max_gauge_pa);
   if (p == command_gauge_pa_[muscle]) return;
   command_gauge_pa_[muscle] = p;
-  ode_->set_command_abs(muscle, p + params_.atmospheric_pa);
+  if (dead_time_s_ > 0.0) {
+    delayed_.push_back({integrator_->time() + dead_time_s_, muscle, p + params_.atmospheric_pa});
+    return;
+  }
+  apply_command(muscle, p + params_.atmospheric_pa);
+}
+
+void PneumaticSystem::apply_command(int muscle, double p_cmd_abs_pa) {
+  ode_->set_command_abs(muscle, p_cmd_abs_pa);
   if (params_.solver.on_command_change == CommandChangePolicy::kReinit) reinit_pending_ = true;
 }
 
@@ -111,13 +121,30 @@ void PneumaticSystem::advance(double t_end_s) {
                              ": set_kinematics() was never called");
     }
   }
+  // delayed commands that take effect inside the interval split it there; those due at
+  // its end apply from the next one
+  constexpr double kSameTimeS = 1e-12;
+  while (!delayed_.empty() && delayed_.front().t_s < t_end_s - kSameTimeS) {
+    const DelayedCommand c = delayed_.front();
+    delayed_.pop_front();
+    if (c.t_s > time_s() + kSameTimeS) integrate_to(c.t_s);
+    apply_command(c.muscle, c.p_cmd_abs_pa);
+  }
+  integrate_to(t_end_s);
+  while (!delayed_.empty() && delayed_.front().t_s <= t_end_s + kSameTimeS) {
+    apply_command(delayed_.front().muscle, delayed_.front().p_cmd_abs_pa);
+    delayed_.pop_front();
+  }
+}
+
+void PneumaticSystem::integrate_to(double t_s) {
   // optional restart at a command change (solver.on_command_change = "reinit")
   if (reinit_pending_) {
     integrator_->reset(integrator_->time(), current_state());
     reinit_pending_ = false;
     ++reinits_;
   }
-  integrator_->advance_to(t_end_s);
+  integrator_->advance_to(t_s);
 }
 
 double PneumaticSystem::time_s() const { return integrator_->time(); }

@@ -5,7 +5,9 @@
 //
 // Per physics step [t, t + dt] the loop calls set_kinematics() for every muscle (length and
 // velocity at t; inside the step l is extrapolated linearly), then advance(t + dt). A
-// controller tick calls set_command(); the command is held until changed.
+// controller tick calls set_command(); the command is held until changed. With the
+// "regulator" valve model a command reaches the valve only after the regulator's dead time:
+// advance() splits its interval at the moments delayed commands take effect.
 //
 // Integration strategy (measured with bench/pneumatics_bench.cc, 2 muscles, 3 Hz motion,
 // a new command every 10 ms; accuracy against a rtol 1e-9 reference in pneumatics_test.cc):
@@ -25,6 +27,7 @@
 //   and ~80 Pa. The budget (1-1.5 us) is met only by "warm" at rtol 1e-4.
 #pragma once
 
+#include <deque>
 #include <memory>
 #include <vector>
 
@@ -73,6 +76,17 @@ class PneumaticSystem {
  private:
   void check_muscle(int muscle) const;
   std::vector<double> current_state() const;
+  void integrate_to(double t_s);               // restarting first if a command changed
+  void apply_command(int muscle, double p_cmd_abs_pa);
+
+  // a command on its way to the valve (the regulator's dead time)
+  struct DelayedCommand {
+    double t_s;
+    int muscle;
+    double p_cmd_abs_pa;
+  };
+  std::deque<DelayedCommand> delayed_;
+  double dead_time_s_ = 0.0;
 
   PneumaticParams params_;
   std::unique_ptr<PneumaticOde> ode_;

@@ -22,13 +22,17 @@ BraidGeometry table_one_braid() {
 TEST(ChamberOdeTest, ParsesValveModelNames) {
   EXPECT_EQ(parse_valve_model("iso6358", "x"), ValveModel::kIso6358);
   EXPECT_EQ(parse_valve_model("first_order", "x"), ValveModel::kFirstOrder);
+  EXPECT_EQ(parse_valve_model("regulator", "x"), ValveModel::kRegulator);
+  for (ValveModel m : {ValveModel::kIso6358, ValveModel::kFirstOrder, ValveModel::kRegulator}) {
+    EXPECT_EQ(parse_valve_model(valve_model_name(m), "x"), m);
+  }
   try {
     parse_valve_model("linear", "scenario.toml: valve.model");
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
               "scenario.toml: valve.model: unknown valve model \"linear\", allowed iso6358 | "
-              "first_order");
+              "first_order | regulator");
   }
 }
 

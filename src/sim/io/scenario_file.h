@@ -43,7 +43,7 @@
 //   reflex.pairs                  [[agonist, antagonist], ...] by actuator name; default
 //                                 [["agonist", "antagonist"]] when both muscles exist
 //   sensors.*                     the sensors (reflex/sensors.h)
-//   valve.model                   "iso6358" | "first_order"
+//   valve.model                   "iso6358" | "first_order" | "regulator" (pneumatics.h)
 //   valve.supply_MPa, valve.command_max_MPa   a rig's own supply and regulator range, in
 //                                 place of model.pneumatics' (command max <= supply)
 // Shorthands kept from pamsim 0.1 (their keys keep their meaning):
