@@ -98,10 +98,11 @@ pid_t spawn_sweep(const fs::path& sweep, const std::string& db) {
   return pid;
 }
 
-// 120 short trials: long enough to stop in the middle
-fs::path interruptible_sweep(const fs::path& dir) {
+// 3 x 4 x `seeds` short trials (120 by default): long enough to stop in the middle
+fs::path interruptible_sweep(const fs::path& dir, int seeds = 10) {
   const fs::path sweep = dir / "sweep.toml";
-  write_text(sweep, short_sweep("seeds = 10\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\n"
+  write_text(sweep, short_sweep("seeds = " + std::to_string(seeds) +
+                                "\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\n"
                                 "values = [40.0, 70.0, 100.0]\n[[axis]]\n"
                                 "key = \"reflex.k_MPa_s_per_mm\"\nfrom = 0.0005\nto = 0.004\n"
                                 "count = 4\nscale = \"log\"\n"));
@@ -167,7 +168,9 @@ TEST(CliSweepTest, SigintStopsCleanlyWithExit130AndResumeFinishes) {
 
 TEST(CliSweepTest, ASecondWriterIsRefusedWhileASweepRuns) {
   const fs::path dir = fresh_dir("sweep_lock");
-  const fs::path sweep = interruptible_sweep(dir);
+  // 960 trials (a few seconds): still running when the second writer starts, even on a
+  // loaded machine (120 could finish first under a parallel ctest)
+  const fs::path sweep = interruptible_sweep(dir, 80);
   const std::string db = (dir / "s.db").string();
   const pid_t pid = spawn_sweep(sweep, db);
   ASSERT_GT(pid, 0);
@@ -182,7 +185,7 @@ TEST(CliSweepTest, ASecondWriterIsRefusedWhileASweepRuns) {
   // the lock dies with its process: a resume now finishes the sweep
   const auto resumed = run_pamsim("sweep " + sweep.string() + " --resume --db " + db);
   EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
-  EXPECT_EQ(pamsim::ResultsDb::open_existing(db).trial_count(), kInterruptibleTrials);
+  EXPECT_EQ(pamsim::ResultsDb::open_existing(db).trial_count(), 3 * 4 * 80);
 }
 
 TEST(CliSweepTest, DivergingTrialIsStoredAndTheSweepGoesOn) {
