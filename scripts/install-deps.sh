@@ -8,6 +8,7 @@ packages=(
   libmujoco-dev libqhull-dev libgl-dev      # MuJoCo 2.2.2; its CMake config needs qhull and OpenGL
   libsundials-dev                            # CVODE 6.4 for the valve and chamber ODE
   libeigen3-dev                              # least squares in identification
+  libboost-dev                               # Boost.Math root finding (TOMS 748) for the plant laws
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libsqlite3-dev                             # sweep results
   libosmesa6-dev                             # headless rendering (OSMesa, llvmpipe)

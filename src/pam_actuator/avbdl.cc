@@ -6,8 +6,11 @@
 #include <cassert>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <sstream>
 #include <utility>
+
+#include <boost/math/tools/roots.hpp>
 
 #include "pam_actuator/input_error.h"
 
@@ -297,6 +300,30 @@ double avbdl_static_force(const AvbdlParams& p, double p_pa, double length_m) {
   // sign for which the bladder's work lowers the pull of a contracted muscle
   return -p_pa * avbdl_dvolume_dlength(p, length_m) +
          avbdl_dbladder_energy_dlength(p, length_m);
+}
+
+double avbdl_free_length(const AvbdlParams& p, double p_pa) {
+  if (!(p_pa > 0.0)) return p.length_m;
+  const double lo = avbdl_braid(p).fibre_length_m / std::sqrt(3.0);
+  const auto force = [&](double l) { return avbdl_static_force(p, p_pa, l); };
+  if (force(lo) >= 0.0) return lo;              // still pulling at the braid's limit
+  if (force(p.length_m) <= 0.0) return p.length_m;
+  std::uintmax_t iterations = 100;
+  const auto [a, b] = boost::math::tools::toms748_solve(
+      force, lo, p.length_m, boost::math::tools::eps_tolerance<double>(45), iterations);
+  return 0.5 * (a + b);
+}
+
+double avbdl_length_at_force(const AvbdlParams& p, double p_pa, double f_n) {
+  const double lo = avbdl_free_length(p, p_pa);
+  const double hi = 0.999 * avbdl_braid(p).fibre_length_m;
+  const auto excess = [&](double l) { return avbdl_static_force(p, p_pa, l) - f_n; };
+  if (!(f_n > 0.0) || excess(hi) < 0.0) return -1.0;
+  if (excess(lo) >= 0.0) return lo;
+  std::uintmax_t iterations = 100;
+  const auto [a, b] = boost::math::tools::toms748_solve(
+      excess, lo, hi, boost::math::tools::eps_tolerance<double>(45), iterations);
+  return 0.5 * (a + b);
 }
 
 double avbdl_friction_magnitude(const AvbdlParams& p, double p_pa, double length_m,

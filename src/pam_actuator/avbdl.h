@@ -154,6 +154,15 @@ double avbdl_dbladder_energy_dlength(const AvbdlParams& params, double length_m)
 // Eq. (25): the paper's static force [N], -p dV/dL + dW/dL, without friction.
 double avbdl_static_force(const AvbdlParams& params, double p_pa, double length_m);
 
+// The free length [m] at gauge pressure p: where avbdl_static_force is zero, in
+// [b / sqrt(3), L0] (L0 for p <= 0; b / sqrt(3) if the pull is still positive there). A
+// slack muscle rests there. Solved by Boost.Math's TOMS 748 to ~1e-13 relative.
+double avbdl_free_length(const AvbdlParams& params, double p_pa);
+
+// The length [m] at which the muscle pulls f > 0 [N] at rest at gauge pressure p, between
+// its free length and 0.999 b; -1 if it cannot pull that much below the fibre length.
+double avbdl_length_at_force(const AvbdlParams& params, double p_pa, double f_n);
+
 // Friction magnitude F_f >= 0 [N] for a stroke direction (see the top of this file).
 double avbdl_friction_magnitude(const AvbdlParams& params, double p_pa, double length_m,
                                 StretchDirection direction);

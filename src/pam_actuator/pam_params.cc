@@ -12,79 +12,11 @@
 
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/toml_file.h"
+#include "pam_actuator/toml_section.h"
 #include "pam_actuator/units.h"
 
 namespace pamsim {
 namespace {
-
-// shortest decimal text that reads back to the same double
-std::string format_number(double x) {
-  char buf[40];
-  for (int digits : {15, 16, 17}) {
-    std::snprintf(buf, sizeof(buf), "%.*g", digits, x);
-    if (std::strtod(buf, nullptr) == x) break;
-  }
-  std::string s = buf;
-  // keep TOML floats recognisable as floats
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-  return s;
-}
-
-// one table of the file with the file name and dotted prefix for messages
-struct Section {
-  const std::string& file;
-  std::string prefix;   // "" or "spring."
-  const toml::table& table;
-
-  std::string key(const std::string& k) const { return prefix + k; }
-
-  [[noreturn]] void fail(const std::string& k, const std::string& problem) const {
-    throw InputError(file + ": " + key(k) + ": " + problem);
-  }
-
-  // every key must be in `allowed`
-  void reject_unknown(const std::set<std::string>& allowed) const {
-    for (const auto& [k, v] : table) {
-      const std::string name(k.str());
-      if (allowed.count(name) == 0) {
-        std::string list;
-        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-        fail(name, "unknown key (allowed here: " + list + ")");
-      }
-    }
-  }
-
-  bool has(const std::string& k) const { return table.contains(k); }
-
-  double number(const std::string& k) const {
-    const toml::node* n = table.get(k);
-    if (n == nullptr) fail(k, "missing (a number is required)");
-    const std::optional<double> v = n->value<double>();
-    if (!v || n->is_boolean()) fail(k, "must be a number");
-    if (!std::isfinite(*v)) fail(k, "must be finite, got " + format_number(*v));
-    return *v;
-  }
-
-  double positive(const std::string& k, const std::string& unit) const {
-    const double v = number(k);
-    if (!(v > 0.0)) fail(k, "must be > 0 " + unit + ", got " + format_number(v));
-    return v;
-  }
-
-  std::string text(const std::string& k, const std::string& fallback) const {
-    const toml::node* n = table.get(k);
-    if (n == nullptr) return fallback;
-    const std::optional<std::string> v = n->value<std::string>();
-    if (!v) fail(k, "must be a string");
-    return *v;
-  }
-
-  Section sub(const std::string& k) const {
-    const toml::node* n = table.get(k);
-    if (n == nullptr || !n->is_table()) fail(k, "must be a table");
-    return Section{file, prefix + k + ".", *n->as_table()};
-  }
-};
 
 // spring.units must name the paper's units exactly
 void check_units(const Section& spring) {

@@ -126,6 +126,31 @@ TEST(ExperimentTest, PulleyTrialsAreTheSameOnOneAndTwoThreads) {
   }
 }
 
+// --- a physical plant ------------------------------------------------------------------
+
+// The pulley's PAM as the AVBDL law of seeds/003 (models/pams/plant_agonist.toml) while the
+// estimator still inverts Table IV's spring law: the line solved for the plant holds the
+// weight at rest, and the estimator is now wrong by what separates the two laws.
+TEST(ExperimentTest, PulleyWithAPhysicalPlantHoldsItsWeightAndShowsTheEstimatorsError) {
+  const std::string plant = "muscles.pam.plant=\"../models/pams/plant_agonist.toml\"";
+  const TrialResult still = run_file("pulley_sine_5kg.toml",
+                                     {plant, "sim.duration_s=2",
+                                      "muscles.pam.command={ kind = \"constant\", MPa = 0.6 }"});
+  ASSERT_EQ(still.summary.status, "ok") << still.summary.message;
+  for (double x : column(still.trajectory, "position_mm")) EXPECT_NEAR(x, 0.0, 0.05);
+  const std::vector<double> force = column(still.trajectory, "force_pam_N");
+  EXPECT_NEAR(force.back(), 5.0 * 9.81, 0.05);
+
+  const TrialResult ideal = run_file("pulley_sine_5kg.toml", {"sim.duration_s=10"});
+  const TrialResult physical = run_file("pulley_sine_5kg.toml", {plant, "sim.duration_s=10"});
+  ASSERT_EQ(physical.summary.status, "ok") << physical.summary.message;
+  EXPECT_LT(ideal.summary.metric("length_est_rmse_pam_pct"), 0.2);
+  EXPECT_GT(physical.summary.metric("length_est_rmse_pam_pct"), 1.0);
+  // the weight still follows the sine, by the plant's own stiffness
+  EXPECT_GT(physical.summary.metric("position_max_mm") - physical.summary.metric("position_min_mm"),
+            5.0);
+}
+
 // --- reaching --------------------------------------------------------------------------
 
 TEST(ExperimentTest, ReachingArmRisesMonotonicallyWhileTheRampsRun) {

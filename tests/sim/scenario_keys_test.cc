@@ -83,6 +83,8 @@ TEST(ScenarioKeysTest, MuscleAndScheduleKeysNameTheirKey) {
       {{"muscles.agonist.line_mm=300", "muscles.agonist.line=\"equilibrium\""},
        "muscles.agonist.line"},
       {{"muscles.agonist.params=\"missing.toml\""}, "missing.toml"},
+      {{"muscles.agonist.plant=\"missing.toml\""}, "muscles.agonist.plant: "},
+      {{"muscles.agonist.plant=3"}, "muscles.agonist.plant"},
       {{"muscles.biceps.command.MPa=0.4"}, "muscles.biceps.params"},
       {{"model.joint=\"elbow\""}, "model.joint"},
       {{"model.joint=\"ball\""}, "model.joint"},        // a free joint

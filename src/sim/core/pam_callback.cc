@@ -2,7 +2,8 @@
 #include "sim/core/pam_callback.h"
 
 #include <algorithm>
-
+#include <cmath>
+#include <iterator>
 #include <string>
 
 #include "pam_actuator/input_error.h"
@@ -41,6 +42,41 @@ void store_pam_in_model(mjModel* m, int id, const SpringModel& spring, double li
   u[10] = userdata_index;
 }
 
+void store_plant_in_model(mjModel* m, int id, const AvbdlParams& a, const char* path) {
+  if (m->nuser_actuator < kPamPlantUserSize) {
+    throw InputError(std::string(path) + ": <size nuser_actuator> must be >= " +
+                     std::to_string(kPamPlantUserSize) + " for a PAM with a plant law, got " +
+                     std::to_string(m->nuser_actuator));
+  }
+  mjtNum* u = m->actuator_user + static_cast<long>(id) * m->nuser_actuator;
+  const AvbdlFriction& f = a.friction;
+  const double values[] = {1.0, a.length_m, a.diameter_m, a.braid_angle_rad,
+                           a.wall_thickness_m, a.bladder.c10_pa, a.bladder.c01_pa,
+                           a.bladder.c20_pa, a.end_length_m, a.end_slope,
+                           f.velocity_scale_m_per_s, f.extension.force_n,
+                           f.extension.pressure_area_m2, f.extension.strain_area_m2,
+                           f.contraction.force_n, f.contraction.pressure_area_m2,
+                           f.contraction.strain_area_m2};
+  std::copy(std::begin(values), std::end(values), u + kPamUserSize);
+}
+
+bool pam_plant_from_model(const mjModel* m, int id, AvbdlParams* a) {
+  if (m->nuser_actuator < kPamPlantUserSize) return false;
+  const mjtNum* u = user_slots(m, id) + kPamUserSize;
+  if (u[0] != 1.0) return false;
+  a->length_m = u[1];
+  a->diameter_m = u[2];
+  a->braid_angle_rad = u[3];
+  a->wall_thickness_m = u[4];
+  a->bladder = {u[5], u[6], u[7]};
+  a->end_length_m = u[8];
+  a->end_slope = u[9];
+  a->friction.velocity_scale_m_per_s = u[10];
+  a->friction.extension = {u[11], u[12], u[13]};
+  a->friction.contraction = {u[14], u[15], u[16]};
+  return true;
+}
+
 SpringModel pam_spring_from_model(const mjModel* m, int id) {
   const mjtNum* u = user_slots(m, id);
   SpringModel spring;
@@ -62,7 +98,10 @@ double pam_length(const mjModel* m, const mjData* d, int id) {
 }
 
 double pam_free_length(const mjModel* m, const mjData* d, int id) {
-  return natural_length(pam_spring_from_model(m, id), d->userdata[pam_userdata_index(m, id)]);
+  const double p = d->userdata[pam_userdata_index(m, id)];
+  AvbdlParams plant;
+  if (pam_plant_from_model(m, id, &plant)) return avbdl_free_length(plant, p);
+  return natural_length(pam_spring_from_model(m, id), p);
 }
 
 double pam_muscle_length(const mjModel* m, const mjData* d, int id) {
@@ -71,8 +110,20 @@ double pam_muscle_length(const mjModel* m, const mjData* d, int id) {
 
 mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int id) {
   // parameters from the model, pressure from the trial's userdata
-  const SpringModel spring = pam_spring_from_model(m, id);
   const double p = d->userdata[pam_userdata_index(m, id)];
+
+  // the physical plant: seeds/003 Eq. (25) with friction at the tendon's rate; pull only
+  AvbdlParams plant;
+  if (pam_plant_from_model(m, id, &plant)) {
+    // a slack muscle contracts to its free length and pulls nothing; the law holds below
+    // the fibre length b (a muscle stretched to b would have to break)
+    const double b = avbdl_braid(plant).fibre_length_m;
+    const double l = std::min(pam_length(m, d, id), 0.999 * b);
+    if (l <= avbdl_braid(plant).fibre_length_m / std::sqrt(3.0)) return 0.0;
+    return -std::max(avbdl_force(plant, p, l, d->actuator_velocity[id]), 0.0);
+  }
+
+  const SpringModel spring = pam_spring_from_model(m, id);
 
   // Eq. (1)-(2): deformation from natural length; Eq. (3)-(5) pull, zero when slack
   const double deformation = pam_length(m, d, id) - natural_length(spring, p);

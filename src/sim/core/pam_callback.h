@@ -6,23 +6,37 @@
 //   m->actuator_user[id * nuser_actuator + k], k = 0..10 (written by store_pam_in_model):
 //     0 law (0 eq3, 1 eq4, 2 eq5), 1 m [m/Pa], 2 h [m], 3..8 SI coefficients,
 //     9 line length [m], 10 index into d->userdata of this PAM's chamber gauge pressure [Pa]
-// PAM length l = tendon length - line length; d = l - l_n(p); the force pulls only
-// (the actuator force is -f, f >= 0) and is zero when the PAM is slack (d <= 0).
+//   and, in models with nuser_actuator >= kPamPlantUserSize (written by store_plant_in_model),
+//     11 the plant law: 0 the spring law above (plant = estimator), 1 AVBDL (avbdl.h);
+//     12..27 the AVBDL parameters, SI: L0, D0, alpha0, wall, C10, C01, C20, Ld, a, v_s,
+//     extension F0, A0, A1, contraction F0, A0, A1.
+// PAM length l = tendon length - line length. The spring law: d = l - l_n(p), Eq. (1)-(5);
+// AVBDL: seeds/003 Eq. (25) plus friction at the tendon's velocity. The force pulls only
+// (the actuator force is -f, f >= 0) and is zero when the PAM is slack.
 #pragma once
 
 #include <mujoco/mujoco.h>
 
+#include "pam_actuator/avbdl.h"
 #include "pam_actuator/spring_model.h"
 
 namespace pamsim {
 
 inline constexpr int kPamUserSize = 11;
+inline constexpr int kPamPlantUserSize = 28;
 
 // Writes the PAM's parameters into actuator `id`'s user slots. Throws InputError if the
 // model declares nuser_actuator < kPamUserSize or the actuator is not a user-bias tendon
 // actuator; `path` names the model file in the message.
 void store_pam_in_model(mjModel* m, int actuator_id, const SpringModel& spring,
                         double line_length_m, int userdata_index, const char* path);
+
+// Makes actuator `id`'s plant the AVBDL law (the spring law stays the estimator's and the
+// calibration's). Throws InputError if the model declares nuser_actuator < kPamPlantUserSize.
+void store_plant_in_model(mjModel* m, int actuator_id, const AvbdlParams& plant,
+                          const char* path);
+// The actuator's AVBDL plant, or false if its plant is the spring law.
+bool pam_plant_from_model(const mjModel* m, int actuator_id, AvbdlParams* plant);
 
 // The spring model stored in actuator `id`'s user slots.
 SpringModel pam_spring_from_model(const mjModel* m, int actuator_id);
@@ -34,7 +48,7 @@ int pam_userdata_index(const mjModel* m, int actuator_id);
 // rests at its free length.
 double pam_length(const mjModel* m, const mjData* d, int actuator_id);
 // The PAM's free length [m] at its chamber pressure: where its force is zero, l_n(p) of
-// Eq. (2) for the spring laws.
+// Eq. (2) for the spring laws, avbdl_free_length for the AVBDL plant.
 double pam_free_length(const mjModel* m, const mjData* d, int actuator_id);
 // The muscle's real length [m]: pam_length while the line is taut, the free length when it
 // is slack (a slack muscle is not pulled below its free length). What the encoder, the

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "pam_actuator/avbdl.h"
 #include "pam_actuator/pam_params.h"
 #include "pam_actuator/pneumatics.h"
 #include "reflex/sensing.h"
@@ -33,7 +34,9 @@ struct MuscleSpec {
   std::string actuator;        // the model's PAM actuator (MJCF name)
   std::string label;           // in log columns and metric names (default: actuator)
   std::string params_file;     // muscles.<name>.params
-  PamParams pam;               // the PAM's law, gauge and geometry
+  PamParams pam;               // the law its estimator inverts, its gauge and geometry
+  std::string plant_file;      // muscles.<name>.plant, or empty: the plant is pam's law
+  AvbdlParams plant;           // the physical muscle (seeds/003), when plant_file is set
   PressureSchedule command;    // muscles.<name>.command
   LineSource line = LineSource::kFixed;
   double line_length_m = 0.0;  // kFixed

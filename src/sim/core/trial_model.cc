@@ -67,13 +67,16 @@ void bind_muscles(const Scenario& sc, TrialModel* tm) {
     b.spec = static_cast<int>(spec - sc.muscles.data());
     b.actuator = id;
     b.label = spec->label;
-    if (!spec->pam.geometry) {
+    if (!spec->plant_file.empty()) {
+      b.braid = avbdl_braid(spec->plant);   // the chamber of the physical muscle
+    } else if (!spec->pam.geometry) {
       fail(sc, spec->key + ".params", "(" + spec->params_file + ") needs a [geometry] table "
                                           "for the chamber volume");
+    } else {
+      b.braid = braid_from_initial_shape(spec->pam.geometry->length_m,
+                                         spec->pam.geometry->sleeve_diameter_m,
+                                         spec->pam.geometry->braid_angle_rad);
     }
-    b.braid = braid_from_initial_shape(spec->pam.geometry->length_m,
-                                       spec->pam.geometry->sleeve_diameter_m,
-                                       spec->pam.geometry->braid_angle_rad);
     tm->muscles.push_back(b);
   }
   if (m->nuserdata < static_cast<int>(tm->muscles.size())) {
@@ -201,6 +204,15 @@ MjDataPtr start_state(const Scenario& sc, const TrialModel& tm) {
   return data;
 }
 
+// the PAM length [m] at which the muscle's plant pulls f [N] at rest at pressure p, or -1
+double equilibrium_length(const MuscleSpec& spec, double p, double f) {
+  if (!(f > 0)) return -1.0;
+  if (!spec.plant_file.empty()) return avbdl_length_at_force(spec.plant, p, f);
+  const DeformationEstimate est = invert_spring_model(spec.pam.spring, p, f);
+  if (est.status != InversionStatus::kOk) return -1.0;
+  return natural_length(spec.pam.spring, p) + est.d_m;
+}
+
 // line lengths: fixed ones first, then at most one muscle solved for a static start
 void set_lines(const Scenario& sc, TrialModel* tm) {
   mjModel* m = tm->model.get();
@@ -216,6 +228,9 @@ void set_lines(const Scenario& sc, TrialModel* tm) {
     }
     store_pam_in_model(m, b.actuator, spec.pam.spring, b.line_length_m, static_cast<int>(k),
                        sc.model_file.c_str());
+    if (!spec.plant_file.empty()) {
+      store_plant_in_model(m, b.actuator, spec.plant, sc.model_file.c_str());
+    }
   }
   if (solved < 0) return;
 
@@ -230,14 +245,14 @@ void set_lines(const Scenario& sc, TrialModel* tm) {
   const double others = d->qfrc_actuator[dof] + d->qfrc_passive[dof];
   const double f = m->nv > 0 && moment[dof] != 0 ? (others - d->qfrc_bias[dof]) / moment[dof] : 0.0;
   const double p0 = spec.command.at(0.0);
-  const DeformationEstimate est = invert_spring_model(spec.pam.spring, p0, f);
-  if (!(f > 0) || est.status != InversionStatus::kOk) {
+  const double pam_length = equilibrium_length(spec, p0, f);
+  if (!(pam_length > 0)) {
     char buf[160];
     std::snprintf(buf, sizeof(buf), "cannot hold the start state: it needs %.4g N at %.4g MPa",
                   f, units::pa_to_mpa(p0));
     fail(sc, spec.key + ".line", std::string("= \"equilibrium\" ") + buf);
   }
-  b.line_length_m = d->actuator_length[b.actuator] - (natural_length(spec.pam.spring, p0) + est.d_m);
+  b.line_length_m = d->actuator_length[b.actuator] - pam_length;
   if (!(b.line_length_m > 0)) {
     fail(sc, spec.key + ".line", "= \"equilibrium\" gives a line <= 0: the tendon is shorter "
                                  "than the PAM it holds");
@@ -301,7 +316,7 @@ bool same_trial_model(const Scenario& a, const Scenario& b) {
     append_bits(os, sc.start_position);
     append_bits(os, sc.timestep_s);
     for (const MuscleSpec& mu : sc.muscles) {
-      os << mu.actuator << ';' << mu.label << ';' << mu.params_file << ';'
+      os << mu.actuator << ';' << mu.label << ';' << mu.params_file << ';' << mu.plant_file << ';'
          << static_cast<int>(mu.line) << ';';
       append_bits(os, mu.line_length_m);
       append_bits(os, mu.command.at(0.0));

@@ -17,6 +17,9 @@
 //                                 the physics rate
 //   muscles.<actuator>.params     PAM parameter file (models/pams/...), required for every
 //                                 PAM actuator of the model
+//   muscles.<actuator>.plant      optional: the physical muscle's file (pam_actuator/
+//                                 plant_params.h, the AVBDL law); default: the plant obeys
+//                                 the params file's spring law (plant = estimator)
 //   muscles.<actuator>.label      name in columns and metrics, default the actuator's name
 //   muscles.<actuator>.line_mm    fishing-line length; or .line = "equilibrium" (solved so
 //                                 the start state is static); default: model.calibration's

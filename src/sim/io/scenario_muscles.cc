@@ -3,6 +3,7 @@
 #include <optional>
 #include <set>
 
+#include "pam_actuator/plant_params.h"
 #include "pam_actuator/units.h"
 #include "sim/io/calibration_file.h"
 #include "sim/io/scenario_reading.h"
@@ -118,6 +119,17 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
   m.pam = in_file(in, [&] { return load_pam_params(m.params_file); });
   in.check(m.pam.strain_gauge.has_value(), params_key,
            "(" + m.params_file + ") needs a [strain_gauge] table (Eq. (8)): the sensing reads it");
+  // the physical plant, when it is not the estimator's law
+  if (in.has(m.key + ".plant")) {
+    m.plant_file = in.get_path(m.key + ".plant", "");
+    m.plant = in_file(in, [&] {
+      try {
+        return load_plant_params(m.plant_file).avbdl;
+      } catch (const InputError& e) {
+        throw InputError(m.key + ".plant: " + e.what());
+      }
+    });
+  }
   const bool legacy = params_key != m.key + ".params";
   m.label = in.get_string(m.key + ".label", legacy ? legacy_label(name) : name);
   in.check(!m.label.empty() && m.label.find_first_of(" ,\"") == std::string::npos, m.key + ".label",

@@ -1,0 +1,41 @@
+// plant_params.h: a muscle's physical plant, read from its own file (models/pams/plant_*.toml),
+// apart from the spring law its estimator inverts (pam_params.h): the simulated muscle is
+// physics, the estimator a fit to it. Today one law, AVBDL (avbdl.h, seeds/003). The file,
+// in the papers' units:
+//   name = "agonist"
+//   source = "..."                      # where the numbers come from
+//   law = "avbdl"
+//   [geometry]
+//   length_mm = 180                     # L0, unpressurised
+//   diameter_mm = 16                    # D0
+//   braid_angle_deg = 25                # alpha0, to the axis, < 54.74
+//   wall_thickness_mm = 1.0             # bladder wall, >= 0
+//   end_length_mm = 28.8                # optional: default 0.16 L0 (the DMSP-20's 32 of 200)
+//   end_slope = 2.0                     # optional: the end profile's shape a in [0, 3]
+//   [bladder]
+//   material = "natural_rubber"         # or "silicone", or the constants:
+//   C10_MPa = 0.05  C01_MPa = 0.18  C20_MPa = 0.0035
+//   [friction]                          # optional: none when absent
+//   velocity_scale_mm_s = 1.0
+//   extension = { F0_N = 0.5, A0_mm2 = 1.0, A1_mm2 = 0.0 }
+//   contraction = { F0_N = 0.5, A0_mm2 = 1.0, A1_mm2 = 0.0 }
+#pragma once
+
+#include <string>
+
+#include "pam_actuator/avbdl.h"
+
+namespace pamsim {
+
+struct PlantParams {
+  std::string name;
+  std::string source;
+  AvbdlParams avbdl;
+};
+
+// Reads and validates a plant file. Throws InputError "<path>: <key>: <problem>" for a
+// missing file, a syntax error, an unknown key, a missing or non-finite value, or
+// dimensions that cannot be (a braid angle impossible for the length, a negative friction).
+PlantParams load_plant_params(const std::string& path);
+
+}  // namespace pamsim

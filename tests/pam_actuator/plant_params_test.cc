@@ -1,0 +1,129 @@
+// plant_params_test.cc: the plant files (plant_params.h): the shipped one loads into the
+// AVBDL law with the values it states, and every bad file is one line naming the file and
+// the key: a missing file, an unknown key or law, an impossible braid angle for the
+// dimensions, a negative friction, a wall that is not a number.
+#include "pam_actuator/plant_params.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "pam_actuator/input_error.h"
+#include "pam_actuator/units.h"
+
+namespace pamsim {
+namespace {
+
+const std::string kShipped = std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_agonist.toml";
+
+std::string write_temp(const std::string& text) {
+  static int n = 0;
+  const std::string path = ::testing::TempDir() + "plant_" + std::to_string(::getpid()) + "_" +
+                           std::to_string(n++) + ".toml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+const char* kValid = R"(law = "avbdl"
+[geometry]
+length_mm = 180
+diameter_mm = 10
+braid_angle_deg = 25
+wall_thickness_mm = 2.0
+[bladder]
+C10_MPa = 0.05
+C01_MPa = 0.18
+C20_MPa = 0.0035
+[friction]
+velocity_scale_mm_s = 1.0
+extension = { F0_N = 0.5, A0_mm2 = 1.0, A1_mm2 = 0.0 }
+contraction = { F0_N = 0.4, A0_mm2 = 0.5, A1_mm2 = 2.0 }
+)";
+
+TEST(PlantParamsTest, ShippedAgonistPlantLoads) {
+  const PlantParams plant = load_plant_params(kShipped);
+  EXPECT_EQ(plant.name, "agonist plant");
+  EXPECT_FALSE(plant.source.empty());
+  EXPECT_DOUBLE_EQ(plant.avbdl.length_m, 0.180);
+  EXPECT_DOUBLE_EQ(plant.avbdl.diameter_m, 0.010);
+  EXPECT_DOUBLE_EQ(plant.avbdl.wall_thickness_m, 0.002);
+  EXPECT_NEAR(plant.avbdl.end_length_m, 0.16 * 0.180, 1e-15);
+  EXPECT_EQ(plant.avbdl.bladder.c10_pa, kNaturalRubberTreloar.c10_pa);
+  EXPECT_EQ(plant.avbdl.friction.extension.force_n, 0.0);
+  // what its source line states: free lengths at 0.2 / 0.4 / 0.6 MPa
+  EXPECT_NEAR(avbdl_free_length(plant.avbdl, 0.2e6), 0.1570, 0.0005);
+  EXPECT_NEAR(avbdl_free_length(plant.avbdl, 0.4e6), 0.1405, 0.0005);
+  EXPECT_NEAR(avbdl_free_length(plant.avbdl, 0.6e6), 0.1344, 0.0005);
+}
+
+TEST(PlantParamsTest, ExplicitConstantsAndFrictionAreRead) {
+  const PlantParams plant = load_plant_params(write_temp(kValid));
+  EXPECT_DOUBLE_EQ(plant.avbdl.bladder.c01_pa, 0.18e6);
+  EXPECT_DOUBLE_EQ(plant.avbdl.friction.contraction.strain_area_m2, 2.0e-6);
+  EXPECT_DOUBLE_EQ(plant.avbdl.friction.velocity_scale_m_per_s, 1e-3);
+}
+
+TEST(PlantParamsTest, FreeLengthAndLengthAtForceInvertTheStaticLaw) {
+  const AvbdlParams a = load_plant_params(kShipped).avbdl;
+  for (double p : {0.1e6, 0.3e6, 0.6e6}) {
+    const double lf = avbdl_free_length(a, p);
+    EXPECT_NEAR(avbdl_static_force(a, p, lf), 0.0, 1e-6) << p;
+    for (double f : {5.0, 50.0}) {
+      const double l = avbdl_length_at_force(a, p, f);
+      EXPECT_GT(l, lf);
+      EXPECT_NEAR(avbdl_static_force(a, p, l), f, 1e-6 * f) << p << " " << f;
+    }
+  }
+  EXPECT_EQ(avbdl_free_length(a, 0.0), a.length_m);
+  EXPECT_EQ(avbdl_length_at_force(a, 0.4e6, 1e7), -1.0);   // more than it can pull
+}
+
+TEST(PlantParamsTest, EveryBadFileIsOneLineNamingFileAndKey) {
+  struct Case {
+    std::string from, to, key;
+  };
+  const std::vector<Case> cases = {
+      {"law = \"avbdl\"", "law = \"mckibben\"", "law"},
+      {"braid_angle_deg = 25", "braid_angle_deg = 60", "geometry.braid_angle_deg"},
+      {"braid_angle_deg = 25", "braid_angle_deg = 0", "geometry.braid_angle_deg"},
+      {"diameter_mm = 10", "diameter_mm = -10", "geometry.diameter_mm"},
+      {"wall_thickness_mm = 2.0", "wall_thickness_mm = -1.0", "geometry.wall_thickness_mm"},
+      {"wall_thickness_mm = 2.0", "wall_thickness_mm = \"thick\"", "geometry.wall_thickness_mm"},
+      {"wall_thickness_mm = 2.0", "wall_thickness_mm = nan", "geometry.wall_thickness_mm"},
+      {"length_mm = 180", "length_mm = 180\nend_slope = 4", "geometry.end_slope"},
+      {"length_mm = 180", "length_mm = 180\nend_length_mm = 100", "geometry.end_length_mm"},
+      {"length_mm = 180", "length_mm = 180\ncolour = 1", "geometry.colour"},
+      {"C20_MPa = 0.0035", "C20_MPa = -0.1", "bladder.C20_MPa"},
+      {"C01_MPa = 0.18", "", "bladder.C01_MPa"},
+      {"F0_N = 0.5", "F0_N = -0.5", "friction.extension.F0_N"},
+      {"A1_mm2 = 2.0", "A1_mm2 = -2.0", "friction.contraction.A1_mm2"},
+      {"velocity_scale_mm_s = 1.0", "velocity_scale_mm_s = 0", "friction.velocity_scale_mm_s"},
+  };
+  for (const Case& c : cases) {
+    std::string text = kValid;
+    const auto at = text.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    text.replace(at, c.from.size(), c.to);
+    const std::string path = write_temp(text);
+    try {
+      load_plant_params(path);
+      ADD_FAILURE() << c.to << " accepted";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind(path + ": " + c.key, 0), 0u) << c.to << " -> " << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+  }
+  try {
+    load_plant_params("/nonexistent/plant.toml");
+    ADD_FAILURE() << "a missing file was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/plant.toml"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace pamsim
