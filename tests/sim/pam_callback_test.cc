@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "inline_mjcf.h"
 #include "pam_actuator/input_error.h"
@@ -103,6 +105,49 @@ TEST_F(PamCallbackTest, RejectsModelsWithoutRoomForParameters) {
   MjModelPtr small = load_inline(kSmall, "small.xml");
   ASSERT_TRUE(small);
   EXPECT_THROW(store_pam_in_model(small.get(), 0, spring_, 0.1, 0, "small.xml"), InputError);
+  // 11 slots hold the spring law, not a plant
+  try {
+    store_plant_in_model(model_.get(), 0, AvbdlParams{}, "slider.xml");
+    ADD_FAILURE() << "a plant was stored in 11 slots";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("slider.xml: <size nuser_actuator> must be >= 28"),
+              std::string::npos) << e.what();
+  }
+}
+
+// The same slider with room for a plant: the actuator force is the AVBDL law's (Eq. (25)),
+// pull only, and the plant's parameters read back exactly.
+TEST_F(PamCallbackTest, APlantActuatorPullsWithTheAvbdlLaw) {
+  std::string xml = kSliderXml;
+  xml.replace(xml.find("nuser_actuator=\"11\""), 19, "nuser_actuator=\"28\"");
+  MjModelPtr m = load_inline(xml.c_str(), "slider28.xml");
+  ASSERT_TRUE(m);
+  AvbdlParams plant = avbdl_params_from_geometry(0.18, 0.010, units::deg_to_rad(25.0), 0.002,
+                                                 kNaturalRubberTreloar);
+  plant.friction.extension.force_n = 0.5;
+  store_pam_in_model(m.get(), 0, spring_, kLineLength, 1, "slider28.xml");
+  AvbdlParams none;
+  EXPECT_FALSE(pam_plant_from_model(m.get(), 0, &none)) << "the spring law until a plant is stored";
+  store_plant_in_model(m.get(), 0, plant, "slider28.xml");
+  AvbdlParams back;
+  ASSERT_TRUE(pam_plant_from_model(m.get(), 0, &back));
+  EXPECT_EQ(back.wall_thickness_m, plant.wall_thickness_m);
+  EXPECT_EQ(back.friction.extension.force_n, 0.5);
+
+  MjDataPtr d = make_data(m.get());
+  for (double l : {0.150, 0.160, 0.170}) {
+    d->qpos[0] = l + kLineLength;
+    d->qvel[0] = 0.0;
+    d->userdata[1] = 0.4e6;
+    mj_forward(m.get(), d.get());
+    const double expected = std::max(avbdl_static_force(plant, 0.4e6, l), 0.0);
+    EXPECT_NEAR(-d->actuator_force[0], expected, 1e-9 * (1.0 + expected)) << l;
+  }
+  // shorter than its free length: slack, and the muscle rests at that free length
+  d->qpos[0] = 0.130 + kLineLength;
+  mj_forward(m.get(), d.get());
+  EXPECT_EQ(d->actuator_force[0], 0.0);
+  EXPECT_NEAR(pam_muscle_length(m.get(), d.get(), 0), avbdl_free_length(plant, 0.4e6), 1e-12);
 }
 
 }  // namespace
