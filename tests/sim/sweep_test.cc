@@ -141,6 +141,24 @@ TEST_F(SweepTest, TheDefinitionIsTheExperimentNotTheFileName) {
   EXPECT_NE(sweep_from(dir_, "seeds = 2\n" + body).canonical_json(), a.canonical_json());
 }
 
+// A database written by a pamsim whose summaries held other metrics (an older version, or
+// a base scenario whose metric sets changed) is another sweep: resuming it would mix rows.
+TEST_F(SweepTest, ResumeRefusesADatabaseWithOtherMetrics) {
+  const SweepDefinition s = sweep_from(dir_,
+      "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 60.0]\n");
+  const std::string path = (dir_ / "m.db").string();
+  { ResultsDb db = ResultsDb::create(path, s); }
+  SweepDefinition older = s;
+  older.metric_names.pop_back();
+  try {
+    ResultsDb::open_to_resume(path, older);
+    ADD_FAILURE() << "a database of other metrics was resumed";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("its metrics differs"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(ResultsDb::open_to_resume(path, s));
+}
+
 TEST_F(SweepTest, DatabaseRefusesDuplicateTrialsAndKeepsTheBatchAtomic) {
   const SweepDefinition s = sweep_from(dir_,
       "seeds = 2\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 60.0]\n");

@@ -264,7 +264,7 @@ std::string SweepDefinition::canonical_json() const {
   const nlohmann::json j = {{"base_scenario", base_text}, {"fixed", fixed},
                             {"axes", axes_json},          {"design", sweep_design_name(design)},
                             {"samples", samples},         {"design_seed", design_seed},
-                            {"seeds", seeds}};
+                            {"seeds", seeds},             {"metrics", metric_names}};
   return j.dump();
 }
 
