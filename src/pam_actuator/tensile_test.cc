@@ -62,6 +62,26 @@ void validate_tensile_options(const TensileTestOptions& o) {
 
 std::vector<TensileRow> run_tensile_test(const ForceLaw& force, const NaturalLengthLaw& l_n,
                                          const TensileTestOptions& options) {
+  return run_tensile_test(
+      [&force](double p, double d, StrokeDirection) { return force(p, d); }, l_n, options);
+}
+
+std::vector<TensileRow> run_tensile_test(const AvbdlParams& plant,
+                                         const TensileTestOptions& options) {
+  const auto l_n = [&plant](double p) { return avbdl_free_length(plant, p); };
+  const auto force = [&plant](double p, double d, StrokeDirection stroke) {
+    const double l = avbdl_free_length(plant, p) + d;
+    const StretchDirection motion = stroke == StrokeDirection::kLoading
+                                        ? StretchDirection::kExtension
+                                        : StretchDirection::kContraction;
+    return avbdl_static_force(plant, p, l) + avbdl_friction_force(plant, p, l, motion);
+  };
+  return run_tensile_test(StrokeForceLaw(force), l_n, options);
+}
+
+std::vector<TensileRow> run_tensile_test(const StrokeForceLaw& force,
+                                         const NaturalLengthLaw& l_n,
+                                         const TensileTestOptions& options) {
   validate_tensile_options(options);
   std::mt19937_64 rng(options.seed);
   std::normal_distribution<double> unit_normal(0.0, 1.0);
@@ -74,7 +94,8 @@ std::vector<TensileRow> run_tensile_test(const ForceLaw& force, const NaturalLen
     for (const auto& [d_mm, direction] : stroke(options.step_mm, options.max_deformation_mm)) {
       // true force with friction hysteresis: higher while loading, lower while unloading
       const double sign = direction == StrokeDirection::kLoading ? 1.0 : -1.0;
-      const double f = force(p_pa, units::mm_to_m(d_mm)) * (1.0 + sign * options.hysteresis);
+      const double f =
+          force(p_pa, units::mm_to_m(d_mm), direction) * (1.0 + sign * options.hysteresis);
 
       // sensors: pressure gauge, force gauge, length encoder
       TensileRow row;

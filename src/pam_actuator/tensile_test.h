@@ -9,6 +9,7 @@
 #include <functional>
 #include <vector>
 
+#include "pam_actuator/avbdl.h"
 #include "pam_actuator/spring_model.h"
 
 namespace pamsim {
@@ -43,6 +44,8 @@ void validate_tensile_options(const TensileTestOptions& options);
 
 // force [N] from gauge pressure [Pa] and deformation [m]
 using ForceLaw = std::function<double(double p_pa, double d_m)>;
+// the same on a stroke: a law with its own friction pulls harder loading than unloading
+using StrokeForceLaw = std::function<double(double p_pa, double d_m, StrokeDirection stroke)>;
 // natural length [m] from gauge pressure [Pa]
 using NaturalLengthLaw = std::function<double(double p_pa)>;
 
@@ -52,6 +55,17 @@ using NaturalLengthLaw = std::function<double(double p_pa)>;
 // two hysteresis branches balanced in a least-squares fit. Noise: one length sample per
 // point is added to both the deformation and the length (the encoder reads l).
 std::vector<TensileRow> run_tensile_test(const ForceLaw& force, const NaturalLengthLaw& l_n,
+                                         const TensileTestOptions& options);
+
+std::vector<TensileRow> run_tensile_test(const StrokeForceLaw& force,
+                                         const NaturalLengthLaw& l_n,
+                                         const TensileTestOptions& options);
+
+// The lab's test on a physical plant (avbdl.h): l_n is the plant's free length, the force
+// its static law plus its friction, lengthening while loading and shortening while
+// unloading (the `hysteresis` option multiplies on top). What `pamsim fit` then turns into
+// the estimator's spring law.
+std::vector<TensileRow> run_tensile_test(const AvbdlParams& plant,
                                          const TensileTestOptions& options);
 
 // Same with the spring model's Eq. (2) and Eq. (3)-(5).

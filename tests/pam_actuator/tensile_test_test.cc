@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <set>
+#include <vector>
 
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/tensile_csv.h"
@@ -84,6 +85,33 @@ TEST(TensileTestTest, NoiseIsDeterministicPerSeed) {
   EXPECT_EQ(differing, static_cast<int>(a.size()));
   // the pressure noise has roughly the requested standard deviation
   EXPECT_NEAR(std::sqrt(sum_sq / a.size()), 0.002, 0.0006);
+}
+
+// The lab's test on a physical plant: the set points start at the plant's free length,
+// the forces are its static law, and its friction opens a loop (loading above unloading
+// by the two strokes' friction) that is closed without it.
+TEST(TensileTestTest, OnAPlantStartsAtItsFreeLengthAndShowsItsFriction) {
+  AvbdlParams plant = avbdl_params_from_geometry(0.18, 0.010, 25.0 * M_PI / 180.0, 0.002,
+                                                 kNaturalRubberTreloar);
+  TensileTestOptions o;
+  o.pressures_mpa = {0.4, 0.6};
+  const std::vector<TensileRow> frictionless = run_tensile_test(plant, o);
+  ASSERT_EQ(frictionless.size(), 2u * 2u * 9u);
+  for (const TensileRow& r : frictionless) {
+    const double p = r.pressure_mpa * 1e6;
+    const double l_n = avbdl_free_length(plant, p);
+    EXPECT_NEAR(r.length_mm, 1e3 * l_n + r.deformation_mm, 1e-9);
+    EXPECT_NEAR(r.force_n, avbdl_static_force(plant, p, l_n + r.deformation_mm * 1e-3), 1e-9);
+  }
+  plant.friction.extension = {0.5, 2e-6, 0.0};
+  plant.friction.contraction = {0.5, 2e-6, 0.0};
+  const std::vector<TensileRow> rubbing = run_tensile_test(plant, o);
+  for (std::size_t k = 0; k < 9; ++k) {
+    const TensileRow& up = rubbing[k];
+    const TensileRow& down = rubbing[17 - k];   // the same set point on the way back
+    ASSERT_EQ(up.deformation_mm, down.deformation_mm);
+    EXPECT_NEAR(up.force_n - down.force_n, 2.0 * (0.5 + 0.4e6 * 2e-6), 1e-9) << k;
+  }
 }
 
 TEST(TensileTestTest, BadOptions) {

@@ -1,11 +1,15 @@
-// fit.cc: `pamsim fit --model eq3|eq4|eq5 TENSILE.csv [--json] [-o PARAMS.toml]`,
-// the least-squares identification of seeds/000 Sec. II-B on a tensile CSV file.
+// fit.cc: `pamsim fit --model eq3|eq4|eq5 TENSILE.csv [--json] [-o PARAMS.toml]
+// [--sensors-from PARAMS.toml]`, the least-squares identification of seeds/000 Sec. II-B on
+// a tensile CSV file. --sensors-from carries a muscle's strain-gauge calibration (Eq. (8))
+// and geometry, measured apart from the tensile test, into the written file, so that it is
+// an estimator a scenario can use.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "pam_actuator/atomic_file.h"
@@ -21,6 +25,7 @@ struct FitOptions {
   std::string model;
   std::string csv_path;
   std::string output_path;
+  std::string sensors_from;
   bool json = false;
 };
 
@@ -68,6 +73,8 @@ void run_fit(const FitOptions& o) {
   const SpringLaw law = parse_spring_law(o.model, "--model");
   const std::vector<TensileRow> rows = read_tensile_csv(o.csv_path);
   const SpringFit fit = fit_spring_model(law, rows, o.csv_path);
+  std::optional<PamParams> sensors;
+  if (!o.sensors_from.empty()) sensors = load_pam_params(o.sensors_from);
 
   // parameter file that `pamsim estimate` reads
   if (!o.output_path.empty()) {
@@ -75,6 +82,11 @@ void run_fit(const FitOptions& o) {
     params.name = "fit";
     params.source = "pamsim fit --model " + o.model + " " + o.csv_path;
     params.spring = fit.model;
+    if (sensors) {
+      params.source += " --sensors-from " + o.sensors_from;
+      params.strain_gauge = sensors->strain_gauge;
+      params.geometry = sensors->geometry;
+    }
     write_file_atomically(o.output_path, pam_params_to_toml(params));
   }
 
@@ -98,6 +110,8 @@ void add_fit_command(CLI::App& app) {
       ->required();
   cmd->add_flag("--json", o->json, "print one JSON object (paper units) on stdout");
   cmd->add_option("-o,--output", o->output_path, "write a PAM parameter file (TOML)");
+  cmd->add_option("--sensors-from", o->sensors_from,
+                  "copy [strain_gauge] and [geometry] from this PAM file into the output");
   cmd->callback([o] { run_fit(*o); });
 }
 

@@ -1,5 +1,6 @@
-// tensile.cc: `pamsim tensile --params FILE ... -o FILE.csv`, the virtual static
-// tensile test of seeds/000 Sec. II-B on a PAM parameter file, written as CSV.
+// tensile.cc: `pamsim tensile --params FILE | --plant FILE ... -o FILE.csv`, the virtual
+// static tensile test of seeds/000 Sec. II-B on a PAM parameter file's spring law or on a
+// physical plant (the lab's way to the estimator: test the muscle, then `pamsim fit`).
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include "pam_actuator/atomic_file.h"
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/pam_params.h"
+#include "pam_actuator/plant_params.h"
 #include "pam_actuator/tensile_csv.h"
 #include "pam_actuator/tensile_test.h"
 #include "sim/cli/commands.h"
@@ -19,6 +21,7 @@ namespace {
 
 struct TensileCommand {
   std::string params_path;
+  std::string plant_path;
   std::string output_path;
   TensileTestOptions test;
 };
@@ -53,8 +56,12 @@ void validate(const TensileTestOptions& t) {
 
 void run_tensile(const TensileCommand& c) {
   validate(c.test);
-  const PamParams params = load_pam_params(c.params_path);
-  const std::vector<TensileRow> rows = run_tensile_test(params.spring, c.test);
+  if (c.params_path.empty() == c.plant_path.empty()) {
+    throw InputError("tensile: give one of --params (a spring law) or --plant (a plant file)");
+  }
+  const std::vector<TensileRow> rows =
+      c.plant_path.empty() ? run_tensile_test(load_pam_params(c.params_path).spring, c.test)
+                           : run_tensile_test(load_plant_params(c.plant_path).avbdl, c.test);
   write_file_atomically(c.output_path, tensile_rows_to_csv(rows));
   std::printf("wrote %zu rows to %s\n", rows.size(), c.output_path.c_str());
 }
@@ -66,7 +73,8 @@ void add_tensile_command(CLI::App& app) {
   TensileTestOptions& t = c->test;
   CLI::App* cmd = app.add_subcommand(
       "tensile", "virtual static tensile test (seeds/000 Sec. II-B), written as CSV");
-  cmd->add_option("--params", c->params_path, "PAM parameter file (TOML)")->required();
+  cmd->add_option("--params", c->params_path, "PAM parameter file (TOML): test its spring law");
+  cmd->add_option("--plant", c->plant_path, "plant file (TOML, models/pams/plant_*.toml)");
   cmd->add_option("-o,--output", c->output_path, "output CSV file")->required();
   cmd->add_option("--seed", t.seed, "noise seed (same seed, same data)");
   cmd->add_option("--noise-pressure-MPa", t.noise_pressure_mpa, "pressure sensor noise SD");

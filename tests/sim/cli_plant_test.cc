@@ -1,0 +1,81 @@
+// cli_plant_test.cc: the lab's pipeline from a physical plant to its estimator, as a user
+// runs it: `pamsim tensile --plant` on the AVBDL plant, `pamsim fit --sensors-from` to an
+// estimator file, then the pulley with that plant and that estimator: the estimator's
+// error falls from what Table IV's law gets wrong about the plant to a fit's residual, in
+// the papers' Table III range. And the commands' bad input: one line, exit 2.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_util.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using pamsim_test::CliResult;
+using pamsim_test::fresh_dir;
+using pamsim_test::line_count;
+using pamsim_test::run_pamsim;
+
+double estimate_rmse_pct(const fs::path& out) {
+  std::ifstream in(out / "summary.json");
+  return nlohmann::json::parse(in)["length_est_rmse_pam_pct"].get<double>();
+}
+
+TEST(CliPlantTest, TensileTestThenFitGivesTheEstimatorItsTableIIIAccuracy) {
+  const fs::path dir = fresh_dir("plant_pipeline");
+  const std::string csv = (dir / "tensile.csv").string();
+  const std::string fitted = (dir / "fitted.toml").string();
+  const std::string plant = " --set 'muscles.pam.plant=\"../models/pams/plant_agonist.toml\"'";
+
+  CliResult r = run_pamsim("tensile --plant models/pams/plant_agonist.toml -o " + csv);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_pamsim("fit --model eq3 " + csv + " --sensors-from models/pams/table4_agonist.toml -o " +
+                 fitted);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  r = run_pamsim("run scenarios/pulley_sine_5kg.toml --set sim.duration_s=10" + plant +
+                 " --out " + (dir / "table4").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_pamsim("run scenarios/pulley_sine_5kg.toml --set sim.duration_s=10" + plant +
+                 " --set 'muscles.pam.params=\"" + fitted + "\"' --out " + (dir / "fit").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  const double table4 = estimate_rmse_pct(dir / "table4");
+  const double fit = estimate_rmse_pct(dir / "fit");
+  EXPECT_GT(table4, 1.7) << "Table IV's law is not this plant's";
+  EXPECT_GT(fit, 0.1) << "a fit of Eq. (3) is not the AVBDL law either";
+  EXPECT_LT(fit, 1.7) << "seeds/000 Table III: 0.35-1.7 %";
+  EXPECT_LT(fit, 0.5 * table4);
+}
+
+TEST(CliPlantTest, BadPipelineInputIsOneLineAndExit2) {
+  const fs::path dir = fresh_dir("plant_bad");
+  const std::string out = (dir / "x.csv").string();
+  for (const std::string& args : std::vector<std::string>{
+           "tensile -o " + out,
+        "tensile --params models/pams/table4_agonist.toml --plant models/pams/plant_agonist.toml"
+        " -o " + out,
+        "tensile --plant models/pams/missing.toml -o " + out,
+        "tensile --plant models/pams/table4_agonist.toml -o " + out}) {
+    const CliResult r = run_pamsim(args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
+  ASSERT_EQ(run_pamsim("tensile --plant models/pams/plant_agonist.toml -o " + out).exit_code, 0);
+  const std::string fitted = (dir / "f.toml").string();
+  const CliResult r =
+      run_pamsim("fit --model eq3 " + out + " --sensors-from models/pams/missing.toml -o " + fitted);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("missing.toml"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(fitted));
+}
+
+}  // namespace
