@@ -54,6 +54,32 @@ TEST(CliPlantTest, TensileTestThenFitGivesTheEstimatorItsTableIIIAccuracy) {
   EXPECT_LT(fit, 0.5 * table4);
 }
 
+// `calibrate` solves the arm's lines with the plants' law, so the arm rests at the start
+// angle with physical muscles as it does with the spring law.
+TEST(CliPlantTest, CalibrateWithPlantsHoldsTheArmAtItsStartAngle) {
+  const fs::path dir = fresh_dir("plant_calibrate");
+  const std::string calibration = (dir / "calibration.toml").string();
+  const std::string plants =
+      " --set 'muscles.agonist.plant=\"../models/pams/plant_agonist.toml\"'"
+      " --set 'muscles.antagonist.plant=\"../models/pams/plant_agonist.toml\"'";
+  CliResult r = run_pamsim("calibrate scenarios/drop_mass_passive.toml" + plants + " -o " +
+                           calibration);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_pamsim("run scenarios/drop_mass_passive.toml" + plants +
+                 " --set 'model.calibration=\"" + calibration + "\"' --set drop.enabled=false"
+                 " --set sim.duration_s=2 --out " + (dir / "rest").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(dir / "rest" / "summary.json");
+  const nlohmann::json s = nlohmann::json::parse(in);
+  EXPECT_NEAR(s["final_angle_deg"].get<double>(), -36.0, 0.05);
+  // and the spring-law lines would not: the plants need other lines
+  const std::string shipped = pamsim_test::read_file(std::string(PAMSIM_SOURCE_DIR) +
+                                                     "/models/arm_2pam_calibration.toml");
+  EXPECT_EQ(shipped.find("agonist_line_mm = 310.9"), std::string::npos);
+  EXPECT_NE(pamsim_test::read_file(calibration).find("agonist_line_mm = 310.9"),
+            std::string::npos);
+}
+
 TEST(CliPlantTest, BadPipelineInputIsOneLineAndExit2) {
   const fs::path dir = fresh_dir("plant_bad");
   const std::string out = (dir / "x.csv").string();

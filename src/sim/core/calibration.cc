@@ -6,6 +6,7 @@
 
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/units.h"
+#include "sim/core/muscle_law.h"
 
 namespace pamsim {
 namespace {
@@ -53,35 +54,31 @@ ArmCalibration solve_calibration(const TrialModel& tm, const Scenario& sc, const
   const double r_ago = d->actuator_moment[ago.actuator * m->nv + dof];
   const double r_anta = d->actuator_moment[anta.actuator * m->nv + dof];
 
-  // antagonist: the chosen pre-deformation, its force by Eq. (3)
-  const SpringModel& s_ago = sc.muscles[ago.spec].pam.spring;
-  const SpringModel& s_anta = sc.muscles[anta.spec].pam.spring;
+  // antagonist: the chosen pre-deformation past its plant's free length, its force by the
+  // plant's law (Eq. (3) when the plant is the spring law)
+  const MuscleSpec& m_ago = sc.muscles[ago.spec];
+  const MuscleSpec& m_anta = sc.muscles[anta.spec];
   const double p_ago = req.pressure_agonist_pa;
   const double p_anta = req.pressure_antagonist_pa;
-  const double f_anta = spring_force(s_anta, p_anta, req.antagonist_deformation_m);
+  const double l_anta = plant_free_length(m_anta, p_anta) + req.antagonist_deformation_m;
+  const double f_anta = plant_static_force(m_anta, p_anta, l_anta);
 
   // agonist: the force that balances gravity, r_ago (-f_ago) + r_anta (-f_anta) = tau_g
   const double f_ago = -(gravity_torque + r_anta * f_anta) / r_ago;
-  const DeformationEstimate est = invert_spring_model(s_ago, p_ago, f_ago);
-  if (est.status != InversionStatus::kOk) {
+  const double l_ago = plant_length_at_force(m_ago, p_ago, f_ago);
+  if (!(l_ago > 0)) {
     throw InputError("calibrate: the agonist cannot hold the arm at " +
                      num(units::rad_to_deg(req.start_angle_rad)) + " deg: it needs " +
-                     num(f_ago) + " N at " + num(units::pa_to_mpa(p_ago)) + " MPa (" +
-                     to_string(est.status) + ")");
+                     num(f_ago) + " N at " + num(units::pa_to_mpa(p_ago)) + " MPa");
   }
 
-  // line length = tendon length - PAM length, PAM length = l_n(p) + d (Eq. (1)-(2))
+  // line length = tendon length - PAM length
   ArmCalibration c;
   c.start_angle_rad = req.start_angle_rad;
   c.antagonist_deformation_m = req.antagonist_deformation_m;
   c.gravity_torque_nm = gravity_torque;
-  c.lines.push_back({sc.muscles[ago.spec].actuator,
-                     d->actuator_length[ago.actuator] - (natural_length(s_ago, p_ago) + est.d_m),
-                     p_ago});
-  c.lines.push_back({sc.muscles[anta.spec].actuator,
-                     d->actuator_length[anta.actuator] -
-                         (natural_length(s_anta, p_anta) + req.antagonist_deformation_m),
-                     p_anta});
+  c.lines.push_back({m_ago.actuator, d->actuator_length[ago.actuator] - l_ago, p_ago});
+  c.lines.push_back({m_anta.actuator, d->actuator_length[anta.actuator] - l_anta, p_anta});
   for (const CalibratedLine& line : c.lines) {
     if (!(line.line_length_m > 0)) {
       throw InputError(tm.model_path + ": the tendon is shorter than the PAM it holds; "

@@ -9,6 +9,7 @@
 
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/units.h"
+#include "sim/core/muscle_law.h"
 #include "sim/core/pam_callback.h"
 
 namespace pamsim {
@@ -204,15 +205,6 @@ MjDataPtr start_state(const Scenario& sc, const TrialModel& tm) {
   return data;
 }
 
-// the PAM length [m] at which the muscle's plant pulls f [N] at rest at pressure p, or -1
-double equilibrium_length(const MuscleSpec& spec, double p, double f) {
-  if (!(f > 0)) return -1.0;
-  if (!spec.plant_file.empty()) return avbdl_length_at_force(spec.plant, p, f);
-  const DeformationEstimate est = invert_spring_model(spec.pam.spring, p, f);
-  if (est.status != InversionStatus::kOk) return -1.0;
-  return natural_length(spec.pam.spring, p) + est.d_m;
-}
-
 // line lengths: fixed ones first, then at most one muscle solved for a static start
 void set_lines(const Scenario& sc, TrialModel* tm) {
   mjModel* m = tm->model.get();
@@ -245,7 +237,7 @@ void set_lines(const Scenario& sc, TrialModel* tm) {
   const double others = d->qfrc_actuator[dof] + d->qfrc_passive[dof];
   const double f = m->nv > 0 && moment[dof] != 0 ? (others - d->qfrc_bias[dof]) / moment[dof] : 0.0;
   const double p0 = spec.command.at(0.0);
-  const double pam_length = equilibrium_length(spec, p0, f);
+  const double pam_length = plant_length_at_force(spec, p0, f);
   if (!(pam_length > 0)) {
     char buf[160];
     std::snprintf(buf, sizeof(buf), "cannot hold the start state: it needs %.4g N at %.4g MPa",
