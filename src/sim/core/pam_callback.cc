@@ -105,6 +105,15 @@ double pam_free_length(const mjModel* m, const mjData* d, int id) {
 }
 
 double pam_muscle_length(const mjModel* m, const mjData* d, int id) {
+  // the plant's free length is a root solve: only when the line is slack (not pulling)
+  AvbdlParams plant;
+  if (pam_plant_from_model(m, id, &plant)) {
+    const double taut = pam_length(m, d, id);
+    const double p = d->userdata[pam_userdata_index(m, id)];
+    const double b = avbdl_braid(plant).fibre_length_m;
+    if (avbdl_static_force(plant, p, std::min(taut, 0.999 * b)) > 0.0) return taut;
+    return std::max(taut, avbdl_free_length(plant, p));
+  }
   return std::max(pam_length(m, d, id), pam_free_length(m, d, id));
 }
 

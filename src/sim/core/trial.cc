@@ -129,7 +129,7 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
   row_.resize(layout_.columns.size());
   pressure_pa_.resize(n_);
   command_pa_.resize(n_);
-  free_length_m_.resize(n_);
+  muscle_length_m_.resize(n_);
   held_.assign(tm.holds.size(), 1);
   fired_.assign(sc.events.size(), 0);
   event_time_s_.assign(sc.events.size(), kNaN);
@@ -156,7 +156,7 @@ void TrialRun::start_state() {
   for (std::size_t i = 0; i < n_; ++i) {
     pneumatics_.set_command(static_cast<int>(i), start_p_pa_[i]);
     d_->userdata[i] = pneumatics_.pressure_pa(static_cast<int>(i));
-    free_length_m_[i] = pam_free_length(m_, d_, tm_.muscles[i].actuator);
+    muscle_length_m_[i] = pam_muscle_length(m_, d_, tm_.muscles[i].actuator);
   }
 }
 

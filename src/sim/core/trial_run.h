@@ -82,7 +82,7 @@ class TrialRun {
   ControlOutput out_;
   std::vector<double> row_;
   std::vector<double> pressure_pa_, command_pa_;
-  std::vector<double> free_length_m_;   // per muscle, at the last physics step
+  std::vector<double> muscle_length_m_;   // per muscle, at the last physics step
   std::vector<std::array<double, 3>> hold_pos_;
   std::vector<char> held_;
   std::vector<char> fired_;

@@ -167,16 +167,16 @@ bool TrialRun::physics_step(double t) {
 
   // pneumatics over [t, t + dt] with this step's muscle length and velocity: the line's
   // while it is taut; a slack muscle rests at its free length, which moves with its
-  // pressure (its rate over the last step)
+  // pressure (the length's rate over the last step)
   try {
     for (std::size_t i = 0; i < n_; ++i) {
       const int act = tm_.muscles[i].actuator;
-      const double taut = pam_length(m_, d_, act), free = pam_free_length(m_, d_, act);
-      const bool slack = taut < free;
+      const double taut = pam_length(m_, d_, act), length = pam_muscle_length(m_, d_, act);
+      const bool slack = taut < length;
       const double velocity =
-          slack ? (free - free_length_m_[i]) / sc_.timestep_s : d_->actuator_velocity[act];
-      free_length_m_[i] = free;
-      pneumatics_.set_kinematics(static_cast<int>(i), slack ? free : taut, velocity);
+          slack ? (length - muscle_length_m_[i]) / sc_.timestep_s : d_->actuator_velocity[act];
+      muscle_length_m_[i] = length;
+      pneumatics_.set_kinematics(static_cast<int>(i), length, velocity);
     }
     pneumatics_.advance(t + sc_.timestep_s);
   } catch (const std::exception& e) {
