@@ -61,6 +61,7 @@ PneumaticOde::PneumaticOde(const PneumaticParams& params, ValveModel model,
     }
   }
   input_.resize(braid_.size());
+  plant_.resize(braid_.size());
   for (Input& in : input_) in.p_cmd_abs = params_.atmospheric_pa;
   flow_coefficient_ = params_.sonic_conductance_m3_per_s_pa * kIso6358ReferenceDensityKgM3 *
                       std::sqrt(kIso6358ReferenceTemperatureK / params_.temperature_k);
@@ -121,15 +122,21 @@ void PneumaticOde::set_kinematics(int muscle, double t0_s, double length_m,
   in.ldot = velocity_m_s;
 }
 
+void PneumaticOde::set_plant_volume(int muscle, const AvbdlParams& plant) {
+  plant_.at(static_cast<std::size_t>(muscle)) = plant;
+}
+
 double PneumaticOde::volume_m3(int muscle, double t) const {
   const Input& in = input_[muscle];
   const double l = in.l0 + in.ldot * (t - in.t0);
+  if (plant_[muscle]) return avbdl_volume(*plant_[muscle], l) + params_.tube_dead_volume_m3;
   return chou_hannaford_volume(braid_[muscle], l) + params_.tube_dead_volume_m3;
 }
 
 double PneumaticOde::volume_rate_m3_s(int muscle, double t) const {
   const Input& in = input_[muscle];
   const double l = in.l0 + in.ldot * (t - in.t0);
+  if (plant_[muscle]) return avbdl_dvolume_dlength(*plant_[muscle], l) * in.ldot;
   return chou_hannaford_dvolume_dlength(braid_[muscle], l) * in.ldot;
 }
 

@@ -11,7 +11,8 @@
 //     filling (p_reg > p): p_up = p_reg, p_down = p, air flows in;
 //     venting (p > p_reg): p_up = p, p_down = p_reg, air leaves through the relief port;
 //   chamber    dp/dt = n R T / V qm_in - n p / V dV/dt,  V = V_CH(l) + V_dead,
-//              dV/dt = dV_CH/dl * ldot   (Chou-Hannaford volume, chou_hannaford.h).
+//              dV/dt = dV_CH/dl * ldot   (Chou-Hannaford volume, chou_hannaford.h; a
+//              muscle with a physical plant uses its AVBDL volume instead).
 // kFirstOrder (one state per muscle): dp/dt = (p_cmd - p) / tau; the analytic step
 //   response is p(t) = p_cmd + (p0 - p_cmd) exp(-t / tau).
 // kRegulator (two states per muscle: the main valve's opening u in [-1, 1], and p): a
@@ -28,10 +29,12 @@
 // V(t) and dV/dt are consistent.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "pam_actuator/avbdl.h"
 #include "pam_actuator/chou_hannaford.h"
 #include "pam_actuator/pneumatic_params.h"
 
@@ -93,7 +96,10 @@ class PneumaticOde : public OdeSystem {
   // held inputs: command as absolute pressure [Pa]; kinematics at time t0_s
   void set_command_abs(int muscle, double p_cmd_abs_pa) { input_[muscle].p_cmd_abs = p_cmd_abs_pa; }
   void set_kinematics(int muscle, double t0_s, double length_m, double velocity_m_s);
-  // total gas volume V = V_CH(l(t)) + V_dead [m^3] and its rate [m^3/s] at time t
+  // a physical muscle's chamber: V(l) from the AVBDL shape (avbdl.h, seeds/003 Eq. (9)-(17))
+  // in place of Chou-Hannaford's cylinder
+  void set_plant_volume(int muscle, const AvbdlParams& plant);
+  // total gas volume V = V(l(t)) + V_dead [m^3] and its rate [m^3/s] at time t
   double volume_m3(int muscle, double t) const;
   double volume_rate_m3_s(int muscle, double t) const;
 
@@ -107,6 +113,7 @@ class PneumaticOde : public OdeSystem {
   PneumaticParams params_;
   ValveModel model_;
   std::vector<BraidGeometry> braid_;
+  std::vector<std::optional<AvbdlParams>> plant_;   // per muscle, when set_plant_volume
   std::vector<Input> input_;
   void regulator_rhs(double t, const double* y, double* ydot);
   // signed mass flow [kg/s] from a gas at p_a to one at p_b (absolute Pa) through the

@@ -92,6 +92,11 @@ void PneumaticSystem::apply_command(int muscle, double p_cmd_abs_pa) {
   if (params_.solver.on_command_change == CommandChangePolicy::kReinit) reinit_pending_ = true;
 }
 
+void PneumaticSystem::set_plant_volume(int muscle, const AvbdlParams& plant) {
+  check_muscle(muscle);
+  ode_->set_plant_volume(muscle, plant);
+}
+
 void PneumaticSystem::set_kinematics(int muscle, double length_m, double velocity_m_s) {
   check_muscle(muscle);
   if (!std::isfinite(length_m) || !std::isfinite(velocity_m_s)) {

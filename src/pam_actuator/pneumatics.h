@@ -56,6 +56,9 @@ class PneumaticSystem {
   // [0, supply]); held until changed (a control tick; a discontinuity). Throws
   // std::out_of_range for a bad muscle index, std::invalid_argument for a non-finite value.
   void set_command(int muscle, double p_cmd_gauge_pa);
+  // a physical muscle's chamber volume law (PneumaticOde::set_plant_volume); before the
+  // first advance(). Throws std::out_of_range for a bad muscle index.
+  void set_plant_volume(int muscle, const AvbdlParams& plant);
   // braided length [m] in (0, fibre length) and its rate [m/s] at the start of each physics
   // step (time_s()). Throws std::out_of_range / std::invalid_argument.
   void set_kinematics(int muscle, double length_m, double velocity_m_s);

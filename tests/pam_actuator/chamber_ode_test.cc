@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -136,6 +138,26 @@ TEST(ChamberOdeTest, RejectsBadConstruction) {
   PneumaticParams bad;
   bad.polytropic_index = 2.0;
   EXPECT_THROW(PneumaticOde(bad, ValveModel::kIso6358, {table_one_braid()}), InputError);
+}
+
+// A physical muscle's chamber is the AVBDL shape's (less than Chou-Hannaford's cylinder once
+// contracted: the end regions), and its rate follows the length's.
+TEST(ChamberOdeTest, APlantsChamberHasItsAvbdlVolume) {
+  const AvbdlParams plant = avbdl_params_from_geometry(0.18, 0.010, units::deg_to_rad(25.0),
+                                                       0.002, kNaturalRubberTreloar);
+  const PneumaticParams params;
+  PneumaticOde ode(params, ValveModel::kIso6358, {avbdl_braid(plant), avbdl_braid(plant)});
+  ode.set_plant_volume(1, plant);
+  ode.set_kinematics(0, 0.0, 0.150, -0.02);
+  ode.set_kinematics(1, 0.0, 0.150, -0.02);
+  const double dead = params.tube_dead_volume_m3;
+  EXPECT_DOUBLE_EQ(ode.volume_m3(0, 0.0), chou_hannaford_volume(avbdl_braid(plant), 0.150) + dead);
+  EXPECT_DOUBLE_EQ(ode.volume_m3(1, 0.0), avbdl_volume(plant, 0.150) + dead);
+  EXPECT_LT(ode.volume_m3(1, 0.0), ode.volume_m3(0, 0.0));
+  const double l = 0.150 + -0.02 * 0.5;   // 0.5 s later, extrapolated as the ODE does
+  EXPECT_DOUBLE_EQ(ode.volume_m3(1, 0.5), avbdl_volume(plant, l) + dead);
+  EXPECT_DOUBLE_EQ(ode.volume_rate_m3_s(1, 0.5), avbdl_dvolume_dlength(plant, l) * -0.02);
+  EXPECT_THROW(ode.set_plant_volume(2, plant), std::out_of_range);
 }
 
 }  // namespace

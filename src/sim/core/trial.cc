@@ -130,6 +130,10 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
   pressure_pa_.resize(n_);
   command_pa_.resize(n_);
   muscle_length_m_.resize(n_);
+  for (std::size_t i = 0; i < n_; ++i) {   // a physical muscle's chamber has its own shape
+    const MuscleSpec& spec = sc.muscles[tm.muscles[i].spec];
+    if (!spec.plant_file.empty()) pneumatics_.set_plant_volume(static_cast<int>(i), spec.plant);
+  }
   held_.assign(tm.holds.size(), 1);
   fired_.assign(sc.events.size(), 0);
   event_time_s_.assign(sc.events.size(), kNaN);
