@@ -157,5 +157,18 @@ TEST(ScenarioKeysTest, AShorthandSetOnTheCommandLineReplacesTheLongForm) {
             std::string::npos) << message;
 }
 
+// The keys a sweep's best.toml must rebase when it moves a scenario elsewhere.
+TEST(ScenarioKeysTest, PathKeysAreTheOnesThatNameFiles) {
+  for (const char* key : {"model.file", "model.calibration", "model.pneumatics",
+                          "model.agonist_params", "muscles.pam.params", "muscles.pam.plant",
+                          "muscles.pam.command.file"}) {
+    EXPECT_TRUE(is_scenario_path_key(key)) << key;
+  }
+  for (const char* key : {"muscles.pam.label", "muscles.pam.line", "muscles.pam.command.kind",
+                          "reflex.v_thr_mm_s", "model.joint", "muscles.plant.label"}) {
+    EXPECT_FALSE(is_scenario_path_key(key)) << key;
+  }
+}
+
 }  // namespace
 }  // namespace pamsim

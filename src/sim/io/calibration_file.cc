@@ -8,14 +8,6 @@
 #include "sim/io/config_reader.h"
 
 namespace pamsim {
-namespace {
-
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-}  // namespace
-
 ArmCalibration load_calibration(const std::string& path) {
   ConfigReader in(path);
   ArmCalibration c;

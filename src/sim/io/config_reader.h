@@ -75,6 +75,11 @@ class ConfigReader {
   std::set<std::string> overridden_;
 };
 
+// True if `s` is longer than `suffix` and ends with it (a key with a name before its suffix).
+inline bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
 // Formats a double for messages without trailing noise ("-0.2", "1e-09", "nan").
 std::string format_value(double v);
 

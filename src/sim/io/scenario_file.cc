@@ -14,9 +14,6 @@
 namespace pamsim {
 namespace {
 
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
 
 void read_time(ConfigReader& in, Scenario* sc) {
   sc->timestep_s = in.get_double("sim.timestep_s", sc->timestep_s);
@@ -227,7 +224,8 @@ bool is_scenario_path_key(const std::string& key) {
   if (key == "model.file" || key == "model.calibration" || key == "model.pneumatics") return true;
   if (key.rfind("model.", 0) == 0 && ends_with(key, "_params")) return true;
   if (key.rfind("muscles.", 0) == 0) {
-    return ends_with(key, ".params") || ends_with(key, ".command.file");
+    return ends_with(key, ".params") || ends_with(key, ".plant") ||
+           ends_with(key, ".command.file");
   }
   return false;
 }

@@ -83,7 +83,8 @@ Scenario load_scenario_for_calibration(const std::string& path,
 
 // True for the keys that hold file paths (relative to the scenario file), for tools that
 // move a scenario elsewhere (a sweep's best.toml): model.file, model.calibration,
-// model.pneumatics, model.<m>_params, muscles.<m>.params, muscles.<m>.command.file.
+// model.pneumatics, model.<m>_params, muscles.<m>.params, muscles.<m>.plant,
+// muscles.<m>.command.file.
 bool is_scenario_path_key(const std::string& key);
 
 }  // namespace pamsim

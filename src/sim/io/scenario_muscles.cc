@@ -11,10 +11,6 @@
 namespace pamsim {
 namespace {
 
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 std::string strip(const std::string& s, const std::string& prefix, const std::string& suffix) {
   return s.substr(prefix.size(), s.size() - prefix.size() - suffix.size());
 }
