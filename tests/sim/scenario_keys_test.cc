@@ -76,6 +76,7 @@ TEST(ScenarioKeysTest, MuscleAndScheduleKeysNameTheirKey) {
       {{c + "={ kind = \"table\", file = \"missing.csv\" }"}, "missing.csv"},
       {{c + "={ kind = \"sine\", offset_MPa = 0.4, amplitude_MPa = 0.1, period_s = 0 }"},
        c + ".period_s"},
+      {{c + "=0.6"}, c + " must be a table"},
       {{"muscles.agonist.label=\"a b\""}, "muscles.agonist.label"},
       {{"muscles.agonist.label=\"anta\""}, "muscles.antagonist.label"},   // repeated
       {{"muscles.agonist.line=\"loose\""}, "muscles.agonist.line"},
@@ -139,12 +140,27 @@ TEST(ScenarioKeysTest, BodyHoldAndEventKeysNameTheirKey) {
 TEST(ScenarioKeysTest, ReflexPairsNameKnownDistinctMuscles) {
   expect_each_named("drop_mass.toml", {
       {{"reflex.pairs=[[\"agonist\", \"biceps\"]]"}, "reflex.pairs"},
+      // the controller would clamp a goal above its range: refused, naming the muscle
+      {{"controller.p_max_MPa=0.3"}, "muscles.agonist.command goes up to 0.4 MPa"},
+      // a [drop] sets the ball's mass already
+      {{"bodies.ball.mass_kg=0.3"}, "bodies.ball.mass_kg sets body 'ball', already set by"},
+      {{"sensors.gauge_adc_bits=4294967308"}, "sensors.gauge_adc_bits"},
+      {{"sensors.pressure_adc_bits=-1"}, "sensors.pressure_adc_bits"},
       {{"reflex.pairs=[[\"agonist\", \"agonist\"]]"}, "reflex.pairs pairs muscle 'agonist' with itself"},
       {{"reflex.pairs=[[\"agonist\", \"antagonist\"], [\"antagonist\", \"agonist\"]]"},
        "reflex.pairs puts muscle 'antagonist' in two pairs"},
       {{"reflex.pairs=[[\"agonist\"]]"}, "reflex.pairs"},
       {{"reflex.pairs=\"agonist\""}, "reflex.pairs"},
   });
+}
+
+// A schedule must stay within the valve's command range (the regulator would clamp it):
+// the pulley rig's 0.8 MPa regulator admits its sine, a 0.7 MPa one does not.
+TEST(ScenarioKeysTest, SchedulesStayWithinTheValvesRange) {
+  EXPECT_EQ(error_of("pulley_sine_5kg.toml", {}), "");
+  const std::string message = error_of("pulley_sine_5kg.toml", {"valve.command_max_MPa=0.7"});
+  EXPECT_NE(message.find("muscles.pam.command must stay within [0, 0.7] MPa"), std::string::npos)
+      << message;
 }
 
 TEST(ScenarioKeysTest, AShorthandSetOnTheCommandLineReplacesTheLongForm) {

@@ -154,7 +154,7 @@ PressureSchedule read_schedule_csv(const std::string& path) {
   return s;
 }
 
-void validate(const PressureSchedule& s, const std::string& key, double supply_pa) {
+void validate(const PressureSchedule& s, const std::string& key, double max_pa) {
   auto fail = [&](const std::string& field, const std::string& problem) {
     throw InputError(key + (field.empty() ? "" : "." + field) + " " + problem);
   };
@@ -173,8 +173,8 @@ void validate(const PressureSchedule& s, const std::string& key, double supply_p
       if (!(s.times_s[i] > s.times_s[i - 1])) fail("times_s", "must increase strictly");
     }
   }
-  if (!(s.min_pa() >= 0.0 && s.max_pa() <= supply_pa)) {
-    fail("", "must stay within [0, " + mpa_text(supply_pa) + "] MPa (the supply), goes from " +
+  if (!(s.min_pa() >= 0.0 && s.max_pa() <= max_pa)) {
+    fail("", "must stay within [0, " + mpa_text(max_pa) + "] MPa (the valve's range), goes from " +
                  mpa_text(s.min_pa()) + " to " + mpa_text(s.max_pa()) + " MPa");
   }
 }

@@ -52,7 +52,7 @@ PressureSchedule read_schedule_csv(const std::string& path);
 
 // Throws InputError "<key>.<field> <problem>" if the schedule's own fields are inconsistent
 // (period or duration <= 0, steps times not increasing or sizes differing, non-finite
-// values), or if any value leaves [0, supply_pa].
-void validate(const PressureSchedule& schedule, const std::string& key, double supply_pa);
+// values), or if any value leaves [0, max_pa] (the valve's command range).
+void validate(const PressureSchedule& schedule, const std::string& key, double max_pa);
 
 }  // namespace pamsim

@@ -114,6 +114,9 @@ void read_bodies_and_holds(ConfigReader& in, Scenario* sc) {
     const double mass = in.get_double(key, 0.0);
     in.check(in.has(key) && mass > 0 && mass <= 1000, key,
              "must be in (0, 1000] kg, got " + format_value(mass));
+    for (const BodyMassSpec& other : sc->body_masses) {
+      in.check(other.body != body, key, "sets body '" + body + "', already set by " + other.key);
+    }
     sc->body_masses.push_back({key, body, mass});
   }
   for (const std::string& body : in.child_keys("holds")) {

@@ -81,6 +81,12 @@ void read_reflex(ConfigReader& in, Scenario* sc) {
            "must be <= the regulator's command maximum (" +
                format_value(units::pa_to_mpa(sc->pneumatics.command_max_gauge_pa)) +
                " MPa), got " + format_value(units::pa_to_mpa(sc->reflex.p_max_pa)));
+  for (const MuscleSpec& m : sc->muscles) {   // the controller would clamp them silently
+    in.check(!(m.command.max_pa() > sc->reflex.p_max_pa), m.key + ".command",
+             "goes up to " + format_value(units::pa_to_mpa(m.command.max_pa())) +
+                 " MPa, above controller.p_max_MPa = " +
+                 format_value(units::pa_to_mpa(sc->reflex.p_max_pa)));
+  }
   sc->reflex.control_hz = sc->control_hz;
   sc->reflex.muscle_count = static_cast<int>(sc->muscles.size());
   sc->reflex.pairs.clear();   // resolved by name when the model is bound (trial_model.h)
@@ -123,16 +129,24 @@ void read_reflex(ConfigReader& in, Scenario* sc) {
   });
 }
 
+// an ADC's bit count, refused before an int could wrap it into range
+int read_bits(ConfigReader& in, const std::string& key, int fallback) {
+  const std::int64_t bits = in.get_int(key, fallback);
+  in.check(bits >= 0 && bits <= 64, key, "must be 0 (no ADC) or a bit count, got " +
+                                             std::to_string(bits));
+  return static_cast<int>(bits);
+}
+
 void read_sensors(ConfigReader& in, Scenario* sc) {
   SensorConfig& s = sc->sensing.sensors;
   s.pressure_noise_mpa = in.get_double("sensors.pressure_noise_MPa", s.pressure_noise_mpa);
   s.pressure_bias_mpa = in.get_double("sensors.pressure_bias_MPa", s.pressure_bias_mpa);
-  s.pressure_adc_bits = static_cast<int>(in.get_int("sensors.pressure_adc_bits", s.pressure_adc_bits));
+  s.pressure_adc_bits = read_bits(in, "sensors.pressure_adc_bits", s.pressure_adc_bits);
   s.pressure_adc_min_v = in.get_double("sensors.pressure_adc_min_V", s.pressure_adc_min_v);
   s.pressure_adc_max_v = in.get_double("sensors.pressure_adc_max_V", s.pressure_adc_max_v);
   s.pressure_lowpass_hz = in.get_double("sensors.pressure_lowpass_hz", s.pressure_lowpass_hz);
   s.gauge_noise_v = in.get_double("sensors.gauge_noise_V", s.gauge_noise_v);
-  s.gauge_adc_bits = static_cast<int>(in.get_int("sensors.gauge_adc_bits", s.gauge_adc_bits));
+  s.gauge_adc_bits = read_bits(in, "sensors.gauge_adc_bits", s.gauge_adc_bits);
   s.gauge_adc_min_v = in.get_double("sensors.gauge_adc_min_V", s.gauge_adc_min_v);
   s.gauge_adc_max_v = in.get_double("sensors.gauge_adc_max_V", s.gauge_adc_max_v);
   s.fiber_noise_mm_s = in.get_double("sensors.fiber_noise_mm_s", s.fiber_noise_mm_s);
@@ -166,16 +180,7 @@ void read_metrics(ConfigReader& in, Scenario* sc, bool has_drop) {
     if (sc->controller == ControllerKind::kStretchReflex) defaults.push_back("reflex");
   }
   sc->metrics = in.get_string_list("metrics", defaults);
-  for (const std::string& name : sc->metrics) {
-    bool known = false;
-    for (const std::string& k : metric_set_names()) known = known || k == name;
-    in.check(known, "metrics", "names an unknown set \"" + name +
-                                   "\" (known: drop, reflex, length_estimate, tracking)");
-  }
-  if (std::find(sc->metrics.begin(), sc->metrics.end(), "drop") != sc->metrics.end()) {
-    in.check(sc->event("release") && sc->event("impact"), "metrics",
-             "\"drop\" needs events named \"release\" and \"impact\" (a [drop] table makes them)");
-  }
+  make_metric_sets(*sc);   // throws "<file>: metrics ..." for an unknown set or missing events
 }
 
 Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrides,

@@ -37,6 +37,8 @@ std::string long_or_short(ConfigReader& in, const std::string& long_key,
 }
 
 PressureSchedule read_command(ConfigReader& in, const std::string& key) {
+  in.check(in.is_table(key), key, "must be a table: { kind = \"constant\", MPa = ... } or another "
+                                  "schedule (core/schedule.h)");
   PressureSchedule s;
   const std::string kind = in.get_string(key + ".kind", "constant");
   s.kind = in_file(in, [&] { return parse_schedule_kind(kind, key + ".kind"); });
@@ -81,10 +83,6 @@ PressureSchedule read_command(ConfigReader& in, const std::string& key) {
       break;
     }
   }
-  in_file(in, [&] {
-    validate(s, key, 1.0e12);   // the supply is checked once the pneumatics are known
-    return 0;
-  });
   return s;
 }
 
@@ -139,12 +137,11 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
   } else {
     m.command.p0_pa = units::mpa_to_pa(in.get_double(command_key, 0.0));
   }
-  const double supply = sc.pneumatics.supply_gauge_pa;
-  in.check(m.command.min_pa() >= 0 && m.command.max_pa() <= supply, command_key,
-           "must stay within [0, " + format_value(units::pa_to_mpa(supply)) +
-               "] MPa (the supply), got " + format_value(units::pa_to_mpa(m.command.min_pa())) +
-               (m.command.min_pa() == m.command.max_pa()
-                    ? "" : " to " + format_value(units::pa_to_mpa(m.command.max_pa()))));
+  // within what the valve accepts (it would clamp the rest silently)
+  in_file(in, [&] {
+    validate(m.command, command_key, sc.pneumatics.command_max_gauge_pa);
+    return 0;
+  });
 
   // the line: fixed, solved, or the calibration's
   const std::string line = in.get_string(m.key + ".line", "");
