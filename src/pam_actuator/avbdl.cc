@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <sstream>
 #include <utility>
 
 #include <boost/math/tools/roots.hpp>
 
+#include "pam_actuator/format.h"
 #include "pam_actuator/input_error.h"
 
 namespace pamsim {
@@ -28,13 +28,6 @@ constexpr std::array<double, 4> kGaussNodes = {0.1834346424956498, 0.52553240991
                                                0.7966664774136267, 0.9602898564975363};
 constexpr std::array<double, 4> kGaussWeights = {0.3626837833783620, 0.3137066458778873,
                                                  0.2223810344533745, 0.1012285362903763};
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
 
 // coefficients of eta(s) = sum c[i] s^i, the normalised end profile (avbdl.h)
 std::array<double, 4> profile_coefficients(double a) {
@@ -92,7 +85,7 @@ double bladder_area(const AvbdlParams& p) {
 struct Checker {
   const std::string& prefix;
   void require(bool ok, const std::string& key, const std::string& allowed, double v) const {
-    if (!ok) throw InputError(prefix + key + " must be " + allowed + ", got " + fmt(v));
+    if (!ok) throw InputError(prefix + key + " must be " + allowed + ", got " + format_value(v));
   }
   void finite(const std::string& key, double v) const {
     require(std::isfinite(v), key, "finite", v);
@@ -140,14 +133,14 @@ void validate_avbdl_params(const AvbdlParams& p, const std::string& key_prefix) 
   check.require(p.diameter_m > 0.0, "diameter_m", "> 0 m", p.diameter_m);
   const double max_angle = std::acos(1.0 / std::sqrt(3.0));
   check.require(p.braid_angle_rad > 0.0 && p.braid_angle_rad < max_angle, "braid_angle_rad",
-                "in (0, " + fmt(max_angle) +
+                "in (0, " + format_value(max_angle) +
                     ") rad (fibre longer than L0, braid able to contract from L0)",
                 p.braid_angle_rad);
   check.require(p.wall_thickness_m >= 0.0, "wall_thickness_m", ">= 0 m", p.wall_thickness_m);
 
   // bladder material, Eq. (20)
   check.require(p.bladder.c10_pa + p.bladder.c01_pa > 0.0, "bladder.c10_pa",
-                "> -bladder.c01_pa = " + fmt(-p.bladder.c01_pa) +
+                "> -bladder.c01_pa = " + format_value(-p.bladder.c01_pa) +
                     " Pa (a positive initial shear modulus 2 (C10 + C01))",
                 p.bladder.c10_pa);
   check.non_negative("bladder.c20_pa", p.bladder.c20_pa);
@@ -155,7 +148,7 @@ void validate_avbdl_params(const AvbdlParams& p, const std::string& key_prefix) 
   // end regions: both fit in the muscle at its free-contraction length b / sqrt 3
   const double l_min = avbdl_braid(p).fibre_length_m / std::sqrt(3.0);
   check.require(p.end_length_m >= 0.0 && 2.0 * p.end_length_m < l_min, "end_length_m",
-                "in [0, " + fmt(0.5 * l_min) + ") m (half the fully contracted length)",
+                "in [0, " + format_value(0.5 * l_min) + ") m (half the fully contracted length)",
                 p.end_length_m);
   check.require(p.end_slope >= 0.0 && p.end_slope <= 3.0, "end_slope",
                 "in [0, 3] (a monotone end profile)", p.end_slope);

@@ -10,19 +10,13 @@
 
 #include <toml++/toml.h>
 
+#include "pam_actuator/format.h"
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/toml_file.h"
 #include "pam_actuator/units.h"
 
 namespace pamsim {
 namespace {
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
 
 // one numeric key: allowed interval in the file's units and the conversion to SI
 struct NumberKey {
@@ -50,8 +44,8 @@ struct Table {
 std::string interval(const NumberKey& k) {
   std::string lo = k.lo_open ? "(" : "[";
   std::string hi = k.hi_open ? ")" : "]";
-  std::string hi_value = std::isinf(k.hi) ? "inf" : fmt(k.hi);
-  return lo + fmt(k.lo) + ", " + hi_value + hi;
+  std::string hi_value = std::isinf(k.hi) ? "inf" : format_value(k.hi);
+  return lo + format_value(k.lo) + ", " + hi_value + hi;
 }
 
 void read_number(const std::string& path, const std::string& table, const NumberKey& k,
@@ -66,7 +60,7 @@ void read_number(const std::string& path, const std::string& table, const Number
   const bool ok = std::isfinite(v) && (k.lo_open ? v > k.lo : v >= k.lo) &&
                   (k.hi_open ? v < k.hi : v <= k.hi);
   if (!ok) {
-    throw InputError(where + "value " + fmt(v) + " out of range, allowed " + interval(k));
+    throw InputError(where + "value " + format_value(v) + " out of range, allowed " + interval(k));
   }
   *k.target = v * k.to_si;
 }
@@ -79,47 +73,47 @@ void validate_pneumatic_params(const PneumaticParams& p, const std::string& cont
   };
   auto finite = [](double v) { return std::isfinite(v); };
   require(finite(p.supply_gauge_pa) && p.supply_gauge_pa > 0.0,
-          "supply pressure must be > 0 Pa, got " + fmt(p.supply_gauge_pa));
+          "supply pressure must be > 0 Pa, got " + format_value(p.supply_gauge_pa));
   require(finite(p.atmospheric_pa) && p.atmospheric_pa > 0.0,
-          "atmospheric pressure must be > 0 Pa, got " + fmt(p.atmospheric_pa));
+          "atmospheric pressure must be > 0 Pa, got " + format_value(p.atmospheric_pa));
   require(finite(p.gas_constant_j_per_kg_k) && p.gas_constant_j_per_kg_k > 0.0,
-          "gas constant must be > 0, got " + fmt(p.gas_constant_j_per_kg_k));
+          "gas constant must be > 0, got " + format_value(p.gas_constant_j_per_kg_k));
   require(finite(p.temperature_k) && p.temperature_k > 0.0,
-          "temperature must be > 0 K, got " + fmt(p.temperature_k));
+          "temperature must be > 0 K, got " + format_value(p.temperature_k));
   require(p.polytropic_index >= 1.0 && p.polytropic_index <= 1.4,
-          "polytropic index must be in [1, 1.4], got " + fmt(p.polytropic_index));
+          "polytropic index must be in [1, 1.4], got " + format_value(p.polytropic_index));
   require(finite(p.sonic_conductance_m3_per_s_pa) && p.sonic_conductance_m3_per_s_pa >= 0.0,
-          "sonic conductance must be >= 0, got " + fmt(p.sonic_conductance_m3_per_s_pa));
+          "sonic conductance must be >= 0, got " + format_value(p.sonic_conductance_m3_per_s_pa));
   require(p.critical_pressure_ratio >= 0.0 && p.critical_pressure_ratio < 1.0,
-          "critical pressure ratio must be in [0, 1), got " + fmt(p.critical_pressure_ratio));
+          "critical pressure ratio must be in [0, 1), got " + format_value(p.critical_pressure_ratio));
   require(p.laminar_ratio > p.critical_pressure_ratio && p.laminar_ratio < 1.0,
-          "laminar ratio must be in (critical ratio, 1), got " + fmt(p.laminar_ratio));
+          "laminar ratio must be in (critical ratio, 1), got " + format_value(p.laminar_ratio));
   require(finite(p.regulator_time_constant_s) && p.regulator_time_constant_s > 0.0,
-          "regulator time constant must be > 0 s, got " + fmt(p.regulator_time_constant_s));
+          "regulator time constant must be > 0 s, got " + format_value(p.regulator_time_constant_s));
   require(p.command_min_gauge_pa >= 0.0 && p.command_min_gauge_pa < p.command_max_gauge_pa &&
               p.command_max_gauge_pa <= p.supply_gauge_pa,
           "command range must satisfy 0 <= min < max <= supply, got [" +
-              fmt(p.command_min_gauge_pa) + ", " + fmt(p.command_max_gauge_pa) +
-              "] Pa with supply " + fmt(p.supply_gauge_pa) + " Pa");
+              format_value(p.command_min_gauge_pa) + ", " + format_value(p.command_max_gauge_pa) +
+              "] Pa with supply " + format_value(p.supply_gauge_pa) + " Pa");
   require(finite(p.tube_dead_volume_m3) && p.tube_dead_volume_m3 >= 0.0,
-          "tube dead volume must be >= 0 m^3, got " + fmt(p.tube_dead_volume_m3));
+          "tube dead volume must be >= 0 m^3, got " + format_value(p.tube_dead_volume_m3));
   require(finite(p.first_order_time_constant_s) && p.first_order_time_constant_s > 0.0,
           "first-order time constant must be > 0 s, got " +
-              fmt(p.first_order_time_constant_s));
+              format_value(p.first_order_time_constant_s));
   require(finite(p.regulator_dead_time_s) && p.regulator_dead_time_s >= 0.0,
-          "regulator dead time must be >= 0 s, got " + fmt(p.regulator_dead_time_s));
+          "regulator dead time must be >= 0 s, got " + format_value(p.regulator_dead_time_s));
   require(finite(p.regulator_valve_time_constant_s) && p.regulator_valve_time_constant_s > 0.0,
           "regulator valve time constant must be > 0 s, got " +
-              fmt(p.regulator_valve_time_constant_s));
+              format_value(p.regulator_valve_time_constant_s));
   require(finite(p.regulator_proportional_band_pa) && p.regulator_proportional_band_pa > 0.0,
           "regulator proportional band must be > 0 Pa, got " +
-              fmt(p.regulator_proportional_band_pa));
+              format_value(p.regulator_proportional_band_pa));
   require(p.solver.relative_tolerance > 0.0 && p.solver.relative_tolerance <= 1e-2,
           "solver relative tolerance must be in (0, 1e-2], got " +
-              fmt(p.solver.relative_tolerance));
+              format_value(p.solver.relative_tolerance));
   require(finite(p.solver.absolute_tolerance_pa) && p.solver.absolute_tolerance_pa > 0.0,
           "solver absolute tolerance must be > 0 Pa, got " +
-              fmt(p.solver.absolute_tolerance_pa));
+              format_value(p.solver.absolute_tolerance_pa));
 }
 
 PneumaticParams load_pneumatic_params(const std::string& path) {

@@ -2,27 +2,17 @@
 #include "pam_actuator/tensile_csv.h"
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
+#include "pam_actuator/format.h"
 #include "pam_actuator/input_error.h"
 
 namespace pamsim {
 namespace {
 
 constexpr const char* kRequired[] = {"pressure_MPa", "deformation_mm", "force_N", "length_mm"};
-
-// shortest decimal text that reads back to the same double
-std::string format_number(double x) {
-  char buf[40];
-  for (int digits : {15, 16, 17}) {
-    std::snprintf(buf, sizeof(buf), "%.*g", digits, x);
-    if (std::strtod(buf, nullptr) == x) break;
-  }
-  return buf;
-}
 
 std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t\r");
@@ -59,8 +49,8 @@ double parse_cell(const std::string& cell, const std::string& where) {
 std::string tensile_rows_to_csv(const std::vector<TensileRow>& rows) {
   std::string out = "pressure_MPa,deformation_mm,force_N,length_mm,direction\n";
   for (const TensileRow& r : rows) {
-    out += format_number(r.pressure_mpa) + "," + format_number(r.deformation_mm) + "," +
-           format_number(r.force_n) + "," + format_number(r.length_mm) + "," +
+    out += format_shortest(r.pressure_mpa) + "," + format_shortest(r.deformation_mm) + "," +
+           format_shortest(r.force_n) + "," + format_shortest(r.length_mm) + "," +
            to_string(r.direction) + "\n";
   }
   return out;

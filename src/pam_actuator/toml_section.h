@@ -12,22 +12,10 @@
 
 #include <toml++/toml.h>
 
+#include "pam_actuator/format.h"
 #include "pam_actuator/input_error.h"
 
 namespace pamsim {
-
-// shortest decimal text that reads back to the same double
-inline std::string format_number(double x) {
-  char buf[40];
-  for (int digits : {15, 16, 17}) {
-    std::snprintf(buf, sizeof(buf), "%.*g", digits, x);
-    if (std::strtod(buf, nullptr) == x) break;
-  }
-  std::string s = buf;
-  // keep TOML floats recognisable as floats
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-  return s;
-}
 
 // one table of the file with the file name and dotted prefix for messages
 struct Section {

@@ -2,18 +2,10 @@
 #include "reflex/checks.h"
 
 #include <cmath>
-#include <sstream>
 
 #include "pam_actuator/input_error.h"
 
 namespace pamsim::checks {
-
-std::string format_value(double value) {
-  std::ostringstream os;
-  os.precision(10);
-  os << value;
-  return os.str();
-}
 
 void fail(const std::string& key, const std::string& allowed, double value) {
   throw InputError(key + " must be " + allowed + ", got " + format_value(value));

@@ -4,9 +4,10 @@
 
 #include <string>
 
+#include "pam_actuator/format.h"   // format_value: the numbers in the messages
+
 namespace pamsim::checks {
 
-std::string format_value(double value);
 [[noreturn]] void fail(const std::string& key, const std::string& allowed, double value);
 void require_finite(const std::string& key, double value);
 void require_positive(const std::string& key, double value);

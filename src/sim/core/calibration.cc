@@ -2,23 +2,13 @@
 #include "sim/core/calibration.h"
 
 #include <cmath>
-#include <cstdio>
 
+#include "pam_actuator/format.h"
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/units.h"
 #include "sim/core/muscle_law.h"
 
 namespace pamsim {
-namespace {
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.10g", v);
-  return buf;
-}
-
-}  // namespace
-
 const CalibratedLine* ArmCalibration::line(const std::string& actuator) const {
   for (const CalibratedLine& l : lines) {
     if (l.actuator == actuator) return &l;
@@ -30,14 +20,14 @@ ArmCalibration solve_calibration(const TrialModel& tm, const Scenario& sc, const
                                  const CalibrationRequest& req) {
   if (!(std::fabs(req.start_angle_rad) < units::kPi / 2)) {
     throw InputError("calibrate: --angle-deg must be within (-90, 90), got " +
-                     num(units::rad_to_deg(req.start_angle_rad)));
+                     format_value(units::rad_to_deg(req.start_angle_rad)));
   }
   if (!(req.pressure_agonist_pa >= 0 && req.pressure_antagonist_pa >= 0)) {
     throw InputError("calibrate: pressures must be >= 0 MPa");
   }
   if (!(req.antagonist_deformation_m > 0)) {
     throw InputError("calibrate: --antagonist-deformation-mm must be > 0, got " +
-                     num(units::m_to_mm(req.antagonist_deformation_m)));
+                     format_value(units::m_to_mm(req.antagonist_deformation_m)));
   }
   if (!tm.joint.hinge) throw InputError("calibrate: joint '" + tm.joint.name + "' is not a hinge");
   const mjModel* m = tm.model.get();
@@ -68,8 +58,8 @@ ArmCalibration solve_calibration(const TrialModel& tm, const Scenario& sc, const
   const double l_ago = plant_length_at_force(m_ago, p_ago, f_ago);
   if (!(l_ago > 0)) {
     throw InputError("calibrate: the agonist cannot hold the arm at " +
-                     num(units::rad_to_deg(req.start_angle_rad)) + " deg: it needs " +
-                     num(f_ago) + " N at " + num(units::pa_to_mpa(p_ago)) + " MPa");
+                     format_value(units::rad_to_deg(req.start_angle_rad)) + " deg: it needs " +
+                     format_value(f_ago) + " N at " + format_value(units::pa_to_mpa(p_ago)) + " MPa");
   }
 
   // line length = tendon length - PAM length

@@ -2,7 +2,6 @@
 #include "sim/io/config_reader.h"
 
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -21,12 +20,6 @@ std::vector<std::string> split_key(const std::string& key) {
 }
 
 }  // namespace
-
-std::string format_value(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.10g", v);
-  return buf;
-}
 
 ConfigReader::ConfigReader(const std::string& path) : name_(path) {
   doc_ = parse_toml_file(path);

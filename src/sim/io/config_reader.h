@@ -11,6 +11,8 @@
 
 #include <toml++/toml.h>
 
+#include "pam_actuator/format.h"   // format_value, for the messages
+
 namespace pamsim {
 
 class ConfigReader {
@@ -80,7 +82,5 @@ inline bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-// Formats a double for messages without trailing noise ("-0.2", "1e-09", "nan").
-std::string format_value(double v);
 
 }  // namespace pamsim

@@ -1,0 +1,17 @@
+// format.h: numbers as pamsim writes them: in messages (ten significant digits, no
+// trailing noise: "0.7", "1e-09", "nan"), and in files, where the text must read back to
+// the same double (CSV cells; TOML values, kept recognisable as floats).
+#pragma once
+
+#include <string>
+
+namespace pamsim {
+
+// "%.10g": for error messages and reports.
+std::string format_value(double v);
+// The shortest decimal text (15 to 17 digits) that reads back to exactly v.
+std::string format_shortest(double v);
+// format_shortest with ".0" appended to an integer-looking result, so TOML reads a float.
+std::string format_number(double v);
+
+}  // namespace pamsim
