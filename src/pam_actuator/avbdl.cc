@@ -19,8 +19,6 @@ namespace {
 
 constexpr double kPi = units::kPi;
 
-// DMSP-20 end region relative to its length: 32 mm of 200 mm (seeds/003 Sec. 2.2, 2.5)
-constexpr double kDmsp20EndFraction = 0.032 / 0.200;
 
 // 8-point Gauss-Legendre rule on [-1, 1] (Abramowitz & Stegun, Table 25.4): positive nodes
 // and their weights; the rule is symmetric
@@ -146,7 +144,7 @@ void validate_avbdl_params(const AvbdlParams& p, const std::string& key_prefix) 
   check.non_negative("bladder.c20_pa", p.bladder.c20_pa);
 
   // end regions: both fit in the muscle at its free-contraction length b / sqrt 3
-  const double l_min = avbdl_braid(p).fibre_length_m / std::sqrt(3.0);
+  const double l_min = avbdl_min_length(p);
   check.require(p.end_length_m >= 0.0 && 2.0 * p.end_length_m < l_min, "end_length_m",
                 "in [0, " + format_value(0.5 * l_min) + ") m (half the fully contracted length)",
                 p.end_length_m);
@@ -166,15 +164,21 @@ AvbdlParams avbdl_params_from_geometry(double length_m, double diameter_m,
   p.braid_angle_rad = braid_angle_rad;
   p.wall_thickness_m = wall_thickness_m;
   p.bladder = bladder;
-  p.end_length_m = kDmsp20EndFraction * length_m;
-  p.end_slope = AvbdlParams{}.end_slope;
-  p.friction = AvbdlFriction{};
+  p.end_length_m = kAvbdlEndFraction * length_m;   // end slope and friction: the defaults
   validate_avbdl_params(p, key_prefix);
   return p;
 }
 
 BraidGeometry avbdl_braid(const AvbdlParams& p) {
   return braid_from_initial_shape(p.length_m, p.diameter_m, p.braid_angle_rad);
+}
+
+double avbdl_min_length(const AvbdlParams& p) {
+  return avbdl_braid(p).fibre_length_m / std::sqrt(3.0);
+}
+
+double avbdl_max_length(const AvbdlParams& p) {
+  return kAvbdlMaxStretch * avbdl_braid(p).fibre_length_m;
 }
 
 double avbdl_middle_radius(const AvbdlParams& p, double length_m) {
@@ -296,8 +300,9 @@ double avbdl_static_force(const AvbdlParams& p, double p_pa, double length_m) {
 }
 
 double avbdl_free_length(const AvbdlParams& p, double p_pa) {
+  if (std::isnan(p_pa)) return p_pa;   // no length for no pressure: the trial diverges
   if (!(p_pa > 0.0)) return p.length_m;
-  const double lo = avbdl_braid(p).fibre_length_m / std::sqrt(3.0);
+  const double lo = avbdl_min_length(p);
   const auto force = [&](double l) { return avbdl_static_force(p, p_pa, l); };
   if (force(lo) >= 0.0) return lo;              // still pulling at the braid's limit
   if (force(p.length_m) <= 0.0) return p.length_m;
@@ -309,7 +314,7 @@ double avbdl_free_length(const AvbdlParams& p, double p_pa) {
 
 double avbdl_length_at_force(const AvbdlParams& p, double p_pa, double f_n) {
   const double lo = avbdl_free_length(p, p_pa);
-  const double hi = 0.999 * avbdl_braid(p).fibre_length_m;
+  const double hi = avbdl_max_length(p);
   const auto excess = [&](double l) { return avbdl_static_force(p, p_pa, l) - f_n; };
   if (!(f_n > 0.0) || excess(hi) < 0.0) return -1.0;
   if (excess(lo) >= 0.0) return lo;

@@ -130,6 +130,17 @@ AvbdlParams avbdl_params_from_geometry(double length_m, double diameter_m,
 // b and n of the braid from L0, D0, alpha0 (chou_hannaford.h).
 BraidGeometry avbdl_braid(const AvbdlParams& params);
 
+// The lengths the law holds for [m]: from the braid's full contraction b / sqrt(3) to
+// kAvbdlMaxStretch b, just short of the fibre length b at which the muscle would have to
+// break (a pamsim cap: seeds/003 does not model a muscle stretched that far).
+inline constexpr double kAvbdlMaxStretch = 0.999;
+double avbdl_min_length(const AvbdlParams& params);
+double avbdl_max_length(const AvbdlParams& params);
+
+// The DMSP-20's end regions relative to its length (32 of 200 mm, seeds/003 Sec. 2.2), the
+// default Ld = kAvbdlEndFraction L0 of any muscle (avbdl_params_from_geometry, plant files).
+inline constexpr double kAvbdlEndFraction = 0.032 / 0.200;
+
 // Radius of the straight middle part [m]: the braid's sqrt(b^2 - L^2) / (2 pi n).
 double avbdl_middle_radius(const AvbdlParams& params, double length_m);
 
@@ -155,12 +166,13 @@ double avbdl_dbladder_energy_dlength(const AvbdlParams& params, double length_m)
 double avbdl_static_force(const AvbdlParams& params, double p_pa, double length_m);
 
 // The free length [m] at gauge pressure p: where avbdl_static_force is zero, in
-// [b / sqrt(3), L0] (L0 for p <= 0; b / sqrt(3) if the pull is still positive there). A
-// slack muscle rests there. Solved by Boost.Math's TOMS 748 to ~1e-13 relative.
+// [b / sqrt(3), L0] (L0 for p <= 0; b / sqrt(3) if the pull is still positive there; NaN
+// for a NaN pressure). A slack muscle rests there. Solved by Boost.Math's TOMS 748 to
+// ~1e-13 relative.
 double avbdl_free_length(const AvbdlParams& params, double p_pa);
 
 // The length [m] at which the muscle pulls f > 0 [N] at rest at gauge pressure p, between
-// its free length and 0.999 b; -1 if it cannot pull that much below the fibre length.
+// its free length and avbdl_max_length; -1 if it cannot pull that much there.
 double avbdl_length_at_force(const AvbdlParams& params, double p_pa, double f_n);
 
 // Friction magnitude F_f >= 0 [N] for a stroke direction (see the top of this file).

@@ -123,7 +123,9 @@ void PneumaticOde::set_kinematics(int muscle, double t0_s, double length_m,
 }
 
 void PneumaticOde::set_plant_volume(int muscle, const AvbdlParams& plant) {
+  validate_avbdl_params(plant, "plant.");
   plant_.at(static_cast<std::size_t>(muscle)) = plant;
+  braid_[static_cast<std::size_t>(muscle)] = avbdl_braid(plant);   // its length limits
 }
 
 double PneumaticOde::volume_m3(int muscle, double t) const {
@@ -167,16 +169,7 @@ void PneumaticOde::rhs(double t, const double* y, double* ydot) {
     ydot[2 * i] = (input_[i].p_cmd_abs - p_reg) * inv_tau_reg;
 
     // ISO 6358 flow: in from the regulator, or out through its relief port
-    double qm_in = 0.0;
-    if (p_reg >= p) {
-      qm_in = flow_coefficient_ * p_reg *
-              iso6358_flow_function(p / p_reg, params_.critical_pressure_ratio,
-                                    params_.laminar_ratio);
-    } else {
-      qm_in = -flow_coefficient_ * p *
-              iso6358_flow_function(p_reg / p, params_.critical_pressure_ratio,
-                                    params_.laminar_ratio);
-    }
+    const double qm_in = restriction_flow(1.0, p_reg, p);
 
     // polytropic chamber with moving wall
     const double volume = volume_m3(i, t);

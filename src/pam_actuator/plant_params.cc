@@ -11,8 +11,6 @@
 namespace pamsim {
 namespace {
 
-constexpr double kMm2ToM2 = 1e-6;
-
 MooneyRivlinConstants read_bladder(const Section& bladder) {
   if (bladder.has("material")) {
     bladder.reject_unknown({"material"});
@@ -24,13 +22,13 @@ MooneyRivlinConstants read_bladder(const Section& bladder) {
   }
   bladder.reject_unknown({"C01_MPa", "C10_MPa", "C20_MPa"});
   return {units::mpa_to_pa(bladder.number("C10_MPa")), units::mpa_to_pa(bladder.number("C01_MPa")),
-          units::mpa_to_pa(bladder.number("C20_MPa"))};
+          units::mpa_to_pa(bladder.non_negative("C20_MPa", "MPa"))};
 }
 
 AvbdlFrictionCoefficients read_stroke(const Section& stroke) {
   stroke.reject_unknown({"A0_mm2", "A1_mm2", "F0_N"});
-  return {stroke.number("F0_N"), stroke.number("A0_mm2") * kMm2ToM2,
-          stroke.number("A1_mm2") * kMm2ToM2};
+  return {stroke.non_negative("F0_N", "N"), units::mm2_to_m2(stroke.non_negative("A0_mm2", "mm^2")),
+          units::mm2_to_m2(stroke.non_negative("A1_mm2", "mm^2"))};
 }
 
 AvbdlFriction read_friction(const Section& friction) {
@@ -38,7 +36,7 @@ AvbdlFriction read_friction(const Section& friction) {
   AvbdlFriction f;
   f.extension = read_stroke(friction.sub("extension"));
   f.contraction = read_stroke(friction.sub("contraction"));
-  f.velocity_scale_m_per_s = units::mm_to_m(friction.number("velocity_scale_mm_s"));
+  f.velocity_scale_m_per_s = units::mm_to_m(friction.positive("velocity_scale_mm_s", "mm/s"));
   return f;
 }
 
@@ -82,10 +80,11 @@ PlantParams load_plant_params(const std::string& path) {
   const Section geo = top.sub("geometry");
   geo.reject_unknown({"braid_angle_deg", "diameter_mm", "end_length_mm", "end_slope",
                       "length_mm", "wall_thickness_mm"});
-  const double length_m = units::mm_to_m(geo.number("length_mm"));
+  // each value in the file's units first; the law's cross checks (validate_avbdl_params) after
+  const double length_m = units::mm_to_m(geo.positive("length_mm", "mm"));
   AvbdlParams& a = plant.avbdl;
   a.length_m = length_m;
-  a.diameter_m = units::mm_to_m(geo.number("diameter_mm"));
+  a.diameter_m = units::mm_to_m(geo.positive("diameter_mm", "mm"));
   // the braid must be able to contract from L0: alpha0 below arccos(1 / sqrt(3))
   const double angle_deg = geo.number("braid_angle_deg");
   const double max_deg = units::rad_to_deg(std::acos(1.0 / std::sqrt(3.0)));
@@ -95,10 +94,12 @@ PlantParams load_plant_params(const std::string& path) {
                  format_number(angle_deg));
   }
   a.braid_angle_rad = units::deg_to_rad(angle_deg);
-  a.wall_thickness_m = units::mm_to_m(geo.number("wall_thickness_mm"));
-  a.end_length_m = geo.has("end_length_mm") ? units::mm_to_m(geo.number("end_length_mm"))
-                                            : 0.16 * length_m;   // the DMSP-20's 32 / 200
-  a.end_slope = geo.has("end_slope") ? geo.number("end_slope") : 2.0;
+  a.wall_thickness_m = units::mm_to_m(geo.non_negative("wall_thickness_mm", "mm"));
+  a.end_length_m = kAvbdlEndFraction * length_m;
+  if (geo.has("end_length_mm")) {
+    a.end_length_m = units::mm_to_m(geo.non_negative("end_length_mm", "mm"));
+  }
+  if (geo.has("end_slope")) a.end_slope = geo.number("end_slope");
   a.bladder = read_bladder(top.sub("bladder"));
   a.friction = top.has("friction") ? read_friction(top.sub("friction")) : AvbdlFriction{};
 

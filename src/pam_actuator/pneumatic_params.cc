@@ -83,13 +83,16 @@ void validate_pneumatic_params(const PneumaticParams& p, const std::string& cont
   require(p.polytropic_index >= 1.0 && p.polytropic_index <= 1.4,
           "polytropic index must be in [1, 1.4], got " + format_value(p.polytropic_index));
   require(finite(p.sonic_conductance_m3_per_s_pa) && p.sonic_conductance_m3_per_s_pa >= 0.0,
-          "sonic conductance must be >= 0, got " + format_value(p.sonic_conductance_m3_per_s_pa));
+          "sonic conductance must be >= 0, got " +
+              format_value(p.sonic_conductance_m3_per_s_pa));
   require(p.critical_pressure_ratio >= 0.0 && p.critical_pressure_ratio < 1.0,
-          "critical pressure ratio must be in [0, 1), got " + format_value(p.critical_pressure_ratio));
+          "critical pressure ratio must be in [0, 1), got " +
+              format_value(p.critical_pressure_ratio));
   require(p.laminar_ratio > p.critical_pressure_ratio && p.laminar_ratio < 1.0,
           "laminar ratio must be in (critical ratio, 1), got " + format_value(p.laminar_ratio));
   require(finite(p.regulator_time_constant_s) && p.regulator_time_constant_s > 0.0,
-          "regulator time constant must be > 0 s, got " + format_value(p.regulator_time_constant_s));
+          "regulator time constant must be > 0 s, got " +
+              format_value(p.regulator_time_constant_s));
   require(p.command_min_gauge_pa >= 0.0 && p.command_min_gauge_pa < p.command_max_gauge_pa &&
               p.command_max_gauge_pa <= p.supply_gauge_pa,
           "command range must satisfy 0 <= min < max <= supply, got [" +

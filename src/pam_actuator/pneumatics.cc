@@ -50,6 +50,7 @@ PneumaticSystem::PneumaticSystem(const PneumaticParams& params, ValveModel model
     const double p_abs = initial_gauge_pa[i] + params_.atmospheric_pa;
     y0[ode_->chamber_index(i)] = p_abs;
     if (ode_->regulator_index(i) >= 0) y0[ode_->regulator_index(i)] = p_abs;
+    if (ode_->valve_opening_index(i) >= 0) y0[ode_->valve_opening_index(i)] = 0.0;   // at rest
   }
   CvodeOptions options;
   options.method = params_.solver.method;

@@ -5,6 +5,7 @@
 #include <random>
 #include <string>
 
+#include "pam_actuator/format.h"
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/units.h"
 
@@ -68,6 +69,16 @@ std::vector<TensileRow> run_tensile_test(const ForceLaw& force, const NaturalLen
 
 std::vector<TensileRow> run_tensile_test(const AvbdlParams& plant,
                                          const TensileTestOptions& options) {
+  // every set point within the lengths the law holds for
+  validate_tensile_options(options);
+  for (double p_mpa : options.pressures_mpa) {
+    const double free_m = avbdl_free_length(plant, units::mpa_to_pa(p_mpa));
+    const double room_mm = units::m_to_mm(avbdl_max_length(plant) - free_m);
+    require(options.max_deformation_mm <= room_mm,
+            "tensile test: max_deformation_mm must be <= " + format_value(room_mm) +
+                " mm (at " + format_value(p_mpa) + " MPa the plant reaches its fibre length), got " +
+                format_value(options.max_deformation_mm));
+  }
   const auto l_n = [&plant](double p) { return avbdl_free_length(plant, p); };
   const auto force = [&plant](double p, double d, StrokeDirection stroke) {
     const double l = avbdl_free_length(plant, p) + d;

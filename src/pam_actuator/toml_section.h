@@ -58,6 +58,12 @@ struct Section {
     return v;
   }
 
+  double non_negative(const std::string& k, const std::string& unit) const {
+    const double v = number(k);
+    if (!(v >= 0.0)) fail(k, "must be >= 0 " + unit + ", got " + format_number(v));
+    return v;
+  }
+
   std::string text(const std::string& k, const std::string& fallback) const {
     const toml::node* n = table.get(k);
     if (n == nullptr) return fallback;

@@ -15,6 +15,7 @@ inline constexpr double mpa_to_pa(double p_mpa) { return p_mpa * kPaPerMPa; }
 inline constexpr double pa_to_mpa(double p_pa) { return p_pa / kPaPerMPa; }
 inline constexpr double mm_to_m(double x_mm) { return x_mm * kMPerMm; }
 inline constexpr double m_to_mm(double x_m) { return x_m / kMPerMm; }
+inline constexpr double mm2_to_m2(double a_mm2) { return a_mm2 * 1e-6; }
 inline constexpr double deg_to_rad(double a_deg) { return a_deg * kPi / 180.0; }
 inline constexpr double rad_to_deg(double a_rad) { return a_rad * 180.0 / kPi; }
 

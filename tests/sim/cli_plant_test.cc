@@ -5,6 +5,7 @@
 // the papers' Table III range. And the commands' bad input: one line, exit 2.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -21,6 +22,15 @@ using pamsim_test::CliResult;
 using pamsim_test::fresh_dir;
 using pamsim_test::line_count;
 using pamsim_test::run_pamsim;
+
+// agonist_line_mm of a calibration file `pamsim calibrate` wrote
+double agonist_line_mm(const std::string& path) {
+  const std::string text = pamsim_test::read_file(path);
+  const std::string key = "\nagonist_line_mm = ";
+  const auto at = text.find(key);
+  EXPECT_NE(at, std::string::npos) << path;
+  return at == std::string::npos ? NAN : std::stod(text.substr(at + key.size()));
+}
 
 double estimate_rmse_pct(const fs::path& out) {
   std::ifstream in(out / "summary.json");
@@ -73,11 +83,9 @@ TEST(CliPlantTest, CalibrateWithPlantsHoldsTheArmAtItsStartAngle) {
   const nlohmann::json s = nlohmann::json::parse(in);
   EXPECT_NEAR(s["final_angle_deg"].get<double>(), -36.0, 0.05);
   // and the spring-law lines would not: the plants need other lines
-  const std::string shipped = pamsim_test::read_file(std::string(PAMSIM_SOURCE_DIR) +
-                                                     "/models/arm_2pam_calibration.toml");
-  EXPECT_EQ(shipped.find("agonist_line_mm = 310.9"), std::string::npos);
-  EXPECT_NE(pamsim_test::read_file(calibration).find("agonist_line_mm = 310.9"),
-            std::string::npos);
+  const std::string spring = (dir / "spring.toml").string();
+  ASSERT_EQ(run_pamsim("calibrate scenarios/drop_mass_passive.toml -o " + spring).exit_code, 0);
+  EXPECT_GT(std::fabs(agonist_line_mm(calibration) - agonist_line_mm(spring)), 1.0);
 }
 
 TEST(CliPlantTest, BadPipelineInputIsOneLineAndExit2) {
@@ -88,7 +96,9 @@ TEST(CliPlantTest, BadPipelineInputIsOneLineAndExit2) {
         "tensile --params models/pams/table4_agonist.toml --plant models/pams/plant_agonist.toml"
         " -o " + out,
         "tensile --plant models/pams/missing.toml -o " + out,
-        "tensile --plant models/pams/table4_agonist.toml -o " + out}) {
+        "tensile --plant models/pams/table4_agonist.toml -o " + out,
+        // beyond the plant's fibre length: refused, not NaN rows
+        "tensile --plant models/pams/plant_agonist.toml --max-deformation-mm 60 -o " + out}) {
     const CliResult r = run_pamsim(args);
     EXPECT_EQ(r.exit_code, 2) << args;
     EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
@@ -102,6 +112,20 @@ TEST(CliPlantTest, BadPipelineInputIsOneLineAndExit2) {
   EXPECT_EQ(line_count(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("missing.toml"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(fitted));
+  // a sensors file without the gauge calibration, or nowhere to write it: refused
+  const std::string no_gauge = (dir / "no_gauge.toml").string();
+  pamsim_test::write_text(no_gauge, "name = \"x\"\n[spring]\nlaw = \"eq3\"\nunits = { pressure = "
+                                    "\"MPa\", length = \"mm\", force = \"N\" }\nm = -60.0\n"
+                                    "h = 170.0\na0 = 1.0\na1 = 0.0\na2 = 7.0\na3 = 0.0\n");
+  for (const std::string& args :
+       {"fit --model eq3 " + out + " --sensors-from " + no_gauge + " -o " + fitted,
+        "fit --model eq3 " + out + " --sensors-from models/pams/table4_agonist.toml"}) {
+    const CliResult bad = run_pamsim(args);
+    EXPECT_EQ(bad.exit_code, 2) << args;
+    EXPECT_EQ(line_count(bad.err), 1) << args << ": " << bad.err;
+    EXPECT_NE(bad.err.find("--sensors-from"), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(fitted));
+  }
 }
 
 }  // namespace

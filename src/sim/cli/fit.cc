@@ -14,6 +14,7 @@
 
 #include "pam_actuator/atomic_file.h"
 #include "pam_actuator/identification.h"
+#include "pam_actuator/input_error.h"
 #include "pam_actuator/pam_params.h"
 #include "pam_actuator/tensile_csv.h"
 #include "sim/cli/commands.h"
@@ -74,7 +75,13 @@ void run_fit(const FitOptions& o) {
   const std::vector<TensileRow> rows = read_tensile_csv(o.csv_path);
   const SpringFit fit = fit_spring_model(law, rows, o.csv_path);
   std::optional<PamParams> sensors;
-  if (!o.sensors_from.empty()) sensors = load_pam_params(o.sensors_from);
+  if (!o.sensors_from.empty()) {
+    if (o.output_path.empty()) throw InputError("fit: --sensors-from needs -o (a file to write)");
+    sensors = load_pam_params(o.sensors_from);
+    if (!sensors->strain_gauge) {
+      throw InputError(o.sensors_from + ": --sensors-from needs a [strain_gauge] table (Eq. (8))");
+    }
+  }
 
   // parameter file that `pamsim estimate` reads
   if (!o.output_path.empty()) {

@@ -59,7 +59,8 @@ ArmCalibration solve_calibration(const TrialModel& tm, const Scenario& sc, const
   if (!(l_ago > 0)) {
     throw InputError("calibrate: the agonist cannot hold the arm at " +
                      format_value(units::rad_to_deg(req.start_angle_rad)) + " deg: it needs " +
-                     format_value(f_ago) + " N at " + format_value(units::pa_to_mpa(p_ago)) + " MPa");
+                     format_value(f_ago) + " N at " + format_value(units::pa_to_mpa(p_ago)) +
+                     " MPa");
   }
 
   // line length = tendon length - PAM length

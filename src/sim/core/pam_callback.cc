@@ -110,11 +110,11 @@ double pam_muscle_length(const mjModel* m, const mjData* d, int id) {
   if (pam_plant_from_model(m, id, &plant)) {
     const double taut = pam_length(m, d, id);
     const double p = d->userdata[pam_userdata_index(m, id)];
-    const double b = avbdl_braid(plant).fibre_length_m;
-    if (avbdl_static_force(plant, p, std::min(taut, 0.999 * b)) > 0.0) return taut;
+    if (avbdl_static_force(plant, p, std::min(taut, avbdl_max_length(plant))) > 0.0) return taut;
     return std::max(taut, avbdl_free_length(plant, p));
   }
-  return std::max(pam_length(m, d, id), pam_free_length(m, d, id));
+  const double p = d->userdata[pam_userdata_index(m, id)];
+  return std::max(pam_length(m, d, id), natural_length(pam_spring_from_model(m, id), p));
 }
 
 mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int id) {
@@ -124,11 +124,10 @@ mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int id) {
   // the physical plant: seeds/003 Eq. (25) with friction at the tendon's rate; pull only
   AvbdlParams plant;
   if (pam_plant_from_model(m, id, &plant)) {
-    // a slack muscle contracts to its free length and pulls nothing; the law holds below
-    // the fibre length b (a muscle stretched to b would have to break)
-    const double b = avbdl_braid(plant).fibre_length_m;
-    const double l = std::min(pam_length(m, d, id), 0.999 * b);
-    if (l <= avbdl_braid(plant).fibre_length_m / std::sqrt(3.0)) return 0.0;
+    // a slack muscle contracts to its free length and pulls nothing; the law holds up to
+    // avbdl_max_length (a muscle stretched to its fibre length would have to break)
+    const double l = std::min(pam_length(m, d, id), avbdl_max_length(plant));
+    if (l <= avbdl_min_length(plant)) return 0.0;
     return -std::max(avbdl_force(plant, p, l, d->actuator_velocity[id]), 0.0);
   }
 
