@@ -3,6 +3,7 @@
 #include "reflex/stretch_reflex_controller.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -72,6 +73,14 @@ void validate(const StretchReflexControllerConfig& config) {
   }
   require_cutoff("reflex.lowpass_hz", reflex.lowpass_hz, config.control_hz);
   require_non_negative("reflex.refractory_s", reflex.refractory_s);
+  // both are counted in int control ticks (stretch_reflex.cc): a bound far below INT_MAX
+  const double max_ticks_s = 1e9 * dt;
+  for (const auto& [key, value] : {std::pair{"reflex.duration_s", reflex.duration_s},
+                                   std::pair{"reflex.refractory_s", reflex.refractory_s}}) {
+    if (!(value <= max_ticks_s)) {
+      fail(key, "at most " + format_value(max_ticks_s) + " s (1e9 control periods)", value);
+    }
+  }
   require_non_negative("reflex.arm_after_s", reflex.arm_after_s);
   require_non_negative("reflex.min_tension_N", reflex.min_tension_n);
 
@@ -111,10 +120,11 @@ StretchReflexController::StretchReflexController(const StretchReflexControllerCo
 }
 
 void StretchReflexController::update(const ControlInput& in, ControlOutput* out) {
+  assert(in.readings && in.p_tp_pa && in.readings->size() == reflexes_.size() &&
+         in.p_tp_pa->size() == reflexes_.size() && out->p_cmd_pa.size() == reflexes_.size());
   const std::vector<MuscleReading>& readings = *in.readings;
   const std::vector<double>& p_tp = *in.p_tp_pa;
   const ReflexConfig& rc = config_.reflex;
-  const bool run_reflexes = rc.enabled && in.enabled;
   for (std::size_t j = 0; j < reflexes_.size(); ++j) was_active_[j] = reflexes_[j].active();
 
   for (std::size_t j = 0; j < reflexes_.size(); ++j) {
@@ -128,16 +138,16 @@ void StretchReflexController::update(const ControlInput& in, ControlOutput* out)
     // this muscle's reflex, Eq. (14), behind the tension and reciprocal gates; while the
     // controller is switched off its windows and refractory time run out without acting
     const int partner = partner_[j];
-    if (rc.enabled && !in.enabled && partner >= 0) reflexes_[j].update(in.time_s, v, false);
-    if (run_reflexes && partner >= 0) {
-      const bool loaded = rc.min_tension_n <= 0.0 || r.force_meas_n >= rc.min_tension_n;
-      const bool other_quiet = !(rc.reciprocal_trigger_inhibition && was_active_[partner]);
-      const std::size_t before = reflexes_[j].trigger_times_s().size();
-      dp_pa_[j] = reflexes_[j].update(in.time_s, v, loaded && other_quiet);
-      out->reflex_active[j] = reflexes_[j].active() ? 1 : 0;
-      if (reflexes_[j].trigger_times_s().size() != before) {
-        trigger_times_s_[j].push_back(reflexes_[j].trigger_times_s().back());
-      }
+    if (!rc.enabled || partner < 0) continue;
+    const bool loaded = rc.min_tension_n <= 0.0 || r.force_meas_n >= rc.min_tension_n;
+    const bool other_quiet = !(rc.reciprocal_trigger_inhibition && was_active_[partner]);
+    const std::size_t before = reflexes_[j].trigger_times_s().size();
+    const double dp = reflexes_[j].update(in.time_s, v, in.enabled && loaded && other_quiet);
+    if (!in.enabled) continue;
+    dp_pa_[j] = dp;
+    out->reflex_active[j] = reflexes_[j].active() ? 1 : 0;
+    if (reflexes_[j].trigger_times_s().size() != before) {
+      trigger_times_s_[j].push_back(reflexes_[j].trigger_times_s().back());
     }
   }
 

@@ -468,12 +468,51 @@ TEST(StretchReflexController, ReciprocalTriggerGateActsWithinAPairOnly) {
   }
 }
 
+// A window open when an event switches the controller off runs out on time: off for ticks
+// 105-109 of the 20-tick window that opened at tick 101, it closes after tick 120 as it
+// would have (not 5 ticks later), and acts only while the controller is on.
+TEST(StretchReflexController, AWindowRunsOutWhileTheControllerIsOff) {
+  Harness h{Rig{}};
+  for (int j = 0; j < 140; ++j) {
+    stretch_at(&h, j, 101, 0, 1);
+    h.tick(!(j >= 105 && j < 110));
+  }
+  ASSERT_EQ(h.controller.trigger_count(0), 1);
+  for (int j = 101; j < 140; ++j) {
+    const int expected = (j < 105 || (j >= 110 && j <= 120)) ? 1 : 0;
+    EXPECT_EQ(h.outputs[j].reflex_active[0], expected) << "tick " << j;
+  }
+  EXPECT_EQ(h.outputs[107].p_cmd_pa[0], 0.4e6) << "off: the schedule";
+}
+
+// reflex.min_tension_N = 0 switches the tension gate off: a slack line's reading (a gauge
+// that reads slightly negative) may trigger; with the 1 N gate it may not.
+TEST(StretchReflexController, ZeroMinimumTensionLetsASlackLineTrigger) {
+  for (double min_tension : {0.0, 1.0}) {
+    StretchReflexControllerConfig config;
+    config.reflex.min_tension_n = min_tension;
+    StretchReflexController controller(config);
+    std::vector<MuscleReading> readings(2);
+    readings[0].force_meas_n = -0.3;
+    readings[0].velocity_est_m_s = 0.2;   // well above 70 mm/s
+    readings[1].force_meas_n = 20.0;
+    std::vector<double> p_tp = {0.4e6, 0.4e6};
+    ControlInput in;
+    in.time_s = 1.0;
+    in.readings = &readings;
+    in.p_tp_pa = &p_tp;
+    ControlOutput out;
+    out.resize(2);
+    controller.update(in, &out);
+    EXPECT_EQ(controller.trigger_count(0), min_tension == 0.0 ? 1 : 0) << min_tension;
+  }
+}
+
 TEST(StretchReflexController, TriggerTimesPerMuscleAndTheEarliest) {
   // pairs {0, 2} and {1, 3}: muscle 1 fires at 0.51 s, muscle 0 at 1.01 s and again at
   // 1.81 s (after its 0.2 s window and 0.5 s refractory period)
   Harness h(two_pairs());
   const Controller& as_controller = h.controller;
-  ASSERT_EQ(as_controller.trigger_times_s(), h.controller.trigger_times_s());
   ASSERT_NE(as_controller.trigger_times_s(), nullptr);
   for (int j = 0; j < 200; ++j) {
     stretch_at(&h, j, 51, 1);
@@ -526,6 +565,8 @@ std::vector<BadValue> bad_values() {
       {"reflex.lowpass_hz", "nan", [](C c) { c.reflex.lowpass_hz = kNaN; }},
       {"reflex.refractory_s", "-0.1", [](C c) { c.reflex.refractory_s = -0.1; }},
       {"reflex.refractory_s", "nan", [](C c) { c.reflex.refractory_s = kNaN; }},
+      {"reflex.refractory_s", "1e+10", [](C c) { c.reflex.refractory_s = 1e10; }},
+      {"reflex.duration_s", "1e+10", [](C c) { c.reflex.duration_s = 1e10; }},
       {"reflex.arm_after_s", "-1", [](C c) { c.reflex.arm_after_s = -1.0; }},
       {"reflex.arm_after_s", "nan", [](C c) { c.reflex.arm_after_s = kNaN; }},
       {"reflex.min_tension_N", "-1", [](C c) { c.reflex.min_tension_n = -1.0; }},
