@@ -308,6 +308,21 @@ TEST(ExperimentTest, ControllerOffBeforeTheImpactKeepsTheReflexSilent) {
 
 // --- the drop, long form and shorthand --------------------------------------------------
 
+// pamsim 0.1 always had the drop, with its defaults (0.2 kg, 14 cm, at 1 s) when a file gave
+// no [drop] table: such a file still runs the same trial.
+TEST(ExperimentTest, APamsim01FileWithoutADropTableStillDrops) {
+  std::string text = pamsim_test::read_file(kScenarios + "drop_mass.toml");
+  const std::string table = "[drop]\nmass_kg = 0.2\nheight_m = 0.14\ntime_s = 1.0\n";
+  const auto at = text.find(table);
+  ASSERT_NE(at, std::string::npos) << "drop_mass.toml's [drop] table changed";
+  text.erase(at, table.size());
+  const TrialResult without = run_text(text);
+  const TrialResult with = run_file("drop_mass.toml");
+  ASSERT_EQ(without.summary.status, "ok") << without.summary.message;
+  EXPECT_TRUE(bit_identical(without.trajectory, with.trajectory));
+  EXPECT_EQ(without.summary.metric("impact_time_s"), with.summary.metric("impact_time_s"));
+}
+
 TEST(ExperimentTest, DropInTheLongFormIsTheShorthandsTrialBitForBit) {
   const std::string long_form = R"(
 seed = 1

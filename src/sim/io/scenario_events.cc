@@ -67,8 +67,8 @@ ConditionSpec read_condition(ConfigReader& in, const std::string& key, const Sce
 
 }  // namespace
 
-void read_drop(ConfigReader& in, Scenario* sc) {
-  if (!in.is_table("drop")) return;
+void read_drop(ConfigReader& in, Scenario* sc, bool implied) {
+  if (!in.is_table("drop") && !implied) return;
   const bool enabled = in.get_bool("drop.enabled", true);
   const double mass_kg = in.get_double("drop.mass_kg", 0.2);
   in.check(mass_kg > 0 && mass_kg <= 10, "drop.mass_kg",

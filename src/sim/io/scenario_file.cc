@@ -195,8 +195,14 @@ Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrid
   read_time(in, &sc);
   read_model(in, &sc);
   read_muscles(in, &sc, lines_needed);
-  const bool has_drop = in.is_table("drop");
-  read_drop(in, &sc);
+  // a pamsim 0.1 file (muscles by model.<m>_params, no holds or events) always had the drop,
+  // with its defaults when it gave no [drop] table
+  bool pamsim01 = !in.is_table("holds") && !in.is_table("events");
+  bool shorthand_params = false;
+  for (const std::string& k : in.child_keys("model")) shorthand_params |= ends_with(k, "_params");
+  pamsim01 = pamsim01 && shorthand_params;
+  const bool has_drop = in.is_table("drop") || pamsim01;
+  read_drop(in, &sc, pamsim01);
   read_bodies_and_holds(in, &sc);
   read_events(in, &sc);
   read_controller(in, &sc);

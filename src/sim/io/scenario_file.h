@@ -53,7 +53,9 @@
 //   drop.{enabled, mass_kg, height_m, time_s} (and body = "ball", basket = "basket",
 //     site = "basket_floor"): the falling mass: bodies.<body>.mass_kg, a hold of the body
 //     height_m above the site, events "release" (at time_s, if enabled) and "impact" (the
-//     body touches the basket, after the release)
+//     body touches the basket, after the release); a pamsim 0.1 file (muscles given by
+//     model.<actuator>_params, no holds or events) without a [drop] table gets the drop
+//     with these defaults, as it did
 //   model.<actuator>_params = muscles.<actuator>.params (the agonist and antagonist of
 //     these files are labelled "ago" and "anta", as before)
 //   pressure.<actuator>_MPa = a constant muscles.<actuator>.command

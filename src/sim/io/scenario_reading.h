@@ -8,7 +8,8 @@
 namespace pamsim {
 
 // drop.*, bodies.*, holds.*, events.* (scenario_events.cc)
-void read_drop(ConfigReader& in, Scenario* sc);
+// `implied`: read the drop's defaults even without a [drop] table (a pamsim 0.1 file).
+void read_drop(ConfigReader& in, Scenario* sc, bool implied);
 void read_bodies_and_holds(ConfigReader& in, Scenario* sc);
 void read_events(ConfigReader& in, Scenario* sc);
 
