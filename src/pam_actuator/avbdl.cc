@@ -73,7 +73,10 @@ double integrate_unit_interval(const F& f) {
   return 0.5 * sum;
 }
 
-// reference (unstrained) bladder volume per unit length: an annulus of inner radius R0
+// reference (unstrained) bladder volume per unit length: an annulus from R0 out to R0 + t.
+// A reading of Eq. (24), which multiplies by "the bladder volume" without placing the wall;
+// a bladder inside the braid (R0 - t to R0) would hold (2 R0 - t) / (2 R0 + t) of this
+// rubber, two thirds for plant_agonist.toml (README, departures)
 double bladder_area(const AvbdlParams& p) {
   const double r0 = 0.5 * p.diameter_m;
   return kPi * p.wall_thickness_m * (2.0 * r0 + p.wall_thickness_m);

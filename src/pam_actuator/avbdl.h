@@ -103,7 +103,7 @@ struct AvbdlParams {
   double length_m = 0.200;                              // L0 at p = 0, > 0
   double diameter_m = 0.020;                            // D0 = 2 R0, > 0
   double braid_angle_rad = units::deg_to_rad(25.0);     // alpha0, in (0, 54.74 deg)
-  double wall_thickness_m = 0.002;                      // t >= 0; 0: no bladder loss
+  double wall_thickness_m = 0.002;                      // t >= 0 (R0 to R0 + t); 0: no loss
   MooneyRivlinConstants bladder = kNaturalRubberTreloar;
   double end_length_m = 0.032;                          // Ld >= 0; 0: no end regions
   double end_slope = 2.0;                               // a in [0, 3]; 2: parabolic shoulder
