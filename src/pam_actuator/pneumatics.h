@@ -68,7 +68,8 @@ class PneumaticSystem {
   double time_s() const;
   double pressure_pa(int muscle) const;            // chamber gauge pressure at time_s()
   double regulator_pressure_pa(int muscle) const;  // gauge; the chamber model's source
-                                                   // (first_order: the command)
+                                                   // (first_order, regulator: the command
+                                                   // as issued, before any dead time)
   double command_pa(int muscle) const;             // gauge, after clamping
 
   // solver statistics for the benchmark note (cumulative)

@@ -55,6 +55,19 @@ TEST(RegulatorTest, CommandArrivesExactlyOneDeadTimeLate) {
   }
 }
 
+// A dead time that ends inside a physics step splits the step there: at rest up to 2 ms,
+// already moving at 3 ms, with either solver policy at a command change.
+TEST(RegulatorTest, ADeadTimeInsideAStepTakesEffectThere) {
+  for (CommandChangePolicy policy : {CommandChangePolicy::kReinit, CommandChangePolicy::kWarm}) {
+    PneumaticParams params;
+    params.regulator_dead_time_s = 2.5e-3;
+    params.solver.on_command_change = policy;
+    const std::vector<double> p = step_response(params, 0.4e6, 0.5e6, 5);
+    EXPECT_EQ(p[1], 0.4e6) << "t = 2 ms";
+    EXPECT_GT(p[2], 0.4e6) << "t = 3 ms";
+  }
+}
+
 // 10-90 % rise time [s] of a 0.4 -> 0.5 MPa step
 double rise_time(const PneumaticParams& params) {
   const std::vector<double> p = step_response(params, 0.4e6, 0.5e6, 300);
