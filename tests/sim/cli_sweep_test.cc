@@ -237,6 +237,9 @@ TEST(CliSweepTest, BadSweepFilesFailWithOneLineAndNoDatabase) {
       {"unknown_scenario_key", short_sweep("[[axis]]\nkey = \"reflex.v_thr\"\nvalues = [50.0]\n"),
        "reflex.v_thr"},
       {"missing_base", "base = \"nowhere.toml\"\n" + axis, "nowhere.toml"},
+      // a point that does not bind to its model (caught before the run, not as failed rows)
+      {"point_unbound", short_sweep("[[axis]]\nkey = \"model.joint\"\n"
+                                    "values = [\"shoulder\", \"elbow\"]\n"), "point 1"},
   };
   for (const Case& c : cases) {
     const fs::path file = dir / (std::string(c.name) + ".toml");

@@ -322,27 +322,31 @@ SweepDefinition load_sweep(const std::string& path) {
   in.reject_unknown();
   make_points(&def);
 
-  // the base scenario (with its model bound), then every point, must validate before
-  // anything runs; every point must summarise its trials in the same metrics (the columns)
-  Scenario base;
-  try {
-    base = load_scenario_text(def.base_text, def.base_path, def.fixed);
-    const TrialModel model = load_trial_model(base);
+  // the base scenario, then every point, must validate and bind to its model before anything
+  // runs (a model is loaded again only where a point changes it); every point must
+  // summarise its trials in the same metrics (the columns)
+  Scenario bound;
+  TrialModel model;
+  const auto names_of = [&](const Scenario& sc) {
+    if (&sc == &bound || !same_trial_model(sc, bound)) {
+      model = load_trial_model(sc);
+      bound = sc;
+    }
     std::vector<std::string> labels;
     for (const BoundMuscle& m : model.muscles) labels.push_back(m.label);
-    def.metric_names = metric_names(base, labels, model.joint.hinge);
+    return metric_names(sc, labels, model.joint.hinge);
+  };
+  try {
+    bound = load_scenario_text(def.base_text, def.base_path, def.fixed);
+    def.metric_names = names_of(bound);
   } catch (const InputError& e) {
     throw InputError(path + ": base scenario: " + e.what());
   }
-  def.base_seed = base.seed;
+  def.base_seed = bound.seed;
   for (std::int64_t p = 0; p < def.points(); ++p) {
     try {
       const Scenario point = load_scenario_text(def.base_text, def.base_path, def.overrides(p));
-      bool same_metrics = point.metrics == base.metrics && point.muscles.size() == base.muscles.size();
-      for (std::size_t k = 0; same_metrics && k < point.muscles.size(); ++k) {
-        same_metrics = point.muscles[k].label == base.muscles[k].label;
-      }
-      if (!same_metrics) {
+      if (names_of(point) != def.metric_names) {
         throw InputError("changes the metrics or the muscles' labels, which a sweep's columns "
                          "cannot follow");
       }
