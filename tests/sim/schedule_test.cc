@@ -155,6 +155,17 @@ TEST_F(ScheduleCsvTest, EveryMalformedFileIsOneLineNamingFileAndLine) {
     EXPECT_NE(message.find(c.expected), std::string::npos) << c.text << " -> " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   }
+  // a file far larger than any schedule (sparse: no disk is spent) is refused before reading
+  const auto huge = dir_ / "huge.csv";
+  pamsim_test::write_text(huge, "time_s,MPa\n");
+  std::filesystem::resize_file(huge, 65u << 20);
+  try {
+    read_schedule_csv(huge.string());
+    ADD_FAILURE() << "a 65 MiB file was read as a schedule";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("huge.csv: larger than 64 MiB"), std::string::npos);
+  }
+  std::filesystem::remove(huge);
   try {
     read_schedule_csv((dir_ / "missing.csv").string());
     ADD_FAILURE() << "a missing file was read";

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
 #include <cstdio>
 #include <fstream>
 
@@ -111,6 +113,12 @@ double PressureSchedule::max_pa() const {
 PressureSchedule read_schedule_csv(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the schedule file");
+  // a schedule is a few thousand points; anything near this is not one (or would eat memory)
+  constexpr std::uintmax_t kMaxBytes = 64u << 20;
+  std::error_code size_error;
+  if (std::filesystem::file_size(path, size_error) > kMaxBytes && !size_error) {
+    throw InputError(path + ": larger than 64 MiB, not a schedule");
+  }
   PressureSchedule s;
   s.kind = ScheduleKind::kTable;
   s.source = path;

@@ -39,7 +39,7 @@ std::string calibration_to_toml(const ArmCalibration& c, const std::string& prov
       << "# arm at rest at start_angle_deg with both PAMs at the given pressures and the\n"
       << "# antagonist stretched by antagonist_deformation_mm (a design choice: a small\n"
       << "# pre-tension so neither line is slack at the start). Written by `pamsim calibrate`.\n"
-      << "written_by = \"" << provenance << "\"\n"
+      << "written_by = " << toml::value<std::string>(provenance) << "\n"   // TOML-escaped
       << "start_angle_deg = " << units::rad_to_deg(c.start_angle_rad) << "\n";
   for (const CalibratedLine& l : c.lines) {
     out << l.actuator << "_pressure_MPa = " << units::pa_to_mpa(l.pressure_pa) << "\n";

@@ -32,13 +32,13 @@ ConfigReader::ConfigReader(const std::string& text, const std::string& name) : n
 void ConfigReader::apply_override(const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0) {
-    throw InputError("--set " + assignment + ": expected key=value");
+    throw InputError(name_ + ": --set " + assignment + ": expected key=value");
   }
   const std::string key = assignment.substr(0, eq);
   const std::string value = assignment.substr(eq + 1);
   const auto parts = split_key(key);
   for (const auto& p : parts) {
-    if (p.empty()) throw InputError("--set " + assignment + ": malformed key '" + key + "'");
+    if (p.empty()) throw InputError(name_ + ": --set " + assignment + ": malformed key '" + key + "'");
   }
 
   // parse the value as TOML; a bare word is taken as a string
@@ -58,7 +58,7 @@ void ConfigReader::apply_override(const std::string& assignment) {
       n = t->get(parts[i]);
     }
     if (!n->is_table()) {
-      throw InputError("--set " + assignment + ": '" + parts[i] + "' is not a table");
+      throw InputError(name_ + ": --set " + assignment + ": '" + parts[i] + "' is not a table");
     }
     t = n->as_table();
   }
