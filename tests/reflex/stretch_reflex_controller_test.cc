@@ -48,6 +48,13 @@ struct Rig {
   std::uint64_t seed = 7;
 };
 
+// The default Rig with Table II's reflex for `sensor`
+Rig table_ii_rig(ReflexSensor sensor) {
+  Rig rig;
+  rig.controller.reflex = table_ii_reflex_config(sensor);
+  return rig;
+}
+
 // Rig plus a third muscle (an agonist, stretched like the first) in no pair, scheduled at
 // p_tp_pa
 Rig with_spare_muscle(double p_tp_pa) {
@@ -162,8 +169,7 @@ int active_ticks(const Harness& h, int muscle) {
 TEST(StretchReflexController, StretchRampTriggersAgonistReflex) {
   for (ReflexSensor sensor : {ReflexSensor::kModel, ReflexSensor::kFiber}) {
     SCOPED_TRACE(to_string(sensor));
-    Rig rig;
-    rig.controller.reflex = table_ii_reflex_config(sensor);
+    Rig rig = table_ii_rig(sensor);
     Harness h(rig);
     run_ramp(&h);
     EXPECT_EQ(h.controller.trigger_count(0), 1);
@@ -194,8 +200,7 @@ TEST(StretchReflexController, ActsOnTheConfiguredSensorsVelocity) {
   // velocity_m_s is the reading the reflex used: Eq. (11)'s estimate or the fiber rate
   for (ReflexSensor sensor : {ReflexSensor::kModel, ReflexSensor::kFiber}) {
     SCOPED_TRACE(to_string(sensor));
-    Rig rig;
-    rig.controller.reflex = table_ii_reflex_config(sensor);
+    Rig rig = table_ii_rig(sensor);
     Harness h(rig);
     run_ramp(&h);
     for (std::size_t tick = 0; tick < h.outputs.size(); ++tick) {
@@ -216,8 +221,7 @@ TEST(StretchReflexController, QuietNoisySamplesNeverTripAtDefaults) {
   for (ReflexSensor sensor : {ReflexSensor::kModel, ReflexSensor::kFiber}) {
     double max_v = 0.0;
     for (std::uint64_t seed = 1; seed <= 5; ++seed) {
-      Rig rig;
-      rig.controller.reflex = table_ii_reflex_config(sensor);
+      Rig rig = table_ii_rig(sensor);
       rig.seed = seed;
       Harness h(rig);
       for (int j = 0; j < 1000; ++j) {
@@ -382,8 +386,7 @@ TEST(StretchReflexController, SlackMuscleDoesNotTriggerBelowMinTension) {
     for (double min_tension_n : {1.0, 0.0}) {
       SCOPED_TRACE(std::string(to_string(sensor)) + " min_tension_N " +
                    std::to_string(min_tension_n));
-      Rig rig;
-      rig.controller.reflex = table_ii_reflex_config(sensor);
+      Rig rig = table_ii_rig(sensor);
       rig.controller.reflex.min_tension_n = min_tension_n;
       rig.sensing.sensors.gauge_noise_v = 0.0;
       rig.sensing.sensors.gauge_adc_bits = 0;
