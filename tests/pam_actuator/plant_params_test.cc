@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -52,11 +53,46 @@ TEST(PlantParamsTest, ShippedAgonistPlantLoads) {
   EXPECT_DOUBLE_EQ(plant.avbdl.wall_thickness_m, 0.002);
   EXPECT_NEAR(plant.avbdl.end_length_m, 0.16 * 0.180, 1e-15);
   EXPECT_EQ(plant.avbdl.bladder.c10_pa, kNaturalRubberTreloar.c10_pa);
-  EXPECT_EQ(plant.avbdl.friction.extension.force_n, 0.0);
+  EXPECT_DOUBLE_EQ(plant.avbdl.friction.extension.pressure_area_m2, 2.36e-6);
+  EXPECT_DOUBLE_EQ(plant.avbdl.friction.contraction.strain_area_m2, 4.52e-6);
   // what its source line states: free lengths at 0.2 / 0.4 / 0.6 MPa
   EXPECT_NEAR(avbdl_free_length(plant.avbdl, 0.2e6), 0.1570, 0.0005);
   EXPECT_NEAR(avbdl_free_length(plant.avbdl, 0.4e6), 0.1405, 0.0005);
   EXPECT_NEAR(avbdl_free_length(plant.avbdl, 0.6e6), 0.1344, 0.0005);
+}
+
+// Every shipped plant file loads, with the dimensions its header gives (Table I where it
+// says so) and the friction rule of plant_agonist.toml: A0 = 0.030 pi R0^2 lengthening,
+// 0.024 pi R0^2 shortening, A1 = 2.4 A0 (to the file's rounding in mm^2).
+TEST(PlantParamsTest, ShippedPlantsHaveTheirStatedDimensionsAndFrictionRule) {
+  struct Shipped { const char* file; double length_mm, diameter_mm; bool silicone; };
+  for (const Shipped& s : {Shipped{"plant_agonist.toml", 180, 10.0, false},
+                           Shipped{"plant_antagonist.toml", 180, 16.1, false},
+                           Shipped{"plant_pam_a.toml", 216, 19.9, false},
+                           Shipped{"plant_pam_b.toml", 211, 13.4, false},
+                           Shipped{"plant_pam_c.toml", 141, 13.4, false},
+                           Shipped{"plant_pam_d.toml", 212, 19.0, true}}) {
+    SCOPED_TRACE(s.file);
+    const PlantParams plant =
+        load_plant_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/" + s.file);
+    EXPECT_FALSE(plant.source.empty());
+    EXPECT_NEAR(plant.avbdl.length_m, s.length_mm * 1e-3, 1e-12);
+    EXPECT_NEAR(plant.avbdl.diameter_m, s.diameter_mm * 1e-3, 1e-12);
+    EXPECT_EQ(plant.avbdl.bladder.c10_pa,
+              (s.silicone ? kSiliconeElastosilM4601 : kNaturalRubberTreloar).c10_pa);
+    const double area_mm2 = units::kPi * std::pow(s.diameter_mm / 2.0, 2);
+    const AvbdlFriction& f = plant.avbdl.friction;
+    EXPECT_NEAR(f.extension.pressure_area_m2 * 1e6, 0.030 * area_mm2, 0.006);
+    EXPECT_NEAR(f.contraction.pressure_area_m2 * 1e6, 0.024 * area_mm2, 0.006);
+    EXPECT_NEAR(f.extension.strain_area_m2, 2.4 * f.extension.pressure_area_m2, 0.02e-6);
+    EXPECT_NEAR(f.contraction.strain_area_m2, 2.4 * f.contraction.pressure_area_m2, 0.02e-6);
+  }
+  // the antagonist's source line: free lengths 155 / 139 / 134 mm at 0.2 / 0.4 / 0.6 MPa
+  const AvbdlParams anta =
+      load_plant_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_antagonist.toml").avbdl;
+  EXPECT_NEAR(avbdl_free_length(anta, 0.2e6), 0.155, 0.001);
+  EXPECT_NEAR(avbdl_free_length(anta, 0.4e6), 0.139, 0.001);
+  EXPECT_NEAR(avbdl_free_length(anta, 0.6e6), 0.134, 0.001);
 }
 
 TEST(PlantParamsTest, ExplicitConstantsAndFrictionAreRead) {
