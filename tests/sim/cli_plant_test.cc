@@ -7,7 +7,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -35,6 +37,32 @@ double agonist_line_mm(const std::string& path) {
 double estimate_rmse_pct(const fs::path& out) {
   std::ifstream in(out / "summary.json");
   return nlohmann::json::parse(in)["length_est_rmse_pam_pct"].get<double>();
+}
+
+// The drop scenarios' estimators (models/pams/fitted_*.toml) are what the lab's pipeline
+// (scripts/fit-estimators.sh) gives for the shipped plants today: a plant file changed
+// without refitting fails here. Every line but the provenance, which names the CSV.
+TEST(CliPlantTest, CommittedFittedEstimatorsAreWhatThePipelineWrites) {
+  const fs::path out = fresh_dir("refit");
+  const std::string cmd = std::string("bash ") + PAMSIM_SOURCE_DIR + "/scripts/fit-estimators.sh " +
+                          PAMSIM_BINARY + " " + out.string() + " > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  for (const char* m : {"agonist", "antagonist"}) {
+    SCOPED_TRACE(m);
+    std::istringstream fresh(pamsim_test::read_file(out / ("fitted_" + std::string(m) + ".toml")));
+    std::istringstream shipped(pamsim_test::read_file(std::string(PAMSIM_SOURCE_DIR) +
+                                                      "/models/pams/fitted_" + m + ".toml"));
+    std::string a, b;
+    int lines = 0;
+    while (std::getline(fresh, a)) {
+      ASSERT_TRUE(std::getline(shipped, b)) << "shipped file shorter at line " << lines + 1;
+      ++lines;
+      if (a.rfind("source = ", 0) == 0) continue;
+      EXPECT_EQ(a, b);
+    }
+    EXPECT_FALSE(std::getline(shipped, b)) << "shipped file longer";
+    EXPECT_GT(lines, 15);
+  }
 }
 
 TEST(CliPlantTest, TensileTestThenFitGivesTheEstimatorItsTableIIIAccuracy) {

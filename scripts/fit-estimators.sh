@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# fit-estimators.sh: the lab's pipeline for the arm's two muscles (seeds/000 Sec. II-A):
+# a static tensile test on each physical plant (models/pams/plant_<m>.toml), then the
+# Eq. (2)-(3) least-squares fit, written as the estimator's parameter file
+# models/pams/fitted_<m>.toml (strain gauge q and geometry copied from Table IV's file).
+# The drop-mass scenarios invert these fits. Rerun after changing a plant file;
+# tests/sim/cli_plant_test.cc checks that the committed files are what this script writes.
+#
+# Protocol: the arm's pressure range, 0.2-0.7 MPa in 0.1 MPa steps (the reaching task's
+# 0.2-0.6 MPa and the valve's 0.7 MPa top); 2.5 mm steps from the free length to 15 mm
+# and back (seeds/000); instrument noise of the paper's sensors: PSE540 pressure 1 kPa,
+# FGP-5 force gauge 0.05 N, DS-025 encoder 0.01 mm (standard deviations, assumptions of
+# their repeatability class), seed 1.
+set -euo pipefail
+pamsim="${1:-build/src/sim/pamsim}"
+pamsim="$(realpath "$pamsim")"
+out="${2:+$(realpath "$2")}"
+cd "$(dirname "$0")/.."
+csv_dir="${out:-renders/tensile}"
+out="${out:-models/pams}"
+mkdir -p "$csv_dir" "$out"
+for m in agonist antagonist; do
+  "$pamsim" tensile --plant "models/pams/plant_$m.toml" --pressures-MPa 0.2,0.3,0.4,0.5,0.6,0.7 \
+    --max-deformation-mm 15 --noise-pressure-MPa 0.001 --noise-force-N 0.05 \
+    --noise-length-mm 0.01 --seed 1 -o "$csv_dir/plant_$m.csv"
+  "$pamsim" fit --model eq3 "$csv_dir/plant_$m.csv" \
+    --sensors-from "models/pams/table4_$m.toml" -o "$out/fitted_$m.toml"
+done
