@@ -82,16 +82,24 @@ TEST(CliRunTest, BadInputIsOneLineNonZeroAndWritesNothing) {
 TEST(CliRunTest, CalibrateReproducesTheShippedCalibration) {
   const fs::path out = fresh_dir("calib");
   fs::create_directories(out);
-  const CliResult r = run_pamsim("calibrate scenarios/drop_mass_passive.toml -o " +
-                          (out / "c.toml").string());
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  std::ifstream a(out / "c.toml"), b(std::string(PAMSIM_SOURCE_DIR) +
-                                     "/models/arm_2pam_calibration.toml");
-  std::string la, lb;
-  // same numbers (the provenance line names the scenario path)
-  while (std::getline(a, la) && std::getline(b, lb)) {
-    if (la.rfind("written_by", 0) == 0) continue;
-    EXPECT_EQ(la, lb);
+  // the physical plants' lines and the ideal plant's (drop_mass_ideal.toml)
+  for (const auto& [args, shipped] :
+       {std::pair<std::string, std::string>{"scenarios/drop_mass_passive.toml",
+                                            "arm_2pam_plant_calibration.toml"},
+        {"scenarios/drop_mass_ideal.toml", "arm_2pam_calibration.toml"}}) {
+    SCOPED_TRACE(shipped);
+    const CliResult r = run_pamsim("calibrate " + args + " -o " + (out / shipped).string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::ifstream a(out / shipped), b(std::string(PAMSIM_SOURCE_DIR) + "/models/" + shipped);
+    std::string la, lb;
+    int lines = 0;
+    // same numbers (the provenance line names the scenario path)
+    while (std::getline(a, la) && std::getline(b, lb)) {
+      ++lines;
+      if (la.rfind("written_by", 0) == 0) continue;
+      EXPECT_EQ(la, lb);
+    }
+    EXPECT_GT(lines, 8);
   }
   const CliResult bad = run_pamsim("calibrate scenarios/drop_mass_passive.toml --angle-deg 95 -o " +
                             (out / "d.toml").string());

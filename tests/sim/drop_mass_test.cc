@@ -9,6 +9,7 @@
 
 #include "pam_actuator/units.h"
 #include "sim/io/scenario_file.h"
+#include "sim/core/muscle_law.h"
 #include "sim/core/runner.h"
 
 namespace pamsim {
@@ -74,40 +75,52 @@ TEST(DropMassTest, FiberSensorReflexTriggersToo) {
 }
 
 // The paper's Fig. 7: once the line is slack the gauge reads V_base and the estimated
-// deformation is zero, so the length estimate is the natural length l_n(p), Eq. (2). And the
-// muscle itself rests at its free length l_n(p): the encoder, the fiber sensor and the error
-// metrics see that, not the shorter distance the slack line leaves (which moves with the
-// arm). Here the antagonist at 0.1 MPa is slack while the falling mass swings the arm.
+// deformation is zero, so the length estimate is the natural length l_n(p) of the law the
+// estimator inverts, Eq. (2). And the muscle itself rests at its free length: the plant's
+// (the AVBDL law's zero-force length; with the ideal plant, l_n(p) again). The encoder, the
+// fiber sensor and the error metrics see that, not the shorter distance the slack line
+// leaves (which moves with the arm). Here the antagonist at 0.1 MPa is slack while the
+// falling mass swings the arm, on the physical plant and on the ideal one.
 TEST(DropMassTest, SlackLineLeavesTheMuscleAtItsFreeLength) {
-  const TrialResult r = run("drop_mass_passive.toml",
-                            {"pressure.antagonist_MPa=0.1", "sim.duration_s=1.6",
-                             "sensors.gauge_noise_V=0.0", "sensors.gauge_adc_bits=0",
-                             "sensors.pressure_noise_MPa=0.0", "sensors.pressure_adc_bits=0",
-                             "sensors.fiber_noise_mm_s=0.0"});
-  ASSERT_EQ(r.summary.status, "ok") << r.summary.message;
-  const Scenario sc = load_scenario(scenario_path("drop_mass_passive.toml"));
-  const SpringModel& anta = sc.muscle("antagonist")->pam.spring;
-  const double v_base = sc.muscle("antagonist")->pam.strain_gauge->v_base_v;
-  const Trajectory& tr = r.trajectory;
-  const std::size_t force = tr.column("force_anta_N"), gauge = tr.column("gauge_anta_V");
-  const std::size_t est = tr.column("length_est_anta_mm"), p = tr.column("p_anta_MPa");
-  const std::size_t length = tr.column("length_anta_mm"), fiber = tr.column("fiber_rate_anta_mm_s");
-  const std::size_t omega = tr.column("omega_deg_s");
-  int slack_rows = 0, swinging_rows = 0;
-  for (std::size_t row = 1; row < tr.rows(); ++row) {
-    if (tr.at(row, force) > 0.0 || tr.at(row - 1, force) > 0.0) continue;
-    ++slack_rows;
-    const double l_n_mm = units::m_to_mm(natural_length(anta, units::mpa_to_pa(tr.at(row, p))));
-    EXPECT_NEAR(tr.at(row, gauge), v_base, 1e-12) << "row " << row;
-    EXPECT_NEAR(tr.at(row, length), l_n_mm, 1e-9) << "row " << row;
-    EXPECT_NEAR(tr.at(row, est), tr.at(row, length), 0.01) << "row " << row;
-    // the free length moves only with the (regulated, near constant) pressure
-    EXPECT_LT(std::fabs(tr.at(row, fiber)), 5.0) << "row " << row;
-    if (std::fabs(tr.at(row, omega)) > 20.0) ++swinging_rows;
+  for (const char* name : {"drop_mass_passive.toml", "drop_mass_ideal.toml"}) {
+    SCOPED_TRACE(name);
+    const std::vector<std::string> quiet = {
+        "reflex.enabled=false", "pressure.antagonist_MPa=0.1", "sim.duration_s=1.6",
+        "sensors.gauge_noise_V=0.0", "sensors.gauge_adc_bits=0", "sensors.pressure_noise_MPa=0.0",
+        "sensors.pressure_adc_bits=0", "sensors.fiber_noise_mm_s=0.0"};
+    const TrialResult r = run(name, quiet);
+    ASSERT_EQ(r.summary.status, "ok") << r.summary.message;
+    const Scenario sc = load_scenario(scenario_path(name), quiet);
+    const MuscleSpec& anta = *sc.muscle("antagonist");
+    const bool ideal = anta.plant_file.empty();
+    const double v_base = anta.pam.strain_gauge->v_base_v;
+    const Trajectory& tr = r.trajectory;
+    const std::size_t force = tr.column("force_anta_N"), gauge = tr.column("gauge_anta_V");
+    const std::size_t est = tr.column("length_est_anta_mm"), p = tr.column("p_anta_MPa");
+    const std::size_t length = tr.column("length_anta_mm"), fiber = tr.column("fiber_rate_anta_mm_s");
+    const std::size_t omega = tr.column("omega_deg_s");
+    int slack_rows = 0, swinging_rows = 0;
+    for (std::size_t row = 1; row < tr.rows(); ++row) {
+      if (tr.at(row, force) > 0.0 || tr.at(row - 1, force) > 0.0) continue;
+      ++slack_rows;
+      const double p_pa = units::mpa_to_pa(tr.at(row, p));
+      EXPECT_NEAR(tr.at(row, gauge), v_base, 1e-12) << "row " << row;
+      EXPECT_NEAR(tr.at(row, length), units::m_to_mm(plant_free_length(anta, p_pa)), 1e-9)
+          << "row " << row;
+      EXPECT_NEAR(tr.at(row, est), units::m_to_mm(natural_length(anta.pam.spring, p_pa)), 0.01)
+          << "row " << row;
+      // the free length moves only with the (regulated, near constant) pressure
+      EXPECT_LT(std::fabs(tr.at(row, fiber)), 5.0) << "row " << row;
+      if (std::fabs(tr.at(row, omega)) > 20.0) ++swinging_rows;
+    }
+    EXPECT_GT(slack_rows, 100) << "at 0.1 MPa the antagonist must be slack";
+    EXPECT_GT(swinging_rows, 5) << "while the arm swings (a slack line's end moves with it)";
+    // the ideal plant's estimate is exact; the fitted one is off by its l_n(p) misfit, which
+    // below the tensile test's 0.2 MPa (an extrapolation) is centimetres, not millimetres
+    if (ideal) {
+      EXPECT_LT(r.summary.metric("length_est_max_error_mm"), 0.5);
+    }
   }
-  EXPECT_GT(slack_rows, 100) << "at 0.1 MPa the antagonist must be slack";
-  EXPECT_GT(swinging_rows, 5) << "while the arm swings (a slack line's end moves with it)";
-  EXPECT_LT(r.summary.metric("length_est_max_error_mm"), 0.5);
 }
 
 // The outcome metrics agree with the trajectory they summarise, whatever each reflex does:

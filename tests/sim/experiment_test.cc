@@ -329,17 +329,19 @@ seed = 1
 metrics = ["drop", "reflex", "length_estimate"]
 [model]
 file = "../models/arm_2pam.xml"
-calibration = "../models/arm_2pam_calibration.toml"
+calibration = "../models/arm_2pam_plant_calibration.toml"
 pneumatics = "../models/pams/pneumatics.toml"
 [sim]
 duration_s = 2.0
 [muscles.agonist]
 label = "ago"
-params = "../models/pams/table4_agonist.toml"
+params = "../models/pams/fitted_agonist.toml"
+plant = "../models/pams/plant_agonist.toml"
 command = { kind = "constant", MPa = 0.4 }
 [muscles.antagonist]
 label = "anta"
-params = "../models/pams/table4_antagonist.toml"
+params = "../models/pams/fitted_antagonist.toml"
+plant = "../models/pams/plant_antagonist.toml"
 command = { kind = "constant", MPa = 0.4 }
 [bodies.ball]
 mass_kg = 0.2
@@ -354,7 +356,7 @@ when.at_s = 1.0
 after = "release"
 when.contact = ["ball", "basket"]
 [valve]
-model = "iso6358"
+model = "regulator"
 [reflex]
 enabled = true
 sensor = "model"
