@@ -35,6 +35,9 @@ void validate(const SensingConfig& config) {
   require_non_negative("sensors.gauge_noise_V", s.gauge_noise_v);
   require_adc("sensors.gauge_adc", s.gauge_adc_bits, s.gauge_adc_min_v, s.gauge_adc_max_v);
   require_non_negative("sensors.fiber_noise_mm_s", s.fiber_noise_mm_s);
+  if (!(s.noise_scale >= 0.0 && s.noise_scale <= 1000.0)) {
+    fail("sensors.noise_scale", "within [0, 1000]", s.noise_scale);
+  }
   require_cutoff("reflex.lowpass_hz", config.velocity_lowpass_hz, config.control_hz);
 }
 

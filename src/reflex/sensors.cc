@@ -50,7 +50,7 @@ double pse540_pressure_pa(double v) {
 }
 
 PressureSensor::PressureSensor(const SensorConfig& config)
-    : noise_pa_(units::mpa_to_pa(config.pressure_noise_mpa)),
+    : noise_pa_(config.noise_scale * units::mpa_to_pa(config.pressure_noise_mpa)),
       bias_pa_(units::mpa_to_pa(config.pressure_bias_mpa)),
       adc_{config.pressure_adc_bits, config.pressure_adc_min_v, config.pressure_adc_max_v} {}
 
@@ -66,7 +66,7 @@ PressureReading PressureSensor::sample(double p_true_pa, std::mt19937_64& rng) c
 
 StrainGauge::StrainGauge(const StrainGaugeParams& gauge, const SensorConfig& config)
     : gauge_(gauge),
-      noise_v_(config.gauge_noise_v),
+      noise_v_(config.noise_scale * config.gauge_noise_v),
       adc_{config.gauge_adc_bits, config.gauge_adc_min_v, config.gauge_adc_max_v} {}
 
 double StrainGauge::sample(double f_true_n, std::mt19937_64& rng) const {
@@ -77,7 +77,8 @@ double StrainGauge::sample(double f_true_n, std::mt19937_64& rng) const {
 }
 
 FiberSensor::FiberSensor(const SensorConfig& config, double sample_period_s)
-    : noise_m_s_(units::mm_to_m(config.fiber_noise_mm_s)), dt_s_(sample_period_s) {
+    : noise_m_s_(config.noise_scale * units::mm_to_m(config.fiber_noise_mm_s)),
+      dt_s_(sample_period_s) {
   assert(sample_period_s > 0.0);
 }
 

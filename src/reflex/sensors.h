@@ -57,6 +57,9 @@ struct SensorConfig {
   double gauge_adc_min_v = -5.0;       // sensors.gauge_adc_min_V
   double gauge_adc_max_v = 5.0;        // sensors.gauge_adc_max_V, > min
   double fiber_noise_mm_s = 2.0;       // sensors.fiber_noise_mm_s, std dev, >= 0
+  // sensors.noise_scale, in [0, 1000]: multiplies the three noise standard deviations above
+  // (not the bias), one knob for a sweep over sensor noise; 1 leaves them as given.
+  double noise_scale = 1.0;
 };
 
 // An analog-to-digital converter: saturates at [v_min, v_max] and rounds to the nearest of

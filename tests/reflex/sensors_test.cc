@@ -152,6 +152,34 @@ TEST(FiberSensor, NoiseStdMatchesConfigured) {
   EXPECT_NEAR(std::sqrt(sum2 / n), 3e-3, 3e-3 * 0.03);
 }
 
+// sensors.noise_scale multiplies each sensor's noise: the same normal draws, scaled, so a
+// reading's error at scale 2.5 is exactly 2.5 times its error at scale 1 (same seed).
+TEST(Sensors, NoiseScaleMultipliesEveryNoiseStd) {
+  SensorConfig one;
+  one.pressure_adc_bits = 0;
+  one.gauge_adc_bits = 0;
+  SensorConfig scaled = one;
+  scaled.noise_scale = 2.5;
+  const StrainGaugeParams gauge{2.25e-3, 0.0};
+  std::mt19937_64 a(5), b(5);
+  for (int i = 0; i < 100; ++i) {
+    const double p_err1 = PressureSensor(one).sample(0.4e6, a).pressure_pa - 0.4e6;
+    const double p_err2 = PressureSensor(scaled).sample(0.4e6, b).pressure_pa - 0.4e6;
+    EXPECT_NEAR(p_err2, 2.5 * p_err1, 1e-6 * std::abs(p_err1) + 1e-3);
+    const double g_err1 = StrainGauge(gauge, one).sample(30.0, a) - gauge.q_v_per_n * 30.0;
+    const double g_err2 = StrainGauge(gauge, scaled).sample(30.0, b) - gauge.q_v_per_n * 30.0;
+    EXPECT_NEAR(g_err2, 2.5 * g_err1, 1e-9);
+  }
+  FiberSensor f1(one, 0.01), f2(scaled, 0.01);
+  for (int i = 0; i < 100; ++i) {
+    const double r1 = f1.sample(0.17, a), r2 = f2.sample(0.17, b);
+    EXPECT_NEAR(r2, 2.5 * r1, 1e-12);
+  }
+  SensorConfig quiet = one;
+  quiet.noise_scale = 0.0;
+  EXPECT_EQ(PressureSensor(quiet).sample(0.4e6, a).pressure_pa, 0.4e6);
+}
+
 TEST(Sensors, DeterministicPerSeed) {
   const SensorConfig c;   // default noise
   auto run = [&](std::uint64_t seed) {

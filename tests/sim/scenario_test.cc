@@ -108,6 +108,8 @@ TEST(ScenarioTest, EveryBadValueNamesItsKey) {
       {"sensors.gauge_noise_V=-1", "sensors.gauge_noise_V"},
       {"sensors.gauge_adc_bits=40", "sensors.gauge_adc"},
       {"sensors.fiber_noise_mm_s=-2", "sensors.fiber_noise_mm_s"},
+      {"sensors.noise_scale=-1", "sensors.noise_scale"},
+      {"sensors.noise_scale=1e4", "sensors.noise_scale"},
       {"controller.p_max_MPa=0", "controller.p_max_MPa"},
       {"controller.p_max_MPa=0.8", "controller.p_max_MPa"},   // above the 0.7 MPa regulator
       {"model.file=\"missing.xml\"", "missing.xml"},

@@ -150,6 +150,7 @@ void read_sensors(ConfigReader& in, Scenario* sc) {
   s.gauge_adc_min_v = in.get_double("sensors.gauge_adc_min_V", s.gauge_adc_min_v);
   s.gauge_adc_max_v = in.get_double("sensors.gauge_adc_max_V", s.gauge_adc_max_v);
   s.fiber_noise_mm_s = in.get_double("sensors.fiber_noise_mm_s", s.fiber_noise_mm_s);
+  s.noise_scale = in.get_double("sensors.noise_scale", s.noise_scale);
   sc->sensing.control_hz = sc->control_hz;
   sc->sensing.velocity_lowpass_hz =
       sc->controller == ControllerKind::kStretchReflex ? sc->reflex.reflex.lowpass_hz : 0.0;
