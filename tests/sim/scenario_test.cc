@@ -38,7 +38,8 @@ std::string write_temp(const std::string& name, const std::string& text) {
 }
 
 TEST(ScenarioTest, ShippedScenariosLoad) {
-  for (const char* name : {"drop_mass.toml", "drop_mass_passive.toml", "drop_mass_fiber.toml"}) {
+  for (const char* name : {"drop_mass.toml", "drop_mass_passive.toml", "drop_mass_fiber.toml",
+                           "drop_mass_ideal.toml"}) {
     EXPECT_EQ(error_of({}, std::string(PAMSIM_SOURCE_DIR) + "/scenarios/" + name), "") << name;
   }
   const Scenario sc = load_scenario(kScenario);
@@ -53,6 +54,21 @@ TEST(ScenarioTest, OverridesTakeEffect) {
   EXPECT_DOUBLE_EQ(sc.reflex.reflex.v_thr_mm_s, 55.0);
   EXPECT_EQ(sc.seed, 9u);
   EXPECT_EQ(sc.valve_model, ValveModel::kFirstOrder);
+}
+
+// valve.dead_time_ms, valve.valve_time_constant_ms and valve.proportional_band_kPa replace
+// the pneumatics file's [regulator] values, scaled as the file's keys are; absent, the
+// file's values stand.
+TEST(ScenarioTest, RegulatorKeysOverrideThePneumaticsFile) {
+  const Scenario base = load_scenario(kScenario);
+  EXPECT_EQ(base.pneumatics.regulator_dead_time_s, 5.0 * 1e-3);
+  EXPECT_EQ(base.pneumatics.regulator_valve_time_constant_s, 10.0 * 1e-3);
+  EXPECT_EQ(base.pneumatics.regulator_proportional_band_pa, 20.0 * 1e3);
+  const Scenario sc = load_scenario(kScenario, {"valve.dead_time_ms=2", "valve.valve_time_constant_ms=20",
+                                                "valve.proportional_band_kPa=50"});
+  EXPECT_EQ(sc.pneumatics.regulator_dead_time_s, 2.0 * 1e-3);
+  EXPECT_EQ(sc.pneumatics.regulator_valve_time_constant_s, 20.0 * 1e-3);
+  EXPECT_EQ(sc.pneumatics.regulator_proportional_band_pa, 50.0 * 1e3);
 }
 
 struct BadValue {
@@ -109,6 +125,10 @@ TEST(ScenarioTest, EveryBadValueNamesItsKey) {
       {"sensors.gauge_adc_bits=40", "sensors.gauge_adc"},
       {"sensors.fiber_noise_mm_s=-2", "sensors.fiber_noise_mm_s"},
       {"sensors.noise_scale=-1", "sensors.noise_scale"},
+      {"valve.dead_time_ms=-1", "valve.dead_time_ms"},
+      {"valve.dead_time_ms=nan", "valve.dead_time_ms"},
+      {"valve.valve_time_constant_ms=0", "valve.valve_time_constant_ms"},
+      {"valve.proportional_band_kPa=5000", "valve.proportional_band_kPa"},
       {"sensors.noise_scale=1e4", "sensors.noise_scale"},
       {"controller.p_max_MPa=0", "controller.p_max_MPa"},
       {"controller.p_max_MPa=0.8", "controller.p_max_MPa"},   // above the 0.7 MPa regulator

@@ -46,8 +46,23 @@ void read_model(ConfigReader& in, Scenario* sc) {
   p.supply_gauge_pa = units::mpa_to_pa(in.get_double("valve.supply_MPa", units::pa_to_mpa(p.supply_gauge_pa)));
   p.command_max_gauge_pa = units::mpa_to_pa(
       in.get_double("valve.command_max_MPa", units::pa_to_mpa(p.command_max_gauge_pa)));
-  if (in.has("valve.supply_MPa") || in.has("valve.command_max_MPa")) {
-    const std::string key = in.has("valve.command_max_MPa") ? "valve.command_max_MPa" : "valve.supply_MPa";
+  // the regulator's loop (valve.model = "regulator"), over the pneumatics file's [regulator]:
+  // a scenario or a sweep axis picks a point of its bracket
+  // (the ranges and scales of pneumatics.toml's [regulator] keys)
+  const auto regulator_key = [&](const char* key, double scale, double hi, double* field) {
+    if (!in.has(key)) return;
+    const double v = in.get_double(key, *field / scale);
+    in.check(v >= 0.0 && v <= hi, key, "must be within [0, " + format_value(hi) + "], got " +
+                                           format_value(v));
+    *field = v * scale;
+  };
+  regulator_key("valve.dead_time_ms", 1e-3, 1000.0, &p.regulator_dead_time_s);
+  regulator_key("valve.valve_time_constant_ms", 1e-3, 10000.0,
+                &p.regulator_valve_time_constant_s);
+  regulator_key("valve.proportional_band_kPa", 1e3, 2000.0, &p.regulator_proportional_band_pa);
+  for (const char* key : {"valve.supply_MPa", "valve.command_max_MPa", "valve.dead_time_ms",
+                          "valve.valve_time_constant_ms", "valve.proportional_band_kPa"}) {
+    if (!in.has(key)) continue;
     in_file(in, [&] {
       validate_pneumatic_params(p, key);
       return 0;

@@ -49,6 +49,9 @@
 //   valve.model                   "iso6358" | "first_order" | "regulator" (pneumatics.h)
 //   valve.supply_MPa, valve.command_max_MPa   a rig's own supply and regulator range, in
 //                                 place of model.pneumatics' (command max <= supply)
+//   valve.dead_time_ms, valve.valve_time_constant_ms, valve.proportional_band_kPa   the
+//                                 regulator's loop (valve.model = "regulator") in place of
+//                                 model.pneumatics' [regulator]: a point of its bracket
 // Shorthands kept from pamsim 0.1 (their keys keep their meaning):
 //   drop.{enabled, mass_kg, height_m, time_s} (and body = "ball", basket = "basket",
 //     site = "basket_floor"): the falling mass: bodies.<body>.mass_kg, a hold of the body
