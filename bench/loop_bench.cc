@@ -119,6 +119,9 @@ void BM_TrialLoop(benchmark::State& state, const char* scenario_file) {
 }
 BENCHMARK_CAPTURE(BM_TrialLoop, passive, "drop_mass_passive.toml")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_TrialLoop, reflex, "drop_mass.toml")->Unit(benchmark::kMillisecond);
+// the same trial on the ideal plant (Table IV's law, ideal regulated source): what the
+// physical plant and the regulator's loop cost
+BENCHMARK_CAPTURE(BM_TrialLoop, reflex_ideal, "drop_mass_ideal.toml")->Unit(benchmark::kMillisecond);
 
 void BM_TwentyTrials(benchmark::State& state) {
   const Scenario sc = scenario_named("drop_mass.toml");

@@ -15,6 +15,7 @@ packages=(
   libegl-dev libgl1-mesa-dri                 # the EGL backend and Mesa's software driver for it
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev   # MP4 encoding
   gnuplot-nox                                # plots (pngcairo terminal)
+  python3                                    # scripts/findings.py and the demo's summary line
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 

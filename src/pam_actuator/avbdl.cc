@@ -82,6 +82,86 @@ double bladder_area(const AvbdlParams& p) {
   return kPi * p.wall_thickness_m * (2.0 * r0 + p.wall_thickness_m);
 }
 
+// What the law needs of a muscle that does not change with its state, computed once per
+// public call (the braid's trigonometry, the profile's coefficients and moments), so that a
+// root solve or a co-simulation step does not recompute it at every evaluation.
+struct Shape {
+  BraidGeometry braid;
+  double r0 = 0.0;                  // fitting radius D0 / 2
+  std::array<double, 4> profile{};  // eta(s) coefficients
+  ProfileMoments moments;
+  double bladder_area = 0.0;        // reference wall area per unit length
+};
+
+Shape shape_of(const AvbdlParams& p) {
+  Shape s;
+  s.braid = braid_from_initial_shape(p.length_m, p.diameter_m, p.braid_angle_rad);
+  s.r0 = 0.5 * p.diameter_m;
+  s.profile = profile_coefficients(p.end_slope);
+  s.moments = profile_moments(p.end_slope);
+  s.bladder_area = bladder_area(p);
+  return s;
+}
+
+double dvolume_dlength(const AvbdlParams& p, const Shape& shape, double length_m) {
+  const BraidGeometry& g = shape.braid;
+  const double ld = p.end_length_m;
+  const double r0 = shape.r0;
+  const double r_sq = radius_squared(g, length_m);
+  const double dr_sq = dradius_squared_dlength(g, length_m);
+  const ProfileMoments& m = shape.moments;
+
+  // dA/dL: the end region's shape moves with R(L); dR/dL = d(R^2)/dL / (2 R)
+  double da = 0.0;
+  if (ld > 0.0) {
+    const double r = std::sqrt(r_sq);
+    da = ld * (r0 * m.i1 + (r - r0) * m.i2) * dr_sq / (2.0 * r);
+  }
+  // dB/dL: the straight part widens and shortens
+  const double db = 0.25 * (dr_sq * (length_m - 2.0 * ld) + r_sq);
+  // Eq. (18) uses F = P dV/dDL with DL = L0 - L: dV/dDL = -dV/dL
+  return 4.0 * kPi * (da + db);
+}
+
+double dbladder_energy_dlength(const AvbdlParams& p, const Shape& shape, double length_m) {
+  const double r0 = shape.r0;
+  const double r = std::sqrt(radius_squared(shape.braid, length_m));
+  const double area = shape.bladder_area;
+  const std::array<double, 4>& c = shape.profile;
+  const double dr = dradius_squared_dlength(shape.braid, length_m) / (2.0 * r);
+
+  // Eq. (21): dW/dlambda = sigma; the middle's stretch R / R0 moves with dR/dL
+  const double dw_mid = area * (p.length_m - 2.0 * p.end_length_m) *
+                        mooney_rivlin_stress(p.bladder, r / r0) / r0;
+  // at s the end radius moves by eta(s) dR/dL
+  const double per_end = integrate_unit_interval([&](double s) {
+    const double eta = profile(c, s);
+    return mooney_rivlin_stress(p.bladder, (r0 + (r - r0) * eta) / r0) * eta / r0;
+  });
+  return (dw_mid + 2.0 * area * p.end_length_m * per_end) * dr;
+}
+
+double static_force(const AvbdlParams& p, const Shape& shape, double p_pa, double length_m) {
+  // Eq. (19): F dDL = p dV - dW_def with dDL = -dL, so Eq. (25) reads
+  // F = -p dV/dL + dW_def/dL; the text lost (25)'s fraction bars and sign, this is the
+  // sign for which the bladder's work lowers the pull of a contracted muscle
+  return -p_pa * dvolume_dlength(p, shape, length_m) +
+         dbladder_energy_dlength(p, shape, length_m);
+}
+
+double free_length(const AvbdlParams& p, const Shape& shape, double p_pa) {
+  if (std::isnan(p_pa)) return p_pa;   // no length for no pressure: the trial diverges
+  if (!(p_pa > 0.0)) return p.length_m;
+  const double lo = shape.braid.fibre_length_m / std::sqrt(3.0);
+  const auto force = [&](double l) { return static_force(p, shape, p_pa, l); };
+  if (force(lo) >= 0.0) return lo;              // still pulling at the braid's limit
+  if (force(p.length_m) <= 0.0) return p.length_m;
+  std::uintmax_t iterations = 100;
+  const auto [a, b] = boost::math::tools::toms748_solve(
+      force, lo, p.length_m, boost::math::tools::eps_tolerance<double>(45), iterations);
+  return 0.5 * (a + b);
+}
+
 // one "<key> must be ..., got <value>" check
 struct Checker {
   const std::string& prefix;
@@ -221,23 +301,7 @@ double avbdl_volume(const AvbdlParams& p, double length_m) {
 }
 
 double avbdl_dvolume_dlength(const AvbdlParams& p, double length_m) {
-  const BraidGeometry g = avbdl_braid(p);
-  const double ld = p.end_length_m;
-  const double r0 = 0.5 * p.diameter_m;
-  const double r_sq = radius_squared(g, length_m);
-  const double dr_sq = dradius_squared_dlength(g, length_m);
-  const ProfileMoments m = profile_moments(p.end_slope);
-
-  // dA/dL: the end region's shape moves with R(L); dR/dL = d(R^2)/dL / (2 R)
-  double da = 0.0;
-  if (ld > 0.0) {
-    const double r = std::sqrt(r_sq);
-    da = ld * (r0 * m.i1 + (r - r0) * m.i2) * dr_sq / (2.0 * r);
-  }
-  // dB/dL: the straight part widens and shortens
-  const double db = 0.25 * (dr_sq * (length_m - 2.0 * ld) + r_sq);
-  // Eq. (18) uses F = P dV/dDL with DL = L0 - L: dV/dDL = -dV/dL
-  return 4.0 * kPi * (da + db);
+  return dvolume_dlength(p, shape_of(p), length_m);
 }
 
 double mooney_rivlin_stress(const MooneyRivlinConstants& c, double stretch) {
@@ -277,48 +341,22 @@ double avbdl_bladder_energy(const AvbdlParams& p, double length_m) {
 }
 
 double avbdl_dbladder_energy_dlength(const AvbdlParams& p, double length_m) {
-  const double r0 = 0.5 * p.diameter_m;
-  const double r = avbdl_middle_radius(p, length_m);
-  const double area = bladder_area(p);
-  const std::array<double, 4> c = profile_coefficients(p.end_slope);
-  const double dr = dradius_squared_dlength(avbdl_braid(p), length_m) / (2.0 * r);
-
-  // Eq. (21): dW/dlambda = sigma; the middle's stretch R / R0 moves with dR/dL
-  const double dw_mid = area * (p.length_m - 2.0 * p.end_length_m) *
-                        mooney_rivlin_stress(p.bladder, r / r0) / r0;
-  // at s the end radius moves by eta(s) dR/dL
-  const double per_end = integrate_unit_interval([&](double s) {
-    const double eta = profile(c, s);
-    return mooney_rivlin_stress(p.bladder, (r0 + (r - r0) * eta) / r0) * eta / r0;
-  });
-  return (dw_mid + 2.0 * area * p.end_length_m * per_end) * dr;
+  return dbladder_energy_dlength(p, shape_of(p), length_m);
 }
 
 double avbdl_static_force(const AvbdlParams& p, double p_pa, double length_m) {
-  // Eq. (19): F dDL = p dV - dW_def with dDL = -dL, so Eq. (25) reads
-  // F = -p dV/dL + dW_def/dL; the text lost (25)'s fraction bars and sign, this is the
-  // sign for which the bladder's work lowers the pull of a contracted muscle
-  return -p_pa * avbdl_dvolume_dlength(p, length_m) +
-         avbdl_dbladder_energy_dlength(p, length_m);
+  return static_force(p, shape_of(p), p_pa, length_m);
 }
 
 double avbdl_free_length(const AvbdlParams& p, double p_pa) {
-  if (std::isnan(p_pa)) return p_pa;   // no length for no pressure: the trial diverges
-  if (!(p_pa > 0.0)) return p.length_m;
-  const double lo = avbdl_min_length(p);
-  const auto force = [&](double l) { return avbdl_static_force(p, p_pa, l); };
-  if (force(lo) >= 0.0) return lo;              // still pulling at the braid's limit
-  if (force(p.length_m) <= 0.0) return p.length_m;
-  std::uintmax_t iterations = 100;
-  const auto [a, b] = boost::math::tools::toms748_solve(
-      force, lo, p.length_m, boost::math::tools::eps_tolerance<double>(45), iterations);
-  return 0.5 * (a + b);
+  return free_length(p, shape_of(p), p_pa);
 }
 
 double avbdl_length_at_force(const AvbdlParams& p, double p_pa, double f_n) {
-  const double lo = avbdl_free_length(p, p_pa);
-  const double hi = avbdl_max_length(p);
-  const auto excess = [&](double l) { return avbdl_static_force(p, p_pa, l) - f_n; };
+  const Shape shape = shape_of(p);
+  const double lo = free_length(p, shape, p_pa);
+  const double hi = kAvbdlMaxStretch * shape.braid.fibre_length_m;
+  const auto excess = [&](double l) { return static_force(p, shape, p_pa, l) - f_n; };
   if (!(f_n > 0.0) || excess(hi) < 0.0) return -1.0;
   if (excess(lo) >= 0.0) return lo;
   std::uintmax_t iterations = 100;
@@ -354,8 +392,25 @@ double avbdl_smooth_friction_force(const AvbdlParams& p, double p_pa, double len
 
 double avbdl_force(const AvbdlParams& p, double p_pa, double length_m,
                    double length_rate_m_per_s) {
-  return avbdl_static_force(p, p_pa, length_m) +
+  return static_force(p, shape_of(p), p_pa, length_m) +
          avbdl_smooth_friction_force(p, p_pa, length_m, length_rate_m_per_s);
+}
+
+double avbdl_line_pull(const AvbdlParams& p, double p_pa, double taut_length_m,
+                       double length_rate_m_per_s) {
+  const Shape shape = shape_of(p);
+  const double l = std::min(taut_length_m, kAvbdlMaxStretch * shape.braid.fibre_length_m);
+  if (l <= shape.braid.fibre_length_m / std::sqrt(3.0)) return 0.0;
+  const double f = static_force(p, shape, p_pa, l) +
+                   avbdl_smooth_friction_force(p, p_pa, l, length_rate_m_per_s);
+  return std::max(f, 0.0);
+}
+
+double avbdl_line_muscle_length(const AvbdlParams& p, double p_pa, double taut_length_m) {
+  const Shape shape = shape_of(p);
+  const double l = std::min(taut_length_m, kAvbdlMaxStretch * shape.braid.fibre_length_m);
+  if (static_force(p, shape, p_pa, l) > 0.0) return taut_length_m;
+  return std::max(taut_length_m, free_length(p, shape, p_pa));
 }
 
 }  // namespace pamsim

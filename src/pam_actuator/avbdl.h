@@ -189,4 +189,14 @@ double avbdl_smooth_friction_force(const AvbdlParams& params, double p_pa, doubl
 double avbdl_force(const AvbdlParams& params, double p_pa, double length_m,
                    double length_rate_m_per_s);
 
+// For a muscle on a line whose ends are `taut_length_m` apart (the co-simulation's tendon
+// length minus the line): its pull [N] >= 0, zero when it is slack (at or below the braid's
+// full contraction, or pulling nothing), the law at min(taut, avbdl_max_length) otherwise;
+// and its own length [m]: the taut length while it pulls, else its free length (a slack
+// muscle rests at avbdl_free_length, whatever the line's ends do). Each derives the
+// muscle's shape once (these run at every physics step).
+double avbdl_line_pull(const AvbdlParams& params, double p_pa, double taut_length_m,
+                       double length_rate_m_per_s);
+double avbdl_line_muscle_length(const AvbdlParams& params, double p_pa, double taut_length_m);
+
 }  // namespace pamsim

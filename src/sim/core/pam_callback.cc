@@ -105,15 +105,12 @@ double pam_free_length(const mjModel* m, const mjData* d, int id) {
 }
 
 double pam_muscle_length(const mjModel* m, const mjData* d, int id) {
-  // the plant's free length is a root solve: only when the line is slack (not pulling)
+  // the plant's free length is a root solve, done only when the line is slack
+  const double p = d->userdata[pam_userdata_index(m, id)];
   AvbdlParams plant;
   if (pam_plant_from_model(m, id, &plant)) {
-    const double taut = pam_length(m, d, id);
-    const double p = d->userdata[pam_userdata_index(m, id)];
-    if (avbdl_static_force(plant, p, std::min(taut, avbdl_max_length(plant))) > 0.0) return taut;
-    return std::max(taut, avbdl_free_length(plant, p));
+    return avbdl_line_muscle_length(plant, p, pam_length(m, d, id));
   }
-  const double p = d->userdata[pam_userdata_index(m, id)];
   return std::max(pam_length(m, d, id), natural_length(pam_spring_from_model(m, id), p));
 }
 
@@ -126,9 +123,7 @@ mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int id) {
   if (pam_plant_from_model(m, id, &plant)) {
     // a slack muscle contracts to its free length and pulls nothing; the law holds up to
     // avbdl_max_length (a muscle stretched to its fibre length would have to break)
-    const double l = std::min(pam_length(m, d, id), avbdl_max_length(plant));
-    if (l <= avbdl_min_length(plant)) return 0.0;
-    return -std::max(avbdl_force(plant, p, l, d->actuator_velocity[id]), 0.0);
+    return -avbdl_line_pull(plant, p, pam_length(m, d, id), d->actuator_velocity[id]);
   }
 
   const SpringModel spring = pam_spring_from_model(m, id);
