@@ -1,0 +1,134 @@
+#!/usr/bin/env python3
+"""findings.py: reruns the measurements behind README's "Findings" tables (issue 12): each
+reflex of the falling-mass experiment over 20 seeds, on the physical plant across the
+regulator bracket (Fig. 9 re-examined), with each of the reflex's gates switched off, and on
+the ideal plant for comparison. Every row is one `pamsim run --trials 20` with `--set`
+overrides, so any row can be rerun by hand. Prints Markdown; writes it to OUT too.
+
+    python3 scripts/findings.py [--pamsim build/src/sim/pamsim] [--out renders/findings]
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+TRIALS = 20
+
+# (label, overrides) for the regulator bracket of models/pams/pneumatics.toml [regulator]
+REGULATOR_ROWS = [
+    ("ideal source (`valve.model=\"iso6358\"`)", ['valve.model="iso6358"']),
+    ("nominal 5 ms / 10 ms / 20 kPa (shipped)", []),
+    ("dead time 2 ms", ["valve.dead_time_ms=2"]),
+    ("dead time 10 ms", ["valve.dead_time_ms=10"]),
+    ("valve lag 5 ms", ["valve.valve_time_constant_ms=5"]),
+    ("valve lag 20 ms", ["valve.valve_time_constant_ms=20"]),
+    ("band 10 kPa", ["valve.proportional_band_kPa=10"]),
+    ("band 50 kPa", ["valve.proportional_band_kPa=50"]),
+    ("fastest (2 / 5 / 10)", ["valve.dead_time_ms=2", "valve.valve_time_constant_ms=5",
+                              "valve.proportional_band_kPa=10"]),
+    ("slowest (10 / 20 / 50)", ["valve.dead_time_ms=10", "valve.valve_time_constant_ms=20",
+                                "valve.proportional_band_kPa=50"]),
+]
+
+GATES_OFF = ["reflex.refractory_s=0", "reflex.arm_after_s=0", "reflex.min_tension_N=0",
+             "reflex.reciprocal_trigger_inhibition=false"]
+GATE_ROWS = [
+    ("all four on (shipped)", []),
+    ("refractory time off (`reflex.refractory_s=0`)", [GATES_OFF[0]]),
+    ("arming delay off (`reflex.arm_after_s=0`)", [GATES_OFF[1]]),
+    ("minimum line tension off (`reflex.min_tension_N=0`)", [GATES_OFF[2]]),
+    ("reciprocal trigger inhibition off", [GATES_OFF[3]]),
+    ("all four off (the paper's reflex)", GATES_OFF),
+]
+
+REFLEXES = [("model reflex (1/800)", "drop_mass.toml"), ("fiber reflex (1/300)", "drop_mass_fiber.toml")]
+
+
+def run(pamsim, threads, scenario, overrides):
+    """One `pamsim run --trials 20`; returns its summary's metrics."""
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "run")
+        cmd = [pamsim, "run", os.path.join("scenarios", scenario), "--trials", str(TRIALS),
+               "--threads", str(threads), "--out", out]
+        for o in overrides:
+            cmd += ["--set", o]
+        subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+        with open(os.path.join(out, "summary.json")) as f:
+            return json.load(f)["metrics"]
+
+
+def cell(m):
+    """peak drop mean [min, max], trials that keep the mass, retriggers, mistrips."""
+    drop = m["peak_drop_deg"]
+    kept = round(m["mass_retained"]["mean"] * m["mass_retained"]["count"])
+    text = f"{drop['mean']:.1f} deg [{drop['min']:.1f}, {drop['max']:.1f}], {kept}/{TRIALS} kept"
+    retrig = m.get("retriggers_after_impact", {}).get("mean")
+    if retrig is not None:
+        text += f", {retrig:.1f} retriggers"
+    mistrips = m.get("mistrips", {}).get("mean") or 0.0
+    if mistrips:
+        text += f", {mistrips:.2f} mistrips"
+    return text
+
+
+def table(pamsim, threads, rows, header, base_overrides=()):
+    lines = [f"| {header} | " + " | ".join(r[0] for r in REFLEXES) + " |",
+             "| --- | " + " | ".join("---" for _ in REFLEXES) + " |"]
+    for label, overrides in rows:
+        cells = [cell(run(pamsim, threads, scenario, list(base_overrides) + overrides))
+                 for _, scenario in REFLEXES]
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+        print(lines[-1], file=sys.stderr)
+    return "\n".join(lines)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--pamsim", default="build/src/sim/pamsim")
+    ap.add_argument("--out", default="renders/findings")
+    ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
+    args = ap.parse_args()
+    pamsim = os.path.abspath(args.pamsim)
+    os.chdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+
+    passive = run(pamsim, args.threads, "drop_mass_passive.toml", [])
+    ideal = run(pamsim, args.threads, "drop_mass_ideal.toml", [])
+    # drop_mass_fiber.toml's reflex on the ideal plant: Table II's fiber threshold and gain
+    ideal_fiber = run(pamsim, args.threads, "drop_mass_ideal.toml",
+                      ['reflex.sensor="fiber"', "reflex.v_thr_mm_s=25.0",
+                       "reflex.k_MPa_s_per_mm=0.0033333333333333335"])
+    est = run(pamsim, args.threads, "drop_mass.toml", [])["length_est_rmse_pct"]
+    est_ideal = ideal["length_est_rmse_pct"]
+    parts = [
+        f"Passive (no reflex): {cell(passive)}.",
+        f"Length estimate RMSE: {est['mean']:.2f} % of length [{est['min']:.2f}, "
+        f"{est['max']:.2f}] on the physical plant, {est_ideal['mean']:.3f} % on the ideal one.",
+        "",
+        "Ideal plant (`drop_mass_ideal.toml`): model reflex " + cell(ideal) +
+        "; fiber reflex " + cell(ideal_fiber) + ".",
+        "",
+        "Physical plant across the regulator bracket (dead time / valve lag / band):",
+        "",
+        table(pamsim, args.threads, REGULATOR_ROWS, "regulator"),
+        "",
+        "Physical plant, nominal regulator, each gate off:",
+        "",
+        table(pamsim, args.threads, GATE_ROWS, "gate"),
+        "",
+        "Physical plant, slowest regulator (10 / 20 / 50), each gate off:",
+        "",
+        table(pamsim, args.threads, GATE_ROWS, "gate", REGULATOR_ROWS[-1][1]),
+    ]
+    text = "\n".join(parts) + "\n"
+    os.makedirs(args.out, exist_ok=True)
+    tmp = os.path.join(args.out, ".findings.md.tmp")
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, os.path.join(args.out, "findings.md"))
+    print(text)
+
+
+if __name__ == "__main__":
+    main()
