@@ -47,10 +47,12 @@ struct SensorConfig {
   // measured pressure removes noise mistrips (DESIGN.md) but, in the closed loop, its lag
   // turns the reflex's own pressure rise into estimated stretch: the real force rises with
   // the real pressure while the estimate still inverts Eq. (3) at the older, lower one, so d
-  // is overestimated; in the drop-mass scenario a 5 Hz filter made the velocity estimate
-  // read ~250 mm/s for a true ~96 mm/s stretch and the reflex pumped the arm's ~5 Hz mode
-  // until the mass was thrown out. At the default noise (0.001 MPa) the unfiltered velocity
-  // noise is ~9 mm/s, 7 sigma below the 70 mm/s threshold: no mistrips without the filter.
+  // is overestimated; on the ideal plant (drop_mass_ideal.toml) a 5 Hz filter made the
+  // velocity estimate read ~250 mm/s for a true ~96 mm/s stretch and the reflex pumped the
+  // arm's ~5 Hz mode until the mass was thrown out. At the default noise (0.001 MPa) the
+  // unfiltered velocity noise is ~9 mm/s, 7 sigma below the 70 mm/s threshold: no mistrips
+  // without the filter (on the physical plant they begin at twice the default noise,
+  // sensors.noise_scale = 2; README, the noise sweep).
   double pressure_lowpass_hz = 0.0;
   double gauge_noise_v = 0.5e-3;       // sensors.gauge_noise_V, std dev, >= 0
   int gauge_adc_bits = 16;             // sensors.gauge_adc_bits, 0 (ideal) or 4..24

@@ -44,14 +44,15 @@ struct StretchReflexParams {
   double k_MPa_s_per_mm = 1.0 / 800.0;   // reflex.k_MPa_s_per_mm, k >= 0 (fiber: 1/300)
   double duration_s = 0.2;               // reflex.duration_s, >= one control period
   ReflexMode mode = ReflexMode::kFollow; // reflex.mode
-  // reflex.refractory_s >= 0. Default 0.5 s: the arm rings at ~5 Hz after the impact (the
-  // drop scenarios' angle crosses its final value every ~0.1 s), so the rebound stretches
-  // come ~200 ms apart; the fiber reflex (25 mm/s) re-fired on them. 0.5 s after the 0.2 s
-  // window covers the first three rebounds, by which time the damped oscillation of the
-  // model-based reflex's trial is below threshold. A pamsim addition: 0 switches it off.
+  // reflex.refractory_s >= 0. Default 0.5 s: on the ideal plant (drop_mass_ideal.toml) the
+  // arm rings at ~5 Hz after the impact, so the rebound stretches come ~200 ms apart and the
+  // fiber reflex (25 mm/s) re-fired on them; 0.5 s after the 0.2 s window covers the first
+  // three rebounds. The physical plant (drop_mass.toml) swings at ~1.9 Hz and its braid
+  // friction damps the swing within a cycle: there this gate alone changes nothing
+  // measurable (README, the gates table). A pamsim addition: 0 switches it off.
   double refractory_s = 0.5;
   // reflex.arm_after_s >= 0. Default 0.1 s: three time constants (tau = 32 ms) of a 5 Hz
-  // pressure low-pass when one is on (sensors.pressure_lowpass_hz), and still before a mass
+  // (cut-off) pressure low-pass when one is on (sensors.pressure_lowpass_hz), and still before a mass
   // dropped from 14 cm at t = 0 lands (0.17 s). A pamsim addition: 0 switches it off.
   double arm_after_s = 0.1;
 };

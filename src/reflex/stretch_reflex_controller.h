@@ -34,8 +34,10 @@ struct ReflexConfig : StretchReflexParams {
   // reflex.lowpass_hz: first-order low-pass on the velocity fed to the reflex, 0 (off) or
   // (0, control_hz / 2] (applied by the sensing, SensingConfig::velocity_lowpass_hz).
   // Default off: DESIGN.md measured that 10 Hz delays the trigger by ~30 ms and halves the
-  // gain and 5 Hz never triggers; at higher noise a low-pass on the pressure
-  // (sensors.pressure_lowpass_hz) removes mistrips instead (see its caveat in sensors.h).
+  // gain and 5 Hz never triggers. On the physical plant (README, the noise sweep) 10 Hz
+  // costs the model reflex 0.9 deg of drop at the default noise and moves the onset of
+  // noise mistrips from 2x to 6x the default noise (sensors.noise_scale). A low-pass on the
+  // pressure (sensors.pressure_lowpass_hz) is no substitute (see its caveat in sensors.h).
   double lowpass_hz = 0.0;
   // Trigger gates (pamsim's additions; the paper reports the problems they address, Sec. V-C:
   // "mistripping the reflex or making the reflex to continue triggering itself").
