@@ -126,6 +126,9 @@ TEST(ScenarioTest, EveryBadValueNamesItsKey) {
       {"sensors.fiber_noise_mm_s=-2", "sensors.fiber_noise_mm_s"},
       {"sensors.noise_scale=-1", "sensors.noise_scale"},
       {"valve.dead_time_ms=-1", "valve.dead_time_ms"},
+      // a plant that is not the muscle its estimator describes (216 mm against 180 mm)
+      {"muscles.agonist.plant=\"../models/pams/plant_pam_a.toml\"", "muscles.agonist.plant"},
+      {"muscles.agonist.plant=\"../models/pams/missing.toml\"", "missing.toml"},
       {"valve.dead_time_ms=nan", "valve.dead_time_ms"},
       {"valve.valve_time_constant_ms=0", "valve.valve_time_constant_ms"},
       {"valve.proportional_band_kPa=5000", "valve.proportional_band_kPa"},

@@ -1,8 +1,10 @@
 // scenario_muscles.cc: muscles.<actuator>.* (parameter file, label, line, command schedule)
 // and the pamsim 0.1 shorthands model.<actuator>_params and pressure.<actuator>_MPa.
+#include <cmath>
 #include <optional>
 #include <set>
 
+#include "pam_actuator/format.h"
 #include "pam_actuator/plant_params.h"
 #include "pam_actuator/units.h"
 #include "sim/io/calibration_file.h"
@@ -123,6 +125,24 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
         throw InputError(m.key + ".plant: " + e.what());
       }
     });
+    // the estimator must describe this muscle: its file's Table I length and braid angle,
+    // where it gives them, are the plant's (the diameter may differ: plant_agonist.toml)
+    if (m.pam.geometry) {
+      const PamGeometry& g = *m.pam.geometry;
+      const auto mismatch = [&](const char* what, double plant, double estimator,
+                                const char* unit) {
+        return std::string("has a ") + what + " of " + format_value(plant) + " " + unit +
+               ", but its estimator's file (" + m.params_file + ", [geometry]) describes " +
+               format_value(estimator) + " " + unit;
+      };
+      in.check(std::abs(m.plant.length_m - g.length_m) <= 0.5e-3, m.key + ".plant",
+               mismatch("length", units::m_to_mm(m.plant.length_m), units::m_to_mm(g.length_m),
+                        "mm"));
+      in.check(std::abs(m.plant.braid_angle_rad - g.braid_angle_rad) <= units::deg_to_rad(0.5),
+               m.key + ".plant",
+               mismatch("braid angle", units::rad_to_deg(m.plant.braid_angle_rad),
+                        units::rad_to_deg(g.braid_angle_rad), "deg"));
+    }
   }
   const bool legacy = params_key != m.key + ".params";
   m.label = in.get_string(m.key + ".label", legacy ? legacy_label(name) : name);
