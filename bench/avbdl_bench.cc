@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "pam_actuator/avbdl.h"
+#include "pam_actuator/pam_params.h"
 #include "pam_actuator/plant_params.h"
 #include "pam_actuator/spring_model.h"
 
@@ -45,8 +46,8 @@ void BM_AvbdlForce(benchmark::State& state) {
 BENCHMARK(BM_AvbdlForce);
 
 void BM_SpringForceEq3(benchmark::State& state) {
-  const SpringModel law = spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,
-                                                        {0.911, 0.256, 7.00, -0.201, 0.0, 0.0});
+  const SpringModel law =
+      load_pam_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/table4_agonist.toml").spring;
   const std::vector<State> in = make_inputs();
   int k = 0;
   for (auto _ : state) {

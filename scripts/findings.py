@@ -54,7 +54,10 @@ def run(pamsim, threads, scenario, overrides):
                "--threads", str(threads), "--out", out]
         for o in overrides:
             cmd += ["--set", o]
-        subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+        # exit 4: a trial diverged; its summary says so and the row still counts it
+        done = subprocess.run(cmd, stdout=subprocess.DEVNULL)
+        if done.returncode not in (0, 4):
+            sys.exit(f"findings.py: {' '.join(cmd)} exited {done.returncode}")
         with open(os.path.join(out, "summary.json")) as f:
             return json.load(f)["metrics"]
 
@@ -86,12 +89,13 @@ def table(pamsim, threads, rows, header, base_overrides=()):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--pamsim", default="build/src/sim/pamsim")
-    ap.add_argument("--out", default="renders/findings")
+    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+    ap.add_argument("--pamsim", default=os.path.join(root, "build/src/sim/pamsim"))
+    ap.add_argument("--out", default=os.path.join(root, "renders/findings"))
     ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
     args = ap.parse_args()
-    pamsim = os.path.abspath(args.pamsim)
-    os.chdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+    pamsim, out = os.path.abspath(args.pamsim), os.path.abspath(args.out)
+    os.chdir(root)
 
     passive = run(pamsim, args.threads, "drop_mass_passive.toml", [])
     ideal = run(pamsim, args.threads, "drop_mass_ideal.toml", [])
@@ -122,11 +126,11 @@ def main():
         table(pamsim, args.threads, GATE_ROWS, "gate", REGULATOR_ROWS[-1][1]),
     ]
     text = "\n".join(parts) + "\n"
-    os.makedirs(args.out, exist_ok=True)
-    tmp = os.path.join(args.out, ".findings.md.tmp")
+    os.makedirs(out, exist_ok=True)
+    tmp = os.path.join(out, ".findings.md.tmp")
     with open(tmp, "w") as f:
         f.write(text)
-    os.replace(tmp, os.path.join(args.out, "findings.md"))
+    os.replace(tmp, os.path.join(out, "findings.md"))
     print(text)
 
 

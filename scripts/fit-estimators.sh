@@ -12,10 +12,10 @@
 # FGP-5 force gauge 0.05 N, DS-025 encoder 0.01 mm (standard deviations, assumptions of
 # their repeatability class), seed 1.
 set -euo pipefail
-pamsim="${1:-build/src/sim/pamsim}"
-pamsim="$(realpath "$pamsim")"
+root="$(cd "$(dirname "$0")/.." && pwd)"
+pamsim="$(realpath "${1:-$root/build/src/sim/pamsim}")"
 out="${2:+$(realpath "$2")}"
-cd "$(dirname "$0")/.."
+cd "$root"
 csv_dir="${out:-renders/tensile}"
 out="${out:-models/pams}"
 mkdir -p "$csv_dir" "$out"

@@ -103,6 +103,10 @@ Shape shape_of(const AvbdlParams& p) {
   return s;
 }
 
+// the lengths the law holds for (avbdl_min_length, avbdl_max_length)
+double min_length(const Shape& shape) { return shape.braid.fibre_length_m / std::sqrt(3.0); }
+double max_length(const Shape& shape) { return kAvbdlMaxStretch * shape.braid.fibre_length_m; }
+
 double dvolume_dlength(const AvbdlParams& p, const Shape& shape, double length_m) {
   const BraidGeometry& g = shape.braid;
   const double ld = p.end_length_m;
@@ -152,7 +156,7 @@ double static_force(const AvbdlParams& p, const Shape& shape, double p_pa, doubl
 double free_length(const AvbdlParams& p, const Shape& shape, double p_pa) {
   if (std::isnan(p_pa)) return p_pa;   // no length for no pressure: the trial diverges
   if (!(p_pa > 0.0)) return p.length_m;
-  const double lo = shape.braid.fibre_length_m / std::sqrt(3.0);
+  const double lo = min_length(shape);
   const auto force = [&](double l) { return static_force(p, shape, p_pa, l); };
   if (force(lo) >= 0.0) return lo;              // still pulling at the braid's limit
   if (force(p.length_m) <= 0.0) return p.length_m;
@@ -256,13 +260,9 @@ BraidGeometry avbdl_braid(const AvbdlParams& p) {
   return braid_from_initial_shape(p.length_m, p.diameter_m, p.braid_angle_rad);
 }
 
-double avbdl_min_length(const AvbdlParams& p) {
-  return avbdl_braid(p).fibre_length_m / std::sqrt(3.0);
-}
+double avbdl_min_length(const AvbdlParams& p) { return min_length(shape_of(p)); }
 
-double avbdl_max_length(const AvbdlParams& p) {
-  return kAvbdlMaxStretch * avbdl_braid(p).fibre_length_m;
-}
+double avbdl_max_length(const AvbdlParams& p) { return max_length(shape_of(p)); }
 
 double avbdl_middle_radius(const AvbdlParams& p, double length_m) {
   // the braid's diameter sqrt(b^2 - L^2) / (pi n), in place of Eq. (26)
@@ -355,7 +355,7 @@ double avbdl_free_length(const AvbdlParams& p, double p_pa) {
 double avbdl_length_at_force(const AvbdlParams& p, double p_pa, double f_n) {
   const Shape shape = shape_of(p);
   const double lo = free_length(p, shape, p_pa);
-  const double hi = kAvbdlMaxStretch * shape.braid.fibre_length_m;
+  const double hi = max_length(shape);
   const auto excess = [&](double l) { return static_force(p, shape, p_pa, l) - f_n; };
   if (!(f_n > 0.0) || excess(hi) < 0.0) return -1.0;
   if (excess(lo) >= 0.0) return lo;
@@ -398,17 +398,22 @@ double avbdl_force(const AvbdlParams& p, double p_pa, double length_m,
 
 double avbdl_line_pull(const AvbdlParams& p, double p_pa, double taut_length_m,
                        double length_rate_m_per_s) {
+  // Eq. (25) plus the friction term at the line's length, held at the law's last length
+  // past avbdl_max_length; a muscle at its full contraction (or pushing) pulls nothing
   const Shape shape = shape_of(p);
-  const double l = std::min(taut_length_m, kAvbdlMaxStretch * shape.braid.fibre_length_m);
-  if (l <= shape.braid.fibre_length_m / std::sqrt(3.0)) return 0.0;
+  const double l = std::min(taut_length_m, max_length(shape));
+  if (l <= min_length(shape)) return 0.0;
   const double f = static_force(p, shape, p_pa, l) +
                    avbdl_smooth_friction_force(p, p_pa, l, length_rate_m_per_s);
   return std::max(f, 0.0);
 }
 
 double avbdl_line_muscle_length(const AvbdlParams& p, double p_pa, double taut_length_m) {
+  // while Eq. (25) pulls at the line's length the muscle is that long; otherwise the line
+  // is slack and the muscle has contracted to where Eq. (25) is zero (a root solve, so
+  // only then)
   const Shape shape = shape_of(p);
-  const double l = std::min(taut_length_m, kAvbdlMaxStretch * shape.braid.fibre_length_m);
+  const double l = std::min(taut_length_m, max_length(shape));
   if (static_force(p, shape, p_pa, l) > 0.0) return taut_length_m;
   return std::max(taut_length_m, free_length(p, shape, p_pa));
 }

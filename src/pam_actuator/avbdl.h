@@ -190,7 +190,7 @@ double avbdl_force(const AvbdlParams& params, double p_pa, double length_m,
                    double length_rate_m_per_s);
 
 // For a muscle on a line whose ends are `taut_length_m` apart (the co-simulation's tendon
-// length minus the line): its pull [N] >= 0, zero when it is slack (at or below the braid's
+// length minus the line): its pull [N] >= 0 (Eq. (25) plus the friction term), zero when it is slack (at or below the braid's
 // full contraction, or pulling nothing), the law at min(taut, avbdl_max_length) otherwise;
 // and its own length [m]: the taut length while it pulls, else its free length (a slack
 // muscle rests at avbdl_free_length, whatever the line's ends do). Each derives the

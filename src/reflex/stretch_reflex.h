@@ -52,8 +52,8 @@ struct StretchReflexParams {
   // measurable (README, the gates table). A pamsim addition: 0 switches it off.
   double refractory_s = 0.5;
   // reflex.arm_after_s >= 0. Default 0.1 s: three time constants (tau = 32 ms) of a 5 Hz
-  // (cut-off) pressure low-pass when one is on (sensors.pressure_lowpass_hz), and still before a mass
-  // dropped from 14 cm at t = 0 lands (0.17 s). A pamsim addition: 0 switches it off.
+  // (cut-off) pressure low-pass when one is on (sensors.pressure_lowpass_hz), and still
+  // before a mass dropped from 14 cm at t = 0 lands (0.17 s). A pamsim addition: 0 switches it off.
   double arm_after_s = 0.1;
 };
 

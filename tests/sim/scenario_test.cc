@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,11 @@ std::string error_of(const std::vector<std::string>& overrides,
     return e.what();
   }
   return "";
+}
+
+std::string pamsim_test_read(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 std::string write_temp(const std::string& name, const std::string& text) {
@@ -56,6 +62,21 @@ TEST(ScenarioTest, OverridesTakeEffect) {
   EXPECT_EQ(sc.valve_model, ValveModel::kFirstOrder);
 }
 
+// A plant must be the muscle its estimator file describes: its length and braid angle are
+// the ones of that file's [geometry] (the diameter may differ, as plant_agonist.toml's does).
+TEST(ScenarioTest, PlantMustBeTheMuscleItsEstimatorDescribes) {
+  std::string text =
+      pamsim_test_read(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_agonist.toml");
+  const std::string angle = "braid_angle_deg = 25";
+  ASSERT_NE(text.find(angle), std::string::npos);
+  text.replace(text.find(angle), angle.size(), "braid_angle_deg = 30");
+  const std::string plant = write_temp("plant_30deg.toml", text);
+  EXPECT_NE(error_of({"muscles.agonist.plant=\"" + plant + "\""})
+                .find("muscles.agonist.plant has a braid angle of 30 deg, but its estimator's"),
+            std::string::npos);
+  EXPECT_EQ(error_of({"muscles.agonist.plant=\"../models/pams/plant_agonist.toml\""}), "");
+}
+
 // valve.dead_time_ms, valve.valve_time_constant_ms and valve.proportional_band_kPa replace
 // the pneumatics file's [regulator] values, scaled as the file's keys are; absent, the
 // file's values stand.
@@ -64,11 +85,17 @@ TEST(ScenarioTest, RegulatorKeysOverrideThePneumaticsFile) {
   EXPECT_EQ(base.pneumatics.regulator_dead_time_s, 5.0 * 1e-3);
   EXPECT_EQ(base.pneumatics.regulator_valve_time_constant_s, 10.0 * 1e-3);
   EXPECT_EQ(base.pneumatics.regulator_proportional_band_pa, 20.0 * 1e3);
-  const Scenario sc = load_scenario(kScenario, {"valve.dead_time_ms=2", "valve.valve_time_constant_ms=20",
-                                                "valve.proportional_band_kPa=50"});
+  const Scenario sc =
+      load_scenario(kScenario, {"valve.dead_time_ms=2", "valve.valve_time_constant_ms=20",
+                                "valve.proportional_band_kPa=50"});
   EXPECT_EQ(sc.pneumatics.regulator_dead_time_s, 2.0 * 1e-3);
   EXPECT_EQ(sc.pneumatics.regulator_valve_time_constant_s, 20.0 * 1e-3);
   EXPECT_EQ(sc.pneumatics.regulator_proportional_band_pa, 50.0 * 1e3);
+  // another valve model would ignore them: refused, by key
+  const std::string ideal = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass_ideal.toml";
+  EXPECT_NE(error_of({"valve.dead_time_ms=5"}, ideal).find("valve.dead_time_ms is used only by"),
+            std::string::npos);
+  EXPECT_EQ(error_of({"valve.dead_time_ms=5", "valve.model=\"regulator\""}, ideal), "");
 }
 
 struct BadValue {
@@ -127,10 +154,12 @@ TEST(ScenarioTest, EveryBadValueNamesItsKey) {
       {"sensors.noise_scale=-1", "sensors.noise_scale"},
       {"valve.dead_time_ms=-1", "valve.dead_time_ms"},
       // a plant that is not the muscle its estimator describes (216 mm against 180 mm)
-      {"muscles.agonist.plant=\"../models/pams/plant_pam_a.toml\"", "muscles.agonist.plant"},
+      {"muscles.agonist.plant=\"../models/pams/plant_pam_a.toml\"",
+       "muscles.agonist.plant has a length of 216 mm, but its estimator's file"},
       {"muscles.agonist.plant=\"../models/pams/missing.toml\"", "missing.toml"},
       {"valve.dead_time_ms=nan", "valve.dead_time_ms"},
       {"valve.valve_time_constant_ms=0", "valve.valve_time_constant_ms"},
+      {"valve.proportional_band_kPa=0", "valve.proportional_band_kPa"},
       {"valve.proportional_band_kPa=5000", "valve.proportional_band_kPa"},
       {"sensors.noise_scale=1e4", "sensors.noise_scale"},
       {"controller.p_max_MPa=0", "controller.p_max_MPa"},

@@ -47,21 +47,26 @@ void read_model(ConfigReader& in, Scenario* sc) {
   p.command_max_gauge_pa = units::mpa_to_pa(
       in.get_double("valve.command_max_MPa", units::pa_to_mpa(p.command_max_gauge_pa)));
   // the regulator's loop (valve.model = "regulator"), over the pneumatics file's [regulator]:
-  // a scenario or a sweep axis picks a point of its bracket
-  // (the ranges and scales of pneumatics.toml's [regulator] keys)
-  const auto regulator_key = [&](const char* key, double scale, double hi, double* field) {
+  // a scenario or a sweep axis picks a point of its bracket (the ranges and scales of that
+  // file's keys); refused with another valve model, which would ignore them
+  const auto regulator_key = [&](const char* key, double scale, bool zero_ok, double hi,
+                                 double* field) {
     if (!in.has(key)) return;
+    in.check(sc->valve_model == ValveModel::kRegulator, key,
+             "is used only by valve.model = \"regulator\", not \"" + valve + "\"");
     const double v = in.get_double(key, *field / scale);
-    in.check(v >= 0.0 && v <= hi, key, "must be within [0, " + format_value(hi) + "], got " +
-                                           format_value(v));
+    in.check((zero_ok ? v >= 0.0 : v > 0.0) && v <= hi, key,
+             std::string("must be within ") + (zero_ok ? "[0, " : "(0, ") + format_value(hi) +
+                 "], got " + format_value(v));
     *field = v * scale;
   };
-  regulator_key("valve.dead_time_ms", 1e-3, 1000.0, &p.regulator_dead_time_s);
-  regulator_key("valve.valve_time_constant_ms", 1e-3, 10000.0,
+  regulator_key("valve.dead_time_ms", 1e-3, true, 1000.0, &p.regulator_dead_time_s);
+  regulator_key("valve.valve_time_constant_ms", 1e-3, false, 10000.0,
                 &p.regulator_valve_time_constant_s);
-  regulator_key("valve.proportional_band_kPa", 1e3, 2000.0, &p.regulator_proportional_band_pa);
-  for (const char* key : {"valve.supply_MPa", "valve.command_max_MPa", "valve.dead_time_ms",
-                          "valve.valve_time_constant_ms", "valve.proportional_band_kPa"}) {
+  regulator_key("valve.proportional_band_kPa", 1e3, false, 2000.0,
+                &p.regulator_proportional_band_pa);
+  // a rig's supply and command range must still make sense together
+  for (const char* key : {"valve.supply_MPa", "valve.command_max_MPa"}) {
     if (!in.has(key)) continue;
     in_file(in, [&] {
       validate_pneumatic_params(p, key);

@@ -13,6 +13,11 @@
 namespace pamsim {
 namespace {
 
+// How far a plant's length and braid angle may be from its estimator file's [geometry]:
+// the files' rounding, not a physical allowance
+constexpr double kPlantLengthTolerance_m = 0.5e-3;
+constexpr double kPlantAngleTolerance_rad = 0.5 * units::kPi / 180.0;
+
 std::string strip(const std::string& s, const std::string& prefix, const std::string& suffix) {
   return s.substr(prefix.size(), s.size() - prefix.size() - suffix.size());
 }
@@ -125,8 +130,9 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
         throw InputError(m.key + ".plant: " + e.what());
       }
     });
-    // the estimator must describe this muscle: its file's Table I length and braid angle,
-    // where it gives them, are the plant's (the diameter may differ: plant_agonist.toml)
+    // the estimator must describe this muscle: its file's [geometry] length (Table I) and
+    // braid angle (assumed there), where it gives them, are the plant's (the diameter may
+    // differ: plant_agonist.toml)
     if (m.pam.geometry) {
       const PamGeometry& g = *m.pam.geometry;
       const auto mismatch = [&](const char* what, double plant, double estimator,
@@ -135,10 +141,10 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
                ", but its estimator's file (" + m.params_file + ", [geometry]) describes " +
                format_value(estimator) + " " + unit;
       };
-      in.check(std::abs(m.plant.length_m - g.length_m) <= 0.5e-3, m.key + ".plant",
+      in.check(std::abs(m.plant.length_m - g.length_m) <= kPlantLengthTolerance_m, m.key + ".plant",
                mismatch("length", units::m_to_mm(m.plant.length_m), units::m_to_mm(g.length_m),
                         "mm"));
-      in.check(std::abs(m.plant.braid_angle_rad - g.braid_angle_rad) <= units::deg_to_rad(0.5),
+      in.check(std::abs(m.plant.braid_angle_rad - g.braid_angle_rad) <= kPlantAngleTolerance_rad,
                m.key + ".plant",
                mismatch("braid angle", units::rad_to_deg(m.plant.braid_angle_rad),
                         units::rad_to_deg(g.braid_angle_rad), "deg"));

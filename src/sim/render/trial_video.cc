@@ -68,7 +68,6 @@ void init_figure(mjvFigure* figure, const char* title, const char* y_format, dou
                  const std::vector<std::array<float, 3>>& line_rgb) {
   mjv_defaultFigure(figure);
   std::snprintf(figure->title, sizeof(figure->title), "%s", title);
-  std::snprintf(figure->xformat, sizeof(figure->xformat), "%%.0f");
   std::snprintf(figure->yformat, sizeof(figure->yformat), "%s", y_format);
   figure->flg_legend = 0;
   figure->range[0][0] = 0.0f;
@@ -76,6 +75,11 @@ void init_figure(mjvFigure* figure, const char* title, const char* y_format, dou
   figure->figurergba[3] = 0.6f;
   figure->panergba[3] = 0.6f;
   figure->gridsize[0] = 4;
+  // time labels at the 4 grid lines: whole seconds only when they fall on whole seconds (a
+  // 1.2 s trial would read "0 0 1 1")
+  const double x_step = duration_s / (figure->gridsize[0] - 1);
+  const bool whole = std::abs(x_step - std::round(x_step)) < 1e-9;
+  std::snprintf(figure->xformat, sizeof(figure->xformat), "%s", whole ? "%.0f" : "%.1f");
   figure->gridsize[1] = 3;
   int i = 0;
   for (const auto& rgb : line_rgb) std::copy(rgb.begin(), rgb.end(), figure->linergb[i++]);
