@@ -16,32 +16,39 @@ int default_thread_count() {
   return n == 0 ? 1 : static_cast<int>(n);
 }
 
-std::vector<TrialResult> run_trials(const TrialModel& model, const Scenario& sc, int trials,
-                                    int threads, bool keep_trajectory) {
-  if (trials < 1) throw InputError("--trials must be >= 1, got " + std::to_string(trials));
+void parallel_for(int n, int threads, const std::function<void(int)>& job) {
   if (threads < 1) throw InputError("--threads must be >= 1, got " + std::to_string(threads));
-  std::vector<TrialResult> results(trials);
   std::atomic<int> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
 
-  // each worker takes the next trial index until none is left
+  // each worker takes the next index until none is left
   auto worker = [&] {
-    for (int k = next++; k < trials; k = next++) {
+    for (int k = next++; k < n; k = next++) {
       try {
-        results[k] = run_trial(model, sc, sc.seed + static_cast<std::uint64_t>(k), keep_trajectory);
+        job(k);
       } catch (...) {
         std::lock_guard<std::mutex> lock(failure_mutex);
         if (!failure) failure = std::current_exception();
       }
     }
   };
-  const int n_threads = std::min(threads, trials);
+  const int n_threads = std::max(1, std::min(threads, n));
   std::vector<std::thread> pool;
   for (int i = 1; i < n_threads; ++i) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
+}
+
+std::vector<TrialResult> run_trials(const TrialModel& model, const Scenario& sc, int trials,
+                                    int threads, bool keep_trajectory) {
+  if (trials < 1) throw InputError("--trials must be >= 1, got " + std::to_string(trials));
+  if (threads < 1) throw InputError("--threads must be >= 1, got " + std::to_string(threads));
+  std::vector<TrialResult> results(trials);
+  parallel_for(trials, threads, [&](int k) {
+    results[k] = run_trial(model, sc, sc.seed + static_cast<std::uint64_t>(k), keep_trajectory);
+  });
   return results;
 }
 

@@ -3,6 +3,7 @@
 // mjModel is shared read-only, so results do not depend on the thread count.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "sim/core/scenario.h"
@@ -13,6 +14,11 @@ namespace pamsim {
 
 // Default thread count: all cores.
 int default_thread_count();
+
+// Calls job(k) for k = 0 .. n-1 on `threads` threads (the caller's among them), each index
+// once, in no particular order; job must write only its own results. The first exception
+// a job throws is rethrown after every thread has stopped. Throws InputError if threads < 1.
+void parallel_for(int n, int threads, const std::function<void(int)>& job);
 
 // Runs `trials` trials with seeds seed..seed+trials-1 on `threads` threads; results in
 // seed order. Throws InputError if trials < 1 or threads < 1.
