@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   pamsim::add_sweep_command(app);
   pamsim::add_export_command(app);
   pamsim::add_report_command(app);
+  pamsim::add_validate_command(app);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,298 @@
+// reaching.cc: see reaching.h.
+#include "sim/validate/reaching.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <mutex>
+#include <sstream>
+
+#include "pam_actuator/atomic_file.h"
+#include "pam_actuator/format.h"
+#include "pam_actuator/input_error.h"
+#include "sim/core/runner.h"
+#include "sim/core/trial_model.h"
+#include "sim/io/config_reader.h"
+#include "sim/io/gnuplot.h"
+#include "sim/io/outputs.h"
+#include "sim/io/scenario_file.h"
+
+namespace pamsim {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+const char* const kMethods[] = {"model", "fiber"};
+const char* const kParts[] = {"all", "before_slack", "after_slack"};
+
+// Max and RMS of errors in % of length, pooled.
+struct ErrorPool {
+  double sum_sq = 0.0, max_abs = 0.0;
+  int n = 0;
+  void add(double e) {
+    sum_sq += e * e;
+    max_abs = std::max(max_abs, std::fabs(e));
+    ++n;
+  }
+  ErrorPct result() const { return {n ? max_abs : kNaN, n ? std::sqrt(sum_sq / n) : kNaN}; }
+};
+
+// One muscle's estimates over a trajectory's window: the model's from its log column, the
+// fiber's as its rate integrated from the encoder at the window's start (Sec. III-C)
+struct MuscleErrors {
+  std::vector<double> time_s, model_pct, fiber_pct;
+};
+
+MuscleErrors muscle_errors(const Trajectory& tr, const std::string& label, double start_s,
+                           double end_s, double dt_s) {
+  const std::size_t t = tr.column("time_s"), truth = tr.column("length_" + label + "_mm");
+  const std::size_t est = tr.column("length_est_" + label + "_mm");
+  const std::size_t rate = tr.column("fiber_rate_" + label + "_mm_s");
+  MuscleErrors out;
+  double fiber = kNaN;
+  for (std::size_t i = 0; i < tr.rows(); ++i) {
+    const double time = tr.at(i, t);
+    if (time < start_s - 1e-9 || time > end_s + 1e-9) continue;
+    // the fiber length: calibrated at the first sample, then its rate over each period
+    fiber = std::isnan(fiber) ? tr.at(i, truth) : fiber + tr.at(i, rate) * dt_s;
+    const double l = tr.at(i, truth);
+    out.time_s.push_back(time);
+    out.model_pct.push_back(100.0 * (tr.at(i, est) - l) / l);
+    out.fiber_pct.push_back(100.0 * (fiber - l) / l);
+  }
+  return out;
+}
+
+}  // namespace
+
+ReachingValidationSpec load_reaching_validation(const std::string& path) {
+  ConfigReader in(path);
+  ReachingValidationSpec spec;
+  spec.file = path;
+  spec.scenario_file = in.get_path("scenario", "");
+  in.check(!spec.scenario_file.empty(), "scenario", "is required (the reaching scenario)");
+  const std::int64_t trials = in.get_int("trials", spec.trials);
+  in.check(trials >= 1 && trials <= 1000, "trials", "must be in [1, 1000], got " +
+                                                        std::to_string(trials));
+  spec.trials = static_cast<int>(trials);
+  const std::vector<double> window = in.get_double_list("window_s", {});
+  in.check(window.size() == 2 && window[0] >= 0.0 && window[1] > window[0], "window_s",
+           "must be [start, end] with 0 <= start < end");
+  spec.window_start_s = window[0];
+  spec.window_end_s = window[1];
+  spec.min_slack_s = in.get_double("min_slack_s", spec.min_slack_s);
+  in.check(spec.min_slack_s > 0.0, "min_slack_s", "must be > 0 s, got " +
+                                                      format_value(spec.min_slack_s));
+  for (const std::string& name : in.child_keys("paper")) {
+    const std::string key = "paper." + name;
+    const std::vector<double> v = in.get_double_list(key, {});
+    in.check(v.size() == 2 && v[0] >= 0.0 && v[1] >= 0.0, key,
+             "must be [max, RMSE] in % of length, both >= 0");
+    in.check(name.rfind("model_", 0) == 0 || name.rfind("fiber_", 0) == 0, key,
+             "must start with model_ or fiber_");
+    spec.paper[name] = {v[0], v[1]};
+  }
+  in.raw("paper");
+  in.reject_unknown();
+  return spec;
+}
+
+double slack_episode_start(const Trajectory& tr, const std::string& label, double start_s,
+                           double end_s, double min_slack_s) {
+  const std::size_t t = tr.column("time_s"), force = tr.column("force_" + label + "_N");
+  bool was_taut = false;
+  double slack_since = kNaN;
+  for (std::size_t i = 0; i < tr.rows(); ++i) {
+    const double time = tr.at(i, t);
+    if (time < start_s - 1e-9) continue;
+    if (time > end_s + 1e-9) break;
+    if (tr.at(i, force) > 0.0) {
+      was_taut = true;
+      slack_since = kNaN;
+      continue;
+    }
+    if (!was_taut) continue;
+    if (std::isnan(slack_since)) slack_since = time;
+    if (time - slack_since >= min_slack_s - 1e-9) return slack_since;
+  }
+  return kNaN;
+}
+
+ReachingValidationResult run_reaching_validation(const ReachingValidationSpec& spec,
+                                                 const ValidationOptions& options) {
+  ReachingValidationResult result;
+  std::vector<std::string> overrides = options.overrides;
+  if (options.seed) overrides.push_back("seed=" + std::to_string(*options.seed));
+  result.scenario = load_scenario(spec.scenario_file, overrides);
+  const Scenario& sc = result.scenario;
+  if (spec.window_end_s > sc.duration_s) {
+    throw InputError(spec.file + ": window_s ends at " + format_value(spec.window_end_s) +
+                     " s, after the scenario's sim.duration_s = " + format_value(sc.duration_s) +
+                     " s");
+  }
+  const TrialModel model = load_trial_model(sc);
+  if (options.started) options.started(spec.trials);
+
+  result.trials.resize(spec.trials);
+  std::mutex progress_mutex;
+  int done = 0;
+  parallel_for(spec.trials, options.threads, [&](int k) {
+    result.trials[k] = run_trial(model, sc, sc.seed + static_cast<std::uint64_t>(k));
+    if (options.progress) {
+      std::lock_guard<std::mutex> lock(progress_mutex);
+      options.progress(++done, spec.trials);
+    }
+  });
+
+  const double dt = 1.0 / sc.control_hz;
+  for (const MuscleSpec& m : sc.muscles) {
+    for (const TrialResult& r : result.trials) {
+      if (!r.trajectory.has_column("force_" + m.label + "_N")) {
+        throw InputError(spec.scenario_file + ": its log has no force_" + m.label +
+                         "_N column (a reaching scenario logs every muscle)");
+      }
+    }
+    std::vector<double> starts;
+    // pools per method and part, over every trial
+    ErrorPool pools[2][3];
+    for (const TrialResult& r : result.trials) {
+      const double slack = slack_episode_start(r.trajectory, m.label, spec.window_start_s,
+                                               spec.window_end_s, spec.min_slack_s);
+      starts.push_back(slack);
+      const MuscleErrors e =
+          muscle_errors(r.trajectory, m.label, spec.window_start_s, spec.window_end_s, dt);
+      for (std::size_t i = 0; i < e.time_s.size(); ++i) {
+        const int part = std::isnan(slack) ? 1 : (e.time_s[i] < slack ? 1 : 2);
+        for (int method = 0; method < 2; ++method) {
+          const double err = method == 0 ? e.model_pct[i] : e.fiber_pct[i];
+          pools[method][0].add(err);
+          pools[method][part].add(err);
+        }
+      }
+    }
+    result.slack_start_s.push_back(starts);
+    for (int method = 0; method < 2; ++method) {
+      for (int part = 0; part < 3; ++part) {
+        ReachingRow row;
+        row.muscle = m.actuator;
+        row.label = m.label;
+        row.method = kMethods[method];
+        row.part = kParts[part];
+        row.sim = pools[method][part].result();
+        row.samples = pools[method][part].n;
+        std::string key = row.method + "_" + row.muscle;
+        if (part > 0) key += std::string("_") + kParts[part];
+        const auto paper = spec.paper.find(key);
+        if (paper != spec.paper.end()) row.paper = paper->second;
+        result.rows.push_back(row);
+      }
+    }
+  }
+  return result;
+}
+
+std::string table5_csv(const ReachingValidationResult& result) {
+  std::ostringstream out;
+  out << "muscle,method,part,samples,max_error_pct,rmse_pct,paper_max_error_pct,paper_rmse_pct,"
+         "slack_start_s\n";
+  const auto num = [](double v) { return std::isfinite(v) ? format_shortest(v) : std::string(); };
+  for (const ReachingRow& row : result.rows) {
+    std::size_t m = 0;
+    while (m < result.scenario.muscles.size() && result.scenario.muscles[m].actuator != row.muscle) ++m;
+    out << row.muscle << ',' << row.method << ',' << row.part << ',' << row.samples << ','
+        << num(row.sim.max) << ',' << num(row.sim.rmse) << ','
+        << (row.paper ? num(row.paper->max) : "") << ',' << (row.paper ? num(row.paper->rmse) : "")
+        << ',' << num(result.slack_start_s[m].front()) << '\n';
+  }
+  return out.str();
+}
+
+std::string table5_markdown(const ReachingValidationResult& result,
+                            const ReachingValidationSpec& spec) {
+  std::ostringstream out;
+  const auto cell = [](const ErrorPct& e, int samples) {
+    if (samples == 0) return std::string("-");
+    char buf[48];
+    std::snprintf(buf, sizeof(buf), "%.3g / %.3g", e.max, e.rmse);
+    return std::string(buf);
+  };
+  out << "# Table V in simulation: length estimation in the reaching task, error in % of length\n\n"
+      << "Each cell: simulation max / RMSE over " << spec.trials << " trials, "
+      << format_value(spec.window_start_s) << "-" << format_value(spec.window_end_s)
+      << " s (paper max / RMSE, seeds/000 Table V and Sec. IV-B; - where it gives none).\n\n";
+  out << "| method | part |";
+  for (const MuscleSpec& m : result.scenario.muscles) out << ' ' << m.actuator << " |";
+  out << "\n| --- | --- |";
+  for (std::size_t i = 0; i < result.scenario.muscles.size(); ++i) out << " --- |";
+  out << '\n';
+  for (const char* method : kMethods) {
+    for (const char* part : kParts) {
+      out << "| " << (std::string(method) == "model" ? "model Eq. (3)" : "fiber sensor") << " | "
+          << part << " |";
+      for (const MuscleSpec& m : result.scenario.muscles) {
+        for (const ReachingRow& row : result.rows) {
+          if (row.muscle != m.actuator || row.method != method || row.part != part) continue;
+          out << ' ' << cell(row.sim, row.samples);
+          if (row.paper) out << " (" << cell(*row.paper, 1) << ')';
+          out << " |";
+        }
+      }
+      out << '\n';
+    }
+  }
+  out << "\nSlack episodes (a taut line at zero tension for " << format_value(spec.min_slack_s)
+      << " s), start per trial [s]:\n\n";
+  for (std::size_t m = 0; m < result.scenario.muscles.size(); ++m) {
+    out << "- " << result.scenario.muscles[m].actuator << ":";
+    for (double s : result.slack_start_s[m]) out << ' ' << (std::isnan(s) ? "none" : format_value(s));
+    out << '\n';
+  }
+  return out.str();
+}
+
+void write_reaching_validation(const ReachingValidationResult& result,
+                               const ReachingValidationSpec& spec, const std::string& out_dir) {
+  make_directories(out_dir);
+  const Scenario& sc = result.scenario;
+  const Trajectory& tr = result.trials.front().trajectory;
+  GnuplotJob job;
+  job.width_px = 1200;
+  job.height_px = 900;
+  std::string shading, plots;
+  const char* colours[] = {"#c0392b", "#2471a3", "#7d3c98", "#117a65"};
+  for (std::size_t m = 0; m < sc.muscles.size(); ++m) {
+    const MuscleErrors e = muscle_errors(tr, sc.muscles[m].label, spec.window_start_s,
+                                         spec.window_end_s, 1.0 / sc.control_hz);
+    std::string data;
+    for (std::size_t i = 0; i < e.time_s.size(); ++i) {
+      data += gp_num(e.time_s[i]) + ' ' + gp_num(e.model_pct[i]) + ' ' + gp_num(e.fiber_pct[i]) + '\n';
+    }
+    const std::string name = "m" + std::to_string(m) + ".dat";
+    job.data_files.push_back({name, data});
+    const std::string colour = colours[m % 4];
+    const double slack = result.slack_start_s[m].front();
+    if (!std::isnan(slack)) {
+      shading += "set object rect from " + gp_num(slack) + ", graph 0 to " +
+                 gp_num(spec.window_end_s) + ", graph 1 fc rgb '" + colour +
+                 "' fs transparent solid 0.12 noborder\n";
+      shading += "set arrow from " + gp_num(slack) + ", graph 0 to " + gp_num(slack) +
+                 ", graph 1 nohead dt 2 lc rgb '" + colour + "'\n";
+    }
+    const std::string who = sc.muscles[m].actuator;
+    plots += (plots.empty() ? "" : ", ") + gp_quote(name) + " using 1:2 with lines lw 1.5 lc rgb '" +
+             colour + "' title " + gp_quote("model Eq. (3), " + who) + ", " + gp_quote(name) +
+             " using 1:3 with lines dt 2 lc rgb '" + colour + "' title " +
+             gp_quote("fiber sensor, " + who);
+  }
+  job.script = "set title " + gp_quote("Reaching task: length estimation error (Fig. 7); shaded: "
+                                       "after the line's slack episode") +
+               "\nset grid\nset key outside bottom center horizontal\nset xlabel 'time (s)'\n"
+               "set ylabel 'error (% of length)'\n" + shading + "plot " + plots + "\n";
+  run_gnuplot((fs::path(out_dir) / "fig7.png").string(), job);
+  write_file_atomically((fs::path(out_dir) / "table5.csv").string(), table5_csv(result));
+  write_file_atomically((fs::path(out_dir) / "table5.md").string(), table5_markdown(result, spec));
+}
+
+}  // namespace pamsim

@@ -1,0 +1,84 @@
+// reaching.h: the papers' reaching-task validation (seeds/000 Sec. II-C, III-C, IV-B, Table V,
+// Fig. 7): the arm's reaching scenario repeated over seeds; the model-based length estimate
+// (Eq. (9)-(10)) and the fiber sensor against the encoder, per muscle, over a window (the
+// ramps) and before / after the muscle's slack episode. The protocol is a file
+// (scenarios/validate_reaching.toml); its keys, paths relative to it:
+//   scenario      the reaching scenario, required (per muscle: length_<m>_mm, the encoder;
+//                 length_est_<m>_mm; fiber_rate_<m>_mm_s; force_<m>_N, the line's tension)
+//   trials        repetitions, seeds seed .. seed + trials - 1, in [1, 1000]; default 5
+//   window_s      [start, end] of the comparison [s], 0 <= start < end
+//   min_slack_s   a slack episode starts where a line that was taut inside the window has
+//                 zero tension for at least this long [s], > 0; default 0.1
+//   [paper]       <method>_<muscle>[_before_slack|_after_slack] = [max, RMSE] (% of
+//                 length), method "model" or "fiber", muscle the scenario's muscle name
+// The fiber sensor reads only the rate of length change: its length is the rate integrated
+// from the encoder's length at the window's start (the paper calibrated it so).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/core/scenario.h"
+#include "sim/core/trial.h"
+#include "sim/validate/length_estimation.h"
+
+namespace pamsim {
+
+struct ReachingValidationSpec {
+  std::string file;
+  std::string scenario_file;
+  int trials = 5;
+  double window_start_s = 0.0, window_end_s = 0.0;
+  double min_slack_s = 0.1;
+  std::map<std::string, ErrorPct> paper;   // "model_agonist", "fiber_antagonist_after_slack"
+};
+
+// Throws InputError "<file>: <key> <problem>".
+ReachingValidationSpec load_reaching_validation(const std::string& path);
+
+// One line of Table V: a method on a muscle over a part of the window, pooled over trials
+// (max of |error|, RMSE of every sample).
+struct ReachingRow {
+  std::string muscle;                 // the scenario's muscle (actuator) name
+  std::string label;                  // its column label ("ago")
+  std::string method;                 // "model" | "fiber"
+  std::string part;                   // "all" | "before_slack" | "after_slack"
+  ErrorPct sim;
+  int samples = 0;
+  std::optional<ErrorPct> paper;
+};
+
+struct ReachingValidationResult {
+  Scenario scenario;
+  std::vector<TrialResult> trials;
+  // per muscle (the scenario's order), per trial: the slack episode's start [s], or NaN
+  std::vector<std::vector<double>> slack_start_s;
+  std::vector<ReachingRow> rows;
+};
+
+// Runs the trials on `options.threads` threads (options.seed: the first seed) and computes
+// the rows. Throws InputError for bad overrides, a scenario whose log lacks a needed
+// column, or a window outside its duration.
+ReachingValidationResult run_reaching_validation(const ReachingValidationSpec& spec,
+                                                 const ValidationOptions& options);
+
+// The first slack episode of a muscle in one trajectory: the time [s] at which a line that
+// was taut inside [start, end] has zero tension for min_slack_s, or NaN.
+double slack_episode_start(const Trajectory& trajectory, const std::string& label,
+                           double start_s, double end_s, double min_slack_s);
+
+// out_dir/table5.csv (muscle, method, part, samples, max_error_pct, rmse_pct,
+// paper_max_error_pct, paper_rmse_pct, slack_start_s: the first trial's), out_dir/table5.md
+// (Table V's layout, the paper's values beside) and out_dir/fig7.png (the first trial's
+// errors over time, slack episodes shaded). Each file whole or not at all.
+void write_reaching_validation(const ReachingValidationResult& result,
+                               const ReachingValidationSpec& spec, const std::string& out_dir);
+
+std::string table5_csv(const ReachingValidationResult& result);
+std::string table5_markdown(const ReachingValidationResult& result,
+                            const ReachingValidationSpec& spec);
+
+}  // namespace pamsim

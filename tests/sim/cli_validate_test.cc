@@ -1,0 +1,140 @@
+// cli_validate_test.cc: `pamsim validate length-estimation` and `pamsim validate reaching` as
+// a user runs them: complete tables (every PAM, law and weight; finite values) and their
+// figures, the same bytes for the same seed, and bad input refused in one line with no
+// table left behind.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_util.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using pamsim_test::CliResult;
+using pamsim_test::fresh_dir;
+using pamsim_test::line_count;
+using pamsim_test::read_file;
+using pamsim_test::run_pamsim;
+
+std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::string cell;
+    std::istringstream l(line);
+    while (std::getline(l, cell, ',')) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.push_back("");
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+TEST(CliValidateTest, LengthEstimationWritesEveryPamLawAndWeight) {
+  const fs::path out = fresh_dir("cli_validate_le");
+  const CliResult r = run_pamsim("validate length-estimation --threads 2 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = csv_rows(read_file(out / "table3.csv"));
+  ASSERT_EQ(rows.size(), 1u + 4 * 3 * 2);   // header, PAMs A-D x Eq. (3)-(5) x 5 / 10 kg
+  EXPECT_EQ(rows[0][4], "max_error_pct");
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    ASSERT_EQ(rows[i].size(), 11u) << i;
+    EXPECT_EQ(rows[i][3], "ok") << i;
+    for (int c : {4, 5, 6, 7, 8, 9, 10}) {   // the simulation's, the paper's, the fit's
+      ASSERT_FALSE(rows[i][c].empty()) << "row " << i << " column " << c;
+      EXPECT_TRUE(std::isfinite(std::stod(rows[i][c]))) << "row " << i << " column " << c;
+    }
+  }
+  for (const char* pam : {"A", "B", "C", "D"}) {
+    EXPECT_TRUE(fs::exists(out / ("pam_" + std::string(pam) + ".png"))) << pam;
+    EXPECT_TRUE(fs::exists(out / "fits" / ("pam_" + std::string(pam) + "_eq4.toml"))) << pam;
+  }
+  const std::string md = read_file(out / "table3.md");
+  EXPECT_NE(md.find("| Eq. (5) |"), std::string::npos);
+  EXPECT_NE(md.find("(1.72 / 0.861)"), std::string::npos) << "Table III's PAM-A Eq. (3) beside";
+  EXPECT_EQ(r.out, md) << "the table is also printed";
+}
+
+TEST(CliValidateTest, ReachingWritesTableVAndFigure7) {
+  const fs::path out = fresh_dir("cli_validate_re");
+  const CliResult r = run_pamsim("validate reaching --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = csv_rows(read_file(out / "table5.csv"));
+  ASSERT_EQ(rows.size(), 1u + 2 * 2 * 3);   // muscles x methods x (all, before, after)
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    if (rows[i][2] != "all") continue;
+    EXPECT_TRUE(std::isfinite(std::stod(rows[i][4]))) << i;
+    EXPECT_TRUE(std::isfinite(std::stod(rows[i][5]))) << i;
+  }
+  EXPECT_TRUE(fs::exists(out / "fig7.png"));
+  EXPECT_NE(read_file(out / "table5.md").find("(8.82 / 5.24)"), std::string::npos);
+}
+
+TEST(CliValidateTest, SameSeedSameBytesAnotherSeedOtherNumbers) {
+  const fs::path a = fresh_dir("cli_validate_s1"), b = fresh_dir("cli_validate_s2"),
+                 c = fresh_dir("cli_validate_s3");
+  const std::string args = "validate length-estimation --pams D --set sim.duration_s=5 ";
+  ASSERT_EQ(run_pamsim(args + "--seed 7 --threads 1 --out " + a.string()).exit_code, 0);
+  ASSERT_EQ(run_pamsim(args + "--seed 7 --threads 2 --out " + b.string()).exit_code, 0);
+  ASSERT_EQ(run_pamsim(args + "--seed 8 --threads 2 --out " + c.string()).exit_code, 0);
+  EXPECT_EQ(read_file(a / "table3.csv"), read_file(b / "table3.csv"));
+  EXPECT_EQ(read_file(a / "table3.md"), read_file(b / "table3.md"));
+  EXPECT_NE(read_file(a / "table3.csv"), read_file(c / "table3.csv"));
+}
+
+TEST(CliValidateTest, BadInputIsOneLineAndLeavesNoTable) {
+  const fs::path dir = fresh_dir("cli_validate_bad");
+  // a protocol whose PAM-A plant has a braid angle no braid can have
+  std::string plant = read_file(fs::path(PAMSIM_SOURCE_DIR) / "models/pams/plant_pam_a.toml");
+  plant.replace(plant.find("braid_angle_deg = 25"), 20, "braid_angle_deg = 60");
+  pamsim_test::write_text(dir / "bad_plant.toml", plant);
+  std::string protocol =
+      read_file(fs::path(PAMSIM_SOURCE_DIR) / "scenarios/validate_length_estimation.toml");
+  const std::string src = "\"../models/pams/plant_pam_a.toml\"";
+  protocol.replace(protocol.find(src), src.size(), "\"" + (dir / "bad_plant.toml").string() + "\"");
+  std::string rig = "rig = \"pulley_sine_5kg.toml\"";
+  protocol.replace(protocol.find(rig), rig.size(),
+                   "rig = \"" + std::string(PAMSIM_SOURCE_DIR) + "/scenarios/pulley_sine_5kg.toml\"");
+  const std::string gauge = "\"../models/pams/table4_agonist.toml\"";
+  protocol.replace(protocol.find(gauge), gauge.size(),
+                   "\"" + std::string(PAMSIM_SOURCE_DIR) + "/models/pams/table4_agonist.toml\"");
+  for (const char* p : {"B", "C", "D"}) {
+    const std::string path = "\"../models/pams/plant_pam_" + std::string(1, char(p[0] + 32)) + ".toml\"";
+    protocol.replace(protocol.find(path), path.size(),
+                     "\"" + std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_pam_" +
+                         std::string(1, char(p[0] + 32)) + ".toml\"");
+  }
+  pamsim_test::write_text(dir / "protocol.toml", protocol);
+
+  const fs::path out = dir / "out";
+  fs::create_directories(dir / "a_file");
+  pamsim_test::write_text(dir / "a_file" / "f", "x");
+  struct Case {
+    std::string args, says;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"validate length-estimation --pams A,X --out " + out.string(), "unknown PAM X"},
+           {"validate length-estimation --out " + (dir / "a_file" / "f" / "sub").string(),
+            (dir / "a_file" / "f" / "sub").string()},
+           {"validate length-estimation " + (dir / "protocol.toml").string() + " --out " +
+                out.string(),
+            "braid_angle"},
+           {"validate length-estimation --set nosuch.key=1 --out " + out.string(), "nosuch.key"},
+           {"validate reaching --set sim.duration_s=5 --out " + out.string(), "window_s"},
+           {"validate reaching --threads -1 --out " + out.string(), "--threads"}}) {
+    const CliResult r = run_pamsim(c.args);
+    EXPECT_NE(r.exit_code, 0) << c.args;
+    EXPECT_EQ(line_count(r.err), 1) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out / "table3.csv")) << c.args;
+    EXPECT_FALSE(fs::exists(out / "table5.csv")) << c.args;
+  }
+}
+
+}  // namespace

@@ -1,0 +1,176 @@
+// validate_test.cc: the papers' validation protocols (src/sim/validate/) on the shipped
+// protocol files: the fits reproduce the plant's tensile data within the RMSE they report,
+// the pulley's true length follows the hanging weight, the reaching task's slack episode is
+// found where the antagonist's line goes slack, and the tables do not depend on the thread
+// count.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "pam_actuator/units.h"
+#include "sim/validate/length_estimation.h"
+#include "sim/validate/reaching.h"
+
+namespace pamsim {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kScenarios = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/";
+
+std::string fresh_out(const std::string& name) {
+  const fs::path dir = fs::path(::testing::TempDir()) / ("validate_" + name + "_" +
+                                                        std::to_string(::getpid()));
+  fs::remove_all(dir);
+  return dir.string();
+}
+
+// PAM-B and PAM-D (rubber and silicone, the papers' Fig. 5 and 6), short dynamic trials
+LengthValidationResult short_length_validation(const LengthValidationSpec& spec, int threads,
+                                               const std::string& out) {
+  ValidationOptions o;
+  o.out_dir = out;
+  o.threads = threads;
+  o.overrides = {"sim.duration_s=6"};
+  return run_length_validation(spec, o);
+}
+
+TEST(ValidateTest, FitsReproduceTheTensileDataWithinTheirReportedRmse) {
+  const LengthValidationSpec spec =
+      load_length_validation(kScenarios + "validate_length_estimation.toml", {"B", "D"});
+  ASSERT_EQ(spec.pams.size(), 2u);
+  EXPECT_EQ(spec.pams[0].name, "B");
+  const LengthValidationResult r = short_length_validation(spec, 2, fresh_out("fits"));
+  ASSERT_EQ(r.fits.size(), 6u);
+  for (const FittedLaw& f : r.fits) {
+    SCOPED_TRACE(f.pam + " " + to_string(f.law));
+    const std::vector<TensileRow>& rows = r.tensile[f.pam == "B" ? 0 : 1];
+    double sum_sq = 0.0, f_max = 0.0;
+    for (const TensileRow& row : rows) {
+      const double e = spring_force(f.fit.model, units::mpa_to_pa(row.pressure_mpa),
+                                    units::mm_to_m(row.deformation_mm)) - row.force_n;
+      sum_sq += e * e;
+      f_max = std::max(f_max, row.force_n);
+    }
+    // the law evaluated on the data gives back the RMSE the fit reports (to 0.1 %: at the
+    // free length the encoder's noise makes some d < 0, where the law pulls nothing and the
+    // fit's polynomial a little), and the fit is good
+    EXPECT_NEAR(std::sqrt(sum_sq / rows.size()), f.fit.rmse_n, 1e-3 * f.fit.rmse_n);
+    EXPECT_GE(f.max_residual_n, f.fit.rmse_n);
+    EXPECT_LT(f.fit.rmse_n, 0.1 * f_max);
+    EXPECT_GT(f.fit.r2, 0.95);
+    EXPECT_TRUE(fs::exists(f.params_file));
+  }
+  // the protocol's pressures (measured, with the sensor's noise): 0.4-0.8 MPa for B,
+  // 0.2-0.6 MPa for D
+  for (const auto& [index, lo, hi] : {std::tuple<int, double, double>{0, 0.4, 0.8}, {1, 0.2, 0.6}}) {
+    double p_min = 1.0, p_max = 0.0;
+    for (const TensileRow& row : r.tensile[index]) {
+      p_min = std::min(p_min, row.pressure_mpa);
+      p_max = std::max(p_max, row.pressure_mpa);
+    }
+    EXPECT_NEAR(p_min, lo, 0.005);
+    EXPECT_NEAR(p_max, hi, 0.005);
+  }
+}
+
+TEST(ValidateTest, PulleyTrueLengthFollowsTheHangingWeight) {
+  const LengthValidationSpec spec =
+      load_length_validation(kScenarios + "validate_length_estimation.toml", {"C"});
+  const LengthValidationResult r = short_length_validation(spec, 2, fresh_out("pulley"));
+  ASSERT_EQ(r.rows.size(), 6u);   // 3 laws x 2 weights
+  for (const DynamicRow& row : r.rows) {
+    ASSERT_EQ(row.status, "ok");
+    const Trajectory& tr = row.trajectory;
+    const std::size_t pos = tr.column("position_mm"), len = tr.column("length_pam_mm");
+    // the line is taut: the weight rises by what the PAM shortens
+    const double sum0 = tr.at(0, pos) + tr.at(0, len);
+    double travel = 0.0;
+    for (std::size_t i = 0; i < tr.rows(); ++i) {
+      EXPECT_NEAR(tr.at(i, pos) + tr.at(i, len), sum0, 1e-4) << "row " << i;
+      travel = std::max(travel, std::fabs(tr.at(i, pos)));
+    }
+    EXPECT_GT(travel, 3.0) << "the sine moves the weight by millimetres";
+    EXPECT_TRUE(std::isfinite(row.sim.max) && std::isfinite(row.sim.rmse));
+    EXPECT_GT(row.sim.rmse, 0.0);
+    EXPECT_GE(row.sim.max, row.sim.rmse);
+  }
+}
+
+TEST(ValidateTest, LengthTablesAreTheSameOnOneAndTwoThreads) {
+  const LengthValidationSpec spec =
+      load_length_validation(kScenarios + "validate_length_estimation.toml", {"A"});
+  const LengthValidationResult one = short_length_validation(spec, 1, fresh_out("t1"));
+  const LengthValidationResult two = short_length_validation(spec, 2, fresh_out("t2"));
+  EXPECT_EQ(table3_csv(one), table3_csv(two));
+  EXPECT_EQ(table3_markdown(one, spec), table3_markdown(two, spec));
+}
+
+Trajectory tension_log(const std::vector<double>& force_n) {
+  Trajectory tr;
+  tr.columns = {"time_s", "force_m_N"};
+  for (std::size_t i = 0; i < force_n.size(); ++i) {
+    tr.values.push_back(0.01 * static_cast<double>(i));
+    tr.values.push_back(force_n[i]);
+  }
+  return tr;
+}
+
+// A slack episode: a line that was taut inside the window at zero tension for min_slack_s;
+// slack from the start does not count, nor does a shorter dip.
+TEST(ValidateTest, SlackEpisodeIsALongEnoughDropOfATautLine) {
+  std::vector<double> f(100, 5.0);
+  for (int i = 0; i < 20; ++i) f[i] = 0.0;      // slack at the start: not an episode
+  f[40] = f[41] = 0.0;                          // a 20 ms dip: too short
+  for (int i = 70; i < 100; ++i) f[i] = 0.0;    // the episode, from 0.70 s
+  const Trajectory tr = tension_log(f);
+  EXPECT_NEAR(slack_episode_start(tr, "m", 0.0, 0.99, 0.1), 0.70, 1e-12);
+  EXPECT_TRUE(std::isnan(slack_episode_start(tr, "m", 0.0, 0.75, 0.1)));   // cut short
+  EXPECT_TRUE(std::isnan(slack_episode_start(tension_log(std::vector<double>(50, 3.0)), "m",
+                                             0.0, 0.49, 0.1)));
+}
+
+TEST(ValidateTest, ReachingFindsTheAntagonistsSlackAndIsThreadIndependent) {
+  const ReachingValidationSpec spec = load_reaching_validation(kScenarios + "validate_reaching.toml");
+  ValidationOptions o;
+  o.threads = 2;
+  const ReachingValidationResult r = run_reaching_validation(spec, o);
+  ASSERT_EQ(r.scenario.muscles.size(), 2u);
+  ASSERT_EQ(r.trials.size(), static_cast<std::size_t>(spec.trials));
+  // the antagonist's line goes slack near the ramps' end in every trial (its pressure falls
+  // toward 0.2 MPa as the arm rises); the slack episode starts where its tension is zero
+  for (std::size_t k = 0; k < r.trials.size(); ++k) {
+    const double s = r.slack_start_s[1][k];
+    ASSERT_TRUE(std::isfinite(s)) << "trial " << k;
+    EXPECT_GT(s, spec.window_start_s);
+    EXPECT_LT(s, spec.window_end_s);
+    const Trajectory& tr = r.trials[k].trajectory;
+    const std::size_t t = tr.column("time_s"), force = tr.column("force_anta_N");
+    for (std::size_t i = 0; i < tr.rows(); ++i) {
+      if (tr.at(i, t) >= s && tr.at(i, t) < s + spec.min_slack_s) {
+        EXPECT_LE(tr.at(i, force), 0.0);
+      }
+    }
+  }
+  // every row filled, and the parts add up: all = before + after samples
+  for (const ReachingRow& row : r.rows) {
+    if (row.part == "all") {
+      EXPECT_GT(row.samples, 0);
+      EXPECT_TRUE(std::isfinite(row.sim.max) && std::isfinite(row.sim.rmse)) << row.method;
+    }
+  }
+  ValidationOptions single = o;
+  single.threads = 1;
+  const ReachingValidationResult r1 = run_reaching_validation(spec, single);
+  EXPECT_EQ(table5_csv(r1), table5_csv(r));
+  EXPECT_EQ(table5_markdown(r1, spec), table5_markdown(r, spec));
+}
+
+}  // namespace
+}  // namespace pamsim
