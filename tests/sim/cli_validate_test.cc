@@ -41,12 +41,12 @@ TEST(CliValidateTest, LengthEstimationWritesEveryPamLawAndWeight) {
   const CliResult r = run_pamsim("validate length-estimation --threads 2 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto rows = csv_rows(read_file(out / "table3.csv"));
-  ASSERT_EQ(rows.size(), 1u + 4 * 3 * 2);   // header, PAMs A-D x Eq. (3)-(5) x 5 / 10 kg
+  ASSERT_EQ(rows.size(), 1u + 4 * 3 * 2);  // header, PAMs A-D x Eq. (3)-(5) x 5 / 10 kg
   EXPECT_EQ(rows[0][4], "max_error_pct");
   for (std::size_t i = 1; i < rows.size(); ++i) {
     ASSERT_EQ(rows[i].size(), 11u) << i;
     EXPECT_EQ(rows[i][3], "ok") << i;
-    for (int c : {4, 5, 6, 7, 8, 9, 10}) {   // the simulation's, the paper's, the fit's
+    for (int c : {4, 5, 6, 7, 8, 9, 10}) {  // the simulation's, the paper's, the fit's
       ASSERT_FALSE(rows[i][c].empty()) << "row " << i << " column " << c;
       EXPECT_TRUE(std::isfinite(std::stod(rows[i][c]))) << "row " << i << " column " << c;
     }
@@ -66,7 +66,7 @@ TEST(CliValidateTest, ReachingWritesTableVAndFigure7) {
   const CliResult r = run_pamsim("validate reaching --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto rows = csv_rows(read_file(out / "table5.csv"));
-  ASSERT_EQ(rows.size(), 1u + 2 * 2 * 3);   // muscles x methods x (all, before, after)
+  ASSERT_EQ(rows.size(), 1u + 2 * 2 * 3);  // muscles x methods x (all, before, after)
   for (std::size_t i = 1; i < rows.size(); ++i) {
     if (rows[i][2] != "all") continue;
     EXPECT_TRUE(std::isfinite(std::stod(rows[i][4]))) << i;
@@ -99,13 +99,15 @@ TEST(CliValidateTest, BadInputIsOneLineAndLeavesNoTable) {
   const std::string src = "\"../models/pams/plant_pam_a.toml\"";
   protocol.replace(protocol.find(src), src.size(), "\"" + (dir / "bad_plant.toml").string() + "\"");
   std::string rig = "rig = \"pulley_sine_5kg.toml\"";
-  protocol.replace(protocol.find(rig), rig.size(),
-                   "rig = \"" + std::string(PAMSIM_SOURCE_DIR) + "/scenarios/pulley_sine_5kg.toml\"");
+  protocol.replace(
+      protocol.find(rig), rig.size(),
+      "rig = \"" + std::string(PAMSIM_SOURCE_DIR) + "/scenarios/pulley_sine_5kg.toml\"");
   const std::string gauge = "\"../models/pams/table4_agonist.toml\"";
   protocol.replace(protocol.find(gauge), gauge.size(),
                    "\"" + std::string(PAMSIM_SOURCE_DIR) + "/models/pams/table4_agonist.toml\"");
   for (const char* p : {"B", "C", "D"}) {
-    const std::string path = "\"../models/pams/plant_pam_" + std::string(1, char(p[0] + 32)) + ".toml\"";
+    const std::string path =
+        "\"../models/pams/plant_pam_" + std::string(1, char(p[0] + 32)) + ".toml\"";
     protocol.replace(protocol.find(path), path.size(),
                      "\"" + std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_pam_" +
                          std::string(1, char(p[0] + 32)) + ".toml\"");
@@ -127,7 +129,11 @@ TEST(CliValidateTest, BadInputIsOneLineAndLeavesNoTable) {
             "braid_angle"},
            {"validate length-estimation --set nosuch.key=1 --out " + out.string(), "nosuch.key"},
            {"validate reaching --set sim.duration_s=5 --out " + out.string(), "window_s"},
-           {"validate reaching --threads -1 --out " + out.string(), "--threads"}}) {
+           {"validate reaching --threads -1 --out " + out.string(), "--threads"},
+           {"validate reaching --out /proc/pamsim_validate_out", "/proc/pamsim_validate_out"},
+           {"validate length-estimation --pams B,B --out " + out.string(), "named twice"},
+           {"validate length-estimation --set bodies.weight.mass_kg=3 --out " + out.string(),
+            "set per trial"}}) {
     const CliResult r = run_pamsim(c.args);
     EXPECT_NE(r.exit_code, 0) << c.args;
     EXPECT_EQ(line_count(r.err), 1) << c.args << ": " << r.err;

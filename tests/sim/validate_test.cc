@@ -10,11 +10,15 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
+#include "pam_actuator/input_error.h"
 #include "pam_actuator/units.h"
+#include "sim/core/runner.h"
 #include "sim/validate/length_estimation.h"
 #include "sim/validate/reaching.h"
 
@@ -25,8 +29,8 @@ namespace fs = std::filesystem;
 const std::string kScenarios = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/";
 
 std::string fresh_out(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / ("validate_" + name + "_" +
-                                                        std::to_string(::getpid()));
+  const fs::path dir =
+      fs::path(::testing::TempDir()) / ("validate_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   return dir.string();
 }
@@ -46,7 +50,7 @@ TEST(ValidateTest, FitsReproduceTheTensileDataWithinTheirReportedRmse) {
       load_length_validation(kScenarios + "validate_length_estimation.toml", {"B", "D"});
   ASSERT_EQ(spec.pams.size(), 2u);
   EXPECT_EQ(spec.pams[0].name, "B");
-  const LengthValidationResult r = short_length_validation(spec, 2, fresh_out("fits"));
+  LengthValidationResult r = short_length_validation(spec, 2, fresh_out("fits"));
   ASSERT_EQ(r.fits.size(), 6u);
   for (const FittedLaw& f : r.fits) {
     SCOPED_TRACE(f.pam + " " + to_string(f.law));
@@ -54,7 +58,8 @@ TEST(ValidateTest, FitsReproduceTheTensileDataWithinTheirReportedRmse) {
     double sum_sq = 0.0, f_max = 0.0;
     for (const TensileRow& row : rows) {
       const double e = spring_force(f.fit.model, units::mpa_to_pa(row.pressure_mpa),
-                                    units::mm_to_m(row.deformation_mm)) - row.force_n;
+                                    units::mm_to_m(row.deformation_mm)) -
+                       row.force_n;
       sum_sq += e * e;
       f_max = std::max(f_max, row.force_n);
     }
@@ -69,7 +74,8 @@ TEST(ValidateTest, FitsReproduceTheTensileDataWithinTheirReportedRmse) {
   }
   // the protocol's pressures (measured, with the sensor's noise): 0.4-0.8 MPa for B,
   // 0.2-0.6 MPa for D
-  for (const auto& [index, lo, hi] : {std::tuple<int, double, double>{0, 0.4, 0.8}, {1, 0.2, 0.6}}) {
+  for (const auto& [index, lo, hi] :
+       {std::tuple<int, double, double>{0, 0.4, 0.8}, {1, 0.2, 0.6}}) {
     double p_min = 1.0, p_max = 0.0;
     for (const TensileRow& row : r.tensile[index]) {
       p_min = std::min(p_min, row.pressure_mpa);
@@ -83,8 +89,8 @@ TEST(ValidateTest, FitsReproduceTheTensileDataWithinTheirReportedRmse) {
 TEST(ValidateTest, PulleyTrueLengthFollowsTheHangingWeight) {
   const LengthValidationSpec spec =
       load_length_validation(kScenarios + "validate_length_estimation.toml", {"C"});
-  const LengthValidationResult r = short_length_validation(spec, 2, fresh_out("pulley"));
-  ASSERT_EQ(r.rows.size(), 6u);   // 3 laws x 2 weights
+  LengthValidationResult r = short_length_validation(spec, 2, fresh_out("pulley"));
+  ASSERT_EQ(r.rows.size(), 6u);  // 3 laws x 2 weights
   for (const DynamicRow& row : r.rows) {
     ASSERT_EQ(row.status, "ok");
     const Trajectory& tr = row.trajectory;
@@ -97,17 +103,27 @@ TEST(ValidateTest, PulleyTrueLengthFollowsTheHangingWeight) {
       travel = std::max(travel, std::fabs(tr.at(i, pos)));
     }
     EXPECT_GT(travel, 3.0) << "the sine moves the weight by millimetres";
-    EXPECT_TRUE(std::isfinite(row.sim.max) && std::isfinite(row.sim.rmse));
-    EXPECT_GT(row.sim.rmse, 0.0);
-    EXPECT_GE(row.sim.max, row.sim.rmse);
+    EXPECT_TRUE(std::isfinite(row.sim.max_pct) && std::isfinite(row.sim.rmse_pct));
+    EXPECT_GT(row.sim.rmse_pct, 0.0);
+    EXPECT_GE(row.sim.max_pct, row.sim.rmse_pct);
+  }
+  // the heavier weight stretches the muscle further (rows: law-major, 5 kg then 10 kg)
+  for (std::size_t k = 0; k + 1 < r.rows.size(); k += 2) {
+    ASSERT_EQ(r.rows[k].weight_kg, 5.0);
+    ASSERT_EQ(r.rows[k + 1].weight_kg, 10.0);
+    const Trajectory& light = r.rows[k].trajectory;
+    const Trajectory& heavy = r.rows[k + 1].trajectory;
+    const double l5 = light.at(0, light.column("length_pam_mm"));
+    const double l10 = heavy.at(0, heavy.column("length_pam_mm"));
+    EXPECT_GT(l10 - l5, 2.0) << "5 kg: " << l5 << " mm, 10 kg: " << l10 << " mm";
   }
 }
 
 TEST(ValidateTest, LengthTablesAreTheSameOnOneAndTwoThreads) {
   const LengthValidationSpec spec =
       load_length_validation(kScenarios + "validate_length_estimation.toml", {"A"});
-  const LengthValidationResult one = short_length_validation(spec, 1, fresh_out("t1"));
-  const LengthValidationResult two = short_length_validation(spec, 2, fresh_out("t2"));
+  LengthValidationResult one = short_length_validation(spec, 1, fresh_out("t1"));
+  LengthValidationResult two = short_length_validation(spec, 2, fresh_out("t2"));
   EXPECT_EQ(table3_csv(one), table3_csv(two));
   EXPECT_EQ(table3_markdown(one, spec), table3_markdown(two, spec));
 }
@@ -126,18 +142,19 @@ Trajectory tension_log(const std::vector<double>& force_n) {
 // slack from the start does not count, nor does a shorter dip.
 TEST(ValidateTest, SlackEpisodeIsALongEnoughDropOfATautLine) {
   std::vector<double> f(100, 5.0);
-  for (int i = 0; i < 20; ++i) f[i] = 0.0;      // slack at the start: not an episode
-  f[40] = f[41] = 0.0;                          // a 20 ms dip: too short
-  for (int i = 70; i < 100; ++i) f[i] = 0.0;    // the episode, from 0.70 s
+  for (int i = 0; i < 20; ++i) f[i] = 0.0;    // slack at the start: not an episode
+  f[40] = f[41] = 0.0;                        // a 20 ms dip: too short
+  for (int i = 70; i < 100; ++i) f[i] = 0.0;  // the episode, from 0.70 s
   const Trajectory tr = tension_log(f);
   EXPECT_NEAR(slack_episode_start(tr, "m", 0.0, 0.99, 0.1), 0.70, 1e-12);
-  EXPECT_TRUE(std::isnan(slack_episode_start(tr, "m", 0.0, 0.75, 0.1)));   // cut short
-  EXPECT_TRUE(std::isnan(slack_episode_start(tension_log(std::vector<double>(50, 3.0)), "m",
-                                             0.0, 0.49, 0.1)));
+  EXPECT_TRUE(std::isnan(slack_episode_start(tr, "m", 0.0, 0.75, 0.1)));  // cut short
+  EXPECT_TRUE(std::isnan(
+      slack_episode_start(tension_log(std::vector<double>(50, 3.0)), "m", 0.0, 0.49, 0.1)));
 }
 
 TEST(ValidateTest, ReachingFindsTheAntagonistsSlackAndIsThreadIndependent) {
-  const ReachingValidationSpec spec = load_reaching_validation(kScenarios + "validate_reaching.toml");
+  const ReachingValidationSpec spec =
+      load_reaching_validation(kScenarios + "validate_reaching.toml");
   ValidationOptions o;
   o.threads = 2;
   const ReachingValidationResult r = run_reaching_validation(spec, o);
@@ -158,18 +175,93 @@ TEST(ValidateTest, ReachingFindsTheAntagonistsSlackAndIsThreadIndependent) {
       }
     }
   }
-  // every row filled, and the parts add up: all = before + after samples
+  // every "all" row filled; the agonist never slackens, so it has no before / after; the
+  // antagonist's before starts at its first taut sample, so before + after < all
   for (const ReachingRow& row : r.rows) {
+    SCOPED_TRACE(row.muscle + " " + row.method + " " + row.part);
     if (row.part == "all") {
+      EXPECT_EQ(row.samples, spec.trials * 1201);  // 2..14 s at 100 Hz, both ends
+      EXPECT_TRUE(std::isfinite(row.sim.max_pct) && std::isfinite(row.sim.rmse_pct));
+    } else if (row.muscle == "agonist") {
+      EXPECT_EQ(row.samples, 0);
+    } else {
       EXPECT_GT(row.samples, 0);
-      EXPECT_TRUE(std::isfinite(row.sim.max) && std::isfinite(row.sim.rmse)) << row.method;
     }
   }
+  const auto samples = [&](const char* part) {
+    for (const ReachingRow& row : r.rows) {
+      if (row.muscle == "antagonist" && row.method == "model" && row.part == part)
+        return row.samples;
+    }
+    return -1;
+  };
+  EXPECT_LT(samples("before_slack") + samples("after_slack"), samples("all"));
   ValidationOptions single = o;
   single.threads = 1;
   const ReachingValidationResult r1 = run_reaching_validation(spec, single);
   EXPECT_EQ(table5_csv(r1), table5_csv(r));
   EXPECT_EQ(table5_markdown(r1, spec), table5_markdown(r, spec));
+}
+
+// Every protocol key with a bad value is refused by name.
+TEST(ValidateTest, BadProtocolValuesNameTheirKey) {
+  const std::string le = kScenarios + "validate_length_estimation.toml";
+  for (const auto& [assignment, key] : std::vector<std::pair<std::string, std::string>>{
+           {"weights_kg=[0.0]", "weights_kg"},
+           {"weights_kg=[]", "weights_kg"},
+           {"laws=[\"eq9\"]", "laws"},
+           {"pams.A.pressures_MPa=[0.4, 0.5]", "pams.A.pressures_MPa"},
+           {"pams.A.offset_MPa=1.5", "pams.A.offset_MPa"},
+           {"pams.A.max_deformation_mm=1.0", "pams.A"},
+           {"pams.A.bladder_diameter_mm=0.0", "pams.A.bladder_diameter_mm"},
+           {"pams.A.paper.eq3=[1.0]", "pams.A.paper.eq3"},
+           {"tensile.step_mm=-1", "pams.A"},
+           {"tensile.seed=-1", "tensile.seed"},
+           {"rig=\"missing.toml\"", ""}}) {
+    SCOPED_TRACE(assignment);
+    try {
+      const LengthValidationSpec spec = load_length_validation(le, {}, {assignment});
+      if (assignment.rfind("rig=", 0) == 0) {
+        ValidationOptions o;
+        o.out_dir = fresh_out("bad_rig");
+        run_length_validation(spec, o);
+      }
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
+  const std::string re = kScenarios + "validate_reaching.toml";
+  for (const auto& [assignment, key] : std::vector<std::pair<std::string, std::string>>{
+           {"window_s=[5.0, 2.0]", "window_s"},
+           {"min_slack_s=0.0", "min_slack_s"},
+           {"trials=0", "trials"},
+           {"paper.model_agonist=[1.0]", "paper.model_agonist"},
+           {"paper.other_agonist=[1.0, 2.0]", "paper.other_agonist"}}) {
+    SCOPED_TRACE(assignment);
+    try {
+      load_reaching_validation(re, {assignment});
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
+}
+
+// parallel_for: every index once, on any thread count; a job's exception comes back
+TEST(ValidateTest, ParallelForRunsEachIndexOnceAndRethrows) {
+  for (int threads : {1, 2, 5}) {
+    std::vector<int> hits(37, 0);
+    parallel_for(37, threads, [&](int k) { ++hits[k]; });
+    EXPECT_EQ(std::count(hits.begin(), hits.end(), 1), 37) << threads;
+  }
+  EXPECT_THROW(parallel_for(10, 2,
+                            [](int k) {
+                              if (k == 7) throw std::runtime_error("job 7");
+                            }),
+               std::runtime_error);
+  EXPECT_THROW(parallel_for(3, 0, [](int) {}), InputError);
+  parallel_for(0, 2, [](int) { FAIL() << "no job for n = 0"; });
 }
 
 }  // namespace

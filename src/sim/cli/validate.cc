@@ -3,10 +3,13 @@
 // and `--threads N`: the papers' validation experiments (seeds/000 Table III and Table V) as
 // protocols over data files (scenarios/validate_*.toml; src/sim/validate/). Inputs are all
 // read and checked before any trial runs; the tables are written last, each atomically.
-#include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
+#include <cstdint>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -46,10 +49,23 @@ ValidationOptions common_options(const ValidateOptions& o, const std::string& de
   return v;
 }
 
+// An output folder that exists and takes a file, checked before any trial runs (a read-only
+// folder would otherwise fail only at the end).
+void require_writable(const std::string& dir) {
+  make_directories(dir);
+  const std::filesystem::path probe =
+      std::filesystem::path(dir) / (".pamsim_write_test." + std::to_string(::getpid()));
+  std::ofstream out(probe);
+  const bool ok = out && (out << "x") && (out.close(), !out.fail());
+  std::error_code ec;
+  std::filesystem::remove(probe, ec);
+  if (!ok) throw InputError("--out " + dir + ": cannot write there");
+}
+
 void attach_progress(ValidationOptions* v, const std::string& label, int total,
                      std::shared_ptr<ProgressReporter>* holder) {
-  *holder = std::make_shared<ProgressReporter>(label, total, 0, std::cerr,
-                                               ::isatty(STDERR_FILENO) != 0);
+  *holder =
+      std::make_shared<ProgressReporter>(label, total, 0, std::cerr, ::isatty(STDERR_FILENO) != 0);
   ProgressReporter* p = holder->get();
   v->progress = [p](int done, int) { p->update(done); };
 }
@@ -57,7 +73,7 @@ void attach_progress(ValidationOptions* v, const std::string& label, int total,
 void run_length_estimation(const ValidateOptions& o) {
   const LengthValidationSpec spec = load_length_validation(o.file, o.pams);
   ValidationOptions v = common_options(o, "renders/validate_length_estimation");
-  make_directories(v.out_dir);   // an unwritable --out fails here, before any work
+  require_writable(v.out_dir);  // an unwritable --out fails here, before any work
   const int total = static_cast<int>(spec.pams.size() * spec.laws.size() * spec.weights_kg.size());
   std::shared_ptr<ProgressReporter> progress;
   attach_progress(&v, "pamsim validate length-estimation", total, &progress);
@@ -67,7 +83,7 @@ void run_length_estimation(const ValidateOptions& o) {
               << " dynamic trials on " << v.threads << (v.threads == 1 ? " thread" : " threads")
               << "\n";
   };
-  const LengthValidationResult result = run_length_validation(spec, v);
+  LengthValidationResult result = run_length_validation(spec, v);
   progress->finish(total);
   write_length_validation(result, spec, v.out_dir);
   std::cout << table3_markdown(result, spec);
@@ -76,24 +92,25 @@ void run_length_estimation(const ValidateOptions& o) {
 }
 
 void run_reaching(const ValidateOptions& o) {
-  if (!o.pams.empty()) throw InputError("validate reaching: --pams is for length-estimation");
   const ReachingValidationSpec spec = load_reaching_validation(o.file);
   ValidationOptions v = common_options(o, "renders/validate_reaching");
-  make_directories(v.out_dir);
+  require_writable(v.out_dir);
   std::shared_ptr<ProgressReporter> progress;
   attach_progress(&v, "pamsim validate reaching", spec.trials, &progress);
   const ReachingValidationResult result = run_reaching_validation(spec, v);
   progress->finish(spec.trials);
   write_reaching_validation(result, spec, v.out_dir);
   std::cout << table5_markdown(result, spec);
-  std::cerr << "pamsim validate: outputs in " << v.out_dir << " (table5.csv, table5.md, fig7.png)\n";
+  std::cerr << "pamsim validate: outputs in " << v.out_dir
+            << " (table5.csv, table5.md, fig7.png)\n";
 }
 
 void add_common(CLI::App* cmd, ValidateOptions* o, const std::string& default_file) {
   o->file = default_file;
   cmd->add_option("file", o->file, "Validation protocol (TOML)")->capture_default_str();
   cmd->add_option("--out", o->out, "Output folder (default renders/validate_<name>)");
-  cmd->add_option("--set", o->overrides, "Override a scenario key of every trial: --set sensors.noise_scale=2");
+  cmd->add_option("--set", o->overrides,
+                  "Override a scenario key of every trial: --set sensors.noise_scale=2");
   cmd->add_option("--seed", o->seed, "Seed of the trials (and of the tensile tests' noise)");
   cmd->add_option("--threads", o->threads, "Worker threads (default: all cores)");
 }
@@ -110,8 +127,7 @@ void add_validate_command(CLI::App& app) {
       "length-estimation",
       "PAMs A-D: tensile test, fits of Eq. (3)-(5), dynamic test on the pulley (Table III)");
   add_common(le, length.get(), "scenarios/validate_length_estimation.toml");
-  le->add_option("--pams", length->pams, "Only these PAMs (comma-separated names)")
-      ->delimiter(',');
+  le->add_option("--pams", length->pams, "Only these PAMs (comma-separated names)")->delimiter(',');
   le->callback([length] { run_length_estimation(*length); });
 
   auto reaching = std::make_shared<ValidateOptions>();

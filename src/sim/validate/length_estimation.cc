@@ -1,6 +1,8 @@
 // length_estimation.cc: see length_estimation.h.
 #include "sim/validate/length_estimation.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -8,8 +10,6 @@
 #include <set>
 #include <sstream>
 #include <system_error>
-
-#include <unistd.h>
 
 #include "pam_actuator/atomic_file.h"
 #include "pam_actuator/format.h"
@@ -48,7 +48,8 @@ ValidationPam read_pam(ConfigReader& in, const std::string& name, const TensileT
   pam.tensile.pressures_mpa = in.get_double_list(key + ".pressures_MPa", {});
   std::set<double> levels(pam.tensile.pressures_mpa.begin(), pam.tensile.pressures_mpa.end());
   in.check(levels.size() >= 3, key + ".pressures_MPa",
-           "needs at least 3 distinct pressures (Eq. (4)'s p^2 term)");
+           "needs at least 3 distinct pressures (Eq. (4)'s p^2 term), got " +
+               std::to_string(levels.size()));
   pam.tensile.max_deformation_mm = in.require_double(key + ".max_deformation_mm");
   try {
     validate_tensile_options(pam.tensile);
@@ -70,7 +71,7 @@ ValidationPam read_pam(ConfigReader& in, const std::string& name, const TensileT
              "must be [max, RMSE] in % of length, both >= 0");
     pam.paper[law_name] = {v[0], v[1]};
   }
-  in.raw(key + ".paper");   // read (an empty or absent table is fine)
+  in.raw(key + ".paper");  // read (an empty or absent table is fine)
   return pam;
 }
 
@@ -96,8 +97,8 @@ PamParams fitted_params(const LengthValidationSpec& spec, const ValidationPam& p
 double max_residual_n(const SpringModel& model, const std::vector<TensileRow>& rows) {
   double worst = 0.0;
   for (const TensileRow& r : rows) {
-    const double f = spring_force(model, units::mpa_to_pa(r.pressure_mpa),
-                                  units::mm_to_m(r.deformation_mm));
+    const double f =
+        spring_force(model, units::mpa_to_pa(r.pressure_mpa), units::mm_to_m(r.deformation_mm));
     worst = std::max(worst, std::fabs(f - r.force_n));
   }
   return worst;
@@ -105,6 +106,15 @@ double max_residual_n(const SpringModel& model, const std::vector<TensileRow>& r
 
 // "3" for eq3: the law's equation number in seeds/000
 std::string equation_number(SpringLaw law) { return std::string(to_string(law)).substr(2); }
+
+// a Markdown table's header: the model column, then one per PAM
+void pam_columns(std::ostringstream& out, const LengthValidationSpec& spec) {
+  out << "| model |";
+  for (const ValidationPam& pam : spec.pams) out << " PAM-" << pam.name << " |";
+  out << "\n| --- |";
+  for (std::size_t i = 0; i < spec.pams.size(); ++i) out << " --- |";
+  out << '\n';
+}
 
 std::string quoted(const std::string& path) {
   std::string out = "\"";
@@ -118,8 +128,10 @@ std::string quoted(const std::string& path) {
 }  // namespace
 
 LengthValidationSpec load_length_validation(const std::string& path,
-                                            const std::vector<std::string>& only) {
+                                            const std::vector<std::string>& only,
+                                            const std::vector<std::string>& protocol_overrides) {
   ConfigReader in(path);
+  for (const std::string& o : protocol_overrides) in.apply_override(o);
   LengthValidationSpec spec;
   spec.file = path;
   spec.rig_file = in.get_path("rig", "");
@@ -136,7 +148,8 @@ LengthValidationSpec load_length_validation(const std::string& path,
   spec.weights_kg = in.get_double_list("weights_kg", {5.0, 10.0});
   in.check(!spec.weights_kg.empty(), "weights_kg", "must hold at least one weight");
   for (double w : spec.weights_kg) {
-    in.check(w > 0.0 && w <= 1000.0, "weights_kg", "must be in (0, 1000] kg, got " + format_value(w));
+    in.check(w > 0.0 && w <= 1000.0, "weights_kg",
+             "must be in (0, 1000] kg, got " + format_value(w));
   }
 
   TensileTestOptions base;
@@ -161,7 +174,11 @@ LengthValidationSpec load_length_validation(const std::string& path,
 
   const std::vector<std::string> names = in.child_keys("pams");
   in.check(!names.empty(), "pams", "must hold at least one [pams.<NAME>] table");
-  for (const std::string& wanted : only) {
+  for (std::size_t i = 0; i < only.size(); ++i) {
+    const std::string& wanted = only[i];
+    if (std::find(only.begin(), only.begin() + i, wanted) != only.begin() + i) {
+      throw InputError("--pams: " + wanted + " is named twice");
+    }
     if (std::find(names.begin(), names.end(), wanted) == names.end()) {
       std::string list;
       for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
@@ -169,12 +186,12 @@ LengthValidationSpec load_length_validation(const std::string& path,
     }
   }
   for (const std::string& name : names) {
-    ValidationPam pam = read_pam(in, name, base, spec.laws);   // every PAM validated
+    ValidationPam pam = read_pam(in, name, base, spec.laws);  // every PAM validated
     if (only.empty() || std::find(only.begin(), only.end(), name) != only.end()) {
       spec.pams.push_back(std::move(pam));
     }
   }
-  if (!only.empty()) {   // the order asked for
+  if (!only.empty()) {  // the order asked for
     std::vector<ValidationPam> ordered;
     for (const std::string& wanted : only) {
       for (const ValidationPam& p : spec.pams) {
@@ -191,10 +208,8 @@ LengthValidationResult run_length_validation(const LengthValidationSpec& spec,
                                              const ValidationOptions& options) {
   LengthValidationResult result;
   make_directories(options.out_dir);
-  // the fits go to a temp folder until the run is complete (see the header)
-  const fs::path final_fits = fs::path(options.out_dir) / "fits";
-  const fs::path fits_tmp =
-      fs::path(options.out_dir) / (".fits.tmp." + std::to_string(::getpid()));
+  // the fits go to a temp folder until the outputs are complete (see the header)
+  const fs::path fits_tmp = fs::path(options.out_dir) / (".fits.tmp." + std::to_string(::getpid()));
   struct RemoveOnError {
     fs::path dir;
     bool keep = false;
@@ -211,7 +226,12 @@ LengthValidationResult run_length_validation(const LengthValidationSpec& spec,
   for (const ValidationPam& pam : spec.pams) {
     TensileTestOptions test = pam.tensile;
     if (options.seed) test.seed = *options.seed;
-    result.tensile.push_back(run_tensile_test(pam.plant.avbdl, test));
+    try {
+      result.tensile.push_back(run_tensile_test(pam.plant.avbdl, test));
+    } catch (const InputError& e) {
+      throw InputError(spec.file + ": pams." + pam.name + " (" + pam.plant_file +
+                       "): tensile test: " + e.what());
+    }
     const std::vector<TensileRow>& rows = result.tensile.back();
     for (SpringLaw law : spec.laws) {
       FittedLaw f;
@@ -219,10 +239,21 @@ LengthValidationResult run_length_validation(const LengthValidationSpec& spec,
       f.law = law;
       f.fit = fit_spring_model(law, rows, "PAM-" + pam.name + " tensile test");
       f.max_residual_n = max_residual_n(f.fit.model, rows);
-      f.params_file = (fs::path(fits_dir) / ("pam_" + pam.name + "_" + to_string(law) + ".toml"))
-                          .string();
+      f.params_file =
+          (fs::path(fits_dir) / ("pam_" + pam.name + "_" + to_string(law) + ".toml")).string();
       write_file_atomically(f.params_file, pam_params_to_toml(fitted_params(spec, pam, f.fit)));
       result.fits.push_back(f);
+    }
+  }
+
+  // the protocol sets these per trial: a --set of them would be silently overruled
+  for (const std::string& o : options.overrides) {
+    for (const char* key : {"muscles.pam.plant", "muscles.pam.params", "bodies.weight.mass_kg",
+                            "muscles.pam.command.offset_MPa", "seed"}) {
+      if (o.rfind(std::string(key) + "=", 0) == 0) {
+        throw InputError("--set " + o + ": " + key + " is set per trial by " + spec.file +
+                         " (its pams, weights_kg; --seed for the seed)");
+      }
     }
   }
 
@@ -276,15 +307,8 @@ LengthValidationResult run_length_validation(const LengthValidationSpec& spec,
     }
   });
 
-  // every trial ran: the fits take their place, named as the results say
-  std::error_code ec;
-  fs::remove_all(final_fits, ec);
-  fs::rename(fits_tmp, final_fits, ec);
-  if (ec) throw InputError(final_fits.string() + ": cannot move the fits there: " + ec.message());
-  guard.keep = true;
-  for (FittedLaw& f : result.fits) {
-    f.params_file = (final_fits / fs::path(f.params_file).filename()).string();
-  }
+  guard.keep = true;  // write_length_validation moves it into place
+  result.fits_dir = fits_tmp.string();
   return result;
 }
 
@@ -298,15 +322,16 @@ std::string table3_csv(const LengthValidationResult& result) {
       return f.pam == row.pam && f.law == row.law;
     });
     out << row.pam << ',' << to_string(row.law) << ',' << num(row.weight_kg) << ',' << row.status
-        << ',' << num(row.sim.max) << ',' << num(row.sim.rmse) << ','
-        << (row.paper ? num(row.paper->max) : "") << ',' << (row.paper ? num(row.paper->rmse) : "")
-        << ',' << num(fit->fit.rmse_n) << ',' << num(fit->max_residual_n) << ','
-        << num(fit->fit.r2) << '\n';
+        << ',' << num(row.sim.max_pct) << ',' << num(row.sim.rmse_pct) << ','
+        << (row.paper ? num(row.paper->max_pct) : "") << ','
+        << (row.paper ? num(row.paper->rmse_pct) : "") << ',' << num(fit->fit.rmse_n) << ','
+        << num(fit->max_residual_n) << ',' << num(fit->fit.r2) << '\n';
   }
   return out.str();
 }
 
-std::string table3_markdown(const LengthValidationResult& result, const LengthValidationSpec& spec) {
+std::string table3_markdown(const LengthValidationResult& result,
+                            const LengthValidationSpec& spec) {
   std::ostringstream out;
   const auto cell = [](double v) {
     char buf[32];
@@ -317,18 +342,16 @@ std::string table3_markdown(const LengthValidationResult& result, const LengthVa
       << "Each cell: simulation max / RMSE (paper max / RMSE, seeds/000 Table III; the paper "
          "does not split by weight).\n";
   for (double weight : spec.weights_kg) {
-    out << "\n## " << format_shortest(weight) << " kg\n\n| model |";
-    for (const ValidationPam& pam : spec.pams) out << " PAM-" << pam.name << " |";
-    out << "\n| --- |";
-    for (std::size_t i = 0; i < spec.pams.size(); ++i) out << " --- |";
-    out << '\n';
+    out << "\n## " << format_shortest(weight) << " kg\n\n";
+    pam_columns(out, spec);
     for (SpringLaw law : spec.laws) {
       out << "| Eq. (" << equation_number(law) << ") |";
       for (const ValidationPam& pam : spec.pams) {
         for (const DynamicRow& row : result.rows) {
           if (row.pam != pam.name || row.law != law || row.weight_kg != weight) continue;
-          out << ' ' << cell(row.sim.max) << " / " << cell(row.sim.rmse);
-          if (row.paper) out << " (" << cell(row.paper->max) << " / " << cell(row.paper->rmse) << ')';
+          out << ' ' << cell(row.sim.max_pct) << " / " << cell(row.sim.rmse_pct);
+          if (row.paper)
+            out << " (" << cell(row.paper->max_pct) << " / " << cell(row.paper->rmse_pct) << ')';
           if (row.status != "ok") out << " [" << row.status << ']';
           out << " |";
         }
@@ -336,11 +359,8 @@ std::string table3_markdown(const LengthValidationResult& result, const LengthVa
       out << '\n';
     }
   }
-  out << "\nFits to the static tensile test (force RMSE / largest residual [N], R^2):\n\n| model |";
-  for (const ValidationPam& pam : spec.pams) out << " PAM-" << pam.name << " |";
-  out << "\n| --- |";
-  for (std::size_t i = 0; i < spec.pams.size(); ++i) out << " --- |";
-  out << '\n';
+  out << "\nFits to the static tensile test (force RMSE / largest residual [N], R^2):\n\n";
+  pam_columns(out, spec);
   for (SpringLaw law : spec.laws) {
     out << "| Eq. (" << equation_number(law) << ") |";
     for (const ValidationPam& pam : spec.pams) {
@@ -357,10 +377,12 @@ std::string table3_markdown(const LengthValidationResult& result, const LengthVa
   return out.str();
 }
 
-void write_length_validation(const LengthValidationResult& result, const LengthValidationSpec& spec,
-                             const std::string& out_dir) {
+namespace {
+
+// the figures, then the tables (a failed plot leaves no table claiming a complete run)
+void write_figures_and_tables(const LengthValidationResult& result,
+                              const LengthValidationSpec& spec, const std::string& out_dir) {
   make_directories(out_dir);
-  // figures first: a failed plot leaves no table claiming a complete run
   for (const ValidationPam& pam : spec.pams) {
     GnuplotJob job;
     job.width_px = 1200;
@@ -380,15 +402,15 @@ void write_length_validation(const LengthValidationResult& result, const LengthV
       }
       const std::string name = "s" + std::to_string(series++) + ".dat";
       job.data_files.push_back({name, data});
-      const std::string label = std::string(to_string(row.law)) + ", " +
-                                format_shortest(row.weight_kg) + " kg";
+      const std::string label =
+          std::string(to_string(row.law)) + ", " + format_shortest(row.weight_kg) + " kg";
       const char* dash = row.weight_kg == spec.weights_kg.front() ? "1" : "2";
       if (row.law == spec.laws.front()) {
         plots_top += (plots_top.empty() ? "" : ", ") + gp_quote(name) +
                      " using 1:2 with lines dt " + dash + " lc rgb 'black' title " +
                      gp_quote("true, " + format_shortest(row.weight_kg) + " kg") + ", " +
-                     gp_quote(name) + " using 1:3 with lines dt " + dash + " lc rgb '#c0392b' title " +
-                     gp_quote("estimate " + label);
+                     gp_quote(name) + " using 1:3 with lines dt " + dash +
+                     " lc rgb '#c0392b' title " + gp_quote("estimate " + label);
       }
       plots_bottom += (plots_bottom.empty() ? "" : ", ") + gp_quote(name) +
                       " using 1:4 with lines dt " + dash + " lw 1.5 title " + gp_quote(label);
@@ -397,12 +419,39 @@ void write_length_validation(const LengthValidationResult& result, const LengthV
     job.script = "set multiplot layout 2,1 title " +
                  gp_quote("PAM-" + pam.name + ": dynamic length estimation (Fig. 5-6)") +
                  "\nset grid\nset key outside right\nset ylabel 'length (mm)'\nplot " + plots_top +
-                 "\nset xlabel 'time (s)'\nset ylabel 'error (% of length)'\nplot " +
-                 plots_bottom + "\nunset multiplot\n";
+                 "\nset xlabel 'time (s)'\nset ylabel 'error (% of length)'\nplot " + plots_bottom +
+                 "\nunset multiplot\n";
     run_gnuplot((fs::path(out_dir) / ("pam_" + pam.name + ".png")).string(), job);
   }
   write_file_atomically((fs::path(out_dir) / "table3.csv").string(), table3_csv(result));
   write_file_atomically((fs::path(out_dir) / "table3.md").string(), table3_markdown(result, spec));
+}
+
+}  // namespace
+
+void write_length_validation(LengthValidationResult& result, const LengthValidationSpec& spec,
+                             const std::string& out_dir) {
+  const fs::path fits_tmp = result.fits_dir;
+  try {
+    write_figures_and_tables(result, spec, out_dir);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(fits_tmp, ec);
+    throw;
+  }
+  // the new fits replace the old: the old aside first, so a failure leaves one of them whole
+  const fs::path fits = fs::path(out_dir) / "fits";
+  const fs::path old = fs::path(out_dir) / (".fits.old." + std::to_string(::getpid()));
+  std::error_code ec;
+  if (fs::exists(fits)) fs::rename(fits, old, ec);
+  if (!ec) fs::rename(fits_tmp, fits, ec);
+  if (ec) {
+    throw InputError(fits.string() + ": cannot move the fitted files there: " + ec.message());
+  }
+  fs::remove_all(old, ec);
+  for (FittedLaw& f : result.fits)
+    f.params_file = (fits / fs::path(f.params_file).filename()).string();
+  result.fits_dir = fits.string();
 }
 
 }  // namespace pamsim

@@ -32,23 +32,18 @@
 #include "pam_actuator/plant_params.h"
 #include "pam_actuator/tensile_test.h"
 #include "sim/core/trial.h"
+#include "sim/validate/validation_options.h"
 
 namespace pamsim {
 
-// Table III's cell: maximum and RMS error in % of the length.
-struct ErrorPct {
-  double max = 0.0;
-  double rmse = 0.0;
-};
-
 struct ValidationPam {
-  std::string name;                     // "A"
+  std::string name;  // "A"
   std::string plant_file;
   PlantParams plant;
-  double bladder_diameter_m = 0.0;      // Table I, for the estimator's [geometry]
-  TensileTestOptions tensile;           // pressures and maximum deformation set per PAM
-  double offset_mpa = 0.0;              // the dynamic test's sine offset
-  std::map<std::string, ErrorPct> paper;   // by law name ("eq3"); absent: not published
+  double bladder_diameter_m = 0.0;        // Table I, for the estimator's [geometry]
+  TensileTestOptions tensile;             // pressures and maximum deformation set per PAM
+  double offset_mpa = 0.0;                // the dynamic test's sine offset
+  std::map<std::string, ErrorPct> paper;  // by law name ("eq3"); absent: not published
 };
 
 struct LengthValidationSpec {
@@ -57,54 +52,48 @@ struct LengthValidationSpec {
   std::vector<std::string> overrides;
   std::vector<SpringLaw> laws;
   std::vector<double> weights_kg;
-  StrainGaugeParams gauge;              // from tensile.sensors_from
+  StrainGaugeParams gauge;  // from tensile.sensors_from
   std::string gauge_file;
   std::vector<ValidationPam> pams;
 };
 
-// Reads and validates the protocol; `only` keeps the named PAMs, in that order (empty: all).
+// Reads and validates the protocol, with `protocol_overrides` ("key=value" of the protocol
+// file's own keys) applied first; `only` keeps the named PAMs, in that order (empty: all).
 // Throws InputError "<file>: <key> <problem>" (or "--pams: unknown PAM X, the file has A, B").
-LengthValidationSpec load_length_validation(const std::string& path,
-                                            const std::vector<std::string>& only = {});
-
-struct ValidationOptions {
-  std::string out_dir;                       // created if missing
-  std::vector<std::string> overrides;        // the user's --set, after the file's
-  std::optional<std::uint64_t> seed;         // tensile noise and trial seed; default: files'
-  int threads = 1;
-  std::function<void(int total)> started;              // inputs checked, trials about to run
-  std::function<void(int done, int total)> progress;   // called from one thread at a time
-};
+LengthValidationSpec load_length_validation(
+    const std::string& path, const std::vector<std::string>& only = {},
+    const std::vector<std::string>& protocol_overrides = {});
 
 struct FittedLaw {
   std::string pam;
   SpringLaw law = SpringLaw::kEq3;
   SpringFit fit;
-  std::string params_file;                   // out_dir/fits/pam_<NAME>_<law>.toml
-  double max_residual_n = 0.0;               // largest |f - law(p, d)| over the test's rows
+  std::string params_file;      // out_dir/fits/pam_<NAME>_<law>.toml
+  double max_residual_n = 0.0;  // largest |f - law(p, d)| over the test's rows
 };
 
 struct DynamicRow {
   std::string pam;
   SpringLaw law = SpringLaw::kEq3;
   double weight_kg = 0.0;
-  std::string status;                        // the trial's ("ok", "diverged")
-  ErrorPct sim;                              // over the whole trial
+  std::string status;  // the trial's ("ok", "diverged")
+  ErrorPct sim;        // over the whole trial
   std::optional<ErrorPct> paper;
-  Trajectory trajectory;                     // for the figures
+  Trajectory trajectory;  // for the figures
 };
 
 struct LengthValidationResult {
-  std::vector<std::vector<TensileRow>> tensile;   // per PAM, the spec's order
-  std::vector<FittedLaw> fits;                    // PAM-major, the spec's law order
-  std::vector<DynamicRow> rows;                   // PAM, then law, then weight
+  std::vector<std::vector<TensileRow>> tensile;  // per PAM, the spec's order
+  std::vector<FittedLaw> fits;                   // PAM-major, the spec's law order
+  std::vector<DynamicRow> rows;                  // PAM, then law, then weight
+  std::string fits_dir;                          // where the fitted files are now
 };
 
 // Runs the protocol: tensile tests and fits, then the dynamic trials on `threads` threads.
 // The fitted PAM files, which the trials' scenarios name, are written to a temp folder in
-// out_dir and renamed to out_dir/fits/ when every trial has run (an older fits/ is
-// replaced); on any error the temp folder is removed. Throws InputError for bad overrides
-// or an unwritable out_dir before any trial runs.
+// out_dir (result.fits_dir), which write_length_validation moves into place; on any error
+// the temp folder is removed. Throws InputError for bad overrides (a --set of a key the
+// protocol sets per trial among them) before any trial runs.
 LengthValidationResult run_length_validation(const LengthValidationSpec& spec,
                                              const ValidationOptions& options);
 
@@ -112,8 +101,10 @@ LengthValidationResult run_length_validation(const LengthValidationSpec& spec,
 // max_error_pct, rmse_pct, paper_max_error_pct, paper_rmse_pct, fit_rmse_N,
 // fit_max_residual_N, fit_r2), out_dir/table3.md (Table III's layout per weight, the
 // paper's values beside) and per PAM out_dir/pam_<NAME>.png (Fig. 5-6: true and Eq. (3)
-// estimated length over time, and every law's error). Each file appears whole or not at all.
-void write_length_validation(const LengthValidationResult& result, const LengthValidationSpec& spec,
+// estimated length over time, and every law's error); then the fits folder becomes
+// out_dir/fits (an older one replaced). Each file appears whole or not at all; on failure
+// the temp fits folder is removed and an older fits/ stays.
+void write_length_validation(LengthValidationResult& result, const LengthValidationSpec& spec,
                              const std::string& out_dir);
 
 // The table texts, for tests: the same bytes as the files.

@@ -32,6 +32,7 @@ struct ErrorPool {
   double sum_sq = 0.0, max_abs = 0.0;
   int n = 0;
   void add(double e) {
+    if (!std::isfinite(e)) return;  // a diverged trial's tail
     sum_sq += e * e;
     max_abs = std::max(max_abs, std::fabs(e));
     ++n;
@@ -65,26 +66,39 @@ MuscleErrors muscle_errors(const Trajectory& tr, const std::string& label, doubl
   return out;
 }
 
+// The first time at or after start_s [s] at which a muscle's line is taut, or +inf.
+double first_taut_s(const Trajectory& tr, const std::string& label, double start_s) {
+  const std::size_t t = tr.column("time_s"), force = tr.column("force_" + label + "_N");
+  for (std::size_t i = 0; i < tr.rows(); ++i) {
+    if (tr.at(i, t) >= start_s - 1e-9 && tr.at(i, force) > 0.0) return tr.at(i, t);
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
 }  // namespace
 
-ReachingValidationSpec load_reaching_validation(const std::string& path) {
+ReachingValidationSpec load_reaching_validation(
+    const std::string& path, const std::vector<std::string>& protocol_overrides) {
   ConfigReader in(path);
+  for (const std::string& o : protocol_overrides) in.apply_override(o);
   ReachingValidationSpec spec;
   spec.file = path;
   spec.scenario_file = in.get_path("scenario", "");
   in.check(!spec.scenario_file.empty(), "scenario", "is required (the reaching scenario)");
   const std::int64_t trials = in.get_int("trials", spec.trials);
-  in.check(trials >= 1 && trials <= 1000, "trials", "must be in [1, 1000], got " +
-                                                        std::to_string(trials));
+  in.check(trials >= 1 && trials <= 1000, "trials",
+           "must be in [1, 1000], got " + std::to_string(trials));
   spec.trials = static_cast<int>(trials);
   const std::vector<double> window = in.get_double_list("window_s", {});
+  std::string got;
+  for (double w : window) got += (got.empty() ? "" : ", ") + format_value(w);
   in.check(window.size() == 2 && window[0] >= 0.0 && window[1] > window[0], "window_s",
-           "must be [start, end] with 0 <= start < end");
+           "must be [start, end] with 0 <= start < end, got [" + got + "]");
   spec.window_start_s = window[0];
   spec.window_end_s = window[1];
   spec.min_slack_s = in.get_double("min_slack_s", spec.min_slack_s);
-  in.check(spec.min_slack_s > 0.0, "min_slack_s", "must be > 0 s, got " +
-                                                      format_value(spec.min_slack_s));
+  in.check(spec.min_slack_s > 0.0, "min_slack_s",
+           "must be > 0 s, got " + format_value(spec.min_slack_s));
   for (const std::string& name : in.child_keys("paper")) {
     const std::string key = "paper." + name;
     const std::vector<double> v = in.get_double_list(key, {});
@@ -163,12 +177,16 @@ ReachingValidationResult run_reaching_validation(const ReachingValidationSpec& s
       starts.push_back(slack);
       const MuscleErrors e =
           muscle_errors(r.trajectory, m.label, spec.window_start_s, spec.window_end_s, dt);
+      // before: from the line's first taut sample to the episode; after: from the episode
+      // on; a trial without an episode has neither
+      const double taut = first_taut_s(r.trajectory, m.label, spec.window_start_s);
       for (std::size_t i = 0; i < e.time_s.size(); ++i) {
-        const int part = std::isnan(slack) ? 1 : (e.time_s[i] < slack ? 1 : 2);
+        int part = 0;
+        if (!std::isnan(slack)) part = e.time_s[i] >= slack ? 2 : (e.time_s[i] >= taut ? 1 : 0);
         for (int method = 0; method < 2; ++method) {
           const double err = method == 0 ? e.model_pct[i] : e.fiber_pct[i];
           pools[method][0].add(err);
-          pools[method][part].add(err);
+          if (part > 0) pools[method][part].add(err);
         }
       }
     }
@@ -200,11 +218,13 @@ std::string table5_csv(const ReachingValidationResult& result) {
   const auto num = [](double v) { return std::isfinite(v) ? format_shortest(v) : std::string(); };
   for (const ReachingRow& row : result.rows) {
     std::size_t m = 0;
-    while (m < result.scenario.muscles.size() && result.scenario.muscles[m].actuator != row.muscle) ++m;
+    while (m < result.scenario.muscles.size() && result.scenario.muscles[m].actuator != row.muscle)
+      ++m;
     out << row.muscle << ',' << row.method << ',' << row.part << ',' << row.samples << ','
-        << num(row.sim.max) << ',' << num(row.sim.rmse) << ','
-        << (row.paper ? num(row.paper->max) : "") << ',' << (row.paper ? num(row.paper->rmse) : "")
-        << ',' << num(result.slack_start_s[m].front()) << '\n';
+        << num(row.sim.max_pct) << ',' << num(row.sim.rmse_pct) << ','
+        << (row.paper ? num(row.paper->max_pct) : "") << ','
+        << (row.paper ? num(row.paper->rmse_pct) : "") << ','
+        << num(result.slack_start_s[m].front()) << '\n';
   }
   return out.str();
 }
@@ -215,7 +235,7 @@ std::string table5_markdown(const ReachingValidationResult& result,
   const auto cell = [](const ErrorPct& e, int samples) {
     if (samples == 0) return std::string("-");
     char buf[48];
-    std::snprintf(buf, sizeof(buf), "%.3g / %.3g", e.max, e.rmse);
+    std::snprintf(buf, sizeof(buf), "%.3g / %.3g", e.max_pct, e.rmse_pct);
     return std::string(buf);
   };
   out << "# Table V in simulation: length estimation in the reaching task, error in % of length\n\n"
@@ -229,8 +249,9 @@ std::string table5_markdown(const ReachingValidationResult& result,
   out << '\n';
   for (const char* method : kMethods) {
     for (const char* part : kParts) {
-      out << "| " << (std::string(method) == "model" ? "model Eq. (3)" : "fiber sensor") << " | "
-          << part << " |";
+      out << "| "
+          << (std::string(method) == "model" ? "model (the estimator's law)" : "fiber sensor")
+          << " | " << part << " |";
       for (const MuscleSpec& m : result.scenario.muscles) {
         for (const ReachingRow& row : result.rows) {
           if (row.muscle != m.actuator || row.method != method || row.part != part) continue;
@@ -242,11 +263,16 @@ std::string table5_markdown(const ReachingValidationResult& result,
       out << '\n';
     }
   }
-  out << "\nSlack episodes (a taut line at zero tension for " << format_value(spec.min_slack_s)
-      << " s), start per trial [s]:\n\n";
+  int ok = 0;
+  for (const TrialResult& r : result.trials) ok += r.summary.status == "ok";
+  out << "\nTrials that ran to the end: " << ok << " of " << result.trials.size()
+      << ". Slack episodes (a line that has been taut goes " << format_value(spec.min_slack_s)
+      << " s at zero tension; before = from the line's first taut sample to the episode), start "
+         "per trial [s]:\n\n";
   for (std::size_t m = 0; m < result.scenario.muscles.size(); ++m) {
     out << "- " << result.scenario.muscles[m].actuator << ":";
-    for (double s : result.slack_start_s[m]) out << ' ' << (std::isnan(s) ? "none" : format_value(s));
+    for (double s : result.slack_start_s[m])
+      out << ' ' << (std::isnan(s) ? "none" : format_value(s));
     out << '\n';
   }
   return out.str();
@@ -267,7 +293,8 @@ void write_reaching_validation(const ReachingValidationResult& result,
                                          spec.window_end_s, 1.0 / sc.control_hz);
     std::string data;
     for (std::size_t i = 0; i < e.time_s.size(); ++i) {
-      data += gp_num(e.time_s[i]) + ' ' + gp_num(e.model_pct[i]) + ' ' + gp_num(e.fiber_pct[i]) + '\n';
+      data +=
+          gp_num(e.time_s[i]) + ' ' + gp_num(e.model_pct[i]) + ' ' + gp_num(e.fiber_pct[i]) + '\n';
     }
     const std::string name = "m" + std::to_string(m) + ".dat";
     job.data_files.push_back({name, data});
@@ -281,15 +308,19 @@ void write_reaching_validation(const ReachingValidationResult& result,
                  ", graph 1 nohead dt 2 lc rgb '" + colour + "'\n";
     }
     const std::string who = sc.muscles[m].actuator;
-    plots += (plots.empty() ? "" : ", ") + gp_quote(name) + " using 1:2 with lines lw 1.5 lc rgb '" +
-             colour + "' title " + gp_quote("model Eq. (3), " + who) + ", " + gp_quote(name) +
+    plots += (plots.empty() ? "" : ", ") + gp_quote(name) +
+             " using 1:2 with lines lw 1.5 lc rgb '" + colour + "' title " +
+             gp_quote("model, " + who) + ", " + gp_quote(name) +
              " using 1:3 with lines dt 2 lc rgb '" + colour + "' title " +
              gp_quote("fiber sensor, " + who);
   }
-  job.script = "set title " + gp_quote("Reaching task: length estimation error (Fig. 7); shaded: "
-                                       "after the line's slack episode") +
+  job.script = "set title " +
+               gp_quote(
+                   "Reaching task: length estimation error (Fig. 7); shaded: "
+                   "after the line's slack episode") +
                "\nset grid\nset key outside bottom center horizontal\nset xlabel 'time (s)'\n"
-               "set ylabel 'error (% of length)'\n" + shading + "plot " + plots + "\n";
+               "set ylabel 'error (% of length)'\n" +
+               shading + "plot " + plots + "\n";
   run_gnuplot((fs::path(out_dir) / "fig7.png").string(), job);
   write_file_atomically((fs::path(out_dir) / "table5.csv").string(), table5_csv(result));
   write_file_atomically((fs::path(out_dir) / "table5.md").string(), table5_markdown(result, spec));

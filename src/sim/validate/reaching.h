@@ -8,7 +8,10 @@
 //   trials        repetitions, seeds seed .. seed + trials - 1, in [1, 1000]; default 5
 //   window_s      [start, end] of the comparison [s], 0 <= start < end
 //   min_slack_s   a slack episode starts where a line that was taut inside the window has
-//                 zero tension for at least this long [s], > 0; default 0.1
+//                 zero tension for at least this long [s], > 0; default 0.1. "Before" is
+//                 from the line's first taut sample in the window to the episode, "after"
+//                 from the episode to the window's end; a trial without an episode adds to
+//                 neither (only to "all")
 //   [paper]       <method>_<muscle>[_before_slack|_after_slack] = [max, RMSE] (% of
 //                 length), method "model" or "fiber", muscle the scenario's muscle name
 // The fiber sensor reads only the rate of length change: its length is the rate integrated
@@ -23,7 +26,7 @@
 
 #include "sim/core/scenario.h"
 #include "sim/core/trial.h"
-#include "sim/validate/length_estimation.h"
+#include "sim/validate/validation_options.h"
 
 namespace pamsim {
 
@@ -33,19 +36,21 @@ struct ReachingValidationSpec {
   int trials = 5;
   double window_start_s = 0.0, window_end_s = 0.0;
   double min_slack_s = 0.1;
-  std::map<std::string, ErrorPct> paper;   // "model_agonist", "fiber_antagonist_after_slack"
+  std::map<std::string, ErrorPct> paper;  // "model_agonist", "fiber_antagonist_after_slack"
 };
 
-// Throws InputError "<file>: <key> <problem>".
-ReachingValidationSpec load_reaching_validation(const std::string& path);
+// Throws InputError "<file>: <key> <problem>". `protocol_overrides` ("key=value" of the
+// protocol file's own keys) are applied first.
+ReachingValidationSpec load_reaching_validation(
+    const std::string& path, const std::vector<std::string>& protocol_overrides = {});
 
 // One line of Table V: a method on a muscle over a part of the window, pooled over trials
-// (max of |error|, RMSE of every sample).
+// (max of |error|, RMSE of every finite sample).
 struct ReachingRow {
-  std::string muscle;                 // the scenario's muscle (actuator) name
-  std::string label;                  // its column label ("ago")
-  std::string method;                 // "model" | "fiber"
-  std::string part;                   // "all" | "before_slack" | "after_slack"
+  std::string muscle;  // the scenario's muscle (actuator) name
+  std::string label;   // its column label ("ago")
+  std::string method;  // "model" | "fiber"
+  std::string part;    // "all" | "before_slack" | "after_slack"
   ErrorPct sim;
   int samples = 0;
   std::optional<ErrorPct> paper;
@@ -67,8 +72,8 @@ ReachingValidationResult run_reaching_validation(const ReachingValidationSpec& s
 
 // The first slack episode of a muscle in one trajectory: the time [s] at which a line that
 // was taut inside [start, end] has zero tension for min_slack_s, or NaN.
-double slack_episode_start(const Trajectory& trajectory, const std::string& label,
-                           double start_s, double end_s, double min_slack_s);
+double slack_episode_start(const Trajectory& trajectory, const std::string& label, double start_s,
+                           double end_s, double min_slack_s);
 
 // out_dir/table5.csv (muscle, method, part, samples, max_error_pct, rmse_pct,
 // paper_max_error_pct, paper_rmse_pct, slack_start_s: the first trial's), out_dir/table5.md
