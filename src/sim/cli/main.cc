@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   pamsim::add_export_command(app);
   pamsim::add_report_command(app);
   pamsim::add_validate_command(app);
+  pamsim::add_tune_command(app);
 
   try {
     app.parse(argc, argv);

@@ -14,10 +14,12 @@
 #include <iostream>
 
 #include "pam_actuator/atomic_file.h"
+#include "pam_actuator/format.h"
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
 #include "sim/sweep/report.h"
+#include "sim/sweep/tune.h"
 
 namespace pamsim {
 namespace {
@@ -35,7 +37,31 @@ std::string stats_text(const MetricStats& m) {
   return buf;
 }
 
+// A tuning database (pamsim tune): its evaluations, best setting and figures.
+void report_tune(const ReportOptions& opt) {
+  const TuneDb db = TuneDb::open_existing(opt.db);
+  const TuneDefinition def = tune_definition_from_db(db);
+  const std::vector<TuneEvaluation> history = db.evaluations();
+  std::string out = opt.out;
+  if (out.empty()) {
+    out = std::filesystem::path(opt.db).parent_path().string();
+    if (out.empty()) out = ".";
+  }
+  write_tune_outputs(def, history, out);
+  const TuneEvaluation* best = best_evaluation(history);
+  std::cout << "tuning: " << def.file << " (" << history.size() << " evaluations stored)\n"
+            << "best: evaluation " << best->index
+            << (best->violation == 0.0 ? "" : " (none feasible)");
+  for (std::size_t i = 0; i < def.parameters.size(); ++i) {
+    std::cout << ", " << def.parameters[i].key << " = " << format_value(best->values[i]);
+  }
+  std::cout << "; " << def.objectives[0].metric << " " << format_value(best->objectives[0])
+            << "\noutputs: " << out << "/{best.toml,evaluations.csv,convergence.png"
+            << (def.objectives.size() > 1 ? ",pareto.csv,pareto.png" : "") << "}\n";
+}
+
 void report(const ReportOptions& opt) {
+  if (TuneDb::is_tune_database(opt.db)) return report_tune(opt);
   const ResultsDb db = ResultsDb::open_existing(opt.db);
   const SweepSummary sweep = summarize_sweep(db);
   if (sweep.metric_index(opt.metric) < 0) {
@@ -99,8 +125,10 @@ void report(const ReportOptions& opt) {
 void add_report_command(CLI::App& app) {
   auto opt = std::make_shared<ReportOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "report", "Per-point statistics, heat maps and the best setting of a sweep database");
-  cmd->add_option("db", opt->db, "Sweep database (from pamsim sweep)")->required();
+      "report", "Per-point statistics, heat maps and the best setting of a sweep database (or a "
+                "tuning database's evaluations, best setting, convergence and Pareto front)");
+  cmd->add_option("db", opt->db, "Sweep or tuning database (from pamsim sweep / tune)")
+      ->required();
   cmd->add_option("--metric", opt->metric,
                   "Metric to minimise for the best setting (default peak_drop_deg)");
   cmd->add_option("--out", opt->out, "Output folder (default: the database's folder)");

@@ -231,11 +231,21 @@ std::string best_criterion(const SweepSummary& sweep, const std::string& metric)
 
 std::string point_scenario_toml(const SweepSummary& sweep, const PointSummary& point,
                                 const std::string& scenario_dir, const std::string& header) {
-  ConfigReader in(sweep.base_scenario, sweep.base_path);
-  for (const auto& o : sweep.fixed) in.apply_override(o);
+  std::vector<std::string> overrides = sweep.fixed;
   for (std::size_t a = 0; a < sweep.axis_keys.size(); ++a) {
-    in.apply_override(sweep.axis_keys[a] + "=" + point.axis_values[a]);
+    overrides.push_back(sweep.axis_keys[a] + "=" + point.axis_values[a]);
   }
+  return scenario_with_overrides_toml(sweep.base_scenario, sweep.base_path, overrides,
+                                      scenario_dir, header);
+}
+
+std::string scenario_with_overrides_toml(const std::string& base_text,
+                                         const std::string& base_path,
+                                         const std::vector<std::string>& overrides,
+                                         const std::string& scenario_dir,
+                                         const std::string& header) {
+  ConfigReader in(base_text, base_path);
+  for (const auto& o : overrides) in.apply_override(o);
   // file paths: relative to the new file's folder
   const fs::path dir = fs::weakly_canonical(fs::absolute(scenario_dir));
   for (const auto& key : in.leaf_keys()) {

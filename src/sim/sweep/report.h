@@ -58,6 +58,12 @@ std::string best_criterion(const SweepSummary& sweep, const std::string& metric)
 // header saying where it came from.
 std::string point_scenario_toml(const SweepSummary& sweep, const PointSummary& point,
                                 const std::string& scenario_dir, const std::string& header);
+// The same for any scenario text (read as if from base_path) with `overrides` applied.
+std::string scenario_with_overrides_toml(const std::string& base_text,
+                                         const std::string& base_path,
+                                         const std::vector<std::string>& overrides,
+                                         const std::string& scenario_dir,
+                                         const std::string& header);
 
 // points.csv: point, the axis values, trials, ok, mistrip_rate, then <metric>_mean, _std,
 // _min, _max for every metric (timing metrics left out).

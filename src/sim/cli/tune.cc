@@ -1,0 +1,134 @@
+// tune.cc: `pamsim tune TUNE.toml [--db FILE] [--out DIR] [--threads N] [--resume]`: tunes a
+// scenario's settings with pagmo2's CMA-ES or NSGA-II (src/sim/sweep/tune.h), every
+// evaluation stored in SQLite as it finishes; then checks the best setting and the file's
+// references on held-out seeds and writes best.toml, evaluations.csv, convergence.png (and
+// the Pareto front). Everything is validated before the database is created. A killed run
+// keeps every finished evaluation; --resume replays the optimiser with them and goes on.
+#include "sim/sweep/tune.h"
+
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "pam_actuator/atomic_file.h"
+#include "pam_actuator/format.h"
+#include "pam_actuator/input_error.h"
+#include "sim/cli/commands.h"
+#include "sim/cli/progress.h"
+#include "sim/core/runner.h"
+#include "sim/io/outputs.h"
+
+namespace pamsim {
+namespace {
+
+struct TuneOptions {
+  std::string file;
+  std::string db;
+  std::string out;
+  int threads = 0;
+  bool resume = false;
+};
+
+// held_out.csv: one row per setting checked on the held-out seeds
+std::string held_out_csv(const TuneDefinition& def, const std::vector<HeldOutCheck>& checks) {
+  std::string out = "setting";
+  for (const TuneParameter& p : def.parameters) out += "," + p.key;
+  for (const TuneObjective& o : def.objectives) out += "," + o.metric + "_mean";
+  for (const TuneConstraint& c : def.constraints) out += "," + c.metric + "_mean";
+  out += ",violation,trials,ok\n";
+  const auto num = [](double v) { return std::isfinite(v) ? format_shortest(v) : std::string(); };
+  for (const HeldOutCheck& c : checks) {
+    out += c.name;
+    for (double v : c.values) out += "," + num(v);
+    for (double v : c.objectives) out += "," + num(v);
+    for (double v : c.constraints) out += "," + num(v);
+    out +=
+        "," + num(c.violation) + "," + std::to_string(c.trials) + "," + std::to_string(c.ok) + "\n";
+  }
+  return out;
+}
+
+void tune(const TuneOptions& opt) {
+  if (opt.threads < 0) {
+    throw InputError("--threads must be >= 1 (or 0 for all cores), got " +
+                     std::to_string(opt.threads));
+  }
+  const TuneDefinition def = load_tune_definition(opt.file);  // everything validated first
+  const std::string out =
+      opt.out.empty() ? "renders/" + std::filesystem::path(opt.file).stem().string() : opt.out;
+  const std::string db_path = opt.db.empty() ? out + "/tune.db" : opt.db;
+  const int threads = opt.threads > 0 ? opt.threads : default_thread_count();
+  std::error_code ec;
+  const bool exists = std::filesystem::exists(db_path, ec);
+  if (!exists) {
+    const auto parent = std::filesystem::path(db_path).parent_path();
+    if (!parent.empty()) make_directories(parent.string());
+  }
+  if (opt.resume && !exists) throw InputError(db_path + ": --resume, but there is no database");
+  TuneDb db = opt.resume ? TuneDb::open_to_resume(db_path, def) : TuneDb::create(db_path, def);
+
+  const std::int64_t total = static_cast<std::int64_t>(def.population) * (def.generations + 1);
+  std::cerr << "pamsim tune: " << (def.algorithm == TuneAlgorithm::kCmaes ? "CMA-ES" : "NSGA-II")
+            << ", " << def.generations << " generations of " << def.population << " (" << total
+            << " evaluations) x " << def.seeds * def.noise_scales.size() << " trials each, on "
+            << threads << (threads == 1 ? " thread" : " threads") << " into " << db_path << "\n";
+  ProgressReporter progress("pamsim tune", total, 0, std::cerr, ::isatty(STDERR_FILENO) != 0);
+  TuneRunOptions run;
+  run.threads = threads;
+  run.on_evaluation = [&](std::int64_t done, std::int64_t, bool) { progress.update(done); };
+  const TuneRunResult r = run_tune(def, db, run);
+  progress.finish(static_cast<std::int64_t>(r.history.size()));
+  if (r.cached > 0) std::cerr << "pamsim tune: " << r.cached << " evaluations from the database\n";
+
+  write_tune_outputs(def, r.history, out);
+  const TuneEvaluation* best = best_evaluation(r.history);
+  std::vector<TuneReference> settings = {
+      {"tuned (evaluation " + std::to_string(best->index) + ")", best->values}};
+  settings.insert(settings.end(), def.references.begin(), def.references.end());
+  if (def.held_out_seeds > 0) {
+    const std::vector<HeldOutCheck> checks = check_held_out(def, settings, threads);
+    write_file_atomically(out + "/held_out.csv", held_out_csv(def, checks));
+    std::ostringstream table;
+    table << "held-out check (" << def.held_out_seeds << " seeds x " << def.noise_scales.size()
+          << " noise levels, not used in tuning):\n";
+    for (const HeldOutCheck& c : checks) {
+      table << "  " << c.name << ":";
+      for (std::size_t i = 0; i < c.values.size(); ++i) {
+        table << (i ? ", " : " ") << def.parameters[i].key << " = " << format_value(c.values[i]);
+      }
+      for (std::size_t i = 0; i < c.objectives.size(); ++i) {
+        table << "; " << def.objectives[i].metric << " " << format_value(c.objectives[i]);
+      }
+      for (std::size_t i = 0; i < c.constraints.size(); ++i) {
+        table << "; " << def.constraints[i].metric << " " << format_value(c.constraints[i]);
+      }
+      table << (c.violation == 0.0 ? "" : " (breaks a constraint)") << "\n";
+    }
+    std::cout << table.str();
+  }
+  std::cout << "outputs: " << out << "/{best.toml,evaluations.csv,convergence.png"
+            << (def.objectives.size() > 1 ? ",pareto.csv,pareto.png" : "")
+            << (def.held_out_seeds > 0 ? ",held_out.csv" : "") << "}\n";
+}
+
+}  // namespace
+
+void add_tune_command(CLI::App& app) {
+  auto opt = std::make_shared<TuneOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "tune", "Tune a scenario's settings with CMA-ES or NSGA-II (pagmo2) into SQLite");
+  cmd->add_option("tune", opt->file, "Tuning file (TOML)")->required();
+  cmd->add_option("--db", opt->db, "Tuning database (default DIR/tune.db)");
+  cmd->add_option("--out", opt->out, "Output folder (default renders/<tuning file name>)");
+  cmd->add_option("--threads", opt->threads, "Worker threads (default: all cores)");
+  cmd->add_flag("--resume", opt->resume, "Continue the tuning stored in the database");
+  cmd->callback([opt] { tune(*opt); });
+}
+
+}  // namespace pamsim

@@ -1,0 +1,159 @@
+// tune_test.cc: `pamsim tune` (src/sim/sweep/tune.h): the optimiser finds an optimum known
+// from physics, an interrupted run resumed gives the uninterrupted run's result without
+// evaluating anything twice, the same seed gives the same history, and bad tuning files are
+// refused in one line with no database left.
+#include "sim/sweep/tune.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli_util.h"
+#include "pam_actuator/input_error.h"
+
+namespace pamsim {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kScenarios = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/";
+
+// A pressure-sensor bias b shifts every Eq. (3) inversion: on the ideal plant without noise
+// the length estimate is exact only at b = 0, so the estimate's RMS error has its minimum
+// there. Short trials (0.6 s, no drop).
+std::string bias_tuning(const std::string& dir, int generations) {
+  const std::string text =
+      "base = \"" + kScenarios + "drop_mass_ideal.toml\"\n" +
+      "overrides = [\"sim.duration_s=0.6\", \"drop.time_s=0.3\", \"drop.enabled=false\", "
+      "\"reflex.enabled=false\"]\n"
+      "algorithm = \"cmaes\"\ngenerations = " +
+      std::to_string(generations) +
+      "\npopulation = 6\nseed = 3\nseeds = 1\nnoise_scales = [0.0]\n"
+      "held_out_seeds = 0\n"
+      "[[parameter]]\nkey = \"sensors.pressure_bias_MPa\"\n"
+      "from = -0.05\nto = 0.03\n"
+      "[[objective]]\nmetric = \"length_est_rmse_pct\"\n";
+  const std::string path = dir + "/bias.toml";
+  pamsim_test::write_text(path, text);
+  return path;
+}
+
+std::string fresh(const std::string& name) {
+  return pamsim_test::fresh_dir("tune_" + name).string();
+}
+
+TEST(TuneTest, CmaesFindsThePressureBiasThatMakesTheEstimateExact) {
+  const std::string dir = fresh("bias");
+  const TuneDefinition def = load_tune_definition(bias_tuning(dir, 10));
+  TuneDb db = TuneDb::create(dir + "/tune.db", def);
+  TuneRunOptions o;
+  o.threads = 2;
+  const TuneRunResult r = run_tune(def, db, o);
+  ASSERT_EQ(r.history.size(), 6u * 11u);
+  const TuneEvaluation* best = best_evaluation(r.history);
+  ASSERT_NE(best, nullptr);
+  EXPECT_EQ(best->violation, 0.0);
+  EXPECT_NEAR(best->values[0], 0.0, 0.002) << "the bias that makes Eq. (3)'s inversion exact";
+  // and it is much better than the bounds' settings
+  const double at_bound = r.history.front().objectives[0];
+  EXPECT_LT(best->objectives[0], 0.2 * std::max(at_bound, 0.1));
+}
+
+TEST(TuneTest, AnInterruptedRunResumedEqualsAnUninterruptedOne) {
+  const std::string dir = fresh("resume");
+  const TuneDefinition def = load_tune_definition(bias_tuning(dir, 5));
+  TuneRunOptions o;
+  o.threads = 2;
+
+  TuneDb whole = TuneDb::create(dir + "/whole.db", def);
+  const TuneRunResult uninterrupted = run_tune(def, whole, o);
+
+  // stop after 13 evaluations (mid-generation), then resume in a new handle
+  TuneRunResult first, second;
+  {
+    TuneDb db = TuneDb::create(dir + "/parts.db", def);
+    std::atomic<bool> stop{false};
+    TuneRunOptions stopping = o;
+    stopping.stop = &stop;
+    stopping.on_evaluation = [&](std::int64_t, std::int64_t, bool cached) {
+      static int fresh_evaluations = 0;
+      if (!cached && ++fresh_evaluations >= 13) stop = true;
+    };
+    first = run_tune(def, db, stopping);
+  }
+  EXPECT_TRUE(first.interrupted);
+  ASSERT_EQ(first.history.size(), 13u);
+  {
+    TuneDb db = TuneDb::open_to_resume(dir + "/parts.db", def);
+    second = run_tune(def, db, o);
+  }
+  EXPECT_FALSE(second.interrupted);
+  EXPECT_EQ(second.cached, 13) << "the stored evaluations answer the replay";
+  ASSERT_EQ(second.history.size(), uninterrupted.history.size());
+  for (std::size_t i = 0; i < second.history.size(); ++i) {
+    EXPECT_EQ(second.history[i].index, uninterrupted.history[i].index);
+    EXPECT_EQ(second.history[i].values, uninterrupted.history[i].values) << i;
+    EXPECT_EQ(second.history[i].fitness, uninterrupted.history[i].fitness) << i;
+  }
+  EXPECT_EQ(tune_evaluations_csv(def, second.history),
+            tune_evaluations_csv(def, uninterrupted.history));
+  // a resume of another definition is refused
+  const TuneDefinition other = load_tune_definition(bias_tuning(dir, 6));
+  EXPECT_THROW(TuneDb::open_to_resume(dir + "/parts.db", other), InputError);
+}
+
+TEST(TuneTest, CliWritesItsOutputsAndReportReadsTheDatabase) {
+  const std::string dir = fresh("cli");
+  const std::string file = bias_tuning(dir, 2);
+  const auto r = pamsim_test::run_pamsim("tune " + file + " --threads 2 --out " + dir + "/out");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* f : {"tune.db", "best.toml", "evaluations.csv", "convergence.png"}) {
+    EXPECT_TRUE(fs::exists(dir + "/out/" + f)) << f;
+  }
+  // best.toml runs as it is
+  const auto run = pamsim_test::run_pamsim("run " + dir + "/out/best.toml --out " + dir + "/run");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  // report regenerates the outputs from the database alone
+  fs::remove(dir + "/out/best.toml");
+  const auto rep = pamsim_test::run_pamsim("report " + dir + "/out/tune.db");
+  EXPECT_EQ(rep.exit_code, 0) << rep.err;
+  EXPECT_TRUE(fs::exists(dir + "/out/best.toml"));
+  EXPECT_NE(rep.out.find("18 evaluations stored"), std::string::npos) << rep.out;
+  // a second run into the same database is refused without --resume; with it, nothing runs
+  EXPECT_NE(pamsim_test::run_pamsim("tune " + file + " --out " + dir + "/out").exit_code, 0);
+  const auto again = pamsim_test::run_pamsim("tune " + file + " --resume --out " + dir + "/out");
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.err.find("18 evaluations from the database"), std::string::npos) << again.err;
+}
+
+TEST(TuneTest, BadTuningFilesAreOneLineAndLeaveNoDatabase) {
+  const std::string dir = fresh("bad");
+  const std::string good = pamsim_test::read_file(bias_tuning(dir, 2));
+  struct Case {
+    std::string from, to, says;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"from = -0.05\nto = 0.03", "from = 0.03\nto = -0.05", "parameter[0].from"},
+           {"key = \"sensors.pressure_bias_MPa\"", "key = \"sensors.no_such_key\"", "no_such_key"},
+           {"metric = \"length_est_rmse_pct\"", "metric = \"no_such_metric\"", "no_such_metric"},
+           {"seeds = 1", "seeds = 0", "seeds"},
+           {"population = 6", "population = 3", "population"},
+           {"algorithm = \"cmaes\"", "algorithm = \"annealing\"", "algorithm"}}) {
+    std::string text = good;
+    ASSERT_NE(text.find(c.from), std::string::npos) << c.from;
+    text.replace(text.find(c.from), c.from.size(), c.to);
+    pamsim_test::write_text(dir + "/case.toml", text);
+    const auto r = pamsim_test::run_pamsim("tune " + dir + "/case.toml --out " + dir + "/out");
+    EXPECT_EQ(r.exit_code, 2) << c.to;
+    EXPECT_EQ(pamsim_test::line_count(r.err), 1) << c.to << ": " << r.err;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/out/tune.db")) << c.to;
+  }
+}
+
+}  // namespace
+}  // namespace pamsim
