@@ -130,6 +130,41 @@ TEST(TuneTest, CliWritesItsOutputsAndReportReadsTheDatabase) {
   EXPECT_NE(again.err.find("18 evaluations from the database"), std::string::npos) << again.err;
 }
 
+// NSGA-II on two objectives: a Pareto front in which no member dominates another, written as
+// CSV and a figure
+TEST(TuneTest, Nsga2WritesANonDominatedParetoFront) {
+  const std::string dir = fresh("nsga2");
+  std::string text = pamsim_test::read_file(bias_tuning(dir, 3));
+  const auto swap = [&](const std::string& from, const std::string& to) {
+    ASSERT_NE(text.find(from), std::string::npos) << from;
+    text.replace(text.find(from), from.size(), to);
+  };
+  swap("algorithm = \"cmaes\"", "algorithm = \"nsga2\"");
+  swap("population = 6", "population = 8");
+  text += "[[objective]]\nmetric = \"length_est_max_error_pct\"\n";
+  pamsim_test::write_text(dir + "/two.toml", text);
+  const auto r = pamsim_test::run_pamsim("tune " + dir + "/two.toml --threads 2 --out " + dir +
+                                         "/out");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir + "/out/pareto.png"));
+  const TuneDb db = TuneDb::open_existing(dir + "/out/tune.db");
+  const std::vector<TuneEvaluation> history = db.evaluations();
+  // 8 x (3 + 1) calls; a point NSGA-II proposes twice is evaluated once
+  EXPECT_GE(history.size(), 8u);
+  EXPECT_LE(history.size(), 8u * 4u);
+  const std::vector<const TuneEvaluation*> front = pareto_front(history);
+  ASSERT_FALSE(front.empty());
+  for (const TuneEvaluation* a : front) {
+    for (const TuneEvaluation* b : front) {
+      const bool dominated = b->fitness[0] <= a->fitness[0] && b->fitness[1] <= a->fitness[1] &&
+                             (b->fitness[0] < a->fitness[0] || b->fitness[1] < a->fitness[1]);
+      EXPECT_FALSE(dominated) << b->index << " dominates " << a->index;
+    }
+  }
+  const std::string csv = pamsim_test::read_file(dir + "/out/pareto.csv");
+  EXPECT_EQ(pamsim_test::line_count(csv), static_cast<int>(front.size()) + 1);
+}
+
 TEST(TuneTest, BadTuningFilesAreOneLineAndLeaveNoDatabase) {
   const std::string dir = fresh("bad");
   const std::string good = pamsim_test::read_file(bias_tuning(dir, 2));

@@ -24,8 +24,10 @@ std::string format_duration(double seconds) {
 }
 
 ProgressReporter::ProgressReporter(std::string label, std::int64_t total,
-                                   std::int64_t already_done, std::ostream& out, bool terminal)
+                                   std::int64_t already_done, std::ostream& out, bool terminal,
+                                   std::string unit)
     : label_(std::move(label)),
+      unit_(std::move(unit)),
       total_(total),
       already_done_(already_done),
       out_(out),
@@ -58,9 +60,9 @@ void ProgressReporter::print(std::int64_t done, bool last) {
   const double eta = rate > 0 ? (total_ - done) / rate : NAN;
   const double fraction = total_ > 0 ? static_cast<double>(done) / total_ : 1.0;
   char numbers[160];
-  std::snprintf(numbers, sizeof(numbers), "%lld/%lld  %5.1f%%  %.1f trials/s  %s %s",
+  std::snprintf(numbers, sizeof(numbers), "%lld/%lld  %5.1f%%  %.1f %s/s  %s %s",
                 static_cast<long long>(done), static_cast<long long>(total_), 100.0 * fraction,
-                std::isfinite(rate) ? rate : 0.0, last ? "elapsed" : "ETA",
+                std::isfinite(rate) ? rate : 0.0, unit_.c_str(), last ? "elapsed" : "ETA",
                 format_duration(last ? elapsed : eta).c_str());
   if (terminal_) {
     const int filled = static_cast<int>(fraction * kBarWidth);

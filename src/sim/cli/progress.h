@@ -13,8 +13,9 @@ namespace pamsim {
 
 class ProgressReporter {
  public:
+  // `unit` names what is counted in the rate ("trials/s", "evaluations/s").
   ProgressReporter(std::string label, std::int64_t total, std::int64_t already_done,
-                   std::ostream& out, bool terminal);
+                   std::ostream& out, bool terminal, std::string unit = "trials");
   void update(std::int64_t done);   // throttled
   void finish(std::int64_t done);   // always prints the last state
 
@@ -22,6 +23,7 @@ class ProgressReporter {
   void print(std::int64_t done, bool last);
 
   std::string label_;
+  std::string unit_;
   std::int64_t total_;
   std::int64_t already_done_;
   std::ostream& out_;

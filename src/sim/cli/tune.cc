@@ -78,7 +78,8 @@ void tune(const TuneOptions& opt) {
             << ", " << def.generations << " generations of " << def.population << " (" << total
             << " evaluations) x " << def.seeds * def.noise_scales.size() << " trials each, on "
             << threads << (threads == 1 ? " thread" : " threads") << " into " << db_path << "\n";
-  ProgressReporter progress("pamsim tune", total, 0, std::cerr, ::isatty(STDERR_FILENO) != 0);
+  ProgressReporter progress("pamsim tune", total, 0, std::cerr, ::isatty(STDERR_FILENO) != 0,
+                            "evaluations");
   TuneRunOptions run;
   run.threads = threads;
   run.on_evaluation = [&](std::int64_t done, std::int64_t, bool) { progress.update(done); };
@@ -91,12 +92,10 @@ void tune(const TuneOptions& opt) {
   std::vector<TuneReference> settings = {
       {"tuned (evaluation " + std::to_string(best->index) + ")", best->values}};
   settings.insert(settings.end(), def.references.begin(), def.references.end());
-  if (def.held_out_seeds > 0) {
-    const std::vector<HeldOutCheck> checks = check_held_out(def, settings, threads);
-    write_file_atomically(out + "/held_out.csv", held_out_csv(def, checks));
+  // the best and the references, on the tuning seeds and on held-out ones
+  const auto print_checks = [&](const std::vector<HeldOutCheck>& checks, const std::string& what) {
     std::ostringstream table;
-    table << "held-out check (" << def.held_out_seeds << " seeds x " << def.noise_scales.size()
-          << " noise levels, not used in tuning):\n";
+    table << what << ":\n";
     for (const HeldOutCheck& c : checks) {
       table << "  " << c.name << ":";
       for (std::size_t i = 0; i < c.values.size(); ++i) {
@@ -111,10 +110,21 @@ void tune(const TuneOptions& opt) {
       table << (c.violation == 0.0 ? "" : " (breaks a constraint)") << "\n";
     }
     std::cout << table.str();
+  };
+  const std::vector<HeldOutCheck> on_tuning = check_held_out(def, settings, threads, true);
+  write_file_atomically(out + "/tuning_seeds.csv", held_out_csv(def, on_tuning));
+  print_checks(on_tuning, "on the tuning seeds (" + std::to_string(def.seeds) + " seeds x " +
+                              std::to_string(def.noise_scales.size()) + " noise levels)");
+  if (def.held_out_seeds > 0) {
+    const std::vector<HeldOutCheck> checks = check_held_out(def, settings, threads);
+    write_file_atomically(out + "/held_out.csv", held_out_csv(def, checks));
+    print_checks(checks, "held-out check (" + std::to_string(def.held_out_seeds) + " seeds x " +
+                             std::to_string(def.noise_scales.size()) +
+                             " noise levels, not used in tuning)");
   }
   std::cout << "outputs: " << out << "/{best.toml,evaluations.csv,convergence.png"
             << (def.objectives.size() > 1 ? ",pareto.csv,pareto.png" : "")
-            << (def.held_out_seeds > 0 ? ",held_out.csv" : "") << "}\n";
+            << ",tuning_seeds.csv" << (def.held_out_seeds > 0 ? ",held_out.csv" : "") << "}\n";
 }
 
 }  // namespace

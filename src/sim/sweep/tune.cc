@@ -823,11 +823,13 @@ std::vector<const TuneEvaluation*> pareto_front(const std::vector<TuneEvaluation
 }
 
 std::vector<HeldOutCheck> check_held_out(const TuneDefinition& def,
-                                         const std::vector<TuneReference>& settings, int threads) {
+                                         const std::vector<TuneReference>& settings, int threads,
+                                         bool tuning_seeds) {
   std::vector<HeldOutCheck> out;
   for (const TuneReference& s : settings) {
     const std::vector<TrialOutcome> trials =
-        run_setting(def, s.values, kHeldOutSeedOffset, def.held_out_seeds, threads);
+        tuning_seeds ? run_setting(def, s.values, 0, def.seeds, threads)
+                     : run_setting(def, s.values, kHeldOutSeedOffset, def.held_out_seeds, threads);
     const TuneEvaluation e = score(def, s.values, trials);
     HeldOutCheck c;
     c.name = s.name;

@@ -5,7 +5,9 @@
 // parameters, objectives and per-trial metrics) is stored in SQLite as it finishes; the
 // optimiser is deterministic for its seed, so a run interrupted at any point is resumed by
 // replaying it with the stored evaluations answered from the database: nothing is evaluated
-// twice and the result is the uninterrupted run's.
+// twice (a point the optimiser proposes again is answered the same way, so the database
+// holds distinct points) and the result is the uninterrupted run's. An evaluation's trials
+// run in parallel on the trial pool (parallel_for); pagmo proposes the points one by one.
 //
 // Tuning file keys (paths relative to the file):
 //   base              scenario file, required
@@ -166,8 +168,11 @@ struct HeldOutCheck {
   int trials = 0, ok = 0;
   double violation = 0.0;
 };
+// On the held-out seeds (base.seed + 1000 ..., def.held_out_seeds of them), or with
+// `tuning_seeds` on the seeds every evaluation used.
 std::vector<HeldOutCheck> check_held_out(const TuneDefinition& def,
-                                         const std::vector<TuneReference>& settings, int threads);
+                                         const std::vector<TuneReference>& settings, int threads,
+                                         bool tuning_seeds = false);
 
 // DIR/best.toml (the base scenario with the best values, ready for `pamsim run`),
 // DIR/evaluations.csv, DIR/convergence.png, and with several objectives DIR/pareto.csv and
