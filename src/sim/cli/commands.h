@@ -22,8 +22,8 @@ void add_render_command(CLI::App& app);     // a trial as MP4/PNG video, headles
 void add_sweep_command(CLI::App& app);      // run a parameter sweep into SQLite
 void add_export_command(CLI::App& app);     // a sweep database as CSV
 void add_report_command(CLI::App& app);     // per-point statistics, heat maps, best setting
-void add_validate_command(CLI::App& app);
-void add_tune_command(CLI::App& app);       // tune settings with CMA-ES / NSGA-II (pagmo2)   // the papers' validation experiments (Table III, V)
+void add_validate_command(CLI::App& app);   // the papers' validation experiments (Table III, V)
+void add_tune_command(CLI::App& app);       // tune settings with CMA-ES / NSGA-II (pagmo2)
 
 // Thrown by a command that has printed its own message and ends with `code` (e.g. 130 for
 // an interrupted sweep).

@@ -17,6 +17,7 @@
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
 #include "sim/cli/progress.h"
+#include "sim/cli/stop_signal.h"
 #include "sim/sweep/results_db.h"
 #include "sim/core/runner.h"
 #include "sim/sweep/sweep.h"
@@ -24,42 +25,6 @@
 
 namespace pamsim {
 namespace {
-
-std::atomic<bool> g_stop_requested{false};
-std::atomic<int> g_stop_signal{0};
-static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free,
-              "set from a signal handler");
-
-extern "C" void request_stop(int signal_number) {
-  g_stop_signal = signal_number;
-  g_stop_requested = true;
-}
-
-// SIGINT/SIGTERM ask the sweep to stop for its lifetime; the handler is one-shot
-// (SA_RESETHAND), so a second Ctrl-C kills the process at once.
-class StopOnSignal {
- public:
-  StopOnSignal() {
-    g_stop_requested = false;
-    g_stop_signal = 0;
-    struct sigaction action {};
-    action.sa_handler = request_stop;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESETHAND;
-    sigaction(SIGINT, &action, &old_int_);
-    sigaction(SIGTERM, &action, &old_term_);
-  }
-  ~StopOnSignal() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  StopOnSignal(const StopOnSignal&) = delete;
-  StopOnSignal& operator=(const StopOnSignal&) = delete;
-
- private:
-  struct sigaction old_int_ {};
-  struct sigaction old_term_ {};
-};
 
 struct SweepOptions {
   std::string sweep_file;
@@ -101,7 +66,7 @@ void sweep(const SweepOptions& opt) {
                             ::isatty(STDERR_FILENO) != 0);
   SweepRunOptions run_options;
   run_options.threads = threads;
-  run_options.stop = &g_stop_requested;
+  run_options.stop = &stop_requested();
   run_options.on_progress = [&](std::int64_t stored) { progress.update(stored); };
   const SweepRunResult r = run_sweep(def, db, run_options);
   const std::int64_t stored = r.already_done + r.ran;
@@ -118,7 +83,7 @@ void sweep(const SweepOptions& opt) {
     std::cerr << "pamsim sweep: interrupted with " << stored << " of " << def.trials()
               << " trials stored; finish with: pamsim sweep " << opt.sweep_file << " --db "
               << db_path << " --resume\n";
-    throw CommandExit(128 + g_stop_signal.load());   // the shell's code for that signal
+    throw CommandExit(128 + stop_signal());   // the shell's code for that signal
   }
   std::cout << db_path << "\n";
   std::cerr << "pamsim sweep: next: pamsim export " << db_path << " --csv FILE; pamsim report "

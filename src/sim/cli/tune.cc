@@ -21,6 +21,7 @@
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
+#include "sim/cli/stop_signal.h"
 #include "sim/core/runner.h"
 #include "sim/io/outputs.h"
 
@@ -80,12 +81,29 @@ void tune(const TuneOptions& opt) {
             << threads << (threads == 1 ? " thread" : " threads") << " into " << db_path << "\n";
   ProgressReporter progress("pamsim tune", total, 0, std::cerr, ::isatty(STDERR_FILENO) != 0,
                             "evaluations");
+  const std::string made_by = db.meta("pamsim_version");
+  if (made_by != PAMSIM_VERSION) {
+    std::cerr << "pamsim tune: warning: " << db_path << " was started by pamsim " << made_by
+              << ", this is " << PAMSIM_VERSION << "; its evaluations may not be comparable\n";
+  }
+  StopOnSignal stop_on_signal;
   TuneRunOptions run;
   run.threads = threads;
-  run.on_evaluation = [&](std::int64_t done, std::int64_t, bool) { progress.update(done); };
+  run.stop = &stop_requested();
+  std::int64_t calls = 0;
+  run.on_evaluation = [&](std::int64_t done, std::int64_t, bool) { progress.update(calls = done); };
   const TuneRunResult r = run_tune(def, db, run);
-  progress.finish(static_cast<std::int64_t>(r.history.size()));
-  if (r.cached > 0) std::cerr << "pamsim tune: " << r.cached << " evaluations from the database\n";
+  progress.finish(calls);
+  if (r.cached > 0) {
+    std::cerr << "pamsim tune: " << r.cached
+              << " proposals answered from the database (stored before, or proposed again)\n";
+  }
+  if (r.interrupted) {
+    std::cerr << "pamsim tune: interrupted with " << r.history.size()
+              << " evaluations stored; finish with: pamsim tune " << opt.file << " --db "
+              << db_path << " --out " << out << " --resume\n";
+    throw CommandExit(128 + stop_signal());
+  }
 
   write_tune_outputs(def, r.history, out);
   const TuneEvaluation* best = best_evaluation(r.history);

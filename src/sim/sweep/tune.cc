@@ -274,6 +274,8 @@ TuneDefinition load_tune_definition(const std::string& path) {
   def.file = path;
   def.base_path = in.get_path("base", "");
   in.check(!def.base_path.empty(), "base", "is required (the base scenario file)");
+  // absolute: the stored definition must not depend on the folder pamsim ran from
+  def.base_path = fs::weakly_canonical(fs::absolute(def.base_path)).string();
   try {
     def.base_text = read_text_file(def.base_path);
   } catch (const InputError& e) {
@@ -307,9 +309,13 @@ TuneDefinition load_tune_definition(const std::string& path) {
   def.seeds = static_cast<int>(seeds);
   def.noise_scales = in.get_double_list("noise_scales", def.noise_scales);
   in.check(!def.noise_scales.empty(), "noise_scales", "must hold at least one level");
-  for (double n : def.noise_scales) {
+  for (std::size_t i = 0; i < def.noise_scales.size(); ++i) {
+    const double n = def.noise_scales[i];
     in.check(n >= 0.0 && n <= 1000.0, "noise_scales",
              "must be within [0, 1000], got " + format_value(n));
+    in.check(std::find(def.noise_scales.begin(), def.noise_scales.begin() + i, n) ==
+                 def.noise_scales.begin() + i,
+             "noise_scales", "names " + format_value(n) + " twice");
   }
   const std::int64_t held_out = in.get_int("held_out_seeds", def.held_out_seeds);
   in.check(held_out >= 0 && held_out <= 1000, "held_out_seeds",
@@ -404,15 +410,28 @@ TuneDefinition load_tune_definition(const std::string& path) {
                                         " numbers, one per [[parameter]]");
       }
       for (const toml::node& n : *values) {
-        if (!(n.is_integer() || n.is_floating_point()))
+        if (!(n.is_integer() || n.is_floating_point())) {
           in.fail(e.where + "values", "must be numbers");
-        r.values.push_back(*n.value<double>());
+        }
+        const double v = *n.value<double>();
+        in.check(std::isfinite(v), e.where + "values", "must be finite, got " + format_value(v));
+        r.values.push_back(v);
       }
       def.references.push_back(r);
     }
   }
   in.reject_unknown();
 
+  // every reference must make a valid scenario
+  for (std::size_t i = 0; i < def.references.size(); ++i) {
+    try {
+      load_scenario_text(def.base_text, def.base_path,
+                         parameter_overrides(def, def.references[i].values));
+    } catch (const InputError& e) {
+      throw InputError(path + ": reference[" + std::to_string(i) + "] (" +
+                       def.references[i].name + "): " + e.what());
+    }
+  }
   // every parameter at both bounds must make a valid scenario (a bad key fails here)
   for (std::size_t i = 0; i < def.parameters.size(); ++i) {
     for (double u : {0.0, 1.0}) {
@@ -510,8 +529,13 @@ TuneDb TuneDb::create(const std::string& path, const TuneDefinition& def) {
       throw;
     }
   }
-  fs::rename(tmp, path, ec);
-  if (ec) throw InputError(path + ": cannot create the tuning database (" + ec.message() + ")");
+  // link(2) refuses an existing target, where rename would replace a file made meanwhile
+  if (::link(tmp.c_str(), path.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    fs::remove(tmp, ec);
+    throw InputError(path + ": cannot create the tuning database (" + why + ")");
+  }
+  fs::remove(tmp, ec);
   return open_to_resume(path, def);
 }
 
@@ -533,7 +557,8 @@ TuneDb TuneDb::open_to_resume(const std::string& path, const TuneDefinition& def
 TuneDb TuneDb::open_existing(const std::string& path) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such tuning database");
-  TuneDb db(open_db(path, SQLITE_OPEN_READONLY), path);
+  // read-write, so that a WAL left by a killed run is recovered; nothing else is written
+  TuneDb db(open_db(path, SQLITE_OPEN_READWRITE), path);
   if (db.meta("kind") != "pamsim tune") throw InputError(path + ": not a pamsim tuning database");
   return db;
 }
@@ -542,7 +567,7 @@ bool TuneDb::is_tune_database(const std::string& path) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) return false;
   sqlite3* raw = nullptr;
-  if (sqlite3_open_v2(path.c_str(), &raw, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
+  if (sqlite3_open_v2(path.c_str(), &raw, SQLITE_OPEN_READWRITE, nullptr) != SQLITE_OK) {
     sqlite3_close(raw);
     return false;
   }
@@ -577,7 +602,8 @@ std::vector<TuneEvaluation> TuneDb::evaluations() const {
     return sqlite3_column_type(s.get(), col) == SQLITE_NULL ? kNaN
                                                             : sqlite3_column_double(s.get(), col);
   };
-  while (sqlite3_step(s.get()) == SQLITE_ROW) {
+  int rc;
+  while ((rc = sqlite3_step(s.get())) == SQLITE_ROW) {
     TuneEvaluation e;
     int col = 0;
     e.index = sqlite3_column_int64(s.get(), col++);
@@ -591,6 +617,9 @@ std::vector<TuneEvaluation> TuneDb::evaluations() const {
     e.trials = sqlite3_column_int(s.get(), col++);
     e.ok = sqlite3_column_int(s.get(), col++);
     out.push_back(e);
+  }
+  if (rc != SQLITE_DONE) {
+    throw std::runtime_error(path_ + ": cannot read the evaluations (" + sqlite3_errmsg(db_) + ")");
   }
   return out;
 }
@@ -738,6 +767,8 @@ struct TuneProblem {
   }
   pagmo::vector_double::size_type get_nobj() const { return objectives; }
   std::string get_name() const { return "pamsim tune"; }
+  // the copies share one Evaluator (its cache and database): never call them concurrently
+  pagmo::thread_safety get_thread_safety() const { return pagmo::thread_safety::none; }
 };
 
 bool dominates(const TuneEvaluation& a, const TuneEvaluation& b) {
@@ -770,7 +801,7 @@ TuneRunResult run_tune(const TuneDefinition& def, TuneDb& db, const TuneRunOptio
     pagmo::problem problem{TuneProblem{evaluator, def.parameters.size(), def.objectives.size()}};
     pagmo::population population{problem, def.population, static_cast<unsigned>(def.seed)};
     if (def.algorithm == TuneAlgorithm::kCmaes) {
-      pagmo::algorithm algo{pagmo::cmaes(def.generations, -1, -1, -1, -1, 0.3, 1e-9, 1e-9, false,
+      pagmo::algorithm algo{pagmo::cmaes(def.generations, -1, -1, -1, -1, 0.3, 0.0, 0.0, false,
                                          true, static_cast<unsigned>(def.seed))};
       population = algo.evolve(population);
     } else {

@@ -22,9 +22,11 @@
 //   [[objective]]     metric (a summary metric), maximize = false
 //   [[constraint]]    metric, min and/or max: on the metric's mean over an evaluation's trials
 //   [[reference]]     name, values = [one per parameter]: settings checked beside the best
-// Objectives are minimised (a maximised one negated); an evaluation that breaks a constraint,
-// or has a trial that did not run to the end, gets kTunePenalty per unit of violation (and
-// per failed trial) added to every objective.
+// A metric's value for an evaluation is its mean over the trials that ran to the end with a
+// finite value. Objectives are minimised (a maximised one negated); an evaluation that
+// breaks a constraint (a constraint metric with no value counts 1), or has a trial that did
+// not run to the end (1 each), gets kTunePenalty per unit of violation added to every
+// objective. CMA-ES runs all its generations (no tolerance stop).
 #pragma once
 
 #include <atomic>
