@@ -153,6 +153,11 @@ TEST(ScenarioTest, EveryBadValueNamesItsKey) {
       {"sensors.fiber_noise_mm_s=-2", "sensors.fiber_noise_mm_s"},
       {"sensors.noise_scale=-1", "sensors.noise_scale"},
       {"valve.dead_time_ms=-1", "valve.dead_time_ms"},
+      // a time step that makes an uncountable or endless trial (issue 14)
+      {"sim.timestep_s=1e-308", "sim.timestep_s of 1e-308 s makes"},
+      {"sim.timestep_s=1e-9", "more than sim.max_steps = 10000000"},
+      {"sim.max_steps=0", "sim.max_steps"},
+      {"sim.max_steps=1e11", "sim.max_steps"},
       // a plant that is not the muscle its estimator describes (216 mm against 180 mm)
       {"muscles.agonist.plant=\"../models/pams/plant_pam_a.toml\"",
        "muscles.agonist.plant has a length of 216 mm, but its estimator's file"},

@@ -15,6 +15,8 @@
 //   sim.duration_s                (0, 3600], default 3
 //   sim.control_hz                control and logging rate, default 100; a whole divisor of
 //                                 the physics rate
+//   sim.max_steps                 the most physics steps a trial may take (duration_s /
+//                                 timestep_s), in [1, 1e10], default 1e7
 //   muscles.<actuator>.params     PAM parameter file (models/pams/...), required for every
 //                                 PAM actuator of the model
 //   muscles.<actuator>.plant      optional: the physical muscle's file (pam_actuator/
