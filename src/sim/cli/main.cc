@@ -2,11 +2,72 @@
 // here only the dispatch and the one place that turns errors into an exit code.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <exception>
+#include <functional>
+#include <string>
+#include <vector>
 #include <iostream>
 
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
+
+namespace {
+
+// Levenshtein distance, for "did you mean".
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// "; commands: a, b, c" (and "; did you mean b?") for the deepest command given whose
+// subcommand is missing or unknown; "" otherwise.
+std::string subcommand_hint(const CLI::App& app, int argc, char** argv) {
+  const CLI::App* at = &app;
+  int next = 1;
+  // walk the subcommands the arguments name
+  while (next < argc) {
+    const CLI::App* sub = nullptr;
+    for (const CLI::App* s : at->get_subcommands(std::function<bool(const CLI::App*)>{})) {
+      if (s->get_name() == argv[next]) sub = s;
+    }
+    if (!sub) break;
+    at = sub;
+    ++next;
+  }
+  const std::vector<const CLI::App*> subs = at->get_subcommands(std::function<bool(const CLI::App*)>{});
+  if (subs.empty()) return "";
+  const bool missing = next >= argc;
+  const bool unknown = !missing && argv[next][0] != '-';
+  if (!missing && !unknown) return "";
+  std::string list, nearest;
+  std::size_t best = std::string::npos;
+  for (const CLI::App* s : subs) {
+    list += (list.empty() ? "" : ", ") + s->get_name();
+    if (unknown) {
+      const std::size_t d = edit_distance(argv[next], s->get_name());
+      if (d < best) {
+        best = d;
+        nearest = s->get_name();
+      }
+    }
+  }
+  std::string hint = "; commands: " + list;
+  if (unknown && best <= 3) hint += "; did you mean " + nearest + "?";
+  return hint;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"pamsim: simulation testbed for PAM-driven arms with a stretch reflex"};
@@ -31,9 +92,11 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& e) {   // --help, --version
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    // one line, like every other input error (CLI11's own exit adds a second one)
-    std::cerr << "pamsim: " << e.what() << "\n";
-    return e.get_exit_code() != 0 ? e.get_exit_code() : 2;
+    // one line, like every other input error (CLI11's own exit adds a second one), exit 2
+    // (CLI11's own codes, 104-109, are not pamsim's); a missing or unknown subcommand is
+    // answered with the ones there are, and the nearest name
+    std::cerr << "pamsim: " << e.what() << subcommand_hint(app, argc, argv) << "\n";
+    return 2;
   } catch (const pamsim::CommandExit& e) {
     return e.code;
   } catch (const pamsim::SimulationFailed&) {
