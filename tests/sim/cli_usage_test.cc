@@ -1,6 +1,6 @@
 // cli_usage_test.cc: command-line usage errors exit 2 like every other input error (not
-// CLI11's internal 104-109) in one line, and a missing or misspelled subcommand is answered
-// with the commands there are and the nearest one.
+// CLI11's internal 104-109) in one line, a missing or misspelled subcommand is answered with
+// the commands there are and the nearest one, and thread counts are bounded.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -24,7 +24,13 @@ TEST(CliUsageTest, UsageErrorsExitTwoInOneLineWithTheCommandsThereAre) {
            {"validate reachin", "did you mean reaching?"},
            {"run", "scenario is required"},
            {"sweep scenarios/sweep_smoke.toml --bogus", "--bogus"},
-           {"run scenarios/drop_mass.toml --trials x", "--trials"}}) {
+           {"run scenarios/drop_mass.toml --trials x", "--trials"},
+           // thread counts are bounded (issue 14 item 3): 0 means all cores
+           {"run scenarios/drop_mass.toml --threads 100000", "--threads must be 1 to 1024"},
+           {"sweep scenarios/sweep_smoke.toml --threads 5000 --out /tmp/pamsim_no_sweep",
+            "--threads must be 1 to 1024"},
+           {"tune scenarios/tune_reflex.toml --threads -3", "--threads must be 1 to 1024"},
+           {"validate reaching --threads 2000", "--threads must be 1 to 1024"}}) {
     const auto r = run_pamsim(c.args);
     EXPECT_EQ(r.exit_code, 2) << c.args;
     EXPECT_EQ(line_count(r.err), 1) << c.args << ": " << r.err;

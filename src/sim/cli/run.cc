@@ -48,7 +48,7 @@ int report_diverged(const Scenario& sc, const std::vector<TrialResult>& results)
 
 void run(const RunOptions& opt) {
   if (opt.trials < 1) throw InputError("--trials must be >= 1, got " + std::to_string(opt.trials));
-  if (opt.threads < 0) throw InputError("--threads must be >= 1, got " + std::to_string(opt.threads));
+  const int threads = resolve_thread_count(opt.threads);
   VideoOptions video;
   if (!opt.video.empty()) {
     if (opt.trials != 1) {
@@ -64,7 +64,6 @@ void run(const RunOptions& opt) {
   if (!opt.video.empty()) check_camera(model.model.get(), model.model_path, video.camera);
   const std::string out = opt.out.empty() ? default_out_dir(opt.scenario) : opt.out;
   make_directories(out);   // only once every input is known to be good
-  const int threads = opt.threads > 0 ? opt.threads : default_thread_count();
   std::vector<TrialResult> results;
   if (opt.video.empty()) {
     results = run_trials(model, sc, opt.trials, threads);

@@ -35,14 +35,11 @@ struct SweepOptions {
 };
 
 void sweep(const SweepOptions& opt) {
-  if (opt.threads < 0) {
-    throw InputError("--threads must be >= 1 (or 0 for all cores), got " + std::to_string(opt.threads));
-  }
+  const int threads = resolve_thread_count(opt.threads);
   const SweepDefinition def = load_sweep(opt.sweep_file);   // everything validated first
   const std::string out = opt.out.empty()
       ? "renders/" + std::filesystem::path(opt.sweep_file).stem().string() : opt.out;
   const std::string db_path = opt.db.empty() ? out + "/sweep.db" : opt.db;
-  const int threads = opt.threads > 0 ? opt.threads : default_thread_count();
 
   std::error_code ec;
   const bool exists = std::filesystem::exists(db_path, ec);

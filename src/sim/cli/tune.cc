@@ -56,15 +56,11 @@ std::string held_out_csv(const TuneDefinition& def, const std::vector<HeldOutChe
 }
 
 void tune(const TuneOptions& opt) {
-  if (opt.threads < 0) {
-    throw InputError("--threads must be >= 1 (or 0 for all cores), got " +
-                     std::to_string(opt.threads));
-  }
+  const int threads = resolve_thread_count(opt.threads);
   const TuneDefinition def = load_tune_definition(opt.file);  // everything validated first
   const std::string out =
       opt.out.empty() ? "renders/" + std::filesystem::path(opt.file).stem().string() : opt.out;
   const std::string db_path = opt.db.empty() ? out + "/tune.db" : opt.db;
-  const int threads = opt.threads > 0 ? opt.threads : default_thread_count();
   std::error_code ec;
   const bool exists = std::filesystem::exists(db_path, ec);
   if (!exists) {

@@ -37,15 +37,11 @@ struct ValidateOptions {
 };
 
 ValidationOptions common_options(const ValidateOptions& o, const std::string& default_out) {
-  if (o.threads < 0) {
-    throw InputError("--threads must be >= 1 (or 0 for all cores), got " +
-                     std::to_string(o.threads));
-  }
   ValidationOptions v;
   v.out_dir = o.out.empty() ? default_out : o.out;
   v.overrides = o.overrides;
   v.seed = o.seed;
-  v.threads = o.threads > 0 ? o.threads : default_thread_count();
+  v.threads = resolve_thread_count(o.threads);
   return v;
 }
 

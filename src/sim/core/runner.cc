@@ -5,6 +5,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 
 #include "pam_actuator/input_error.h"
@@ -14,6 +15,14 @@ namespace pamsim {
 int default_thread_count() {
   const unsigned n = std::thread::hardware_concurrency();
   return n == 0 ? 1 : static_cast<int>(n);
+}
+
+int resolve_thread_count(int requested) {
+  if (requested < 0 || requested > kMaxThreads) {
+    throw InputError("--threads must be 1 to " + std::to_string(kMaxThreads) +
+                     " (or 0 for all cores), got " + std::to_string(requested));
+  }
+  return requested == 0 ? default_thread_count() : requested;
 }
 
 void parallel_for(int n, int threads, const std::function<void(int)>& job) {
@@ -35,7 +44,11 @@ void parallel_for(int n, int threads, const std::function<void(int)>& job) {
   };
   const int n_threads = std::max(1, std::min(threads, n));
   std::vector<std::thread> pool;
-  for (int i = 1; i < n_threads; ++i) pool.emplace_back(worker);
+  try {
+    for (int i = 1; i < n_threads; ++i) pool.emplace_back(worker);
+  } catch (const std::system_error&) {
+    // out of threads: the ones started, and this one, do all the jobs
+  }
   worker();
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);

@@ -15,9 +15,17 @@ namespace pamsim {
 // Default thread count: all cores.
 int default_thread_count();
 
+// The most worker threads a command takes: more would only add stacks and contention.
+inline constexpr int kMaxThreads = 1024;
+
+// A command's --threads: 0 means all cores; otherwise 1 .. kMaxThreads. Throws InputError
+// "--threads must be ..., got N" for anything else.
+int resolve_thread_count(int requested);
+
 // Calls job(k) for k = 0 .. n-1 on `threads` threads (the caller's among them), each index
 // once, in no particular order; job must write only its own results. The first exception
-// a job throws is rethrown after every thread has stopped. Throws InputError if threads < 1.
+// a job throws is rethrown after every thread has stopped. If the system refuses a thread,
+// the jobs run on those it gave (the caller's at least). Throws InputError if threads < 1.
 void parallel_for(int n, int threads, const std::function<void(int)>& job);
 
 // Runs `trials` trials with seeds seed..seed+trials-1 on `threads` threads; results in
