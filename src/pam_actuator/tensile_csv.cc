@@ -30,9 +30,13 @@ std::vector<std::string> split(const std::string& line) {
   return cells;
 }
 
-// a finite number, the whole cell consumed
+// a finite decimal number, the whole cell consumed (strtod also reads hexadecimal floats
+// and "inf"/"nan", which no instrument writes: refused)
 double parse_cell(const std::string& cell, const std::string& where) {
   if (cell.empty()) throw InputError(where + ": empty cell, a number is required");
+  if (cell.find_first_not_of("0123456789+-.eE") != std::string::npos) {
+    throw InputError(where + ": \"" + cell + "\" is not a decimal number");
+  }
   char* end = nullptr;
   const double v = std::strtod(cell.c_str(), &end);
   if (end != cell.c_str() + cell.size()) {
@@ -63,7 +67,17 @@ std::vector<TensileRow> read_tensile_csv(const std::string& path) {
   // header: locate the required columns and the optional direction
   std::string line;
   if (!std::getline(in, line)) throw InputError(path + ": empty file, no header row");
+  // a UTF-8 byte-order mark, as spreadsheet programs write, is not part of the first name
+  if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
   const std::vector<std::string> header = split(line);
+  for (size_t c = 0; c < header.size(); ++c) {
+    for (size_t d = 0; d < c; ++d) {
+      if (!header[c].empty() && header[c] == header[d]) {
+        throw InputError(path + ": header: column " + header[c] + " appears twice (columns " +
+                         std::to_string(d + 1) + " and " + std::to_string(c + 1) + ")");
+      }
+    }
+  }
   int col[4];
   int direction_col = -1;
   for (int k = 0; k < 4; ++k) {

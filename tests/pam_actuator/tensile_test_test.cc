@@ -180,13 +180,28 @@ TEST_F(TensileCsvTest, ColumnsInAnyOrderExtrasIgnored) {
   EXPECT_EQ(rows[0].deformation_mm, 2.5);
 }
 
+// A UTF-8 byte-order mark (spreadsheet exports) before the header is accepted.
+TEST_F(TensileCsvTest, AByteOrderMarkIsAccepted) {
+  write("\xEF\xBB\xBFpressure_MPa,deformation_mm,force_N,length_mm\n0.4,1,5,150\n");
+  const std::vector<TensileRow> rows = read_tensile_csv(path_);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_DOUBLE_EQ(rows[0].pressure_mpa, 0.4);
+  EXPECT_DOUBLE_EQ(rows[0].force_n, 5.0);
+}
+
 TEST_F(TensileCsvTest, BadInputs) {
   const std::string h = "pressure_MPa,deformation_mm,force_N,length_mm\n";
   expect_error("pressure_MPa,deformation_mm,length_mm\n0.4,1,150\n", "missing column force_N");
   expect_error(h + "0.4,1,5,150\n0.4,abc,5,150\n", "row 3, column deformation_mm");
-  expect_error(h + "0.4,1,5x,150\n", "\"5x\" is not a number");
-  expect_error(h + "0.4,1,nan,150\n", "row 2, column force_N: \"nan\" is not finite");
+  expect_error(h + "0.4,1,5x,150\n", "\"5x\" is not a decimal number");
+  expect_error(h + "0.4,1,nan,150\n", "row 2, column force_N: \"nan\" is not a decimal number");
   expect_error(h + "0.4,1,5,inf\n", "column length_mm");
+  expect_error(h + "0.4,1,5,1e999\n", "row 2, column length_mm: \"1e999\" is not finite");
+  // hexadecimal floats are refused (issue 14 item 10)
+  expect_error(h + "0.4,1,0x1p3,150\n", "row 2, column force_N: \"0x1p3\" is not a decimal");
+  // a column named twice is refused, not silently the last one
+  expect_error("pressure_MPa,deformation_mm,force_N,length_mm,force_N\n0.4,1,5,150,6\n",
+               "column force_N appears twice (columns 3 and 5)");
   expect_error(h + "-0.1,1,5,150\n", "row 2, column pressure_MPa: negative pressure");
   expect_error(h + "0.4,1,,150\n", "row 2, column force_N: empty cell");
   expect_error(h + "0.4,1,5\n", "row 2: 3 cells");

@@ -149,7 +149,7 @@ TEST_F(CliFitTest, BadTensileData) {
                   {"missing_column.csv", "missing column force_N"}, "out.toml");
   expect_rejected(fit + "non_numeric.csv -o out.toml",
                   {"non_numeric.csv", "row 8", "deformation_mm"}, "out.toml");
-  expect_rejected(fit + "nan.csv -o out.toml", {"nan.csv", "row 2", "force_N", "not finite"},
+  expect_rejected(fit + "nan.csv -o out.toml", {"nan.csv", "row 2", "force_N", "not a decimal number"},
                   "out.toml");
   expect_rejected(fit + "negative.csv -o out.toml",
                   {"negative.csv", "row 8", "negative pressure"}, "out.toml");
