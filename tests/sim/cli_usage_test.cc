@@ -30,7 +30,11 @@ TEST(CliUsageTest, UsageErrorsExitTwoInOneLineWithTheCommandsThereAre) {
            {"sweep scenarios/sweep_smoke.toml --threads 5000 --out /tmp/pamsim_no_sweep",
             "--threads must be 1 to 1024"},
            {"tune scenarios/tune_reflex.toml --threads -3", "--threads must be 1 to 1024"},
-           {"validate reaching --threads 2000", "--threads must be 1 to 1024"}}) {
+           {"validate reaching --threads 2000", "--threads must be 1 to 1024"},
+           // a negative seed is refused, not wrapped to 2^64 - 1 (issue 14 item 11)
+           {"tensile --params models/pams/table4_agonist.toml --seed -1 -o /tmp/pamsim_no.csv",
+            "--seed"},
+           {"validate reaching --seed -5", "--seed"}}) {
     const auto r = run_pamsim(c.args);
     EXPECT_EQ(r.exit_code, 2) << c.args;
     EXPECT_EQ(line_count(r.err), 1) << c.args << ": " << r.err;
