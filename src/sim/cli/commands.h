@@ -25,6 +25,12 @@ void add_report_command(CLI::App& app);     // per-point statistics, heat maps, 
 void add_validate_command(CLI::App& app);   // the papers' validation experiments (Table III, V)
 void add_tune_command(CLI::App& app);       // tune settings with CMA-ES / NSGA-II (pagmo2)
 
+// A CLI11 check for a --seed bound to an unsigned integer, which CLI11 would otherwise wrap
+// from a negative number: "" (valid) or the one-line problem.
+inline std::string non_negative_seed(const std::string& text) {
+  return !text.empty() && text[0] == '-' ? "must be >= 0, got " + text : std::string();
+}
+
 // Thrown by a command that has printed its own message and ends with `code` (e.g. 130 for
 // an interrupted sweep).
 class CommandExit : public std::runtime_error {

@@ -77,7 +77,7 @@ void add_tensile_command(CLI::App& app) {
   cmd->add_option("--plant", c->plant_path, "plant file (TOML, models/pams/plant_*.toml)");
   cmd->add_option("-o,--output", c->output_path, "output CSV file")->required();
   cmd->add_option("--seed", t.seed, "noise seed (same seed, same data)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_seed);
   cmd->add_option("--noise-pressure-MPa", t.noise_pressure_mpa, "pressure sensor noise SD");
   cmd->add_option("--noise-force-N", t.noise_force_n, "force sensor noise SD");
   cmd->add_option("--noise-length-mm", t.noise_length_mm, "length encoder noise SD");

@@ -108,7 +108,7 @@ void add_common(CLI::App* cmd, ValidateOptions* o, const std::string& default_fi
   cmd->add_option("--set", o->overrides,
                   "Override a scenario key of every trial: --set sensors.noise_scale=2");
   cmd->add_option("--seed", o->seed, "Seed of the trials (and of the tensile tests' noise)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_seed);
   cmd->add_option("--threads", o->threads, "Worker threads (default: all cores)");
 }
 
