@@ -1,38 +1,70 @@
 // atomic_file.cc: temp file + rename, see atomic_file.h.
 #include "pam_actuator/atomic_file.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
+#include <vector>
 
 #include "pam_actuator/input_error.h"
 
 namespace pamsim {
 
+namespace {
+
+// The process's umask, read without changing it for long (umask(2) has no getter).
+mode_t current_umask() {
+  const mode_t mask = ::umask(022);
+  ::umask(mask);
+  return mask;
+}
+
+}  // namespace
+
 void write_file_atomically(const std::string& path, const std::string& content) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-
-  // write everything to the temp file first
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      throw InputError(path + ": cannot write (" + std::strerror(errno) + ")");
-    }
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw InputError(path + ": write failed (" + std::strerror(errno) + ")");
-    }
-  }
-
-  // then publish it in one step
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+  // a temp file of an unpredictable name, created exclusively (mkstemp: O_CREAT | O_EXCL,
+  // so neither an existing file nor a planted symlink is ever opened), in the destination
+  // folder so that the rename below stays on one file system
+  std::vector<char> tmp(path.begin(), path.end());
+  const std::string suffix = ".tmp.XXXXXX";
+  tmp.insert(tmp.end(), suffix.begin(), suffix.end());
+  tmp.push_back('\0');
+  const int fd = ::mkostemp(tmp.data(), O_CLOEXEC);
+  if (fd < 0) throw InputError(path + ": cannot write (" + std::strerror(errno) + ")");
+  const auto fail = [&](const char* what) {
     const std::string why = std::strerror(errno);
-    std::remove(tmp.c_str());
+    ::close(fd);
+    ::unlink(tmp.data());
+    throw InputError(path + ": " + what + " (" + why + ")");
+  };
+  // the permissions a plain create would give (mkstemp makes 0600)
+  if (::fchmod(fd, 0666 & ~current_umask()) != 0) fail("cannot set permissions");
+
+  // write everything (a full disk shows here), then publish it in one step
+  const char* data = content.data();
+  std::size_t left = content.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, data, left);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      fail("write failed");
+    }
+    data += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0) fail("write failed");
+  if (::close(fd) != 0) {
+    const std::string why = std::strerror(errno);
+    ::unlink(tmp.data());
+    throw InputError(path + ": write failed (" + why + ")");
+  }
+  if (std::rename(tmp.data(), path.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    ::unlink(tmp.data());
     throw InputError(path + ": cannot rename temp file into place (" + why + ")");
   }
 }

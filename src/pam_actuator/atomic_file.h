@@ -6,8 +6,11 @@
 
 namespace pamsim {
 
-// Writes `content` to `path` through `path.tmp.<pid>` and rename(2).
-// Throws InputError naming the path if the folder is missing or not writable.
+// Writes `content` to `path` through a temp file `path.tmp.XXXXXX` made by mkostemp
+// (created exclusively: a file or symlink planted at a predictable name is never written
+// through), written whole and fsync'd, then rename(2). The file gets the permissions a
+// plain create would (0666 less the umask). Throws InputError naming the path if the
+// folder is missing or not writable, or a write fails (a full disk); nothing is left.
 void write_file_atomically(const std::string& path, const std::string& content);
 
 }  // namespace pamsim

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <dirent.h>
+#include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -87,6 +89,56 @@ TEST_F(AtomicFileTest, TargetIsADirectoryThrowsAndCleansUp) {
   EXPECT_THROW(write_file_atomically(sub, "x"), InputError);
   std::remove((sub + "/keep").c_str());
   EXPECT_EQ(count_entries(dir_), 1);   // only the directory itself
+}
+
+// A symlink planted where the old code put its temp file (`<out>.tmp.<pid>`) must not be
+// written through: the target keeps its content (issue 14 item 7).
+TEST_F(AtomicFileTest, APlantedSymlinkIsNotWrittenThrough) {
+  const std::string victim = dir_ + "/victim.txt";
+  std::ofstream(victim) << "precious\n";
+  const std::string path = dir_ + "/out.txt";
+  const std::string planted = path + ".tmp." + std::to_string(::getpid());
+  ASSERT_EQ(::symlink(victim.c_str(), planted.c_str()), 0);
+  write_file_atomically(path, "new\n");
+  EXPECT_EQ(read_all(victim), "precious\n");
+  EXPECT_EQ(read_all(path), "new\n");
+  struct stat st {};
+  ASSERT_EQ(::lstat(planted.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISLNK(st.st_mode)) << "the planted link is left alone";
+  std::remove(planted.c_str());
+  std::remove(victim.c_str());
+}
+
+// The file gets the permissions of a plain create (0666 less the umask), not mkstemp's 0600.
+TEST_F(AtomicFileTest, PermissionsAreAPlainCreates) {
+  const mode_t old = ::umask(022);
+  const std::string path = dir_ + "/out.txt";
+  write_file_atomically(path, "x");
+  ::umask(old);
+  struct stat st {};
+  ASSERT_EQ(::stat(path.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0644u);
+}
+
+// A full disk, emulated by a file-size limit (a write past it fails with EFBIG): the error
+// names the path and nothing is left, neither temp file nor half a file (issue 14 item 1).
+TEST_F(AtomicFileTest, AFullDiskIsAnErrorAndLeavesNothing) {
+  struct rlimit old {};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old), 0);
+  struct rlimit small = old;
+  small.rlim_cur = 1024;
+  ::signal(SIGXFSZ, SIG_IGN);   // a write past the limit then fails with EFBIG
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+  const std::string path = dir_ + "/out.txt";
+  bool threw = false;
+  try {
+    write_file_atomically(path, std::string(4096, 'x'));
+  } catch (const InputError& e) {
+    threw = std::string(e.what()).find(path) != std::string::npos;
+  }
+  ::setrlimit(RLIMIT_FSIZE, &old);
+  EXPECT_TRUE(threw);
+  EXPECT_EQ(count_entries(dir_), 0) << "no temp file and no half file";
 }
 
 }  // namespace
