@@ -8,6 +8,7 @@
 
 #include "pam_actuator/format.h"
 #include "pam_actuator/input_error.h"
+#include "pam_actuator/toml_file.h"
 
 namespace pamsim {
 namespace {
@@ -61,6 +62,7 @@ std::string tensile_rows_to_csv(const std::vector<TensileRow>& rows) {
 }
 
 std::vector<TensileRow> read_tensile_csv(const std::string& path) {
+  require_input_file(path);
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open tensile data file");
 

@@ -1,6 +1,10 @@
 // toml_file.cc: see toml_file.h.
 #include "pam_actuator/toml_file.h"
 
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -19,7 +23,23 @@ toml::table parse_toml_text(const std::string& text, const std::string& name) {
   }
 }
 
+void require_input_file(const std::string& path, std::uintmax_t max_bytes) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    throw InputError(path + ": cannot open file (" + std::strerror(errno) + ")");
+  }
+  if (!S_ISREG(st.st_mode)) {
+    throw InputError(path + (S_ISDIR(st.st_mode) ? ": is a folder, not a file"
+                                                  : ": not a regular file (a device or pipe)"));
+  }
+  if (static_cast<std::uintmax_t>(st.st_size) > max_bytes) {
+    throw InputError(path + ": larger than " + std::to_string(max_bytes >> 20) +
+                     " MiB, not an input pamsim reads");
+  }
+}
+
 std::string read_text_file(const std::string& path) {
+  require_input_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open file");
   std::stringstream buffer;

@@ -3,6 +3,7 @@
 // reads "<path>: cannot open file" or "<path>:<line>:<column>: TOML syntax error: <what>".
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include <toml++/toml.h>
@@ -12,7 +13,14 @@ namespace pamsim {
 // Parses `text`, naming it `name` in errors. Throws InputError on a syntax error.
 toml::table parse_toml_text(const std::string& text, const std::string& name);
 
-// The whole file at `path`. Throws InputError "<path>: cannot open file".
+// Inputs are regular files of a bounded size: a directory or a device (/dev/null would read
+// as an empty file and give the defaults silently, /dev/zero would be read without end) is
+// refused, and so is a file larger than `max_bytes`. Throws InputError "<path>: <problem>".
+inline constexpr std::uintmax_t kMaxTextInputBytes = 64u << 20;   // 64 MiB
+void require_input_file(const std::string& path, std::uintmax_t max_bytes = kMaxTextInputBytes);
+
+// The whole file at `path` (require_input_file first). Throws InputError "<path>: cannot
+// open file" and the like.
 std::string read_text_file(const std::string& path);
 
 // Reads and parses the file at `path`. Throws InputError if it cannot be read or parsed.

@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "pam_actuator/input_error.h"
+#include "pam_actuator/toml_file.h"
 #include "pam_actuator/units.h"
 
 namespace pamsim {
@@ -111,6 +112,7 @@ double PressureSchedule::max_pa() const {
 }
 
 PressureSchedule read_schedule_csv(const std::string& path) {
+  require_input_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the schedule file");
   // a schedule is a few thousand points; anything near this is not one (or would eat memory)
