@@ -131,12 +131,24 @@ struct TrialOutcome {
 std::vector<TrialOutcome> run_setting(const TuneDefinition& def, const std::vector<double>& values,
                                       std::uint64_t first_seed_offset, int seeds, int threads) {
   std::vector<Scenario> scenarios;
-  std::vector<TrialModel> models;
   for (double noise : def.noise_scales) {
     std::vector<std::string> o = parameter_overrides(def, values);
     o.push_back("sensors.noise_scale=" + format_number(noise));
     scenarios.push_back(load_scenario_text(def.base_text, def.base_path, o));
-    models.push_back(load_trial_model(scenarios.back()));
+  }
+  // the noise levels differ only in the sensors: one bound model serves them all (compiling
+  // the MJCF again per level would double an evaluation's set-up)
+  std::vector<TrialModel> models;
+  std::vector<std::size_t> model_of(scenarios.size());
+  for (std::size_t i = 0; i < scenarios.size(); ++i) {
+    std::size_t m = 0;
+    while (m < i && !same_trial_model(scenarios[i], scenarios[model_of[m]])) ++m;
+    if (m == i) {
+      model_of[i] = models.size();
+      models.push_back(load_trial_model(scenarios[i]));
+    } else {
+      model_of[i] = model_of[m];
+    }
   }
   const int per_level = seeds;
   std::vector<TrialOutcome> out(def.noise_scales.size() * static_cast<std::size_t>(per_level));
@@ -148,7 +160,7 @@ std::vector<TrialOutcome> run_setting(const TuneDefinition& def, const std::vect
     TrialOutcome& t = out[static_cast<std::size_t>(k)];
     t.seed = seed;
     t.noise_scale = def.noise_scales[level];
-    t.summary = run_trial(models[level], sc, seed, /*keep_trajectory=*/false).summary;
+    t.summary = run_trial(models[model_of[level]], sc, seed, /*keep_trajectory=*/false).summary;
   });
   return out;
 }
