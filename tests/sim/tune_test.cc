@@ -228,7 +228,11 @@ TEST(TuneTest, BadTuningFilesAreOneLineAndLeaveNoDatabase) {
            {"max = 100.0", "min = 5.0\nmax = 1.0", "constraint[0].min"},
            {"noise_scales = [0.0]", "noise_scales = [0.0, 0.0]", "noise_scales"},
            {"values = [0.0]", "values = [0.0, 1.0]", "reference[0].values"},
-           {"values = [0.0]", "values = [5.0]", "reference[0]"}}) {
+           {"values = [0.0]", "values = [5.0]", "reference[0]"},
+           {"[[objective]]",
+            "[[parameter]]\nkey = \"sensors.pressure_bias_MPa\"\nfrom = 0.0\nto = 0.01\n"
+            "[[objective]]",
+            "parameter[1].key names sensors.pressure_bias_MPa twice"}}) {
     std::string text = good;
     ASSERT_NE(text.find(c.from), std::string::npos) << c.from;
     text.replace(text.find(c.from), c.from.size(), c.to);

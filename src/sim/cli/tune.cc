@@ -9,7 +9,6 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -63,11 +62,11 @@ void tune(const TuneOptions& opt) {
   const std::string db_path = opt.db.empty() ? out + "/tune.db" : opt.db;
   std::error_code ec;
   const bool exists = std::filesystem::exists(db_path, ec);
+  if (opt.resume && !exists) throw InputError(db_path + ": --resume, but there is no database");
   if (!exists) {
     const auto parent = std::filesystem::path(db_path).parent_path();
     if (!parent.empty()) make_directories(parent.string());
   }
-  if (opt.resume && !exists) throw InputError(db_path + ": --resume, but there is no database");
   TuneDb db = opt.resume ? TuneDb::open_to_resume(db_path, def) : TuneDb::create(db_path, def);
 
   const std::int64_t total = static_cast<std::int64_t>(def.population) * (def.generations + 1);

@@ -97,13 +97,6 @@ double pam_length(const mjModel* m, const mjData* d, int id) {
   return d->actuator_length[id] - pam_line_length(m, id);
 }
 
-double pam_free_length(const mjModel* m, const mjData* d, int id) {
-  const double p = d->userdata[pam_userdata_index(m, id)];
-  AvbdlParams plant;
-  if (pam_plant_from_model(m, id, &plant)) return avbdl_free_length(plant, p);
-  return natural_length(pam_spring_from_model(m, id), p);
-}
-
 double pam_muscle_length(const mjModel* m, const mjData* d, int id) {
   // the plant's free length is a root solve, done only when the line is slack
   const double p = d->userdata[pam_userdata_index(m, id)];

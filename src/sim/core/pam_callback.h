@@ -47,9 +47,6 @@ int pam_userdata_index(const mjModel* m, int actuator_id);
 // taut it is the muscle's length; when slack it is shorter than the muscle, which then
 // rests at its free length.
 double pam_length(const mjModel* m, const mjData* d, int actuator_id);
-// The PAM's free length [m] at its chamber pressure: where its force is zero, l_n(p) of
-// Eq. (2) for the spring laws, avbdl_free_length for the AVBDL plant.
-double pam_free_length(const mjModel* m, const mjData* d, int actuator_id);
 // The muscle's real length [m]: pam_length while the line is taut, the free length when it
 // is slack (a slack muscle is not pulled below its free length). What the encoder, the
 // fiber sensor, the chamber volume and the error metrics see.

@@ -234,11 +234,11 @@ sqlite3* open_db(const std::string& path, int flags) {
 int take_lock(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0 || ::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-    const bool busy = errno == EWOULDBLOCK;
+    const int error = errno;   // before close() can change it
     if (fd >= 0) ::close(fd);
-    throw InputError(path + (busy ? ": another pamsim tune is writing to it"
-                                  : ": cannot lock the tuning database (" +
-                                        std::string(std::strerror(errno)) + ")"));
+    throw InputError(path + (error == EWOULDBLOCK ? ": another pamsim tune is writing to it"
+                                                  : ": cannot lock the tuning database (" +
+                                                        std::string(std::strerror(error)) + ")"));
   }
   return fd;
 }
@@ -356,6 +356,9 @@ TuneDefinition load_tune_definition(const std::string& path) {
       e.allow({"key", "from", "to", "scale"});
       TuneParameter p;
       p.key = e.text("key", true);
+      for (const TuneParameter& q : def.parameters) {
+        in.check(q.key != p.key, e.where + "key", "names " + p.key + " twice");
+      }
       in.check(p.key != "seed" && p.key != "sensors.noise_scale", e.where + "key",
                "cannot be \"" + p.key + "\": use the tuning file's seeds / noise_scales");
       const auto from = e.number("from"), to = e.number("to");
@@ -690,34 +693,39 @@ TuneDefinition tune_definition_from_db(const TuneDb& db) {
   if (j.is_discarded() || !j.is_object()) {
     throw InputError(db.path() + ": its tuning definition cannot be read");
   }
-  TuneDefinition def;
-  def.file = db.meta("tune_file");
-  def.base_text = j.at("base_scenario").get<std::string>();
-  def.base_path = j.at("base_path").get<std::string>();
-  def.overrides = j.at("overrides").get<std::vector<std::string>>();
-  def.algorithm = j.at("algorithm") == "cmaes" ? TuneAlgorithm::kCmaes : TuneAlgorithm::kNsga2;
-  def.generations = j.at("generations").get<unsigned>();
-  def.population = j.at("population").get<unsigned>();
-  def.seed = j.at("seed").get<std::uint64_t>();
-  def.seeds = j.at("seeds").get<int>();
-  def.noise_scales = j.at("noise_scales").get<std::vector<double>>();
-  def.held_out_seeds = j.at("held_out_seeds").get<int>();
-  for (const auto& p : j.at("parameters")) {
-    def.parameters.push_back({p.at("key"), p.at("from"), p.at("to"), p.at("log")});
+  try {
+    TuneDefinition def;
+    def.file = db.meta("tune_file");
+    def.base_text = j.at("base_scenario").get<std::string>();
+    def.base_path = j.at("base_path").get<std::string>();
+    def.overrides = j.at("overrides").get<std::vector<std::string>>();
+    def.algorithm = j.at("algorithm") == "cmaes" ? TuneAlgorithm::kCmaes : TuneAlgorithm::kNsga2;
+    def.generations = j.at("generations").get<unsigned>();
+    def.population = j.at("population").get<unsigned>();
+    def.seed = j.at("seed").get<std::uint64_t>();
+    def.seeds = j.at("seeds").get<int>();
+    def.noise_scales = j.at("noise_scales").get<std::vector<double>>();
+    def.held_out_seeds = j.at("held_out_seeds").get<int>();
+    for (const auto& p : j.at("parameters")) {
+      def.parameters.push_back({p.at("key"), p.at("from"), p.at("to"), p.at("log")});
+    }
+    for (const auto& o : j.at("objectives"))
+      def.objectives.push_back({o.at("metric"), o.at("maximize")});
+    for (const auto& c : j.at("constraints")) {
+      TuneConstraint k;
+      k.metric = c.at("metric");
+      if (c.contains("min")) k.min = c.at("min");
+      if (c.contains("max")) k.max = c.at("max");
+      def.constraints.push_back(k);
+    }
+    for (const auto& r : j.at("references")) {
+      def.references.push_back({r.at("name"), r.at("values").get<std::vector<double>>()});
+    }
+    return def;
+  } catch (const nlohmann::json::exception& e) {
+    // a damaged database, or one from a pamsim whose definition had other fields
+    throw InputError(db.path() + ": its tuning definition cannot be read (" + e.what() + ")");
   }
-  for (const auto& o : j.at("objectives"))
-    def.objectives.push_back({o.at("metric"), o.at("maximize")});
-  for (const auto& c : j.at("constraints")) {
-    TuneConstraint k;
-    k.metric = c.at("metric");
-    if (c.contains("min")) k.min = c.at("min");
-    if (c.contains("max")) k.max = c.at("max");
-    def.constraints.push_back(k);
-  }
-  for (const auto& r : j.at("references")) {
-    def.references.push_back({r.at("name"), r.at("values").get<std::vector<double>>()});
-  }
-  return def;
 }
 
 // --- the run --------------------------------------------------------------------------------
