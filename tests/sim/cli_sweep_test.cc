@@ -34,6 +34,16 @@ std::string short_sweep(const std::string& body) {
          "\n[fixed.sim]\nduration_s = 0.8\n[fixed.drop]\ntime_s = 0.2\n";
 }
 
+// `n` grid axes of two levels each (2^n points); the keys are never reached when the size is
+// refused first.
+std::string many_axes(int n) {
+  std::string text;
+  for (int i = 0; i < n; ++i) {
+    text += "[[axis]]\nkey = \"reflex.v_thr_mm_s_" + std::to_string(i) + "\"\nvalues = [1.0, 2.0]\n";
+  }
+  return text;
+}
+
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
   std::stringstream in(text);
@@ -240,6 +250,17 @@ TEST(CliSweepTest, BadSweepFilesFailWithOneLineAndNoDatabase) {
       // a point that does not bind to its model (caught before the run, not as failed rows)
       {"point_unbound", short_sweep("[[axis]]\nkey = \"model.joint\"\n"
                                     "values = [\"shoulder\", \"elbow\"]\n"), "point 1"},
+      // counts that overflow, wrap or exhaust memory are refused before anything is made
+      {"seeds_near_2_63", short_sweep("seeds = 9223372036854775807\n" + axis),
+       "more trials than max_trials = 1000000"},
+      {"huge_count", short_sweep("[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nfrom = 1.0\n"
+                                 "to = 2.0\ncount = 1000000000000\n"), "axis[0].count"},
+      {"grid_wraps_to_zero", short_sweep(many_axes(64)), "max_trials is 1000000, fewer than"},
+      {"grid_times_seeds", short_sweep("seeds = 1000\n" + many_axes(10)), "x 1000 seeds"},
+      {"huge_samples", short_sweep("design = \"random\"\nsamples = 4611686018427387904\n"
+                                   "seeds = 4\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\n"
+                                   "from = 1.0\nto = 2.0\n"), "samples"},
+      {"zero_max_trials", short_sweep("max_trials = 0\n" + axis), "max_trials must be >= 1"},
   };
   for (const Case& c : cases) {
     const fs::path file = dir / (std::string(c.name) + ".toml");

@@ -61,6 +61,16 @@ TEST_F(SweepTest, GridIsRowMajorWithTheFirstAxisSlowest) {
   EXPECT_EQ(o[o.size() - 2], "reflex.v_thr_mm_s=60.0");
 }
 
+TEST_F(SweepTest, MaxTrialsCapsPointsTimesSeedsAndRaisingItLetsTheSweepThrough) {
+  const std::string body =
+      "seeds = 3\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 60.0]\n";
+  EXPECT_THROW(sweep_from(dir_, "max_trials = 5\n" + body), InputError);
+  EXPECT_EQ(sweep_from(dir_, "max_trials = 6\n" + body).trials(), 6);
+  // the cap is not part of the experiment: raising it keeps a database resumable
+  EXPECT_EQ(sweep_from(dir_, "max_trials = 6\n" + body).canonical_json(),
+            sweep_from(dir_, body).canonical_json());
+}
+
 TEST_F(SweepTest, RangesHitTheirEndsExactlyAndLogRangesAreGeometric) {
   const SweepDefinition s = sweep_from(dir_,
       "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nfrom = 10.0\nto = 200.0\ncount = 20\n"

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <random>
 #include <set>
 #include <sstream>
@@ -77,7 +78,7 @@ double tidy(double v) {
 }
 
 SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
-                    const std::string& file) {
+                    std::int64_t max_trials, const std::string& file) {
   const Where where{file, "axis[" + std::to_string(index) + "]."};
   static const std::set<std::string> known = {"key", "values", "from", "to", "count", "scale"};
   for (const auto& [k, _] : t) {
@@ -130,6 +131,9 @@ SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
   const std::int64_t count = *count_node->value<std::int64_t>();
   where.check(count >= 1, "count", "must be >= 1, got " + std::to_string(count));
   where.check(count > 1 || axis.from == axis.to, "count", "must be >= 2 for a range from != to");
+  where.check(count <= max_trials, "count",
+              "is " + std::to_string(count) + ", more than max_trials = " +
+                  std::to_string(max_trials) + " (raise max_trials to run it)");
   for (std::int64_t i = 0; i < count; ++i) {
     AxisValue v;
     v.number = i == 0 ? axis.from
@@ -157,12 +161,23 @@ void flatten_fixed(const toml::table& t, const std::string& prefix, const std::s
 // A uniform double in [0, 1) from the top 53 bits (the same on every platform).
 double unit_uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
+// The number of points of a grid (the product of the axes' levels), or -1 once it exceeds
+// `cap` (the product is never formed past it, so it cannot wrap).
+std::int64_t grid_points(const std::vector<SweepAxis>& axes, std::int64_t cap) {
+  std::int64_t n = 1;
+  for (const auto& a : axes) {
+    const auto levels = static_cast<std::int64_t>(a.values.size());
+    if (levels > cap / n) return -1;
+    n *= levels;
+  }
+  return n;
+}
+
 void make_points(SweepDefinition* def) {
   const std::size_t n_axes = def->axes.size();
   std::vector<AxisValue>& out = def->point_values;
   if (def->design == SweepDesign::kGrid) {
-    std::int64_t n = 1;
-    for (const auto& a : def->axes) n *= static_cast<std::int64_t>(a.values.size());
+    const std::int64_t n = grid_points(def->axes, std::numeric_limits<std::int64_t>::max());
     out.resize(static_cast<std::size_t>(n) * n_axes);
     for (std::int64_t p = 0; p < n; ++p) {   // row-major: the first axis varies slowest
       std::int64_t rest = p;
@@ -279,8 +294,15 @@ SweepDefinition load_sweep(const std::string& path) {
   else if (design == "lhs") def.design = SweepDesign::kLatinHypercube;
   else in.fail("design", "must be \"grid\", \"random\" or \"lhs\", got \"" + design + "\"");
 
+  def.max_trials = in.get_int("max_trials", def.max_trials);
+  in.check(def.max_trials >= 1, "max_trials",
+           "must be >= 1, got " + std::to_string(def.max_trials));
+  const std::string raise = " (raise max_trials to run it)";
   def.seeds = in.get_int("seeds", 1);
   in.check(def.seeds >= 1, "seeds", "must be >= 1, got " + std::to_string(def.seeds));
+  in.check(def.seeds <= def.max_trials, "seeds",
+           "is " + std::to_string(def.seeds) + ", more trials than max_trials = " +
+               std::to_string(def.max_trials) + raise);
   if (def.design == SweepDesign::kGrid) {
     in.check(!in.has("samples"), "samples", "is for random and lhs designs");
     in.check(!in.has("design_seed"), "design_seed", "is for random and lhs designs");
@@ -288,6 +310,9 @@ SweepDefinition load_sweep(const std::string& path) {
     def.samples = in.get_int("samples", 0);
     in.check(def.samples >= 1, "samples", "must be >= 1 for a " + design + " design, got " +
                                               std::to_string(def.samples));
+    in.check(def.samples <= def.max_trials / def.seeds, "samples",
+             std::to_string(def.samples) + " x seeds " + std::to_string(def.seeds) +
+                 " is more trials than max_trials = " + std::to_string(def.max_trials) + raise);
     const std::int64_t seed = in.get_int("design_seed", 1);
     in.check(seed >= 0, "design_seed", "must be >= 0, got " + std::to_string(seed));
     def.design_seed = static_cast<std::uint64_t>(seed);
@@ -315,11 +340,23 @@ SweepDefinition load_sweep(const std::string& path) {
   for (std::size_t i = 0; i < list->size(); ++i) {
     const toml::table* t = (*list)[i].as_table();
     in.check(t != nullptr, "axis", "must be [[axis]] tables");
-    def.axes.push_back(read_axis(*t, i, def.design, path));
+    def.axes.push_back(read_axis(*t, i, def.design, def.max_trials, path));
     in.check(keys.insert(def.axes.back().key).second, "axis",
              "names " + def.axes.back().key + " twice");
   }
   in.reject_unknown();
+  if (def.design == SweepDesign::kGrid) {
+    // the product of the levels, checked factor by factor (it could wrap to 0 or below)
+    const std::int64_t points = grid_points(def.axes, def.max_trials / def.seeds);
+    if (points < 0) {
+      double product = 1;   // for the message only
+      for (const auto& a : def.axes) product *= static_cast<double>(a.values.size());
+      in.fail("max_trials", "is " + std::to_string(def.max_trials) + ", fewer than the grid's " +
+                                format_value(product) + " points (" +
+                                std::to_string(def.axes.size()) + " axes) x " +
+                                std::to_string(def.seeds) + " seeds" + raise);
+    }
+  }
   make_points(&def);
 
   // the base scenario, then every point, must validate and bind to its model before anything

@@ -10,6 +10,8 @@
 //   design       "grid" | "random" | "lhs"                                     default "grid"
 //   samples      points of a random or lhs design, >= 1                        (not for grid)
 //   design_seed  seed of the random or lhs design, >= 0                        default 1
+//   max_trials   the most trials (points x seeds) the sweep may hold, >= 1     default 10^6
+//                (a cap against a typo that asks for 10^20 trials; raise it for a big sweep)
 //   [fixed]      scenario keys set at every point, as in the scenario: [fixed.sim] duration_s = 2
 //   [[axis]]     key = "reflex.v_thr_mm_s", and either
 //                  values = [..]                       (grid only), or
@@ -54,6 +56,7 @@ struct SweepDefinition {
   std::int64_t samples = 0;       // random, lhs
   std::uint64_t design_seed = 1;  // random, lhs
   std::int64_t seeds = 1;
+  std::int64_t max_trials = 1000000;  // the cap on points x seeds (not part of the definition)
   std::uint64_t base_seed = 1;    // the base scenario's seed (with fixed overrides)
   // the metrics each trial stores (the database's metric columns), from the base scenario
   std::vector<std::string> metric_names;
