@@ -96,6 +96,15 @@ std::int64_t wait_for_trials(const std::string& db, std::int64_t n, pid_t pid) {
   return -1;
 }
 
+// Stops `pid` with SIGSTOP and waits until it is stopped: what it has stored stays as it is
+// while the test looks (no race with a sweep that goes on, or ends, meanwhile).
+void freeze(pid_t pid) {
+  ASSERT_EQ(::kill(pid, SIGSTOP), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, WUNTRACED), pid);
+  ASSERT_TRUE(WIFSTOPPED(status)) << "the sweep ended before it could be stopped";
+}
+
 // `pamsim sweep SWEEP --threads 2 --db DB` in the background, output discarded; its pid.
 pid_t spawn_sweep(const fs::path& sweep, const std::string& db) {
   const pid_t pid = ::fork();
@@ -134,15 +143,16 @@ TEST(CliSweepTest, SweepKilledHalfwayAndResumedEqualsTheUninterruptedOne) {
   const std::string db = (dir / "killed.db").string();
   const pid_t pid = spawn_sweep(sweep, db);
   ASSERT_GT(pid, 0);
-  const std::int64_t seen = wait_for_trials(db, total / 2, pid);
-  ASSERT_GT(seen, 0) << "the sweep finished or failed before it could be killed";
+  ASSERT_GT(wait_for_trials(db, total / 2, pid), 0) << "the sweep ended before half its trials";
+  ASSERT_NO_FATAL_FAILURE(freeze(pid));
+  const std::int64_t seen = pamsim::ResultsDb::open_existing(db).trial_count();
+  ASSERT_LT(seen, total) << "stopped too late to test a resume";
   ASSERT_EQ(::kill(pid, SIGKILL), 0);
   int status = 0;
   ASSERT_EQ(::waitpid(pid, &status, 0), pid);
   ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
-  const std::int64_t after_kill = pamsim::ResultsDb::open_existing(db).trial_count();
-  EXPECT_GE(after_kill, seen);
-  EXPECT_LT(after_kill, total) << "killed too late to test a resume";
+  // a trial half-stored when the process died is not there; every committed one is
+  EXPECT_EQ(pamsim::ResultsDb::open_existing(db).trial_count(), seen);
 
   // without --resume the database is refused; with it the rest runs
   const auto refused = run_pamsim("sweep " + sweep.string() + " --db " + db);
@@ -162,13 +172,20 @@ TEST(CliSweepTest, SigintStopsCleanlyWithExit130AndResumeFinishes) {
   const pid_t pid = spawn_sweep(sweep, db);
   ASSERT_GT(pid, 0);
   ASSERT_GT(wait_for_trials(db, kInterruptibleTrials / 3, pid), 0);
-  ASSERT_EQ(::kill(pid, SIGINT), 0);
+  ASSERT_NO_FATAL_FAILURE(freeze(pid));
+  const std::int64_t before = pamsim::ResultsDb::open_existing(db).trial_count();
+  ASSERT_LT(before, kInterruptibleTrials) << "stopped too late to test an interrupt";
+  ASSERT_EQ(::kill(pid, SIGINT), 0);   // delivered when it runs again
+  ASSERT_EQ(::kill(pid, SIGCONT), 0);
   int status = 0;
   ASSERT_EQ(::waitpid(pid, &status, 0), pid);
   ASSERT_TRUE(WIFEXITED(status)) << "SIGINT must stop the sweep, not kill it";
   EXPECT_EQ(WEXITSTATUS(status), 130);
+  // the trials queued or running at the signal are stored (at most two per thread); nothing
+  // new starts
   const std::int64_t stored = pamsim::ResultsDb::open_existing(db).trial_count();
-  EXPECT_LT(stored, kInterruptibleTrials);
+  EXPECT_GE(stored, before);
+  EXPECT_LE(stored, before + 4) << "trials started after SIGINT (2 threads)";
   const auto resumed = run_pamsim("sweep " + sweep.string() + " --resume --db " + db);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_NE(resumed.err.find(std::to_string(stored) + " stored before"), std::string::npos)
@@ -178,13 +195,13 @@ TEST(CliSweepTest, SigintStopsCleanlyWithExit130AndResumeFinishes) {
 
 TEST(CliSweepTest, ASecondWriterIsRefusedWhileASweepRuns) {
   const fs::path dir = fresh_dir("sweep_lock");
-  // 960 trials (a few seconds): still running when the second writer starts, even on a
-  // loaded machine (120 could finish first under a parallel ctest)
-  const fs::path sweep = interruptible_sweep(dir, 80);
+  const fs::path sweep = interruptible_sweep(dir);
   const std::string db = (dir / "s.db").string();
   const pid_t pid = spawn_sweep(sweep, db);
   ASSERT_GT(pid, 0);
   ASSERT_GT(wait_for_trials(db, 1, pid), 0);
+  // the first writer holds its lock, stopped, however long the second takes to start
+  ASSERT_NO_FATAL_FAILURE(freeze(pid));
   const auto second = run_pamsim("sweep " + sweep.string() + " --resume --db " + db);
   ::kill(pid, SIGKILL);
   ::waitpid(pid, nullptr, 0);
@@ -195,7 +212,7 @@ TEST(CliSweepTest, ASecondWriterIsRefusedWhileASweepRuns) {
   // the lock dies with its process: a resume now finishes the sweep
   const auto resumed = run_pamsim("sweep " + sweep.string() + " --resume --db " + db);
   EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
-  EXPECT_EQ(pamsim::ResultsDb::open_existing(db).trial_count(), 3 * 4 * 80);
+  EXPECT_EQ(pamsim::ResultsDb::open_existing(db).trial_count(), kInterruptibleTrials);
 }
 
 TEST(CliSweepTest, DivergingTrialIsStoredAndTheSweepGoesOn) {
