@@ -25,24 +25,55 @@ mode_t current_umask() {
 
 }  // namespace
 
-void write_file_atomically(const std::string& path, const std::string& content) {
-  // a temp file of an unpredictable name, created exclusively (mkstemp: O_CREAT | O_EXCL,
-  // so neither an existing file nor a planted symlink is ever opened), in the destination
-  // folder so that the rename below stays on one file system
+std::string make_temp_beside(const std::string& path, TempKind kind, int* fd_out) {
+  // an unpredictable name, created exclusively (O_CREAT | O_EXCL, so neither an existing
+  // file nor a planted symlink is ever opened), in the destination folder so that the
+  // rename into place stays on one file system
   std::vector<char> tmp(path.begin(), path.end());
   const std::string suffix = ".tmp.XXXXXX";
   tmp.insert(tmp.end(), suffix.begin(), suffix.end());
   tmp.push_back('\0');
+  const auto fail = [&](const char* what) {
+    throw InputError(path + ": " + what + " (" + std::strerror(errno) + ")");
+  };
+  if (kind == TempKind::kFolder) {
+    if (!::mkdtemp(tmp.data())) fail("cannot write");
+    // the permissions a plain mkdir would give (mkdtemp makes 0700)
+    if (::chmod(tmp.data(), 0777 & ~current_umask()) != 0) {
+      const int saved = errno;
+      ::rmdir(tmp.data());
+      errno = saved;
+      fail("cannot set permissions");
+    }
+    return tmp.data();
+  }
   const int fd = ::mkostemp(tmp.data(), O_CLOEXEC);
-  if (fd < 0) throw InputError(path + ": cannot write (" + std::strerror(errno) + ")");
+  if (fd < 0) fail("cannot write");
+  // the permissions a plain create would give (mkstemp makes 0600)
+  if (::fchmod(fd, 0666 & ~current_umask()) != 0) {
+    const int saved = errno;
+    ::close(fd);
+    ::unlink(tmp.data());
+    errno = saved;
+    fail("cannot set permissions");
+  }
+  if (fd_out) {
+    *fd_out = fd;
+  } else {
+    ::close(fd);
+  }
+  return tmp.data();
+}
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+  int fd = -1;
+  const std::string tmp = make_temp_beside(path, TempKind::kFile, &fd);
   const auto fail = [&](const char* what) {
     const std::string why = std::strerror(errno);
     ::close(fd);
-    ::unlink(tmp.data());
+    ::unlink(tmp.c_str());
     throw InputError(path + ": " + what + " (" + why + ")");
   };
-  // the permissions a plain create would give (mkstemp makes 0600)
-  if (::fchmod(fd, 0666 & ~current_umask()) != 0) fail("cannot set permissions");
 
   // write everything (a full disk shows here), then publish it in one step
   const char* data = content.data();
@@ -59,12 +90,12 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   if (::fsync(fd) != 0) fail("write failed");
   if (::close(fd) != 0) {
     const std::string why = std::strerror(errno);
-    ::unlink(tmp.data());
+    ::unlink(tmp.c_str());
     throw InputError(path + ": write failed (" + why + ")");
   }
-  if (std::rename(tmp.data(), path.c_str()) != 0) {
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const std::string why = std::strerror(errno);
-    ::unlink(tmp.data());
+    ::unlink(tmp.c_str());
     throw InputError(path + ": cannot rename temp file into place (" + why + ")");
   }
 }

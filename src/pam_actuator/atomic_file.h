@@ -13,4 +13,14 @@ namespace pamsim {
 // folder is missing or not writable, or a write fails (a full disk); nothing is left.
 void write_file_atomically(const std::string& path, const std::string& content);
 
+// What to make beside an output before it is renamed into place.
+enum class TempKind { kFile, kFolder };
+
+// Creates `<path>.tmp.XXXXXX` beside `path`, exclusively (mkostemp or mkdtemp: never an
+// existing name, never through a planted symlink), with the permissions a plain create
+// would give (0666 or 0777 less the umask); returns its name. For a file, `*fd` receives
+// the open descriptor when `fd` is given (it is closed otherwise). Throws InputError
+// "<path>: cannot write (why)".
+std::string make_temp_beside(const std::string& path, TempKind kind, int* fd = nullptr);
+
 }  // namespace pamsim

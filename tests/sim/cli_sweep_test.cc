@@ -16,6 +16,7 @@
 
 #include "cli_util.h"
 #include "sim/sweep/results_db.h"
+#include "sim/sweep/sweep.h"
 
 namespace {
 
@@ -364,6 +365,51 @@ TEST(CliSweepTest, IntegerBooleanAndStringAxesKeepTheirTypesIntoTheBestScenario)
   const auto run = run_pamsim("run " + (out / "best.toml").string() + " --out " +
                               (dir / "best_run").string());
   EXPECT_EQ(run.exit_code, 0) << run.err;
+}
+
+// A database that cannot be written: read by export and report as it stands, and a resume
+// refused before any trial runs (it used to read as "not a pamsim sweep database", and a
+// resume ran its trials before failing). As root, which writes anything, pamsim runs as
+// nobody through setpriv(1).
+TEST(CliSweepTest, ReadOnlyDatabaseIsReadAndItsResumeRefusedBeforeRunning) {
+  const fs::path dir = fresh_dir("sweep_read_only");
+  const fs::path ro = dir / "ro";
+  fs::create_directories(ro);
+  const fs::path sweep = dir / "sweep.toml";
+  write_text(sweep, short_sweep("seeds = 2\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\n"
+                                "values = [50.0, 70.0]\n"));
+  const std::string full = (ro / "full.db").string(), part = (ro / "part.db").string();
+  ASSERT_EQ(run_pamsim("sweep " + sweep.string() + " --db " + full).exit_code, 0);
+  ASSERT_EQ(run_pamsim("export " + full + " --csv " + (dir / "ref.csv").string()).exit_code, 0);
+  pamsim::ResultsDb::create(part, pamsim::load_sweep(sweep.string()));   // no trials yet
+
+  const std::string as_reader =
+      ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups" : "";
+  if (!as_reader.empty() && run_pamsim("--version", as_reader).exit_code != 0) {
+    GTEST_SKIP() << "user nobody cannot run " << PAMSIM_BINARY;
+  }
+  fs::permissions(dir, fs::perms::all);   // outputs go beside the read-only folder
+  for (const std::string& f : {full, part}) fs::permissions(f, fs::perms::owner_read |
+                                                                fs::perms::group_read |
+                                                                fs::perms::others_read);
+  fs::permissions(ro, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                          fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+  const std::string part_before = read_file(part);
+
+  const auto exported =
+      run_pamsim("export " + full + " --csv " + (dir / "ro.csv").string(), as_reader);
+  EXPECT_EQ(exported.exit_code, 0) << exported.err;
+  EXPECT_EQ(read_file(dir / "ro.csv"), read_file(dir / "ref.csv"));
+  const auto report = run_pamsim("report " + full + " --out " + (dir / "rep").string(), as_reader);
+  EXPECT_EQ(report.exit_code, 0) << report.err;
+  EXPECT_TRUE(fs::exists(dir / "rep" / "points.csv"));
+
+  const auto resume = run_pamsim("sweep " + sweep.string() + " --resume --db " + part, as_reader);
+  EXPECT_EQ(resume.exit_code, 2) << resume.err;
+  EXPECT_EQ(line_count(resume.err), 1) << resume.err;
+  EXPECT_NE(resume.err.find(part + ": is read-only"), std::string::npos) << resume.err;
+  EXPECT_EQ(read_file(part), part_before);
+  fs::permissions(ro, fs::perms::owner_all);   // so that the folder can be cleaned up
 }
 
 TEST(CliSweepTest, ExportAndReportRefuseWhatIsNotASweepDatabase) {

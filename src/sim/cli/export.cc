@@ -52,7 +52,7 @@ void export_csv(const ExportOptions& opt) {
   const std::vector<std::string> columns = db.trial_columns();
 
   // rows stream into the temp file (memory flat whatever the number of trials), then rename
-  TempPath tmp(opt.csv);
+  TempPath tmp(opt.csv, TempKind::kFile);
   std::ofstream out(tmp.path(), std::ios::binary | std::ios::trunc);
   if (!out) throw InputError(opt.csv + ": cannot write (missing folder or no permission)");
   std::vector<bool> keep(columns.size());

@@ -35,7 +35,8 @@ const AVCodec* find_h264_encoder() {
 // the muxer closes the file before the guard removes it (also when the constructor throws
 // half way).
 struct Mp4Writer::Impl {
-  explicit Impl(const std::string& output) : path(output), temp_file(output) {}
+  explicit Impl(const std::string& output)
+      : path(output), temp_file(output, TempKind::kFile) {}
   ~Impl() { stop_encoding_thread(); }
 
   void encoding_loop();

@@ -49,7 +49,7 @@ std::string frame_file_name(long index) {
 
 // Members are destroyed bottom-up: the encoder goes first, then the temp folder.
 struct PngSequenceWriter::Impl {
-  explicit Impl(const std::string& dir) : temp_dir(dir) {}
+  explicit Impl(const std::string& dir) : temp_dir(dir, TempKind::kFolder) {}
   TempPath temp_dir;
   AvCodecContextPtr encoder;
   AvFramePtr frame;     // RGB rows top-down, reused
@@ -63,17 +63,13 @@ PngSequenceWriter::PngSequenceWriter(const std::string& dir, int width_px, int h
   if (width_px <= 0 || height_px <= 0) throw InputError(dir_ + ": frame size must be > 0");
   check_replaceable(dir_);
   quiet_ffmpeg_log();
-  impl_ = std::make_unique<Impl>(dir_);
-  Impl& x = *impl_;
-
   // the temp folder, beside DIR
   std::error_code ec;
   const fs::path parent = fs::path(dir_).parent_path();
   if (!parent.empty()) fs::create_directories(parent, ec);
-  if (ec || !fs::create_directory(x.temp_dir.path(), ec)) {
-    throw InputError(dir_ + ": cannot create folder (" +
-                     (ec ? ec.message() : std::string("temp folder exists")) + ")");
-  }
+  if (ec) throw InputError(dir_ + ": cannot create folder (" + ec.message() + ")");
+  impl_ = std::make_unique<Impl>(dir_);
+  Impl& x = *impl_;
 
   // the PNG encoder on RGB frames
   const AVCodec* codec = avcodec_find_encoder(AV_CODEC_ID_PNG);

@@ -20,6 +20,7 @@
 #include "pam_actuator/input_error.h"
 #include "sim/io/outputs.h"
 #include "sim/io/temp_path.h"
+#include "sim/sweep/sqlite_file.h"
 
 namespace pamsim {
 namespace {
@@ -169,17 +170,17 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
     }
   }
   // build it under a temp name, then rename: the database exists whole or not at all
-  TempPath tmp_guard(path);   // removed on any failure below
-  const std::string& tmp = tmp_guard.path();
-  fs::remove(tmp, ec);
+  // (an empty file made exclusively, which SQLite takes as a new database; NOFOLLOW: a
+  // symlink put in its place is refused)
+  std::unique_ptr<TempPath> tmp_guard;   // removed on any failure below
+  try {
+    tmp_guard = std::make_unique<TempPath>(path, TempKind::kFile);
+  } catch (const InputError&) {
+    throw InputError(path + ": cannot create the sweep database (is the folder writable?)");
+  }
+  const std::string& tmp = tmp_guard->path();
   {
-    sqlite3* handle = nullptr;
-    try {
-      handle = open_database(tmp, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
-    } catch (const InputError&) {
-      throw InputError(path + ": cannot create the sweep database (is the folder writable?)");
-    }
-    ResultsDb db(handle, tmp);   // closed before tmp_guard removes the file
+    ResultsDb db(open_database(tmp, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOFOLLOW), tmp);
     std::string columns = "trial INTEGER PRIMARY KEY, point INTEGER NOT NULL, "
                           "seed_index INTEGER NOT NULL, seed INTEGER NOT NULL";
     for (const auto& axis : sweep.axes) columns += ", " + quoted(axis.key);
@@ -208,16 +209,17 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     throw InputError(path + ": cannot create the sweep database (" + std::strerror(errno) + ")");
   }
-  tmp_guard.release();
+  tmp_guard->release();
   sync_directory_of(path);   // the rename itself survives a power cut
   return open_to_resume(path, sweep);
 }
 
 ResultsDb ResultsDb::open_existing(const std::string& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such sweep database");
-  // read-write so that a WAL left by a killed sweep is recovered; nothing is written
-  ResultsDb db(open_database(path, SQLITE_OPEN_READWRITE), path);
+  return open_as(path, DbAccess::kRead);
+}
+
+ResultsDb ResultsDb::open_as(const std::string& path, DbAccess access) {
+  ResultsDb db(open_sqlite_file(path, access, "sweep database"), path);
   if (db.meta("format") != "pamsim-sweep-1") {
     throw InputError(path + ": not a pamsim sweep database");
   }
@@ -225,7 +227,7 @@ ResultsDb ResultsDb::open_existing(const std::string& path) {
 }
 
 ResultsDb ResultsDb::open_to_resume(const std::string& path, const SweepDefinition& sweep) {
-  ResultsDb db = open_existing(path);
+  ResultsDb db = open_as(path, DbAccess::kWrite);
   const std::string stored = db.meta("definition");
   const std::string wanted = sweep.canonical_json();
   if (stored != wanted) {

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/sweep/sqlite_file.h"
 #include "sim/sweep/sweep.h"
 #include "sim/core/trial.h"
 
@@ -45,9 +46,9 @@ class ResultsDb {
   // not a pamsim sweep database, holds a different sweep definition (naming what differs),
   // or another process is writing to it.
   static ResultsDb open_to_resume(const std::string& path, const SweepDefinition& sweep);
-  // Opens an existing sweep database to read it (export, report). Opened read-write so that a
-  // WAL left by a killed sweep is recovered; nothing else is written. Throws InputError if
-  // `path` is missing or not a sweep database.
+  // Opens an existing sweep database to read it (export, report), also on read-only media
+  // (open_sqlite_file); nothing is written. Throws InputError if `path` is missing, cannot
+  // be read or is not a sweep database.
   static ResultsDb open_existing(const std::string& path);
 
   ResultsDb(ResultsDb&& other) noexcept;
@@ -74,6 +75,7 @@ class ResultsDb {
 
  private:
   ResultsDb(sqlite3* db, std::string path);
+  static ResultsDb open_as(const std::string& path, DbAccess access);
   void exec(const std::string& sql) const;
   [[noreturn]] void fail(const std::string& what) const;
   void lock_for_writing();

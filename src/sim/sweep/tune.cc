@@ -38,6 +38,7 @@
 #include "sim/io/scenario_file.h"
 #include "sim/io/temp_path.h"
 #include "sim/sweep/report.h"
+#include "sim/sweep/sqlite_file.h"
 
 namespace pamsim {
 namespace {
@@ -506,10 +507,12 @@ TuneDb TuneDb::create(const std::string& path, const TuneDefinition& def) {
     throw InputError(path + ": exists; give --resume to continue it, or another --db");
   }
   // built under a temp name and renamed, so a half-made database never exists
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  fs::remove(tmp, ec);
+  // (an empty file made exclusively, which SQLite takes as a new database; NOFOLLOW: a
+  // symlink put in its place is refused)
+  TempPath tmp_guard(path, TempKind::kFile);   // removed however this ends
+  const std::string& tmp = tmp_guard.path();
   {
-    TuneDb db(open_db(tmp, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE), tmp);
+    TuneDb db(open_db(tmp, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOFOLLOW), tmp);
     std::string params, objectives;
     for (std::size_t i = 0; i < def.parameters.size(); ++i)
       params += ", u" + std::to_string(i) + " REAL";
@@ -540,24 +543,18 @@ TuneDb TuneDb::create(const std::string& path, const TuneDefinition& def) {
       }
     } catch (...) {
       db.close();
-      fs::remove(tmp, ec);
       throw;
     }
   }
   // link(2) refuses an existing target, where rename would replace a file made meanwhile
   if (::link(tmp.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    fs::remove(tmp, ec);
-    throw InputError(path + ": cannot create the tuning database (" + why + ")");
+    throw InputError(path + ": cannot create the tuning database (" + std::strerror(errno) + ")");
   }
-  fs::remove(tmp, ec);
-  return open_to_resume(path, def);
+  return open_to_resume(path, def);   // (the guard removes the temp name, the link stays)
 }
 
 TuneDb TuneDb::open_to_resume(const std::string& path, const TuneDefinition& def) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no tuning database to resume");
-  TuneDb db(open_db(path, SQLITE_OPEN_READWRITE), path);
+  TuneDb db(open_sqlite_file(path, DbAccess::kWrite, "tuning database"), path);
   if (db.meta("kind") != "pamsim tune") throw InputError(path + ": not a pamsim tuning database");
   if (db.meta("tune_definition") != def.canonical_json()) {
     throw InputError(path +
@@ -570,27 +567,17 @@ TuneDb TuneDb::open_to_resume(const std::string& path, const TuneDefinition& def
 }
 
 TuneDb TuneDb::open_existing(const std::string& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such tuning database");
-  // read-write, so that a WAL left by a killed run is recovered; nothing else is written
-  TuneDb db(open_db(path, SQLITE_OPEN_READWRITE), path);
+  TuneDb db(open_sqlite_file(path, DbAccess::kRead, "tuning database"), path);
   if (db.meta("kind") != "pamsim tune") throw InputError(path + ": not a pamsim tuning database");
   return db;
 }
 
 bool TuneDb::is_tune_database(const std::string& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) return false;
-  sqlite3* raw = nullptr;
-  if (sqlite3_open_v2(path.c_str(), &raw, SQLITE_OPEN_READWRITE, nullptr) != SQLITE_OK) {
-    sqlite3_close(raw);
-    return false;
-  }
-  TuneDb db(raw, path);
   try {
-    return db.meta("kind") == "pamsim tune";
+    return TuneDb(open_sqlite_file(path, DbAccess::kRead, "database"), path).meta("kind") ==
+           "pamsim tune";
   } catch (const std::exception&) {
-    return false;
+    return false;   // the sweep reader says what is wrong with it
   }
 }
 

@@ -1,0 +1,93 @@
+// sqlite_file.cc: see sqlite_file.h.
+#include "sim/sweep/sqlite_file.h"
+
+#include <sqlite3.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <system_error>
+
+#include "pam_actuator/input_error.h"
+
+namespace pamsim {
+namespace {
+
+// Why `path` or its folder cannot be written (SQLite writes -wal and -shm files beside the
+// database), or "" if both can. access(2) sees permissions and read-only mounts alike.
+std::string why_not_writable(const std::string& path) {
+  std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  if (folder.empty()) folder = ".";
+  if (::access(path.c_str(), W_OK) != 0) return std::strerror(errno);
+  if (::access(folder.c_str(), W_OK) != 0) {
+    return "its folder: " + std::string(std::strerror(errno));
+  }
+  return "";
+}
+
+// `path` as an SQLite URI that opens it immutable (no locks, no -shm: readable on read-only
+// media), with the characters a URI gives meaning escaped.
+std::string immutable_uri(const std::string& path) {
+  std::string uri = "file:";
+  for (const char c : path) {
+    if (c == '?' || c == '#' || c == '%') {
+      char hex[4];
+      std::snprintf(hex, sizeof(hex), "%%%02X", static_cast<unsigned char>(c));
+      uri += hex;
+    } else {
+      uri += c;
+    }
+  }
+  return uri + "?immutable=1";
+}
+
+}  // namespace
+
+sqlite3* open_sqlite_file(const std::string& path, DbAccess access, const std::string& what) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw InputError(path + ": no such " + what);
+  }
+  const std::string not_writable = why_not_writable(path);
+  if (access == DbAccess::kWrite && !not_writable.empty()) {
+    throw InputError(path + ": is read-only (" + not_writable + "); the " + what +
+                     " must be writable to go on: copy it to a writable folder");
+  }
+  // Read-only: a WAL database needs a -shm file it cannot make here. Without a -wal (a
+  // writer that closed checkpoints and removes it) the file is all there is and is opened
+  // immutable; a -wal left by a killed writer holds trials only a writable copy recovers.
+  std::string name = path;
+  int flags = SQLITE_OPEN_READWRITE;
+  if (!not_writable.empty()) {
+    flags = SQLITE_OPEN_READONLY;
+    if (std::filesystem::file_size(path + "-wal", ec) > 0 && !ec) {
+      throw InputError(path + ": is read-only (" + not_writable + ") and its -wal holds " +
+                       "results a killed run left uncommitted to the file: copy both to a "
+                       "writable folder to read them");
+    }
+    name = immutable_uri(path);
+    flags |= SQLITE_OPEN_URI;
+  }
+  sqlite3* db = nullptr;
+  int rc = sqlite3_open_v2(name.c_str(), &db, flags | SQLITE_OPEN_NOFOLLOW, nullptr);
+  const auto fail = [&](const std::string& problem) {
+    const std::string why = db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
+    sqlite3_close(db);
+    throw InputError(path + ": " + problem + " (" + why + ")");
+  };
+  if (rc != SQLITE_OK) fail("cannot open the " + what);
+  sqlite3_busy_timeout(db, 10000);
+  // the schema is read now, so that a file that is not a database, or one that cannot be
+  // read here, says so (later reads would take it for a database without the tables)
+  rc = sqlite3_exec(db, "SELECT count(*) FROM sqlite_schema", nullptr, nullptr, nullptr);
+  if (rc != SQLITE_OK) fail("cannot read the " + what);
+  if (access == DbAccess::kWrite && sqlite3_db_readonly(db, "main") == 1) {
+    rc = SQLITE_READONLY;
+    fail("cannot write the " + what);
+  }
+  return db;
+}
+
+}  // namespace pamsim
