@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -63,7 +65,8 @@ TEST(CliRunTest, TrialsWriteEachTrialAndTheAggregate) {
 }
 
 TEST(CliRunTest, BadInputIsOneLineNonZeroAndWritesNothing) {
-  const fs::path out = fresh_dir("run_bad") / "out";
+  // (two levels: no folder on the way is left behind either)
+  const fs::path out = fresh_dir("run_bad") / "new" / "out";
   for (const std::string args :
        {"run scenarios/missing.toml", "run scenarios/drop_mass.toml --set reflex.v_thr_mm_s=-1",
         "run scenarios/drop_mass.toml --set sim.timestep_s=nan",
@@ -75,8 +78,43 @@ TEST(CliRunTest, BadInputIsOneLineNonZeroAndWritesNothing) {
     EXPECT_NE(r.exit_code, 0) << args;
     EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
     EXPECT_EQ(r.err.rfind("pamsim: ", 0), 0u) << r.err;
-    EXPECT_FALSE(fs::exists(out)) << args;
+    EXPECT_FALSE(fs::exists(out.parent_path())) << args;
   }
+}
+
+// Every regular file under `dir` with its bytes (folders as names), for before/after checks.
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    files[fs::relative(e.path(), dir).string()] =
+        e.is_regular_file() ? pamsim_test::read_file(e.path()) : "(folder)";
+  }
+  return files;
+}
+
+// A run that fails after its first output (here a full disk: a file-size limit with SIGXFSZ
+// ignored) leaves the folder of an earlier run exactly as it was, and nothing beside it; the
+// CSV and JSON used to be replaced before the failure, a mix of two runs (issue 14 item 5).
+TEST(CliRunTest, ARunThatFailsHalfWayLeavesTheEarlierOutputsAsTheyWere) {
+  const fs::path dir = fresh_dir("run_staged");
+  const fs::path out = dir / "out";
+  const std::string run = "run scenarios/drop_mass.toml --set sim.duration_s=1.3 --out " +
+                          out.string();
+  ASSERT_EQ(run_pamsim(run).exit_code, 0);
+  const auto before = snapshot(dir);
+  const CliResult full = run_pamsim(run + " --set seed=7",
+                                    "bash -c 'trap \"\" XFSZ; ulimit -f 32; exec \"$0\" \"$@\"'");
+  EXPECT_NE(full.exit_code, 0);
+  EXPECT_EQ(line_count(full.err), 1) << full.err;
+  EXPECT_EQ(snapshot(dir), before);
+
+  // a run of fewer trials replaces the whole set: no trial folder of the earlier run is left
+  ASSERT_EQ(run_pamsim(run + " --trials 3").exit_code, 0) << "3 trials";
+  ASSERT_EQ(run_pamsim(run + " --trials 2").exit_code, 0) << "2 trials";
+  std::set<std::string> names;
+  for (const auto& e : fs::directory_iterator(out)) names.insert(e.path().filename());
+  EXPECT_EQ(names, (std::set<std::string>{"angle_band.png", "summary.json", "trial_0000",
+                                          "trial_0001"}));
 }
 
 TEST(CliRunTest, CalibrateReproducesTheShippedCalibration) {

@@ -2,7 +2,10 @@
 // trajectory.csv reader behind `pamsim compare`, and the compare command itself (in process).
 #include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <cmath>
 #include <cstdio>
@@ -234,7 +237,7 @@ TEST_F(PlotTest, MissingFolderThrowsAndLeavesNothing) {
   EXPECT_EQ(leftover_plot_temp_dirs(), 0);
 }
 
-TEST_F(PlotTest, UnwritableFolderThrowsGnuplotFailedAndLeavesNothing) {
+TEST_F(PlotTest, UnwritableFolderThrowsAndLeavesNothing) {
   // a folder gnuplot cannot write to: read-only by mode, or /proc when running as root
   fs::path folder = dir_ / "read_only";
   fs::create_directories(folder);
@@ -245,12 +248,36 @@ TEST_F(PlotTest, UnwritableFolderThrowsGnuplotFailedAndLeavesNothing) {
     write_angle_plot(png, synthetic_trial(), synthetic_scenario());
     FAIL() << "expected an exception";
   } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(png + ": gnuplot failed: ", 0), 0u) << e.what();
-    EXPECT_GT(std::string(e.what()).size(), (png + ": gnuplot failed: ").size());
+    // the temp PNG cannot be made beside it: said before gnuplot runs
+    EXPECT_EQ(std::string(e.what()).rfind(png + ": cannot write (", 0), 0u) << e.what();
   }
   for (const auto& name : entries(folder)) EXPECT_EQ(name.find("pamsim_plot_test"), std::string::npos);
   EXPECT_EQ(leftover_plot_temp_dirs(), 0);
   fs::permissions(dir_ / "read_only", fs::perms::owner_all);
+}
+
+// A disk that fills while gnuplot writes the PNG, emulated by a file-size limit that gnuplot
+// inherits (SIGXFSZ ignored, so its writes fail with EFBIG): gnuplot exits 0 with half an
+// image, which used to be renamed into place as the plot (issue 14 item 1).
+TEST_F(PlotTest, APngCutShortByAFullDiskIsAnErrorAndLeavesNothing) {
+  const std::string png = path("angle.png");
+  struct rlimit old {};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old), 0);
+  struct rlimit small = old;
+  small.rlim_cur = 16 * 1024;   // the data files fit, the 1200x900 image does not
+  const auto old_handler = ::signal(SIGXFSZ, SIG_IGN);
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string message;
+  try {
+    write_angle_plot(png, synthetic_trial(), synthetic_scenario());
+  } catch (const std::runtime_error& e) {
+    message = e.what();
+  }
+  ::setrlimit(RLIMIT_FSIZE, &old);
+  ::signal(SIGXFSZ, old_handler);
+  EXPECT_EQ(message.rfind(png + ": gnuplot failed: ", 0), 0u) << message;
+  EXPECT_TRUE(entries(dir_).empty()) << "no half PNG, no temp file";
+  EXPECT_EQ(leftover_plot_temp_dirs(), 0);
 }
 
 TEST_F(PlotTest, MissingGnuplotSaysSo) {

@@ -6,8 +6,9 @@
 //   best.toml                 the best point (report.h's criterion on NAME, default
 //                             peak_drop_deg) as a scenario: pamsim run DIR/best.toml
 // and prints the criterion and the best point.
-#include <CLI/CLI.hpp>
+#include "sim/sweep/report.h"
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -18,7 +19,7 @@
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
-#include "sim/sweep/report.h"
+#include "sim/io/staged_outputs.h"
 #include "sim/sweep/tune.h"
 
 namespace pamsim {
@@ -47,7 +48,9 @@ void report_tune(const ReportOptions& opt) {
     out = std::filesystem::path(opt.db).parent_path().string();
     if (out.empty()) out = ".";
   }
-  write_tune_outputs(def, history, out);
+  StagedOutputs staged(out, kTuneOutputs);
+  staged.write([&] { write_tune_outputs(def, history, staged); });
+  staged.publish();
   const TuneEvaluation* best = best_evaluation(history);
   std::cout << "tuning: " << def.file << " (" << history.size() << " evaluations stored)\n"
             << "best: evaluation " << best->index
@@ -74,50 +77,62 @@ void report(const ReportOptions& opt) {
     out = std::filesystem::path(opt.db).parent_path().string();
     if (out.empty()) out = ".";
   }
-  make_directories(out);
+  // written together: a failure half way leaves an earlier report as it was
+  StagedOutputs staged(out, {"points.csv", "best.toml", "heatmap_*.png"});
+  staged.write([&] {
+    std::cout << "sweep: " << sweep.sweep_file << " (" << sweep.design << ", " << sweep.points_total
+              << " points x " << sweep.seeds << " seeds; " << sweep.trials_stored << " of "
+              << sweep.trials_total << " trials stored, " << sweep.trials_not_ok
+              << " diverged or failed)\n";
+    write_file_atomically(staged.path("points.csv"), points_csv(sweep));
 
-  std::cout << "sweep: " << sweep.sweep_file << " (" << sweep.design << ", "
-            << sweep.points_total << " points x " << sweep.seeds << " seeds; "
-            << sweep.trials_stored << " of " << sweep.trials_total << " trials stored, "
-            << sweep.trials_not_ok << " diverged or failed)\n";
-  write_file_atomically(out + "/points.csv", points_csv(sweep));
-
-  const PointSummary* best = best_point(sweep, opt.metric);
-  std::cout << "criterion: " << best_criterion(sweep, opt.metric) << "\n";
-  if (best) {
-    std::string setting;
-    for (std::size_t a = 0; a < sweep.axis_keys.size(); ++a) {
-      setting += (a ? ", " : "") + sweep.axis_keys[a] + " = " + best->axis_values[a];
+    const PointSummary* best = best_point(sweep, opt.metric);
+    std::cout << "criterion: " << best_criterion(sweep, opt.metric) << "\n";
+    if (best) {
+      std::string setting;
+      for (std::size_t a = 0; a < sweep.axis_keys.size(); ++a) {
+        setting += (a ? ", " : "") + sweep.axis_keys[a] + " = " + best->axis_values[a];
+      }
+      std::cout << "best: point " << best->point << ": " << setting << "\n";
+      for (const std::string& name :
+           {opt.metric, std::string("recovery_time_s"), std::string("first_trigger_time_s"),
+            std::string("impact_time_s")}) {
+        const int m = sweep.metric_index(name);
+        if (m >= 0) std::cout << "  " << name << " " << stats_text(best->metrics[m]) << "\n";
+      }
+      const std::string header = "# Best setting of the sweep " + sweep.sweep_file + " (database " +
+                                 opt.db +
+                                 "):\n"
+                                 "# " +
+                                 best_criterion(sweep, opt.metric) +
+                                 ".\n"
+                                 "# Point " +
+                                 std::to_string(best->point) + ": " + setting +
+                                 ".\n"
+                                 "# Written by pamsim report from the base scenario " +
+                                 sweep.base_path + ".\n\n";
+      write_file_atomically(staged.path("best.toml"),
+                            point_scenario_toml(sweep, *best, out, header));
+      std::cout << "  scenario: " << out << "/best.toml (pamsim run " << out << "/best.toml)\n";
+    } else {
+      std::cout << "best: no point meets the criterion\n";
     }
-    std::cout << "best: point " << best->point << ": " << setting << "\n";
-    for (const std::string& name : {opt.metric, std::string("recovery_time_s"),
-                                   std::string("first_trigger_time_s"), std::string("impact_time_s")}) {
-      const int m = sweep.metric_index(name);
-      if (m >= 0) std::cout << "  " << name << " " << stats_text(best->metrics[m]) << "\n";
-    }
-    const std::string header =
-        "# Best setting of the sweep " + sweep.sweep_file + " (database " + opt.db + "):\n"
-        "# " + best_criterion(sweep, opt.metric) + ".\n"
-        "# Point " + std::to_string(best->point) + ": " + setting + ".\n"
-        "# Written by pamsim report from the base scenario " + sweep.base_path + ".\n\n";
-    write_file_atomically(out + "/best.toml",
-                          point_scenario_toml(sweep, *best, out, header));
-    std::cout << "  scenario: " << out << "/best.toml (pamsim run " << out << "/best.toml)\n";
-  } else {
-    std::cout << "best: no point meets the criterion\n";
-  }
 
-  if (sweep.axis_keys.size() < 2) {
-    std::cout << "heat maps: none (the sweep has one axis; see points.csv)\n";
-    return;
-  }
-  std::vector<std::string> maps = {"mistrip_rate", "peak_drop_deg", "recovery_time_s"};
-  if (opt.metric != "peak_drop_deg" && opt.metric != "recovery_time_s") maps.push_back(opt.metric);
-  for (const auto& metric : maps) {
-    write_heatmap(out + "/heatmap_" + metric + ".png", sweep_heat_map(sweep, metric, best, opt.metric));
-  }
-  std::cout << "outputs: " << out << "/{points.csv,heatmap_*.png" << (best ? ",best.toml" : "")
-            << "}\n";
+    if (sweep.axis_keys.size() < 2) {
+      std::cout << "heat maps: none (the sweep has one axis; see points.csv)\n";
+      return;
+    }
+    std::vector<std::string> maps = {"mistrip_rate", "peak_drop_deg", "recovery_time_s"};
+    if (opt.metric != "peak_drop_deg" && opt.metric != "recovery_time_s")
+      maps.push_back(opt.metric);
+    for (const auto& metric : maps) {
+      write_heatmap(staged.path("heatmap_" + metric + ".png"),
+                    sweep_heat_map(sweep, metric, best, opt.metric));
+    }
+    std::cout << "outputs: " << out << "/{points.csv,heatmap_*.png" << (best ? ",best.toml" : "")
+              << "}\n";
+  });
+  staged.publish();
 }
 
 }  // namespace
@@ -125,10 +140,10 @@ void report(const ReportOptions& opt) {
 void add_report_command(CLI::App& app) {
   auto opt = std::make_shared<ReportOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "report", "Per-point statistics, heat maps and the best setting of a sweep database (or a "
-                "tuning database's evaluations, best setting, convergence and Pareto front)");
-  cmd->add_option("db", opt->db, "Sweep or tuning database (from pamsim sweep / tune)")
-      ->required();
+      "report",
+      "Per-point statistics, heat maps and the best setting of a sweep database (or a "
+      "tuning database's evaluations, best setting, convergence and Pareto front)");
+  cmd->add_option("db", opt->db, "Sweep or tuning database (from pamsim sweep / tune)")->required();
   cmd->add_option("--metric", opt->metric,
                   "Metric to minimise for the best setting (default peak_drop_deg)");
   cmd->add_option("--out", opt->out, "Output folder (default: the database's folder)");

@@ -3,7 +3,6 @@
 // rendered as in `pamsim render` with the default settings) or N trials (DIR/trial_<seed>/
 // each, plus the aggregate DIR/summary.json and the angle band plot; no video).
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -11,10 +10,11 @@
 #include "pam_actuator/atomic_file.h"
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
+#include "sim/core/runner.h"
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
-#include "sim/core/runner.h"
 #include "sim/io/scenario_file.h"
+#include "sim/io/staged_outputs.h"
 #include "sim/render/scene_renderer.h"
 #include "sim/render/trial_video.h"
 
@@ -27,7 +27,7 @@ struct RunOptions {
   std::string out;
   int trials = 1;
   int threads = 0;
-  std::string video;   // MP4 of the single trial
+  std::string video;  // MP4 of the single trial
 };
 
 std::string default_out_dir(const std::string& scenario) {
@@ -63,7 +63,10 @@ void run(const RunOptions& opt) {
   const TrialModel model = load_trial_model(sc);
   if (!opt.video.empty()) check_camera(model.model.get(), model.model_path, video.camera);
   const std::string out = opt.out.empty() ? default_out_dir(opt.scenario) : opt.out;
-  make_directories(out);   // only once every input is known to be good
+  // every output is written into a staging folder and published together at the end: a
+  // failure half way leaves the folder as it was (made only once every input is good)
+  StagedOutputs staged(out, {"trajectory.csv", "summary.json", "angle.png", "position.png",
+                             "angle_band.png", "trial_[0-9][0-9][0-9][0-9]"});
   std::vector<TrialResult> results;
   if (opt.video.empty()) {
     results = run_trials(model, sc, opt.trials, threads);
@@ -72,26 +75,30 @@ void run(const RunOptions& opt) {
     results.push_back(run_rendered_trial(model, sc, sc.seed, video, true).trial);
   }
 
-  if (opt.trials == 1) {
-    const TrialResult& r = results.front();
-    write_trial_outputs(out, r, sc);
-    write_angle_plot(out + "/" + trial_plot_name(r.trajectory), r, sc);
-    std::cout << summary_to_json(r.summary, sc).dump(2) << "\n";
-  } else {
-    std::vector<TrialSummary> summaries;
-    std::vector<const Trajectory*> trajectories;
-    for (const auto& r : results) {
-      char name[32];
-      std::snprintf(name, sizeof(name), "/trial_%04d", static_cast<int>(r.summary.seed - sc.seed));
-      write_trial_outputs(out + name, r, sc);
-      summaries.push_back(r.summary);
-      trajectories.push_back(&r.trajectory);
+  nlohmann::json printed;
+  staged.write([&] {
+    if (opt.trials == 1) {
+      const TrialResult& r = results.front();
+      write_trial_outputs(staged.staging(), r, sc);
+      write_angle_plot(staged.path(trial_plot_name(r.trajectory)), r, sc);
+      printed = summary_to_json(r.summary, sc);
+    } else {
+      std::vector<TrialSummary> summaries;
+      std::vector<const Trajectory*> trajectories;
+      for (const auto& r : results) {
+        char name[32];
+        std::snprintf(name, sizeof(name), "trial_%04d", static_cast<int>(r.summary.seed - sc.seed));
+        write_trial_outputs(staged.path(name), r, sc);
+        summaries.push_back(r.summary);
+        trajectories.push_back(&r.trajectory);
+      }
+      printed = aggregate_summaries(summaries, sc);
+      write_file_atomically(staged.path("summary.json"), printed.dump(2) + "\n");
+      write_angle_band_plot(staged.path("angle_band.png"), trajectories, sc);
     }
-    const nlohmann::json aggregate = aggregate_summaries(summaries, sc);
-    write_file_atomically(out + "/summary.json", aggregate.dump(2) + "\n");
-    write_angle_band_plot(out + "/angle_band.png", trajectories, sc);
-    std::cout << aggregate.dump(2) << "\n";
-  }
+  });
+  staged.publish();
+  std::cout << printed.dump(2) << "\n";
   std::cerr << "pamsim: outputs in " << out << "\n";
   if (report_diverged(sc, results) > 0) throw SimulationFailed();
 }

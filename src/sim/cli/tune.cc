@@ -23,6 +23,7 @@
 #include "sim/cli/stop_signal.h"
 #include "sim/core/runner.h"
 #include "sim/io/outputs.h"
+#include "sim/io/staged_outputs.h"
 
 namespace pamsim {
 namespace {
@@ -100,7 +101,9 @@ void tune(const TuneOptions& opt) {
     throw CommandExit(128 + stop_signal());
   }
 
-  write_tune_outputs(def, r.history, out);
+  // the outputs are published together once all are written (tune.db stays where it is)
+  StagedOutputs staged(out, kTuneOutputs);
+  staged.write([&] { write_tune_outputs(def, r.history, staged); });
   const TuneEvaluation* best = best_evaluation(r.history);
   std::vector<TuneReference> settings = {
       {"tuned (evaluation " + std::to_string(best->index) + ")", best->values}};
@@ -125,16 +128,17 @@ void tune(const TuneOptions& opt) {
     std::cout << table.str();
   };
   const std::vector<HeldOutCheck> on_tuning = check_held_out(def, settings, threads, true);
-  write_file_atomically(out + "/tuning_seeds.csv", held_out_csv(def, on_tuning));
+  write_file_atomically(staged.path("tuning_seeds.csv"), held_out_csv(def, on_tuning));
   print_checks(on_tuning, "on the tuning seeds (" + std::to_string(def.seeds) + " seeds x " +
                               std::to_string(def.noise_scales.size()) + " noise levels)");
   if (def.held_out_seeds > 0) {
     const std::vector<HeldOutCheck> checks = check_held_out(def, settings, threads);
-    write_file_atomically(out + "/held_out.csv", held_out_csv(def, checks));
+    write_file_atomically(staged.path("held_out.csv"), held_out_csv(def, checks));
     print_checks(checks, "held-out check (" + std::to_string(def.held_out_seeds) + " seeds x " +
                              std::to_string(def.noise_scales.size()) +
                              " noise levels, not used in tuning)");
   }
+  staged.publish();
   std::cout << "outputs: " << out << "/{best.toml,evaluations.csv,convergence.png"
             << (def.objectives.size() > 1 ? ",pareto.csv,pareto.png" : "")
             << ",tuning_seeds.csv" << (def.held_out_seeds > 0 ? ",held_out.csv" : "") << "}\n";

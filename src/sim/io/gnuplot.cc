@@ -1,6 +1,6 @@
 // gnuplot.cc: see gnuplot.h. Each plot is a gnuplot script plus whitespace-separated .dat
 // files in a private temp folder; gnuplot runs there and writes a temp PNG next to the
-// target, which is then renamed into place.
+// target, which is checked whole and then renamed into place.
 #include "sim/io/gnuplot.h"
 
 #include <sys/wait.h>
@@ -18,6 +18,9 @@
 #include <regex>
 #include <sstream>
 #include <stdexcept>
+
+#include "pam_actuator/atomic_file.h"
+#include "pam_actuator/input_error.h"
 
 namespace pamsim {
 namespace {
@@ -105,6 +108,19 @@ std::string read_text(const fs::path& path) {
   return ss.str();
 }
 
+// True if `path` starts with the PNG signature and ends with the IEND chunk (length 0, type,
+// CRC): a file cut short by a failed write ends elsewhere.
+bool png_is_complete(const std::string& path) {
+  static const char kSignature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1a', '\n'};
+  static const char kIend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', '\xae', '\x42', '\x60', '\x82'};
+  std::ifstream in(path, std::ios::binary);
+  char head[8], tail[12];
+  if (!in.read(head, sizeof(head))) return false;
+  in.seekg(-static_cast<std::streamoff>(sizeof(tail)), std::ios::end);
+  if (!in.read(tail, sizeof(tail))) return false;
+  return std::equal(head, head + 8, kSignature) && std::equal(tail, tail + 12, kIend);
+}
+
 }  // namespace
 
 // a gnuplot single-quoted string literal ('' escapes a quote)
@@ -142,8 +158,12 @@ void run_gnuplot(const std::string& png_path, const GnuplotJob& job) {
 
   // data and script into the temp folder; output to a temp PNG beside the target
   const TempDir dir(png_path);
-  const std::string tmp_png = target.string() + ".tmp." + std::to_string(::getpid()) + "." +
-                              std::to_string(g_plot_counter++) + ".png";
+  std::string tmp_png;
+  try {
+    tmp_png = make_temp_beside(target.string(), TempKind::kFile);   // exclusive, unpredictable
+  } catch (const InputError& e) {
+    throw std::runtime_error(e.what());
+  }
   auto write = [&](const std::string& name, const std::string& content) {
     std::ofstream out(dir.path() / name, std::ios::binary);
     out << content;
@@ -168,7 +188,9 @@ void run_gnuplot(const std::string& png_path, const GnuplotJob& job) {
   const int rc = std::system(command.c_str());
   std::error_code ec;
   const bool exited_ok = rc != -1 && WIFEXITED(rc) && WEXITSTATUS(rc) == 0;
-  const bool wrote_png = fs::is_regular_file(tmp_png, ec) && fs::file_size(tmp_png, ec) > 0;
+  // gnuplot exits 0 also when cairo could not write the whole image (a full disk): a PNG
+  // is complete only with its signature and its closing IEND chunk
+  const bool wrote_png = png_is_complete(tmp_png);
   if (!exited_ok || !wrote_png) {
     fs::remove(tmp_png, ec);
     std::string why = first_error_line(read_text(dir.path() / "gnuplot.err"));
@@ -176,7 +198,7 @@ void run_gnuplot(const std::string& png_path, const GnuplotJob& job) {
       why = rc == -1             ? std::string("cannot start a shell")
             : !WIFEXITED(rc)     ? "killed by signal " + std::to_string(WTERMSIG(rc))
             : WEXITSTATUS(rc) != 0 ? "exit status " + std::to_string(WEXITSTATUS(rc))
-                                   : std::string("no image written");
+                                   : std::string("the image was not written whole (disk full?)");
     }
     throw std::runtime_error(png_path + ": gnuplot failed: " + why);
   }

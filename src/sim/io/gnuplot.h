@@ -1,8 +1,9 @@
 // gnuplot.h: draws a PNG with gnuplot (pngcairo terminal), driven from the program: the
 // job's data files and script go to a private temp folder
-// (<temp_directory_path>/pamsim_plot_<pid>_<n>), gnuplot writes <png>.tmp.<pid>.<n>.png,
-// which is renamed into place, so a failed plot leaves no partial file; n is a process-wide
-// counter, so plots may be drawn from many threads. What plot.h's figures are drawn with.
+// (<temp_directory_path>/pamsim_plot_<pid>_<n>), gnuplot writes <png>.tmp.XXXXXX (made
+// exclusively), which is renamed into place once gnuplot exited 0 and the PNG is whole (its
+// IEND chunk: gnuplot exits 0 on a full disk), so a failed plot leaves no partial file; n is
+// a process-wide counter, so plots may be drawn from many threads. What plot.h's figures are drawn with.
 #pragma once
 
 #include <string>

@@ -10,8 +10,8 @@ struct sqlite3;
 namespace pamsim {
 
 enum class DbAccess {
-  kRead,    // export, report: nothing is written
-  kWrite,   // --resume: trials will be stored
+  kRead,   // export, report: nothing is written
+  kWrite,  // --resume: trials will be stored
 };
 
 // Opens the existing database `path` (`what` names it in messages: "sweep database").

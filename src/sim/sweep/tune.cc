@@ -36,6 +36,7 @@
 #include "sim/io/gnuplot.h"
 #include "sim/io/outputs.h"
 #include "sim/io/scenario_file.h"
+#include "sim/io/staged_outputs.h"
 #include "sim/io/temp_path.h"
 #include "sim/sweep/report.h"
 #include "sim/sweep/sqlite_file.h"
@@ -901,9 +902,8 @@ std::string tune_evaluations_csv(const TuneDefinition& def,
 }
 
 void write_tune_outputs(const TuneDefinition& def, const std::vector<TuneEvaluation>& history,
-                        const std::string& out_dir) {
+                        const StagedOutputs& out) {
   if (history.empty()) throw InputError("no evaluation stored yet: nothing to report");
-  make_directories(out_dir);
   const TuneEvaluation* best = best_evaluation(history);
 
   // convergence: every evaluation's first objective, and the best feasible so far
@@ -931,7 +931,7 @@ void write_tune_outputs(const TuneDefinition& def, const std::vector<TuneEvaluat
                  "'#2471a3' title 'feasible', 'all.dat' using 1:($3 == 0 ? $2 : 1/0) with points "
                  "pt 6 ps 0.6 lc rgb '#999999' title 'breaks a constraint', 'best.dat' using 1:2 "
                  "with steps lw 2 lc rgb '#c0392b' title 'best feasible so far'\n";
-    run_gnuplot((fs::path(out_dir) / "convergence.png").string(), job);
+    run_gnuplot(out.path("convergence.png"), job);
   }
   if (def.objectives.size() > 1) {
     const std::vector<const TuneEvaluation*> front = pareto_front(history);
@@ -961,12 +961,12 @@ void write_tune_outputs(const TuneDefinition& def, const std::vector<TuneEvaluat
                  gp_quote(def.objectives[1].metric) +
                  "\nplot 'all.dat' with points pt 6 lc rgb '#999999' title 'evaluated', "
                  "'front.dat' with linespoints pt 7 lc rgb '#c0392b' title 'non-dominated'\n";
-    run_gnuplot((fs::path(out_dir) / "pareto.png").string(), job);
-    write_file_atomically((fs::path(out_dir) / "pareto.csv").string(), csv);
+    run_gnuplot(out.path("pareto.png"), job);
+    write_file_atomically(out.path("pareto.csv"), csv);
   }
-  write_file_atomically((fs::path(out_dir) / "evaluations.csv").string(),
+  write_file_atomically(out.path("evaluations.csv"),
                         tune_evaluations_csv(def, history));
-  // the best setting as a ready scenario (paths relative to out_dir)
+  // the best setting as a ready scenario (paths relative to the output folder)
   std::vector<std::string> overrides = parameter_overrides(def, best->values);
   std::ostringstream header;
   header << "# pamsim tune: evaluation " << best->index << " of " << def.file << " ("
@@ -974,8 +974,8 @@ void write_tune_outputs(const TuneDefinition& def, const std::vector<TuneEvaluat
          << "), " << def.objectives[0].metric << " mean " << format_value(best->objectives[0])
          << "\n";
   write_file_atomically(
-      (fs::path(out_dir) / "best.toml").string(),
-      scenario_with_overrides_toml(def.base_text, def.base_path, overrides, out_dir, header.str()));
+      out.path("best.toml"),
+      scenario_with_overrides_toml(def.base_text, def.base_path, overrides, out.dir(), header.str()));
 }
 
 }  // namespace pamsim

@@ -40,6 +40,8 @@ struct sqlite3;
 
 namespace pamsim {
 
+class StagedOutputs;
+
 inline constexpr double kTunePenalty = 1000.0;
 
 struct TuneParameter {
@@ -176,11 +178,17 @@ std::vector<HeldOutCheck> check_held_out(const TuneDefinition& def,
                                          const std::vector<TuneReference>& settings, int threads,
                                          bool tuning_seeds = false);
 
-// DIR/best.toml (the base scenario with the best values, ready for `pamsim run`),
-// DIR/evaluations.csv, DIR/convergence.png, and with several objectives DIR/pareto.csv and
-// DIR/pareto.png. Each file whole or not at all.
+// The files a tuning writes beside its database (write_tune_outputs, and pamsim tune's
+// tuning_seeds.csv and held_out.csv): the set an output folder replaces as a whole.
+inline const std::vector<std::string> kTuneOutputs = {
+    "best.toml", "evaluations.csv", "convergence.png", "pareto.csv",
+    "pareto.png", "tuning_seeds.csv", "held_out.csv"};
+
+// best.toml (the base scenario with the best values, ready for `pamsim run` from the output
+// folder), evaluations.csv, convergence.png, and with several objectives pareto.csv and
+// pareto.png, into the staging folder of `out` (published by the caller with the rest).
 void write_tune_outputs(const TuneDefinition& def, const std::vector<TuneEvaluation>& history,
-                        const std::string& out_dir);
+                        const StagedOutputs& out);
 std::string tune_evaluations_csv(const TuneDefinition& def,
                                  const std::vector<TuneEvaluation>& history);
 

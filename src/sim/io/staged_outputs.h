@@ -1,0 +1,52 @@
+// staged_outputs.h: a command's output files built in a temp folder beside their destination
+// folder and moved into it only once every one of them is written. A failure half way (a plot
+// gnuplot cannot draw, a full disk, a diverged trial that stops the command, Ctrl-C) leaves
+// the destination as it was: no mix of old and new files, no half-filled trial folders, and no
+// empty folder made for outputs that never came.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sim/io/temp_path.h"
+
+namespace pamsim {
+
+class StagedOutputs {
+ public:
+  // `dir`: the destination (it and any missing parents are made here, and removed again if
+  // nothing is published into them). `owned`: fnmatch(3) patterns of the entries a run of
+  // the same command writes in `dir`; those the new set lacks are removed on publish, so the
+  // folder never holds one run's files beside another's (trial_0009/ of a 10-trial run
+  // beside a 5-trial run's summary). Throws InputError naming `dir` if it cannot be made.
+  StagedOutputs(std::string dir, std::vector<std::string> owned);
+  ~StagedOutputs();  // unpublished: removes the staging folder and the folders it made
+  StagedOutputs(const StagedOutputs&) = delete;
+  StagedOutputs& operator=(const StagedOutputs&) = delete;
+
+  const std::string& dir() const { return dir_; }
+  // The staging folder (write the outputs there), and its path for `name`.
+  const std::string& staging() const { return staging_->path(); }
+  std::string path(const std::string& name) const;
+
+  // Runs `write_outputs` (which writes into the staging folder); an error it throws
+  // (InputError or std::runtime_error) is thrown again naming the output in `dir`, where the
+  // user looks for it, not the staging folder.
+  void write(const std::function<void()>& write_outputs) const;
+
+  // Moves every staged entry into `dir`, replacing a same-named one, and removes the owned
+  // entries the new set lacks. A rename that fails puts the old entries back and throws
+  // InputError naming the entry.
+  void publish();
+
+ private:
+  std::string dir_;
+  std::vector<std::string> owned_;
+  std::string made_from_;  // the topmost folder this made ("" if `dir` existed)
+  std::unique_ptr<TempPath> staging_;
+  bool published_ = false;
+};
+
+}  // namespace pamsim
