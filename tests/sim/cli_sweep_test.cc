@@ -412,6 +412,16 @@ TEST(CliSweepTest, ReadOnlyDatabaseIsReadAndItsResumeRefusedBeforeRunning) {
   fs::permissions(ro, fs::perms::owner_all);   // so that the folder can be cleaned up
 }
 
+// The folders made for a database that then cannot be made are removed again (here a --db
+// naming a folder: its folder is made, the database is refused); they used to stay, empty.
+TEST(CliSweepTest, ADatabaseThatCannotBeMadeLeavesNoFolder) {
+  const fs::path dir = fresh_dir("sweep_no_folder");
+  const auto r = run_pamsim("sweep scenarios/sweep_smoke.toml --db " + (dir / "new/deep/").string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
 TEST(CliSweepTest, ExportAndReportRefuseWhatIsNotASweepDatabase) {
   const fs::path dir = fresh_dir("sweep_not_db");
   write_text(dir / "junk.db", "not a database at all, just some text that is long enough\n");

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
@@ -43,12 +44,13 @@ void sweep(const SweepOptions& opt) {
 
   std::error_code ec;
   const bool exists = std::filesystem::exists(db_path, ec);
-  if (!exists) {
-    const auto parent = std::filesystem::path(db_path).parent_path();
-    if (!parent.empty()) make_directories(parent.string());
-  }
+  // the database's folder, removed again if the database cannot be made there
+  const std::string parent = std::filesystem::path(db_path).parent_path().string();
+  std::unique_ptr<FolderGuard> folder;
+  if (!exists && !parent.empty()) folder = std::make_unique<FolderGuard>(parent);
   ResultsDb db = opt.resume && exists ? ResultsDb::open_to_resume(db_path, def)
                                       : ResultsDb::create(db_path, def);
+  if (folder) folder->keep();
   const std::string made_by = db.meta("pamsim_version");
   if (made_by != PAMSIM_VERSION) {
     std::cerr << "pamsim sweep: warning: " << db_path << " was started by pamsim " << made_by

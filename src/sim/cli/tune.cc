@@ -64,11 +64,12 @@ void tune(const TuneOptions& opt) {
   std::error_code ec;
   const bool exists = std::filesystem::exists(db_path, ec);
   if (opt.resume && !exists) throw InputError(db_path + ": --resume, but there is no database");
-  if (!exists) {
-    const auto parent = std::filesystem::path(db_path).parent_path();
-    if (!parent.empty()) make_directories(parent.string());
-  }
+  // the database's folder, removed again if the database cannot be made there
+  const std::string parent = std::filesystem::path(db_path).parent_path().string();
+  std::unique_ptr<FolderGuard> folder;
+  if (!exists && !parent.empty()) folder = std::make_unique<FolderGuard>(parent);
   TuneDb db = opt.resume ? TuneDb::open_to_resume(db_path, def) : TuneDb::create(db_path, def);
+  if (folder) folder->keep();
 
   const std::int64_t total = static_cast<std::int64_t>(def.population) * (def.generations + 1);
   std::cerr << "pamsim tune: " << (def.algorithm == TuneAlgorithm::kCmaes ? "CMA-ES" : "NSGA-II")

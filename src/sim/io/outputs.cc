@@ -18,11 +18,12 @@ nlohmann::json number_or_null(double v) {
 }
 
 nlohmann::json scenario_json(const Scenario& sc) {
-  nlohmann::json j = {{"file", sc.path},
-                      {"valve_model", valve_model_name(sc.valve_model)},
-                      {"controller", sc.controller == ControllerKind::kNone ? "none" : "stretch_reflex"},
-                      {"timestep_s", sc.timestep_s},
-                      {"control_hz", sc.control_hz}};
+  nlohmann::json j = {
+      {"file", sc.path},
+      {"valve_model", valve_model_name(sc.valve_model)},
+      {"controller", sc.controller == ControllerKind::kNone ? "none" : "stretch_reflex"},
+      {"timestep_s", sc.timestep_s},
+      {"control_hz", sc.control_hz}};
   if (sc.controller == ControllerKind::kStretchReflex) {
     const ReflexConfig& r = sc.reflex.reflex;
     j["reflex_enabled"] = r.enabled;
@@ -31,7 +32,8 @@ nlohmann::json scenario_json(const Scenario& sc) {
     j["k_MPa_s_per_mm"] = r.k_MPa_s_per_mm;
   }
   if (const EventSpec* release = sc.event("release")) {
-    if (release->when.kind == ConditionKind::kTime) j["drop_time_s"] = number_or_null(release->when.at_s);
+    if (release->when.kind == ConditionKind::kTime)
+      j["drop_time_s"] = number_or_null(release->when.at_s);
   }
   return j;
 }
@@ -73,8 +75,7 @@ nlohmann::json summary_to_json(const TrialSummary& s, const Scenario& sc) {
   return j;
 }
 
-nlohmann::json aggregate_summaries(const std::vector<TrialSummary>& summaries,
-                                   const Scenario& sc) {
+nlohmann::json aggregate_summaries(const std::vector<TrialSummary>& summaries, const Scenario& sc) {
   nlohmann::json j;
   j["trials"] = summaries.size();
   std::map<std::string, int> status_counts;
@@ -102,9 +103,9 @@ nlohmann::json aggregate_summaries(const std::vector<TrialSummary>& summaries,
         ++n;
       }
       metrics[names[k].name] = {{"mean", n ? nlohmann::json(sum / n) : nlohmann::json(nullptr)},
-                                 {"min", n ? nlohmann::json(lo) : nlohmann::json(nullptr)},
-                                 {"max", n ? nlohmann::json(hi) : nlohmann::json(nullptr)},
-                                 {"count", n}};
+                                {"min", n ? nlohmann::json(lo) : nlohmann::json(nullptr)},
+                                {"max", n ? nlohmann::json(hi) : nlohmann::json(nullptr)},
+                                {"count", n}};
     }
   }
   j["metrics"] = metrics;
@@ -118,6 +119,28 @@ void make_directories(const std::string& dir) {
   if (ec || !std::filesystem::is_directory(dir)) {
     throw InputError(dir + ": cannot create output folder (" + ec.message() + ")");
   }
+}
+
+FolderGuard::FolderGuard(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::path missing;
+  for (std::filesystem::path p = dir; !p.empty() && !std::filesystem::exists(p, ec);
+       p = p.parent_path()) {
+    missing = p;
+    if (p == p.parent_path()) break;
+  }
+  made_ = missing.string();
+  try {
+    make_directories(dir);
+  } catch (...) {
+    if (!made_.empty()) std::filesystem::remove_all(made_, ec);
+    throw;
+  }
+}
+
+FolderGuard::~FolderGuard() {
+  std::error_code ignored;
+  if (!made_.empty()) std::filesystem::remove_all(made_, ignored);
 }
 
 void write_trial_outputs(const std::string& dir, const TrialResult& result, const Scenario& sc) {

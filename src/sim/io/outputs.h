@@ -3,10 +3,9 @@
 // summary of repeated trials (mean, min, max of every metric). Written atomically.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "sim/core/scenario.h"
 #include "sim/core/trial.h"
@@ -21,6 +20,21 @@ nlohmann::json aggregate_summaries(const std::vector<TrialSummary>& summaries,
 
 // Creates `dir` (and parents) or throws InputError naming it.
 void make_directories(const std::string& dir);
+
+// Makes `dir` and any missing parents (make_directories), and removes the ones it made
+// again when destroyed unless kept: a command that fails before its first output leaves no
+// empty folder behind.
+class FolderGuard {
+ public:
+  explicit FolderGuard(const std::string& dir);
+  ~FolderGuard();
+  FolderGuard(const FolderGuard&) = delete;
+  FolderGuard& operator=(const FolderGuard&) = delete;
+  void keep() { made_.clear(); }  // an output is in place: the folders stay
+
+ private:
+  std::string made_;  // the outermost folder made here ("" if none, or kept)
+};
 
 // DIR/trajectory.csv and DIR/summary.json.
 void write_trial_outputs(const std::string& dir, const TrialResult& result,

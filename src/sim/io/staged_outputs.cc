@@ -16,17 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The outermost missing folder on the way to `dir` ("" if `dir` exists).
-std::string outermost_missing(const fs::path& dir) {
-  std::error_code ec;
-  fs::path missing;
-  for (fs::path p = dir; !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
-    missing = p;
-    if (p == p.parent_path()) break;
-  }
-  return missing.string();
-}
-
 }  // namespace
 
 StagedOutputs::StagedOutputs(std::string dir, std::vector<std::string> owned)
@@ -37,25 +26,12 @@ StagedOutputs::StagedOutputs(std::string dir, std::vector<std::string> owned)
   if (fs::exists(dir_, ec) && !fs::is_directory(dir_, ec)) {
     throw InputError(dir_ + ": cannot create output folder (a file of that name exists)");
   }
-  made_from_ = outermost_missing(dir_);
-  fs::create_directories(dir_, ec);
-  if (ec || !fs::is_directory(dir_)) {
-    const std::string why = ec.message();
-    if (!made_from_.empty()) fs::remove_all(made_from_, ec);
-    throw InputError(dir_ + ": cannot create output folder (" + why + ")");
-  }
-  try {
-    staging_ = std::make_unique<TempPath>(dir_, TempKind::kFolder);
-  } catch (const InputError&) {
-    if (!made_from_.empty()) fs::remove_all(made_from_, ec);
-    throw;
-  }
+  folder_ = std::make_unique<FolderGuard>(dir_);
+  staging_ = std::make_unique<TempPath>(dir_, TempKind::kFolder);
 }
 
 StagedOutputs::~StagedOutputs() {
-  staging_.reset();  // removes the staging folder unless published
-  std::error_code ignored;
-  if (!published_ && !made_from_.empty()) fs::remove_all(made_from_, ignored);
+  staging_.reset();  // removes the staging folder unless published, before the folders made
 }
 
 std::string StagedOutputs::path(const std::string& name) const {
@@ -132,6 +108,7 @@ void StagedOutputs::publish() {
     placed.push_back(name);
   }
   published_ = true;
+  folder_->keep();
   staging_.reset();  // removes the staging folder with the replaced entries
 }
 

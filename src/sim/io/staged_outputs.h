@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/io/outputs.h"
 #include "sim/io/temp_path.h"
 
 namespace pamsim {
@@ -44,7 +45,8 @@ class StagedOutputs {
  private:
   std::string dir_;
   std::vector<std::string> owned_;
-  std::string made_from_;  // the topmost folder this made ("" if `dir` existed)
+  std::unique_ptr<FolderGuard> folder_;  // `dir` and the parents made for it (before
+                                         // staging_: destroyed after it)
   std::unique_ptr<TempPath> staging_;
   bool published_ = false;
 };
