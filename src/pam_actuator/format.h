@@ -1,4 +1,4 @@
-// format.h: numbers as pamsim writes them: in messages (ten significant digits, no
+// format.h: numbers (and messages) as pamsim writes them: in messages (ten significant digits, no
 // trailing noise: "0.7", "1e-09", "nan"), and in files, where the text must read back to
 // the same double (CSV cells; TOML values, kept recognisable as floats).
 #pragma once
@@ -13,5 +13,11 @@ std::string format_value(double v);
 std::string format_shortest(double v);
 // format_shortest with ".0" appended to an integer-looking result, so TOML reads a float.
 std::string format_number(double v);
+
+// A message as one line a terminal shows as it is: a value echoed from the input may be
+// megabytes long (a word over 160 bytes is cut to its two ends and the count between, the
+// whole line to 2000 bytes) or hold control bytes (NUL, newline, escape sequences), written
+// as \xNN. Idempotent, so a message wrapped again keeps its form. InputError applies it.
+std::string printable_message(const std::string& message);
 
 }  // namespace pamsim

@@ -6,11 +6,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "pam_actuator/format.h"
+
 namespace pamsim {
 
 class InputError : public std::runtime_error {
  public:
-  explicit InputError(const std::string& message) : std::runtime_error(message) {}
+  // (kept printable: an echoed value may hold a NUL, which what() would stop at)
+  explicit InputError(const std::string& message)
+      : std::runtime_error(printable_message(message)) {}
 };
 
 }  // namespace pamsim

@@ -45,4 +45,33 @@ TEST(CliUsageTest, UsageErrorsExitTwoInOneLineWithTheCommandsThereAre) {
   EXPECT_EQ(run_pamsim("--version").exit_code, 0);
 }
 
+// Values echoed in messages are printed as read but shortened and escaped (a NUL used to end
+// the message, a multi-megabyte value was printed whole), and a missing file names the key
+// that points at it (issue 14 item 11).
+TEST(CliUsageTest, MessagesEscapeAndShortenEchoedValuesAndNameTheKeyOfAMissingFile) {
+  const auto dir = pamsim_test::fresh_dir("usage_echo");
+  const std::string base = "base = \"" + std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml\"\n";
+  pamsim_test::write_text(dir / "nul.toml", base + "design = \"ab\\u0000cd\\u001b[31m\"\n");
+  const auto nul = run_pamsim("sweep " + (dir / "nul.toml").string());
+  EXPECT_EQ(nul.exit_code, 2);
+  EXPECT_EQ(line_count(nul.err), 1) << nul.err;
+  EXPECT_NE(nul.err.find("got \"ab\\x00cd\\x1B[31m\""), std::string::npos) << nul.err;
+
+  pamsim_test::write_text(dir / "big.toml", base + "design = \"" + std::string(3 << 20, 'x') + "\"\n");
+  const auto big = run_pamsim("sweep " + (dir / "big.toml").string());
+  EXPECT_EQ(big.exit_code, 2);
+  EXPECT_EQ(line_count(big.err), 1);
+  EXPECT_LT(big.err.size(), 400u);
+  // the quoted value is cut to 64 bytes at each end
+  EXPECT_NE(big.err.find("...(" + std::to_string((3 << 20) + 2 - 128) + " bytes)..."),
+            std::string::npos) << big.err;
+
+  const auto model = run_pamsim(
+      "run scenarios/drop_mass.toml --set model.file=\\\"/nonexistent.xml\\\" --out " +
+      (dir / "out").string());
+  EXPECT_EQ(model.exit_code, 2);
+  EXPECT_EQ(model.err, "pamsim: scenarios/drop_mass.toml: --set model.file: /nonexistent.xml: "
+                       "cannot open file (No such file or directory)\n");
+}
+
 }  // namespace

@@ -38,8 +38,9 @@ TEST(MujocoUtilTest, AModelThatFailsToLoadNamesTheFile) {
     pamsim::load_mjcf((dir / "bad.xml").string());
     FAIL() << "expected an InputError";
   } catch (const pamsim::InputError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind((dir / "bad.xml").string() + ": model failed to load: ", 0),
-              0u) << e.what();
+    EXPECT_EQ(
+        std::string(e.what()).rfind((dir / "bad.xml").string() + ": model failed to load: ", 0), 0u)
+        << e.what();
     EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "one line";
   }
   EXPECT_FALSE(fs::exists(dir / "MUJOCO_LOG.TXT"));

@@ -1,14 +1,15 @@
 // main.cc: the `pamsim` command line. Subcommands live in cmd_*.cc (see commands.h);
 // here only the dispatch and the one place that turns errors into an exit code.
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
+#include <cstdio>
 #include <exception>
 #include <functional>
+#include <iostream>
 #include <string>
 #include <vector>
-#include <iostream>
 
+#include "pam_actuator/format.h"
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
 
@@ -45,7 +46,8 @@ std::string subcommand_hint(const CLI::App& app, int argc, char** argv) {
     at = sub;
     ++next;
   }
-  const std::vector<const CLI::App*> subs = at->get_subcommands(std::function<bool(const CLI::App*)>{});
+  const std::vector<const CLI::App*> subs =
+      at->get_subcommands(std::function<bool(const CLI::App*)>{});
   if (subs.empty()) return "";
   const bool missing = next >= argc;
   const bool unknown = !missing && argv[next][0] != '-';
@@ -89,23 +91,24 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
-  } catch (const CLI::Success& e) {   // --help, --version
+  } catch (const CLI::Success& e) {  // --help, --version
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // one line, like every other input error (CLI11's own exit adds a second one), exit 2
     // (CLI11's own codes, 104-109, are not pamsim's); a missing or unknown subcommand is
     // answered with the ones there are, and the nearest name
-    std::cerr << "pamsim: " << e.what() << subcommand_hint(app, argc, argv) << "\n";
+    std::cerr << "pamsim: "
+              << pamsim::printable_message(e.what() + subcommand_hint(app, argc, argv)) << "\n";
     return 2;
   } catch (const pamsim::CommandExit& e) {
     return e.code;
   } catch (const pamsim::SimulationFailed&) {
     return 4;
   } catch (const pamsim::InputError& e) {
-    std::cerr << "pamsim: " << e.what() << "\n";
+    std::cerr << "pamsim: " << pamsim::printable_message(e.what()) << "\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "pamsim: error: " << e.what() << "\n";
+    std::cerr << "pamsim: error: " << pamsim::printable_message(e.what()) << "\n";
     return 1;
   }
   return 0;

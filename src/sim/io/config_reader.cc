@@ -79,9 +79,12 @@ const toml::node* ConfigReader::find(const std::string& key) const {
 
 bool ConfigReader::has(const std::string& key) const { return find(key) != nullptr; }
 
+std::string ConfigReader::where(const std::string& key) const {
+  return overridden_.count(key) ? name_ + ": --set " + key : name_ + ": " + key;
+}
+
 void ConfigReader::fail(const std::string& key, const std::string& problem) const {
-  const std::string where = overridden_.count(key) ? name_ + ": --set " + key : name_ + ": " + key;
-  throw InputError(where + " " + problem);
+  throw InputError(where(key) + " " + problem);
 }
 
 double ConfigReader::get_double(const std::string& key, double fallback) {
@@ -131,6 +134,17 @@ std::string ConfigReader::require_string(const std::string& key) {
 std::string ConfigReader::directory() const {
   const auto slash = name_.find_last_of('/');
   return slash == std::string::npos ? "." : name_.substr(0, slash);
+}
+
+std::string ConfigReader::get_input_path(const std::string& key, const std::string& fallback) {
+  const std::string path = get_path(key, fallback);
+  if (path.empty()) return path;
+  try {
+    require_input_file(path);
+  } catch (const InputError& e) {
+    throw InputError(where(key) + ": " + e.what());
+  }
+  return path;
 }
 
 std::string ConfigReader::get_path(const std::string& key, const std::string& fallback) {

@@ -35,6 +35,10 @@ class ConfigReader {
   std::string require_string(const std::string& key);
   // A path value, resolved relative to the folder of the file that holds the document.
   std::string get_path(const std::string& key, const std::string& fallback);
+  // A path to a file to read (get_path), which must exist as a regular file of bounded size
+  // (require_input_file); otherwise InputError "<file>: <key>: <path>: <problem>", so that the
+  // message names the key that points at the file.
+  std::string get_input_path(const std::string& key, const std::string& fallback);
   // A list of strings or of finite numbers (a single value is not a list).
   std::vector<std::string> get_string_list(const std::string& key,
                                            const std::vector<std::string>& fallback);
@@ -58,6 +62,8 @@ class ConfigReader {
 
   // "<file>: <key> <problem>" (with "--set" named when the key came from an override).
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
+  // "<file>: <key>" or "<file>: --set <key>": where a key's value came from, for messages.
+  std::string where(const std::string& key) const;
   const std::string& name() const { return name_; }
   std::string directory() const;
 

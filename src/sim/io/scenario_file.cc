@@ -44,11 +44,11 @@ void read_time(ConfigReader& in, Scenario* sc) {
 }
 
 void read_model(ConfigReader& in, Scenario* sc) {
-  sc->model_file = in.get_path("model.file", "");
+  sc->model_file = in.get_input_path("model.file", "");
   in.check(!sc->model_file.empty(), "model.file", "is required");
   sc->joint = in.get_string("model.joint", "");
-  sc->calibration_file = in.get_path("model.calibration", "");
-  sc->pneumatics_file = in.get_path("model.pneumatics", "");
+  sc->calibration_file = in.get_input_path("model.calibration", "");
+  sc->pneumatics_file = in.get_input_path("model.pneumatics", "");
   in.check(!sc->pneumatics_file.empty(), "model.pneumatics", "is required");
   sc->pneumatics = load_pneumatic_params(sc->pneumatics_file);
   const std::string valve = in.get_string("valve.model", valve_model_name(sc->valve_model));

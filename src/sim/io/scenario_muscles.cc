@@ -78,7 +78,7 @@ PressureSchedule read_command(ConfigReader& in, const std::string& key) {
       break;
     }
     case ScheduleKind::kTable: {
-      const std::string file = in.get_path(key + ".file", "");
+      const std::string file = in.get_input_path(key + ".file", "");
       in.check(!file.empty(), key + ".file", "is required for kind \"table\"");
       s = in_file(in, [&] {
         try {
@@ -116,13 +116,13 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
   // parameter file (and the legacy label of the shorthand's arm)
   const std::string params_key = long_or_short(in, m.key + ".params", "model." + name + "_params");
   in.check(!params_key.empty(), m.key + ".params", "is required");
-  m.params_file = in.get_path(params_key, "");
+  m.params_file = in.get_input_path(params_key, "");
   m.pam = in_file(in, [&] { return load_pam_params(m.params_file); });
   in.check(m.pam.strain_gauge.has_value(), params_key,
            "(" + m.params_file + ") needs a [strain_gauge] table (Eq. (8)): the sensing reads it");
   // the physical plant, when it is not the estimator's law
   if (in.has(m.key + ".plant")) {
-    m.plant_file = in.get_path(m.key + ".plant", "");
+    m.plant_file = in.get_input_path(m.key + ".plant", "");
     m.plant = in_file(in, [&] {
       try {
         return load_plant_params(m.plant_file).avbdl;
