@@ -4,7 +4,17 @@ BUILD_DIR ?= build
 JOBS ?= 2
 PAMSIM := $(BUILD_DIR)/src/sim/pamsim
 
-.PHONY: deps configure build demo test bench clean
+FUZZ_SECONDS ?= 60
+# sanitizer and fuzz builds: -O1 with line tables (readable reports, half the -O2 build time)
+SANITIZE_TYPE := -DCMAKE_BUILD_TYPE=Sanitize -DCMAKE_CXX_FLAGS_SANITIZE="-O1 -g1" \
+                 -DCMAKE_C_FLAGS_SANITIZE="-O1 -g1" -DPAMSIM_BUILD_BENCHMARKS=OFF
+ASAN_ENV := ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 \
+            LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitize/lsan.supp:print_suppressions=0 \
+            UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+TSAN_ENV := TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
+TSAN_TESTS := sweep_test cli_sweep_test tune_test trial_test
+
+.PHONY: deps configure build demo test bench clean sanitize fuzz
 
 deps:
 	bash scripts/install-deps.sh
@@ -21,8 +31,32 @@ demo: build
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
+# The whole suite under AddressSanitizer + UndefinedBehaviorSanitizer, built with clang in
+# build-asan (which also holds the fuzz harnesses, so `make fuzz` builds nothing more), then
+# the tests that run trials on threads (sweeps, tuning, parallel trials) under
+# ThreadSanitizer in build-tsan. Any report fails the test that caused it.
+ASAN_CONFIG := $(SANITIZE_TYPE) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+               -DPAMSIM_SANITIZE=address,undefined -DPAMSIM_FUZZ=ON
+FUZZ_TARGETS := fuzz_scenario fuzz_override fuzz_sweep fuzz_tensile_csv
+
+sanitize: deps
+	cmake -S . -B $(BUILD_DIR)-asan $(ASAN_CONFIG)
+	cmake --build $(BUILD_DIR)-asan -j $(JOBS)
+	cd $(BUILD_DIR)-asan && $(ASAN_ENV) ctest --output-on-failure -j $(JOBS)
+	cmake -S . -B $(BUILD_DIR)-tsan $(SANITIZE_TYPE) -DPAMSIM_SANITIZE=thread
+	cmake --build $(BUILD_DIR)-tsan -j $(JOBS) --target pamsim $(TSAN_TESTS)
+	cd $(BUILD_DIR)-tsan && $(TSAN_ENV) ctest --output-on-failure -j $(JOBS) \
+	  -R '^(SweepTest|CliSweepTest|TuneTest|TrialTest)\.'
+
+# libFuzzer (clang, ASan + UBSan) on the scenario, override, sweep and tensile CSV readers,
+# FUZZ_SECONDS each from tests/fuzz/corpus (scripts/fuzz.sh).
+fuzz: deps
+	cmake -S . -B $(BUILD_DIR)-asan $(ASAN_CONFIG)
+	cmake --build $(BUILD_DIR)-asan -j $(JOBS) --target $(FUZZ_TARGETS)
+	bash scripts/fuzz.sh $(BUILD_DIR)-asan $(FUZZ_SECONDS)
+
 bench: build
 	$(BUILD_DIR)/bench/pamsim_bench
 
 clean:
-	rm -rf $(BUILD_DIR)
+	rm -rf $(BUILD_DIR) $(BUILD_DIR)-asan $(BUILD_DIR)-tsan

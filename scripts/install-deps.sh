@@ -18,6 +18,7 @@ packages=(
   gnuplot-nox                                # plots (pngcairo terminal)
   python3                                    # scripts/findings.py and the demo's summary line
   libgtest-dev libgmock-dev libbenchmark-dev
+  clang libclang-rt-14-dev                   # make fuzz: libFuzzer and clang's sanitizer runtimes
 )
 
 missing=()

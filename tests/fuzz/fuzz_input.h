@@ -1,0 +1,28 @@
+// fuzz_input.h: what the libFuzzer harnesses share: the input as a file for readers that
+// take a path (one per process, rewritten for each input), and the rule every reader must
+// keep: a bad input is an InputError (one line) and nothing else escapes; a crash, a
+// sanitizer report, a hang or another exception is a finding.
+#pragma once
+
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <fstream>
+#include <string>
+
+namespace pamsim_fuzz {
+
+// Writes the input to `<tmp>/pamsim_fuzz_<pid><suffix>` and returns that path.
+inline std::string input_file(const std::uint8_t* data, std::size_t size, const char* suffix) {
+  const std::string path = "/tmp/pamsim_fuzz_" + std::to_string(::getpid()) + suffix;
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  return path;
+}
+
+inline std::string input_text(const std::uint8_t* data, std::size_t size) {
+  return std::string(reinterpret_cast<const char*>(data), size);
+}
+
+}  // namespace pamsim_fuzz
