@@ -29,9 +29,14 @@ std::string format_number(double v) {
 
 namespace {
 
-// A cut of `s` at or before `at` that does not split a UTF-8 character.
-std::size_t utf8_boundary(const std::string& s, std::size_t at) {
+// A cut of `s` at or before `at` that splits neither a UTF-8 character nor a \xNN escape.
+std::size_t safe_cut(const std::string& s, std::size_t at) {
   while (at > 0 && at < s.size() && (static_cast<unsigned char>(s[at]) & 0xC0) == 0x80) --at;
+  for (std::size_t back = 1; back <= 3 && back <= at; ++back) {
+    if (s[at - back] == '\\' && at - back + 1 < s.size() && s[at - back + 1] == 'x') {
+      return at - back;
+    }
+  }
   return at;
 }
 
@@ -39,35 +44,35 @@ std::size_t utf8_boundary(const std::string& s, std::size_t at) {
 std::string shortened(const std::string& s, std::size_t max) {
   if (s.size() <= max) return s;
   const std::size_t keep = max / 2 - 16;
-  const std::size_t head = utf8_boundary(s, keep);
-  const std::size_t tail = utf8_boundary(s, s.size() - keep);
+  const std::size_t head = safe_cut(s, keep);
+  const std::size_t tail = safe_cut(s, s.size() - keep);
   return s.substr(0, head) + "...(" + std::to_string(tail - head) + " bytes)..." + s.substr(tail);
 }
 
 }  // namespace
 
 std::string printable_message(const std::string& message) {
-  std::string words;
-  std::size_t start = 0;
-  while (start <= message.size()) {
-    std::size_t end = message.find(' ', start);
-    if (end == std::string::npos) end = message.size();
-    words += shortened(message.substr(start, end - start), 160);
-    if (end < message.size()) words += ' ';
-    start = end + 1;
-  }
-  std::string out;
-  for (const char c : shortened(words, 2000)) {
+  // escaped first (so that a cut cannot grow again), then cut word by word, then the line
+  std::string escaped;
+  for (const char c : message) {
     const auto byte = static_cast<unsigned char>(c);
     if (byte < 0x20 || byte == 0x7F) {
       char hex[8];
       std::snprintf(hex, sizeof(hex), "\\x%02X", byte);
-      out += hex;
+      escaped += hex;
     } else {
-      out += c;
+      escaped += c;
     }
   }
-  return out;
+  std::string words;
+  for (std::size_t start = 0; start <= escaped.size();) {
+    std::size_t end = escaped.find(' ', start);
+    if (end == std::string::npos) end = escaped.size();
+    words += shortened(escaped.substr(start, end - start), 512);
+    if (end < escaped.size()) words += ' ';
+    start = end + 1;
+  }
+  return shortened(words, 2000);
 }
 
 }  // namespace pamsim

@@ -15,9 +15,10 @@ std::string format_shortest(double v);
 std::string format_number(double v);
 
 // A message as one line a terminal shows as it is: a value echoed from the input may be
-// megabytes long (a word over 160 bytes is cut to its two ends and the count between, the
-// whole line to 2000 bytes) or hold control bytes (NUL, newline, escape sequences), written
-// as \xNN. Idempotent, so a message wrapped again keeps its form. InputError applies it.
+// megabytes long (a word over 512 bytes, longer than any sensible path, is cut to its two
+// ends and the count between, the whole line to 2000 bytes) or hold control bytes (NUL,
+// newline, escape sequences), written as \xNN before any cut. Idempotent, so a message
+// wrapped again keeps its form. InputError applies it.
 std::string printable_message(const std::string& message);
 
 }  // namespace pamsim

@@ -4,6 +4,8 @@
 #include <toml++/toml.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -16,24 +18,30 @@
 
 namespace {
 
-// True if the document holds an integer above `limit` anywhere. Validating a sweep costs a
-// scenario load per point (a 10^6-point grid takes minutes, as it should); such inputs are
-// skipped so that a slow but correct validation is not reported as a hang. The size limits
+// The trials a sweep document asks for (points x seeds, at least the axes' levels), as a
+// double so it cannot wrap. Validating a sweep costs a scenario load per point (10^4 points
+// take seconds under ASan, 10^6 minutes, as they should); inputs over kMaxTrials are skipped
+// so that a slow but correct validation is not reported as a hang. The size checks
 // themselves are tested in sweep_test and cli_sweep_test.
-bool has_large_integer(const toml::node& node, std::int64_t limit) {
-  if (const auto* i = node.as_integer()) return i->get() > limit;
-  if (const auto* t = node.as_table()) {
-    for (const auto& [k, v] : *t) {
-      if (has_large_integer(v, limit)) return true;
+constexpr double kMaxTrials = 1000;
+
+double integer_or(const toml::node* n, double fallback) {
+  const auto* i = n ? n->as_integer() : nullptr;
+  return i ? std::fabs(static_cast<double>(i->get())) : fallback;
+}
+
+double trials_asked(const toml::table& doc) {
+  double points = integer_or(doc.get("samples"), 1);
+  if (const auto* axes = doc.get_as<toml::array>("axis")) {
+    for (const auto& a : *axes) {
+      const auto* t = a.as_table();
+      if (!t) continue;
+      const auto* values = t->get_as<toml::array>("values");
+      points *= std::max(
+          1.0, values ? static_cast<double>(values->size()) : integer_or(t->get("count"), 1));
     }
   }
-  if (const auto* a = node.as_array()) {
-    if (static_cast<std::int64_t>(a->size()) > limit) return true;
-    for (const auto& v : *a) {
-      if (has_large_integer(v, limit)) return true;
-    }
-  }
-  return false;
+  return points * std::max(1.0, integer_or(doc.get("seeds"), 1));
 }
 
 // A folder that looks like the source tree (scenarios/ with links to the shipped scenario
@@ -59,7 +67,7 @@ std::string sweep_path() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const std::string path = sweep_path();
   try {
-    if (has_large_integer(toml::parse(pamsim_fuzz::input_text(data, size)), 100)) return 0;
+    if (trials_asked(toml::parse(pamsim_fuzz::input_text(data, size))) > kMaxTrials) return 0;
   } catch (const toml::parse_error&) {  // the reader must say so too
   }
   {

@@ -48,7 +48,7 @@ void report_tune(const ReportOptions& opt) {
     out = std::filesystem::path(opt.db).parent_path().string();
     if (out.empty()) out = ".";
   }
-  StagedOutputs staged(out, kTuneOutputs);
+  StagedOutputs staged(out, kTuneReportOutputs);
   staged.write([&] { write_tune_outputs(def, history, staged); });
   staged.publish();
   const TuneEvaluation* best = best_evaluation(history);

@@ -44,6 +44,10 @@ void sweep(const SweepOptions& opt) {
 
   std::error_code ec;
   const bool exists = std::filesystem::exists(db_path, ec);
+  if (db_path.back() == '/' || std::filesystem::is_directory(db_path, ec)) {
+    throw InputError("--db " + db_path + ": is a folder; name the database file, e.g. " +
+                     (std::filesystem::path(db_path) / "sweep.db").lexically_normal().string());
+  }
   // the database's folder, removed again if the database cannot be made there
   const std::string parent = std::filesystem::path(db_path).parent_path().string();
   std::unique_ptr<FolderGuard> folder;

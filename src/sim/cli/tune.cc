@@ -64,6 +64,10 @@ void tune(const TuneOptions& opt) {
   std::error_code ec;
   const bool exists = std::filesystem::exists(db_path, ec);
   if (opt.resume && !exists) throw InputError(db_path + ": --resume, but there is no database");
+  if (db_path.back() == '/' || std::filesystem::is_directory(db_path, ec)) {
+    throw InputError("--db " + db_path + ": is a folder; name the database file, e.g. " +
+                     (std::filesystem::path(db_path) / "tune.db").lexically_normal().string());
+  }
   // the database's folder, removed again if the database cannot be made there
   const std::string parent = std::filesystem::path(db_path).parent_path().string();
   std::unique_ptr<FolderGuard> folder;
@@ -129,12 +133,15 @@ void tune(const TuneOptions& opt) {
     std::cout << table.str();
   };
   const std::vector<HeldOutCheck> on_tuning = check_held_out(def, settings, threads, true);
-  write_file_atomically(staged.path("tuning_seeds.csv"), held_out_csv(def, on_tuning));
+  staged.write([&] {
+    write_file_atomically(staged.path("tuning_seeds.csv"), held_out_csv(def, on_tuning));
+  });
   print_checks(on_tuning, "on the tuning seeds (" + std::to_string(def.seeds) + " seeds x " +
                               std::to_string(def.noise_scales.size()) + " noise levels)");
   if (def.held_out_seeds > 0) {
     const std::vector<HeldOutCheck> checks = check_held_out(def, settings, threads);
-    write_file_atomically(staged.path("held_out.csv"), held_out_csv(def, checks));
+    staged.write(
+        [&] { write_file_atomically(staged.path("held_out.csv"), held_out_csv(def, checks)); });
     print_checks(checks, "held-out check (" + std::to_string(def.held_out_seeds) + " seeds x " +
                              std::to_string(def.noise_scales.size()) +
                              " noise levels, not used in tuning)");

@@ -15,12 +15,14 @@
 #include <filesystem>
 #include <algorithm>
 #include <fstream>
+#include <memory>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
 
 #include "pam_actuator/atomic_file.h"
 #include "pam_actuator/input_error.h"
+#include "sim/io/temp_path.h"
 
 namespace pamsim {
 namespace {
@@ -158,12 +160,13 @@ void run_gnuplot(const std::string& png_path, const GnuplotJob& job) {
 
   // data and script into the temp folder; output to a temp PNG beside the target
   const TempDir dir(png_path);
-  std::string tmp_png;
+  std::unique_ptr<TempPath> tmp_guard;   // exclusive, unpredictable; removed on any failure
   try {
-    tmp_png = make_temp_beside(target.string(), TempKind::kFile);   // exclusive, unpredictable
+    tmp_guard = std::make_unique<TempPath>(target.string(), TempKind::kFile);
   } catch (const InputError& e) {
     throw std::runtime_error(e.what());
   }
+  const std::string tmp_png = tmp_guard->path();
   auto write = [&](const std::string& name, const std::string& content) {
     std::ofstream out(dir.path() / name, std::ios::binary);
     out << content;
@@ -186,13 +189,11 @@ void run_gnuplot(const std::string& png_path, const GnuplotJob& job) {
   const std::string command = "cd " + sh_quote(dir.path().string()) + " && " + sh_quote(gnuplot) +
                               " plot.gp >gnuplot.out 2>gnuplot.err";
   const int rc = std::system(command.c_str());
-  std::error_code ec;
   const bool exited_ok = rc != -1 && WIFEXITED(rc) && WEXITSTATUS(rc) == 0;
   // gnuplot exits 0 also when cairo could not write the whole image (a full disk): a PNG
   // is complete only with its signature and its closing IEND chunk
   const bool wrote_png = png_is_complete(tmp_png);
   if (!exited_ok || !wrote_png) {
-    fs::remove(tmp_png, ec);
     std::string why = first_error_line(read_text(dir.path() / "gnuplot.err"));
     if (why.empty()) {
       why = rc == -1             ? std::string("cannot start a shell")
@@ -205,10 +206,10 @@ void run_gnuplot(const std::string& png_path, const GnuplotJob& job) {
 
   // into place
   if (std::rename(tmp_png.c_str(), target.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    fs::remove(tmp_png, ec);
-    throw std::runtime_error(png_path + ": cannot move the plot into place: " + why);
+    throw std::runtime_error(png_path + ": cannot move the plot into place: " +
+                             std::strerror(errno));
   }
+  tmp_guard->release();
 }
 
 bool finite_range(const std::vector<double>& v, double& lo, double& hi) {

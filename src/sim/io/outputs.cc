@@ -1,10 +1,13 @@
 // outputs.cc: see outputs.h.
 #include "sim/io/outputs.h"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <vector>
 
 #include "pam_actuator/atomic_file.h"
 #include "pam_actuator/input_error.h"
@@ -122,25 +125,37 @@ void make_directories(const std::string& dir) {
 }
 
 FolderGuard::FolderGuard(const std::string& dir) {
+  namespace fs = std::filesystem;
   std::error_code ec;
-  std::filesystem::path missing;
-  for (std::filesystem::path p = dir; !p.empty() && !std::filesystem::exists(p, ec);
+  std::vector<fs::path> missing;   // innermost first
+  for (fs::path p = fs::path(dir).lexically_normal(); !p.empty() && !fs::exists(p, ec);
        p = p.parent_path()) {
-    missing = p;
-    if (p == p.parent_path()) break;
+    if (!fs::is_symlink(p, ec)) missing.push_back(p);   // (a dangling link: mkdir says so)
+    if (p == p.parent_path() || p.parent_path().empty()) break;
   }
-  made_ = missing.string();
+  for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+    if (fs::create_directory(*it, ec)) {
+      made_.push_back(it->string());
+    } else if (ec) {
+      break;   // make_directories below says why
+    }
+  }
   try {
     make_directories(dir);
   } catch (...) {
-    if (!made_.empty()) std::filesystem::remove_all(made_, ec);
+    remove_made();
     throw;
   }
 }
 
-FolderGuard::~FolderGuard() {
-  std::error_code ignored;
-  if (!made_.empty()) std::filesystem::remove_all(made_, ignored);
+FolderGuard::~FolderGuard() { remove_made(); }
+
+void FolderGuard::remove_made() {
+  // innermost first, and only while empty: whatever was put there meanwhile stays
+  for (auto it = made_.rbegin(); it != made_.rend(); ++it) {
+    if (::rmdir(it->c_str()) != 0) break;
+  }
+  made_.clear();
 }
 
 void write_trial_outputs(const std::string& dir, const TrialResult& result, const Scenario& sc) {

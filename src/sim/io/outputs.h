@@ -22,18 +22,20 @@ nlohmann::json aggregate_summaries(const std::vector<TrialSummary>& summaries,
 void make_directories(const std::string& dir);
 
 // Makes `dir` and any missing parents (make_directories), and removes the ones it made
-// again when destroyed unless kept: a command that fails before its first output leaves no
-// empty folder behind.
+// again when destroyed unless kept, innermost first and only while they are empty (rmdir):
+// a command that fails before its first output leaves no empty folder behind, and never
+// removes what anyone else put there meanwhile.
 class FolderGuard {
  public:
   explicit FolderGuard(const std::string& dir);
   ~FolderGuard();
   FolderGuard(const FolderGuard&) = delete;
   FolderGuard& operator=(const FolderGuard&) = delete;
-  void keep() { made_.clear(); }  // an output is in place: the folders stay
+  void keep() { made_.clear(); }   // an output is in place: the folders stay
 
  private:
-  std::string made_;  // the outermost folder made here ("" if none, or kept)
+  void remove_made();
+  std::vector<std::string> made_;   // the folders made here, outermost first
 };
 
 // DIR/trajectory.csv and DIR/summary.json.

@@ -27,7 +27,7 @@ StagedOutputs::StagedOutputs(std::string dir, std::vector<std::string> owned)
     throw InputError(dir_ + ": cannot create output folder (a file of that name exists)");
   }
   folder_ = std::make_unique<FolderGuard>(dir_);
-  staging_ = std::make_unique<TempPath>(dir_, TempKind::kFolder);
+  staging_ = std::make_unique<TempPath>(dir_ + "/.pamsim-staging", TempKind::kFolder);
 }
 
 StagedOutputs::~StagedOutputs() {
@@ -68,10 +68,18 @@ void StagedOutputs::publish() {
 
   // move aside what the new set replaces, and the owned entries it lacks
   std::vector<std::string> moved;
-  const auto restore = [&] {
-    std::error_code ignored;
-    for (const std::string& name : moved)
-      fs::rename(replaced / name, fs::path(dir_) / name, ignored);
+  // puts the old entries back; if one cannot be, the staging folder is kept (it holds them)
+  // and the error says where they are
+  const auto fail = [&](const std::string& message) {
+    bool restored = true;
+    for (const std::string& name : moved) {
+      std::error_code e;
+      fs::rename(replaced / name, fs::path(dir_) / name, e);
+      restored = restored && !e;
+    }
+    if (restored) throw InputError(message);
+    staging_->release();
+    throw InputError(message + "; the earlier outputs are kept in " + replaced.string());
   };
   const auto owned = [&](const std::string& name) {
     return std::any_of(owned_.begin(), owned_.end(), [&](const std::string& pattern) {
@@ -80,18 +88,14 @@ void StagedOutputs::publish() {
   };
   std::vector<std::string> old_names;  // read first: the folder changes below
   for (const auto& e : fs::directory_iterator(dir_)) {
-    // (the staging folder is inside `dir` when `dir` is ".")
-    if (fs::equivalent(e.path(), staging, ec)) continue;
+    if (fs::equivalent(e.path(), staging, ec)) continue;  // (it is inside `dir`)
     old_names.push_back(e.path().filename());
   }
   for (const std::string& name : old_names) {
     const bool is_new = std::binary_search(names.begin(), names.end(), name);
     if (!is_new && !owned(name)) continue;
     fs::rename(fs::path(dir_) / name, replaced / name, ec);
-    if (ec) {
-      restore();
-      throw InputError(dir_ + "/" + name + ": cannot replace it (" + ec.message() + ")");
-    }
+    if (ec) fail(dir_ + "/" + name + ": cannot replace it (" + ec.message() + ")");
     moved.push_back(name);
   }
   // then the new entries in; a failure puts back what was there
@@ -102,8 +106,7 @@ void StagedOutputs::publish() {
       const std::string why = ec.message();
       std::error_code ignored;
       for (const std::string& p : placed) fs::rename(fs::path(dir_) / p, staging / p, ignored);
-      restore();
-      throw InputError(dir_ + "/" + name + ": cannot put it in place (" + why + ")");
+      fail(dir_ + "/" + name + ": cannot put it in place (" + why + ")");
     }
     placed.push_back(name);
   }

@@ -1,8 +1,10 @@
-// staged_outputs.h: a command's output files built in a temp folder beside their destination
-// folder and moved into it only once every one of them is written. A failure half way (a plot
-// gnuplot cannot draw, a full disk, a diverged trial that stops the command, Ctrl-C) leaves
-// the destination as it was: no mix of old and new files, no half-filled trial folders, and no
-// empty folder made for outputs that never came.
+// staged_outputs.h: a command's output files built in a hidden staging folder inside their
+// destination folder (`.pamsim-staging.tmp.XXXXXX`: the same file system, so the moves are
+// renames) and moved into place only once every one of them is written. A failure half way
+// (a plot gnuplot cannot draw, a full disk, a bad value found late) leaves the destination as
+// it was: no mix of old and new files, no half-filled trial folders, and no empty folder made
+// for outputs that never came. A process killed outright (SIGKILL, or Ctrl-C in `run`, which
+// keeps the default handler) leaves its staging folder behind, and only that.
 #pragma once
 
 #include <functional>
@@ -39,7 +41,8 @@ class StagedOutputs {
 
   // Moves every staged entry into `dir`, replacing a same-named one, and removes the owned
   // entries the new set lacks. A rename that fails puts the old entries back and throws
-  // InputError naming the entry.
+  // InputError naming the entry (and, if they cannot be put back, the folder that keeps
+  // them). The moves are renames one after another: a kill in that instant can leave a mix.
   void publish();
 
  private:

@@ -170,8 +170,7 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
     }
   }
   // build it under a temp name, then rename: the database exists whole or not at all
-  // (an empty file made exclusively, which SQLite takes as a new database; NOFOLLOW: a
-  // symlink put in its place is refused)
+  // (an empty file made exclusively, which SQLite takes as a new database)
   std::unique_ptr<TempPath> tmp_guard;   // removed on any failure below
   try {
     tmp_guard = std::make_unique<TempPath>(path, TempKind::kFile);
@@ -179,8 +178,8 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
     throw InputError(path + ": cannot create the sweep database (is the folder writable?)");
   }
   const std::string& tmp = tmp_guard->path();
-  {
-    ResultsDb db(open_database(tmp, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOFOLLOW), tmp);
+  try {
+    ResultsDb db(open_database(tmp, SQLITE_OPEN_READWRITE), tmp);
     std::string columns = "trial INTEGER PRIMARY KEY, point INTEGER NOT NULL, "
                           "seed_index INTEGER NOT NULL, seed INTEGER NOT NULL";
     for (const auto& axis : sweep.axes) columns += ", " + quoted(axis.key);
@@ -205,6 +204,10 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
     }
     put.reset();
     db.exec("COMMIT; PRAGMA journal_mode=WAL;");
+  } catch (const std::exception& e) {   // (a full disk): named by the database, not its temp
+    std::string why = e.what();
+    if (why.rfind(tmp + ": ", 0) == 0) why = why.substr(tmp.size() + 2);
+    throw std::runtime_error(path + ": cannot create the sweep database (" + why + ")");
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     throw InputError(path + ": cannot create the sweep database (" + std::strerror(errno) + ")");

@@ -71,7 +71,7 @@ sqlite3* open_sqlite_file(const std::string& path, DbAccess access, const std::s
     flags |= SQLITE_OPEN_URI;
   }
   sqlite3* db = nullptr;
-  int rc = sqlite3_open_v2(name.c_str(), &db, flags | SQLITE_OPEN_NOFOLLOW, nullptr);
+  int rc = sqlite3_open_v2(name.c_str(), &db, flags, nullptr);
   const auto fail = [&](const std::string& problem) {
     const std::string why = db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
     sqlite3_close(db);

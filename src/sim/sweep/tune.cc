@@ -508,12 +508,11 @@ TuneDb TuneDb::create(const std::string& path, const TuneDefinition& def) {
     throw InputError(path + ": exists; give --resume to continue it, or another --db");
   }
   // built under a temp name and renamed, so a half-made database never exists
-  // (an empty file made exclusively, which SQLite takes as a new database; NOFOLLOW: a
-  // symlink put in its place is refused)
+  // (an empty file made exclusively, which SQLite takes as a new database)
   TempPath tmp_guard(path, TempKind::kFile);   // removed however this ends
   const std::string& tmp = tmp_guard.path();
   {
-    TuneDb db(open_db(tmp, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOFOLLOW), tmp);
+    TuneDb db(open_db(tmp, SQLITE_OPEN_READWRITE), tmp);
     std::string params, objectives;
     for (std::size_t i = 0; i < def.parameters.size(); ++i)
       params += ", u" + std::to_string(i) + " REAL";

@@ -178,8 +178,11 @@ std::vector<HeldOutCheck> check_held_out(const TuneDefinition& def,
                                          const std::vector<TuneReference>& settings, int threads,
                                          bool tuning_seeds = false);
 
-// The files a tuning writes beside its database (write_tune_outputs, and pamsim tune's
-// tuning_seeds.csv and held_out.csv): the set an output folder replaces as a whole.
+// The files write_tune_outputs writes (what `pamsim report` on a tuning database replaces),
+// and with pamsim tune's own tuning_seeds.csv and held_out.csv (what `pamsim tune` replaces:
+// a report must not remove the held-out checks it does not rerun).
+inline const std::vector<std::string> kTuneReportOutputs = {
+    "best.toml", "evaluations.csv", "convergence.png", "pareto.csv", "pareto.png"};
 inline const std::vector<std::string> kTuneOutputs = {
     "best.toml", "evaluations.csv", "convergence.png", "pareto.csv",
     "pareto.png", "tuning_seeds.csv", "held_out.csv"};
