@@ -13,6 +13,9 @@ ASAN_ENV := ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 \
             UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 TSAN_ENV := TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
 TSAN_TESTS := sweep_test cli_sweep_test tune_test trial_test
+# (a test that emulates a full disk with a 1 KiB file-size limit: TSan's own runtime dies of
+# SIGBUS under it; the ASan run covers it)
+TSAN_SKIP := ADatabaseThatCannotBeMadeLeavesNoFolder
 
 .PHONY: deps configure build demo test bench clean sanitize fuzz
 
@@ -46,7 +49,7 @@ sanitize: deps
 	cmake -S . -B $(BUILD_DIR)-tsan $(SANITIZE_TYPE) -DPAMSIM_SANITIZE=thread
 	cmake --build $(BUILD_DIR)-tsan -j $(JOBS) --target pamsim $(TSAN_TESTS)
 	cd $(BUILD_DIR)-tsan && $(TSAN_ENV) ctest --output-on-failure -j $(JOBS) \
-	  -R '^(SweepTest|CliSweepTest|TuneTest|TrialTest)\.'
+	  -R '^(SweepTest|CliSweepTest|TuneTest|TrialTest)\.' -E '$(TSAN_SKIP)'
 
 # libFuzzer (clang, ASan + UBSan) on the scenario, override, sweep and tensile CSV readers,
 # FUZZ_SECONDS each from tests/fuzz/corpus (scripts/fuzz.sh).
