@@ -20,6 +20,7 @@
 #include "sim/cli/progress.h"
 #include "sim/cli/stop_signal.h"
 #include "sim/sweep/results_db.h"
+#include "sim/sweep/sqlite_file.h"
 #include "sim/core/runner.h"
 #include "sim/sweep/sweep.h"
 #include "sim/sweep/sweep_runner.h"
@@ -44,14 +45,8 @@ void sweep(const SweepOptions& opt) {
 
   std::error_code ec;
   const bool exists = std::filesystem::exists(db_path, ec);
-  if (db_path.back() == '/' || std::filesystem::is_directory(db_path, ec)) {
-    throw InputError("--db " + db_path + ": is a folder; name the database file, e.g. " +
-                     (std::filesystem::path(db_path) / "sweep.db").lexically_normal().string());
-  }
-  // the database's folder, removed again if the database cannot be made there
-  const std::string parent = std::filesystem::path(db_path).parent_path().string();
-  std::unique_ptr<FolderGuard> folder;
-  if (!exists && !parent.empty()) folder = std::make_unique<FolderGuard>(parent);
+  // its folder, removed again if the database cannot be made there
+  const std::unique_ptr<FolderGuard> folder = prepare_database_folder(db_path, "sweep.db");
   ResultsDb db = opt.resume && exists ? ResultsDb::open_to_resume(db_path, def)
                                       : ResultsDb::create(db_path, def);
   if (folder) folder->keep();

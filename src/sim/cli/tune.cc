@@ -24,6 +24,7 @@
 #include "sim/core/runner.h"
 #include "sim/io/outputs.h"
 #include "sim/io/staged_outputs.h"
+#include "sim/sweep/sqlite_file.h"
 
 namespace pamsim {
 namespace {
@@ -64,14 +65,8 @@ void tune(const TuneOptions& opt) {
   std::error_code ec;
   const bool exists = std::filesystem::exists(db_path, ec);
   if (opt.resume && !exists) throw InputError(db_path + ": --resume, but there is no database");
-  if (db_path.back() == '/' || std::filesystem::is_directory(db_path, ec)) {
-    throw InputError("--db " + db_path + ": is a folder; name the database file, e.g. " +
-                     (std::filesystem::path(db_path) / "tune.db").lexically_normal().string());
-  }
-  // the database's folder, removed again if the database cannot be made there
-  const std::string parent = std::filesystem::path(db_path).parent_path().string();
-  std::unique_ptr<FolderGuard> folder;
-  if (!exists && !parent.empty()) folder = std::make_unique<FolderGuard>(parent);
+  // its folder, removed again if the database cannot be made there
+  const std::unique_ptr<FolderGuard> folder = prepare_database_folder(db_path, "tune.db");
   TuneDb db = opt.resume ? TuneDb::open_to_resume(db_path, def) : TuneDb::create(db_path, def);
   if (folder) folder->keep();
 

@@ -90,4 +90,17 @@ sqlite3* open_sqlite_file(const std::string& path, DbAccess access, const std::s
   return db;
 }
 
+std::unique_ptr<FolderGuard> prepare_database_folder(const std::string& db_path,
+                                                     const std::string& file_name) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (db_path.empty() || db_path.back() == '/' || fs::is_directory(db_path, ec)) {
+    throw InputError("--db " + db_path + ": is a folder; name the database file, e.g. " +
+                     (fs::path(db_path) / file_name).lexically_normal().string());
+  }
+  const std::string parent = fs::path(db_path).parent_path().string();
+  if (parent.empty() || fs::exists(db_path, ec)) return nullptr;
+  return std::make_unique<FolderGuard>(parent);
+}
+
 }  // namespace pamsim

@@ -3,7 +3,10 @@
 // writer finds out that it cannot write before it runs anything.
 #pragma once
 
+#include <memory>
 #include <string>
+
+#include "sim/io/outputs.h"
 
 struct sqlite3;
 
@@ -23,5 +26,12 @@ enum class DbAccess {
 // Either way the file must read as an SQLite database. Throws InputError "<path>: <problem>";
 // the caller owns the handle (sqlite3_close).
 sqlite3* open_sqlite_file(const std::string& path, DbAccess access, const std::string& what);
+
+// For a command about to create or open the database `db_path` (given with --db): refuses a
+// path that names a folder (suggesting `<db_path>/<file_name>`), and makes the database's
+// folder if it is missing, returning the guard that removes it again unless the caller keeps
+// it once the database exists (null when nothing was to be made).
+std::unique_ptr<FolderGuard> prepare_database_folder(const std::string& db_path,
+                                                     const std::string& file_name);
 
 }  // namespace pamsim
