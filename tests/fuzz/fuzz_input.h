@@ -8,17 +8,27 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
 namespace pamsim_fuzz {
 
-// Writes the input to `<tmp>/pamsim_fuzz_<pid><suffix>` and returns that path.
+// Removes a file or folder when the process exits (libFuzzer ends with exit()).
+struct RemovedAtExit {
+  std::string path;
+  ~RemovedAtExit() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+
+// Writes the input to `<tmp>/pamsim_fuzz_<pid><suffix>` (removed at exit) and returns that path.
 inline std::string input_file(const std::uint8_t* data, std::size_t size, const char* suffix) {
-  const std::string path = "/tmp/pamsim_fuzz_" + std::to_string(::getpid()) + suffix;
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  static const RemovedAtExit file{"/tmp/pamsim_fuzz_" + std::to_string(::getpid()) + suffix};
+  std::ofstream out(file.path, std::ios::binary | std::ios::trunc);
   out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-  return path;
+  return file.path;
 }
 
 inline std::string input_text(const std::uint8_t* data, std::size_t size) {

@@ -44,11 +44,11 @@ double trials_asked(const toml::table& doc) {
   return points * std::max(1.0, integer_or(doc.get("seeds"), 1));
 }
 
-// A folder that looks like the source tree (scenarios/ with links to the shipped scenario
-// files, models/ a link), where the input is written as scenarios/sweep.toml: its base
+// A folder (returned) that looks like the source tree (scenarios/ with links to the shipped
+// scenario files, models/ a link), where the input is written as scenarios/sweep.toml: its base
 // "drop_mass.toml" and that scenario's "../models/..." resolve as in the source tree, and
 // nothing is written there.
-std::string sweep_path() {
+std::string source_mirror() {
   namespace fs = std::filesystem;
   const fs::path root =
       fs::temp_directory_path() / ("pamsim_fuzz_sweep_" + std::to_string(::getpid()));
@@ -59,13 +59,14 @@ std::string sweep_path() {
   for (const auto& e : fs::directory_iterator(source / "scenarios")) {
     fs::create_symlink(e.path(), root / "scenarios" / e.path().filename());
   }
-  return (root / "scenarios" / "sweep.toml").string();
+  return root.string();
 }
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const std::string path = sweep_path();
+  static const pamsim_fuzz::RemovedAtExit root{source_mirror()};  // scenarios/sweep.toml in it
+  static const std::string path = root.path + "/scenarios/sweep.toml";
   try {
     if (trials_asked(toml::parse(pamsim_fuzz::input_text(data, size))) > kMaxTrials) return 0;
   } catch (const toml::parse_error&) {  // the reader must say so too
