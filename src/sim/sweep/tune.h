@@ -183,9 +183,11 @@ std::vector<HeldOutCheck> check_held_out(const TuneDefinition& def,
 // a report must not remove the held-out checks it does not rerun).
 inline const std::vector<std::string> kTuneReportOutputs = {
     "best.toml", "evaluations.csv", "convergence.png", "pareto.csv", "pareto.png"};
-inline const std::vector<std::string> kTuneOutputs = {
-    "best.toml", "evaluations.csv", "convergence.png", "pareto.csv",
-    "pareto.png", "tuning_seeds.csv", "held_out.csv"};
+inline const std::vector<std::string> kTuneOutputs = [] {
+  std::vector<std::string> names = kTuneReportOutputs;
+  names.insert(names.end(), {"tuning_seeds.csv", "held_out.csv"});
+  return names;
+}();
 
 // best.toml (the base scenario with the best values, ready for `pamsim run` from the output
 // folder), evaluations.csv, convergence.png, and with several objectives pareto.csv and
