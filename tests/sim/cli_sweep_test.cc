@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli_util.h"
+#include "sweep_process.h"
 #include "sim/sweep/results_db.h"
 #include "sim/sweep/sweep.h"
 
@@ -26,14 +27,14 @@ using pamsim_test::line_count;
 using pamsim_test::read_file;
 using pamsim_test::run_pamsim;
 using pamsim_test::write_text;
-
-const std::string kDropMass = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml";
-
-// A sweep file on the drop-mass scenario with short trials and the given extra text.
-std::string short_sweep(const std::string& body) {
-  return "base = \"" + kDropMass + "\"\n" + body +
-         "\n[fixed.sim]\nduration_s = 0.8\n[fixed.drop]\ntime_s = 0.2\n";
-}
+using pamsim_test::freeze;
+using pamsim_test::interruptible_sweep;
+using pamsim_test::kInterruptibleTrials;
+using pamsim_test::lines_of;
+using pamsim_test::ReapOnExit;
+using pamsim_test::short_sweep;
+using pamsim_test::spawn_sweep;
+using pamsim_test::wait_for_trials;
 
 // `n` grid axes of two levels each (2^n points); the keys are never reached when the size is
 // refused first.
@@ -43,13 +44,6 @@ std::string many_axes(int n) {
     text += "[[axis]]\nkey = \"reflex.v_thr_mm_s_" + std::to_string(i) + "\"\nvalues = [1.0, 2.0]\n";
   }
   return text;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::stringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
 }
 
 TEST(CliSweepTest, SmokeSweepExportsTheSameCsvOnOneAndTwoThreads) {
@@ -80,67 +74,6 @@ TEST(CliSweepTest, SmokeSweepExportsTheSameCsvOnOneAndTwoThreads) {
     EXPECT_NE(lines[t + 1].find(",ok,"), std::string::npos) << lines[t + 1];
   }
 }
-
-// Waits until `db` holds at least `n` trials (or the process has exited); returns the count.
-std::int64_t wait_for_trials(const std::string& db, std::int64_t n, pid_t pid) {
-  for (int i = 0; i < 20000; ++i) {
-    if (fs::exists(db)) {
-      try {
-        const std::int64_t stored = pamsim::ResultsDb::open_existing(db).trial_count();
-        if (stored >= n) return stored;
-      } catch (const std::exception&) {   // mid-creation: try again
-      }
-    }
-    if (::waitpid(pid, nullptr, WNOHANG) == pid) return -1;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  return -1;
-}
-
-// Kills and reaps the sweep at the end of a test that failed before it did (an ASSERT in the
-// middle would otherwise leave it stopped for good); release() once the test reaped it.
-struct ReapOnExit {
-  pid_t pid;
-  ~ReapOnExit() {
-    if (pid <= 0) return;
-    ::kill(pid, SIGKILL);
-    ::waitpid(pid, nullptr, 0);
-  }
-  void release() { pid = -1; }
-};
-
-// Stops `pid` with SIGSTOP and waits until it is stopped: what it has stored stays as it is
-// while the test looks (no race with a sweep that goes on, or ends, meanwhile).
-void freeze(pid_t pid) {
-  ASSERT_EQ(::kill(pid, SIGSTOP), 0);
-  int status = 0;
-  ASSERT_EQ(::waitpid(pid, &status, WUNTRACED), pid);
-  ASSERT_TRUE(WIFSTOPPED(status)) << "the sweep ended before it could be stopped";
-}
-
-// `pamsim sweep SWEEP --threads 2 --db DB` in the background, output discarded; its pid.
-pid_t spawn_sweep(const fs::path& sweep, const std::string& db) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    if (!::freopen("/dev/null", "w", stderr) || !::freopen("/dev/null", "w", stdout)) ::_exit(126);
-    ::execl(PAMSIM_BINARY, PAMSIM_BINARY, "sweep", sweep.c_str(), "--threads", "2", "--db",
-            db.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  return pid;
-}
-
-// 3 x 4 x `seeds` short trials (120 by default): long enough to stop in the middle
-fs::path interruptible_sweep(const fs::path& dir, int seeds = 10) {
-  const fs::path sweep = dir / "sweep.toml";
-  write_text(sweep, short_sweep("seeds = " + std::to_string(seeds) +
-                                "\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\n"
-                                "values = [40.0, 70.0, 100.0]\n[[axis]]\n"
-                                "key = \"reflex.k_MPa_s_per_mm\"\nfrom = 0.0005\nto = 0.004\n"
-                                "count = 4\nscale = \"log\"\n"));
-  return sweep;
-}
-constexpr int kInterruptibleTrials = 3 * 4 * 10;
 
 TEST(CliSweepTest, SweepKilledHalfwayAndResumedEqualsTheUninterruptedOne) {
   const fs::path dir = fresh_dir("sweep_kill");

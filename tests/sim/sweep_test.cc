@@ -308,6 +308,41 @@ TEST_F(SweepTest, RunnerRejectsZeroThreads) {
   EXPECT_THROW(pamsim::run_sweep(s, db, options), InputError);
 }
 
+TEST(SweepShardTest, ShardsPartitionTheTrialsEvenlyWhateverTheCounts) {
+  for (std::int64_t count : {1, 2, 3, 7, 64}) {
+    for (std::int64_t total : {0, 1, 5, 32, 1000, 1001}) {
+      std::vector<int> owners(static_cast<std::size_t>(total), 0);
+      std::int64_t smallest = total, largest = 0;
+      for (std::int64_t index = 0; index < count; ++index) {
+        const pamsim::SweepShard shard{index, count};
+        std::int64_t held = 0;
+        for (std::int64_t t = 0; t < total; ++t) {
+          if (shard.holds(t)) {
+            ++owners[static_cast<std::size_t>(t)];
+            ++held;
+          }
+        }
+        EXPECT_EQ(shard.trials_of(total), held) << index << "/" << count << " of " << total;
+        smallest = std::min(smallest, held);
+        largest = std::max(largest, held);
+      }
+      for (int owner : owners) EXPECT_EQ(owner, 1) << count << " shards of " << total;
+      EXPECT_LE(largest - smallest, 1) << count << " shards of " << total;
+    }
+  }
+}
+
+TEST(SweepShardTest, ParsesIOverNAndRefusesEverythingElse) {
+  const pamsim::SweepShard s = pamsim::parse_sweep_shard("2/5", "--shard");
+  EXPECT_EQ(s.index, 2);
+  EXPECT_EQ(s.count, 5);
+  EXPECT_EQ(s.text(), "2/5");
+  EXPECT_TRUE(pamsim::parse_sweep_shard("0/1", "--shard").whole());
+  for (const char* bad : {"", "5/5", "-1/5", "5", "0/0", "x/5", "1/5.0", "+1/5", " 1/5", "1/5/2"}) {
+    EXPECT_THROW(pamsim::parse_sweep_shard(bad, "--shard"), InputError) << "'" << bad << "'";
+  }
+}
+
 TEST(ProgressTest, DurationsReadAsClockTime) {
   EXPECT_EQ(pamsim::format_duration(0), "0:00");
   EXPECT_EQ(pamsim::format_duration(83), "1:23");

@@ -20,6 +20,7 @@ void add_run_command(CLI::App& app);        // run a scenario (one or many trial
 void add_compare_command(CLI::App& app);    // two runs' angle bands and metrics side by side
 void add_render_command(CLI::App& app);     // a trial as MP4/PNG video, headless
 void add_sweep_command(CLI::App& app);      // run a parameter sweep into SQLite
+void add_merge_command(CLI::App& app);      // merge a sweep's shard databases
 void add_export_command(CLI::App& app);     // a sweep database as CSV
 void add_report_command(CLI::App& app);     // per-point statistics, heat maps, best setting
 void add_validate_command(CLI::App& app);   // the papers' validation experiments (Table III, V)

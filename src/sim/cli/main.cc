@@ -84,6 +84,7 @@ int main(int argc, char** argv) {
   pamsim::add_compare_command(app);
   pamsim::add_render_command(app);
   pamsim::add_sweep_command(app);
+  pamsim::add_merge_command(app);
   pamsim::add_export_command(app);
   pamsim::add_report_command(app);
   pamsim::add_validate_command(app);

@@ -1,8 +1,9 @@
-// sweep.cc: `pamsim sweep SWEEP.toml [--threads N] [--db FILE] [--resume] [--out DIR]`:
-// validates the sweep file and every point's scenario, then runs the trials into the results
-// database (default DIR/sweep.db, DIR default renders/<sweep name>). SIGINT or SIGTERM stops
-// it cleanly (running trials finish and are stored; exit 130 or 143); --resume finishes the
-// rest.
+// sweep.cc: `pamsim sweep SWEEP.toml [--threads N] [--db FILE] [--resume] [--out DIR]
+// [--shard I/N]`: validates the sweep file and every point's scenario, then runs the trials
+// (all, or shard I of N, see SweepShard) into the results database (default DIR/sweep.db, or
+// DIR/sweep.shard-I-of-N.db for a shard; DIR default renders/<sweep name>). SIGINT or SIGTERM
+// stops it cleanly (running trials finish and are stored; exit 130 or 143); --resume finishes
+// the rest. `pamsim merge` combines the shards' databases.
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
@@ -34,21 +35,27 @@ struct SweepOptions {
   std::string db;
   bool resume = false;
   std::string out;
+  std::string shard;
 };
 
 void sweep(const SweepOptions& opt) {
   const int threads = resolve_thread_count(opt.threads);
+  const SweepShard shard = opt.shard.empty() ? SweepShard{} : parse_sweep_shard(opt.shard, "--shard");
   const SweepDefinition def = load_sweep(opt.sweep_file);   // everything validated first
   const std::string out = opt.out.empty()
       ? "renders/" + std::filesystem::path(opt.sweep_file).stem().string() : opt.out;
-  const std::string db_path = opt.db.empty() ? out + "/sweep.db" : opt.db;
+  const std::string db_name = shard.whole() ? "sweep.db"
+                                            : "sweep.shard-" + std::to_string(shard.index) +
+                                                  "-of-" + std::to_string(shard.count) + ".db";
+  const std::string db_path = opt.db.empty() ? out + "/" + db_name : opt.db;
+  const std::int64_t trials = shard.trials_of(def.trials());
 
   std::error_code ec;
   const bool exists = std::filesystem::exists(db_path, ec);
   // its folder, removed again if the database cannot be made there
-  const std::unique_ptr<FolderGuard> folder = prepare_database_folder(db_path, "sweep.db");
-  ResultsDb db = opt.resume && exists ? ResultsDb::open_to_resume(db_path, def)
-                                      : ResultsDb::create(db_path, def);
+  const std::unique_ptr<FolderGuard> folder = prepare_database_folder(db_path, db_name);
+  ResultsDb db = opt.resume && exists ? ResultsDb::open_to_resume(db_path, def, shard)
+                                      : ResultsDb::create(db_path, def, shard);
   if (folder) folder->keep();
   const std::string made_by = db.meta("pamsim_version");
   if (made_by != PAMSIM_VERSION) {
@@ -56,14 +63,17 @@ void sweep(const SweepOptions& opt) {
               << ", this is " << PAMSIM_VERSION << "; its trials may not be comparable\n";
   }
   std::cerr << "pamsim sweep: " << def.points() << " points x " << def.seeds << " seeds = "
-            << def.trials() << " trials (" << sweep_design_name(def.design) << ") on " << threads
-            << (threads == 1 ? " thread" : " threads") << " into " << db_path << "\n";
+            << def.trials() << " trials (" << sweep_design_name(def.design) << ")";
+  if (!shard.whole()) std::cerr << ", shard " << shard.text() << ": " << trials << " trials";
+  std::cerr << " on " << threads << (threads == 1 ? " thread" : " threads") << " into "
+            << db_path << "\n";
 
   StopOnSignal stop_on_signal;
-  ProgressReporter progress("pamsim sweep", def.trials(), db.trial_count(), std::cerr,
+  ProgressReporter progress("pamsim sweep", trials, db.trial_count(), std::cerr,
                             ::isatty(STDERR_FILENO) != 0);
   SweepRunOptions run_options;
   run_options.threads = threads;
+  run_options.shard = shard;
   run_options.stop = &stop_requested();
   run_options.on_progress = [&](std::int64_t stored) { progress.update(stored); };
   const SweepRunResult r = run_sweep(def, db, run_options);
@@ -78,12 +88,17 @@ void sweep(const SweepOptions& opt) {
   if (r.diverged > 0) std::cerr << "; " << r.diverged << " diverged or failed (see their status)";
   std::cerr << "\n";
   if (r.interrupted) {
-    std::cerr << "pamsim sweep: interrupted with " << stored << " of " << def.trials()
+    std::cerr << "pamsim sweep: interrupted with " << stored << " of " << trials
               << " trials stored; finish with: pamsim sweep " << opt.sweep_file << " --db "
-              << db_path << " --resume\n";
+              << db_path << (shard.whole() ? "" : " --shard " + shard.text()) << " --resume\n";
     throw CommandExit(128 + stop_signal());   // the shell's code for that signal
   }
   std::cout << db_path << "\n";
+  if (!shard.whole()) {
+    std::cerr << "pamsim sweep: next, when every shard is done: pamsim merge "
+              << out << "/sweep.db " << out << "/sweep.shard-*-of-" << shard.count << ".db\n";
+    return;
+  }
   std::cerr << "pamsim sweep: next: pamsim export " << db_path << " --csv FILE; pamsim report "
             << db_path << "\n";
 }
@@ -98,6 +113,9 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--db", opt->db, "Results database (default DIR/sweep.db)");
   cmd->add_flag("--resume", opt->resume, "Finish the sweep stored in the database");
   cmd->add_option("--out", opt->out, "Output folder (default renders/<sweep name>)");
+  cmd->add_option("--shard", opt->shard,
+                  "Run only shard I of N (0 <= I < N; trial t is in shard t mod N) into its own "
+                  "database (default DIR/sweep.shard-I-of-N.db); combine with pamsim merge");
   cmd->callback([opt] { sweep(*opt); });
 }
 

@@ -19,34 +19,12 @@
 
 #include "pam_actuator/input_error.h"
 #include "sim/io/outputs.h"
-#include "sim/io/temp_path.h"
 #include "sim/sweep/sqlite_file.h"
 
 namespace pamsim {
 namespace {
 
 namespace fs = std::filesystem;
-
-// "name" as an SQL identifier (axis keys hold dots)
-std::string quoted(const std::string& name) {
-  std::string out = "\"";
-  for (char c : name) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
-struct StatementDeleter {
-  void operator()(sqlite3_stmt* s) const { sqlite3_finalize(s); }
-};
-using Statement = std::unique_ptr<sqlite3_stmt, StatementDeleter>;
-
-Statement prepare(sqlite3* db, const std::string& sql) {
-  sqlite3_stmt* s = nullptr;
-  if (sqlite3_prepare_v2(db, sql.c_str(), -1, &s, nullptr) != SQLITE_OK) {
-    sqlite3_finalize(s);
-    return nullptr;
-  }
-  return Statement(s);
-}
 
 sqlite3* open_database(const std::string& path, int flags) {
   sqlite3* db = nullptr;
@@ -78,16 +56,6 @@ std::string first_difference(const std::string& stored, const std::string& wante
     if (!a.contains(key) || a[key] != value) return key;
   }
   return "definition";
-}
-
-// fsync(2) on the folder holding `path`, so a rename into it is durable (best effort).
-void sync_directory_of(const std::string& path) {
-  fs::path dir = fs::path(path).parent_path();
-  if (dir.empty()) dir = ".";
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
-  if (fd < 0) return;
-  ::fsync(fd);
-  ::close(fd);
 }
 
 }  // namespace
@@ -155,66 +123,43 @@ void ResultsDb::exec(const std::string& sql) const {
   }
 }
 
-ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& sweep) {
-  std::error_code ec;
-  if (fs::exists(path, ec)) {
-    throw InputError(path + ": already exists; add --resume to finish that sweep, or choose "
-                     "another --db");
-  }
-  // a WAL left by a killed sweep whose database was then deleted would be replayed into the
-  // new one: refuse rather than mix two sweeps
-  for (const char* suffix : {"-wal", "-shm", "-journal"}) {
-    if (fs::exists(path + suffix, ec)) {
-      throw InputError(path + suffix + ": left over from an earlier database at " + path +
-                       "; remove it to start a new sweep there");
-    }
-  }
-  // build it under a temp name, then rename: the database exists whole or not at all
-  // (an empty file made exclusively, which SQLite takes as a new database)
-  std::unique_ptr<TempPath> tmp_guard;   // removed on any failure below
-  try {
-    tmp_guard = std::make_unique<TempPath>(path, TempKind::kFile);
-  } catch (const InputError&) {
-    throw InputError(path + ": cannot create the sweep database (is the folder writable?)");
-  }
-  const std::string& tmp = tmp_guard->path();
-  try {
+ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& sweep,
+                            const SweepShard& shard) {
+  create_sqlite_file(path, "sweep database",
+                     "add --resume to finish that sweep, or choose another --db",
+                     [&](const std::string& tmp) {
     ResultsDb db(open_database(tmp, SQLITE_OPEN_READWRITE), tmp);
     std::string columns = "trial INTEGER PRIMARY KEY, point INTEGER NOT NULL, "
                           "seed_index INTEGER NOT NULL, seed INTEGER NOT NULL";
-    for (const auto& axis : sweep.axes) columns += ", " + quoted(axis.key);
+    for (const auto& axis : sweep.axes) columns += ", " + quoted_identifier(axis.key);
     columns += ", status TEXT NOT NULL, message TEXT";
-    for (const auto& name : sweep.metric_names) columns += ", " + quoted(name) + " REAL";
+    for (const auto& name : sweep.metric_names) columns += ", " + quoted_identifier(name) + " REAL";
     db.exec("BEGIN; CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL); "
             "CREATE TABLE trials(" + columns + ");");
-    Statement put = prepare(db.db_, "INSERT INTO meta VALUES (?, ?)");
-    if (!put) db.fail("cannot write the sweep definition");
-    const std::pair<std::string, std::string> meta[] = {
+    std::vector<std::pair<std::string, std::string>> meta = {
         {"format", "pamsim-sweep-1"},
         {"definition", sweep.canonical_json()},
+        {"trials", std::to_string(sweep.trials())},
         {"pamsim_version", PAMSIM_VERSION},
         {"sweep_file", sweep.file},
         {"base_path", fs::absolute(sweep.base_path).lexically_normal().string()},
         {"created_utc", utc_now()}};
-    for (const auto& [key, value] : meta) {
-      sqlite3_bind_text(put.get(), 1, key.c_str(), -1, SQLITE_TRANSIENT);
-      sqlite3_bind_text(put.get(), 2, value.c_str(), -1, SQLITE_TRANSIENT);
-      if (sqlite3_step(put.get()) != SQLITE_DONE) db.fail("cannot write the sweep definition");
-      sqlite3_reset(put.get());
-    }
-    put.reset();
+    if (!shard.whole()) meta.emplace_back("shard", shard.text());
+    db.put_meta(meta);
     db.exec("COMMIT; PRAGMA journal_mode=WAL;");
-  } catch (const std::exception& e) {   // (a full disk): named by the database, not its temp
-    std::string why = e.what();
-    if (why.rfind(tmp + ": ", 0) == 0) why = why.substr(tmp.size() + 2);
-    throw std::runtime_error(path + ": cannot create the sweep database (" + why + ")");
+  });
+  return open_to_resume(path, sweep, shard);
+}
+
+void ResultsDb::put_meta(const std::vector<std::pair<std::string, std::string>>& entries) {
+  Statement put = prepare_statement(db_, "INSERT OR REPLACE INTO meta VALUES (?, ?)");
+  if (!put) fail("cannot write the sweep's description");
+  for (const auto& [key, value] : entries) {
+    sqlite3_bind_text(put.get(), 1, key.c_str(), -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(put.get(), 2, value.c_str(), -1, SQLITE_TRANSIENT);
+    if (sqlite3_step(put.get()) != SQLITE_DONE) fail("cannot write the sweep's description");
+    sqlite3_reset(put.get());
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    throw InputError(path + ": cannot create the sweep database (" + std::strerror(errno) + ")");
-  }
-  tmp_guard->release();
-  sync_directory_of(path);   // the rename itself survives a power cut
-  return open_to_resume(path, sweep);
 }
 
 ResultsDb ResultsDb::open_existing(const std::string& path) {
@@ -229,7 +174,8 @@ ResultsDb ResultsDb::open_as(const std::string& path, DbAccess access) {
   return db;
 }
 
-ResultsDb ResultsDb::open_to_resume(const std::string& path, const SweepDefinition& sweep) {
+ResultsDb ResultsDb::open_to_resume(const std::string& path, const SweepDefinition& sweep,
+                                    const SweepShard& shard) {
   ResultsDb db = open_as(path, DbAccess::kWrite);
   const std::string stored = db.meta("definition");
   const std::string wanted = sweep.canonical_json();
@@ -238,13 +184,24 @@ ResultsDb ResultsDb::open_to_resume(const std::string& path, const SweepDefiniti
                      " differs from " + sweep.file + "); use another --db, or the sweep file "
                      "it was made with");
   }
+  const std::string stored_shard = db.meta("shard");
+  if (stored_shard != (shard.whole() ? "" : shard.text())) {
+    throw InputError(path + ": holds " +
+                     (stored_shard.empty() ? std::string("the whole sweep")
+                                           : "shard " + stored_shard) +
+                     ", not " + (shard.whole() ? std::string("the whole sweep")
+                                               : "shard " + shard.text()) +
+                     "; resume it with " +
+                     (stored_shard.empty() ? std::string("no --shard")
+                                           : "--shard " + stored_shard));
+  }
   db.lock_for_writing();
   db.exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;");
   return db;
 }
 
 std::string ResultsDb::meta(const std::string& key) const {
-  Statement s = prepare(db_, "SELECT value FROM meta WHERE key = ?");
+  Statement s = prepare_statement(db_, "SELECT value FROM meta WHERE key = ?");
   if (!s) return "";   // no meta table: not a sweep database
   sqlite3_bind_text(s.get(), 1, key.c_str(), -1, SQLITE_TRANSIENT);
   if (sqlite3_step(s.get()) != SQLITE_ROW) return "";
@@ -254,7 +211,7 @@ std::string ResultsDb::meta(const std::string& key) const {
 
 std::vector<bool> ResultsDb::finished_trials(std::int64_t trials) const {
   std::vector<bool> finished(static_cast<std::size_t>(trials), false);
-  Statement s = prepare(db_, "SELECT trial FROM trials");
+  Statement s = prepare_statement(db_, "SELECT trial FROM trials");
   if (!s) fail("cannot read the trials");
   int rc;
   while ((rc = sqlite3_step(s.get())) == SQLITE_ROW) {
@@ -267,7 +224,7 @@ std::vector<bool> ResultsDb::finished_trials(std::int64_t trials) const {
 }
 
 std::int64_t ResultsDb::trial_count() const {
-  Statement s = prepare(db_, "SELECT COUNT(*) FROM trials");
+  Statement s = prepare_statement(db_, "SELECT COUNT(*) FROM trials");
   if (!s || sqlite3_step(s.get()) != SQLITE_ROW) fail("cannot count the trials");
   return sqlite3_column_int64(s.get(), 0);
 }
@@ -278,7 +235,7 @@ void ResultsDb::insert(const SweepDefinition& sweep, const std::vector<TrialReco
   std::string sql = "INSERT INTO trials VALUES (?";
   for (std::size_t i = 1; i < n_columns; ++i) sql += ", ?";
   sql += ")";
-  Statement s = prepare(db_, sql);
+  Statement s = prepare_statement(db_, sql);
   if (!s) fail("cannot store trials");
   exec("BEGIN IMMEDIATE");
   try {
@@ -322,7 +279,7 @@ void ResultsDb::insert(const SweepDefinition& sweep, const std::vector<TrialReco
 }
 
 std::vector<std::string> ResultsDb::trial_columns() const {
-  Statement s = prepare(db_, "SELECT * FROM trials LIMIT 0");
+  Statement s = prepare_statement(db_, "SELECT * FROM trials LIMIT 0");
   if (!s) fail("cannot read the trials");
   std::vector<std::string> names;
   for (int c = 0; c < sqlite3_column_count(s.get()); ++c) names.push_back(sqlite3_column_name(s.get(), c));
@@ -330,7 +287,7 @@ std::vector<std::string> ResultsDb::trial_columns() const {
 }
 
 void ResultsDb::for_each_trial(const std::function<void(const std::vector<DbValue>&)>& row) const {
-  Statement s = prepare(db_, "SELECT * FROM trials ORDER BY trial");
+  Statement s = prepare_statement(db_, "SELECT * FROM trials ORDER BY trial");
   if (!s) fail("cannot read the trials");
   const int n = sqlite3_column_count(s.get());
   std::vector<DbValue> cells(static_cast<std::size_t>(n));

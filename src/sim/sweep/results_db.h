@@ -1,6 +1,7 @@
 // results_db.h: a sweep's results in SQLite, one file per sweep.
-//   meta(key, value)   the sweep definition (canonical JSON, sweep.h), pamsim_version,
-//                      sweep_file, base_path, created_utc
+//   meta(key, value)   format, the sweep definition (canonical JSON, sweep.h), trials (the
+//                      sweep's count), pamsim_version, sweep_file, base_path, created_utc;
+//                      shard ("I/N") in a shard's database; merged_from in a merged one
 //   trials(trial INTEGER PRIMARY KEY, point, seed_index, seed, <one column per axis key>,
 //          status, message, <every metric of summary.json>; NULL where undefined, and all
 //          NULL for a trial that failed to run)
@@ -13,6 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sim/sweep/sqlite_file.h"
@@ -40,12 +42,15 @@ struct DbValue {
 
 class ResultsDb {
  public:
-  // Creates `path` for `sweep`; throws InputError if it exists or cannot be written.
-  static ResultsDb create(const std::string& path, const SweepDefinition& sweep);
-  // Opens `path` to finish `sweep`, as its only writer; throws InputError if it is missing,
-  // not a pamsim sweep database, holds a different sweep definition (naming what differs),
-  // or another process is writing to it.
-  static ResultsDb open_to_resume(const std::string& path, const SweepDefinition& sweep);
+  // Creates `path` for `sweep` (or one shard of it); throws InputError if it exists or
+  // cannot be written.
+  static ResultsDb create(const std::string& path, const SweepDefinition& sweep,
+                          const SweepShard& shard = {});
+  // Opens `path` to finish `sweep` (or its `shard`), as its only writer; throws InputError if
+  // it is missing, not a pamsim sweep database, holds a different sweep definition (naming
+  // what differs) or another shard, or another process is writing to it.
+  static ResultsDb open_to_resume(const std::string& path, const SweepDefinition& sweep,
+                                  const SweepShard& shard = {});
   // Opens an existing sweep database to read it (export, report), also on read-only media
   // (open_sqlite_file); nothing is written. Throws InputError if `path` is missing, cannot
   // be read or is not a sweep database.
@@ -77,6 +82,7 @@ class ResultsDb {
   ResultsDb(sqlite3* db, std::string path);
   static ResultsDb open_as(const std::string& path, DbAccess access);
   void exec(const std::string& sql) const;
+  void put_meta(const std::vector<std::pair<std::string, std::string>>& entries);
   [[noreturn]] void fail(const std::string& what) const;
   void lock_for_writing();
   void close();

@@ -1,6 +1,7 @@
 // sqlite_file.cc: see sqlite_file.h.
 #include "sim/sweep/sqlite_file.h"
 
+#include <fcntl.h>
 #include <sqlite3.h>
 #include <unistd.h>
 
@@ -8,9 +9,11 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
 #include <system_error>
 
 #include "pam_actuator/input_error.h"
+#include "sim/io/temp_path.h"
 
 namespace pamsim {
 namespace {
@@ -27,9 +30,8 @@ std::string why_not_writable(const std::string& path) {
   return "";
 }
 
-// `path` as an SQLite URI that opens it immutable (no locks, no -shm: readable on read-only
-// media), with the characters a URI gives meaning escaped.
-std::string immutable_uri(const std::string& path) {
+// `path` as an SQLite URI with `parameters` (the characters a URI gives meaning escaped).
+std::string uri_of(const std::string& path, const std::string& parameters) {
   std::string uri = "file:";
   for (const char c : path) {
     if (c == '?' || c == '#' || c == '%') {
@@ -40,10 +42,88 @@ std::string immutable_uri(const std::string& path) {
       uri += c;
     }
   }
-  return uri + "?immutable=1";
+  return uri + "?" + parameters;
+}
+
+// fsync(2) on the folder holding `path`, so a new name in it is durable (best effort).
+void sync_folder_of(const std::string& path) {
+  std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  if (dir.empty()) dir = ".";
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
 }
 
 }  // namespace
+
+std::string read_only_uri(const std::string& path) {
+  return uri_of(path, why_not_writable(path).empty() ? "mode=ro" : "immutable=1");
+}
+
+void StatementDeleter::operator()(sqlite3_stmt* s) const { sqlite3_finalize(s); }
+
+Statement prepare_statement(sqlite3* db, const std::string& sql) {
+  sqlite3_stmt* s = nullptr;
+  if (sqlite3_prepare_v2(db, sql.c_str(), -1, &s, nullptr) != SQLITE_OK) {
+    sqlite3_finalize(s);
+    return nullptr;
+  }
+  return Statement(s);
+}
+
+std::string quoted_identifier(const std::string& name) {
+  std::string out = "\"";
+  for (char c : name) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+void create_sqlite_file(const std::string& path, const std::string& what,
+                        const std::string& exists_hint,
+                        const std::function<void(const std::string& tmp)>& fill) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec)) {
+    throw InputError(path + ": already exists; " + exists_hint);
+  }
+  // a WAL left by a killed writer whose database was then deleted would be replayed into the
+  // new one: refuse rather than mix two databases
+  for (const char* suffix : {"-wal", "-shm", "-journal"}) {
+    if (std::filesystem::exists(path + suffix, ec)) {
+      throw InputError(path + suffix + ": left over from an earlier database at " + path +
+                       "; remove it to make a new one there");
+    }
+  }
+  std::unique_ptr<TempPath> tmp_guard;   // removes the temp name however this ends
+  try {
+    tmp_guard = std::make_unique<TempPath>(path, TempKind::kFile);
+  } catch (const InputError&) {
+    throw InputError(path + ": cannot create the " + what + " (is the folder writable?)");
+  }
+  const std::string& tmp = tmp_guard->path();
+  try {
+    fill(tmp);
+  } catch (const std::exception& e) {
+    std::string why = e.what();
+    const bool about_tmp = why.rfind(tmp + ": ", 0) == 0;
+    // a bad input `fill` read names that input; anything about the new file (a full disk)
+    // names the database, not its temp
+    if (!about_tmp && dynamic_cast<const InputError*>(&e)) throw;
+    if (about_tmp) why = why.substr(tmp.size() + 2);
+    throw std::runtime_error(path + ": cannot create the " + what + " (" + why + ")");
+  }
+  // its content on disk before its name is
+  const int fd = ::open(tmp.c_str(), O_RDONLY | O_CLOEXEC);
+  const bool synced = fd >= 0 && ::fsync(fd) == 0;
+  if (fd >= 0) ::close(fd);
+  if (!synced) {
+    throw std::runtime_error(path + ": cannot create the " + what + " (fsync: " +
+                             std::strerror(errno) + ")");
+  }
+  if (::link(tmp.c_str(), path.c_str()) != 0) {
+    throw InputError(path + ": cannot create the " + what + " (" + std::strerror(errno) + ")");
+  }
+  sync_folder_of(path);
+}
 
 sqlite3* open_sqlite_file(const std::string& path, DbAccess access, const std::string& what) {
   std::error_code ec;
@@ -67,7 +147,7 @@ sqlite3* open_sqlite_file(const std::string& path, DbAccess access, const std::s
                        "results a killed run left uncommitted to the file: copy both to a "
                        "writable folder to read them");
     }
-    name = immutable_uri(path);
+    name = uri_of(path, "immutable=1");   // no locks, no -shm: readable on read-only media
     flags |= SQLITE_OPEN_URI;
   }
   sqlite3* db = nullptr;

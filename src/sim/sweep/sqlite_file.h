@@ -3,14 +3,28 @@
 // writer finds out that it cannot write before it runs anything.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
 #include "sim/io/outputs.h"
 
 struct sqlite3;
+struct sqlite3_stmt;
 
 namespace pamsim {
+
+// A prepared statement, finalized when it goes.
+struct StatementDeleter {
+  void operator()(sqlite3_stmt* s) const;
+};
+using Statement = std::unique_ptr<sqlite3_stmt, StatementDeleter>;
+
+// `sql` prepared on `db`, or null if it does not prepare (sqlite3_errmsg says why).
+Statement prepare_statement(sqlite3* db, const std::string& sql);
+
+// `name` as an SQL identifier, quoted (axis keys hold dots).
+std::string quoted_identifier(const std::string& name);
 
 enum class DbAccess {
   kRead,   // export, report: nothing is written
@@ -26,6 +40,23 @@ enum class DbAccess {
 // Either way the file must read as an SQLite database. Throws InputError "<path>: <problem>";
 // the caller owns the handle (sqlite3_close).
 sqlite3* open_sqlite_file(const std::string& path, DbAccess access, const std::string& what);
+
+// Creates the database `path` whole or not at all: refuses an existing `path` (InputError
+// "<path>: already exists; <exists_hint>") or a journal left beside it by an earlier database,
+// makes an empty file beside it exclusively (SQLite takes it for a new database), calls `fill`
+// with that file's name to build the database (closing it before returning), then links it
+// into place (link(2) refuses a file made meanwhile) and syncs the folder so the new name
+// survives a power cut. Any failure removes the temp file. An error `fill` throws about the
+// temp file is rethrown as std::runtime_error naming `path`; an InputError about anything
+// else (an input `fill` read) passes unchanged.
+void create_sqlite_file(const std::string& path, const std::string& what,
+                        const std::string& exists_hint,
+                        const std::function<void(const std::string& tmp)>& fill);
+
+// An SQLite URI that reads the existing database `path` without writing it: immutable where
+// its folder or the file cannot be written (read-only media, no -shm can be made), read-only
+// otherwise. For ATTACH on a connection opened with SQLITE_OPEN_URI.
+std::string read_only_uri(const std::string& path);
 
 // For a command about to create or open the database `db_path` (given with --db): refuses a
 // path that names a folder (suggesting `<db_path>/<file_name>`), and makes the database's

@@ -248,6 +248,30 @@ std::string AxisValue::toml() const {
   return s;
 }
 
+std::string SweepShard::text() const {
+  return std::to_string(index) + "/" + std::to_string(count);
+}
+
+SweepShard parse_sweep_shard(const std::string& text, const std::string& source) {
+  const auto bad = [&] {
+    return InputError(source + " must be I/N with 0 <= I < N, got '" + text + "'");
+  };
+  const std::size_t slash = text.find('/');
+  if (slash == std::string::npos) throw bad();
+  // a decimal integer that fills its part of the text, or -1
+  const auto number = [](const std::string& part) -> std::int64_t {
+    std::int64_t value = -1;
+    const char* end = part.data() + part.size();
+    const auto [ptr, ec] = std::from_chars(part.data(), end, value);
+    return part.empty() || ec != std::errc() || ptr != end ? -1 : value;
+  };
+  SweepShard shard;
+  shard.index = number(text.substr(0, slash));
+  shard.count = number(text.substr(slash + 1));
+  if (shard.index < 0 || shard.count < 1 || shard.index >= shard.count) throw bad();
+  return shard;
+}
+
 std::int64_t SweepDefinition::points() const {
   return axes.empty() ? 0 : static_cast<std::int64_t>(point_values.size() / axes.size());
 }

@@ -75,6 +75,27 @@ struct SweepDefinition {
   std::string canonical_json() const;
 };
 
+// A deterministic share of a sweep's trials for one machine of a cluster (`--shard I/N`,
+// 0 <= I < N): trial t belongs to shard t mod N. Every trial is in exactly one shard, the
+// shards' sizes differ by at most one, and each holds every point's trials in turn, so trials
+// whose cost depends on the point spread evenly over the shards.
+struct SweepShard {
+  std::int64_t index = 0;
+  std::int64_t count = 1;   // 1: the whole sweep
+
+  bool whole() const { return count == 1; }
+  bool holds(std::int64_t trial) const { return trial % count == index; }
+  // How many of the trials 0..total-1 this shard holds.
+  std::int64_t trials_of(std::int64_t total) const {
+    return total / count + (index < total % count ? 1 : 0);
+  }
+  std::string text() const;   // "I/N"
+};
+
+// Parses "I/N" (decimal integers, N >= 1, 0 <= I < N). Throws InputError
+// "<source> must be I/N with 0 <= I < N, got '<text>'" (source names the option).
+SweepShard parse_sweep_shard(const std::string& text, const std::string& source);
+
 // Reads and validates a sweep file, including every point's scenario. Throws InputError
 // "<file>: <key> <problem>" for the first problem found.
 SweepDefinition load_sweep(const std::string& path);

@@ -80,6 +80,7 @@ SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
   const std::vector<bool> finished = db.finished_trials(total);
   SweepRunResult result;
   for (bool f : finished) result.already_done += f ? 1 : 0;
+  const SweepShard& shard = options.shard;
 
   std::atomic<std::int64_t> next{0};
   std::atomic<bool> abort{false};   // the writer failed: workers stop too
@@ -96,7 +97,7 @@ SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
     while (!stopping()) {
       const std::int64_t t = next++;
       if (t >= total) break;
-      if (finished[static_cast<std::size_t>(t)]) continue;
+      if (!shard.holds(t) || finished[static_cast<std::size_t>(t)]) continue;
       TrialRecord record = run_one(sweep, cache, t);
       std::lock_guard<std::mutex> lock(mutex);
       queue.push_back(std::move(record));
@@ -134,7 +135,7 @@ SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
     throw;
   }
   for (auto& t : pool) t.join();
-  result.interrupted = stored < total;
+  result.interrupted = stored < shard.trials_of(total);
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -19,6 +19,7 @@ namespace pamsim {
 
 struct SweepRunOptions {
   int threads = 1;
+  SweepShard shard;   // the trials to run: the whole sweep, or one shard of it
   // Set (e.g. by a SIGINT handler) to stop: trials in flight finish and are committed,
   // no new one starts.
   const std::atomic<bool>* stop = nullptr;
@@ -34,7 +35,7 @@ struct SweepRunResult {
   double wall_time_s = 0;
 };
 
-// Runs every trial of `sweep` not yet in `db`. Trial failures (divergence, an exception in a
+// Runs every trial of `sweep` (of `options.shard`) not yet in `db`. Trial failures (divergence, an exception in a
 // trial) are stored with their status and message; the sweep goes on. Throws InputError if
 // threads < 1, std::runtime_error if the database cannot be written.
 SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,

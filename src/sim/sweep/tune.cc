@@ -37,7 +37,6 @@
 #include "sim/io/outputs.h"
 #include "sim/io/scenario_file.h"
 #include "sim/io/staged_outputs.h"
-#include "sim/io/temp_path.h"
 #include "sim/sweep/report.h"
 #include "sim/sweep/sqlite_file.h"
 
@@ -207,18 +206,10 @@ TuneEvaluation score(const TuneDefinition& def, const std::vector<double>& value
 
 // --- the database -------------------------------------------------------------------------
 
-struct StatementDeleter {
-  void operator()(sqlite3_stmt* s) const { sqlite3_finalize(s); }
-};
-using Statement = std::unique_ptr<sqlite3_stmt, StatementDeleter>;
-
 Statement prepare(sqlite3* db, const std::string& sql) {
-  sqlite3_stmt* s = nullptr;
-  if (sqlite3_prepare_v2(db, sql.c_str(), -1, &s, nullptr) != SQLITE_OK) {
-    sqlite3_finalize(s);
-    throw std::runtime_error(std::string("tune database: ") + sqlite3_errmsg(db));
-  }
-  return Statement(s);
+  Statement s = prepare_statement(db, sql);
+  if (!s) throw std::runtime_error(std::string("tune database: ") + sqlite3_errmsg(db));
+  return s;
 }
 
 sqlite3* open_db(const std::string& path, int flags) {
@@ -503,15 +494,8 @@ void TuneDb::exec(const std::string& sql) const {
 }
 
 TuneDb TuneDb::create(const std::string& path, const TuneDefinition& def) {
-  std::error_code ec;
-  if (fs::exists(path, ec)) {
-    throw InputError(path + ": exists; give --resume to continue it, or another --db");
-  }
-  // built under a temp name and renamed, so a half-made database never exists
-  // (an empty file made exclusively, which SQLite takes as a new database)
-  TempPath tmp_guard(path, TempKind::kFile);   // removed however this ends
-  const std::string& tmp = tmp_guard.path();
-  {
+  create_sqlite_file(path, "tuning database", "give --resume to continue it, or another --db",
+                     [&](const std::string& tmp) {
     TuneDb db(open_db(tmp, SQLITE_OPEN_READWRITE), tmp);
     std::string params, objectives;
     for (std::size_t i = 0; i < def.parameters.size(); ++i)
@@ -522,35 +506,26 @@ TuneDb TuneDb::create(const std::string& path, const TuneDefinition& def) {
       objectives +=
           ", objective" + std::to_string(i) + " REAL, fitness" + std::to_string(i) + " REAL";
     }
-    try {
-      db.exec(
-          "CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT);"
-          "CREATE TABLE evaluations(evaluation INTEGER PRIMARY KEY" +
-          params + objectives +
-          ", violation REAL, trials INTEGER, ok INTEGER);"
-          "CREATE TABLE trials(evaluation INTEGER, seed INTEGER, noise_scale REAL, status TEXT,"
-          " message TEXT, metrics TEXT, PRIMARY KEY(evaluation, seed, noise_scale));");
-      Statement s = prepare(db.db_, "INSERT INTO meta VALUES (?, ?)");
-      for (const auto& [k, v] : std::vector<std::pair<std::string, std::string>>{
-               {"kind", "pamsim tune"},
-               {"tune_definition", def.canonical_json()},
-               {"tune_file", def.file},
-               {"pamsim_version", PAMSIM_VERSION}}) {
-        sqlite3_bind_text(s.get(), 1, k.c_str(), -1, SQLITE_TRANSIENT);
-        sqlite3_bind_text(s.get(), 2, v.c_str(), -1, SQLITE_TRANSIENT);
-        if (sqlite3_step(s.get()) != SQLITE_DONE) throw std::runtime_error(tmp + ": cannot write");
-        sqlite3_reset(s.get());
-      }
-    } catch (...) {
-      db.close();
-      throw;
+    db.exec(
+        "CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT);"
+        "CREATE TABLE evaluations(evaluation INTEGER PRIMARY KEY" +
+        params + objectives +
+        ", violation REAL, trials INTEGER, ok INTEGER);"
+        "CREATE TABLE trials(evaluation INTEGER, seed INTEGER, noise_scale REAL, status TEXT,"
+        " message TEXT, metrics TEXT, PRIMARY KEY(evaluation, seed, noise_scale));");
+    Statement s = prepare(db.db_, "INSERT INTO meta VALUES (?, ?)");
+    for (const auto& [k, v] : std::vector<std::pair<std::string, std::string>>{
+             {"kind", "pamsim tune"},
+             {"tune_definition", def.canonical_json()},
+             {"tune_file", def.file},
+             {"pamsim_version", PAMSIM_VERSION}}) {
+      sqlite3_bind_text(s.get(), 1, k.c_str(), -1, SQLITE_TRANSIENT);
+      sqlite3_bind_text(s.get(), 2, v.c_str(), -1, SQLITE_TRANSIENT);
+      if (sqlite3_step(s.get()) != SQLITE_DONE) throw std::runtime_error(tmp + ": cannot write");
+      sqlite3_reset(s.get());
     }
-  }
-  // link(2) refuses an existing target, where rename would replace a file made meanwhile
-  if (::link(tmp.c_str(), path.c_str()) != 0) {
-    throw InputError(path + ": cannot create the tuning database (" + std::strerror(errno) + ")");
-  }
-  return open_to_resume(path, def);   // (the guard removes the temp name, the link stays)
+  });
+  return open_to_resume(path, def);
 }
 
 TuneDb TuneDb::open_to_resume(const std::string& path, const TuneDefinition& def) {
