@@ -23,7 +23,7 @@ deps:
 	bash scripts/install-deps.sh
 
 configure: deps
-	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DPAMSIM_MPI=ON
 
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)

@@ -19,6 +19,7 @@ packages=(
   python3                                    # scripts/findings.py and the demo's summary line
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev                   # make fuzz: libFuzzer and clang's sanitizer runtimes
+  libopenmpi-dev openmpi-bin                 # sweeps over MPI ranks (-DPAMSIM_MPI=ON, mpirun)
 )
 
 missing=()

@@ -8,10 +8,12 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <signal.h>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 
@@ -25,6 +27,10 @@
 #include "sim/core/runner.h"
 #include "sim/sweep/sweep.h"
 #include "sim/sweep/sweep_runner.h"
+#ifdef PAMSIM_HAVE_MPI
+#include "pam_actuator/format.h"
+#include "sim/sweep/mpi_sweep.h"
+#endif
 
 namespace pamsim {
 namespace {
@@ -38,7 +44,16 @@ struct SweepOptions {
   std::string shard;
 };
 
-void sweep(const SweepOptions& opt) {
+// Where the trials run when not on this machine's threads: rank 0 of an MPI job hands them
+// to the other ranks, which start once it has opened the database and said so.
+struct RemoteTrials {
+  std::string where;                       // " on 2 MPI worker ranks"
+  std::function<void()> database_opened;
+  std::function<SweepRunResult(const SweepDefinition&, ResultsDb&, const SweepRunOptions&)> run;
+};
+
+// The sweep on this machine's threads, or with `remote` (when not null).
+void run_sweep_command(const SweepOptions& opt, const RemoteTrials* remote) {
   const int threads = resolve_thread_count(opt.threads);
   const SweepShard shard = opt.shard.empty() ? SweepShard{} : parse_sweep_shard(opt.shard, "--shard");
   const SweepDefinition def = load_sweep(opt.sweep_file);   // everything validated first
@@ -57,6 +72,7 @@ void sweep(const SweepOptions& opt) {
   ResultsDb db = opt.resume && exists ? ResultsDb::open_to_resume(db_path, def, shard)
                                       : ResultsDb::create(db_path, def, shard);
   if (folder) folder->keep();
+  if (remote) remote->database_opened();
   const std::string made_by = db.meta("pamsim_version");
   if (made_by != PAMSIM_VERSION) {
     std::cerr << "pamsim sweep: warning: " << db_path << " was started by pamsim " << made_by
@@ -65,8 +81,9 @@ void sweep(const SweepOptions& opt) {
   std::cerr << "pamsim sweep: " << def.points() << " points x " << def.seeds << " seeds = "
             << def.trials() << " trials (" << sweep_design_name(def.design) << ")";
   if (!shard.whole()) std::cerr << ", shard " << shard.text() << ": " << trials << " trials";
-  std::cerr << " on " << threads << (threads == 1 ? " thread" : " threads") << " into "
-            << db_path << "\n";
+  if (remote) std::cerr << remote->where;
+  else std::cerr << " on " << threads << (threads == 1 ? " thread" : " threads");
+  std::cerr << " into " << db_path << "\n";
 
   StopOnSignal stop_on_signal;
   ProgressReporter progress("pamsim sweep", trials, db.trial_count(), std::cerr,
@@ -76,7 +93,8 @@ void sweep(const SweepOptions& opt) {
   run_options.shard = shard;
   run_options.stop = &stop_requested();
   run_options.on_progress = [&](std::int64_t stored) { progress.update(stored); };
-  const SweepRunResult r = run_sweep(def, db, run_options);
+  const SweepRunResult r =
+      remote ? remote->run(def, db, run_options) : run_sweep(def, db, run_options);
   const std::int64_t stored = r.already_done + r.ran;
   progress.finish(stored);
 
@@ -101,6 +119,59 @@ void sweep(const SweepOptions& opt) {
   }
   std::cerr << "pamsim sweep: next: pamsim export " << db_path << " --csv FILE; pamsim report "
             << db_path << "\n";
+}
+
+#ifdef PAMSIM_HAVE_MPI
+// A rank other than 0 of an MPI job: waits for rank 0 to open the database, then runs the
+// trials it hands out, on --threads threads (default: this node's cores shared among its
+// ranks). Says nothing: rank 0 reports for the job.
+void run_mpi_worker(const SweepOptions& opt, const MpiSession& mpi) {
+  if (!mpi.broadcast_go(false)) return;   // rank 0 refused the sweep and said why
+  SweepDefinition def;
+  std::string load_error;
+  try {
+    def = load_sweep(opt.sweep_file);
+  } catch (const std::exception& e) {
+    load_error = e.what();
+  }
+  const int threads = opt.threads > 0
+      ? resolve_thread_count(opt.threads)
+      : std::max(1, resolve_thread_count(0) / mpi.ranks_on_this_node());
+  StopOnSignal stop_on_signal;
+  work_mpi_sweep(mpi, def, threads, &stop_requested(), load_error);
+}
+#endif
+
+void sweep(const SweepOptions& opt) {
+#ifdef PAMSIM_HAVE_MPI
+  if (MpiSession::launched()) {
+    MpiSession mpi;
+    if (mpi.rank() > 0) return run_mpi_worker(opt, mpi);
+    if (mpi.size() > 1) {
+      RemoteTrials ranks;
+      ranks.where = " on " + std::to_string(mpi.size() - 1) + " MPI worker ranks";
+      ranks.database_opened = [&] { mpi.broadcast_go(true); };
+      ranks.run = [&](const SweepDefinition& def, ResultsDb& db, const SweepRunOptions& o) {
+        return coordinate_mpi_sweep(mpi, def, db, o);
+      };
+      try {
+        return run_sweep_command(opt, &ranks);
+      } catch (const CommandExit&) {
+        throw;   // interrupted: the workers have sent what they ran and ended
+      } catch (const std::exception& e) {
+        // refused before the database was open: the workers are told and end quietly
+        if (!mpi.decided()) {
+          mpi.broadcast_go(false);
+          throw;
+        }
+        // later (the database cannot be written): the workers would wait for ever
+        std::cerr << "pamsim: error: " << printable_message(e.what()) << "\n";
+        mpi.abort(1);
+      }
+    }
+  }
+#endif
+  run_sweep_command(opt, nullptr);
 }
 
 }  // namespace

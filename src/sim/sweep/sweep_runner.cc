@@ -18,32 +18,6 @@ namespace {
 
 constexpr auto kProgressInterval = std::chrono::milliseconds(200);   // progress when idle
 
-// A worker's scenario and model for the point it is on.
-class PointCache {
- public:
-  explicit PointCache(const SweepDefinition& sweep) : sweep_(sweep) {}
-
-  // The scenario and model of `point`, loading the model only when the point changes it.
-  void move_to(std::int64_t point) {
-    if (point == point_) return;
-    point_ = -1;
-    Scenario next = load_scenario_text(sweep_.base_text, sweep_.base_path, sweep_.overrides(point));
-    if (!model_ || !same_trial_model(next, scenario_)) {
-      model_ = std::make_unique<TrialModel>(load_trial_model(next));
-    }
-    scenario_ = std::move(next);
-    point_ = point;
-  }
-  const Scenario& scenario() const { return scenario_; }
-  const TrialModel& model() const { return *model_; }
-
- private:
-  const SweepDefinition& sweep_;
-  std::int64_t point_ = -1;
-  Scenario scenario_;
-  std::unique_ptr<TrialModel> model_;
-};
-
 // A trial that could not run: status "failed" and why (the database stores no metrics).
 TrialSummary failed_summary(std::uint64_t seed, const std::string& why) {
   TrialSummary s;
@@ -53,22 +27,36 @@ TrialSummary failed_summary(std::uint64_t seed, const std::string& why) {
   return s;
 }
 
-TrialRecord run_one(const SweepDefinition& sweep, PointCache& cache, std::int64_t trial) {
+}  // namespace
+
+SweepTrialRunner::SweepTrialRunner(const SweepDefinition& sweep) : sweep_(sweep) {}
+SweepTrialRunner::~SweepTrialRunner() = default;
+
+void SweepTrialRunner::move_to(std::int64_t point) {
+  if (point == point_) return;
+  point_ = -1;
+  Scenario next = load_scenario_text(sweep_.base_text, sweep_.base_path, sweep_.overrides(point));
+  if (!model_ || !same_trial_model(next, scenario_)) {
+    model_ = std::make_unique<TrialModel>(load_trial_model(next));
+  }
+  scenario_ = std::move(next);
+  point_ = point;
+}
+
+TrialRecord SweepTrialRunner::run(std::int64_t trial) {
   TrialRecord record;
   record.trial = trial;
-  record.point = trial / sweep.seeds;
-  record.seed_index = trial % sweep.seeds;
-  const std::uint64_t seed = sweep.seed_of(trial);
+  record.point = trial / sweep_.seeds;
+  record.seed_index = trial % sweep_.seeds;
+  const std::uint64_t seed = sweep_.seed_of(trial);
   try {
-    cache.move_to(record.point);
-    record.summary = run_trial(cache.model(), cache.scenario(), seed, false).summary;
+    move_to(record.point);
+    record.summary = run_trial(*model_, scenario_, seed, false).summary;
   } catch (const std::exception& e) {   // anything but a divergence (that is a status already)
     record.summary = failed_summary(seed, e.what());
   }
   return record;
 }
-
-}  // namespace
 
 SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
                          const SweepRunOptions& options) {
@@ -93,12 +81,12 @@ SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
     return abort.load() || (options.stop && options.stop->load());
   };
   auto worker = [&] {
-    PointCache cache(sweep);
+    SweepTrialRunner runner(sweep);
     while (!stopping()) {
       const std::int64_t t = next++;
       if (t >= total) break;
       if (!shard.holds(t) || finished[static_cast<std::size_t>(t)]) continue;
-      TrialRecord record = run_one(sweep, cache, t);
+      TrialRecord record = runner.run(t);
       std::lock_guard<std::mutex> lock(mutex);
       queue.push_back(std::move(record));
       finished_cv.notify_one();   // commit it now: a kill loses only the trials still running

@@ -11,11 +11,34 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 
+#include "sim/core/scenario.h"
 #include "sim/sweep/results_db.h"
 #include "sim/sweep/sweep.h"
 
 namespace pamsim {
+
+struct TrialModel;
+
+// Runs single trials of a sweep on the calling thread (one runner per thread). It keeps the
+// scenario and model of the point it ran last, reloading the model only when a point changes
+// it; each trial gets a fresh mjData and CVODE context, so a record depends only on its trial
+// number. A trial that cannot run is returned with status "failed" and the reason.
+class SweepTrialRunner {
+ public:
+  explicit SweepTrialRunner(const SweepDefinition& sweep);
+  ~SweepTrialRunner();
+  TrialRecord run(std::int64_t trial);
+
+ private:
+  void move_to(std::int64_t point);
+
+  const SweepDefinition& sweep_;
+  std::int64_t point_ = -1;
+  Scenario scenario_;
+  std::unique_ptr<TrialModel> model_;
+};
 
 struct SweepRunOptions {
   int threads = 1;
