@@ -1,5 +1,6 @@
-// render_bench.cc: headless trial video on the drop-mass scenario, OSMesa (llvmpipe), one
-// process (one GL backend per process):
+// render_bench.cc: headless trial video on the drop-mass scenario, on the GL backend the
+// environment chooses (MUJOCO_GL=osmesa|egl, EGL_DEVICE_ID; default OSMesa, llvmpipe), one
+// backend per process: run it once per backend to compare them (a GPU with MUJOCO_GL=egl):
 //   BM_RenderTrial/640x480/fast       end to end: GL and encoder set-up, the 3 s trial
 //                                     simulated, 90 frames rendered at 30 fps and encoded to
 //                                     an MP4 (ultrafast); the issue asks >= 60 frames/s
@@ -46,10 +47,13 @@ void BM_RenderTrial(benchmark::State& state, int width, int height, RenderQualit
   video.height_px = height;
   video.fps = kFps;
   video.quality = quality;
+  video.backend = choose_gl_backend("");
+  video.egl_device = choose_egl_device(-1);
   long frames = 0;
   for (auto _ : state) {
     const RenderedTrial r = run_rendered_trial(arm, sc, sc.seed, video, false);
     frames = r.frames;
+    state.SetLabel(r.gl);
     if (r.trial.summary.status != "ok") state.SkipWithError("trial diverged");
   }
   std::remove(video.mp4_path.c_str());
@@ -79,7 +83,8 @@ void BM_DrawFrame(benchmark::State& state, int width, int height, RenderQuality 
   const TrialModel arm = load_trial_model(sc);
   const MjDataPtr data = start_state(arm, sc);
   SceneRenderer renderer(arm.model.get(), arm.model_path,
-                         SceneRenderOptions{width, height, quality, "side", GlBackend::kOsmesa});
+                         SceneRenderOptions{width, height, quality, "side", choose_gl_backend(""),
+                                            choose_egl_device(-1)});
   for (auto _ : state) {
     renderer.draw_scene(data.get());
     renderer.draw_text("time", "1.200 s");
@@ -104,7 +109,7 @@ void BM_EncodeFrame(benchmark::State& state, int width, int height, const char* 
   {
     SceneRenderer renderer(arm.model.get(), arm.model_path,
                            SceneRenderOptions{width, height, RenderQuality::kFast, "side",
-                                              GlBackend::kOsmesa});
+                                              choose_gl_backend(""), choose_egl_device(-1)});
     renderer.draw_scene(data.get());
     const unsigned char* pixels = renderer.read_pixels();
     rgb.assign(pixels, pixels + 3 * static_cast<std::size_t>(width) * height);

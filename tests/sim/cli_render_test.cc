@@ -28,8 +28,10 @@ using pamsim_test::run_pamsim;
 class CliRenderTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    ::unsetenv("DISPLAY");
-    ::unsetenv("PAMSIM_GL_BACKEND");
+    for (const char* var : {"DISPLAY", "PAMSIM_GL_BACKEND", "MUJOCO_GL", "EGL_DEVICE_ID",
+                            "MUJOCO_EGL_DEVICE_ID"}) {
+      ::unsetenv(var);
+    }
   }
 };
 
@@ -97,6 +99,57 @@ TEST_F(CliRenderTest, EglAndOsmesaDrawTheSameFrames) {
   }
 }
 
+// The GL line of a render's stderr ("pamsim: GL: ...").
+std::string gl_line(const std::string& err) {
+  const std::size_t at = err.find("pamsim: GL: ");
+  return at == std::string::npos ? "" : err.substr(at, err.find('\n', at) - at);
+}
+
+// EGL device selection on Mesa's software EGL device (EGL_MESA_device_software), which every
+// Mesa machine lists, GPU or not: chosen by --gpu, by EGL_DEVICE_ID and by MUJOCO_GL; its
+// frames are the same from run to run; the renderer is named; an unknown device is refused.
+TEST_F(CliRenderTest, EglDeviceIsChosenNamedAndDrawsTheSameFramesEveryRun) {
+  const fs::path dir = fresh_dir("render_egl_device");
+  const std::string common =
+      "render scenarios/drop_mass.toml --set sim.duration_s=0.2 --set drop.time_s=0.1 "
+      "--width 320 --height 180 --fps 10 --plot --png-dir ";
+  const CliResult a = run_pamsim(common + (dir / "a").string() + " --backend egl --gpu 0");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  EXPECT_EQ(gl_line(a.err).rfind("pamsim: GL: egl device 0 of ", 0), 0u) << a.err;
+  EXPECT_NE(gl_line(a.err).find("OpenGL "), std::string::npos) << a.err;
+  const CliResult b =
+      run_pamsim(common + (dir / "b").string(), "env MUJOCO_GL=egl EGL_DEVICE_ID=0");
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_EQ(gl_line(b.err), gl_line(a.err)) << "the environment chooses the same device";
+  for (const char* frame : {"frame_00000.png", "frame_00001.png"}) {
+    EXPECT_EQ(read_file(dir / "a" / frame), read_file(dir / "b" / frame)) << frame;
+  }
+  // no device asked for, no GPU: Mesa's surfaceless platform, or the first GPU where one is
+  const CliResult any = run_pamsim(common + (dir / "any").string() + " --backend egl");
+  ASSERT_EQ(any.exit_code, 0) << any.err;
+  EXPECT_EQ(gl_line(any.err).rfind("pamsim: GL: egl ", 0), 0u) << any.err;
+}
+
+// Where EGL gives no context (here: GLVND finds no vendor library), egl falls back to
+// osmesa and says why; a device asked for by number has no substitute.
+TEST_F(CliRenderTest, EglWithoutADriverFallsBackToOsmesaAndSaysWhy) {
+  const fs::path dir = fresh_dir("render_egl_fallback");
+  const std::string common =
+      "render scenarios/drop_mass.toml --set sim.duration_s=0.2 --set drop.time_s=0.1 "
+      "--width 320 --height 180 --fps 10 --backend egl --png-dir ";
+  const std::string no_driver = "env __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json";
+  const CliResult r = run_pamsim(common + (dir / "fallback").string(), no_driver);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(gl_line(r.err).rfind("pamsim: GL: osmesa (egl unavailable: ", 0), 0u) << r.err;
+  expect_exactly(dir / "fallback", {"frame_00000.png", "frame_00001.png"});
+  const CliResult named = run_pamsim(common + (dir / "named").string() + " --gpu 0", no_driver);
+  EXPECT_EQ(named.exit_code, 2) << named.err;
+  EXPECT_EQ(line_count(named.err), 1) << named.err;
+  EXPECT_NE(named.err.find("--gpu 0: no such EGL device; the devices here: none"),
+            std::string::npos) << named.err;
+  EXPECT_FALSE(fs::exists(dir / "named"));
+}
+
 TEST_F(CliRenderTest, BadInputIsOneLineNonZeroAndLeavesNothing) {
   const fs::path dir = fresh_dir("render_bad");
   const fs::path blocker = dir / "a_file";
@@ -125,6 +178,9 @@ TEST_F(CliRenderTest, BadInputIsOneLineNonZeroAndLeavesNothing) {
       render + "-o " + mp4 + " --quality best",
       render + "-o " + mp4 + " --camera top",
       render + "-o " + mp4 + " --backend vulkan",
+      render + "-o " + mp4 + " --backend egl --gpu 99",           // no such EGL device
+      render + "-o " + mp4 + " --backend egl --gpu -3",
+      render + "-o " + mp4 + " --gpu 0",                          // a device, but osmesa
       "render scenarios/missing.toml -o " + mp4,
       render + "--png-dir " + dir.string(),                     // holds other files
       "run scenarios/drop_mass.toml --trials 2 --video " + mp4 + " --out " + (dir / "o").string(),

@@ -1,5 +1,6 @@
-// gl_context_test.cc: choosing the GL backend (option over environment over the default,
-// one clear line for an unknown name) and the one-backend-per-process rule.
+// gl_context_test.cc: choosing the GL backend (option over MUJOCO_GL over PAMSIM_GL_BACKEND
+// over the default, one clear line for an unknown name), the EGL device (option over
+// EGL_DEVICE_ID over MUJOCO_EGL_DEVICE_ID) and the one-backend-per-process rule.
 #include "sim/render/gl_context.h"
 
 #include <gtest/gtest.h>
@@ -42,6 +43,48 @@ TEST(GlContextTest, UnknownBackendNamesWhereItCameFrom) {
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "PAMSIM_GL_BACKEND must be osmesa or egl, got 'glx'");
   }
+}
+
+TEST(GlContextTest, MujocoGlIsHonouredBeforePamsimGlBackend) {
+  GlBackendEnv env("osmesa");
+  ::setenv("MUJOCO_GL", "egl", 1);
+  EXPECT_EQ(choose_gl_backend(""), GlBackend::kEgl);
+  EXPECT_EQ(choose_gl_backend("osmesa"), GlBackend::kOsmesa);
+  ::setenv("MUJOCO_GL", "glfw", 1);   // needs a window: not for headless rendering
+  try {
+    choose_gl_backend("");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "MUJOCO_GL must be osmesa or egl, got 'glfw'");
+  }
+  ::unsetenv("MUJOCO_GL");
+}
+
+TEST(GlContextTest, EglDeviceFromOptionThenEnvironment) {
+  ::unsetenv("EGL_DEVICE_ID");
+  ::unsetenv("MUJOCO_EGL_DEVICE_ID");
+  EXPECT_EQ(choose_egl_device(-1).index, -1);
+  EXPECT_EQ(choose_egl_device(2).index, 2);
+  EXPECT_EQ(choose_egl_device(2).source, "--gpu");
+  ::setenv("MUJOCO_EGL_DEVICE_ID", "3", 1);
+  EXPECT_EQ(choose_egl_device(-1).index, 3);
+  ::setenv("EGL_DEVICE_ID", "1", 1);
+  EXPECT_EQ(choose_egl_device(-1).index, 1);
+  EXPECT_EQ(choose_egl_device(-1).source, "EGL_DEVICE_ID");
+  EXPECT_EQ(choose_egl_device(0).index, 0);
+  for (const char* bad : {"x", "-1", "1.5", "1 ", "99999999999"}) {
+    ::setenv("EGL_DEVICE_ID", bad, 1);
+    try {
+      choose_egl_device(-1);
+      FAIL() << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()),
+                std::string("EGL_DEVICE_ID must be a device number >= 0, got '") + bad + "'");
+    }
+  }
+  EXPECT_THROW(choose_egl_device(-2), InputError);
+  ::unsetenv("EGL_DEVICE_ID");
+  ::unsetenv("MUJOCO_EGL_DEVICE_ID");
 }
 
 TEST(GlContextTest, OneBackendPerProcess) {

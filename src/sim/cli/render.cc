@@ -1,8 +1,9 @@
 // render.cc: `pamsim render SCENARIO.toml [--set key=value ...] [-o FILE.mp4]
 // [--png-dir DIR] [--width W] [--height H] [--fps F] [--quality fast|default] [--camera NAME]
-// [--backend osmesa|egl] [--plot]`: runs the scenario's trial (its own seed) and renders it
-// headlessly while it runs (TrialVideo): H.264 MP4 (default renders/<scenario>/<scenario>.mp4)
-// and/or numbered PNGs. The physics is the same as `pamsim run`'s, bit for bit.
+// [--backend osmesa|egl] [--gpu N] [--plot]`: runs the scenario's trial (its own seed) and
+// renders it headlessly while it runs (TrialVideo): H.264 MP4 (default
+// renders/<scenario>/<scenario>.mp4) and/or numbered PNGs, saying which GL renderer drew it.
+// The physics is the same as `pamsim run`'s, bit for bit.
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -23,7 +24,8 @@ struct RenderCommandOptions {
   std::vector<std::string> overrides;
   VideoOptions video;
   std::string quality = "default";
-  std::string backend;   // empty: $PAMSIM_GL_BACKEND, else osmesa
+  std::string backend;   // empty: $MUJOCO_GL, $PAMSIM_GL_BACKEND, else osmesa
+  int gpu = -1;          // EGL device; -1: $EGL_DEVICE_ID, else the first GPU
 };
 
 void render(RenderCommandOptions opt) {
@@ -31,6 +33,12 @@ void render(RenderCommandOptions opt) {
   VideoOptions& video = opt.video;
   video.quality = parse_render_quality(opt.quality);
   video.backend = choose_gl_backend(opt.backend);
+  video.egl_device = choose_egl_device(opt.gpu);
+  if (opt.gpu >= 0 && video.backend != GlBackend::kEgl) {   // (a device in the environment
+                                                            // does not concern osmesa)
+    throw InputError(video.egl_device.source + " " + std::to_string(video.egl_device.index) +
+                     " chooses an EGL device, but the backend is osmesa: add --backend egl");
+  }
   if (video.mp4_path.empty() && video.png_dir.empty()) {
     const std::string name = std::filesystem::path(opt.scenario).stem().string();
     video.mp4_path = "renders/" + name + "/" + name + ".mp4";
@@ -46,9 +54,9 @@ void render(RenderCommandOptions opt) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const std::string where = video.mp4_path.empty() ? video.png_dir + "/" : video.mp4_path;
+  std::cerr << "pamsim: GL: " << r.gl << "\n";
   std::cerr << "pamsim: " << where << ": " << r.frames << " frames of " << video.width_px << "x"
-            << video.height_px << " at " << video.fps << " fps (" << gl_backend_name(video.backend)
-            << ", " << r.encoder << ") in " << wall_s << " s: " << r.frames / wall_s
+            << video.height_px << " at " << video.fps << " fps (" << r.encoder << ") in " << wall_s << " s: " << r.frames / wall_s
             << " frames/s\n";
   const TrialSummary& s = r.trial.summary;
   if (s.status != "ok") {
@@ -79,7 +87,11 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--camera", v.camera, "A camera named in the model")->capture_default_str();
   cmd->add_option("--backend", opt->backend,
-                  "GL context: osmesa or egl (default $PAMSIM_GL_BACKEND, else osmesa)");
+                  "GL context: osmesa or egl (default $MUJOCO_GL, else $PAMSIM_GL_BACKEND, else "
+                  "osmesa); egl falls back to osmesa where EGL gives no context");
+  cmd->add_option("--gpu", opt->gpu,
+                  "EGL device number, with --backend egl (default $EGL_DEVICE_ID, else the "
+                  "first GPU, else Mesa's software renderer)");
   cmd->add_flag("--plot", v.plot, "Live plots of angle and pressures, bottom left");
   cmd->callback([opt] { render(*opt); });
 }

@@ -3,8 +3,10 @@
 // Why libEGL is loaded with dlopen instead of linked: MuJoCo's GL loader looks for
 // eglGetProcAddress in the process before OSMesaGetProcAddress. Were libEGL linked, the
 // osmesa backend would get GLVND's EGL entry points, which draw nothing into an OSMesa
-// context. Loaded on demand with RTLD_GLOBAL, it is visible to MuJoCo only in a process that
-// chose egl, and MuJoCo then binds GL through eglGetProcAddress as it should.
+// context. So libEGL is loaded on demand, privately (RTLD_LOCAL), and made visible to the
+// process (RTLD_NOLOAD | RTLD_GLOBAL) only once an EGL context exists: MuJoCo then binds GL
+// through eglGetProcAddress as it should, and a process in which EGL failed can still fall
+// back to OSMesa.
 #include "sim/render/gl_context.h"
 
 #include <GL/osmesa.h>
@@ -15,6 +17,7 @@
 #include <EGL/eglext.h>
 #endif
 
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -30,6 +33,8 @@ namespace pamsim {
 namespace {
 
 constexpr const char* kBackendEnvVar = "PAMSIM_GL_BACKEND";
+constexpr const char* kMujocoBackendEnvVar = "MUJOCO_GL";   // as MuJoCo's Python bindings
+constexpr const char* kDeviceEnvVars[] = {"EGL_DEVICE_ID", "MUJOCO_EGL_DEVICE_ID"};
 
 // MuJoCo binds GL functions once per process, through the first backend's loader. Throws if
 // another backend already drew in this process; with `claim`, records this one.
@@ -43,6 +48,19 @@ void check_backend_for_process(GlBackend backend, bool claim) {
                            ": MuJoCo binds GL functions once per process, use one backend");
   }
   if (claim) claimed = backend;
+}
+
+using GlGetString = const unsigned char* (*)(unsigned int);
+
+// "<vendor>, <renderer>, OpenGL <version>" of the current context, through `get_string`
+// (glGetString as the backend resolves it: the linked one may belong to another library).
+std::string gl_strings(GlGetString get_string) {
+  if (!get_string) return "unknown (no glGetString)";
+  const auto text = [&](unsigned int name) {
+    const unsigned char* s = get_string(name);
+    return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
+  };
+  return text(GL_VENDOR) + ", " + text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION);
 }
 
 // ---- OSMesa ----
@@ -73,7 +91,17 @@ class OsMesaGlContext : public GlContext {
     }
   }
 
+  std::string description() const override {
+    return fallback_reason_.empty() ? "osmesa"
+                                    : "osmesa (egl unavailable: " + fallback_reason_ + ")";
+  }
+  std::string renderer() const override {
+    return gl_strings(reinterpret_cast<GlGetString>(OSMesaGetProcAddress("glGetString")));
+  }
+  void set_fallback_reason(std::string why) { fallback_reason_ = std::move(why); }
+
  private:
+  std::string fallback_reason_;   // why egl, asked for, was not used
   int width_;
   int height_;
   std::vector<unsigned char> color_buffer_;   // the default framebuffer, never read
@@ -97,13 +125,26 @@ struct EglApi {
   PFNEGLGETCURRENTCONTEXTPROC GetCurrentContext = nullptr;
   PFNEGLDESTROYCONTEXTPROC DestroyContext = nullptr;
   PFNEGLGETERRORPROC GetError = nullptr;
+  // EGL_EXT_device_enumeration, _device_query, _platform_device (null where missing)
+  PFNEGLQUERYDEVICESEXTPROC QueryDevices = nullptr;
+  PFNEGLQUERYDEVICESTRINGEXTPROC QueryDeviceString = nullptr;
+  PFNEGLGETPLATFORMDISPLAYEXTPROC GetPlatformDisplay = nullptr;
   std::string load_error;   // why the API is unusable, empty when it is
 };
+
+bool has_extension(const char* extensions, const char* name) {
+  if (!extensions) return false;
+  const std::size_t n = std::strlen(name);
+  for (const char* p = std::strstr(extensions, name); p; p = std::strstr(p + n, name)) {
+    if ((p == extensions || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
+  }
+  return false;
+}
 
 const EglApi& egl_api() {
   static const EglApi api = [] {
     EglApi a;
-    void* lib = dlopen("libEGL.so.1", RTLD_NOW | RTLD_GLOBAL);
+    void* lib = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);   // global once it works
     if (!lib) {
       const char* why = dlerror();
       a.load_error = std::string("cannot load libEGL.so.1 (") + (why ? why : "unknown") + ")";
@@ -125,71 +166,176 @@ const EglApi& egl_api() {
     load(&a.GetCurrentContext, "eglGetCurrentContext");
     load(&a.DestroyContext, "eglDestroyContext");
     load(&a.GetError, "eglGetError");
+    if (!a.load_error.empty()) return a;
+    const char* client = a.QueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    if (has_extension(client, "EGL_EXT_platform_base")) {
+      a.GetPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+          a.GetProcAddress("eglGetPlatformDisplayEXT"));
+    }
+    if (has_extension(client, "EGL_EXT_device_enumeration") &&
+        has_extension(client, "EGL_EXT_platform_device")) {
+      a.QueryDevices =
+          reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(a.GetProcAddress("eglQueryDevicesEXT"));
+      a.QueryDeviceString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
+          a.GetProcAddress("eglQueryDeviceStringEXT"));
+    }
     return a;
   }();
   return api;
 }
 
-bool has_extension(const char* extensions, const char* name) {
-  if (!extensions) return false;
-  const std::size_t n = std::strlen(name);
-  for (const char* p = std::strstr(extensions, name); p; p = std::strstr(p + n, name)) {
-    if ((p == extensions || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
-  }
-  return false;
-}
-
 std::string egl_error(const EglApi& egl, const char* call) {
   char hex[16];
   std::snprintf(hex, sizeof(hex), "0x%04x", static_cast<unsigned>(egl.GetError()));
-  return std::string("--backend egl: ") + call + " failed (EGL error " + hex + ")";
+  return std::string(call) + " failed (EGL error " + hex + ")";
 }
 
-// Mesa's surfaceless platform needs neither a display server nor a GPU; other EGL
-// implementations get their default display.
-EGLDisplay open_display(const EglApi& egl) {
-  const char* client_extensions = egl.QueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-  if (has_extension(client_extensions, "EGL_MESA_platform_surfaceless")) {
-    auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-        egl.GetProcAddress("eglGetPlatformDisplayEXT"));
-    if (get_platform_display) {
-      return get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-    }
+// One EGL device: its handle and what to call it.
+struct EglDevice {
+  EGLDeviceEXT handle = nullptr;
+  std::string name;        // its DRM node, or "software" for Mesa's llvmpipe device
+  bool software = false;
+};
+
+std::vector<EglDevice> egl_devices(const EglApi& egl) {
+  std::vector<EglDevice> devices;
+  if (!egl.QueryDevices || !egl.QueryDeviceString || !egl.GetPlatformDisplay) return devices;
+  EGLint n = 0;
+  if (egl.QueryDevices(0, nullptr, &n) != EGL_TRUE || n <= 0) return devices;
+  std::vector<EGLDeviceEXT> handles(static_cast<std::size_t>(n));
+  if (egl.QueryDevices(n, handles.data(), &n) != EGL_TRUE) return devices;
+  for (EGLint i = 0; i < n; ++i) {
+    EglDevice d;
+    d.handle = handles[static_cast<std::size_t>(i)];
+    const char* extensions = egl.QueryDeviceString(d.handle, EGL_EXTENSIONS);
+    d.software = has_extension(extensions, "EGL_MESA_device_software");
+    const char* node = has_extension(extensions, "EGL_EXT_device_drm")
+                           ? egl.QueryDeviceString(d.handle, EGL_DRM_DEVICE_FILE_EXT) : nullptr;
+    d.name = node ? node : d.software ? "software" : "no DRM node";
+    devices.push_back(d);
   }
-  return egl.GetDisplay(EGL_DEFAULT_DISPLAY);
+  return devices;
+}
+
+// "0 (software), 1 (/dev/dri/renderD128)", or "none".
+std::string device_list(const std::vector<EglDevice>& devices) {
+  std::string list;
+  for (std::size_t i = 0; i < devices.size(); ++i) {
+    list += (i ? ", " : "") + std::to_string(i) + " (" + devices[i].name + ")";
+  }
+  return list.empty() ? "none" : list;
+}
+
+// A display with a desktop-OpenGL context on it, or the reason there is none.
+struct EglSetup {
+  EGLDisplay display = EGL_NO_DISPLAY;
+  EGLContext context = EGL_NO_CONTEXT;
+  std::string description;
+  std::string error;   // empty on success
+};
+
+// Initialises `display` and makes an RGBA context with depth and stencil for desktop OpenGL,
+// without a surface (MuJoCo draws into its own framebuffer), current on return.
+EglSetup make_context(const EglApi& egl, EGLDisplay display, std::string description) {
+  EglSetup setup;
+  setup.description = std::move(description);
+  if (display == EGL_NO_DISPLAY) {
+    setup.error = egl_error(egl, "eglGetDisplay");
+    return setup;
+  }
+  if (egl.Initialize(display, nullptr, nullptr) != EGL_TRUE) {
+    setup.error = egl_error(egl, "eglInitialize");
+    return setup;
+  }
+  const EGLint config_attribs[] = {
+      EGL_SURFACE_TYPE, EGL_PBUFFER_BIT,   EGL_RED_SIZE,        8, EGL_GREEN_SIZE, 8,
+      EGL_BLUE_SIZE,    8,                 EGL_ALPHA_SIZE,      8, EGL_DEPTH_SIZE, 24,
+      EGL_STENCIL_SIZE, 8,                 EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  EGLConfig config = nullptr;
+  EGLint n_configs = 0;
+  if (egl.ChooseConfig(display, config_attribs, &config, 1, &n_configs) != EGL_TRUE ||
+      n_configs < 1) {
+    setup.error = "no RGBA config with depth and stencil for OpenGL";
+    return setup;
+  }
+  if (egl.BindAPI(EGL_OPENGL_API) != EGL_TRUE) {
+    setup.error = egl_error(egl, "eglBindAPI");
+    return setup;
+  }
+  EGLContext context = egl.CreateContext(display, config, EGL_NO_CONTEXT, nullptr);
+  if (context == EGL_NO_CONTEXT) {
+    setup.error = egl_error(egl, "eglCreateContext");
+    return setup;
+  }
+  if (egl.MakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context) != EGL_TRUE) {
+    setup.error = egl_error(egl, "eglMakeCurrent");
+    egl.DestroyContext(display, context);
+    return setup;
+  }
+  setup.display = display;
+  setup.context = context;
+  return setup;
+}
+
+// The context on the device asked for, else on the first GPU, else on Mesa's surfaceless
+// platform (no display server, no GPU), else on the default display. Throws InputError for a
+// device asked for that does not exist or gives no context, and when nothing gives one.
+EglSetup open_egl(const EglApi& egl, const EglDeviceChoice& choice) {
+  const std::vector<EglDevice> devices = egl_devices(egl);
+  const auto on_device = [&](std::size_t i) {
+    return make_context(egl, egl.GetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i].handle,
+                                                    nullptr),
+                        "egl device " + std::to_string(i) + " of " +
+                            std::to_string(devices.size()) + " (" + devices[i].name + ")");
+  };
+  if (choice.index >= 0) {
+    if (static_cast<std::size_t>(choice.index) >= devices.size()) {
+      throw InputError(choice.source + " " + std::to_string(choice.index) +
+                       ": no such EGL device; the devices here: " + device_list(devices));
+    }
+    EglSetup setup = on_device(static_cast<std::size_t>(choice.index));
+    if (!setup.error.empty()) {
+      throw InputError(choice.source + " " + std::to_string(choice.index) + ": " + setup.error);
+    }
+    return setup;
+  }
+  std::string errors;
+  const auto tried = [&](const EglSetup& s) {
+    errors += (errors.empty() ? "" : "; ") + s.description + ": " + s.error;
+  };
+  for (std::size_t i = 0; i < devices.size(); ++i) {
+    if (devices[i].software) continue;
+    EglSetup setup = on_device(i);
+    if (setup.error.empty()) return setup;
+    tried(setup);
+  }
+  const char* client = egl.QueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  if (egl.GetPlatformDisplay && has_extension(client, "EGL_MESA_platform_surfaceless")) {
+    EglSetup setup = make_context(
+        egl, egl.GetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr),
+        "egl surfaceless (Mesa)");
+    if (setup.error.empty()) return setup;
+    tried(setup);
+  }
+  EglSetup setup = make_context(egl, egl.GetDisplay(EGL_DEFAULT_DISPLAY), "egl default display");
+  if (setup.error.empty()) return setup;
+  tried(setup);
+  throw InputError("--backend egl: no context (" + errors + ")");
 }
 
 class EglGlContext : public GlContext {
  public:
-  EglGlContext() : egl_(egl_api()) {
+  explicit EglGlContext(const EglDeviceChoice& choice) : egl_(egl_api()) {
     if (!egl_.load_error.empty()) throw InputError("--backend egl: " + egl_.load_error);
-
-    // display, then an RGBA config with depth and stencil for desktop OpenGL
-    display_ = open_display(egl_);
-    if (display_ == EGL_NO_DISPLAY) throw InputError(egl_error(egl_, "eglGetDisplay"));
-    if (egl_.Initialize(display_, nullptr, nullptr) != EGL_TRUE) {
-      throw InputError(egl_error(egl_, "eglInitialize"));
-    }
-    const EGLint config_attribs[] = {
-        EGL_SURFACE_TYPE, EGL_PBUFFER_BIT,   EGL_RED_SIZE,        8, EGL_GREEN_SIZE, 8,
-        EGL_BLUE_SIZE,    8,                 EGL_ALPHA_SIZE,      8, EGL_DEPTH_SIZE, 24,
-        EGL_STENCIL_SIZE, 8,                 EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
-    EGLConfig config = nullptr;
-    EGLint n_configs = 0;
-    if (egl_.ChooseConfig(display_, config_attribs, &config, 1, &n_configs) != EGL_TRUE ||
-        n_configs < 1) {
-      throw InputError("--backend egl: no RGBA config with depth and stencil for OpenGL");
-    }
-
-    // a desktop OpenGL context without a surface: MuJoCo draws into its own framebuffer
-    if (egl_.BindAPI(EGL_OPENGL_API) != EGL_TRUE) throw InputError(egl_error(egl_, "eglBindAPI"));
-    context_ = egl_.CreateContext(display_, config, EGL_NO_CONTEXT, nullptr);
-    if (context_ == EGL_NO_CONTEXT) throw InputError(egl_error(egl_, "eglCreateContext"));
-    try {
-      make_current();
-    } catch (...) {   // the destructor does not run for a constructor that throws
+    EglSetup setup = open_egl(egl_, choice);
+    display_ = setup.display;
+    context_ = setup.context;
+    description_ = setup.description;
+    // now MuJoCo may see libEGL (see the top of this file)
+    if (!dlopen("libEGL.so.1", RTLD_NOW | RTLD_NOLOAD | RTLD_GLOBAL)) {
+      egl_.MakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
       egl_.DestroyContext(display_, context_);
-      throw;
+      throw InputError("--backend egl: cannot make libEGL.so.1 visible to MuJoCo");
     }
   }
 
@@ -203,12 +349,18 @@ class EglGlContext : public GlContext {
 
   void make_current() override {
     if (egl_.MakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE) {
-      throw InputError(egl_error(egl_, "eglMakeCurrent"));
+      throw InputError("--backend egl: " + egl_error(egl_, "eglMakeCurrent"));
     }
+  }
+
+  std::string description() const override { return description_; }
+  std::string renderer() const override {
+    return gl_strings(reinterpret_cast<GlGetString>(egl_.GetProcAddress("glGetString")));
   }
 
  private:
   const EglApi& egl_;
+  std::string description_;
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
 };
@@ -229,26 +381,66 @@ GlBackend parse_gl_backend(const std::string& name, const std::string& source) {
 
 GlBackend choose_gl_backend(const std::string& option_value) {
   if (!option_value.empty()) return parse_gl_backend(option_value, "--backend");
-  const char* env = std::getenv(kBackendEnvVar);
-  if (env && env[0] != '\0') return parse_gl_backend(env, kBackendEnvVar);
+  for (const char* var : {kMujocoBackendEnvVar, kBackendEnvVar}) {
+    const char* env = std::getenv(var);
+    if (env && env[0] != '\0') return parse_gl_backend(env, var);
+  }
   return GlBackend::kOsmesa;
 }
 
-std::unique_ptr<GlContext> create_gl_context(GlBackend backend, int width, int height) {
-  // checked before, claimed once the context exists: a backend that failed to start does not
-  // block another
-  check_backend_for_process(backend, false);
-  std::unique_ptr<GlContext> context;
-  if (backend == GlBackend::kOsmesa) {
-    context = std::make_unique<OsMesaGlContext>(width, height);
-  } else {
-#ifdef PAMSIM_HAVE_EGL
-    context = std::make_unique<EglGlContext>();
-#else
-    throw InputError("--backend egl: this pamsim was built without EGL (libegl-dev missing)");
-#endif
+EglDeviceChoice choose_egl_device(int option_value) {
+  if (option_value >= 0) return {option_value, "--gpu"};
+  if (option_value != -1) {
+    throw InputError("--gpu must be a device number >= 0, got '" + std::to_string(option_value) +
+                     "'");
   }
-  check_backend_for_process(backend, true);
+  for (const char* var : kDeviceEnvVars) {
+    const char* env = std::getenv(var);
+    if (!env || env[0] == '\0') continue;
+    int index = -1;
+    const char* end = env + std::strlen(env);
+    const auto [ptr, ec] = std::from_chars(env, end, index);
+    if (ec != std::errc() || ptr != end || index < 0) {
+      throw InputError(std::string(var) + " must be a device number >= 0, got '" + env + "'");
+    }
+    return {index, var};
+  }
+  return {};
+}
+
+std::unique_ptr<GlContext> create_gl_context(GlBackend backend, int width, int height,
+                                             const EglDeviceChoice& device) {
+  std::unique_ptr<GlContext> context;
+  if (backend == GlBackend::kEgl) {
+    // checked before, claimed once the context exists: a backend that failed to start does
+    // not block another
+    check_backend_for_process(GlBackend::kEgl, false);
+#ifdef PAMSIM_HAVE_EGL
+    try {
+      context = std::make_unique<EglGlContext>(device);
+      check_backend_for_process(GlBackend::kEgl, true);
+      return context;
+    } catch (const InputError& e) {
+      if (device.index >= 0) throw;   // that device was asked for: no substitute
+      check_backend_for_process(GlBackend::kOsmesa, false);
+      auto fallback = std::make_unique<OsMesaGlContext>(width, height);
+      fallback->set_fallback_reason(e.what());
+      context = std::move(fallback);
+    }
+#else
+    if (device.index >= 0) {
+      throw InputError(device.source + ": this pamsim was built without EGL (libegl-dev missing)");
+    }
+    check_backend_for_process(GlBackend::kOsmesa, false);
+    auto fallback = std::make_unique<OsMesaGlContext>(width, height);
+    fallback->set_fallback_reason("this pamsim was built without EGL (libegl-dev missing)");
+    context = std::move(fallback);
+#endif
+  } else {
+    check_backend_for_process(GlBackend::kOsmesa, false);
+    context = std::make_unique<OsMesaGlContext>(width, height);
+  }
+  check_backend_for_process(GlBackend::kOsmesa, true);
   return context;
 }
 

@@ -71,7 +71,8 @@ SceneRenderer::SceneRenderer(const mjModel* model, const std::string& model_path
   viewport_ = {0, 0, options.width_px, options.height_px};
 
   // GL context, then MuJoCo's scene and render context drawing offscreen
-  gl_ = create_gl_context(options.backend, options.width_px, options.height_px);
+  gl_ = create_gl_context(options.backend, options.width_px, options.height_px,
+                          options.egl_device);
   scene_.reset(new mjvScene);
   mjv_defaultScene(scene_.get());
   mjv_makeScene(model_.get(), scene_.get(), kMaxSceneGeoms);
@@ -102,6 +103,11 @@ SceneRenderer::~SceneRenderer() {
     gl_->make_current();
   } catch (const std::exception&) {
   }
+}
+
+std::string SceneRenderer::gl_in_use() const {
+  gl_->make_current();
+  return gl_->description() + ": " + gl_->renderer();
 }
 
 void SceneRenderer::draw_scene(const mjData* data) {

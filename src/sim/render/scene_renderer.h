@@ -31,6 +31,7 @@ struct SceneRenderOptions {
   RenderQuality quality = RenderQuality::kDefault;
   std::string camera = "side";   // a camera named in the model
   GlBackend backend = GlBackend::kOsmesa;
+  EglDeviceChoice egl_device;    // egl only
 };
 
 // Throws InputError naming `model_path` if `model` has no camera `camera` (the message lists
@@ -52,6 +53,8 @@ class SceneRenderer {
 
   int width_px() const { return viewport_.width; }
   int height_px() const { return viewport_.height; }
+  // The GL context in use: "<description>: <vendor>, <renderer>, OpenGL <version>".
+  std::string gl_in_use() const;
 
   // Draws the state `data` (of the model given at construction) over the whole frame.
   void draw_scene(const mjData* data);

@@ -156,7 +156,7 @@ TrialVideo::TrialVideo(const TrialModel& model, const Scenario& sc, const VideoO
       frame_count_(frames_in(sc.duration_s, options.fps)),
       renderer_(model.model.get(), model.model_path,
                 SceneRenderOptions{options.width_px, options.height_px, options.quality,
-                                   options.camera, options.backend}) {
+                                   options.camera, options.backend, options.egl_device}) {
   if (options.plot) {
     plots_ = std::make_unique<Plots>();
     // the muscles in their tendons' colours, commands dimmer
@@ -263,6 +263,7 @@ RenderedTrial run_rendered_trial(const TrialModel& model, const Scenario& sc, st
   video.finish();
   rendered.frames = video.frames_written();
   rendered.encoder = video.encoder_name();
+  rendered.gl = video.gl_in_use();
   return rendered;
 }
 

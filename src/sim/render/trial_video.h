@@ -31,6 +31,7 @@ struct VideoOptions {
   RenderQuality quality = RenderQuality::kDefault;
   std::string camera = "side";
   GlBackend backend = GlBackend::kOsmesa;
+  EglDeviceChoice egl_device;   // egl only
   bool plot = false;      // live plots of angle and pressures
 };
 
@@ -57,6 +58,7 @@ class TrialVideo : public TrialObserver {
 
   long frames_written() const { return next_frame_; }
   std::string encoder_name() const;   // the MP4's H.264 encoder; "png" without an MP4
+  std::string gl_in_use() const { return renderer_.gl_in_use(); }   // SceneRenderer's
 
  private:
   struct Plots;
@@ -75,6 +77,7 @@ struct RenderedTrial {
   TrialResult trial;
   long frames = 0;       // written to each output
   std::string encoder;   // the MP4's H.264 encoder; "png" without an MP4
+  std::string gl;        // the GL context that drew it (SceneRenderer::gl_in_use)
 };
 
 // Runs `scenario`'s trial with `seed` on `model`, rendered as it runs into the outputs of
