@@ -12,6 +12,7 @@
 #include <atomic>
 #include <signal.h>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <iostream>
@@ -168,6 +169,16 @@ void sweep(const SweepOptions& opt) {
         std::cerr << "pamsim: error: " << printable_message(e.what()) << "\n";
         mpi.abort(1);
       }
+    }
+  }
+#else
+  // every rank would run the whole sweep into the same database
+  for (const char* var : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
+    const char* size = std::getenv(var);
+    if (size && std::atoi(size) > 1) {
+      throw InputError("pamsim sweep: this pamsim was built without MPI, so under mpirun every "
+                       "rank would run the whole sweep; build with -DPAMSIM_MPI=ON, or use "
+                       "--shard I/N");
     }
   }
 #endif
