@@ -4,8 +4,6 @@
 
 #include <sqlite3.h>
 
-#include <chrono>
-#include <ctime>
 #include <filesystem>
 #include <stdexcept>
 
@@ -95,15 +93,6 @@ class MergedDb {
   sqlite3* db_ = nullptr;
 };
 
-std::string utc_now() {
-  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof(buf), "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
 // The columns two runs of one trial agree on: all but the timing metrics.
 std::string deterministic_columns(const std::vector<std::string>& columns) {
   std::string list;
@@ -187,7 +176,7 @@ MergeResult merge_sweep_databases(const std::string& out, const std::vector<std:
 
     nlohmann::json merged_from = nlohmann::json::array();
     for (const std::string& part : parts) merged_from.push_back(part);
-    for (const auto& [key, value] : {std::pair<std::string, std::string>{"created_utc", utc_now()},
+    for (const auto& [key, value] : {std::pair<std::string, std::string>{"created_utc", utc_timestamp()},
                                      {"merged_from", merged_from.dump()}}) {
       Statement put = db.query("INSERT INTO main.meta VALUES (?, ?)", &key);
       sqlite3_bind_text(put.get(), 2, value.c_str(), -1, SQLITE_TRANSIENT);

@@ -210,7 +210,6 @@ SweepRunResult coordinate_mpi_sweep(const MpiSession& mpi, const SweepDefinition
   };
 
   int workers_left = mpi.size() - 1;
-  std::int64_t stored = result.already_done;
   std::vector<TrialRecord> batch;
   while (workers_left > 0) {
     // everything that has arrived, answered at once; then one commit for all of it
@@ -243,17 +242,12 @@ SweepRunResult coordinate_mpi_sweep(const MpiSession& mpi, const SweepDefinition
       if (want == -1) --workers_left;
     }
     if (!batch.empty()) {
-      db.insert(sweep, batch);
-      for (const TrialRecord& r : batch) result.diverged += r.summary.status != "ok" ? 1 : 0;
-      result.ran += static_cast<std::int64_t>(batch.size());
-      stored += static_cast<std::int64_t>(batch.size());
-      batch.clear();
-      if (options.on_progress) options.on_progress(stored);
+      store_trials(sweep, db, batch, options, result);
     } else {
       std::this_thread::sleep_for(kPollInterval);
     }
   }
-  result.interrupted = stored < options.shard.trials_of(total);
+  result.interrupted = result.already_done + result.ran < options.shard.trials_of(total);
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

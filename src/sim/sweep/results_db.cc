@@ -7,7 +7,6 @@
 #include <sys/file.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <ctime>
@@ -36,15 +35,6 @@ sqlite3* open_database(const std::string& path, int flags) {
   }
   sqlite3_busy_timeout(db, 10000);
   return db;
-}
-
-std::string utc_now() {
-  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof(buf), "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
 }
 
 // The first top-level field in which two canonical definitions differ.
@@ -143,7 +133,7 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
         {"pamsim_version", PAMSIM_VERSION},
         {"sweep_file", sweep.file},
         {"base_path", fs::absolute(sweep.base_path).lexically_normal().string()},
-        {"created_utc", utc_now()}};
+        {"created_utc", utc_timestamp()}};
     if (!shard.whole()) meta.emplace_back("shard", shard.text());
     db.put_meta(meta);
     db.exec("COMMIT; PRAGMA journal_mode=WAL;");

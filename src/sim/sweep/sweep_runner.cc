@@ -58,6 +58,15 @@ TrialRecord SweepTrialRunner::run(std::int64_t trial) {
   return record;
 }
 
+void store_trials(const SweepDefinition& sweep, ResultsDb& db, std::vector<TrialRecord>& batch,
+                  const SweepRunOptions& options, SweepRunResult& result) {
+  db.insert(sweep, batch);
+  for (const TrialRecord& r : batch) result.diverged += r.summary.status != "ok" ? 1 : 0;
+  result.ran += static_cast<std::int64_t>(batch.size());
+  batch.clear();
+  if (options.on_progress) options.on_progress(result.already_done + result.ran);
+}
+
 SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
                          const SweepRunOptions& options) {
   if (options.threads < 1) {
@@ -99,7 +108,6 @@ SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
   for (int i = 0; i < options.threads; ++i) pool.emplace_back(worker);
 
   // the writer: commit whatever has finished, until every worker is done
-  std::int64_t stored = result.already_done;
   std::vector<TrialRecord> batch;
   try {
     for (bool last = false; !last;) {
@@ -110,12 +118,7 @@ SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
         batch.swap(queue);
         last = workers_left == 0;
       }
-      db.insert(sweep, batch);
-      for (const TrialRecord& r : batch) result.diverged += r.summary.status != "ok" ? 1 : 0;
-      result.ran += static_cast<std::int64_t>(batch.size());
-      stored += static_cast<std::int64_t>(batch.size());
-      batch.clear();
-      if (options.on_progress) options.on_progress(stored);
+      store_trials(sweep, db, batch, options, result);
     }
   } catch (...) {
     abort = true;
@@ -123,7 +126,7 @@ SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
     throw;
   }
   for (auto& t : pool) t.join();
-  result.interrupted = stored < shard.trials_of(total);
+  result.interrupted = result.already_done + result.ran < shard.trials_of(total);
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

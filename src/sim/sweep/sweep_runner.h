@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include "sim/core/scenario.h"
 #include "sim/sweep/results_db.h"
@@ -57,6 +58,11 @@ struct SweepRunResult {
   bool interrupted = false;        // stopped before every trial was stored
   double wall_time_s = 0;
 };
+
+// Stores `batch` in `db` in one transaction, counts it into `result` (ran, diverged) and
+// reports the trials stored so far to options.on_progress; empties `batch`. For the runners.
+void store_trials(const SweepDefinition& sweep, ResultsDb& db, std::vector<TrialRecord>& batch,
+                  const SweepRunOptions& options, SweepRunResult& result);
 
 // Runs every trial of `sweep` (of `options.shard`) not yet in `db`. Trial failures (divergence, an exception in a
 // trial) are stored with their status and message; the sweep goes on. Throws InputError if
