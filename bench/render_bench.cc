@@ -30,6 +30,11 @@ namespace {
 
 constexpr int kFps = 30;
 
+// The EGL device the environment asks for, for the egl backend.
+EglDeviceChoice egl_device_for(GlBackend backend) {
+  return backend == GlBackend::kEgl ? choose_egl_device(-1) : EglDeviceChoice{};
+}
+
 Scenario drop_mass() {
   return load_scenario(std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml");
 }
@@ -48,7 +53,7 @@ void BM_RenderTrial(benchmark::State& state, int width, int height, RenderQualit
   video.fps = kFps;
   video.quality = quality;
   video.backend = choose_gl_backend("");
-  video.egl_device = choose_egl_device(-1);
+  video.egl_device = egl_device_for(video.backend);
   long frames = 0;
   for (auto _ : state) {
     const RenderedTrial r = run_rendered_trial(arm, sc, sc.seed, video, false);
@@ -84,7 +89,7 @@ void BM_DrawFrame(benchmark::State& state, int width, int height, RenderQuality 
   const MjDataPtr data = start_state(arm, sc);
   SceneRenderer renderer(arm.model.get(), arm.model_path,
                          SceneRenderOptions{width, height, quality, "side", choose_gl_backend(""),
-                                            choose_egl_device(-1)});
+                                            egl_device_for(choose_gl_backend(""))});
   for (auto _ : state) {
     renderer.draw_scene(data.get());
     renderer.draw_text("time", "1.200 s");
@@ -109,7 +114,8 @@ void BM_EncodeFrame(benchmark::State& state, int width, int height, const char* 
   {
     SceneRenderer renderer(arm.model.get(), arm.model_path,
                            SceneRenderOptions{width, height, RenderQuality::kFast, "side",
-                                              choose_gl_backend(""), choose_egl_device(-1)});
+                                              choose_gl_backend(""),
+                                              egl_device_for(choose_gl_backend(""))});
     renderer.draw_scene(data.get());
     const unsigned char* pixels = renderer.read_pixels();
     rgb.assign(pixels, pixels + 3 * static_cast<std::size_t>(width) * height);

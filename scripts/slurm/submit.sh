@@ -16,6 +16,8 @@ cpus=${4:-16}
 mkdir -p "$out/logs"
 array=$(sbatch --parsable --array="0-$((shards - 1))" --cpus-per-task="$cpus" \
   --output="$out/logs/shard-%a.log" scripts/slurm/shard.sbatch "$sweep" "$out" "$shards")
-merge=$(sbatch --parsable --dependency="afterok:${array%%;*}" --output="$out/logs/merge.log" \
-  scripts/slurm/merge.sbatch "$out" "$shards")
+# afterok: the merge waits for every shard; if one fails, Slurm cancels the merge
+# (--kill-on-invalid-dep) rather than leave it pending: rerun that shard, then the merge
+merge=$(sbatch --parsable --dependency="afterok:${array%%;*}" --kill-on-invalid-dep=yes \
+  --output="$out/logs/merge.log" scripts/slurm/merge.sbatch "$out" "$shards")
 echo "pamsim sweep: job array $array ($shards shards), merge job $merge -> $out/sweep.db"

@@ -203,11 +203,15 @@ TEST_F(ShardedSmokeSweep, SlurmScriptsRunTheShardsAndMergeThem) {
                              " " + out.string() + " 3 > /dev/null 2>&1";
     ASSERT_EQ(std::system(task.c_str()), 0) << task;
   }
-  // a task of an array that does not start at 0 would leave shards out: refused
-  const std::string shifted = in_source + "SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_COUNT=3 "
-                              "SLURM_ARRAY_TASK_MIN=1 bash scripts/slurm/shard.sbatch " + kSmoke +
-                              " " + out.string() + " 3 > /dev/null 2>&1";
-  EXPECT_NE(std::system(shifted.c_str()), 0);
+  // shard 1 resubmitted alone (--array=1): it resumes its finished database, runs nothing
+  const std::string again = in_source + "SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_COUNT=1 "
+                            "SLURM_ARRAY_TASK_MIN=1 bash scripts/slurm/shard.sbatch " + kSmoke +
+                            " " + out.string() + " 3 2>&1 | grep -q '0 trials run'";
+  EXPECT_EQ(std::system(again.c_str()), 0) << again;
+  // a task that is not a shard (an array past SHARDS-1) is refused
+  const std::string past = in_source + "SLURM_ARRAY_TASK_ID=3 bash scripts/slurm/shard.sbatch " +
+                            kSmoke + " " + out.string() + " 3 > /dev/null 2>&1";
+  EXPECT_NE(std::system(past.c_str()), 0);
   const std::string merge = in_source + "bash scripts/slurm/merge.sbatch " + out.string() +
                             " 3 > /dev/null 2>&1";
   ASSERT_EQ(std::system(merge.c_str()), 0);

@@ -23,7 +23,6 @@ namespace {
 namespace fs = std::filesystem;
 using pamsim_test::fresh_dir;
 using pamsim_test::interruptible_sweep;
-using pamsim_test::kInterruptibleTrials;
 using pamsim_test::line_count;
 using pamsim_test::read_file;
 using pamsim_test::ReapOnExit;
@@ -32,8 +31,9 @@ using pamsim_test::wait_for_trials;
 
 #ifdef PAMSIM_MPIEXEC
 // Open MPI refuses root unless told (CI runs as root); --oversubscribe: 3 ranks on 2 cores.
-const std::string kMpirun = std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ") +
-                            PAMSIM_MPIEXEC + " --oversubscribe -np 3";
+const std::string kMpiEnv = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
+const std::string kMpiLaunch = std::string(PAMSIM_MPIEXEC) + " --oversubscribe -np 3";
+const std::string kMpirun = kMpiEnv + kMpiLaunch;
 #endif
 
 class CliMpiTest : public ::testing::Test {
@@ -85,6 +85,39 @@ TEST_F(CliMpiTest, ARefusedSweepEndsEveryRankWithOneLine) {
   EXPECT_EQ(read_file(db), "not a database");
 }
 
+// Ranks that cannot read the sweep file (started in another folder, the file named relative
+// to the source folder) say so through rank 0, which ends the job instead of waiting for them:
+// with one such rank the other runs every trial; with none left, one line and exit 1.
+TEST_F(CliMpiTest, RanksThatCannotReadTheSweepAreReportedAndTheJobEnds) {
+  const fs::path dir = fresh_dir("mpi_unreadable");
+  const std::string elsewhere = dir.string();
+  for (const char* lost : {"2", "1|2"}) {
+    const std::string db = (dir / (std::string(lost) == "2" ? "one_lost.db" : "all_lost.db")).string();
+    // every rank starts in the source folder; the lost ones move away before running pamsim
+    const std::string rank_cmd = std::string("sh -c 'case $OMPI_COMM_WORLD_RANK in ") + lost +
+                                 ") cd " + elsewhere + ";; esac; exec " + PAMSIM_BINARY +
+                                 " sweep scenarios/sweep_smoke.toml --threads 1 --db " + db + "'";
+    const std::string cmd = std::string("cd ") + PAMSIM_SOURCE_DIR + " && " + kMpiEnv + "timeout 120 " + kMpiLaunch +
+                            " " + rank_cmd + " > " + db + ".out 2> " + db + ".err";
+    const int status = std::system(cmd.c_str());
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const std::string err = read_file(db + ".err");
+    EXPECT_NE(code, 124) << lost << ": the job hung\n" << err;
+    EXPECT_NE(err.find("rank 2 runs no trials: scenarios/sweep_smoke.toml"), std::string::npos)
+        << err;
+    if (std::string(lost) == "2") {
+      EXPECT_EQ(code, 0) << err;
+      EXPECT_EQ(pamsim::ResultsDb::open_existing(db).trial_count(), 32);
+    } else {
+      EXPECT_EQ(code, 1) << err;
+      EXPECT_NE(err.find("pamsim: error: 2 of 2 worker ranks ran no trials (rank "),
+                std::string::npos) << err;
+      EXPECT_NE(err.find("0 of 32 trials stored; finish with: pamsim sweep "), std::string::npos)
+          << err;
+    }
+  }
+}
+
 // The pid of the pamsim process that is rank `rank` of the job marked with `marker`, or -1.
 pid_t rank_pid(const std::string& marker, int rank) {
   for (const auto& entry : fs::directory_iterator("/proc")) {
@@ -102,7 +135,8 @@ pid_t rank_pid(const std::string& marker, int rank) {
 
 TEST_F(CliMpiTest, AKilledRankEndsTheJobAndResumeFinishesWithoutRepeats) {
   const fs::path dir = fresh_dir("mpi_kill");
-  const fs::path sweep = interruptible_sweep(dir);
+  const fs::path sweep = interruptible_sweep(dir, 30);   // 360 trials, one thread per worker
+  const std::int64_t total = 3 * 4 * 30;
   const std::string ref = (dir / "ref.db").string(), db = (dir / "killed.db").string();
   ASSERT_EQ(run_pamsim("sweep " + sweep.string() + " --threads 2 --db " + ref).exit_code, 0);
   ASSERT_EQ(run_pamsim("export " + ref + " --csv " + ref + ".csv").exit_code, 0);
@@ -111,13 +145,13 @@ TEST_F(CliMpiTest, AKilledRankEndsTheJobAndResumeFinishesWithoutRepeats) {
   const pid_t job = ::fork();
   if (job == 0) {
     const std::string cmd = marker + " " + kMpirun + " " + PAMSIM_BINARY + " sweep " +
-                            sweep.string() + " --db " + db + " > " + db + ".log 2>&1";
+                            sweep.string() + " --threads 1 --db " + db + " > " + db + ".log 2>&1";
     ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
   ASSERT_GT(job, 0);
   ReapOnExit reap{job};
-  ASSERT_GT(wait_for_trials(db, kInterruptibleTrials / 3, job), 0) << read_file(db + ".log");
+  ASSERT_GT(wait_for_trials(db, total / 6, job), 0) << read_file(db + ".log");
   const pid_t worker = rank_pid(marker, 1);
   ASSERT_GT(worker, 0) << "rank 1 not found";
   ASSERT_EQ(::kill(worker, SIGKILL), 0);
@@ -128,12 +162,12 @@ TEST_F(CliMpiTest, AKilledRankEndsTheJobAndResumeFinishesWithoutRepeats) {
   EXPECT_NE(read_file(db + ".log").find("rank 1"), std::string::npos)   // mpirun names it
       << read_file(db + ".log");
   const std::int64_t kept = pamsim::ResultsDb::open_existing(db).trial_count();
-  EXPECT_GE(kept, kInterruptibleTrials / 3);
-  EXPECT_LT(kept, kInterruptibleTrials) << "killed too late to test a resume";
+  EXPECT_GE(kept, total / 6);
+  EXPECT_LT(kept, total);   // what rank 1 held is lost for this run
 
   const auto resumed = run_pamsim("sweep " + sweep.string() + " --resume --db " + db, kMpirun);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
-  EXPECT_NE(resumed.err.find(std::to_string(kInterruptibleTrials - kept) + " trials run"),
+  EXPECT_NE(resumed.err.find(std::to_string(total - kept) + " trials run"),
             std::string::npos) << resumed.err;
   ASSERT_EQ(run_pamsim("export " + db + " --csv " + db + ".csv").exit_code, 0);
   EXPECT_EQ(read_file(db + ".csv"), read_file(ref + ".csv"));

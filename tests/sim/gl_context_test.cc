@@ -1,5 +1,5 @@
-// gl_context_test.cc: choosing the GL backend (option over MUJOCO_GL over PAMSIM_GL_BACKEND
-// over the default, one clear line for an unknown name), the EGL device (option over
+// gl_context_test.cc: choosing the GL backend (option over PAMSIM_GL_BACKEND over MUJOCO_GL's
+// headless values over the default, one clear line for an unknown name), the EGL device (option over
 // EGL_DEVICE_ID over MUJOCO_EGL_DEVICE_ID) and the one-backend-per-process rule.
 #include "sim/render/gl_context.h"
 
@@ -45,19 +45,31 @@ TEST(GlContextTest, UnknownBackendNamesWhereItCameFrom) {
   }
 }
 
-TEST(GlContextTest, MujocoGlIsHonouredBeforePamsimGlBackend) {
-  GlBackendEnv env("osmesa");
-  ::setenv("MUJOCO_GL", "egl", 1);
-  EXPECT_EQ(choose_gl_backend(""), GlBackend::kEgl);
-  EXPECT_EQ(choose_gl_backend("osmesa"), GlBackend::kOsmesa);
-  ::setenv("MUJOCO_GL", "glfw", 1);   // needs a window: not for headless rendering
-  try {
-    choose_gl_backend("");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "MUJOCO_GL must be osmesa or egl, got 'glfw'");
+// Sets an environment variable for one scope, unsets it after (also when a test fails).
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const char* value) : name_(name) { ::setenv(name, value, 1); }
+  ~ScopedEnv() { ::unsetenv(name_); }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+ private:
+  const char* name_;
+};
+
+TEST(GlContextTest, MujocoGlCountsAfterPamsimGlBackendAndOnlyForHeadlessValues) {
+  ::unsetenv("PAMSIM_GL_BACKEND");
+  {
+    ScopedEnv mujoco("MUJOCO_GL", "egl");
+    EXPECT_EQ(choose_gl_backend(""), GlBackend::kEgl);
+    EXPECT_EQ(choose_gl_backend("osmesa"), GlBackend::kOsmesa);
+    GlBackendEnv own("osmesa");   // pamsim's own variable is the more specific
+    EXPECT_EQ(choose_gl_backend(""), GlBackend::kOsmesa);
   }
-  ::unsetenv("MUJOCO_GL");
+  for (const char* window_system : {"glfw", "glx", "EGL"}) {   // MuJoCo's, not headless
+    ScopedEnv mujoco("MUJOCO_GL", window_system);
+    EXPECT_EQ(choose_gl_backend(""), GlBackend::kOsmesa) << window_system;
+  }
 }
 
 TEST(GlContextTest, EglDeviceFromOptionThenEnvironment) {
@@ -66,14 +78,16 @@ TEST(GlContextTest, EglDeviceFromOptionThenEnvironment) {
   EXPECT_EQ(choose_egl_device(-1).index, -1);
   EXPECT_EQ(choose_egl_device(2).index, 2);
   EXPECT_EQ(choose_egl_device(2).source, "--gpu");
-  ::setenv("MUJOCO_EGL_DEVICE_ID", "3", 1);
+  ScopedEnv mujoco("MUJOCO_EGL_DEVICE_ID", "3");
   EXPECT_EQ(choose_egl_device(-1).index, 3);
-  ::setenv("EGL_DEVICE_ID", "1", 1);
-  EXPECT_EQ(choose_egl_device(-1).index, 1);
-  EXPECT_EQ(choose_egl_device(-1).source, "EGL_DEVICE_ID");
-  EXPECT_EQ(choose_egl_device(0).index, 0);
+  {
+    ScopedEnv own("EGL_DEVICE_ID", "1");
+    EXPECT_EQ(choose_egl_device(-1).index, 1);
+    EXPECT_EQ(choose_egl_device(-1).source, "EGL_DEVICE_ID");
+    EXPECT_EQ(choose_egl_device(0).index, 0);
+  }
   for (const char* bad : {"x", "-1", "1.5", "1 ", "99999999999"}) {
-    ::setenv("EGL_DEVICE_ID", bad, 1);
+    ScopedEnv own("EGL_DEVICE_ID", bad);
     try {
       choose_egl_device(-1);
       FAIL() << bad;
@@ -83,8 +97,6 @@ TEST(GlContextTest, EglDeviceFromOptionThenEnvironment) {
     }
   }
   EXPECT_THROW(choose_egl_device(-2), InputError);
-  ::unsetenv("EGL_DEVICE_ID");
-  ::unsetenv("MUJOCO_EGL_DEVICE_ID");
 }
 
 TEST(GlContextTest, OneBackendPerProcess) {

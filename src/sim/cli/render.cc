@@ -33,10 +33,10 @@ void render(RenderCommandOptions opt) {
   VideoOptions& video = opt.video;
   video.quality = parse_render_quality(opt.quality);
   video.backend = choose_gl_backend(opt.backend);
-  video.egl_device = choose_egl_device(opt.gpu);
-  if (opt.gpu >= 0 && video.backend != GlBackend::kEgl) {   // (a device in the environment
-                                                            // does not concern osmesa)
-    throw InputError(video.egl_device.source + " " + std::to_string(video.egl_device.index) +
+  if (video.backend == GlBackend::kEgl) {
+    video.egl_device = choose_egl_device(opt.gpu);
+  } else if (opt.gpu != -1) {   // (a device in the environment does not concern osmesa)
+    throw InputError("--gpu " + std::to_string(opt.gpu) +
                      " chooses an EGL device, but the backend is osmesa: add --backend egl");
   }
   if (video.mp4_path.empty() && video.png_dir.empty()) {

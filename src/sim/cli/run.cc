@@ -57,7 +57,7 @@ void run(const RunOptions& opt) {
     }
     video.mp4_path = opt.video;
     video.backend = choose_gl_backend("");
-    video.egl_device = choose_egl_device(-1);
+    if (video.backend == GlBackend::kEgl) video.egl_device = choose_egl_device(-1);
     validate_video_options(video, "--video");
   }
   const Scenario sc = load_scenario(opt.scenario, opt.overrides);

@@ -17,6 +17,7 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
@@ -107,9 +108,12 @@ void run_sweep_command(const SweepOptions& opt, const RemoteTrials* remote) {
   if (r.diverged > 0) std::cerr << "; " << r.diverged << " diverged or failed (see their status)";
   std::cerr << "\n";
   if (r.interrupted) {
-    std::cerr << "pamsim sweep: interrupted with " << stored << " of " << trials
-              << " trials stored; finish with: pamsim sweep " << opt.sweep_file << " --db "
-              << db_path << (shard.whole() ? "" : " --shard " + shard.text()) << " --resume\n";
+    const std::string finish = std::to_string(stored) + " of " + std::to_string(trials) +
+                               " trials stored; finish with: pamsim sweep " + opt.sweep_file +
+                               " --db " + db_path +
+                               (shard.whole() ? "" : " --shard " + shard.text()) + " --resume";
+    if (!r.incomplete_reason.empty()) throw std::runtime_error(r.incomplete_reason + "; " + finish);
+    std::cerr << "pamsim sweep: interrupted with " << finish << "\n";
     throw CommandExit(128 + stop_signal());   // the shell's code for that signal
   }
   std::cout << db_path << "\n";
@@ -165,6 +169,7 @@ void sweep(const SweepOptions& opt) {
           mpi.broadcast_go(false);
           throw;
         }
+        if (mpi.workers_done()) throw;   // nobody waits for rank 0 any more
         // later (the database cannot be written): the workers would wait for ever
         std::cerr << "pamsim: error: " << printable_message(e.what()) << "\n";
         mpi.abort(1);

@@ -17,6 +17,7 @@
 #include <EGL/eglext.h>
 #endif
 
+#include <atomic>
 #include <charconv>
 #include <cstdio>
 #include <cstdlib>
@@ -118,6 +119,7 @@ struct EglApi {
   PFNEGLQUERYSTRINGPROC QueryString = nullptr;
   PFNEGLGETDISPLAYPROC GetDisplay = nullptr;
   PFNEGLINITIALIZEPROC Initialize = nullptr;
+  PFNEGLTERMINATEPROC Terminate = nullptr;
   PFNEGLCHOOSECONFIGPROC ChooseConfig = nullptr;
   PFNEGLBINDAPIPROC BindAPI = nullptr;
   PFNEGLCREATECONTEXTPROC CreateContext = nullptr;
@@ -159,6 +161,7 @@ const EglApi& egl_api() {
     load(&a.QueryString, "eglQueryString");
     load(&a.GetDisplay, "eglGetDisplay");
     load(&a.Initialize, "eglInitialize");
+    load(&a.Terminate, "eglTerminate");
     load(&a.ChooseConfig, "eglChooseConfig");
     load(&a.BindAPI, "eglBindAPI");
     load(&a.CreateContext, "eglCreateContext");
@@ -234,19 +237,8 @@ struct EglSetup {
   std::string error;   // empty on success
 };
 
-// Initialises `display` and makes an RGBA context with depth and stencil for desktop OpenGL,
-// without a surface (MuJoCo draws into its own framebuffer), current on return.
-EglSetup make_context(const EglApi& egl, EGLDisplay display, std::string description) {
-  EglSetup setup;
-  setup.description = std::move(description);
-  if (display == EGL_NO_DISPLAY) {
-    setup.error = egl_error(egl, "eglGetDisplay");
-    return setup;
-  }
-  if (egl.Initialize(display, nullptr, nullptr) != EGL_TRUE) {
-    setup.error = egl_error(egl, "eglInitialize");
-    return setup;
-  }
+// make_context's second half, on an initialised display.
+EglSetup make_context_on(const EglApi& egl, EGLDisplay display, EglSetup setup) {
   const EGLint config_attribs[] = {
       EGL_SURFACE_TYPE, EGL_PBUFFER_BIT,   EGL_RED_SIZE,        8, EGL_GREEN_SIZE, 8,
       EGL_BLUE_SIZE,    8,                 EGL_ALPHA_SIZE,      8, EGL_DEPTH_SIZE, 24,
@@ -274,6 +266,29 @@ EglSetup make_context(const EglApi& egl, EGLDisplay display, std::string descrip
   }
   setup.display = display;
   setup.context = context;
+  return setup;
+}
+
+// Whether an EGL context of this process exists (its display must then stay initialised).
+std::atomic<bool> egl_context_made{false};
+
+// Initialises `display` and makes an RGBA context with depth and stencil for desktop OpenGL,
+// without a surface (MuJoCo draws into its own framebuffer), current on return. A display
+// that gives no context is terminated again (unless another context of the process uses
+// EGL), so trying several devices leaves nothing behind.
+EglSetup make_context(const EglApi& egl, EGLDisplay display, std::string description) {
+  EglSetup setup;
+  setup.description = std::move(description);
+  if (display == EGL_NO_DISPLAY) {
+    setup.error = egl_error(egl, "eglGetDisplay");
+    return setup;
+  }
+  if (egl.Initialize(display, nullptr, nullptr) != EGL_TRUE) {
+    setup.error = egl_error(egl, "eglInitialize");
+    return setup;
+  }
+  setup = make_context_on(egl, display, std::move(setup));
+  if (!setup.error.empty() && !egl_context_made.load()) egl.Terminate(display);
   return setup;
 }
 
@@ -331,6 +346,7 @@ class EglGlContext : public GlContext {
     display_ = setup.display;
     context_ = setup.context;
     description_ = setup.description;
+    egl_context_made = true;
     // now MuJoCo may see libEGL (see the top of this file)
     if (!dlopen("libEGL.so.1", RTLD_NOW | RTLD_NOLOAD | RTLD_GLOBAL)) {
       egl_.MakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
@@ -381,9 +397,13 @@ GlBackend parse_gl_backend(const std::string& name, const std::string& source) {
 
 GlBackend choose_gl_backend(const std::string& option_value) {
   if (!option_value.empty()) return parse_gl_backend(option_value, "--backend");
-  for (const char* var : {kMujocoBackendEnvVar, kBackendEnvVar}) {
-    const char* env = std::getenv(var);
-    if (env && env[0] != '\0') return parse_gl_backend(env, var);
+  const char* own = std::getenv(kBackendEnvVar);
+  if (own && own[0] != '\0') return parse_gl_backend(own, kBackendEnvVar);
+  // MuJoCo's own variable also names window systems (glfw) a headless renderer has no use
+  // for: only its headless values count
+  const char* mujoco = std::getenv(kMujocoBackendEnvVar);
+  if (mujoco && (std::strcmp(mujoco, "egl") == 0 || std::strcmp(mujoco, "osmesa") == 0)) {
+    return parse_gl_backend(mujoco, kMujocoBackendEnvVar);
   }
   return GlBackend::kOsmesa;
 }

@@ -7,8 +7,8 @@
 //           Mesa's surfaceless platform (llvmpipe), then the default EGL display; and when
 //           EGL cannot give a context at all (no libEGL, no driver), osmesa, saying why.
 //           libEGL is loaded when first asked for.
-// The backend comes from --backend, else MUJOCO_GL (as MuJoCo's Python bindings read it),
-// else PAMSIM_GL_BACKEND, else osmesa. MuJoCo resolves the GL functions once per process,
+// The backend comes from --backend, else PAMSIM_GL_BACKEND, else MUJOCO_GL when it is egl or
+// osmesa (as MuJoCo's Python bindings read it; its glfw needs a window), else osmesa. MuJoCo resolves the GL functions once per process,
 // through the first backend used, so a process uses one backend only (a second one throws
 // std::logic_error).
 #pragma once
@@ -26,8 +26,9 @@ const char* gl_backend_name(GlBackend backend);
 GlBackend parse_gl_backend(const std::string& name, const std::string& source);
 
 // The backend asked for by an option (`option_value`, "--backend"), else by the environment
-// variables MUJOCO_GL, then PAMSIM_GL_BACKEND, else osmesa. Throws InputError naming the one
-// that is bad.
+// variable PAMSIM_GL_BACKEND, else by MUJOCO_GL if it is egl or osmesa (other values, such as
+// glfw, are MuJoCo's window systems and are passed over), else osmesa. Throws InputError
+// naming the option or PAMSIM_GL_BACKEND when it is bad.
 GlBackend choose_gl_backend(const std::string& option_value);
 
 // An EGL device, by its index in eglQueryDevicesEXT's list, and where the choice came from.

@@ -16,8 +16,8 @@
 #include <cstring>
 #include <deque>
 #include <iostream>
-#include <map>
 #include <mutex>
+#include <set>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -29,6 +29,7 @@ constexpr int kTagReport = 1;
 constexpr int kTagWork = 2;
 constexpr auto kPollInterval = std::chrono::milliseconds(1);
 constexpr auto kReportInterval = std::chrono::milliseconds(200);   // results sent at least this often
+constexpr auto kDrainLimit = std::chrono::milliseconds(100);       // rank 0 commits at least this often
 
 void check(int rc, const char* call) {
   if (rc != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + call + " failed");
@@ -210,10 +211,16 @@ SweepRunResult coordinate_mpi_sweep(const MpiSession& mpi, const SweepDefinition
   };
 
   int workers_left = mpi.size() - 1;
+  std::set<int> refused;   // ranks that run no trials (said once)
+  std::string first_refusal;
   std::vector<TrialRecord> batch;
   while (workers_left > 0) {
-    // everything that has arrived, answered at once; then one commit for all of it
-    for (;;) {
+    // what has arrived, answered at once; then one commit for all of it (at most one report
+    // per worker and 100 ms between commits, so a busy job still commits steadily)
+    const auto drain_start = std::chrono::steady_clock::now();
+    for (int drained = 0; drained < mpi.size() - 1 &&
+                          std::chrono::steady_clock::now() - drain_start < kDrainLimit;
+         ++drained) {
       int arrived = 0;
       MPI_Status status;
       check(MPI_Iprobe(MPI_ANY_SOURCE, kTagReport, MPI_COMM_WORLD, &arrived, &status),
@@ -223,14 +230,15 @@ SweepRunResult coordinate_mpi_sweep(const MpiSession& mpi, const SweepDefinition
       const int from = status.MPI_SOURCE;
       std::int64_t want = report.want;
       if (!report.load_error.empty() || report.fingerprint != expected) {
-        if (want != -1) {   // its first report: said once, and it gets no trials
-          std::cerr << "pamsim sweep: rank " << from << " runs no trials: "
-                    << (report.load_error.empty() ? "its sweep file differs from rank 0's"
-                                                  : report.load_error)
-                    << "\n";
+        if (refused.insert(from).second) {   // said once; it gets no trials
+          const std::string why = report.load_error.empty()
+                                      ? "its sweep file differs from rank 0's"
+                                      : report.load_error;
+          std::cerr << "pamsim sweep: rank " << from << " runs no trials: " << why << "\n";
+          if (first_refusal.empty()) first_refusal = "rank " + std::to_string(from) + ": " + why;
         }
+        if (want > 0) send_bytes({}, from, kTagWork);
         want = want > 0 ? 0 : want;
-        if (report.want > 0) send_bytes({}, from, kTagWork);
       }
       for (TrialRecord& r : report.records) batch.push_back(std::move(r));
       if (want > 0) {
@@ -247,7 +255,15 @@ SweepRunResult coordinate_mpi_sweep(const MpiSession& mpi, const SweepDefinition
       std::this_thread::sleep_for(kPollInterval);
     }
   }
+  mpi.workers_done_ = true;
   result.interrupted = result.already_done + result.ran < options.shard.trials_of(total);
+  if (result.interrupted && !(options.stop && options.stop->load())) {
+    result.incomplete_reason =
+        !refused.empty() ? std::to_string(refused.size()) + " of " +
+                               std::to_string(mpi.size() - 1) + " worker ranks ran no trials (" +
+                               first_refusal + ")"
+                         : "a worker rank stopped before its trials were done";
+  }
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
@@ -310,7 +326,6 @@ void work_mpi_sweep(const MpiSession& /*mpi*/, const SweepDefinition& sweep, int
         outbox.clear();
         done = running_threads == 0;
         report.want = done ? -1 : no_more ? 0 : std::max<std::int64_t>(0, ahead - static_cast<std::int64_t>(todo.size()));
-        if (first && !load_error.empty()) report.want = 1;   // to be answered: no trials
       }
       if (report.want == 0 && report.records.empty()) continue;
       send_bytes(encode(report, sweep), 0, kTagReport);

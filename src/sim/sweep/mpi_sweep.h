@@ -42,6 +42,9 @@ class MpiSession {
   // the others return what it said.
   bool broadcast_go(bool go) const;
   bool decided() const { return decided_; }   // broadcast_go has been called
+  // Rank 0: every worker has sent its last report (set by coordinate_mpi_sweep), so rank 0
+  // may end on its own, e.g. with an error, without leaving a rank waiting.
+  bool workers_done() const { return workers_done_; }
   // Ends every rank of the job with `code`, from a rank that cannot go on.
   [[noreturn]] void abort(int code) const;
 
@@ -50,17 +53,22 @@ class MpiSession {
   int size_ = 1;
   int local_size_ = 1;
   mutable bool decided_ = false;
+  mutable bool workers_done_ = false;
+  friend SweepRunResult coordinate_mpi_sweep(const MpiSession&, const SweepDefinition&,
+                                             ResultsDb&, const SweepRunOptions&);
 };
 
 // Rank 0: runs every trial of `sweep` (of options.shard) not yet in `db` on the other ranks
 // and stores the results; options.threads is unused (workers use their own). Stops handing
-// out trials when options.stop is set and returns once every worker has sent what it ran.
+// out trials when options.stop is set and returns once every worker has sent what it ran;
+// when trials are left unrun for another reason (a rank that could not read the sweep, a
+// worker stopped on its own), the result's incomplete_reason says why.
 SweepRunResult coordinate_mpi_sweep(const MpiSession& mpi, const SweepDefinition& sweep,
                                     ResultsDb& db, const SweepRunOptions& options);
 
 // Ranks 1..N-1: runs the trials rank 0 hands out on `threads` threads until it has none left
 // (or `stop` is set, then the trials running finish and are sent). `load_error` is non-empty
-// when this rank could not read the sweep: rank 0 reports it and sends this rank no trials.
+// when this rank could not read the sweep: it sends that to rank 0, which reports it, and ends.
 void work_mpi_sweep(const MpiSession& mpi, const SweepDefinition& sweep, int threads,
                     const std::atomic<bool>* stop, const std::string& load_error);
 

@@ -56,6 +56,7 @@ struct SweepRunResult {
   std::int64_t ran = 0;            // run and stored now
   std::int64_t diverged = 0;       // of those, status "diverged" or "failed"
   bool interrupted = false;        // stopped before every trial was stored
+  std::string incomplete_reason;   // why, when not stopped by options.stop (MPI ranks)
   double wall_time_s = 0;
 };
 
