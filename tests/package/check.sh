@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# check.sh BUILD_DIR WORK_DIR: installs the pamsim built in BUILD_DIR into WORK_DIR/prefix
+# (cmake --install), builds tests/package (an outside project using find_package(pamsim))
+# against it in WORK_DIR/build, and runs its two programs and the installed `pamsim`.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+build=$1
+work=$2
+rm -rf "$work"
+cmake --install "$build" --prefix "$work/prefix" > /dev/null
+# nothing internal is installed: the public headers include only public ones (else the
+# outside build below fails), and an internal header is absent
+test ! -e "$work/prefix/include/pamsim/sim/core/trial_run.h"
+cmake -S "$here" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release \
+  > "$work/configure.log"
+cmake --build "$work/build" -j 2 > "$work/build.log"
+"$work/build/law_only"
+"$work/build/drop_trial"
+"$work/prefix/bin/pamsim" --version
