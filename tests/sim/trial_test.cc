@@ -1,5 +1,6 @@
 // trial_test.cc: the co-simulated arm: static equilibrium at the calibrated start angle,
-// the passive drop's events, convergence in the timestep, and determinism across threads.
+// the passive drop's events, convergence in the timestep, and determinism across threads;
+// a trial stepped by its caller (SteppedTrial) is run_trial's, and takes outside commands.
 #include "sim/io/scenario_file.h"
 #include "sim/core/trial.h"
 
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "pam_actuator/input_error.h"
 #include "sim/core/runner.h"
 
 namespace pamsim {
@@ -159,6 +161,66 @@ TEST(TrialTest, ObserverSeesItsTimesAndChangesNothing) {
   const auto& vb = alone.trajectory.values;
   ASSERT_EQ(va.size(), vb.size());
   EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(double)));
+}
+
+}  // namespace
+}  // namespace pamsim
+
+namespace pamsim {
+namespace {
+
+const std::string kReflex = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml";
+
+// Stepped with no commands until done, a trial is run_trial's, bit for bit (summary metrics
+// and every logged value), with the stretch-reflex controller deciding.
+TEST(SteppedTrialTest, SteppingWithTheScenariosControllerReproducesRunTrial) {
+  const Scenario sc = load_scenario(kReflex, {"sim.duration_s=1.5", "drop.time_s=0.3"});
+  const TrialModel arm = load_trial_model(sc);
+  const TrialResult ran = run_trial(arm, sc, 7);
+  SteppedTrial stepped(arm, sc, 7);
+  long periods = 0;
+  double last_time = -1;
+  while (stepped.step()) {
+    const TrialObservation o = stepped.observe();
+    EXPECT_GT(o.time_s, last_time);
+    last_time = o.time_s;
+    ++periods;
+  }
+  const TrialResult mine = stepped.finish();
+  EXPECT_EQ(periods + 1, static_cast<long>(ran.trajectory.rows()));   // one row per period
+  ASSERT_EQ(mine.trajectory.columns, ran.trajectory.columns);
+  ASSERT_EQ(mine.trajectory.values.size(), ran.trajectory.values.size());
+  EXPECT_EQ(std::memcmp(mine.trajectory.values.data(), ran.trajectory.values.data(),
+                        ran.trajectory.values.size() * sizeof(double)), 0);
+  ASSERT_EQ(mine.summary.metrics.size(), ran.summary.metrics.size());
+  for (std::size_t k = 0; k < ran.summary.metrics.size(); ++k) {
+    if (is_timing_metric(ran.summary.metrics[k].name)) continue;
+    const double a = mine.summary.metrics[k].value, b = ran.summary.metrics[k].value;
+    EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << ran.summary.metrics[k].name;
+  }
+  // reset runs it again from the start
+  stepped.reset(7);
+  while (stepped.step()) {
+  }
+  const TrialResult again = stepped.finish();
+  EXPECT_EQ(std::memcmp(again.trajectory.values.data(), ran.trajectory.values.data(),
+                        ran.trajectory.values.size() * sizeof(double)), 0);
+}
+
+// Commands given to step() are the valve commands in force, and logged as such.
+TEST(SteppedTrialTest, CommandsReplaceTheControllersAndAreChecked) {
+  const Scenario sc = load_scenario(kReflex, {"sim.duration_s=0.2", "drop.time_s=0.1", "drop.enabled=false"});
+  const TrialModel arm = load_trial_model(sc);
+  SteppedTrial stepped(arm, sc, 1);
+  const std::vector<double> commands(arm.muscles.size(), 0.45e6);
+  for (int k = 0; k < 20 && stepped.step(&commands); ++k) {
+    for (double c : stepped.observe().command_pa) EXPECT_EQ(c, 0.45e6);
+  }
+  const std::vector<double> too_few(arm.muscles.size() - 1, 0.4e6);
+  EXPECT_THROW(stepped.step(&too_few), InputError);
+  const TrialResult r = stepped.finish();
+  const std::size_t p_cmd = r.trajectory.column("p_cmd_" + arm.muscles[0].label + "_MPa");
+  EXPECT_EQ(r.trajectory.at(5, p_cmd), 0.45);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "pam_actuator/input_error.h"
 #include "pam_actuator/units.h"
 #include "sim/core/pam_callback.h"
 #include "sim/core/trial_run.h"
@@ -189,41 +190,113 @@ TrialSummary TrialRun::finish(long steps, std::chrono::steady_clock::duration wa
 }
 
 TrialResult TrialRun::run() {
-  start_state();
-  const long n_steps = std::lround(sc_.duration_s / sc_.timestep_s);
-  const long control_every = std::lround(1.0 / (sc_.control_hz * sc_.timestep_s));
-  result_.trajectory.values.reserve((n_steps / control_every + 1) * layout_.columns.size());
+  begin();
+  while (step()) {
+  }
+  return end();
+}
 
-  const auto wall_start = std::chrono::steady_clock::now();
+void TrialRun::begin() {
+  start_state();
+  n_steps_ = std::lround(sc_.duration_s / sc_.timestep_s);
+  control_every_ = std::lround(1.0 / (sc_.control_hz * sc_.timestep_s));
+  result_.trajectory.values.reserve((n_steps_ / control_every_ + 1) * layout_.columns.size());
+
+  wall_start_ = std::chrono::steady_clock::now();
   if (options_.observer) {
     next_observation_s_ = options_.observer->next_observation_time_s() - kObservationToleranceS;
     if (d_->time >= next_observation_s_) show_observer();
   }
-  long step = 0;
-  for (; step < n_steps; ++step) {
-    const double t = step * sc_.timestep_s;
-    if (!before_step(t)) break;
-    mj_step1(m_, d_);
-    if (step % control_every == 0 && !control_tick(t)) break;
-    if (!physics_step(t)) {
-      ++step;
-      break;
-    }
-    if (!after_step()) {
-      ++step;
-      break;
-    }
+}
+
+bool TrialRun::step() {
+  if (ended_ || step_ >= n_steps_) {
+    ended_ = true;
+    return false;
   }
-  const auto wall = std::chrono::steady_clock::now() - wall_start;
-  finish(step, wall);
+  const double t = step_ * sc_.timestep_s;
+  if (!before_step(t)) return ended_ = true, false;
+  mj_step1(m_, d_);
+  if (step_ % control_every_ == 0 && !control_tick(t)) return ended_ = true, false;
+  ++step_;
+  if (!physics_step(t) || !after_step()) return ended_ = true, false;
+  return true;
+}
+
+TrialResult TrialRun::end() {
+  const auto wall = std::chrono::steady_clock::now() - wall_start_;
+  finish(step_, wall);
   if (!options_.keep_trajectory) result_.trajectory.values.clear();
   return std::move(result_);
+}
+
+TrialObservation TrialRun::observe() const {
+  TrialObservation o;
+  o.time_s = d_->time;
+  o.steps = step_;
+  o.joint_position = joint_position();
+  o.joint_velocity = d_->qvel[tm_.joint.dof];
+  for (std::size_t i = 0; i < n_; ++i) {
+    const int act = tm_.muscles[i].actuator;
+    o.pressure_pa.push_back(pneumatics_.pressure_pa(static_cast<int>(i)));
+    o.command_pa.push_back(pneumatics_.command_pa(static_cast<int>(i)));
+    o.force_n.push_back(-pam_actuator_force(m_, d_, act));
+    o.length_m.push_back(pam_muscle_length(m_, d_, act));
+    o.length_est_m.push_back(readings_[i].length_est_m);
+    o.reflex_active.push_back(i < out_.reflex_active.size() ? out_.reflex_active[i] : 0);
+  }
+  return o;
 }
 
 TrialResult run_trial(const TrialModel& model, const Scenario& scenario, std::uint64_t seed,
                       const TrialOptions& options) {
   TrialRun trial(model, scenario, seed, options);
   return trial.run();
+}
+
+// ---- SteppedTrial ----
+
+struct SteppedTrial::State {
+  Scenario scenario;
+  TrialOptions options;
+  std::unique_ptr<TrialRun> run;
+};
+
+SteppedTrial::SteppedTrial(const TrialModel& model, const Scenario& scenario, std::uint64_t seed)
+    : model_(model), state_(std::make_unique<State>()) {
+  state_->scenario = scenario;
+  reset(seed);
+}
+
+SteppedTrial::~SteppedTrial() = default;
+
+void SteppedTrial::reset(std::uint64_t seed) {
+  state_->run.reset();   // (one trial per thread's mjData at a time)
+  state_->run = std::make_unique<TrialRun>(model_, state_->scenario, seed, state_->options);
+  state_->run->begin();
+}
+
+bool SteppedTrial::step(const std::vector<double>* commands_pa) {
+  TrialRun& run = *state_->run;
+  if (commands_pa && commands_pa->size() != model_.muscles.size()) {
+    throw InputError("step: " + std::to_string(commands_pa->size()) + " commands for " +
+                     std::to_string(model_.muscles.size()) + " muscles");
+  }
+  run.set_external_commands(commands_pa);
+  bool alive = run.step();   // the step that starts with the control tick
+  run.set_external_commands(nullptr);
+  while (alive && !run.control_due()) alive = run.step();
+  return !done();
+}
+
+bool SteppedTrial::done() const { return state_->run->ended(); }
+
+TrialObservation SteppedTrial::observe() const { return state_->run->observe(); }
+
+TrialResult SteppedTrial::finish() {
+  TrialResult result = state_->run->end();
+  state_->run.reset();
+  return result;
 }
 
 }  // namespace pamsim

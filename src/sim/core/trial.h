@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -76,5 +77,53 @@ inline TrialResult run_trial(const TrialModel& model, const Scenario& scenario,
   options.keep_trajectory = keep_trajectory;
   return run_trial(model, scenario, seed, options);
 }
+
+// What a caller stepping a trial sees after a step (SteppedTrial::observe): SI units; vectors
+// per muscle, model order.
+struct TrialObservation {
+  double time_s = 0.0;
+  long steps = 0;                      // physics steps taken
+  double joint_position = 0.0;         // [rad] for a hinge, [m] for a slide
+  double joint_velocity = 0.0;         // [rad/s] or [m/s]
+  std::vector<double> pressure_pa;     // chamber pressures
+  std::vector<double> command_pa;      // valve commands in force
+  std::vector<double> force_n;         // tension in each PAM
+  std::vector<double> length_m;        // each PAM's length
+  std::vector<double> length_est_m;    // the estimator's length, as of the last control tick
+  std::vector<char> reflex_active;     // as of the last control tick (stretch reflex only)
+};
+
+// A trial advanced by its caller one control period at a time, for a controller outside
+// pamsim (the Python module's Trial, a user's C++). Each step runs the next control tick
+// and the physics steps up to the following one; at that tick `commands_pa` (valve commands,
+// one per muscle, model order), when given, replace the scenario's controller's (which still
+// sees the sensors, so its state and the log's estimates stay as in run_trial). Stepped
+// with no commands until done, a trial is the one run_trial runs, bit for bit: run_trial
+// drives the same loop.
+class SteppedTrial {
+ public:
+  // `model` (read-only) must outlive the trial; the scenario is copied.
+  SteppedTrial(const TrialModel& model, const Scenario& scenario, std::uint64_t seed);
+  ~SteppedTrial();
+  SteppedTrial(const SteppedTrial&) = delete;
+  SteppedTrial& operator=(const SteppedTrial&) = delete;
+
+  // Starts the trial again from its initial state with `seed` (the sensors' noise).
+  void reset(std::uint64_t seed);
+  // One control period; returns false once the trial has ended (its duration reached, an
+  // event ended it, or it diverged: finish() says which). Throws InputError for a command
+  // count that is not the muscle count.
+  bool step(const std::vector<double>* commands_pa = nullptr);
+  bool done() const;
+  TrialObservation observe() const;
+  // The summary and the log of the trial so far (ended early if not done); reset() to run
+  // another.
+  TrialResult finish();
+
+ private:
+  struct State;
+  const TrialModel& model_;
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace pamsim

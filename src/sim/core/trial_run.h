@@ -35,11 +35,22 @@ class TrialData {
   bool borrowed_ = false;
 };
 
-// One trial from start to summary; each method is one phase of a physics step.
+// One trial from start to summary; each private method is one phase of a physics step.
+// run() is begin(), step() until it returns false, end(); SteppedTrial calls them itself.
 class TrialRun {
  public:
   TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed, const TrialOptions& opt);
   TrialResult run();
+
+  void begin();          // the start state; the observer's first look
+  bool step();           // one physics step (a control tick first when due); false: ended
+  TrialResult end();     // the summary (and the log); the run is spent
+  bool ended() const { return ended_ || step_ >= n_steps_; }
+  bool control_due() const { return step_ % control_every_ == 0; }
+  // Valve commands [Pa] that replace the controller's at the next control ticks (null: the
+  // controller's); the pointer must stay valid while set.
+  void set_external_commands(const std::vector<double>* p_cmd_pa) { external_pa_ = p_cmd_pa; }
+  TrialObservation observe() const;
 
  private:
   void start_state();
@@ -92,6 +103,13 @@ class TrialRun {
 
   // the observer is shown the state when it asks; without one a step costs one compare
   double next_observation_s_ = std::numeric_limits<double>::infinity();
+  // the loop: steps taken, of n_steps_; a control tick every control_every_ steps
+  long step_ = 0;
+  long n_steps_ = 0;
+  long control_every_ = 1;
+  bool ended_ = false;
+  std::chrono::steady_clock::time_point wall_start_;
+  const std::vector<double>* external_pa_ = nullptr;
   std::chrono::steady_clock::duration observer_wall_{};
 };
 

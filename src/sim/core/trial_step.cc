@@ -118,7 +118,8 @@ bool TrialRun::control_tick(double t) {
   in.p_tp_pa = &p_tp_pa_;
   try {
     controller_->update(in, &out_);
-    for (std::size_t i = 0; i < n_; ++i) pneumatics_.set_command(static_cast<int>(i), out_.p_cmd_pa[i]);
+    const std::vector<double>& p_cmd = external_pa_ ? *external_pa_ : out_.p_cmd_pa;
+    for (std::size_t i = 0; i < n_; ++i) pneumatics_.set_command(static_cast<int>(i), p_cmd[i]);
   } catch (const std::exception& e) {
     set_status("diverged", std::string("controller: ") + e.what(), t);
     return false;
