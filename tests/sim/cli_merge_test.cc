@@ -3,8 +3,11 @@
 // exports; a shard killed midway finishes with --resume without repeating a trial; merge
 // reports duplicates and missing trials and refuses parts that do not belong together; every
 // malformed --shard gets one line and exit 2; the Slurm scripts under scripts/slurm work.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sqlite3.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <string>
@@ -42,6 +45,12 @@ std::vector<std::int64_t> trials_in(const std::string& db) {
   return trials;
 }
 
+// `path`, with whatever an earlier run of the test left there removed (and its -wal, -shm).
+std::string fresh_file(const std::string& path) {
+  for (const char* suffix : {"", "-wal", "-shm", ".csv"}) fs::remove(path + suffix);
+  return path;
+}
+
 // Runs `sql` on the database file `db` (to make a part that does not belong).
 void execute_sql(const std::string& db, const std::string& sql) {
   sqlite3* handle = nullptr;
@@ -54,11 +63,25 @@ void execute_sql(const std::string& db, const std::string& sql) {
   ASSERT_EQ(rc, SQLITE_OK) << why;
 }
 
-// The smoke sweep on one machine and as three shards (each shard's database in `dir`).
+// The smoke sweep on one machine and as three shards (each shard's database in `dir`),
+// made once for all the tests of one CTest run: CTest runs each test in its own process, so
+// the first to come makes them under a lock and the others, children of the same CTest and
+// of the same pamsim binary, find them made (each test then writes only files of its own).
 class ShardedSmokeSweep : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = new fs::path(fresh_dir("sweep_shards"));
+    const auto built = fs::last_write_time(PAMSIM_BINARY).time_since_epoch().count();
+    dir_ = new fs::path(fs::path(::testing::TempDir()) /
+                        ("sweep_shards_" + std::to_string(::getppid()) + "_" +
+                         std::to_string(built)));
+    fs::create_directories(*dir_);
+    const int lock = ::open((*dir_ / ".lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+    ASSERT_GE(lock, 0);
+    ASSERT_EQ(::flock(lock, LOCK_EX), 0);
+    if (!fs::exists(*dir_ / ".made")) make_sweeps();
+    ::close(lock);   // (releases the lock)
+  }
+  static void make_sweeps() {
     const auto whole = run_pamsim("sweep " + kSmoke + " --threads 2 --db " + db("whole"));
     ASSERT_EQ(whole.exit_code, 0) << whole.err;
     ASSERT_EQ(run_pamsim("export " + db("whole") + " --csv " + db("whole") + ".csv").exit_code, 0);
@@ -67,6 +90,7 @@ class ShardedSmokeSweep : public ::testing::Test {
                                 "/3 --out " + dir_->string());
       ASSERT_EQ(r.exit_code, 0) << r.err;
     }
+    write_text(*dir_ / ".made", "");
   }
   static void TearDownTestSuite() { delete dir_; }
   static std::string db(const std::string& name) { return (*dir_ / (name + ".db")).string(); }
@@ -92,7 +116,7 @@ TEST_F(ShardedSmokeSweep, EachShardHoldsExactlyItsTrials) {
 }
 
 TEST_F(ShardedSmokeSweep, MergedShardsExportExactlyWhatOneMachineExports) {
-  const std::string merged = db("merged");
+  const std::string merged = fresh_file(db("merged"));
   const auto r = run_pamsim("merge " + merged + " " + shard(2) + " " + shard(0) + " " + shard(1));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out, merged + "\n");
@@ -117,7 +141,7 @@ TEST_F(ShardedSmokeSweep, MergedShardsExportExactlyWhatOneMachineExports) {
 }
 
 TEST_F(ShardedSmokeSweep, DuplicatesAreKeptOnceAndMissingTrialsReportedThenResumed) {
-  const std::string partial = db("partial");
+  const std::string partial = fresh_file(db("partial"));
   const auto r = run_pamsim("merge " + partial + " " + shard(0) + " " + shard(1) + " " + shard(0));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("22 trials into " + partial + " (of 32)"), std::string::npos) << r.err;
@@ -150,10 +174,10 @@ TEST_F(ShardedSmokeSweep, MergeRefusesPartsThatDoNotBelongTogether) {
       {"format", "UPDATE meta SET value = 'x' WHERE key = 'format'", "not a pamsim sweep database"},
   };
   for (const Case& c : cases) {
-    const std::string part = db(std::string("bad_") + c.name);
+    const std::string part = fresh_file(db(std::string("bad_") + c.name));
     fs::copy_file(shard(1), part);
     ASSERT_NO_FATAL_FAILURE(execute_sql(part, c.sql));
-    const std::string out = db(std::string("out_") + c.name);
+    const std::string out = fresh_file(db(std::string("out_") + c.name));
     // "differs" needs the true trial 1 first
     const std::string parts = std::string(c.name) == "differs" ? shard(1) + " " + part
                                                                : shard(0) + " " + part;
@@ -174,7 +198,7 @@ TEST_F(ShardedSmokeSweep, MergeRefusesPartsThatDoNotBelongTogether) {
 }
 
 TEST_F(ShardedSmokeSweep, AShardDatabaseResumesOnlyAsThatShard) {
-  const std::string copy = db("shard1_copy");
+  const std::string copy = fresh_file(db("shard1_copy"));
   fs::copy_file(shard(1), copy);
   for (const std::string& wrong : {std::string(""), std::string(" --shard 2/3"),
                                    std::string(" --shard 1/4")}) {
@@ -194,6 +218,7 @@ TEST_F(ShardedSmokeSweep, AShardDatabaseResumesOnlyAsThatShard) {
 // merge job.
 TEST_F(ShardedSmokeSweep, SlurmScriptsRunTheShardsAndMergeThem) {
   const fs::path out = *dir_ / "slurm";
+  fs::remove_all(out);
   const std::string in_source = std::string("cd ") + PAMSIM_SOURCE_DIR + " && PAMSIM=" +
                                 PAMSIM_BINARY + " ";
   for (int i = 0; i < 3; ++i) {
