@@ -3,11 +3,15 @@
 BUILD_DIR ?= build
 JOBS ?= 2
 PAMSIM := $(BUILD_DIR)/src/sim/pamsim
+# the Debian interpreter, whose numpy, pytest and pandas install-deps.sh installs (not one
+# that a pyenv or venv may put first on PATH)
+PYTHON ?= /usr/bin/python3
 
 FUZZ_SECONDS ?= 60
 # sanitizer and fuzz builds: -O1 with line tables (readable reports, half the -O2 build time)
+# (no Python module there: an instrumented extension cannot load into an uninstrumented python)
 SANITIZE_TYPE := -DCMAKE_BUILD_TYPE=Sanitize -DCMAKE_CXX_FLAGS_SANITIZE="-O1 -g1" \
-                 -DCMAKE_C_FLAGS_SANITIZE="-O1 -g1" -DPAMSIM_BUILD_BENCHMARKS=OFF
+                 -DCMAKE_C_FLAGS_SANITIZE="-O1 -g1" -DPAMSIM_BUILD_BENCHMARKS=OFF -DPAMSIM_PYTHON=OFF
 ASAN_ENV := ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 \
             LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitize/lsan.supp:print_suppressions=0 \
             UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
@@ -23,7 +27,8 @@ deps:
 	bash scripts/install-deps.sh
 
 configure: deps
-	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DPAMSIM_MPI=ON
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DPAMSIM_MPI=ON \
+	  -DPython3_EXECUTABLE=$(PYTHON)
 
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)

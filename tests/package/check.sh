@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # check.sh BUILD_DIR WORK_DIR: installs the pamsim built in BUILD_DIR into WORK_DIR/prefix
 # (cmake --install), builds tests/package (an outside project using find_package(pamsim))
-# against it in WORK_DIR/build, and runs its two programs and the installed `pamsim`.
+# against it in WORK_DIR/build, and runs its two programs, the installed `pamsim` and (when
+# built) an import of the installed Python package.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=$1
@@ -17,3 +18,9 @@ cmake --build "$work/build" -j 2 > "$work/build.log"
 "$work/build/law_only"
 "$work/build/drop_trial"
 "$work/prefix/bin/pamsim" --version
+# the Python package installed beside it (when built), importable from there
+python_dir=$(find "$work/prefix" -type d -name pamsim -path "*-packages/pamsim" | head -1)
+if [ -n "$python_dir" ]; then
+  PYTHONPATH=$(dirname "$python_dir") python3 -c \
+    "import pamsim; print('python pamsim', pamsim.__version__, pamsim.SpringModel.__name__)"
+fi
