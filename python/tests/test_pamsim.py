@@ -169,3 +169,22 @@ def test_pandas_frames_when_pandas_is_there():
     pandas = pytest.importorskip("pandas")
     frame = pamsim.frame(pamsim.run(DROP, ["sim.duration_s=0.4", "drop.time_s=0.1"]))
     assert isinstance(frame, pandas.DataFrame) and "angle_deg" in frame.columns
+
+
+def test_tuning_databases_read_evaluation_by_evaluation(tmp_path):
+    tune = tmp_path / "bias.toml"
+    tune.write_text(
+        f'base = "{SOURCE}/scenarios/drop_mass_ideal.toml"\n'
+        'overrides = ["sim.duration_s=0.6", "drop.time_s=0.3", "drop.enabled=false", '
+        '"reflex.enabled=false"]\n'
+        'algorithm = "cmaes"\ngenerations = 2\npopulation = 5\nseed = 3\nseeds = 1\n'
+        'noise_scales = [0.0]\nheld_out_seeds = 0\n'
+        '[[parameter]]\nkey = "sensors.pressure_bias_MPa"\nfrom = -0.05\nto = 0.03\n'
+        '[[objective]]\nmetric = "length_est_rmse_pct"\n')
+    cli("tune", str(tune), "--out", str(tmp_path / "out"), "--db", str(tmp_path / "tune.db"))
+    evaluations = pamsim.read_tune(str(tmp_path / "tune.db"))
+    assert [e["evaluation"] for e in evaluations] == list(range(len(evaluations)))
+    assert len(evaluations) >= 10
+    assert all(-0.05 <= e["values"][0] <= 0.03 and len(e["objectives"]) == 1 for e in evaluations)
+    with pytest.raises(ValueError, match="tuning database"):
+        pamsim.read_tune(str(tmp_path / "absent.db"))
