@@ -16,6 +16,11 @@ cmake -S "$here" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUI
   > "$work/configure.log"
 cmake --build "$work/build" -j 2 > "$work/build.log"
 "$work/build/law_only"
+# the muscle alone: no simulation dependency looked for
+cmake -S "$here/muscle_only" -B "$work/muscle_only" -DCMAKE_PREFIX_PATH="$work/prefix" \
+  -DCMAKE_BUILD_TYPE=Release > "$work/muscle_only.log"
+cmake --build "$work/muscle_only" -j 2 >> "$work/muscle_only.log"
+"$work/muscle_only/law_only"
 "$work/build/drop_trial"
 "$work/prefix/bin/pamsim" --version
 # the Python package installed beside it (when built), importable from there
