@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <iostream>
 #include <vector>
 
 #include "pam_actuator/input_error.h"
@@ -65,7 +66,40 @@ std::string make_temp_beside(const std::string& path, TempKind kind, int* fd_out
   return tmp.data();
 }
 
+bool is_stream_output(const std::string& path) {
+  if (path == "-") return true;
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return false;   // (a new file)
+  return !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+}
+
+void write_stream_output(const std::string& path, const std::string& content) {
+  int fd = 1;
+  if (path == "-") {
+    std::cout.flush();
+    std::fflush(stdout);
+  } else {
+    fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd < 0) throw InputError(path + ": cannot write (" + std::strerror(errno) + ")");
+  }
+  const char* data = content.data();
+  std::size_t left = content.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, data, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      const std::string why = std::strerror(errno);
+      if (fd != 1) ::close(fd);
+      throw InputError(path + ": write failed (" + why + ")");
+    }
+    data += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  if (fd != 1) ::close(fd);
+}
+
 void write_file_atomically(const std::string& path, const std::string& content) {
+  if (is_stream_output(path)) return write_stream_output(path, content);
   int fd = -1;
   const std::string tmp = make_temp_beside(path, TempKind::kFile, &fd);
   const auto fail = [&](const char* what) {

@@ -6,7 +6,17 @@
 
 namespace pamsim {
 
-// Writes `content` to `path` through a temp file `path.tmp.XXXXXX` made by mkostemp
+// True for "-" (standard output) and for an existing path that is neither a regular file nor
+// a folder (a terminal, /dev/stdout, a FIFO): such an output is a stream, written through
+// as it is; replacing it by a rename would turn /dev/stdout into a regular file.
+bool is_stream_output(const std::string& path);
+
+// Writes all of `content` to the stream output `path` ("-": standard output, after what
+// std::cout holds). Throws InputError "<path>: write failed (why)".
+void write_stream_output(const std::string& path, const std::string& content);
+
+// Writes `content` to `path` (a stream output: written through, see is_stream_output)
+// through a temp file `path.tmp.XXXXXX` made by mkostemp
 // (created exclusively: a file or symlink planted at a predictable name is never written
 // through), written whole and fsync'd, then rename(2). The file gets the permissions a
 // plain create would (0666 less the umask). Throws InputError naming the path if the

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <thread>
 #include <string>
 
 #include "pam_actuator/input_error.h"
@@ -139,6 +140,37 @@ TEST_F(AtomicFileTest, AFullDiskIsAnErrorAndLeavesNothing) {
   ::setrlimit(RLIMIT_FSIZE, &old);
   EXPECT_TRUE(threw);
   EXPECT_EQ(count_entries(dir_), 0) << "no temp file and no half file";
+}
+
+// "-", a FIFO or a device is a stream: written through, never replaced by a rename (which
+// would turn /dev/stdout or a FIFO into a regular file); regular files and new names are not.
+TEST_F(AtomicFileTest, StreamOutputsAreWrittenThroughNotReplaced) {
+  EXPECT_TRUE(is_stream_output("-"));
+  EXPECT_TRUE(is_stream_output("/dev/null"));
+  EXPECT_FALSE(is_stream_output(dir_ + "/new.txt"));
+  EXPECT_FALSE(is_stream_output(dir_));
+  const std::string fifo = dir_ + "/fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_TRUE(is_stream_output(fifo));
+  std::string received;
+  std::thread reader([&] {
+    std::ifstream in(fifo, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    received = ss.str();
+  });
+  write_file_atomically(fifo, "through the pipe\n");
+  reader.join();
+  EXPECT_EQ(received, "through the pipe\n");
+  struct stat st {};
+  ASSERT_EQ(::stat(fifo.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode)) << "the FIFO was replaced";
+  EXPECT_EQ(count_entries(dir_), 1) << "no temp file beside it";
+
+  ::testing::internal::CaptureStdout();
+  write_file_atomically("-", "to standard output\n");
+  EXPECT_EQ(::testing::internal::GetCapturedStdout(), "to standard output\n");
+  EXPECT_NO_THROW(write_file_atomically("/dev/null", "discarded"));
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // give one line, a non-zero exit and no database; the best setting runs as a scenario.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -59,6 +60,18 @@ TEST(CliSweepTest, SmokeSweepExportsTheSameCsvOnOneAndTwoThreads) {
   const std::string one = read_file(dir / "t1.db.csv");
   const std::string two = read_file(dir / "t2.db.csv");
   EXPECT_EQ(one, two);
+  // "-" is standard output, the same bytes; a FIFO is written through and stays a FIFO
+  const auto piped = run_pamsim("export " + (dir / "t1.db").string() + " --csv -");
+  ASSERT_EQ(piped.exit_code, 0) << piped.err;
+  EXPECT_EQ(piped.out, one);
+  const fs::path fifo = dir / "fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string reader = "cat " + fifo.string() + " > " + (dir / "from_fifo").string() +
+                             " & " + PAMSIM_BINARY + " export " + (dir / "t1.db").string() +
+                             " --csv " + fifo.string() + " 2> /dev/null; status=$?; wait; exit $status";
+  EXPECT_EQ(std::system(reader.c_str()), 0);
+  EXPECT_EQ(read_file(dir / "from_fifo"), one);
+  EXPECT_TRUE(fs::is_fifo(fifo)) << "the FIFO was replaced by a file";
 
   // 4 x 4 points x 2 seeds, in trial order, every metric present, all ok
   const auto lines = lines_of(one);

@@ -1,6 +1,7 @@
 // export.cc: `pamsim export DB --csv FILE [--timing]`: a sweep database as CSV, one row
 // per trial in trial order, the columns of the trials table (results_db.h), streamed to a
-// temp file and renamed into place. Numbers are written in their shortest exact form,
+// temp file and renamed into place (FILE "-" is standard output; a FIFO or device is
+// written through, never replaced). Numbers are written in their shortest exact form,
 // missing values as empty cells. The per-run timing metrics (wall_time_s, realtime_factor)
 // are left out unless --timing, so the same sweep exports the same file whatever the machine
 // or thread count.
@@ -12,7 +13,9 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <memory>
 
+#include "pam_actuator/atomic_file.h"
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
@@ -51,9 +54,18 @@ void export_csv(const ExportOptions& opt) {
   const ResultsDb db = ResultsDb::open_existing(opt.db);
   const std::vector<std::string> columns = db.trial_columns();
 
-  // rows stream into the temp file (memory flat whatever the number of trials), then rename
-  TempPath tmp(opt.csv, TempKind::kFile);
-  std::ofstream out(tmp.path(), std::ios::binary | std::ios::trunc);
+  // rows stream into the temp file (memory flat whatever the number of trials), then rename;
+  // "-" (standard output), a FIFO or a device is written through instead
+  const bool stream = is_stream_output(opt.csv);
+  std::unique_ptr<TempPath> tmp;
+  std::ofstream file;
+  if (!stream) {
+    tmp = std::make_unique<TempPath>(opt.csv, TempKind::kFile);
+    file.open(tmp->path(), std::ios::binary | std::ios::trunc);
+  } else if (opt.csv != "-") {
+    file.open(opt.csv, std::ios::binary);
+  }
+  std::ostream& out = opt.csv == "-" ? std::cout : file;
   if (!out) throw InputError(opt.csv + ": cannot write (missing folder or no permission)");
   std::vector<bool> keep(columns.size());
   bool first = true;
@@ -78,13 +90,20 @@ void export_csv(const ExportOptions& opt) {
     out << line << '\n';
     ++rows;
   });
-  out.close();
-  if (!out) throw InputError(opt.csv + ": writing failed (disk full?)");
-  if (std::rename(tmp.path().c_str(), opt.csv.c_str()) != 0) {
-    throw InputError(opt.csv + ": cannot move the CSV into place (" + std::strerror(errno) + ")");
+  out.flush();
+  if (file.is_open()) file.close();
+  if (!out || (file.is_open() && !file)) {
+    throw InputError(opt.csv + ": writing failed (disk full?)");
   }
-  tmp.release();
-  std::cerr << "pamsim export: " << rows << " trials to " << opt.csv << "\n";
+  if (tmp) {
+    if (std::rename(tmp->path().c_str(), opt.csv.c_str()) != 0) {
+      throw InputError(opt.csv + ": cannot move the CSV into place (" + std::strerror(errno) +
+                       ")");
+    }
+    tmp->release();
+  }
+  std::cerr << "pamsim export: " << rows << " trials to "
+            << (opt.csv == "-" ? std::string("standard output") : opt.csv) << "\n";
 }
 
 }  // namespace
@@ -93,7 +112,7 @@ void add_export_command(CLI::App& app) {
   auto opt = std::make_shared<ExportOptions>();
   CLI::App* cmd = app.add_subcommand("export", "Write a sweep database as CSV (one row per trial)");
   cmd->add_option("db", opt->db, "Sweep database (from pamsim sweep)")->required();
-  cmd->add_option("--csv", opt->csv, "Output CSV file")->required();
+  cmd->add_option("--csv", opt->csv, "Output CSV file (- for standard output)")->required();
   cmd->add_flag("--timing", opt->timing, "Include wall_time_s and realtime_factor");
   cmd->callback([opt] { export_csv(*opt); });
 }
