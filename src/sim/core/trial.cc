@@ -210,17 +210,21 @@ void TrialRun::begin() {
 }
 
 bool TrialRun::step() {
-  if (ended_ || step_ >= n_steps_) {
-    ended_ = true;
-    return false;
-  }
+  if (ended()) return false;
   const double t = step_ * sc_.timestep_s;
-  if (!before_step(t)) return ended_ = true, false;
-  mj_step1(m_, d_);
-  if (step_ % control_every_ == 0 && !control_tick(t)) return ended_ = true, false;
-  ++step_;
-  if (!physics_step(t) || !after_step()) return ended_ = true, false;
-  return true;
+  // an event or the controller can end the trial before the step counts; a step that
+  // diverges or fires an ending event counts
+  bool going = before_step(t);
+  if (going) {
+    mj_step1(m_, d_);
+    going = step_ % control_every_ != 0 || control_tick(t);
+  }
+  if (going) {
+    ++step_;
+    going = physics_step(t) && after_step();
+  }
+  ended_ = !going;
+  return going;
 }
 
 TrialResult TrialRun::end() {
