@@ -13,38 +13,6 @@
 namespace pamsim {
 namespace {
 
-// Sets PAMSIM_GL_BACKEND for one test, restores "unset" after it.
-class GlBackendEnv {
- public:
-  explicit GlBackendEnv(const char* value) { ::setenv("PAMSIM_GL_BACKEND", value, 1); }
-  ~GlBackendEnv() { ::unsetenv("PAMSIM_GL_BACKEND"); }
-};
-
-TEST(GlContextTest, OptionBeatsEnvironmentBeatsDefault) {
-  ::unsetenv("PAMSIM_GL_BACKEND");
-  EXPECT_EQ(choose_gl_backend(""), GlBackend::kOsmesa);
-  EXPECT_EQ(choose_gl_backend("egl"), GlBackend::kEgl);
-  GlBackendEnv env("egl");
-  EXPECT_EQ(choose_gl_backend(""), GlBackend::kEgl);
-  EXPECT_EQ(choose_gl_backend("osmesa"), GlBackend::kOsmesa);
-}
-
-TEST(GlContextTest, UnknownBackendNamesWhereItCameFrom) {
-  try {
-    choose_gl_backend("vulkan");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "--backend must be osmesa or egl, got 'vulkan'");
-  }
-  GlBackendEnv env("glx");
-  try {
-    choose_gl_backend("");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "PAMSIM_GL_BACKEND must be osmesa or egl, got 'glx'");
-  }
-}
-
 // Sets an environment variable for one scope, unsets it after (also when a test fails).
 class ScopedEnv {
  public:
@@ -57,13 +25,38 @@ class ScopedEnv {
   const char* name_;
 };
 
+TEST(GlContextTest, OptionBeatsEnvironmentBeatsDefault) {
+  ::unsetenv("PAMSIM_GL_BACKEND");
+  EXPECT_EQ(choose_gl_backend(""), GlBackend::kOsmesa);
+  EXPECT_EQ(choose_gl_backend("egl"), GlBackend::kEgl);
+  ScopedEnv env("PAMSIM_GL_BACKEND", "egl");
+  EXPECT_EQ(choose_gl_backend(""), GlBackend::kEgl);
+  EXPECT_EQ(choose_gl_backend("osmesa"), GlBackend::kOsmesa);
+}
+
+TEST(GlContextTest, UnknownBackendNamesWhereItCameFrom) {
+  try {
+    choose_gl_backend("vulkan");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "--backend must be osmesa or egl, got 'vulkan'");
+  }
+  ScopedEnv env("PAMSIM_GL_BACKEND", "glx");
+  try {
+    choose_gl_backend("");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "PAMSIM_GL_BACKEND must be osmesa or egl, got 'glx'");
+  }
+}
+
 TEST(GlContextTest, MujocoGlCountsAfterPamsimGlBackendAndOnlyForHeadlessValues) {
   ::unsetenv("PAMSIM_GL_BACKEND");
   {
     ScopedEnv mujoco("MUJOCO_GL", "egl");
     EXPECT_EQ(choose_gl_backend(""), GlBackend::kEgl);
     EXPECT_EQ(choose_gl_backend("osmesa"), GlBackend::kOsmesa);
-    GlBackendEnv own("osmesa");   // pamsim's own variable is the more specific
+    ScopedEnv own("PAMSIM_GL_BACKEND", "osmesa");   // pamsim's own variable is the more specific
     EXPECT_EQ(choose_gl_backend(""), GlBackend::kOsmesa);
   }
   for (const char* window_system : {"glfw", "glx", "EGL"}) {   // MuJoCo's, not headless
