@@ -178,7 +178,9 @@ struct PyResult {
     const Trajectory& t = result.trajectory;
     py::array_t<double> a({static_cast<py::ssize_t>(t.rows()),
                            static_cast<py::ssize_t>(t.columns.size())});
-    if (!t.values.empty()) std::memcpy(a.mutable_data(), t.values.data(), t.values.size() * 8);
+    if (!t.values.empty()) {
+      std::memcpy(a.mutable_data(), t.values.data(), t.values.size() * sizeof(double));
+    }
     return a;
   }
   py::dict summary() const { return summary_to_dict(result.summary); }
@@ -334,13 +336,15 @@ py::dict read_sweep(const std::string& path) {
 // The plain C++ loops the Python calls are compared with (bench/python_overhead.py):
 // seconds for Eq. (3)-(5) over the arrays, and per control period of a stepped trial.
 double cxx_force_loop_s(const SpringModel& model, const Array& p_mpa, const Array& d_mm) {
+  if (d_mm.size() != p_mpa.size()) throw InputError("the arrays must have the same length");
   const auto start = std::chrono::steady_clock::now();
-  double sink = 0;
+  double sum = 0;
   for (py::ssize_t i = 0; i < p_mpa.size(); ++i) {
-    sink += spring_force(model, units::mpa_to_pa(p_mpa.data()[i]), units::mm_to_m(d_mm.data()[i]));
+    sum += spring_force(model, units::mpa_to_pa(p_mpa.data()[i]), units::mm_to_m(d_mm.data()[i]));
   }
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return sink == 12345.678 ? -s : s;   // (keeps the loop)
+  volatile double sink = sum;   // the loop's result is used, so it is not optimised away
+  (void)sink;
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 double cxx_step_s(const std::string& path, const py::object& overrides, int periods) {
@@ -437,6 +441,9 @@ PYBIND11_MODULE(_pamsim, m) {
           validate_tensile_options(o);
           if (py::isinstance<SpringModel>(law_or_plant)) {
             return rows_to_dict(run_tensile_test(law_or_plant.cast<SpringModel>(), o));
+          }
+          if (!py::isinstance<py::str>(law_or_plant)) {
+            throw InputError("law_or_plant: give a SpringModel or a plant file's path");
           }
           return rows_to_dict(
               run_tensile_test(load_plant_params(law_or_plant.cast<std::string>()).avbdl, o));

@@ -119,6 +119,8 @@ def test_bad_input_raises_value_error_with_the_message():
         pamsim.SpringModel("eq3", 1.0, 2.0, [1.0])
     with pytest.raises(ValueError, match="same length"):
         pamsim.fit("eq3", [0.4, 0.5], [1.0], [2.0, 3.0])
+    with pytest.raises(ValueError, match="law_or_plant"):
+        pamsim.tensile_test(3.0)
     with pytest.raises(ValueError, match="step_mm"):
         pamsim.tensile_test(pamsim.SpringModel.from_file(AGONIST), step_mm=0.0)
     trial = pamsim.Trial(DROP, SHORT)
