@@ -4,6 +4,7 @@
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sunlinsol/sunlinsol_dense.h>
+#include <sundials/sundials_version.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <cstdlib>
@@ -21,6 +22,12 @@ std::string flag_name(int flag) {
 }
 
 }  // namespace
+
+std::string sundials_version() {
+  char version[64] = {};
+  if (SUNDIALSGetVersion(version, static_cast<int>(sizeof(version))) != 0) return "unknown";
+  return version;
+}
 
 CvodeIntegrator::CvodeIntegrator(OdeSystem& system, const CvodeOptions& options, double t0,
                                  const std::vector<double>& y0)

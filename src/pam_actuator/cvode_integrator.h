@@ -34,6 +34,10 @@ class IntegrationError : public std::runtime_error {
   explicit IntegrationError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// The SUNDIALS library's version ("6.4.1"), as it reports itself (SUNDIALSGetVersion), for
+// the provenance of outputs.
+std::string sundials_version();
+
 struct CvodeOptions {
   CvodeMethod method = CvodeMethod::kBdf;  // BDF + dense Newton, or Adams + dense Newton
   double relative_tolerance = 1e-6;

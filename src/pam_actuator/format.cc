@@ -1,6 +1,8 @@
 // format.cc: see format.h.
 #include "pam_actuator/format.h"
 
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -13,12 +15,9 @@ std::string format_value(double v) {
 }
 
 std::string format_shortest(double v) {
+  if (std::isnan(v)) return "nan";
   char buf[40];
-  for (int digits : {15, 16, 17}) {
-    std::snprintf(buf, sizeof(buf), "%.*g", digits, v);
-    if (std::strtod(buf, nullptr) == v) break;
-  }
-  return buf;
+  return std::string(buf, std::to_chars(buf, buf + sizeof(buf), v).ptr);   // shortest exact
 }
 
 std::string format_number(double v) {

@@ -9,7 +9,8 @@ namespace pamsim {
 
 // "%.10g": for error messages and reports.
 std::string format_value(double v);
-// The shortest decimal text (15 to 17 digits) that reads back to exactly v.
+// The shortest decimal text that reads back to exactly v (std::to_chars: "0.14", not
+// "0.14000000000000001"; "inf", "-inf", "nan").
 std::string format_shortest(double v);
 // format_shortest with ".0" appended to an integer-looking result, so TOML reads a float.
 std::string format_number(double v);

@@ -3,11 +3,13 @@
 
 #include <sys/stat.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 
+#include "pam_actuator/format.h"
 #include "pam_actuator/input_error.h"
 
 namespace pamsim {
@@ -49,6 +51,86 @@ std::string read_text_file(const std::string& path) {
 
 toml::table parse_toml_file(const std::string& path) {
   return parse_toml_text(read_text_file(path), path);
+}
+
+
+namespace {
+
+// toml++'s flags without literal strings: strings in double quotes, as people write them
+constexpr toml::format_flags kFormat =
+    toml::toml_formatter::default_flags & ~toml::format_flags::allow_literal_strings;
+
+bool is_bare_key(std::string_view key) {
+  if (key.empty()) return false;
+  for (const char c : key) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') return false;
+  }
+  return true;
+}
+
+std::string key_text(std::string_view key) {
+  if (is_bare_key(key)) return std::string(key);
+  std::ostringstream out;
+  out << toml::toml_formatter{toml::value<std::string>(std::string(key)), kFormat};   // escaped
+  return out.str();
+}
+
+bool is_array_of_tables(const toml::node& node) {
+  const toml::array* a = node.as_array();
+  return a && !a->empty() && a->is_array_of_tables();
+}
+
+}  // namespace
+
+std::string toml_value_text(const toml::node& node) {
+  if (const auto* f = node.as_floating_point()) return format_number(f->get());
+  if (const toml::array* a = node.as_array()) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < a->size(); ++i) out += (i ? ", " : "") + toml_value_text(*a->get(i));
+    return out + "]";
+  }
+  if (const toml::table* t = node.as_table()) {
+    std::string out = "{ ";
+    bool first = true;
+    for (const auto& [k, v] : *t) {
+      out += (first ? "" : ", ") + key_text(k.str()) + " = " + toml_value_text(v);
+      first = false;
+    }
+    return out + (first ? "}" : " }");
+  }
+  std::ostringstream out;
+  node.visit([&](const auto& value) { out << toml::toml_formatter{value, kFormat}; });
+  return out.str();
+}
+
+namespace {
+
+void write_table(const toml::table& table, const std::string& path, std::string* out) {
+  for (const auto& [k, v] : table) {
+    if (v.is_table() || is_array_of_tables(v)) continue;
+    *out += key_text(k.str()) + " = " + toml_value_text(v) + "\n";
+  }
+  for (const auto& [k, v] : table) {
+    const std::string child = (path.empty() ? "" : path + ".") + key_text(k.str());
+    if (const toml::table* t = v.as_table()) {
+      *out += "\n[" + child + "]\n";
+      write_table(*t, child, out);
+    } else if (is_array_of_tables(v)) {
+      for (const toml::node& item : *v.as_array()) {
+        *out += "\n[[" + child + "]]\n";
+        write_table(*item.as_table(), child, out);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::string toml_text(const toml::table& table) {
+  std::string out;
+  write_table(table, "", &out);
+  // a document that starts with a table has no values before its first header
+  return out.rfind("\n", 0) == 0 ? out.substr(1) : out;
 }
 
 }  // namespace pamsim

@@ -26,4 +26,12 @@ std::string read_text_file(const std::string& path);
 // Reads and parses the file at `path`. Throws InputError if it cannot be read or parsed.
 toml::table parse_toml_file(const std::string& path);
 
+// `table` as TOML text, as toml++ writes it except for floats, which are written in their
+// shortest exact form (format_number: "0.14", where toml++ writes 0.14000000000000001):
+// values first, then each sub-table under its [header], arrays of tables as [[header]].
+// parse_toml_text of the result gives back an equal table.
+std::string toml_text(const toml::table& table);
+// One value as TOML text, inline, with floats as in toml_text ("0.14", "[1.0, 2.5]", "\"x\"").
+std::string toml_value_text(const toml::node& value);
+
 }  // namespace pamsim

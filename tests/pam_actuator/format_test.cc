@@ -1,13 +1,20 @@
 // format_test.cc: messages stay one printable line (printable_message): control bytes are
 // escaped, a megabyte value is cut to its ends, UTF-8 is never split, and wrapping a message
-// again changes nothing; InputError keeps a NUL-bearing message whole.
+// again changes nothing; InputError keeps a NUL-bearing message whole. Numbers in files are
+// the shortest text that reads back (format_shortest), and toml_text round-trips.
 #include "pam_actuator/format.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <random>
 #include <string>
 
 #include "pam_actuator/input_error.h"
+#include "pam_actuator/toml_file.h"
 
 namespace pamsim {
 namespace {
@@ -59,6 +66,45 @@ TEST(FormatTest, PathsOfOrdinaryLengthAreNotCut) {
 TEST(FormatTest, InputErrorKeepsAMessageWithANulWhole) {
   const InputError e(std::string("s.toml: design got \"ab\0cd\"", 26));
   EXPECT_EQ(std::string(e.what()), "s.toml: design got \"ab\\x00cd\"");
+}
+
+}  // namespace
+}  // namespace pamsim
+
+namespace pamsim {
+namespace {
+
+TEST(FormatTest, NumbersInFilesAreTheShortestTextThatReadsBack) {
+  EXPECT_EQ(format_shortest(0.14), "0.14");   // printf("%.17g") would say 0.14000000000000001
+  EXPECT_EQ(format_shortest(0.1 + 0.2), "0.30000000000000004");
+  EXPECT_EQ(format_shortest(5e-324), "5e-324");
+  EXPECT_EQ(format_shortest(-36.0), "-36");
+  EXPECT_EQ(format_number(-36.0), "-36.0");   // a float to TOML
+  EXPECT_EQ(format_shortest(std::nan("")), "nan");
+  // every double reads back exactly, over a spread of magnitudes
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<std::uint64_t> bits;
+  for (int i = 0; i < 10000; ++i) {
+    std::uint64_t b = bits(rng);
+    double v;
+    std::memcpy(&v, &b, sizeof(v));
+    if (!std::isfinite(v)) continue;
+    EXPECT_EQ(std::strtod(format_shortest(v).c_str(), nullptr), v) << format_shortest(v);
+  }
+}
+
+TEST(FormatTest, TomlTextRoundTripsAndWritesFloatsShortest) {
+  const std::string source =
+      "seed = 3\nname = \"x y\"\nlist = [0.1, 2.0, 1e-300]\n\n[sim]\nduration_s = 0.14\n\n"
+      "[muscles.agonist]\ncommand = { kind = \"sine\", MPa = 0.6 }\n\n[[axis]]\nkey = \"a.b\"\n"
+      "\n[[axis]]\nkey = \"c\"\n\n[\"odd key\"]\nflag = true\n";
+  const toml::table table = parse_toml_text(source, "test");
+  const std::string text = toml_text(table);
+  EXPECT_EQ(parse_toml_text(text, "again"), table) << text;
+  EXPECT_NE(text.find("duration_s = 0.14\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("list = [0.1, 2.0, 1e-300]"), std::string::npos) << text;
+  EXPECT_EQ(toml_value_text(toml::value<double>(3.0)), "3.0");   // still a float
+  EXPECT_EQ(toml_value_text(toml::value<std::string>("a\"b")), "\"a\\\"b\"");
 }
 
 }  // namespace

@@ -73,7 +73,8 @@ TEST_F(CliRenderTest, VideoDoesNotChangeTheTrial) {
   EXPECT_TRUE(a == b) << "trajectory.csv differs with --video";
   const auto video = decode_video((dir / "filmed" / "trial.mp4").string());
   EXPECT_EQ(video.frames, 45);
-  expect_exactly(dir / "filmed", {"angle.png", "summary.json", "trajectory.csv", "trial.mp4"});
+  expect_exactly(dir / "filmed", {"angle.png", "provenance.json", "scenario.toml", "summary.json",
+                                  "trajectory.csv", "trial.mp4"});
 }
 
 TEST_F(CliRenderTest, EglAndOsmesaDrawTheSameFrames) {

@@ -37,12 +37,20 @@ TEST(CliRunTest, RunWritesTrajectorySummaryAndPlot) {
   EXPECT_EQ(s["status"], "ok");
   for (const char* key : {"seed", "start_angle_deg", "min_angle_deg", "peak_drop_deg",
                           "final_angle_deg", "impact_time_s", "steps", "sim_time_s",
-                          "wall_time_s", "realtime_factor", "reflex_triggers_ago",
+                          "reflex_triggers_ago",
                           "reflex_triggers_anta", "first_trigger_time_s", "mistrips",
                           "recovery_time_s", "length_est_rmse_mm", "length_est_max_error_mm"}) {
     EXPECT_TRUE(s.contains(key)) << key;
   }
   EXPECT_EQ(s["steps"], 1500);
+  // the timing, which varies from run to run, is in provenance.json, not in the summary
+  EXPECT_FALSE(s.contains("wall_time_s"));
+  EXPECT_FALSE(s.contains("realtime_factor"));
+  std::ifstream p(out / "provenance.json");
+  const nlohmann::json prov = nlohmann::json::parse(p);
+  ASSERT_EQ(prov["trials"].size(), 1u);
+  EXPECT_GT(prov["trials"][0]["wall_time_s"].get<double>(), 0.0);
+  EXPECT_GT(prov["trials"][0]["realtime_factor"].get<double>(), 0.0);
   // no temp file left beside the outputs
   for (const auto& e : fs::directory_iterator(out)) {
     EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
@@ -102,19 +110,19 @@ TEST(CliRunTest, ARunThatFailsHalfWayLeavesTheEarlierOutputsAsTheyWere) {
                           out.string();
   ASSERT_EQ(run_pamsim(run).exit_code, 0);
   const auto before = snapshot(dir);
-  const CliResult full = run_pamsim(run + " --set seed=7",
+  const CliResult full = run_pamsim(run + " --set seed=7 --force",
                                     "bash -c 'trap \"\" XFSZ; ulimit -f 32; exec \"$0\" \"$@\"'");
   EXPECT_NE(full.exit_code, 0);
   EXPECT_EQ(line_count(full.err), 1) << full.err;
   EXPECT_EQ(snapshot(dir), before);
 
   // a run of fewer trials replaces the whole set: no trial folder of the earlier run is left
-  ASSERT_EQ(run_pamsim(run + " --trials 3").exit_code, 0) << "3 trials";
-  ASSERT_EQ(run_pamsim(run + " --trials 2").exit_code, 0) << "2 trials";
+  ASSERT_EQ(run_pamsim(run + " --trials 3 --force").exit_code, 0) << "3 trials";
+  ASSERT_EQ(run_pamsim(run + " --trials 2 --force").exit_code, 0) << "2 trials";
   std::set<std::string> names;
   for (const auto& e : fs::directory_iterator(out)) names.insert(e.path().filename());
-  EXPECT_EQ(names, (std::set<std::string>{"angle_band.png", "summary.json", "trial_0000",
-                                          "trial_0001"}));
+  EXPECT_EQ(names, (std::set<std::string>{"angle_band.png", "provenance.json", "scenario.toml",
+                                          "summary.json", "trial_0000", "trial_0001"}));
 }
 
 TEST(CliRunTest, CalibrateReproducesTheShippedCalibration) {

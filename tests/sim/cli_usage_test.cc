@@ -22,7 +22,7 @@ TEST(CliUsageTest, UsageErrorsExitTwoInOneLineWithTheCommandsThereAre) {
            {"rnu scenarios/drop_mass.toml", "did you mean run?"},
            {"validate", "commands: length-estimation, reaching"},
            {"validate reachin", "did you mean reaching?"},
-           {"run", "scenario is required"},
+           {"run", "run needs a scenario file, or --from DIR"},
            {"sweep scenarios/sweep_smoke.toml --bogus", "--bogus"},
            {"run scenarios/drop_mass.toml --trials x", "--trials"},
            // thread counts are bounded (issue 14 item 3): 0 means all cores

@@ -1,7 +1,6 @@
 // main.cc: the `pamsim` command line. Subcommands live in cmd_*.cc (see commands.h);
 // here only the dispatch and the one place that turns errors into an exit code.
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <functional>
@@ -12,24 +11,10 @@
 #include "pam_actuator/format.h"
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
+#include "sim/io/provenance.h"
+#include "sim/io/suggest.h"
 
 namespace {
-
-// Levenshtein distance, for "did you mean".
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
 
 // "; commands: a, b, c" (and "; did you mean b?") for the deepest command given whose
 // subcommand is missing or unknown; "" otherwise.
@@ -52,26 +37,22 @@ std::string subcommand_hint(const CLI::App& app, int argc, char** argv) {
   const bool missing = next >= argc;
   const bool unknown = !missing && argv[next][0] != '-';
   if (!missing && !unknown) return "";
-  std::string list, nearest;
-  std::size_t best = std::string::npos;
+  std::string list;
+  std::vector<std::string> names;
   for (const CLI::App* s : subs) {
     list += (list.empty() ? "" : ", ") + s->get_name();
-    if (unknown) {
-      const std::size_t d = edit_distance(argv[next], s->get_name());
-      if (d < best) {
-        best = d;
-        nearest = s->get_name();
-      }
-    }
+    names.push_back(s->get_name());
   }
   std::string hint = "; commands: " + list;
-  if (unknown && best <= 3) hint += "; did you mean " + nearest + "?";
+  const std::string nearest = unknown ? pamsim::nearest_name(argv[next], names) : "";
+  if (!nearest.empty()) hint += "; did you mean " + nearest + "?";
   return hint;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  pamsim::record_command_line(argc, argv);
   CLI::App app{"pamsim: simulation testbed for PAM-driven arms with a stretch reflex"};
   app.set_version_flag("--version", std::string("pamsim ") + PAMSIM_VERSION);
   app.require_subcommand(1);
@@ -89,6 +70,8 @@ int main(int argc, char** argv) {
   pamsim::add_report_command(app);
   pamsim::add_validate_command(app);
   pamsim::add_tune_command(app);
+  pamsim::add_keys_command(app);
+  pamsim::add_replay_command(app);
 
   try {
     app.parse(argc, argv);

@@ -1,18 +1,24 @@
 // run.cc: `pamsim run SCENARIO.toml [--set key=value ...] [--out DIR] [--trials N]
-// [--threads T] [--video FILE.mp4]`: one trial (outputs in DIR, and with --video its video,
-// rendered as in `pamsim render` with the default settings) or N trials (DIR/trial_<seed>/
-// each, plus the aggregate DIR/summary.json and the angle band plot; no video).
+// [--threads T] [--video FILE.mp4] [--force] [--no-plot]`, or `pamsim run --from DIR`: one
+// trial (outputs in DIR, and with --video its video, rendered as in `pamsim render` with the
+// default settings) or N trials (DIR/trial_<k>/ each, plus the aggregate DIR/summary.json and
+// the angle band plot; no video). Every output folder also holds scenario.toml (the resolved
+// scenario) and provenance.json (provenance.h); `--from DIR` runs DIR's scenario.toml again
+// with DIR's trial count, and writes byte for byte the same trajectory.csv and summary.json.
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "pam_actuator/atomic_file.h"
 #include "pam_actuator/input_error.h"
+#include "pam_actuator/toml_file.h"
 #include "sim/cli/commands.h"
 #include "sim/core/runner.h"
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
+#include "sim/io/provenance.h"
 #include "sim/io/scenario_file.h"
 #include "sim/io/staged_outputs.h"
 #include "sim/render/scene_renderer.h"
@@ -21,17 +27,43 @@
 namespace pamsim {
 namespace {
 
+namespace fs = std::filesystem;
+
 struct RunOptions {
   std::string scenario;
+  std::string from;   // an earlier run's output folder
   std::vector<std::string> overrides;
   std::string out;
   int trials = 1;
+  bool trials_given = false;
   int threads = 0;
   std::string video;  // MP4 of the single trial
+  bool force = false;
+  bool no_plot = false;
 };
 
-std::string default_out_dir(const std::string& scenario) {
-  return "renders/" + std::filesystem::path(scenario).stem().string();
+// What a run writes in its folder (StagedOutputs replaces exactly these).
+const std::vector<std::string> kRunOutputs = {
+    "trajectory.csv", "summary.json", "angle.png", "position.png", "angle_band.png",
+    "trial_[0-9][0-9][0-9][0-9]", kResolvedScenarioFile, kProvenanceFile};
+
+// "renders/<scenario name>", and for each override "__<key's last part>-<value>" (characters
+// other than letters, digits, '.', '_' and '-' as '-'): `--set reflex.v_thr_mm_s=60` runs into
+// renders/drop_mass__v_thr_mm_s-60, beside the unmodified run.
+std::string default_out_dir(const std::string& scenario, const std::vector<std::string>& overrides) {
+  std::string name = fs::path(scenario).stem().string();
+  for (const std::string& o : overrides) {
+    const auto eq = o.find('=');
+    const std::string key = o.substr(0, eq);
+    std::string part = "__" + key.substr(key.find_last_of('.') + 1);
+    if (eq != std::string::npos) part += "-" + o.substr(eq + 1);
+    for (char& c : part) {
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '-') c = '-';
+    }
+    name += part;
+  }
+  if (name.size() > 120) name = name.substr(0, 120);   // a file name's length is bounded
+  return "renders/" + name;
 }
 
 // One line per diverged trial; returns how many diverged.
@@ -46,9 +78,30 @@ int report_diverged(const Scenario& sc, const std::vector<TrialResult>& results)
   return n;
 }
 
-void run(const RunOptions& opt) {
+void run(RunOptions opt) {
+  const auto started = std::chrono::steady_clock::now();
+  Provenance provenance;
+  provenance.command = "run";
+  provenance.started_utc = utc_timestamp();
+  provenance.overrides = opt.overrides;
+  std::string scenario_path = opt.scenario;   // the file read
+  if (!opt.from.empty()) {
+    if (!opt.scenario.empty()) {
+      throw InputError("--from " + opt.from + " runs that folder's scenario.toml; drop " +
+                       opt.scenario + " (or drop --from)");
+    }
+    const Provenance earlier = read_provenance(opt.from);
+    scenario_path = (fs::path(opt.from) / kResolvedScenarioFile).string();
+    provenance.scenario_file = earlier.scenario_file;
+    provenance.from = opt.from;
+    if (!opt.trials_given) opt.trials = static_cast<int>(earlier.seeds.size());
+  } else {
+    if (opt.scenario.empty()) throw InputError("run needs a scenario file, or --from DIR");
+    provenance.scenario_file = opt.scenario;
+  }
   if (opt.trials < 1) throw InputError("--trials must be >= 1, got " + std::to_string(opt.trials));
   const int threads = resolve_thread_count(opt.threads);
+  provenance.threads = opt.video.empty() ? std::min(threads, opt.trials) : 1;
   VideoOptions video;
   if (!opt.video.empty()) {
     if (opt.trials != 1) {
@@ -60,14 +113,27 @@ void run(const RunOptions& opt) {
     if (video.backend == GlBackend::kEgl) video.egl_device = choose_egl_device(-1);
     validate_video_options(video, "--video");
   }
-  const Scenario sc = load_scenario(opt.scenario, opt.overrides);
+  // read once: the resolved scenario below is this text, whatever happens to the file
+  const std::string scenario_text = read_text_file(scenario_path);
+  Scenario sc = load_scenario_text(scenario_text, scenario_path, opt.overrides);
+  // a rerun's summary names the scenario file the first run was given, as that run's did
+  if (!opt.from.empty()) sc.path = provenance.scenario_file;
   const TrialModel model = load_trial_model(sc);
   if (!opt.video.empty()) check_camera(model.model.get(), model.model_path, video.camera);
-  const std::string out = opt.out.empty() ? default_out_dir(opt.scenario) : opt.out;
+  const std::string out = !opt.out.empty() ? opt.out
+                          : !opt.from.empty() ? fs::path(opt.from).lexically_normal().string() + "_rerun"
+                                              : default_out_dir(opt.scenario, opt.overrides);
+  if (!opt.force) refuse_earlier_outputs(out, kRunOutputs);
+  const bool plots = plots_wanted(opt.no_plot);
   // every output is written into a staging folder and published together at the end: a
   // failure half way leaves the folder as it was (made only once every input is good)
-  StagedOutputs staged(out, {"trajectory.csv", "summary.json", "angle.png", "position.png",
-                             "angle_band.png", "trial_[0-9][0-9][0-9][0-9]"});
+  StagedOutputs staged(out, kRunOutputs);
+  // the resolved scenario, with paths relative to the output folder
+  const std::string resolved = resolved_scenario_toml(
+      scenario_text, scenario_path, opt.overrides, out,
+      "# The scenario of a pamsim run, resolved by pamsim " PAMSIM_VERSION " from " +
+          provenance.scenario_file + "\n# (provenance.json beside it says how); pamsim run --from "
+          "<this folder> runs it again\n");
   std::vector<TrialResult> results;
   if (opt.video.empty()) {
     results = run_trials(model, sc, opt.trials, threads);
@@ -75,14 +141,18 @@ void run(const RunOptions& opt) {
     // the same trial as run_trials' first, watched by the renderer
     results.push_back(run_rendered_trial(model, sc, sc.seed, video, true).trial);
   }
+  for (const TrialResult& r : results) {
+    provenance.seeds.push_back(r.summary.seed);
+    provenance.trials.push_back(timing_of(r.summary));
+  }
 
   nlohmann::json printed;
   staged.write([&] {
     if (opt.trials == 1) {
       const TrialResult& r = results.front();
       write_trial_outputs(staged.staging(), r, sc);
-      write_angle_plot(staged.path(trial_plot_name(r.trajectory)), r, sc);
-      printed = summary_to_json(r.summary, sc);
+      if (plots) write_angle_plot(staged.path(trial_plot_name(r.trajectory)), r, sc);
+      printed = summary_to_json(r.summary, sc, false);
     } else {
       std::vector<TrialSummary> summaries;
       std::vector<const Trajectory*> trajectories;
@@ -95,8 +165,13 @@ void run(const RunOptions& opt) {
       }
       printed = aggregate_summaries(summaries, sc);
       write_file_atomically(staged.path("summary.json"), printed.dump(2) + "\n");
-      write_angle_band_plot(staged.path("angle_band.png"), trajectories, sc);
+      if (plots) write_angle_band_plot(staged.path("angle_band.png"), trajectories, sc);
     }
+    write_file_atomically(staged.path(kResolvedScenarioFile), resolved);
+    provenance.wall_time_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    write_file_atomically(staged.path(kProvenanceFile),
+                          provenance_to_json(provenance).dump(2) + "\n");
   });
   staged.publish();
   std::cout << printed.dump(2) << "\n";
@@ -109,15 +184,27 @@ void run(const RunOptions& opt) {
 void add_run_command(CLI::App& app) {
   auto opt = std::make_shared<RunOptions>();
   CLI::App* cmd = app.add_subcommand("run", "Run a scenario: one trial, or --trials N in parallel");
-  cmd->add_option("scenario", opt->scenario, "Scenario file (TOML)")->required();
+  cmd->add_option("scenario", opt->scenario, "Scenario file (TOML)");
+  cmd->add_option("--from", opt->from,
+                  "Run an earlier run's scenario.toml again (its folder), with its trial count");
   cmd->add_option("--set", opt->overrides, "Override a scenario key: --set reflex.v_thr_mm_s=60")
       ->take_all();
-  cmd->add_option("--out", opt->out, "Output folder (default renders/<scenario name>)");
-  cmd->add_option("--trials", opt->trials, "Number of trials, seeds seed..seed+N-1");
-  cmd->add_option("--threads", opt->threads, "Worker threads (default: all cores)");
+  cmd->add_option("--out", opt->out,
+                  "Output folder (default renders/<scenario name>[__<key>-<value> per --set], "
+                  "or DIR_rerun with --from DIR)");
+  CLI::Option* trials = cmd->add_option("--trials", opt->trials,
+                                        "Number of trials, seeds seed..seed+N-1")
+                            ->capture_default_str();
+  cmd->add_option("--threads", opt->threads, "Worker threads (0: all cores)")->capture_default_str();
   cmd->add_option("--video", opt->video,
                   "Also render the trial to this MP4 (1280x720, 30 fps; see pamsim render)");
-  cmd->callback([opt] { run(*opt); });
+  cmd->add_flag("--force", opt->force, "Replace the outputs of an earlier run in the folder");
+  cmd->add_flag("--no-plot", opt->no_plot, "Write no plots (gnuplot not needed)");
+  cmd->callback([opt, trials] {
+    RunOptions o = *opt;
+    o.trials_given = trials->count() > 0;
+    run(o);
+  });
 }
 
 }  // namespace pamsim

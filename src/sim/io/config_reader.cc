@@ -7,6 +7,7 @@
 
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/toml_file.h"
+#include "sim/io/suggest.h"
 
 namespace pamsim {
 namespace {
@@ -77,7 +78,10 @@ const toml::node* ConfigReader::find(const std::string& key) const {
   return n;
 }
 
-bool ConfigReader::has(const std::string& key) const { return find(key) != nullptr; }
+bool ConfigReader::has(const std::string& key) const {
+  asked_.insert(key);
+  return find(key) != nullptr;
+}
 
 std::string ConfigReader::where(const std::string& key) const {
   return overridden_.count(key) ? name_ + ": --set " + key : name_ + ": " + key;
@@ -90,7 +94,10 @@ void ConfigReader::fail(const std::string& key, const std::string& problem) cons
 double ConfigReader::get_double(const std::string& key, double fallback) {
   read_.insert(key);
   const toml::node* n = find(key);
-  if (!n) return fallback;
+  if (!n) {
+    defaults_[key] = format_number(fallback);
+    return fallback;
+  }
   std::optional<double> v = n->value<double>();
   if (!v || n->is_boolean()) fail(key, "must be a number");
   check(std::isfinite(*v), key, "must be finite, got " + format_value(*v));
@@ -105,7 +112,10 @@ double ConfigReader::require_double(const std::string& key) {
 std::int64_t ConfigReader::get_int(const std::string& key, std::int64_t fallback) {
   read_.insert(key);
   const toml::node* n = find(key);
-  if (!n) return fallback;
+  if (!n) {
+    defaults_[key] = std::to_string(fallback);
+    return fallback;
+  }
   if (!n->is_integer()) fail(key, "must be an integer");
   return *n->value<std::int64_t>();
 }
@@ -113,7 +123,10 @@ std::int64_t ConfigReader::get_int(const std::string& key, std::int64_t fallback
 bool ConfigReader::get_bool(const std::string& key, bool fallback) {
   read_.insert(key);
   const toml::node* n = find(key);
-  if (!n) return fallback;
+  if (!n) {
+    defaults_[key] = fallback ? "true" : "false";
+    return fallback;
+  }
   if (!n->is_boolean()) fail(key, "must be true or false");
   return *n->value<bool>();
 }
@@ -121,7 +134,10 @@ bool ConfigReader::get_bool(const std::string& key, bool fallback) {
 std::string ConfigReader::get_string(const std::string& key, const std::string& fallback) {
   read_.insert(key);
   const toml::node* n = find(key);
-  if (!n) return fallback;
+  if (!n) {
+    if (!fallback.empty()) defaults_[key] = toml_value_text(toml::value<std::string>(fallback));
+    return fallback;
+  }
   if (!n->is_string()) fail(key, "must be a string");
   return *n->value<std::string>();
 }
@@ -157,7 +173,14 @@ std::vector<std::string> ConfigReader::get_string_list(const std::string& key,
                                                      const std::vector<std::string>& fallback) {
   read_.insert(key);
   const toml::node* n = find(key);
-  if (!n) return fallback;
+  if (!n) {
+    if (!fallback.empty()) {
+      toml::array list;
+      for (const auto& item : fallback) list.push_back(item);
+      defaults_[key] = toml_value_text(list);
+    }
+    return fallback;
+  }
   const toml::array* a = n->as_array();
   if (!a) fail(key, "must be a list of strings");
   std::vector<std::string> out;
@@ -172,7 +195,14 @@ std::vector<double> ConfigReader::get_double_list(const std::string& key,
                                                   const std::vector<double>& fallback) {
   read_.insert(key);
   const toml::node* n = find(key);
-  if (!n) return fallback;
+  if (!n) {
+    if (!fallback.empty()) {
+      toml::array list;
+      for (const double item : fallback) list.push_back(item);
+      defaults_[key] = toml_value_text(list);
+    }
+    return fallback;
+  }
   const toml::array* a = n->as_array();
   if (!a) fail(key, "must be a list of numbers");
   std::vector<double> out;
@@ -200,6 +230,7 @@ std::vector<std::string> ConfigReader::leaf_keys() const {
 }
 
 bool ConfigReader::is_table(const std::string& key) const {
+  asked_.insert(key);
   const toml::node* n = find(key);
   return n && n->is_table();
 }
@@ -238,8 +269,16 @@ void ConfigReader::reject_unknown() const {
   std::vector<std::string> leaves;
   collect_leaves(doc_, "", &leaves);
   for (const auto& key : leaves) {
-    if (!read_.count(key)) fail(key, "is not a known key");
+    if (read_.count(key)) continue;
+    const std::string nearest = nearest_name(key, asked_keys());
+    fail(key, "is not a known key" + (nearest.empty() ? "" : "; did you mean " + nearest + "?"));
   }
+}
+
+std::vector<std::string> ConfigReader::asked_keys() const {
+  std::set<std::string> all = read_;
+  all.insert(asked_.begin(), asked_.end());
+  return {all.begin(), all.end()};
 }
 
 }  // namespace pamsim

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -57,8 +58,16 @@ class ConfigReader {
   // The document with the overrides applied (to write it back out, e.g. a sweep's best setting).
   const toml::table& document() const { return doc_; }
 
-  // Throws InputError naming the first key that was never read.
+  // Throws InputError naming the first key that was never read, with the nearest key the
+  // reader asked for ("did you mean reflex.v_thr_mm_s?").
   void reject_unknown() const;
+
+  // Every key the reader asked for (read, or asked whether present), given or not.
+  std::vector<std::string> asked_keys() const;
+  // The keys read with a fallback that the document does not give, and the fallback used,
+  // as TOML value text ("0.001", "true", "\"iso6358\""): the defaults in effect. Empty
+  // fallbacks ("", []: "not given") are not listed.
+  const std::map<std::string, std::string>& defaults_used() const { return defaults_; }
 
   // "<file>: <key> <problem>" (with "--set" named when the key came from an override).
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
@@ -80,6 +89,8 @@ class ConfigReader {
   toml::table doc_;
   std::string name_;
   std::set<std::string> read_;
+  mutable std::set<std::string> asked_;   // has() and is_table() queries
+  std::map<std::string, std::string> defaults_;
   std::set<std::string> overridden_;
 };
 

@@ -42,7 +42,8 @@ std::string sh_quote(const std::string& s) {
   return out + "'";
 }
 
-// the gnuplot executable on PATH, or "" if there is none
+}  // namespace
+
 std::string find_gnuplot() {
   const char* path = std::getenv("PATH");
   if (path == nullptr) return "";
@@ -55,6 +56,8 @@ std::string find_gnuplot() {
   }
   return "";
 }
+
+namespace {
 
 // a private folder under the system temp folder, removed with everything in it
 class TempDir {

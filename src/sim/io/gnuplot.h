@@ -25,6 +25,9 @@ struct GnuplotJob {
 // gnuplot is missing ("gnuplot not found") or fails ("gnuplot failed: <its error line>").
 void run_gnuplot(const std::string& png_path, const GnuplotJob& job);
 
+// The gnuplot executable on PATH, or "" if there is none.
+std::string find_gnuplot();
+
 // A gnuplot single-quoted string literal ('' escapes a quote).
 std::string gp_quote(const std::string& s);
 // A number for a .dat file or a script; non-finite as "nan" (missing, see set datafile).

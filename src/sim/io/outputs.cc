@@ -9,9 +9,13 @@
 #include <map>
 #include <vector>
 
+#include <boost/math/distributions/students_t.hpp>
+
 #include "pam_actuator/atomic_file.h"
+#include "pam_actuator/format.h"
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/units.h"
+#include "sim/core/metrics.h"
 
 namespace pamsim {
 namespace {
@@ -49,29 +53,24 @@ std::string trajectory_to_csv(const Trajectory& tr) {
     out += (c ? "," : "") + tr.columns[c];
   }
   out += "\n";
-  char buf[32];
   for (std::size_t r = 0; r < tr.rows(); ++r) {
     for (std::size_t c = 0; c < tr.columns.size(); ++c) {
       const double v = tr.at(r, c);
-      if (std::isfinite(v)) {
-        std::snprintf(buf, sizeof(buf), "%.10g", v);
-      } else {
-        std::snprintf(buf, sizeof(buf), "nan");
-      }
       if (c) out += ',';
-      out += buf;
+      out += std::isfinite(v) ? format_shortest(v) : "nan";
     }
     out += '\n';
   }
   return out;
 }
 
-nlohmann::json summary_to_json(const TrialSummary& s, const Scenario& sc) {
+nlohmann::json summary_to_json(const TrialSummary& s, const Scenario& sc, bool with_timing) {
   nlohmann::json j;
   j["status"] = s.status;
   if (!s.message.empty()) j["message"] = s.message;
   j["seed"] = s.seed;
   for (const Metric& m : s.metrics) {
+    if (!with_timing && is_timing_metric(m.name)) continue;
     j[m.name] = m.integer ? nlohmann::json(static_cast<long>(m.value)) : number_or_null(m.value);
   }
   j["scenario"] = scenario_json(sc);
@@ -90,30 +89,66 @@ nlohmann::json aggregate_summaries(const std::vector<TrialSummary>& summaries, c
   j["seeds"] = seeds;
   j["status_counts"] = status_counts;
 
-  // mean, min and max over the trials where the metric is defined
+  // over the trials where the metric is defined (timing metrics: provenance.json)
   nlohmann::json metrics = nlohmann::json::object();
   if (!summaries.empty()) {
     const std::vector<Metric>& names = summaries.front().metrics;
     for (std::size_t k = 0; k < names.size(); ++k) {
-      double sum = 0, lo = INFINITY, hi = -INFINITY;
-      int n = 0;
+      if (is_timing_metric(names[k].name)) continue;
+      std::vector<double> values;
       for (const auto& s : summaries) {
         const double v = k < s.metrics.size() ? s.metrics[k].value : NAN;
-        if (!std::isfinite(v)) continue;
-        sum += v;
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-        ++n;
+        if (std::isfinite(v)) values.push_back(v);
       }
-      metrics[names[k].name] = {{"mean", n ? nlohmann::json(sum / n) : nlohmann::json(nullptr)},
-                                {"min", n ? nlohmann::json(lo) : nlohmann::json(nullptr)},
-                                {"max", n ? nlohmann::json(hi) : nlohmann::json(nullptr)},
-                                {"count", n}};
+      const SampleStats st = sample_stats(values);
+      metrics[names[k].name] = {{"mean", number_or_null(st.mean)},
+                                {"sd", number_or_null(st.sd)},
+                                {"ci95_low", number_or_null(st.ci95_low)},
+                                {"ci95_high", number_or_null(st.ci95_high)},
+                                {"min", number_or_null(st.min)},
+                                {"max", number_or_null(st.max)},
+                                {"count", st.count}};
     }
   }
   j["metrics"] = metrics;
   j["scenario"] = scenario_json(sc);
   return j;
+}
+
+SampleStats sample_stats(const std::vector<double>& values) {
+  SampleStats st;
+  st.count = static_cast<int>(values.size());
+  if (values.empty()) return st;
+  double sum = 0;
+  st.min = INFINITY;
+  st.max = -INFINITY;
+  for (const double v : values) {
+    sum += v;
+    st.min = std::min(st.min, v);
+    st.max = std::max(st.max, v);
+  }
+  st.mean = sum / st.count;
+  if (st.count < 2) return st;
+  double squares = 0;
+  for (const double v : values) squares += (v - st.mean) * (v - st.mean);
+  st.sd = std::sqrt(squares / (st.count - 1));
+  // Student's t interval for the mean: mean +- t(0.975, n - 1) sd / sqrt(n)
+  const boost::math::students_t t(st.count - 1);
+  const double half = boost::math::quantile(t, 0.975) * st.sd / std::sqrt(double(st.count));
+  st.ci95_low = st.mean - half;
+  st.ci95_high = st.mean + half;
+  return st;
+}
+
+void refuse_existing_file(const std::string& path, bool force) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (force || path == "-") return;
+  const fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st) || fs::is_fifo(st) || fs::is_character_file(st) || fs::is_block_file(st)) {
+    return;
+  }
+  throw InputError(path + ": exists; add --force to replace it, or choose another output");
 }
 
 void make_directories(const std::string& dir) {
@@ -161,7 +196,8 @@ void FolderGuard::remove_made() {
 void write_trial_outputs(const std::string& dir, const TrialResult& result, const Scenario& sc) {
   make_directories(dir);
   write_file_atomically(dir + "/trajectory.csv", trajectory_to_csv(result.trajectory));
-  write_file_atomically(dir + "/summary.json", summary_to_json(result.summary, sc).dump(2) + "\n");
+  write_file_atomically(dir + "/summary.json",
+                        summary_to_json(result.summary, sc, false).dump(2) + "\n");
 }
 
 }  // namespace pamsim

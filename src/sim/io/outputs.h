@@ -1,8 +1,11 @@
 // outputs.h: a trial's files: trajectory.csv (header row, one row per control tick, units
-// in the column names) and summary.json (metrics, NaN written as null), and the aggregate
-// summary of repeated trials (mean, min, max of every metric). Written atomically.
+// in the column names, numbers in shortest round-trip form) and summary.json (metrics, NaN
+// written as null; the timing metrics, which vary from run to run, go to provenance.json),
+// and the aggregate summary of repeated trials (mean, SD, 95 % confidence interval of the
+// mean, min, max of every metric). Written atomically.
 #pragma once
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -13,10 +16,26 @@
 namespace pamsim {
 
 std::string trajectory_to_csv(const Trajectory& trajectory);
-nlohmann::json summary_to_json(const TrialSummary& summary, const Scenario& scenario);
-// {"trials": N, "seeds": [...], "status_counts": {...}, "metrics": {name: {mean,min,max}}}
+// With `with_timing`, wall_time_s and realtime_factor too (not in summary.json files).
+nlohmann::json summary_to_json(const TrialSummary& summary, const Scenario& scenario,
+                               bool with_timing = true);
+// {"trials": N, "seeds": [...], "status_counts": {...},
+//  "metrics": {name: {mean, sd, ci95_low, ci95_high, min, max, count}}} (no timing metrics)
 nlohmann::json aggregate_summaries(const std::vector<TrialSummary>& summaries,
                                    const Scenario& scenario);
+
+// Mean, sample SD and the 95 % confidence interval of the mean (Student's t, n - 1 degrees
+// of freedom) of `values`; NaN where undefined (SD and interval need two values).
+struct SampleStats {
+  int count = 0;
+  double mean = NAN, sd = NAN, ci95_low = NAN, ci95_high = NAN, min = NAN, max = NAN;
+};
+SampleStats sample_stats(const std::vector<double>& values);
+
+// Outputs are not replaced silently: throws InputError "<path>: exists; add --force to
+// replace it" if `path` is an existing file or folder, unless `force`. Standard output ("-"),
+// a FIFO or a device (written through, never replaced) are always allowed.
+void refuse_existing_file(const std::string& path, bool force);
 
 // Creates `dir` (and parents) or throws InputError naming it.
 void make_directories(const std::string& dir);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -174,6 +175,14 @@ std::string joint_column(const Trajectory& tr) {
     if (tr.has_column(name)) return name;
   }
   throw std::out_of_range("no trajectory column angle_deg or position_mm");
+}
+
+bool plots_wanted(bool no_plot) {
+  if (no_plot) return false;
+  if (!find_gnuplot().empty()) return true;
+  std::cerr << "pamsim: gnuplot not found on PATH: plots skipped (install gnuplot-nox for "
+               "them, or pass --no-plot)\n";
+  return false;
 }
 
 std::string trial_plot_name(const Trajectory& tr) {

@@ -72,6 +72,11 @@ struct HeatMap {
   std::string mark_label;
 };
 
+// Whether a command draws its plots: not with --no-plot (`no_plot`), and not without gnuplot
+// on PATH, which is said once on stderr ("pamsim: gnuplot not found on PATH: plots skipped
+// ..."): the command's other outputs do not need it.
+bool plots_wanted(bool no_plot);
+
 // Throws std::runtime_error if gnuplot is missing or fails (message names the file).
 void write_angle_plot(const std::string& png_path, const TrialResult& trial,
                       const Scenario& scenario);

@@ -5,10 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <map>
 #include <set>
 
+#include "pam_actuator/toml_file.h"
 #include "pam_actuator/units.h"
 #include "sim/core/metrics.h"
+#include "sim/io/scenario_keys.h"
 #include "sim/io/scenario_reading.h"
 
 namespace pamsim {
@@ -263,6 +267,54 @@ Scenario load_scenario_for_calibration(const std::string& path,
                                        const std::vector<std::string>& overrides) {
   ConfigReader in(path);
   return read_scenario(in, overrides, false);
+}
+
+std::string resolved_scenario_toml(const std::string& text, const std::string& path,
+                                   const std::vector<std::string>& overrides,
+                                   const std::string& dir, const std::string& header) {
+  ConfigReader in(text, path);
+  read_scenario(in, overrides);   // validates, and finds the defaults
+  const std::map<std::string, std::string> defaults = in.defaults_used();
+  // file paths: relative to the new file's folder
+  namespace fs = std::filesystem;
+  const fs::path to = fs::weakly_canonical(fs::absolute(dir));
+  for (const auto& key : in.leaf_keys()) {
+    if (!is_scenario_path_key(key)) continue;
+    const fs::path target = fs::weakly_canonical(fs::absolute(in.get_path(key, "")));
+    std::string relative = target.lexically_relative(to).generic_string();
+    if (relative.empty()) relative = target.generic_string();
+    in.apply_override(key + "=" + toml_value_text(toml::value<std::string>(relative)));
+  }
+  std::string out = header + toml_text(in.document());
+  if (!defaults.empty()) {
+    out += "\n# Keys left at their defaults, with the values in effect:\n";
+    for (const auto& [key, value] : defaults) out += "# " + key + " = " + value + "\n";
+  }
+  return out;
+}
+
+std::vector<ScenarioKeyValue> scenario_key_values(const std::string& path,
+                                                 const std::vector<std::string>& overrides) {
+  ConfigReader in(path);
+  read_scenario(in, overrides);
+  const std::vector<std::string> asked = in.asked_keys();   // sorted
+  std::vector<ScenarioKeyValue> out;
+  for (std::size_t i = 0; i < asked.size(); ++i) {
+    const std::string& key = asked[i];
+    const bool is_table_name = in.is_table(key) || is_scenario_table(key) ||
+        (i + 1 < asked.size() && asked[i + 1].rfind(key + ".", 0) == 0);
+    if (is_table_name) continue;
+    ScenarioKeyValue kv{key, "", false};
+    const toml::node_view<const toml::node> node = in.document().at_path(key);
+    if (node) {
+      kv.value = toml_value_text(*node.node());
+    } else if (const auto d = in.defaults_used().find(key); d != in.defaults_used().end()) {
+      kv.value = d->second;
+      kv.is_default = true;
+    }
+    out.push_back(kv);
+  }
+  return out;
 }
 
 bool is_scenario_path_key(const std::string& key) {

@@ -88,6 +88,29 @@ Scenario load_scenario_text(const std::string& text, const std::string& path,
 Scenario load_scenario_for_calibration(const std::string& path,
                                        const std::vector<std::string>& overrides = {});
 
+// A scenario (its `text`, read as if from `path`) with `overrides` applied, as a TOML file to
+// be written into `dir`: `header` (comment lines) first, then the document's keys with the
+// overrides set, file paths rewritten relative to `dir` and floats in shortest form; last,
+// as comments ("# sim.timestep_s = 0.001"), every key the scenario left at its default, with
+// the value in effect. Reads the scenario to find them, so it throws InputError like
+// load_scenario on a bad one. Loading the result gives the same Scenario.
+std::string resolved_scenario_toml(const std::string& text, const std::string& path,
+                                   const std::vector<std::string>& overrides,
+                                   const std::string& dir, const std::string& header);
+
+// Every key the reader asks for when reading the scenario at `path` with `overrides`
+// (given or not): the keys it accepts for that scenario's muscles, events and options, in
+// key order, each with its value as TOML text: the file's (or the override's), else the
+// default in effect, else "" (an optional key not given). Tables asked for as a whole
+// ("drop", "muscles.agonist.command") are left out.
+struct ScenarioKeyValue {
+  std::string key;
+  std::string value;
+  bool is_default = false;
+};
+std::vector<ScenarioKeyValue> scenario_key_values(const std::string& path,
+                                                 const std::vector<std::string>& overrides = {});
+
 // True for the keys that hold file paths (relative to the scenario file), for tools that
 // move a scenario elsewhere (a sweep's best.toml): model.file, model.calibration,
 // model.pneumatics, model.<m>_params, muscles.<m>.params, muscles.<m>.plant,

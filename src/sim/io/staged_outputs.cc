@@ -16,7 +16,27 @@ namespace {
 
 namespace fs = std::filesystem;
 
+bool matches_any(const std::vector<std::string>& patterns, const std::string& name) {
+  return std::any_of(patterns.begin(), patterns.end(), [&](const std::string& pattern) {
+    return ::fnmatch(pattern.c_str(), name.c_str(), FNM_PERIOD) == 0;
+  });
+}
+
 }  // namespace
+
+void refuse_earlier_outputs(const std::string& dir, const std::vector<std::string>& owned) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return;
+  std::vector<std::string> found;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    if (matches_any(owned, e.path().filename())) found.push_back(e.path().filename());
+  }
+  if (found.empty()) return;
+  std::sort(found.begin(), found.end());
+  throw InputError((fs::path(dir) / found.front()).string() +
+                   ": exists, from an earlier run; add --force to replace that run's outputs, "
+                   "or choose another --out");
+}
 
 StagedOutputs::StagedOutputs(std::string dir, std::vector<std::string> owned)
     : dir_(std::move(dir)), owned_(std::move(owned)) {
@@ -81,11 +101,7 @@ void StagedOutputs::publish() {
     staging_->release();
     throw InputError(message + "; the earlier outputs are kept in " + replaced.string());
   };
-  const auto owned = [&](const std::string& name) {
-    return std::any_of(owned_.begin(), owned_.end(), [&](const std::string& pattern) {
-      return ::fnmatch(pattern.c_str(), name.c_str(), FNM_PERIOD) == 0;
-    });
-  };
+  const auto owned = [&](const std::string& name) { return matches_any(owned_, name); };
   std::vector<std::string> old_names;  // read first: the folder changes below
   for (const auto& e : fs::directory_iterator(dir_)) {
     if (fs::equivalent(e.path(), staging, ec)) continue;  // (it is inside `dir`)

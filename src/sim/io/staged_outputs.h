@@ -54,4 +54,10 @@ class StagedOutputs {
   bool published_ = false;
 };
 
+// Outputs are not replaced silently: throws InputError "<dir>/<entry>: exists, from an
+// earlier run; add --force to replace that run's outputs, or choose another --out" if `dir`
+// holds an entry matching one of `owned` (a command's own outputs, as for StagedOutputs).
+// The user's other files in `dir` do not count.
+void refuse_earlier_outputs(const std::string& dir, const std::vector<std::string>& owned);
+
 }  // namespace pamsim

@@ -235,31 +235,8 @@ std::string point_scenario_toml(const SweepSummary& sweep, const PointSummary& p
   for (std::size_t a = 0; a < sweep.axis_keys.size(); ++a) {
     overrides.push_back(sweep.axis_keys[a] + "=" + point.axis_values[a]);
   }
-  return scenario_with_overrides_toml(sweep.base_scenario, sweep.base_path, overrides,
-                                      scenario_dir, header);
-}
-
-std::string scenario_with_overrides_toml(const std::string& base_text,
-                                         const std::string& base_path,
-                                         const std::vector<std::string>& overrides,
-                                         const std::string& scenario_dir,
-                                         const std::string& header) {
-  ConfigReader in(base_text, base_path);
-  for (const auto& o : overrides) in.apply_override(o);
-  // file paths: relative to the new file's folder
-  const fs::path dir = fs::weakly_canonical(fs::absolute(scenario_dir));
-  for (const auto& key : in.leaf_keys()) {
-    if (!is_scenario_path_key(key)) continue;
-    const fs::path target = fs::weakly_canonical(fs::absolute(in.get_path(key, "")));
-    AxisValue path;
-    path.kind = AxisValue::Kind::kString;
-    path.text = target.lexically_relative(dir).generic_string();
-    if (path.text.empty()) path.text = target.generic_string();
-    in.apply_override(key + "=" + path.toml());
-  }
-  std::ostringstream out;
-  out << header << toml::toml_formatter{in.document()} << "\n";
-  return out.str();
+  return resolved_scenario_toml(sweep.base_scenario, sweep.base_path, overrides, scenario_dir,
+                                header);
 }
 
 std::string points_csv(const SweepSummary& sweep) {

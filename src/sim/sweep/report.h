@@ -55,15 +55,9 @@ std::string best_criterion(const SweepSummary& sweep, const std::string& metric)
 
 // The base scenario with the sweep's fixed keys and the point's axis values set, its file
 // paths rewritten relative to `scenario_dir` (where it will be written), as TOML text with a
-// header saying where it came from.
+// header saying where it came from (resolved_scenario_toml, scenario_file.h).
 std::string point_scenario_toml(const SweepSummary& sweep, const PointSummary& point,
                                 const std::string& scenario_dir, const std::string& header);
-// The same for any scenario text (read as if from base_path) with `overrides` applied.
-std::string scenario_with_overrides_toml(const std::string& base_text,
-                                         const std::string& base_path,
-                                         const std::vector<std::string>& overrides,
-                                         const std::string& scenario_dir,
-                                         const std::string& header);
 
 // points.csv: point, the axis values, trials, ok, mistrip_rate, then <metric>_mean, _std,
 // _min, _max for every metric (timing metrics left out).

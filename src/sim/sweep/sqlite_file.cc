@@ -63,15 +63,6 @@ std::string read_only_uri(const std::string& path) {
   return uri_of(path, why_not_writable(path).empty() ? "mode=ro" : "immutable=1");
 }
 
-std::string utc_timestamp() {
-  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof(buf), "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
 void StatementDeleter::operator()(sqlite3_stmt* s) const { sqlite3_finalize(s); }
 
 Statement prepare_statement(sqlite3* db, const std::string& sql) {

@@ -8,14 +8,12 @@
 #include <string>
 
 #include "sim/io/outputs.h"
+#include "sim/io/provenance.h"   // utc_timestamp, for created_utc
 
 struct sqlite3;
 struct sqlite3_stmt;
 
 namespace pamsim {
-
-// The current time in UTC, ISO 8601 ("2026-11-24T00:15:55Z"): a database's created_utc.
-std::string utc_timestamp();
 
 // A prepared statement, finalized when it goes.
 struct StatementDeleter {

@@ -949,7 +949,7 @@ void write_tune_outputs(const TuneDefinition& def, const std::vector<TuneEvaluat
          << "\n";
   write_file_atomically(
       out.path("best.toml"),
-      scenario_with_overrides_toml(def.base_text, def.base_path, overrides, out.dir(), header.str()));
+      resolved_scenario_toml(def.base_text, def.base_path, overrides, out.dir(), header.str()));
 }
 
 }  // namespace pamsim

@@ -1,0 +1,86 @@
+// keys.cc: `pamsim keys [SCENARIO] [--set key=value ...] [--json]`: every scenario key with
+// its unit, default, allowed values and meaning (io/scenario_keys.h); with a scenario, every
+// key it can take (its muscles', holds' and events' keys by name) with the value in effect
+// and whether that is the default.
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "pam_actuator/input_error.h"
+#include "sim/cli/commands.h"
+#include "sim/io/scenario_file.h"
+#include "sim/io/scenario_keys.h"
+
+namespace pamsim {
+namespace {
+
+struct KeysOptions {
+  std::string scenario;
+  std::vector<std::string> overrides;
+  bool json = false;
+};
+
+const KeyDoc* doc_of(const std::string& key) {
+  const std::string pattern = scenario_key_pattern(key);
+  for (const KeyDoc& d : scenario_key_docs()) {
+    if (d.key == pattern) return &d;
+  }
+  return nullptr;
+}
+
+nlohmann::json doc_json(const KeyDoc& d) {
+  return {{"key", d.key}, {"unit", d.unit}, {"default", d.fallback}, {"allowed", d.allowed},
+          {"meaning", d.meaning}};
+}
+
+void print_doc(const std::string& head, const KeyDoc& d) {
+  std::cout << head << (d.unit.empty() ? "" : "  [" + d.unit + "]") << "\n"
+            << "    " << d.meaning << "; allowed: " << d.allowed << "; default: " << d.fallback
+            << "\n";
+}
+
+void keys(const KeysOptions& opt) {
+  if (opt.scenario.empty()) {
+    if (!opt.overrides.empty()) throw InputError("--set needs a scenario");
+    nlohmann::json all = nlohmann::json::array();
+    for (const KeyDoc& d : scenario_key_docs()) {
+      if (opt.json) all.push_back(doc_json(d));
+      else print_doc(d.key, d);
+    }
+    if (opt.json) std::cout << all.dump(2) << "\n";
+    return;
+  }
+  nlohmann::json all = nlohmann::json::array();
+  for (const ScenarioKeyValue& kv : scenario_key_values(opt.scenario, opt.overrides)) {
+    const KeyDoc* d = doc_of(kv.key);
+    if (opt.json) {
+      nlohmann::json j = d ? doc_json(*d) : nlohmann::json{{"key", kv.key}};
+      j["key"] = kv.key;
+      j["value"] = kv.value.empty() ? nlohmann::json(nullptr) : nlohmann::json(kv.value);
+      j["is_default"] = kv.is_default;
+      all.push_back(j);
+      continue;
+    }
+    const std::string head = kv.key + " = " + (kv.value.empty() ? "(not set)" : kv.value) +
+                             (kv.is_default ? "  (default)" : "");
+    if (d) print_doc(head, *d);
+    else std::cout << head << "\n";
+  }
+  if (opt.json) std::cout << all.dump(2) << "\n";
+}
+
+}  // namespace
+
+void add_keys_command(CLI::App& app) {
+  auto opt = std::make_shared<KeysOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "keys", "List the scenario keys (unit, default, allowed values, meaning); with a "
+              "scenario, the values it runs with");
+  cmd->add_option("scenario", opt->scenario, "Scenario file (TOML)");
+  cmd->add_option("--set", opt->overrides, "Override a scenario key: --set reflex.v_thr_mm_s=60")
+      ->take_all();
+  cmd->add_flag("--json", opt->json, "One JSON array on stdout");
+  cmd->callback([opt] { keys(*opt); });
+}
+
+}  // namespace pamsim

@@ -1,0 +1,101 @@
+// provenance.cc: see provenance.h.
+#include "sim/io/provenance.h"
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+
+#include "pam_actuator/input_error.h"
+#include "pam_actuator/toml_file.h"
+#include "sim/io/build_info.h"
+
+namespace pamsim {
+namespace {
+
+std::vector<std::string>& recorded_command_line() {
+  static std::vector<std::string> line;
+  return line;
+}
+
+nlohmann::json number_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+}  // namespace
+
+std::string utc_timestamp() {
+  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof(buf), "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+TrialTiming timing_of(const TrialSummary& summary) {
+  TrialTiming t;
+  t.seed = summary.seed;
+  t.wall_time_s = NAN;
+  t.realtime_factor = NAN;
+  for (const Metric& m : summary.metrics) {
+    if (m.name == "wall_time_s") t.wall_time_s = m.value;
+    if (m.name == "realtime_factor") t.realtime_factor = m.value;
+  }
+  return t;
+}
+
+void record_command_line(int argc, const char* const* argv) {
+  recorded_command_line().assign(argv, argv + argc);
+}
+
+const std::vector<std::string>& command_line() { return recorded_command_line(); }
+
+nlohmann::json provenance_to_json(const Provenance& p) {
+  nlohmann::json trials = nlohmann::json::array();
+  for (const TrialTiming& t : p.trials) {
+    trials.push_back({{"seed", t.seed},
+                      {"wall_time_s", number_or_null(t.wall_time_s)},
+                      {"realtime_factor", number_or_null(t.realtime_factor)}});
+  }
+  nlohmann::json j = {{"format", "pamsim-provenance-1"},
+                      {"command", p.command},
+                      {"command_line", command_line()},
+                      {"scenario_file", p.scenario_file},
+                      {"overrides", p.overrides},
+                      {"seeds", p.seeds},
+                      {"threads", p.threads},
+                      {"started_utc", p.started_utc},
+                      {"wall_time_s", number_or_null(p.wall_time_s)},
+                      {"trials", trials},
+                      {"build", build_info_json()}};
+  if (!p.from.empty()) j["from"] = p.from;
+  return j;
+}
+
+Provenance read_provenance(const std::string& dir) {
+  const std::string path = (std::filesystem::path(dir) / kProvenanceFile).string();
+  const nlohmann::json j = nlohmann::json::parse(read_text_file(path), nullptr, false);
+  if (j.is_discarded() || !j.is_object() || j.value("format", "") != "pamsim-provenance-1") {
+    throw InputError(path + ": not a pamsim provenance file");
+  }
+  Provenance p;
+  const auto field = [&](const char* name) -> const nlohmann::json& {
+    if (!j.contains(name)) throw InputError(path + ": " + name + " is missing");
+    return j.at(name);
+  };
+  try {
+    p.command = field("command").get<std::string>();
+    p.scenario_file = field("scenario_file").get<std::string>();
+    p.overrides = field("overrides").get<std::vector<std::string>>();
+    p.seeds = field("seeds").get<std::vector<std::uint64_t>>();
+    p.threads = field("threads").get<int>();
+    if (j.contains("from")) p.from = j.at("from").get<std::string>();
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path + ": a field has the wrong type (" + std::string(e.what()) + ")");
+  }
+  if (p.seeds.empty()) throw InputError(path + ": seeds is empty");
+  return p;
+}
+
+}  // namespace pamsim

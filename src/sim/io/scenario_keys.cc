@@ -1,0 +1,152 @@
+// scenario_keys.cc: see scenario_keys.h. The ranges are those the readers check
+// (scenario_file.cc, scenario_muscles.cc, scenario_events.cc, reflex/sensing.cc,
+// reflex/stretch_reflex_controller.cc); keep them together when one changes.
+#include "sim/io/scenario_keys.h"
+
+#include <sstream>
+
+namespace pamsim {
+namespace {
+
+std::vector<std::string> split(const std::string& key) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(key);
+  while (std::getline(in, part, '.')) parts.push_back(part);
+  return parts;
+}
+
+bool matches(const std::string& pattern, const std::string& key) {
+  const std::vector<std::string> p = split(pattern), k = split(key);
+  if (p.size() != k.size()) return false;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const bool placeholder = p[i].size() > 2 && p[i].front() == '<' && p[i].back() == '>';
+    // model.<actuator>_params, pressure.<actuator>_MPa: a placeholder with a suffix
+    const auto close = p[i].find('>');
+    if (!placeholder && p[i].front() == '<' && close != std::string::npos) {
+      const std::string suffix = p[i].substr(close + 1);
+      if (k[i].size() <= suffix.size() ||
+          k[i].compare(k[i].size() - suffix.size(), suffix.size(), suffix) != 0) {
+        return false;
+      }
+      continue;
+    }
+    if (!placeholder && p[i] != k[i]) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+const std::vector<KeyDoc>& scenario_key_docs() {
+  static const std::vector<KeyDoc> docs = {
+      {"seed", "", "1", "integer >= 0", "the trial's random seed (sensor noise); trial k of --trials uses seed + k"},
+      {"metrics", "", "(drop: [\"drop\", \"reflex\", \"length_estimate\"]; else tracking, length_estimate, reflex)",
+       "list of \"drop\", \"reflex\", \"length_estimate\", \"tracking\"", "the metric sets in summary.json"},
+      {"model.file", "", "(required)", "path to an MJCF file", "the arm's MuJoCo model, relative to the scenario file"},
+      {"model.joint", "", "(the model's first hinge or slide joint)", "a joint of the model", "the joint logged and measured"},
+      {"model.calibration", "", "(none)", "path", "start_angle_deg and <actuator>_line_mm (pamsim calibrate)"},
+      {"model.pneumatics", "", "(required)", "path", "valve and chamber parameters (models/pams/pneumatics.toml)"},
+      {"model.<actuator>_params", "", "(none)", "path", "shorthand of muscles.<actuator>.params (pamsim 0.1 files)"},
+      {"pressure.<actuator>_MPa", "MPa", "(none)", "[0, controller.p_max_MPa]", "shorthand of a constant muscles.<actuator>.command"},
+      {"sim.timestep_s", "s", "0.001", "(0, 0.01]", "physics step"},
+      {"sim.duration_s", "s", "3.0", "(0, 3600], after every timed event", "simulated time of a trial"},
+      {"sim.control_hz", "Hz", "100.0", "> 0, a whole divisor of 1 / sim.timestep_s", "control, sensing and logging rate"},
+      {"sim.max_steps", "", "1e+07", "[1, 1e10], >= duration_s / timestep_s", "the most physics steps a trial may take"},
+      {"valve.model", "", "\"iso6358\"", "\"iso6358\" | \"first_order\" | \"regulator\"", "the valve and chamber model (pneumatics.h)"},
+      {"valve.supply_MPa", "MPa", "(model.pneumatics')", "> 0, >= valve.command_max_MPa", "a rig's own supply pressure (gauge)"},
+      {"valve.command_max_MPa", "MPa", "(model.pneumatics')", "(0, valve.supply_MPa]", "a rig's own regulator range"},
+      {"valve.dead_time_ms", "ms", "(model.pneumatics' [regulator])", "[0, 1000]; valve.model = \"regulator\"", "the regulator loop's dead time"},
+      {"valve.valve_time_constant_ms", "ms", "(model.pneumatics' [regulator])", "(0, 10000]; valve.model = \"regulator\"", "the regulator valve's time constant"},
+      {"valve.proportional_band_kPa", "kPa", "(model.pneumatics' [regulator])", "(0, 2000]; valve.model = \"regulator\"", "the regulator's proportional band"},
+      {"muscles.<actuator>.params", "", "(required)", "path to a PAM parameter file", "the estimator's spring model (models/pams/...)"},
+      {"muscles.<actuator>.plant", "", "(the params file's law)", "path to a plant file", "the physical muscle (AVBDL law with friction)"},
+      {"muscles.<actuator>.label", "", "(the actuator's name)", "no spaces, commas or quotes; unique", "the muscle's name in columns and metrics"},
+      {"muscles.<actuator>.line", "", "(none)", "\"equilibrium\"", "solve the line length so the start is static"},
+      {"muscles.<actuator>.line_mm", "mm", "(model.calibration's)", "> 0", "the fishing line's length"},
+      {"muscles.<actuator>.command.kind", "", "\"constant\"", "\"constant\" | \"ramp\" | \"sine\" | \"steps\" | \"table\"", "the commanded pressure's schedule"},
+      {"muscles.<actuator>.command.MPa", "MPa", "(required for constant, steps)", "a pressure (constant), or a list (steps)", "the commanded pressure"},
+      {"muscles.<actuator>.command.from_MPa", "MPa", "(required for ramp)", "a pressure", "a ramp's start"},
+      {"muscles.<actuator>.command.to_MPa", "MPa", "(required for ramp)", "a pressure", "a ramp's end"},
+      {"muscles.<actuator>.command.duration_s", "s", "0.0", ">= 0", "a ramp's duration"},
+      {"muscles.<actuator>.command.start_s", "s", "0.0", ">= 0", "when a ramp or sine starts"},
+      {"muscles.<actuator>.command.offset_MPa", "MPa", "(required for sine)", "a pressure", "a sine's mean"},
+      {"muscles.<actuator>.command.amplitude_MPa", "MPa", "(required for sine)", ">= 0", "a sine's amplitude"},
+      {"muscles.<actuator>.command.period_s", "s", "0.0", "> 0 for a sine", "a sine's period"},
+      {"muscles.<actuator>.command.phase_deg", "deg", "0.0", "finite", "a sine's phase"},
+      {"muscles.<actuator>.command.times_s", "s", "(required for steps)", "increasing times, one per MPa", "the steps' times"},
+      {"muscles.<actuator>.command.file", "", "(required for table)", "path to a CSV \"time_s,MPa\"", "a piecewise linear schedule"},
+      {"bodies.<body>.mass_kg", "kg", "(required)", "(0, 1000]", "a body's mass, in place of the model's"},
+      {"holds.<body>.above_site", "", "(none)", "a site of the model", "hold the body above this site until released"},
+      {"holds.<body>.height_m", "m", "0.0", "[0, 10]", "the held body's bottom above the site"},
+      {"holds.<body>.position_m", "m", "(none)", "[x, y, z]", "hold the body here instead (not with above_site)"},
+      {"events.<event>.action", "", "\"mark\"", "\"mark\" | \"release\" | \"add_mass\" | \"controller_off\" | \"controller_on\" | \"end\"", "what happens when the event fires"},
+      {"events.<event>.body", "", "(required for release, add_mass)", "a body of the model", "the body released or loaded"},
+      {"events.<event>.mass_kg", "kg", "(required for add_mass)", "(0, 1000]", "the mass added"},
+      {"events.<event>.after", "", "(none)", "another event's name", "fire only after that event"},
+      {"events.<event>.when.at_s", "s", "(one when.* is required)", "[0, sim.duration_s)", "fire at this time"},
+      {"events.<event>.when.contact", "", "(one when.* is required)", "[body_a, body_b]", "fire when the two bodies touch"},
+      {"events.<event>.when.joint", "", "(one when.* is required)", "a joint of the model", "fire on this joint's position"},
+      {"events.<event>.when.below_deg", "deg", "(none)", "a hinge's angle", "with when.joint: fire below it"},
+      {"events.<event>.when.above_deg", "deg", "(none)", "a hinge's angle", "with when.joint: fire above it"},
+      {"events.<event>.when.below_mm", "mm", "(none)", "a slide's position", "with when.joint: fire below it"},
+      {"events.<event>.when.above_mm", "mm", "(none)", "a slide's position", "with when.joint: fire above it"},
+      {"events.<event>.when.body", "", "(one when.* is required)", "a body of the model", "fire on this body's height"},
+      {"events.<event>.when.below_z_m", "m", "(required with when.body)", "a height", "with when.body: fire below it"},
+      {"drop.enabled", "", "true", "true | false", "shorthand: drop the mass at drop.time_s"},
+      {"drop.mass_kg", "kg", "0.2", "(0, 1000]", "shorthand: the falling mass"},
+      {"drop.height_m", "m", "0.14", "[0, 10]", "shorthand: its fall height above the basket floor"},
+      {"drop.time_s", "s", "1.0", "[0, sim.duration_s)", "shorthand: when it is released"},
+      {"drop.body", "", "\"ball\"", "a free body of the model", "shorthand: the falling body"},
+      {"drop.basket", "", "\"basket\"", "a body of the model", "shorthand: the body it lands in (the impact event)"},
+      {"drop.site", "", "\"basket_floor\"", "a site of the model", "shorthand: the site it is held above"},
+      {"controller.kind", "", "\"stretch_reflex\"", "\"none\" | \"stretch_reflex\"", "the controller"},
+      {"controller.p_max_MPa", "MPa", "(valve.command_max_MPa)", "(0, valve.command_max_MPa]", "the highest pressure the reflex commands"},
+      {"reflex.enabled", "", "true", "true | false", "the reflex may trigger (false: the passive arm, same sensing)"},
+      {"reflex.sensor", "", "\"model\"", "\"model\" | \"fiber\"", "the stretch velocity from the spring model (Eq. (9)-(11)) or a fiber sensor"},
+      {"reflex.v_thr_mm_s", "mm/s", "(Table II: 70.0 model, 25.0 fiber)", "> 0", "the trigger threshold V_thr, Eq. (12)"},
+      {"reflex.k_MPa_s_per_mm", "MPa s/mm", "(Table II: 1/800 model, 1/300 fiber)", ">= 0", "the reflex gain k, Eq. (13)-(14)"},
+      {"reflex.duration_s", "s", "0.2", ">= one control period", "the reflex window"},
+      {"reflex.mode", "", "\"follow\"", "\"follow\" | \"latch\"", "the command follows the velocity, or holds its trigger value"},
+      {"reflex.refractory_s", "s", "0.5", ">= 0 (0: off)", "no retrigger this long after a window ends"},
+      {"reflex.arm_after_s", "s", "0.1", ">= 0 (0: off)", "no trigger before this time"},
+      {"reflex.lowpass_hz", "Hz", "0.0", "0 (off) or (0, sim.control_hz / 2]", "low-pass on the estimated velocity"},
+      {"reflex.min_tension_N", "N", "1.0", ">= 0", "trigger only while the gauge reads at least this tension"},
+      {"reflex.reciprocal_trigger_inhibition", "", "true", "true | false", "a triggered muscle inhibits its antagonist's trigger"},
+      {"reflex.pairs", "", "([[\"agonist\", \"antagonist\"]] when both exist)", "[[agonist, antagonist], ...]", "the reflex pairs by actuator name"},
+      {"sensors.pressure_noise_MPa", "MPa", "0.001", ">= 0", "pressure sensor noise SD"},
+      {"sensors.pressure_bias_MPa", "MPa", "0.0", "(-1, 1)", "pressure sensor offset"},
+      {"sensors.pressure_adc_bits", "", "12", "0 (ideal) or [4, 24]", "the pressure ADC's resolution"},
+      {"sensors.pressure_adc_min_V", "V", "0.0", "finite", "the pressure ADC's range, low end"},
+      {"sensors.pressure_adc_max_V", "V", "5.0", "> sensors.pressure_adc_min_V", "the pressure ADC's range, high end"},
+      {"sensors.pressure_lowpass_hz", "Hz", "0.0", "0 (off) or (0, sim.control_hz / 2]", "low-pass on the measured pressure"},
+      {"sensors.gauge_noise_V", "V", "0.0005", ">= 0", "strain gauge noise SD"},
+      {"sensors.gauge_adc_bits", "", "16", "0 (ideal) or [4, 24]", "the gauge ADC's resolution"},
+      {"sensors.gauge_adc_min_V", "V", "-5.0", "finite", "the gauge ADC's range, low end"},
+      {"sensors.gauge_adc_max_V", "V", "5.0", "> sensors.gauge_adc_min_V", "the gauge ADC's range, high end"},
+      {"sensors.fiber_noise_mm_s", "mm/s", "2.0", ">= 0", "fiber sensor noise SD"},
+      {"sensors.noise_scale", "", "1.0", "[0, 1000]", "multiplies the three noise SDs (a sweep's one knob)"},
+  };
+  return docs;
+}
+
+bool is_scenario_table(const std::string& key) {
+  const std::size_t depth = split(key).size();
+  for (const KeyDoc& d : scenario_key_docs()) {
+    std::vector<std::string> parts = split(d.key);
+    if (parts.size() <= depth) continue;
+    std::string prefix = parts[0];
+    for (std::size_t i = 1; i < depth; ++i) prefix += "." + parts[i];
+    if (matches(prefix, key)) return true;
+  }
+  return false;
+}
+
+std::string scenario_key_pattern(const std::string& key) {
+  for (const KeyDoc& d : scenario_key_docs()) {
+    if (matches(d.key, key)) return d.key;
+  }
+  return "";
+}
+
+}  // namespace pamsim
