@@ -1,15 +1,16 @@
 #!/usr/bin/env bash
 # The main job: the falling-mass experiment with the model-based stretch reflex, and its
 # passive baseline with the same seed. Outputs: renders/drop_mass/{trajectory.csv,
-# summary.json, angle.png, drop_mass.mp4} and renders/drop_mass_passive/ (the first three).
-# The video is the same trial (same seed, bit-identical physics), rendered headlessly.
+# summary.json, angle.png, scenario.toml, provenance.json, drop_mass.mp4} and
+# renders/drop_mass_passive/ (all but the video). The video is the same trial (same seed,
+# bit-identical physics), rendered headlessly. --force: a second `make demo` replaces the first's.
 set -euo pipefail
 pamsim="${1:-build/src/sim/pamsim}"
 cd "$(dirname "$0")/.."
 
-"$pamsim" run scenarios/drop_mass_passive.toml --out renders/drop_mass_passive > /dev/null
-"$pamsim" run scenarios/drop_mass.toml --out renders/drop_mass > /dev/null
-"$pamsim" render scenarios/drop_mass.toml --plot -o renders/drop_mass/drop_mass.mp4
+"$pamsim" run scenarios/drop_mass_passive.toml --out renders/drop_mass_passive --force > /dev/null
+"$pamsim" run scenarios/drop_mass.toml --out renders/drop_mass --force > /dev/null
+"$pamsim" render scenarios/drop_mass.toml --plot -o renders/drop_mass/drop_mass.mp4 --force
 
 # the headline numbers, reflex vs passive
 python3 - <<'PY' 2>/dev/null || cat renders/drop_mass/summary.json

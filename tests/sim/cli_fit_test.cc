@@ -191,9 +191,14 @@ TEST_F(CliFitTest, BadOptions) {
   const std::string noisy = ten + "--noise-force-N 0.5 --seed 11";
   ASSERT_EQ(run(noisy).code, 0);
   const std::string first = read_all(path("out.csv"));
-  ASSERT_EQ(run(noisy).code, 0);
+  // an existing output is replaced only with --force
+  const Result refused = run(noisy);
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_NE(refused.err.find("out.csv: exists; add --force"), std::string::npos) << refused.err;
   EXPECT_EQ(read_all(path("out.csv")), first);
-  ASSERT_EQ(run(ten + "--noise-force-N 0.5 --seed 12").code, 0);
+  ASSERT_EQ(run(noisy + " --force").code, 0);
+  EXPECT_EQ(read_all(path("out.csv")), first);
+  ASSERT_EQ(run(ten + "--noise-force-N 0.5 --seed 12 --force").code, 0);
   EXPECT_NE(read_all(path("out.csv")), first);
 }
 

@@ -168,6 +168,17 @@ TEST(CliKeysTest, AMisspelledKeyGetsTheKeyMeant) {
     EXPECT_NE(r.err.find("is not a known key; " + c.suggestion), std::string::npos)
         << c.set << " -> " << r.err;
   }
+  // a refusal caused by another key's value says which, and where that came from
+  const CliResult file = run_pamsim("run scenarios/drop_mass.toml --out /nonexistent/x --set sim.duration_s=1");
+  EXPECT_EQ(file.exit_code, 2);
+  EXPECT_NE(file.err.find("drop.time_s = 1 (file) with sim.duration_s = 1 (--set)"),
+            std::string::npos) << file.err;
+  const fs::path dir = fresh_dir("keys_other");
+  const std::string no_time = variant(dir, "drop_mass.toml", "time_s = 1.0", "");
+  const CliResult other = run_pamsim("run " + no_time + " --out /nonexistent/x --set sim.duration_s=1");
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("drop.time_s = 1 (default) with sim.duration_s = 1 (--set)"),
+            std::string::npos) << other.err;
   // nothing near: no guess
   const CliResult far = run_pamsim("run scenarios/drop_mass.toml --out /nonexistent/x --set zzz.qqq=1");
   EXPECT_EQ(far.exit_code, 2);

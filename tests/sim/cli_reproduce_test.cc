@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli_util.h"
+#include "sim/sweep/results_db.h"
 
 namespace {
 
@@ -184,6 +185,16 @@ TEST(CliReproduceTest, AReplayedSweepTrialEqualsItsStoredRow) {
     for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) stored[header[i]] = cells[i];
   }
   ASSERT_EQ(stored["trial"], "13");
+  // the database records what made it
+  {
+    const pamsim::ResultsDb opened = pamsim::ResultsDb::open_existing(db);
+    EXPECT_EQ(opened.meta("mujoco_version"), "2.2.2");
+    EXPECT_FALSE(opened.meta("git_commit").empty());
+    const nlohmann::json runs = nlohmann::json::parse(opened.meta("invocations"));
+    ASSERT_EQ(runs.size(), 1u);
+    EXPECT_EQ(runs[0]["trials_run"], 32);
+    EXPECT_EQ(runs[0]["command_line"][1], "sweep");
+  }
 
   const fs::path out = dir / "trial_13";
   const CliResult replay = run_pamsim("replay " + db + " --trial 13 --no-plot --out " + out.string());
@@ -215,6 +226,73 @@ TEST(CliReproduceTest, AReplayedSweepTrialEqualsItsStoredRow) {
   }
   EXPECT_EQ(run_pamsim("replay " + db + " --trial 13 --no-plot --out " + out.string()).exit_code, 2)
       << "an earlier replay's outputs, without --force";
+}
+
+}  // namespace
+
+namespace {
+
+// Every command that writes a file or a folder of its own refuses to replace an earlier one
+// without --force (one line, exit 2, the file untouched), and replaces it with --force.
+TEST(CliReproduceTest, EveryCommandReplacesAnOutputOnlyWithForce) {
+  const fs::path dir = fresh_dir("reproduce_every_force");
+  const auto existing = [&](const std::string& name) {
+    const fs::path p = dir / name;
+    fs::create_directories(p.parent_path());
+    pamsim_test::write_text(p, "an earlier output");
+    return p.string();
+  };
+  const std::string models = std::string(PAMSIM_SOURCE_DIR) + "/models/pams/";
+  const std::string db = (dir / "sweep.db").string();
+  ASSERT_EQ(run_pamsim("sweep scenarios/sweep_smoke.toml --db " + db + " --out " + dir.string())
+                .exit_code, 0);
+  ASSERT_EQ(run_pamsim("tensile --params " + models + "table4_agonist.toml -o " +
+                       (dir / "t.csv").string()).exit_code, 0);
+  // folders that hold an earlier run's file
+  existing("frames/frame_00000.png");
+  existing("val/table5.csv");
+  existing("rep/points.csv");
+  struct Case {
+    std::string args;
+    fs::path output;
+  };
+  const std::vector<Case> cases = {
+      {"tensile --params " + models + "table4_agonist.toml -o " + existing("a.csv"),
+       dir / "a.csv"},
+      {"fit --model eq3 " + (dir / "t.csv").string() + " -o " + existing("f.toml"), dir / "f.toml"},
+      {"export " + db + " -o " + existing("e.csv"), dir / "e.csv"},
+      {"export " + db + " --csv " + existing("e2.csv"), dir / "e2.csv"},
+      {"render scenarios/drop_mass.toml -o " + existing("v.mp4"), dir / "v.mp4"},
+      {"render scenarios/drop_mass.toml --png-dir " + (dir / "frames").string() + " -o " +
+           (dir / "new.mp4").string(),
+       dir / "frames/frame_00000.png"},
+      {"run scenarios/drop_mass.toml --out " + (dir / "r").string() + " --video " +
+           existing("r.mp4"), dir / "r.mp4"},
+      {"calibrate scenarios/drop_mass_passive.toml -o " + existing("c.toml"), dir / "c.toml"},
+      {"validate reaching --out " + (dir / "val").string(), dir / "val/table5.csv"},
+      {"report " + db + " --out " + (dir / "rep").string(), dir / "rep/points.csv"},
+  };
+  for (const Case& c : cases) {
+    const CliResult r = run_pamsim(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args << ": " << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find("--force"), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_EQ(read_file(c.output), "an earlier output") << c.args;
+  }
+  // with --force (the cheap ones; run, replay, validate and report are covered above and in
+  // tune_test): the file is the new output
+  for (const Case& c : {cases[0], cases[1], cases[2], cases[7]}) {
+    const CliResult r = run_pamsim(c.args + " --force");
+    EXPECT_EQ(r.exit_code, 0) << c.args << ": " << r.err;
+    EXPECT_NE(read_file(c.output), "an earlier output") << c.args;
+  }
+  // --no-plot: a report without heat maps
+  const CliResult report = run_pamsim("report " + db + " --no-plot --out " + (dir / "rep2").string());
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  EXPECT_TRUE(fs::exists(dir / "rep2" / "points.csv"));
+  for (const auto& e : fs::directory_iterator(dir / "rep2")) {
+    EXPECT_NE(e.path().extension(), ".png") << e.path();
+  }
 }
 
 }  // namespace

@@ -412,11 +412,17 @@ TEST_F(PlotTest, CompareDrawsBothRunsAndPrintsTheirMetrics) {
   EXPECT_NE(out.find("trials"), std::string::npos) << out;
 }
 
-TEST_F(PlotTest, CompareWritesNextToDirAByDefault) {
+TEST_F(PlotTest, CompareWritesUnderRendersByDefaultAndReplacesOnlyWithForce) {
   write_run(dir_ / "model", 2, 0.0);
   write_run(dir_ / "fiber", 2, 2.0);
+  const fs::path cwd = fs::current_path();
+  fs::current_path(dir_);   // renders/ is relative to where pamsim runs
   run_compare({(dir_ / "model").string() + "/", (dir_ / "fiber").string()});
-  EXPECT_TRUE(read_png_size(path("compare.png")).ok);
+  const std::string png = path("renders/compare_model_vs_fiber.png");
+  EXPECT_TRUE(read_png_size(png).ok);
+  EXPECT_THROW(run_compare({(dir_ / "model").string(), (dir_ / "fiber").string()}), InputError);
+  EXPECT_NO_THROW(run_compare({(dir_ / "model").string(), (dir_ / "fiber").string(), "--force"}));
+  fs::current_path(cwd);
 }
 
 TEST_F(PlotTest, CompareRejectsAFolderThatIsNotARun) {

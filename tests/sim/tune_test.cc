@@ -123,9 +123,14 @@ TEST(TuneTest, CliWritesItsOutputsAndReportReadsTheDatabase) {
   // best.toml runs as it is
   const auto run = pamsim_test::run_pamsim("run " + dir + "/out/best.toml --out " + dir + "/run");
   EXPECT_EQ(run.exit_code, 0) << run.err;
-  // report regenerates the outputs from the database alone
+  // report regenerates the outputs from the database alone; over the tuning's own, only
+  // with --force
   fs::remove(dir + "/out/best.toml");
-  const auto rep = pamsim_test::run_pamsim("report " + dir + "/out/tune.db");
+  const auto refused = pamsim_test::run_pamsim("report " + dir + "/out/tune.db");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("add --force"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(dir + "/out/best.toml"));
+  const auto rep = pamsim_test::run_pamsim("report " + dir + "/out/tune.db --force");
   EXPECT_EQ(rep.exit_code, 0) << rep.err;
   EXPECT_TRUE(fs::exists(dir + "/out/best.toml"));
   EXPECT_NE(rep.out.find("18 evaluations stored"), std::string::npos) << rep.out;

@@ -14,6 +14,7 @@
 #include "sim/cli/commands.h"
 #include "sim/io/config_reader.h"
 #include "sim/io/calibration_file.h"
+#include "sim/io/outputs.h"
 #include "sim/io/scenario_file.h"
 
 namespace pamsim {
@@ -25,9 +26,12 @@ struct CalibrateOptions {
   double angle_deg = -36.0;
   double antagonist_deformation_mm = 1.0;
   std::string out;
+  bool force = false;
 };
 
 void calibrate(const CalibrateOptions& opt) {
+  // the scenario's own model.calibration is what calibrate updates; another file is an output
+  if (!opt.out.empty()) refuse_existing_file(opt.out, opt.force);
   if (!std::isfinite(opt.angle_deg)) throw InputError("--angle-deg must be finite");
   if (!(opt.antagonist_deformation_mm > 0)) {
     throw InputError("--antagonist-deformation-mm must be > 0, got " +
@@ -66,7 +70,10 @@ void add_calibrate_command(CLI::App& app) {
   cmd->add_option("--angle-deg", opt->angle_deg, "Start angle at rest [deg] (paper: -36)");
   cmd->add_option("--antagonist-deformation-mm", opt->antagonist_deformation_mm,
                   "Antagonist pre-deformation at the start [mm]");
-  cmd->add_option("-o,--out", opt->out, "Output file (default: the scenario's model.calibration)");
+  // --out: its name before 0.3 (-o/--output names a file everywhere now)
+  cmd->add_option("-o,--output,--out", opt->out,
+                  "Output file (default: update the scenario's model.calibration)");
+  cmd->add_flag("--force", opt->force, "Replace an existing -o file");
   cmd->callback([opt] { calibrate(*opt); });
 }
 

@@ -21,6 +21,7 @@
 
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
+#include "sim/io/outputs.h"
 #include "sim/io/plot.h"
 #include "sim/io/trajectory_csv.h"
 
@@ -33,6 +34,7 @@ struct CompareOptions {
   std::string dir_a, dir_b;
   std::string out;
   std::string label_a, label_b;
+  bool force = false;
 };
 
 // mean, min, max of one metric over a run's trials; NaN where not defined
@@ -140,14 +142,19 @@ std::string default_label(const std::string& dir) {
   return name.empty() ? dir : name;
 }
 
-// compare.png in DIR_A's parent folder
-std::string default_out(const std::string& dir_a) {
-  fs::path p = fs::path(dir_a).lexically_normal();
+// a run folder's own name ("renders/model/" -> "model")
+std::string folder_name(const std::string& dir) {
+  fs::path p = fs::path(dir).lexically_normal();
   if (p.filename().empty()) p = p.parent_path();
   if (p.filename() == "." || p.filename() == "..") p = fs::absolute(p).lexically_normal();
   if (p.filename().empty()) p = p.parent_path();
-  const fs::path parent = p.parent_path();
-  return ((parent.empty() ? fs::path(".") : parent) / "compare.png").string();
+  return p.filename().string();
+}
+
+// renders/compare_<A>_vs_<B>.png, like every command's default output under renders/ (it
+// used to be compare.png in DIR_A's parent folder, which a second comparison overwrote)
+std::string default_out(const std::string& dir_a, const std::string& dir_b) {
+  return "renders/compare_" + folder_name(dir_a) + "_vs_" + folder_name(dir_b) + ".png";
 }
 
 std::string format_stats(const MetricStats* s) {
@@ -207,7 +214,9 @@ void compare(const CompareOptions& opt) {
     for (const auto& t : run->trajectories) ptrs.push_back(&t);
     bands.push_back(angle_band(ptrs, run == &a ? label_a : label_b));
   }
-  const std::string out = opt.out.empty() ? default_out(opt.dir_a) : opt.out;
+  const std::string out = opt.out.empty() ? default_out(opt.dir_a, opt.dir_b) : opt.out;
+  refuse_existing_file(out, opt.force);
+  make_directories(fs::path(out).parent_path().empty() ? "." : fs::path(out).parent_path().string());
   write_compare_plot(out, bands);
 
   // the metrics side by side
@@ -225,7 +234,10 @@ void add_compare_command(CLI::App& app) {
       ->required();
   cmd->add_option("dir_b", opt->dir_b, "Output folder of another run (e.g. the fiber sensor)")
       ->required();
-  cmd->add_option("-o,--out", opt->out, "Plot file (default: compare.png in DIR_A's parent folder)");
+  // --out: its name before 0.3 (-o/--output names a file everywhere now)
+  cmd->add_option("-o,--output,--out", opt->out,
+                  "Plot file (default renders/compare_<DIR_A name>_vs_<DIR_B name>.png)");
+  cmd->add_flag("--force", opt->force, "Replace an existing plot file");
   cmd->add_option("--label-a", opt->label_a, "Legend label of DIR_A (default: its folder name)");
   cmd->add_option("--label-b", opt->label_b, "Legend label of DIR_B (default: its folder name)");
   cmd->callback([opt] { compare(*opt); });

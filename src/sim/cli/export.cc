@@ -1,5 +1,5 @@
-// export.cc: `pamsim export DB --csv FILE [--timing]`: a sweep database as CSV, one row
-// per trial in trial order, the columns of the trials table (results_db.h), streamed to a
+// export.cc: `pamsim export DB -o FILE [--timing] [--force]` (-o is also --csv): a sweep
+// database as CSV, one row per trial in trial order, the columns of the trials table (results_db.h), streamed to a
 // temp file and renamed into place (FILE "-" is standard output; a FIFO or device is
 // written through, never replaced). Numbers are written in their shortest exact form,
 // missing values as empty cells. The per-run timing metrics (wall_time_s, realtime_factor)
@@ -29,6 +29,7 @@ struct ExportOptions {
   std::string db;
   std::string csv;
   bool timing = false;
+  bool force = false;
 };
 
 // A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
@@ -51,6 +52,7 @@ std::string csv_cell(const DbValue& v) {
 }
 
 void export_csv(const ExportOptions& opt) {
+  refuse_existing_file(opt.csv, opt.force);
   const ResultsDb db = ResultsDb::open_existing(opt.db);
   const std::vector<std::string> columns = db.trial_columns();
 
@@ -112,7 +114,10 @@ void add_export_command(CLI::App& app) {
   auto opt = std::make_shared<ExportOptions>();
   CLI::App* cmd = app.add_subcommand("export", "Write a sweep database as CSV (one row per trial)");
   cmd->add_option("db", opt->db, "Sweep database (from pamsim sweep)")->required();
-  cmd->add_option("--csv", opt->csv, "Output CSV file (- for standard output)")->required();
+  // --csv: its name before 0.3 (-o/--output names a file everywhere now)
+  cmd->add_option("-o,--output,--csv", opt->csv, "Output CSV file (- for standard output)")
+      ->required();
+  cmd->add_flag("--force", opt->force, "Replace an existing CSV file");
   cmd->add_flag("--timing", opt->timing, "Include wall_time_s and realtime_factor");
   cmd->callback([opt] { export_csv(*opt); });
 }

@@ -18,6 +18,7 @@
 #include "pam_actuator/pam_params.h"
 #include "pam_actuator/tensile_csv.h"
 #include "sim/cli/commands.h"
+#include "sim/io/outputs.h"
 
 namespace pamsim {
 namespace {
@@ -28,6 +29,7 @@ struct FitOptions {
   std::string output_path;
   std::string sensors_from;
   bool json = false;
+  bool force = false;
 };
 
 // Eq. (2) and the law's coefficients in the paper's units (m mm/MPa, h mm)
@@ -71,6 +73,7 @@ void print_table(const SpringFit& fit, const std::string& csv_path) {
 
 void run_fit(const FitOptions& o) {
   // validate everything before any output
+  if (!o.output_path.empty()) refuse_existing_file(o.output_path, o.force);
   const SpringLaw law = parse_spring_law(o.model, "--model");
   const std::vector<TensileRow> rows = read_tensile_csv(o.csv_path);
   const SpringFit fit = fit_spring_model(law, rows, o.csv_path);
@@ -117,6 +120,7 @@ void add_fit_command(CLI::App& app) {
       ->required();
   cmd->add_flag("--json", o->json, "print one JSON object (paper units) on stdout");
   cmd->add_option("-o,--output", o->output_path, "write a PAM parameter file (TOML)");
+  cmd->add_flag("--force", o->force, "replace an existing output file");
   cmd->add_option("--sensors-from", o->sensors_from,
                   "copy [strain_gauge] and [geometry] from this PAM file into the output");
   cmd->callback([o] { run_fit(*o); });

@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
   CLI::App app{"pamsim: simulation testbed for PAM-driven arms with a stretch reflex"};
   app.set_version_flag("--version", std::string("pamsim ") + PAMSIM_VERSION);
   app.require_subcommand(1);
+  app.option_defaults()->always_capture_default();   // --help shows every option's default
 
   pamsim::add_fit_command(app);
   pamsim::add_estimate_command(app);

@@ -1,6 +1,6 @@
 // render.cc: `pamsim render SCENARIO.toml [--set key=value ...] [-o FILE.mp4]
 // [--png-dir DIR] [--width W] [--height H] [--fps F] [--quality fast|default] [--camera NAME]
-// [--backend osmesa|egl] [--gpu N] [--plot]`: runs the scenario's trial (its own seed) and
+// [--backend osmesa|egl] [--gpu N] [--plot] [--force]`: runs the scenario's trial (its own seed) and
 // renders it headlessly while it runs (TrialVideo): H.264 MP4 (default
 // renders/<scenario>/<scenario>.mp4) and/or numbered PNGs, saying which GL renderer drew it.
 // The physics is the same as `pamsim run`'s, bit for bit.
@@ -13,7 +13,9 @@
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/core/runner.h"
+#include "sim/io/outputs.h"
 #include "sim/io/scenario_file.h"
+#include "sim/io/staged_outputs.h"
 #include "sim/render/trial_video.h"
 
 namespace pamsim {
@@ -26,6 +28,7 @@ struct RenderCommandOptions {
   std::string quality = "default";
   std::string backend;   // empty: $MUJOCO_GL, $PAMSIM_GL_BACKEND, else osmesa
   int gpu = -1;          // EGL device; -1: $EGL_DEVICE_ID, else the first GPU
+  bool force = false;    // replace an existing MP4 or PNG frames
 };
 
 void render(RenderCommandOptions opt) {
@@ -44,6 +47,10 @@ void render(RenderCommandOptions opt) {
     video.mp4_path = "renders/" + name + "/" + name + ".mp4";
   }
   validate_video_options(video, "-o");
+  if (!video.mp4_path.empty()) refuse_existing_file(video.mp4_path, opt.force);
+  if (!video.png_dir.empty() && !opt.force) {
+    refuse_earlier_outputs(video.png_dir, {"frame_[0-9][0-9][0-9][0-9][0-9]*.png"});
+  }
   const Scenario sc = load_scenario(opt.scenario, opt.overrides);
   const TrialModel model = load_trial_model(sc);
 
@@ -93,6 +100,7 @@ void add_render_command(CLI::App& app) {
                   "EGL device number, with --backend egl (default $EGL_DEVICE_ID, else the "
                   "first GPU, else Mesa's software renderer)");
   cmd->add_flag("--plot", v.plot, "Live plots of angle and pressures, bottom left");
+  cmd->add_flag("--force", opt->force, "Replace an existing MP4, or the PNG frames in --png-dir");
   cmd->callback([opt] { render(*opt); });
 }
 

@@ -19,6 +19,7 @@
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
+#include "sim/io/plot.h"
 #include "sim/io/staged_outputs.h"
 #include "sim/sweep/tune.h"
 
@@ -29,7 +30,11 @@ struct ReportOptions {
   std::string db;
   std::string metric = "peak_drop_deg";
   std::string out;
+  bool force = false;
+  bool no_plot = false;
 };
+
+const std::vector<std::string> kSweepReportOutputs = {"points.csv", "best.toml", "heatmap_*.png"};
 
 std::string stats_text(const MetricStats& m) {
   char buf[128];
@@ -48,8 +53,10 @@ void report_tune(const ReportOptions& opt) {
     out = std::filesystem::path(opt.db).parent_path().string();
     if (out.empty()) out = ".";
   }
+  if (!opt.force) refuse_earlier_outputs(out, kTuneReportOutputs);
+  const bool plots = plots_wanted(opt.no_plot);
   StagedOutputs staged(out, kTuneReportOutputs);
-  staged.write([&] { write_tune_outputs(def, history, staged); });
+  staged.write([&] { write_tune_outputs(def, history, staged, plots); });
   staged.publish();
   const TuneEvaluation* best = best_evaluation(history);
   std::cout << "tuning: " << def.file << " (" << history.size() << " evaluations stored)\n"
@@ -77,8 +84,10 @@ void report(const ReportOptions& opt) {
     out = std::filesystem::path(opt.db).parent_path().string();
     if (out.empty()) out = ".";
   }
+  if (!opt.force) refuse_earlier_outputs(out, kSweepReportOutputs);
+  const bool plots = plots_wanted(opt.no_plot);
   // written together: a failure half way leaves an earlier report as it was
-  StagedOutputs staged(out, {"points.csv", "best.toml", "heatmap_*.png"});
+  StagedOutputs staged(out, kSweepReportOutputs);
   staged.write([&] {
     std::cout << "sweep: " << sweep.sweep_file << " (" << sweep.design << ", " << sweep.points_total
               << " points x " << sweep.seeds << " seeds; " << sweep.trials_stored << " of "
@@ -118,6 +127,10 @@ void report(const ReportOptions& opt) {
       std::cout << "best: no point meets the criterion\n";
     }
 
+    if (!plots) {
+      std::cout << "heat maps: none (no plots)\n";
+      return;
+    }
     if (sweep.axis_keys.size() < 2) {
       std::cout << "heat maps: none (the sweep has one axis; see points.csv)\n";
       return;
@@ -147,6 +160,8 @@ void add_report_command(CLI::App& app) {
   cmd->add_option("--metric", opt->metric,
                   "Metric to minimise for the best setting (default peak_drop_deg)");
   cmd->add_option("--out", opt->out, "Output folder (default: the database's folder)");
+  cmd->add_flag("--force", opt->force, "Replace an earlier report's files in the folder");
+  cmd->add_flag("--no-plot", opt->no_plot, "Write no heat maps or figures (gnuplot not needed)");
   cmd->callback([opt] { report(*opt); });
 }
 

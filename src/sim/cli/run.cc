@@ -109,6 +109,7 @@ void run(RunOptions opt) {
                        std::to_string(opt.trials) + " (or use pamsim render)");
     }
     video.mp4_path = opt.video;
+    refuse_existing_file(video.mp4_path, opt.force);
     video.backend = choose_gl_backend("");
     if (video.backend == GlBackend::kEgl) video.egl_device = choose_egl_device(-1);
     validate_video_options(video, "--video");

@@ -21,9 +21,11 @@
 
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
-#include "sim/io/outputs.h"
 #include "sim/cli/progress.h"
 #include "sim/cli/stop_signal.h"
+#include "sim/io/build_info.h"
+#include "sim/io/outputs.h"
+#include "sim/io/provenance.h"
 #include "sim/sweep/results_db.h"
 #include "sim/sweep/sqlite_file.h"
 #include "sim/core/runner.h"
@@ -56,6 +58,7 @@ struct RemoteTrials {
 
 // The sweep on this machine's threads, or with `remote` (when not null).
 void run_sweep_command(const SweepOptions& opt, const RemoteTrials* remote) {
+  const std::string started_utc = utc_timestamp();
   const int threads = resolve_thread_count(opt.threads);
   const SweepShard shard = opt.shard.empty() ? SweepShard{} : parse_sweep_shard(opt.shard, "--shard");
   const SweepDefinition def = load_sweep(opt.sweep_file);   // everything validated first
@@ -99,6 +102,15 @@ void run_sweep_command(const SweepOptions& opt, const RemoteTrials* remote) {
       remote ? remote->run(def, db, run_options) : run_sweep(def, db, run_options);
   const std::int64_t stored = r.already_done + r.ran;
   progress.finish(stored);
+  // what ran into the database, beside its trials (interrupted runs too)
+  db.record_invocation({{"command_line", command_line()},
+                        {"threads", remote ? nlohmann::json(nullptr) : nlohmann::json(threads)},
+                        {"shard", shard.text()},
+                        {"started_utc", started_utc},
+                        {"wall_time_s", r.wall_time_s},
+                        {"trials_run", r.ran},
+                        {"interrupted", r.interrupted},
+                        {"build", build_info_json()}});
 
   char rate[32];
   std::snprintf(rate, sizeof(rate), "%.1f", r.wall_time_s > 0 ? r.ran / r.wall_time_s : 0.0);
@@ -122,7 +134,7 @@ void run_sweep_command(const SweepOptions& opt, const RemoteTrials* remote) {
               << out << "/sweep.db " << out << "/sweep.shard-*-of-" << shard.count << ".db\n";
     return;
   }
-  std::cerr << "pamsim sweep: next: pamsim export " << db_path << " --csv FILE; pamsim report "
+  std::cerr << "pamsim sweep: next: pamsim export " << db_path << " -o FILE; pamsim report "
             << db_path << "\n";
 }
 

@@ -15,6 +15,7 @@
 #include "pam_actuator/tensile_csv.h"
 #include "pam_actuator/tensile_test.h"
 #include "sim/cli/commands.h"
+#include "sim/io/outputs.h"
 
 namespace pamsim {
 namespace {
@@ -23,6 +24,7 @@ struct TensileCommand {
   std::string params_path;
   std::string plant_path;
   std::string output_path;
+  bool force = false;
   TensileTestOptions test;
 };
 
@@ -55,6 +57,7 @@ void validate(const TensileTestOptions& t) {
 }
 
 void run_tensile(const TensileCommand& c) {
+  refuse_existing_file(c.output_path, c.force);
   validate(c.test);
   if (c.params_path.empty() == c.plant_path.empty()) {
     throw InputError("tensile: give one of --params (a spring law) or --plant (a plant file)");
@@ -76,6 +79,7 @@ void add_tensile_command(CLI::App& app) {
   cmd->add_option("--params", c->params_path, "PAM parameter file (TOML): test its spring law");
   cmd->add_option("--plant", c->plant_path, "plant file (TOML, models/pams/plant_*.toml)");
   cmd->add_option("-o,--output", c->output_path, "output CSV file")->required();
+  cmd->add_flag("--force", c->force, "replace an existing output file");
   cmd->add_option("--seed", t.seed, "noise seed (same seed, same data)")
       ->check(non_negative_seed);
   cmd->add_option("--noise-pressure-MPa", t.noise_pressure_mpa, "pressure sensor noise SD");

@@ -23,6 +23,7 @@
 #include "sim/cli/stop_signal.h"
 #include "sim/core/runner.h"
 #include "sim/io/outputs.h"
+#include "sim/io/plot.h"
 #include "sim/io/staged_outputs.h"
 #include "sim/sweep/sqlite_file.h"
 
@@ -35,6 +36,8 @@ struct TuneOptions {
   std::string out;
   int threads = 0;
   bool resume = false;
+  bool force = false;
+  bool no_plot = false;
 };
 
 // held_out.csv: one row per setting checked on the held-out seeds
@@ -65,6 +68,9 @@ void tune(const TuneOptions& opt) {
   std::error_code ec;
   const bool exists = std::filesystem::exists(db_path, ec);
   if (opt.resume && !exists) throw InputError(db_path + ": --resume, but there is no database");
+  // a new tuning does not replace another's outputs silently (a resumed one replaces its own)
+  if (!opt.resume && !exists && !opt.force) refuse_earlier_outputs(out, kTuneOutputs);
+  const bool plots = plots_wanted(opt.no_plot);
   // its folder, removed again if the database cannot be made there
   const std::unique_ptr<FolderGuard> folder = prepare_database_folder(db_path, "tune.db");
   TuneDb db = opt.resume ? TuneDb::open_to_resume(db_path, def) : TuneDb::create(db_path, def);
@@ -103,7 +109,7 @@ void tune(const TuneOptions& opt) {
 
   // the outputs are published together once all are written (tune.db stays where it is)
   StagedOutputs staged(out, kTuneOutputs);
-  staged.write([&] { write_tune_outputs(def, r.history, staged); });
+  staged.write([&] { write_tune_outputs(def, r.history, staged, plots); });
   const TuneEvaluation* best = best_evaluation(r.history);
   std::vector<TuneReference> settings = {
       {"tuned (evaluation " + std::to_string(best->index) + ")", best->values}};
@@ -158,6 +164,8 @@ void add_tune_command(CLI::App& app) {
   cmd->add_option("--out", opt->out, "Output folder (default renders/<tuning file name>)");
   cmd->add_option("--threads", opt->threads, "Worker threads (default: all cores)");
   cmd->add_flag("--resume", opt->resume, "Continue the tuning stored in the database");
+  cmd->add_flag("--force", opt->force, "Replace another tuning's outputs in the folder");
+  cmd->add_flag("--no-plot", opt->no_plot, "Write no figures (gnuplot not needed)");
   cmd->callback([opt] { tune(*opt); });
 }
 

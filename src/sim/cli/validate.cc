@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -16,11 +17,15 @@
 #include <string>
 #include <vector>
 
+#include "pam_actuator/atomic_file.h"
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/core/runner.h"
 #include "sim/io/outputs.h"
+#include "sim/io/plot.h"
+#include "sim/io/provenance.h"
+#include "sim/io/staged_outputs.h"
 #include "sim/validate/length_estimation.h"
 #include "sim/validate/reaching.h"
 
@@ -34,7 +39,32 @@ struct ValidateOptions {
   std::vector<std::string> pams;
   std::optional<std::uint64_t> seed;
   int threads = 0;
+  bool force = false;
+  bool no_plot = false;
 };
+
+const std::vector<std::string> kLengthOutputs = {"table3.csv", "table3.md", "pam_*.png", "fits",
+                                                 kProvenanceFile};
+const std::vector<std::string> kReachingOutputs = {"table5.csv", "table5.md", "fig7.png",
+                                                   kProvenanceFile};
+
+// provenance.json of a validation: its protocol file, overrides, seed and threads.
+void write_validation_provenance(const ValidateOptions& o, const ValidationOptions& v,
+                                 const std::string& command,
+                                 std::chrono::steady_clock::time_point started,
+                                 const std::string& started_utc) {
+  Provenance p;
+  p.command = command;
+  p.scenario_file = o.file;
+  p.overrides = o.overrides;
+  if (o.seed) p.seeds = {*o.seed};
+  p.threads = v.threads;
+  p.started_utc = started_utc;
+  p.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  write_file_atomically((std::filesystem::path(v.out_dir) / kProvenanceFile).string(),
+                        provenance_to_json(p).dump(2) + "\n");
+}
 
 ValidationOptions common_options(const ValidateOptions& o, const std::string& default_out) {
   ValidationOptions v;
@@ -67,8 +97,12 @@ void attach_progress(ValidationOptions* v, const std::string& label, int total,
 }
 
 void run_length_estimation(const ValidateOptions& o) {
+  const auto started = std::chrono::steady_clock::now();
+  const std::string started_utc = utc_timestamp();
   const LengthValidationSpec spec = load_length_validation(o.file, o.pams);
   ValidationOptions v = common_options(o, "renders/validate_length_estimation");
+  if (!o.force) refuse_earlier_outputs(v.out_dir, kLengthOutputs);
+  const bool plots = plots_wanted(o.no_plot);
   require_writable(v.out_dir);  // an unwritable --out fails here, before any work
   const int total = static_cast<int>(spec.pams.size() * spec.laws.size() * spec.weights_kg.size());
   std::shared_ptr<ProgressReporter> progress;
@@ -81,21 +115,27 @@ void run_length_estimation(const ValidateOptions& o) {
   };
   LengthValidationResult result = run_length_validation(spec, v);
   progress->finish(total);
-  write_length_validation(result, spec, v.out_dir);
+  write_length_validation(result, spec, v.out_dir, plots);
+  write_validation_provenance(o, v, "validate length-estimation", started, started_utc);
   std::cout << table3_markdown(result, spec);
   std::cerr << "pamsim validate: outputs in " << v.out_dir
             << " (table3.csv, table3.md, pam_*.png, fits/)\n";
 }
 
 void run_reaching(const ValidateOptions& o) {
+  const auto started = std::chrono::steady_clock::now();
+  const std::string started_utc = utc_timestamp();
   const ReachingValidationSpec spec = load_reaching_validation(o.file);
   ValidationOptions v = common_options(o, "renders/validate_reaching");
+  if (!o.force) refuse_earlier_outputs(v.out_dir, kReachingOutputs);
+  const bool plots = plots_wanted(o.no_plot);
   require_writable(v.out_dir);
   std::shared_ptr<ProgressReporter> progress;
   attach_progress(&v, "pamsim validate reaching", spec.trials, &progress);
   const ReachingValidationResult result = run_reaching_validation(spec, v);
   progress->finish(spec.trials);
-  write_reaching_validation(result, spec, v.out_dir);
+  write_reaching_validation(result, spec, v.out_dir, plots);
+  write_validation_provenance(o, v, "validate reaching", started, started_utc);
   std::cout << table5_markdown(result, spec);
   std::cerr << "pamsim validate: outputs in " << v.out_dir
             << " (table5.csv, table5.md, fig7.png)\n";
@@ -109,7 +149,9 @@ void add_common(CLI::App* cmd, ValidateOptions* o, const std::string& default_fi
                   "Override a scenario key of every trial: --set sensors.noise_scale=2");
   cmd->add_option("--seed", o->seed, "Seed of the trials (and of the tensile tests' noise)")
       ->check(non_negative_seed);
-  cmd->add_option("--threads", o->threads, "Worker threads (default: all cores)");
+  cmd->add_option("--threads", o->threads, "Worker threads (0: all cores)")->capture_default_str();
+  cmd->add_flag("--force", o->force, "Replace the outputs of an earlier validation in the folder");
+  cmd->add_flag("--no-plot", o->no_plot, "Write no figures (gnuplot not needed)");
 }
 
 }  // namespace

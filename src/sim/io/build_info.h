@@ -8,7 +8,7 @@
 namespace pamsim {
 
 struct BuildInfo {
-  std::string pamsim_version;    // PROJECT_VERSION, "0.2.0"
+  std::string pamsim_version;    // PROJECT_VERSION, "0.3.0"
   std::string git_commit;        // the source tree's commit, "+dirty" if changed, or "unknown"
   std::string mujoco_version;    // as the library reports it at run time (mj_versionString)
   std::string sundials_version;  // likewise (SUNDIALSGetVersion)

@@ -87,6 +87,11 @@ std::string ConfigReader::where(const std::string& key) const {
   return overridden_.count(key) ? name_ + ": --set " + key : name_ + ": " + key;
 }
 
+std::string ConfigReader::described(const std::string& key, double value) const {
+  const char* origin = overridden(key) ? "--set" : defaults_.count(key) ? "default" : "file";
+  return key + " = " + format_value(value) + " (" + origin + ")";
+}
+
 void ConfigReader::fail(const std::string& key, const std::string& problem) const {
   throw InputError(where(key) + " " + problem);
 }

@@ -73,6 +73,10 @@ class ConfigReader {
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
   // "<file>: <key>" or "<file>: --set <key>": where a key's value came from, for messages.
   std::string where(const std::string& key) const;
+  // "sim.duration_s = 1 (--set)", "drop.time_s = 1 (default)" or "... (file)": another key's
+  // value in a message about two keys, so that a refusal caused by one key's default or by an
+  // override of the other says so.
+  std::string described(const std::string& key, double value) const;
   const std::string& name() const { return name_; }
   std::string directory() const;
 

@@ -35,8 +35,9 @@ ConditionSpec read_condition(ConfigReader& in, const std::string& key, const Sce
     c.at_s = in.get_double(key + ".at_s", 0.0);
     in.check(c.at_s >= 0, key + ".at_s", "must be >= 0, got " + format_value(c.at_s));
     in.check(c.at_s < sc.duration_s, key + ".at_s",
-             "must be before the end of the trial (sim.duration_s = " +
-                 format_value(sc.duration_s) + " s), got " + format_value(c.at_s));
+             "must be before the end of the trial (" +
+                 in.described("sim.duration_s", sc.duration_s) + " s), got " +
+                 format_value(c.at_s));
   } else if (in.has(key + ".contact")) {
     c.kind = ConditionKind::kContact;
     const std::vector<std::string> bodies = in.get_string_list(key + ".contact", {});
@@ -78,7 +79,9 @@ void read_drop(ConfigReader& in, Scenario* sc, bool implied) {
            "must be in [0, 1] m, got " + format_value(height_m));
   const double time_s = in.get_double("drop.time_s", 1.0);
   in.check(time_s >= 0 && time_s < sc->duration_s, "drop.time_s",
-           "must be in [0, sim.duration_s), got " + format_value(time_s));
+           "must be in [0, sim.duration_s): " + in.described("drop.time_s", time_s) +
+               " with " + in.described("sim.duration_s", sc->duration_s) +
+               "; set the other too (--set drop.time_s=...)");
   const std::string body = in.get_string("drop.body", "ball");
   const std::string basket = in.get_string("drop.basket", "basket");
   const std::string site = in.get_string("drop.site", "basket_floor");

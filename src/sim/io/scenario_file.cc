@@ -37,14 +37,16 @@ void read_time(ConfigReader& in, Scenario* sc) {
   const double steps = sc->duration_s / sc->timestep_s;
   in.check(steps <= max_steps, "sim.timestep_s",
            "of " + format_value(sc->timestep_s) + " s makes " + format_value(steps) +
-               " physics steps for sim.duration_s = " + format_value(sc->duration_s) +
-               " s, more than sim.max_steps = " + format_value(max_steps) + " (raise it to allow)");
+               " physics steps for " + in.described("sim.duration_s", sc->duration_s) +
+               " s, more than " + in.described("sim.max_steps", max_steps) +
+               " (raise it to allow)");
   sc->control_hz = in.get_double("sim.control_hz", sc->control_hz);
   in.check(sc->control_hz > 0, "sim.control_hz", "must be > 0, got " + format_value(sc->control_hz));
   const double ratio = 1.0 / (sc->control_hz * sc->timestep_s);
   in.check(ratio >= 1.0 - 1e-9 && std::fabs(ratio - std::round(ratio)) < 1e-6, "sim.control_hz",
-           "must divide the physics rate 1/sim.timestep_s into whole steps, got " +
-               format_value(sc->control_hz) + " Hz at " + format_value(sc->timestep_s) + " s");
+           "must divide the physics rate 1/sim.timestep_s into whole steps: " +
+               in.described("sim.control_hz", sc->control_hz) + " Hz at " +
+               in.described("sim.timestep_s", sc->timestep_s) + " s");
 }
 
 void read_model(ConfigReader& in, Scenario* sc) {

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pam_actuator/input_error.h"
+#include "sim/io/build_info.h"
 #include "sim/io/outputs.h"
 #include "sim/sweep/sqlite_file.h"
 
@@ -131,6 +132,9 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
         {"definition", sweep.canonical_json()},
         {"trials", std::to_string(sweep.trials())},
         {"pamsim_version", PAMSIM_VERSION},
+        {"git_commit", build_info().git_commit},
+        {"mujoco_version", build_info().mujoco_version},
+        {"sundials_version", build_info().sundials_version},
         {"sweep_file", sweep.file},
         {"base_path", fs::absolute(sweep.base_path).lexically_normal().string()},
         {"created_utc", utc_timestamp()}};
@@ -139,6 +143,20 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
     db.exec("COMMIT; PRAGMA journal_mode=WAL;");
   });
   return open_to_resume(path, sweep, shard);
+}
+
+void ResultsDb::record_invocation(const nlohmann::json& entry) {
+  nlohmann::json all = nlohmann::json::parse(meta("invocations"), nullptr, false);
+  if (!all.is_array()) all = nlohmann::json::array();
+  all.push_back(entry);
+  exec("BEGIN IMMEDIATE;");
+  try {
+    put_meta({{"invocations", all.dump()}});
+  } catch (...) {
+    exec("ROLLBACK;");
+    throw;
+  }
+  exec("COMMIT;");
 }
 
 void ResultsDb::put_meta(const std::vector<std::pair<std::string, std::string>>& entries) {

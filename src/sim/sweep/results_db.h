@@ -1,7 +1,10 @@
 // results_db.h: a sweep's results in SQLite, one file per sweep.
 //   meta(key, value)   format, the sweep definition (canonical JSON, sweep.h), trials (the
-//                      sweep's count), pamsim_version, sweep_file, base_path, created_utc;
-//                      shard ("I/N") in a shard's database; merged_from in a merged one
+//                      sweep's count), pamsim_version, git_commit, mujoco_version,
+//                      sundials_version, sweep_file, base_path, created_utc; shard ("I/N") in
+//                      a shard's database; merged_from in a merged one; invocations (a JSON
+//                      array: each `pamsim sweep` that ran trials into it, with its command
+//                      line, threads, start, wall time and trials run: provenance.h)
 //   trials(trial INTEGER PRIMARY KEY, point, seed_index, seed, <one column per axis key>,
 //          status, message, <every metric of summary.json>; NULL where undefined, and all
 //          NULL for a trial that failed to run)
@@ -12,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <functional>
 #include <string>
 #include <utility>
@@ -70,6 +74,9 @@ class ResultsDb {
   std::int64_t trial_count() const;
   // Stores `records` in one transaction; `sweep` gives the axis values of their points.
   void insert(const SweepDefinition& sweep, const std::vector<TrialRecord>& records);
+
+  // Appends `entry` to the meta invocations array (one transaction).
+  void record_invocation(const nlohmann::json& entry);
 
   // The trials table's columns, in order.
   std::vector<std::string> trial_columns() const;

@@ -876,7 +876,7 @@ std::string tune_evaluations_csv(const TuneDefinition& def,
 }
 
 void write_tune_outputs(const TuneDefinition& def, const std::vector<TuneEvaluation>& history,
-                        const StagedOutputs& out) {
+                        const StagedOutputs& out, bool plots) {
   if (history.empty()) throw InputError("no evaluation stored yet: nothing to report");
   const TuneEvaluation* best = best_evaluation(history);
 
@@ -905,7 +905,7 @@ void write_tune_outputs(const TuneDefinition& def, const std::vector<TuneEvaluat
                  "'#2471a3' title 'feasible', 'all.dat' using 1:($3 == 0 ? $2 : 1/0) with points "
                  "pt 6 ps 0.6 lc rgb '#999999' title 'breaks a constraint', 'best.dat' using 1:2 "
                  "with steps lw 2 lc rgb '#c0392b' title 'best feasible so far'\n";
-    run_gnuplot(out.path("convergence.png"), job);
+    if (plots) run_gnuplot(out.path("convergence.png"), job);
   }
   if (def.objectives.size() > 1) {
     const std::vector<const TuneEvaluation*> front = pareto_front(history);
@@ -935,7 +935,7 @@ void write_tune_outputs(const TuneDefinition& def, const std::vector<TuneEvaluat
                  gp_quote(def.objectives[1].metric) +
                  "\nplot 'all.dat' with points pt 6 lc rgb '#999999' title 'evaluated', "
                  "'front.dat' with linespoints pt 7 lc rgb '#c0392b' title 'non-dominated'\n";
-    run_gnuplot(out.path("pareto.png"), job);
+    if (plots) run_gnuplot(out.path("pareto.png"), job);
     write_file_atomically(out.path("pareto.csv"), csv);
   }
   write_file_atomically(out.path("evaluations.csv"),

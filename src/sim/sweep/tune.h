@@ -191,9 +191,10 @@ inline const std::vector<std::string> kTuneOutputs = [] {
 
 // best.toml (the base scenario with the best values, ready for `pamsim run` from the output
 // folder), evaluations.csv, convergence.png, and with several objectives pareto.csv and
-// pareto.png, into the staging folder of `out` (published by the caller with the rest).
+// pareto.png, into the staging folder of `out` (published by the caller with the rest);
+// without `plots`, no PNG.
 void write_tune_outputs(const TuneDefinition& def, const std::vector<TuneEvaluation>& history,
-                        const StagedOutputs& out);
+                        const StagedOutputs& out, bool plots = true);
 std::string tune_evaluations_csv(const TuneDefinition& def,
                                  const std::vector<TuneEvaluation>& history);
 

@@ -381,9 +381,11 @@ namespace {
 
 // the figures, then the tables (a failed plot leaves no table claiming a complete run)
 void write_figures_and_tables(const LengthValidationResult& result,
-                              const LengthValidationSpec& spec, const std::string& out_dir) {
+                              const LengthValidationSpec& spec, const std::string& out_dir,
+                              bool plots) {
   make_directories(out_dir);
   for (const ValidationPam& pam : spec.pams) {
+    if (!plots) break;
     GnuplotJob job;
     job.width_px = 1200;
     job.height_px = 900;
@@ -430,10 +432,10 @@ void write_figures_and_tables(const LengthValidationResult& result,
 }  // namespace
 
 void write_length_validation(LengthValidationResult& result, const LengthValidationSpec& spec,
-                             const std::string& out_dir) {
+                             const std::string& out_dir, bool plots) {
   const fs::path fits_tmp = result.fits_dir;
   try {
-    write_figures_and_tables(result, spec, out_dir);
+    write_figures_and_tables(result, spec, out_dir, plots);
   } catch (...) {
     std::error_code ec;
     fs::remove_all(fits_tmp, ec);

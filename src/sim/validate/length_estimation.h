@@ -103,9 +103,9 @@ LengthValidationResult run_length_validation(const LengthValidationSpec& spec,
 // paper's values beside) and per PAM out_dir/pam_<NAME>.png (Fig. 5-6: true and Eq. (3)
 // estimated length over time, and every law's error); then the fits folder becomes
 // out_dir/fits (an older one replaced). Each file appears whole or not at all; on failure
-// the temp fits folder is removed and an older fits/ stays.
+// the temp fits folder is removed and an older fits/ stays. Without `plots`, no PNG.
 void write_length_validation(LengthValidationResult& result, const LengthValidationSpec& spec,
-                             const std::string& out_dir);
+                             const std::string& out_dir, bool plots = true);
 
 // The table texts, for tests: the same bytes as the files.
 std::string table3_csv(const LengthValidationResult& result);

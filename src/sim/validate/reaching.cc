@@ -279,7 +279,8 @@ std::string table5_markdown(const ReachingValidationResult& result,
 }
 
 void write_reaching_validation(const ReachingValidationResult& result,
-                               const ReachingValidationSpec& spec, const std::string& out_dir) {
+                               const ReachingValidationSpec& spec, const std::string& out_dir,
+                               bool draw) {
   make_directories(out_dir);
   const Scenario& sc = result.scenario;
   const Trajectory& tr = result.trials.front().trajectory;
@@ -321,7 +322,7 @@ void write_reaching_validation(const ReachingValidationResult& result,
                "\nset grid\nset key outside bottom center horizontal\nset xlabel 'time (s)'\n"
                "set ylabel 'error (% of length)'\n" +
                shading + "plot " + plots + "\n";
-  run_gnuplot((fs::path(out_dir) / "fig7.png").string(), job);
+  if (draw) run_gnuplot((fs::path(out_dir) / "fig7.png").string(), job);
   write_file_atomically((fs::path(out_dir) / "table5.csv").string(), table5_csv(result));
   write_file_atomically((fs::path(out_dir) / "table5.md").string(), table5_markdown(result, spec));
 }

@@ -78,9 +78,10 @@ double slack_episode_start(const Trajectory& trajectory, const std::string& labe
 // out_dir/table5.csv (muscle, method, part, samples, max_error_pct, rmse_pct,
 // paper_max_error_pct, paper_rmse_pct, slack_start_s: the first trial's), out_dir/table5.md
 // (Table V's layout, the paper's values beside) and out_dir/fig7.png (the first trial's
-// errors over time, slack episodes shaded). Each file whole or not at all.
+// errors over time, slack episodes shaded; not without `draw`). Each file whole or not at all.
 void write_reaching_validation(const ReachingValidationResult& result,
-                               const ReachingValidationSpec& spec, const std::string& out_dir);
+                               const ReachingValidationSpec& spec, const std::string& out_dir,
+                               bool draw = true);
 
 std::string table5_csv(const ReachingValidationResult& result);
 std::string table5_markdown(const ReachingValidationResult& result,
