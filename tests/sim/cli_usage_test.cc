@@ -45,6 +45,23 @@ TEST(CliUsageTest, UsageErrorsExitTwoInOneLineWithTheCommandsThereAre) {
   EXPECT_EQ(run_pamsim("--version").exit_code, 0);
 }
 
+// One version everywhere: pamsim --version, CITATION.cff and the newest CHANGELOG entry; and
+// the licence is there.
+TEST(CliUsageTest, TheVersionIsTheSameInTheProgramTheCitationAndTheChangelog) {
+  const auto version = run_pamsim("--version");
+  EXPECT_EQ(version.out, std::string("pamsim ") + PAMSIM_VERSION + "\n");
+  const std::string source = PAMSIM_SOURCE_DIR;
+  const std::string citation = pamsim_test::read_file(source + "/CITATION.cff");
+  EXPECT_NE(citation.find(std::string("\nversion: ") + PAMSIM_VERSION + "\n"), std::string::npos);
+  EXPECT_NE(citation.find("doi: 10.3390/act14110560"), std::string::npos);
+  const std::string changelog = pamsim_test::read_file(source + "/CHANGELOG.md");
+  const auto newest = changelog.find("\n## ");
+  ASSERT_NE(newest, std::string::npos);
+  EXPECT_EQ(changelog.compare(newest + 4, std::string(PAMSIM_VERSION).size(), PAMSIM_VERSION), 0)
+      << changelog.substr(newest, 40);
+  EXPECT_NE(pamsim_test::read_file(source + "/LICENSE").find("MIT License"), std::string::npos);
+}
+
 // Values echoed in messages are printed as read but shortened and escaped (a NUL used to end
 // the message, a multi-megabyte value was printed whole), and a missing file names the key
 // that points at it (issue 14 item 11).
