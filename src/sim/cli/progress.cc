@@ -1,6 +1,8 @@
 // progress.cc: see progress.h.
 #include "sim/cli/progress.h"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 
@@ -23,15 +25,20 @@ std::string format_duration(double seconds) {
   return buf;
 }
 
+ProgressStyle progress_style(bool quiet) {
+  if (quiet) return ProgressStyle::kQuiet;
+  return ::isatty(STDERR_FILENO) != 0 ? ProgressStyle::kTerminal : ProgressStyle::kLog;
+}
+
 ProgressReporter::ProgressReporter(std::string label, std::int64_t total,
-                                   std::int64_t already_done, std::ostream& out, bool terminal,
-                                   std::string unit)
+                                   std::int64_t already_done, std::ostream& out,
+                                   ProgressStyle style, std::string unit)
     : label_(std::move(label)),
       unit_(std::move(unit)),
       total_(total),
       already_done_(already_done),
       out_(out),
-      terminal_(terminal),
+      style_(style),
       start_(std::chrono::steady_clock::now()),
       last_print_(start_),
       last_done_printed_(already_done) {}
@@ -39,7 +46,8 @@ ProgressReporter::ProgressReporter(std::string label, std::int64_t total,
 void ProgressReporter::update(std::int64_t done) {
   const auto now = std::chrono::steady_clock::now();
   const double since = std::chrono::duration<double>(now - last_print_).count();
-  if (terminal_) {
+  if (style_ == ProgressStyle::kQuiet) return;
+  if (style_ == ProgressStyle::kTerminal) {
     if (since >= kTerminalPeriodS) print(done, false);
     return;
   }
@@ -50,7 +58,8 @@ void ProgressReporter::update(std::int64_t done) {
 }
 
 void ProgressReporter::finish(std::int64_t done) {
-  if (terminal_ || done != last_done_printed_) print(done, true);
+  if (style_ == ProgressStyle::kQuiet) return;
+  if (style_ == ProgressStyle::kTerminal || done != last_done_printed_) print(done, true);
 }
 
 void ProgressReporter::print(std::int64_t done, bool last) {
@@ -64,7 +73,7 @@ void ProgressReporter::print(std::int64_t done, bool last) {
                 static_cast<long long>(done), static_cast<long long>(total_), 100.0 * fraction,
                 std::isfinite(rate) ? rate : 0.0, unit_.c_str(), last ? "elapsed" : "ETA",
                 format_duration(last ? elapsed : eta).c_str());
-  if (terminal_) {
+  if (style_ == ProgressStyle::kTerminal) {
     const int filled = static_cast<int>(fraction * kBarWidth);
     out_ << "\r" << label_ << " [" << std::string(filled, '#') << std::string(kBarWidth - filled, '.')
          << "]  " << numbers << "\x1b[K" << (last ? "\n" : "") << std::flush;

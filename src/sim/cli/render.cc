@@ -9,9 +9,11 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
+#include "sim/cli/progress.h"
 #include "sim/core/runner.h"
 #include "sim/io/outputs.h"
 #include "sim/io/scenario_file.h"
@@ -29,6 +31,7 @@ struct RenderCommandOptions {
   std::string backend;   // empty: $MUJOCO_GL, $PAMSIM_GL_BACKEND, else osmesa
   int gpu = -1;          // EGL device; -1: $EGL_DEVICE_ID, else the first GPU
   bool force = false;    // replace an existing MP4 or PNG frames
+  bool quiet = false;
 };
 
 void render(RenderCommandOptions opt) {
@@ -56,7 +59,16 @@ void render(RenderCommandOptions opt) {
 
   // the trial, rendered as it runs; the time includes setting up GL and the encoder
   const auto start = std::chrono::steady_clock::now();
+  std::unique_ptr<ProgressReporter> progress;
+  video.on_frame = [&](long done, long total) {
+    if (!progress) {
+      progress = std::make_unique<ProgressReporter>("pamsim render", total, 0, std::cerr,
+                                                    progress_style(opt.quiet), "frames");
+    }
+    progress->update(done);
+  };
   const RenderedTrial r = run_rendered_trial(model, sc, sc.seed, video, false);
+  if (progress) progress->finish(r.frames);
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -101,6 +113,7 @@ void add_render_command(CLI::App& app) {
                   "first GPU, else Mesa's software renderer)");
   cmd->add_flag("--plot", v.plot, "Live plots of angle and pressures, bottom left");
   cmd->add_flag("--force", opt->force, "Replace an existing MP4, or the PNG frames in --png-dir");
+  cmd->add_flag("--quiet", opt->quiet, "No progress bar or progress lines");
   cmd->callback([opt] { render(*opt); });
 }
 

@@ -15,6 +15,7 @@
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/toml_file.h"
 #include "sim/cli/commands.h"
+#include "sim/cli/progress.h"
 #include "sim/core/runner.h"
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
@@ -40,6 +41,7 @@ struct RunOptions {
   std::string video;  // MP4 of the single trial
   bool force = false;
   bool no_plot = false;
+  bool quiet = false;
 };
 
 // What a run writes in its folder (StagedOutputs replaces exactly these).
@@ -137,7 +139,12 @@ void run(RunOptions opt) {
           "<this folder> runs it again\n");
   std::vector<TrialResult> results;
   if (opt.video.empty()) {
-    results = run_trials(model, sc, opt.trials, threads);
+    // a bar for several trials (one is over in a blink)
+    ProgressReporter progress("pamsim run", opt.trials, 0, std::cerr,
+                              opt.trials > 1 ? progress_style(opt.quiet) : ProgressStyle::kQuiet);
+    results = run_trials(model, sc, opt.trials, threads, true,
+                         [&](int done) { progress.update(done); });
+    progress.finish(opt.trials);
   } else {
     // the same trial as run_trials' first, watched by the renderer
     results.push_back(run_rendered_trial(model, sc, sc.seed, video, true).trial);
@@ -201,6 +208,7 @@ void add_run_command(CLI::App& app) {
                   "Also render the trial to this MP4 (1280x720, 30 fps; see pamsim render)");
   cmd->add_flag("--force", opt->force, "Replace the outputs of an earlier run in the folder");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no plots (gnuplot not needed)");
+  cmd->add_flag("--quiet", opt->quiet, "No progress bar or progress lines (--trials N)");
   cmd->callback([opt, trials] {
     RunOptions o = *opt;
     o.trials_given = trials->count() > 0;

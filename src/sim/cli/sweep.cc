@@ -46,6 +46,7 @@ struct SweepOptions {
   bool resume = false;
   std::string out;
   std::string shard;
+  bool quiet = false;
 };
 
 // Where the trials run when not on this machine's threads: rank 0 of an MPI job hands them
@@ -92,7 +93,7 @@ void run_sweep_command(const SweepOptions& opt, const RemoteTrials* remote) {
 
   StopOnSignal stop_on_signal;
   ProgressReporter progress("pamsim sweep", trials, db.trial_count(), std::cerr,
-                            ::isatty(STDERR_FILENO) != 0);
+                            progress_style(opt.quiet));
   SweepRunOptions run_options;
   run_options.threads = threads;
   run_options.shard = shard;
@@ -211,6 +212,7 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--threads", opt->threads, "Worker threads (default: all cores)");
   cmd->add_option("--db", opt->db, "Results database (default DIR/sweep.db)");
   cmd->add_flag("--resume", opt->resume, "Finish the sweep stored in the database");
+  cmd->add_flag("--quiet", opt->quiet, "No progress bar or progress lines");
   cmd->add_option("--out", opt->out, "Output folder (default renders/<sweep name>)");
   cmd->add_option("--shard", opt->shard,
                   "Run only shard I of N (0 <= I < N; trial t is in shard t mod N) into its own "

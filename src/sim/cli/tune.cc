@@ -38,6 +38,7 @@ struct TuneOptions {
   bool resume = false;
   bool force = false;
   bool no_plot = false;
+  bool quiet = false;
 };
 
 // held_out.csv: one row per setting checked on the held-out seeds
@@ -81,7 +82,7 @@ void tune(const TuneOptions& opt) {
             << ", " << def.generations << " generations of " << def.population << " (" << total
             << " evaluations) x " << def.seeds * def.noise_scales.size() << " trials each, on "
             << threads << (threads == 1 ? " thread" : " threads") << " into " << db_path << "\n";
-  ProgressReporter progress("pamsim tune", total, 0, std::cerr, ::isatty(STDERR_FILENO) != 0,
+  ProgressReporter progress("pamsim tune", total, 0, std::cerr, progress_style(opt.quiet),
                             "evaluations");
   const std::string made_by = db.meta("pamsim_version");
   if (made_by != PAMSIM_VERSION) {
@@ -166,6 +167,7 @@ void add_tune_command(CLI::App& app) {
   cmd->add_flag("--resume", opt->resume, "Continue the tuning stored in the database");
   cmd->add_flag("--force", opt->force, "Replace another tuning's outputs in the folder");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no figures (gnuplot not needed)");
+  cmd->add_flag("--quiet", opt->quiet, "No progress bar or progress lines");
   cmd->callback([opt] { tune(*opt); });
 }
 

@@ -41,6 +41,7 @@ struct ValidateOptions {
   int threads = 0;
   bool force = false;
   bool no_plot = false;
+  bool quiet = false;
 };
 
 const std::vector<std::string> kLengthOutputs = {"table3.csv", "table3.md", "pam_*.png", "fits",
@@ -88,10 +89,9 @@ void require_writable(const std::string& dir) {
   if (!ok) throw InputError("--out " + dir + ": cannot write there");
 }
 
-void attach_progress(ValidationOptions* v, const std::string& label, int total,
+void attach_progress(ValidationOptions* v, const std::string& label, int total, bool quiet,
                      std::shared_ptr<ProgressReporter>* holder) {
-  *holder =
-      std::make_shared<ProgressReporter>(label, total, 0, std::cerr, ::isatty(STDERR_FILENO) != 0);
+  *holder = std::make_shared<ProgressReporter>(label, total, 0, std::cerr, progress_style(quiet));
   ProgressReporter* p = holder->get();
   v->progress = [p](int done, int) { p->update(done); };
 }
@@ -106,7 +106,7 @@ void run_length_estimation(const ValidateOptions& o) {
   require_writable(v.out_dir);  // an unwritable --out fails here, before any work
   const int total = static_cast<int>(spec.pams.size() * spec.laws.size() * spec.weights_kg.size());
   std::shared_ptr<ProgressReporter> progress;
-  attach_progress(&v, "pamsim validate length-estimation", total, &progress);
+  attach_progress(&v, "pamsim validate length-estimation", total, o.quiet, &progress);
   v.started = [&](int trials) {
     std::cerr << "pamsim validate: " << spec.pams.size() << " PAMs x " << spec.laws.size()
               << " laws x " << spec.weights_kg.size() << " weights = " << trials
@@ -131,7 +131,7 @@ void run_reaching(const ValidateOptions& o) {
   const bool plots = plots_wanted(o.no_plot);
   require_writable(v.out_dir);
   std::shared_ptr<ProgressReporter> progress;
-  attach_progress(&v, "pamsim validate reaching", spec.trials, &progress);
+  attach_progress(&v, "pamsim validate reaching", spec.trials, o.quiet, &progress);
   const ReachingValidationResult result = run_reaching_validation(spec, v);
   progress->finish(spec.trials);
   write_reaching_validation(result, spec, v.out_dir, plots);
@@ -152,6 +152,7 @@ void add_common(CLI::App* cmd, ValidateOptions* o, const std::string& default_fi
   cmd->add_option("--threads", o->threads, "Worker threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--force", o->force, "Replace the outputs of an earlier validation in the folder");
   cmd->add_flag("--no-plot", o->no_plot, "Write no figures (gnuplot not needed)");
+  cmd->add_flag("--quiet", o->quiet, "No progress bar or progress lines");
 }
 
 }  // namespace

@@ -55,12 +55,18 @@ void parallel_for(int n, int threads, const std::function<void(int)>& job) {
 }
 
 std::vector<TrialResult> run_trials(const TrialModel& model, const Scenario& sc, int trials,
-                                    int threads, bool keep_trajectory) {
+                                    int threads, bool keep_trajectory,
+                                    const std::function<void(int)>& on_done) {
   if (trials < 1) throw InputError("--trials must be >= 1, got " + std::to_string(trials));
   if (threads < 1) throw InputError("--threads must be >= 1, got " + std::to_string(threads));
   std::vector<TrialResult> results(trials);
+  std::mutex done_mutex;
+  int done = 0;
   parallel_for(trials, threads, [&](int k) {
     results[k] = run_trial(model, sc, sc.seed + static_cast<std::uint64_t>(k), keep_trajectory);
+    if (!on_done) return;
+    const std::lock_guard<std::mutex> lock(done_mutex);
+    on_done(++done);
   });
   return results;
 }

@@ -29,8 +29,10 @@ int resolve_thread_count(int requested);
 void parallel_for(int n, int threads, const std::function<void(int)>& job);
 
 // Runs `trials` trials with seeds seed..seed+trials-1 on `threads` threads; results in
-// seed order. Throws InputError if trials < 1 or threads < 1.
+// seed order. `on_done(n)`, if given, is called after each trial with the number finished so
+// far, from one thread at a time. Throws InputError if trials < 1 or threads < 1.
 std::vector<TrialResult> run_trials(const TrialModel& model, const Scenario& scenario, int trials,
-                                    int threads, bool keep_trajectory = true);
+                                    int threads, bool keep_trajectory = true,
+                                    const std::function<void(int)>& on_done = {});
 
 }  // namespace pamsim

@@ -204,6 +204,7 @@ void TrialVideo::observe(const TrialSnapshot& snapshot) {
     if (mp4_) mp4_->write_frame(rgb);
     if (png_) png_->write_frame(rgb);
     ++next_frame_;
+    if (options_.on_frame) options_.on_frame(next_frame_, frame_count_);
   }
 }
 

@@ -7,6 +7,7 @@
 // `pamsim run --video` use.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -33,6 +34,8 @@ struct VideoOptions {
   GlBackend backend = GlBackend::kOsmesa;
   EglDeviceChoice egl_device;   // egl only
   bool plot = false;      // live plots of angle and pressures
+  // called after each frame written with (frames written, frames in all), e.g. for progress
+  std::function<void(long, long)> on_frame;
 };
 
 // "fast" | "default". Throws InputError "--quality must be fast or default, got '<name>'".
