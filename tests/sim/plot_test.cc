@@ -398,6 +398,24 @@ std::string run_compare(std::vector<std::string> args) {
   return ::testing::internal::GetCapturedStdout();
 }
 
+TEST_F(PlotTest, AHeatMapWithAMissingCellAndCellTextsIsDrawn) {
+  HeatMap map;
+  map.title = "peak drop [deg]: mean ± SD over 2 seeds per point";
+  map.x_label = "trigger threshold V_thr [mm/s] (reflex.v_thr_mm_s)";
+  map.y_label = "reflex gain k [MPa s/mm], log scale (reflex.k_MPa_s_per_mm)";
+  map.value_label = "peak drop [deg], mean over the seeds";
+  map.x_levels = {"40", "60"};
+  map.y_levels = {"0.001", "0.002"};
+  map.cells = {8.5, std::nan(""), 9.0, 9.5};
+  map.cell_texts = {"8.5 ± 0.1", "", "9 ± 0.2", "9.5 ± 0"};
+  map.missing_label = "no seed ran ok (diverged, failed or not run)";
+  write_heatmap(path("h.png"), map);
+  EXPECT_TRUE(read_png_size(path("h.png")).ok);
+  map.cell_texts.pop_back();
+  EXPECT_THROW(write_heatmap(path("bad.png"), map), std::invalid_argument);
+  EXPECT_FALSE(fs::exists(path("bad.png")));
+}
+
 TEST_F(PlotTest, CompareDrawsBothRunsAndPrintsTheirMetrics) {
   write_run(dir_ / "model", 3, 0.0);
   write_run(dir_ / "fiber", 1, 2.0);

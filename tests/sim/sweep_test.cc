@@ -254,6 +254,25 @@ TEST_F(SweepTest, ReportStatisticsAndBestPointFollowTheCriterion) {
   EXPECT_EQ(map.mark_x, 0.0);
   EXPECT_EQ(map.mark_y, 1.0);
   EXPECT_EQ(map.x_levels, (std::vector<std::string>{"50", "60"}));
+  // labelled for a reader: meaning, unit and key; the spread beside the mean; the tie rule
+  EXPECT_EQ(map.x_label, "trigger threshold V_thr, Eq. (12) [mm/s] (reflex.v_thr_mm_s)");
+  EXPECT_NE(map.y_label.find("[MPa s/mm]"), std::string::npos) << map.y_label;
+  EXPECT_EQ(map.title, "peak drop [deg]: mean ± SD over 3 seeds per point");
+  ASSERT_EQ(map.cell_texts.size(), 6u);
+  EXPECT_EQ(map.cell_texts[2 * 2 + 0], "13 ± 1");   // point 2: 12, 13, 14
+  EXPECT_NE(map.mark_label.find("ties: lowest point"), std::string::npos);
+  EXPECT_NE(pamsim::best_criterion(sweep, "peak_drop_deg").find("ties: the lowest point number"),
+            std::string::npos);
+  EXPECT_EQ(pamsim::metric_label("recovery_time_s"), "recovery time [s]");
+  EXPECT_EQ(pamsim::metric_label("length_est_rmse_pct"), "length est rmse [% of length]");
+  EXPECT_EQ(pamsim::metric_label("mistrips"), "mistrips");
+
+  // an incomplete sweep says so in its title
+  pamsim::SweepSummary part = sweep;
+  part.trials_stored = 10;
+  EXPECT_NE(pamsim::sweep_heat_map(part, "peak_drop_deg", best, "peak_drop_deg")
+                .title.find("INCOMPLETE: 10 of 18 trials stored"),
+            std::string::npos);
 }
 
 TEST_F(SweepTest, BestScenarioKeepsTheBaseAndSetsThePoint) {

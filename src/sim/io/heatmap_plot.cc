@@ -1,4 +1,5 @@
 // heatmap_plot.cc: write_heatmap of plot.h, a sweep metric over two axes.
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -15,6 +16,11 @@ void write_heatmap(const std::string& png_path, const HeatMap& map) {
                                 " cells for " + std::to_string(nx) + " x " + std::to_string(ny) +
                                 " levels");
   }
+  if (!map.scattered && !map.cell_texts.empty() && map.cell_texts.size() != map.cells.size()) {
+    throw std::invalid_argument(png_path + ": heat map has " +
+                                std::to_string(map.cell_texts.size()) + " cell texts for " +
+                                std::to_string(map.cells.size()) + " cells");
+  }
   if (map.scattered && (map.x.size() != map.values.size() || map.y.size() != map.values.size())) {
     throw std::invalid_argument(png_path + ": heat map points and values differ in number");
   }
@@ -22,7 +28,7 @@ void write_heatmap(const std::string& png_path, const HeatMap& map) {
   job.width_px = kHeatMapWidthPx;
   job.height_px = kHeatMapHeightPx;
   std::ostringstream s;
-  s << "set title " << gp_quote(map.title) << " font ',14'\n"
+  s << "set encoding utf8\nset title " << gp_quote(map.title) << " font ',14'\n"
     << "set xlabel " << gp_quote(map.x_label) << "\nset ylabel " << gp_quote(map.y_label) << "\n"
     << "set cblabel " << gp_quote(map.value_label) << "\n"
     // viridis: dark is low, yellow is high; no data is grey
@@ -49,7 +55,11 @@ void write_heatmap(const std::string& png_path, const HeatMap& map) {
     for (std::size_t iy = 0; iy < ny; ++iy) {
       for (std::size_t ix = 0; ix < nx; ++ix) {
         const double v = map.cells[iy * nx + ix];
-        if (std::isfinite(v)) dat += gp_num(ix) + " " + gp_num(iy) + " " + gp_num(v) + "\n";
+        if (!std::isfinite(v)) continue;
+        dat += gp_num(ix) + " " + gp_num(iy) + " " + gp_num(v);
+        // the cell's text as a quoted column (gnuplot reads "..." as one)
+        if (!map.cell_texts.empty()) dat += " \"" + map.cell_texts[iy * nx + ix] + "\"";
+        dat += "\n";
       }
     }
     auto tics = [](const char* axis, const std::vector<std::string>& levels) {
@@ -65,14 +75,16 @@ void write_heatmap(const std::string& png_path, const HeatMap& map) {
       << "set tics scale 0\n";
     s << "plot 'cells.dat' using 1:2:(0.5):(0.5):3 with boxxyerror fc palette fs solid 1.0 "
          "border lc rgb 'white' notitle";
-    if (!map.cell_format.empty()) {
+    if (!map.cell_format.empty() || !map.cell_texts.empty()) {
       // white text on the dark half of the palette, black on the light half
       const int font = nx * ny > 200 ? 7 : 9;
       const std::string mid = gp_num(std::isfinite(lo) && std::isfinite(hi) ? (lo + hi) / 2 : 0.0);
+      const std::string text = map.cell_texts.empty()
+                                   ? "sprintf(" + gp_quote(map.cell_format) + ", $3)"
+                                   : "stringcolumn(4)";
       for (const auto& [test, colour] : {std::pair{"<", "white"}, {">=", "black"}}) {
-        s << ", 'cells.dat' using 1:2:($3 " << test << " " << mid << " ? sprintf("
-          << gp_quote(map.cell_format) << ", $3) : '') with labels font '," << font
-          << "' tc rgb '" << colour << "' notitle";
+        s << ", 'cells.dat' using 1:2:($3 " << test << " " << mid << " ? " << text
+          << " : '') with labels font '," << font << "' tc rgb '" << colour << "' notitle";
       }
     }
     mark_plot = "'mark.dat' using 1:2:(0.5):(0.5) with boxxyerror fs empty border lc rgb '#e31a1c' "
@@ -88,6 +100,12 @@ void write_heatmap(const std::string& png_path, const HeatMap& map) {
   if (map.has_mark) {
     job.data_files.emplace_back("mark.dat", gp_num(map.mark_x) + " " + gp_num(map.mark_y) + "\n");
     s << ", " << mark_plot << " title " << gp_quote(map.mark_label);
+  }
+  const bool any_missing =
+      !map.scattered && std::any_of(map.cells.begin(), map.cells.end(),
+                                    [](double v) { return !std::isfinite(v); });
+  if (any_missing && !map.missing_label.empty()) {
+    s << ", keyentry with boxes fc rgb '#d0d0d0' fs solid 1.0 title " << gp_quote(map.missing_label);
   }
   s << "\n";
   if (dat.empty()) dat = "nan nan nan\n";   // nothing to colour: gnuplot still draws the axes

@@ -112,7 +112,7 @@ GnuplotJob band_job(const std::vector<BandSeries>& runs, const std::string& titl
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const std::string colour = kBandColours[k % n_colours];
     const std::string label =
-        runs[k].label + " range (" + std::to_string(runs[k].trials) + " trials)";
+        runs[k].label + " min-max over " + std::to_string(runs[k].trials) + " trials";
     s << (k ? ", " : "") << "'band_" << k << ".dat' using 1:3:4 with filledcurves fc rgb '"
       << colour << "' fs transparent solid 0.25 noborder title " << gp_quote(label);
   }
@@ -314,7 +314,7 @@ void write_angle_band_plot(const std::string& png_path,
   const BandSeries band = angle_band(trials, name.empty() ? "angle" : name);
   if (band.time_s.empty()) throw std::runtime_error(png_path + ": no trajectory rows to plot");
   const std::string title = file_name(scenario.path) + ": angle over " +
-                            std::to_string(trials.size()) + " trials (mean and range)";
+                            std::to_string(trials.size()) + " trials (mean, band: min-max)";
   const EventSpec* release = scenario.event("release");
   const double drop_time_s =
       release && release->when.kind == ConditionKind::kTime ? release->when.at_s : kNaN;

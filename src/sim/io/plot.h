@@ -66,6 +66,11 @@ struct HeatMap {
   double value_max = std::numeric_limits<double>::quiet_NaN();
   // the value printed in each grid cell (C format, e.g. "%.2g"); empty: none
   std::string cell_format;
+  // or each grid cell's own text (e.g. "8.62 ± 0.05", the mean and the spread beside it),
+  // one per cell, in place of cell_format where given
+  std::vector<std::string> cell_texts;
+  // the legend entry of the grey cells without a value ("no trial ran ok"); empty: none
+  std::string missing_label;
   // a marked cell (grid: indices) or point (scattered: coordinates), e.g. the best setting
   bool has_mark = false;
   double mark_x = 0, mark_y = 0;
@@ -86,6 +91,7 @@ void write_angle_band_plot(const std::string& png_path,
 // Two (or more) runs' bands on one axis, one colour each, with a legend.
 void write_compare_plot(const std::string& png_path, const std::vector<BandSeries>& runs);
 // Throws std::invalid_argument if the cells or points do not match the levels or each other.
+// Without cell_texts, a grid cell prints its value with cell_format.
 void write_heatmap(const std::string& png_path, const HeatMap& map);
 
 }  // namespace pamsim

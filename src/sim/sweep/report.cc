@@ -16,6 +16,7 @@
 #include "sim/io/outputs.h"
 #include "sim/core/metrics.h"
 #include "sim/io/scenario_file.h"
+#include "sim/io/scenario_keys.h"
 #include "sim/sweep/sweep.h"
 
 namespace pamsim {
@@ -72,6 +73,20 @@ std::string unquoted(const std::string& toml) {
 }
 
 // A level for a tick label: numbers to 3 significant digits, strings without quotes.
+// "trigger threshold V_thr, Eq. (12) [mm/s], log scale (reflex.v_thr_mm_s)": an axis's
+// meaning and unit from the scenario keys' documentation, and the key itself
+std::string axis_label(const std::string& key, bool log_scale) {
+  const std::string pattern = scenario_key_pattern(key);
+  std::string label;
+  for (const KeyDoc& d : scenario_key_docs()) {
+    if (d.key != pattern) continue;
+    label = d.meaning.rfind("the ", 0) == 0 ? d.meaning.substr(4) : d.meaning;
+    if (!d.unit.empty()) label += " [" + d.unit + "]";
+  }
+  if (log_scale) label += label.empty() ? "log scale" : ", log scale";
+  return label.empty() ? key : label + " (" + key + ")";
+}
+
 std::string level_label(const std::string& toml) {
   double v;
   const auto r = std::from_chars(toml.data(), toml.data() + toml.size(), v);
@@ -226,7 +241,25 @@ const PointSummary* best_point(const SweepSummary& sweep, const std::string& met
 
 std::string best_criterion(const SweepSummary& sweep, const std::string& metric) {
   return "smallest mean " + metric + " over the seeds, among points where all " +
-         std::to_string(sweep.seeds) + " seeds ran ok with zero mistrips and a defined " + metric;
+         std::to_string(sweep.seeds) + " seeds ran ok with zero mistrips and a defined " + metric +
+         " (ties: the lowest point number)";
+}
+
+std::string metric_label(const std::string& name) {
+  if (name == kMistripRate) return "mistrip rate [fraction of seeds]";
+  static const std::pair<const char*, const char*> kUnits[] = {
+      {"_mm_s", "mm/s"}, {"_deg", "deg"}, {"_mm", "mm"}, {"_pct", "% of length"},
+      {"_MPa", "MPa"},  {"_N", "N"},      {"_s", "s"}};
+  std::string base = name, unit;
+  for (const auto& [suffix, u] : kUnits) {
+    if (ends_with(name, suffix)) {
+      base = name.substr(0, name.size() - std::string(suffix).size());
+      unit = u;
+      break;
+    }
+  }
+  for (char& c : base) c = c == '_' ? ' ' : c;
+  return unit.empty() ? base : base + " [" + unit + "]";
 }
 
 std::string point_scenario_toml(const SweepSummary& sweep, const PointSummary& point,
@@ -268,17 +301,24 @@ HeatMap sweep_heat_map(const SweepSummary& sweep, const std::string& metric,
                      std::to_string(sweep.axis_keys.size()));
   }
   HeatMap map;
-  map.x_label = sweep.axis_keys[0];
-  map.y_label = sweep.axis_keys[1];
-  map.value_label = metric == kMistripRate ? "mistrip rate (fraction of seeds)" : metric + " (mean)";
-  map.title = metric + " over " + std::to_string(sweep.seeds) + " seeds per point";
-  if (metric == kMistripRate) {
+  map.x_label = axis_label(sweep.axis_keys[0], sweep.axis_log[0]);
+  map.y_label = axis_label(sweep.axis_keys[1], sweep.axis_log[1]);
+  const bool rate = metric == kMistripRate;
+  map.value_label = rate ? metric_label(metric) : metric_label(metric) + ", mean over the seeds";
+  map.title = metric_label(metric) + (rate ? "" : ": mean ± SD") + " over " +
+              std::to_string(sweep.seeds) + " seeds per point";
+  if (sweep.trials_stored < sweep.trials_total) {
+    map.title += "; INCOMPLETE: " + std::to_string(sweep.trials_stored) + " of " +
+                 std::to_string(sweep.trials_total) + " trials stored";
+  }
+  map.missing_label = "no seed ran ok (diverged, failed or not run)";
+  if (rate) {
     map.value_min = 0;
     map.value_max = 1;
   }
   if (mark) {
     map.has_mark = true;
-    map.mark_label = "best (smallest mean " + best_metric + ", no mistrips)";
+    map.mark_label = "best (smallest mean " + best_metric + ", no mistrips; ties: lowest point)";
   }
 
   if (sweep.design != "grid") {
@@ -307,18 +347,34 @@ HeatMap sweep_heat_map(const SweepSummary& sweep, const std::string& metric,
   for (const auto& l : sweep.axis_levels[0]) map.x_levels.push_back(level_label(l));
   for (const auto& l : sweep.axis_levels[1]) map.y_levels.push_back(level_label(l));
   std::vector<Accumulator> cells(nx * ny);
+  std::vector<double> seed_sd(nx * ny, kNaN);   // a cell of one point: its SD over the seeds
+  const int m = sweep.metric_index(metric);
   for (const PointSummary& p : sweep.points) {
     const std::size_t iy = static_cast<std::size_t>(p.point / inner) % ny;
     const std::size_t ix = static_cast<std::size_t>(p.point / inner / static_cast<std::int64_t>(ny));
     const double v = point_value(sweep, p, metric);
     if (std::isfinite(v)) cells[iy * nx + ix].add(v);
+    if (m >= 0) seed_sd[iy * nx + ix] = p.metrics[static_cast<std::size_t>(m)].std;
     if (&p == mark) {
       map.mark_x = static_cast<double>(ix);
       map.mark_y = static_cast<double>(iy);
     }
   }
-  for (const auto& c : cells) map.cells.push_back(c.stats().mean);
-  map.cell_format = metric == kMistripRate ? "%.1f" : "%.3g";
+  map.cell_format = rate ? "%.1f" : "%.3g";
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const MetricStats st = cells[c].stats();
+    map.cells.push_back(st.mean);
+    // the spread beside the mean: over the seeds, or (cells averaging other axes) over the
+    // points' means
+    const double sd = inner == 1 ? seed_sd[c] : st.std;
+    char text[64];
+    if (rate || !std::isfinite(sd)) {
+      std::snprintf(text, sizeof(text), map.cell_format.c_str(), st.mean);
+    } else {
+      std::snprintf(text, sizeof(text), "%.3g ± %.2g", st.mean, sd);
+    }
+    map.cell_texts.push_back(text);
+  }
   return map;
 }
 

@@ -52,6 +52,9 @@ SweepSummary summarize_sweep(const ResultsDb& db);
 // `metric` defined, the smallest mean of `metric`. nullptr if no point qualifies.
 const PointSummary* best_point(const SweepSummary& sweep, const std::string& metric);
 std::string best_criterion(const SweepSummary& sweep, const std::string& metric);
+// A metric's name for a plot, its unit from its suffix: "peak drop [deg]",
+// "recovery time [s]", "mistrip rate [fraction of seeds]".
+std::string metric_label(const std::string& name);
 
 // The base scenario with the sweep's fixed keys and the point's axis values set, its file
 // paths rewritten relative to `scenario_dir` (where it will be written), as TOML text with a
