@@ -296,3 +296,31 @@ TEST(CliReproduceTest, EveryCommandReplacesAnOutputOnlyWithForce) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliReproduceTest, PlotsComeAsSvgOrPdfBesideThePng) {
+  const fs::path dir = fresh_dir("reproduce_plot_format");
+  const std::string run = "run scenarios/drop_mass.toml --out " + (dir / "a").string() + kShort;
+  const CliResult both = run_pamsim(run + " --plot-format svg,pdf");
+  ASSERT_EQ(both.exit_code, 0) << both.err;
+  for (const char* f : {"angle.png", "angle.svg", "angle.pdf"}) {
+    EXPECT_TRUE(fs::exists(dir / "a" / f)) << f;
+  }
+  EXPECT_NE(read_file(dir / "a" / "angle.svg").find("</svg>"), std::string::npos);
+  EXPECT_EQ(read_file(dir / "a" / "angle.pdf").rfind("%PDF", 0), 0u);
+  // a new run replaces the whole set: no SVG of the earlier one is left beside its PNG
+  ASSERT_EQ(run_pamsim(run + " --force").exit_code, 0);
+  EXPECT_TRUE(fs::exists(dir / "a" / "angle.png"));
+  EXPECT_FALSE(fs::exists(dir / "a" / "angle.svg"));
+  EXPECT_FALSE(fs::exists(dir / "a" / "angle.pdf"));
+  // bad input: one line, exit 2, before anything runs
+  for (const char* bad : {"jpg", "", "png,gif"}) {
+    const CliResult r = run_pamsim(run + " --force --plot-format '" + bad + "'");
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("--plot-format"), std::string::npos) << r.err;
+  }
+}
+
+}  // namespace

@@ -35,6 +35,7 @@ struct CompareOptions {
   std::string out;
   std::string label_a, label_b;
   bool force = false;
+  std::string plot_format = "png";
 };
 
 // mean, min, max of one metric over a run's trials; NaN where not defined
@@ -216,6 +217,7 @@ void compare(const CompareOptions& opt) {
   }
   const std::string out = opt.out.empty() ? default_out(opt.dir_a, opt.dir_b) : opt.out;
   refuse_existing_file(out, opt.force);
+  use_plot_formats(opt.plot_format);
   make_directories(fs::path(out).parent_path().empty() ? "." : fs::path(out).parent_path().string());
   write_compare_plot(out, bands);
 
@@ -238,6 +240,8 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("-o,--output,--out", opt->out,
                   "Plot file (default renders/compare_<DIR_A name>_vs_<DIR_B name>.png)");
   cmd->add_flag("--force", opt->force, "Replace an existing plot file");
+  cmd->add_option("--plot-format", opt->plot_format,
+                  "png, or svg and/or pdf beside the PNG (svg,pdf)");
   cmd->add_option("--label-a", opt->label_a, "Legend label of DIR_A (default: its folder name)");
   cmd->add_option("--label-b", opt->label_b, "Legend label of DIR_B (default: its folder name)");
   cmd->callback([opt] { compare(*opt); });

@@ -37,11 +37,17 @@ struct ReplayOptions {
   std::string out;
   bool force = false;
   bool no_plot = false;
+  std::string plot_format = "png";
 };
 
-const std::vector<std::string> kReplayOutputs = {"trajectory.csv", "summary.json", "angle.png",
-                                                 "position.png", kResolvedScenarioFile,
-                                                 kProvenanceFile};
+const std::vector<std::string> kReplayOutputs = [] {
+  std::vector<std::string> names = {"trajectory.csv", "summary.json", kResolvedScenarioFile,
+                                    kProvenanceFile};
+  for (const std::string& plot : plot_file_names({"angle.png", "position.png"})) {
+    names.push_back(plot);
+  }
+  return names;
+}();
 
 // The stored row of `trial` (cells by column name), or throws InputError.
 std::map<std::string, DbValue> stored_row(const ResultsDb& db, std::int64_t trial) {
@@ -105,6 +111,7 @@ void replay(const ReplayOptions& opt) {
       : (fs::path(opt.db).parent_path() / (fs::path(opt.db).stem().string() + "_trial_" +
                                            std::to_string(opt.trial))).string();
   if (!opt.force) refuse_earlier_outputs(out, kReplayOutputs);
+  use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
   const Scenario sc = load_scenario_text(sweep.base_scenario, sweep.base_path, overrides);
   const TrialModel model = load_trial_model(sc);
@@ -162,6 +169,8 @@ void add_replay_command(CLI::App& app) {
                   "Output folder (default: <database folder>/<database name>_trial_<N>)");
   cmd->add_flag("--force", opt->force, "Replace the outputs of an earlier replay in the folder");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no plot (gnuplot not needed)");
+  cmd->add_option("--plot-format", opt->plot_format,
+                  "png, or svg and/or pdf beside the PNG (svg,pdf)");
   cmd->callback([opt] { replay(*opt); });
 }
 

@@ -32,9 +32,14 @@ struct ReportOptions {
   std::string out;
   bool force = false;
   bool no_plot = false;
+  std::string plot_format = "png";
 };
 
-const std::vector<std::string> kSweepReportOutputs = {"points.csv", "best.toml", "heatmap_*.png"};
+const std::vector<std::string> kSweepReportOutputs = [] {
+  std::vector<std::string> names = {"points.csv", "best.toml"};
+  for (const std::string& plot : plot_file_names({"heatmap_*.png"})) names.push_back(plot);
+  return names;
+}();
 
 std::string stats_text(const MetricStats& m) {
   char buf[128];
@@ -54,6 +59,7 @@ void report_tune(const ReportOptions& opt) {
     if (out.empty()) out = ".";
   }
   if (!opt.force) refuse_earlier_outputs(out, kTuneReportOutputs);
+  use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
   StagedOutputs staged(out, kTuneReportOutputs);
   staged.write([&] { write_tune_outputs(def, history, staged, plots); });
@@ -85,6 +91,7 @@ void report(const ReportOptions& opt) {
     if (out.empty()) out = ".";
   }
   if (!opt.force) refuse_earlier_outputs(out, kSweepReportOutputs);
+  use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
   // written together: a failure half way leaves an earlier report as it was
   StagedOutputs staged(out, kSweepReportOutputs);
@@ -162,6 +169,8 @@ void add_report_command(CLI::App& app) {
   cmd->add_option("--out", opt->out, "Output folder (default: the database's folder)");
   cmd->add_flag("--force", opt->force, "Replace an earlier report's files in the folder");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no heat maps or figures (gnuplot not needed)");
+  cmd->add_option("--plot-format", opt->plot_format,
+                  "png, or svg and/or pdf beside the PNG (svg,pdf)");
   cmd->callback([opt] { report(*opt); });
 }
 

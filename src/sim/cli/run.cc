@@ -42,12 +42,18 @@ struct RunOptions {
   bool force = false;
   bool no_plot = false;
   bool quiet = false;
+  std::string plot_format = "png";
 };
 
 // What a run writes in its folder (StagedOutputs replaces exactly these).
-const std::vector<std::string> kRunOutputs = {
-    "trajectory.csv", "summary.json", "angle.png", "position.png", "angle_band.png",
-    "trial_[0-9][0-9][0-9][0-9]", kResolvedScenarioFile, kProvenanceFile};
+const std::vector<std::string> kRunOutputs = [] {
+  std::vector<std::string> names = {"trajectory.csv", "summary.json", "trial_[0-9][0-9][0-9][0-9]",
+                                    kResolvedScenarioFile, kProvenanceFile};
+  for (const std::string& plot : plot_file_names({"angle.png", "position.png", "angle_band.png"})) {
+    names.push_back(plot);
+  }
+  return names;
+}();
 
 // "renders/<scenario name>", and for each override "__<key's last part>-<value>" (characters
 // other than letters, digits, '.', '_' and '-' as '-'): `--set reflex.v_thr_mm_s=60` runs into
@@ -127,6 +133,7 @@ void run(RunOptions opt) {
                           : !opt.from.empty() ? fs::path(opt.from).lexically_normal().string() + "_rerun"
                                               : default_out_dir(opt.scenario, opt.overrides);
   if (!opt.force) refuse_earlier_outputs(out, kRunOutputs);
+  use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
   // every output is written into a staging folder and published together at the end: a
   // failure half way leaves the folder as it was (made only once every input is good)
@@ -209,6 +216,8 @@ void add_run_command(CLI::App& app) {
   cmd->add_flag("--force", opt->force, "Replace the outputs of an earlier run in the folder");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no plots (gnuplot not needed)");
   cmd->add_flag("--quiet", opt->quiet, "No progress bar or progress lines (--trials N)");
+  cmd->add_option("--plot-format", opt->plot_format,
+                  "png, or svg and/or pdf beside the PNG (svg,pdf)");
   cmd->callback([opt, trials] {
     RunOptions o = *opt;
     o.trials_given = trials->count() > 0;

@@ -39,6 +39,7 @@ struct TuneOptions {
   bool force = false;
   bool no_plot = false;
   bool quiet = false;
+  std::string plot_format = "png";
 };
 
 // held_out.csv: one row per setting checked on the held-out seeds
@@ -71,6 +72,7 @@ void tune(const TuneOptions& opt) {
   if (opt.resume && !exists) throw InputError(db_path + ": --resume, but there is no database");
   // a new tuning does not replace another's outputs silently (a resumed one replaces its own)
   if (!opt.resume && !exists && !opt.force) refuse_earlier_outputs(out, kTuneOutputs);
+  use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
   // its folder, removed again if the database cannot be made there
   const std::unique_ptr<FolderGuard> folder = prepare_database_folder(db_path, "tune.db");
@@ -168,6 +170,8 @@ void add_tune_command(CLI::App& app) {
   cmd->add_flag("--force", opt->force, "Replace another tuning's outputs in the folder");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no figures (gnuplot not needed)");
   cmd->add_flag("--quiet", opt->quiet, "No progress bar or progress lines");
+  cmd->add_option("--plot-format", opt->plot_format,
+                  "png, or svg and/or pdf beside the PNG (svg,pdf)");
   cmd->callback([opt] { tune(*opt); });
 }
 

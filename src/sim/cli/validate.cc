@@ -42,12 +42,13 @@ struct ValidateOptions {
   bool force = false;
   bool no_plot = false;
   bool quiet = false;
+  std::string plot_format = "png";
 };
 
-const std::vector<std::string> kLengthOutputs = {"table3.csv", "table3.md", "pam_*.png", "fits",
-                                                 kProvenanceFile};
-const std::vector<std::string> kReachingOutputs = {"table5.csv", "table5.md", "fig7.png",
-                                                   kProvenanceFile};
+const std::vector<std::string> kLengthOutputs = {
+    "table3.csv", "table3.md", "pam_*.png", "pam_*.svg", "pam_*.pdf", "fits", kProvenanceFile};
+const std::vector<std::string> kReachingOutputs = {
+    "table5.csv", "table5.md", "fig7.png", "fig7.svg", "fig7.pdf", kProvenanceFile};
 
 // provenance.json of a validation: its protocol file, overrides, seed and threads.
 void write_validation_provenance(const ValidateOptions& o, const ValidationOptions& v,
@@ -102,6 +103,7 @@ void run_length_estimation(const ValidateOptions& o) {
   const LengthValidationSpec spec = load_length_validation(o.file, o.pams);
   ValidationOptions v = common_options(o, "renders/validate_length_estimation");
   if (!o.force) refuse_earlier_outputs(v.out_dir, kLengthOutputs);
+  use_plot_formats(o.plot_format);
   const bool plots = plots_wanted(o.no_plot);
   require_writable(v.out_dir);  // an unwritable --out fails here, before any work
   const int total = static_cast<int>(spec.pams.size() * spec.laws.size() * spec.weights_kg.size());
@@ -128,6 +130,7 @@ void run_reaching(const ValidateOptions& o) {
   const ReachingValidationSpec spec = load_reaching_validation(o.file);
   ValidationOptions v = common_options(o, "renders/validate_reaching");
   if (!o.force) refuse_earlier_outputs(v.out_dir, kReachingOutputs);
+  use_plot_formats(o.plot_format);
   const bool plots = plots_wanted(o.no_plot);
   require_writable(v.out_dir);
   std::shared_ptr<ProgressReporter> progress;
@@ -153,6 +156,8 @@ void add_common(CLI::App* cmd, ValidateOptions* o, const std::string& default_fi
   cmd->add_flag("--force", o->force, "Replace the outputs of an earlier validation in the folder");
   cmd->add_flag("--no-plot", o->no_plot, "Write no figures (gnuplot not needed)");
   cmd->add_flag("--quiet", o->quiet, "No progress bar or progress lines");
+  cmd->add_option("--plot-format", o->plot_format,
+                  "png, or svg and/or pdf beside the PNG (svg,pdf)");
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include <fstream>
 #include <memory>
 #include <regex>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -147,7 +149,90 @@ std::string gp_num(double v) {
   return buf;
 }
 
-// Runs `job` and moves its PNG to png_path; throws std::runtime_error naming png_path.
+namespace {
+
+std::mutex g_formats_mutex;
+std::vector<std::string> g_extra_formats;   // set_extra_plot_formats
+
+std::vector<std::string> extra_formats() {
+  const std::lock_guard<std::mutex> lock(g_formats_mutex);
+  return g_extra_formats;
+}
+
+// The file's last bytes, whitespace trimmed, end with `tail`.
+bool ends_with_text(const std::string& path, const std::string& tail) {
+  std::string text = read_text(path);
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+  return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// Draws `job` with `terminal` into `path` (a temp file beside it, checked whole by
+// `complete`, then renamed); throws std::runtime_error naming `path`.
+void draw(const std::string& gnuplot, const std::string& path, const GnuplotJob& job,
+          const std::string& terminal, bool (*complete)(const std::string&)) {
+  const fs::path target = fs::absolute(path);
+  const TempDir dir(path);
+  std::unique_ptr<TempPath> tmp_guard;   // exclusive, unpredictable; removed on any failure
+  try {
+    tmp_guard = std::make_unique<TempPath>(target.string(), TempKind::kFile);
+  } catch (const InputError& e) {
+    throw std::runtime_error(e.what());
+  }
+  const std::string tmp = tmp_guard->path();
+  auto write = [&](const std::string& name, const std::string& content) {
+    std::ofstream out(dir.path() / name, std::ios::binary);
+    out << content;
+    out.close();
+    if (!out) {
+      throw std::runtime_error(path + ": cannot write gnuplot input " +
+                               (dir.path() / name).string());
+    }
+  };
+  for (const auto& [name, content] : job.data_files) write(name, content);
+  std::ostringstream script;
+  script << terminal << "\n"
+         << "set output " << gp_quote(tmp) << "\n"
+         << "set datafile missing 'nan'\n"
+         << job.script << "unset output\n";
+  write("plot.gp", script.str());
+
+  // run it in the temp folder, stderr captured
+  const std::string command = "cd " + sh_quote(dir.path().string()) + " && " + sh_quote(gnuplot) +
+                              " plot.gp >gnuplot.out 2>gnuplot.err";
+  const int rc = std::system(command.c_str());
+  const bool exited_ok = rc != -1 && WIFEXITED(rc) && WEXITSTATUS(rc) == 0;
+  // gnuplot exits 0 also when cairo could not write the whole image (a full disk): the file
+  // must end as its format ends
+  if (!exited_ok || !complete(tmp)) {
+    std::string why = first_error_line(read_text(dir.path() / "gnuplot.err"));
+    if (why.empty()) {
+      why = rc == -1             ? std::string("cannot start a shell")
+            : !WIFEXITED(rc)     ? "killed by signal " + std::to_string(WTERMSIG(rc))
+            : WEXITSTATUS(rc) != 0 ? "exit status " + std::to_string(WEXITSTATUS(rc))
+                                   : std::string("the image was not written whole (disk full?)");
+    }
+    throw std::runtime_error(path + ": gnuplot failed: " + why);
+  }
+
+  // into place
+  if (std::rename(tmp.c_str(), target.c_str()) != 0) {
+    throw std::runtime_error(path + ": cannot move the plot into place: " + std::strerror(errno));
+  }
+  tmp_guard->release();
+}
+
+}  // namespace
+
+void set_extra_plot_formats(const std::vector<std::string>& formats) {
+  for (const std::string& f : formats) {
+    if (f != "svg" && f != "pdf") throw std::invalid_argument("plot format " + f);
+  }
+  const std::lock_guard<std::mutex> lock(g_formats_mutex);
+  g_extra_formats = formats;
+}
+
+// Runs `job` and moves its PNG to png_path (and the extra formats beside it); throws
+// std::runtime_error naming the file.
 void run_gnuplot(const std::string& png_path, const GnuplotJob& job) {
   // gnuplot must exist and the target folder too (gnuplot's own message would name a temp file)
   const std::string gnuplot = find_gnuplot();
@@ -160,59 +245,25 @@ void run_gnuplot(const std::string& png_path, const GnuplotJob& job) {
     throw std::runtime_error(png_path + ": cannot write the plot, no folder " +
                              target.parent_path().string());
   }
-
-  // data and script into the temp folder; output to a temp PNG beside the target
-  const TempDir dir(png_path);
-  std::unique_ptr<TempPath> tmp_guard;   // exclusive, unpredictable; removed on any failure
-  try {
-    tmp_guard = std::make_unique<TempPath>(target.string(), TempKind::kFile);
-  } catch (const InputError& e) {
-    throw std::runtime_error(e.what());
-  }
-  const std::string tmp_png = tmp_guard->path();
-  auto write = [&](const std::string& name, const std::string& content) {
-    std::ofstream out(dir.path() / name, std::ios::binary);
-    out << content;
-    out.close();
-    if (!out) {
-      throw std::runtime_error(png_path + ": cannot write gnuplot input " +
-                               (dir.path() / name).string());
+  std::ostringstream png;
+  png << "set terminal pngcairo size " << job.width_px << "," << job.height_px
+      << " noenhanced font 'sans,11'";
+  draw(gnuplot, png_path, job, png.str(), png_is_complete);
+  for (const std::string& format : extra_formats()) {
+    const std::string path = fs::path(png_path).replace_extension(format).string();
+    std::ostringstream terminal;
+    if (format == "svg") {
+      terminal << "set terminal svg size " << job.width_px << "," << job.height_px
+               << " noenhanced font 'sans,11' background '#ffffff'";
+      draw(gnuplot, path, job, terminal.str(),
+           [](const std::string& p) { return ends_with_text(p, "</svg>"); });
+    } else {   // pdf: the same aspect, 100 px per inch
+      terminal << "set terminal pdfcairo size " << gp_num(job.width_px / 100.0) << ","
+               << gp_num(job.height_px / 100.0) << " noenhanced font 'sans,11'";
+      draw(gnuplot, path, job, terminal.str(),
+           [](const std::string& p) { return ends_with_text(p, "%%EOF"); });
     }
-  };
-  for (const auto& [name, content] : job.data_files) write(name, content);
-  std::ostringstream script;
-  script << "set terminal pngcairo size " << job.width_px << "," << job.height_px
-         << " noenhanced font 'sans,11'\n"
-         << "set output " << gp_quote(tmp_png) << "\n"
-         << "set datafile missing 'nan'\n"
-         << job.script << "unset output\n";
-  write("plot.gp", script.str());
-
-  // run it in the temp folder, stderr captured
-  const std::string command = "cd " + sh_quote(dir.path().string()) + " && " + sh_quote(gnuplot) +
-                              " plot.gp >gnuplot.out 2>gnuplot.err";
-  const int rc = std::system(command.c_str());
-  const bool exited_ok = rc != -1 && WIFEXITED(rc) && WEXITSTATUS(rc) == 0;
-  // gnuplot exits 0 also when cairo could not write the whole image (a full disk): a PNG
-  // is complete only with its signature and its closing IEND chunk
-  const bool wrote_png = png_is_complete(tmp_png);
-  if (!exited_ok || !wrote_png) {
-    std::string why = first_error_line(read_text(dir.path() / "gnuplot.err"));
-    if (why.empty()) {
-      why = rc == -1             ? std::string("cannot start a shell")
-            : !WIFEXITED(rc)     ? "killed by signal " + std::to_string(WTERMSIG(rc))
-            : WEXITSTATUS(rc) != 0 ? "exit status " + std::to_string(WEXITSTATUS(rc))
-                                   : std::string("the image was not written whole (disk full?)");
-    }
-    throw std::runtime_error(png_path + ": gnuplot failed: " + why);
   }
-
-  // into place
-  if (std::rename(tmp_png.c_str(), target.c_str()) != 0) {
-    throw std::runtime_error(png_path + ": cannot move the plot into place: " +
-                             std::strerror(errno));
-  }
-  tmp_guard->release();
 }
 
 bool finite_range(const std::vector<double>& v, double& lo, double& hi) {

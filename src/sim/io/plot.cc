@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "pam_actuator/input_error.h"
 #include "sim/io/gnuplot.h"
 
 namespace pamsim {
@@ -175,6 +176,34 @@ std::string joint_column(const Trajectory& tr) {
     if (tr.has_column(name)) return name;
   }
   throw std::out_of_range("no trajectory column angle_deg or position_mm");
+}
+
+void use_plot_formats(const std::string& text) {
+  std::vector<std::string> extra;
+  std::stringstream in(text);
+  std::string item;
+  bool ok = !text.empty();
+  while (std::getline(in, item, ',')) {
+    if (item == "svg" || item == "pdf") {
+      if (std::find(extra.begin(), extra.end(), item) == extra.end()) extra.push_back(item);
+    } else if (item != "png") {
+      ok = false;
+    }
+  }
+  if (!ok) {
+    throw InputError("--plot-format must be png, svg, pdf or a comma-separated list of them, got '" +
+                     text + "'");
+  }
+  set_extra_plot_formats(extra);
+}
+
+std::vector<std::string> plot_file_names(const std::vector<std::string>& png_names) {
+  std::vector<std::string> names;
+  for (const std::string& png : png_names) {
+    const std::string stem = png.substr(0, png.size() - 4);   // "angle.png", "heatmap_*.png"
+    for (const char* ext : {".png", ".svg", ".pdf"}) names.push_back(stem + ext);
+  }
+  return names;
 }
 
 bool plots_wanted(bool no_plot) {

@@ -82,6 +82,14 @@ struct HeatMap {
 // ..."): the command's other outputs do not need it.
 bool plots_wanted(bool no_plot);
 
+// --plot-format: "png" (the default), or "svg", "pdf", "svg,pdf" beside the PNG. Sets them
+// for every plot of the process (set_extra_plot_formats). Throws InputError "--plot-format
+// must be png, svg, pdf or a comma-separated list of them, got ..." otherwise.
+void use_plot_formats(const std::string& text);
+// The file names a plot named `png_name` may have ("angle.png" -> also "angle.svg",
+// "angle.pdf"), for the outputs a command owns (StagedOutputs).
+std::vector<std::string> plot_file_names(const std::vector<std::string>& png_names);
+
 // Throws std::runtime_error if gnuplot is missing or fails (message names the file).
 void write_angle_plot(const std::string& png_path, const TrialResult& trial,
                       const Scenario& scenario);

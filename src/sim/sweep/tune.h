@@ -182,7 +182,8 @@ std::vector<HeldOutCheck> check_held_out(const TuneDefinition& def,
 // and with pamsim tune's own tuning_seeds.csv and held_out.csv (what `pamsim tune` replaces:
 // a report must not remove the held-out checks it does not rerun).
 inline const std::vector<std::string> kTuneReportOutputs = {
-    "best.toml", "evaluations.csv", "convergence.png", "pareto.csv", "pareto.png"};
+    "best.toml",      "evaluations.csv", "convergence.png", "convergence.svg", "convergence.pdf",
+    "pareto.csv",     "pareto.png",      "pareto.svg",      "pareto.pdf"};
 inline const std::vector<std::string> kTuneOutputs = [] {
   std::vector<std::string> names = kTuneReportOutputs;
   names.insert(names.end(), {"tuning_seeds.csv", "held_out.csv"});
