@@ -34,6 +34,12 @@ double chou_hannaford_volume(const BraidGeometry& g, double length_m) {
   return length_m * (b * b - length_m * length_m) / (4.0 * units::kPi * n * n);
 }
 
+double chou_hannaford_diameter(const BraidGeometry& g, double length_m) {
+  const double b = g.fibre_length_m;
+  const double squared = b * b - length_m * length_m;
+  return squared > 0.0 ? std::sqrt(squared) / (units::kPi * g.turns) : 0.0;
+}
+
 double chou_hannaford_dvolume_dlength(const BraidGeometry& g, double length_m) {
   const double b = g.fibre_length_m;
   const double n = g.turns;

@@ -37,6 +37,18 @@ TEST(ChouHannafordTest, VolumeAtInitialLengthIsTheCylinder) {
   }
 }
 
+TEST(ChouHannafordTest, DiameterIsD0AtL0AndGrowsAsTheMuscleContracts) {
+  const BraidGeometry g = braid_from_initial_shape(0.180, 0.016, units::deg_to_rad(25.0));
+  EXPECT_NEAR(chou_hannaford_diameter(g, 0.180), 0.016, 1e-15);
+  EXPECT_GT(chou_hannaford_diameter(g, 0.150), 0.016);
+  // the volume is the cylinder of that diameter: V = pi D^2 / 4 L
+  for (double l : {0.140, 0.160, 0.185}) {
+    const double d = chou_hannaford_diameter(g, l);
+    EXPECT_NEAR(chou_hannaford_volume(g, l), units::kPi * d * d / 4 * l, 1e-15);
+  }
+  EXPECT_EQ(chou_hannaford_diameter(g, g.fibre_length_m * 1.01), 0.0);   // past full stretch
+}
+
 TEST(ChouHannafordTest, ForceSignAndZero) {
   const BraidGeometry g = agonist_braid();
   // pulls at the initial length (angle below 54.7 deg), zero at L = b / sqrt(3)

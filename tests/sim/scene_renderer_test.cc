@@ -99,6 +99,37 @@ TEST(SceneRendererTest, FrameIsNotEmptyAndTheFallingBallMovesDown) {
   EXPECT_LT(later.mean_row, start.mean_row - 20) << "the ball moved down the frame";
 }
 
+// The backdrop is plain and light (not MuJoCo's black), and a capsule given to draw_scene
+// (a muscle) appears in its colour where it was put.
+TEST(SceneRendererTest, APlainLightBackdropAndAddedCapsulesInTheirColour) {
+  MjModelPtr model = load_inline(kFallingBallXml, "ball.xml");
+  ASSERT_TRUE(model);
+  MjDataPtr data = make_data(model.get());
+  mj_forward(model.get(), data.get());
+  SceneRenderer renderer(model.get(), "ball.xml", small_frame());
+  renderer.draw_scene(data.get());
+  const unsigned char* corner = renderer.read_pixels() + 3 * ((kHeight - 2) * kWidth + 2);
+  for (int c = 0; c < 3; ++c) EXPECT_GT(corner[c], 200) << "channel " << c;
+
+  // a green capsule across the lower part of the frame (the ball is above it)
+  SceneRenderer::Capsule muscle{{-0.6, 0, -0.5}, {0.6, 0, -0.5}, 0.08, {0.1f, 0.9f, 0.1f, 1.0f}};
+  renderer.draw_scene(data.get(), {muscle});
+  const unsigned char* rgb = renderer.read_pixels();
+  int green = 0;
+  double mean_row = 0;
+  for (int row = 0; row < kHeight; ++row) {
+    for (int x = 0; x < kWidth; ++x) {
+      const unsigned char* px = rgb + 3 * (row * kWidth + x);
+      if (px[1] > 120 && px[0] < 90 && px[2] < 90) {
+        ++green;
+        mean_row += row;
+      }
+    }
+  }
+  ASSERT_GT(green, 100);
+  EXPECT_LT(mean_row / green, kHeight / 2) << "drawn where it was put: the lower half";
+}
+
 TEST(SceneRendererTest, DrawingNeverWritesTheCallersData) {
   MjModelPtr model = load_inline(kFallingBallXml, "ball.xml");
   ASSERT_TRUE(model);

@@ -130,10 +130,12 @@ class RecordingObserver : public TrialObserver {
     times_s.push_back(snapshot.time_s);
     angles_deg.push_back(snapshot.joint_position);
     any_reflex = any_reflex || (*snapshot.reflex_active)[0];
+    first_trigger_s = snapshot.first_trigger_s;
   }
   std::vector<double> times_s;
   std::vector<double> angles_deg;
   bool any_reflex = false;
+  double first_trigger_s = std::nan("");
 
  private:
   double period_s_;
@@ -155,6 +157,13 @@ TEST(TrialTest, ObserverSeesItsTimesAndChangesNothing) {
   }
   EXPECT_NEAR(observer.angles_deg.front(), -36.0, 0.5);
   EXPECT_TRUE(observer.any_reflex) << "the reflex fires after the impact at 1.17 s";
+  // the first trigger, as the summary has it (the video marks it)
+  double first = std::nan("");
+  for (const Metric& m : watched.summary.metrics) {
+    if (m.name == "first_trigger_time_s") first = m.value;
+  }
+  ASSERT_TRUE(std::isfinite(first));
+  EXPECT_EQ(observer.first_trigger_s, first);
 
   // bit-identical physics with and without the observer
   const auto& va = watched.trajectory.values;

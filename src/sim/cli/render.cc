@@ -106,8 +106,8 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--camera", v.camera, "A camera named in the model")->capture_default_str();
   cmd->add_option("--backend", opt->backend,
-                  "GL context: osmesa or egl (default $MUJOCO_GL, else $PAMSIM_GL_BACKEND, else "
-                  "osmesa); egl falls back to osmesa where EGL gives no context");
+                  "GL context: osmesa or egl (default $PAMSIM_GL_BACKEND, else $MUJOCO_GL when "
+                  "egl or osmesa, else osmesa); egl falls back to osmesa where EGL gives no context");
   cmd->add_option("--gpu", opt->gpu,
                   "EGL device number, with --backend egl (default $EGL_DEVICE_ID, else the "
                   "first GPU, else Mesa's software renderer)");

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,8 @@ struct TrialSnapshot {
   const std::vector<double>* pressure_pa = nullptr;   // chamber pressures
   const std::vector<double>* command_pa = nullptr;    // valve commands
   const std::vector<char>* reflex_active = nullptr;   // as of the last control tick
+  // the control tick at which a reflex window first opened, NaN before (first_trigger_time_s)
+  double first_trigger_s = std::numeric_limits<double>::quiet_NaN();
 };
 
 // How close d->time (which accumulates rounding) must come to an asked-for time to count as

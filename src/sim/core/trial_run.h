@@ -93,6 +93,7 @@ class TrialRun {
   ControlOutput out_;
   std::vector<double> row_;
   std::vector<double> pressure_pa_, command_pa_;
+  double first_trigger_s_ = std::numeric_limits<double>::quiet_NaN();   // for the observer
   std::vector<double> muscle_length_m_;   // per muscle, at the last physics step
   std::vector<std::array<double, 3>> hold_pos_;
   std::vector<char> held_;

@@ -1,6 +1,7 @@
 // trial_step.cc: the phases of one physics step of a TrialRun (trial_run.h): events and
 // holds before the step, sensing, control and the log row at a control tick, MuJoCo and the
 // pneumatics, condition events and step-wise metrics after it, and the observer.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -118,6 +119,10 @@ bool TrialRun::control_tick(double t) {
   in.p_tp_pa = &p_tp_pa_;
   try {
     controller_->update(in, &out_);
+    if (std::isnan(first_trigger_s_) &&
+        std::any_of(out_.reflex_active.begin(), out_.reflex_active.end(), [](char a) { return a; })) {
+      first_trigger_s_ = t;
+    }
     const std::vector<double>& p_cmd = external_pa_ ? *external_pa_ : out_.p_cmd_pa;
     for (std::size_t i = 0; i < n_; ++i) pneumatics_.set_command(static_cast<int>(i), p_cmd[i]);
   } catch (const std::exception& e) {
@@ -210,6 +215,7 @@ void TrialRun::show_observer() {
   snapshot.pressure_pa = &pressure_pa_;
   snapshot.command_pa = &command_pa_;
   snapshot.reflex_active = &out_.reflex_active;
+  snapshot.first_trigger_s = first_trigger_s_;
   options_.observer->observe(snapshot);
   next_observation_s_ = options_.observer->next_observation_time_s() - kObservationToleranceS;
   observer_wall_ += std::chrono::steady_clock::now() - start;

@@ -1,6 +1,8 @@
 // scene_renderer.cc: see scene_renderer.h.
 #include "sim/render/scene_renderer.h"
 
+#include <algorithm>
+
 #include <string>
 
 #include "pam_actuator/input_error.h"
@@ -62,6 +64,13 @@ SceneRenderer::SceneRenderer(const mjModel* model, const std::string& model_path
   model_->vis.global.offwidth = options.width_px;
   model_->vis.global.offheight = options.height_px;
   if (options.quality == RenderQuality::kFast) model_->vis.quality.offsamples = 0;
+  // a plain floor: planes lose their (checker) material and take one light grey
+  for (int g = 0; g < model_->ngeom; ++g) {
+    if (model_->geom_type[g] != mjGEOM_PLANE) continue;
+    model_->geom_matid[g] = -1;
+    const float grey[4] = {0.80f, 0.80f, 0.82f, 1.0f};
+    std::copy(grey, grey + 4, model_->geom_rgba + 4 * g);
+  }
   data_ = make_data(model_.get());
 
   mjv_defaultOption(&option_);
@@ -110,18 +119,49 @@ std::string SceneRenderer::gl_in_use() const {
   return gl_->description() + ": " + gl_->renderer();
 }
 
-void SceneRenderer::draw_scene(const mjData* data) {
+void SceneRenderer::draw_scene(const mjData* data, const std::vector<Capsule>& capsules) {
   gl_->make_current();
   // positions from the copied qpos: after mj_step2 the caller's own are a step old
   mj_copyData(data_.get(), model_.get(), data);
   mj_fwdPosition(model_.get(), data_.get());
   mjv_updateScene(model_.get(), data_.get(), &option_, nullptr, &camera_, mjCAT_ALL,
                   scene_.get());
-  mjr_render(viewport_, scene_.get(), context_.get());
+  mjvScene* scn = scene_.get();
+  // a plain backdrop: a wide, unlit light-grey panel 2.5 m behind the scene, facing the
+  // camera (MuJoCo 2.2 has no background colour; without a skybox it is black)
+  if (scn->ngeom < scn->maxgeom) {
+    const mjvGLCamera& eye = scn->camera[0];
+    mjtNum right[3], up[3], forward[3], pos[3];
+    for (int i = 0; i < 3; ++i) {
+      forward[i] = eye.forward[i];
+      up[i] = eye.up[i];
+      pos[i] = eye.pos[i] + 2.5 * eye.forward[i];
+    }
+    mju_cross(right, forward, up);
+    const mjtNum mat[9] = {right[0], up[0], forward[0], right[1], up[1],
+                           forward[1], right[2], up[2], forward[2]};
+    const mjtNum size[3] = {20.0, 20.0, 0.01};
+    const float rgba[4] = {0.93f, 0.93f, 0.95f, 1.0f};
+    mjvGeom* g = scn->geoms + scn->ngeom++;
+    mjv_initGeom(g, mjGEOM_BOX, size, pos, mat, rgba);
+    g->category = mjCAT_DECOR;
+    g->emission = 1.0f;
+    g->specular = 0.0f;
+    g->reflectance = 0.0f;
+  }
+  for (const Capsule& c : capsules) {
+    if (scn->ngeom >= scn->maxgeom) break;
+    mjvGeom* g = scn->geoms + scn->ngeom++;
+    mjv_initGeom(g, mjGEOM_CAPSULE, nullptr, nullptr, nullptr, c.rgba);
+    mjv_makeConnector(g, mjGEOM_CAPSULE, c.radius_m, c.from[0], c.from[1], c.from[2], c.to[0],
+                      c.to[1], c.to[2]);
+    g->category = mjCAT_DECOR;
+  }
+  mjr_render(viewport_, scn, context_.get());
 }
 
-void SceneRenderer::draw_text(const char* titles, const char* values) {
-  mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport_, titles, values, context_.get());
+void SceneRenderer::draw_text(const char* titles, const char* values, int corner) {
+  mjr_overlay(mjFONT_NORMAL, corner, viewport_, titles, values, context_.get());
 }
 
 void SceneRenderer::draw_figure(const mjrRect& viewport, mjvFigure* figure) {

@@ -56,11 +56,20 @@ class SceneRenderer {
   // The GL context in use: "<description>: <vendor>, <renderer>, OpenGL <version>".
   std::string gl_in_use() const;
 
-  // Draws the state `data` (of the model given at construction) over the whole frame.
-  void draw_scene(const mjData* data);
+  // A capsule drawn into the scene beside the model's own geoms (e.g. a muscle), world
+  // coordinates [m].
+  struct Capsule {
+    double from[3], to[3];
+    double radius_m;
+    float rgba[4];
+  };
+  // Draws the state `data` (of the model given at construction) over the whole frame, with
+  // `capsules` added to the scene, in front of a plain backdrop.
+  void draw_scene(const mjData* data, const std::vector<Capsule>& capsules = {});
 
-  // Two columns of text in the top-left corner, lines separated by '\n'.
-  void draw_text(const char* titles, const char* values);
+  // Two columns of text in a corner (mjGRID_TOPLEFT, mjGRID_TOPRIGHT, ...), lines separated
+  // by '\n'.
+  void draw_text(const char* titles, const char* values, int corner = mjGRID_TOPLEFT);
 
   // A figure (e.g. a live plot) in `viewport`, pixels from the bottom-left corner.
   void draw_figure(const mjrRect& viewport, mjvFigure* figure);

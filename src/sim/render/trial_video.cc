@@ -14,6 +14,7 @@
 
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/units.h"
+#include "sim/core/pam_callback.h"
 #include "sim/io/outputs.h"
 
 namespace pamsim {
@@ -23,6 +24,8 @@ constexpr double kPlotWidthShare = 0.32;    // of the frame, each plot
 constexpr double kPlotHeightShare = 0.26;
 constexpr double kAngleTickDeg = 10.0;      // the angle plot's range: multiples of this
 constexpr double kPressureTickMpa = 0.1;    // the pressure plot's range: [0, a multiple]
+constexpr double kDefaultMuscleDiameterM = 0.016;   // a muscle without [geometry]
+constexpr double kMinMuscleDiameterM = 0.004;       // still visible fully stretched
 
 // frames at k / fps strictly before the end of the trial: duration x fps when whole
 long frames_in(double duration_s, int fps) {
@@ -101,6 +104,23 @@ std::string reflex_state(const TrialSnapshot& snap) {
   return state.empty() ? "off" : state;
 }
 
+// viridis at t in [0, 1] (clamped): dark blue (low) to yellow (high), as the heat maps
+std::array<float, 3> viridis(double t) {
+  static const std::array<float, 3> kStops[] = {{0.267f, 0.005f, 0.329f},
+                                                {0.231f, 0.322f, 0.545f},
+                                                {0.129f, 0.569f, 0.553f},
+                                                {0.369f, 0.788f, 0.384f},
+                                                {0.992f, 0.906f, 0.145f}};
+  const double x = std::clamp(t, 0.0, 1.0) * 4.0;
+  const int i = std::min(3, static_cast<int>(x));
+  const double f = x - i;
+  std::array<float, 3> c;
+  for (int k = 0; k < 3; ++k) {
+    c[k] = static_cast<float>((1.0 - f) * kStops[i][k] + f * kStops[i + 1][k]);
+  }
+  return c;
+}
+
 // muscle i's line colour in the pressure plot (the arm's agonist red, antagonist blue),
 // its command dimmer
 std::array<float, 3> muscle_rgb(std::size_t i, bool command) {
@@ -151,12 +171,22 @@ void validate_video_options(const VideoOptions& o, const std::string& mp4_option
   }
 }
 
-TrialVideo::TrialVideo(const TrialModel& model, const Scenario& sc, const VideoOptions& options)
+TrialVideo::TrialVideo(const TrialModel& model, const Scenario& sc, const VideoOptions& options,
+                       std::uint64_t seed)
     : options_(options),
+      title_(std::filesystem::path(sc.path).filename().string() + ", seed " + std::to_string(seed)),
+      colour_max_pa_(sc.pneumatics.command_max_gauge_pa),
       frame_count_(frames_in(sc.duration_s, options.fps)),
       renderer_(model.model.get(), model.model_path,
                 SceneRenderOptions{options.width_px, options.height_px, options.quality,
                                    options.camera, options.backend, options.egl_device}) {
+  for (const BoundMuscle& m : model.muscles) {
+    DrawnMuscle drawn;
+    drawn.actuator = m.actuator;
+    drawn.tendon = model.model->actuator_trnid[2 * m.actuator];
+    drawn.braid = m.braid;
+    muscles_.push_back(drawn);
+  }
   if (options.plot) {
     plots_ = std::make_unique<Plots>();
     // the muscles in their tendons' colours, commands dimmer
@@ -166,7 +196,13 @@ TrialVideo::TrialVideo(const TrialModel& model, const Scenario& sc, const VideoO
     const std::size_t n = std::min<std::size_t>(model.muscles.size(), mjMAXLINE / 2);
     for (std::size_t i = 0; i < n; ++i) lines.push_back(muscle_rgb(i, false));
     for (std::size_t i = 0; i < n; ++i) lines.push_back(muscle_rgb(i, true));
+    lines.push_back({1.0f, 1.0f, 1.0f});   // the reflex trigger, white
     init_figure(&plots_->pressure, "pressure [MPa] (dim: command)", "%.1f", sc.duration_s, lines);
+    static const char* kColourNames[] = {"red", "blue", "green", "purple"};
+    for (std::size_t i = 0; i < n; ++i) {
+      plot_key_ += (i ? ", " : "") + std::string(kColourNames[i % 4]) + " " + model.muscles[i].label;
+    }
+    plots_->angle.linergb[1][0] = plots_->angle.linergb[1][1] = plots_->angle.linergb[1][2] = 1.0f;
   }
 
   // outputs last: their temp files exist only once everything else is ready
@@ -193,8 +229,38 @@ double TrialVideo::next_observation_time_s() const {
   return static_cast<double>(next_frame_) / options_.fps;
 }
 
+std::vector<SceneRenderer::Capsule> TrialVideo::muscle_capsules(const TrialSnapshot& snap) const {
+  std::vector<SceneRenderer::Capsule> capsules;
+  const mjModel* m = snap.model;
+  const mjData* d = snap.data;
+  for (std::size_t i = 0; i < muscles_.size(); ++i) {
+    const DrawnMuscle& muscle = muscles_[i];
+    if (muscle.tendon < 0 || d->ten_wrapnum[muscle.tendon] < 2) continue;
+    const mjtNum* a = d->wrap_xpos + 3 * d->ten_wrapadr[muscle.tendon];
+    const mjtNum* b = a + 3;
+    mjtNum dir[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const mjtNum span = mju_normalize3(dir);
+    const double length = std::min<double>(pam_muscle_length(m, d, muscle.actuator), span);
+    SceneRenderer::Capsule c;
+    for (int k = 0; k < 3; ++k) {
+      c.from[k] = a[k];
+      c.to[k] = a[k] + length * dir[k];
+    }
+    const double diameter = muscle.braid.fibre_length_m > 0
+                                ? chou_hannaford_diameter(muscle.braid, length)
+                                : kDefaultMuscleDiameterM;
+    c.radius_m = 0.5 * std::max(diameter, kMinMuscleDiameterM);
+    const double pressure = i < snap.pressure_pa->size() ? (*snap.pressure_pa)[i] : 0.0;
+    const std::array<float, 3> rgb = viridis(colour_max_pa_ > 0 ? pressure / colour_max_pa_ : 0);
+    std::copy(rgb.begin(), rgb.end(), c.rgba);
+    c.rgba[3] = 1.0f;
+    capsules.push_back(c);
+  }
+  return capsules;
+}
+
 void TrialVideo::observe(const TrialSnapshot& snapshot) {
-  renderer_.draw_scene(snapshot.data);
+  renderer_.draw_scene(snapshot.data, muscle_capsules(snapshot));
   draw_overlays(snapshot);
   const unsigned char* rgb = renderer_.read_pixels();
 
@@ -222,7 +288,25 @@ void TrialVideo::draw_overlays(const TrialSnapshot& snap) {
                   units::pa_to_mpa((*snap.pressure_pa)[i]), units::pa_to_mpa((*snap.command_pa)[i]));
     values += line;
   }
-  renderer_.draw_text((names + "\nreflex").c_str(), (values + "\n" + reflex_state(snap)).c_str());
+  // the reflex: which window is open, and when it first triggered
+  const std::string state = reflex_state(snap);
+  if (std::isfinite(snap.first_trigger_s)) trigger_s_ = snap.first_trigger_s;
+  std::string reflex = state;
+  if (trigger_s_ >= 0) {
+    std::snprintf(line, sizeof(line), "%s (first trigger %.2f s)", state.c_str(), trigger_s_);
+    reflex = line;
+  }
+  renderer_.draw_text((names + "\nreflex").c_str(), (values + "\n" + reflex).c_str());
+  // the title and the keys, top right
+  std::snprintf(line, sizeof(line), "%s, t = %.2f s\ndark 0 to yellow %.1f MPa",
+                title_.c_str(), snap.time_s, units::pa_to_mpa(colour_max_pa_));
+  std::string keys = "trial\nmuscle colour";
+  std::string key_values = line;
+  if (plots_) {
+    keys += "\nplot lines";
+    key_values += "\n" + plot_key_ + "; white: trigger";
+  }
+  renderer_.draw_text(keys.c_str(), key_values.c_str(), mjGRID_TOPRIGHT);
   if (!plots_) return;
 
   // the live plots, bottom left: pressures at the bottom, the joint above
@@ -240,6 +324,14 @@ void TrialVideo::draw_overlays(const TrialSnapshot& snap) {
   }
   set_y_range(&p.angle, p.angle_min_deg, p.angle_max_deg, kAngleTickDeg);
   set_y_range(&p.pressure, 0.0, p.pressure_max_mpa, kPressureTickMpa);
+  // the first trigger: a white vertical line across each plot
+  if (trigger_s_ >= 0) {
+    for (auto [figure, line_index] : {std::pair{&p.angle, 1}, {&p.pressure, static_cast<int>(2 * n)}}) {
+      figure->linepnt[line_index] = 0;
+      append_point(figure, line_index, trigger_s_, figure->range[1][0]);
+      append_point(figure, line_index, trigger_s_, figure->range[1][1]);
+    }
+  }
   const int w = static_cast<int>(kPlotWidthShare * renderer_.width_px());
   const int h = static_cast<int>(kPlotHeightShare * renderer_.height_px());
   renderer_.draw_figure(mjrRect{0, 0, w, h}, &p.pressure);
@@ -255,7 +347,7 @@ std::string TrialVideo::encoder_name() const { return mp4_ ? mp4_->encoder_name(
 
 RenderedTrial run_rendered_trial(const TrialModel& model, const Scenario& sc, std::uint64_t seed,
                                  const VideoOptions& options, bool keep_trajectory) {
-  TrialVideo video(model, sc, options);
+  TrialVideo video(model, sc, options, seed);
   TrialOptions trial_options;
   trial_options.keep_trajectory = keep_trajectory;
   trial_options.observer = &video;

@@ -7,10 +7,12 @@
 // `pamsim run --video` use.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
 
+#include "pam_actuator/chou_hannaford.h"
 #include "sim/core/scenario.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
@@ -50,7 +52,9 @@ class TrialVideo : public TrialObserver {
   // Sets up rendering of `model` (the camera is checked against it) and opens the
   // outputs as temp files. Throws InputError (see validate_video_options, SceneRenderer,
   // Mp4Writer, PngSequenceWriter); `options` are expected to be validated already.
-  TrialVideo(const TrialModel& model, const Scenario& scenario, const VideoOptions& options);
+  // `seed` is the trial's (for the title line).
+  TrialVideo(const TrialModel& model, const Scenario& scenario, const VideoOptions& options,
+             std::uint64_t seed);
   ~TrialVideo() override;   // unfinished outputs are removed
 
   double next_observation_time_s() const override;
@@ -65,9 +69,23 @@ class TrialVideo : public TrialObserver {
 
  private:
   struct Plots;
+  // A muscle as the video draws it: a capsule from its tendon's first point (the PAM's fixed
+  // end) along the tendon for its length, as thick as its braid at that length (Chou &
+  // Hannaford's D(L)), coloured by its chamber pressure.
+  struct DrawnMuscle {
+    int actuator = -1;
+    int tendon = -1;
+    BraidGeometry braid;   // fibre length 0: no [geometry], a fixed thickness
+  };
+  std::vector<SceneRenderer::Capsule> muscle_capsules(const TrialSnapshot& snapshot) const;
   void draw_overlays(const TrialSnapshot& snapshot);
 
   VideoOptions options_;
+  std::string title_;                 // "drop_mass.toml, seed 1"
+  std::vector<DrawnMuscle> muscles_;
+  double colour_max_pa_ = 0.0;        // the top of the pressure colour scale
+  double trigger_s_ = -1.0;           // the first reflex trigger; < 0: none yet
+  std::string plot_key_;              // "red ago, blue anta": the pressure plot's lines
   long frame_count_ = 0;   // frames the whole trial makes
   long next_frame_ = 0;
   SceneRenderer renderer_;
