@@ -62,9 +62,7 @@ std::string tensile_rows_to_csv(const std::vector<TensileRow>& rows) {
 }
 
 std::vector<TensileRow> read_tensile_csv(const std::string& path) {
-  require_input_file(path);
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open tensile data file");
+  std::istringstream in(read_text_file(path));   // "-": standard input
 
   // header: locate the required columns and the optional direction
   std::string line;

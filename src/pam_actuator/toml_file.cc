@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include "pam_actuator/format.h"
@@ -41,6 +42,18 @@ void require_input_file(const std::string& path, std::uintmax_t max_bytes) {
 }
 
 std::string read_text_file(const std::string& path) {
+  if (path == "-") {   // standard input, as much as a file may hold
+    std::string text;
+    char buffer[1 << 16];
+    while (std::cin.read(buffer, sizeof(buffer)) || std::cin.gcount() > 0) {
+      text.append(buffer, static_cast<std::size_t>(std::cin.gcount()));
+      if (text.size() > kMaxTextInputBytes) {
+        throw InputError("-: standard input is larger than " +
+                         std::to_string(kMaxTextInputBytes >> 20) + " MiB, not an input pamsim reads");
+      }
+    }
+    return text;
+  }
   require_input_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open file");

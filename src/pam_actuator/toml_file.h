@@ -19,8 +19,9 @@ toml::table parse_toml_text(const std::string& text, const std::string& name);
 inline constexpr std::uintmax_t kMaxTextInputBytes = 64u << 20;   // 64 MiB
 void require_input_file(const std::string& path, std::uintmax_t max_bytes = kMaxTextInputBytes);
 
-// The whole file at `path` (require_input_file first). Throws InputError "<path>: cannot
-// open file" and the like.
+// The whole file at `path` (require_input_file first), or standard input for "-" (read
+// once: it is empty the second time). Throws InputError "<path>: cannot open file" and the
+// like.
 std::string read_text_file(const std::string& path);
 
 // Reads and parses the file at `path`. Throws InputError if it cannot be read or parsed.

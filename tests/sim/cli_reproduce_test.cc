@@ -324,3 +324,40 @@ TEST(CliReproduceTest, PlotsComeAsSvgOrPdfBesideThePng) {
 }
 
 }  // namespace
+
+namespace {
+
+// "-" is standard output for a file argument and standard input for an input file: a
+// tensile test piped into a fit gives the fit of the file; a scenario read from stdin runs
+// as the file does (its paths relative to the current folder).
+TEST(CliReproduceTest, DashIsStandardInputAndOutput) {
+  const fs::path dir = fresh_dir("reproduce_dash");
+  const std::string tensile = "tensile --params models/pams/table4_agonist.toml --seed 3 "
+                              "--noise-force-N 0.2 -o ";
+  ASSERT_EQ(run_pamsim(tensile + (dir / "t.csv").string()).exit_code, 0);
+  const CliResult piped = run_pamsim(tensile + "- | " + std::string(PAMSIM_BINARY) +
+                                     " fit --model eq3 - -o -");
+  ASSERT_EQ(piped.exit_code, 0) << piped.err;
+  const CliResult from_file = run_pamsim("fit --model eq3 " + (dir / "t.csv").string() + " -o " +
+                                         (dir / "f.toml").string());
+  ASSERT_EQ(from_file.exit_code, 0) << from_file.err;
+  // the same parameters (the source line names the input)
+  const std::string file = read_file(dir / "f.toml");
+  const auto coefficients = [](const std::string& toml) { return toml.substr(toml.find("[spring]")); };
+  EXPECT_EQ(coefficients(piped.out), coefficients(file));
+  EXPECT_NE(piped.err.find("fitted to -"), std::string::npos) << "the table goes to stderr";
+  // two things on stdout are refused
+  const CliResult both = run_pamsim("fit --model eq3 " + (dir / "t.csv").string() + " -o - --json");
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_EQ(line_count(both.err), 1) << both.err;
+
+  const CliResult stdin_run = run_pamsim("run - --no-plot --out " + (dir / "s").string() + kShort +
+                                         " < drop_mass.toml", "cd scenarios &&");
+  ASSERT_EQ(stdin_run.exit_code, 0) << stdin_run.err;
+  const CliResult file_run = run_pamsim("run scenarios/drop_mass.toml --no-plot --out " +
+                                        (dir / "f").string() + kShort);
+  ASSERT_EQ(file_run.exit_code, 0) << file_run.err;
+  EXPECT_EQ(read_file(dir / "s" / "trajectory.csv"), read_file(dir / "f" / "trajectory.csv"));
+}
+
+}  // namespace

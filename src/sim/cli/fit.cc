@@ -59,20 +59,23 @@ void print_json(const SpringFit& fit) {
   std::cout << out.dump() << "\n";
 }
 
-void print_table(const SpringFit& fit, const std::string& csv_path) {
+void print_table(const SpringFit& fit, const std::string& csv_path, std::FILE* out) {
   const PaperFit p = to_paper(fit.model);
-  std::printf("%s fitted to %s (%d points); units: p MPa, d mm, f N\n",
+  std::fprintf(out, "%s fitted to %s (%d points); units: p MPa, d mm, f N\n",
               to_string(fit.model.law), csv_path.c_str(), fit.points);
-  std::printf("  %-4s %14.6g  mm/MPa  (Eq. 2 slope)\n", "m", p.m);
-  std::printf("  %-4s %14.6g  mm      (Eq. 2 intercept)\n", "h", p.h);
+  std::fprintf(out, "  %-4s %14.6g  mm/MPa  (Eq. 2 slope)\n", "m", p.m);
+  std::fprintf(out, "  %-4s %14.6g  mm      (Eq. 2 intercept)\n", "h", p.h);
   for (int k = 0; k < coefficient_count(fit.model.law); ++k) {
-    std::printf("  %-4s %14.6g\n", coefficient_name(fit.model.law, k).c_str(), p.coef[k]);
+    std::fprintf(out, "  %-4s %14.6g\n", coefficient_name(fit.model.law, k).c_str(), p.coef[k]);
   }
-  std::printf("  rmse %.6g N, R^2 %.6f\n", fit.rmse_n, fit.r2);
+  std::fprintf(out, "  rmse %.6g N, R^2 %.6f\n", fit.rmse_n, fit.r2);
 }
 
 void run_fit(const FitOptions& o) {
   // validate everything before any output
+  if (o.output_path == "-" && o.json) {
+    throw InputError("fit: -o - and --json would both write to standard output; give -o FILE");
+  }
   if (!o.output_path.empty()) refuse_existing_file(o.output_path, o.force);
   const SpringLaw law = parse_spring_law(o.model, "--model");
   const std::vector<TensileRow> rows = read_tensile_csv(o.csv_path);
@@ -103,8 +106,12 @@ void run_fit(const FitOptions& o) {
   if (o.json) {
     print_json(fit);
   } else {
-    print_table(fit, o.csv_path);
-    if (!o.output_path.empty()) std::printf("wrote %s\n", o.output_path.c_str());
+    // with -o - the parameter file is on standard output: the table goes to stderr
+    std::FILE* out = o.output_path == "-" ? stderr : stdout;
+    print_table(fit, o.csv_path, out);
+    if (!o.output_path.empty() && o.output_path != "-") {
+      std::fprintf(out, "wrote %s\n", o.output_path.c_str());
+    }
   }
 }
 

@@ -59,7 +59,7 @@ const std::vector<std::string> kRunOutputs = [] {
 // other than letters, digits, '.', '_' and '-' as '-'): `--set reflex.v_thr_mm_s=60` runs into
 // renders/drop_mass__v_thr_mm_s-60, beside the unmodified run.
 std::string default_out_dir(const std::string& scenario, const std::vector<std::string>& overrides) {
-  std::string name = fs::path(scenario).stem().string();
+  std::string name = scenario == "-" ? "stdin" : fs::path(scenario).stem().string();
   for (const std::string& o : overrides) {
     const auto eq = o.find('=');
     const std::string key = o.substr(0, eq);

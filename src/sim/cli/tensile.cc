@@ -66,7 +66,9 @@ void run_tensile(const TensileCommand& c) {
       c.plant_path.empty() ? run_tensile_test(load_pam_params(c.params_path).spring, c.test)
                            : run_tensile_test(load_plant_params(c.plant_path).avbdl, c.test);
   write_file_atomically(c.output_path, tensile_rows_to_csv(rows));
-  std::printf("wrote %zu rows to %s\n", rows.size(), c.output_path.c_str());
+  // stderr: with -o - the CSV itself is on stdout
+  std::fprintf(stderr, "pamsim: wrote %zu rows to %s\n", rows.size(),
+               c.output_path == "-" ? "standard output" : c.output_path.c_str());
 }
 
 }  // namespace
