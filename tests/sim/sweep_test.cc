@@ -3,10 +3,13 @@
 // sweeps) and the report's statistics, best point and heat-map placement.
 #include <gtest/gtest.h>
 
+#include "pam_actuator/format.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include "cli_util.h"
@@ -266,6 +269,28 @@ TEST_F(SweepTest, ReportStatisticsAndBestPointFollowTheCriterion) {
   EXPECT_EQ(pamsim::metric_label("recovery_time_s"), "recovery time [s]");
   EXPECT_EQ(pamsim::metric_label("length_est_rmse_pct"), "length est rmse [% of length]");
   EXPECT_EQ(pamsim::metric_label("mistrips"), "mistrips");
+
+  // points.csv: the headline metrics with SD and 95 % interval; every column on request
+  const std::string csv = pamsim::points_csv(sweep);
+  const std::string header = csv.substr(0, csv.find('\n'));
+  EXPECT_EQ(header.rfind("point,reflex.v_thr_mm_s,reflex.k_MPa_s_per_mm,trials,ok,mistrip_rate,"
+                         "peak_drop_deg_mean,peak_drop_deg_sd,peak_drop_deg_ci95_low,"
+                         "peak_drop_deg_ci95_high,recovery_time_s_mean", 0), 0u) << header;
+  EXPECT_EQ(header.find("_min"), std::string::npos) << header;
+  const std::string row2 = csv.substr(csv.find("\n2,") + 1);
+  // point 2: 12, 13, 14 -> mean 13, sd 1, 13 -+ t(0.975, 2) / sqrt(3)
+  const double half = 4.30265272974946 / std::sqrt(3.0);
+  std::istringstream cells(row2.substr(0, row2.find('\n')));
+  std::vector<std::string> cell;
+  for (std::string c; std::getline(cells, c, ',');) cell.push_back(c);
+  ASSERT_GE(cell.size(), 10u);
+  EXPECT_EQ(cell[6], "13");
+  EXPECT_EQ(cell[7], "1");
+  EXPECT_NEAR(std::stod(cell[8]), 13 - half, 1e-12);
+  EXPECT_NEAR(std::stod(cell[9]), 13 + half, 1e-12);
+  const std::string all = pamsim::points_csv(sweep, "peak_drop_deg", true);
+  EXPECT_NE(all.find("peak_drop_deg_mean,peak_drop_deg_std,peak_drop_deg_min,peak_drop_deg_max"),
+            std::string::npos);
 
   // an incomplete sweep says so in its title
   pamsim::SweepSummary part = sweep;

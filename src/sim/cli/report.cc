@@ -33,6 +33,7 @@ struct ReportOptions {
   bool force = false;
   bool no_plot = false;
   std::string plot_format = "png";
+  bool all_columns = false;
 };
 
 const std::vector<std::string> kSweepReportOutputs = [] {
@@ -100,7 +101,8 @@ void report(const ReportOptions& opt) {
               << " points x " << sweep.seeds << " seeds; " << sweep.trials_stored << " of "
               << sweep.trials_total << " trials stored, " << sweep.trials_not_ok
               << " diverged or failed)\n";
-    write_file_atomically(staged.path("points.csv"), points_csv(sweep));
+    write_file_atomically(staged.path("points.csv"),
+                          points_csv(sweep, opt.metric, opt.all_columns));
 
     const PointSummary* best = best_point(sweep, opt.metric);
     std::cout << "criterion: " << best_criterion(sweep, opt.metric) << "\n";
@@ -168,6 +170,9 @@ void add_report_command(CLI::App& app) {
                   "Metric to minimise for the best setting (default peak_drop_deg)");
   cmd->add_option("--out", opt->out, "Output folder (default: the database's folder)");
   cmd->add_flag("--force", opt->force, "Replace an earlier report's files in the folder");
+  cmd->add_flag("--all-columns", opt->all_columns,
+                "points.csv with mean, std, min, max of every metric (default: mean, SD and 95 % "
+                "CI of the headline metrics)");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no heat maps or figures (gnuplot not needed)");
   cmd->add_option("--plot-format", opt->plot_format,
                   "png, or svg and/or pdf beside the PNG (svg,pdf)");

@@ -132,12 +132,17 @@ SampleStats sample_stats(const std::vector<double>& values) {
   double squares = 0;
   for (const double v : values) squares += (v - st.mean) * (v - st.mean);
   st.sd = std::sqrt(squares / (st.count - 1));
-  // Student's t interval for the mean: mean +- t(0.975, n - 1) sd / sqrt(n)
-  const boost::math::students_t t(st.count - 1);
-  const double half = boost::math::quantile(t, 0.975) * st.sd / std::sqrt(double(st.count));
+  const double half = ci95_half_width(st.sd, st.count);
   st.ci95_low = st.mean - half;
   st.ci95_high = st.mean + half;
   return st;
+}
+
+double ci95_half_width(double sd, int count) {
+  if (count < 2 || !std::isfinite(sd)) return NAN;
+  // Student's t interval for the mean: mean +- t(0.975, n - 1) sd / sqrt(n)
+  const boost::math::students_t t(count - 1);
+  return boost::math::quantile(t, 0.975) * sd / std::sqrt(static_cast<double>(count));
 }
 
 void refuse_existing_file(const std::string& path, bool force) {

@@ -31,6 +31,9 @@ struct SampleStats {
   double mean = NAN, sd = NAN, ci95_low = NAN, ci95_high = NAN, min = NAN, max = NAN;
 };
 SampleStats sample_stats(const std::vector<double>& values);
+// The half width of that interval for a sample of `count` values with SD `sd`: t(0.975,
+// count - 1) sd / sqrt(count); NaN for fewer than two values.
+double ci95_half_width(double sd, int count);
 
 // Outputs are not replaced silently: throws InputError "<path>: exists; add --force to
 // replace it" if `path` is an existing file or folder, unless `force`. Standard output ("-"),

@@ -272,12 +272,27 @@ std::string point_scenario_toml(const SweepSummary& sweep, const PointSummary& p
                                 header);
 }
 
-std::string points_csv(const SweepSummary& sweep) {
+std::string points_csv(const SweepSummary& sweep, const std::string& metric, bool all_columns) {
+  // the metrics shown: all, or the headline ones the sweep has and the report's own
+  std::vector<int> shown;
+  if (all_columns) {
+    for (std::size_t m = 0; m < sweep.metric_names.size(); ++m) shown.push_back(static_cast<int>(m));
+  } else {
+    std::vector<std::string> names = kPointsCsvMetrics;
+    if (std::find(names.begin(), names.end(), metric) == names.end()) names.push_back(metric);
+    for (const std::string& name : names) {
+      const int m = sweep.metric_index(name);
+      if (m >= 0) shown.push_back(m);
+    }
+  }
   std::string out = "point";
   for (const auto& key : sweep.axis_keys) out += "," + key;
   out += ",trials,ok,mistrip_rate";
-  for (const auto& name : sweep.metric_names) {
-    out += "," + name + "_mean," + name + "_std," + name + "_min," + name + "_max";
+  for (const int m : shown) {
+    const std::string& name = sweep.metric_names[static_cast<std::size_t>(m)];
+    out += all_columns ? "," + name + "_mean," + name + "_std," + name + "_min," + name + "_max"
+                       : "," + name + "_mean," + name + "_sd," + name + "_ci95_low," + name +
+                             "_ci95_high";
   }
   out += "\n";
   for (const PointSummary& p : sweep.points) {
@@ -285,9 +300,16 @@ std::string points_csv(const SweepSummary& sweep) {
     for (const auto& v : p.axis_values) out += "," + unquoted(v);
     out += "," + std::to_string(p.trials) + "," + std::to_string(p.ok) + "," +
            number_text(p.mistrip_rate());
-    for (const MetricStats& m : p.metrics) {
-      out += "," + number_text(m.mean) + "," + number_text(m.std) + "," + number_text(m.min) +
-             "," + number_text(m.max);
+    for (const int m : shown) {
+      const MetricStats& s = p.metrics[static_cast<std::size_t>(m)];
+      if (all_columns) {
+        out += "," + number_text(s.mean) + "," + number_text(s.std) + "," + number_text(s.min) +
+               "," + number_text(s.max);
+      } else {
+        const double half = ci95_half_width(s.std, s.count);
+        out += "," + number_text(s.mean) + "," + number_text(s.std) + "," +
+               number_text(s.mean - half) + "," + number_text(s.mean + half);
+      }
     }
     out += "\n";
   }

@@ -62,9 +62,16 @@ std::string metric_label(const std::string& name);
 std::string point_scenario_toml(const SweepSummary& sweep, const PointSummary& point,
                                 const std::string& scenario_dir, const std::string& header);
 
-// points.csv: point, the axis values, trials, ok, mistrip_rate, then <metric>_mean, _std,
-// _min, _max for every metric (timing metrics left out).
-std::string points_csv(const SweepSummary& sweep);
+// points.csv: point, the axis values, trials, ok, mistrip_rate, then for each of
+// kPointsCsvMetrics the sweep has, and `metric` (the report's), <metric>_mean, _sd,
+// _ci95_low, _ci95_high (Student's t over the seeds where it is defined). With
+// `all_columns`, every metric (timing left out) with _mean, _std, _min, _max instead, the
+// table of pamsim 0.2. Every trial's values stay in the database (pamsim export).
+inline const std::vector<std::string> kPointsCsvMetrics = {
+    "peak_drop_deg", "recovery_time_s", "first_trigger_time_s", "mistrips",
+    "retriggers_after_impact", "mass_retained", "length_est_rmse_pct"};
+std::string points_csv(const SweepSummary& sweep, const std::string& metric = "peak_drop_deg",
+                       bool all_columns = false);
 
 // A heat map of `metric` (or "mistrip_rate") over the first two axes, with `best` (chosen
 // on `best_metric`) marked if not null; on a grid with more axes each cell averages the
