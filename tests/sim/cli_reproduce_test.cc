@@ -290,6 +290,7 @@ TEST(CliReproduceTest, EveryCommandReplacesAnOutputOnlyWithForce) {
   const CliResult report = run_pamsim("report " + db + " --no-plot --out " + (dir / "rep2").string());
   ASSERT_EQ(report.exit_code, 0) << report.err;
   EXPECT_TRUE(fs::exists(dir / "rep2" / "points.csv"));
+  EXPECT_EQ(json_of(dir / "rep2" / "provenance.json")["from"], db);
   for (const auto& e : fs::directory_iterator(dir / "rep2")) {
     EXPECT_NE(e.path().extension(), ".png") << e.path();
   }

@@ -20,6 +20,7 @@
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
+#include "sim/io/provenance.h"
 #include "sim/io/staged_outputs.h"
 #include "sim/sweep/tune.h"
 
@@ -37,10 +38,19 @@ struct ReportOptions {
 };
 
 const std::vector<std::string> kSweepReportOutputs = [] {
-  std::vector<std::string> names = {"points.csv", "best.toml"};
+  std::vector<std::string> names = {"points.csv", "best.toml", kProvenanceFile};
   for (const std::string& plot : plot_file_names({"heatmap_*.png"})) names.push_back(plot);
   return names;
 }();
+
+// provenance.json of a report: the database it read and the command line.
+void write_report_provenance(const ReportOptions& opt, const StagedOutputs& staged) {
+  Provenance p;
+  p.command = "report";
+  p.from = opt.db;   // what it was made from
+  p.started_utc = utc_timestamp();
+  write_file_atomically(staged.path(kProvenanceFile), provenance_to_json(p).dump(2) + "\n");
+}
 
 std::string stats_text(const MetricStats& m) {
   char buf[128];
@@ -154,6 +164,7 @@ void report(const ReportOptions& opt) {
     std::cout << "outputs: " << out << "/{points.csv,heatmap_*.png" << (best ? ",best.toml" : "")
               << "}\n";
   });
+  staged.write([&] { write_report_provenance(opt, staged); });
   staged.publish();
 }
 

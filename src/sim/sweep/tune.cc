@@ -32,6 +32,8 @@
 #include "sim/core/metrics.h"
 #include "sim/core/runner.h"
 #include "sim/core/trial_model.h"
+#include "sim/io/build_info.h"
+#include "sim/io/provenance.h"
 #include "sim/io/config_reader.h"
 #include "sim/io/gnuplot.h"
 #include "sim/io/outputs.h"
@@ -518,7 +520,12 @@ TuneDb TuneDb::create(const std::string& path, const TuneDefinition& def) {
              {"kind", "pamsim tune"},
              {"tune_definition", def.canonical_json()},
              {"tune_file", def.file},
-             {"pamsim_version", PAMSIM_VERSION}}) {
+             {"pamsim_version", PAMSIM_VERSION},
+             {"git_commit", build_info().git_commit},
+             {"mujoco_version", build_info().mujoco_version},
+             {"sundials_version", build_info().sundials_version},
+             {"command_line", nlohmann::json(command_line()).dump()},
+             {"created_utc", utc_timestamp()}}) {
       sqlite3_bind_text(s.get(), 1, k.c_str(), -1, SQLITE_TRANSIENT);
       sqlite3_bind_text(s.get(), 2, v.c_str(), -1, SQLITE_TRANSIENT);
       if (sqlite3_step(s.get()) != SQLITE_DONE) throw std::runtime_error(tmp + ": cannot write");
