@@ -185,7 +185,7 @@ struct PyResult {
   }
   py::dict summary() const { return summary_to_dict(result.summary); }
   std::string csv() const { return trajectory_to_csv(result.trajectory); }
-  std::string summary_json() const { return summary_to_json(result.summary, scenario).dump(2) + "\n"; }
+  std::string summary_json() const { return summary_to_json(result.summary, scenario, false).dump(2) + "\n"; }
 };
 
 struct LoadedScenario {

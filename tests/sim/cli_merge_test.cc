@@ -5,11 +5,14 @@
 // malformed --shard gets one line and exit 2; the Slurm scripts under scripts/slurm work.
 #include <fcntl.h>
 #include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
 #include <sqlite3.h>
 #include <sys/file.h>
 #include <unistd.h>
 
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -131,6 +134,17 @@ TEST_F(ShardedSmokeSweep, MergedShardsExportExactlyWhatOneMachineExports) {
   const pamsim::ResultsDb m = pamsim::ResultsDb::open_existing(merged);
   EXPECT_EQ(m.meta("shard"), "");
   EXPECT_NE(m.meta("merged_from").find("sweep.shard-2-of-3.db"), std::string::npos);
+  // every shard's run is recorded with its build, not only the first part's (and the
+  // resume above, which ran nothing, after them)
+  const nlohmann::json runs = nlohmann::json::parse(m.meta("invocations"));
+  std::set<std::string> parts;
+  for (const auto& run : runs) {
+    if (run.contains("part")) parts.insert(run.at("part").get<std::string>());
+  }
+  EXPECT_EQ(parts, (std::set<std::string>{shard(0), shard(1), shard(2)}));
+  ASSERT_EQ(runs.size(), 4u);
+  EXPECT_EQ(runs.back().at("trials_run"), 0);
+  EXPECT_FALSE(m.meta("git_commit").empty());
   // merging never overwrites
   const std::string before = read_file(merged);
   const auto again = run_pamsim("merge " + merged + " " + shard(0));

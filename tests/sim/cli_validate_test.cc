@@ -76,6 +76,30 @@ TEST(CliValidateTest, ReachingWritesTableVAndFigure7) {
   EXPECT_NE(read_file(out / "table5.md").find("(8.82 / 5.24)"), std::string::npos);
 }
 
+// The outputs appear as one set: --no-plot writes no figure, a rerun is refused without
+// --force, and a forced rerun replaces the whole set (no figure of the earlier run left
+// beside tables that have none); provenance.json names the protocol.
+TEST(CliValidateTest, OutputsAreOneSetReplacedOnlyWithForce) {
+  const fs::path out = fresh_dir("cli_validate_set");
+  const std::string args = "validate reaching --quiet --out " + out.string();
+  ASSERT_EQ(run_pamsim(args).exit_code, 0);
+  EXPECT_TRUE(fs::exists(out / "fig7.png"));
+  const std::string table = read_file(out / "table5.csv");
+  const CliResult refused = run_pamsim(args + " --no-plot");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_EQ(line_count(refused.err), 1) << refused.err;
+  EXPECT_TRUE(fs::exists(out / "fig7.png"));
+  const CliResult forced = run_pamsim(args + " --no-plot --force");
+  ASSERT_EQ(forced.exit_code, 0) << forced.err;
+  EXPECT_EQ(forced.err.find("pamsim validate reaching:"), std::string::npos)
+      << "--quiet: no progress lines: " << forced.err;
+  EXPECT_FALSE(fs::exists(out / "fig7.png")) << "the earlier run's figure went with its set";
+  EXPECT_EQ(read_file(out / "table5.csv"), table);
+  const std::string provenance = read_file(out / "provenance.json");
+  EXPECT_NE(provenance.find("\"command\": \"validate reaching\""), std::string::npos) << provenance;
+  EXPECT_NE(provenance.find("validate_reaching.toml"), std::string::npos) << provenance;
+}
+
 TEST(CliValidateTest, SameSeedSameBytesAnotherSeedOtherNumbers) {
   const fs::path a = fresh_dir("cli_validate_s1"), b = fresh_dir("cli_validate_s2"),
                  c = fresh_dir("cli_validate_s3");

@@ -55,8 +55,9 @@ TEST(PhysicsDigestTest, Sha256OfAKnownTextIsTheStandardOne) {
             "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
 }
 
-// Digests of pamsim 0.2.0, whose trajectory.csv writes shortest round-trip numbers (0.1.0
-// wrote %.10g): the same trials, every value equal to 0.1.0's at ten digits.
+// Digests of pamsim 0.3.0, whose trajectory.csv writes shortest round-trip numbers (before,
+// %.10g): the same trials, every value equal to the earlier one at ten digits (checked by
+// hand on the drop trial when the format changed).
 TEST(PhysicsDigestTest, ShortDropTrialsAreUnchanged) {
   const std::vector<std::string> shorter = {"sim.duration_s=1.5", "drop.time_s=0.3"};
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass.toml", shorter)),

@@ -433,14 +433,20 @@ TEST_F(PlotTest, CompareDrawsBothRunsAndPrintsTheirMetrics) {
 TEST_F(PlotTest, CompareWritesUnderRendersByDefaultAndReplacesOnlyWithForce) {
   write_run(dir_ / "model", 2, 0.0);
   write_run(dir_ / "fiber", 2, 2.0);
-  const fs::path cwd = fs::current_path();
-  fs::current_path(dir_);   // renders/ is relative to where pamsim runs
+  // renders/ is relative to where pamsim runs; the folder is restored however the test ends
+  struct InFolder {
+    fs::path before = fs::current_path();
+    explicit InFolder(const fs::path& dir) { fs::current_path(dir); }
+    ~InFolder() { fs::current_path(before); }
+  } in_folder(dir_);
   run_compare({(dir_ / "model").string() + "/", (dir_ / "fiber").string()});
   const std::string png = path("renders/compare_model_vs_fiber.png");
   EXPECT_TRUE(read_png_size(png).ok);
   EXPECT_THROW(run_compare({(dir_ / "model").string(), (dir_ / "fiber").string()}), InputError);
   EXPECT_NO_THROW(run_compare({(dir_ / "model").string(), (dir_ / "fiber").string(), "--force"}));
-  fs::current_path(cwd);
+  // a plot goes to a file, not a stream
+  EXPECT_THROW(run_compare({(dir_ / "model").string(), (dir_ / "fiber").string(), "-o", "-"}),
+               InputError);
 }
 
 TEST_F(PlotTest, CompareRejectsAFolderThatIsNotARun) {

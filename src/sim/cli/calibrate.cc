@@ -52,11 +52,13 @@ void calibrate(const CalibrateOptions& opt) {
   const std::string out = opt.out.empty() ? sc.calibration_file : opt.out;
   if (out.empty()) throw InputError(sc.path + ": model.calibration is not set; give -o FILE");
   write_file_atomically(out, calibration_to_toml(c, "pamsim calibrate " + opt.scenario));
-  std::cout << "gravity torque at " << opt.angle_deg << " deg: " << c.gravity_torque_nm << " N m\n";
+  // with -o - (or a pipe) the calibration itself is on standard output: the rest to stderr
+  std::ostream& said = is_stream_output(out) ? std::cerr : std::cout;
+  said << "gravity torque at " << opt.angle_deg << " deg: " << c.gravity_torque_nm << " N m\n";
   for (const CalibratedLine& line : c.lines) {
-    std::cout << line.actuator << " line: " << units::m_to_mm(line.line_length_m) << " mm\n";
+    said << line.actuator << " line: " << units::m_to_mm(line.line_length_m) << " mm\n";
   }
-  std::cout << "written to " << out << "\n";
+  said << "written to " << (out == "-" ? "standard output" : out) << "\n";
 }
 
 }  // namespace

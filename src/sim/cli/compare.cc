@@ -19,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pam_actuator/atomic_file.h"
 #include "pam_actuator/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
@@ -216,8 +217,13 @@ void compare(const CompareOptions& opt) {
     bands.push_back(angle_band(ptrs, run == &a ? label_a : label_b));
   }
   const std::string out = opt.out.empty() ? default_out(opt.dir_a, opt.dir_b) : opt.out;
-  refuse_existing_file(out, opt.force);
+  if (is_stream_output(out)) {
+    throw InputError("-o " + out + ": a plot is written to a file, not to a stream");
+  }
   use_plot_formats(opt.plot_format);
+  for (const std::string& format : plot_formats(opt.plot_format)) {
+    refuse_existing_file(fs::path(out).replace_extension(format).string(), opt.force);
+  }
   make_directories(fs::path(out).parent_path().empty() ? "." : fs::path(out).parent_path().string());
   write_compare_plot(out, bands);
 

@@ -73,7 +73,8 @@ void print_table(const SpringFit& fit, const std::string& csv_path, std::FILE* o
 
 void run_fit(const FitOptions& o) {
   // validate everything before any output
-  if (o.output_path == "-" && o.json) {
+  const bool to_stream = !o.output_path.empty() && is_stream_output(o.output_path);
+  if (to_stream && o.json) {
     throw InputError("fit: -o - and --json would both write to standard output; give -o FILE");
   }
   if (!o.output_path.empty()) refuse_existing_file(o.output_path, o.force);
@@ -107,9 +108,10 @@ void run_fit(const FitOptions& o) {
     print_json(fit);
   } else {
     // with -o - the parameter file is on standard output: the table goes to stderr
-    std::FILE* out = o.output_path == "-" ? stderr : stdout;
+    const bool to_stream = is_stream_output(o.output_path);
+    std::FILE* out = to_stream ? stderr : stdout;
     print_table(fit, o.csv_path, out);
-    if (!o.output_path.empty() && o.output_path != "-") {
+    if (!o.output_path.empty() && !to_stream) {
       std::fprintf(out, "wrote %s\n", o.output_path.c_str());
     }
   }

@@ -90,6 +90,7 @@ std::string first_difference(const std::map<std::string, DbValue>& stored,
 
 void replay(const ReplayOptions& opt) {
   const auto started = std::chrono::steady_clock::now();
+  const std::string started_utc = utc_timestamp();
   if (opt.trial < 0) throw InputError("--trial must be >= 0, got " + std::to_string(opt.trial));
   const ResultsDb db = ResultsDb::open_existing(opt.db);
   const SweepSummary sweep = summarize_sweep(db);
@@ -131,16 +132,13 @@ void replay(const ReplayOptions& opt) {
   provenance.from = opt.db;
   provenance.seeds = {seed};
   provenance.threads = 1;
-  provenance.started_utc = utc_timestamp();
+  provenance.started_utc = started_utc;
   provenance.trials.push_back(timing_of(result.summary));
   staged.write([&] {
     write_trial_outputs(staged.staging(), result, sc);
     if (plots) write_angle_plot(staged.path(trial_plot_name(result.trajectory)), result, sc);
     write_file_atomically(staged.path(kResolvedScenarioFile), resolved);
-    provenance.wall_time_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    write_file_atomically(staged.path(kProvenanceFile),
-                          provenance_to_json(provenance).dump(2) + "\n");
+    write_provenance(staged.path(kProvenanceFile), provenance, started);
   });
   staged.publish();
   std::cout << summary_to_json(result.summary, sc, false).dump(2) << "\n";

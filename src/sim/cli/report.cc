@@ -9,6 +9,7 @@
 #include "sim/sweep/report.h"
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -44,12 +45,14 @@ const std::vector<std::string> kSweepReportOutputs = [] {
 }();
 
 // provenance.json of a report: the database it read and the command line.
-void write_report_provenance(const ReportOptions& opt, const StagedOutputs& staged) {
+void write_report_provenance(const ReportOptions& opt, const StagedOutputs& staged,
+                             std::chrono::steady_clock::time_point started,
+                             const std::string& started_utc) {
   Provenance p;
   p.command = "report";
   p.from = opt.db;   // what it was made from
-  p.started_utc = utc_timestamp();
-  write_file_atomically(staged.path(kProvenanceFile), provenance_to_json(p).dump(2) + "\n");
+  p.started_utc = started_utc;
+  write_provenance(staged.path(kProvenanceFile), p, started);
 }
 
 std::string stats_text(const MetricStats& m) {
@@ -89,6 +92,8 @@ void report_tune(const ReportOptions& opt) {
 
 void report(const ReportOptions& opt) {
   if (TuneDb::is_tune_database(opt.db)) return report_tune(opt);
+  const auto started = std::chrono::steady_clock::now();
+  const std::string started_utc = utc_timestamp();
   const ResultsDb db = ResultsDb::open_existing(opt.db);
   const SweepSummary sweep = summarize_sweep(db);
   if (sweep.metric_index(opt.metric) < 0) {
@@ -164,7 +169,7 @@ void report(const ReportOptions& opt) {
     std::cout << "outputs: " << out << "/{points.csv,heatmap_*.png" << (best ? ",best.toml" : "")
               << "}\n";
   });
-  staged.write([&] { write_report_provenance(opt, staged); });
+  staged.write([&] { write_report_provenance(opt, staged, started, started_utc); });
   staged.publish();
 }
 

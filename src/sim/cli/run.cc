@@ -17,6 +17,7 @@
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/core/runner.h"
+#include "sim/io/build_info.h"
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
 #include "sim/io/provenance.h"
@@ -102,6 +103,17 @@ void run(RunOptions opt) {
     scenario_path = (fs::path(opt.from) / kResolvedScenarioFile).string();
     provenance.scenario_file = earlier.scenario_file;
     provenance.from = opt.from;
+    // relative to the first run's scenario file: its overrides, then this run's
+    provenance.overrides = earlier.overrides;
+    provenance.overrides.insert(provenance.overrides.end(), opt.overrides.begin(),
+                                opt.overrides.end());
+    const BuildInfo now = build_info();
+    if (earlier.pamsim_version != now.pamsim_version || earlier.git_commit != now.git_commit) {
+      std::cerr << "pamsim: warning: " << opt.from << " was made by pamsim "
+                << earlier.pamsim_version << " (" << earlier.git_commit << "), this is "
+                << now.pamsim_version << " (" << now.git_commit
+                << "); its outputs may differ where the physics or defaults changed\n";
+    }
     if (!opt.trials_given) opt.trials = static_cast<int>(earlier.seeds.size());
   } else {
     if (opt.scenario.empty()) throw InputError("run needs a scenario file, or --from DIR");
@@ -183,10 +195,7 @@ void run(RunOptions opt) {
       if (plots) write_angle_band_plot(staged.path("angle_band.png"), trajectories, sc);
     }
     write_file_atomically(staged.path(kResolvedScenarioFile), resolved);
-    provenance.wall_time_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    write_file_atomically(staged.path(kProvenanceFile),
-                          provenance_to_json(provenance).dump(2) + "\n");
+    write_provenance(staged.path(kProvenanceFile), provenance, started);
   });
   staged.publish();
   std::cout << printed.dump(2) << "\n";

@@ -45,14 +45,20 @@ struct ValidateOptions {
   std::string plot_format = "png";
 };
 
-const std::vector<std::string> kLengthOutputs = {
-    "table3.csv", "table3.md", "pam_*.png", "pam_*.svg", "pam_*.pdf", "fits", kProvenanceFile};
-const std::vector<std::string> kReachingOutputs = {
-    "table5.csv", "table5.md", "fig7.png", "fig7.svg", "fig7.pdf", kProvenanceFile};
+const std::vector<std::string> kLengthOutputs = [] {
+  std::vector<std::string> names = {"table3.csv", "table3.md", "fits", kProvenanceFile};
+  for (const std::string& plot : plot_file_names({"pam_*.png"})) names.push_back(plot);
+  return names;
+}();
+const std::vector<std::string> kReachingOutputs = [] {
+  std::vector<std::string> names = {"table5.csv", "table5.md", kProvenanceFile};
+  for (const std::string& plot : plot_file_names({"fig7.png"})) names.push_back(plot);
+  return names;
+}();
 
 // provenance.json of a validation: its protocol file, overrides, seed and threads.
 void write_validation_provenance(const ValidateOptions& o, const ValidationOptions& v,
-                                 const std::string& command,
+                                 const std::string& command, const std::string& path,
                                  std::chrono::steady_clock::time_point started,
                                  const std::string& started_utc) {
   Provenance p;
@@ -62,10 +68,7 @@ void write_validation_provenance(const ValidateOptions& o, const ValidationOptio
   if (o.seed) p.seeds = {*o.seed};
   p.threads = v.threads;
   p.started_utc = started_utc;
-  p.wall_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  write_file_atomically((std::filesystem::path(v.out_dir) / kProvenanceFile).string(),
-                        provenance_to_json(p).dump(2) + "\n");
+  write_provenance(path, p, started);
 }
 
 ValidationOptions common_options(const ValidateOptions& o, const std::string& default_out) {
@@ -117,8 +120,14 @@ void run_length_estimation(const ValidateOptions& o) {
   };
   LengthValidationResult result = run_length_validation(spec, v);
   progress->finish(total);
-  write_length_validation(result, spec, v.out_dir, plots);
-  write_validation_provenance(o, v, "validate length-estimation", started, started_utc);
+  // published together: a failure half way, or a rerun with fewer figures, leaves no mix
+  StagedOutputs staged(v.out_dir, kLengthOutputs);
+  staged.write([&] {
+    write_length_validation(result, spec, staged.staging(), plots);
+    write_validation_provenance(o, v, "validate length-estimation",
+                                staged.path(kProvenanceFile), started, started_utc);
+  });
+  staged.publish();
   std::cout << table3_markdown(result, spec);
   std::cerr << "pamsim validate: outputs in " << v.out_dir
             << " (table3.csv, table3.md, pam_*.png, fits/)\n";
@@ -137,8 +146,13 @@ void run_reaching(const ValidateOptions& o) {
   attach_progress(&v, "pamsim validate reaching", spec.trials, o.quiet, &progress);
   const ReachingValidationResult result = run_reaching_validation(spec, v);
   progress->finish(spec.trials);
-  write_reaching_validation(result, spec, v.out_dir, plots);
-  write_validation_provenance(o, v, "validate reaching", started, started_utc);
+  StagedOutputs staged(v.out_dir, kReachingOutputs);
+  staged.write([&] {
+    write_reaching_validation(result, spec, staged.staging(), plots);
+    write_validation_provenance(o, v, "validate reaching", staged.path(kProvenanceFile), started,
+                                started_utc);
+  });
+  staged.publish();
   std::cout << table5_markdown(result, spec);
   std::cerr << "pamsim validate: outputs in " << v.out_dir
             << " (table5.csv, table5.md, fig7.png)\n";

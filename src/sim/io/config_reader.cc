@@ -10,7 +10,6 @@
 #include "sim/io/suggest.h"
 
 namespace pamsim {
-namespace {
 
 std::vector<std::string> split_key(const std::string& key) {
   std::vector<std::string> parts;
@@ -19,8 +18,6 @@ std::vector<std::string> split_key(const std::string& key) {
   while (std::getline(in, part, '.')) parts.push_back(part);
   return parts;
 }
-
-}  // namespace
 
 ConfigReader::ConfigReader(const std::string& path) : name_(path) {
   doc_ = parse_toml_file(path);

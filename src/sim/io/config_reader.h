@@ -98,6 +98,9 @@ class ConfigReader {
   std::set<std::string> overridden_;
 };
 
+// "a.b.c" -> {"a", "b", "c"}: a dotted key's parts.
+std::vector<std::string> split_key(const std::string& key);
+
 // True if `s` is longer than `suffix` and ends with it (a key with a name before its suffix).
 inline bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;

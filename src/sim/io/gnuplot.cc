@@ -166,10 +166,11 @@ bool ends_with_text(const std::string& path, const std::string& tail) {
   return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-// Draws `job` with `terminal` into `path` (a temp file beside it, checked whole by
-// `complete`, then renamed); throws std::runtime_error naming `path`.
-void draw(const std::string& gnuplot, const std::string& path, const GnuplotJob& job,
-          const std::string& terminal, bool (*complete)(const std::string&)) {
+// Draws `job` with `terminal` into a temp file beside `path`, checked whole by `complete`,
+// and returns it (the caller renames it into place); throws std::runtime_error naming `path`.
+std::unique_ptr<TempPath> draw(const std::string& gnuplot, const std::string& path,
+                               const GnuplotJob& job, const std::string& terminal,
+                               bool (*complete)(const std::string&)) {
   const fs::path target = fs::absolute(path);
   const TempDir dir(path);
   std::unique_ptr<TempPath> tmp_guard;   // exclusive, unpredictable; removed on any failure
@@ -213,12 +214,7 @@ void draw(const std::string& gnuplot, const std::string& path, const GnuplotJob&
     }
     throw std::runtime_error(path + ": gnuplot failed: " + why);
   }
-
-  // into place
-  if (std::rename(tmp.c_str(), target.c_str()) != 0) {
-    throw std::runtime_error(path + ": cannot move the plot into place: " + std::strerror(errno));
-  }
-  tmp_guard->release();
+  return tmp_guard;
 }
 
 }  // namespace
@@ -248,21 +244,32 @@ void run_gnuplot(const std::string& png_path, const GnuplotJob& job) {
   std::ostringstream png;
   png << "set terminal pngcairo size " << job.width_px << "," << job.height_px
       << " noenhanced font 'sans,11'";
-  draw(gnuplot, png_path, job, png.str(), png_is_complete);
+  // every format drawn whole first, then all moved into place: no PNG without its SVG
+  std::vector<std::pair<std::unique_ptr<TempPath>, std::string>> drawn;
+  drawn.emplace_back(draw(gnuplot, png_path, job, png.str(), png_is_complete), png_path);
   for (const std::string& format : extra_formats()) {
     const std::string path = fs::path(png_path).replace_extension(format).string();
     std::ostringstream terminal;
     if (format == "svg") {
       terminal << "set terminal svg size " << job.width_px << "," << job.height_px
                << " noenhanced font 'sans,11' background '#ffffff'";
-      draw(gnuplot, path, job, terminal.str(),
-           [](const std::string& p) { return ends_with_text(p, "</svg>"); });
+      drawn.emplace_back(draw(gnuplot, path, job, terminal.str(),
+                              [](const std::string& p) { return ends_with_text(p, "</svg>"); }),
+                         path);
     } else {   // pdf: the same aspect, 100 px per inch
       terminal << "set terminal pdfcairo size " << gp_num(job.width_px / 100.0) << ","
                << gp_num(job.height_px / 100.0) << " noenhanced font 'sans,11'";
-      draw(gnuplot, path, job, terminal.str(),
-           [](const std::string& p) { return ends_with_text(p, "%%EOF"); });
+      drawn.emplace_back(draw(gnuplot, path, job, terminal.str(),
+                              [](const std::string& p) { return ends_with_text(p, "%%EOF"); }),
+                         path);
     }
+  }
+  for (auto& [tmp, path] : drawn) {
+    if (std::rename(tmp->path().c_str(), fs::absolute(path).c_str()) != 0) {
+      throw std::runtime_error(path + ": cannot move the plot into place: " +
+                               std::strerror(errno));
+    }
+    tmp->release();
   }
 }
 

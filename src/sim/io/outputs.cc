@@ -18,11 +18,11 @@
 #include "sim/core/metrics.h"
 
 namespace pamsim {
-namespace {
-
 nlohmann::json number_or_null(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
+
+namespace {
 
 nlohmann::json scenario_json(const Scenario& sc) {
   nlohmann::json j = {

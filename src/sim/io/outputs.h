@@ -18,7 +18,7 @@ namespace pamsim {
 std::string trajectory_to_csv(const Trajectory& trajectory);
 // With `with_timing`, wall_time_s and realtime_factor too (not in summary.json files).
 nlohmann::json summary_to_json(const TrialSummary& summary, const Scenario& scenario,
-                               bool with_timing = true);
+                               bool with_timing);
 // {"trials": N, "seeds": [...], "status_counts": {...},
 //  "metrics": {name: {mean, sd, ci95_low, ci95_high, min, max, count}}} (no timing metrics)
 nlohmann::json aggregate_summaries(const std::vector<TrialSummary>& summaries,
@@ -39,6 +39,9 @@ double ci95_half_width(double sd, int count);
 // replace it" if `path` is an existing file or folder, unless `force`. Standard output ("-"),
 // a FIFO or a device (written through, never replaced) are always allowed.
 void refuse_existing_file(const std::string& path, bool force);
+
+// A finite number, or null for NaN and infinities (JSON has neither).
+nlohmann::json number_or_null(double v);
 
 // Creates `dir` (and parents) or throws InputError naming it.
 void make_directories(const std::string& dir);

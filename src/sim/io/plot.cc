@@ -197,6 +197,14 @@ void use_plot_formats(const std::string& text) {
   set_extra_plot_formats(extra);
 }
 
+std::vector<std::string> plot_formats(const std::string& text) {
+  std::vector<std::string> formats = {"png"};
+  for (const char* f : {"svg", "pdf"}) {
+    if (text.find(f) != std::string::npos) formats.push_back(f);
+  }
+  return formats;
+}
+
 std::vector<std::string> plot_file_names(const std::vector<std::string>& png_names) {
   std::vector<std::string> names;
   for (const std::string& png : png_names) {

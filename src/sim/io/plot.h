@@ -86,6 +86,9 @@ bool plots_wanted(bool no_plot);
 // for every plot of the process (set_extra_plot_formats). Throws InputError "--plot-format
 // must be png, svg, pdf or a comma-separated list of them, got ..." otherwise.
 void use_plot_formats(const std::string& text);
+// The extensions --plot-format asks for, PNG first: {"png"}, {"png", "svg"}, ...
+// (use_plot_formats validates the text).
+std::vector<std::string> plot_formats(const std::string& text);
 // The file names a plot named `png_name` may have ("angle.png" -> also "angle.svg",
 // "angle.pdf"), for the outputs a command owns (StagedOutputs).
 std::vector<std::string> plot_file_names(const std::vector<std::string>& png_names);

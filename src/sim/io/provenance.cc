@@ -6,9 +6,11 @@
 #include <ctime>
 #include <filesystem>
 
+#include "pam_actuator/atomic_file.h"
 #include "pam_actuator/input_error.h"
 #include "pam_actuator/toml_file.h"
 #include "sim/io/build_info.h"
+#include "sim/io/outputs.h"   // number_or_null
 
 namespace pamsim {
 namespace {
@@ -16,10 +18,6 @@ namespace {
 std::vector<std::string>& recorded_command_line() {
   static std::vector<std::string> line;
   return line;
-}
-
-nlohmann::json number_or_null(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
 }  // namespace
@@ -73,6 +71,13 @@ nlohmann::json provenance_to_json(const Provenance& p) {
   return j;
 }
 
+void write_provenance(const std::string& path, Provenance provenance,
+                      std::chrono::steady_clock::time_point started) {
+  provenance.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  write_file_atomically(path, provenance_to_json(provenance).dump(2) + "\n");
+}
+
 Provenance read_provenance(const std::string& dir) {
   const std::string path = (std::filesystem::path(dir) / kProvenanceFile).string();
   const nlohmann::json j = nlohmann::json::parse(read_text_file(path), nullptr, false);
@@ -91,6 +96,10 @@ Provenance read_provenance(const std::string& dir) {
     p.seeds = field("seeds").get<std::vector<std::uint64_t>>();
     p.threads = field("threads").get<int>();
     if (j.contains("from")) p.from = j.at("from").get<std::string>();
+    if (j.contains("build")) {
+      p.pamsim_version = j.at("build").value("pamsim_version", "");
+      p.git_commit = j.at("build").value("git_commit", "");
+    }
   } catch (const nlohmann::json::exception& e) {
     throw InputError(path + ": a field has the wrong type (" + std::string(e.what()) + ")");
   }

@@ -6,6 +6,7 @@
 // The resolved scenario itself is saved beside it as scenario.toml (scenario_file.h).
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -46,10 +47,16 @@ struct Provenance {
   std::string started_utc;              // ISO 8601
   double wall_time_s = 0;               // the whole command
   std::vector<TrialTiming> trials;
+  // read back by read_provenance from "build" (written by provenance_to_json)
+  std::string pamsim_version, git_commit;
 };
 
 // The provenance as JSON, with build_info_json() under "build" and command_line().
 nlohmann::json provenance_to_json(const Provenance& provenance);
+// Writes `provenance` to `path` (atomically), its wall_time_s the time since `started`.
+void write_provenance(const std::string& path, Provenance provenance,
+                      std::chrono::steady_clock::time_point started);
+
 // Reads DIR/provenance.json back (for `run --from DIR`). Throws InputError naming the file
 // and the field when it is missing or not a pamsim provenance.
 Provenance read_provenance(const std::string& dir);

@@ -3,21 +3,13 @@
 // reflex/stretch_reflex_controller.cc); keep them together when one changes.
 #include "sim/io/scenario_keys.h"
 
-#include <sstream>
+#include "sim/io/config_reader.h"   // split_key
 
 namespace pamsim {
 namespace {
 
-std::vector<std::string> split(const std::string& key) {
-  std::vector<std::string> parts;
-  std::string part;
-  std::istringstream in(key);
-  while (std::getline(in, part, '.')) parts.push_back(part);
-  return parts;
-}
-
 bool matches(const std::string& pattern, const std::string& key) {
-  const std::vector<std::string> p = split(pattern), k = split(key);
+  const std::vector<std::string> p = split_key(pattern), k = split_key(key);
   if (p.size() != k.size()) return false;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const bool placeholder = p[i].size() > 2 && p[i].front() == '<' && p[i].back() == '>';
@@ -131,9 +123,9 @@ const std::vector<KeyDoc>& scenario_key_docs() {
 }
 
 bool is_scenario_table(const std::string& key) {
-  const std::size_t depth = split(key).size();
+  const std::size_t depth = split_key(key).size();
   for (const KeyDoc& d : scenario_key_docs()) {
-    std::vector<std::string> parts = split(d.key);
+    std::vector<std::string> parts = split_key(d.key);
     if (parts.size() <= depth) continue;
     std::string prefix = parts[0];
     for (std::size_t i = 1; i < depth; ++i) prefix += "." + parts[i];

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <stdexcept>
 
 #include "pam_actuator/input_error.h"
@@ -131,7 +132,7 @@ void check_and_count_part(MergedDb& db, const std::string& part, bool first,
     for (const std::string& sql : create) db.exec(sql);
     db.exec(
         "INSERT INTO main.meta SELECT * FROM part.meta WHERE key NOT IN "
-        "('shard', 'created_utc', 'merged_from')");
+        "('shard', 'created_utc', 'merged_from', 'invocations', 'git_commit')");
   }
   const std::string where = "FROM part.trials WHERE ";
   if (schema.trials >= 0) {
@@ -184,6 +185,8 @@ MergeResult merge_sweep_databases(const std::string& out, const std::vector<std:
         // built in one go: a failure discards the temp file, so no journal is needed until the end
         db.exec("PRAGMA journal_mode=OFF; PRAGMA synchronous=OFF;");
         const std::string compare = deterministic_columns(schema.columns);
+        nlohmann::json invocations = nlohmann::json::array();
+        std::set<std::string> commits;
         for (std::size_t i = 0; i < parts.size(); ++i) {
           // what is read from the part and fails names the part (a file cut short, say)
           try {
@@ -194,14 +197,36 @@ MergeResult merge_sweep_databases(const std::string& out, const std::vector<std:
             throw InputError(parts[i] + ": cannot read its trials (" + e.what() + ")");
           }
           db.exec("INSERT OR IGNORE INTO main.trials SELECT * FROM part.trials");
+          // every part's runs (with their builds) and commits, not only the first's
+          const std::string key = "invocations";
+          Statement runs = db.query("SELECT value FROM part.meta WHERE key = ?", &key);
+          if (sqlite3_step(runs.get()) == SQLITE_ROW) {
+            const nlohmann::json part_runs = nlohmann::json::parse(
+                reinterpret_cast<const char*>(sqlite3_column_text(runs.get(), 0)), nullptr, false);
+            for (nlohmann::json run : part_runs.is_array() ? part_runs : nlohmann::json::array()) {
+              run["part"] = parts[i];
+              invocations.push_back(run);
+            }
+          }
+          runs.reset();
+          const std::string commit_key = "git_commit";
+          Statement commit = db.query("SELECT value FROM part.meta WHERE key = ?", &commit_key);
+          if (sqlite3_step(commit.get()) == SQLITE_ROW) {
+            commits.insert(reinterpret_cast<const char*>(sqlite3_column_text(commit.get(), 0)));
+          }
+          commit.reset();
           db.exec("DETACH DATABASE part");
         }
 
         nlohmann::json merged_from = nlohmann::json::array();
         for (const std::string& part : parts) merged_from.push_back(part);
+        std::string commit_list;   // one, or the parts' different ones
+        for (const std::string& c : commits) commit_list += (commit_list.empty() ? "" : ", ") + c;
         for (const auto& [key, value] :
              {std::pair<std::string, std::string>{"created_utc", utc_timestamp()},
-              {"merged_from", merged_from.dump()}}) {
+              {"merged_from", merged_from.dump()},
+              {"invocations", invocations.dump()},
+              {"git_commit", commit_list}}) {
           Statement put = db.query("INSERT INTO main.meta VALUES (?, ?)", &key);
           sqlite3_bind_text(put.get(), 2, value.c_str(), -1, SQLITE_TRANSIENT);
           db.step_done(put);

@@ -72,7 +72,6 @@ std::string unquoted(const std::string& toml) {
   return toml;
 }
 
-// A level for a tick label: numbers to 3 significant digits, strings without quotes.
 // "trigger threshold V_thr, Eq. (12) [mm/s], log scale (reflex.v_thr_mm_s)": an axis's
 // meaning and unit from the scenario keys' documentation, and the key itself
 std::string axis_label(const std::string& key, bool log_scale) {
@@ -87,6 +86,7 @@ std::string axis_label(const std::string& key, bool log_scale) {
   return label.empty() ? key : label + " (" + key + ")";
 }
 
+// A level for a tick label: numbers to 3 significant digits, strings without quotes.
 std::string level_label(const std::string& toml) {
   double v;
   const auto r = std::from_chars(toml.data(), toml.data() + toml.size(), v);
@@ -329,6 +329,9 @@ HeatMap sweep_heat_map(const SweepSummary& sweep, const std::string& metric,
   map.value_label = rate ? metric_label(metric) : metric_label(metric) + ", mean over the seeds";
   map.title = metric_label(metric) + (rate ? "" : ": mean ± SD") + " over " +
               std::to_string(sweep.seeds) + " seeds per point";
+  if (!rate && sweep.axis_keys.size() > 2) {
+    map.title = metric_label(metric) + ": mean ± SD over the points of the other axes";
+  }
   if (sweep.trials_stored < sweep.trials_total) {
     map.title += "; INCOMPLETE: " + std::to_string(sweep.trials_stored) + " of " +
                  std::to_string(sweep.trials_total) + " trials stored";

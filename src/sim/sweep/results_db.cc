@@ -146,11 +146,11 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
 }
 
 void ResultsDb::record_invocation(const nlohmann::json& entry) {
-  nlohmann::json all = nlohmann::json::parse(meta("invocations"), nullptr, false);
-  if (!all.is_array()) all = nlohmann::json::array();
-  all.push_back(entry);
-  exec("BEGIN IMMEDIATE;");
+  exec("BEGIN IMMEDIATE;");   // read and written under one lock: no other writer's entry is lost
   try {
+    nlohmann::json all = nlohmann::json::parse(meta("invocations"), nullptr, false);
+    if (!all.is_array()) all = nlohmann::json::array();
+    all.push_back(entry);
     put_meta({{"invocations", all.dump()}});
   } catch (...) {
     exec("ROLLBACK;");

@@ -36,6 +36,8 @@
 #include <string>
 #include <vector>
 
+#include "sim/io/plot.h"   // plot_file_names
+
 struct sqlite3;
 
 namespace pamsim {
@@ -181,9 +183,13 @@ std::vector<HeldOutCheck> check_held_out(const TuneDefinition& def,
 // The files write_tune_outputs writes (what `pamsim report` on a tuning database replaces),
 // and with pamsim tune's own tuning_seeds.csv and held_out.csv (what `pamsim tune` replaces:
 // a report must not remove the held-out checks it does not rerun).
-inline const std::vector<std::string> kTuneReportOutputs = {
-    "best.toml",      "evaluations.csv", "convergence.png", "convergence.svg", "convergence.pdf",
-    "pareto.csv",     "pareto.png",      "pareto.svg",      "pareto.pdf"};
+inline const std::vector<std::string> kTuneReportOutputs = [] {
+  std::vector<std::string> names = {"best.toml", "evaluations.csv", "pareto.csv"};
+  for (const std::string& plot : plot_file_names({"convergence.png", "pareto.png"})) {
+    names.push_back(plot);
+  }
+  return names;
+}();
 inline const std::vector<std::string> kTuneOutputs = [] {
   std::vector<std::string> names = kTuneReportOutputs;
   names.insert(names.end(), {"tuning_seeds.csv", "held_out.csv"});
