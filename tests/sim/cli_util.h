@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -64,6 +65,24 @@ inline std::filesystem::path fresh_dir(const std::string& name) {
 inline void write_text(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
+}
+
+// A copy of a shipped scenario (scenarios/<name>) in `dir` with `from` replaced by `to` (once;
+// a test fails if `from` is not there), its model paths made absolute.
+inline std::string scenario_variant(const std::filesystem::path& dir, const std::string& scenario,
+                                    const std::string& from, const std::string& to) {
+  const std::string source = PAMSIM_SOURCE_DIR;
+  std::string text = read_file(source + "/scenarios/" + scenario);
+  for (std::size_t at; (at = text.find("\"../models/")) != std::string::npos;) {
+    text.replace(at, 11, "\"" + source + "/models/");
+  }
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  const std::filesystem::path path =
+      dir / ("variant_" + std::to_string(std::hash<std::string>{}(to)) + ".toml");
+  write_text(path, text);
+  return path.string();
 }
 
 }  // namespace pamsim_test

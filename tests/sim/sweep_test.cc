@@ -270,6 +270,14 @@ TEST_F(SweepTest, ReportStatisticsAndBestPointFollowTheCriterion) {
   EXPECT_EQ(pamsim::metric_label("length_est_rmse_pct"), "length est rmse [% of length]");
   EXPECT_EQ(pamsim::metric_label("mistrips"), "mistrips");
 
+  // a tie goes to the lowest point number, as the criterion says
+  pamsim::SweepSummary tie = sweep;
+  tie.points[3].metrics[m].mean = 1.0;
+  tie.points[2].metrics[m].mean = 1.0;
+  const pamsim::PointSummary* tied = pamsim::best_point(tie, "peak_drop_deg");
+  ASSERT_NE(tied, nullptr);
+  EXPECT_EQ(tied->point, 2);
+
   // points.csv: the headline metrics with SD and 95 % interval; every column on request
   const std::string csv = pamsim::points_csv(sweep);
   const std::string header = csv.substr(0, csv.find('\n'));

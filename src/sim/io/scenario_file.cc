@@ -12,7 +12,7 @@
 #include "pam_actuator/toml_file.h"
 #include "pam_actuator/units.h"
 #include "sim/core/metrics.h"
-#include "sim/io/scenario_keys.h"
+#include "sim/io/scenario_key_docs.h"
 #include "sim/io/scenario_reading.h"
 
 namespace pamsim {

@@ -16,7 +16,7 @@
 #include "sim/io/outputs.h"
 #include "sim/core/metrics.h"
 #include "sim/io/scenario_file.h"
-#include "sim/io/scenario_keys.h"
+#include "sim/io/scenario_key_docs.h"
 #include "sim/sweep/sweep.h"
 
 namespace pamsim {

@@ -1,4 +1,4 @@
-// scenario_keys.h: the documentation of every scenario key, one entry each, for `pamsim keys`:
+// scenario_key_docs.h: the documentation of every scenario key, one entry each, for `pamsim keys`:
 // its unit, default, allowed values and one-line meaning. Keys under a name the scenario
 // chooses are written with a placeholder: muscles.<actuator>.params, bodies.<body>.mass_kg,
 // holds.<body>.*, events.<event>.*. tests/sim/cli_keys_test.cc holds this list to the keys

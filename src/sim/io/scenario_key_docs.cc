@@ -1,7 +1,7 @@
-// scenario_keys.cc: see scenario_keys.h. The ranges are those the readers check
+// scenario_key_docs.cc: see scenario_key_docs.h. The ranges are those the readers check
 // (scenario_file.cc, scenario_muscles.cc, scenario_events.cc, reflex/sensing.cc,
 // reflex/stretch_reflex_controller.cc); keep them together when one changes.
-#include "sim/io/scenario_keys.h"
+#include "sim/io/scenario_key_docs.h"
 
 #include "sim/io/config_reader.h"   // split_key
 

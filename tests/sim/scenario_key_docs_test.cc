@@ -1,0 +1,104 @@
+// scenario_key_docs_test.cc: the documented keys (io/scenario_key_docs.h) are exactly the
+// keys the scenario reader asks for, over the shipped scenarios and variants that reach every
+// optional key (schedules of each kind, events of each condition, holds, valve and reflex
+// options), so neither list can drift from the other; the documented literal defaults are
+// the reader's.
+#include "sim/io/scenario_key_docs.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "cli_util.h"
+#include "pam_actuator/input_error.h"
+#include "pam_actuator/toml_file.h"
+#include "sim/io/scenario_file.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using pamsim_test::fresh_dir;
+using pamsim_test::write_text;
+
+const std::string kSource = PAMSIM_SOURCE_DIR;
+
+struct Read {
+  std::string scenario;
+  std::vector<std::string> overrides;
+};
+
+// Scenarios that, together, make the reader ask for every key it knows.
+std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
+  const std::string s = kSource + "/scenarios/";
+  write_text(dir / "schedule.csv", "time_s,MPa\n0,0.4\n1,0.5\n");
+  return {
+      {s + "drop_mass.toml", {}},   // the 0.1 shorthands, drop, reflex, sensors
+      {s + "drop_mass_fiber.toml", {}},
+      {s + "drop_mass.toml",
+       {"valve.dead_time_ms=5", "valve.valve_time_constant_ms=10",
+        "valve.proportional_band_kPa=20", "valve.supply_MPa=0.7", "valve.command_max_MPa=0.7",
+        "controller.p_max_MPa=0.6", "reflex.pairs=[[\"agonist\", \"antagonist\"]]",
+        // an event of each condition, and each action's keys
+        "events.a.when.at_s=0.5", "events.a.action=\"add_mass\"", "events.a.body=\"basket\"",
+        "events.a.mass_kg=0.1", "events.b.when.contact=[\"ball\", \"basket\"]",
+        "events.b.after=\"a\"", "events.c.when.joint=\"shoulder\"", "events.c.when.below_deg=-60",
+        "events.d.when.joint=\"shoulder\"", "events.d.when.above_deg=0",
+        "events.e.when.body=\"ball\"", "events.e.when.below_z_m=-1"}},
+      {s + "reaching.toml",   // the long forms: plant, label, ramp; holds by position
+       {"muscles.agonist.command={kind=\"constant\", MPa=0.4}",
+        "muscles.antagonist.command={kind=\"steps\", times_s=[0.0, 1.0], MPa=[0.4, 0.5]}",
+        "muscles.agonist.line_mm=150", "bodies.ball.mass_kg=0.2"}},
+      {s + "reaching.toml",
+       {"muscles.agonist.command={kind=\"table\", file=\"" + (dir / "schedule.csv").string() + "\"}",
+        "muscles.antagonist.line=\"equilibrium\""}},
+      {pamsim_test::scenario_variant(dir, "reaching.toml", "position_m = [0.5, 0.5, 0.5]",
+               "above_site = \"basket_floor\"\nheight_m = 0.3"),
+       {}},
+      {s + "pulley_sine_5kg.toml",   // sine with phase and start; a slide joint's conditions
+       {"muscles.pam.command.phase_deg=90", "muscles.pam.command.start_s=1",
+        "events.low.when.joint=\"weight_slide\"", "events.low.when.below_mm=-500",
+        "events.high.when.joint=\"weight_slide\"", "events.high.when.above_mm=500",
+        "events.high.action=\"end\""}},
+  };
+}
+
+TEST(ScenarioKeyDocsTest, TheDocumentedKeysAreExactlyTheKeysTheReaderAsksFor) {
+  const fs::path dir = fresh_dir("keys_every");
+  std::set<std::string> documented;
+  for (const pamsim::KeyDoc& d : pamsim::scenario_key_docs()) {
+    EXPECT_TRUE(documented.insert(d.key).second) << "documented twice: " << d.key;
+  }
+  std::set<std::string> asked;
+  for (const Read& r : every_kind_of_scenario(dir)) {
+    std::vector<pamsim::ScenarioKeyValue> values;
+    try {
+      values = pamsim::scenario_key_values(r.scenario, r.overrides);
+    } catch (const pamsim::InputError& e) {
+      ADD_FAILURE() << r.scenario << ": " << e.what();
+      continue;
+    }
+    for (const pamsim::ScenarioKeyValue& kv : values) {
+      const std::string pattern = pamsim::scenario_key_pattern(kv.key);
+      EXPECT_FALSE(pattern.empty()) << "the reader asks for " << kv.key
+                                    << ", which scenario_key_docs.cc does not document";
+      asked.insert(pattern);
+      // a literal documented default is the reader's
+      const auto doc = std::find_if(pamsim::scenario_key_docs().begin(),
+                                    pamsim::scenario_key_docs().end(),
+                                    [&](const pamsim::KeyDoc& d) { return d.key == pattern; });
+      if (kv.is_default && doc != pamsim::scenario_key_docs().end() && doc->fallback[0] != '(') {
+        EXPECT_EQ(doc->fallback, kv.value) << kv.key << " in " << r.scenario;
+      }
+    }
+  }
+  for (const std::string& key : documented) {
+    EXPECT_TRUE(asked.count(key)) << key << " is documented, but no scenario of the test made "
+                                            "the reader ask for it (stale, or add a variant)";
+  }
+}
+
+}  // namespace
