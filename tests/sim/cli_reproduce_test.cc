@@ -76,6 +76,27 @@ TEST(CliReproduceTest, ARunFromItsFolderWritesByteIdenticalOutputs) {
   ASSERT_EQ(direct.exit_code, 0) << direct.err;
   EXPECT_EQ(read_file(dir / "c" / "trajectory.csv"), read_file(dir / "a1" / "trajectory.csv"));
 
+  // the inputs are fingerprinted: a file changed since the run is named when it runs again
+  const std::string calibration =
+      std::string(PAMSIM_SOURCE_DIR) + "/models/arm_2pam_plant_calibration.toml";
+  fs::copy_file(calibration, dir / "cal.toml");
+  const std::string own = pamsim_test::scenario_variant(dir, "drop_mass.toml", calibration,
+                                                        (dir / "cal.toml").string());
+  ASSERT_EQ(run_pamsim("run " + own + " --no-plot --out " + (dir / "own").string() + kShort)
+                .exit_code, 0);
+  const nlohmann::json inputs = json_of(dir / "own" / "provenance.json")["inputs"];
+  std::set<std::string> keys;
+  for (const auto& f : inputs) keys.insert(f["key"].get<std::string>());
+  EXPECT_TRUE(keys.count("model.file") && keys.count("model.calibration")) << inputs.dump();
+  EXPECT_EQ(run_pamsim("run --from " + (dir / "own").string() + " --no-plot").err.find("changed"),
+            std::string::npos);
+  pamsim_test::write_text(dir / "cal.toml", read_file(dir / "cal.toml") + "# edited\n");
+  const CliResult changed = run_pamsim("run --from " + (dir / "own").string() +
+                                       " --no-plot --force");
+  EXPECT_EQ(changed.exit_code, 0) << changed.err;
+  EXPECT_NE(changed.err.find("model.calibration (" + (dir / "cal.toml").string() + ") changed"),
+            std::string::npos) << changed.err;
+
   // bad input
   EXPECT_EQ(run_pamsim("run --from " + (dir / "nothing").string()).exit_code, 2);
   const CliResult both = run_pamsim("run scenarios/drop_mass.toml --from " + (dir / "a1").string());

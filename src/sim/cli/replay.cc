@@ -134,6 +134,8 @@ void replay(const ReplayOptions& opt) {
   provenance.threads = 1;
   provenance.started_utc = started_utc;
   provenance.trials.push_back(timing_of(result.summary));
+  provenance.inputs = fingerprint_inputs(
+      scenario_input_paths(sweep.base_scenario, sweep.base_path, overrides));
   staged.write([&] {
     write_trial_outputs(staged.staging(), result, sc);
     if (plots) write_angle_plot(staged.path(trial_plot_name(result.trajectory)), result, sc);

@@ -107,6 +107,10 @@ void run(RunOptions opt) {
     provenance.overrides = earlier.overrides;
     provenance.overrides.insert(provenance.overrides.end(), opt.overrides.begin(),
                                 opt.overrides.end());
+    for (const std::string& change : changed_inputs(earlier.inputs)) {
+      std::cerr << "pamsim: warning: " << change << " since the run in " << opt.from
+                << "; its outputs may differ\n";
+    }
     const BuildInfo now = build_info();
     if (earlier.pamsim_version != now.pamsim_version || earlier.git_commit != now.git_commit) {
       std::cerr << "pamsim: warning: " << opt.from << " was made by pamsim "
@@ -137,6 +141,8 @@ void run(RunOptions opt) {
   // read once: the resolved scenario below is this text, whatever happens to the file
   const std::string scenario_text = read_text_file(scenario_path);
   Scenario sc = load_scenario_text(scenario_text, scenario_path, opt.overrides);
+  provenance.inputs =
+      fingerprint_inputs(scenario_input_paths(scenario_text, scenario_path, opt.overrides));
   // a rerun's summary names the scenario file the first run was given, as that run's did
   if (!opt.from.empty()) sc.path = provenance.scenario_file;
   const TrialModel model = load_trial_model(sc);

@@ -4,7 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "pam_actuator/atomic_file.h"
 #include "pam_actuator/input_error.h"
@@ -21,6 +24,58 @@ std::vector<std::string>& recorded_command_line() {
 }
 
 }  // namespace
+
+std::uint64_t fnv1a64(const std::string& bytes) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (const unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+namespace {
+
+std::string hex64(std::uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
+// The file's size and fingerprint; false if it cannot be read.
+bool fingerprint(const std::string& path, std::uint64_t* bytes, std::string* hash) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream text;
+  text << in.rdbuf();
+  *bytes = text.str().size();
+  *hash = hex64(fnv1a64(text.str()));
+  return true;
+}
+
+}  // namespace
+
+std::vector<InputFile> fingerprint_inputs(
+    const std::vector<std::pair<std::string, std::string>>& key_paths) {
+  std::vector<InputFile> inputs;
+  for (const auto& [key, path] : key_paths) {
+    InputFile f{key, path, 0, ""};
+    if (fingerprint(path, &f.bytes, &f.fnv1a64)) inputs.push_back(f);
+  }
+  return inputs;
+}
+
+std::vector<std::string> changed_inputs(const std::vector<InputFile>& earlier) {
+  std::vector<std::string> changed;
+  for (const InputFile& f : earlier) {
+    std::uint64_t bytes = 0;
+    std::string hash;
+    const bool readable = fingerprint(f.path, &bytes, &hash);
+    if (!readable) {
+      changed.push_back(f.key + " (" + f.path + ") is gone");
+    } else if (bytes != f.bytes || hash != f.fnv1a64) {
+      changed.push_back(f.key + " (" + f.path + ") changed");
+    }
+  }
+  return changed;
+}
 
 std::string utc_timestamp() {
   const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
@@ -56,6 +111,10 @@ nlohmann::json provenance_to_json(const Provenance& p) {
                       {"wall_time_s", number_or_null(t.wall_time_s)},
                       {"realtime_factor", number_or_null(t.realtime_factor)}});
   }
+  nlohmann::json inputs = nlohmann::json::array();
+  for (const InputFile& f : p.inputs) {
+    inputs.push_back({{"key", f.key}, {"path", f.path}, {"bytes", f.bytes}, {"fnv1a64", f.fnv1a64}});
+  }
   nlohmann::json j = {{"format", "pamsim-provenance-1"},
                       {"command", p.command},
                       {"command_line", command_line()},
@@ -66,6 +125,7 @@ nlohmann::json provenance_to_json(const Provenance& p) {
                       {"started_utc", p.started_utc},
                       {"wall_time_s", number_or_null(p.wall_time_s)},
                       {"trials", trials},
+                      {"inputs", inputs},
                       {"build", build_info_json()}};
   if (!p.from.empty()) j["from"] = p.from;
   return j;
@@ -96,6 +156,12 @@ Provenance read_provenance(const std::string& dir) {
     p.seeds = field("seeds").get<std::vector<std::uint64_t>>();
     p.threads = field("threads").get<int>();
     if (j.contains("from")) p.from = j.at("from").get<std::string>();
+    if (j.contains("inputs")) {
+      for (const auto& f : j.at("inputs")) {
+        p.inputs.push_back({f.at("key").get<std::string>(), f.at("path").get<std::string>(),
+                            f.at("bytes").get<std::uint64_t>(), f.at("fnv1a64").get<std::string>()});
+      }
+    }
     if (j.contains("build")) {
       p.pamsim_version = j.at("build").value("pamsim_version", "");
       p.git_commit = j.at("build").value("git_commit", "");

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sim/core/trial.h"
@@ -20,6 +21,26 @@ namespace pamsim {
 inline constexpr const char* kProvenanceFile = "provenance.json";
 // The resolved scenario saved beside it (`pamsim run --from DIR` reads it).
 inline constexpr const char* kResolvedScenarioFile = "scenario.toml";
+
+// FNV-1a (64 bit) of `bytes`: a stable fingerprint (the same on every platform and build,
+// unlike std::hash) to tell whether a file changed. Not a cryptographic hash.
+std::uint64_t fnv1a64(const std::string& bytes);
+
+// An input file of a run: the scenario key that names it, its path as resolved, its size and
+// fingerprint when the run read it.
+struct InputFile {
+  std::string key;
+  std::string path;
+  std::uint64_t bytes = 0;
+  std::string fnv1a64;   // 16 hex digits
+};
+// The files the scenario's path keys name (model, pneumatics, calibration, params, plants,
+// schedule tables), fingerprinted now.
+std::vector<InputFile> fingerprint_inputs(const std::vector<std::pair<std::string, std::string>>&
+                                              key_paths);
+// "model.calibration (models/x.toml) changed since DIR's run" for each input of `earlier`
+// whose file now differs (or is gone); empty if none.
+std::vector<std::string> changed_inputs(const std::vector<InputFile>& earlier);
 
 // The current time in UTC, ISO 8601 ("2026-11-24T00:15:55Z").
 std::string utc_timestamp();
@@ -47,6 +68,7 @@ struct Provenance {
   std::string started_utc;              // ISO 8601
   double wall_time_s = 0;               // the whole command
   std::vector<TrialTiming> trials;
+  std::vector<InputFile> inputs;        // the files the scenario read
   // read back by read_provenance from "build" (written by provenance_to_json)
   std::string pamsim_version, git_commit;
 };

@@ -295,6 +295,17 @@ std::string resolved_scenario_toml(const std::string& text, const std::string& p
   return out;
 }
 
+std::vector<std::pair<std::string, std::string>> scenario_input_paths(
+    const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
+  ConfigReader in(text, path);
+  for (const auto& o : overrides) in.apply_override(o);
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const auto& key : in.leaf_keys()) {
+    if (is_scenario_path_key(key)) files.emplace_back(key, in.get_path(key, ""));
+  }
+  return files;
+}
+
 std::vector<ScenarioKeyValue> scenario_key_values(const std::string& path,
                                                  const std::vector<std::string>& overrides) {
   ConfigReader in(path);

@@ -69,6 +69,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sim/core/scenario.h"
@@ -97,6 +98,10 @@ Scenario load_scenario_for_calibration(const std::string& path,
 std::string resolved_scenario_toml(const std::string& text, const std::string& path,
                                    const std::vector<std::string>& overrides,
                                    const std::string& dir, const std::string& header);
+
+// The files the scenario's path keys name, resolved (is_scenario_path_key): key, path.
+std::vector<std::pair<std::string, std::string>> scenario_input_paths(
+    const std::string& text, const std::string& path, const std::vector<std::string>& overrides);
 
 // Every key the reader asks for when reading the scenario at `path` with `overrides`
 // (given or not): the keys it accepts for that scenario's muscles, events and options, in

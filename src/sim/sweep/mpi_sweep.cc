@@ -5,6 +5,7 @@
 //   kTagWork    0 -> worker (only when want > 0): trial numbers; none means no more
 // Rank 0 polls with MPI_Iprobe and a short sleep rather than a blocking receive, which in
 // Open MPI spins a core the workers on its node need.
+#include "sim/io/provenance.h"
 #include "sim/sweep/mpi_sweep.h"
 
 #include <mpi.h>
@@ -36,11 +37,7 @@ void check(int rc, const char* call) {
 }
 
 // FNV-1a of the sweep's canonical definition: every rank must run the same sweep.
-std::uint64_t fingerprint(const SweepDefinition& sweep) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (const unsigned char c : sweep.canonical_json()) h = (h ^ c) * 1099511628211ull;
-  return h;
-}
+std::uint64_t fingerprint(const SweepDefinition& sweep) { return fnv1a64(sweep.canonical_json()); }
 
 // ---- the byte format -----------------------------------------------------------------
 
