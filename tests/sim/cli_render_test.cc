@@ -77,6 +77,25 @@ TEST_F(CliRenderTest, VideoDoesNotChangeTheTrial) {
                                   "trajectory.csv", "trial.mp4"});
 }
 
+// -o - streams a fragmented MP4 to standard output (into a pipe or a file), every frame in
+// it; run --video - is refused (run's summary is on standard output).
+TEST_F(CliRenderTest, DashStreamsTheVideoToStandardOutput) {
+  const fs::path dir = fresh_dir("render_stdout");
+  const fs::path piped = dir / "piped.mp4";
+  const CliResult r = run_pamsim("render scenarios/drop_mass.toml --quiet --width 160 --height 120 "
+                                 "--quality fast --set sim.duration_s=0.5 drop.time_s=0.2 -o -",
+                                 "bash -c '\"$0\" \"$@\" > " + piped.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto video = decode_video(piped.string());
+  EXPECT_EQ(video.frames, 15);
+  EXPECT_EQ(video.width, 160);
+  expect_exactly(dir, {"piped.mp4"});   // no temp file, nothing named "-"
+  const CliResult run = run_pamsim("run scenarios/drop_mass.toml --video - --out " +
+                                   (dir / "r").string());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+}
+
 TEST_F(CliRenderTest, EglAndOsmesaDrawTheSameFrames) {
   const fs::path dir = fresh_dir("render_backends");
   const std::string common =

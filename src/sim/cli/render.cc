@@ -95,8 +95,9 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("scenario", opt->scenario, "Scenario file (TOML)")->required();
   cmd->add_option("--set", opt->overrides, "Override a scenario key: --set sim.duration_s=2")
       ->take_all();
-  cmd->add_option("-o,--output", v.mp4_path,
-                  "MP4 file (default renders/<scenario>/<scenario>.mp4 unless --png-dir alone)");
+  cmd->add_option("-o,--output", v.mp4_path,  // "-": a fragmented MP4 on standard output
+                  "MP4 file, - for standard output (fragmented MP4; default "
+                  "renders/<scenario>/<scenario>.mp4 unless --png-dir alone)");
   cmd->add_option("--png-dir", v.png_dir, "Also (or only) write frame_00000.png, ... here");
   cmd->add_option("--width", v.width_px, "Frame width in pixels, even")->capture_default_str();
   cmd->add_option("--height", v.height_px, "Frame height in pixels, even")->capture_default_str();

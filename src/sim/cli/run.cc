@@ -132,6 +132,10 @@ void run(RunOptions opt) {
       throw InputError("--video renders a single trial; drop --trials " +
                        std::to_string(opt.trials) + " (or use pamsim render)");
     }
+    if (opt.video == "-") {
+      throw InputError("--video -: run prints its summary on standard output; give a file (or "
+                       "pamsim render -o - for the video alone)");
+    }
     video.mp4_path = opt.video;
     refuse_existing_file(video.mp4_path, opt.force);
     video.backend = choose_gl_backend("");

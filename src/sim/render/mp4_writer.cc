@@ -36,7 +36,8 @@ const AVCodec* find_h264_encoder() {
 // half way).
 struct Mp4Writer::Impl {
   explicit Impl(const std::string& output)
-      : path(output), temp_file(output, TempKind::kFile) {}
+      : path(output),
+        temp_file(output == "-" ? nullptr : std::make_unique<TempPath>(output, TempKind::kFile)) {}
   ~Impl() { stop_encoding_thread(); }
 
   void encoding_loop();
@@ -45,7 +46,7 @@ struct Mp4Writer::Impl {
   void stop_encoding_thread();
 
   std::string path;
-  TempPath temp_file;
+  std::unique_ptr<TempPath> temp_file;   // none for "-": standard output, streamed
   AvOutputContextPtr muxer;
   AVStream* stream = nullptr;   // owned by the muxer
   AvCodecContextPtr encoder;
@@ -129,7 +130,8 @@ void Mp4Writer::Impl::stop_encoding_thread() {
 
 Mp4Writer::Mp4Writer(const std::string& path, const Mp4Settings& settings)
     : path_(path), impl_(std::make_unique<Impl>(path)) {
-  const std::string& temp_path = impl_->temp_file.path();
+  const bool stream = path == "-";
+  const std::string temp_path = stream ? "pipe:1" : impl_->temp_file->path();
   quiet_ffmpeg_log();
   const int w = settings.width_px;
   const int h = settings.height_px;
@@ -184,7 +186,10 @@ Mp4Writer::Mp4Writer(const std::string& path, const Mp4Settings& settings)
   x.stream->time_base = enc->time_base;
   check_av(avcodec_parameters_from_context(x.stream->codecpar, enc), path_, "codec parameters");
   AVDictionary* muxer_options = nullptr;
-  av_dict_set(&muxer_options, "movflags", "+faststart", 0);   // playable while downloading
+  // a file: the index moved to the front (playable while downloading); a pipe cannot seek
+  // back, so fragments, each with its own index (ffplay, ffmpeg and browsers read them)
+  av_dict_set(&muxer_options, "movflags",
+              stream ? "frag_keyframe+empty_moov+default_base_moof" : "+faststart", 0);
   status = avformat_write_header(muxer, &muxer_options);
   av_dict_free(&muxer_options);
   check_av(status, path_, "cannot write the MP4 header");
@@ -228,11 +233,13 @@ void Mp4Writer::finish() {
   check_av(av_write_trailer(x.muxer.get()), path_, "cannot complete the MP4");
   check_av(avio_closep(&x.muxer->pb), path_, "write failed");
 
-  if (std::rename(x.temp_file.path().c_str(), path_.c_str()) != 0) {
-    throw InputError(path_ + ": cannot rename temp file into place (" + std::strerror(errno) +
-                     ")");
+  if (x.temp_file) {
+    if (std::rename(x.temp_file->path().c_str(), path_.c_str()) != 0) {
+      throw InputError(path_ + ": cannot rename temp file into place (" + std::strerror(errno) +
+                       ")");
+    }
+    x.temp_file->release();
   }
-  x.temp_file.release();
   impl_.reset();
 }
 

@@ -5,6 +5,8 @@
 // frame. Nothing is kept but one frame in hand-over and the encoder's own lookahead.
 // The file is written as `<path>.tmp.<pid>` and renamed into place by finish(); a writer
 // destroyed before finish() removes its temp file, so a failed run leaves no partial video.
+// Path "-" streams a fragmented MP4 to standard output instead (for a pipe into ffplay or
+// ffmpeg; what was written is not taken back on failure).
 #pragma once
 
 #include <memory>

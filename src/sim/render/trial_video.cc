@@ -161,7 +161,7 @@ void validate_video_options(const VideoOptions& o, const std::string& mp4_option
   if (o.mp4_path.empty() && o.png_dir.empty()) {
     throw InputError("nothing to write: give " + mp4_option + " FILE.mp4 or --png-dir DIR");
   }
-  if (!o.mp4_path.empty()) {
+  if (!o.mp4_path.empty() && o.mp4_path != "-") {   // "-": standard output
     if (!ends_with_mp4(o.mp4_path)) {
       throw InputError(mp4_option + " " + o.mp4_path + ": the video is an MP4 file, name it .mp4");
     }
@@ -208,7 +208,7 @@ TrialVideo::TrialVideo(const TrialModel& model, const Scenario& sc, const VideoO
   // outputs last: their temp files exist only once everything else is ready
   if (!options.mp4_path.empty()) {
     const std::string folder = std::filesystem::path(options.mp4_path).parent_path().string();
-    if (!folder.empty()) make_directories(folder);
+    if (!folder.empty() && options.mp4_path != "-") make_directories(folder);
     Mp4Settings settings;
     settings.width_px = options.width_px;
     settings.height_px = options.height_px;
