@@ -51,17 +51,15 @@ const std::vector<std::string> kReplayOutputs = [] {
 
 // The stored row of `trial` (cells by column name), or throws InputError.
 std::map<std::string, DbValue> stored_row(const ResultsDb& db, std::int64_t trial) {
-  const std::vector<std::string> columns = db.trial_columns();
-  std::map<std::string, DbValue> found;
-  db.for_each_trial([&](const std::vector<DbValue>& row) {
-    if (!found.empty() || static_cast<std::int64_t>(row[0].number) != trial) return;
-    for (std::size_t c = 0; c < columns.size(); ++c) found[columns[c]] = row[c];
-  });
-  if (found.empty()) {
+  const std::vector<DbValue> cells = db.trial_row(trial);
+  if (cells.empty()) {
     throw InputError(db.path() + ": --trial " + std::to_string(trial) +
                      " is not stored (the sweep has not run it, or it has fewer trials)");
   }
-  return found;
+  const std::vector<std::string> columns = db.trial_columns();
+  std::map<std::string, DbValue> row;
+  for (std::size_t c = 0; c < columns.size() && c < cells.size(); ++c) row[columns[c]] = cells[c];
+  return row;
 }
 
 // "" if the replayed summary has every stored metric's value, else the first difference.
@@ -102,10 +100,7 @@ void replay(const ReplayOptions& opt) {
     if (p.point == point) at = &p;
   }
   if (at == nullptr) throw InputError(db.path() + ": point " + std::to_string(point) + " is missing");
-  std::vector<std::string> overrides = sweep.fixed;
-  for (std::size_t a = 0; a < sweep.axis_keys.size(); ++a) {
-    overrides.push_back(sweep.axis_keys[a] + "=" + at->axis_values[a]);
-  }
+  std::vector<std::string> overrides = point_overrides(sweep, *at);
   overrides.push_back("seed=" + std::to_string(seed));
 
   const std::string out = !opt.out.empty() ? opt.out
@@ -114,15 +109,15 @@ void replay(const ReplayOptions& opt) {
   if (!opt.force) refuse_earlier_outputs(out, kReplayOutputs);
   use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
-  const Scenario sc = load_scenario_text(sweep.base_scenario, sweep.base_path, overrides);
-  const TrialModel model = load_trial_model(sc);
-  StagedOutputs staged(out, kReplayOutputs);
-  const std::string resolved = resolved_scenario_toml(
+  const RecordedScenario recorded = load_recorded_scenario(
       sweep.base_scenario, sweep.base_path, overrides, out,
       "# Trial " + std::to_string(opt.trial) + " of the sweep in " + opt.db + " (point " +
           std::to_string(point) + ", seed " + std::to_string(seed) +
           "), resolved by pamsim " PAMSIM_VERSION "\n# (provenance.json beside it says how); "
           "pamsim run --from <this folder> runs it again\n");
+  const Scenario& sc = recorded.scenario;
+  const TrialModel model = load_trial_model(sc);
+  StagedOutputs staged(out, kReplayOutputs);
   const TrialResult result = run_trial(model, sc, seed, true);
 
   Provenance provenance;
@@ -134,12 +129,11 @@ void replay(const ReplayOptions& opt) {
   provenance.threads = 1;
   provenance.started_utc = started_utc;
   provenance.trials.push_back(timing_of(result.summary));
-  provenance.inputs = fingerprint_inputs(
-      scenario_input_paths(sweep.base_scenario, sweep.base_path, overrides));
+  provenance.inputs = fingerprint_inputs(recorded.input_paths);
   staged.write([&] {
     write_trial_outputs(staged.staging(), result, sc);
     if (plots) write_angle_plot(staged.path(trial_plot_name(result.trajectory)), result, sc);
-    write_file_atomically(staged.path(kResolvedScenarioFile), resolved);
+    write_file_atomically(staged.path(kResolvedScenarioFile), recorded.resolved_toml);
     write_provenance(staged.path(kProvenanceFile), provenance, started);
   });
   staged.publish();

@@ -142,30 +142,28 @@ void run(RunOptions opt) {
     if (video.backend == GlBackend::kEgl) video.egl_device = choose_egl_device(-1);
     validate_video_options(video, "--video");
   }
-  // read once: the resolved scenario below is this text, whatever happens to the file
-  const std::string scenario_text = read_text_file(scenario_path);
-  Scenario sc = load_scenario_text(scenario_text, scenario_path, opt.overrides);
-  provenance.inputs =
-      fingerprint_inputs(scenario_input_paths(scenario_text, scenario_path, opt.overrides));
+  const std::string out = !opt.out.empty() ? opt.out
+                          : !opt.from.empty() ? fs::path(opt.from).lexically_normal().string() + "_rerun"
+                                              : default_out_dir(opt.scenario, opt.overrides);
+  // read once: the scenario, its resolved text (paths relative to the output folder) and
+  // its input files, whatever happens to the file meanwhile
+  RecordedScenario recorded = load_recorded_scenario(
+      read_text_file(scenario_path), scenario_path, opt.overrides, out,
+      "# The scenario of a pamsim run, resolved by pamsim " PAMSIM_VERSION " from " +
+          provenance.scenario_file + "\n# (provenance.json beside it says how); pamsim run --from "
+          "<this folder> runs it again\n");
+  Scenario& sc = recorded.scenario;
+  provenance.inputs = fingerprint_inputs(recorded.input_paths);
   // a rerun's summary names the scenario file the first run was given, as that run's did
   if (!opt.from.empty()) sc.path = provenance.scenario_file;
   const TrialModel model = load_trial_model(sc);
   if (!opt.video.empty()) check_camera(model.model.get(), model.model_path, video.camera);
-  const std::string out = !opt.out.empty() ? opt.out
-                          : !opt.from.empty() ? fs::path(opt.from).lexically_normal().string() + "_rerun"
-                                              : default_out_dir(opt.scenario, opt.overrides);
   if (!opt.force) refuse_earlier_outputs(out, kRunOutputs);
   use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
   // every output is written into a staging folder and published together at the end: a
   // failure half way leaves the folder as it was (made only once every input is good)
   StagedOutputs staged(out, kRunOutputs);
-  // the resolved scenario, with paths relative to the output folder
-  const std::string resolved = resolved_scenario_toml(
-      scenario_text, scenario_path, opt.overrides, out,
-      "# The scenario of a pamsim run, resolved by pamsim " PAMSIM_VERSION " from " +
-          provenance.scenario_file + "\n# (provenance.json beside it says how); pamsim run --from "
-          "<this folder> runs it again\n");
   std::vector<TrialResult> results;
   if (opt.video.empty()) {
     // a bar for several trials (one is over in a blink)
@@ -204,7 +202,7 @@ void run(RunOptions opt) {
       write_file_atomically(staged.path("summary.json"), printed.dump(2) + "\n");
       if (plots) write_angle_band_plot(staged.path("angle_band.png"), trajectories, sc);
     }
-    write_file_atomically(staged.path(kResolvedScenarioFile), resolved);
+    write_file_atomically(staged.path(kResolvedScenarioFile), recorded.resolved_toml);
     write_provenance(staged.path(kProvenanceFile), provenance, started);
   });
   staged.publish();

@@ -271,39 +271,36 @@ Scenario load_scenario_for_calibration(const std::string& path,
   return read_scenario(in, overrides, false);
 }
 
-std::string resolved_scenario_toml(const std::string& text, const std::string& path,
-                                   const std::vector<std::string>& overrides,
-                                   const std::string& dir, const std::string& header) {
+RecordedScenario load_recorded_scenario(const std::string& text, const std::string& path,
+                                        const std::vector<std::string>& overrides,
+                                        const std::string& dir, const std::string& header) {
   ConfigReader in(text, path);
-  read_scenario(in, overrides);   // validates, and finds the defaults
+  RecordedScenario r;
+  r.scenario = read_scenario(in, overrides);   // validates, and finds the defaults
   const std::map<std::string, std::string> defaults = in.defaults_used();
-  // file paths: relative to the new file's folder
+  // file paths: recorded as read, then written relative to the new file's folder
   namespace fs = std::filesystem;
   const fs::path to = fs::weakly_canonical(fs::absolute(dir));
   for (const auto& key : in.leaf_keys()) {
     if (!is_scenario_path_key(key)) continue;
-    const fs::path target = fs::weakly_canonical(fs::absolute(in.get_path(key, "")));
+    r.input_paths.emplace_back(key, in.get_path(key, ""));
+    const fs::path target = fs::weakly_canonical(fs::absolute(r.input_paths.back().second));
     std::string relative = target.lexically_relative(to).generic_string();
     if (relative.empty()) relative = target.generic_string();
     in.apply_override(key + "=" + toml_value_text(toml::value<std::string>(relative)));
   }
-  std::string out = header + toml_text(in.document());
+  r.resolved_toml = header + toml_text(in.document());
   if (!defaults.empty()) {
-    out += "\n# Keys left at their defaults, with the values in effect:\n";
-    for (const auto& [key, value] : defaults) out += "# " + key + " = " + value + "\n";
+    r.resolved_toml += "\n# Keys left at their defaults, with the values in effect:\n";
+    for (const auto& [key, value] : defaults) r.resolved_toml += "# " + key + " = " + value + "\n";
   }
-  return out;
+  return r;
 }
 
-std::vector<std::pair<std::string, std::string>> scenario_input_paths(
-    const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
-  ConfigReader in(text, path);
-  for (const auto& o : overrides) in.apply_override(o);
-  std::vector<std::pair<std::string, std::string>> files;
-  for (const auto& key : in.leaf_keys()) {
-    if (is_scenario_path_key(key)) files.emplace_back(key, in.get_path(key, ""));
-  }
-  return files;
+std::string resolved_scenario_toml(const std::string& text, const std::string& path,
+                                   const std::vector<std::string>& overrides,
+                                   const std::string& dir, const std::string& header) {
+  return load_recorded_scenario(text, path, overrides, dir, header).resolved_toml;
 }
 
 std::vector<ScenarioKeyValue> scenario_key_values(const std::string& path,

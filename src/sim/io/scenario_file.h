@@ -99,9 +99,17 @@ std::string resolved_scenario_toml(const std::string& text, const std::string& p
                                    const std::vector<std::string>& overrides,
                                    const std::string& dir, const std::string& header);
 
-// The files the scenario's path keys name, resolved (is_scenario_path_key): key, path.
-std::vector<std::pair<std::string, std::string>> scenario_input_paths(
-    const std::string& text, const std::string& path, const std::vector<std::string>& overrides);
+// What a run records of its scenario, from one reading of `text`: the Scenario (as
+// load_scenario_text gives it), its resolved TOML (resolved_scenario_toml) and the files its
+// path keys name (key, path as resolved; is_scenario_path_key).
+struct RecordedScenario {
+  Scenario scenario;
+  std::string resolved_toml;
+  std::vector<std::pair<std::string, std::string>> input_paths;
+};
+RecordedScenario load_recorded_scenario(const std::string& text, const std::string& path,
+                                        const std::vector<std::string>& overrides,
+                                        const std::string& dir, const std::string& header);
 
 // Every key the reader asks for when reading the scenario at `path` with `overrides`
 // (given or not): the keys it accepts for that scenario's muscles, events and options, in

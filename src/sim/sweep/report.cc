@@ -262,12 +262,17 @@ std::string metric_label(const std::string& name) {
   return unit.empty() ? base : base + " [" + unit + "]";
 }
 
-std::string point_scenario_toml(const SweepSummary& sweep, const PointSummary& point,
-                                const std::string& scenario_dir, const std::string& header) {
+std::vector<std::string> point_overrides(const SweepSummary& sweep, const PointSummary& point) {
   std::vector<std::string> overrides = sweep.fixed;
   for (std::size_t a = 0; a < sweep.axis_keys.size(); ++a) {
     overrides.push_back(sweep.axis_keys[a] + "=" + point.axis_values[a]);
   }
+  return overrides;
+}
+
+std::string point_scenario_toml(const SweepSummary& sweep, const PointSummary& point,
+                                const std::string& scenario_dir, const std::string& header) {
+  const std::vector<std::string> overrides = point_overrides(sweep, point);
   return resolved_scenario_toml(sweep.base_scenario, sweep.base_path, overrides, scenario_dir,
                                 header);
 }

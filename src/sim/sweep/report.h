@@ -56,6 +56,10 @@ std::string best_criterion(const SweepSummary& sweep, const std::string& metric)
 // "recovery time [s]", "mistrip rate [fraction of seeds]".
 std::string metric_label(const std::string& name);
 
+// "key=value" overrides that make the base scenario the point's: the sweep's fixed keys,
+// then the point's axis values (TOML, types kept).
+std::vector<std::string> point_overrides(const SweepSummary& sweep, const PointSummary& point);
+
 // The base scenario with the sweep's fixed keys and the point's axis values set, its file
 // paths rewritten relative to `scenario_dir` (where it will be written), as TOML text with a
 // header saying where it came from (resolved_scenario_toml, scenario_file.h).

@@ -294,28 +294,49 @@ std::vector<std::string> ResultsDb::trial_columns() const {
   return names;
 }
 
+namespace {
+
+// The current row's cells into `cells` (sized to the statement's columns).
+void read_cells(sqlite3_stmt* s, std::vector<DbValue>* cells) {
+  cells->resize(static_cast<std::size_t>(sqlite3_column_count(s)));
+  for (std::size_t c = 0; c < cells->size(); ++c) {
+    DbValue& v = (*cells)[c];
+    const int i = static_cast<int>(c);
+    switch (sqlite3_column_type(s, i)) {
+      case SQLITE_NULL: v.kind = DbValue::Kind::kNull; break;
+      case SQLITE_INTEGER:
+      case SQLITE_FLOAT:
+        v.kind = DbValue::Kind::kNumber;
+        v.number = sqlite3_column_double(s, i);
+        break;
+      default:
+        v.kind = DbValue::Kind::kText;
+        v.text = reinterpret_cast<const char*>(sqlite3_column_text(s, i));
+        break;
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<DbValue> ResultsDb::trial_row(std::int64_t trial) const {
+  Statement s = prepare_statement(db_, "SELECT * FROM trials WHERE trial = ?");
+  if (!s) fail("cannot read the trials");
+  sqlite3_bind_int64(s.get(), 1, trial);
+  std::vector<DbValue> cells;
+  const int rc = sqlite3_step(s.get());
+  if (rc == SQLITE_ROW) read_cells(s.get(), &cells);
+  else if (rc != SQLITE_DONE) fail("cannot read the trials");
+  return cells;
+}
+
 void ResultsDb::for_each_trial(const std::function<void(const std::vector<DbValue>&)>& row) const {
   Statement s = prepare_statement(db_, "SELECT * FROM trials ORDER BY trial");
   if (!s) fail("cannot read the trials");
-  const int n = sqlite3_column_count(s.get());
-  std::vector<DbValue> cells(static_cast<std::size_t>(n));
+  std::vector<DbValue> cells;
   int rc;
   while ((rc = sqlite3_step(s.get())) == SQLITE_ROW) {
-    for (int c = 0; c < n; ++c) {
-      DbValue& v = cells[static_cast<std::size_t>(c)];
-      switch (sqlite3_column_type(s.get(), c)) {
-        case SQLITE_NULL: v.kind = DbValue::Kind::kNull; break;
-        case SQLITE_INTEGER:
-        case SQLITE_FLOAT:
-          v.kind = DbValue::Kind::kNumber;
-          v.number = sqlite3_column_double(s.get(), c);
-          break;
-        default:
-          v.kind = DbValue::Kind::kText;
-          v.text = reinterpret_cast<const char*>(sqlite3_column_text(s.get(), c));
-          break;
-      }
-    }
+    read_cells(s.get(), &cells);
     row(cells);
   }
   if (rc != SQLITE_DONE) fail("cannot read the trials");

@@ -82,6 +82,8 @@ class ResultsDb {
   std::vector<std::string> trial_columns() const;
   // The metric columns (after status and message), in order.
   std::vector<std::string> metric_columns() const;
+  // The cells of trial `trial` (columns of trial_columns()), or none if it is not stored.
+  std::vector<DbValue> trial_row(std::int64_t trial) const;
   // Calls `row` for every trial in trial order with its cells (columns of trial_columns()).
   void for_each_trial(const std::function<void(const std::vector<DbValue>&)>& row) const;
 
