@@ -20,14 +20,6 @@ struct KeysOptions {
   bool json = false;
 };
 
-const KeyDoc* doc_of(const std::string& key) {
-  const std::string pattern = scenario_key_pattern(key);
-  for (const KeyDoc& d : scenario_key_docs()) {
-    if (d.key == pattern) return &d;
-  }
-  return nullptr;
-}
-
 nlohmann::json doc_json(const KeyDoc& d) {
   return {{"key", d.key}, {"unit", d.unit}, {"default", d.fallback}, {"allowed", d.allowed},
           {"meaning", d.meaning}};
@@ -52,7 +44,7 @@ void keys(const KeysOptions& opt) {
   }
   nlohmann::json all = nlohmann::json::array();
   for (const ScenarioKeyValue& kv : scenario_key_values(opt.scenario, opt.overrides)) {
-    const KeyDoc* d = doc_of(kv.key);
+    const KeyDoc* d = scenario_key_doc(kv.key);
     if (opt.json) {
       nlohmann::json j = d ? doc_json(*d) : nlohmann::json{{"key", kv.key}};
       j["key"] = kv.key;

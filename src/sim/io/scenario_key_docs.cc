@@ -134,11 +134,11 @@ bool is_scenario_table(const std::string& key) {
   return false;
 }
 
-std::string scenario_key_pattern(const std::string& key) {
+const KeyDoc* scenario_key_doc(const std::string& key) {
   for (const KeyDoc& d : scenario_key_docs()) {
-    if (matches(d.key, key)) return d.key;
+    if (matches(d.key, key)) return &d;
   }
-  return "";
+  return nullptr;
 }
 
 }  // namespace pamsim

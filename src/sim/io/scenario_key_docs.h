@@ -21,9 +21,9 @@ struct KeyDoc {
 
 const std::vector<KeyDoc>& scenario_key_docs();
 
-// The pattern of a concrete key ("muscles.agonist.command.MPa" ->
-// "muscles.<actuator>.command.MPa"), or "" if no documented key matches.
-std::string scenario_key_pattern(const std::string& key);
+// The documentation of a concrete key ("muscles.agonist.command.MPa" is documented as
+// "muscles.<actuator>.command.MPa"), or nullptr if no documented key matches.
+const KeyDoc* scenario_key_doc(const std::string& key);
 
 // True if `key` names a table of documented keys ("events", "muscles.agonist.command"), not
 // a key itself.

@@ -75,12 +75,10 @@ std::string unquoted(const std::string& toml) {
 // "trigger threshold V_thr, Eq. (12) [mm/s], log scale (reflex.v_thr_mm_s)": an axis's
 // meaning and unit from the scenario keys' documentation, and the key itself
 std::string axis_label(const std::string& key, bool log_scale) {
-  const std::string pattern = scenario_key_pattern(key);
   std::string label;
-  for (const KeyDoc& d : scenario_key_docs()) {
-    if (d.key != pattern) continue;
-    label = d.meaning.rfind("the ", 0) == 0 ? d.meaning.substr(4) : d.meaning;
-    if (!d.unit.empty()) label += " [" + d.unit + "]";
+  if (const KeyDoc* d = scenario_key_doc(key)) {
+    label = d->meaning.rfind("the ", 0) == 0 ? d->meaning.substr(4) : d->meaning;
+    if (!d->unit.empty()) label += " [" + d->unit + "]";
   }
   if (log_scale) label += label.empty() ? "log scale" : ", log scale";
   return label.empty() ? key : label + " (" + key + ")";
