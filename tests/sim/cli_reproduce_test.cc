@@ -97,6 +97,15 @@ TEST(CliReproduceTest, ARunFromItsFolderWritesByteIdenticalOutputs) {
   EXPECT_NE(changed.err.find("model.calibration (" + (dir / "cal.toml").string() + ") changed"),
             std::string::npos) << changed.err;
 
+  // an input path that is no file (a hand-edited provenance.json) is named, not read
+  nlohmann::json edited = json_of(dir / "own" / "provenance.json");
+  edited["inputs"][0]["path"] = "/dev/zero";
+  pamsim_test::write_text(dir / "own" / "provenance.json", edited.dump(2));
+  const CliResult device = run_pamsim("run --from " + (dir / "own").string() + " --no-plot --force");
+  EXPECT_EQ(device.exit_code, 0) << device.err;
+  EXPECT_NE(device.err.find("(/dev/zero) is gone or not a readable file"), std::string::npos)
+      << device.err;
+
   // bad input
   EXPECT_EQ(run_pamsim("run --from " + (dir / "nothing").string()).exit_code, 2);
   const CliResult both = run_pamsim("run scenarios/drop_mass.toml --from " + (dir / "a1").string());

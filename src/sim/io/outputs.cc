@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -53,11 +54,16 @@ std::string trajectory_to_csv(const Trajectory& tr) {
     out += (c ? "," : "") + tr.columns[c];
   }
   out += "\n";
+  char buf[32];
   for (std::size_t r = 0; r < tr.rows(); ++r) {
     for (std::size_t c = 0; c < tr.columns.size(); ++c) {
       const double v = tr.at(r, c);
       if (c) out += ',';
-      out += std::isfinite(v) ? format_shortest(v) : "nan";
+      if (std::isfinite(v)) {
+        out.append(buf, std::to_chars(buf, buf + sizeof(buf), v).ptr);   // format_shortest's form
+      } else {
+        out += "nan";
+      }
     }
     out += '\n';
   }

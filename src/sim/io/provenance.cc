@@ -6,8 +6,6 @@
 #include <ctime>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "pam_actuator/atomic_file.h"
 #include "pam_actuator/input_error.h"
@@ -39,14 +37,19 @@ std::string hex64(std::uint64_t v) {
   return buf;
 }
 
-// The file's size and fingerprint; false if it cannot be read.
+// The file's size and fingerprint; false if it is not a readable regular file of bounded
+// size (read_text_file: a path in a hand-edited provenance.json to /dev/zero is refused,
+// not read forever).
 bool fingerprint(const std::string& path, std::uint64_t* bytes, std::string* hash) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream text;
-  text << in.rdbuf();
-  *bytes = text.str().size();
-  *hash = hex64(fnv1a64(text.str()));
+  if (path == "-") return false;   // standard input: nothing to read again
+  std::string text;
+  try {
+    text = read_text_file(path);
+  } catch (const InputError&) {
+    return false;
+  }
+  *bytes = text.size();
+  *hash = hex64(fnv1a64(text));
   return true;
 }
 
@@ -69,7 +72,7 @@ std::vector<std::string> changed_inputs(const std::vector<InputFile>& earlier) {
     std::string hash;
     const bool readable = fingerprint(f.path, &bytes, &hash);
     if (!readable) {
-      changed.push_back(f.key + " (" + f.path + ") is gone");
+      changed.push_back(f.key + " (" + f.path + ") is gone or not a readable file");
     } else if (bytes != f.bytes || hash != f.fnv1a64) {
       changed.push_back(f.key + " (" + f.path + ") changed");
     }
