@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "pam_actuator/pneumatics.h"
-#include "pam_actuator/units.h"
+#include "base/units.h"
 
 namespace {
 

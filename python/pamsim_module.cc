@@ -20,13 +20,13 @@
 #include <vector>
 
 #include "pam_actuator/identification.h"
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "pam_actuator/pam_params.h"
 #include "pam_actuator/plant_params.h"
 #include "pam_actuator/spring_model.h"
 #include "pam_actuator/tensile_csv.h"
 #include "pam_actuator/tensile_test.h"
-#include "pam_actuator/units.h"
+#include "base/units.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
 #include "sim/io/outputs.h"

@@ -11,8 +11,8 @@
 
 #include <boost/math/tools/roots.hpp>
 
-#include "pam_actuator/format.h"
-#include "pam_actuator/input_error.h"
+#include "base/format.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 namespace {

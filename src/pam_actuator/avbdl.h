@@ -58,7 +58,7 @@
 #include <string>
 
 #include "pam_actuator/chou_hannaford.h"
-#include "pam_actuator/units.h"
+#include "base/units.h"
 #include "pam_actuator/wickramatunge.h"   // StretchDirection
 
 namespace pamsim {

@@ -6,7 +6,7 @@
 
 #include <Eigen/Dense>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 namespace {

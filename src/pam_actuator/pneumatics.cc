@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 

@@ -6,9 +6,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "pam_actuator/format.h"
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/toml_file.h"
+#include "base/format.h"
+#include "base/input_error.h"
+#include "base/toml_file.h"
 
 namespace pamsim {
 namespace {

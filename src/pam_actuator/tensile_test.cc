@@ -5,9 +5,9 @@
 #include <random>
 #include <string>
 
-#include "pam_actuator/format.h"
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/units.h"
+#include "base/format.h"
+#include "base/input_error.h"
+#include "base/units.h"
 
 namespace pamsim {
 namespace {

@@ -7,9 +7,9 @@
 
 #include <toml++/toml.h>
 
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/toml_file.h"
-#include "pam_actuator/units.h"
+#include "base/input_error.h"
+#include "base/toml_file.h"
+#include "base/units.h"
 
 namespace pamsim {
 namespace {

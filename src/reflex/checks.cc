@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim::checks {
 

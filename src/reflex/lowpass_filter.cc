@@ -4,7 +4,7 @@
 #include <cassert>
 #include <cmath>
 
-#include "pam_actuator/units.h"
+#include "base/units.h"
 
 namespace pamsim {
 

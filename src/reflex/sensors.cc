@@ -5,7 +5,7 @@
 #include <cassert>
 #include <cmath>
 
-#include "pam_actuator/units.h"
+#include "base/units.h"
 
 namespace pamsim {
 

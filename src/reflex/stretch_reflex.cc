@@ -6,8 +6,8 @@
 #include <cassert>
 #include <cmath>
 
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/units.h"
+#include "base/input_error.h"
+#include "base/units.h"
 
 namespace pamsim {
 

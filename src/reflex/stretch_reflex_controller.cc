@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/units.h"
+#include "base/input_error.h"
+#include "base/units.h"
 #include "reflex/checks.h"
 
 namespace pamsim {

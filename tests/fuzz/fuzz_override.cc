@@ -6,9 +6,9 @@
 #include <string>
 
 #include "fuzz_input.h"
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/toml_file.h"
-#include "sim/io/config_reader.h"
+#include "base/input_error.h"
+#include "base/toml_file.h"
+#include "base/config_reader.h"
 #include "sim/io/scenario_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "fuzz_input.h"
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/sweep/sweep.h"
 
 namespace {

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "pam_actuator/spring_model.h"
-#include "pam_actuator/units.h"
+#include "base/units.h"
 
 int main() {
   using namespace pamsim;

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/units.h"
+#include "base/input_error.h"
+#include "base/units.h"
 
 namespace pamsim {
 namespace {

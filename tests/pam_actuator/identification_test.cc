@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "pam_actuator/tensile_test.h"
 
 namespace pamsim {

@@ -1,7 +1,7 @@
 // input_file_test.cc: pamsim reads only regular files of a bounded size (issue 14 item 8):
 // a folder or /dev/null as a parameter file used to give the defaults silently, /dev/zero
 // was read without end. Each is one error naming the path, through every reader.
-#include "pam_actuator/toml_file.h"
+#include "base/toml_file.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -11,7 +11,7 @@
 #include <functional>
 #include <string>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "pam_actuator/pam_params.h"
 #include "pam_actuator/plant_params.h"
 #include "pam_actuator/tensile_csv.h"

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 namespace {

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <string>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 namespace {

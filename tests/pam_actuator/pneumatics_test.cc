@@ -11,8 +11,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/units.h"
+#include "base/input_error.h"
+#include "base/units.h"
 
 namespace pamsim {
 namespace {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "pam_actuator/identification.h"
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "pam_actuator/tensile_test.h"
 
 namespace pamsim {

@@ -11,7 +11,7 @@
 #include <set>
 #include <vector>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "pam_actuator/tensile_csv.h"
 
 namespace pamsim {

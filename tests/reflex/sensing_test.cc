@@ -18,9 +18,9 @@
 
 #include "reflex_test_util.h"
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "pam_actuator/spring_model.h"
-#include "pam_actuator/units.h"
+#include "base/units.h"
 #include "reflex/lowpass_filter.h"
 #include "reflex/sensors.h"
 

@@ -19,7 +19,7 @@
 
 #include "reflex_test_util.h"
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "pam_actuator/spring_model.h"
 #include "reflex/controller.h"
 #include "reflex/sensing.h"

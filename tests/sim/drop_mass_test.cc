@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "pam_actuator/units.h"
+#include "base/units.h"
 #include "sim/io/scenario_file.h"
 #include "sim/core/muscle_law.h"
 #include "sim/core/runner.h"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "cli_util.h"
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "video_decode.h"
 
 namespace pamsim {

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "cli_util.h"
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace {
 

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "inline_mjcf.h"
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/units.h"
+#include "base/input_error.h"
+#include "base/units.h"
 #include "sim/core/mujoco_util.h"
 
 namespace pamsim {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "pam_actuator/pam_params.h"
-#include "pam_actuator/units.h"
+#include "base/units.h"
 #include "sim/core/mujoco_util.h"
 #include "sim/core/pam_callback.h"
 

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "cli_util.h"
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/toml_file.h"
+#include "base/input_error.h"
+#include "base/toml_file.h"
 #include "sim/io/scenario_file.h"
 
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/core/trial_model.h"
 #include "sim/io/scenario_file.h"
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "inline_mjcf.h"
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 namespace {

@@ -11,8 +11,8 @@
 #include <string>
 
 #include "cli_util.h"
-#include "pam_actuator/atomic_file.h"
-#include "pam_actuator/input_error.h"
+#include "base/atomic_file.h"
+#include "base/input_error.h"
 
 namespace {
 

@@ -3,7 +3,7 @@
 // sweeps) and the report's statistics, best point and heat-map placement.
 #include <gtest/gtest.h>
 
-#include "pam_actuator/format.h"
+#include "base/format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include <string>
 
 #include "cli_util.h"
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/io/scenario_file.h"
 #include "sim/cli/progress.h"
 #include "sim/sweep/report.h"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/core/runner.h"
 
 namespace pamsim {

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "cli_util.h"
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 namespace {

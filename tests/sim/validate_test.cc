@@ -16,8 +16,8 @@
 #include <utility>
 #include <vector>
 
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/units.h"
+#include "base/input_error.h"
+#include "base/units.h"
 #include "sim/core/runner.h"
 #include "sim/validate/length_estimation.h"
 #include "sim/validate/reaching.h"

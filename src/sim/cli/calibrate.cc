@@ -7,12 +7,12 @@
 #include <cmath>
 #include <iostream>
 
-#include "pam_actuator/atomic_file.h"
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/units.h"
+#include "base/atomic_file.h"
+#include "base/input_error.h"
+#include "base/units.h"
 #include "sim/core/calibration.h"
 #include "sim/cli/commands.h"
-#include "sim/io/config_reader.h"
+#include "base/config_reader.h"
 #include "sim/io/calibration_file.h"
 #include "sim/io/outputs.h"
 #include "sim/io/scenario_file.h"

@@ -19,8 +19,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pam_actuator/atomic_file.h"
-#include "pam_actuator/input_error.h"
+#include "base/atomic_file.h"
+#include "base/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"

@@ -10,9 +10,9 @@
 #include <memory>
 #include <string>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "pam_actuator/pam_params.h"
-#include "pam_actuator/units.h"
+#include "base/units.h"
 #include "sim/cli/commands.h"
 
 namespace pamsim {

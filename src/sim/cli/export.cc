@@ -15,8 +15,8 @@
 #include <iostream>
 #include <memory>
 
-#include "pam_actuator/atomic_file.h"
-#include "pam_actuator/input_error.h"
+#include "base/atomic_file.h"
+#include "base/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
 #include "sim/sweep/results_db.h"

@@ -12,9 +12,9 @@
 #include <optional>
 #include <string>
 
-#include "pam_actuator/atomic_file.h"
+#include "base/atomic_file.h"
 #include "pam_actuator/identification.h"
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "pam_actuator/pam_params.h"
 #include "pam_actuator/tensile_csv.h"
 #include "sim/cli/commands.h"

@@ -6,7 +6,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/io/scenario_file.h"
 #include "sim/io/scenario_key_docs.h"

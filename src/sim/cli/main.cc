@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "pam_actuator/format.h"
-#include "pam_actuator/input_error.h"
+#include "base/format.h"
+#include "base/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/io/provenance.h"
-#include "sim/io/suggest.h"
+#include "base/suggest.h"
 
 namespace {
 

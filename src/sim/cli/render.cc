@@ -11,7 +11,7 @@
 #include <iostream>
 #include <memory>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/core/runner.h"

@@ -11,9 +11,9 @@
 #include <filesystem>
 #include <iostream>
 
-#include "pam_actuator/atomic_file.h"
-#include "pam_actuator/format.h"
-#include "pam_actuator/input_error.h"
+#include "base/atomic_file.h"
+#include "base/format.h"
+#include "base/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/core/metrics.h"
 #include "sim/core/trial.h"

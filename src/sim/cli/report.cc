@@ -15,9 +15,9 @@
 #include <filesystem>
 #include <iostream>
 
-#include "pam_actuator/atomic_file.h"
-#include "pam_actuator/format.h"
-#include "pam_actuator/input_error.h"
+#include "base/atomic_file.h"
+#include "base/format.h"
+#include "base/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"

@@ -11,9 +11,9 @@
 #include <filesystem>
 #include <iostream>
 
-#include "pam_actuator/atomic_file.h"
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/toml_file.h"
+#include "base/atomic_file.h"
+#include "base/input_error.h"
+#include "base/toml_file.h"
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/core/runner.h"

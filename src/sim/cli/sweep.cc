@@ -19,7 +19,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/cli/stop_signal.h"
@@ -32,7 +32,7 @@
 #include "sim/sweep/sweep.h"
 #include "sim/sweep/sweep_runner.h"
 #ifdef PAMSIM_HAVE_MPI
-#include "pam_actuator/format.h"
+#include "base/format.h"
 #include "sim/sweep/mpi_sweep.h"
 #endif
 

@@ -8,8 +8,8 @@
 #include <memory>
 #include <string>
 
-#include "pam_actuator/atomic_file.h"
-#include "pam_actuator/input_error.h"
+#include "base/atomic_file.h"
+#include "base/input_error.h"
 #include "pam_actuator/pam_params.h"
 #include "pam_actuator/plant_params.h"
 #include "pam_actuator/tensile_csv.h"

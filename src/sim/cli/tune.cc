@@ -15,9 +15,9 @@
 #include <sstream>
 #include <string>
 
-#include "pam_actuator/atomic_file.h"
-#include "pam_actuator/format.h"
-#include "pam_actuator/input_error.h"
+#include "base/atomic_file.h"
+#include "base/format.h"
+#include "base/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/cli/stop_signal.h"

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "pam_actuator/atomic_file.h"
-#include "pam_actuator/input_error.h"
+#include "base/atomic_file.h"
+#include "base/input_error.h"
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/core/runner.h"

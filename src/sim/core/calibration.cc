@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "pam_actuator/format.h"
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/units.h"
+#include "base/format.h"
+#include "base/input_error.h"
+#include "base/units.h"
 #include "sim/core/muscle_law.h"
 
 namespace pamsim {

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <mutex>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/core/pam_callback.h"
 
 namespace pamsim {

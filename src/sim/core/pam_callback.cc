@@ -6,7 +6,7 @@
 #include <iterator>
 #include <string>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 namespace {

@@ -8,7 +8,7 @@
 #include <system_error>
 #include <thread>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 

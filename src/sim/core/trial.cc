@@ -8,8 +8,8 @@
 #include <memory>
 #include <stdexcept>
 
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/units.h"
+#include "base/input_error.h"
+#include "base/units.h"
 #include "sim/core/pam_callback.h"
 #include "sim/core/trial_run.h"
 

@@ -7,8 +7,8 @@
 #include <cstring>
 #include <sstream>
 
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/units.h"
+#include "base/input_error.h"
+#include "base/units.h"
 #include "sim/core/muscle_law.h"
 #include "sim/core/pam_callback.h"
 

@@ -8,7 +8,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "pam_actuator/units.h"
+#include "base/units.h"
 #include "sim/core/pam_callback.h"
 #include "sim/core/trial_run.h"
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "pam_actuator/units.h"
-#include "sim/io/config_reader.h"
+#include "base/units.h"
+#include "base/config_reader.h"
 
 namespace pamsim {
 ArmCalibration load_calibration(const std::string& path) {

@@ -22,8 +22,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "pam_actuator/atomic_file.h"
-#include "pam_actuator/input_error.h"
+#include "base/atomic_file.h"
+#include "base/input_error.h"
 #include "sim/io/temp_path.h"
 
 namespace pamsim {

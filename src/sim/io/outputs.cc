@@ -12,10 +12,10 @@
 
 #include <boost/math/distributions/students_t.hpp>
 
-#include "pam_actuator/atomic_file.h"
-#include "pam_actuator/format.h"
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/units.h"
+#include "base/atomic_file.h"
+#include "base/format.h"
+#include "base/input_error.h"
+#include "base/units.h"
 #include "sim/core/metrics.h"
 
 namespace pamsim {

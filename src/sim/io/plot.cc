@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/io/gnuplot.h"
 
 namespace pamsim {

@@ -7,9 +7,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "pam_actuator/atomic_file.h"
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/toml_file.h"
+#include "base/atomic_file.h"
+#include "base/input_error.h"
+#include "base/toml_file.h"
 #include "sim/io/build_info.h"
 #include "sim/io/outputs.h"   // number_or_null
 

@@ -2,7 +2,7 @@
 // and the pamsim 0.1 drop.* shorthand that expands into them.
 #include <cmath>
 
-#include "pam_actuator/units.h"
+#include "base/units.h"
 #include "sim/io/scenario_reading.h"
 
 namespace pamsim {

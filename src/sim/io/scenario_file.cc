@@ -9,8 +9,8 @@
 #include <map>
 #include <set>
 
-#include "pam_actuator/toml_file.h"
-#include "pam_actuator/units.h"
+#include "base/toml_file.h"
+#include "base/units.h"
 #include "sim/core/metrics.h"
 #include "sim/io/scenario_key_docs.h"
 #include "sim/io/scenario_reading.h"

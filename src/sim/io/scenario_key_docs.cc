@@ -3,7 +3,7 @@
 // reflex/stretch_reflex_controller.cc); keep them together when one changes.
 #include "sim/io/scenario_key_docs.h"
 
-#include "sim/io/config_reader.h"   // split_key
+#include "base/config_reader.h"   // split_key
 
 namespace pamsim {
 namespace {

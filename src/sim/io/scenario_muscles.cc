@@ -4,9 +4,9 @@
 #include <optional>
 #include <set>
 
-#include "pam_actuator/format.h"
+#include "base/format.h"
 #include "pam_actuator/plant_params.h"
-#include "pam_actuator/units.h"
+#include "base/units.h"
 #include "sim/io/calibration_file.h"
 #include "sim/io/scenario_reading.h"
 

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "sim/core/scenario.h"
-#include "sim/io/config_reader.h"
+#include "base/config_reader.h"
 
 namespace pamsim {
 
@@ -24,7 +24,7 @@ auto in_file(const ConfigReader& in, F&& parse) -> decltype(parse());
 
 }  // namespace pamsim
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 

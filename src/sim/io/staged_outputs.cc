@@ -9,7 +9,7 @@
 #include <system_error>
 #include <utility>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 namespace {

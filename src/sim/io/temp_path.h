@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "pam_actuator/atomic_file.h"
+#include "base/atomic_file.h"
 
 namespace pamsim {
 

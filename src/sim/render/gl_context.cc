@@ -28,7 +28,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 namespace {

@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/render/av_handles.h"
 #include "sim/io/temp_path.h"
 

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/render/av_handles.h"
 #include "sim/io/temp_path.h"
 

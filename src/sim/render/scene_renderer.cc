@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 namespace {

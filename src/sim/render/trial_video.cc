@@ -12,8 +12,8 @@
 #include <limits>
 #include <string>
 
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/units.h"
+#include "base/input_error.h"
+#include "base/units.h"
 #include "sim/core/pam_callback.h"
 #include "sim/io/outputs.h"
 

@@ -10,7 +10,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/core/metrics.h"
 #include "sim/sweep/results_db.h"
 #include "sim/sweep/sqlite_file.h"

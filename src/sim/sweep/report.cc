@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pam_actuator/input_error.h"
-#include "sim/io/config_reader.h"
+#include "base/input_error.h"
+#include "base/config_reader.h"
 #include "sim/io/outputs.h"
 #include "sim/core/metrics.h"
 #include "sim/io/scenario_file.h"

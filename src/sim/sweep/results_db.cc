@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/io/build_info.h"
 #include "sim/io/outputs.h"
 #include "sim/sweep/sqlite_file.h"

@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/io/temp_path.h"
 
 namespace pamsim {

@@ -12,9 +12,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/toml_file.h"
-#include "sim/io/config_reader.h"
+#include "base/input_error.h"
+#include "base/toml_file.h"
+#include "base/config_reader.h"
 #include "sim/core/metrics.h"
 #include "sim/core/trial_model.h"
 #include "sim/io/scenario_file.h"

@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 #include "sim/core/runner.h"
 #include "sim/io/scenario_file.h"
 #include "sim/core/trial.h"

@@ -8,12 +8,12 @@
 #include <mutex>
 #include <sstream>
 
-#include "pam_actuator/atomic_file.h"
-#include "pam_actuator/format.h"
-#include "pam_actuator/input_error.h"
+#include "base/atomic_file.h"
+#include "base/format.h"
+#include "base/input_error.h"
 #include "sim/core/runner.h"
 #include "sim/core/trial_model.h"
-#include "sim/io/config_reader.h"
+#include "base/config_reader.h"
 #include "sim/io/gnuplot.h"
 #include "sim/io/outputs.h"
 #include "sim/io/scenario_file.h"

@@ -2,7 +2,7 @@
 // escaped, a megabyte value is cut to its ends, UTF-8 is never split, and wrapping a message
 // again changes nothing; InputError keeps a NUL-bearing message whole. Numbers in files are
 // the shortest text that reads back (format_shortest), and toml_text round-trips.
-#include "pam_actuator/format.h"
+#include "base/format.h"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +13,8 @@
 #include <random>
 #include <string>
 
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/toml_file.h"
+#include "base/input_error.h"
+#include "base/toml_file.h"
 
 namespace pamsim {
 namespace {

@@ -1,5 +1,5 @@
 // atomic_file.cc: temp file + rename, see atomic_file.h.
-#include "pam_actuator/atomic_file.h"
+#include "base/atomic_file.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -11,7 +11,7 @@
 #include <iostream>
 #include <vector>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 

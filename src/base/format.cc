@@ -1,5 +1,5 @@
 // format.cc: see format.h.
-#include "pam_actuator/format.h"
+#include "base/format.h"
 
 #include <charconv>
 #include <cmath>

@@ -1,5 +1,5 @@
 // suggest.cc: see suggest.h.
-#include "sim/io/suggest.h"
+#include "base/suggest.h"
 
 #include <algorithm>
 

@@ -12,7 +12,7 @@
 
 #include <toml++/toml.h>
 
-#include "pam_actuator/format.h"   // format_value, for the messages
+#include "base/format.h"   // format_value, for the messages
 
 namespace pamsim {
 

@@ -1,6 +1,6 @@
 // atomic_file_test.cc: write_file_atomically writes, leaves no temp file, and reports
 // an unwritable folder.
-#include "pam_actuator/atomic_file.h"
+#include "base/atomic_file.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 #include <thread>
 #include <string>
 
-#include "pam_actuator/input_error.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 namespace {

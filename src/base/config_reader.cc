@@ -1,13 +1,13 @@
 // config_reader.cc: see config_reader.h.
-#include "sim/io/config_reader.h"
+#include "base/config_reader.h"
 
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
-#include "pam_actuator/input_error.h"
-#include "pam_actuator/toml_file.h"
-#include "sim/io/suggest.h"
+#include "base/input_error.h"
+#include "base/toml_file.h"
+#include "base/suggest.h"
 
 namespace pamsim {
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "pam_actuator/format.h"
+#include "base/format.h"
 
 namespace pamsim {
 

@@ -1,5 +1,5 @@
 // toml_file.cc: see toml_file.h.
-#include "pam_actuator/toml_file.h"
+#include "base/toml_file.h"
 
 #include <sys/stat.h>
 
@@ -10,8 +10,8 @@
 #include <iostream>
 #include <sstream>
 
-#include "pam_actuator/format.h"
-#include "pam_actuator/input_error.h"
+#include "base/format.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 

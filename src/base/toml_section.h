@@ -12,8 +12,8 @@
 
 #include <toml++/toml.h>
 
-#include "pam_actuator/format.h"
-#include "pam_actuator/input_error.h"
+#include "base/format.h"
+#include "base/input_error.h"
 
 namespace pamsim {
 
