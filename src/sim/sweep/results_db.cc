@@ -2,13 +2,9 @@
 #include "sim/sweep/results_db.h"
 
 #include <algorithm>
-#include <fcntl.h>
 #include <sqlite3.h>
-#include <sys/file.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <memory>
@@ -19,24 +15,12 @@
 #include "base/input_error.h"
 #include "sim/io/build_info.h"
 #include "sim/io/outputs.h"
-#include "sim/sweep/sqlite_file.h"
+#include "sim/io/sqlite_file.h"
 
 namespace pamsim {
 namespace {
 
 namespace fs = std::filesystem;
-
-sqlite3* open_database(const std::string& path, int flags) {
-  sqlite3* db = nullptr;
-  const int rc = sqlite3_open_v2(path.c_str(), &db, flags, nullptr);
-  if (rc != SQLITE_OK) {
-    const std::string why = db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
-    sqlite3_close(db);
-    throw InputError(path + ": cannot open the sweep database (" + why + ")");
-  }
-  sqlite3_busy_timeout(db, 10000);
-  return db;
-}
 
 // The first top-level field in which two canonical definitions differ.
 std::string first_difference(const std::string& stored, const std::string& wanted) {
@@ -54,64 +38,8 @@ std::string first_difference(const std::string& stored, const std::string& wante
 std::vector<std::string> ResultsDb::metric_columns() const {
   const std::vector<std::string> columns = trial_columns();
   const auto message = std::find(columns.begin(), columns.end(), "message");
-  if (message == columns.end()) fail("is not a pamsim sweep database (no message column)");
+  if (message == columns.end()) db_.fail("is not a pamsim sweep database (no message column)");
   return std::vector<std::string>(message + 1, columns.end());
-}
-
-ResultsDb::ResultsDb(sqlite3* db, std::string path) : db_(db), path_(std::move(path)) {}
-
-ResultsDb::ResultsDb(ResultsDb&& other) noexcept
-    : db_(other.db_), path_(std::move(other.path_)), writer_lock_fd_(other.writer_lock_fd_) {
-  other.db_ = nullptr;
-  other.writer_lock_fd_ = -1;
-}
-
-ResultsDb& ResultsDb::operator=(ResultsDb&& other) noexcept {
-  if (this != &other) {
-    close();
-    db_ = other.db_;
-    path_ = std::move(other.path_);
-    writer_lock_fd_ = other.writer_lock_fd_;
-    other.db_ = nullptr;
-    other.writer_lock_fd_ = -1;
-  }
-  return *this;
-}
-
-ResultsDb::~ResultsDb() { close(); }
-
-void ResultsDb::close() {
-  sqlite3_close(db_);
-  db_ = nullptr;
-  // only after SQLite is done with the file: closing any descriptor of it drops the
-  // process's POSIX locks, SQLite's included
-  if (writer_lock_fd_ >= 0) ::close(writer_lock_fd_);
-  writer_lock_fd_ = -1;
-}
-
-void ResultsDb::lock_for_writing() {
-  // flock(2), independent of SQLite's fcntl locks; released by the kernel if the process dies
-  writer_lock_fd_ = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
-  if (writer_lock_fd_ < 0 || ::flock(writer_lock_fd_, LOCK_EX | LOCK_NB) != 0) {
-    const bool busy = errno == EWOULDBLOCK;
-    throw InputError(path_ + (busy ? ": another pamsim sweep is writing to it; wait for it or "
-                                     "stop it first"
-                                   : ": cannot lock the sweep database (" +
-                                         std::string(std::strerror(errno)) + ")"));
-  }
-}
-
-void ResultsDb::fail(const std::string& what) const {
-  throw std::runtime_error(path_ + ": " + what + " (" + sqlite3_errmsg(db_) + ")");
-}
-
-void ResultsDb::exec(const std::string& sql) const {
-  char* err = nullptr;
-  if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &err) != SQLITE_OK) {
-    const std::string why = err ? err : "unknown error";
-    sqlite3_free(err);
-    throw std::runtime_error(path_ + ": " + why);
-  }
 }
 
 ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& sweep,
@@ -119,7 +47,7 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
   create_sqlite_file(path, "sweep database",
                      "add --resume to finish that sweep, or choose another --db",
                      [&](const std::string& tmp) {
-    ResultsDb db(open_database(tmp, SQLITE_OPEN_READWRITE), tmp);
+    const SqliteDb db = SqliteDb::open_new(tmp, "sweep database");
     std::string columns = "trial INTEGER PRIMARY KEY, point INTEGER NOT NULL, "
                           "seed_index INTEGER NOT NULL, seed INTEGER NOT NULL";
     for (const auto& axis : sweep.axes) columns += ", " + quoted_identifier(axis.key);
@@ -139,35 +67,20 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
         {"base_path", fs::absolute(sweep.base_path).lexically_normal().string()},
         {"created_utc", utc_timestamp()}};
     if (!shard.whole()) meta.emplace_back("shard", shard.text());
-    db.put_meta(meta);
+    db.put_meta(meta, "cannot write the sweep's description");
     db.exec("COMMIT; PRAGMA journal_mode=WAL;");
   });
   return open_to_resume(path, sweep, shard);
 }
 
 void ResultsDb::record_invocation(const nlohmann::json& entry) {
-  exec("BEGIN IMMEDIATE;");   // read and written under one lock: no other writer's entry is lost
-  try {
+  // read and written under one lock: no other writer's entry is lost
+  db_.transaction([&] {
     nlohmann::json all = nlohmann::json::parse(meta("invocations"), nullptr, false);
     if (!all.is_array()) all = nlohmann::json::array();
     all.push_back(entry);
-    put_meta({{"invocations", all.dump()}});
-  } catch (...) {
-    exec("ROLLBACK;");
-    throw;
-  }
-  exec("COMMIT;");
-}
-
-void ResultsDb::put_meta(const std::vector<std::pair<std::string, std::string>>& entries) {
-  Statement put = prepare_statement(db_, "INSERT OR REPLACE INTO meta VALUES (?, ?)");
-  if (!put) fail("cannot write the sweep's description");
-  for (const auto& [key, value] : entries) {
-    sqlite3_bind_text(put.get(), 1, key.c_str(), -1, SQLITE_TRANSIENT);
-    sqlite3_bind_text(put.get(), 2, value.c_str(), -1, SQLITE_TRANSIENT);
-    if (sqlite3_step(put.get()) != SQLITE_DONE) fail("cannot write the sweep's description");
-    sqlite3_reset(put.get());
-  }
+    db_.put_meta({{"invocations", all.dump()}}, "cannot write the sweep's description");
+  });
 }
 
 ResultsDb ResultsDb::open_existing(const std::string& path) {
@@ -175,7 +88,7 @@ ResultsDb ResultsDb::open_existing(const std::string& path) {
 }
 
 ResultsDb ResultsDb::open_as(const std::string& path, DbAccess access) {
-  ResultsDb db(open_sqlite_file(path, access, "sweep database"), path);
+  ResultsDb db(SqliteDb::open(path, access, "sweep database"));
   if (db.meta("format") != "pamsim-sweep-1") {
     throw InputError(path + ": not a pamsim sweep database");
   }
@@ -203,37 +116,27 @@ ResultsDb ResultsDb::open_to_resume(const std::string& path, const SweepDefiniti
                      (stored_shard.empty() ? std::string("no --shard")
                                            : "--shard " + stored_shard));
   }
-  db.lock_for_writing();
-  db.exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;");
+  db.db_.become_writer("another pamsim sweep is writing to it; wait for it or stop it first",
+                       "sweep database");
   return db;
-}
-
-std::string ResultsDb::meta(const std::string& key) const {
-  Statement s = prepare_statement(db_, "SELECT value FROM meta WHERE key = ?");
-  if (!s) return "";   // no meta table: not a sweep database
-  sqlite3_bind_text(s.get(), 1, key.c_str(), -1, SQLITE_TRANSIENT);
-  if (sqlite3_step(s.get()) != SQLITE_ROW) return "";
-  const auto* text = sqlite3_column_text(s.get(), 0);
-  return text ? reinterpret_cast<const char*>(text) : "";
 }
 
 std::vector<bool> ResultsDb::finished_trials(std::int64_t trials) const {
   std::vector<bool> finished(static_cast<std::size_t>(trials), false);
-  Statement s = prepare_statement(db_, "SELECT trial FROM trials");
-  if (!s) fail("cannot read the trials");
+  Statement s = db_.prepare("SELECT trial FROM trials", "cannot read the trials");
   int rc;
   while ((rc = sqlite3_step(s.get())) == SQLITE_ROW) {
     const std::int64_t t = sqlite3_column_int64(s.get(), 0);
-    if (t < 0 || t >= trials) fail("trial " + std::to_string(t) + " is outside this sweep");
+    if (t < 0 || t >= trials) db_.fail("trial " + std::to_string(t) + " is outside this sweep");
     finished[static_cast<std::size_t>(t)] = true;
   }
-  if (rc != SQLITE_DONE) fail("cannot read the trials");
+  if (rc != SQLITE_DONE) db_.fail("cannot read the trials");
   return finished;
 }
 
 std::int64_t ResultsDb::trial_count() const {
-  Statement s = prepare_statement(db_, "SELECT COUNT(*) FROM trials");
-  if (!s || sqlite3_step(s.get()) != SQLITE_ROW) fail("cannot count the trials");
+  Statement s = prepare_statement(db_.get(), "SELECT COUNT(*) FROM trials");
+  if (!s || sqlite3_step(s.get()) != SQLITE_ROW) db_.fail("cannot count the trials");
   return sqlite3_column_int64(s.get(), 0);
 }
 
@@ -243,10 +146,8 @@ void ResultsDb::insert(const SweepDefinition& sweep, const std::vector<TrialReco
   std::string sql = "INSERT INTO trials VALUES (?";
   for (std::size_t i = 1; i < n_columns; ++i) sql += ", ?";
   sql += ")";
-  Statement s = prepare_statement(db_, sql);
-  if (!s) fail("cannot store trials");
-  exec("BEGIN IMMEDIATE");
-  try {
+  Statement s = db_.prepare(sql, "cannot store trials");
+  db_.transaction([&] {
     for (const TrialRecord& r : records) {
       sqlite3_stmt* st = s.get();
       int c = 1;
@@ -276,19 +177,14 @@ void ResultsDb::insert(const SweepDefinition& sweep, const std::vector<TrialReco
         if (measured && std::isfinite(value)) sqlite3_bind_double(st, c++, value);
         else sqlite3_bind_null(st, c++);
       }
-      if (sqlite3_step(st) != SQLITE_DONE) fail("cannot store trial " + std::to_string(r.trial));
+      if (sqlite3_step(st) != SQLITE_DONE) db_.fail("cannot store trial " + std::to_string(r.trial));
       sqlite3_reset(st);
     }
-    exec("COMMIT");
-  } catch (...) {
-    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
-    throw;
-  }
+  });
 }
 
 std::vector<std::string> ResultsDb::trial_columns() const {
-  Statement s = prepare_statement(db_, "SELECT * FROM trials LIMIT 0");
-  if (!s) fail("cannot read the trials");
+  Statement s = db_.prepare("SELECT * FROM trials LIMIT 0", "cannot read the trials");
   std::vector<std::string> names;
   for (int c = 0; c < sqlite3_column_count(s.get()); ++c) names.push_back(sqlite3_column_name(s.get(), c));
   return names;
@@ -320,26 +216,24 @@ void read_cells(sqlite3_stmt* s, std::vector<DbValue>* cells) {
 }  // namespace
 
 std::vector<DbValue> ResultsDb::trial_row(std::int64_t trial) const {
-  Statement s = prepare_statement(db_, "SELECT * FROM trials WHERE trial = ?");
-  if (!s) fail("cannot read the trials");
+  Statement s = db_.prepare("SELECT * FROM trials WHERE trial = ?", "cannot read the trials");
   sqlite3_bind_int64(s.get(), 1, trial);
   std::vector<DbValue> cells;
   const int rc = sqlite3_step(s.get());
   if (rc == SQLITE_ROW) read_cells(s.get(), &cells);
-  else if (rc != SQLITE_DONE) fail("cannot read the trials");
+  else if (rc != SQLITE_DONE) db_.fail("cannot read the trials");
   return cells;
 }
 
 void ResultsDb::for_each_trial(const std::function<void(const std::vector<DbValue>&)>& row) const {
-  Statement s = prepare_statement(db_, "SELECT * FROM trials ORDER BY trial");
-  if (!s) fail("cannot read the trials");
+  Statement s = db_.prepare("SELECT * FROM trials ORDER BY trial", "cannot read the trials");
   std::vector<DbValue> cells;
   int rc;
   while ((rc = sqlite3_step(s.get())) == SQLITE_ROW) {
     read_cells(s.get(), &cells);
     row(cells);
   }
-  if (rc != SQLITE_DONE) fail("cannot read the trials");
+  if (rc != SQLITE_DONE) db_.fail("cannot read the trials");
 }
 
 }  // namespace pamsim

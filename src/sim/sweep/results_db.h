@@ -21,11 +21,10 @@
 #include <utility>
 #include <vector>
 
-#include "sim/sweep/sqlite_file.h"
+#include "sim/io/sqlite_file.h"
 #include "sim/sweep/sweep.h"
 #include "sim/core/trial.h"
 
-struct sqlite3;
 
 namespace pamsim {
 
@@ -60,14 +59,8 @@ class ResultsDb {
   // be read or is not a sweep database.
   static ResultsDb open_existing(const std::string& path);
 
-  ResultsDb(ResultsDb&& other) noexcept;
-  ResultsDb& operator=(ResultsDb&& other) noexcept;
-  ResultsDb(const ResultsDb&) = delete;
-  ResultsDb& operator=(const ResultsDb&) = delete;
-  ~ResultsDb();
-
-  const std::string& path() const { return path_; }
-  std::string meta(const std::string& key) const;   // "" if absent
+  const std::string& path() const { return db_.path(); }
+  std::string meta(const std::string& key) const { return db_.meta(key); }   // "" if absent
 
   // finished[t] is true for every trial already stored; `trials` is the sweep's count.
   std::vector<bool> finished_trials(std::int64_t trials) const;
@@ -88,17 +81,10 @@ class ResultsDb {
   void for_each_trial(const std::function<void(const std::vector<DbValue>&)>& row) const;
 
  private:
-  ResultsDb(sqlite3* db, std::string path);
+  explicit ResultsDb(SqliteDb db) : db_(std::move(db)) {}
   static ResultsDb open_as(const std::string& path, DbAccess access);
-  void exec(const std::string& sql) const;
-  void put_meta(const std::vector<std::pair<std::string, std::string>>& entries);
-  [[noreturn]] void fail(const std::string& what) const;
-  void lock_for_writing();
-  void close();
 
-  sqlite3* db_ = nullptr;
-  std::string path_;
-  int writer_lock_fd_ = -1;   // holds an exclusive flock while this handle writes
+  SqliteDb db_;   // the handle, and while this handle writes, the writer's lock
 };
 
 

@@ -1,11 +1,14 @@
-// sqlite_file.h: opening the SQLite files pamsim keeps its results in (sweep and tuning
-// databases), the same way for both: a reader can read a database on read-only media, and a
-// writer finds out that it cannot write before it runs anything.
+// sqlite_file.h: the one room for the SQLite files pamsim keeps its results in (sweep, tuning
+// and merged databases): creating one whole or not at all, opening it the same way for all
+// (a reader can read a database on read-only media, a writer finds out that it cannot write
+// before it runs anything), its writer's lock, its meta table and its transactions.
 #pragma once
 
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "sim/io/outputs.h"
 #include "sim/io/provenance.h"   // utc_timestamp, for created_utc
@@ -58,6 +61,58 @@ void create_sqlite_file(const std::string& path, const std::string& what,
 // its folder or the file cannot be written (read-only media, no -shm can be made), read-only
 // otherwise. For ATTACH on a connection opened with SQLITE_OPEN_URI.
 std::string read_only_uri(const std::string& path);
+
+// One open pamsim database: the SQLite handle, its path (for messages) and, once taken, the
+// writer's lock; closes both when it goes. Errors of SQLite itself are std::runtime_error
+// "<path>: <what> (<SQLite's reason>)"; a refusal the user can act on is InputError.
+class SqliteDb {
+ public:
+  SqliteDb() = default;
+  // The existing database `path` (open_sqlite_file's rules; `what` names it in messages).
+  static SqliteDb open(const std::string& path, DbAccess access, const std::string& what);
+  // The empty file `tmp` that create_sqlite_file made, read-write, to be filled. Throws
+  // InputError "<tmp>: cannot open the <what> (<why>)".
+  static SqliteDb open_new(const std::string& tmp, const std::string& what);
+
+  SqliteDb(SqliteDb&& other) noexcept;
+  SqliteDb& operator=(SqliteDb&& other) noexcept;
+  SqliteDb(const SqliteDb&) = delete;
+  SqliteDb& operator=(const SqliteDb&) = delete;
+  ~SqliteDb();
+
+  sqlite3* get() const { return db_; }
+  const std::string& path() const { return path_; }
+
+  // Runs `sql` (several statements allowed); throws std::runtime_error "<path>: <why>".
+  void exec(const std::string& sql) const;
+  // `sql` prepared; throws std::runtime_error "<path>: <what> (<why>)" if it does not prepare.
+  Statement prepare(const std::string& sql, const std::string& what) const;
+  [[noreturn]] void fail(const std::string& what) const;
+
+  // The meta table's value for `key`, "" if absent (or if there is no meta table: not a
+  // pamsim database).
+  std::string meta(const std::string& key) const;
+  // Writes (or replaces) meta entries; `what` names them in an error.
+  void put_meta(const std::vector<std::pair<std::string, std::string>>& entries,
+                const std::string& what) const;
+
+  // Makes this handle the database's only writer: an exclusive flock(2) on the file, held
+  // until the handle goes (released by the kernel if the process dies), then WAL journal with
+  // full sync. Throws InputError "<path>: <busy>" when another process holds it, or
+  // "<path>: cannot lock the <what> (<why>)".
+  void become_writer(const std::string& busy, const std::string& what);
+
+  // Runs `body` in one write transaction (BEGIN IMMEDIATE ... COMMIT), rolled back if it throws.
+  void transaction(const std::function<void()>& body) const;
+
+ private:
+  SqliteDb(sqlite3* db, std::string path) : db_(db), path_(std::move(path)) {}
+  void close();
+
+  sqlite3* db_ = nullptr;
+  std::string path_;
+  int writer_lock_fd_ = -1;
+};
 
 // For a command about to create or open the database `db_path` (given with --db): refuses a
 // path that names a folder (suggesting `<db_path>/<file_name>`), and makes the database's

@@ -1,7 +1,8 @@
 // sqlite_file.cc: see sqlite_file.h.
-#include "sim/sweep/sqlite_file.h"
+#include "sim/io/sqlite_file.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sqlite3.h>
 #include <unistd.h>
 
@@ -181,6 +182,117 @@ std::unique_ptr<FolderGuard> prepare_database_folder(const std::string& db_path,
   const std::string parent = fs::path(db_path).parent_path().string();
   if (parent.empty() || fs::exists(db_path, ec)) return nullptr;
   return std::make_unique<FolderGuard>(parent);
+}
+
+// --- SqliteDb -------------------------------------------------------------------------------
+
+SqliteDb SqliteDb::open(const std::string& path, DbAccess access, const std::string& what) {
+  return SqliteDb(open_sqlite_file(path, access, what), path);
+}
+
+SqliteDb SqliteDb::open_new(const std::string& tmp, const std::string& what) {
+  sqlite3* db = nullptr;
+  const int rc = sqlite3_open_v2(tmp.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr);
+  if (rc != SQLITE_OK) {
+    const std::string why = db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
+    sqlite3_close(db);
+    throw InputError(tmp + ": cannot open the " + what + " (" + why + ")");
+  }
+  sqlite3_busy_timeout(db, 10000);
+  return SqliteDb(db, tmp);
+}
+
+SqliteDb::SqliteDb(SqliteDb&& other) noexcept
+    : db_(other.db_), path_(std::move(other.path_)), writer_lock_fd_(other.writer_lock_fd_) {
+  other.db_ = nullptr;
+  other.writer_lock_fd_ = -1;
+}
+
+SqliteDb& SqliteDb::operator=(SqliteDb&& other) noexcept {
+  if (this != &other) {
+    close();
+    db_ = other.db_;
+    path_ = std::move(other.path_);
+    writer_lock_fd_ = other.writer_lock_fd_;
+    other.db_ = nullptr;
+    other.writer_lock_fd_ = -1;
+  }
+  return *this;
+}
+
+SqliteDb::~SqliteDb() { close(); }
+
+void SqliteDb::close() {
+  sqlite3_close(db_);
+  db_ = nullptr;
+  // only after SQLite is done with the file: closing any descriptor of it drops the
+  // process's POSIX locks, SQLite's included
+  if (writer_lock_fd_ >= 0) ::close(writer_lock_fd_);
+  writer_lock_fd_ = -1;
+}
+
+void SqliteDb::fail(const std::string& what) const {
+  throw std::runtime_error(path_ + ": " + what + " (" + sqlite3_errmsg(db_) + ")");
+}
+
+void SqliteDb::exec(const std::string& sql) const {
+  char* err = nullptr;
+  if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &err) != SQLITE_OK) {
+    const std::string why = err ? err : "unknown error";
+    sqlite3_free(err);
+    throw std::runtime_error(path_ + ": " + why);
+  }
+}
+
+Statement SqliteDb::prepare(const std::string& sql, const std::string& what) const {
+  Statement s = prepare_statement(db_, sql);
+  if (!s) fail(what);
+  return s;
+}
+
+std::string SqliteDb::meta(const std::string& key) const {
+  Statement s = prepare_statement(db_, "SELECT value FROM meta WHERE key = ?");
+  if (!s) return "";   // no meta table: not a pamsim database
+  sqlite3_bind_text(s.get(), 1, key.c_str(), -1, SQLITE_TRANSIENT);
+  if (sqlite3_step(s.get()) != SQLITE_ROW) return "";
+  const auto* text = sqlite3_column_text(s.get(), 0);
+  return text ? reinterpret_cast<const char*>(text) : "";
+}
+
+void SqliteDb::put_meta(const std::vector<std::pair<std::string, std::string>>& entries,
+                        const std::string& what) const {
+  Statement put = prepare("INSERT OR REPLACE INTO meta VALUES (?, ?)", what);
+  for (const auto& [key, value] : entries) {
+    sqlite3_bind_text(put.get(), 1, key.c_str(), -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(put.get(), 2, value.c_str(), -1, SQLITE_TRANSIENT);
+    if (sqlite3_step(put.get()) != SQLITE_DONE) fail(what);
+    sqlite3_reset(put.get());
+  }
+}
+
+void SqliteDb::become_writer(const std::string& busy, const std::string& what) {
+  // flock(2), independent of SQLite's fcntl locks
+  const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0 || ::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    const int error = errno;   // before close() can change it
+    if (fd >= 0) ::close(fd);
+    throw InputError(path_ + (error == EWOULDBLOCK ? ": " + busy
+                                                   : ": cannot lock the " + what + " (" +
+                                                         std::string(std::strerror(error)) + ")"));
+  }
+  writer_lock_fd_ = fd;
+  exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;");
+}
+
+void SqliteDb::transaction(const std::function<void()>& body) const {
+  exec("BEGIN IMMEDIATE");
+  try {
+    body();
+    exec("COMMIT");
+  } catch (...) {
+    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+    throw;
+  }
 }
 
 }  // namespace pamsim
