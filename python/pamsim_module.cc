@@ -32,7 +32,7 @@
 #include "sim/io/outputs.h"
 #include "sim/io/scenario_file.h"
 #include "sim/sweep/results_db.h"
-#include "sim/sweep/tune.h"
+#include "sim/optimize/tune_outputs.h"
 
 namespace py = pybind11;
 using namespace pamsim;

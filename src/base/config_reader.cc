@@ -1,6 +1,7 @@
 // config_reader.cc: see config_reader.h.
 #include "base/config_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -281,6 +282,48 @@ std::vector<std::string> ConfigReader::asked_keys() const {
   std::set<std::string> all = read_;
   all.insert(asked_.begin(), asked_.end());
   return {all.begin(), all.end()};
+}
+
+void TableEntry::allow(std::initializer_list<const char*> keys) const {
+  for (const auto& [k, v] : table) {
+    const std::string key(k.str());
+    if (std::none_of(keys.begin(), keys.end(), [&](const char* a) { return key == a; })) {
+      in.fail(where + key, "is not a key of this table");
+    }
+  }
+}
+
+std::string TableEntry::text(const char* key, bool required, const std::string& fallback) const {
+  const toml::node* n = table.get(key);
+  if (!n) {
+    if (required) in.fail(where + key, "is required");
+    return fallback;
+  }
+  if (!n->is_string()) in.fail(where + key, "must be a string");
+  return *n->value<std::string>();
+}
+
+std::optional<double> TableEntry::number(const char* key) const {
+  const toml::node* n = table.get(key);
+  if (!n) return std::nullopt;
+  if (!(n->is_integer() || n->is_floating_point())) in.fail(where + key, "must be a number");
+  const double v = *n->value<double>();
+  in.check(std::isfinite(v), where + key, "must be finite, got " + format_value(v));
+  return v;
+}
+
+TableArray::TableArray(ConfigReader& in, const std::string& name) : in_(in), name_(name) {
+  const toml::node* n = in.raw(name);
+  if (!n) return;
+  array_ = n->as_array();
+  if (!array_) in.fail(name, "must be an array of tables ([[" + name + "]])");
+}
+
+TableEntry TableArray::operator[](std::size_t i) const {
+  const std::string at = name_ + "[" + std::to_string(i) + "]";
+  const toml::table* t = (*array_)[i].as_table();
+  if (!t) in_.fail(at, "must be a table");
+  return TableEntry{in_, *t, at + "."};
 }
 
 }  // namespace pamsim

@@ -5,7 +5,9 @@
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -96,6 +98,36 @@ class ConfigReader {
   mutable std::set<std::string> asked_;   // has() and is_table() queries
   std::map<std::string, std::string> defaults_;
   std::set<std::string> overridden_;
+};
+
+// One table of an array of tables of a reader's document (the i-th [[parameter]]): typed
+// reads whose messages go through the reader's fail and name "<name>[i].<key>".
+struct TableEntry {
+  ConfigReader& in;
+  const toml::table& table;
+  std::string where;   // "parameter[0]."
+
+  // Refuses a key not in `keys`: "<where><key> is not a key of this table".
+  void allow(std::initializer_list<const char*> keys) const;
+  // A string ("... must be a string"); a missing one is refused if `required`, else `fallback`.
+  std::string text(const char* key, bool required, const std::string& fallback = "") const;
+  // A finite number, or nothing if the key is absent.
+  std::optional<double> number(const char* key) const;
+};
+
+// The array of tables `name` ([[name]]) of a reader's document, marked read; empty if absent.
+// Refuses a value that is not an array ("<name> must be an array of tables ([[name]])") and,
+// when it is asked for, an entry that is not a table ("<name>[i] must be a table").
+class TableArray {
+ public:
+  TableArray(ConfigReader& in, const std::string& name);
+  std::size_t size() const { return array_ ? array_->size() : 0; }
+  TableEntry operator[](std::size_t i) const;
+
+ private:
+  ConfigReader& in_;
+  std::string name_;
+  const toml::array* array_ = nullptr;
 };
 
 // "a.b.c" -> {"a", "b", "c"}: a dotted key's parts.

@@ -1,8 +1,8 @@
-// tune_test.cc: `pamsim tune` (src/sim/sweep/tune.h): the optimiser finds an optimum known
+// tune_test.cc: `pamsim tune` (src/sim/optimize/tune.h): the optimiser finds an optimum known
 // from physics, an interrupted run resumed gives the uninterrupted run's result without
 // evaluating anything twice, the same seed gives the same history, and bad tuning files are
 // refused in one line with no database left.
-#include "sim/sweep/tune.h"
+#include "sim/optimize/tune_outputs.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

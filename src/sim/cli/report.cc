@@ -23,7 +23,7 @@
 #include "sim/io/plot.h"
 #include "sim/io/provenance.h"
 #include "sim/io/staged_outputs.h"
-#include "sim/sweep/tune.h"
+#include "sim/optimize/tune_outputs.h"
 
 namespace pamsim {
 namespace {

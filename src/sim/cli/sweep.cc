@@ -20,6 +20,7 @@
 #include <stdexcept>
 
 #include "base/input_error.h"
+#include "sim/cli/command_database.h"
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/cli/stop_signal.h"
@@ -27,7 +28,7 @@
 #include "sim/io/outputs.h"
 #include "sim/io/provenance.h"
 #include "sim/sweep/results_db.h"
-#include "sim/sweep/sqlite_file.h"
+#include "sim/io/sqlite_file.h"
 #include "sim/core/runner.h"
 #include "sim/sweep/sweep.h"
 #include "sim/sweep/sweep_runner.h"
@@ -63,27 +64,18 @@ void run_sweep_command(const SweepOptions& opt, const RemoteTrials* remote) {
   const int threads = resolve_thread_count(opt.threads);
   const SweepShard shard = opt.shard.empty() ? SweepShard{} : parse_sweep_shard(opt.shard, "--shard");
   const SweepDefinition def = load_sweep(opt.sweep_file);   // everything validated first
-  const std::string out = opt.out.empty()
-      ? "renders/" + std::filesystem::path(opt.sweep_file).stem().string() : opt.out;
   const std::string db_name = shard.whole() ? "sweep.db"
                                             : "sweep.shard-" + std::to_string(shard.index) +
                                                   "-of-" + std::to_string(shard.count) + ".db";
-  const std::string db_path = opt.db.empty() ? out + "/" + db_name : opt.db;
+  const CommandDatabase where = command_database(opt.sweep_file, opt.out, opt.db, db_name);
+  const std::string& db_path = where.path;
   const std::int64_t trials = shard.trials_of(def.trials());
-
-  std::error_code ec;
-  const bool exists = std::filesystem::exists(db_path, ec);
-  // its folder, removed again if the database cannot be made there
-  const std::unique_ptr<FolderGuard> folder = prepare_database_folder(db_path, db_name);
-  ResultsDb db = opt.resume && exists ? ResultsDb::open_to_resume(db_path, def, shard)
+  ResultsDb db = open_in_database_folder(where, db_name, [&] {
+    return opt.resume && where.exists ? ResultsDb::open_to_resume(db_path, def, shard)
                                       : ResultsDb::create(db_path, def, shard);
-  if (folder) folder->keep();
+  });
   if (remote) remote->database_opened();
-  const std::string made_by = db.meta("pamsim_version");
-  if (made_by != PAMSIM_VERSION) {
-    std::cerr << "pamsim sweep: warning: " << db_path << " was started by pamsim " << made_by
-              << ", this is " << PAMSIM_VERSION << "; its trials may not be comparable\n";
-  }
+  warn_if_other_version("sweep", db_path, db.meta("pamsim_version"), "trials");
   std::cerr << "pamsim sweep: " << def.points() << " points x " << def.seeds << " seeds = "
             << def.trials() << " trials (" << sweep_design_name(def.design) << ")";
   if (!shard.whole()) std::cerr << ", shard " << shard.text() << ": " << trials << " trials";
@@ -132,7 +124,7 @@ void run_sweep_command(const SweepOptions& opt, const RemoteTrials* remote) {
   std::cout << db_path << "\n";
   if (!shard.whole()) {
     std::cerr << "pamsim sweep: next, when every shard is done: pamsim merge "
-              << out << "/sweep.db " << out << "/sweep.shard-*-of-" << shard.count << ".db\n";
+              << where.out << "/sweep.db " << where.out << "/sweep.shard-*-of-" << shard.count << ".db\n";
     return;
   }
   std::cerr << "pamsim sweep: next: pamsim export " << db_path << " -o FILE; pamsim report "

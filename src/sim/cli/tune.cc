@@ -1,10 +1,10 @@
 // tune.cc: `pamsim tune TUNE.toml [--db FILE] [--out DIR] [--threads N] [--resume]`: tunes a
-// scenario's settings with pagmo2's CMA-ES or NSGA-II (src/sim/sweep/tune.h), every
+// scenario's settings with pagmo2's CMA-ES or NSGA-II (src/sim/optimize/tune.h), every
 // evaluation stored in SQLite as it finishes; then checks the best setting and the file's
 // references on held-out seeds and writes best.toml, evaluations.csv, convergence.png (and
 // the Pareto front). Everything is validated before the database is created. A killed run
 // keeps every finished evaluation; --resume replays the optimiser with them and goes on.
-#include "sim/sweep/tune.h"
+#include "sim/optimize/tune_outputs.h"
 
 #include <unistd.h>
 
@@ -18,6 +18,7 @@
 #include "base/atomic_file.h"
 #include "base/format.h"
 #include "base/input_error.h"
+#include "sim/cli/command_database.h"
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/cli/stop_signal.h"
@@ -25,7 +26,6 @@
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
 #include "sim/io/staged_outputs.h"
-#include "sim/sweep/sqlite_file.h"
 
 namespace pamsim {
 namespace {
@@ -42,55 +42,31 @@ struct TuneOptions {
   std::string plot_format = "png";
 };
 
-// held_out.csv: one row per setting checked on the held-out seeds
-std::string held_out_csv(const TuneDefinition& def, const std::vector<HeldOutCheck>& checks) {
-  std::string out = "setting";
-  for (const TuneParameter& p : def.parameters) out += "," + p.key;
-  for (const TuneObjective& o : def.objectives) out += "," + o.metric + "_mean";
-  for (const TuneConstraint& c : def.constraints) out += "," + c.metric + "_mean";
-  out += ",violation,trials,ok\n";
-  const auto num = [](double v) { return std::isfinite(v) ? format_shortest(v) : std::string(); };
-  for (const HeldOutCheck& c : checks) {
-    out += c.name;
-    for (double v : c.values) out += "," + num(v);
-    for (double v : c.objectives) out += "," + num(v);
-    for (double v : c.constraints) out += "," + num(v);
-    out +=
-        "," + num(c.violation) + "," + std::to_string(c.trials) + "," + std::to_string(c.ok) + "\n";
-  }
-  return out;
-}
-
 void tune(const TuneOptions& opt) {
   const int threads = resolve_thread_count(opt.threads);
   const TuneDefinition def = load_tune_definition(opt.file);  // everything validated first
-  const std::string out =
-      opt.out.empty() ? "renders/" + std::filesystem::path(opt.file).stem().string() : opt.out;
-  const std::string db_path = opt.db.empty() ? out + "/tune.db" : opt.db;
-  std::error_code ec;
-  const bool exists = std::filesystem::exists(db_path, ec);
-  if (opt.resume && !exists) throw InputError(db_path + ": --resume, but there is no database");
+  const CommandDatabase where = command_database(opt.file, opt.out, opt.db, "tune.db");
+  const std::string& out = where.out;
+  const std::string& db_path = where.path;
+  if (opt.resume && !where.exists) {
+    throw InputError(db_path + ": --resume, but there is no database");
+  }
   // a new tuning does not replace another's outputs silently (a resumed one replaces its own)
-  if (!opt.resume && !exists && !opt.force) refuse_earlier_outputs(out, kTuneOutputs);
+  if (!opt.resume && !where.exists && !opt.force) refuse_earlier_outputs(out, kTuneOutputs);
   use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
-  // its folder, removed again if the database cannot be made there
-  const std::unique_ptr<FolderGuard> folder = prepare_database_folder(db_path, "tune.db");
-  TuneDb db = opt.resume ? TuneDb::open_to_resume(db_path, def) : TuneDb::create(db_path, def);
-  if (folder) folder->keep();
+  TuneDb db = open_in_database_folder(where, "tune.db", [&] {
+    return opt.resume ? TuneDb::open_to_resume(db_path, def) : TuneDb::create(db_path, def);
+  });
 
-  const std::int64_t total = static_cast<std::int64_t>(def.population) * (def.generations + 1);
+  const std::int64_t total = def.search().evaluations();
   std::cerr << "pamsim tune: " << (def.algorithm == TuneAlgorithm::kCmaes ? "CMA-ES" : "NSGA-II")
             << ", " << def.generations << " generations of " << def.population << " (" << total
             << " evaluations) x " << def.seeds * def.noise_scales.size() << " trials each, on "
             << threads << (threads == 1 ? " thread" : " threads") << " into " << db_path << "\n";
   ProgressReporter progress("pamsim tune", total, 0, std::cerr, progress_style(opt.quiet),
                             "evaluations");
-  const std::string made_by = db.meta("pamsim_version");
-  if (made_by != PAMSIM_VERSION) {
-    std::cerr << "pamsim tune: warning: " << db_path << " was started by pamsim " << made_by
-              << ", this is " << PAMSIM_VERSION << "; its evaluations may not be comparable\n";
-  }
+  warn_if_other_version("tune", db_path, db.meta("pamsim_version"), "evaluations");
   StopOnSignal stop_on_signal;
   TuneRunOptions run;
   run.threads = threads;

@@ -13,7 +13,7 @@
 #include "base/input_error.h"
 #include "sim/core/metrics.h"
 #include "sim/sweep/results_db.h"
-#include "sim/sweep/sqlite_file.h"
+#include "sim/io/sqlite_file.h"
 
 namespace pamsim {
 namespace {

@@ -44,6 +44,8 @@ struct SweepAxis {
   bool is_range = false;            // from/to given (random and lhs sample inside it)
   double from = 0, to = 0;
   bool log_scale = false;
+  // The value at fraction u in [0, 1] of the range (geometric on a log scale).
+  double at(double u) const;
 };
 
 struct SweepDefinition {
@@ -96,7 +98,14 @@ struct SweepShard {
 // "<source> must be I/N with 0 <= I < N, got '<text>'" (source names the option).
 SweepShard parse_sweep_shard(const std::string& text, const std::string& source);
 
-// Reads and validates a sweep file, including every point's scenario. Throws InputError
+// The number of points of a grid over `axes` (the product of their levels), or -1 once it
+// exceeds `cap` (the product is never formed past it, so it cannot wrap).
+std::int64_t grid_points(const std::vector<SweepAxis>& axes, std::int64_t cap);
+// Fills def->point_values from its axes and design (the grid row-major, the first axis
+// varying slowest; random and lhs drawn from design_seed).
+void make_points(SweepDefinition* def);
+
+// Reads and validates a sweep file (sweep_file.cc), including every point's scenario. Throws InputError
 // "<file>: <key> <problem>" for the first problem found.
 SweepDefinition load_sweep(const std::string& path);
 

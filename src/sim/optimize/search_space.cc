@@ -1,0 +1,71 @@
+// search_space.cc: see search_space.h.
+#include "sim/optimize/search_space.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "base/config_reader.h"
+#include "base/format.h"
+
+namespace pamsim {
+
+double value_at(const SearchParameter& p, double u) {
+  if (p.log) return std::exp(std::log(p.from) + u * (std::log(p.to) - std::log(p.from)));
+  return p.from + u * (p.to - p.from);
+}
+
+std::vector<std::string> parameter_overrides(const std::vector<std::string>& base,
+                                             const std::vector<SearchParameter>& parameters,
+                                             const std::vector<double>& values) {
+  std::vector<std::string> out = base;
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    out.push_back(parameters[i].key + "=" + format_number(values[i]));
+  }
+  return out;
+}
+
+namespace {
+
+SearchParameter read_parameter(ConfigReader& in, const TableEntry& e,
+                               const std::vector<SearchParameter>& earlier,
+                               const std::vector<std::string>& reserved,
+                               const std::string& reserved_hint) {
+  e.allow({"key", "from", "to", "scale"});
+  SearchParameter p;
+  p.key = e.text("key", true);
+  for (const SearchParameter& q : earlier) {
+    in.check(q.key != p.key, e.where + "key", "names " + p.key + " twice");
+  }
+  in.check(std::find(reserved.begin(), reserved.end(), p.key) == reserved.end(), e.where + "key",
+           "cannot be \"" + p.key + "\": " + reserved_hint);
+  const auto from = e.number("from"), to = e.number("to");
+  if (!from) in.fail(e.where + "from", "is required");
+  if (!to) in.fail(e.where + "to", "is required");
+  p.from = *from;
+  p.to = *to;
+  in.check(p.from < p.to, e.where + "from",
+           "must be below to (" + format_value(p.from) + " >= " + format_value(p.to) + ")");
+  const std::string scale = e.text("scale", false, "linear");
+  in.check(scale == "linear" || scale == "log", e.where + "scale",
+           "must be \"linear\" or \"log\", got \"" + scale + "\"");
+  p.log = scale == "log";
+  in.check(!p.log || p.from > 0.0, e.where + "from",
+           "must be > 0 on a log scale, got " + format_value(p.from));
+  return p;
+}
+
+}  // namespace
+
+std::vector<SearchParameter> read_search_parameters(ConfigReader& in,
+                                                    const std::vector<std::string>& reserved,
+                                                    const std::string& reserved_hint) {
+  std::vector<SearchParameter> out;
+  const TableArray list(in, "parameter");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    out.push_back(read_parameter(in, list[i], out, reserved, reserved_hint));
+  }
+  in.check(!out.empty(), "parameter", "needs at least one [[parameter]]");
+  return out;
+}
+
+}  // namespace pamsim

@@ -1,0 +1,36 @@
+// search_space.h: the free parameters of a search over scenario keys (tuning, identification):
+// each a scenario key with bounds and a scale, searched as a unit box [0, 1]^n that maps to
+// the keys' values, and set on a scenario as `--set`-style overrides. Read from the
+// [[parameter]] tables of a tuning (or identification) file.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace pamsim {
+
+class ConfigReader;
+
+struct SearchParameter {
+  std::string key;               // a scenario key, e.g. "reflex.v_thr_mm_s"
+  double from = 0.0, to = 0.0;   // bounds, from < to
+  bool log = false;              // log scale (from > 0)
+};
+
+// The parameter's value at `u` in [0, 1]: linear, or geometric on a log scale.
+double value_at(const SearchParameter& p, double u);
+
+// `base` followed by "key=value" for each parameter (values in the parameters' order, in
+// their shortest round-trip form).
+std::vector<std::string> parameter_overrides(const std::vector<std::string>& base,
+                                             const std::vector<SearchParameter>& parameters,
+                                             const std::vector<double>& values);
+
+// The [[parameter]] tables (key, from, to, scale = "linear" | "log") of `in`'s document;
+// keys in `reserved` are refused with `reserved_hint` ("use the tuning file's seeds ..."). At
+// least one is required. Throws InputError "<file>: parameter[i].<key> <problem>".
+std::vector<SearchParameter> read_search_parameters(ConfigReader& in,
+                                                    const std::vector<std::string>& reserved,
+                                                    const std::string& reserved_hint);
+
+}  // namespace pamsim

@@ -1,0 +1,294 @@
+// tuning_file.cc: see tuning_file.h.
+#include "sim/optimize/tuning_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "base/config_reader.h"
+#include "base/format.h"
+#include "base/input_error.h"
+#include "base/toml_file.h"
+#include "sim/core/metrics.h"
+#include "sim/core/trial_model.h"
+#include "sim/io/scenario_file.h"
+
+namespace pamsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The metric names the base scenario's trials report.
+std::vector<std::string> base_metric_names(const Scenario& sc) {
+  const TrialModel model = load_trial_model(sc);
+  std::vector<std::string> labels;
+  for (const BoundMuscle& m : model.muscles) labels.push_back(m.label);
+  return metric_names(sc, labels, model.joint.hinge);
+}
+
+// An integer key within [lo, hi] (`what` says why, e.g. " for cmaes").
+std::int64_t bounded_int(ConfigReader& in, const std::string& key, std::int64_t fallback,
+                         std::int64_t lo, std::int64_t hi, const std::string& range_text) {
+  const std::int64_t v = in.get_int(key, fallback);
+  in.check(v >= lo && v <= hi, key, "must be in " + range_text + ", got " + std::to_string(v));
+  return v;
+}
+
+void read_base(ConfigReader& in, TuneDefinition* def) {
+  def->base_path = in.get_path("base", "");
+  in.check(!def->base_path.empty(), "base", "is required (the base scenario file)");
+  // absolute: the stored definition must not depend on the folder pamsim ran from
+  def->base_path = fs::weakly_canonical(fs::absolute(def->base_path)).string();
+  try {
+    def->base_text = read_text_file(def->base_path);
+  } catch (const InputError& e) {
+    in.fail("base", std::string("(") + e.what() + ")");
+  }
+  def->overrides = in.get_string_list("overrides", {});
+}
+
+void read_algorithm(ConfigReader& in, TuneDefinition* def) {
+  const std::string algorithm = in.get_string("algorithm", "cmaes");
+  in.check(algorithm == "cmaes" || algorithm == "nsga2", "algorithm",
+           "must be \"cmaes\" or \"nsga2\", got \"" + algorithm + "\"");
+  def->algorithm = algorithm == "cmaes" ? TuneAlgorithm::kCmaes : TuneAlgorithm::kNsga2;
+  def->generations =
+      static_cast<unsigned>(bounded_int(in, "generations", def->generations, 1, 10000, "[1, 10000]"));
+  const std::int64_t population = in.get_int("population", def->population);
+  if (def->algorithm == TuneAlgorithm::kCmaes) {
+    in.check(population >= 5 && population <= 10000, "population",
+             "must be in [5, 10000] for cmaes, got " + std::to_string(population));
+  } else {
+    in.check(population >= 8 && population <= 10000 && population % 4 == 0, "population",
+             "must be a multiple of 4 in [8, 10000] for nsga2, got " + std::to_string(population));
+  }
+  def->population = static_cast<unsigned>(population);
+  def->seed = static_cast<std::uint64_t>(
+      bounded_int(in, "seed", 1, 0, 4294967295LL, "[0, 2^32 - 1] (pagmo's seeds)"));
+}
+
+void read_trials(ConfigReader& in, TuneDefinition* def) {
+  def->seeds = static_cast<int>(
+      bounded_int(in, "seeds", def->seeds, 1, 1000, "[1, 1000] (an objective needs trials)"));
+  def->noise_scales = in.get_double_list("noise_scales", def->noise_scales);
+  in.check(!def->noise_scales.empty(), "noise_scales", "must hold at least one level");
+  const std::vector<double>& levels = def->noise_scales;
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    const double n = levels[i];
+    in.check(n >= 0.0 && n <= 1000.0, "noise_scales",
+             "must be within [0, 1000], got " + format_value(n));
+    in.check(std::find(levels.begin(), levels.begin() + i, n) == levels.begin() + i,
+             "noise_scales", "names " + format_value(n) + " twice");
+  }
+  def->held_out_seeds = static_cast<int>(
+      bounded_int(in, "held_out_seeds", def->held_out_seeds, 0, 1000, "[0, 1000]"));
+}
+
+// Refuses a metric the base scenario does not report.
+void check_metric(ConfigReader& in, const std::vector<std::string>& metrics,
+                  const std::string& where, const std::string& m) {
+  if (std::find(metrics.begin(), metrics.end(), m) != metrics.end()) return;
+  std::string list;
+  for (const auto& n : metrics) list += (list.empty() ? "" : ", ") + n;
+  in.fail(where, "names no metric of the base scenario: \"" + m + "\" (it has " + list + ")");
+}
+
+void read_objectives(ConfigReader& in, const std::vector<std::string>& metrics,
+                     TuneDefinition* def) {
+  const TableArray list(in, "objective");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const TableEntry e = list[i];
+    e.allow({"metric", "maximize"});
+    TuneObjective o;
+    o.metric = e.text("metric", true);
+    check_metric(in, metrics, e.where + "metric", o.metric);
+    if (const toml::node* n = e.table.get("maximize")) {
+      if (!n->is_boolean()) in.fail(e.where + "maximize", "must be true or false");
+      o.maximize = *n->value<bool>();
+    }
+    def->objectives.push_back(o);
+  }
+  in.check(!def->objectives.empty(), "objective", "needs at least one [[objective]]");
+  in.check(
+      def->algorithm == TuneAlgorithm::kNsga2 || def->objectives.size() == 1, "algorithm",
+      "cmaes minimises one objective; use \"nsga2\" for " + std::to_string(def->objectives.size()));
+}
+
+void read_constraints(ConfigReader& in, const std::vector<std::string>& metrics,
+                      TuneDefinition* def) {
+  const TableArray list(in, "constraint");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const TableEntry e = list[i];
+    e.allow({"metric", "min", "max"});
+    TuneConstraint c;
+    c.metric = e.text("metric", true);
+    check_metric(in, metrics, e.where + "metric", c.metric);
+    if (const auto v = e.number("min")) c.min = *v;
+    if (const auto v = e.number("max")) c.max = *v;
+    in.check(std::isfinite(c.min) || std::isfinite(c.max), e.where + "min", "or max is required");
+    in.check(c.min <= c.max, e.where + "min", "must not exceed max");
+    def->constraints.push_back(c);
+  }
+}
+
+void read_references(ConfigReader& in, TuneDefinition* def) {
+  const TableArray list(in, "reference");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const TableEntry e = list[i];
+    e.allow({"name", "values"});
+    TuneReference r;
+    r.name = e.text("name", true);
+    const toml::array* values = e.table.get("values") ? e.table.get("values")->as_array() : nullptr;
+    if (!values || values->size() != def->parameters.size()) {
+      in.fail(e.where + "values", "must be a list of " + std::to_string(def->parameters.size()) +
+                                      " numbers, one per [[parameter]]");
+    }
+    for (const toml::node& n : *values) {
+      if (!(n.is_integer() || n.is_floating_point())) in.fail(e.where + "values", "must be numbers");
+      const double v = *n.value<double>();
+      in.check(std::isfinite(v), e.where + "values", "must be finite, got " + format_value(v));
+      r.values.push_back(v);
+    }
+    def->references.push_back(r);
+  }
+}
+
+// `values` must make a valid scenario; else "<path>: <what> (<name>): <the scenario's error>".
+void check_setting(const TuneDefinition& def, const std::vector<double>& values,
+                   const std::string& what, const std::string& name) {
+  try {
+    load_scenario_text(def.base_text, def.base_path, def.overrides_at(values));
+  } catch (const InputError& e) {
+    throw InputError(def.file + ": " + what + " (" + name + "): " + e.what());
+  }
+}
+
+// Every reference, and every parameter at both bounds (the others mid-range), must make a
+// valid scenario (a bad key fails here).
+void check_settings(const TuneDefinition& def) {
+  for (std::size_t i = 0; i < def.references.size(); ++i) {
+    check_setting(def, def.references[i].values, "reference[" + std::to_string(i) + "]",
+                  def.references[i].name);
+  }
+  for (std::size_t i = 0; i < def.parameters.size(); ++i) {
+    for (double u : {0.0, 1.0}) {
+      std::vector<double> values;
+      for (const TuneParameter& p : def.parameters) values.push_back(value_at(p, 0.5));
+      values[i] = value_at(def.parameters[i], u);
+      check_setting(def, values, "parameter[" + std::to_string(i) + "]", def.parameters[i].key);
+    }
+  }
+}
+
+}  // namespace
+
+TuneDefinition load_tune_definition(const std::string& path) {
+  ConfigReader in(path);
+  TuneDefinition def;
+  def.file = path;
+  read_base(in, &def);
+  read_algorithm(in, &def);
+  read_trials(in, &def);
+  // the base scenario must load with the overrides, and tells which metrics exist
+  Scenario base;
+  try {
+    base = load_scenario_text(def.base_text, def.base_path, def.overrides);
+  } catch (const InputError& e) {
+    in.fail("base", std::string("(") + e.what() + ")");
+  }
+  const std::vector<std::string> metrics = base_metric_names(base);
+  def.parameters = read_search_parameters(in, {"seed", "sensors.noise_scale"},
+                                          "use the tuning file's seeds / noise_scales");
+  read_objectives(in, metrics, &def);
+  read_constraints(in, metrics, &def);
+  read_references(in, &def);
+  in.reject_unknown();
+  check_settings(def);
+  return def;
+}
+
+std::string TuneDefinition::canonical_json() const {
+  nlohmann::json params = nlohmann::json::array();
+  for (const auto& p : parameters) {
+    params.push_back({{"key", p.key}, {"from", p.from}, {"to", p.to}, {"log", p.log}});
+  }
+  nlohmann::json objs = nlohmann::json::array();
+  for (const auto& o : objectives) objs.push_back({{"metric", o.metric}, {"maximize", o.maximize}});
+  nlohmann::json cons = nlohmann::json::array();
+  for (const auto& c : constraints) {
+    nlohmann::json j = {{"metric", c.metric}};
+    if (std::isfinite(c.min)) j["min"] = c.min;
+    if (std::isfinite(c.max)) j["max"] = c.max;
+    cons.push_back(j);
+  }
+  nlohmann::json refs = nlohmann::json::array();
+  for (const auto& r : references) refs.push_back({{"name", r.name}, {"values", r.values}});
+  const nlohmann::json j = {{"base_scenario", base_text},
+                            {"base_path", base_path},
+                            {"overrides", overrides},
+                            {"algorithm", algorithm == TuneAlgorithm::kCmaes ? "cmaes" : "nsga2"},
+                            {"generations", generations},
+                            {"population", population},
+                            {"seed", seed},
+                            {"seeds", seeds},
+                            {"noise_scales", noise_scales},
+                            {"held_out_seeds", held_out_seeds},
+                            {"parameters", params},
+                            {"objectives", objs},
+                            {"constraints", cons},
+                            {"references", refs}};
+  return j.dump();
+}
+
+namespace {
+
+// The lists of a canonical definition (throws nlohmann::json::exception on a missing field).
+void lists_from_json(const nlohmann::json& j, TuneDefinition* def) {
+  for (const auto& p : j.at("parameters")) {
+    def->parameters.push_back({p.at("key"), p.at("from"), p.at("to"), p.at("log")});
+  }
+  for (const auto& o : j.at("objectives"))
+    def->objectives.push_back({o.at("metric"), o.at("maximize")});
+  for (const auto& c : j.at("constraints")) {
+    TuneConstraint k;
+    k.metric = c.at("metric");
+    if (c.contains("min")) k.min = c.at("min");
+    if (c.contains("max")) k.max = c.at("max");
+    def->constraints.push_back(k);
+  }
+  for (const auto& r : j.at("references")) {
+    def->references.push_back({r.at("name"), r.at("values").get<std::vector<double>>()});
+  }
+}
+
+}  // namespace
+
+TuneDefinition tune_definition_from_json(const std::string& json, const std::string& file,
+                                         const std::string& where) {
+  const auto j = nlohmann::json::parse(json, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) {
+    throw InputError(where + ": its tuning definition cannot be read");
+  }
+  try {
+    TuneDefinition def;
+    def.file = file;
+    def.base_text = j.at("base_scenario").get<std::string>();
+    def.base_path = j.at("base_path").get<std::string>();
+    def.overrides = j.at("overrides").get<std::vector<std::string>>();
+    def.algorithm = j.at("algorithm") == "cmaes" ? TuneAlgorithm::kCmaes : TuneAlgorithm::kNsga2;
+    def.generations = j.at("generations").get<unsigned>();
+    def.population = j.at("population").get<unsigned>();
+    def.seed = j.at("seed").get<std::uint64_t>();
+    def.seeds = j.at("seeds").get<int>();
+    def.noise_scales = j.at("noise_scales").get<std::vector<double>>();
+    def.held_out_seeds = j.at("held_out_seeds").get<int>();
+    lists_from_json(j, &def);
+    return def;
+  } catch (const nlohmann::json::exception& e) {
+    // a damaged database, or one from a pamsim whose definition had other fields
+    throw InputError(where + ": its tuning definition cannot be read (" + e.what() + ")");
+  }
+}
+
+}  // namespace pamsim

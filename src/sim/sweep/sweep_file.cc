@@ -1,0 +1,300 @@
+// sweep_file.cc: reading a sweep file (sweep.h lists its keys) into a SweepDefinition:
+// the design, the base scenario and [fixed], the axes, and the check that the base and every
+// point make a valid scenario with the same metrics, all before anything runs.
+#include "sim/sweep/sweep.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <set>
+
+#include "base/config_reader.h"
+#include "base/format.h"
+#include "base/input_error.h"
+#include "base/toml_file.h"
+#include "sim/core/metrics.h"
+#include "sim/core/trial_model.h"
+#include "sim/io/scenario_file.h"
+
+namespace pamsim {
+namespace {
+
+// Where a problem is: "<file>: axis[<i>].<key>" and the like.
+struct Where {
+  const std::string& file;
+  std::string prefix;
+  [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
+    throw InputError(file + ": " + prefix + key + " " + problem);
+  }
+  void check(bool ok, const std::string& key, const std::string& problem) const {
+    if (!ok) fail(key, problem);
+  }
+};
+
+AxisValue axis_value(const toml::node& n, const Where& where, const std::string& key) {
+  AxisValue v;
+  if (n.is_integer()) {
+    v.kind = AxisValue::Kind::kInteger;
+    v.number = static_cast<double>(*n.value<std::int64_t>());
+  } else if (n.is_floating_point()) {
+    v.number = *n.value<double>();
+    where.check(std::isfinite(v.number), key, "must be finite, got " + format_value(v.number));
+  } else if (n.is_string()) {
+    v.kind = AxisValue::Kind::kString;
+    v.text = *n.value<std::string>();
+  } else if (n.is_boolean()) {
+    v.kind = AxisValue::Kind::kBool;
+    v.flag = *n.value<bool>();
+  } else {
+    where.fail(key, "must be a number, a string or a boolean");
+  }
+  return v;
+}
+
+double number_of(const toml::table& t, const char* key, const Where& where) {
+  const toml::node* n = t.get(key);
+  if (!n || !(n->is_integer() || n->is_floating_point())) where.fail(key, "must be a number");
+  const double v = *n->value<double>();
+  where.check(std::isfinite(v), key, "must be finite, got " + format_value(v));
+  return v;
+}
+
+// A grid level to 12 significant digits, so a log range lists 0.001, not 0.0010000000000000002.
+double tidy(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.12g", v);
+  return std::strtod(buf, nullptr);
+}
+
+// An axis given as a list of values (grid designs only).
+void read_axis_values(const toml::table& t, SweepDesign design, const Where& where,
+                      SweepAxis* axis) {
+  where.check(design == SweepDesign::kGrid, "values",
+              "is for grid designs; random and lhs sample a range (from, to)");
+  const toml::array* list = t["values"].as_array();
+  where.check(list != nullptr, "values", "must be a list");
+  where.check(!list->empty(), "values", "is empty");
+  for (const toml::node& n : *list) axis->values.push_back(axis_value(n, where, "values"));
+  where.check(!t.contains("count") && !t.contains("scale"), "count",
+              "and scale go with from/to, not with values");
+}
+
+// A grid axis's `count` levels over its range, ends exact.
+void read_grid_levels(const toml::table& t, std::int64_t max_trials, const Where& where,
+                      SweepAxis* axis_out) {
+  SweepAxis& axis = *axis_out;
+  const toml::node* count_node = t.get("count");
+  where.check(count_node && count_node->is_integer(), "count", "is required (an integer >= 1)");
+  const std::int64_t count = *count_node->value<std::int64_t>();
+  where.check(count >= 1, "count", "must be >= 1, got " + std::to_string(count));
+  where.check(count > 1 || axis.from == axis.to, "count", "must be >= 2 for a range from != to");
+  where.check(count <= max_trials, "count",
+              "is " + std::to_string(count) + ", more than max_trials = " +
+                  std::to_string(max_trials) + " (raise max_trials to run it)");
+  for (std::int64_t i = 0; i < count; ++i) {
+    AxisValue v;
+    v.number = i == 0 ? axis.from
+             : i == count - 1 ? axis.to
+                              : tidy(axis.at(static_cast<double>(i) / (count - 1)));
+    axis.values.push_back(v);
+  }
+}
+
+SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
+                    std::int64_t max_trials, const std::string& file) {
+  const Where where{file, "axis[" + std::to_string(index) + "]."};
+  static const std::set<std::string> known = {"key", "values", "from", "to", "count", "scale"};
+  for (const auto& [k, _] : t) {
+    if (!known.count(std::string(k.str()))) {
+      where.fail(std::string(k.str()), "is not a sweep axis key (key, values, from, to, count, scale)");
+    }
+  }
+  SweepAxis axis;
+  const auto key = t["key"].value<std::string>();
+  where.check(key.has_value() && !key->empty(), "key", "is required (a scenario key, e.g. "
+              "\"reflex.v_thr_mm_s\")");
+  axis.key = *key;
+  where.check(axis.key != "seed", "key", "cannot be \"seed\": use the sweep's `seeds`");
+
+  const bool has_values = t.contains("values");
+  const bool has_range = t.contains("from") || t.contains("to");
+  where.check(has_values != has_range, "values",
+              "or from/to: give exactly one (a list of values or a range)");
+  if (has_values) {
+    read_axis_values(t, design, where, &axis);
+    return axis;
+  }
+
+  axis.is_range = true;
+  where.check(t.contains("from") && t.contains("to"), "from", "and to are both required");
+  axis.from = number_of(t, "from", where);
+  axis.to = number_of(t, "to", where);
+  const std::string scale = t["scale"].value_or(std::string("linear"));
+  where.check(scale == "linear" || scale == "log", "scale",
+              "must be \"linear\" or \"log\", got \"" + scale + "\"");
+  axis.log_scale = scale == "log";
+  if (axis.log_scale) {
+    where.check(axis.from > 0 && axis.to > 0, "from",
+                "and to must be > 0 on a log scale, got " + format_value(axis.from) + " and " +
+                    format_value(axis.to));
+  }
+  if (design != SweepDesign::kGrid) {
+    where.check(!t.contains("count"), "count", "is for grid designs (random and lhs use samples)");
+    return axis;
+  }
+  read_grid_levels(t, max_trials, where, &axis);
+  return axis;
+}
+
+// "a.b=value" for every leaf of [fixed].
+void flatten_fixed(const toml::table& t, const std::string& prefix, const std::string& file,
+                   std::vector<std::string>* out) {
+  const Where where{file, "fixed."};
+  for (const auto& [k, node] : t) {
+    const std::string key = prefix + std::string(k.str());
+    if (const toml::table* sub = node.as_table()) {
+      flatten_fixed(*sub, key + ".", file, out);
+    } else {
+      out->push_back(key + "=" + axis_value(node, where, key).toml());
+    }
+  }
+}
+
+std::string describe_point(const SweepDefinition& def, std::int64_t point) {
+  std::string s;
+  for (std::size_t a = 0; a < def.axes.size(); ++a) {
+    s += (a ? ", " : "") + def.axes[a].key + " = " + def.value(point, a).toml();
+  }
+  return s;
+}
+
+const std::string kRaise = " (raise max_trials to run it)";
+
+// design, max_trials, seeds, and for random/lhs samples and design_seed
+void read_design(ConfigReader& in, SweepDefinition* def) {
+  const std::string design = in.get_string("design", "grid");
+  if (design == "grid") def->design = SweepDesign::kGrid;
+  else if (design == "random") def->design = SweepDesign::kRandom;
+  else if (design == "lhs") def->design = SweepDesign::kLatinHypercube;
+  else in.fail("design", "must be \"grid\", \"random\" or \"lhs\", got \"" + design + "\"");
+
+  def->max_trials = in.get_int("max_trials", def->max_trials);
+  in.check(def->max_trials >= 1, "max_trials",
+           "must be >= 1, got " + std::to_string(def->max_trials));
+  def->seeds = in.get_int("seeds", 1);
+  in.check(def->seeds >= 1, "seeds", "must be >= 1, got " + std::to_string(def->seeds));
+  in.check(def->seeds <= def->max_trials, "seeds",
+           "is " + std::to_string(def->seeds) + ", more trials than max_trials = " +
+               std::to_string(def->max_trials) + kRaise);
+  if (def->design == SweepDesign::kGrid) {
+    in.check(!in.has("samples"), "samples", "is for random and lhs designs");
+    in.check(!in.has("design_seed"), "design_seed", "is for random and lhs designs");
+    return;
+  }
+  def->samples = in.get_int("samples", 0);
+  in.check(def->samples >= 1, "samples", "must be >= 1 for a " + design + " design, got " +
+                                             std::to_string(def->samples));
+  in.check(def->samples <= def->max_trials / def->seeds, "samples",
+           std::to_string(def->samples) + " x seeds " + std::to_string(def->seeds) +
+               " is more trials than max_trials = " + std::to_string(def->max_trials) + kRaise);
+  const std::int64_t seed = in.get_int("design_seed", 1);
+  in.check(seed >= 0, "design_seed", "must be >= 0, got " + std::to_string(seed));
+  def->design_seed = static_cast<std::uint64_t>(seed);
+}
+
+// base (its text) and [fixed]
+void read_base(ConfigReader& in, SweepDefinition* def) {
+  def->base_path = in.get_path("base", "");
+  in.check(!def->base_path.empty(), "base", "is required (the base scenario file)");
+  try {
+    def->base_text = read_text_file(def->base_path);
+  } catch (const InputError& e) {
+    throw InputError(def->file + ": base: " + e.what());
+  }
+  if (const toml::node* fixed = in.raw("fixed")) {
+    const toml::table* t = fixed->as_table();
+    in.check(t != nullptr, "fixed", "must be a table of scenario keys");
+    flatten_fixed(*t, "", def->file, &def->fixed);
+  }
+}
+
+void read_axes(ConfigReader& in, SweepDefinition* def) {
+  const toml::node* axes = in.raw("axis");
+  in.check(axes != nullptr, "axis", "is required: at least one [[axis]]");
+  const toml::array* list = axes->as_array();
+  in.check(list != nullptr && !list->empty(), "axis", "must be one or more [[axis]] tables");
+  std::set<std::string> keys;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const toml::table* t = (*list)[i].as_table();
+    in.check(t != nullptr, "axis", "must be [[axis]] tables");
+    def->axes.push_back(read_axis(*t, i, def->design, def->max_trials, def->file));
+    in.check(keys.insert(def->axes.back().key).second, "axis",
+             "names " + def->axes.back().key + " twice");
+  }
+}
+
+// A grid's points x seeds within max_trials, the product checked factor by factor (it could
+// wrap to 0 or below).
+void check_grid_size(ConfigReader& in, const SweepDefinition& def) {
+  if (def.design != SweepDesign::kGrid) return;
+  if (grid_points(def.axes, def.max_trials / def.seeds) >= 0) return;
+  double product = 1;   // for the message only
+  for (const auto& a : def.axes) product *= static_cast<double>(a.values.size());
+  in.fail("max_trials", "is " + std::to_string(def.max_trials) + ", fewer than the grid's " +
+                            format_value(product) + " points (" + std::to_string(def.axes.size()) +
+                            " axes) x " + std::to_string(def.seeds) + " seeds" + kRaise);
+}
+
+// The base scenario, then every point, must validate and bind to its model before anything
+// runs (a model is loaded again only where a point changes it); every point must summarise
+// its trials in the same metrics (the columns).
+void check_points(SweepDefinition* def) {
+  Scenario bound;
+  TrialModel model;
+  const auto names_of = [&](const Scenario& sc) {
+    if (&sc == &bound || !same_trial_model(sc, bound)) {
+      model = load_trial_model(sc);
+      bound = sc;
+    }
+    std::vector<std::string> labels;
+    for (const BoundMuscle& m : model.muscles) labels.push_back(m.label);
+    return metric_names(sc, labels, model.joint.hinge);
+  };
+  try {
+    bound = load_scenario_text(def->base_text, def->base_path, def->fixed);
+    def->metric_names = names_of(bound);
+  } catch (const InputError& e) {
+    throw InputError(def->file + ": base scenario: " + e.what());
+  }
+  def->base_seed = bound.seed;
+  for (std::int64_t p = 0; p < def->points(); ++p) {
+    try {
+      const Scenario point = load_scenario_text(def->base_text, def->base_path, def->overrides(p));
+      if (names_of(point) != def->metric_names) {
+        throw InputError("changes the metrics or the muscles' labels, which a sweep's columns "
+                         "cannot follow");
+      }
+    } catch (const InputError& e) {
+      throw InputError(def->file + ": point " + std::to_string(p) + " (" +
+                       describe_point(*def, p) + "): " + e.what());
+    }
+  }
+}
+
+}  // namespace
+
+SweepDefinition load_sweep(const std::string& path) {
+  ConfigReader in(path);
+  SweepDefinition def;
+  def.file = path;
+  read_design(in, &def);
+  read_base(in, &def);
+  read_axes(in, &def);
+  in.reject_unknown();
+  check_grid_size(in, def);
+  make_points(&def);
+  check_points(&def);
+  return def;
+}
+
+}  // namespace pamsim
