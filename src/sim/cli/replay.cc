@@ -86,6 +86,19 @@ std::string first_difference(const std::map<std::string, DbValue>& stored,
   return "";
 }
 
+// The overrides that make a point's scenario, with the trial's seed.
+std::vector<std::string> trial_overrides(const ResultsDb& db, const SweepSummary& sweep,
+                                         std::int64_t point, std::uint64_t seed) {
+  const PointSummary* at = nullptr;
+  for (const PointSummary& p : sweep.points) {
+    if (p.point == point) at = &p;
+  }
+  if (at == nullptr) throw InputError(db.path() + ": point " + std::to_string(point) + " is missing");
+  std::vector<std::string> overrides = point_overrides(sweep, *at);
+  overrides.push_back("seed=" + std::to_string(seed));
+  return overrides;
+}
+
 void replay(const ReplayOptions& opt) {
   const auto started = std::chrono::steady_clock::now();
   const std::string started_utc = utc_timestamp();
@@ -95,13 +108,7 @@ void replay(const ReplayOptions& opt) {
   const std::map<std::string, DbValue> row = stored_row(db, opt.trial);
   const auto point = static_cast<std::int64_t>(row.at("point").number);
   const auto seed = static_cast<std::uint64_t>(row.at("seed").number);
-  const PointSummary* at = nullptr;
-  for (const PointSummary& p : sweep.points) {
-    if (p.point == point) at = &p;
-  }
-  if (at == nullptr) throw InputError(db.path() + ": point " + std::to_string(point) + " is missing");
-  std::vector<std::string> overrides = point_overrides(sweep, *at);
-  overrides.push_back("seed=" + std::to_string(seed));
+  const std::vector<std::string> overrides = trial_overrides(db, sweep, point, seed);
 
   const std::string out = !opt.out.empty() ? opt.out
       : (fs::path(opt.db).parent_path() / (fs::path(opt.db).stem().string() + "_trial_" +

@@ -9,6 +9,7 @@
 #include "sim/sweep/report.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -62,16 +63,19 @@ std::string stats_text(const MetricStats& m) {
   return buf;
 }
 
+// --out, or the database's folder
+std::string report_folder(const ReportOptions& opt) {
+  if (!opt.out.empty()) return opt.out;
+  const std::string folder = std::filesystem::path(opt.db).parent_path().string();
+  return folder.empty() ? "." : folder;
+}
+
 // A tuning database (pamsim tune): its evaluations, best setting and figures.
 void report_tune(const ReportOptions& opt) {
   const TuneDb db = TuneDb::open_existing(opt.db);
   const TuneDefinition def = tune_definition_from_db(db);
   const std::vector<TuneEvaluation> history = db.evaluations();
-  std::string out = opt.out;
-  if (out.empty()) {
-    out = std::filesystem::path(opt.db).parent_path().string();
-    if (out.empty()) out = ".";
-  }
+  const std::string out = report_folder(opt);
   if (!opt.force) refuse_earlier_outputs(out, kTuneReportOutputs);
   use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
@@ -90,6 +94,63 @@ void report_tune(const ReportOptions& opt) {
             << (def.objectives.size() > 1 ? ",pareto.csv,pareto.png" : "") << "}\n";
 }
 
+// The best point by --metric: printed, and best.toml written; nullptr if none qualifies.
+const PointSummary* report_best_point(const ReportOptions& opt, const SweepSummary& sweep,
+                                      const StagedOutputs& staged, const std::string& out) {
+  const PointSummary* best = best_point(sweep, opt.metric);
+  std::cout << "criterion: " << best_criterion(sweep, opt.metric) << "\n";
+  if (!best) {
+    std::cout << "best: no point meets the criterion\n";
+    return nullptr;
+  }
+  std::string setting;
+  for (std::size_t a = 0; a < sweep.axis_keys.size(); ++a) {
+    setting += (a ? ", " : "") + sweep.axis_keys[a] + " = " + best->axis_values[a];
+  }
+  std::cout << "best: point " << best->point << ": " << setting << "\n";
+  for (const std::string& name :
+       {opt.metric, std::string("recovery_time_s"), std::string("first_trigger_time_s"),
+        std::string("impact_time_s")}) {
+    const int m = sweep.metric_index(name);
+    if (m >= 0) std::cout << "  " << name << " " << stats_text(best->metrics[m]) << "\n";
+  }
+  const std::string header = "# Best setting of the sweep " + sweep.sweep_file + " (database " +
+                             opt.db + "):\n# " + best_criterion(sweep, opt.metric) +
+                             ".\n# Point " + std::to_string(best->point) + ": " + setting +
+                             ".\n# Written by pamsim report from the base scenario " +
+                             sweep.base_path + ".\n\n";
+  write_file_atomically(staged.path("best.toml"), point_scenario_toml(sweep, *best, out, header));
+  std::cout << "  scenario: " << out << "/best.toml (pamsim run " << out << "/best.toml)\n";
+  return best;
+}
+
+// A heat map of each headline metric the sweep has (mistrip rate, peak drop, recovery time)
+// and of --metric, over the first two axes; false (and says why) when there are none.
+bool write_heat_maps(const ReportOptions& opt, const SweepSummary& sweep,
+                     const PointSummary* best, const StagedOutputs& staged, bool plots) {
+  if (!plots) {
+    std::cout << "heat maps: none (no plots)\n";
+    return false;
+  }
+  if (sweep.axis_keys.size() < 2) {
+    std::cout << "heat maps: none (the sweep has one axis; see points.csv)\n";
+    return false;
+  }
+  std::vector<std::string> maps;
+  for (const std::string& metric : {std::string("mistrip_rate"), std::string("peak_drop_deg"),
+                                    std::string("recovery_time_s"), opt.metric}) {
+    const bool listed = std::find(maps.begin(), maps.end(), metric) != maps.end();
+    // the mistrip rate comes from the reflex metrics' mistrips count
+    const bool has = sweep.metric_index(metric == "mistrip_rate" ? "mistrips" : metric) >= 0;
+    if (!listed && has) maps.push_back(metric);
+  }
+  for (const auto& metric : maps) {
+    write_heatmap(staged.path("heatmap_" + metric + ".png"),
+                  sweep_heat_map(sweep, metric, best, opt.metric));
+  }
+  return true;
+}
+
 void report(const ReportOptions& opt) {
   if (TuneDb::is_tune_database(opt.db)) return report_tune(opt);
   const auto started = std::chrono::steady_clock::now();
@@ -101,11 +162,7 @@ void report(const ReportOptions& opt) {
     for (const auto& n : sweep.metric_names) names += (names.empty() ? "" : ", ") + n;
     throw InputError("--metric " + opt.metric + ": not a sweep metric (one of " + names + ")");
   }
-  std::string out = opt.out;
-  if (out.empty()) {
-    out = std::filesystem::path(opt.db).parent_path().string();
-    if (out.empty()) out = ".";
-  }
+  const std::string out = report_folder(opt);
   if (!opt.force) refuse_earlier_outputs(out, kSweepReportOutputs);
   use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
@@ -119,53 +176,8 @@ void report(const ReportOptions& opt) {
     write_file_atomically(staged.path("points.csv"),
                           points_csv(sweep, opt.metric, opt.all_columns));
 
-    const PointSummary* best = best_point(sweep, opt.metric);
-    std::cout << "criterion: " << best_criterion(sweep, opt.metric) << "\n";
-    if (best) {
-      std::string setting;
-      for (std::size_t a = 0; a < sweep.axis_keys.size(); ++a) {
-        setting += (a ? ", " : "") + sweep.axis_keys[a] + " = " + best->axis_values[a];
-      }
-      std::cout << "best: point " << best->point << ": " << setting << "\n";
-      for (const std::string& name :
-           {opt.metric, std::string("recovery_time_s"), std::string("first_trigger_time_s"),
-            std::string("impact_time_s")}) {
-        const int m = sweep.metric_index(name);
-        if (m >= 0) std::cout << "  " << name << " " << stats_text(best->metrics[m]) << "\n";
-      }
-      const std::string header = "# Best setting of the sweep " + sweep.sweep_file + " (database " +
-                                 opt.db +
-                                 "):\n"
-                                 "# " +
-                                 best_criterion(sweep, opt.metric) +
-                                 ".\n"
-                                 "# Point " +
-                                 std::to_string(best->point) + ": " + setting +
-                                 ".\n"
-                                 "# Written by pamsim report from the base scenario " +
-                                 sweep.base_path + ".\n\n";
-      write_file_atomically(staged.path("best.toml"),
-                            point_scenario_toml(sweep, *best, out, header));
-      std::cout << "  scenario: " << out << "/best.toml (pamsim run " << out << "/best.toml)\n";
-    } else {
-      std::cout << "best: no point meets the criterion\n";
-    }
-
-    if (!plots) {
-      std::cout << "heat maps: none (no plots)\n";
-      return;
-    }
-    if (sweep.axis_keys.size() < 2) {
-      std::cout << "heat maps: none (the sweep has one axis; see points.csv)\n";
-      return;
-    }
-    std::vector<std::string> maps = {"mistrip_rate", "peak_drop_deg", "recovery_time_s"};
-    if (opt.metric != "peak_drop_deg" && opt.metric != "recovery_time_s")
-      maps.push_back(opt.metric);
-    for (const auto& metric : maps) {
-      write_heatmap(staged.path("heatmap_" + metric + ".png"),
-                    sweep_heat_map(sweep, metric, best, opt.metric));
-    }
+    const PointSummary* best = report_best_point(opt, sweep, staged, out);
+    if (!write_heat_maps(opt, sweep, best, staged, plots)) return;
     std::cout << "outputs: " << out << "/{points.csv,heatmap_*.png" << (best ? ",best.toml" : "")
               << "}\n";
   });

@@ -87,6 +87,94 @@ int report_diverged(const Scenario& sc, const std::vector<TrialResult>& results)
   return n;
 }
 
+// --from DIR: the earlier run's scenario.toml with its overrides, then this run's; warns
+// when an input or the build changed since. Returns the file to read.
+std::string take_earlier_run(RunOptions& opt, Provenance* provenance) {
+  if (!opt.scenario.empty()) {
+    throw InputError("--from " + opt.from + " runs that folder's scenario.toml; drop " +
+                     opt.scenario + " (or drop --from)");
+  }
+  const Provenance earlier = read_provenance(opt.from);
+  provenance->scenario_file = earlier.scenario_file;
+  provenance->from = opt.from;
+  // relative to the first run's scenario file: its overrides, then this run's
+  provenance->overrides = earlier.overrides;
+  provenance->overrides.insert(provenance->overrides.end(), opt.overrides.begin(),
+                               opt.overrides.end());
+  for (const std::string& change : changed_inputs(earlier.inputs)) {
+    std::cerr << "pamsim: warning: " << change << " since the run in " << opt.from
+              << "; its outputs may differ\n";
+  }
+  const BuildInfo now = build_info();
+  if (earlier.pamsim_version != now.pamsim_version || earlier.git_commit != now.git_commit) {
+    std::cerr << "pamsim: warning: " << opt.from << " was made by pamsim "
+              << earlier.pamsim_version << " (" << earlier.git_commit << "), this is "
+              << now.pamsim_version << " (" << now.git_commit
+              << "); its outputs may differ where the physics or defaults changed\n";
+  }
+  if (!opt.trials_given) opt.trials = static_cast<int>(earlier.seeds.size());
+  return (fs::path(opt.from) / kResolvedScenarioFile).string();
+}
+
+// --video FILE, checked before anything runs (a single trial, a file, the GL backend)
+VideoOptions video_options_of(const RunOptions& opt) {
+  VideoOptions video;
+  if (opt.video.empty()) return video;
+  if (opt.trials != 1) {
+    throw InputError("--video renders a single trial; drop --trials " +
+                     std::to_string(opt.trials) + " (or use pamsim render)");
+  }
+  if (opt.video == "-") {
+    throw InputError("--video -: run prints its summary on standard output; give a file (or "
+                     "pamsim render -o - for the video alone)");
+  }
+  video.mp4_path = opt.video;
+  refuse_existing_file(video.mp4_path, opt.force);
+  video.backend = choose_gl_backend("");
+  if (video.backend == GlBackend::kEgl) video.egl_device = choose_egl_device(-1);
+  validate_video_options(video, "--video");
+  return video;
+}
+
+std::vector<TrialResult> run_trials_of(const RunOptions& opt, const TrialModel& model,
+                                       const Scenario& sc, int threads, const VideoOptions& video) {
+  if (!opt.video.empty()) {
+    // the same trial as run_trials' first, watched by the renderer
+    return {run_rendered_trial(model, sc, sc.seed, video, true).trial};
+  }
+  // a bar for several trials (one is over in a blink)
+  ProgressReporter progress("pamsim run", opt.trials, 0, std::cerr,
+                            opt.trials > 1 ? progress_style(opt.quiet) : ProgressStyle::kQuiet);
+  std::vector<TrialResult> results = run_trials(model, sc, opt.trials, threads, true,
+                                                [&](int done) { progress.update(done); });
+  progress.finish(opt.trials);
+  return results;
+}
+
+// The trials' outputs into the staging folder; returns the summary printed on stdout.
+nlohmann::json write_run_outputs(const StagedOutputs& staged, const std::vector<TrialResult>& results,
+                                 const Scenario& sc, bool plots) {
+  if (results.size() == 1) {
+    const TrialResult& r = results.front();
+    write_trial_outputs(staged.staging(), r, sc);
+    if (plots) write_angle_plot(staged.path(trial_plot_name(r.trajectory)), r, sc);
+    return summary_to_json(r.summary, sc, false);
+  }
+  std::vector<TrialSummary> summaries;
+  std::vector<const Trajectory*> trajectories;
+  for (const auto& r : results) {
+    char name[32];
+    std::snprintf(name, sizeof(name), "trial_%04d", static_cast<int>(r.summary.seed - sc.seed));
+    write_trial_outputs(staged.path(name), r, sc);
+    summaries.push_back(r.summary);
+    trajectories.push_back(&r.trajectory);
+  }
+  nlohmann::json printed = aggregate_summaries(summaries, sc);
+  write_file_atomically(staged.path("summary.json"), printed.dump(2) + "\n");
+  if (plots) write_angle_band_plot(staged.path("angle_band.png"), trajectories, sc);
+  return printed;
+}
+
 void run(RunOptions opt) {
   const auto started = std::chrono::steady_clock::now();
   Provenance provenance;
@@ -95,30 +183,7 @@ void run(RunOptions opt) {
   provenance.overrides = opt.overrides;
   std::string scenario_path = opt.scenario;   // the file read
   if (!opt.from.empty()) {
-    if (!opt.scenario.empty()) {
-      throw InputError("--from " + opt.from + " runs that folder's scenario.toml; drop " +
-                       opt.scenario + " (or drop --from)");
-    }
-    const Provenance earlier = read_provenance(opt.from);
-    scenario_path = (fs::path(opt.from) / kResolvedScenarioFile).string();
-    provenance.scenario_file = earlier.scenario_file;
-    provenance.from = opt.from;
-    // relative to the first run's scenario file: its overrides, then this run's
-    provenance.overrides = earlier.overrides;
-    provenance.overrides.insert(provenance.overrides.end(), opt.overrides.begin(),
-                                opt.overrides.end());
-    for (const std::string& change : changed_inputs(earlier.inputs)) {
-      std::cerr << "pamsim: warning: " << change << " since the run in " << opt.from
-                << "; its outputs may differ\n";
-    }
-    const BuildInfo now = build_info();
-    if (earlier.pamsim_version != now.pamsim_version || earlier.git_commit != now.git_commit) {
-      std::cerr << "pamsim: warning: " << opt.from << " was made by pamsim "
-                << earlier.pamsim_version << " (" << earlier.git_commit << "), this is "
-                << now.pamsim_version << " (" << now.git_commit
-                << "); its outputs may differ where the physics or defaults changed\n";
-    }
-    if (!opt.trials_given) opt.trials = static_cast<int>(earlier.seeds.size());
+    scenario_path = take_earlier_run(opt, &provenance);
   } else {
     if (opt.scenario.empty()) throw InputError("run needs a scenario file, or --from DIR");
     provenance.scenario_file = opt.scenario;
@@ -126,22 +191,7 @@ void run(RunOptions opt) {
   if (opt.trials < 1) throw InputError("--trials must be >= 1, got " + std::to_string(opt.trials));
   const int threads = resolve_thread_count(opt.threads);
   provenance.threads = opt.video.empty() ? std::min(threads, opt.trials) : 1;
-  VideoOptions video;
-  if (!opt.video.empty()) {
-    if (opt.trials != 1) {
-      throw InputError("--video renders a single trial; drop --trials " +
-                       std::to_string(opt.trials) + " (or use pamsim render)");
-    }
-    if (opt.video == "-") {
-      throw InputError("--video -: run prints its summary on standard output; give a file (or "
-                       "pamsim render -o - for the video alone)");
-    }
-    video.mp4_path = opt.video;
-    refuse_existing_file(video.mp4_path, opt.force);
-    video.backend = choose_gl_backend("");
-    if (video.backend == GlBackend::kEgl) video.egl_device = choose_egl_device(-1);
-    validate_video_options(video, "--video");
-  }
+  const VideoOptions video = video_options_of(opt);
   const std::string out = !opt.out.empty() ? opt.out
                           : !opt.from.empty() ? fs::path(opt.from).lexically_normal().string() + "_rerun"
                                               : default_out_dir(opt.scenario, opt.overrides);
@@ -164,44 +214,14 @@ void run(RunOptions opt) {
   // every output is written into a staging folder and published together at the end: a
   // failure half way leaves the folder as it was (made only once every input is good)
   StagedOutputs staged(out, kRunOutputs);
-  std::vector<TrialResult> results;
-  if (opt.video.empty()) {
-    // a bar for several trials (one is over in a blink)
-    ProgressReporter progress("pamsim run", opt.trials, 0, std::cerr,
-                              opt.trials > 1 ? progress_style(opt.quiet) : ProgressStyle::kQuiet);
-    results = run_trials(model, sc, opt.trials, threads, true,
-                         [&](int done) { progress.update(done); });
-    progress.finish(opt.trials);
-  } else {
-    // the same trial as run_trials' first, watched by the renderer
-    results.push_back(run_rendered_trial(model, sc, sc.seed, video, true).trial);
-  }
+  const std::vector<TrialResult> results = run_trials_of(opt, model, sc, threads, video);
   for (const TrialResult& r : results) {
     provenance.seeds.push_back(r.summary.seed);
     provenance.trials.push_back(timing_of(r.summary));
   }
-
   nlohmann::json printed;
   staged.write([&] {
-    if (opt.trials == 1) {
-      const TrialResult& r = results.front();
-      write_trial_outputs(staged.staging(), r, sc);
-      if (plots) write_angle_plot(staged.path(trial_plot_name(r.trajectory)), r, sc);
-      printed = summary_to_json(r.summary, sc, false);
-    } else {
-      std::vector<TrialSummary> summaries;
-      std::vector<const Trajectory*> trajectories;
-      for (const auto& r : results) {
-        char name[32];
-        std::snprintf(name, sizeof(name), "trial_%04d", static_cast<int>(r.summary.seed - sc.seed));
-        write_trial_outputs(staged.path(name), r, sc);
-        summaries.push_back(r.summary);
-        trajectories.push_back(&r.trajectory);
-      }
-      printed = aggregate_summaries(summaries, sc);
-      write_file_atomically(staged.path("summary.json"), printed.dump(2) + "\n");
-      if (plots) write_angle_band_plot(staged.path("angle_band.png"), trajectories, sc);
-    }
+    printed = write_run_outputs(staged, results, sc, plots);
     write_file_atomically(staged.path(kResolvedScenarioFile), recorded.resolved_toml);
     write_provenance(staged.path(kProvenanceFile), provenance, started);
   });

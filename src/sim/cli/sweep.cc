@@ -58,6 +58,38 @@ struct RemoteTrials {
   std::function<SweepRunResult(const SweepDefinition&, ResultsDb&, const SweepRunOptions&)> run;
 };
 
+// What ran, and what to do next: finish an interrupted sweep, merge shards, or report.
+void report_sweep_run(const SweepOptions& opt, const SweepRunResult& r, const SweepShard& shard,
+                      const CommandDatabase& where, std::int64_t trials) {
+  const std::string& db_path = where.path;
+  const std::int64_t stored = r.already_done + r.ran;
+  char rate[32];
+  std::snprintf(rate, sizeof(rate), "%.1f", r.wall_time_s > 0 ? r.ran / r.wall_time_s : 0.0);
+  std::cerr << "pamsim sweep: " << r.ran << " trials run in " << format_duration(r.wall_time_s)
+            << " (" << rate << " trials/s)";
+  if (r.already_done > 0) std::cerr << ", " << r.already_done << " stored before";
+  if (r.diverged > 0) std::cerr << "; " << r.diverged << " diverged or failed (see their status)";
+  std::cerr << "\n";
+  if (r.interrupted) {
+    const std::string finish = std::to_string(stored) + " of " + std::to_string(trials) +
+                               " trials stored; finish with: pamsim sweep " + opt.sweep_file +
+                               " --db " + db_path +
+                               (shard.whole() ? "" : " --shard " + shard.text()) + " --resume";
+    if (!r.incomplete_reason.empty()) throw std::runtime_error(r.incomplete_reason + "; " + finish);
+    std::cerr << "pamsim sweep: interrupted with " << finish << "\n";
+    throw CommandExit(128 + stop_signal());   // the shell's code for that signal
+  }
+  std::cout << db_path << "\n";
+  if (!shard.whole()) {
+    std::cerr << "pamsim sweep: next, when every shard is done: pamsim merge "
+              << where.out << "/sweep.db " << where.out << "/sweep.shard-*-of-" << shard.count
+              << ".db\n";
+    return;
+  }
+  std::cerr << "pamsim sweep: next: pamsim export " << db_path << " -o FILE; pamsim report "
+            << db_path << "\n";
+}
+
 // The sweep on this machine's threads, or with `remote` (when not null).
 void run_sweep_command(const SweepOptions& opt, const RemoteTrials* remote) {
   const std::string started_utc = utc_timestamp();
@@ -105,30 +137,7 @@ void run_sweep_command(const SweepOptions& opt, const RemoteTrials* remote) {
                         {"interrupted", r.interrupted},
                         {"build", build_info_json()}});
 
-  char rate[32];
-  std::snprintf(rate, sizeof(rate), "%.1f", r.wall_time_s > 0 ? r.ran / r.wall_time_s : 0.0);
-  std::cerr << "pamsim sweep: " << r.ran << " trials run in " << format_duration(r.wall_time_s)
-            << " (" << rate << " trials/s)";
-  if (r.already_done > 0) std::cerr << ", " << r.already_done << " stored before";
-  if (r.diverged > 0) std::cerr << "; " << r.diverged << " diverged or failed (see their status)";
-  std::cerr << "\n";
-  if (r.interrupted) {
-    const std::string finish = std::to_string(stored) + " of " + std::to_string(trials) +
-                               " trials stored; finish with: pamsim sweep " + opt.sweep_file +
-                               " --db " + db_path +
-                               (shard.whole() ? "" : " --shard " + shard.text()) + " --resume";
-    if (!r.incomplete_reason.empty()) throw std::runtime_error(r.incomplete_reason + "; " + finish);
-    std::cerr << "pamsim sweep: interrupted with " << finish << "\n";
-    throw CommandExit(128 + stop_signal());   // the shell's code for that signal
-  }
-  std::cout << db_path << "\n";
-  if (!shard.whole()) {
-    std::cerr << "pamsim sweep: next, when every shard is done: pamsim merge "
-              << where.out << "/sweep.db " << where.out << "/sweep.shard-*-of-" << shard.count << ".db\n";
-    return;
-  }
-  std::cerr << "pamsim sweep: next: pamsim export " << db_path << " -o FILE; pamsim report "
-            << db_path << "\n";
+  report_sweep_run(opt, r, shard, where, trials);
 }
 
 #ifdef PAMSIM_HAVE_MPI

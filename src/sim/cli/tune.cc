@@ -42,38 +42,46 @@ struct TuneOptions {
   std::string plot_format = "png";
 };
 
-void tune(const TuneOptions& opt) {
-  const int threads = resolve_thread_count(opt.threads);
-  const TuneDefinition def = load_tune_definition(opt.file);  // everything validated first
-  const CommandDatabase where = command_database(opt.file, opt.out, opt.db, "tune.db");
-  const std::string& out = where.out;
-  const std::string& db_path = where.path;
-  if (opt.resume && !where.exists) {
-    throw InputError(db_path + ": --resume, but there is no database");
+// The checks of settings as a table on stdout, under `what`.
+void print_checks(const TuneDefinition& def, const std::vector<HeldOutCheck>& checks,
+                  const std::string& what) {
+  std::ostringstream table;
+  table << what << ":\n";
+  for (const HeldOutCheck& c : checks) {
+    table << "  " << c.name << ":";
+    for (std::size_t i = 0; i < c.values.size(); ++i) {
+      table << (i ? ", " : " ") << def.parameters[i].key << " = " << format_value(c.values[i]);
+    }
+    for (std::size_t i = 0; i < c.objectives.size(); ++i) {
+      table << "; " << def.objectives[i].metric << " " << format_value(c.objectives[i]);
+    }
+    for (std::size_t i = 0; i < c.constraints.size(); ++i) {
+      table << "; " << def.constraints[i].metric << " " << format_value(c.constraints[i]);
+    }
+    table << (c.violation == 0.0 ? "" : " (breaks a constraint)") << "\n";
   }
-  // a new tuning does not replace another's outputs silently (a resumed one replaces its own)
-  if (!opt.resume && !where.exists && !opt.force) refuse_earlier_outputs(out, kTuneOutputs);
-  use_plot_formats(opt.plot_format);
-  const bool plots = plots_wanted(opt.no_plot);
-  TuneDb db = open_in_database_folder(where, "tune.db", [&] {
-    return opt.resume ? TuneDb::open_to_resume(db_path, def) : TuneDb::create(db_path, def);
-  });
+  std::cout << table.str();
+}
 
+// The search itself, with progress (under the caller's StopOnSignal); a stop leaves the
+// database to --resume.
+TuneRunResult run_search_command(const TuneOptions& opt, const TuneDefinition& def, TuneDb& db,
+                                 const CommandDatabase& where, int threads) {
   const std::int64_t total = def.search().evaluations();
   std::cerr << "pamsim tune: " << (def.algorithm == TuneAlgorithm::kCmaes ? "CMA-ES" : "NSGA-II")
             << ", " << def.generations << " generations of " << def.population << " (" << total
             << " evaluations) x " << def.seeds * def.noise_scales.size() << " trials each, on "
-            << threads << (threads == 1 ? " thread" : " threads") << " into " << db_path << "\n";
+            << threads << (threads == 1 ? " thread" : " threads") << " into " << where.path
+            << "\n";
   ProgressReporter progress("pamsim tune", total, 0, std::cerr, progress_style(opt.quiet),
                             "evaluations");
-  warn_if_other_version("tune", db_path, db.meta("pamsim_version"), "evaluations");
-  StopOnSignal stop_on_signal;
+  warn_if_other_version("tune", where.path, db.meta("pamsim_version"), "evaluations");
   TuneRunOptions run;
   run.threads = threads;
   run.stop = &stop_requested();
   std::int64_t calls = 0;
   run.on_evaluation = [&](std::int64_t done, std::int64_t, bool) { progress.update(calls = done); };
-  const TuneRunResult r = run_tune(def, db, run);
+  TuneRunResult r = run_tune(def, db, run);
   progress.finish(calls);
   if (r.cached > 0) {
     std::cerr << "pamsim tune: " << r.cached
@@ -82,52 +90,59 @@ void tune(const TuneOptions& opt) {
   if (r.interrupted) {
     std::cerr << "pamsim tune: interrupted with " << r.history.size()
               << " evaluations stored; finish with: pamsim tune " << opt.file << " --db "
-              << db_path << " --out " << out << " --resume\n";
+              << where.path << " --out " << where.out << " --resume\n";
     throw CommandExit(128 + stop_signal());
   }
+  return r;
+}
 
-  // the outputs are published together once all are written (tune.db stays where it is)
-  StagedOutputs staged(out, kTuneOutputs);
-  staged.write([&] { write_tune_outputs(def, r.history, staged, plots); });
-  const TuneEvaluation* best = best_evaluation(r.history);
+// The best and the references, on the tuning seeds and on held-out ones: tuning_seeds.csv,
+// held_out.csv and their tables on stdout.
+void check_settings(const TuneDefinition& def, const std::vector<TuneEvaluation>& history,
+                    const StagedOutputs& staged, int threads) {
+  const TuneEvaluation* best = best_evaluation(history);
   std::vector<TuneReference> settings = {
       {"tuned (evaluation " + std::to_string(best->index) + ")", best->values}};
   settings.insert(settings.end(), def.references.begin(), def.references.end());
-  // the best and the references, on the tuning seeds and on held-out ones
-  const auto print_checks = [&](const std::vector<HeldOutCheck>& checks, const std::string& what) {
-    std::ostringstream table;
-    table << what << ":\n";
-    for (const HeldOutCheck& c : checks) {
-      table << "  " << c.name << ":";
-      for (std::size_t i = 0; i < c.values.size(); ++i) {
-        table << (i ? ", " : " ") << def.parameters[i].key << " = " << format_value(c.values[i]);
-      }
-      for (std::size_t i = 0; i < c.objectives.size(); ++i) {
-        table << "; " << def.objectives[i].metric << " " << format_value(c.objectives[i]);
-      }
-      for (std::size_t i = 0; i < c.constraints.size(); ++i) {
-        table << "; " << def.constraints[i].metric << " " << format_value(c.constraints[i]);
-      }
-      table << (c.violation == 0.0 ? "" : " (breaks a constraint)") << "\n";
-    }
-    std::cout << table.str();
-  };
   const std::vector<HeldOutCheck> on_tuning = check_held_out(def, settings, threads, true);
   staged.write([&] {
     write_file_atomically(staged.path("tuning_seeds.csv"), held_out_csv(def, on_tuning));
   });
-  print_checks(on_tuning, "on the tuning seeds (" + std::to_string(def.seeds) + " seeds x " +
-                              std::to_string(def.noise_scales.size()) + " noise levels)");
+  print_checks(def, on_tuning, "on the tuning seeds (" + std::to_string(def.seeds) +
+                                   " seeds x " + std::to_string(def.noise_scales.size()) +
+                                   " noise levels)");
   if (def.held_out_seeds > 0) {
     const std::vector<HeldOutCheck> checks = check_held_out(def, settings, threads);
     staged.write(
         [&] { write_file_atomically(staged.path("held_out.csv"), held_out_csv(def, checks)); });
-    print_checks(checks, "held-out check (" + std::to_string(def.held_out_seeds) + " seeds x " +
-                             std::to_string(def.noise_scales.size()) +
-                             " noise levels, not used in tuning)");
+    print_checks(def, checks, "held-out check (" + std::to_string(def.held_out_seeds) +
+                                  " seeds x " + std::to_string(def.noise_scales.size()) +
+                                  " noise levels, not used in tuning)");
   }
+}
+
+void tune(const TuneOptions& opt) {
+  const int threads = resolve_thread_count(opt.threads);
+  const TuneDefinition def = load_tune_definition(opt.file);  // everything validated first
+  const CommandDatabase where = command_database(opt.file, opt.out, opt.db, "tune.db");
+  if (opt.resume && !where.exists) {
+    throw InputError(where.path + ": --resume, but there is no database");
+  }
+  // a new tuning does not replace another's outputs silently (a resumed one replaces its own)
+  if (!opt.resume && !where.exists && !opt.force) refuse_earlier_outputs(where.out, kTuneOutputs);
+  use_plot_formats(opt.plot_format);
+  const bool plots = plots_wanted(opt.no_plot);
+  TuneDb db = open_in_database_folder(where, "tune.db", [&] {
+    return opt.resume ? TuneDb::open_to_resume(where.path, def) : TuneDb::create(where.path, def);
+  });
+  StopOnSignal stop_on_signal;   // until the end: a signal stops the search, not the checks
+  const TuneRunResult r = run_search_command(opt, def, db, where, threads);
+  // the outputs are published together once all are written (tune.db stays where it is)
+  StagedOutputs staged(where.out, kTuneOutputs);
+  staged.write([&] { write_tune_outputs(def, r.history, staged, plots); });
+  check_settings(def, r.history, staged, threads);
   staged.publish();
-  std::cout << "outputs: " << out << "/{best.toml,evaluations.csv,convergence.png"
+  std::cout << "outputs: " << where.out << "/{best.toml,evaluations.csv,convergence.png"
             << (def.objectives.size() > 1 ? ",pareto.csv,pareto.png" : "")
             << ",tuning_seeds.csv" << (def.held_out_seeds > 0 ? ",held_out.csv" : "") << "}\n";
 }

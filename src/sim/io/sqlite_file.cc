@@ -190,9 +190,10 @@ SqliteDb SqliteDb::open(const std::string& path, DbAccess access, const std::str
   return SqliteDb(open_sqlite_file(path, access, what), path);
 }
 
-SqliteDb SqliteDb::open_new(const std::string& tmp, const std::string& what) {
+SqliteDb SqliteDb::open_new(const std::string& tmp, const std::string& what, bool uri_attach) {
   sqlite3* db = nullptr;
-  const int rc = sqlite3_open_v2(tmp.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr);
+  const int flags = SQLITE_OPEN_READWRITE | (uri_attach ? SQLITE_OPEN_URI : 0);
+  const int rc = sqlite3_open_v2(tmp.c_str(), &db, flags, nullptr);
   if (rc != SQLITE_OK) {
     const std::string why = db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
     sqlite3_close(db);

@@ -70,9 +70,11 @@ class SqliteDb {
   SqliteDb() = default;
   // The existing database `path` (open_sqlite_file's rules; `what` names it in messages).
   static SqliteDb open(const std::string& path, DbAccess access, const std::string& what);
-  // The empty file `tmp` that create_sqlite_file made, read-write, to be filled. Throws
-  // InputError "<tmp>: cannot open the <what> (<why>)".
-  static SqliteDb open_new(const std::string& tmp, const std::string& what);
+  // The empty file `tmp` that create_sqlite_file made, read-write, to be filled; with
+  // `uri_attach`, ATTACH takes URIs (a read-only part: read_only_uri). Throws InputError
+  // "<tmp>: cannot open the <what> (<why>)".
+  static SqliteDb open_new(const std::string& tmp, const std::string& what,
+                           bool uri_attach = false);
 
   SqliteDb(SqliteDb&& other) noexcept;
   SqliteDb& operator=(SqliteDb&& other) noexcept;

@@ -60,18 +60,13 @@ void check_part(const std::string& part, const PartSchema& got, const PartSchema
   if (got.trials != want.trials) refuse("states another trial count");
 }
 
-// The merged database at `path` (a temp file), open for writing.
+// The merged database at `path` (a temp file), open for writing. Its errors are SQLite's
+// words alone: the caller names the part being read or the database being made.
 class MergedDb {
  public:
-  explicit MergedDb(const std::string& path) {
-    if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_URI, nullptr) !=
-        SQLITE_OK) {
-      fail();
-    }
-  }
-  ~MergedDb() { sqlite3_close(db_); }
-  MergedDb(const MergedDb&) = delete;
-  MergedDb& operator=(const MergedDb&) = delete;
+  explicit MergedDb(const std::string& path)
+      : file_(SqliteDb::open_new(path, "merged sweep database", /*uri_attach=*/true)),
+        db_(file_.get()) {}
 
   void exec(const std::string& sql) {
     if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, nullptr) != SQLITE_OK) fail();
@@ -96,7 +91,8 @@ class MergedDb {
   [[noreturn]] void fail() const { throw std::runtime_error(sqlite3_errmsg(db_)); }
 
  private:
-  sqlite3* db_ = nullptr;
+  SqliteDb file_;
+  sqlite3* db_;
 };
 
 // The columns two runs of one trial agree on: all but the timing metrics.
@@ -158,6 +154,90 @@ void check_and_count_part(MergedDb& db, const std::string& part, bool first,
   result.per_part.push_back(db.integer("SELECT COUNT(*) FROM part.trials"));
 }
 
+// Every part's runs (with their builds) and git commit, not only the first's.
+void gather_part_meta(MergedDb& db, const std::string& part, nlohmann::json* invocations,
+                      std::set<std::string>* commits) {
+  const std::string key = "invocations";
+  Statement runs = db.query("SELECT value FROM part.meta WHERE key = ?", &key);
+  if (sqlite3_step(runs.get()) == SQLITE_ROW) {
+    const nlohmann::json part_runs = nlohmann::json::parse(
+        reinterpret_cast<const char*>(sqlite3_column_text(runs.get(), 0)), nullptr, false);
+    for (nlohmann::json run : part_runs.is_array() ? part_runs : nlohmann::json::array()) {
+      run["part"] = part;
+      invocations->push_back(run);
+    }
+  }
+  runs.reset();
+  const std::string commit_key = "git_commit";
+  Statement commit = db.query("SELECT value FROM part.meta WHERE key = ?", &commit_key);
+  if (sqlite3_step(commit.get()) == SQLITE_ROW) {
+    commits->insert(reinterpret_cast<const char*>(sqlite3_column_text(commit.get(), 0)));
+  }
+}
+
+void write_merged_meta(MergedDb& db, const std::vector<std::string>& parts,
+                       const nlohmann::json& invocations, const std::set<std::string>& commits) {
+  nlohmann::json merged_from = nlohmann::json::array();
+  for (const std::string& part : parts) merged_from.push_back(part);
+  std::string commit_list;   // one, or the parts' different ones
+  for (const std::string& c : commits) commit_list += (commit_list.empty() ? "" : ", ") + c;
+  for (const auto& [key, value] :
+       {std::pair<std::string, std::string>{"created_utc", utc_timestamp()},
+        {"merged_from", merged_from.dump()},
+        {"invocations", invocations.dump()},
+        {"git_commit", commit_list}}) {
+    Statement put = db.query("INSERT INTO main.meta VALUES (?, ?)", &key);
+    sqlite3_bind_text(put.get(), 2, value.c_str(), -1, SQLITE_TRANSIENT);
+    db.step_done(put);
+  }
+}
+
+// the trials in no part: their count, and the first few
+void note_missing_trials(MergedDb& db, const PartSchema& schema, MergeResult& result) {
+  result.merged = db.integer("SELECT COUNT(*) FROM main.trials");
+  if (schema.trials < 0) return;
+  result.missing = schema.trials - result.merged;
+  Statement ids = db.query("SELECT trial FROM main.trials ORDER BY trial");
+  std::int64_t expected = 0;
+  const auto note_gap_until = [&](std::int64_t end) {
+    for (; expected < end && result.first_missing.size() < 10; ++expected) {
+      result.first_missing.push_back(expected);
+    }
+    expected = end + 1;
+  };
+  while (result.first_missing.size() < 10 && sqlite3_step(ids.get()) == SQLITE_ROW) {
+    note_gap_until(sqlite3_column_int64(ids.get(), 0));
+  }
+  note_gap_until(schema.trials);
+}
+
+// The merged database built in the temp file `tmp`, part by part.
+void fill_merged(const std::string& tmp, const std::vector<std::string>& parts,
+                 const PartSchema& schema, MergeResult& result) {
+  MergedDb db(tmp);
+  // built in one go: a failure discards the temp file, so no journal is needed until the end
+  db.exec("PRAGMA journal_mode=OFF; PRAGMA synchronous=OFF;");
+  const std::string compare = deterministic_columns(schema.columns);
+  nlohmann::json invocations = nlohmann::json::array();
+  std::set<std::string> commits;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    // what is read from the part and fails names the part (a file cut short, say)
+    try {
+      check_and_count_part(db, parts[i], i == 0, schema, compare, result);
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::runtime_error& e) {
+      throw InputError(parts[i] + ": cannot read its trials (" + e.what() + ")");
+    }
+    db.exec("INSERT OR IGNORE INTO main.trials SELECT * FROM part.trials");
+    gather_part_meta(db, parts[i], &invocations, &commits);
+    db.exec("DETACH DATABASE part");
+  }
+  write_merged_meta(db, parts, invocations, commits);
+  note_missing_trials(db, schema, result);
+  db.exec("PRAGMA journal_mode=WAL;");
+}
+
 }  // namespace
 
 MergeResult merge_sweep_databases(const std::string& out, const std::vector<std::string>& parts) {
@@ -179,78 +259,8 @@ MergeResult merge_sweep_databases(const std::string& out, const std::vector<std:
   MergeResult result;
   result.trials = schema.trials;
   result.sweep_file = schema.sweep_file;
-  create_sqlite_file(
-      out, "merged sweep database", "merge into a new file", [&](const std::string& tmp) {
-        MergedDb db(tmp);
-        // built in one go: a failure discards the temp file, so no journal is needed until the end
-        db.exec("PRAGMA journal_mode=OFF; PRAGMA synchronous=OFF;");
-        const std::string compare = deterministic_columns(schema.columns);
-        nlohmann::json invocations = nlohmann::json::array();
-        std::set<std::string> commits;
-        for (std::size_t i = 0; i < parts.size(); ++i) {
-          // what is read from the part and fails names the part (a file cut short, say)
-          try {
-            check_and_count_part(db, parts[i], i == 0, schema, compare, result);
-          } catch (const InputError&) {
-            throw;
-          } catch (const std::runtime_error& e) {
-            throw InputError(parts[i] + ": cannot read its trials (" + e.what() + ")");
-          }
-          db.exec("INSERT OR IGNORE INTO main.trials SELECT * FROM part.trials");
-          // every part's runs (with their builds) and commits, not only the first's
-          const std::string key = "invocations";
-          Statement runs = db.query("SELECT value FROM part.meta WHERE key = ?", &key);
-          if (sqlite3_step(runs.get()) == SQLITE_ROW) {
-            const nlohmann::json part_runs = nlohmann::json::parse(
-                reinterpret_cast<const char*>(sqlite3_column_text(runs.get(), 0)), nullptr, false);
-            for (nlohmann::json run : part_runs.is_array() ? part_runs : nlohmann::json::array()) {
-              run["part"] = parts[i];
-              invocations.push_back(run);
-            }
-          }
-          runs.reset();
-          const std::string commit_key = "git_commit";
-          Statement commit = db.query("SELECT value FROM part.meta WHERE key = ?", &commit_key);
-          if (sqlite3_step(commit.get()) == SQLITE_ROW) {
-            commits.insert(reinterpret_cast<const char*>(sqlite3_column_text(commit.get(), 0)));
-          }
-          commit.reset();
-          db.exec("DETACH DATABASE part");
-        }
-
-        nlohmann::json merged_from = nlohmann::json::array();
-        for (const std::string& part : parts) merged_from.push_back(part);
-        std::string commit_list;   // one, or the parts' different ones
-        for (const std::string& c : commits) commit_list += (commit_list.empty() ? "" : ", ") + c;
-        for (const auto& [key, value] :
-             {std::pair<std::string, std::string>{"created_utc", utc_timestamp()},
-              {"merged_from", merged_from.dump()},
-              {"invocations", invocations.dump()},
-              {"git_commit", commit_list}}) {
-          Statement put = db.query("INSERT INTO main.meta VALUES (?, ?)", &key);
-          sqlite3_bind_text(put.get(), 2, value.c_str(), -1, SQLITE_TRANSIENT);
-          db.step_done(put);
-        }
-
-        // the trials in no part: their count, and the first few
-        result.merged = db.integer("SELECT COUNT(*) FROM main.trials");
-        if (schema.trials >= 0) {
-          result.missing = schema.trials - result.merged;
-          Statement ids = db.query("SELECT trial FROM main.trials ORDER BY trial");
-          std::int64_t expected = 0;
-          const auto note_gap_until = [&](std::int64_t end) {
-            for (; expected < end && result.first_missing.size() < 10; ++expected) {
-              result.first_missing.push_back(expected);
-            }
-            expected = end + 1;
-          };
-          while (result.first_missing.size() < 10 && sqlite3_step(ids.get()) == SQLITE_ROW) {
-            note_gap_until(sqlite3_column_int64(ids.get(), 0));
-          }
-          note_gap_until(schema.trials);
-        }
-        db.exec("PRAGMA journal_mode=WAL;");
-      });
+  create_sqlite_file(out, "merged sweep database", "merge into a new file",
+                     [&](const std::string& tmp) { fill_merged(tmp, parts, schema, result); });
   return result;
 }
 

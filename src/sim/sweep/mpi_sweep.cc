@@ -1,12 +1,9 @@
-// mpi_sweep.cc: see mpi_sweep.h. Two messages, both byte buffers:
-//   kTagReport  worker -> 0: want (trials it asks for; 0 none; -1 it is done), the sweep's
-//               fingerprint, a load error (empty when fine), then finished trial records
-//               (trial, seed, status, message, every metric as 8 raw bytes: bit for bit)
-//   kTagWork    0 -> worker (only when want > 0): trial numbers; none means no more
-// Rank 0 polls with MPI_Iprobe and a short sleep rather than a blocking receive, which in
-// Open MPI spins a core the workers on its node need.
-#include "sim/io/provenance.h"
+// mpi_sweep.cc: see mpi_sweep.h: the session, rank 0 handing out trials and storing what
+// comes back, and the worker ranks running them (the messages: mpi_messages.h). Rank 0
+// polls with MPI_Iprobe and a short sleep rather than a blocking receive, which in Open MPI
+// spins a core the workers on its node need.
 #include "sim/sweep/mpi_sweep.h"
+#include "sim/sweep/mpi_messages.h"
 
 #include <mpi.h>
 
@@ -24,129 +21,14 @@
 #include <vector>
 
 namespace pamsim {
+
+using namespace mpi;   // the messages
+
 namespace {
 
-constexpr int kTagReport = 1;
-constexpr int kTagWork = 2;
 constexpr auto kPollInterval = std::chrono::milliseconds(1);
 constexpr auto kReportInterval = std::chrono::milliseconds(200);   // results sent at least this often
 constexpr auto kDrainLimit = std::chrono::milliseconds(100);       // rank 0 commits at least this often
-
-void check(int rc, const char* call) {
-  if (rc != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + call + " failed");
-}
-
-// FNV-1a of the sweep's canonical definition: every rank must run the same sweep.
-std::uint64_t fingerprint(const SweepDefinition& sweep) { return fnv1a64(sweep.canonical_json()); }
-
-// ---- the byte format -----------------------------------------------------------------
-
-class Writer {
- public:
-  template <typename T>
-  void put(const T& v) {
-    const auto* p = reinterpret_cast<const char*>(&v);
-    bytes_.insert(bytes_.end(), p, p + sizeof(T));
-  }
-  void put(const std::string& s) {
-    put(static_cast<std::uint64_t>(s.size()));
-    bytes_.insert(bytes_.end(), s.begin(), s.end());
-  }
-  const std::vector<char>& bytes() const { return bytes_; }
-
- private:
-  std::vector<char> bytes_;
-};
-
-class Reader {
- public:
-  explicit Reader(const std::vector<char>& bytes) : bytes_(bytes) {}
-  template <typename T>
-  T get() {
-    T v;
-    need(sizeof(T));
-    std::memcpy(&v, bytes_.data() + at_, sizeof(T));
-    at_ += sizeof(T);
-    return v;
-  }
-  std::string get_string() {
-    const auto n = static_cast<std::size_t>(get<std::uint64_t>());
-    need(n);
-    std::string s(bytes_.data() + at_, n);
-    at_ += n;
-    return s;
-  }
-  bool done() const { return at_ == bytes_.size(); }
-
- private:
-  void need(std::size_t n) const {
-    if (n > bytes_.size() - at_) throw std::runtime_error("MPI: a message was cut short");
-  }
-  const std::vector<char>& bytes_;
-  std::size_t at_ = 0;
-};
-
-struct Report {
-  std::int64_t want = 0;
-  std::uint64_t fingerprint = 0;
-  std::string load_error;
-  std::vector<TrialRecord> records;
-};
-
-std::vector<char> encode(const Report& r, const SweepDefinition& sweep) {
-  Writer w;
-  w.put(r.want);
-  w.put(r.fingerprint);
-  w.put(r.load_error);
-  w.put(static_cast<std::uint64_t>(r.records.size()));
-  for (const TrialRecord& t : r.records) {
-    w.put(t.trial);
-    w.put(t.summary.seed);
-    w.put(t.summary.status);
-    w.put(t.summary.message);
-    for (const std::string& name : sweep.metric_names) w.put(t.summary.metric(name));
-  }
-  return w.bytes();
-}
-
-Report decode(const std::vector<char>& bytes, const SweepDefinition& sweep) {
-  Reader in(bytes);
-  Report r;
-  r.want = in.get<std::int64_t>();
-  r.fingerprint = in.get<std::uint64_t>();
-  r.load_error = in.get_string();
-  const auto n = in.get<std::uint64_t>();
-  for (std::uint64_t i = 0; i < n; ++i) {
-    TrialRecord t;
-    t.trial = in.get<std::int64_t>();
-    if (t.trial < 0 || t.trial >= sweep.trials()) throw std::runtime_error("MPI: a bad trial");
-    t.point = t.trial / sweep.seeds;
-    t.seed_index = t.trial % sweep.seeds;
-    t.summary.seed = in.get<std::uint64_t>();
-    t.summary.status = in.get_string();
-    t.summary.message = in.get_string();
-    for (const std::string& name : sweep.metric_names) {
-      t.summary.metrics.push_back({name, in.get<double>(), false});
-    }
-    r.records.push_back(std::move(t));
-  }
-  if (!in.done()) throw std::runtime_error("MPI: a message is longer than its content");
-  return r;
-}
-
-void send_bytes(const std::vector<char>& bytes, int to, int tag) {
-  check(MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, to, tag,
-                 MPI_COMM_WORLD), "MPI_Send");
-}
-
-std::vector<char> receive_bytes(const MPI_Status& status) {
-  int n = 0;
-  check(MPI_Get_count(&status, MPI_BYTE, &n), "MPI_Get_count");
-  std::vector<char> bytes(static_cast<std::size_t>(n));
-  check(MPI_Recv(bytes.data(), n, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
-                 MPI_STATUS_IGNORE), "MPI_Recv");
-  return bytes;
-}
 
 }  // namespace
 
@@ -186,36 +68,49 @@ void MpiSession::abort(int code) const {
 
 // ---- rank 0 --------------------------------------------------------------------------
 
-SweepRunResult coordinate_mpi_sweep(const MpiSession& mpi, const SweepDefinition& sweep,
-                                    ResultsDb& db, const SweepRunOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  const std::int64_t total = sweep.trials();
-  const std::vector<bool> finished = db.finished_trials(total);
-  SweepRunResult result;
-  for (bool f : finished) result.already_done += f ? 1 : 0;
-  const std::uint64_t expected = fingerprint(sweep);
+namespace {
 
-  std::int64_t next = 0;   // the next trial to consider handing out
-  auto hand_out = [&](std::int64_t want) {
-    std::vector<std::int64_t> trials;
-    if (options.stop && options.stop->load()) return trials;
-    for (; next < total && static_cast<std::int64_t>(trials.size()) < want; ++next) {
-      if (options.shard.holds(next) && !finished[static_cast<std::size_t>(next)]) {
-        trials.push_back(next);
+// Rank 0's side of the job: hands trials out as workers ask, stores what they report.
+class Coordinator {
+ public:
+  Coordinator(const MpiSession& mpi, const SweepDefinition& sweep, ResultsDb& db,
+              const SweepRunOptions& options)
+      : mpi_(mpi), sweep_(sweep), db_(db), options_(options), total_(sweep.trials()),
+        finished_(db.finished_trials(total_)), expected_(fingerprint(sweep)),
+        workers_left_(mpi.size() - 1) {
+    for (bool f : finished_) result_.already_done += f ? 1 : 0;
+  }
+
+  SweepRunResult run() {
+    const auto start = std::chrono::steady_clock::now();
+    while (workers_left_ > 0) {
+      drain();
+      if (!batch_.empty()) {
+        store_trials(sweep_, db_, batch_, options_, result_);
+      } else {
+        std::this_thread::sleep_for(kPollInterval);
       }
     }
-    return trials;
-  };
+    result_.interrupted =
+        result_.already_done + result_.ran < options_.shard.trials_of(total_);
+    if (result_.interrupted && !(options_.stop && options_.stop->load())) {
+      result_.incomplete_reason =
+          !refused_.empty() ? std::to_string(refused_.size()) + " of " +
+                                  std::to_string(mpi_.size() - 1) +
+                                  " worker ranks ran no trials (" + first_refusal_ + ")"
+                            : "a worker rank stopped before its trials were done";
+    }
+    result_.wall_time_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result_;
+  }
 
-  int workers_left = mpi.size() - 1;
-  std::set<int> refused;   // ranks that run no trials (said once)
-  std::string first_refusal;
-  std::vector<TrialRecord> batch;
-  while (workers_left > 0) {
-    // what has arrived, answered at once; then one commit for all of it (at most one report
-    // per worker and 100 ms between commits, so a busy job still commits steadily)
+ private:
+  // what has arrived, answered at once; then one commit for all of it (at most one report
+  // per worker and 100 ms between commits, so a busy job still commits steadily)
+  void drain() {
     const auto drain_start = std::chrono::steady_clock::now();
-    for (int drained = 0; drained < mpi.size() - 1 &&
+    for (int drained = 0; drained < mpi_.size() - 1 &&
                           std::chrono::steady_clock::now() - drain_start < kDrainLimit;
          ++drained) {
       int arrived = 0;
@@ -223,134 +118,189 @@ SweepRunResult coordinate_mpi_sweep(const MpiSession& mpi, const SweepDefinition
       check(MPI_Iprobe(MPI_ANY_SOURCE, kTagReport, MPI_COMM_WORLD, &arrived, &status),
             "MPI_Iprobe");
       if (!arrived) break;
-      Report report = decode(receive_bytes(status), sweep);
-      const int from = status.MPI_SOURCE;
-      std::int64_t want = report.want;
-      if (!report.load_error.empty() || report.fingerprint != expected) {
-        if (refused.insert(from).second) {   // said once; it gets no trials
-          const std::string why = report.load_error.empty()
-                                      ? "its sweep file differs from rank 0's"
-                                      : report.load_error;
-          std::cerr << "pamsim sweep: rank " << from << " runs no trials: " << why << "\n";
-          if (first_refusal.empty()) first_refusal = "rank " + std::to_string(from) + ": " + why;
-        }
-        if (want > 0) send_bytes({}, from, kTagWork);
-        want = want > 0 ? 0 : want;
-      }
-      for (TrialRecord& r : report.records) batch.push_back(std::move(r));
-      if (want > 0) {
-        const std::vector<std::int64_t> trials = hand_out(want);
-        std::vector<char> bytes(trials.size() * sizeof(std::int64_t));
-        if (!trials.empty()) std::memcpy(bytes.data(), trials.data(), bytes.size());
-        send_bytes(bytes, from, kTagWork);
-      }
-      if (want == -1) --workers_left;
-    }
-    if (!batch.empty()) {
-      store_trials(sweep, db, batch, options, result);
-    } else {
-      std::this_thread::sleep_for(kPollInterval);
+      answer(decode(receive_bytes(status), sweep_), status.MPI_SOURCE);
     }
   }
+
+  void answer(Report report, int from) {
+    std::int64_t want = report.want;
+    if (!report.load_error.empty() || report.fingerprint != expected_) {
+      if (refused_.insert(from).second) {   // said once; it gets no trials
+        const std::string why = report.load_error.empty()
+                                    ? "its sweep file differs from rank 0's"
+                                    : report.load_error;
+        std::cerr << "pamsim sweep: rank " << from << " runs no trials: " << why << "\n";
+        if (first_refusal_.empty()) first_refusal_ = "rank " + std::to_string(from) + ": " + why;
+      }
+      if (want > 0) send_bytes({}, from, kTagWork);
+      want = want > 0 ? 0 : want;
+    }
+    for (TrialRecord& r : report.records) batch_.push_back(std::move(r));
+    if (want > 0) {
+      const std::vector<std::int64_t> trials = hand_out(want);
+      std::vector<char> bytes(trials.size() * sizeof(std::int64_t));
+      if (!trials.empty()) std::memcpy(bytes.data(), trials.data(), bytes.size());
+      send_bytes(bytes, from, kTagWork);
+    }
+    if (want == -1) --workers_left_;
+  }
+
+  // up to `want` trials of this shard not yet finished, none once a stop is asked for
+  std::vector<std::int64_t> hand_out(std::int64_t want) {
+    std::vector<std::int64_t> trials;
+    if (options_.stop && options_.stop->load()) return trials;
+    for (; next_ < total_ && static_cast<std::int64_t>(trials.size()) < want; ++next_) {
+      if (options_.shard.holds(next_) && !finished_[static_cast<std::size_t>(next_)]) {
+        trials.push_back(next_);
+      }
+    }
+    return trials;
+  }
+
+  const MpiSession& mpi_;
+  const SweepDefinition& sweep_;
+  ResultsDb& db_;
+  const SweepRunOptions& options_;
+  const std::int64_t total_;
+  const std::vector<bool> finished_;
+  const std::uint64_t expected_;
+  int workers_left_;
+  std::int64_t next_ = 0;     // the next trial to consider handing out
+  std::set<int> refused_;     // ranks that run no trials (said once)
+  std::string first_refusal_;
+  std::vector<TrialRecord> batch_;
+  SweepRunResult result_;
+};
+
+}  // namespace
+
+SweepRunResult coordinate_mpi_sweep(const MpiSession& mpi, const SweepDefinition& sweep,
+                                    ResultsDb& db, const SweepRunOptions& options) {
+  SweepRunResult result = Coordinator(mpi, sweep, db, options).run();
   mpi.workers_done_ = true;
-  result.interrupted = result.already_done + result.ran < options.shard.trials_of(total);
-  if (result.interrupted && !(options.stop && options.stop->load())) {
-    result.incomplete_reason =
-        !refused.empty() ? std::to_string(refused.size()) + " of " +
-                               std::to_string(mpi.size() - 1) + " worker ranks ran no trials (" +
-                               first_refusal + ")"
-                         : "a worker rank stopped before its trials were done";
-  }
-  result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
 // ---- ranks 1..N-1 --------------------------------------------------------------------
 
-void work_mpi_sweep(const MpiSession& /*mpi*/, const SweepDefinition& sweep, int threads,
-                    const std::atomic<bool>* stop, const std::string& load_error) {
-  std::mutex mutex;
-  std::condition_variable changed;
-  std::deque<std::int64_t> todo;
-  std::vector<TrialRecord> outbox;
-  bool no_more = !load_error.empty();
-  int running_threads = 0;
+namespace {
 
-  auto worker = [&] {
-    SweepTrialRunner runner(sweep);
-    std::unique_lock<std::mutex> lock(mutex);
+// A worker rank: `threads` threads run the trials in `todo`, the main thread talks to rank 0
+// (results out, trials in, asking ahead so no thread waits).
+class WorkerRank {
+ public:
+  WorkerRank(const SweepDefinition& sweep, int threads, const std::atomic<bool>* stop,
+             const std::string& load_error)
+      : sweep_(sweep), threads_(threads), stop_(stop), no_more_(!load_error.empty()) {
+    report_.fingerprint = fingerprint(sweep);
+    report_.load_error = load_error;
+  }
+
+  void run() {
+    if (report_.load_error.empty()) {
+      running_threads_ = threads_;
+      for (int i = 0; i < threads_; ++i) pool_.emplace_back([this] { run_trials(); });
+    }
+    try {
+      talk_to_rank_0();
+    } catch (...) {
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        no_more_ = true;
+        todo_.clear();
+        changed_.notify_all();
+      }
+      for (auto& t : pool_) t.join();
+      throw;
+    }
+    for (auto& t : pool_) t.join();
+  }
+
+ private:
+  void run_trials() {
+    SweepTrialRunner runner(sweep_);
+    std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
-      changed.wait(lock, [&] { return !todo.empty() || no_more; });
-      if (todo.empty()) break;
-      const std::int64_t t = todo.front();
-      todo.pop_front();
+      changed_.wait(lock, [&] { return !todo_.empty() || no_more_; });
+      if (todo_.empty()) break;
+      const std::int64_t t = todo_.front();
+      todo_.pop_front();
       lock.unlock();
       TrialRecord record = runner.run(t);
       lock.lock();
-      outbox.push_back(std::move(record));
-      changed.notify_all();
+      outbox_.push_back(std::move(record));
+      changed_.notify_all();
     }
-    --running_threads;
-    changed.notify_all();
-  };
-  std::vector<std::thread> pool;
-  if (load_error.empty()) {
-    running_threads = threads;
-    for (int i = 0; i < threads; ++i) pool.emplace_back(worker);
+    --running_threads_;
+    changed_.notify_all();
   }
 
-  // the main thread talks to rank 0: results out, trials in, asking ahead so no thread waits
-  const std::int64_t ahead = 2 * static_cast<std::int64_t>(threads);
-  Report report;
-  report.fingerprint = fingerprint(sweep);
-  report.load_error = load_error;
-  try {
+  void talk_to_rank_0() {
     for (bool first = true;; first = false) {
-      bool done = false;
-      {
-        std::unique_lock<std::mutex> lock(mutex);
-        changed.wait_for(lock, kReportInterval, [&] {
-          return first || !outbox.empty() || running_threads == 0 ||
-                 (!no_more && static_cast<std::int64_t>(todo.size()) < threads) ||
-                 (stop && stop->load() && !no_more);
-        });
-        if (stop && stop->load() && !no_more) {   // the trials running finish; no new ones
-          no_more = true;
-          todo.clear();
-          changed.notify_all();
-        }
-        report.records.swap(outbox);
-        outbox.clear();
-        done = running_threads == 0;
-        report.want = done ? -1 : no_more ? 0 : std::max<std::int64_t>(0, ahead - static_cast<std::int64_t>(todo.size()));
-      }
-      if (report.want == 0 && report.records.empty()) continue;
-      send_bytes(encode(report, sweep), 0, kTagReport);
-      report.records.clear();
+      const bool done = take_report(first);
+      if (report_.want == 0 && report_.records.empty()) continue;
+      send_bytes(encode(report_, sweep_), 0, kTagReport);
+      report_.records.clear();
       if (done) break;
-      if (report.want > 0) {
-        MPI_Status status;
-        check(MPI_Probe(0, kTagWork, MPI_COMM_WORLD, &status), "MPI_Probe");
-        const std::vector<char> bytes = receive_bytes(status);
-        std::vector<std::int64_t> trials(bytes.size() / sizeof(std::int64_t));
-        if (!trials.empty()) std::memcpy(trials.data(), bytes.data(), bytes.size());
-        std::lock_guard<std::mutex> lock(mutex);
-        if (trials.empty()) no_more = true;
-        todo.insert(todo.end(), trials.begin(), trials.end());
-        changed.notify_all();
-      }
+      if (report_.want > 0) receive_work();
     }
-  } catch (...) {
-    {
-      std::lock_guard<std::mutex> lock(mutex);
-      no_more = true;
-      todo.clear();
-      changed.notify_all();
-    }
-    for (auto& t : pool) t.join();
-    throw;
   }
-  for (auto& t : pool) t.join();
+
+  // Waits for something to say, then takes the finished records and the trials to ask for
+  // into report_; true once every thread has ended.
+  bool take_report(bool first) {
+    const std::int64_t ahead = 2 * static_cast<std::int64_t>(threads_);
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait_for(lock, kReportInterval, [&] {
+      return first || !outbox_.empty() || running_threads_ == 0 ||
+             (!no_more_ && static_cast<std::int64_t>(todo_.size()) < threads_) ||
+             (stop_ && stop_->load() && !no_more_);
+    });
+    if (stop_ && stop_->load() && !no_more_) {   // the trials running finish; no new ones
+      no_more_ = true;
+      todo_.clear();
+      changed_.notify_all();
+    }
+    report_.records.swap(outbox_);
+    outbox_.clear();
+    const bool done = running_threads_ == 0;
+    report_.want = done       ? -1
+                   : no_more_ ? 0
+                              : std::max<std::int64_t>(
+                                    0, ahead - static_cast<std::int64_t>(todo_.size()));
+    return done;
+  }
+
+  void receive_work() {
+    MPI_Status status;
+    check(MPI_Probe(0, kTagWork, MPI_COMM_WORLD, &status), "MPI_Probe");
+    const std::vector<char> bytes = receive_bytes(status);
+    std::vector<std::int64_t> trials(bytes.size() / sizeof(std::int64_t));
+    if (!trials.empty()) std::memcpy(trials.data(), bytes.data(), bytes.size());
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (trials.empty()) no_more_ = true;
+    todo_.insert(todo_.end(), trials.begin(), trials.end());
+    changed_.notify_all();
+  }
+
+  const SweepDefinition& sweep_;
+  const int threads_;
+  const std::atomic<bool>* stop_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::int64_t> todo_;
+  std::vector<TrialRecord> outbox_;
+  bool no_more_;
+  int running_threads_ = 0;
+  std::vector<std::thread> pool_;
+  Report report_;
+};
+
+}  // namespace
+
+void work_mpi_sweep(const MpiSession& /*mpi*/, const SweepDefinition& sweep, int threads,
+                    const std::atomic<bool>* stop, const std::string& load_error) {
+  WorkerRank(sweep, threads, stop, load_error).run();
 }
 
 }  // namespace pamsim

@@ -17,6 +17,7 @@
 #include "sim/core/metrics.h"
 #include "sim/io/scenario_file.h"
 #include "sim/io/scenario_key_docs.h"
+#include "sim/sweep/running_stats.h"
 #include "sim/sweep/sweep.h"
 
 namespace pamsim {
@@ -25,41 +26,6 @@ namespace {
 namespace fs = std::filesystem;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* kMistripRate = "mistrip_rate";
-
-// Welford's running mean and variance, with the range.
-struct Accumulator {
-  int n = 0;
-  double mean = 0, m2 = 0, min = kNaN, max = kNaN;
-  void add(double v) {
-    ++n;
-    const double delta = v - mean;
-    mean += delta / n;
-    m2 += delta * (v - mean);
-    min = n == 1 ? v : std::min(min, v);
-    max = n == 1 ? v : std::max(max, v);
-  }
-  MetricStats stats() const {
-    MetricStats s;
-    s.count = n;
-    s.mean = n ? mean : kNaN;
-    s.std = n > 1 ? std::sqrt(m2 / (n - 1)) : kNaN;
-    s.min = min;
-    s.max = max;
-    return s;
-  }
-};
-
-// A database cell as a TOML value (numbers exact, as the sweep wrote them).
-std::string toml_value(const DbValue& v) {
-  AxisValue a;
-  if (v.kind == DbValue::Kind::kText) {
-    a.kind = AxisValue::Kind::kString;
-    a.text = v.text;
-  } else {
-    a.number = v.kind == DbValue::Kind::kNumber ? v.number : kNaN;
-  }
-  return a.toml();
-}
 
 // A TOML value as a person reads it: a string without its quotes ('x' or "x"), anything
 // else as written.
@@ -103,15 +69,6 @@ std::string number_text(double v) {
   return std::string(buf, r.ptr);
 }
 
-// Index of a column by name; throws InputError if the table lacks it.
-std::size_t column_of(const std::vector<std::string>& columns, const std::string& name,
-                      const std::string& db) {
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    if (columns[c] == name) return c;
-  }
-  throw InputError(db + ": the trials table has no column " + name);
-}
-
 // The value shown for a point: a metric's mean, or the mistrip rate.
 double point_value(const SweepSummary& sweep, const PointSummary& p, const std::string& metric) {
   if (metric == kMistripRate) return p.mistrip_rate();
@@ -130,94 +87,6 @@ int SweepSummary::metric_index(const std::string& name) const {
     if (metric_names[i] == name) return static_cast<int>(i);
   }
   return -1;
-}
-
-SweepSummary summarize_sweep(const ResultsDb& db) {
-  SweepSummary sweep;
-  sweep.db_path = db.path();
-  sweep.sweep_file = db.meta("sweep_file");
-  sweep.base_path = db.meta("base_path");
-  const auto def = nlohmann::json::parse(db.meta("definition"), nullptr, false);
-  if (def.is_discarded() || !def.is_object()) {
-    throw InputError(db.path() + ": the sweep definition is unreadable");
-  }
-  try {
-    sweep.design = def.at("design").get<std::string>();
-    sweep.seeds = def.at("seeds").get<std::int64_t>();
-    sweep.base_scenario = def.at("base_scenario").get<std::string>();
-    sweep.fixed = def.at("fixed").get<std::vector<std::string>>();
-    sweep.points_total = sweep.design == "grid" ? 1 : def.at("samples").get<std::int64_t>();
-    for (const auto& axis : def.at("axes")) {
-      sweep.axis_keys.push_back(axis.at("key").get<std::string>());
-      sweep.axis_log.push_back(axis.contains("range") && axis["range"].at("log").get<bool>());
-      std::vector<std::string> levels = axis.at("values").get<std::vector<std::string>>();
-      if (sweep.design == "grid") sweep.points_total *= static_cast<std::int64_t>(levels.size());
-      sweep.axis_levels.push_back(std::move(levels));
-    }
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(db.path() + ": the sweep definition is incomplete (" + e.what() + ")");
-  }
-  sweep.trials_total = sweep.points_total * sweep.seeds;
-  for (const auto& name : db.metric_columns()) {
-    if (!is_timing_metric(name)) sweep.metric_names.push_back(name);
-  }
-
-  // column positions
-  const std::vector<std::string> columns = db.trial_columns();
-  const std::size_t point_col = column_of(columns, "point", db.path());
-  const std::size_t status_col = column_of(columns, "status", db.path());
-  // a sweep without reflex metrics has no mistrips column: no trial mistripped
-  const auto mistrips_at = std::find(columns.begin(), columns.end(), "mistrips");
-  const std::size_t mistrips_col = static_cast<std::size_t>(mistrips_at - columns.begin());
-  std::vector<std::size_t> axis_cols, metric_cols;
-  for (const auto& key : sweep.axis_keys) axis_cols.push_back(column_of(columns, key, db.path()));
-  for (const auto& name : sweep.metric_names) metric_cols.push_back(column_of(columns, name, db.path()));
-
-  // one pass in trial order; a point's trials are consecutive
-  PointSummary current;
-  std::vector<Accumulator> acc;
-  auto close_point = [&] {
-    if (current.trials == 0) return;
-    for (const auto& a : acc) current.metrics.push_back(a.stats());
-    sweep.points.push_back(std::move(current));
-    current = PointSummary{};
-  };
-  db.for_each_trial([&](const std::vector<DbValue>& row) {
-    const auto point = static_cast<std::int64_t>(row[point_col].number);
-    if (current.trials > 0 && point != current.point) close_point();
-    if (current.trials == 0) {
-      current.point = point;
-      if (sweep.design == "grid") {   // the levels exactly as the sweep set them (types kept)
-        std::int64_t rest = point;
-        current.axis_values.resize(sweep.axis_levels.size());
-        for (std::size_t a = sweep.axis_levels.size(); a-- > 0;) {
-          const auto levels = static_cast<std::int64_t>(sweep.axis_levels[a].size());
-          current.axis_values[a] = sweep.axis_levels[a][static_cast<std::size_t>(rest % levels)];
-          rest /= levels;
-        }
-      } else {   // random and lhs sample float ranges
-        for (std::size_t c : axis_cols) current.axis_values.push_back(toml_value(row[c]));
-      }
-      acc.assign(metric_cols.size(), Accumulator{});
-    }
-    ++current.trials;
-    ++sweep.trials_stored;
-    if (row[status_col].text != "ok") {
-      ++sweep.trials_not_ok;
-      return;
-    }
-    ++current.ok;
-    if (mistrips_col < row.size() && row[mistrips_col].kind == DbValue::Kind::kNumber &&
-        row[mistrips_col].number > 0) {
-      ++current.with_mistrips;
-    }
-    for (std::size_t m = 0; m < metric_cols.size(); ++m) {
-      const DbValue& v = row[metric_cols[m]];
-      if (v.kind == DbValue::Kind::kNumber && std::isfinite(v.number)) acc[m].add(v.number);
-    }
-  });
-  close_point();
-  return sweep;
 }
 
 const PointSummary* best_point(const SweepSummary& sweep, const std::string& metric) {
@@ -319,52 +188,31 @@ std::string points_csv(const SweepSummary& sweep, const std::string& metric, boo
   return out;
 }
 
-HeatMap sweep_heat_map(const SweepSummary& sweep, const std::string& metric,
-                       const PointSummary* mark, const std::string& best_metric) {
-  if (sweep.axis_keys.size() < 2) {
-    throw InputError(sweep.db_path + ": heat maps need two axes, the sweep has " +
-                     std::to_string(sweep.axis_keys.size()));
-  }
-  HeatMap map;
-  map.x_label = axis_label(sweep.axis_keys[0], sweep.axis_log[0]);
-  map.y_label = axis_label(sweep.axis_keys[1], sweep.axis_log[1]);
-  const bool rate = metric == kMistripRate;
-  map.value_label = rate ? metric_label(metric) : metric_label(metric) + ", mean over the seeds";
-  map.title = metric_label(metric) + (rate ? "" : ": mean ± SD") + " over " +
-              std::to_string(sweep.seeds) + " seeds per point";
-  if (!rate && sweep.axis_keys.size() > 2) {
-    map.title = metric_label(metric) + ": mean ± SD over the points of the other axes";
-  }
-  if (sweep.trials_stored < sweep.trials_total) {
-    map.title += "; INCOMPLETE: " + std::to_string(sweep.trials_stored) + " of " +
-                 std::to_string(sweep.trials_total) + " trials stored";
-  }
-  map.missing_label = "no seed ran ok (diverged, failed or not run)";
-  if (rate) {
-    map.value_min = 0;
-    map.value_max = 1;
-  }
-  if (mark) {
-    map.has_mark = true;
-    map.mark_label = "best (smallest mean " + best_metric + ", no mistrips; ties: lowest point)";
-  }
+namespace {
 
-  if (sweep.design != "grid") {
-    map.scattered = true;
-    map.x_log = sweep.axis_log[0];
-    map.y_log = sweep.axis_log[1];
-    for (const PointSummary& p : sweep.points) {
-      map.x.push_back(std::strtod(p.axis_values[0].c_str(), nullptr));
-      map.y.push_back(std::strtod(p.axis_values[1].c_str(), nullptr));
-      map.values.push_back(point_value(sweep, p, metric));
-      if (&p == mark) {
-        map.mark_x = map.x.back();
-        map.mark_y = map.y.back();
-      }
+// random and lhs: every point where it lies
+void scatter_points(const SweepSummary& sweep, const std::string& metric,
+                    const PointSummary* mark, HeatMap* out) {
+  HeatMap& map = *out;
+  map.scattered = true;
+  map.x_log = sweep.axis_log[0];
+  map.y_log = sweep.axis_log[1];
+  for (const PointSummary& p : sweep.points) {
+    map.x.push_back(std::strtod(p.axis_values[0].c_str(), nullptr));
+    map.y.push_back(std::strtod(p.axis_values[1].c_str(), nullptr));
+    map.values.push_back(point_value(sweep, p, metric));
+    if (&p == mark) {
+      map.mark_x = map.x.back();
+      map.mark_y = map.y.back();
     }
-    return map;
   }
+}
 
+// grid: a cell per level pair of the first two axes, averaging the other axes' points
+void grid_cells(const SweepSummary& sweep, const std::string& metric, const PointSummary* mark,
+                HeatMap* out) {
+  HeatMap& map = *out;
+  const bool rate = metric == kMistripRate;
   // grid: the point's level on each of the first two axes (row-major, first axis slowest)
   const std::size_t nx = sweep.axis_levels[0].size(), ny = sweep.axis_levels[1].size();
   std::int64_t inner = 1;   // points per level of axis 1
@@ -403,7 +251,45 @@ HeatMap sweep_heat_map(const SweepSummary& sweep, const std::string& metric,
     }
     map.cell_texts.push_back(text);
   }
-  return map;
 }
 
+}  // namespace
+
+HeatMap sweep_heat_map(const SweepSummary& sweep, const std::string& metric,
+                       const PointSummary* mark, const std::string& best_metric) {
+  if (sweep.axis_keys.size() < 2) {
+    throw InputError(sweep.db_path + ": heat maps need two axes, the sweep has " +
+                     std::to_string(sweep.axis_keys.size()));
+  }
+  HeatMap map;
+  map.x_label = axis_label(sweep.axis_keys[0], sweep.axis_log[0]);
+  map.y_label = axis_label(sweep.axis_keys[1], sweep.axis_log[1]);
+  const bool rate = metric == kMistripRate;
+  map.value_label = rate ? metric_label(metric) : metric_label(metric) + ", mean over the seeds";
+  map.title = metric_label(metric) + (rate ? "" : ": mean ± SD") + " over " +
+              std::to_string(sweep.seeds) + " seeds per point";
+  if (!rate && sweep.axis_keys.size() > 2) {
+    map.title = metric_label(metric) + ": mean ± SD over the points of the other axes";
+  }
+  if (sweep.trials_stored < sweep.trials_total) {
+    map.title += "; INCOMPLETE: " + std::to_string(sweep.trials_stored) + " of " +
+                 std::to_string(sweep.trials_total) + " trials stored";
+  }
+  map.missing_label = "no seed ran ok (diverged, failed or not run)";
+  if (rate) {
+    map.value_min = 0;
+    map.value_max = 1;
+  }
+  if (mark) {
+    map.has_mark = true;
+    map.mark_label = "best (smallest mean " + best_metric + ", no mistrips; ties: lowest point)";
+  }
+
+  if (sweep.design != "grid") {
+    scatter_points(sweep, metric, mark, &map);
+    return map;
+  }
+  grid_cells(sweep, metric, mark, &map);
+  return map;
+}
 }  // namespace pamsim

@@ -67,34 +67,30 @@ void store_trials(const SweepDefinition& sweep, ResultsDb& db, std::vector<Trial
   if (options.on_progress) options.on_progress(result.already_done + result.ran);
 }
 
-SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
-                         const SweepRunOptions& options) {
-  if (options.threads < 1) {
-    throw InputError("--threads must be >= 1, got " + std::to_string(options.threads));
-  }
-  const auto start = std::chrono::steady_clock::now();
-  const std::int64_t total = sweep.trials();
-  const std::vector<bool> finished = db.finished_trials(total);
-  SweepRunResult result;
-  for (bool f : finished) result.already_done += f ? 1 : 0;
-  const SweepShard& shard = options.shard;
+namespace {
 
+// What the worker threads and the writer (the calling thread) of run_sweep share.
+struct SweepWork {
+  const SweepDefinition& sweep;
+  const SweepRunOptions& options;
+  const std::vector<bool>& finished;
   std::atomic<std::int64_t> next{0};
   std::atomic<bool> abort{false};   // the writer failed: workers stop too
   std::mutex mutex;
   std::condition_variable finished_cv;
-  std::vector<TrialRecord> queue;
-  int workers_left = options.threads;
+  std::vector<TrialRecord> queue;   // finished, not yet committed
+  int workers_left = 0;
 
-  auto stopping = [&] {
-    return abort.load() || (options.stop && options.stop->load());
-  };
-  auto worker = [&] {
+  bool stopping() const { return abort.load() || (options.stop && options.stop->load()); }
+
+  // a worker thread: the next trial of the shard not yet finished, until none is left
+  void work() {
     SweepTrialRunner runner(sweep);
+    const std::int64_t total = sweep.trials();
     while (!stopping()) {
       const std::int64_t t = next++;
       if (t >= total) break;
-      if (!shard.holds(t) || finished[static_cast<std::size_t>(t)]) continue;
+      if (!options.shard.holds(t) || finished[static_cast<std::size_t>(t)]) continue;
       TrialRecord record = runner.run(t);
       std::lock_guard<std::mutex> lock(mutex);
       queue.push_back(std::move(record));
@@ -103,13 +99,11 @@ SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
     std::lock_guard<std::mutex> lock(mutex);
     --workers_left;
     finished_cv.notify_one();
-  };
-  std::vector<std::thread> pool;
-  for (int i = 0; i < options.threads; ++i) pool.emplace_back(worker);
+  }
 
   // the writer: commit whatever has finished, until every worker is done
-  std::vector<TrialRecord> batch;
-  try {
+  void commit_until_done(ResultsDb& db, SweepRunResult& result) {
+    std::vector<TrialRecord> batch;
     for (bool last = false; !last;) {
       {
         std::unique_lock<std::mutex> lock(mutex);
@@ -120,13 +114,35 @@ SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
       }
       store_trials(sweep, db, batch, options, result);
     }
+  }
+};
+
+}  // namespace
+
+SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
+                         const SweepRunOptions& options) {
+  if (options.threads < 1) {
+    throw InputError("--threads must be >= 1, got " + std::to_string(options.threads));
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const std::int64_t total = sweep.trials();
+  const std::vector<bool> finished = db.finished_trials(total);
+  SweepRunResult result;
+  for (bool f : finished) result.already_done += f ? 1 : 0;
+
+  SweepWork work{sweep, options, finished};
+  work.workers_left = options.threads;
+  std::vector<std::thread> pool;
+  for (int i = 0; i < options.threads; ++i) pool.emplace_back([&work] { work.work(); });
+  try {
+    work.commit_until_done(db, result);
   } catch (...) {
-    abort = true;
+    work.abort = true;
     for (auto& t : pool) t.join();
     throw;
   }
   for (auto& t : pool) t.join();
-  result.interrupted = result.already_done + result.ran < shard.trials_of(total);
+  result.interrupted = result.already_done + result.ran < options.shard.trials_of(total);
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
