@@ -11,6 +11,7 @@
 #include "base/input_error.h"
 #include "base/units.h"
 #include "sim/core/calibration.h"
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "base/config_reader.h"
 #include "sim/io/calibration_file.h"
@@ -68,7 +69,7 @@ void add_calibrate_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "calibrate", "Solve the arm's line lengths for its start angle at the goal pressures");
   cmd->add_option("scenario", opt->scenario, "Scenario file (TOML)")->required();
-  cmd->add_option("--set", opt->overrides, "Override a scenario key")->take_all();
+  add_overrides_option(cmd, &opt->overrides, "Override a scenario key");
   cmd->add_option("--angle-deg", opt->angle_deg, "Start angle at rest [deg] (paper: -36)");
   cmd->add_option("--antagonist-deformation-mm", opt->antagonist_deformation_mm,
                   "Antagonist pre-deformation at the start [mm]");

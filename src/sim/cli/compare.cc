@@ -21,6 +21,7 @@
 
 #include "base/atomic_file.h"
 #include "base/input_error.h"
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
@@ -246,8 +247,7 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("-o,--output,--out", opt->out,
                   "Plot file (default renders/compare_<DIR_A name>_vs_<DIR_B name>.png)");
   cmd->add_flag("--force", opt->force, "Replace an existing plot file");
-  cmd->add_option("--plot-format", opt->plot_format,
-                  "png, or svg and/or pdf beside the PNG (svg,pdf)");
+  add_plot_format_option(cmd, &opt->plot_format);
   cmd->add_option("--label-a", opt->label_a, "Legend label of DIR_A (default: its folder name)");
   cmd->add_option("--label-b", opt->label_b, "Legend label of DIR_B (default: its folder name)");
   cmd->callback([opt] { compare(*opt); });

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/input_error.h"
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/io/scenario_file.h"
 #include "sim/io/scenario_key_docs.h"
@@ -69,8 +70,7 @@ void add_keys_command(CLI::App& app) {
       "keys", "List the scenario keys (unit, default, allowed values, meaning); with a "
               "scenario, the values it runs with");
   cmd->add_option("scenario", opt->scenario, "Scenario file (TOML)");
-  cmd->add_option("--set", opt->overrides, "Override a scenario key: --set reflex.v_thr_mm_s=60")
-      ->take_all();
+  add_overrides_option(cmd, &opt->overrides, "Override a scenario key: --set reflex.v_thr_mm_s=60");
   cmd->add_flag("--json", opt->json, "One JSON array on stdout");
   cmd->callback([opt] { keys(*opt); });
 }

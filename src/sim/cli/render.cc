@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "base/input_error.h"
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/core/runner.h"
@@ -93,8 +94,7 @@ void add_render_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "render", "Render a scenario's trial to H.264 MP4 and/or PNGs (no display or GPU needed)");
   cmd->add_option("scenario", opt->scenario, "Scenario file (TOML)")->required();
-  cmd->add_option("--set", opt->overrides, "Override a scenario key: --set sim.duration_s=2")
-      ->take_all();
+  add_overrides_option(cmd, &opt->overrides, "Override a scenario key: --set sim.duration_s=2");
   cmd->add_option("-o,--output", v.mp4_path,  // "-": a fragmented MP4 on standard output
                   "MP4 file, - for standard output (fragmented MP4; default "
                   "renders/<scenario>/<scenario>.mp4 unless --png-dir alone)");

@@ -14,6 +14,7 @@
 #include "base/atomic_file.h"
 #include "base/format.h"
 #include "base/input_error.h"
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/core/metrics.h"
 #include "sim/core/trial.h"
@@ -170,8 +171,7 @@ void add_replay_command(CLI::App& app) {
                   "Output folder (default: <database folder>/<database name>_trial_<N>)");
   cmd->add_flag("--force", opt->force, "Replace the outputs of an earlier replay in the folder");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no plot (gnuplot not needed)");
-  cmd->add_option("--plot-format", opt->plot_format,
-                  "png, or svg and/or pdf beside the PNG (svg,pdf)");
+  add_plot_format_option(cmd, &opt->plot_format);
   cmd->callback([opt] { replay(*opt); });
 }
 

@@ -19,6 +19,7 @@
 #include "base/atomic_file.h"
 #include "base/format.h"
 #include "base/input_error.h"
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
@@ -202,8 +203,7 @@ void add_report_command(CLI::App& app) {
                 "points.csv with mean, std, min, max of every metric (default: mean, SD and 95 % "
                 "CI of the headline metrics)");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no heat maps or figures (gnuplot not needed)");
-  cmd->add_option("--plot-format", opt->plot_format,
-                  "png, or svg and/or pdf beside the PNG (svg,pdf)");
+  add_plot_format_option(cmd, &opt->plot_format);
   cmd->callback([opt] { report(*opt); });
 }
 

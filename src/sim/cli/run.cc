@@ -14,6 +14,7 @@
 #include "base/atomic_file.h"
 #include "base/input_error.h"
 #include "base/toml_file.h"
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/core/runner.h"
@@ -239,8 +240,7 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("scenario", opt->scenario, "Scenario file (TOML)");
   cmd->add_option("--from", opt->from,
                   "Run an earlier run's scenario.toml again (its folder), with its trial count");
-  cmd->add_option("--set", opt->overrides, "Override a scenario key: --set reflex.v_thr_mm_s=60")
-      ->take_all();
+  add_overrides_option(cmd, &opt->overrides, "Override a scenario key: --set reflex.v_thr_mm_s=60");
   cmd->add_option("--out", opt->out,
                   "Output folder (default renders/<scenario name>[__<key>-<value> per --set], "
                   "or DIR_rerun with --from DIR)");
@@ -253,8 +253,7 @@ void add_run_command(CLI::App& app) {
   cmd->add_flag("--force", opt->force, "Replace the outputs of an earlier run in the folder");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no plots (gnuplot not needed)");
   cmd->add_flag("--quiet", opt->quiet, "No progress bar or progress lines (--trials N)");
-  cmd->add_option("--plot-format", opt->plot_format,
-                  "png, or svg and/or pdf beside the PNG (svg,pdf)");
+  add_plot_format_option(cmd, &opt->plot_format);
   cmd->callback([opt, trials] {
     RunOptions o = *opt;
     o.trials_given = trials->count() > 0;

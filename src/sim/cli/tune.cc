@@ -19,6 +19,7 @@
 #include "base/format.h"
 #include "base/input_error.h"
 #include "sim/cli/command_database.h"
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/cli/stop_signal.h"
@@ -161,8 +162,7 @@ void add_tune_command(CLI::App& app) {
   cmd->add_flag("--force", opt->force, "Replace another tuning's outputs in the folder");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no figures (gnuplot not needed)");
   cmd->add_flag("--quiet", opt->quiet, "No progress bar or progress lines");
-  cmd->add_option("--plot-format", opt->plot_format,
-                  "png, or svg and/or pdf beside the PNG (svg,pdf)");
+  add_plot_format_option(cmd, &opt->plot_format);
   cmd->callback([opt] { tune(*opt); });
 }
 

@@ -19,6 +19,7 @@
 
 #include "base/atomic_file.h"
 #include "base/input_error.h"
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/core/runner.h"
@@ -170,8 +171,7 @@ void add_common(CLI::App* cmd, ValidateOptions* o, const std::string& default_fi
   cmd->add_flag("--force", o->force, "Replace the outputs of an earlier validation in the folder");
   cmd->add_flag("--no-plot", o->no_plot, "Write no figures (gnuplot not needed)");
   cmd->add_flag("--quiet", o->quiet, "No progress bar or progress lines");
-  cmd->add_option("--plot-format", o->plot_format,
-                  "png, or svg and/or pdf beside the PNG (svg,pdf)");
+  add_plot_format_option(cmd, &o->plot_format);
 }
 
 }  // namespace
