@@ -1,14 +1,12 @@
-// plot.h: the figures of a run, drawn by gnuplot (pngcairo terminal) driven from the
-// program: data and script go to a temp folder, gnuplot writes a temp PNG, which is
-// renamed into place, so a failed plot leaves no partial file.
+// plot.h: the figures of a run, drawn by gnuplot (gnuplot.h: data and script in a private
+// temp folder, the PNG made beside its place and renamed into it once whole, so a failed
+// plot leaves no partial file; plots may be drawn from many threads).
 //   angle.png       the joint vs time with the impact, the reflex windows and every muscle's
 //                   pressures (commanded and chamber), like the paper's Fig. 8
 //                   (position.png for a slide joint, e.g. the pulley rig);
 //   angle_band.png  mean and range of the angle over repeated trials, like Fig. 9;
-//   compare.png     two runs' bands on one plot (model vs fiber sensor, Fig. 9);
+//   compare_<A>_vs_<B>.png  two runs' bands on one plot (model vs fiber sensor, Fig. 9);
 //   heatmap_*.png   a sweep metric over two axes (pamsim report).
-// The temp folder is <temp_directory_path>/pamsim_plot_<pid>_<n> and the temp PNG is
-// <png>.tmp.<pid>.<n>.png, n a process-wide counter: plots may be drawn from many threads.
 #pragma once
 
 #include <cstddef>
