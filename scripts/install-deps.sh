@@ -17,6 +17,7 @@ packages=(
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev   # MP4 encoding
   gnuplot-nox                                # plots (pngcairo terminal)
   python3                                    # scripts/findings.py and the demo's summary line
+  pmccabe                                    # scripts/check-sizes.sh: function lengths
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev                   # make fuzz: libFuzzer and clang's sanitizer runtimes
   libopenmpi-dev openmpi-bin                 # sweeps over MPI ranks (-DPAMSIM_MPI=ON, mpirun)

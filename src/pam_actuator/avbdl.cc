@@ -1,4 +1,6 @@
-// avbdl.cc: the AVBDL plant force law of seeds/003 and its friction term, see avbdl.h.
+// avbdl.cc: the AVBDL plant force law of seeds/003, see avbdl.h: the volume, the bladder's
+// work and their slopes (Eq. (9)-(25)); its checks are in avbdl_validation.cc, its friction
+// term in avbdl_friction.cc.
 #include "pam_actuator/avbdl.h"
 
 #include <algorithm>
@@ -7,12 +9,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <utility>
 
 #include <boost/math/tools/roots.hpp>
-
-#include "base/format.h"
-#include "base/input_error.h"
 
 namespace pamsim {
 namespace {
@@ -166,95 +164,7 @@ double free_length(const AvbdlParams& p, const Shape& shape, double p_pa) {
   return 0.5 * (a + b);
 }
 
-// one "<key> must be ..., got <value>" check
-struct Checker {
-  const std::string& prefix;
-  void require(bool ok, const std::string& key, const std::string& allowed, double v) const {
-    if (!ok) throw InputError(prefix + key + " must be " + allowed + ", got " + format_value(v));
-  }
-  void finite(const std::string& key, double v) const {
-    require(std::isfinite(v), key, "finite", v);
-  }
-  void non_negative(const std::string& key, double v) const {
-    require(v >= 0.0, key, ">= 0", v);
-  }
-};
-
-void validate_friction(const AvbdlFriction& f, const Checker& check) {
-  const std::pair<const char*, const AvbdlFrictionCoefficients*> branches[] = {
-      {"friction.extension.", &f.extension}, {"friction.contraction.", &f.contraction}};
-  for (const auto& [name, c] : branches) {
-    const std::string key(name);
-    check.finite(key + "force_n", c->force_n);
-    check.non_negative(key + "force_n", c->force_n);
-    check.finite(key + "pressure_area_m2", c->pressure_area_m2);
-    check.non_negative(key + "pressure_area_m2", c->pressure_area_m2);
-    check.finite(key + "strain_area_m2", c->strain_area_m2);
-    check.non_negative(key + "strain_area_m2", c->strain_area_m2);
-  }
-  check.finite("friction.velocity_scale_m_per_s", f.velocity_scale_m_per_s);
-  check.require(f.velocity_scale_m_per_s > 0.0, "friction.velocity_scale_m_per_s", "> 0 m/s",
-                f.velocity_scale_m_per_s);
-}
-
 }  // namespace
-
-void validate_avbdl_params(const AvbdlParams& p, const std::string& key_prefix) {
-  const Checker check{key_prefix};
-
-  // every number finite
-  check.finite("length_m", p.length_m);
-  check.finite("diameter_m", p.diameter_m);
-  check.finite("braid_angle_rad", p.braid_angle_rad);
-  check.finite("wall_thickness_m", p.wall_thickness_m);
-  check.finite("bladder.c10_pa", p.bladder.c10_pa);
-  check.finite("bladder.c01_pa", p.bladder.c01_pa);
-  check.finite("bladder.c20_pa", p.bladder.c20_pa);
-  check.finite("end_length_m", p.end_length_m);
-  check.finite("end_slope", p.end_slope);
-
-  // geometry: dimensions, and a braid that contracts from L0 (b > L0, L0 > b / sqrt 3)
-  check.require(p.length_m > 0.0, "length_m", "> 0 m", p.length_m);
-  check.require(p.diameter_m > 0.0, "diameter_m", "> 0 m", p.diameter_m);
-  const double max_angle = std::acos(1.0 / std::sqrt(3.0));
-  check.require(p.braid_angle_rad > 0.0 && p.braid_angle_rad < max_angle, "braid_angle_rad",
-                "in (0, " + format_value(max_angle) +
-                    ") rad (fibre longer than L0, braid able to contract from L0)",
-                p.braid_angle_rad);
-  check.require(p.wall_thickness_m >= 0.0, "wall_thickness_m", ">= 0 m", p.wall_thickness_m);
-
-  // bladder material, Eq. (20)
-  check.require(p.bladder.c10_pa + p.bladder.c01_pa > 0.0, "bladder.c10_pa",
-                "> -bladder.c01_pa = " + format_value(-p.bladder.c01_pa) +
-                    " Pa (a positive initial shear modulus 2 (C10 + C01))",
-                p.bladder.c10_pa);
-  check.non_negative("bladder.c20_pa", p.bladder.c20_pa);
-
-  // end regions: both fit in the muscle at its free-contraction length b / sqrt 3
-  const double l_min = avbdl_min_length(p);
-  check.require(p.end_length_m >= 0.0 && 2.0 * p.end_length_m < l_min, "end_length_m",
-                "in [0, " + format_value(0.5 * l_min) + ") m (half the fully contracted length)",
-                p.end_length_m);
-  check.require(p.end_slope >= 0.0 && p.end_slope <= 3.0, "end_slope",
-                "in [0, 3] (a monotone end profile)", p.end_slope);
-
-  validate_friction(p.friction, check);
-}
-
-AvbdlParams avbdl_params_from_geometry(double length_m, double diameter_m,
-                                       double braid_angle_rad, double wall_thickness_m,
-                                       const MooneyRivlinConstants& bladder,
-                                       const std::string& key_prefix) {
-  AvbdlParams p;
-  p.length_m = length_m;
-  p.diameter_m = diameter_m;
-  p.braid_angle_rad = braid_angle_rad;
-  p.wall_thickness_m = wall_thickness_m;
-  p.bladder = bladder;
-  p.end_length_m = kAvbdlEndFraction * length_m;   // end slope and friction: the defaults
-  validate_avbdl_params(p, key_prefix);
-  return p;
-}
 
 BraidGeometry avbdl_braid(const AvbdlParams& p) {
   return braid_from_initial_shape(p.length_m, p.diameter_m, p.braid_angle_rad);
@@ -363,31 +273,6 @@ double avbdl_length_at_force(const AvbdlParams& p, double p_pa, double f_n) {
   const auto [a, b] = boost::math::tools::toms748_solve(
       excess, lo, hi, boost::math::tools::eps_tolerance<double>(45), iterations);
   return 0.5 * (a + b);
-}
-
-double avbdl_friction_magnitude(const AvbdlParams& p, double p_pa, double length_m,
-                                StretchDirection direction) {
-  const AvbdlFrictionCoefficients& c = direction == StretchDirection::kExtension
-                                           ? p.friction.extension
-                                           : p.friction.contraction;
-  // F_f = F0 + p (A0 + A1 eps): normal load from pressure on a strain-dependent contact
-  const double strain = (p.length_m - length_m) / p.length_m;
-  const double area = std::max(c.pressure_area_m2 + c.strain_area_m2 * strain, 0.0);
-  return c.force_n + std::max(p_pa, 0.0) * area;
-}
-
-double avbdl_friction_force(const AvbdlParams& p, double p_pa, double length_m,
-                            StretchDirection direction) {
-  const double f = avbdl_friction_magnitude(p, p_pa, length_m, direction);
-  return direction == StretchDirection::kExtension ? f : -f;
-}
-
-double avbdl_smooth_friction_force(const AvbdlParams& p, double p_pa, double length_m,
-                                   double length_rate_m_per_s) {
-  const StretchDirection direction = length_rate_m_per_s > 0.0 ? StretchDirection::kExtension
-                                                               : StretchDirection::kContraction;
-  return std::tanh(length_rate_m_per_s / p.friction.velocity_scale_m_per_s) *
-         avbdl_friction_magnitude(p, p_pa, length_m, direction);
 }
 
 double avbdl_force(const AvbdlParams& p, double p_pa, double length_m,

@@ -119,14 +119,15 @@ void validate_pneumatic_params(const PneumaticParams& p, const std::string& cont
               format_value(p.solver.absolute_tolerance_pa));
 }
 
-PneumaticParams load_pneumatic_params(const std::string& path) {
-  const toml::table doc = parse_toml_file(path);
+namespace {
 
-  PneumaticParams p;
-  PneumaticSolverParams& s = p.solver;
+// The file's schema: table, key (unit in the name), allowed interval, factor to SI; each
+// key writes its field of *params.
+std::vector<Table> pneumatic_schema(PneumaticParams* params) {
+  PneumaticParams& p = *params;
+  PneumaticSolverParams* solver = &p.solver;
   const double inf = std::numeric_limits<double>::infinity();
-  // the file's schema: table, key (unit in the name), allowed interval, factor to SI
-  const std::vector<Table> schema = {
+  return {
       {"supply",
        {{"supply_MPa", 0.0, 2.0, true, false, units::kPaPerMPa, &p.supply_gauge_pa},
         {"atmospheric_kPa", 50.0, 120.0, false, false, 1e3, &p.atmospheric_pa}},
@@ -162,20 +163,77 @@ PneumaticParams load_pneumatic_params(const std::string& path) {
          &p.regulator_proportional_band_pa}},
        {}},
       {"solver",
-       {{"relative_tolerance", 0.0, 1e-2, true, false, 1.0, &s.relative_tolerance},
-        {"absolute_tolerance_Pa", 0.0, 1e4, true, false, 1.0, &s.absolute_tolerance_pa}},
+       {{"relative_tolerance", 0.0, 1e-2, true, false, 1.0, &solver->relative_tolerance},
+        {"absolute_tolerance_Pa", 0.0, 1e4, true, false, 1.0, &solver->absolute_tolerance_pa}},
        {{"method",
          {"bdf", "adams"},
-         [&s](const std::string& v) {
-           s.method = v == "bdf" ? CvodeMethod::kBdf : CvodeMethod::kAdams;
+         [solver](const std::string& v) {
+           solver->method = v == "bdf" ? CvodeMethod::kBdf : CvodeMethod::kAdams;
          }},
         {"on_command_change",
          {"warm", "reinit"},
-         [&s](const std::string& v) {
-           s.on_command_change =
+         [solver](const std::string& v) {
+           solver->on_command_change =
                v == "warm" ? CommandChangePolicy::kWarm : CommandChangePolicy::kReinit;
          }}}},
   };
+}
+
+// "a | b": the values a string key allows
+std::string allowed_values(const StringKey& k) {
+  std::string allowed;
+  for (const std::string& a : k.allowed) allowed += (allowed.empty() ? "" : " | ") + a;
+  return allowed;
+}
+
+// One string key: one of the values it allows, handed to its setter.
+void read_string(const std::string& path, const std::string& table, const StringKey& k,
+                 const toml::node& node) {
+  const std::string allowed = allowed_values(k);
+  const auto value = node.value<std::string>();
+  if (!value) {
+    throw InputError(path + ": " + table + "." + k.name + ": must be a string, allowed " +
+                     allowed);
+  }
+  bool ok = false;
+  for (const std::string& a : k.allowed) ok = ok || *value == a;
+  if (!ok) {
+    throw InputError(path + ": " + table + "." + k.name + ": unknown value \"" + *value +
+                     "\", allowed " + allowed);
+  }
+  k.set(*value);
+}
+
+// One key of a table: read by the schema, or refused with the keys the table has.
+void read_key(const std::string& path, const std::string& table_name, const Table& table,
+              const std::string& key_name, const toml::node& node) {
+  bool known = false;
+  for (const NumberKey& k : table.numbers) {
+    if (key_name == k.name) {
+      read_number(path, table_name, k, node);
+      known = true;
+    }
+  }
+  for (const StringKey& k : table.strings) {
+    if (key_name != k.name) continue;
+    known = true;
+    read_string(path, table_name, k, node);
+  }
+  if (!known) {
+    std::string allowed;
+    for (const NumberKey& k : table.numbers) allowed += std::string(allowed.empty() ? "" : ", ") + k.name;
+    for (const StringKey& k : table.strings) allowed += std::string(allowed.empty() ? "" : ", ") + k.name;
+    throw InputError(path + ": " + table_name + "." + key_name + ": unknown key (allowed: " +
+                     allowed + ")");
+  }
+}
+
+}  // namespace
+
+PneumaticParams load_pneumatic_params(const std::string& path) {
+  const toml::table doc = parse_toml_file(path);
+  PneumaticParams p;
+  const std::vector<Table> schema = pneumatic_schema(&p);
 
   // walk the document: every table and key must be in the schema
   for (const auto& [table_key, table_node] : doc) {
@@ -194,39 +252,7 @@ PneumaticParams load_pneumatic_params(const std::string& path) {
       throw InputError(path + ": " + table_name + ": must be a table");
     }
     for (const auto& [key, node] : *tbl) {
-      const std::string key_name(key.str());
-      bool known = false;
-      for (const NumberKey& k : table->numbers) {
-        if (key_name == k.name) {
-          read_number(path, table_name, k, node);
-          known = true;
-        }
-      }
-      for (const StringKey& k : table->strings) {
-        if (key_name != k.name) continue;
-        known = true;
-        std::string allowed;
-        for (const std::string& a : k.allowed) allowed += (allowed.empty() ? "" : " | ") + a;
-        const auto value = node.value<std::string>();
-        if (!value) {
-          throw InputError(path + ": " + table_name + "." + key_name +
-                           ": must be a string, allowed " + allowed);
-        }
-        bool ok = false;
-        for (const std::string& a : k.allowed) ok = ok || *value == a;
-        if (!ok) {
-          throw InputError(path + ": " + table_name + "." + key_name + ": unknown value \"" +
-                           *value + "\", allowed " + allowed);
-        }
-        k.set(*value);
-      }
-      if (!known) {
-        std::string allowed;
-        for (const NumberKey& k : table->numbers) allowed += std::string(allowed.empty() ? "" : ", ") + k.name;
-        for (const StringKey& k : table->strings) allowed += std::string(allowed.empty() ? "" : ", ") + k.name;
-        throw InputError(path + ": " + table_name + "." + key_name + ": unknown key (allowed: " +
-                         allowed + ")");
-      }
+      read_key(path, table_name, *table, std::string(key.str()), node);
     }
   }
 

@@ -49,6 +49,40 @@ double parse_cell(const std::string& cell, const std::string& where) {
   return v;
 }
 
+// where the columns are: kRequired's, in its order, and the optional direction (-1: none)
+struct Columns {
+  int required[4];
+  int direction = -1;
+};
+
+// Throws InputError naming `path` for a column named twice or a required one missing.
+Columns locate_columns(const std::string& path, const std::vector<std::string>& header) {
+  for (size_t c = 0; c < header.size(); ++c) {
+    for (size_t d = 0; d < c; ++d) {
+      if (!header[c].empty() && header[c] == header[d]) {
+        throw InputError(path + ": header: column " + header[c] + " appears twice (columns " +
+                         std::to_string(d + 1) + " and " + std::to_string(c + 1) + ")");
+      }
+    }
+  }
+  Columns columns;
+  int* col = columns.required;
+  for (int k = 0; k < 4; ++k) {
+    col[k] = -1;
+    for (size_t c = 0; c < header.size(); ++c) {
+      if (header[c] == kRequired[k]) col[k] = static_cast<int>(c);
+    }
+    if (col[k] < 0) {
+      throw InputError(path + ": header: missing column " + kRequired[k] +
+                       " (required: pressure_MPa, deformation_mm, force_N, length_mm)");
+    }
+  }
+  for (size_t c = 0; c < header.size(); ++c) {
+    if (header[c] == "direction") columns.direction = static_cast<int>(c);
+  }
+  return columns;
+}
+
 }  // namespace
 
 std::string tensile_rows_to_csv(const std::vector<TensileRow>& rows) {
@@ -70,29 +104,9 @@ std::vector<TensileRow> read_tensile_csv(const std::string& path) {
   // a UTF-8 byte-order mark, as spreadsheet programs write, is not part of the first name
   if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
   const std::vector<std::string> header = split(line);
-  for (size_t c = 0; c < header.size(); ++c) {
-    for (size_t d = 0; d < c; ++d) {
-      if (!header[c].empty() && header[c] == header[d]) {
-        throw InputError(path + ": header: column " + header[c] + " appears twice (columns " +
-                         std::to_string(d + 1) + " and " + std::to_string(c + 1) + ")");
-      }
-    }
-  }
-  int col[4];
-  int direction_col = -1;
-  for (int k = 0; k < 4; ++k) {
-    col[k] = -1;
-    for (size_t c = 0; c < header.size(); ++c) {
-      if (header[c] == kRequired[k]) col[k] = static_cast<int>(c);
-    }
-    if (col[k] < 0) {
-      throw InputError(path + ": header: missing column " + kRequired[k] +
-                       " (required: pressure_MPa, deformation_mm, force_N, length_mm)");
-    }
-  }
-  for (size_t c = 0; c < header.size(); ++c) {
-    if (header[c] == "direction") direction_col = static_cast<int>(c);
-  }
+  const Columns columns = locate_columns(path, header);
+  const int* col = columns.required;
+  const int direction_col = columns.direction;
 
   // data rows; row numbers count file lines, the header is row 1
   std::vector<TensileRow> rows;

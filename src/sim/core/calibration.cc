@@ -9,15 +9,11 @@
 #include "sim/core/muscle_law.h"
 
 namespace pamsim {
-const CalibratedLine* ArmCalibration::line(const std::string& actuator) const {
-  for (const CalibratedLine& l : lines) {
-    if (l.actuator == actuator) return &l;
-  }
-  return nullptr;
-}
+namespace {
 
-ArmCalibration solve_calibration(const TrialModel& tm, const Scenario& sc, const ReflexPair& pair,
-                                 const CalibrationRequest& req) {
+// Throws InputError for a start angle outside (-90, 90) deg, a negative pressure, a
+// pre-deformation <= 0, or a joint that is not a hinge.
+void check_calibration_request(const TrialModel& tm, const CalibrationRequest& req) {
   if (!(std::fabs(req.start_angle_rad) < units::kPi / 2)) {
     throw InputError("calibrate: --angle-deg must be within (-90, 90), got " +
                      format_value(units::rad_to_deg(req.start_angle_rad)));
@@ -30,6 +26,20 @@ ArmCalibration solve_calibration(const TrialModel& tm, const Scenario& sc, const
                      format_value(units::m_to_mm(req.antagonist_deformation_m)));
   }
   if (!tm.joint.hinge) throw InputError("calibrate: joint '" + tm.joint.name + "' is not a hinge");
+}
+
+}  // namespace
+
+const CalibratedLine* ArmCalibration::line(const std::string& actuator) const {
+  for (const CalibratedLine& l : lines) {
+    if (l.actuator == actuator) return &l;
+  }
+  return nullptr;
+}
+
+ArmCalibration solve_calibration(const TrialModel& tm, const Scenario& sc, const ReflexPair& pair,
+                                 const CalibrationRequest& req) {
+  check_calibration_request(tm, req);
   const mjModel* m = tm.model.get();
   MjDataPtr data = make_data(m);
   mjData* d = data.get();

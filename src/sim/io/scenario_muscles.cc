@@ -107,55 +107,39 @@ std::vector<std::string> muscle_names(const ConfigReader& in) {
   return names;
 }
 
-MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& name,
-                       const ArmCalibration* calibration, bool lines_needed) {
-  MuscleSpec m;
-  m.key = "muscles." + name;
-  m.actuator = name;
-
-  // parameter file (and the legacy label of the shorthand's arm)
-  const std::string params_key = long_or_short(in, m.key + ".params", "model." + name + "_params");
-  in.check(!params_key.empty(), m.key + ".params", "is required");
-  m.params_file = in.get_input_path(params_key, "");
-  m.pam = in_file(in, [&] { return load_pam_params(m.params_file); });
-  in.check(m.pam.strain_gauge.has_value(), params_key,
-           "(" + m.params_file + ") needs a [strain_gauge] table (Eq. (8)): the sensing reads it");
-  // the physical plant, when it is not the estimator's law
-  if (in.has(m.key + ".plant")) {
-    m.plant_file = in.get_input_path(m.key + ".plant", "");
-    m.plant = in_file(in, [&] {
-      try {
-        return load_plant_params(m.plant_file).avbdl;
-      } catch (const InputError& e) {
-        throw InputError(m.key + ".plant: " + e.what());
-      }
-    });
-    // the estimator must describe this muscle: its file's [geometry] length (Table I) and
-    // braid angle (assumed there), where it gives them, are the plant's (the diameter may
-    // differ: plant_agonist.toml)
-    if (m.pam.geometry) {
-      const PamGeometry& g = *m.pam.geometry;
-      const auto mismatch = [&](const char* what, double plant, double estimator,
-                                const char* unit) {
-        return std::string("has a ") + what + " of " + format_value(plant) + " " + unit +
-               ", but its estimator's file (" + m.params_file + ", [geometry]) describes " +
-               format_value(estimator) + " " + unit;
-      };
-      in.check(std::abs(m.plant.length_m - g.length_m) <= kPlantLengthTolerance_m, m.key + ".plant",
-               mismatch("length", units::m_to_mm(m.plant.length_m), units::m_to_mm(g.length_m),
-                        "mm"));
-      in.check(std::abs(m.plant.braid_angle_rad - g.braid_angle_rad) <= kPlantAngleTolerance_rad,
-               m.key + ".plant",
-               mismatch("braid angle", units::rad_to_deg(m.plant.braid_angle_rad),
-                        units::rad_to_deg(g.braid_angle_rad), "deg"));
+// muscles.<m>.plant: the physical plant's file and law; the estimator must describe this
+// muscle: its file's [geometry] length (Table I) and braid angle (assumed there), where it
+// gives them, are the plant's (the diameter may differ: plant_agonist.toml)
+void read_muscle_plant(ConfigReader& in, MuscleSpec* muscle) {
+  MuscleSpec& m = *muscle;
+  m.plant_file = in.get_input_path(m.key + ".plant", "");
+  m.plant = in_file(in, [&] {
+    try {
+      return load_plant_params(m.plant_file).avbdl;
+    } catch (const InputError& e) {
+      throw InputError(m.key + ".plant: " + e.what());
     }
-  }
-  const bool legacy = params_key != m.key + ".params";
-  m.label = in.get_string(m.key + ".label", legacy ? legacy_label(name) : name);
-  in.check(!m.label.empty() && m.label.find_first_of(" ,\"") == std::string::npos, m.key + ".label",
-           "must be a non-empty name without spaces, commas or quotes");
+  });
+  if (!m.pam.geometry) return;
+  const PamGeometry& g = *m.pam.geometry;
+  const auto mismatch = [&](const char* what, double plant, double estimator, const char* unit) {
+    return std::string("has a ") + what + " of " + format_value(plant) + " " + unit +
+           ", but its estimator's file (" + m.params_file + ", [geometry]) describes " +
+           format_value(estimator) + " " + unit;
+  };
+  in.check(std::abs(m.plant.length_m - g.length_m) <= kPlantLengthTolerance_m, m.key + ".plant",
+           mismatch("length", units::m_to_mm(m.plant.length_m), units::m_to_mm(g.length_m), "mm"));
+  in.check(std::abs(m.plant.braid_angle_rad - g.braid_angle_rad) <= kPlantAngleTolerance_rad,
+           m.key + ".plant",
+           mismatch("braid angle", units::rad_to_deg(m.plant.braid_angle_rad),
+                    units::rad_to_deg(g.braid_angle_rad), "deg"));
+}
 
-  // the command: a schedule, or the shorthand's constant
+// the command: a schedule, or the shorthand's constant, within what the valve accepts (it
+// would clamp the rest silently)
+void read_muscle_command(ConfigReader& in, const Scenario& sc, const std::string& name,
+                         MuscleSpec* muscle) {
+  MuscleSpec& m = *muscle;
   const std::string command_key = long_or_short(in, m.key + ".command", "pressure." + name + "_MPa");
   in.check(!command_key.empty(), m.key + ".command", "is required");
   if (command_key == m.key + ".command") {
@@ -163,13 +147,16 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
   } else {
     m.command.p0_pa = units::mpa_to_pa(in.get_double(command_key, 0.0));
   }
-  // within what the valve accepts (it would clamp the rest silently)
   in_file(in, [&] {
     validate(m.command, command_key, sc.pneumatics.command_max_gauge_pa);
     return 0;
   });
+}
 
-  // the line: fixed, solved, or the calibration's
+// the line: fixed, solved, or the calibration's
+void read_muscle_line(ConfigReader& in, const std::string& name,
+                      const ArmCalibration* calibration, bool lines_needed, MuscleSpec* muscle) {
+  MuscleSpec& m = *muscle;
   const std::string line = in.get_string(m.key + ".line", "");
   const bool fixed = in.has(m.key + ".line_mm");
   in.check(line.empty() || line == "equilibrium", m.key + ".line",
@@ -188,6 +175,30 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
              "is required (or .line = \"equilibrium\", or model.calibration with " + name + "_line_mm)");
     m.line_length_m = c->line_length_m;
   }
+}
+
+MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& name,
+                       const ArmCalibration* calibration, bool lines_needed) {
+  MuscleSpec m;
+  m.key = "muscles." + name;
+  m.actuator = name;
+
+  // parameter file (and the legacy label of the shorthand's arm)
+  const std::string params_key = long_or_short(in, m.key + ".params", "model." + name + "_params");
+  in.check(!params_key.empty(), m.key + ".params", "is required");
+  m.params_file = in.get_input_path(params_key, "");
+  m.pam = in_file(in, [&] { return load_pam_params(m.params_file); });
+  in.check(m.pam.strain_gauge.has_value(), params_key,
+           "(" + m.params_file + ") needs a [strain_gauge] table (Eq. (8)): the sensing reads it");
+  // the physical plant, when it is not the estimator's law
+  if (in.has(m.key + ".plant")) read_muscle_plant(in, &m);
+  const bool legacy = params_key != m.key + ".params";
+  m.label = in.get_string(m.key + ".label", legacy ? legacy_label(name) : name);
+  in.check(!m.label.empty() && m.label.find_first_of(" ,\"") == std::string::npos, m.key + ".label",
+           "must be a non-empty name without spaces, commas or quotes");
+
+  read_muscle_command(in, sc, name, &m);
+  read_muscle_line(in, name, calibration, lines_needed, &m);
   return m;
 }
 

@@ -1,34 +1,19 @@
-// gl_context.cc: see gl_context.h.
-//
-// Why libEGL is loaded with dlopen instead of linked: MuJoCo's GL loader looks for
-// eglGetProcAddress in the process before OSMesaGetProcAddress. Were libEGL linked, the
-// osmesa backend would get GLVND's EGL entry points, which draw nothing into an OSMesa
-// context. So libEGL is loaded on demand, privately (RTLD_LOCAL), and made visible to the
-// process (RTLD_NOLOAD | RTLD_GLOBAL) only once an EGL context exists: MuJoCo then binds GL
-// through eglGetProcAddress as it should, and a process in which EGL failed can still fall
-// back to OSMesa.
+// gl_context.cc: see gl_context.h. The choice of backend, one backend per process, and the
+// fallback from egl to osmesa; the backends themselves are osmesa_context.cc and
+// egl_context.cc (which explains why libEGL is loaded with dlopen).
 #include "sim/render/gl_context.h"
 
-#include <GL/osmesa.h>
-#include <dlfcn.h>
+#include <GL/gl.h>
 
-#ifdef PAMSIM_HAVE_EGL
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
-#endif
-
-#include <atomic>
 #include <charconv>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
-#include <type_traits>
-#include <vector>
 
 #include "base/input_error.h"
+#include "sim/render/gl_backends.h"
 
 namespace pamsim {
 namespace {
@@ -51,10 +36,8 @@ void check_backend_for_process(GlBackend backend, bool claim) {
   if (claim) claimed = backend;
 }
 
-using GlGetString = const unsigned char* (*)(unsigned int);
+}  // namespace
 
-// "<vendor>, <renderer>, OpenGL <version>" of the current context, through `get_string`
-// (glGetString as the backend resolves it: the linked one may belong to another library).
 std::string gl_strings(GlGetString get_string) {
   if (!get_string) return "unknown (no glGetString)";
   const auto text = [&](unsigned int name) {
@@ -63,327 +46,6 @@ std::string gl_strings(GlGetString get_string) {
   };
   return text(GL_VENDOR) + ", " + text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION);
 }
-
-// ---- OSMesa ----
-
-struct OsMesaContextDeleter {
-  void operator()(std::remove_pointer_t<OSMesaContext>* ctx) const { OSMesaDestroyContext(ctx); }
-};
-using OsMesaContextPtr =
-    std::unique_ptr<std::remove_pointer_t<OSMesaContext>, OsMesaContextDeleter>;
-
-class OsMesaGlContext : public GlContext {
- public:
-  OsMesaGlContext(int width, int height)
-      : width_(width),
-        height_(height),
-        color_buffer_(4 * static_cast<std::size_t>(width) * height) {
-    // RGBA, 24-bit depth, 8-bit stencil, 8-bit accumulation (DESIGN.md)
-    context_.reset(OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 8, nullptr));
-    if (!context_) throw InputError("--backend osmesa: OSMesaCreateContextExt failed");
-    make_current();
-  }
-
-  void make_current() override {
-    if (!OSMesaMakeCurrent(context_.get(), color_buffer_.data(), GL_UNSIGNED_BYTE, width_,
-                           height_)) {
-      throw InputError("--backend osmesa: OSMesaMakeCurrent failed for " +
-                       std::to_string(width_) + "x" + std::to_string(height_));
-    }
-  }
-
-  std::string description() const override {
-    return fallback_reason_.empty() ? "osmesa"
-                                    : "osmesa (egl unavailable: " + fallback_reason_ + ")";
-  }
-  std::string renderer() const override {
-    return gl_strings(reinterpret_cast<GlGetString>(OSMesaGetProcAddress("glGetString")));
-  }
-  void set_fallback_reason(std::string why) { fallback_reason_ = std::move(why); }
-
- private:
-  std::string fallback_reason_;   // why egl, asked for, was not used
-  int width_;
-  int height_;
-  std::vector<unsigned char> color_buffer_;   // the default framebuffer, never read
-  OsMesaContextPtr context_;
-};
-
-// ---- EGL ----
-
-#ifdef PAMSIM_HAVE_EGL
-
-// The EGL entry points, from libEGL loaded once with RTLD_GLOBAL (see the top of this file).
-struct EglApi {
-  PFNEGLGETPROCADDRESSPROC GetProcAddress = nullptr;
-  PFNEGLQUERYSTRINGPROC QueryString = nullptr;
-  PFNEGLGETDISPLAYPROC GetDisplay = nullptr;
-  PFNEGLINITIALIZEPROC Initialize = nullptr;
-  PFNEGLTERMINATEPROC Terminate = nullptr;
-  PFNEGLCHOOSECONFIGPROC ChooseConfig = nullptr;
-  PFNEGLBINDAPIPROC BindAPI = nullptr;
-  PFNEGLCREATECONTEXTPROC CreateContext = nullptr;
-  PFNEGLMAKECURRENTPROC MakeCurrent = nullptr;
-  PFNEGLGETCURRENTCONTEXTPROC GetCurrentContext = nullptr;
-  PFNEGLDESTROYCONTEXTPROC DestroyContext = nullptr;
-  PFNEGLGETERRORPROC GetError = nullptr;
-  // EGL_EXT_device_enumeration, _device_query, _platform_device (null where missing)
-  PFNEGLQUERYDEVICESEXTPROC QueryDevices = nullptr;
-  PFNEGLQUERYDEVICESTRINGEXTPROC QueryDeviceString = nullptr;
-  PFNEGLGETPLATFORMDISPLAYEXTPROC GetPlatformDisplay = nullptr;
-  std::string load_error;   // why the API is unusable, empty when it is
-};
-
-bool has_extension(const char* extensions, const char* name) {
-  if (!extensions) return false;
-  const std::size_t n = std::strlen(name);
-  for (const char* p = std::strstr(extensions, name); p; p = std::strstr(p + n, name)) {
-    if ((p == extensions || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
-  }
-  return false;
-}
-
-const EglApi& egl_api() {
-  static const EglApi api = [] {
-    EglApi a;
-    void* lib = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);   // global once it works
-    if (!lib) {
-      const char* why = dlerror();
-      a.load_error = std::string("cannot load libEGL.so.1 (") + (why ? why : "unknown") + ")";
-      return a;
-    }
-    // each entry point, or the name of the first one missing
-    auto load = [&](auto* fn, const char* name) {
-      *fn = reinterpret_cast<std::remove_pointer_t<decltype(fn)>>(dlsym(lib, name));
-      if (!*fn && a.load_error.empty()) a.load_error = std::string("libEGL.so.1 lacks ") + name;
-    };
-    load(&a.GetProcAddress, "eglGetProcAddress");
-    load(&a.QueryString, "eglQueryString");
-    load(&a.GetDisplay, "eglGetDisplay");
-    load(&a.Initialize, "eglInitialize");
-    load(&a.Terminate, "eglTerminate");
-    load(&a.ChooseConfig, "eglChooseConfig");
-    load(&a.BindAPI, "eglBindAPI");
-    load(&a.CreateContext, "eglCreateContext");
-    load(&a.MakeCurrent, "eglMakeCurrent");
-    load(&a.GetCurrentContext, "eglGetCurrentContext");
-    load(&a.DestroyContext, "eglDestroyContext");
-    load(&a.GetError, "eglGetError");
-    if (!a.load_error.empty()) return a;
-    const char* client = a.QueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    if (has_extension(client, "EGL_EXT_platform_base")) {
-      a.GetPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-          a.GetProcAddress("eglGetPlatformDisplayEXT"));
-    }
-    if (has_extension(client, "EGL_EXT_device_enumeration") &&
-        has_extension(client, "EGL_EXT_platform_device")) {
-      a.QueryDevices =
-          reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(a.GetProcAddress("eglQueryDevicesEXT"));
-      a.QueryDeviceString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
-          a.GetProcAddress("eglQueryDeviceStringEXT"));
-    }
-    return a;
-  }();
-  return api;
-}
-
-std::string egl_error(const EglApi& egl, const char* call) {
-  char hex[16];
-  std::snprintf(hex, sizeof(hex), "0x%04x", static_cast<unsigned>(egl.GetError()));
-  return std::string(call) + " failed (EGL error " + hex + ")";
-}
-
-// One EGL device: its handle and what to call it.
-struct EglDevice {
-  EGLDeviceEXT handle = nullptr;
-  std::string name;        // its DRM node, or "software" for Mesa's llvmpipe device
-  bool software = false;
-};
-
-std::vector<EglDevice> egl_devices(const EglApi& egl) {
-  std::vector<EglDevice> devices;
-  if (!egl.QueryDevices || !egl.QueryDeviceString || !egl.GetPlatformDisplay) return devices;
-  EGLint n = 0;
-  if (egl.QueryDevices(0, nullptr, &n) != EGL_TRUE || n <= 0) return devices;
-  std::vector<EGLDeviceEXT> handles(static_cast<std::size_t>(n));
-  if (egl.QueryDevices(n, handles.data(), &n) != EGL_TRUE) return devices;
-  for (EGLint i = 0; i < n; ++i) {
-    EglDevice d;
-    d.handle = handles[static_cast<std::size_t>(i)];
-    const char* extensions = egl.QueryDeviceString(d.handle, EGL_EXTENSIONS);
-    d.software = has_extension(extensions, "EGL_MESA_device_software");
-    const char* node = has_extension(extensions, "EGL_EXT_device_drm")
-                           ? egl.QueryDeviceString(d.handle, EGL_DRM_DEVICE_FILE_EXT) : nullptr;
-    d.name = node ? node : d.software ? "software" : "no DRM node";
-    devices.push_back(d);
-  }
-  return devices;
-}
-
-// "0 (software), 1 (/dev/dri/renderD128)", or "none".
-std::string device_list(const std::vector<EglDevice>& devices) {
-  std::string list;
-  for (std::size_t i = 0; i < devices.size(); ++i) {
-    list += (i ? ", " : "") + std::to_string(i) + " (" + devices[i].name + ")";
-  }
-  return list.empty() ? "none" : list;
-}
-
-// A display with a desktop-OpenGL context on it, or the reason there is none.
-struct EglSetup {
-  EGLDisplay display = EGL_NO_DISPLAY;
-  EGLContext context = EGL_NO_CONTEXT;
-  std::string description;
-  std::string error;   // empty on success
-};
-
-// make_context's second half, on an initialised display.
-EglSetup make_context_on(const EglApi& egl, EGLDisplay display, EglSetup setup) {
-  const EGLint config_attribs[] = {
-      EGL_SURFACE_TYPE, EGL_PBUFFER_BIT,   EGL_RED_SIZE,        8, EGL_GREEN_SIZE, 8,
-      EGL_BLUE_SIZE,    8,                 EGL_ALPHA_SIZE,      8, EGL_DEPTH_SIZE, 24,
-      EGL_STENCIL_SIZE, 8,                 EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
-  EGLConfig config = nullptr;
-  EGLint n_configs = 0;
-  if (egl.ChooseConfig(display, config_attribs, &config, 1, &n_configs) != EGL_TRUE ||
-      n_configs < 1) {
-    setup.error = "no RGBA config with depth and stencil for OpenGL";
-    return setup;
-  }
-  if (egl.BindAPI(EGL_OPENGL_API) != EGL_TRUE) {
-    setup.error = egl_error(egl, "eglBindAPI");
-    return setup;
-  }
-  EGLContext context = egl.CreateContext(display, config, EGL_NO_CONTEXT, nullptr);
-  if (context == EGL_NO_CONTEXT) {
-    setup.error = egl_error(egl, "eglCreateContext");
-    return setup;
-  }
-  if (egl.MakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context) != EGL_TRUE) {
-    setup.error = egl_error(egl, "eglMakeCurrent");
-    egl.DestroyContext(display, context);
-    return setup;
-  }
-  setup.display = display;
-  setup.context = context;
-  return setup;
-}
-
-// Whether an EGL context of this process exists (its display must then stay initialised).
-std::atomic<bool> egl_context_made{false};
-
-// Initialises `display` and makes an RGBA context with depth and stencil for desktop OpenGL,
-// without a surface (MuJoCo draws into its own framebuffer), current on return. A display
-// that gives no context is terminated again (unless another context of the process uses
-// EGL), so trying several devices leaves nothing behind.
-EglSetup make_context(const EglApi& egl, EGLDisplay display, std::string description) {
-  EglSetup setup;
-  setup.description = std::move(description);
-  if (display == EGL_NO_DISPLAY) {
-    setup.error = egl_error(egl, "eglGetDisplay");
-    return setup;
-  }
-  if (egl.Initialize(display, nullptr, nullptr) != EGL_TRUE) {
-    setup.error = egl_error(egl, "eglInitialize");
-    return setup;
-  }
-  setup = make_context_on(egl, display, std::move(setup));
-  if (!setup.error.empty() && !egl_context_made.load()) egl.Terminate(display);
-  return setup;
-}
-
-// The context on the device asked for, else on the first GPU, else on Mesa's surfaceless
-// platform (no display server, no GPU), else on the default display. Throws InputError for a
-// device asked for that does not exist or gives no context, and when nothing gives one.
-EglSetup open_egl(const EglApi& egl, const EglDeviceChoice& choice) {
-  const std::vector<EglDevice> devices = egl_devices(egl);
-  const auto on_device = [&](std::size_t i) {
-    return make_context(egl, egl.GetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i].handle,
-                                                    nullptr),
-                        "egl device " + std::to_string(i) + " of " +
-                            std::to_string(devices.size()) + " (" + devices[i].name + ")");
-  };
-  if (choice.index >= 0) {
-    if (static_cast<std::size_t>(choice.index) >= devices.size()) {
-      throw InputError(choice.source + " " + std::to_string(choice.index) +
-                       ": no such EGL device; the devices here: " + device_list(devices));
-    }
-    EglSetup setup = on_device(static_cast<std::size_t>(choice.index));
-    if (!setup.error.empty()) {
-      throw InputError(choice.source + " " + std::to_string(choice.index) + ": " + setup.error);
-    }
-    return setup;
-  }
-  std::string errors;
-  const auto tried = [&](const EglSetup& s) {
-    errors += (errors.empty() ? "" : "; ") + s.description + ": " + s.error;
-  };
-  for (std::size_t i = 0; i < devices.size(); ++i) {
-    if (devices[i].software) continue;
-    EglSetup setup = on_device(i);
-    if (setup.error.empty()) return setup;
-    tried(setup);
-  }
-  const char* client = egl.QueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-  if (egl.GetPlatformDisplay && has_extension(client, "EGL_MESA_platform_surfaceless")) {
-    EglSetup setup = make_context(
-        egl, egl.GetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr),
-        "egl surfaceless (Mesa)");
-    if (setup.error.empty()) return setup;
-    tried(setup);
-  }
-  EglSetup setup = make_context(egl, egl.GetDisplay(EGL_DEFAULT_DISPLAY), "egl default display");
-  if (setup.error.empty()) return setup;
-  tried(setup);
-  throw InputError("--backend egl: no context (" + errors + ")");
-}
-
-class EglGlContext : public GlContext {
- public:
-  explicit EglGlContext(const EglDeviceChoice& choice) : egl_(egl_api()) {
-    if (!egl_.load_error.empty()) throw InputError("--backend egl: " + egl_.load_error);
-    EglSetup setup = open_egl(egl_, choice);
-    display_ = setup.display;
-    context_ = setup.context;
-    description_ = setup.description;
-    egl_context_made = true;
-    // now MuJoCo may see libEGL (see the top of this file)
-    if (!dlopen("libEGL.so.1", RTLD_NOW | RTLD_NOLOAD | RTLD_GLOBAL)) {
-      egl_.MakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-      egl_.DestroyContext(display_, context_);
-      throw InputError("--backend egl: cannot make libEGL.so.1 visible to MuJoCo");
-    }
-  }
-
-  ~EglGlContext() override {
-    // the display stays initialised: EGL displays are shared by every context in the process
-    if (egl_.GetCurrentContext() == context_) {
-      egl_.MakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    }
-    egl_.DestroyContext(display_, context_);
-  }
-
-  void make_current() override {
-    if (egl_.MakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE) {
-      throw InputError("--backend egl: " + egl_error(egl_, "eglMakeCurrent"));
-    }
-  }
-
-  std::string description() const override { return description_; }
-  std::string renderer() const override {
-    return gl_strings(reinterpret_cast<GlGetString>(egl_.GetProcAddress("glGetString")));
-  }
-
- private:
-  const EglApi& egl_;
-  std::string description_;
-  EGLDisplay display_ = EGL_NO_DISPLAY;
-  EGLContext context_ = EGL_NO_CONTEXT;
-};
-
-#endif  // PAMSIM_HAVE_EGL
-
-}  // namespace
 
 const char* gl_backend_name(GlBackend backend) {
   return backend == GlBackend::kEgl ? "egl" : "osmesa";
@@ -437,28 +99,25 @@ std::unique_ptr<GlContext> create_gl_context(GlBackend backend, int width, int h
     check_backend_for_process(GlBackend::kEgl, false);
 #ifdef PAMSIM_HAVE_EGL
     try {
-      context = std::make_unique<EglGlContext>(device);
+      context = make_egl_context(device);
       check_backend_for_process(GlBackend::kEgl, true);
       return context;
     } catch (const InputError& e) {
       if (device.index >= 0) throw;   // that device was asked for: no substitute
       check_backend_for_process(GlBackend::kOsmesa, false);
-      auto fallback = std::make_unique<OsMesaGlContext>(width, height);
-      fallback->set_fallback_reason(e.what());
-      context = std::move(fallback);
+      context = make_osmesa_context(width, height, e.what());
     }
 #else
     if (device.index >= 0) {
       throw InputError(device.source + ": this pamsim was built without EGL (libegl-dev missing)");
     }
     check_backend_for_process(GlBackend::kOsmesa, false);
-    auto fallback = std::make_unique<OsMesaGlContext>(width, height);
-    fallback->set_fallback_reason("this pamsim was built without EGL (libegl-dev missing)");
-    context = std::move(fallback);
+    context = make_osmesa_context(width, height,
+                                  "this pamsim was built without EGL (libegl-dev missing)");
 #endif
   } else {
     check_backend_for_process(GlBackend::kOsmesa, false);
-    context = std::make_unique<OsMesaGlContext>(width, height);
+    context = make_osmesa_context(width, height);
   }
   check_backend_for_process(GlBackend::kOsmesa, true);
   return context;

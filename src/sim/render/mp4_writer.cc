@@ -28,6 +28,24 @@ const AVCodec* find_h264_encoder() {
   return codec ? codec : avcodec_find_encoder(AV_CODEC_ID_H264);
 }
 
+// The H.264 encoder for `settings`, checked first: an even width and height (4:2:0), a
+// positive fps. Throws InputError naming `path`.
+const AVCodec* checked_h264_encoder(const std::string& path, const Mp4Settings& settings) {
+  const int w = settings.width_px;
+  const int h = settings.height_px;
+  if (w <= 0 || h <= 0 || w % 2 != 0 || h % 2 != 0) {
+    throw InputError(path + ": H.264 (4:2:0) needs an even width and height, got " +
+                     std::to_string(w) + "x" + std::to_string(h));
+  }
+  if (settings.fps <= 0) throw InputError(path + ": fps must be > 0");
+  const AVCodec* codec = find_h264_encoder();
+  if (!codec) {
+    throw InputError(path + ": this FFmpeg has no H.264 encoder (install libavcodec with "
+                     "libx264, or write a PNG sequence instead)");
+  }
+  return codec;
+}
+
 }  // namespace
 
 // The FFmpeg objects, and the thread that converts, encodes and writes each frame while the
@@ -39,6 +57,13 @@ struct Mp4Writer::Impl {
       : path(output),
         temp_file(output == "-" ? nullptr : std::make_unique<TempPath>(output, TempKind::kFile)) {}
   ~Impl() { stop_encoding_thread(); }
+
+  // the constructor's steps, in order
+  void make_encoder(const AVCodec* codec, const Mp4Settings& settings);
+  void open_muxer(const std::string& target);
+  void open_encoder_and_write_header(const AVCodec* codec, const Mp4Settings& settings,
+                                     bool streamed);
+  void make_converter(int w, int h);
 
   void encoding_loop();
   void encode(const unsigned char* rgb_bottom_up);
@@ -128,32 +153,13 @@ void Mp4Writer::Impl::stop_encoding_thread() {
   encoding_thread.join();
 }
 
-Mp4Writer::Mp4Writer(const std::string& path, const Mp4Settings& settings)
-    : path_(path), impl_(std::make_unique<Impl>(path)) {
-  const bool stream = path == "-";
-  const std::string temp_path = stream ? "pipe:1" : impl_->temp_file->path();
-  quiet_ffmpeg_log();
-  const int w = settings.width_px;
-  const int h = settings.height_px;
-  if (w <= 0 || h <= 0 || w % 2 != 0 || h % 2 != 0) {
-    throw InputError(path + ": H.264 (4:2:0) needs an even width and height, got " +
-                     std::to_string(w) + "x" + std::to_string(h));
-  }
-  if (settings.fps <= 0) throw InputError(path + ": fps must be > 0");
-  const AVCodec* codec = find_h264_encoder();
-  if (!codec) {
-    throw InputError(path + ": this FFmpeg has no H.264 encoder (install libavcodec with "
-                     "libx264, or write a PNG sequence instead)");
-  }
-  encoder_name_ = codec->name;
-
-  // the encoder: yuv420p at fps, a keyframe every second, the encoder's own threads
-  Impl& x = *impl_;
-  x.encoder.reset(avcodec_alloc_context3(codec));
-  if (!x.encoder) throw std::bad_alloc();
-  AVCodecContext* enc = x.encoder.get();
-  enc->width = w;
-  enc->height = h;
+// The encoder: yuv420p at fps, a keyframe every second, the encoder's own threads.
+void Mp4Writer::Impl::make_encoder(const AVCodec* codec, const Mp4Settings& settings) {
+  encoder.reset(avcodec_alloc_context3(codec));
+  if (!encoder) throw std::bad_alloc();
+  AVCodecContext* enc = encoder.get();
+  enc->width = settings.width_px;
+  enc->height = settings.height_px;
   enc->pix_fmt = AV_PIX_FMT_YUV420P;
   enc->time_base = AVRational{1, settings.fps};
   enc->framerate = AVRational{settings.fps, 1};
@@ -164,45 +170,70 @@ Mp4Writer::Mp4Writer(const std::string& path, const Mp4Settings& settings)
   enc->color_primaries = AVCOL_PRI_SMPTE170M;
   enc->color_trc = AVCOL_TRC_SMPTE170M;
   enc->color_range = AVCOL_RANGE_MPEG;
+}
 
-  // the muxer, writing the temp file (an unwritable folder fails here, before any work)
-  AVFormatContext* muxer = nullptr;
-  int status = avformat_alloc_output_context2(&muxer, nullptr, "mp4", temp_path.c_str());
-  if (status < 0 || !muxer) throw std::runtime_error("no MP4 muxer: " + av_error_text(status));
-  x.muxer.reset(muxer);
-  if (muxer->oformat->flags & AVFMT_GLOBALHEADER) enc->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-  status = avio_open(&muxer->pb, temp_path.c_str(), AVIO_FLAG_WRITE);
-  if (status < 0) throw InputError(path + ": cannot write (" + av_error_text(status) + ")");
+// The muxer, writing `target` (the temp file, or "pipe:1"): an unwritable folder fails
+// here, before any work.
+void Mp4Writer::Impl::open_muxer(const std::string& target) {
+  AVFormatContext* m = nullptr;
+  const int status = avformat_alloc_output_context2(&m, nullptr, "mp4", target.c_str());
+  if (status < 0 || !m) throw std::runtime_error("no MP4 muxer: " + av_error_text(status));
+  muxer.reset(m);
+  if (m->oformat->flags & AVFMT_GLOBALHEADER) encoder->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  const int opened = avio_open(&m->pb, target.c_str(), AVIO_FLAG_WRITE);
+  if (opened < 0) throw InputError(path + ": cannot write (" + av_error_text(opened) + ")");
+}
 
+// Opens the encoder with the x264 settings, adds its stream and writes the MP4 header.
+void Mp4Writer::Impl::open_encoder_and_write_header(const AVCodec* codec,
+                                                   const Mp4Settings& settings, bool streamed) {
+  AVCodecContext* enc = encoder.get();
   AVDictionary* encoder_options = nullptr;
   av_dict_set(&encoder_options, "preset", settings.x264_preset.c_str(), 0);
   av_dict_set(&encoder_options, "crf", std::to_string(settings.x264_crf).c_str(), 0);
-  status = avcodec_open2(enc, codec, &encoder_options);
+  int status = avcodec_open2(enc, codec, &encoder_options);
   av_dict_free(&encoder_options);
-  check_av(status, path_, "cannot open the H.264 encoder");
+  check_av(status, path, "cannot open the H.264 encoder");
 
-  x.stream = avformat_new_stream(muxer, nullptr);
-  if (!x.stream) throw std::bad_alloc();
-  x.stream->time_base = enc->time_base;
-  check_av(avcodec_parameters_from_context(x.stream->codecpar, enc), path_, "codec parameters");
+  stream = avformat_new_stream(muxer.get(), nullptr);
+  if (!stream) throw std::bad_alloc();
+  stream->time_base = enc->time_base;
+  check_av(avcodec_parameters_from_context(stream->codecpar, enc), path, "codec parameters");
   AVDictionary* muxer_options = nullptr;
   // a file: the index moved to the front (playable while downloading); a pipe cannot seek
   // back, so fragments, each with its own index (ffplay, ffmpeg and browsers read them)
   av_dict_set(&muxer_options, "movflags",
-              stream ? "frag_keyframe+empty_moov+default_base_moof" : "+faststart", 0);
-  status = avformat_write_header(muxer, &muxer_options);
+              streamed ? "frag_keyframe+empty_moov+default_base_moof" : "+faststart", 0);
+  status = avformat_write_header(muxer.get(), &muxer_options);
   av_dict_free(&muxer_options);
-  check_av(status, path_, "cannot write the MP4 header");
+  check_av(status, path, "cannot write the MP4 header");
+}
 
-  // RGB (bottom-up) -> YUV 4:2:0 at the same size, into a reused frame
-  x.rgb_to_yuv.reset(sws_getContext(w, h, AV_PIX_FMT_RGB24, w, h, AV_PIX_FMT_YUV420P,
-                                    SWS_BILINEAR, nullptr, nullptr, nullptr));
-  x.frame = alloc_frame(w, h, AV_PIX_FMT_YUV420P);
-  x.packet.reset(av_packet_alloc());
-  if (!x.rgb_to_yuv || !x.packet) throw std::bad_alloc();
+// RGB (bottom-up) -> YUV 4:2:0 at the same size, into a reused frame.
+void Mp4Writer::Impl::make_converter(int w, int h) {
+  rgb_to_yuv.reset(sws_getContext(w, h, AV_PIX_FMT_RGB24, w, h, AV_PIX_FMT_YUV420P,
+                                  SWS_BILINEAR, nullptr, nullptr, nullptr));
+  frame = alloc_frame(w, h, AV_PIX_FMT_YUV420P);
+  packet.reset(av_packet_alloc());
+  if (!rgb_to_yuv || !packet) throw std::bad_alloc();
+}
+
+Mp4Writer::Mp4Writer(const std::string& path, const Mp4Settings& settings)
+    : path_(path), impl_(std::make_unique<Impl>(path)) {
+  const bool stream = path == "-";
+  const std::string temp_path = stream ? "pipe:1" : impl_->temp_file->path();
+  quiet_ffmpeg_log();
+  const AVCodec* codec = checked_h264_encoder(path, settings);
+  encoder_name_ = codec->name;
+
+  Impl& x = *impl_;
+  x.make_encoder(codec, settings);
+  x.open_muxer(temp_path);
+  x.open_encoder_and_write_header(codec, settings, stream);
+  x.make_converter(settings.width_px, settings.height_px);
 
   // from here on only the encoding thread touches the FFmpeg objects, until finish()
-  x.handed_over.resize(3 * static_cast<std::size_t>(w) * h);
+  x.handed_over.resize(3 * static_cast<std::size_t>(settings.width_px) * settings.height_px);
   x.encoding_thread = std::thread([&x] { x.encoding_loop(); });
 }
 

@@ -24,6 +24,29 @@ std::string camera_names(const mjModel* m) {
   return names.empty() ? "none" : names;
 }
 
+// Throws InputError naming `model_path` for a frame side outside [kMinFrameSidePx,
+// kMaxFrameSidePx]; `size` is the frame's "WxH".
+void check_frame_size(const SceneRenderOptions& options, const std::string& model_path,
+                      const std::string& size) {
+  for (int side : {options.width_px, options.height_px}) {
+    if (side < kMinFrameSidePx || side > kMaxFrameSidePx) {
+      throw InputError(model_path + ": frame size " + size + " outside [" +
+                       std::to_string(kMinFrameSidePx) + ", " + std::to_string(kMaxFrameSidePx) +
+                       "] pixels per side");
+    }
+  }
+}
+
+// A plain floor: planes lose their (checker) material and take one light grey.
+void paint_floor_plain(mjModel* model) {
+  for (int g = 0; g < model->ngeom; ++g) {
+    if (model->geom_type[g] != mjGEOM_PLANE) continue;
+    model->geom_matid[g] = -1;
+    const float grey[4] = {0.80f, 0.80f, 0.82f, 1.0f};
+    std::copy(grey, grey + 4, model->geom_rgba + 4 * g);
+  }
+}
+
 }  // namespace
 
 void check_camera(const mjModel* model, const std::string& model_path, const std::string& camera) {
@@ -48,13 +71,7 @@ SceneRenderer::SceneRenderer(const mjModel* model, const std::string& model_path
   // check what is asked before touching GL
   const std::string size =
       std::to_string(options.width_px) + "x" + std::to_string(options.height_px);
-  for (int side : {options.width_px, options.height_px}) {
-    if (side < kMinFrameSidePx || side > kMaxFrameSidePx) {
-      throw InputError(model_path + ": frame size " + size + " outside [" +
-                       std::to_string(kMinFrameSidePx) + ", " + std::to_string(kMaxFrameSidePx) +
-                       "] pixels per side");
-    }
-  }
+  check_frame_size(options, model_path, size);
   check_camera(model, model_path, options.camera);
   const int camera_id = mj_name2id(model, mjOBJ_CAMERA, options.camera.c_str());
 
@@ -64,13 +81,7 @@ SceneRenderer::SceneRenderer(const mjModel* model, const std::string& model_path
   model_->vis.global.offwidth = options.width_px;
   model_->vis.global.offheight = options.height_px;
   if (options.quality == RenderQuality::kFast) model_->vis.quality.offsamples = 0;
-  // a plain floor: planes lose their (checker) material and take one light grey
-  for (int g = 0; g < model_->ngeom; ++g) {
-    if (model_->geom_type[g] != mjGEOM_PLANE) continue;
-    model_->geom_matid[g] = -1;
-    const float grey[4] = {0.80f, 0.80f, 0.82f, 1.0f};
-    std::copy(grey, grey + 4, model_->geom_rgba + 4 * g);
-  }
+  paint_floor_plain(model_.get());
   data_ = make_data(model_.get());
 
   mjv_defaultOption(&option_);

@@ -52,6 +52,23 @@ bool ends_with_mp4(const std::string& path) {
   return ext == ".mp4";
 }
 
+// The state's numbers as two text columns, names and values: time, the joint, each
+// muscle's chamber pressure and command.
+void state_numbers(const TrialSnapshot& snap, std::string* names, std::string* values) {
+  const std::vector<std::string>& labels = *snap.labels;
+  *names = snap.hinge ? "time\nangle" : "time\nposition";
+  char line[96];
+  std::snprintf(line, sizeof(line), "%.3f s\n%.2f %s", snap.time_s, snap.joint_position,
+                snap.hinge ? "deg" : "mm");
+  *values = line;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    *names += "\n" + labels[i];
+    std::snprintf(line, sizeof(line), "\n%.3f MPa (cmd %.3f)",
+                  units::pa_to_mpa((*snap.pressure_pa)[i]), units::pa_to_mpa((*snap.command_pa)[i]));
+    *values += line;
+  }
+}
+
 // Appends (x, y) to a figure line; when the line is full the oldest point goes.
 void append_point(mjvFigure* figure, int line, double x, double y) {
   int& n = figure->linepnt[line];
@@ -277,17 +294,9 @@ void TrialVideo::observe(const TrialSnapshot& snapshot) {
 void TrialVideo::draw_overlays(const TrialSnapshot& snap) {
   // the numbers, top left: time, the joint, each muscle's chamber pressure and command
   const std::vector<std::string>& labels = *snap.labels;
-  std::string names = snap.hinge ? "time\nangle" : "time\nposition";
+  std::string names, values;
+  state_numbers(snap, &names, &values);
   char line[96];
-  std::snprintf(line, sizeof(line), "%.3f s\n%.2f %s", snap.time_s, snap.joint_position,
-                snap.hinge ? "deg" : "mm");
-  std::string values = line;
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    names += "\n" + labels[i];
-    std::snprintf(line, sizeof(line), "\n%.3f MPa (cmd %.3f)",
-                  units::pa_to_mpa((*snap.pressure_pa)[i]), units::pa_to_mpa((*snap.command_pa)[i]));
-    values += line;
-  }
   // the reflex: which window is open, and when it first triggered
   const std::string state = reflex_state(snap);
   if (std::isfinite(snap.first_trigger_s)) trigger_s_ = snap.first_trigger_s;

@@ -17,6 +17,7 @@
 #include "sim/io/gnuplot.h"
 #include "sim/io/outputs.h"
 #include "sim/io/scenario_file.h"
+#include "sim/validate/table_cells.h"
 
 namespace pamsim {
 namespace {
@@ -134,6 +135,57 @@ double slack_episode_start(const Trajectory& tr, const std::string& label, doubl
   return kNaN;
 }
 
+namespace {
+
+// One muscle's errors over every trial, pooled per method (model, fiber) and part (all,
+// before and after its slack episode); its slack episodes' starts, per trial, in *starts.
+void pool_muscle_errors(const ReachingValidationSpec& spec,
+                        const std::vector<TrialResult>& trials, const std::string& label,
+                        double dt, ErrorPool (&pools)[2][3], std::vector<double>* starts) {
+  for (const TrialResult& r : trials) {
+    const double slack = slack_episode_start(r.trajectory, label, spec.window_start_s,
+                                             spec.window_end_s, spec.min_slack_s);
+    starts->push_back(slack);
+    const MuscleErrors e =
+        muscle_errors(r.trajectory, label, spec.window_start_s, spec.window_end_s, dt);
+    // before: from the line's first taut sample to the episode; after: from the episode
+    // on; a trial without an episode has neither
+    const double taut = first_taut_s(r.trajectory, label, spec.window_start_s);
+    for (std::size_t i = 0; i < e.time_s.size(); ++i) {
+      int part = 0;
+      if (!std::isnan(slack)) part = e.time_s[i] >= slack ? 2 : (e.time_s[i] >= taut ? 1 : 0);
+      for (int method = 0; method < 2; ++method) {
+        const double err = method == 0 ? e.model_pct[i] : e.fiber_pct[i];
+        pools[method][0].add(err);
+        if (part > 0) pools[method][part].add(err);
+      }
+    }
+  }
+}
+
+// A row per method and part of one muscle's pooled errors, with the paper's where it has one.
+void add_muscle_rows(const ReachingValidationSpec& spec, const MuscleSpec& m,
+                     const ErrorPool (&pools)[2][3], std::vector<ReachingRow>* rows) {
+  for (int method = 0; method < 2; ++method) {
+    for (int part = 0; part < 3; ++part) {
+      ReachingRow row;
+      row.muscle = m.actuator;
+      row.label = m.label;
+      row.method = kMethods[method];
+      row.part = kParts[part];
+      row.sim = pools[method][part].result();
+      row.samples = pools[method][part].n;
+      std::string key = row.method + "_" + row.muscle;
+      if (part > 0) key += std::string("_") + kParts[part];
+      const auto paper = spec.paper.find(key);
+      if (paper != spec.paper.end()) row.paper = paper->second;
+      rows->push_back(row);
+    }
+  }
+}
+
+}  // namespace
+
 ReachingValidationResult run_reaching_validation(const ReachingValidationSpec& spec,
                                                  const ValidationOptions& options) {
   ReachingValidationResult result;
@@ -171,42 +223,9 @@ ReachingValidationResult run_reaching_validation(const ReachingValidationSpec& s
     std::vector<double> starts;
     // pools per method and part, over every trial
     ErrorPool pools[2][3];
-    for (const TrialResult& r : result.trials) {
-      const double slack = slack_episode_start(r.trajectory, m.label, spec.window_start_s,
-                                               spec.window_end_s, spec.min_slack_s);
-      starts.push_back(slack);
-      const MuscleErrors e =
-          muscle_errors(r.trajectory, m.label, spec.window_start_s, spec.window_end_s, dt);
-      // before: from the line's first taut sample to the episode; after: from the episode
-      // on; a trial without an episode has neither
-      const double taut = first_taut_s(r.trajectory, m.label, spec.window_start_s);
-      for (std::size_t i = 0; i < e.time_s.size(); ++i) {
-        int part = 0;
-        if (!std::isnan(slack)) part = e.time_s[i] >= slack ? 2 : (e.time_s[i] >= taut ? 1 : 0);
-        for (int method = 0; method < 2; ++method) {
-          const double err = method == 0 ? e.model_pct[i] : e.fiber_pct[i];
-          pools[method][0].add(err);
-          if (part > 0) pools[method][part].add(err);
-        }
-      }
-    }
+    pool_muscle_errors(spec, result.trials, m.label, dt, pools, &starts);
     result.slack_start_s.push_back(starts);
-    for (int method = 0; method < 2; ++method) {
-      for (int part = 0; part < 3; ++part) {
-        ReachingRow row;
-        row.muscle = m.actuator;
-        row.label = m.label;
-        row.method = kMethods[method];
-        row.part = kParts[part];
-        row.sim = pools[method][part].result();
-        row.samples = pools[method][part].n;
-        std::string key = row.method + "_" + row.muscle;
-        if (part > 0) key += std::string("_") + kParts[part];
-        const auto paper = spec.paper.find(key);
-        if (paper != spec.paper.end()) row.paper = paper->second;
-        result.rows.push_back(row);
-      }
-    }
+    add_muscle_rows(spec, m, pools, &result.rows);
   }
   return result;
 }
@@ -215,16 +234,15 @@ std::string table5_csv(const ReachingValidationResult& result) {
   std::ostringstream out;
   out << "muscle,method,part,samples,max_error_pct,rmse_pct,paper_max_error_pct,paper_rmse_pct,"
          "slack_start_s\n";
-  const auto num = [](double v) { return std::isfinite(v) ? format_shortest(v) : std::string(); };
   for (const ReachingRow& row : result.rows) {
     std::size_t m = 0;
     while (m < result.scenario.muscles.size() && result.scenario.muscles[m].actuator != row.muscle)
       ++m;
     out << row.muscle << ',' << row.method << ',' << row.part << ',' << row.samples << ','
-        << num(row.sim.max_pct) << ',' << num(row.sim.rmse_pct) << ','
-        << (row.paper ? num(row.paper->max_pct) : "") << ','
-        << (row.paper ? num(row.paper->rmse_pct) : "") << ','
-        << num(result.slack_start_s[m].front()) << '\n';
+        << csv_number(row.sim.max_pct) << ',' << csv_number(row.sim.rmse_pct) << ','
+        << (row.paper ? csv_number(row.paper->max_pct) : "") << ','
+        << (row.paper ? csv_number(row.paper->rmse_pct) : "") << ','
+        << csv_number(result.slack_start_s[m].front()) << '\n';
   }
   return out.str();
 }
@@ -232,11 +250,9 @@ std::string table5_csv(const ReachingValidationResult& result) {
 std::string table5_markdown(const ReachingValidationResult& result,
                             const ReachingValidationSpec& spec) {
   std::ostringstream out;
+  // "-": no sample fell in that part
   const auto cell = [](const ErrorPct& e, int samples) {
-    if (samples == 0) return std::string("-");
-    char buf[48];
-    std::snprintf(buf, sizeof(buf), "%.3g / %.3g", e.max_pct, e.rmse_pct);
-    return std::string(buf);
+    return samples == 0 ? std::string("-") : markdown_error_pct(e);
   };
   out << "# Table V in simulation: length estimation in the reaching task, error in % of length\n\n"
       << "Each cell: simulation max / RMSE over " << spec.trials << " trials, "

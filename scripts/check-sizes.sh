@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Holds src/ to the size rule of issue 30 ("rooms of human size"): no file (*.cc, *.h) over
+# 400 lines, no function over 60 lines. Prints every file and function over its limit and
+# exits 1; else prints one summary line and exits 0. File lengths by wc -l, function lengths
+# by pmccabe (Debian package pmccabe; its 5th column is a function's lines, its last
+# "file(line): name"). Run from anywhere; the optional argument is the folder to check.
+set -euo pipefail
+
+readonly MAX_FILE_LINES=400
+readonly MAX_FUNCTION_LINES=60
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+src="$(cd "${1:-$root/src}" && pwd)"
+cd "$root"
+
+if ! command -v pmccabe >/dev/null; then
+  echo "check-sizes: pmccabe not found (scripts/install-deps.sh installs it)" >&2
+  exit 2
+fi
+
+# paths relative to the repository root, as the messages name them
+mapfile -t files < <(find "$src" -type f \( -name '*.cc' -o -name '*.h' \) | sort)
+files=("${files[@]#"$root"/}")
+if [ ${#files[@]} -eq 0 ]; then
+  echo "check-sizes: no *.cc or *.h under $src" >&2
+  exit 2
+fi
+
+# files: "lines<TAB>path", longest first
+file_lines="$(for f in "${files[@]}"; do printf '%s\t%s\n' "$(wc -l <"$f")" "$f"; done |
+  sort -t$'\t' -k1,1nr)"
+
+# functions: "lines<TAB>file(line): name", longest first. pmccabe parses without the
+# preprocessor: what it cannot parse (e.g. braces split by #ifdef) it reports on stderr,
+# passed on here as a warning, since a function it skipped is not checked
+pmccabe_err="$(mktemp)"
+trap 'rm -f "$pmccabe_err"' EXIT
+function_lines="$(pmccabe -v "${files[@]}" 2>"$pmccabe_err" |
+  awk -F'\t' 'NF >= 6 && $5 ~ /^[0-9]+$/ { print $5 "\t" $6 }' | sort -t$'\t' -k1,1nr)"
+while IFS= read -r warning; do
+  [ -n "$warning" ] && echo "check-sizes: warning: pmccabe: $warning" >&2
+done <"$pmccabe_err"
+
+over_files="$(awk -F'\t' -v max="$MAX_FILE_LINES" '$1 > max' <<<"$file_lines")"
+over_functions="$(awk -F'\t' -v max="$MAX_FUNCTION_LINES" '$1 > max' <<<"$function_lines")"
+
+if [ -n "$over_files" ] || [ -n "$over_functions" ]; then
+  [ -n "$over_files" ] && awk -F'\t' -v max="$MAX_FILE_LINES" \
+    '{ print "file over " max " lines: " $2 " (" $1 " lines)" }' <<<"$over_files"
+  [ -n "$over_functions" ] && awk -F'\t' -v max="$MAX_FUNCTION_LINES" \
+    '{ print "function over " max " lines: " $2 " (" $1 " lines)" }' <<<"$over_functions"
+  exit 1
+fi
+
+n_files=${#files[@]}
+n_functions="$(grep -c . <<<"$function_lines" || true)"
+IFS=$'\t' read -r largest_lines largest_file <<<"$(head -n 1 <<<"$file_lines")"
+IFS=$'\t' read -r longest_lines longest_function <<<"$(head -n 1 <<<"$function_lines")"
+echo "sizes: $n_files files, $n_functions functions, largest file $largest_file" \
+  "($largest_lines lines), longest function $longest_function ($longest_lines lines)"

@@ -1,0 +1,24 @@
+// table_cells.cc: see table_cells.h.
+#include "sim/validate/table_cells.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "base/format.h"
+
+namespace pamsim {
+
+std::string markdown_number(double v) {
+  if (!std::isfinite(v)) return "n/a";
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.3g", v);
+  return std::string(buf);
+}
+
+std::string markdown_error_pct(const ErrorPct& e) {
+  return markdown_number(e.max_pct) + " / " + markdown_number(e.rmse_pct);
+}
+
+std::string csv_number(double v) { return std::isfinite(v) ? format_shortest(v) : std::string(); }
+
+}  // namespace pamsim

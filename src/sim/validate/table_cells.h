@@ -1,0 +1,22 @@
+// table_cells.h: how the validation protocols (length_estimation.h, reaching.h) write a
+// number into their tables: the Markdown cells people read and the CSV cells programs read.
+#pragma once
+
+#include <string>
+
+#include "sim/validate/validation_options.h"
+
+namespace pamsim {
+
+// A Markdown cell's number: 3 significant digits ("%.3g"); "n/a" where it is not finite
+// (a trial that diverged).
+std::string markdown_number(double v);
+
+// "max / RMSE", each as markdown_number: an error in % of length.
+std::string markdown_error_pct(const ErrorPct& e);
+
+// A CSV cell's number: the shortest text that reads back the same double; empty where it is
+// not finite.
+std::string csv_number(double v);
+
+}  // namespace pamsim
