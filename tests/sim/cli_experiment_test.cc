@@ -81,6 +81,26 @@ TEST(CliExperimentTest, PulleyRunWritesTrajectorySummaryAndPlot) {
   EXPECT_GT(s["position_max_mm"].get<double>() - s["position_min_mm"].get<double>(), 10.0);
 }
 
+TEST(CliExperimentTest, CompareDrawsTheJointTheRunsLogAndRefusesToMixJoints) {
+  const fs::path dir = fresh_dir("compare_joints");
+  const std::string pulley = "run scenarios/pulley_sine_5kg.toml --set sim.duration_s=1 --no-plot";
+  ASSERT_EQ(run_pamsim(pulley + " --out " + (dir / "a").string()).exit_code, 0);
+  ASSERT_EQ(run_pamsim(pulley + " --set sensors.noise_scale=2 --out " + (dir / "b").string())
+                .exit_code, 0);
+  const CliResult ok = run_pamsim("compare " + (dir / "a").string() + " " +
+                                  (dir / "b").string() + " -o " + (dir / "ab.png").string());
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_TRUE(fs::is_regular_file(dir / "ab.png"));
+  // a slide's runs against a hinge's: one line naming both, nothing written
+  ASSERT_EQ(run_pamsim("run scenarios/drop_mass.toml --set sim.duration_s=1.2 --no-plot --out " +
+                       (dir / "arm").string()).exit_code, 0);
+  const CliResult mixed = run_pamsim("compare " + (dir / "a").string() + " " +
+                                     (dir / "arm").string() + " -o " + (dir / "mix.png").string());
+  EXPECT_EQ(mixed.exit_code, 2);
+  EXPECT_NE(mixed.err.find("compare runs of one kind of joint"), std::string::npos) << mixed.err;
+  EXPECT_FALSE(fs::exists(dir / "mix.png"));
+}
+
 TEST(CliExperimentTest, ReachingRunWritesItsAnglePlot) {
   const fs::path out = fresh_dir("run_reaching");
   const CliResult r = run_pamsim("run scenarios/reaching.toml --out " + out.string());

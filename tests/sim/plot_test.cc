@@ -179,6 +179,35 @@ TEST_F(PlotTest, AngleBandIgnoresMissingValuesOfSomeTrials) {
   EXPECT_DOUBLE_EQ(band.min[10], band.max[10]);
 }
 
+// A slide joint's log (the pulley rig): position_mm where a hinge logs angle_deg.
+Trajectory slide_trajectory(double offset_mm, std::size_t rows = 100) {
+  Trajectory tr;
+  tr.columns = make_log_layout(false, {}, {"pam"}, false).columns;
+  tr.values.assign(rows * tr.columns.size(), 0.0);
+  for (std::size_t r = 0; r < rows; ++r) {
+    tr.values[r * tr.columns.size() + tr.column("time_s")] = 0.01 * static_cast<double>(r);
+    tr.values[r * tr.columns.size() + tr.column("position_mm")] = offset_mm + 0.1 * r;
+  }
+  return tr;
+}
+
+TEST_F(PlotTest, ABandOfASlideIsItsPositionInMillimetresAndJointsDoNotMix) {
+  const Trajectory a = slide_trajectory(0.0), b = slide_trajectory(4.0);
+  const BandSeries band = angle_band({&a, &b}, "pulley");
+  EXPECT_EQ(band.quantity, "position");
+  EXPECT_EQ(band.unit, "mm");
+  EXPECT_DOUBLE_EQ(band.mean[30], 0.1 * 30 + 2.0);   // the mean of 3 and 7 mm
+  EXPECT_EQ(angle_band({&a}, "x").trials, 1u);
+  const Trajectory hinge = synthetic_trajectory(0.0);
+  EXPECT_EQ(angle_band({&hinge}, "arm").quantity, "angle");
+  EXPECT_THROW(angle_band({&a, &hinge}, "mixed"), std::invalid_argument);
+  // a compare plot of a slide and a hinge is refused, one of slides drawn
+  EXPECT_THROW(write_compare_plot(path("mixed.png"), {band, angle_band({&hinge}, "arm")}),
+               std::invalid_argument);
+  write_compare_plot(path("slides.png"), {band, angle_band({&b}, "one")});
+  EXPECT_TRUE(read_png_size(path("slides.png")).ok);
+}
+
 TEST_F(PlotTest, BandPlotIsAPngOfTheConfiguredSize) {
   std::vector<Trajectory> trials;
   for (int k = 0; k < 20; ++k) trials.push_back(synthetic_trajectory(0.3 * k));

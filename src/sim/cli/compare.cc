@@ -3,8 +3,8 @@
 // paper's Fig. 9) as angle bands on one plot, and their metrics side by side on stdout.
 // A DIR is either a repeated run (DIR/summary.json with "metrics", DIR/trial_*/trajectory.csv)
 // or a single trial (DIR/summary.json without "metrics", DIR/trajectory.csv), a band of one.
-// The plot goes to -o, by default compare.png in DIR_A's parent folder (runs kept side by
-// side in renders/ give renders/compare.png).
+// The plot goes to -o, by default renders/compare_<A>_vs_<B>.png; it shows the joint the
+// runs log (a hinge's angle_deg, or a slide's position_mm, e.g. the pulley rig).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -69,10 +69,9 @@ nlohmann::json read_json(const fs::path& path) {
 // the trajectory of one trial, with the columns the band needs
 Trajectory load_trajectory(const fs::path& csv) {
   Trajectory tr = read_trajectory_csv(csv.string());
-  for (const char* name : {"time_s", "angle_deg"}) {
-    if (std::find(tr.columns.begin(), tr.columns.end(), name) == tr.columns.end()) {
-      throw InputError(csv.string() + ": no column " + name + " in the header");
-    }
+  if (!tr.has_column("time_s")) throw InputError(csv.string() + ": no column time_s in the header");
+  if (!tr.has_column("angle_deg") && !tr.has_column("position_mm")) {
+    throw InputError(csv.string() + ": no joint column (angle_deg or position_mm) in the header");
   }
   if (tr.rows() == 0) throw InputError(csv.string() + ": no data rows");
   return tr;
@@ -215,7 +214,17 @@ void compare(const CompareOptions& opt) {
   for (const auto* run : {&a, &b}) {
     std::vector<const Trajectory*> ptrs;
     for (const auto& t : run->trajectories) ptrs.push_back(&t);
-    bands.push_back(angle_band(ptrs, run == &a ? label_a : label_b));
+    try {
+      bands.push_back(angle_band(ptrs, run == &a ? label_a : label_b));
+    } catch (const std::invalid_argument&) {
+      throw InputError(run->dir + ": its trials log different joints (angle_deg and position_mm)");
+    }
+  }
+  // what the logs hold decides the plot: a hinge's angle or a slide's position, not both
+  if (bands[0].quantity != bands[1].quantity) {
+    throw InputError(opt.dir_b + ": logs the " + bands[1].unit + " " + bands[1].quantity +
+                     " of a joint, " + opt.dir_a + " the " + bands[0].unit + " " +
+                     bands[0].quantity + "; compare runs of one kind of joint");
   }
   const std::string out = opt.out.empty() ? default_out(opt.dir_a, opt.dir_b) : opt.out;
   if (is_stream_output(out)) {

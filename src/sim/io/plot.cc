@@ -39,7 +39,7 @@ GnuplotJob band_job(const std::vector<BandSeries>& runs, const std::string& titl
   std::vector<double> all_time, all_angle;
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const BandSeries& b = runs[k];
-    std::string dat = "# time_s mean_deg min_deg max_deg\n";
+    std::string dat = "# time_s mean_" + b.unit + " min_" + b.unit + " max_" + b.unit + "\n";
     for (std::size_t r = 0; r < b.time_s.size(); ++r) {
       dat += gp_num(b.time_s[r]) + " " + gp_num(b.mean[r]) + " " + gp_num(b.min[r]) + " " +
              gp_num(b.max[r]) + "\n";
@@ -50,9 +50,11 @@ GnuplotJob band_job(const std::vector<BandSeries>& runs, const std::string& titl
     all_angle.insert(all_angle.end(), b.max.begin(), b.max.end());
   }
 
-  // axes; a fixed y range if no angle is finite (gnuplot refuses an all-missing plot)
+  // axes (the joint of the first run: compare checks they agree); a fixed y range if no value
+  // is finite (gnuplot refuses an all-missing plot)
   s << "set title " << gp_quote(title) << " font ',14'\n"
-    << "set xlabel 'time (s)'\nset ylabel 'angle (deg)'\nset grid\n"
+    << "set xlabel 'time (s)'\nset ylabel '" << runs.front().quantity << " ("
+    << runs.front().unit << ")'\nset grid\n"
     << "set key top right box opaque width 2\n"
     << xrange_line(all_time);
   double lo, hi;
@@ -105,8 +107,18 @@ BandSeries angle_band(const std::vector<const Trajectory*>& trials, std::string 
   b.min.assign(rows, kNaN);
   b.max.assign(rows, kNaN);
   const std::size_t time_col = trials.front()->column("time_s");
+  const std::string joint = joint_column(*trials.front());
+  if (joint == "position_mm") {
+    b.quantity = "position";
+    b.unit = "mm";
+  }
   std::vector<std::size_t> angle_col;
-  for (const Trajectory* t : trials) angle_col.push_back(t->column(joint_column(*t)));
+  for (const Trajectory* t : trials) {
+    if (joint_column(*t) != joint) {
+      throw std::invalid_argument("angle_band: trials of a hinge and of a slide joint mixed");
+    }
+    angle_col.push_back(t->column(joint));
+  }
 
   // per row, over the trials where the angle is finite
   for (std::size_t r = 0; r < rows; ++r) {
@@ -192,7 +204,7 @@ void write_angle_band_plot(const std::string& png_path,
   const std::string name = fs::path(scenario.path).stem().string();
   const BandSeries band = angle_band(trials, name.empty() ? "angle" : name);
   if (band.time_s.empty()) throw std::runtime_error(png_path + ": no trajectory rows to plot");
-  const std::string title = file_name(scenario.path) + ": angle over " +
+  const std::string title = file_name(scenario.path) + ": " + band.quantity + " over " +
                             std::to_string(trials.size()) + " trials (mean, band: min-max)";
   const EventSpec* release = scenario.event("release");
   const double drop_time_s =
@@ -202,9 +214,13 @@ void write_angle_band_plot(const std::string& png_path,
 
 void write_compare_plot(const std::string& png_path, const std::vector<BandSeries>& runs) {
   if (runs.empty()) throw std::runtime_error(png_path + ": no runs to compare");
-  std::string title = "angle: ";
+  std::string title = runs.front().quantity + ": ";
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const BandSeries& b = runs[k];
+    if (b.quantity != runs.front().quantity) {
+      throw std::invalid_argument(png_path + ": band '" + b.label + "' is a " + b.quantity +
+                                  ", the first a " + runs.front().quantity);
+    }
     if (b.mean.size() != b.time_s.size() || b.min.size() != b.time_s.size() ||
         b.max.size() != b.time_s.size()) {
       throw std::invalid_argument(png_path + ": band '" + b.label + "' has columns of different lengths");

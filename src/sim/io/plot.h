@@ -27,12 +27,13 @@ inline constexpr int kBandPlotHeightPx = 800;
 inline constexpr int kHeatMapWidthPx = 1100;     // heatmap_*.png
 inline constexpr int kHeatMapHeightPx = 900;
 
-// The angle over repeated trials, per time row: mean, min and max of angle_deg [deg] over
-// the trials where it is finite (NaN where none is). time_s is the first trial's; trials of
-// different lengths are cut to the shortest.
+// The joint over repeated trials, per time row: mean, min and max of its column (angle_deg
+// of a hinge, position_mm of a slide) over the trials where it is finite (NaN where none
+// is). time_s is the first trial's; trials of different lengths are cut to the shortest.
 struct BandSeries {
   std::string label;        // legend text
   std::size_t trials = 0;   // how many trajectories went in
+  std::string quantity = "angle", unit = "deg";   // "position", "mm" for a slide joint
   std::vector<double> time_s, mean, min, max;
 };
 
@@ -42,8 +43,8 @@ std::string joint_column(const Trajectory& trajectory);
 std::string trial_plot_name(const Trajectory& trajectory);
 
 // The band of the joint's column (angle_deg or position_mm). Throws std::invalid_argument
-// if `trials` is empty or holds a null pointer, and std::out_of_range if a trajectory lacks
-// time_s or the joint.
+// if `trials` is empty or holds a null pointer or trials of both joint kinds, and
+// std::out_of_range if a trajectory lacks time_s or the joint.
 BandSeries angle_band(const std::vector<const Trajectory*>& trials, std::string label);
 
 // A value over two sweep axes. On a grid, one cell per pair of levels (index space, the
