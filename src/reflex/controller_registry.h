@@ -28,7 +28,9 @@ std::string controller_kind_choices();
 // controller.kind when a scenario does not say.
 const char* default_controller_kind();
 
-// Adds a kind. Throws std::logic_error if its name is taken or it has no reader.
+// Adds a kind. Throws std::logic_error if its name is taken or it has no reader. Call it
+// before any scenario is read or `pamsim keys` listed (at static initialisation, as
+// ControllerRegistrar does): the list is not locked, and the key docs are built once.
 void register_controller_kind(ControllerKind kind);
 
 // Registers a kind at static initialisation: `static ControllerRegistrar r{my_kind()};` at
