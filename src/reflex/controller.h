@@ -3,7 +3,9 @@
 // muscle's sensors (sensing.h) and hands the controller those readings alone, with the
 // pressures the scenario's schedules command at that time (the paper's top controller,
 // p_tp of Eq. (12)-(13)); the controller returns one valve command per muscle.
-// Muscles are indexed in the model's actuator order.
+// Muscles are indexed in the model's actuator order. The kinds of controller (none,
+// stretch_reflex, ...) are listed in controller_registry.h; what a kind is, in
+// controller_kind.h.
 #pragma once
 
 #include <limits>
@@ -33,6 +35,12 @@ struct MuscleReading {
   double velocity_est_m_s = kNone;     // Eq. (11), low-passed at reflex.lowpass_hz
 };
 
+// An antagonistic pair by muscle index (model order).
+struct ReflexPair {
+  int agonist = 0;
+  int antagonist = 1;
+};
+
 struct ControlInput {
   double time_s = 0.0;
   // false while an event has switched the controller off: it then passes p_tp through
@@ -60,21 +68,6 @@ class Controller {
   virtual void update(const ControlInput& in, ControlOutput* out) = 0;
   // Reflex trigger times per muscle so far (nullptr for a controller without reflexes).
   virtual const std::vector<std::vector<double>>* trigger_times_s() const { return nullptr; }
-};
-
-// Controller "none": the scheduled commands pass through unchanged; the velocity logged is
-// the model-based estimate. Sensors are still sampled by the loop, so the estimates are
-// logged (the papers' length-estimation and reaching experiments run without a reflex).
-class PassThroughController final : public Controller {
- public:
-  void update(const ControlInput& in, ControlOutput* out) override {
-    const std::vector<MuscleReading>& readings = *in.readings;
-    for (std::size_t j = 0; j < readings.size(); ++j) {
-      out->p_cmd_pa[j] = (*in.p_tp_pa)[j];
-      out->velocity_m_s[j] = readings[j].velocity_est_m_s;
-      out->reflex_active[j] = 0;
-    }
-  }
 };
 
 }  // namespace pamsim

@@ -44,6 +44,7 @@ StretchReflex::StretchReflex(const StretchReflexParams& params, double control_p
 
 double StretchReflex::update(double time_s, double velocity_m_s, bool may_trigger) {
   // idle: count down the refractory period, else look for a trigger
+  triggered_ = false;
   if (window_left_ == 0) {
     active_ = false;
     if (refractory_left_ > 0) {
@@ -53,7 +54,7 @@ double StretchReflex::update(double time_s, double velocity_m_s, bool may_trigge
     const bool armed = time_s + arm_tolerance_s_ >= arm_after_s_;
     if (!armed || !may_trigger || !(velocity_m_s > v_thr_m_s_)) return 0.0;
     // trigger: this tick is the first of the window
-    trigger_times_s_.push_back(time_s);
+    triggered_ = true;
     v_latched_m_s_ = velocity_m_s;
     window_left_ = window_ticks_;
   }

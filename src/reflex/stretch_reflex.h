@@ -69,8 +69,8 @@ class StretchReflex {
   double update(double time_s, double velocity_m_s, bool may_trigger = true);
 
   bool active() const { return active_; }
-  int trigger_count() const { return static_cast<int>(trigger_times_s_.size()); }
-  const std::vector<double>& trigger_times_s() const { return trigger_times_s_; }
+  // True if the last update() opened a window (the controller keeps the trigger times).
+  bool triggered() const { return triggered_; }
 
  private:
   double v_thr_m_s_;
@@ -84,7 +84,7 @@ class StretchReflex {
   int refractory_left_ = 0;
   double v_latched_m_s_ = 0.0;
   bool active_ = false;
-  std::vector<double> trigger_times_s_;
+  bool triggered_ = false;
 };
 
 // The two muscles of an antagonistic pair, in the order of Eq. (12)-(13).

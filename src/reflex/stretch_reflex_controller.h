@@ -6,7 +6,8 @@
 //
 // Per control tick, muscle by muscle in model order:
 //   1. take v from the reading: the estimate (reflex.sensor = "model") or the fiber rate
-//      ("fiber"), both low-passed at reflex.lowpass_hz by the sensing (sensing.h);
+//      ("fiber"), both low-passed at reflex.lowpass_hz by the sensing (sensing.h,
+//      SensingConfig::velocity_lowpass_hz, which this kind's reader sets);
 //   2. run the muscle's stretch reflex (stretch_reflex.h) if reflex.enabled and the
 //      controller is on, behind two gates (below);
 // then command each pair by Eq. (12)-(13), clamped to [0, p_max].
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "reflex/controller.h"
+#include "reflex/controller_kind.h"
 #include "reflex/stretch_reflex.h"
 
 namespace pamsim {
@@ -31,14 +33,6 @@ ReflexSensor parse_reflex_sensor(const std::string& name);
 struct ReflexConfig : StretchReflexParams {
   bool enabled = true;                         // reflex.enabled
   ReflexSensor sensor = ReflexSensor::kModel;  // reflex.sensor
-  // reflex.lowpass_hz: first-order low-pass on the velocity fed to the reflex, 0 (off) or
-  // (0, control_hz / 2] (applied by the sensing, SensingConfig::velocity_lowpass_hz).
-  // Default off: DESIGN.md measured that 10 Hz delays the trigger by ~30 ms and halves the
-  // gain and 5 Hz never triggers. On the physical plant (README, the noise sweep) 10 Hz
-  // costs the model reflex 0.9 deg of drop at the default noise and moves the onset of
-  // noise mistrips from 2x to 6x the default noise (sensors.noise_scale). A low-pass on the
-  // pressure (sensors.pressure_lowpass_hz) is no substitute (see its caveat in sensors.h).
-  double lowpass_hz = 0.0;
   // Trigger gates (pamsim's additions; the paper reports the problems they address, Sec. V-C:
   // "mistripping the reflex or making the reflex to continue triggering itself").
   // reflex.min_tension_N >= 0: a muscle's reflex triggers only while its strain gauge reads
@@ -56,15 +50,9 @@ struct ReflexConfig : StretchReflexParams {
   bool reciprocal_trigger_inhibition = true;
 };
 
-// Table II's thresholds and gains for a sensor: model 70 mm/s and 1/800 MPa/(mm/s),
-// fiber 25 mm/s and 1/300. The other fields keep their defaults.
+// Table II's thresholds and gains for a sensor: model, StretchReflexParams' defaults (70 mm/s
+// and 1/800 MPa/(mm/s)); fiber 25 mm/s and 1/300. The other fields keep their defaults.
 ReflexConfig table_ii_reflex_config(ReflexSensor sensor);
-
-// An antagonistic pair by muscle index (model order).
-struct ReflexPair {
-  int agonist = 0;
-  int antagonist = 1;
-};
 
 struct StretchReflexControllerConfig {
   ReflexConfig reflex;
@@ -78,7 +66,29 @@ struct StretchReflexControllerConfig {
 // Checks every field once, throwing InputError "<key> must be ..., got <value>" naming the
 // scenario key: reflex.* as documented on the structs, sim.control_hz, controller.p_max_MPa,
 // and reflex.pairs (indices in range, no muscle in two pairs or paired with itself).
+// (reflex.lowpass_hz is the sensing's velocity low-pass: SensingConfig, checked there.)
 void validate(const StretchReflexControllerConfig& config);
+
+// The kind "stretch_reflex" as a scenario configures it (controller_kind.h): the keys
+// reflex.* and controller.p_max_MPa, read by stretch_reflex_controller_kind()'s reader.
+class StretchReflexScenarioConfig final : public ControllerConfig {
+ public:
+  ReflexConfig reflex;     // reflex.*
+  double p_max_pa = 0.0;   // controller.p_max_MPa, or the regulator's command maximum
+
+  // The controller's configuration for a trial's muscles, pairs and control rate.
+  StretchReflexControllerConfig bound(const ControllerSetup& setup) const;
+  bool has_reflexes() const override { return true; }
+  // reflex_enabled, reflex_sensor, v_thr_mm_s, k_MPa_s_per_mm
+  std::vector<SummaryField> summary_fields() const override;
+  std::unique_ptr<Controller> make_controller(const ControllerSetup& setup) const override;
+};
+
+// The kind "stretch_reflex" (listed in controller_registry.cc): its reader checks the keys
+// above, reflex.pairs by name (default: agonist and antagonist when both exist) and each
+// muscle's schedule against controller.p_max_MPa, and sets the sensing's velocity low-pass
+// from reflex.lowpass_hz.
+ControllerKind stretch_reflex_controller_kind();
 
 class StretchReflexController final : public Controller {
  public:

@@ -22,6 +22,7 @@
 #include "base/input_error.h"
 #include "pam_actuator/spring_model.h"
 #include "reflex/controller.h"
+#include "reflex/pass_through_controller.h"
 #include "reflex/sensing.h"
 
 namespace pamsim {
@@ -82,8 +83,8 @@ Rig two_pairs() {
 }
 
 // The co-simulation loop in miniature: owns the sensing and the controller and moves the
-// synthetic plant (tests change rig.d_m and rig.p_tp_pa between ticks). reflex.lowpass_hz
-// and sim.control_hz are one key each, given to the sensing and the controller alike.
+// synthetic plant (tests change rig.d_m and rig.p_tp_pa between ticks). sim.control_hz is
+// one key, given to the sensing and the controller alike; reflex.lowpass_hz is the sensing's.
 struct Harness {
   explicit Harness(const Rig& from)
       : rig(from),
@@ -92,7 +93,6 @@ struct Harness {
 
   static SensingConfig sensing_config(const Rig& rig) {
     SensingConfig config = rig.sensing;
-    config.velocity_lowpass_hz = rig.controller.reflex.lowpass_hz;
     config.control_hz = rig.controller.control_hz;
     return config;
   }
@@ -563,9 +563,6 @@ std::vector<BadValue> bad_values() {
       {"reflex.duration_s", "nan", [](C c) { c.reflex.duration_s = kNaN; }},
       // one control period is 20 ms at 50 Hz
       {"reflex.duration_s", "0.01", [](C c) { c.control_hz = 50.0; c.reflex.duration_s = 0.01; }},
-      {"reflex.lowpass_hz", "-1", [](C c) { c.reflex.lowpass_hz = -1.0; }},
-      {"reflex.lowpass_hz", "60", [](C c) { c.reflex.lowpass_hz = 60.0; }},
-      {"reflex.lowpass_hz", "nan", [](C c) { c.reflex.lowpass_hz = kNaN; }},
       {"reflex.refractory_s", "-0.1", [](C c) { c.reflex.refractory_s = -0.1; }},
       {"reflex.refractory_s", "nan", [](C c) { c.reflex.refractory_s = kNaN; }},
       {"reflex.refractory_s", "1e+10", [](C c) { c.reflex.refractory_s = 1e10; }},

@@ -22,8 +22,24 @@ StretchReflexParams params(double refractory_s = 10.0, double arm_after_s = 0.0)
   return p;
 }
 
+// A reflex and the times it triggered at, kept as StretchReflexController keeps them
+// (StretchReflex::triggered after each update).
+struct LoggedReflex {
+  LoggedReflex(const StretchReflexParams& p, double dt) : reflex(p, dt) {}
+  double update(double time_s, double velocity_m_s, bool may_trigger = true) {
+    const double dp = reflex.update(time_s, velocity_m_s, may_trigger);
+    if (reflex.triggered()) times.push_back(time_s);
+    return dp;
+  }
+  bool active() const { return reflex.active(); }
+  int trigger_count() const { return static_cast<int>(times.size()); }
+  const std::vector<double>& trigger_times_s() const { return times; }
+  StretchReflex reflex;
+  std::vector<double> times;
+};
+
 // runs `n` ticks at constant velocity [mm/s]; returns dp [Pa] per tick
-std::vector<double> run(StretchReflex* reflex, int n, double v_mm_s, int* active_ticks,
+std::vector<double> run(LoggedReflex* reflex, int n, double v_mm_s, int* active_ticks,
                         int start_tick = 0) {
   std::vector<double> dp;
   for (int j = start_tick; j < start_tick + n; ++j) {
@@ -34,7 +50,7 @@ std::vector<double> run(StretchReflex* reflex, int n, double v_mm_s, int* active
 }
 
 TEST(StretchReflex, NoTriggerBelowOrAtThreshold) {
-  StretchReflex reflex(params(), kDt);
+  LoggedReflex reflex(params(), kDt);
   int active = 0;
   for (double dp : run(&reflex, 100, 69.9, &active)) EXPECT_EQ(dp, 0.0);
   for (double dp : run(&reflex, 100, 70.0, &active, 100)) EXPECT_EQ(dp, 0.0);   // "exceeds"
@@ -44,7 +60,7 @@ TEST(StretchReflex, NoTriggerBelowOrAtThreshold) {
 }
 
 TEST(StretchReflex, OneWindowOf200msAboveThreshold) {
-  StretchReflex reflex(params(), kDt);
+  LoggedReflex reflex(params(), kDt);
   int active = 0;
   // stays above threshold for 1 s: the window is neither extended nor restarted
   const std::vector<double> dp = run(&reflex, 100, 100.0, &active);
@@ -60,7 +76,7 @@ TEST(StretchReflex, OneWindowOf200msAboveThreshold) {
 TEST(StretchReflex, SingleSpikeGivesFullWindow) {
   StretchReflexParams p = params();
   p.mode = ReflexMode::kLatch;
-  StretchReflex reflex(p, kDt);
+  LoggedReflex reflex(p, kDt);
   int active = 0;
   run(&reflex, 5, 0.0, &active);
   run(&reflex, 1, 150.0, &active, 5);
@@ -77,8 +93,8 @@ TEST(StretchReflex, FollowTracksVelocityLatchHoldsTrigger) {
   StretchReflexParams follow = params();
   StretchReflexParams latch = params();
   latch.mode = ReflexMode::kLatch;
-  StretchReflex rf(follow, kDt);
-  StretchReflex rl(latch, kDt);
+  LoggedReflex rf(follow, kDt);
+  LoggedReflex rl(latch, kDt);
   const double k_pa_per_mm_s = 1e6 / 800.0;
   for (int j = 0; j < 7; ++j) {
     const double df = rf.update(j * kDt, v_mm_s[j] * 1e-3);
@@ -97,14 +113,14 @@ TEST(StretchReflex, FollowTracksVelocityLatchHoldsTrigger) {
 
 TEST(StretchReflex, RefractoryPeriodDelaysTheNextTrigger) {
   // constant stretch: windows of 20 ticks separated by 10 refractory ticks
-  StretchReflex reflex(params(0.1), kDt);
+  LoggedReflex reflex(params(0.1), kDt);
   int active = 0;
   run(&reflex, 100, 100.0, &active);
   ASSERT_EQ(reflex.trigger_count(), 4);   // ticks 0, 30, 60, 90
   EXPECT_NEAR(reflex.trigger_times_s()[1], 0.30, 1e-12);
   EXPECT_NEAR(reflex.trigger_times_s()[3], 0.90, 1e-12);
   // without a refractory period it re-fires at once
-  StretchReflex eager(params(0.0), kDt);
+  LoggedReflex eager(params(0.0), kDt);
   active = 0;
   run(&eager, 100, 100.0, &active);
   EXPECT_EQ(eager.trigger_count(), 5);    // ticks 0, 20, 40, 60, 80
@@ -113,7 +129,7 @@ TEST(StretchReflex, RefractoryPeriodDelaysTheNextTrigger) {
 }
 
 TEST(StretchReflex, DisarmedUntilArmAfter) {
-  StretchReflex reflex(params(10.0, 0.5), kDt);
+  LoggedReflex reflex(params(10.0, 0.5), kDt);
   int active = 0;
   const std::vector<double> dp = run(&reflex, 60, 200.0, &active);
   EXPECT_EQ(reflex.trigger_count(), 1);
@@ -125,7 +141,7 @@ TEST(StretchReflex, DisarmedUntilArmAfter) {
 TEST(StretchReflex, DurationRoundsToWholeTicks) {
   StretchReflexParams p = params();
   p.duration_s = 0.05;
-  StretchReflex reflex(p, kDt);
+  LoggedReflex reflex(p, kDt);
   int active = 0;
   run(&reflex, 50, 100.0, &active);
   EXPECT_EQ(active, 5);
@@ -133,8 +149,8 @@ TEST(StretchReflex, DurationRoundsToWholeTicks) {
 
 TEST(ReflexCommands, ReciprocalInhibitionSigns) {
   // the agonist fires at 100 mm/s: agonist up by k v, antagonist down by k v, Eq. (12)-(13)
-  StretchReflex ago(params(), kDt);
-  StretchReflex anta(params(), kDt);
+  LoggedReflex ago(params(), kDt);
+  LoggedReflex anta(params(), kDt);
   const double dp_ago = ago.update(0.0, 0.100);
   const double dp_anta = anta.update(0.0, -0.100);
   const auto p = reflex_commands({0.4e6, 0.4e6}, {dp_ago, dp_anta}, 0.8e6);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "base/input_error.h"
+#include "reflex/stretch_reflex_controller.h"
 #include "sim/core/runner.h"
 
 namespace pamsim {
@@ -49,15 +50,17 @@ TEST(ScenarioTest, ShippedScenariosLoad) {
     EXPECT_EQ(error_of({}, std::string(PAMSIM_SOURCE_DIR) + "/scenarios/" + name), "") << name;
   }
   const Scenario sc = load_scenario(kScenario);
-  EXPECT_DOUBLE_EQ(sc.reflex.reflex.v_thr_mm_s, 70.0);
-  EXPECT_DOUBLE_EQ(sc.reflex.reflex.k_MPa_s_per_mm, 1.0 / 800.0);
+  const StretchReflexScenarioConfig* reflex = sc.controller_config<StretchReflexScenarioConfig>();
+  ASSERT_NE(reflex, nullptr);
+  EXPECT_DOUBLE_EQ(reflex->reflex.v_thr_mm_s, 70.0);
+  EXPECT_DOUBLE_EQ(reflex->reflex.k_MPa_s_per_mm, 1.0 / 800.0);
   EXPECT_DOUBLE_EQ(sc.muscle("agonist")->command.at(0.0), 0.4e6);
 }
 
 TEST(ScenarioTest, OverridesTakeEffect) {
   const Scenario sc = load_scenario(kScenario, {"reflex.v_thr_mm_s=55", "seed=9",
                                                 "valve.model=first_order"});
-  EXPECT_DOUBLE_EQ(sc.reflex.reflex.v_thr_mm_s, 55.0);
+  EXPECT_DOUBLE_EQ(sc.controller_config<StretchReflexScenarioConfig>()->reflex.v_thr_mm_s, 55.0);
   EXPECT_EQ(sc.seed, 9u);
   EXPECT_EQ(sc.valve_model, ValveModel::kFirstOrder);
 }

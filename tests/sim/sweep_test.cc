@@ -14,6 +14,7 @@
 
 #include "cli_util.h"
 #include "base/input_error.h"
+#include "reflex/stretch_reflex_controller.h"
 #include "sim/io/scenario_file.h"
 #include "sim/cli/progress.h"
 #include "sim/sweep/report.h"
@@ -318,8 +319,10 @@ TEST_F(SweepTest, BestScenarioKeepsTheBaseAndSetsThePoint) {
   write_text(out / "best.toml", text);
   const pamsim::Scenario sc = pamsim::load_scenario((out / "best.toml").string(), {});
   const pamsim::Scenario base = pamsim::load_scenario(kDropMass, {});
-  EXPECT_EQ(sc.reflex.reflex.v_thr_mm_s, 50.0);
-  EXPECT_EQ(sc.reflex.reflex.k_MPa_s_per_mm, 0.002);
+  const auto* reflex = sc.controller_config<pamsim::StretchReflexScenarioConfig>();
+  ASSERT_NE(reflex, nullptr);
+  EXPECT_EQ(reflex->reflex.v_thr_mm_s, 50.0);
+  EXPECT_EQ(reflex->reflex.k_MPa_s_per_mm, 0.002);
   EXPECT_EQ(fs::weakly_canonical(sc.model_file), fs::weakly_canonical(base.model_file));
   EXPECT_EQ(sc.duration_s, base.duration_s);
   EXPECT_EQ(text.rfind("# header\n", 0), 0u);

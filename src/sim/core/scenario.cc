@@ -17,4 +17,9 @@ const EventSpec* Scenario::event(const std::string& name) const {
   return nullptr;
 }
 
+const std::vector<std::array<std::string, 2>>& Scenario::controller_pairs() const {
+  static const std::vector<std::array<std::string, 2>> none;
+  return controller ? controller->pairs : none;
+}
+
 }  // namespace pamsim

@@ -8,14 +8,15 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "pam_actuator/avbdl.h"
 #include "pam_actuator/pam_params.h"
 #include "pam_actuator/pneumatics.h"
+#include "reflex/controller_kind.h"
 #include "reflex/sensing.h"
-#include "reflex/stretch_reflex_controller.h"
 #include "sim/core/schedule.h"
 
 namespace pamsim {
@@ -90,8 +91,6 @@ struct EventSpec {
   double mass_kg = 0.0;        // kAddMass
 };
 
-enum class ControllerKind { kNone, kStretchReflex };
-
 struct Scenario {
   std::string path;            // the scenario file (for messages and summaries)
 
@@ -115,10 +114,12 @@ struct Scenario {
   ValveModel valve_model = ValveModel::kIso6358;
   PneumaticParams pneumatics;
 
-  ControllerKind controller = ControllerKind::kStretchReflex;
+  // controller.kind and its configuration (reflex/controller_registry.h lists the kinds);
+  // its muscle pairs by actuator name are bound to indices by the trial model. Null: the
+  // scheduled commands pass through, as with "none".
+  std::string controller_kind = "none";
+  std::shared_ptr<const ControllerConfig> controller;
   SensingConfig sensing;
-  StretchReflexControllerConfig reflex;   // pairs by index into muscles (scenario order)
-  std::vector<std::array<std::string, 2>> reflex_pairs;   // by actuator name
 
   std::vector<std::string> metrics;       // metric sets (metrics.h), in output order
 
@@ -126,6 +127,15 @@ struct Scenario {
   const MuscleSpec* muscle(const std::string& actuator) const;
   // The event with this name, or nullptr.
   const EventSpec* event(const std::string& name) const;
+  // The controller's configuration as its kind's type, or nullptr if it is another kind's.
+  template <typename Config>
+  const Config* controller_config() const {
+    return dynamic_cast<const Config*>(controller.get());
+  }
+  // The muscle pairs the controller names (by actuator), none without a controller.
+  const std::vector<std::array<std::string, 2>>& controller_pairs() const;
+  // The log has reflex_<m> columns (ControllerConfig::has_reflexes).
+  bool controller_has_reflexes() const { return controller && controller->has_reflexes(); }
 };
 
 }  // namespace pamsim

@@ -7,8 +7,8 @@
 //   sine      offset + amplitude sin(2 pi (t - start_s) / period_s + phase) for t >= start_s,
 //             offset before (the length-estimation test: 0.2 sin(2 pi t / 5) + 0.6 MPa)
 //   steps     levels[i] from times[i] on, levels[0] before times[0]
-//   table     piecewise linear through (time_s, MPa) points read from a CSV file, held
-//             constant before the first and after the last point
+//   table     piecewise linear through (time_s, MPa) points read from a CSV file
+//             (io/schedule_csv.h), held constant before the first and after the last point
 // Pressures are gauge [Pa] inside; the scenario gives MPa.
 #pragma once
 
@@ -44,11 +44,10 @@ struct PressureSchedule {
   double max_pa() const;
 };
 
-// Reads a piecewise-linear schedule from a CSV file with the header "time_s,MPa" (blank
-// lines and lines starting with '#' skipped). Throws InputError "<path>: line N: <problem>"
-// for a missing file, a bad header, a cell that is not a finite number, fewer than one row,
-// or a time that does not increase strictly.
-PressureSchedule read_schedule_csv(const std::string& path);
+// The piecewise-linear schedule through rows (times_s[i], values_pa[i]), at least one, as
+// read from the file `source` (io/schedule_csv.h reads it).
+PressureSchedule table_schedule(std::vector<double> times_s, std::vector<double> values_pa,
+                                std::string source);
 
 // Throws InputError "<key>.<field> <problem>" if the schedule's own fields are inconsistent
 // (period or duration <= 0, steps times not increasing or sizes differing, non-finite

@@ -10,6 +10,7 @@
 
 #include "base/input_error.h"
 #include "base/units.h"
+#include "reflex/pass_through_controller.h"
 #include "sim/core/pam_callback.h"
 #include "sim/core/trial_run.h"
 
@@ -40,13 +41,12 @@ std::vector<MuscleSensorSpec> sensor_specs(const TrialModel& tm, const Scenario&
   return specs;
 }
 
+// the scenario's controller for the bound model: its muscles, pairs and control rate are
+// given here, and only here
 std::unique_ptr<Controller> make_controller(const TrialModel& tm, const Scenario& sc) {
-  if (sc.controller == ControllerKind::kNone) return std::make_unique<PassThroughController>();
-  StretchReflexControllerConfig config = sc.reflex;
-  config.muscle_count = static_cast<int>(tm.muscles.size());
-  config.pairs = tm.pairs;
-  config.control_hz = sc.control_hz;
-  return std::make_unique<StretchReflexController>(config);
+  if (!sc.controller) return std::make_unique<PassThroughController>();
+  return sc.controller->make_controller(
+      ControllerSetup{static_cast<int>(tm.muscles.size()), sc.control_hz, tm.pairs});
 }
 
 std::vector<std::string> held_bodies(const TrialModel& tm) {
@@ -113,7 +113,7 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
       controller_(make_controller(tm, sc)),
       metrics_(make_metric_sets(sc)),
       layout_(make_log_layout(tm.joint.hinge, held_bodies(tm), labels_,
-                              sc.controller == ControllerKind::kStretchReflex)) {
+                              sc.controller_has_reflexes())) {
   if (m_->opt.timestep != sc.timestep_s) {
     throw std::logic_error("run_trial: the model's timestep differs from sim.timestep_s "
                            "(load it with load_trial_model)");

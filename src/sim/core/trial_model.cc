@@ -179,13 +179,13 @@ void bind_events(const Scenario& sc, TrialModel* tm) {
 }
 
 void bind_pairs(const Scenario& sc, TrialModel* tm) {
-  for (std::size_t k = 0; k < sc.reflex_pairs.size(); ++k) {
+  for (const std::array<std::string, 2>& names : sc.controller_pairs()) {
     ReflexPair pair;
     int* slot[2] = {&pair.agonist, &pair.antagonist};
     for (int r = 0; r < 2; ++r) {
-      *slot[r] = tm->muscle_index(sc, sc.reflex_pairs[k][r]);
+      *slot[r] = tm->muscle_index(sc, names[r]);
       if (*slot[r] < 0) {
-        fail(sc, "reflex.pairs", "names muscle '" + sc.reflex_pairs[k][r] +
+        fail(sc, "reflex.pairs", "names muscle '" + names[r] +
                                      "', which is not a muscle of the scenario");
       }
     }
@@ -323,7 +323,7 @@ bool same_trial_model(const Scenario& a, const Scenario& b) {
          << static_cast<int>(e.when.kind) << ';' << e.when.body_a << ';' << e.when.body_b << ';'
          << e.when.joint << ';' << e.when.after << ';';
     }
-    for (const auto& pair : sc.reflex_pairs) os << pair[0] << ',' << pair[1] << ';';
+    for (const auto& pair : sc.controller_pairs()) os << pair[0] << ',' << pair[1] << ';';
     return os.str();
   };
   return fingerprint(a) == fingerprint(b);

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "pam_actuator/chou_hannaford.h"
-#include "reflex/stretch_reflex_controller.h"
+#include "reflex/controller.h"
 #include "sim/core/mujoco_util.h"
 #include "sim/core/scenario.h"
 

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <variant>
 #include <vector>
 
 #include <boost/math/distributions/students_t.hpp>
@@ -29,15 +30,13 @@ nlohmann::json scenario_json(const Scenario& sc) {
   nlohmann::json j = {
       {"file", sc.path},
       {"valve_model", valve_model_name(sc.valve_model)},
-      {"controller", sc.controller == ControllerKind::kNone ? "none" : "stretch_reflex"},
+      {"controller", sc.controller_kind},
       {"timestep_s", sc.timestep_s},
       {"control_hz", sc.control_hz}};
-  if (sc.controller == ControllerKind::kStretchReflex) {
-    const ReflexConfig& r = sc.reflex.reflex;
-    j["reflex_enabled"] = r.enabled;
-    j["reflex_sensor"] = to_string(r.sensor);
-    j["v_thr_mm_s"] = r.v_thr_mm_s;
-    j["k_MPa_s_per_mm"] = r.k_MPa_s_per_mm;
+  if (sc.controller) {   // the kind's own fields
+    for (const SummaryField& f : sc.controller->summary_fields()) {
+      std::visit([&](const auto& value) { j[f.key] = value; }, f.value);
+    }
   }
   if (const EventSpec* release = sc.event("release")) {
     if (release->when.kind == ConditionKind::kTime)

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <set>
 
 #include "base/toml_file.h"
 #include "base/units.h"
+#include "reflex/controller_registry.h"
 #include "sim/core/metrics.h"
 #include "sim/io/scenario_key_docs.h"
 #include "sim/io/scenario_reading.h"
@@ -94,80 +94,6 @@ void read_model(ConfigReader& in, Scenario* sc) {
   }
 }
 
-void read_reflex(ConfigReader& in, Scenario* sc) {
-  ReflexConfig& r = sc->reflex.reflex;
-  r.enabled = in.get_bool("reflex.enabled", r.enabled);
-  const std::string sensor = in.get_string("reflex.sensor", to_string(r.sensor));
-  r.sensor = in_file(in, [&] { return parse_reflex_sensor(sensor); });
-  // Table II values are the defaults for the chosen sensor
-  const ReflexConfig table = table_ii_reflex_config(r.sensor);
-  r.v_thr_mm_s = in.get_double("reflex.v_thr_mm_s", table.v_thr_mm_s);
-  r.k_MPa_s_per_mm = in.get_double("reflex.k_MPa_s_per_mm", table.k_MPa_s_per_mm);
-  r.duration_s = in.get_double("reflex.duration_s", r.duration_s);
-  const std::string mode = in.get_string("reflex.mode", to_string(r.mode));
-  r.mode = in_file(in, [&] { return parse_reflex_mode(mode); });
-  r.refractory_s = in.get_double("reflex.refractory_s", r.refractory_s);
-  r.arm_after_s = in.get_double("reflex.arm_after_s", r.arm_after_s);
-  r.lowpass_hz = in.get_double("reflex.lowpass_hz", r.lowpass_hz);
-  r.min_tension_n = in.get_double("reflex.min_tension_N", r.min_tension_n);
-  r.reciprocal_trigger_inhibition =
-      in.get_bool("reflex.reciprocal_trigger_inhibition", r.reciprocal_trigger_inhibition);
-  sc->reflex.p_max_pa = in.has("controller.p_max_MPa")
-                            ? units::mpa_to_pa(in.get_double("controller.p_max_MPa", 0.0))
-                            : sc->pneumatics.command_max_gauge_pa;
-  // one pressure limit everywhere: the reflex cannot ask beyond what the regulator gives
-  in.check(!(sc->reflex.p_max_pa > sc->pneumatics.command_max_gauge_pa), "controller.p_max_MPa",
-           "must be <= the regulator's command maximum (" +
-               format_value(units::pa_to_mpa(sc->pneumatics.command_max_gauge_pa)) +
-               " MPa), got " + format_value(units::pa_to_mpa(sc->reflex.p_max_pa)));
-  for (const MuscleSpec& m : sc->muscles) {   // the controller would clamp them silently
-    in.check(!(m.command.max_pa() > sc->reflex.p_max_pa), m.key + ".command",
-             "goes up to " + format_value(units::pa_to_mpa(m.command.max_pa())) +
-                 " MPa, above controller.p_max_MPa = " +
-                 format_value(units::pa_to_mpa(sc->reflex.p_max_pa)));
-  }
-  sc->reflex.control_hz = sc->control_hz;
-  sc->reflex.muscle_count = static_cast<int>(sc->muscles.size());
-  sc->reflex.pairs.clear();   // resolved by name when the model is bound (trial_model.h)
-
-  // pairs by actuator name; agonist/antagonist by default
-  const bool has_default_pair = sc->muscle("agonist") && sc->muscle("antagonist");
-  const std::vector<std::string> flat = has_default_pair
-      ? std::vector<std::string>{"agonist", "antagonist"} : std::vector<std::string>{};
-  if (in.has("reflex.pairs")) {
-    const toml::node* n = in.raw("reflex.pairs");
-    const toml::array* a = n->as_array();
-    in.check(a != nullptr, "reflex.pairs", "must be a list of [agonist, antagonist] name pairs");
-    for (const toml::node& item : *a) {
-      const toml::array* pair = item.as_array();
-      const bool ok = pair && pair->size() == 2 && (*pair)[0].is_string() && (*pair)[1].is_string();
-      in.check(ok, "reflex.pairs", "must be a list of [agonist, antagonist] name pairs");
-      sc->reflex_pairs.push_back({*(*pair)[0].value<std::string>(), *(*pair)[1].value<std::string>()});
-    }
-  } else if (has_default_pair) {
-    sc->reflex_pairs.push_back({flat[0], flat[1]});
-  }
-  in.check(!sc->reflex_pairs.empty(), "reflex.pairs",
-           "is required: the scenario has no muscles named agonist and antagonist");
-  // each pair two different muscles of the scenario, each muscle in one pair at most
-  std::set<std::string> paired;
-  for (const auto& pair : sc->reflex_pairs) {
-    in.check(pair[0] != pair[1], "reflex.pairs", "pairs muscle '" + pair[0] + "' with itself");
-    for (const std::string& name : pair) {
-      in.check(sc->muscle(name) != nullptr, "reflex.pairs",
-               "names muscle '" + name + "', which is not a muscle of the scenario");
-      in.check(paired.insert(name).second, "reflex.pairs",
-               "puts muscle '" + name + "' in two pairs");
-    }
-  }
-  in_file(in, [&] {
-    StretchReflexControllerConfig check = sc->reflex;
-    check.pairs.clear();
-    validate(check);
-    return 0;
-  });
-}
-
 // an ADC's bit count, refused before an int could wrap it into range
 int read_bits(ConfigReader& in, const std::string& key, int fallback) {
   const std::int64_t bits = in.get_int(key, fallback);
@@ -190,34 +116,44 @@ void read_sensors(ConfigReader& in, Scenario* sc) {
   s.gauge_adc_max_v = in.get_double("sensors.gauge_adc_max_V", s.gauge_adc_max_v);
   s.fiber_noise_mm_s = in.get_double("sensors.fiber_noise_mm_s", s.fiber_noise_mm_s);
   s.noise_scale = in.get_double("sensors.noise_scale", s.noise_scale);
-  sc->sensing.control_hz = sc->control_hz;
-  sc->sensing.velocity_lowpass_hz =
-      sc->controller == ControllerKind::kStretchReflex ? sc->reflex.reflex.lowpass_hz : 0.0;
+  sc->sensing.control_hz = sc->control_hz;   // velocity_lowpass_hz: the controller's reader
   in_file(in, [&] {
     validate(sc->sensing);
     return 0;
   });
 }
 
+// controller.kind, then the kind's own keys (reflex/controller_registry.h)
 void read_controller(ConfigReader& in, Scenario* sc) {
-  const std::string kind = in.get_string("controller.kind", "stretch_reflex");
-  if (kind == "none") {
-    sc->controller = ControllerKind::kNone;
-    in.check(!in.has("reflex"), "reflex",
-             "is the stretch_reflex controller's section, but controller.kind is \"none\"");
-  } else if (kind == "stretch_reflex") {
-    sc->controller = ControllerKind::kStretchReflex;
-    read_reflex(in, sc);
-  } else {
-    in.fail("controller.kind", "must be \"none\" or \"stretch_reflex\", got \"" + kind + "\"");
+  const std::string kind = in.get_string("controller.kind", default_controller_kind());
+  const ControllerKind* chosen = find_controller_kind(kind);
+  if (!chosen) {
+    in.fail("controller.kind", "must be " + controller_kind_choices() + ", got \"" + kind + "\"");
   }
+  // another kind's section would be ignored: refused
+  for (const ControllerKind& other : controller_kinds()) {
+    if (other.name == kind) continue;
+    for (const std::string& section : other.sections) {
+      in.check(!in.has(section), section, "is the " + other.name + " controller's section, but "
+                                          "controller.kind is \"" + kind + "\"");
+    }
+  }
+  ControllerScenario context;
+  context.control_hz = sc->control_hz;
+  context.command_max_pa = sc->pneumatics.command_max_gauge_pa;
+  for (const MuscleSpec& m : sc->muscles) {
+    context.muscles.push_back({m.actuator, m.key, m.command.max_pa()});
+  }
+  context.sensing = &sc->sensing;
+  sc->controller_kind = kind;
+  sc->controller = chosen->read(in, context);
 }
 
 void read_metrics(ConfigReader& in, Scenario* sc, bool has_drop) {
   std::vector<std::string> defaults = {"drop", "reflex", "length_estimate"};
   if (!has_drop) {
     defaults = {"tracking", "length_estimate"};
-    if (sc->controller == ControllerKind::kStretchReflex) defaults.push_back("reflex");
+    if (sc->controller_has_reflexes()) defaults.push_back("reflex");
   }
   sc->metrics = in.get_string_list("metrics", defaults);
   make_metric_sets(*sc);   // throws "<file>: metrics ..." for an unknown set or missing events

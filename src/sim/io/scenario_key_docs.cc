@@ -1,9 +1,10 @@
 // scenario_key_docs.cc: see scenario_key_docs.h. The ranges are those the readers check
-// (scenario_file.cc, scenario_muscles.cc, scenario_events.cc, reflex/sensing.cc,
-// reflex/stretch_reflex_controller.cc); keep them together when one changes.
+// (scenario_file.cc, scenario_muscles.cc, scenario_events.cc, reflex/sensing.cc); keep them
+// together when one changes. A controller kind documents its own keys, in its file.
 #include "sim/io/scenario_key_docs.h"
 
 #include "base/config_reader.h"   // split_key
+#include "reflex/controller_registry.h"
 
 namespace pamsim {
 namespace {
@@ -28,10 +29,9 @@ bool matches(const std::string& pattern, const std::string& key) {
   return true;
 }
 
-}  // namespace
-
-const std::vector<KeyDoc>& scenario_key_docs() {
-  static const std::vector<KeyDoc> docs = {
+// seed, metrics, model, sim, valve, muscles
+std::vector<KeyDoc> model_docs() {
+  return {
       {"seed", "", "1", "integer >= 0", "the trial's random seed (sensor noise); trial k of --trials uses seed + k"},
       {"metrics", "", "(drop: [\"drop\", \"reflex\", \"length_estimate\"]; else tracking, length_estimate, reflex)",
        "list of \"drop\", \"reflex\", \"length_estimate\", \"tracking\"", "the metric sets in summary.json"},
@@ -68,6 +68,12 @@ const std::vector<KeyDoc>& scenario_key_docs() {
       {"muscles.<actuator>.command.phase_deg", "deg", "0.0", "finite", "a sine's phase"},
       {"muscles.<actuator>.command.times_s", "s", "(required for steps)", "increasing times, one per MPa", "the steps' times"},
       {"muscles.<actuator>.command.file", "", "(required for table)", "path to a CSV \"time_s,MPa\"", "a piecewise linear schedule"},
+  };
+}
+
+// bodies, holds, events, the drop shorthand
+std::vector<KeyDoc> event_docs() {
+  return {
       {"bodies.<body>.mass_kg", "kg", "(required)", "(0, 1000]", "a body's mass, in place of the model's"},
       {"holds.<body>.above_site", "", "(none)", "a site of the model", "hold the body above this site until released"},
       {"holds.<body>.height_m", "m", "0.0", "[0, 10]", "the held body's bottom above the site"},
@@ -92,20 +98,11 @@ const std::vector<KeyDoc>& scenario_key_docs() {
       {"drop.body", "", "\"ball\"", "a free body of the model", "shorthand: the falling body"},
       {"drop.basket", "", "\"basket\"", "a body of the model", "shorthand: the body it lands in (the impact event)"},
       {"drop.site", "", "\"basket_floor\"", "a site of the model", "shorthand: the site it is held above"},
-      {"controller.kind", "", "\"stretch_reflex\"", "\"none\" | \"stretch_reflex\"", "the controller"},
-      {"controller.p_max_MPa", "MPa", "(valve.command_max_MPa)", "(0, valve.command_max_MPa]", "the highest pressure the reflex commands"},
-      {"reflex.enabled", "", "true", "true | false", "the reflex may trigger (false: the passive arm, same sensing)"},
-      {"reflex.sensor", "", "\"model\"", "\"model\" | \"fiber\"", "the stretch velocity from the spring model (Eq. (9)-(11)) or a fiber sensor"},
-      {"reflex.v_thr_mm_s", "mm/s", "(Table II: 70.0 model, 25.0 fiber)", "> 0", "the trigger threshold V_thr, Eq. (12)"},
-      {"reflex.k_MPa_s_per_mm", "MPa s/mm", "(Table II: 1/800 model, 1/300 fiber)", ">= 0", "the reflex gain k, Eq. (13)-(14)"},
-      {"reflex.duration_s", "s", "0.2", ">= one control period", "the reflex window"},
-      {"reflex.mode", "", "\"follow\"", "\"follow\" | \"latch\"", "the command follows the velocity, or holds its trigger value"},
-      {"reflex.refractory_s", "s", "0.5", ">= 0 (0: off)", "no retrigger this long after a window ends"},
-      {"reflex.arm_after_s", "s", "0.1", ">= 0 (0: off)", "no trigger before this time"},
-      {"reflex.lowpass_hz", "Hz", "0.0", "0 (off) or (0, sim.control_hz / 2]", "low-pass on the estimated velocity"},
-      {"reflex.min_tension_N", "N", "1.0", ">= 0", "trigger only while the gauge reads at least this tension"},
-      {"reflex.reciprocal_trigger_inhibition", "", "true", "true | false", "a triggered muscle inhibits its antagonist's trigger"},
-      {"reflex.pairs", "", "([[\"agonist\", \"antagonist\"]] when both exist)", "[[agonist, antagonist], ...]", "the reflex pairs by actuator name"},
+  };
+}
+
+std::vector<KeyDoc> sensor_docs() {
+  return {
       {"sensors.pressure_noise_MPa", "MPa", "0.001", ">= 0", "pressure sensor noise SD"},
       {"sensors.pressure_bias_MPa", "MPa", "0.0", "(-1, 1)", "pressure sensor offset"},
       {"sensors.pressure_adc_bits", "", "12", "0 (ideal) or [4, 24]", "the pressure ADC's resolution"},
@@ -119,6 +116,37 @@ const std::vector<KeyDoc>& scenario_key_docs() {
       {"sensors.fiber_noise_mm_s", "mm/s", "2.0", ">= 0", "fiber sensor noise SD"},
       {"sensors.noise_scale", "", "1.0", "[0, 1000]", "multiplies the three noise SDs (a sweep's one knob)"},
   };
+}
+
+// controller.kind and each kind's keys (reflex/controller_kind.h, in the kind's own file)
+std::vector<KeyDoc> controller_docs() {
+  std::string kinds;
+  for (const ControllerKind& kind : controller_kinds()) {
+    kinds += (kinds.empty() ? "\"" : " | \"") + kind.name + "\"";
+  }
+  std::vector<KeyDoc> docs = {{"controller.kind", "", std::string("\"") +
+                               default_controller_kind() + "\"", kinds, "the controller"}};
+  for (const ControllerKind& kind : controller_kinds()) {
+    for (const ControllerKeyDoc& d : kind.docs) {
+      docs.push_back({d.key, d.unit, d.fallback, d.allowed, d.meaning});
+    }
+  }
+  return docs;
+}
+
+std::vector<KeyDoc> all_docs() {
+  std::vector<KeyDoc> docs;
+  for (const std::vector<KeyDoc>& part : {model_docs(), event_docs(), controller_docs(),
+                                          sensor_docs()}) {
+    docs.insert(docs.end(), part.begin(), part.end());
+  }
+  return docs;
+}
+
+}  // namespace
+
+const std::vector<KeyDoc>& scenario_key_docs() {
+  static const std::vector<KeyDoc> docs = all_docs();
   return docs;
 }
 

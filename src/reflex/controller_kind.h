@@ -1,0 +1,84 @@
+// controller_kind.h: what a kind of controller is to the rest of pamsim, so that a kind is
+// one file. A kind (ControllerKind) has a name (controller.kind), the scenario sections it
+// owns, a reader that reads and validates its keys into its configuration, and the
+// documentation of those keys for `pamsim keys`. Its configuration (ControllerConfig, one
+// subclass per kind) is what a Scenario holds without knowing its type: the muscle pairs it
+// names, whether the trial logs reflex columns, its fields of summary.json, and the factory
+// of the controller a trial runs. The kinds are listed by name in controller_registry.h.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "reflex/controller.h"
+#include "reflex/sensing.h"
+
+namespace pamsim {
+
+class ConfigReader;
+
+// What a kind's reader may know of the scenario it reads into (read before the controller).
+struct ControllerScenario {
+  struct Muscle {
+    std::string actuator;         // the muscle's name (the model's actuator)
+    std::string key;              // its scenario key, e.g. "muscles.agonist"
+    double command_max_pa = 0.0;  // the highest pressure its schedule commands [Pa]
+  };
+  double control_hz = 100.0;           // sim.control_hz
+  double command_max_pa = 0.0;         // the regulator's command maximum [Pa]
+  std::vector<Muscle> muscles;         // scenario order
+  // the sensing the trial will run: a kind sets the velocity low-pass its control needs
+  // (SensingConfig::velocity_lowpass_hz, validated with the sensing)
+  SensingConfig* sensing = nullptr;
+};
+
+// What a trial gives a kind's factory once the model is bound.
+struct ControllerSetup {
+  int muscle_count = 0;            // the model's PAM actuators
+  double control_hz = 100.0;       // sim.control_hz
+  std::vector<ReflexPair> pairs;   // ControllerConfig::pairs, by muscle index (model order)
+};
+
+// One field of summary.json's "scenario" object.
+struct SummaryField {
+  std::string key;
+  std::variant<bool, double, std::string> value;
+};
+
+// A kind's configuration as read from a scenario: immutable once read (copies of a
+// Scenario share it).
+class ControllerConfig {
+ public:
+  virtual ~ControllerConfig() = default;
+  // Antagonistic pairs by actuator name (the trial model binds them to indices, once).
+  std::vector<std::array<std::string, 2>> pairs;
+  // True: the log has the reflex_<m> columns, and a scenario without a drop lists the
+  // "reflex" metric set by default.
+  virtual bool has_reflexes() const { return false; }
+  // Appended to summary.json's "scenario" object, in this order.
+  virtual std::vector<SummaryField> summary_fields() const { return {}; }
+  // A new controller for one trial.
+  virtual std::unique_ptr<Controller> make_controller(const ControllerSetup& setup) const = 0;
+};
+
+// One key of a kind for `pamsim keys` (the fields of sim/io's KeyDoc).
+struct ControllerKeyDoc {
+  std::string key, unit, fallback, allowed, meaning;
+};
+
+struct ControllerKind {
+  std::string name;                    // controller.kind
+  // tables of its own ("reflex"): a scenario that chooses another kind may not give them
+  std::vector<std::string> sections;
+  // Reads and validates the kind's keys. Throws InputError "<file>: <key> <problem>".
+  std::function<std::shared_ptr<const ControllerConfig>(ConfigReader& in,
+                                                        const ControllerScenario& scenario)>
+      read;
+  std::vector<ControllerKeyDoc> docs;  // its keys, in the order `pamsim keys` lists them
+};
+
+}  // namespace pamsim

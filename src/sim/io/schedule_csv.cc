@@ -1,0 +1,84 @@
+// schedule_csv.cc: see schedule_csv.h.
+#include "sim/io/schedule_csv.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <utility>
+#include <vector>
+
+#include "base/input_error.h"
+#include "base/toml_file.h"
+#include "base/units.h"
+
+namespace pamsim {
+namespace {
+
+// a whole, trimmed cell as a finite number
+bool parse_cell(std::string cell, double* value) {
+  const auto b = cell.find_first_not_of(" \t\r");
+  const auto e = cell.find_last_not_of(" \t\r");
+  if (b == std::string::npos) return false;
+  cell = cell.substr(b, e - b + 1);
+  const char* first = cell.data();
+  if (*first == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, cell.data() + cell.size(), *value);
+  return ec == std::errc() && ptr == cell.data() + cell.size() && std::isfinite(*value);
+}
+
+}  // namespace
+
+PressureSchedule read_schedule_csv(const std::string& path) {
+  require_input_file(path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the schedule file");
+  // a schedule is a few thousand points; anything near this is not one (or would eat memory)
+  constexpr std::uintmax_t kMaxBytes = 64u << 20;
+  std::error_code size_error;
+  if (std::filesystem::file_size(path, size_error) > kMaxBytes && !size_error) {
+    throw InputError(path + ": larger than 64 MiB, not a schedule");
+  }
+  std::vector<double> times_s, values_pa;
+  std::string line;
+  long line_no = 0;
+  bool header = false;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto first = line.find_first_not_of(" \t");
+    if (first == std::string::npos || line[first] == '#') continue;
+    const std::string where = path + ": line " + std::to_string(line_no);
+
+    // the header names the two columns and their units
+    if (!header) {
+      std::string h;
+      for (char c : line) if (c != ' ' && c != '\t') h += c;
+      if (h != "time_s,MPa") throw InputError(where + ": expected the header \"time_s,MPa\"");
+      header = true;
+      continue;
+    }
+
+    // time_s, MPa: finite numbers, time strictly increasing
+    const auto comma = line.find(',');
+    double t = 0.0, p = 0.0;
+    if (comma == std::string::npos || line.find(',', comma + 1) != std::string::npos ||
+        !parse_cell(line.substr(0, comma), &t) || !parse_cell(line.substr(comma + 1), &p)) {
+      throw InputError(where + ": expected two finite numbers \"time_s,MPa\"");
+    }
+    if (!times_s.empty() && !(t > times_s.back())) {
+      char buf[96];
+      std::snprintf(buf, sizeof(buf), "got %.9g s after %.9g s", t, times_s.back());
+      throw InputError(where + ": time must increase strictly, " + buf);
+    }
+    times_s.push_back(t);
+    values_pa.push_back(units::mpa_to_pa(p));
+  }
+  if (!header) throw InputError(path + ": empty file, expected the header \"time_s,MPa\"");
+  if (times_s.empty()) throw InputError(path + ": no (time_s, MPa) rows");
+  return table_schedule(std::move(times_s), std::move(values_pa), path);
+}
+
+}  // namespace pamsim
