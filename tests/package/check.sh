@@ -12,8 +12,12 @@ cmake --install "$build" --prefix "$work/prefix" > /dev/null
 # nothing internal is installed: the public headers include only public ones (else the
 # outside build below fails), and an internal header is absent
 test ! -e "$work/prefix/include/pamsim/sim/core/trial_run.h"
+# every installed header, included by one source file the outside project compiles
+mkdir -p "$work"
+(cd "$work/prefix/include/pamsim" && find . -name "*.h" | sort | sed 's|^\./|#include "|; s|$|"|') \
+  > "$work/all_headers.cc"
 cmake -S "$here" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release \
-  > "$work/configure.log"
+  -DALL_HEADERS_SOURCE="$work/all_headers.cc" > "$work/configure.log"
 cmake --build "$work/build" -j 2 > "$work/build.log"
 "$work/build/law_only"
 # the muscle alone: no simulation dependency looked for

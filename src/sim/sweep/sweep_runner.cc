@@ -71,6 +71,10 @@ namespace {
 
 // What the worker threads and the writer (the calling thread) of run_sweep share.
 struct SweepWork {
+  SweepWork(const SweepDefinition& s, const SweepRunOptions& o, const std::vector<bool>& f,
+            int workers)
+      : sweep(s), options(o), finished(f), workers_left(workers) {}
+
   const SweepDefinition& sweep;
   const SweepRunOptions& options;
   const std::vector<bool>& finished;
@@ -79,7 +83,7 @@ struct SweepWork {
   std::mutex mutex;
   std::condition_variable finished_cv;
   std::vector<TrialRecord> queue;   // finished, not yet committed
-  int workers_left = 0;
+  int workers_left;
 
   bool stopping() const { return abort.load() || (options.stop && options.stop->load()); }
 
@@ -130,8 +134,7 @@ SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
   SweepRunResult result;
   for (bool f : finished) result.already_done += f ? 1 : 0;
 
-  SweepWork work{sweep, options, finished};
-  work.workers_left = options.threads;
+  SweepWork work(sweep, options, finished, options.threads);
   std::vector<std::thread> pool;
   for (int i = 0; i < options.threads; ++i) pool.emplace_back([&work] { work.work(); });
   try {
