@@ -15,6 +15,7 @@
 #include <toml++/toml.h>
 
 #include "base/format.h"   // format_value, for the messages
+#include "base/input_error.h"
 
 namespace pamsim {
 
@@ -138,5 +139,16 @@ inline bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+
+// Runs `parse` (a parser of one value, which knows nothing of files), prefixing any
+// InputError it throws with the document's name: "<file>: <key>: <problem>".
+template <typename F>
+auto in_file(const ConfigReader& in, F&& parse) -> decltype(parse()) {
+  try {
+    return parse();
+  } catch (const InputError& e) {
+    throw InputError(in.name() + ": " + e.what());
+  }
+}
 
 }  // namespace pamsim

@@ -178,16 +178,6 @@ namespace {
 
 using NamePairs = std::vector<std::array<std::string, 2>>;
 
-// runs `parse`, prefixing any InputError with the scenario's name
-template <typename F>
-auto in_file(const ConfigReader& in, F&& parse) -> decltype(parse()) {
-  try {
-    return parse();
-  } catch (const InputError& e) {
-    throw InputError(in.name() + ": " + e.what());
-  }
-}
-
 // reflex.*; reflex.lowpass_hz is the sensing's
 ReflexConfig read_reflex(ConfigReader& in, SensingConfig* sensing) {
   ReflexConfig r;

@@ -19,23 +19,4 @@ void read_events(ConfigReader& in, Scenario* sc);
 // are placeholders.
 void read_muscles(ConfigReader& in, Scenario* sc, bool lines_needed);
 
-// Runs `parse`, prefixing any InputError with the scenario's name.
-template <typename F>
-auto in_file(const ConfigReader& in, F&& parse) -> decltype(parse());
-
-}  // namespace pamsim
-
-#include "base/input_error.h"
-
-namespace pamsim {
-
-template <typename F>
-auto in_file(const ConfigReader& in, F&& parse) -> decltype(parse()) {
-  try {
-    return parse();
-  } catch (const InputError& e) {
-    throw InputError(in.name() + ": " + e.what());
-  }
-}
-
 }  // namespace pamsim
