@@ -65,9 +65,9 @@ void calibrate(const CalibrateOptions& opt) {
 }  // namespace
 
 void add_calibrate_command(CLI::App& app) {
-  auto opt = std::make_shared<CalibrateOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "calibrate", "Solve the arm's line lengths for its start angle at the goal pressures");
+  const auto [cmd, opt] = add_command<CalibrateOptions>(
+      app, "calibrate", "Solve the arm's line lengths for its start angle at the goal pressures",
+      calibrate);
   cmd->add_option("scenario", opt->scenario, "Scenario file (TOML)")->required();
   add_overrides_option(cmd, &opt->overrides, "Override a scenario key");
   cmd->add_option("--angle-deg", opt->angle_deg, "Start angle at rest [deg] (paper: -36)");
@@ -77,7 +77,6 @@ void add_calibrate_command(CLI::App& app) {
   cmd->add_option("-o,--output,--out", opt->out,
                   "Output file (default: update the scenario's model.calibration)");
   cmd->add_flag("--force", opt->force, "Replace an existing -o file");
-  cmd->callback([opt] { calibrate(*opt); });
 }
 
 }  // namespace pamsim

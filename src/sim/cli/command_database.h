@@ -10,7 +10,24 @@
 #include "sim/io/outputs.h"        // FolderGuard
 #include "sim/io/sqlite_file.h"    // prepare_database_folder
 
+namespace CLI {
+class App;
+}
+
 namespace pamsim {
+
+// --out, --db, --resume and --threads, as a command that runs into a database has them.
+struct DatabaseOptions {
+  std::string out;
+  std::string db;
+  bool resume = false;
+  int threads = 0;
+};
+
+// Registers them on `cmd`, with the command's words for its database, for what --resume
+// continues and for the default output folder.
+void add_database_options(CLI::App* cmd, DatabaseOptions* options, const std::string& db_help,
+                          const std::string& resume_help, const std::string& out_help);
 
 struct CommandDatabase {
   std::string out;    // --out, default renders/<input file's name without extension>
@@ -18,8 +35,8 @@ struct CommandDatabase {
   bool exists = false;
 };
 
-CommandDatabase command_database(const std::string& input_file, const std::string& out_option,
-                                 const std::string& db_option, const std::string& file_name);
+CommandDatabase command_database(const std::string& input_file, const DatabaseOptions& options,
+                                 const std::string& file_name);
 
 // `open()` (which opens or creates the database at `db.path`) with the database's folder made
 // first if it is missing and removed again if `open()` throws.

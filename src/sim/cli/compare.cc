@@ -245,9 +245,8 @@ void compare(const CompareOptions& opt) {
 }  // namespace
 
 void add_compare_command(CLI::App& app) {
-  auto opt = std::make_shared<CompareOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "compare", "Compare two runs: angle bands on one plot, metrics side by side");
+  const auto [cmd, opt] = add_command<CompareOptions>(
+      app, "compare", "Compare two runs: angle bands on one plot, metrics side by side", compare);
   cmd->add_option("dir_a", opt->dir_a, "Output folder of a `pamsim run` (e.g. the model)")
       ->required();
   cmd->add_option("dir_b", opt->dir_b, "Output folder of another run (e.g. the fiber sensor)")
@@ -259,7 +258,6 @@ void add_compare_command(CLI::App& app) {
   add_plot_format_option(cmd, &opt->plot_format);
   cmd->add_option("--label-a", opt->label_a, "Legend label of DIR_A (default: its folder name)");
   cmd->add_option("--label-b", opt->label_b, "Legend label of DIR_B (default: its folder name)");
-  cmd->callback([opt] { compare(*opt); });
 }
 
 }  // namespace pamsim

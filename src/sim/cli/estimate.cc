@@ -13,6 +13,7 @@
 #include "base/input_error.h"
 #include "pam_actuator/pam_params.h"
 #include "base/units.h"
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 
 namespace pamsim {
@@ -59,14 +60,13 @@ void run_estimate(const EstimateOptions& o) {
 }  // namespace
 
 void add_estimate_command(CLI::App& app) {
-  auto o = std::make_shared<EstimateOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "estimate", "estimate deformation and length from pressure and force (Eq. 1-5)");
+  const auto [cmd, o] = add_command<EstimateOptions>(
+      app, "estimate", "estimate deformation and length from pressure and force (Eq. 1-5)",
+      run_estimate);
   cmd->add_option("--params", o->params_path, "PAM parameter file (TOML)")->required();
   cmd->add_option("--pressure-MPa", o->pressure_mpa, "gauge pressure [MPa]")->required();
   cmd->add_option("--force-N", o->force_n, "measured force [N]")->required();
   cmd->add_flag("--json", o->json, "print one JSON object on stdout");
-  cmd->callback([o] { run_estimate(*o); });
 }
 
 }  // namespace pamsim

@@ -17,6 +17,7 @@
 
 #include "base/atomic_file.h"
 #include "base/input_error.h"
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
 #include "sim/sweep/results_db.h"
@@ -111,15 +112,14 @@ void export_csv(const ExportOptions& opt) {
 }  // namespace
 
 void add_export_command(CLI::App& app) {
-  auto opt = std::make_shared<ExportOptions>();
-  CLI::App* cmd = app.add_subcommand("export", "Write a sweep database as CSV (one row per trial)");
+  const auto [cmd, opt] = add_command<ExportOptions>(
+      app, "export", "Write a sweep database as CSV (one row per trial)", export_csv);
   cmd->add_option("db", opt->db, "Sweep database (from pamsim sweep)")->required();
   // --csv: its name before 0.3 (-o/--output names a file everywhere now)
   cmd->add_option("-o,--output,--csv", opt->csv, "Output CSV file (- for standard output)")
       ->required();
   cmd->add_flag("--force", opt->force, "Replace an existing CSV file");
   cmd->add_flag("--timing", opt->timing, "Include wall_time_s and realtime_factor");
-  cmd->callback([opt] { export_csv(*opt); });
 }
 
 }  // namespace pamsim

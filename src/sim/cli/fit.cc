@@ -17,6 +17,7 @@
 #include "base/input_error.h"
 #include "pam_actuator/pam_params.h"
 #include "pam_actuator/tensile_csv.h"
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
 
@@ -120,9 +121,8 @@ void run_fit(const FitOptions& o) {
 }  // namespace
 
 void add_fit_command(CLI::App& app) {
-  auto o = std::make_shared<FitOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "fit", "fit Eq. (2) and a spring law (Eq. 3, 4 or 5) to tensile-test data");
+  const auto [cmd, o] = add_command<FitOptions>(
+      app, "fit", "fit Eq. (2) and a spring law (Eq. 3, 4 or 5) to tensile-test data", run_fit);
   cmd->add_option("--model", o->model, "spring law: eq3 | eq4 | eq5")->required();
   cmd->add_option("tensile_csv", o->csv_path,
                   "CSV with pressure_MPa, deformation_mm, force_N, length_mm columns")
@@ -132,7 +132,6 @@ void add_fit_command(CLI::App& app) {
   cmd->add_flag("--force", o->force, "replace an existing output file");
   cmd->add_option("--sensors-from", o->sensors_from,
                   "copy [strain_gauge] and [geometry] from this PAM file into the output");
-  cmd->callback([o] { run_fit(*o); });
 }
 
 }  // namespace pamsim

@@ -65,14 +65,14 @@ void keys(const KeysOptions& opt) {
 }  // namespace
 
 void add_keys_command(CLI::App& app) {
-  auto opt = std::make_shared<KeysOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "keys", "List the scenario keys (unit, default, allowed values, meaning); with a "
-              "scenario, the values it runs with");
+  const auto [cmd, opt] = add_command<KeysOptions>(
+      app, "keys",
+      "List the scenario keys (unit, default, allowed values, meaning); with a "
+      "scenario, the values it runs with",
+      keys);
   cmd->add_option("scenario", opt->scenario, "Scenario file (TOML)");
   add_overrides_option(cmd, &opt->overrides, "Override a scenario key: --set reflex.v_thr_mm_s=60");
   cmd->add_flag("--json", opt->json, "One JSON array on stdout");
-  cmd->callback([opt] { keys(*opt); });
 }
 
 }  // namespace pamsim

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <memory>
 
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/sweep/merge.h"
 
@@ -42,12 +43,10 @@ void merge(const MergeOptions& opt) {
 }  // namespace
 
 void add_merge_command(CLI::App& app) {
-  auto opt = std::make_shared<MergeOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "merge", "Merge the databases of a sweep's shards (sweep --shard I/N) into one");
+  const auto [cmd, opt] = add_command<MergeOptions>(
+      app, "merge", "Merge the databases of a sweep's shards (sweep --shard I/N) into one", merge);
   cmd->add_option("out", opt->out, "The merged database (a new file)")->required();
   cmd->add_option("parts", opt->parts, "The shards' databases")->required();
-  cmd->callback([opt] { merge(*opt); });
 }
 
 }  // namespace pamsim

@@ -89,10 +89,10 @@ void render(RenderCommandOptions opt) {
 }  // namespace
 
 void add_render_command(CLI::App& app) {
-  auto opt = std::make_shared<RenderCommandOptions>();
+  const auto [cmd, opt] = add_command<RenderCommandOptions>(
+      app, "render",
+      "Render a scenario's trial to H.264 MP4 and/or PNGs (no display or GPU needed)", render);
   VideoOptions& v = opt->video;
-  CLI::App* cmd = app.add_subcommand(
-      "render", "Render a scenario's trial to H.264 MP4 and/or PNGs (no display or GPU needed)");
   cmd->add_option("scenario", opt->scenario, "Scenario file (TOML)")->required();
   add_overrides_option(cmd, &opt->overrides, "Override a scenario key: --set sim.duration_s=2");
   cmd->add_option("-o,--output", v.mp4_path,  // "-": a fragmented MP4 on standard output
@@ -115,7 +115,6 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--plot", v.plot, "Live plots of angle and pressures, bottom left");
   cmd->add_flag("--force", opt->force, "Replace an existing MP4, or the PNG frames in --png-dir");
   cmd->add_flag("--quiet", opt->quiet, "No progress bar or progress lines");
-  cmd->callback([opt] { render(*opt); });
 }
 
 }  // namespace pamsim

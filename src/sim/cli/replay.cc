@@ -161,10 +161,11 @@ void replay(const ReplayOptions& opt) {
 }  // namespace
 
 void add_replay_command(CLI::App& app) {
-  auto opt = std::make_shared<ReplayOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "replay", "Run one trial of a sweep database again, with its full time series, and check "
-                "it against the stored row");
+  const auto [cmd, opt] = add_command<ReplayOptions>(
+      app, "replay",
+      "Run one trial of a sweep database again, with its full time series, and check "
+      "it against the stored row",
+      replay);
   cmd->add_option("db", opt->db, "Sweep database (from pamsim sweep)")->required();
   cmd->add_option("--trial", opt->trial, "The trial's number (the trial column)")->required();
   cmd->add_option("--out", opt->out,
@@ -172,7 +173,6 @@ void add_replay_command(CLI::App& app) {
   cmd->add_flag("--force", opt->force, "Replace the outputs of an earlier replay in the folder");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no plot (gnuplot not needed)");
   add_plot_format_option(cmd, &opt->plot_format);
-  cmd->callback([opt] { replay(*opt); });
 }
 
 }  // namespace pamsim

@@ -189,11 +189,11 @@ void report(const ReportOptions& opt) {
 }  // namespace
 
 void add_report_command(CLI::App& app) {
-  auto opt = std::make_shared<ReportOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "report",
+  const auto [cmd, opt] = add_command<ReportOptions>(
+      app, "report",
       "Per-point statistics, heat maps and the best setting of a sweep database (or a "
-      "tuning database's evaluations, best setting, convergence and Pareto front)");
+      "tuning database's evaluations, best setting, convergence and Pareto front)",
+      report);
   cmd->add_option("db", opt->db, "Sweep or tuning database (from pamsim sweep / tune)")->required();
   cmd->add_option("--metric", opt->metric,
                   "Metric to minimise for the best setting (default peak_drop_deg)");
@@ -204,7 +204,6 @@ void add_report_command(CLI::App& app) {
                 "CI of the headline metrics)");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no heat maps or figures (gnuplot not needed)");
   add_plot_format_option(cmd, &opt->plot_format);
-  cmd->callback([opt] { report(*opt); });
 }
 
 }  // namespace pamsim

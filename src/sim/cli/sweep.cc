@@ -21,6 +21,7 @@
 
 #include "base/input_error.h"
 #include "sim/cli/command_database.h"
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/cli/stop_signal.h"
@@ -42,10 +43,7 @@ namespace {
 
 struct SweepOptions {
   std::string sweep_file;
-  int threads = 0;
-  std::string db;
-  bool resume = false;
-  std::string out;
+  DatabaseOptions database;
   std::string shard;
   bool quiet = false;
 };
@@ -93,17 +91,17 @@ void report_sweep_run(const SweepOptions& opt, const SweepRunResult& r, const Sw
 // The sweep on this machine's threads, or with `remote` (when not null).
 void run_sweep_command(const SweepOptions& opt, const RemoteTrials* remote) {
   const std::string started_utc = utc_timestamp();
-  const int threads = resolve_thread_count(opt.threads);
+  const int threads = resolve_thread_count(opt.database.threads);
   const SweepShard shard = opt.shard.empty() ? SweepShard{} : parse_sweep_shard(opt.shard, "--shard");
   const SweepDefinition def = load_sweep(opt.sweep_file);   // everything validated first
   const std::string db_name = shard.whole() ? "sweep.db"
                                             : "sweep.shard-" + std::to_string(shard.index) +
                                                   "-of-" + std::to_string(shard.count) + ".db";
-  const CommandDatabase where = command_database(opt.sweep_file, opt.out, opt.db, db_name);
+  const CommandDatabase where = command_database(opt.sweep_file, opt.database, db_name);
   const std::string& db_path = where.path;
   const std::int64_t trials = shard.trials_of(def.trials());
   ResultsDb db = open_in_database_folder(where, db_name, [&] {
-    return opt.resume && where.exists ? ResultsDb::open_to_resume(db_path, def, shard)
+    return opt.database.resume && where.exists ? ResultsDb::open_to_resume(db_path, def, shard)
                                       : ResultsDb::create(db_path, def, shard);
   });
   if (remote) remote->database_opened();
@@ -153,8 +151,8 @@ void run_mpi_worker(const SweepOptions& opt, const MpiSession& mpi) {
   } catch (const std::exception& e) {
     load_error = e.what();
   }
-  const int threads = opt.threads > 0
-      ? resolve_thread_count(opt.threads)
+  const int threads = opt.database.threads > 0
+      ? resolve_thread_count(opt.database.threads)
       : std::max(1, resolve_thread_count(0) / mpi.ranks_on_this_node());
   StopOnSignal stop_on_signal;
   work_mpi_sweep(mpi, def, threads, &stop_requested(), load_error);
@@ -207,18 +205,16 @@ void sweep(const SweepOptions& opt) {
 }  // namespace
 
 void add_sweep_command(CLI::App& app) {
-  auto opt = std::make_shared<SweepOptions>();
-  CLI::App* cmd = app.add_subcommand("sweep", "Run a parameter sweep into an SQLite database");
+  const auto [cmd, opt] = add_command<SweepOptions>(
+      app, "sweep", "Run a parameter sweep into an SQLite database", sweep);
   cmd->add_option("sweep", opt->sweep_file, "Sweep file (TOML)")->required();
-  cmd->add_option("--threads", opt->threads, "Worker threads (default: all cores)");
-  cmd->add_option("--db", opt->db, "Results database (default DIR/sweep.db)");
-  cmd->add_flag("--resume", opt->resume, "Finish the sweep stored in the database");
+  add_database_options(cmd, &opt->database, "Results database (default DIR/sweep.db)",
+                       "Finish the sweep stored in the database",
+                       "Output folder (default renders/<sweep name>)");
   cmd->add_flag("--quiet", opt->quiet, "No progress bar or progress lines");
-  cmd->add_option("--out", opt->out, "Output folder (default renders/<sweep name>)");
   cmd->add_option("--shard", opt->shard,
                   "Run only shard I of N (0 <= I < N; trial t is in shard t mod N) into its own "
                   "database (default DIR/sweep.shard-I-of-N.db); combine with pamsim merge");
-  cmd->callback([opt] { sweep(*opt); });
 }
 
 }  // namespace pamsim

@@ -14,6 +14,7 @@
 #include "pam_actuator/plant_params.h"
 #include "pam_actuator/tensile_csv.h"
 #include "pam_actuator/tensile_test.h"
+#include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/io/outputs.h"
 
@@ -74,10 +75,10 @@ void run_tensile(const TensileCommand& c) {
 }  // namespace
 
 void add_tensile_command(CLI::App& app) {
-  auto c = std::make_shared<TensileCommand>();
+  const auto [cmd, c] = add_command<TensileCommand>(
+      app, "tensile", "virtual static tensile test (seeds/000 Sec. II-B), written as CSV",
+      run_tensile);
   TensileTestOptions& t = c->test;
-  CLI::App* cmd = app.add_subcommand(
-      "tensile", "virtual static tensile test (seeds/000 Sec. II-B), written as CSV");
   cmd->add_option("--params", c->params_path, "PAM parameter file (TOML): test its spring law");
   cmd->add_option("--plant", c->plant_path, "plant file (TOML, models/pams/plant_*.toml)");
   cmd->add_option("-o,--output", c->output_path, "output CSV file")->required();
@@ -92,7 +93,6 @@ void add_tensile_command(CLI::App& app) {
   cmd->add_option("--pressures-MPa", t.pressures_mpa, "comma-separated test pressures")
       ->delimiter(',');
   cmd->add_option("--max-deformation-mm", t.max_deformation_mm, "largest deformation");
-  cmd->callback([c] { run_tensile(*c); });
 }
 
 }  // namespace pamsim

@@ -33,10 +33,7 @@ namespace {
 
 struct TuneOptions {
   std::string file;
-  std::string db;
-  std::string out;
-  int threads = 0;
-  bool resume = false;
+  DatabaseOptions database;
   bool force = false;
   bool no_plot = false;
   bool quiet = false;
@@ -123,18 +120,18 @@ void check_settings(const TuneDefinition& def, const std::vector<TuneEvaluation>
 }
 
 void tune(const TuneOptions& opt) {
-  const int threads = resolve_thread_count(opt.threads);
+  const int threads = resolve_thread_count(opt.database.threads);
   const TuneDefinition def = load_tune_definition(opt.file);  // everything validated first
-  const CommandDatabase where = command_database(opt.file, opt.out, opt.db, "tune.db");
-  if (opt.resume && !where.exists) {
+  const CommandDatabase where = command_database(opt.file, opt.database, "tune.db");
+  if (opt.database.resume && !where.exists) {
     throw InputError(where.path + ": --resume, but there is no database");
   }
   // a new tuning does not replace another's outputs silently (a resumed one replaces its own)
-  if (!opt.resume && !where.exists && !opt.force) refuse_earlier_outputs(where.out, kTuneOutputs);
+  if (!opt.database.resume && !where.exists && !opt.force) refuse_earlier_outputs(where.out, kTuneOutputs);
   use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
   TuneDb db = open_in_database_folder(where, "tune.db", [&] {
-    return opt.resume ? TuneDb::open_to_resume(where.path, def) : TuneDb::create(where.path, def);
+    return opt.database.resume ? TuneDb::open_to_resume(where.path, def) : TuneDb::create(where.path, def);
   });
   StopOnSignal stop_on_signal;   // until the end: a signal stops the search, not the checks
   const TuneRunResult r = run_search_command(opt, def, db, where, threads);
@@ -151,19 +148,16 @@ void tune(const TuneOptions& opt) {
 }  // namespace
 
 void add_tune_command(CLI::App& app) {
-  auto opt = std::make_shared<TuneOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "tune", "Tune a scenario's settings with CMA-ES or NSGA-II (pagmo2) into SQLite");
+  const auto [cmd, opt] = add_command<TuneOptions>(
+      app, "tune", "Tune a scenario's settings with CMA-ES or NSGA-II (pagmo2) into SQLite", tune);
   cmd->add_option("tune", opt->file, "Tuning file (TOML)")->required();
-  cmd->add_option("--db", opt->db, "Tuning database (default DIR/tune.db)");
-  cmd->add_option("--out", opt->out, "Output folder (default renders/<tuning file name>)");
-  cmd->add_option("--threads", opt->threads, "Worker threads (default: all cores)");
-  cmd->add_flag("--resume", opt->resume, "Continue the tuning stored in the database");
+  add_database_options(cmd, &opt->database, "Tuning database (default DIR/tune.db)",
+                       "Continue the tuning stored in the database",
+                       "Output folder (default renders/<tuning file name>)");
   cmd->add_flag("--force", opt->force, "Replace another tuning's outputs in the folder");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no figures (gnuplot not needed)");
   cmd->add_flag("--quiet", opt->quiet, "No progress bar or progress lines");
   add_plot_format_option(cmd, &opt->plot_format);
-  cmd->callback([opt] { tune(*opt); });
 }
 
 }  // namespace pamsim

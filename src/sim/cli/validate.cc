@@ -181,19 +181,18 @@ void add_validate_command(CLI::App& app) {
       "validate", "the papers' validation experiments: Table III and Table V in simulation");
   cmd->require_subcommand(1);
 
-  auto length = std::make_shared<ValidateOptions>();
-  CLI::App* le = cmd->add_subcommand(
-      "length-estimation",
-      "PAMs A-D: tensile test, fits of Eq. (3)-(5), dynamic test on the pulley (Table III)");
+  const auto [le, length] = add_command<ValidateOptions>(
+      *cmd, "length-estimation",
+      "PAMs A-D: tensile test, fits of Eq. (3)-(5), dynamic test on the pulley (Table III)",
+      run_length_estimation);
   add_common(le, length.get(), "scenarios/validate_length_estimation.toml");
   le->add_option("--pams", length->pams, "Only these PAMs (comma-separated names)")->delimiter(',');
-  le->callback([length] { run_length_estimation(*length); });
 
-  auto reaching = std::make_shared<ValidateOptions>();
-  CLI::App* re = cmd->add_subcommand(
-      "reaching", "the arm's reaching task: model estimate and fiber sensor vs encoder (Table V)");
+  const auto [re, reaching] = add_command<ValidateOptions>(
+      *cmd, "reaching",
+      "the arm's reaching task: model estimate and fiber sensor vs encoder (Table V)",
+      run_reaching);
   add_common(re, reaching.get(), "scenarios/validate_reaching.toml");
-  re->callback([reaching] { run_reaching(*reaching); });
 }
 
 }  // namespace pamsim
