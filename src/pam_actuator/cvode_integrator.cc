@@ -168,30 +168,28 @@ void CvodeIntegrator::advance_to(double t_end) {
 
 const double* CvodeIntegrator::state() const { return NV_DATA_S(y_); }
 
-long CvodeIntegrator::steps() const {
+long CvodeIntegrator::counter(int (*get)(void*, long*), const char* function) const {
   long n = 0;
-  check(CVodeGetNumSteps(cvode_, &n), "CVodeGetNumSteps");
-  return steps_before_reset_ + n;
+  check(get(cvode_, &n), function);
+  return n;
+}
+
+long CvodeIntegrator::steps() const {
+  return steps_before_reset_ + counter(CVodeGetNumSteps, "CVodeGetNumSteps");
 }
 
 long CvodeIntegrator::rhs_evals() const {
-  long n = 0;
-  long n_ls = 0;
-  check(CVodeGetNumRhsEvals(cvode_, &n), "CVodeGetNumRhsEvals");
-  check(CVodeGetNumLinRhsEvals(cvode_, &n_ls), "CVodeGetNumLinRhsEvals");
-  return rhs_evals_before_reset_ + n + n_ls;
+  return rhs_evals_before_reset_ + counter(CVodeGetNumRhsEvals, "CVodeGetNumRhsEvals") +
+         counter(CVodeGetNumLinRhsEvals, "CVodeGetNumLinRhsEvals");
 }
 
 long CvodeIntegrator::error_test_failures() const {
-  long n = 0;
-  check(CVodeGetNumErrTestFails(cvode_, &n), "CVodeGetNumErrTestFails");
-  return error_test_failures_before_reset_ + n;
+  return error_test_failures_before_reset_ +
+         counter(CVodeGetNumErrTestFails, "CVodeGetNumErrTestFails");
 }
 
 long CvodeIntegrator::jacobian_evals() const {
-  long n = 0;
-  check(CVodeGetNumJacEvals(cvode_, &n), "CVodeGetNumJacEvals");
-  return jacobian_evals_before_reset_ + n;
+  return jacobian_evals_before_reset_ + counter(CVodeGetNumJacEvals, "CVodeGetNumJacEvals");
 }
 
 }  // namespace pamsim

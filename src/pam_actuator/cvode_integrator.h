@@ -78,6 +78,8 @@ class CvodeIntegrator {
   static void error_handler(int code, const char* module, const char* function, char* msg,
                             void* user_data);
   void check(int flag, const char* function) const;
+  // A CVODE counter since the last (re)initialisation, read by `get`, named `function`.
+  long counter(int (*get)(void*, long*), const char* function) const;
   void free_all();
 
   OdeSystem& system_;
