@@ -28,20 +28,21 @@
 namespace pamsim {
 namespace {
 
+// The core EGL entry points pamsim calls, as X(name without "egl", its pointer type): the
+// one list EglApi declares and egl_api() loads.
+#define PAMSIM_EGL_CORE_FUNCTIONS(X)                                                          \
+  X(GetProcAddress, PFNEGLGETPROCADDRESSPROC) X(QueryString, PFNEGLQUERYSTRINGPROC)           \
+  X(GetDisplay, PFNEGLGETDISPLAYPROC) X(Initialize, PFNEGLINITIALIZEPROC)                     \
+  X(Terminate, PFNEGLTERMINATEPROC) X(ChooseConfig, PFNEGLCHOOSECONFIGPROC)                   \
+  X(BindAPI, PFNEGLBINDAPIPROC) X(CreateContext, PFNEGLCREATECONTEXTPROC)                     \
+  X(MakeCurrent, PFNEGLMAKECURRENTPROC) X(GetCurrentContext, PFNEGLGETCURRENTCONTEXTPROC)     \
+  X(DestroyContext, PFNEGLDESTROYCONTEXTPROC) X(GetError, PFNEGLGETERRORPROC)
+
 // The EGL entry points, from libEGL loaded once with RTLD_GLOBAL (see the top of this file).
 struct EglApi {
-  PFNEGLGETPROCADDRESSPROC GetProcAddress = nullptr;
-  PFNEGLQUERYSTRINGPROC QueryString = nullptr;
-  PFNEGLGETDISPLAYPROC GetDisplay = nullptr;
-  PFNEGLINITIALIZEPROC Initialize = nullptr;
-  PFNEGLTERMINATEPROC Terminate = nullptr;
-  PFNEGLCHOOSECONFIGPROC ChooseConfig = nullptr;
-  PFNEGLBINDAPIPROC BindAPI = nullptr;
-  PFNEGLCREATECONTEXTPROC CreateContext = nullptr;
-  PFNEGLMAKECURRENTPROC MakeCurrent = nullptr;
-  PFNEGLGETCURRENTCONTEXTPROC GetCurrentContext = nullptr;
-  PFNEGLDESTROYCONTEXTPROC DestroyContext = nullptr;
-  PFNEGLGETERRORPROC GetError = nullptr;
+#define PAMSIM_EGL_DECLARE(name, type) type name = nullptr;
+  PAMSIM_EGL_CORE_FUNCTIONS(PAMSIM_EGL_DECLARE)
+#undef PAMSIM_EGL_DECLARE
   // EGL_EXT_device_enumeration, _device_query, _platform_device (null where missing)
   PFNEGLQUERYDEVICESEXTPROC QueryDevices = nullptr;
   PFNEGLQUERYDEVICESTRINGEXTPROC QueryDeviceString = nullptr;
@@ -72,18 +73,9 @@ const EglApi& egl_api() {
       *fn = reinterpret_cast<std::remove_pointer_t<decltype(fn)>>(dlsym(lib, name));
       if (!*fn && a.load_error.empty()) a.load_error = std::string("libEGL.so.1 lacks ") + name;
     };
-    load(&a.GetProcAddress, "eglGetProcAddress");
-    load(&a.QueryString, "eglQueryString");
-    load(&a.GetDisplay, "eglGetDisplay");
-    load(&a.Initialize, "eglInitialize");
-    load(&a.Terminate, "eglTerminate");
-    load(&a.ChooseConfig, "eglChooseConfig");
-    load(&a.BindAPI, "eglBindAPI");
-    load(&a.CreateContext, "eglCreateContext");
-    load(&a.MakeCurrent, "eglMakeCurrent");
-    load(&a.GetCurrentContext, "eglGetCurrentContext");
-    load(&a.DestroyContext, "eglDestroyContext");
-    load(&a.GetError, "eglGetError");
+#define PAMSIM_EGL_LOAD(name, type) load(&a.name, "egl" #name);
+    PAMSIM_EGL_CORE_FUNCTIONS(PAMSIM_EGL_LOAD)
+#undef PAMSIM_EGL_LOAD
     if (!a.load_error.empty()) return a;
     const char* client = a.QueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (has_extension(client, "EGL_EXT_platform_base")) {
