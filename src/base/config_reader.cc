@@ -28,6 +28,10 @@ ConfigReader::ConfigReader(const std::string& text, const std::string& name) : n
   doc_ = parse_toml_text(text, name);
 }
 
+void ConfigReader::apply_overrides(const std::vector<std::string>& assignments) {
+  for (const std::string& a : assignments) apply_override(a);
+}
+
 void ConfigReader::apply_override(const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0) {
@@ -170,6 +174,12 @@ std::string ConfigReader::get_path(const std::string& key, const std::string& fa
   const std::string value = get_string(key, fallback);
   if (value.empty() || value[0] == '/') return value;
   return directory() + "/" + value;
+}
+
+std::string ConfigReader::require_path(const std::string& key, const std::string& what) {
+  const std::string path = get_path(key, "");
+  check(!path.empty(), key, "is required (" + what + ")");
+  return path;
 }
 
 std::vector<std::string> ConfigReader::get_string_list(const std::string& key,
@@ -324,6 +334,15 @@ TableEntry TableArray::operator[](std::size_t i) const {
   const toml::table* t = (*array_)[i].as_table();
   if (!t) in_.fail(at, "must be a table");
   return TableEntry{in_, *t, at + "."};
+}
+
+std::vector<TableEntry> TableArray::entries(std::initializer_list<const char*> keys) const {
+  std::vector<TableEntry> out;
+  for (std::size_t i = 0; i < size(); ++i) {
+    out.push_back((*this)[i]);
+    out.back().allow(keys);
+  }
+  return out;
 }
 
 }  // namespace pamsim

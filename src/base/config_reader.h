@@ -29,6 +29,7 @@ class ConfigReader {
   // Applies "a.b=value" (value parsed as TOML: 1.5, true, "x", [1,2]; bare words become
   // strings). Throws InputError "--set <arg>: ..." when malformed.
   void apply_override(const std::string& assignment);
+  void apply_overrides(const std::vector<std::string>& assignments);
 
   bool has(const std::string& key) const;
   double get_double(const std::string& key, double fallback);
@@ -39,6 +40,8 @@ class ConfigReader {
   std::string require_string(const std::string& key);
   // A path value, resolved relative to the folder of the file that holds the document.
   std::string get_path(const std::string& key, const std::string& fallback);
+  // A path that must be given: "<file>: <key> is required (<what>)" when it is not.
+  std::string require_path(const std::string& key, const std::string& what);
   // A path to a file to read (get_path), which must exist as a regular file of bounded size
   // (require_input_file); otherwise InputError "<file>: <key>: <path>: <problem>", so that the
   // message names the key that points at the file.
@@ -124,6 +127,8 @@ class TableArray {
   TableArray(ConfigReader& in, const std::string& name);
   std::size_t size() const { return array_ ? array_->size() : 0; }
   TableEntry operator[](std::size_t i) const;
+  // Every entry, in order, each refusing a key not in `keys` (TableEntry::allow).
+  std::vector<TableEntry> entries(std::initializer_list<const char*> keys) const;
 
  private:
   ConfigReader& in_;

@@ -161,7 +161,7 @@ void read_metrics(ConfigReader& in, Scenario* sc, bool has_drop) {
 
 Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrides,
                        bool lines_needed = true) {
-  for (const auto& o : overrides) in.apply_override(o);
+  in.apply_overrides(overrides);
   Scenario sc;
   sc.path = in.name();
   const std::int64_t seed = in.get_int("seed", 1);

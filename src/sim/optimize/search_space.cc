@@ -30,7 +30,6 @@ SearchParameter read_parameter(ConfigReader& in, const TableEntry& e,
                                const std::vector<SearchParameter>& earlier,
                                const std::vector<std::string>& reserved,
                                const std::string& reserved_hint) {
-  e.allow({"key", "from", "to", "scale"});
   SearchParameter p;
   p.key = e.text("key", true);
   for (const SearchParameter& q : earlier) {
@@ -60,9 +59,8 @@ std::vector<SearchParameter> read_search_parameters(ConfigReader& in,
                                                     const std::vector<std::string>& reserved,
                                                     const std::string& reserved_hint) {
   std::vector<SearchParameter> out;
-  const TableArray list(in, "parameter");
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    out.push_back(read_parameter(in, list[i], out, reserved, reserved_hint));
+  for (const TableEntry& e : TableArray(in, "parameter").entries({"key", "from", "to", "scale"})) {
+    out.push_back(read_parameter(in, e, out, reserved, reserved_hint));
   }
   in.check(!out.empty(), "parameter", "needs at least one [[parameter]]");
   return out;

@@ -36,8 +36,7 @@ std::int64_t bounded_int(ConfigReader& in, const std::string& key, std::int64_t 
 }
 
 void read_base(ConfigReader& in, TuneDefinition* def) {
-  def->base_path = in.get_path("base", "");
-  in.check(!def->base_path.empty(), "base", "is required (the base scenario file)");
+  def->base_path = in.require_path("base", "the base scenario file");
   // absolute: the stored definition must not depend on the folder pamsim ran from
   def->base_path = fs::weakly_canonical(fs::absolute(def->base_path)).string();
   try {
@@ -96,10 +95,7 @@ void check_metric(ConfigReader& in, const std::vector<std::string>& metrics,
 
 void read_objectives(ConfigReader& in, const std::vector<std::string>& metrics,
                      TuneDefinition* def) {
-  const TableArray list(in, "objective");
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    const TableEntry e = list[i];
-    e.allow({"metric", "maximize"});
+  for (const TableEntry& e : TableArray(in, "objective").entries({"metric", "maximize"})) {
     TuneObjective o;
     o.metric = e.text("metric", true);
     check_metric(in, metrics, e.where + "metric", o.metric);
@@ -117,10 +113,7 @@ void read_objectives(ConfigReader& in, const std::vector<std::string>& metrics,
 
 void read_constraints(ConfigReader& in, const std::vector<std::string>& metrics,
                       TuneDefinition* def) {
-  const TableArray list(in, "constraint");
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    const TableEntry e = list[i];
-    e.allow({"metric", "min", "max"});
+  for (const TableEntry& e : TableArray(in, "constraint").entries({"metric", "min", "max"})) {
     TuneConstraint c;
     c.metric = e.text("metric", true);
     check_metric(in, metrics, e.where + "metric", c.metric);
@@ -133,10 +126,7 @@ void read_constraints(ConfigReader& in, const std::vector<std::string>& metrics,
 }
 
 void read_references(ConfigReader& in, TuneDefinition* def) {
-  const TableArray list(in, "reference");
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    const TableEntry e = list[i];
-    e.allow({"name", "values"});
+  for (const TableEntry& e : TableArray(in, "reference").entries({"name", "values"})) {
     TuneReference r;
     r.name = e.text("name", true);
     const toml::array* values = e.table.get("values") ? e.table.get("values")->as_array() : nullptr;

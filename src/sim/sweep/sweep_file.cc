@@ -204,8 +204,7 @@ void read_design(ConfigReader& in, SweepDefinition* def) {
 
 // base (its text) and [fixed]
 void read_base(ConfigReader& in, SweepDefinition* def) {
-  def->base_path = in.get_path("base", "");
-  in.check(!def->base_path.empty(), "base", "is required (the base scenario file)");
+  def->base_path = in.require_path("base", "the base scenario file");
   try {
     def->base_text = read_text_file(def->base_path);
   } catch (const InputError& e) {

@@ -18,8 +18,7 @@ ValidationPam read_pam(ConfigReader& in, const std::string& name, const TensileT
   const std::string key = "pams." + name;
   ValidationPam pam;
   pam.name = name;
-  pam.plant_file = in.get_path(key + ".plant", "");
-  in.check(!pam.plant_file.empty(), key + ".plant", "is required");
+  pam.plant_file = in.require_path(key + ".plant", "the PAM's plant file");
   try {
     pam.plant = load_plant_params(pam.plant_file);
   } catch (const InputError& e) {
@@ -146,11 +145,10 @@ LengthValidationSpec load_length_validation(const std::string& path,
                                             const std::vector<std::string>& only,
                                             const std::vector<std::string>& protocol_overrides) {
   ConfigReader in(path);
-  for (const std::string& o : protocol_overrides) in.apply_override(o);
+  in.apply_overrides(protocol_overrides);
   LengthValidationSpec spec;
   spec.file = path;
-  spec.rig_file = in.get_path("rig", "");
-  in.check(!spec.rig_file.empty(), "rig", "is required (the pulley rig's scenario)");
+  spec.rig_file = in.require_path("rig", "the pulley rig's scenario");
   spec.overrides = in.get_string_list("overrides", {});
   spec.laws = read_laws(in);
   spec.weights_kg = read_weights(in);

@@ -81,11 +81,10 @@ double first_taut_s(const Trajectory& tr, const std::string& label, double start
 ReachingValidationSpec load_reaching_validation(
     const std::string& path, const std::vector<std::string>& protocol_overrides) {
   ConfigReader in(path);
-  for (const std::string& o : protocol_overrides) in.apply_override(o);
+  in.apply_overrides(protocol_overrides);
   ReachingValidationSpec spec;
   spec.file = path;
-  spec.scenario_file = in.get_path("scenario", "");
-  in.check(!spec.scenario_file.empty(), "scenario", "is required (the reaching scenario)");
+  spec.scenario_file = in.require_path("scenario", "the reaching scenario");
   const std::int64_t trials = in.get_int("trials", spec.trials);
   in.check(trials >= 1 && trials <= 1000, "trials",
            "must be in [1, 1000], got " + std::to_string(trials));
