@@ -7,26 +7,22 @@
 #include <string>
 #include <utility>
 
+#include "base/enum_names.h"
 #include "base/input_error.h"
 
 namespace pamsim {
 
+namespace {
+constexpr EnumName<ValveModel> kValveNames[] = {{ValveModel::kIso6358, "iso6358"},
+                                                {ValveModel::kFirstOrder, "first_order"},
+                                                {ValveModel::kRegulator, "regulator"}};
+}  // namespace
+
 ValveModel parse_valve_model(const std::string& name, const std::string& context) {
-  if (name == "iso6358") return ValveModel::kIso6358;
-  if (name == "first_order") return ValveModel::kFirstOrder;
-  if (name == "regulator") return ValveModel::kRegulator;
-  throw InputError(context + ": unknown valve model \"" + name +
-                   "\", allowed iso6358 | first_order | regulator");
+  return parse_name(kValveNames, name, context);
 }
 
-const char* valve_model_name(ValveModel model) {
-  switch (model) {
-    case ValveModel::kIso6358: return "iso6358";
-    case ValveModel::kFirstOrder: return "first_order";
-    case ValveModel::kRegulator: return "regulator";
-  }
-  return "?";
-}
+const char* valve_model_name(ValveModel model) { return name_of(kValveNames, model); }
 
 double iso6358_flow_function(double r, double b, double r_lam) {
   // choked (sonic) flow

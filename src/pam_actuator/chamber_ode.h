@@ -59,8 +59,8 @@ class RecoverableRhsError : public std::runtime_error {
 enum class ValveModel { kIso6358, kFirstOrder, kRegulator };
 
 // "iso6358" -> kIso6358, "first_order" -> kFirstOrder, "regulator" -> kRegulator; otherwise
-// throws InputError "<context>: unknown valve model \"x\", allowed iso6358 | first_order |
-// regulator".
+// throws InputError "<context> must be \"iso6358\", \"first_order\" or \"regulator\", got
+// \"x\"".
 ValveModel parse_valve_model(const std::string& name, const std::string& context);
 const char* valve_model_name(ValveModel model);
 

@@ -6,11 +6,19 @@
 #include <cmath>
 #include <limits>
 
+#include "base/enum_names.h"
 #include "base/input_error.h"
 #include "base/units.h"
 
 namespace pamsim {
 namespace {
+
+constexpr EnumName<SpringLaw> kLawNames[] = {
+    {SpringLaw::kEq3, "eq3"}, {SpringLaw::kEq4, "eq4"}, {SpringLaw::kEq5, "eq5"}};
+constexpr EnumName<InversionStatus> kStatusNames[] = {
+    {InversionStatus::kOk, "ok"},
+    {InversionStatus::kSlack, "slack"},
+    {InversionStatus::kNoPhysicalRoot, "no_physical_root"}};
 
 // exponents (i of p, j of d) of each term before the common factor d, paper order
 struct Term {
@@ -142,21 +150,10 @@ double smallest_positive_cubic_root(double a3, double a2, double a1, double f) {
 
 }  // namespace
 
-const char* to_string(SpringLaw law) {
-  switch (law) {
-    case SpringLaw::kEq3: return "eq3";
-    case SpringLaw::kEq4: return "eq4";
-    case SpringLaw::kEq5: return "eq5";
-  }
-  return "?";
-}
+const char* to_string(SpringLaw law) { return name_of(kLawNames, law); }
 
 SpringLaw parse_spring_law(const std::string& name, const std::string& context) {
-  if (name == "eq3") return SpringLaw::kEq3;
-  if (name == "eq4") return SpringLaw::kEq4;
-  if (name == "eq5") return SpringLaw::kEq5;
-  throw InputError(context + ": unknown spring law \"" + name +
-                   "\", allowed: eq3, eq4, eq5");
+  return parse_name(kLawNames, name, context);
 }
 
 int coefficient_count(SpringLaw law) {
@@ -229,14 +226,7 @@ double spring_stiffness(const SpringModel& model, double p_pa, double d_m) {
   return (3.0 * a[2] * d_m + 2.0 * a[1]) * d_m + a[0];
 }
 
-const char* to_string(InversionStatus status) {
-  switch (status) {
-    case InversionStatus::kOk: return "ok";
-    case InversionStatus::kSlack: return "slack";
-    case InversionStatus::kNoPhysicalRoot: return "no_physical_root";
-  }
-  return "?";
-}
+const char* to_string(InversionStatus status) { return name_of(kStatusNames, status); }
 
 double smallest_positive_root(double a3, double a2, double a1, double f) {
   if (!(f > 0.0) || !std::isfinite(f) || !std::isfinite(a1) || !std::isfinite(a2) ||

@@ -6,25 +6,21 @@
 #include <cassert>
 #include <cmath>
 
+#include "base/enum_names.h"
 #include "base/input_error.h"
 #include "base/units.h"
 
 namespace pamsim {
 
-const char* to_string(ReflexMode mode) {
-  switch (mode) {
-    case ReflexMode::kFollow:
-      return "follow";
-    case ReflexMode::kLatch:
-      return "latch";
-  }
-  return "?";
-}
+namespace {
+constexpr EnumName<ReflexMode> kModeNames[] = {{ReflexMode::kFollow, "follow"},
+                                               {ReflexMode::kLatch, "latch"}};
+}  // namespace
+
+const char* to_string(ReflexMode mode) { return name_of(kModeNames, mode); }
 
 ReflexMode parse_reflex_mode(const std::string& name) {
-  if (name == "follow") return ReflexMode::kFollow;
-  if (name == "latch") return ReflexMode::kLatch;
-  throw InputError("reflex.mode must be \"follow\" or \"latch\", got \"" + name + "\"");
+  return parse_name(kModeNames, name, "reflex.mode");
 }
 
 StretchReflex::StretchReflex(const StretchReflexParams& params, double control_period_s)

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "base/config_reader.h"
+#include "base/enum_names.h"
 #include "base/input_error.h"
 #include "base/units.h"
 #include "reflex/checks.h"
@@ -19,6 +20,9 @@ namespace {
 
 using namespace checks;
 
+constexpr EnumName<ReflexSensor> kSensorNames[] = {{ReflexSensor::kModel, "model"},
+                                                   {ReflexSensor::kFiber, "fiber"}};
+
 const StretchReflexControllerConfig& validated(const StretchReflexControllerConfig& config) {
   validate(config);
   return config;
@@ -26,20 +30,10 @@ const StretchReflexControllerConfig& validated(const StretchReflexControllerConf
 
 }  // namespace
 
-const char* to_string(ReflexSensor sensor) {
-  switch (sensor) {
-    case ReflexSensor::kModel:
-      return "model";
-    case ReflexSensor::kFiber:
-      return "fiber";
-  }
-  return "?";
-}
+const char* to_string(ReflexSensor sensor) { return name_of(kSensorNames, sensor); }
 
 ReflexSensor parse_reflex_sensor(const std::string& name) {
-  if (name == "model") return ReflexSensor::kModel;
-  if (name == "fiber") return ReflexSensor::kFiber;
-  throw InputError("reflex.sensor must be \"model\" or \"fiber\", got \"" + name + "\"");
+  return parse_name(kSensorNames, name, "reflex.sensor");
 }
 
 ReflexConfig table_ii_reflex_config(ReflexSensor sensor) {

@@ -33,8 +33,8 @@ TEST(ChamberOdeTest, ParsesValveModelNames) {
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
-              "scenario.toml: valve.model: unknown valve model \"linear\", allowed iso6358 | "
-              "first_order | regulator");
+              "scenario.toml: valve.model must be \"iso6358\", \"first_order\" or "
+              "\"regulator\", got \"linear\"");
   }
 }
 

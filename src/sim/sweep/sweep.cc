@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
+#include "base/enum_names.h"
 #include "base/input_error.h"
 
 namespace pamsim {
@@ -76,13 +77,16 @@ double SweepAxis::at(double u) const {
   return from + u * (to - from);
 }
 
-const char* sweep_design_name(SweepDesign design) {
-  switch (design) {
-    case SweepDesign::kGrid: return "grid";
-    case SweepDesign::kRandom: return "random";
-    case SweepDesign::kLatinHypercube: return "lhs";
-  }
-  return "?";
+namespace {
+constexpr EnumName<SweepDesign> kDesignNames[] = {{SweepDesign::kGrid, "grid"},
+                                                  {SweepDesign::kRandom, "random"},
+                                                  {SweepDesign::kLatinHypercube, "lhs"}};
+}  // namespace
+
+const char* sweep_design_name(SweepDesign design) { return name_of(kDesignNames, design); }
+
+SweepDesign parse_sweep_design(const std::string& name, const std::string& context) {
+  return parse_name(kDesignNames, name, context);
 }
 
 std::string AxisValue::toml() const {

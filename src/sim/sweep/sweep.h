@@ -26,6 +26,8 @@ namespace pamsim {
 
 enum class SweepDesign { kGrid, kRandom, kLatinHypercube };
 const char* sweep_design_name(SweepDesign design);
+// "grid", "random" or "lhs"; InputError "<context> must be ..." otherwise.
+SweepDesign parse_sweep_design(const std::string& name, const std::string& context);
 
 // One value of an axis: a float or an integer (both held in `number`), or a string or
 // boolean scenario value. Integers stay integers (integer keys refuse 12.0).

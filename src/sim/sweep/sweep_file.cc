@@ -173,10 +173,7 @@ const std::string kRaise = " (raise max_trials to run it)";
 // design, max_trials, seeds, and for random/lhs samples and design_seed
 void read_design(ConfigReader& in, SweepDefinition* def) {
   const std::string design = in.get_string("design", "grid");
-  if (design == "grid") def->design = SweepDesign::kGrid;
-  else if (design == "random") def->design = SweepDesign::kRandom;
-  else if (design == "lhs") def->design = SweepDesign::kLatinHypercube;
-  else in.fail("design", "must be \"grid\", \"random\" or \"lhs\", got \"" + design + "\"");
+  def->design = parse_sweep_design(design, in.name() + ": design");
 
   def->max_trials = in.get_int("max_trials", def->max_trials);
   in.check(def->max_trials >= 1, "max_trials",

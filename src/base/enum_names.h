@@ -1,0 +1,52 @@
+// enum_names.h: the names an enum is written as in files, logs and on the command line, kept
+// in one table per enum and read both ways: name_of for output, parse_name for input, with
+// one error form for every enum ("<context> must be \"a\", \"b\" or \"c\", got \"x\"").
+//   constexpr EnumName<SweepDesign> kDesigns[] = {{SweepDesign::kGrid, "grid"}, ...};
+//   name_of(kDesigns, SweepDesign::kGrid)           -> "grid"
+//   parse_name(kDesigns, "sobol", "sweep.toml: design") throws InputError
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "base/input_error.h"
+
+namespace pamsim {
+
+template <typename Enum>
+struct EnumName {
+  Enum value;
+  const char* name;
+};
+
+// "\"a\"", "\"a\" or \"b\"", "\"a\", \"b\" or \"c\"": the choices of a table, for messages.
+template <typename Enum, std::size_t N>
+std::string quoted_choices(const EnumName<Enum> (&names)[N]) {
+  std::string out;
+  for (std::size_t i = 0; i < N; ++i) {
+    if (i > 0) out += (i + 1 == N) ? " or " : ", ";
+    out += std::string("\"") + names[i].name + "\"";
+  }
+  return out;
+}
+
+// The name of `value`; "?" for a value the table lacks (a cast integer).
+template <typename Enum, std::size_t N>
+const char* name_of(const EnumName<Enum> (&names)[N], Enum value) {
+  for (const EnumName<Enum>& n : names) {
+    if (n.value == value) return n.name;
+  }
+  return "?";
+}
+
+// The value named `name`; InputError "<context> must be <choices>, got \"<name>\"" otherwise.
+template <typename Enum, std::size_t N>
+Enum parse_name(const EnumName<Enum> (&names)[N], const std::string& name,
+                const std::string& context) {
+  for (const EnumName<Enum>& n : names) {
+    if (name == n.name) return n.value;
+  }
+  throw InputError(context + " must be " + quoted_choices(names) + ", got \"" + name + "\"");
+}
+
+}  // namespace pamsim
