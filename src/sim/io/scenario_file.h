@@ -42,7 +42,8 @@
 //       when.contact = [a, b]     two bodies touch, or
 //       when.joint with below_deg / above_deg (hinge) or below_mm / above_mm (slide), or
 //       when.body with below_z_m  a body's origin below a height
-//   controller.kind               "none" | "stretch_reflex" (default)
+//   controller.kind               a registered kind (reflex/controller_registry.h):
+//                                 "none" | "stretch_reflex" (default) | one added
 //   controller.p_max_MPa          valve range for the reflex's commands, > 0
 //   reflex.*                      the stretch reflex (reflex/stretch_reflex_controller.h)
 //   reflex.pairs                  [[agonist, antagonist], ...] by actuator name; default
