@@ -55,7 +55,9 @@ TEST(PlantParamsTest, ShippedAgonistPlantLoads) {
   EXPECT_EQ(plant.avbdl.bladder.c10_pa, kNaturalRubberTreloar.c10_pa);
   EXPECT_DOUBLE_EQ(plant.avbdl.friction.extension.pressure_area_m2, 2.36e-6);
   EXPECT_DOUBLE_EQ(plant.avbdl.friction.contraction.strain_area_m2, 4.52e-6);
-  // what its source line states: free lengths at 0.2 / 0.4 / 0.6 MPa
+  // regression pin: the free lengths its source line states at 0.2 / 0.4 / 0.6 MPa (computed
+  // when the file was written); they guard the file and the law against drift, and
+  // FreeLengthIsWhereTheLawStopsPulling checks what a free length is
   EXPECT_NEAR(avbdl_free_length(plant.avbdl, 0.2e6), 0.1570, 0.0005);
   EXPECT_NEAR(avbdl_free_length(plant.avbdl, 0.4e6), 0.1405, 0.0005);
   EXPECT_NEAR(avbdl_free_length(plant.avbdl, 0.6e6), 0.1344, 0.0005);
@@ -87,12 +89,37 @@ TEST(PlantParamsTest, ShippedPlantsHaveTheirStatedDimensionsAndFrictionRule) {
     EXPECT_NEAR(f.extension.strain_area_m2, 2.4 * f.extension.pressure_area_m2, 0.02e-6);
     EXPECT_NEAR(f.contraction.strain_area_m2, 2.4 * f.contraction.pressure_area_m2, 0.02e-6);
   }
-  // the antagonist's source line: free lengths 155 / 139 / 134 mm at 0.2 / 0.4 / 0.6 MPa
+  // regression pin: the antagonist's source line states free lengths 155 / 139 / 134 mm at
+  // 0.2 / 0.4 / 0.6 MPa (computed when the file was written; a drift guard, as above)
   const AvbdlParams anta =
       load_plant_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_antagonist.toml").avbdl;
   EXPECT_NEAR(avbdl_free_length(anta, 0.2e6), 0.155, 0.001);
   EXPECT_NEAR(avbdl_free_length(anta, 0.4e6), 0.139, 0.001);
   EXPECT_NEAR(avbdl_free_length(anta, 0.6e6), 0.134, 0.001);
+}
+
+// What a free length is, checked on the law itself rather than against the root finder: the
+// static pull (Eq. 25) is zero there and positive once the muscle is stretched past it, it
+// lies between the braid's neutral length b/sqrt(3) (where a bladder-free braid stops
+// pulling, Chou-Hannaford) and the rest length, and more pressure shortens it.
+TEST(PlantParamsTest, FreeLengthIsWhereTheLawStopsPulling) {
+  for (const char* file : {"plant_agonist.toml", "plant_antagonist.toml", "plant_pam_a.toml",
+                           "plant_pam_b.toml", "plant_pam_c.toml", "plant_pam_d.toml"}) {
+    SCOPED_TRACE(file);
+    const AvbdlParams p =
+        load_plant_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/" + file).avbdl;
+    const double neutral = avbdl_braid(p).fibre_length_m / std::sqrt(3.0);
+    double previous = p.length_m;
+    for (double p_mpa : {0.1, 0.2, 0.4, 0.6}) {
+      const double p_pa = units::mpa_to_pa(p_mpa);
+      const double free = avbdl_free_length(p, p_pa);
+      EXPECT_NEAR(avbdl_static_force(p, p_pa, free), 0.0, 1e-6) << p_mpa << " MPa";
+      EXPECT_GT(avbdl_static_force(p, p_pa, free + 0.001), 0.0) << p_mpa << " MPa";
+      EXPECT_GT(free, neutral);
+      EXPECT_LT(free, previous) << p_mpa << " MPa";
+      previous = free;
+    }
+  }
 }
 
 TEST(PlantParamsTest, ExplicitConstantsAndFrictionAreRead) {
