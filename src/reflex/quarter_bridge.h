@@ -1,0 +1,45 @@
+// quarter_bridge.h: a foil strain gauge in a quarter Wheatstone bridge, as the paper's
+// gauges are wired (seeds/000 Sec. IV-B: foil gauges on acrylic boards, a quarter bridge
+// completed by 120 +- 0.5 Ohm resistors). The output is the bridge formula
+//   V_out = G V_ex ( R_g / (R_g + R_3) - R_2 / (R_1 + R_2) ),  R_g = R_g0 (1 + GF eps),
+// which for four equal arms is G V_ex GF eps / (4 + 2 GF eps): V_base is not zero once the
+// arms differ within their tolerance, and the output bends away from linear with strain.
+// A built bridge's four resistances are drawn once per instrument (uniform within the
+// tolerance), so an instrument keeps its offset from trial to trial (issue 25, item 3).
+#pragma once
+
+#include <random>
+#include <string>
+
+namespace pamsim {
+
+struct QuarterBridgeParams {
+  double excitation_v = 5.0;          // V_ex > 0
+  // GF > 0. Constantan foil gauges: about 2.0-2.1 (the gauge factor of Cu-Ni alloy foil;
+  // e.g. Vishay Micro-Measurements' "A" alloy gauges, Kyowa's KFGS series).
+  double gauge_factor = 2.0;
+  double nominal_ohm = 120.0;         // R > 0: the gauge and the completion resistors
+  // each arm within R (1 +- tolerance): 0.5 Ohm of 120, the paper's; in [0, 100) percent
+  double tolerance_pct = 100.0 * 0.5 / 120.0;
+  double amplifier_gain = 1.0;        // G > 0 (an instrumentation amplifier after the bridge)
+};
+
+// Throws InputError "<prefix><key> must be ..., got <value>" for a non-positive or
+// non-finite excitation_V, gauge_factor, nominal_Ohm or amplifier_gain, or a
+// tolerance_pct outside [0, 100).
+void validate_quarter_bridge(const QuarterBridgeParams& params, const std::string& prefix);
+
+// One built bridge: the gauge's unstrained resistance and the three completion resistors.
+struct BridgeResistors {
+  double r1_ohm = 120.0, r2_ohm = 120.0, r3_ohm = 120.0, gauge_ohm = 120.0;
+};
+// All four at the nominal value (an ideal bridge).
+BridgeResistors nominal_bridge(const QuarterBridgeParams& params);
+// Each arm uniform in R (1 +- tolerance), four draws from `rng` in the order r1, r2, r3, gauge.
+BridgeResistors draw_bridge(const QuarterBridgeParams& params, std::mt19937_64& rng);
+
+// The bridge's (amplified) output at the gauge's strain [V].
+double quarter_bridge_output_v(const QuarterBridgeParams& params, const BridgeResistors& arms,
+                               double strain);
+
+}  // namespace pamsim
