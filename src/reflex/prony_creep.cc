@@ -9,11 +9,12 @@
 
 namespace pamsim {
 
-void validate_prony(const std::vector<PronyTerm>& terms, const std::string& prefix) {
+void validate_prony(const std::vector<PronyTerm>& terms, const std::string& weights_key,
+                    const std::string& times_key) {
   for (std::size_t i = 0; i < terms.size(); ++i) {
-    const std::string key = prefix + "[" + std::to_string(i) + "].";
-    checks::require_non_negative(key + "weight", terms[i].weight);
-    checks::require_positive(key + "time_s", terms[i].time_s);
+    const std::string index = "[" + std::to_string(i) + "]";
+    checks::require_non_negative(weights_key + index, terms[i].weight);
+    checks::require_positive(times_key + index, terms[i].time_s);
   }
 }
 

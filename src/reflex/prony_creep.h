@@ -19,9 +19,11 @@ struct PronyTerm {
   double time_s = 0.0;   // tau_i > 0: its retardation time
 };
 
-// Throws InputError "<prefix>[i].weight|time_s must be ..., got <value>" for a negative or
-// non-finite weight or a non-positive or non-finite time.
-void validate_prony(const std::vector<PronyTerm>& terms, const std::string& prefix);
+// Throws InputError "<weights_key>[i] must be ..., got <value>" for a negative or non-finite
+// weight, "<times_key>[i] ..." for a non-positive or non-finite time (the two lists a file
+// gives them in).
+void validate_prony(const std::vector<PronyTerm>& terms, const std::string& weights_key,
+                    const std::string& times_key);
 
 class PronyCreep {
  public:

@@ -3,6 +3,8 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "reflex/checks.h"
 
@@ -39,6 +41,7 @@ void validate(const SensingConfig& config) {
     fail("sensors.noise_scale", "within [0, 1000]", s.noise_scale);
   }
   require_cutoff("reflex.lowpass_hz", config.velocity_lowpass_hz, config.control_hz);
+  validate(s.gauge_hardware);
 }
 
 void validate(const MuscleSensorSpec& muscle) {
@@ -61,12 +64,23 @@ SensorSuite::SensorSuite(const SensingConfig& config,
                          const std::vector<MuscleSensorSpec>& muscles, std::uint64_t seed)
     : rng_(seed), pressure_sensor_((validate(config), config.sensors)) {
   const double dt_s = 1.0 / config.control_hz;
+  const GaugeHardwareConfig& hardware = config.sensors.gauge_hardware;
+  // the built instruments: the same for every trial of a scenario, whatever its seed
+  std::mt19937_64 instruments(hardware.instrument_seed);
   channels_.reserve(muscles.size());
   for (const MuscleSensorSpec& muscle : muscles) {
     validate(muscle);
+    // the estimator's Eq. (8): the published constants, or this gauge's calibration
+    std::optional<GaugeHardware> gauge;
+    StrainGaugeParams calibrated = muscle.gauge;
+    if (hardware.enabled) {
+      gauge.emplace(hardware, muscle.gauge, instruments, dt_s);
+      calibrated = calibrate_gauge(*gauge, hardware, dt_s, muscle.key);
+    }
     channels_.push_back(Channel{
-        StrainGauge(muscle.gauge, config.sensors), FiberSensor(config.sensors, dt_s),
-        LengthEstimator(muscle.estimator, muscle.gauge, estimator_params(config), dt_s),
+        StrainGauge(muscle.gauge, config.sensors, std::move(gauge)),
+        FiberSensor(config.sensors, dt_s),
+        LengthEstimator(muscle.estimator, calibrated, estimator_params(config), dt_s),
         LowpassFilter(config.velocity_lowpass_hz, dt_s)});
   }
 }

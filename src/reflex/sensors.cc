@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <utility>
 
 #include "base/units.h"
 
@@ -64,16 +65,18 @@ PressureReading PressureSensor::sample(double p_true_pa, std::mt19937_64& rng) c
   return reading;
 }
 
-StrainGauge::StrainGauge(const StrainGaugeParams& gauge, const SensorConfig& config)
+StrainGauge::StrainGauge(const StrainGaugeParams& gauge, const SensorConfig& config,
+                         std::optional<GaugeHardware> hardware)
     : gauge_(gauge),
       noise_v_(config.noise_scale * config.gauge_noise_v),
-      adc_{config.gauge_adc_bits, config.gauge_adc_min_v, config.gauge_adc_max_v} {}
+      adc_{config.gauge_adc_bits, config.gauge_adc_min_v, config.gauge_adc_max_v},
+      hardware_(std::move(hardware)) {}
 
-double StrainGauge::sample(double f_true_n, std::mt19937_64& rng) const {
+double StrainGauge::sample(double f_true_n, std::mt19937_64& rng) {
   // the gauge sees tension only; a slack line reads V_base, Eq. (8)
   const double f = std::max(f_true_n, 0.0);
-  const double v = gauge_.q_v_per_n * f + gauge_.v_base_v + noise_v_ * standard_normal(rng);
-  return adc_read(adc_, v);
+  const double clean = hardware_ ? hardware_->voltage(f) : gauge_.q_v_per_n * f + gauge_.v_base_v;
+  return adc_read(adc_, clean + noise_v_ * standard_normal(rng));
 }
 
 FiberSensor::FiberSensor(const SensorConfig& config, double sample_period_s)

@@ -30,9 +30,11 @@
 // velocity noise is ~19 mm/s).
 #pragma once
 
+#include <optional>
 #include <random>
 
 #include "pam_actuator/pam_params.h"
+#include "reflex/gauge_hardware.h"
 
 namespace pamsim {
 
@@ -62,6 +64,9 @@ struct SensorConfig {
   // sensors.noise_scale, in [0, 1000]: multiplies the three noise standard deviations above
   // (not the bias), one knob for a sweep over sensor noise; 1 leaves them as given.
   double noise_scale = 1.0;
+  // sensors.gauge.* and sensors.instrument_seed: the gauge as hardware (gauge_hardware.h);
+  // off by default (Eq. (8) exact, the published q and V_base)
+  GaugeHardwareConfig gauge_hardware;
 };
 
 // An analog-to-digital converter: saturates at [v_min, v_max] and rounds to the nearest of
@@ -97,17 +102,20 @@ class PressureSensor {
   AdcParams adc_;
 };
 
-// Strain gauge on a quarter bridge, Eq. (8): V = q f + V_base, plus N(0, gauge_noise_v^2),
-// then the ADC. The gauge sees tension only: a slack line (f = 0) reads V_base (+ noise).
+// Strain gauge on a quarter bridge, Eq. (8): V = q f + V_base, or, given its hardware
+// (gauge_hardware.h), what that gauge reads; plus N(0, gauge_noise_v^2), then the ADC. The
+// gauge sees tension only: a slack line (f = 0) reads V_base (+ noise).
 class StrainGauge {
  public:
-  StrainGauge(const StrainGaugeParams& gauge, const SensorConfig& config);
-  double sample(double f_true_n, std::mt19937_64& rng) const;   // [V]
+  StrainGauge(const StrainGaugeParams& gauge, const SensorConfig& config,
+              std::optional<GaugeHardware> hardware = std::nullopt);
+  double sample(double f_true_n, std::mt19937_64& rng);   // [V]
 
  private:
   StrainGaugeParams gauge_;
   double noise_v_;
   AdcParams adc_;
+  std::optional<GaugeHardware> hardware_;
 };
 
 // Conductive-fiber sensor: measures the rate of change of length. Modelled as the true mean

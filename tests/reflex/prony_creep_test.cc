@@ -64,19 +64,18 @@ TEST(PronyCreepTest, AHeldLoadTendsToTheLongTermFactorAndNoTermsMeansNoCreep) {
 
 TEST(PronyCreepTest, EveryBadValueNamesItsKey) {
   struct Case { PronyTerm term; const char* key; };
-  for (const Case& c : {Case{{-0.01, 1.0}, "weight"}, Case{{std::nan(""), 1.0}, "weight"},
-                        Case{{0.1, 0.0}, "time_s"}, Case{{0.1, -5.0}, "time_s"},
-                        Case{{0.1, INFINITY}, "time_s"}}) {
+  for (const Case& c : {Case{{-0.01, 1.0}, "creep_weights"}, Case{{std::nan(""), 1.0}, "creep_weights"},
+                        Case{{0.1, 0.0}, "creep_times_s"}, Case{{0.1, -5.0}, "creep_times_s"},
+                        Case{{0.1, INFINITY}, "creep_times_s"}}) {
     try {
-      validate_prony({{0.1, 1.0}, c.term}, "gauge.board.creep");
+      validate_prony({{0.1, 1.0}, c.term}, "creep_weights", "creep_times_s");
       ADD_FAILURE() << "no throw for " << c.key;
     } catch (const InputError& e) {
       const std::string what = e.what();
-      EXPECT_EQ(what.rfind(std::string("gauge.board.creep[1].") + c.key + " must be ", 0), 0u)
-          << what;
+      EXPECT_EQ(what.rfind(std::string(c.key) + "[1] must be ", 0), 0u) << what;
     }
   }
-  EXPECT_NO_THROW(validate_prony(kTerms, "gauge.board.creep"));
+  EXPECT_NO_THROW(validate_prony(kTerms, "creep_weights", "creep_times_s"));
 }
 
 }  // namespace

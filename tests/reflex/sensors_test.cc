@@ -97,13 +97,13 @@ TEST(StrainGauge, Eq8AndSlackReadsVBase) {
   std::mt19937_64 rng(3);
   SensorConfig c = noise_free();
   c.gauge_adc_bits = 0;
-  const StrainGauge gauge(StrainGaugeParams{2.25e-3, 0.3}, c);
+  StrainGauge gauge(StrainGaugeParams{2.25e-3, 0.3}, c);
   EXPECT_NEAR(gauge.sample(32.5, rng), 2.25e-3 * 32.5 + 0.3, 1e-15);
   // slack line: zero tension; the gauge cannot see compression either
   EXPECT_DOUBLE_EQ(gauge.sample(0.0, rng), 0.3);
   EXPECT_DOUBLE_EQ(gauge.sample(-5.0, rng), 0.3);
   // with the default 16-bit ADC, V_base to within half a step
-  const StrainGauge quantised(StrainGaugeParams{2.25e-3, 0.3}, noise_free());
+  StrainGauge quantised(StrainGaugeParams{2.25e-3, 0.3}, noise_free());
   EXPECT_NEAR(quantised.sample(0.0, rng), 0.3, 0.5 * adc_step_v(AdcParams{16, -5.0, 5.0}));
 }
 
@@ -111,7 +111,7 @@ TEST(StrainGauge, SlackReadingIsVBasePlusNoise) {
   SensorConfig c;
   c.gauge_noise_v = 1e-3;
   c.gauge_adc_bits = 0;
-  const StrainGauge gauge(StrainGaugeParams{4.33e-3, 0.1}, c);
+  StrainGauge gauge(StrainGaugeParams{4.33e-3, 0.1}, c);
   std::mt19937_64 rng(5);
   const int n = 40000;
   double sum = 0.0;
@@ -186,7 +186,7 @@ TEST(Sensors, DeterministicPerSeed) {
   auto run = [&](std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     const PressureSensor p(c);
-    const StrainGauge g(StrainGaugeParams{2.25e-3, 0.0}, c);
+    StrainGauge g(StrainGaugeParams{2.25e-3, 0.0}, c);
     FiberSensor f(c, 0.01);
     std::vector<double> out;
     for (int i = 0; i < 100; ++i) {

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -155,6 +157,22 @@ TEST(ScenarioTest, EveryBadValueNamesItsKey) {
       {"sensors.gauge_adc_bits=40", "sensors.gauge_adc"},
       {"sensors.fiber_noise_mm_s=-2", "sensors.fiber_noise_mm_s"},
       {"sensors.noise_scale=-1", "sensors.noise_scale"},
+      // the gauge as hardware (issue 25): one key each
+      {"sensors.gauge.model=\"strain\"", "sensors.gauge.model must be \"linear\" or \"bridge\""},
+      {"sensors.gauge.tolerance_pct=101", "sensors.gauge.tolerance_pct must be"},
+      {"sensors.gauge.excitation_V=0", "sensors.gauge.excitation_V must be"},
+      {"sensors.gauge.gauge_factor=nan", "sensors.gauge.gauge_factor must be"},
+      {"sensors.gauge.nominal_Ohm=-120", "sensors.gauge.nominal_Ohm must be"},
+      {"sensors.gauge.board.youngs_modulus_MPa=0", "sensors.gauge.board.youngs_modulus_MPa"},
+      {"sensors.gauge.board.width_mm=-1", "sensors.gauge.board.width_mm must be"},
+      {"sensors.gauge.board.thickness_mm=0", "sensors.gauge.board.thickness_mm must be"},
+      {"sensors.gauge.board.gauge_position_mm=-1", "sensors.gauge.board.gauge_position_mm"},
+      {"sensors.gauge.board.contact_position_mm=5", "sensors.gauge.board.contact_position_mm"},
+      {"sensors.gauge.board.creep_weights=[-0.1]", "sensors.gauge.board.creep_times_s must list"},
+      {"sensors.gauge.calibration.max_N=0", "sensors.gauge.calibration.max_N must be"},
+      {"sensors.gauge.calibration.steps=0", "sensors.gauge.calibration.steps must be"},
+      {"sensors.gauge.calibration.hold_s=-2", "sensors.gauge.calibration.hold_s must be"},
+      {"sensors.instrument_seed=-1", "sensors.instrument_seed must be"},
       {"valve.dead_time_ms=-1", "valve.dead_time_ms"},
       // a time step that makes an uncountable or endless trial (issue 14)
       {"sim.timestep_s=1e-308", "sim.timestep_s of 1e-308 s makes"},
@@ -184,6 +202,37 @@ TEST(ScenarioTest, EveryBadValueNamesItsKey) {
     EXPECT_NE(message.find(c.key), std::string::npos) << c.assignment << " -> " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
   }
+}
+
+// The gauge's creep is two lists: a bad weight is named with its index.
+TEST(ScenarioTest, ABadGaugeCreepTermIsNamedWithItsIndex) {
+  const std::string message = error_of({"sensors.gauge.board.creep_weights=[0.02, -0.1]",
+                                        "sensors.gauge.board.creep_times_s=[1, 60]"});
+  EXPECT_NE(message.find("sensors.gauge.board.creep_weights[1] must be >= 0"), std::string::npos)
+      << message;
+}
+
+// The gauge as hardware reaches the trial: its calibrated Eq. (8) reads the force back, and
+// the same instrument seed builds the same gauges whatever the trial's seed.
+TEST(ScenarioTest, TheGaugeAsHardwareIsCalibratedAndReadsTheForce) {
+  const std::vector<std::string> bridge = {"sensors.gauge.model=\"bridge\"",
+                                           "sensors.gauge_noise_V=0", "sim.duration_s=1.5"};
+  const Scenario sc = load_scenario(kScenario, bridge);
+  EXPECT_TRUE(sc.sensing.sensors.gauge_hardware.enabled);
+  const TrialModel arm = load_trial_model(sc);
+  const TrialResult a = run_trial(arm, sc, 1);
+  ASSERT_EQ(a.summary.status, "ok") << a.summary.message;
+  const Trajectory& tr = a.trajectory;
+  const std::size_t force = tr.column("force_ago_N"), meas = tr.column("force_meas_ago_N");
+  double worst = 0.0;
+  for (std::size_t row = 0; row < tr.rows(); ++row) {
+    worst = std::max(worst, std::fabs(tr.at(row, meas) - tr.at(row, force)));
+  }
+  // the ADC (16 bit over 10 V: 0.07 N) and the bridge's bend beyond the calibrated line
+  EXPECT_LT(worst, 1.0);
+  EXPECT_GT(worst, 0.0);
+  const TrialResult b = run_trial(arm, sc, 1);
+  EXPECT_EQ(b.trajectory.at(tr.rows() - 1, meas), tr.at(tr.rows() - 1, meas));
 }
 
 TEST(ScenarioTest, UnknownKeyInTheFileIsRefusedByName) {

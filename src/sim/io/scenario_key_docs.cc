@@ -118,6 +118,28 @@ std::vector<KeyDoc> sensor_docs() {
   };
 }
 
+// the gauge as hardware (reflex/gauge_hardware.h)
+std::vector<KeyDoc> gauge_hardware_docs() {
+  return {
+      {"sensors.gauge.model", "", "\"linear\"", "\"linear\" | \"bridge\"", "Eq. (8) as exact, or the gauge as board, bridge and calibration"},
+      {"sensors.gauge.excitation_V", "V", "5.0", "> 0", "the bridge's excitation"},
+      {"sensors.gauge.gauge_factor", "", "2.0", "> 0", "the foil gauge's gauge factor"},
+      {"sensors.gauge.nominal_Ohm", "Ohm", "120.0", "> 0", "the gauge's and the completion resistors' resistance"},
+      {"sensors.gauge.tolerance_pct", "%", "0.4166666666666667", "[0, 100)", "each bridge arm within nominal +- this (paper: 0.5 Ohm of 120)"},
+      {"sensors.gauge.board.youngs_modulus_MPa", "MPa", "3300.0", "> 0", "the acrylic board's modulus"},
+      {"sensors.gauge.board.width_mm", "mm", "20.0", "> 0", "the board's width (ASSUMPTION: not published)"},
+      {"sensors.gauge.board.thickness_mm", "mm", "5.0", "> 0", "the board's thickness (ASSUMPTION)"},
+      {"sensors.gauge.board.gauge_position_mm", "mm", "10.0", ">= 0", "the gauge's distance from the clamp (ASSUMPTION)"},
+      {"sensors.gauge.board.contact_position_mm", "mm", "40.0", "> gauge_position_mm", "where the line bears on the board (ASSUMPTION)"},
+      {"sensors.gauge.board.creep_weights", "", "(none)", "each >= 0", "the board's Prony creep weights"},
+      {"sensors.gauge.board.creep_times_s", "s", "(none)", "each > 0, one per weight", "the board's Prony retardation times"},
+      {"sensors.gauge.calibration.max_N", "N", "50.0", "> 0", "the static calibration's largest load"},
+      {"sensors.gauge.calibration.steps", "", "10", "[1, 1000]", "its load steps up (and as many down)"},
+      {"sensors.gauge.calibration.hold_s", "s", "2.0", "[0, 3600]", "how long each load is held before it is read"},
+      {"sensors.instrument_seed", "", "1", ">= 0", "which built instruments (bridge arms): fixed across trials"},
+  };
+}
+
 // controller.kind and each kind's keys (reflex/controller_kind.h, in the kind's own file)
 std::vector<KeyDoc> controller_docs() {
   std::string kinds;
@@ -137,7 +159,7 @@ std::vector<KeyDoc> controller_docs() {
 std::vector<KeyDoc> all_docs() {
   std::vector<KeyDoc> docs;
   for (const std::vector<KeyDoc>& part : {model_docs(), event_docs(), controller_docs(),
-                                          sensor_docs()}) {
+                                          sensor_docs(), gauge_hardware_docs()}) {
     docs.insert(docs.end(), part.begin(), part.end());
   }
   return docs;

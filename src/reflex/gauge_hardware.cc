@@ -1,0 +1,86 @@
+// gauge_hardware.cc: see gauge_hardware.h.
+#include "reflex/gauge_hardware.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Dense>
+
+#include "base/format.h"
+#include "base/input_error.h"
+#include "reflex/checks.h"
+
+namespace pamsim {
+namespace {
+
+// The bridge's output per newton of a nominal gauge at small strain: V_ex GF / 4 per unit
+// strain (quarter_bridge.h) times the board's strain per newton (gauge_board.h).
+double nominal_volts_per_newton(const GaugeHardwareConfig& c) {
+  const GaugeBoardParams& b = c.board;
+  const double strain_per_n = gauge_board_strain(b, 1.0, b.contact_position_m);
+  return c.bridge.excitation_v * c.bridge.gauge_factor / 4.0 * strain_per_n;
+}
+
+}  // namespace
+
+void validate(const GaugeHardwareConfig& c) {
+  QuarterBridgeParams bridge = c.bridge;
+  bridge.amplifier_gain = 1.0;   // derived, not a key
+  validate_quarter_bridge(bridge, "sensors.gauge.");
+  validate_gauge_board(c.board, "sensors.gauge.board.");
+  validate_prony(c.creep, "sensors.gauge.board.creep_weights",
+                 "sensors.gauge.board.creep_times_s");
+  checks::require_positive("sensors.gauge.calibration.max_N", c.calibration_max_n);
+  if (!(c.calibration_steps >= 1 && c.calibration_steps <= 1000)) {
+    checks::fail("sensors.gauge.calibration.steps", "within [1, 1000]", c.calibration_steps);
+  }
+  if (!(c.calibration_hold_s >= 0.0 && c.calibration_hold_s <= 3600.0)) {
+    checks::fail("sensors.gauge.calibration.hold_s", "within [0, 3600] s",
+                 c.calibration_hold_s);
+  }
+}
+
+GaugeHardware::GaugeHardware(const GaugeHardwareConfig& config, const StrainGaugeParams& nominal,
+                             std::mt19937_64& instrument_rng, double sample_period_s)
+    : config_(config),
+      arms_(draw_bridge(config.bridge, instrument_rng)),
+      gain_(nominal.q_v_per_n / nominal_volts_per_newton(config)),
+      offset_v_(nominal.v_base_v),
+      creep_(config.creep, sample_period_s) {
+  config_.bridge.amplifier_gain = gain_;
+}
+
+double GaugeHardware::voltage(double f_n) {
+  const double elastic = gauge_board_strain(config_.board, f_n, config_.board.contact_position_m);
+  const double strain = creep_.step(elastic);
+  return quarter_bridge_output_v(config_.bridge, arms_, strain) + offset_v_;
+}
+
+StrainGaugeParams calibrate_gauge(GaugeHardware gauge, const GaugeHardwareConfig& config,
+                                  double sample_period_s, const std::string& key) {
+  // the staircase: 0, 1, ..., steps, steps - 1, ..., 0 load steps, each held, then read
+  const int n = config.calibration_steps;
+  const int ticks = std::max(1, static_cast<int>(std::lround(config.calibration_hold_s /
+                                                             sample_period_s)));
+  Eigen::MatrixXd a(2 * n + 1, 2);
+  Eigen::VectorXd v(2 * n + 1);
+  for (int row = 0; row <= 2 * n; ++row) {
+    const double load = config.calibration_max_n * (row <= n ? row : 2 * n - row) / n;
+    double reading = 0.0;
+    for (int k = 0; k < ticks; ++k) reading = gauge.voltage(load);
+    a(row, 0) = load;
+    a(row, 1) = 1.0;
+    v[row] = reading;
+  }
+  const Eigen::Vector2d fit = a.colPivHouseholderQr().solve(v);
+  if (!(fit[0] > 0.0)) {
+    throw InputError(key + ": the calibration found no positive slope q (got " +
+                     format_value(fit[0]) + " V/N)");
+  }
+  StrainGaugeParams calibrated;
+  calibrated.q_v_per_n = fit[0];
+  calibrated.v_base_v = fit[1];
+  return calibrated;
+}
+
+}  // namespace pamsim
