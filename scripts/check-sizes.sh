@@ -28,7 +28,7 @@ if [ ${#files[@]} -eq 0 ]; then
 fi
 
 # files: "lines<TAB>path", longest first
-file_lines="$(for f in "${files[@]}"; do printf '%s\t%s\n' "$(wc -l <"$f")" "$f"; done |
+file_lines="$(for f in "${files[@]}"; do printf '%s\t%s\n' "$(awk 'END { print NR }' "$f")" "$f"; done |
   sort -t$'\t' -k1,1nr)"
 
 # functions: "lines<TAB>file(line): name", longest first. pmccabe parses C, not C++17: it

@@ -2,8 +2,9 @@
 # Runs the shipped scenarios' commands with two pamsim binaries and compares what they write,
 # file by file, byte for byte: the check that a refactoring changed no output. Left out of the
 # comparison, because they differ from run to run by design: provenance.json (start time, wall
-# time, git commit) and, in databases, the timing metrics and meta; a database is compared as
-# `pamsim export` prints it (timing columns aside). PNG, SVG and PDF plots are compared too
+# time, git commit) and the databases themselves (their timing metrics and meta): a sweep
+# database is compared as `pamsim export` prints it (timing columns aside), a tuning database
+# through its evaluations.csv and best.toml. PNG, SVG and PDF plots are compared too
 # (gnuplot writes the same bytes for the same data); MP4 frames through a decode would need
 # FFmpeg's tools, so the video is compared as its bytes (libx264 is deterministic here).
 #
@@ -14,7 +15,7 @@
 set -euo pipefail
 old=$(realpath "$1")
 new=$(realpath "$2")
-work=${3:-$(mktemp -d)}
+work=$(realpath -m "${3:-$(mktemp -d)}")
 cd "$(dirname "$0")/.."
 root=$(pwd)
 
@@ -46,6 +47,8 @@ run_all() {
     > "$out/tune.stdout" 2> /dev/null
 }
 
+# a reused folder's earlier outputs would hide a file the new binary no longer writes
+rm -rf "$work/old" "$work/new"
 mkdir -p "$work"
 run_all "$old" "$work/old"
 run_all "$new" "$work/new"
@@ -58,6 +61,11 @@ while IFS= read -r -d '' f; do
     */provenance.json|*.db|*.db-wal|*.db-shm|*/tune.db*) continue ;;
   esac
   # the two runs' folders appear in messages and headers: compared as one name
+  if [ ! -e "$work/new/$rel" ]; then
+    differ=$((differ + 1))
+    echo "only old: $rel"
+    continue
+  fi
   if cmp -s <(sed "s#$work/old#WORK#g" "$f") <(sed "s#$work/new#WORK#g" "$work/new/$rel"); then
     same=$((same + 1))
   else

@@ -316,8 +316,10 @@ std::string TableEntry::text(const char* key, bool required, const std::string& 
 std::optional<double> TableEntry::number(const char* key) const {
   const toml::node* n = table.get(key);
   if (!n) return std::nullopt;
-  if (!(n->is_integer() || n->is_floating_point())) in.fail(where + key, "must be a number");
-  const double v = *n->value<double>();
+  // an integer beyond 2^53 has no exact double: toml++ gives none
+  const std::optional<double> value = n->value<double>();
+  if (!value) in.fail(where + key, "must be a number");
+  const double v = *value;
   in.check(std::isfinite(v), where + key, "must be finite, got " + format_value(v));
   return v;
 }

@@ -230,6 +230,8 @@ TEST(TuneTest, BadTuningFilesAreOneLineAndLeaveNoDatabase) {
            {"population = 6", "population = 3", "population"},
            {"algorithm = \"cmaes\"", "algorithm = \"annealing\"", "algorithm"},
            {"to = 0.03", "to = 0.03\nscale = \"log\"", "parameter[0].from"},
+           // an integer with no exact double (beyond 2^53): refused, not read through
+           {"from = -0.05", "from = 9007199254740993", "parameter[0].from must be a number"},
            {"max = 100.0", "min = 5.0\nmax = 1.0", "constraint[0].min"},
            {"noise_scales = [0.0]", "noise_scales = [0.0, 0.0]", "noise_scales"},
            {"values = [0.0]", "values = [0.0, 1.0]", "reference[0].values"},

@@ -38,7 +38,8 @@ namespace {
   X(MakeCurrent, PFNEGLMAKECURRENTPROC) X(GetCurrentContext, PFNEGLGETCURRENTCONTEXTPROC)     \
   X(DestroyContext, PFNEGLDESTROYCONTEXTPROC) X(GetError, PFNEGLGETERRORPROC)
 
-// The EGL entry points, from libEGL loaded once with RTLD_GLOBAL (see the top of this file).
+// The EGL entry points, from libEGL loaded once, privately (RTLD_LOCAL) until a context exists
+// (see the top of this file).
 struct EglApi {
 #define PAMSIM_EGL_DECLARE(name, type) type name = nullptr;
   PAMSIM_EGL_CORE_FUNCTIONS(PAMSIM_EGL_DECLARE)

@@ -96,9 +96,8 @@ TensileTestOptions read_tensile(ConfigReader& in, LengthValidationSpec* spec) {
   const std::int64_t seed = in.get_int("tensile.seed", 1);
   in.check(seed >= 0, "tensile.seed", "must be >= 0");
   base.seed = static_cast<std::uint64_t>(seed);
-  spec->gauge_file = in.get_path("tensile.sensors_from", "");
-  in.check(!spec->gauge_file.empty(), "tensile.sensors_from",
-           "is required (the strain gauge of the rig's force reading, Eq. (8))");
+  spec->gauge_file = in.require_path("tensile.sensors_from",
+                                     "the strain gauge of the rig's force reading, Eq. (8)");
   try {
     const PamParams sensors = load_pam_params(spec->gauge_file);
     in.check(sensors.strain_gauge.has_value(), "tensile.sensors_from",
