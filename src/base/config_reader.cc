@@ -317,7 +317,8 @@ std::optional<double> TableEntry::number(const char* key) const {
   const toml::node* n = table.get(key);
   if (!n) return std::nullopt;
   // an integer beyond 2^53 has no exact double: toml++ gives none
-  const std::optional<double> value = n->value<double>();
+  const bool numeric = n->is_integer() || n->is_floating_point();
+  const std::optional<double> value = numeric ? n->value<double>() : std::nullopt;
   if (!value) in.fail(where + key, "must be a number");
   const double v = *value;
   in.check(std::isfinite(v), where + key, "must be finite, got " + format_value(v));

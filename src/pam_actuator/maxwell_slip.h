@@ -1,7 +1,7 @@
-// maxwell_slip.h: rate-independent hysteresis with memory, as a generalized Maxwell-slip
-// model (Lampaert, Al-Bender & Swevers, "A generalized Maxwell-slip friction model
-// appropriate for control purposes", IEEE PhysCon 2003; used for the braid friction of PAMs
-// by Vo-Minh et al., "A hysteresis model for a pneumatic artificial muscle", 2011): N
+// maxwell_slip.h: rate-independent hysteresis with memory, as the Maxwell-slip model (Iwan's
+// parallel spring-slider elements; Lampaert, Al-Bender & Swevers, IEEE PhysCon 2003, give its
+// rate-dependent generalization, not modelled here; used for the hysteresis of PAMs by
+// Vo-Minh et al., IEEE/ASME Trans. Mechatronics 16(1), 2011): N
 // elements, each a linear spring k_i in series with a Coulomb block that slips once its
 // spring holds more than F_i. The model sticks (a small reversal is elastic, no energy
 // lost), slips beyond the band, and remembers where in the loop it rests: what the smooth

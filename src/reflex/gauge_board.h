@@ -6,7 +6,8 @@
 // bending gives the surface strain under the gauge
 //   eps = M c / (E I) = 6 F (x_c - x_g) / (E w t^2),
 // so the reading follows the force times the lever x_c - x_g: a contact point that shifts
-// by dx changes the reading as a force change of F dx / (x_c - x_g) would (issue 25, item 3).
+// by dx changes the reading as a force change of F dx / (x_c - x_g) would (issue 25, item 3;
+// the gauge hardware holds the contact fixed for now: its movement is not modelled yet).
 #pragma once
 
 #include <string>

@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <Eigen/Dense>
 
 #include "base/format.h"
 #include "base/input_error.h"
+#include "base/units.h"
 #include "reflex/checks.h"
 
 namespace pamsim {
@@ -38,6 +40,23 @@ void validate(const GaugeHardwareConfig& c) {
     checks::fail("sensors.gauge.calibration.hold_s", "within [0, 3600] s",
                  c.calibration_hold_s);
   }
+  // PMMA breaks at a few percent of strain: a board bent further is no gauge
+  const double strain = gauge_board_strain(c.board, c.calibration_max_n, c.board.contact_position_m);
+  if (!(strain <= kMaxBoardStrain)) {
+    checks::fail("sensors.gauge.board.thickness_mm",
+                 "thick enough that calibration.max_N strains the board at most 3 %",
+                 units::m_to_mm(c.board.thickness_m));
+  }
+}
+
+void validate_calibration_length(const GaugeHardwareConfig& c, double control_hz) {
+  const double ticks = (2.0 * c.calibration_steps + 1.0) *
+                       std::max(1.0, std::round(c.calibration_hold_s * control_hz));
+  if (!(ticks <= kMaxCalibrationTicks)) {
+    checks::fail("sensors.gauge.calibration.hold_s",
+                 "short enough that the calibration takes at most 1e7 control ticks",
+                 c.calibration_hold_s);
+  }
 }
 
 GaugeHardware::GaugeHardware(const GaugeHardwareConfig& config, const StrainGaugeParams& nominal,
@@ -60,14 +79,14 @@ StrainGaugeParams calibrate_gauge(GaugeHardware gauge, const GaugeHardwareConfig
                                   double sample_period_s, const std::string& key) {
   // the staircase: 0, 1, ..., steps, steps - 1, ..., 0 load steps, each held, then read
   const int n = config.calibration_steps;
-  const int ticks = std::max(1, static_cast<int>(std::lround(config.calibration_hold_s /
-                                                             sample_period_s)));
+  const std::int64_t ticks = std::max<std::int64_t>(
+      1, std::llround(config.calibration_hold_s / sample_period_s));
   Eigen::MatrixXd a(2 * n + 1, 2);
   Eigen::VectorXd v(2 * n + 1);
   for (int row = 0; row <= 2 * n; ++row) {
     const double load = config.calibration_max_n * (row <= n ? row : 2 * n - row) / n;
     double reading = 0.0;
-    for (int k = 0; k < ticks; ++k) reading = gauge.voltage(load);
+    for (std::int64_t k = 0; k < ticks; ++k) reading = gauge.voltage(load);
     a(row, 0) = load;
     a(row, 1) = 1.0;
     v[row] = reading;

@@ -45,8 +45,13 @@ struct GaugeHardwareConfig {
   double calibration_hold_s = 2.0;
 };
 
-// Throws InputError "<key> must be ..., got <value>" naming the sensors.gauge.* key.
+// Throws InputError "<key> must be ..., got <value>" naming the sensors.gauge.* key
+// (including a board so thin that calibration.max_N would strain it beyond 3 %).
 void validate(const GaugeHardwareConfig& config);
+// The calibration's length at the control rate: at most 1e7 ticks (hold_s named).
+void validate_calibration_length(const GaugeHardwareConfig& config, double control_hz);
+inline constexpr double kMaxBoardStrain = 0.03;
+inline constexpr double kMaxCalibrationTicks = 1e7;
 
 class GaugeHardware {
  public:
@@ -68,7 +73,8 @@ class GaugeHardware {
   PronyCreep creep_;
 };
 
-// The lab's static calibration of `gauge` (a fresh copy: its creep starts unloaded), Eq. (8)
+// The lab's static calibration of `gauge` (pass one not yet sampled: its creep must start
+// unloaded; a pre-tensioned start is not modelled yet), Eq. (8)
 // fitted by least squares to the readings at the end of each hold. Throws InputError
 // "<key>: the calibration found no positive slope" should the fit fail.
 StrainGaugeParams calibrate_gauge(GaugeHardware gauge, const GaugeHardwareConfig& config,

@@ -5,8 +5,8 @@
 // response x(t) = J0 sigma(t), the element states obey dq_i/dt = (x - q_i) / tau_i and the
 // output is x + sum g_i q_i. With x held over each step (the control tick), the update
 // q_i <- x + (q_i - x) exp(-dt / tau_i) is exact, so a load step gives the closed form at
-// every tick. Used for the PMMA board under the gauge and the fishing line (issue 25, item 3);
-// the weights and times are each material's, cited where they are given.
+// every tick. Used for the PMMA board under the gauge (the fishing line's creep is not wired
+// yet; issue 25, item 3); the weights and times are each material's, cited where given.
 #pragma once
 
 #include <string>

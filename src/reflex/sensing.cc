@@ -42,6 +42,7 @@ void validate(const SensingConfig& config) {
   }
   require_cutoff("reflex.lowpass_hz", config.velocity_lowpass_hz, config.control_hz);
   validate(s.gauge_hardware);
+  validate_calibration_length(s.gauge_hardware, config.control_hz);
 }
 
 void validate(const MuscleSensorSpec& muscle) {

@@ -104,7 +104,8 @@ class PressureSensor {
 
 // Strain gauge on a quarter bridge, Eq. (8): V = q f + V_base, or, given its hardware
 // (gauge_hardware.h), what that gauge reads; plus N(0, gauge_noise_v^2), then the ADC. The
-// gauge sees tension only: a slack line (f = 0) reads V_base (+ noise).
+// gauge sees tension only: a slack line (f = 0) reads V_base (+ noise), or with the hardware
+// the gauge's own zero (its bridge offset, near the calibrated V_base).
 class StrainGauge {
  public:
   StrainGauge(const StrainGaugeParams& gauge, const SensorConfig& config,

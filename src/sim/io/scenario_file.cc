@@ -112,10 +112,8 @@ double get_mm(ConfigReader& in, const std::string& key, double fallback_m) {
 
 // sensors.gauge.* and sensors.instrument_seed: the gauge as hardware (reflex/gauge_hardware.h)
 void read_gauge_hardware(ConfigReader& in, GaugeHardwareConfig* g) {
-  g->enabled = in_file(in, [&] {
-    return parse_name(kGaugeModels, in.get_string("sensors.gauge.model", "linear"),
-                      "sensors.gauge.model");
-  });
+  const std::string model = in.get_string("sensors.gauge.model", "linear");
+  g->enabled = parse_name(kGaugeModels, model, in.where("sensors.gauge.model"));
   const std::string b = "sensors.gauge.";
   g->bridge.excitation_v = in.get_double(b + "excitation_V", g->bridge.excitation_v);
   g->bridge.gauge_factor = in.get_double(b + "gauge_factor", g->bridge.gauge_factor);

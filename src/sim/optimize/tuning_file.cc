@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "base/config_reader.h"
@@ -27,7 +28,7 @@ std::vector<std::string> base_metric_names(const Scenario& sc) {
   return metric_names(sc, labels, model.joint.hinge);
 }
 
-// An integer key within [lo, hi] (`what` says why, e.g. " for cmaes").
+// An integer key within [lo, hi] (`range_text` is the "[lo, hi]" the message shows).
 std::int64_t bounded_int(ConfigReader& in, const std::string& key, std::int64_t fallback,
                          std::int64_t lo, std::int64_t hi, const std::string& range_text) {
   const std::int64_t v = in.get_int(key, fallback);
@@ -135,8 +136,11 @@ void read_references(ConfigReader& in, TuneDefinition* def) {
                                       " numbers, one per [[parameter]]");
     }
     for (const toml::node& n : *values) {
-      if (!(n.is_integer() || n.is_floating_point())) in.fail(e.where + "values", "must be numbers");
-      const double v = *n.value<double>();
+      // (an integer beyond 2^53 has no exact double: toml++ gives none)
+      const bool numeric = n.is_integer() || n.is_floating_point();
+      const std::optional<double> value = numeric ? n.value<double>() : std::nullopt;
+      if (!value) in.fail(e.where + "values", "must be numbers");
+      const double v = *value;
       in.check(std::isfinite(v), e.where + "values", "must be finite, got " + format_value(v));
       r.values.push_back(v);
     }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <set>
 
 #include "base/config_reader.h"
@@ -53,8 +54,11 @@ AxisValue axis_value(const toml::node& n, const Where& where, const std::string&
 
 double number_of(const toml::table& t, const char* key, const Where& where) {
   const toml::node* n = t.get(key);
-  if (!n || !(n->is_integer() || n->is_floating_point())) where.fail(key, "must be a number");
-  const double v = *n->value<double>();
+  // (an integer beyond 2^53 has no exact double: toml++ gives none)
+  const bool numeric = n && (n->is_integer() || n->is_floating_point());
+  const std::optional<double> value = numeric ? n->value<double>() : std::nullopt;
+  if (!value) where.fail(key, "must be a number");
+  const double v = *value;
   where.check(std::isfinite(v), key, "must be finite, got " + format_value(v));
   return v;
 }
