@@ -6,12 +6,12 @@
 #include <limits>
 
 #include "base/input_error.h"
+#include "base/no_value.h"
 #include "base/units.h"
 
 namespace pamsim {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kRecoveryBandDeg = 2.0;
 

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "base/input_error.h"
+#include "base/no_value.h"
 #include "base/units.h"
 #include "reflex/pass_through_controller.h"
 #include "sim/core/pam_callback.h"
@@ -16,9 +17,6 @@
 
 namespace pamsim {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 
 std::vector<BraidGeometry> braids_of(const TrialModel& tm) {
   std::vector<BraidGeometry> braid;

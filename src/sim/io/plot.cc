@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "base/input_error.h"
+#include "base/no_value.h"
 #include "sim/io/figure_text.h"
 #include "sim/io/gnuplot.h"
 
@@ -20,8 +21,6 @@ namespace pamsim {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // the band plots' runs, in order, then repeating
 constexpr const char* kBandColours[] = {"#2166ac", "#c0392b", "#1b9e77", "#7570b3",

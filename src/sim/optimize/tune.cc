@@ -8,6 +8,7 @@
 
 #include "base/format.h"
 #include "base/input_error.h"
+#include "base/no_value.h"
 #include "sim/core/runner.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
@@ -16,7 +17,6 @@
 namespace pamsim {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::uint64_t kHeldOutSeedOffset = 1000;
 
 struct TrialOutcome {

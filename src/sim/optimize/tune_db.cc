@@ -10,13 +10,13 @@
 #include <utility>
 
 #include "base/input_error.h"
+#include "base/no_value.h"
 #include "sim/io/build_info.h"
 #include "sim/io/provenance.h"
 
 namespace pamsim {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 const char* const kWhat = "tuning database";
 
 // The evaluations table's columns after its key: the unit point, the values, each

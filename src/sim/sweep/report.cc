@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/input_error.h"
+#include "base/no_value.h"
 #include "base/config_reader.h"
 #include "sim/io/outputs.h"
 #include "sim/core/metrics.h"
@@ -24,7 +25,6 @@ namespace pamsim {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* kMistripRate = "mistrip_rate";
 
 // A TOML value as a person reads it: a string without its quotes ('x' or "x"), anything

@@ -11,13 +11,12 @@
 #include <nlohmann/json.hpp>
 
 #include "base/input_error.h"
+#include "base/no_value.h"
 #include "sim/core/metrics.h"
 #include "sim/sweep/sweep.h"
 
 namespace pamsim {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A database cell as a TOML value (numbers exact, as the sweep wrote them).
 std::string toml_value(const DbValue& v) {

@@ -11,6 +11,7 @@
 #include "base/atomic_file.h"
 #include "base/format.h"
 #include "base/input_error.h"
+#include "base/no_value.h"
 #include "sim/core/runner.h"
 #include "sim/core/trial_model.h"
 #include "base/config_reader.h"
@@ -23,7 +24,6 @@ namespace pamsim {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 const char* const kMethods[] = {"model", "fiber"};
 const char* const kParts[] = {"all", "before_slack", "after_slack"};
