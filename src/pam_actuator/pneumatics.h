@@ -7,7 +7,13 @@
 // velocity at t; inside the step l is extrapolated linearly), then advance(t + dt). A
 // controller tick calls set_command(); the command is held until changed. With the
 // "regulator" valve model a command reaches the valve only after the regulator's dead time:
-// advance() splits its interval at the moments delayed commands take effect.
+// advance() splits its interval at the moments delayed commands take effect. With its
+// feedback "delayed" the loop's sensed pressure (the chamber's, or with sense "outlet" the
+// regulator outlet's) goes through the same dead time: a sampled-data delay line
+// (sampled_delay_line.h, which says why this formulation) samples it every
+// [regulator] sample period and each sample acts one dead time later; advance() splits
+// its interval at every sample and action too, and treats an action as a command change
+// (solver.on_command_change: the valve's target jumps there).
 //
 // Integration strategy (measured with bench/pneumatics_bench.cc, 2 muscles, 3 Hz motion,
 // a new command every 10 ms; accuracy against a rtol 1e-9 reference in pneumatics_test.cc):
@@ -35,6 +41,7 @@
 #include "pam_actuator/chou_hannaford.h"
 #include "pam_actuator/cvode_integrator.h"
 #include "pam_actuator/pneumatic_params.h"
+#include "pam_actuator/sampled_delay_line.h"
 
 namespace pamsim {
 
@@ -71,6 +78,8 @@ class PneumaticSystem {
                                                    // (first_order, regulator: the command
                                                    // as issued, before any dead time)
   double command_pa(int muscle) const;             // gauge, after clamping
+  // gauge; the regulator's outlet port (sense = "outlet"), else the chamber's pressure
+  double outlet_pressure_pa(int muscle) const;
 
   // solver statistics for the benchmark note (cumulative)
   long steps() const;
@@ -82,6 +91,11 @@ class PneumaticSystem {
   std::vector<double> current_state() const;
   void integrate_to(double t_s);               // restarting first if a command changed
   void apply_command(int muscle, double p_cmd_abs_pa);
+  // the next delayed command, loop sample or loop action (+inf if none)
+  double next_event_s() const;
+  // applies the delayed commands due by t_s, then takes the loop's samples and its
+  // actions due by then
+  void handle_events_due(double t_s);
 
   // a command on its way to the valve (the regulator's dead time)
   struct DelayedCommand {
@@ -91,6 +105,8 @@ class PneumaticSystem {
   };
   std::deque<DelayedCommand> delayed_;
   double dead_time_s_ = 0.0;
+  // the loop's sensed pressures on their way (feedback = "delayed"); empty otherwise
+  std::unique_ptr<SampledDelayLine> feedback_;
 
   PneumaticParams params_;
   std::unique_ptr<PneumaticOde> ode_;
