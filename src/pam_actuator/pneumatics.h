@@ -31,6 +31,11 @@
 //   = "reinit"): ~1.5 steps, ~2.3 rhs evals, ~2.2 us per physics step, max pressure error
 //   ~170 Pa. "warm" costs ~1.3 us (1.0 step) but reaches ~600 Pa error; rtol 1e-5 ~3.7 us
 //   and ~80 Pa. The budget (1-1.5 us) is met only by "warm" at rtol 1e-4.
+// - The regulator loop (BM_RegulatorLoopStep, CPU time on 2 shared cores, reinit): the model
+//   as it was (feedback "instant", sense "chamber") ~1.8 us; sense "outlet" ~4.2 us (a third
+//   state, and the tube's laminar region is stiff); feedback "delayed" ~11.6 us and with
+//   the outlet ~13.1 us: every action of a 1 ms sample is a jump in the valve's target,
+//   so CVODE restarts there and takes ~6 steps per physics step ("warm": ~8 smaller ones).
 #pragma once
 
 #include <deque>
