@@ -58,14 +58,30 @@ PneumaticOde::PneumaticOde(const PneumaticParams& params, ValveModel model,
   }
   input_.resize(braid_.size());
   plant_.resize(braid_.size());
-  for (Input& in : input_) in.p_cmd_abs = params_.atmospheric_pa;
-  flow_coefficient_ = params_.sonic_conductance_m3_per_s_pa * kIso6358ReferenceDensityKgM3 *
-                      std::sqrt(kIso6358ReferenceTemperatureK / params_.temperature_k);
+  for (Input& in : input_) in.p_cmd_abs = in.p_sensed_abs = params_.atmospheric_pa;
+  // ISO 6358-1: qm = C rho0 p_up sqrt(T0/T) psi(r); each restriction's C rho0 sqrt(T0/T)
+  const auto coefficient = [this](double c) {
+    return c * kIso6358ReferenceDensityKgM3 *
+           std::sqrt(kIso6358ReferenceTemperatureK / params_.temperature_k);
+  };
+  path_ = {coefficient(params_.sonic_conductance_m3_per_s_pa), params_.critical_pressure_ratio};
+  supply_ = {coefficient(regulator_supply_conductance(params_)),
+             regulator_supply_critical_ratio(params_)};
+  exhaust_ = {coefficient(regulator_exhaust_conductance(params_)),
+              regulator_exhaust_critical_ratio(params_)};
+  tube_ = {coefficient(params_.tube_conductance_m3_per_s_pa), params_.tube_critical_ratio};
   n_r_t_ = params_.polytropic_index * params_.gas_constant_j_per_kg_k * params_.temperature_k;
 }
 
+int PneumaticOde::states_per_muscle() const {
+  if (model_ == ValveModel::kFirstOrder) return 1;
+  const bool outlet = model_ == ValveModel::kRegulator &&
+                      params_.regulator_sense == RegulatorSense::kOutlet;
+  return outlet ? 3 : 2;
+}
+
 int PneumaticOde::chamber_index(int muscle) const {
-  return model_ == ValveModel::kFirstOrder ? muscle : 2 * muscle + 1;
+  return model_ == ValveModel::kFirstOrder ? muscle : states_per_muscle() * muscle + 1;
 }
 
 int PneumaticOde::regulator_index(int muscle) const {
@@ -73,15 +89,25 @@ int PneumaticOde::regulator_index(int muscle) const {
 }
 
 int PneumaticOde::valve_opening_index(int muscle) const {
-  return model_ == ValveModel::kRegulator ? 2 * muscle : -1;
+  return model_ == ValveModel::kRegulator ? states_per_muscle() * muscle : -1;
 }
 
-double PneumaticOde::restriction_flow(double opening, double p_a, double p_b) const {
-  const double b = params_.critical_pressure_ratio, r_lam = params_.laminar_ratio;
+int PneumaticOde::outlet_index(int muscle) const {
+  return states_per_muscle() == 3 ? 3 * muscle + 2 : -1;
+}
+
+int PneumaticOde::sensed_index(int muscle) const {
+  const int k = outlet_index(muscle);
+  return k >= 0 ? k : chamber_index(muscle);
+}
+
+double PneumaticOde::restriction_flow(const Restriction& r, double opening, double p_a,
+                                      double p_b) const {
+  const double r_lam = params_.laminar_ratio;
   if (p_a >= p_b) {
-    return opening * flow_coefficient_ * p_a * iso6358_flow_function(p_b / p_a, b, r_lam);
+    return opening * r.coefficient * p_a * iso6358_flow_function(p_b / p_a, r.b, r_lam);
   }
-  return -opening * flow_coefficient_ * p_b * iso6358_flow_function(p_a / p_b, b, r_lam);
+  return -opening * r.coefficient * p_b * iso6358_flow_function(p_a / p_b, r.b, r_lam);
 }
 
 void PneumaticOde::regulator_rhs(double t, const double* y, double* ydot) {
@@ -89,23 +115,39 @@ void PneumaticOde::regulator_rhs(double t, const double* y, double* ydot) {
   const double band = params_.regulator_proportional_band_pa;
   const double p_supply = params_.supply_gauge_pa + params_.atmospheric_pa;
   const double p_atm = params_.atmospheric_pa;
+  const bool outlet = params_.regulator_sense == RegulatorSense::kOutlet;
+  const bool delayed = params_.regulator_feedback == RegulatorFeedback::kDelayed;
   for (int i = 0; i < muscle_count(); ++i) {
-    const double u = y[2 * i];
-    const double p = y[2 * i + 1];
-    if (!(p > 0.0)) throw RecoverableRhsError("non-positive absolute pressure");
+    const int k = valve_opening_index(i);
+    const double u = y[k];
+    const double p = y[k + 1];
+    // the valve feeds the regulator's outlet volume (sense = "outlet") or the chamber
+    const double p_node = outlet ? y[k + 2] : p;
+    if (!(p > 0.0) || !(p_node > 0.0)) {
+      throw RecoverableRhsError("non-positive absolute pressure");
+    }
 
-    // the main valve opens toward the pressure error, with its own lag
-    const double target = std::clamp((input_[i].p_cmd_abs - p) / band, -1.0, 1.0);
-    ydot[2 * i] = (target - u) * inv_tau_v;
+    // the main valve opens toward the error of the sensed pressure (as it is now, or the
+    // sample the loop took one dead time ago), with its own lag
+    const double p_sensed = delayed ? input_[i].p_sensed_abs : p_node;
+    const double target = std::clamp((input_[i].p_cmd_abs - p_sensed) / band, -1.0, 1.0);
+    ydot[k] = (target - u) * inv_tau_v;
 
     // filling from the supply, or venting to the atmosphere
-    const double qm_in = u >= 0.0 ? restriction_flow(u, p_supply, p)
-                                  : -restriction_flow(-u, p, p_atm);
+    const double qm_valve = u >= 0.0 ? restriction_flow(supply_, u, p_supply, p_node)
+                                     : -restriction_flow(exhaust_, -u, p_node, p_atm);
+
+    // outlet volume (rigid, polytropic) -> tube and fittings -> chamber
+    double qm_in = qm_valve;
+    if (outlet) {
+      qm_in = restriction_flow(tube_, 1.0, p_node, p);
+      ydot[k + 2] = n_r_t_ * (qm_valve - qm_in) / params_.regulator_outlet_volume_m3;
+    }
 
     // polytropic chamber with moving wall
     const double volume = volume_m3(i, t);
     if (!(volume > 0.0)) throw RecoverableRhsError("non-positive chamber volume");
-    ydot[2 * i + 1] =
+    ydot[k + 1] =
         (n_r_t_ * qm_in - params_.polytropic_index * p * volume_rate_m3_s(i, t)) / volume;
   }
 }
@@ -165,7 +207,7 @@ void PneumaticOde::rhs(double t, const double* y, double* ydot) {
     ydot[2 * i] = (input_[i].p_cmd_abs - p_reg) * inv_tau_reg;
 
     // ISO 6358 flow: in from the regulator, or out through its relief port
-    const double qm_in = restriction_flow(1.0, p_reg, p);
+    const double qm_in = restriction_flow(path_, 1.0, p_reg, p);
 
     // polytropic chamber with moving wall
     const double volume = volume_m3(i, t);

@@ -19,11 +19,23 @@
 //   proportional pressure regulator as a closed loop around the chamber it feeds, so that
 //   the chamber is not an ideal pressure source: the command arrives after a dead time
 //   (PneumaticSystem delays it); the valve opens toward the pressure error,
-//     du/dt = (clamp((p_cmd - p) / p_band, -1, 1) - u) / tau_v,
-//   filling from the supply (u > 0) or venting to the atmosphere (u < 0) through the ISO
-//   6358 restriction scaled by |u|; the chamber equation as above. A stretch compresses the
-//   chamber faster than the valve can vent, so its pressure rises toward the closed
-//   chamber's p V^n = const until the loop catches up.
+//     du/dt = (clamp((p_cmd - p_s) / p_band, -1, 1) - u) / tau_v,
+//   filling from the supply (u > 0) through the supply restriction (C_s, b_s) or venting to
+//   the atmosphere (u < 0) through the exhaust restriction (C_e, b_e), each ISO 6358 flow
+//   scaled by |u| (C_s = C_e = the [valve] C unless [regulator] gives them); the chamber
+//   equation as above. A stretch compresses the chamber faster than the valve can vent, so
+//   its pressure rises toward the closed chamber's p V^n = const until the loop catches up.
+//   The sensed pressure p_s ([regulator] sense, feedback):
+//   - sense "chamber" (default): the valve feeds the chamber and senses it, p_s = p;
+//   - sense "outlet" (a third state p_o): the valve feeds the regulator's own outlet volume
+//     V_o and senses there, as an SMC ITV's pressure sensor does; the tube and fittings are
+//     a restriction (C_t, b_t) from the outlet to the chamber (the tube's volume stays with
+//     the chamber), p_s = p_o and
+//       dp_o/dt = n R T / V_o (qm_valve - qm_tube),  the chamber fed by qm_tube;
+//   - feedback "instant" (default): p_s as it is now; "delayed": p_s is the sample the
+//     regulator took one dead time ago (set_sensed_abs(), held between samples;
+//     PneumaticSystem keeps the delay line), so a disturbance, like a command, is answered
+//     only after the dead time.
 // Inputs per muscle, held over a step: command (absolute Pa inside this class), length l0
 // [m] and velocity ldot [m/s] at time t0 [s]; inside the step l(t) = l0 + ldot (t - t0), so
 // V(t) and dV/dt are consistent.
@@ -83,18 +95,28 @@ class PneumaticOde : public OdeSystem {
   void rhs(double t, const double* y, double* ydot) override;
 
   int muscle_count() const { return static_cast<int>(braid_.size()); }
-  int states_per_muscle() const { return model_ == ValveModel::kFirstOrder ? 1 : 2; }
-  // index in y of muscle i's chamber pressure, of its regulator pressure and of its valve
-  // opening (-1 when the model has none)
+  // 1 (first_order), 2 (iso6358; regulator sensing the chamber), 3 (regulator sensing
+  // its outlet)
+  int states_per_muscle() const;
+  // index in y of muscle i's chamber pressure, of its regulator pressure, of its valve
+  // opening and of its regulator outlet pressure (-1 when the model has none)
   int chamber_index(int muscle) const;
   int regulator_index(int muscle) const;
   int valve_opening_index(int muscle) const;
+  int outlet_index(int muscle) const;
+  // the pressure the regulator's loop senses: its outlet's, else the chamber's
+  int sensed_index(int muscle) const;
   ValveModel model() const { return model_; }
   const BraidGeometry& braid(int muscle) const { return braid_[muscle]; }
   const PneumaticParams& params() const { return params_; }
 
   // held inputs: command as absolute pressure [Pa]; kinematics at time t0_s
   void set_command_abs(int muscle, double p_cmd_abs_pa) { input_[muscle].p_cmd_abs = p_cmd_abs_pa; }
+  // regulator feedback "delayed": the sensed pressure [Pa, absolute] its loop acts on now
+  // (a sample taken one dead time ago; PneumaticSystem holds the delay line)
+  void set_sensed_abs(int muscle, double p_sensed_abs_pa) {
+    input_[muscle].p_sensed_abs = p_sensed_abs_pa;
+  }
   void set_kinematics(int muscle, double t0_s, double length_m, double velocity_m_s);
   // a physical muscle's chamber: V(l) from the AVBDL shape (avbdl.h, seeds/003 Eq. (9)-(17))
   // in place of Chou-Hannaford's cylinder; the plant (validated, InputError) also gives the
@@ -107,6 +129,7 @@ class PneumaticOde : public OdeSystem {
  private:
   struct Input {
     double p_cmd_abs = 0.0;
+    double p_sensed_abs = 0.0;
     double t0 = 0.0;
     double l0 = 0.0;
     double ldot = 0.0;
@@ -116,12 +139,20 @@ class PneumaticOde : public OdeSystem {
   std::vector<BraidGeometry> braid_;
   std::vector<std::optional<AvbdlParams>> plant_;   // per muscle, when set_plant_volume
   std::vector<Input> input_;
+  // an ISO 6358 restriction: C rho0 sqrt(T0/T) [kg/(s Pa)] and b
+  struct Restriction {
+    double coefficient = 0.0;
+    double b = 0.0;
+  };
   void regulator_rhs(double t, const double* y, double* ydot);
   // signed mass flow [kg/s] from a gas at p_a to one at p_b (absolute Pa) through the
-  // restriction opened to `opening` in [0, 1]
-  double restriction_flow(double opening, double p_a, double p_b) const;
+  // restriction r opened to `opening` in [0, 1]
+  double restriction_flow(const Restriction& r, double opening, double p_a, double p_b) const;
 
-  double flow_coefficient_ = 0.0;  // C rho0 sqrt(T0/T)
+  Restriction path_;      // iso6358: regulator -> tube -> chamber ([valve])
+  Restriction supply_;    // regulator: supply -> outlet (or chamber)
+  Restriction exhaust_;   // regulator: outlet (or chamber) -> atmosphere
+  Restriction tube_;      // regulator sensing its outlet: outlet -> chamber
   double n_r_t_ = 0.0;             // n R T
 };
 

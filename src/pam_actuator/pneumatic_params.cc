@@ -10,6 +10,7 @@
 
 #include <toml++/toml.h>
 
+#include "base/enum_names.h"
 #include "base/format.h"
 #include "base/input_error.h"
 #include "base/toml_file.h"
@@ -27,6 +28,7 @@ struct NumberKey {
   bool hi_open;
   double to_si;
   double* target;
+  std::optional<double>* optional_target = nullptr;   // a key whose absence means "unset"
 };
 
 struct StringKey {
@@ -62,10 +64,75 @@ void read_number(const std::string& path, const std::string& table, const Number
   if (!ok) {
     throw InputError(where + "value " + format_value(v) + " out of range, allowed " + interval(k));
   }
-  *k.target = v * k.to_si;
+  if (k.optional_target != nullptr) {
+    *k.optional_target = v * k.to_si;
+  } else {
+    *k.target = v * k.to_si;
+  }
+}
+
+// the regulator loop's feedback, sense and restrictions ([regulator]); `require` throws
+template <typename Require>
+void validate_regulator_loop(const PneumaticParams& p, const Require& require) {
+  const auto finite = [](double v) { return std::isfinite(v); };
+  require(finite(p.regulator_sample_period_s) && p.regulator_sample_period_s > 0.0 &&
+              p.regulator_sample_period_s <= 0.1,
+          "regulator sample period must be in (0, 0.1] s, got " +
+              format_value(p.regulator_sample_period_s));
+  // a restriction that must pass air: C > 0, b below the laminar ratio
+  const auto restriction = [&](const char* what, double c, double b) {
+    require(finite(c) && c > 0.0,
+            std::string(what) + " sonic conductance must be > 0, got " + format_value(c));
+    require(b >= 0.0 && b < p.laminar_ratio,
+            std::string(what) + " critical pressure ratio must be in [0, laminar ratio), got " +
+                format_value(b));
+  };
+  if (p.regulator_supply_conductance_m3_per_s_pa || p.regulator_supply_critical_ratio) {
+    restriction("regulator supply", regulator_supply_conductance(p),
+                regulator_supply_critical_ratio(p));
+  }
+  if (p.regulator_exhaust_conductance_m3_per_s_pa || p.regulator_exhaust_critical_ratio) {
+    restriction("regulator exhaust", regulator_exhaust_conductance(p),
+                regulator_exhaust_critical_ratio(p));
+  }
+  restriction("tube", p.tube_conductance_m3_per_s_pa, p.tube_critical_ratio);
+  require(finite(p.regulator_outlet_volume_m3) && p.regulator_outlet_volume_m3 > 0.0,
+          "regulator outlet volume must be > 0 m^3, got " +
+              format_value(p.regulator_outlet_volume_m3));
 }
 
 }  // namespace
+
+namespace {
+constexpr EnumName<RegulatorFeedback> kFeedbackNames[] = {
+    {RegulatorFeedback::kInstant, "instant"}, {RegulatorFeedback::kDelayed, "delayed"}};
+constexpr EnumName<RegulatorSense> kSenseNames[] = {{RegulatorSense::kChamber, "chamber"},
+                                                    {RegulatorSense::kOutlet, "outlet"}};
+}  // namespace
+
+RegulatorFeedback parse_regulator_feedback(const std::string& name, const std::string& context) {
+  return parse_name(kFeedbackNames, name, context);
+}
+const char* regulator_feedback_name(RegulatorFeedback feedback) {
+  return name_of(kFeedbackNames, feedback);
+}
+RegulatorSense parse_regulator_sense(const std::string& name, const std::string& context) {
+  return parse_name(kSenseNames, name, context);
+}
+const char* regulator_sense_name(RegulatorSense sense) { return name_of(kSenseNames, sense); }
+
+double regulator_supply_conductance(const PneumaticParams& p) {
+  return p.regulator_supply_conductance_m3_per_s_pa.value_or(p.sonic_conductance_m3_per_s_pa);
+}
+double regulator_supply_critical_ratio(const PneumaticParams& p) {
+  return p.regulator_supply_critical_ratio.value_or(p.critical_pressure_ratio);
+}
+double regulator_exhaust_conductance(const PneumaticParams& p) {
+  return p.regulator_exhaust_conductance_m3_per_s_pa.value_or(p.sonic_conductance_m3_per_s_pa);
+}
+double regulator_exhaust_critical_ratio(const PneumaticParams& p) {
+  return p.regulator_exhaust_critical_ratio.value_or(p.critical_pressure_ratio);
+}
 
 void validate_pneumatic_params(const PneumaticParams& p, const std::string& context) {
   auto require = [&](bool ok, const std::string& what) {
@@ -111,6 +178,7 @@ void validate_pneumatic_params(const PneumaticParams& p, const std::string& cont
   require(finite(p.regulator_proportional_band_pa) && p.regulator_proportional_band_pa > 0.0,
           "regulator proportional band must be > 0 Pa, got " +
               format_value(p.regulator_proportional_band_pa));
+  validate_regulator_loop(p, require);
   require(p.solver.relative_tolerance > 0.0 && p.solver.relative_tolerance <= 1e-2,
           "solver relative tolerance must be in (0, 1e-2], got " +
               format_value(p.solver.relative_tolerance));
@@ -121,12 +189,47 @@ void validate_pneumatic_params(const PneumaticParams& p, const std::string& cont
 
 namespace {
 
+// [regulator]: the closed-loop regulator's keys (valve.model = "regulator")
+Table regulator_table(PneumaticParams* params, double dm3_per_s_bar) {
+  PneumaticParams& p = *params;
+  return {"regulator",
+          {{"dead_time_ms", 0.0, 1000.0, false, false, 1e-3, &p.regulator_dead_time_s},
+           {"valve_time_constant_ms", 0.0, 10000.0, true, false, 1e-3,
+            &p.regulator_valve_time_constant_s},
+           {"proportional_band_kPa", 0.0, 2000.0, true, false, 1e3,
+            &p.regulator_proportional_band_pa},
+           {"sample_period_ms", 0.0, 100.0, true, false, 1e-3, &p.regulator_sample_period_s},
+           {"supply_sonic_conductance_dm3_per_s_bar", 0.0, 100.0, true, false, dm3_per_s_bar,
+            nullptr, &p.regulator_supply_conductance_m3_per_s_pa},
+           {"supply_critical_pressure_ratio", 0.0, 1.0, false, true, 1.0, nullptr,
+            &p.regulator_supply_critical_ratio},
+           {"exhaust_sonic_conductance_dm3_per_s_bar", 0.0, 100.0, true, false, dm3_per_s_bar,
+            nullptr, &p.regulator_exhaust_conductance_m3_per_s_pa},
+           {"exhaust_critical_pressure_ratio", 0.0, 1.0, false, true, 1.0, nullptr,
+            &p.regulator_exhaust_critical_ratio},
+           {"outlet_volume_cm3", 0.0, 1000.0, true, false, 1e-6, &p.regulator_outlet_volume_m3},
+           {"tube_sonic_conductance_dm3_per_s_bar", 0.0, 100.0, true, false, dm3_per_s_bar,
+            &p.tube_conductance_m3_per_s_pa},
+           {"tube_critical_pressure_ratio", 0.0, 1.0, false, true, 1.0, &p.tube_critical_ratio}},
+          {{"feedback",
+            {"instant", "delayed"},
+            [params](const std::string& v) {
+              params->regulator_feedback = parse_regulator_feedback(v, "regulator.feedback");
+            }},
+           {"sense",
+            {"chamber", "outlet"},
+            [params](const std::string& v) {
+              params->regulator_sense = parse_regulator_sense(v, "regulator.sense");
+            }}}};
+}
+
 // The file's schema: table, key (unit in the name), allowed interval, factor to SI; each
 // key writes its field of *params.
 std::vector<Table> pneumatic_schema(PneumaticParams* params) {
   PneumaticParams& p = *params;
   PneumaticSolverParams* solver = &p.solver;
   const double inf = std::numeric_limits<double>::infinity();
+  const double kDm3PerSBar = 1e-3 / units::kPaPerBar;   // dm^3/(s bar) -> m^3/(s Pa)
   return {
       {"supply",
        {{"supply_MPa", 0.0, 2.0, true, false, units::kPaPerMPa, &p.supply_gauge_pa},
@@ -138,7 +241,7 @@ std::vector<Table> pneumatic_schema(PneumaticParams* params) {
         {"polytropic_index", 1.0, 1.4, false, false, 1.0, &p.polytropic_index}},
        {}},
       {"valve",
-       {{"sonic_conductance_dm3_per_s_bar", 0.0, 100.0, false, false, 1e-3 / units::kPaPerBar,
+       {{"sonic_conductance_dm3_per_s_bar", 0.0, 100.0, false, false, kDm3PerSBar,
          &p.sonic_conductance_m3_per_s_pa},
         {"critical_pressure_ratio", 0.0, 1.0, false, true, 1.0, &p.critical_pressure_ratio},
         {"laminar_ratio", 0.9, 1.0, false, true, 1.0, &p.laminar_ratio},
@@ -155,13 +258,7 @@ std::vector<Table> pneumatic_schema(PneumaticParams* params) {
        {{"time_constant_ms", 0.0, 100000.0, true, false, 1e-3,
          &p.first_order_time_constant_s}},
        {}},
-      {"regulator",
-       {{"dead_time_ms", 0.0, 1000.0, false, false, 1e-3, &p.regulator_dead_time_s},
-        {"valve_time_constant_ms", 0.0, 10000.0, true, false, 1e-3,
-         &p.regulator_valve_time_constant_s},
-        {"proportional_band_kPa", 0.0, 2000.0, true, false, 1e3,
-         &p.regulator_proportional_band_pa}},
-       {}},
+      regulator_table(params, kDm3PerSBar),
       {"solver",
        {{"relative_tolerance", 0.0, 1e-2, true, false, 1.0, &solver->relative_tolerance},
         {"absolute_tolerance_Pa", 0.0, 1e4, true, false, 1.0, &solver->absolute_tolerance_pa}},

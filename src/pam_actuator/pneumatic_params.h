@@ -5,6 +5,7 @@
 // load_pneumatic_params(), which validates every value.
 #pragma once
 
+#include <optional>
 #include <string>
 
 namespace pamsim {
@@ -15,6 +16,15 @@ enum class CommandChangePolicy { kWarm, kReinit };
 
 // Linear multistep family used by CVODE.
 enum class CvodeMethod { kBdf, kAdams };
+
+// What the "regulator" valve model's loop acts on ([regulator] feedback, chamber_ode.h):
+// the sensed pressure as it is now (kInstant), or as the regulator sampled it one dead time
+// ago (kDelayed, a sampled-data controller; pneumatics.h).
+enum class RegulatorFeedback { kInstant, kDelayed };
+// Where its loop senses ([regulator] sense): in the chamber (kChamber: one gas volume behind
+// the valve, the path's restriction lumped into the valve), or at its own outlet port
+// (kOutlet: outlet volume -> tube/fitting restriction -> chamber, as an SMC ITV senses).
+enum class RegulatorSense { kChamber, kOutlet };
 
 struct PneumaticSolverParams {
   CvodeMethod method = CvodeMethod::kBdf;
@@ -45,11 +55,29 @@ struct PneumaticParams {
   double first_order_time_constant_s = 0.1;  // > 0
   // closed-loop regulator option (valve.model = "regulator", chamber_ode.h): the command
   // reaches the regulator after a dead time; its main valve opens toward
-  // (p_cmd - p) / proportional band with a first-order lag, filling from the supply or
-  // venting to the atmosphere through the ISO 6358 restriction above
+  // (p_cmd - p_sensed) / proportional band with a first-order lag, filling from the supply
+  // or venting to the atmosphere through its supply or exhaust restriction
   double regulator_dead_time_s = 0.005;              // >= 0
   double regulator_valve_time_constant_s = 0.010;    // > 0
   double regulator_proportional_band_pa = 20.0e3;    // > 0
+  RegulatorFeedback regulator_feedback = RegulatorFeedback::kInstant;
+  RegulatorSense regulator_sense = RegulatorSense::kChamber;
+  // kDelayed: the loop samples its sensed pressure every sample period and acts on each
+  // sample one dead time later (the dead time above, which also delays the command)
+  double regulator_sample_period_s = 1e-3;           // (0, 0.1]
+  // ISO 6358 C [m^3/(s Pa)] and b of the regulator's supply (filling) and exhaust (venting)
+  // paths; unset: the [valve] restriction's C and b for both (the model before they were
+  // separate). Given: C > 0, b in [0, laminar ratio).
+  std::optional<double> regulator_supply_conductance_m3_per_s_pa;
+  std::optional<double> regulator_supply_critical_ratio;
+  std::optional<double> regulator_exhaust_conductance_m3_per_s_pa;
+  std::optional<double> regulator_exhaust_critical_ratio;
+  // kOutlet: the gas volume at the regulator's outlet port [m^3], > 0, and the ISO 6358
+  // restriction of the tube and fittings from it to the chamber (C > 0, b in [0, laminar
+  // ratio)); the tube's volume stays with the chamber (tube_dead_volume_m3)
+  double regulator_outlet_volume_m3 = 2e-6;
+  double tube_conductance_m3_per_s_pa = 1.3e-8;
+  double tube_critical_ratio = 0.4;
   PneumaticSolverParams solver;
 };
 
@@ -63,6 +91,19 @@ inline constexpr double kIso6358ReferenceTemperatureK = 293.15;
 // missing or unreadable file, a TOML syntax error, an unknown table or key, a value of the
 // wrong type, or a non-finite / out-of-range value.
 PneumaticParams load_pneumatic_params(const std::string& path);
+
+// "instant" | "delayed" and "chamber" | "outlet", both ways; parse_* throws InputError
+// "<context> must be \"a\" or \"b\", got \"x\"".
+RegulatorFeedback parse_regulator_feedback(const std::string& name, const std::string& context);
+const char* regulator_feedback_name(RegulatorFeedback feedback);
+RegulatorSense parse_regulator_sense(const std::string& name, const std::string& context);
+const char* regulator_sense_name(RegulatorSense sense);
+
+// The regulator's supply and exhaust restrictions: the given C and b, else [valve]'s.
+double regulator_supply_conductance(const PneumaticParams& params);
+double regulator_supply_critical_ratio(const PneumaticParams& params);
+double regulator_exhaust_conductance(const PneumaticParams& params);
+double regulator_exhaust_critical_ratio(const PneumaticParams& params);
 
 // Checks the cross-field and range constraints listed above; `context` prefixes the
 // messages (a file name, or "pneumatic parameters"). Throws InputError.

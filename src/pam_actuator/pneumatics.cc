@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -46,11 +47,21 @@ PneumaticSystem::PneumaticSystem(const PneumaticParams& params, ValveModel model
   dead_time_s_ = model == ValveModel::kRegulator ? params_.regulator_dead_time_s : 0.0;
 
   std::vector<double> y0(ode_->size());
+  std::vector<double> sensed(n);
   for (int i = 0; i < n; ++i) {
     const double p_abs = initial_gauge_pa[i] + params_.atmospheric_pa;
     y0[ode_->chamber_index(i)] = p_abs;
     if (ode_->regulator_index(i) >= 0) y0[ode_->regulator_index(i)] = p_abs;
     if (ode_->valve_opening_index(i) >= 0) y0[ode_->valve_opening_index(i)] = 0.0;   // at rest
+    if (ode_->outlet_index(i) >= 0) y0[ode_->outlet_index(i)] = p_abs;
+    sensed[i] = p_abs;
+    ode_->set_sensed_abs(i, p_abs);
+  }
+  // the loop's delay line starts at rest: its first sample is the initial pressure
+  if (model == ValveModel::kRegulator &&
+      params_.regulator_feedback == RegulatorFeedback::kDelayed) {
+    feedback_ = std::make_unique<SampledDelayLine>(t0_s, params_.regulator_sample_period_s,
+                                                   dead_time_s_, std::move(sensed));
   }
   CvodeOptions options;
   options.method = params_.solver.method;
@@ -127,19 +138,41 @@ void PneumaticSystem::advance(double t_end_s) {
                              ": set_kinematics() was never called");
     }
   }
-  // delayed commands that take effect inside the interval split it there; those due at
-  // its end apply from the next one
+  // delayed commands and the loop's samples and actions inside the interval split it
+  // there; those due at its end apply from the next one
   constexpr double kSameTimeS = 1e-12;
-  while (!delayed_.empty() && delayed_.front().t_s < t_end_s - kSameTimeS) {
-    const DelayedCommand c = delayed_.front();
-    delayed_.pop_front();
-    if (c.t_s > time_s() + kSameTimeS) integrate_to(c.t_s);
-    apply_command(c.muscle, c.p_cmd_abs_pa);
+  for (double t = next_event_s(); t < t_end_s - kSameTimeS; t = next_event_s()) {
+    if (t > time_s() + kSameTimeS) integrate_to(t);
+    handle_events_due(t + kSameTimeS);
   }
   integrate_to(t_end_s);
-  while (!delayed_.empty() && delayed_.front().t_s <= t_end_s + kSameTimeS) {
+  handle_events_due(t_end_s + kSameTimeS);
+}
+
+double PneumaticSystem::next_event_s() const {
+  double t = delayed_.empty() ? std::numeric_limits<double>::infinity() : delayed_.front().t_s;
+  if (feedback_) t = std::min(t, feedback_->next_event_s());
+  return t;
+}
+
+void PneumaticSystem::handle_events_due(double t_s) {
+  while (!delayed_.empty() && delayed_.front().t_s <= t_s) {
     apply_command(delayed_.front().muscle, delayed_.front().p_cmd_abs_pa);
     delayed_.pop_front();
+  }
+  if (!feedback_) return;
+  // the loop samples what it senses now; a sample whose dead time is over acts
+  while (feedback_->next_sample_s() <= t_s) {
+    std::vector<double> sample(muscle_count());
+    for (int i = 0; i < muscle_count(); ++i) {
+      sample[i] = integrator_->state()[ode_->sensed_index(i)];
+    }
+    feedback_->take_sample(std::move(sample));
+  }
+  while (feedback_->next_action_s() <= t_s) {
+    if (!feedback_->act()) continue;
+    for (int i = 0; i < muscle_count(); ++i) ode_->set_sensed_abs(i, feedback_->held()[i]);
+    if (params_.solver.on_command_change == CommandChangePolicy::kReinit) reinit_pending_ = true;
   }
 }
 
@@ -165,6 +198,11 @@ double PneumaticSystem::regulator_pressure_pa(int muscle) const {
   const int k = ode_->regulator_index(muscle);
   if (k < 0) return command_gauge_pa_[muscle];
   return integrator_->state()[k] - params_.atmospheric_pa;
+}
+
+double PneumaticSystem::outlet_pressure_pa(int muscle) const {
+  check_muscle(muscle);
+  return integrator_->state()[ode_->sensed_index(muscle)] - params_.atmospheric_pa;
 }
 
 double PneumaticSystem::command_pa(int muscle) const {

@@ -7,7 +7,13 @@
 // velocity at t; inside the step l is extrapolated linearly), then advance(t + dt). A
 // controller tick calls set_command(); the command is held until changed. With the
 // "regulator" valve model a command reaches the valve only after the regulator's dead time:
-// advance() splits its interval at the moments delayed commands take effect.
+// advance() splits its interval at the moments delayed commands take effect. With its
+// feedback "delayed" the loop's sensed pressure (the chamber's, or with sense "outlet" the
+// regulator outlet's) goes through the same dead time: a sampled-data delay line
+// (sampled_delay_line.h, which says why this formulation) samples it every
+// [regulator] sample period and each sample acts one dead time later; advance() splits
+// its interval at every sample and action too, and treats an action as a command change
+// (solver.on_command_change: the valve's target jumps there).
 //
 // Integration strategy (measured with bench/pneumatics_bench.cc, 2 muscles, 3 Hz motion,
 // a new command every 10 ms; accuracy against a rtol 1e-9 reference in pneumatics_test.cc):
@@ -25,6 +31,11 @@
 //   = "reinit"): ~1.5 steps, ~2.3 rhs evals, ~2.2 us per physics step, max pressure error
 //   ~170 Pa. "warm" costs ~1.3 us (1.0 step) but reaches ~600 Pa error; rtol 1e-5 ~3.7 us
 //   and ~80 Pa. The budget (1-1.5 us) is met only by "warm" at rtol 1e-4.
+// - The regulator loop (BM_RegulatorLoopStep, CPU time on 2 shared cores, reinit): the model
+//   as it was (feedback "instant", sense "chamber") ~1.8 us; sense "outlet" ~4.2 us (a third
+//   state, and the tube's laminar region is stiff); feedback "delayed" ~11.6 us and with
+//   the outlet ~13.1 us: every action of a 1 ms sample is a jump in the valve's target,
+//   so CVODE restarts there and takes ~6 steps per physics step ("warm": ~8 smaller ones).
 #pragma once
 
 #include <deque>
@@ -35,6 +46,7 @@
 #include "pam_actuator/chou_hannaford.h"
 #include "pam_actuator/cvode_integrator.h"
 #include "pam_actuator/pneumatic_params.h"
+#include "pam_actuator/sampled_delay_line.h"
 
 namespace pamsim {
 
@@ -71,6 +83,8 @@ class PneumaticSystem {
                                                    // (first_order, regulator: the command
                                                    // as issued, before any dead time)
   double command_pa(int muscle) const;             // gauge, after clamping
+  // gauge; the regulator's outlet port (sense = "outlet"), else the chamber's pressure
+  double outlet_pressure_pa(int muscle) const;
 
   // solver statistics for the benchmark note (cumulative)
   long steps() const;
@@ -82,6 +96,11 @@ class PneumaticSystem {
   std::vector<double> current_state() const;
   void integrate_to(double t_s);               // restarting first if a command changed
   void apply_command(int muscle, double p_cmd_abs_pa);
+  // the next delayed command, loop sample or loop action (+inf if none)
+  double next_event_s() const;
+  // applies the delayed commands due by t_s, then takes the loop's samples and its
+  // actions due by then
+  void handle_events_due(double t_s);
 
   // a command on its way to the valve (the regulator's dead time)
   struct DelayedCommand {
@@ -91,6 +110,8 @@ class PneumaticSystem {
   };
   std::deque<DelayedCommand> delayed_;
   double dead_time_s_ = 0.0;
+  // the loop's sensed pressures on their way (feedback = "delayed"); empty otherwise
+  std::unique_ptr<SampledDelayLine> feedback_;
 
   PneumaticParams params_;
   std::unique_ptr<PneumaticOde> ode_;

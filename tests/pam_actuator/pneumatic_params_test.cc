@@ -95,6 +95,17 @@ TEST(PneumaticParamsTest, EveryNumericKeyRejectsBadValues) {
       {"valve", "command_max_MPa"},
       {"chamber", "tube_dead_volume_cm3"},
       {"first_order", "time_constant_ms"},
+      {"regulator", "dead_time_ms"},
+      {"regulator", "valve_time_constant_ms"},
+      {"regulator", "proportional_band_kPa"},
+      {"regulator", "sample_period_ms"},
+      {"regulator", "supply_sonic_conductance_dm3_per_s_bar"},
+      {"regulator", "supply_critical_pressure_ratio"},
+      {"regulator", "exhaust_sonic_conductance_dm3_per_s_bar"},
+      {"regulator", "exhaust_critical_pressure_ratio"},
+      {"regulator", "outlet_volume_cm3"},
+      {"regulator", "tube_sonic_conductance_dm3_per_s_bar"},
+      {"regulator", "tube_critical_pressure_ratio"},
       {"solver", "relative_tolerance"},
       {"solver", "absolute_tolerance_Pa"},
   };
@@ -107,6 +118,57 @@ TEST(PneumaticParamsTest, EveryNumericKeyRejectsBadValues) {
       EXPECT_EQ(m.find('\n'), std::string::npos) << m;
     }
   }
+}
+
+// The regulator loop's keys (issue 25, item 5): a conductance must pass air, a ratio stay
+// below the laminar ratio, the names be known; the shipped file keeps the model before.
+TEST(PneumaticParamsTest, RegulatorLoopKeysAreChecked) {
+  for (const char* key : {"supply_sonic_conductance_dm3_per_s_bar",
+                          "exhaust_sonic_conductance_dm3_per_s_bar",
+                          "tube_sonic_conductance_dm3_per_s_bar", "outlet_volume_cm3",
+                          "sample_period_ms"}) {
+    const std::string m = load_error(std::string("[regulator]\n") + key + " = 0\n");
+    EXPECT_NE(m.find(std::string("pneumatics_bad.toml: regulator.") + key +
+                     ": value 0 out of range, allowed (0, "),
+              std::string::npos)
+        << m;
+  }
+  const std::string ratio =
+      load_error("[valve]\nlaminar_ratio = 0.95\n[regulator]\ntube_critical_pressure_ratio = 0.96\n");
+  EXPECT_NE(ratio.find("tube critical pressure ratio must be in [0, laminar ratio)"),
+            std::string::npos)
+      << ratio;
+  EXPECT_NE(load_error("[regulator]\nfeedback = \"late\"\n")
+                .find("regulator.feedback: unknown value \"late\", allowed instant | delayed"),
+            std::string::npos);
+  EXPECT_NE(load_error("[regulator]\nsense = \"muscle\"\n")
+                .find("regulator.sense: unknown value \"muscle\", allowed chamber | outlet"),
+            std::string::npos);
+  EXPECT_NE(load_error("[regulator]\nsense = 1\n").find("regulator.sense: must be a string"),
+            std::string::npos);
+
+  const PneumaticParams shipped =
+      load_pneumatic_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/pneumatics.toml");
+  EXPECT_EQ(shipped.regulator_feedback, RegulatorFeedback::kInstant);
+  EXPECT_EQ(shipped.regulator_sense, RegulatorSense::kChamber);
+  EXPECT_FALSE(shipped.regulator_supply_conductance_m3_per_s_pa.has_value());
+  EXPECT_FALSE(shipped.regulator_exhaust_conductance_m3_per_s_pa.has_value());
+  EXPECT_EQ(regulator_supply_conductance(shipped), shipped.sonic_conductance_m3_per_s_pa);
+  EXPECT_EQ(regulator_exhaust_critical_ratio(shipped), shipped.critical_pressure_ratio);
+
+  const PneumaticParams p = load_pneumatic_params(write_temp(
+      "loop.toml",
+      "[regulator]\nfeedback = \"delayed\"\nsense = \"outlet\"\nsample_period_ms = 0.5\n"
+      "supply_sonic_conductance_dm3_per_s_bar = 0.35\nexhaust_critical_pressure_ratio = 0.2\n"
+      "outlet_volume_cm3 = 3\ntube_sonic_conductance_dm3_per_s_bar = 2\n"));
+  EXPECT_EQ(p.regulator_feedback, RegulatorFeedback::kDelayed);
+  EXPECT_EQ(p.regulator_sense, RegulatorSense::kOutlet);
+  EXPECT_DOUBLE_EQ(p.regulator_sample_period_s, 0.5e-3);
+  EXPECT_NEAR(regulator_supply_conductance(p), 0.35e-8, 1e-22);
+  EXPECT_EQ(regulator_exhaust_conductance(p), p.sonic_conductance_m3_per_s_pa) << "unset";
+  EXPECT_DOUBLE_EQ(regulator_exhaust_critical_ratio(p), 0.2);
+  EXPECT_NEAR(p.regulator_outlet_volume_m3, 3e-6, 1e-18);
+  EXPECT_NEAR(p.tube_conductance_m3_per_s_pa, 2e-8, 1e-22);
 }
 
 TEST(PneumaticParamsTest, PolytropicIndexOutsideOneToOnePointFour) {

@@ -157,6 +157,12 @@ TEST(RegulatorTest, BadRegulatorParametersAreNamed) {
       {&PneumaticParams::regulator_valve_time_constant_s, 0.0, "regulator valve time constant"},
       {&PneumaticParams::regulator_proportional_band_pa, -5.0, "regulator proportional band"},
       {&PneumaticParams::regulator_proportional_band_pa, INFINITY, "regulator proportional band"},
+      {&PneumaticParams::regulator_sample_period_s, 0.0, "regulator sample period"},
+      {&PneumaticParams::regulator_sample_period_s, NAN, "regulator sample period"},
+      {&PneumaticParams::regulator_outlet_volume_m3, -1e-6, "regulator outlet volume"},
+      {&PneumaticParams::tube_conductance_m3_per_s_pa, 0.0, "tube sonic conductance"},
+      {&PneumaticParams::tube_conductance_m3_per_s_pa, NAN, "tube sonic conductance"},
+      {&PneumaticParams::tube_critical_ratio, 1.0, "tube critical pressure ratio"},
   };
   for (const Case& c : cases) {
     PneumaticParams params;
@@ -169,6 +175,34 @@ TEST(RegulatorTest, BadRegulatorParametersAreNamed) {
                 std::string::npos) << e.what();
     }
   }
+}
+
+// an optional restriction, once given, must pass air: C > 0, b below the laminar ratio
+TEST(RegulatorTest, BadSupplyAndExhaustRestrictionsAreNamed) {
+  const auto error_of = [](const PneumaticParams& params) -> std::string {
+    try {
+      validate_pneumatic_params(params, "pneumatics.toml");
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  PneumaticParams p;
+  p.regulator_supply_conductance_m3_per_s_pa = 0.0;
+  EXPECT_NE(error_of(p).find("pneumatics.toml: regulator supply sonic conductance must be > 0"),
+            std::string::npos);
+  p = PneumaticParams{};
+  p.regulator_exhaust_conductance_m3_per_s_pa = NAN;
+  EXPECT_NE(error_of(p).find("pneumatics.toml: regulator exhaust sonic conductance"),
+            std::string::npos);
+  p = PneumaticParams{};
+  p.regulator_exhaust_critical_ratio = -0.1;
+  EXPECT_NE(error_of(p).find("pneumatics.toml: regulator exhaust critical pressure ratio"),
+            std::string::npos);
+  // unset, they follow [valve], whose C may be 0 (a shut valve, as before)
+  p = PneumaticParams{};
+  p.sonic_conductance_m3_per_s_pa = 0.0;
+  EXPECT_EQ(error_of(p), "");
 }
 
 TEST(RegulatorTest, TheShippedFileGivesTheNominalBracketValues) {

@@ -41,6 +41,12 @@ std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
       {s + "drop_mass.toml",
        {"valve.dead_time_ms=5", "valve.valve_time_constant_ms=10",
         "valve.proportional_band_kPa=20", "valve.supply_MPa=0.7", "valve.command_max_MPa=0.7",
+        "valve.feedback=\"delayed\"", "valve.sense=\"outlet\"", "valve.sample_period_ms=1",
+        "valve.supply_sonic_conductance_dm3_per_s_bar=0.35",
+        "valve.supply_critical_pressure_ratio=0.3",
+        "valve.exhaust_sonic_conductance_dm3_per_s_bar=0.35",
+        "valve.exhaust_critical_pressure_ratio=0.3", "valve.outlet_volume_cm3=2",
+        "valve.tube_sonic_conductance_dm3_per_s_bar=1.3", "valve.tube_critical_pressure_ratio=0.4",
         "controller.p_max_MPa=0.6", "reflex.pairs=[[\"agonist\", \"antagonist\"]]",
         // an event of each condition, and each action's keys
         "events.a.when.at_s=0.5", "events.a.action=\"add_mass\"", "events.a.body=\"basket\"",

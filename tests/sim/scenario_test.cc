@@ -103,6 +103,37 @@ TEST(ScenarioTest, RegulatorKeysOverrideThePneumaticsFile) {
   EXPECT_EQ(error_of({"valve.dead_time_ms=5", "valve.model=\"regulator\""}, ideal), "");
 }
 
+// The loop's feedback path and restrictions (issue 25, item 5) as scenario keys: a point of
+// the bracket over the pneumatics file's [regulator]; absent, the file's model stands.
+TEST(ScenarioTest, RegulatorLoopKeysOverrideThePneumaticsFile) {
+  const Scenario base = load_scenario(kScenario);
+  EXPECT_EQ(base.pneumatics.regulator_feedback, RegulatorFeedback::kInstant);
+  EXPECT_EQ(base.pneumatics.regulator_sense, RegulatorSense::kChamber);
+  EXPECT_FALSE(base.pneumatics.regulator_supply_conductance_m3_per_s_pa.has_value());
+  const Scenario sc = load_scenario(
+      kScenario, {"valve.feedback=\"delayed\"", "valve.sense=\"outlet\"",
+                  "valve.sample_period_ms=0.5", "valve.supply_sonic_conductance_dm3_per_s_bar=0.35",
+                  "valve.supply_critical_pressure_ratio=0.25",
+                  "valve.exhaust_sonic_conductance_dm3_per_s_bar=0.2",
+                  "valve.exhaust_critical_pressure_ratio=0.35", "valve.outlet_volume_cm3=3",
+                  "valve.tube_sonic_conductance_dm3_per_s_bar=2",
+                  "valve.tube_critical_pressure_ratio=0.45"});
+  const PneumaticParams& p = sc.pneumatics;
+  EXPECT_EQ(p.regulator_feedback, RegulatorFeedback::kDelayed);
+  EXPECT_EQ(p.regulator_sense, RegulatorSense::kOutlet);
+  EXPECT_EQ(p.regulator_sample_period_s, 0.5 * 1e-3);
+  EXPECT_NEAR(*p.regulator_supply_conductance_m3_per_s_pa, 0.35e-8, 1e-22);
+  EXPECT_EQ(*p.regulator_supply_critical_ratio, 0.25);
+  EXPECT_NEAR(*p.regulator_exhaust_conductance_m3_per_s_pa, 0.2e-8, 1e-22);
+  EXPECT_EQ(*p.regulator_exhaust_critical_ratio, 0.35);
+  EXPECT_NEAR(p.regulator_outlet_volume_m3, 3e-6, 1e-18);
+  EXPECT_NEAR(p.tube_conductance_m3_per_s_pa, 2e-8, 1e-22);
+  EXPECT_EQ(p.tube_critical_ratio, 0.45);
+  const std::string ideal = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass_ideal.toml";
+  EXPECT_NE(error_of({"valve.feedback=\"delayed\""}, ideal).find("valve.feedback is used only by"),
+            std::string::npos);
+}
+
 struct BadValue {
   std::string assignment;
   std::string key;
@@ -188,6 +219,17 @@ TEST(ScenarioTest, EveryBadValueNamesItsKey) {
       {"valve.valve_time_constant_ms=0", "valve.valve_time_constant_ms"},
       {"valve.proportional_band_kPa=0", "valve.proportional_band_kPa"},
       {"valve.proportional_band_kPa=5000", "valve.proportional_band_kPa"},
+      {"valve.feedback=\"late\"", "valve.feedback must be \"instant\" or \"delayed\", got \"late\""},
+      {"valve.sense=\"muscle\"", "valve.sense must be \"chamber\" or \"outlet\", got \"muscle\""},
+      {"valve.sample_period_ms=0", "valve.sample_period_ms must be within (0, 100]"},
+      {"valve.supply_sonic_conductance_dm3_per_s_bar=0",
+       "valve.supply_sonic_conductance_dm3_per_s_bar must be within (0, 100]"},
+      {"valve.exhaust_sonic_conductance_dm3_per_s_bar=nan",
+       "valve.exhaust_sonic_conductance_dm3_per_s_bar"},
+      {"valve.exhaust_critical_pressure_ratio=1", "valve.exhaust_critical_pressure_ratio must be within [0, 1)"},
+      {"valve.tube_critical_pressure_ratio=0.9995", "tube critical pressure ratio must be in [0, laminar ratio)"},
+      {"valve.tube_sonic_conductance_dm3_per_s_bar=-1", "valve.tube_sonic_conductance_dm3_per_s_bar"},
+      {"valve.outlet_volume_cm3=0", "valve.outlet_volume_cm3 must be within (0, 1000]"},
       {"sensors.noise_scale=1e4", "sensors.noise_scale"},
       {"controller.p_max_MPa=0", "controller.p_max_MPa"},
       {"controller.p_max_MPa=0.8", "controller.p_max_MPa"},   // above the 0.7 MPa regulator

@@ -55,6 +55,11 @@
 //   valve.dead_time_ms, valve.valve_time_constant_ms, valve.proportional_band_kPa   the
 //                                 regulator's loop (valve.model = "regulator") in place of
 //                                 model.pneumatics' [regulator]: a point of its bracket
+//   valve.feedback ("instant" | "delayed"), valve.sense ("chamber" | "outlet"),
+//   valve.sample_period_ms, valve.{supply,exhaust,tube}_sonic_conductance_dm3_per_s_bar,
+//   valve.{supply,exhaust,tube}_critical_pressure_ratio, valve.outlet_volume_cm3   the
+//                                 same for the loop's feedback path and restrictions
+//                                 (pneumatics.toml [regulator] documents each)
 // Shorthands kept from pamsim 0.1 (their keys keep their meaning):
 //   drop.{enabled, mass_kg, height_m, time_s} (and body = "ball", basket = "basket",
 //     site = "basket_floor"): the falling mass: bodies.<body>.mass_kg, a hold of the body

@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""regulator_loop.py: the passive drop's chamber pressure rise at impact across the regulator
+bracket (issue 25, item 5; models/pams/pneumatics.toml [regulator]). Each row is one
+`pamsim run scenarios/drop_mass_passive.toml` with `--set` overrides, so any row can be rerun
+by hand. The rise is the agonist's largest chamber pressure (trajectory.csv, logged at the
+control rate) within 0.3 s after the impact less its pressure at the impact; the swing is
+the largest minus the smallest pressure in that window (a loop that rings shows there).
+Prints Markdown.
+
+    python3 scripts/regulator_loop.py [--pamsim build/src/sim/pamsim]
+"""
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+ITV2000 = ["valve.supply_sonic_conductance_dm3_per_s_bar=1.0",
+           "valve.exhaust_sonic_conductance_dm3_per_s_bar=1.0",
+           "valve.dead_time_ms=2", "valve.valve_time_constant_ms=5"]
+ITV1000 = ["valve.supply_sonic_conductance_dm3_per_s_bar=0.35",
+           "valve.exhaust_sonic_conductance_dm3_per_s_bar=0.35",
+           "valve.dead_time_ms=10", "valve.valve_time_constant_ms=20"]
+LOOP = ['valve.feedback="delayed"', 'valve.sense="outlet"']
+
+# (label, overrides); the fast / slow ends' bands are pneumatics.toml's derivation
+ROWS = [
+    ("shipped (instant, chamber; 5 ms / 10 ms / 20 kPa)", []),
+    ("shipped, dead time 1000 ms", ["valve.dead_time_ms=1000"]),
+    ("old bracket fastest (2 / 5 / 10 kPa)", ["valve.dead_time_ms=2",
+                                              "valve.valve_time_constant_ms=5",
+                                              "valve.proportional_band_kPa=10"]),
+    ("old bracket slowest (10 / 20 / 50 kPa)", ["valve.dead_time_ms=10",
+                                                "valve.valve_time_constant_ms=20",
+                                                "valve.proportional_band_kPa=50"]),
+    ("fast end, ITV2000 class, instant loop", ITV2000 + ["valve.proportional_band_kPa=250"]),
+    ("fast end, ITV2000 class, delayed loop at the outlet",
+     ITV2000 + LOOP + ["valve.proportional_band_kPa=250"]),
+    ("slow end, ITV1000 class, instant loop", ITV1000 + ["valve.proportional_band_kPa=380"]),
+    ("slow end, ITV1000 class, delayed loop at the outlet",
+     ITV1000 + LOOP + ["valve.proportional_band_kPa=380"]),
+    ("delayed loop at the outlet, shipped 20 kPa band", LOOP),
+    ("delayed loop at the outlet, dead time 1000 ms, band 250 kPa",
+     LOOP + ["valve.dead_time_ms=1000", "valve.proportional_band_kPa=250"]),
+]
+
+
+def rise(pamsim, overrides):
+    """(rise, swing) [kPa] of the agonist's chamber pressure after the impact."""
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "run")
+        cmd = [pamsim, "run", "scenarios/drop_mass_passive.toml", "--out", out]
+        for o in overrides:
+            cmd += ["--set", o]
+        if subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode != 0:
+            sys.exit(f"regulator_loop.py: {' '.join(cmd)} failed")
+        with open(os.path.join(out, "summary.json")) as f:
+            impact = json.load(f)["impact_time_s"]
+        with open(os.path.join(out, "trajectory.csv")) as f:
+            rows = [(float(r["time_s"]), float(r["p_ago_MPa"]))
+                    for r in csv.DictReader(f)]
+    at = min(rows, key=lambda r: abs(r[0] - impact))[1]
+    window = [p for t, p in rows if impact <= t <= impact + 0.3]
+    return (max(window) - at) * 1e3, (max(window) - min(window)) * 1e3
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--pamsim", default="build/src/sim/pamsim")
+    args = ap.parse_args()
+    print("| regulator | rise at impact [kPa] | swing in 0.3 s [kPa] |")
+    print("| --- | --- | --- |")
+    for label, overrides in ROWS:
+        r, s = rise(args.pamsim, overrides)
+        print(f"| {label} | {r:.2f} | {s:.2f} |")
+
+
+if __name__ == "__main__":
+    main()
