@@ -18,12 +18,6 @@ constexpr double kPse540VoltPerMPa = 4.0;
 
 }  // namespace
 
-double standard_normal(std::mt19937_64& rng) {
-  // a fresh distribution per draw: no cached second value carried between sensors
-  std::normal_distribution<double> normal(0.0, 1.0);
-  return normal(rng);
-}
-
 double adc_step_v(const AdcParams& adc) {
   if (adc.bits == 0) return 0.0;
   const double levels = std::ldexp(1.0, adc.bits) - 1.0;
@@ -37,9 +31,7 @@ double adc_read(const AdcParams& adc, double v) {
   if (v >= adc.v_max_v) return adc.v_max_v;
   if (adc.bits == 0) return v;
   // round to the nearest code
-  const double step = adc_step_v(adc);
-  const double code = std::round((v - adc.v_min_v) / step);
-  return std::min(adc.v_min_v + code * step, adc.v_max_v);
+  return std::min(adc.v_min_v + quantise(v - adc.v_min_v, adc_step_v(adc)), adc.v_max_v);
 }
 
 double pse540_voltage(double p_pa) {

@@ -35,6 +35,7 @@
 
 #include "pam_actuator/pam_params.h"
 #include "reflex/gauge_hardware.h"
+#include "reflex/sensor_noise.h"
 
 namespace pamsim {
 
@@ -139,8 +140,5 @@ class FiberSensor {
   double last_encoder_m_ = 0.0;
   double length_m_ = 0.0;
 };
-
-// One standard normal draw (the single noise primitive of all sensors).
-double standard_normal(std::mt19937_64& rng);
 
 }  // namespace pamsim
