@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include "base/units.h"
 #include "reflex/checks.h"
 
 namespace pamsim {
@@ -18,6 +19,25 @@ LengthEstimatorParams estimator_params(const SensingConfig& config) {
   params.pressure_lowpass_hz = config.sensors.pressure_lowpass_hz;
   params.velocity_lowpass_hz = config.velocity_lowpass_hz;
   return params;
+}
+
+// the generators' tags (sensor_noise.h): one per source, never reused
+enum Stream : std::uint32_t { kPressureInstrument = 1, kPressureTrial = 2 };
+
+// muscle `index`'s pressure sensor as hardware, if on: its offset and gain drawn from
+// sensors.instrument_seed, its drift from the trial's seed
+std::optional<PressureHardware> pressure_hardware(const SensorConfig& s, std::uint64_t seed,
+                                                  std::uint32_t index, double dt_s) {
+  if (!s.pressure_hardware.enabled) return std::nullopt;
+  std::mt19937_64 instrument = derived_generator(s.gauge_hardware.instrument_seed,
+                                                 kPressureInstrument, index);
+  return PressureHardware(s.pressure_hardware, instrument,
+                          derived_generator(seed, kPressureTrial, index), dt_s);
+}
+
+std::optional<FiberHardware> fiber_hardware(const SensorConfig& s, double dt_s) {
+  if (!s.fiber_hardware.enabled) return std::nullopt;
+  return FiberHardware(s.fiber_hardware, dt_s);
 }
 
 }  // namespace
@@ -43,6 +63,9 @@ void validate(const SensingConfig& config) {
   require_cutoff("reflex.lowpass_hz", config.velocity_lowpass_hz, config.control_hz);
   validate(s.gauge_hardware);
   validate_calibration_length(s.gauge_hardware, config.control_hz);
+  validate(s.pressure_hardware);
+  validate(s.fiber_hardware);
+  require_positive("sensors.encoder.resolution_mm", units::m_to_mm(s.encoder.resolution_m));
 }
 
 void validate(const MuscleSensorSpec& muscle) {
@@ -63,7 +86,8 @@ void validate(const MuscleSensorSpec& muscle) {
 
 SensorSuite::SensorSuite(const SensingConfig& config,
                          const std::vector<MuscleSensorSpec>& muscles, std::uint64_t seed)
-    : rng_(seed), pressure_sensor_((validate(config), config.sensors)) {
+    : rng_(seed) {
+  validate(config);
   const double dt_s = 1.0 / config.control_hz;
   const GaugeHardwareConfig& hardware = config.sensors.gauge_hardware;
   // the built instruments: the same for every trial of a scenario, whatever its seed
@@ -71,6 +95,7 @@ SensorSuite::SensorSuite(const SensingConfig& config,
   channels_.reserve(muscles.size());
   for (const MuscleSensorSpec& muscle : muscles) {
     validate(muscle);
+    const auto index = static_cast<std::uint32_t>(channels_.size());
     // the estimator's Eq. (8): the published constants, or this gauge's calibration
     std::optional<GaugeHardware> gauge;
     StrainGaugeParams calibrated = muscle.gauge;
@@ -79,8 +104,9 @@ SensorSuite::SensorSuite(const SensingConfig& config,
       calibrated = calibrate_gauge(*gauge, hardware, dt_s, muscle.key);
     }
     channels_.push_back(Channel{
+        PressureSensor(config.sensors, pressure_hardware(config.sensors, seed, index, dt_s)),
         StrainGauge(muscle.gauge, config.sensors, std::move(gauge)),
-        FiberSensor(config.sensors, dt_s),
+        FiberSensor(config.sensors, dt_s, fiber_hardware(config.sensors, dt_s)),
         LengthEstimator(muscle.estimator, calibrated, estimator_params(config), dt_s),
         LowpassFilter(config.velocity_lowpass_hz, dt_s)});
   }
@@ -93,7 +119,7 @@ void SensorSuite::sample(const std::vector<MuscleTruth>& truth,
     MuscleReading& r = (*readings)[j];
 
     // sensors, in a fixed order: pressure, gauge, fiber
-    const PressureReading pressure = pressure_sensor_.sample(truth[j].pressure_pa, rng_);
+    const PressureReading pressure = ch.pressure.sample(truth[j].pressure_pa, rng_);
     r.gauge_v = ch.gauge.sample(truth[j].force_n, rng_);
     r.fiber_rate_m_s = ch.fiber.sample(truth[j].length_m, rng_);
     r.pressure_sensor_v = pressure.voltage_v;

@@ -4,7 +4,8 @@
 // Per tick, muscle by muscle in the model's actuator order (so the noise stream, and
 // therefore a trial, is fixed by the seed alone):
 //   1. sample the PSE540 pressure sensor, the strain gauge and the fiber sensor (sensors.h),
-//      in that order, each drawing one normal from the suite's std::mt19937_64;
+//      in that order, each drawing one normal from the suite's std::mt19937_64 (sensors built
+//      as hardware draw their own errors from generators of their own, sensor_noise.h);
 //   2. estimate length and velocity from pressure and force, Eq. (9)-(11)
 //      (length_estimator.h), with the muscle's estimator law;
 //   3. low-pass the fiber rate at reflex.lowpass_hz (the velocity a fiber reflex uses).
@@ -65,13 +66,13 @@ class SensorSuite {
 
  private:
   struct Channel {
+    PressureSensor pressure;
     StrainGauge gauge;
     FiberSensor fiber;
     LengthEstimator estimator;
     LowpassFilter fiber_velocity_filter;
   };
   std::mt19937_64 rng_;
-  PressureSensor pressure_sensor_;
   std::vector<Channel> channels_;
 };
 

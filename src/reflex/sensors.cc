@@ -18,10 +18,8 @@ constexpr double kPse540VoltPerMPa = 4.0;
 
 }  // namespace
 
-double standard_normal(std::mt19937_64& rng) {
-  // a fresh distribution per draw: no cached second value carried between sensors
-  std::normal_distribution<double> normal(0.0, 1.0);
-  return normal(rng);
+double encoder_read_m(const EncoderConfig& encoder, double length_m) {
+  return encoder.enabled ? quantise(length_m, encoder.resolution_m) : length_m;
 }
 
 double adc_step_v(const AdcParams& adc) {
@@ -37,9 +35,7 @@ double adc_read(const AdcParams& adc, double v) {
   if (v >= adc.v_max_v) return adc.v_max_v;
   if (adc.bits == 0) return v;
   // round to the nearest code
-  const double step = adc_step_v(adc);
-  const double code = std::round((v - adc.v_min_v) / step);
-  return std::min(adc.v_min_v + code * step, adc.v_max_v);
+  return std::min(adc.v_min_v + quantise(v - adc.v_min_v, adc_step_v(adc)), adc.v_max_v);
 }
 
 double pse540_voltage(double p_pa) {
@@ -50,14 +46,18 @@ double pse540_pressure_pa(double v) {
   return units::mpa_to_pa((v - kPse540ZeroV) / kPse540VoltPerMPa);
 }
 
-PressureSensor::PressureSensor(const SensorConfig& config)
+PressureSensor::PressureSensor(const SensorConfig& config,
+                               std::optional<PressureHardware> hardware)
     : noise_pa_(config.noise_scale * units::mpa_to_pa(config.pressure_noise_mpa)),
       bias_pa_(units::mpa_to_pa(config.pressure_bias_mpa)),
-      adc_{config.pressure_adc_bits, config.pressure_adc_min_v, config.pressure_adc_max_v} {}
+      adc_{config.pressure_adc_bits, config.pressure_adc_min_v, config.pressure_adc_max_v},
+      hardware_(std::move(hardware)) {}
 
-PressureReading PressureSensor::sample(double p_true_pa, std::mt19937_64& rng) const {
-  // sensed pressure: truth + bias + random noise
-  const double p_sensed = p_true_pa + bias_pa_ + noise_pa_ * standard_normal(rng);
+PressureReading PressureSensor::sample(double p_true_pa, std::mt19937_64& rng) {
+  // sensed pressure: truth (or what the hardware makes of it) + bias + random noise
+  const double p_in = hardware_ ? hardware_->sensed_pa(p_true_pa) : p_true_pa;
+  double p_sensed = p_in + bias_pa_ + noise_pa_ * standard_normal(rng);
+  if (hardware_) p_sensed = hardware_->rounded_pa(p_sensed);
   // analog output, then the ADC (saturating at its range)
   PressureReading reading;
   reading.voltage_v = adc_read(adc_, pse540_voltage(p_sensed));
@@ -79,24 +79,31 @@ double StrainGauge::sample(double f_true_n, std::mt19937_64& rng) {
   return adc_read(adc_, clean + noise_v_ * standard_normal(rng));
 }
 
-FiberSensor::FiberSensor(const SensorConfig& config, double sample_period_s)
+FiberSensor::FiberSensor(const SensorConfig& config, double sample_period_s,
+                         std::optional<FiberHardware> hardware)
     : noise_m_s_(config.noise_scale * units::mm_to_m(config.fiber_noise_mm_s)),
-      dt_s_(sample_period_s) {
+      dt_s_(sample_period_s),
+      encoder_(config.encoder),
+      hardware_(std::move(hardware)) {
   assert(sample_period_s > 0.0);
 }
 
 double FiberSensor::sample(double encoder_length_m, std::mt19937_64& rng) {
   const double noise = noise_m_s_ * standard_normal(rng);
+  if (!started_) start_m_ = encoder_length_m;
+  // the length the fabric reads: the truth, or its reading of the displacement since start
+  const double read_m = hardware_ ? start_m_ + hardware_->reading_m(encoder_length_m - start_m_)
+                                  : encoder_length_m;
   // first sample: calibrate the absolute length to the encoder
   if (!started_) {
     started_ = true;
-    last_encoder_m_ = encoder_length_m;
-    length_m_ = encoder_length_m;
+    last_read_m_ = read_m;
+    length_m_ = encoder_read_m(encoder_, encoder_length_m);
     return noise;
   }
-  // true mean rate over the last period, plus noise, integrated to a length
-  const double rate = (encoder_length_m - last_encoder_m_) / dt_s_ + noise;
-  last_encoder_m_ = encoder_length_m;
+  // mean rate of the reading over the last period, plus noise, integrated to a length
+  const double rate = (read_m - last_read_m_) / dt_s_ + noise;
+  last_read_m_ = read_m;
   length_m_ += rate * dt_s_;
   return rate;
 }

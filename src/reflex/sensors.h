@@ -3,6 +3,11 @@
 // bridge (Eq. (8)), the conductive-fiber sensor of Hitzmann et al. (rate of length change),
 // and the linear encoder (ground truth: PlantSample's length, used only to calibrate the
 // fiber sensor at the start and logged by the simulation).
+// Each may be built as hardware, off by default (the errors of a real instrument, sized from
+// its datasheet or the literature, each file says which): the gauge (gauge_hardware.h),
+// the pressure sensor (pressure_hardware.h), the fiber sensor (fiber_hardware.h) and the
+// encoder's resolution (EncoderConfig below). Their random draws come from generators of
+// their own (sensor_noise.h), so the stream below is the same with them on or off.
 //
 // Noise is drawn from a std::mt19937_64 the caller owns (the SensorSuite seeds one per
 // trial from the trial seed), so a trial is deterministic. Every sample() call draws exactly
@@ -13,7 +18,9 @@
 //  - pressure_noise_mpa = 0.001 MPa (1 kPa, 0.1 % F.S.) random noise per sample. The PSE540's
 //    +/-2 % F.S. accuracy is a slowly varying offset, not sample-to-sample noise: it is the
 //    separate pressure_bias_mpa (default 0; a bias shifts the length estimate by about
-//    66 mm/MPa at the operating point but cancels in the velocity, Eq. (11)). Its repeatability
+//    66 mm/MPa at the operating point but cancels in the velocity, Eq. (11)), or, drawn per
+//    instrument with its gain error, hysteresis, response and drift, sensors.pressure.*
+//    (pressure_hardware.h). Its repeatability
 //    is +/-0.2 % F.S., so random noise of half that is a realistic level.
 //  - pressure ADC: 12 bit over 0-5 V (a microcontroller or DAQ input): 1.22 mV = 0.31 kPa
 //    per step, well below the noise.
@@ -34,9 +41,25 @@
 #include <random>
 
 #include "pam_actuator/pam_params.h"
+#include "reflex/fiber_hardware.h"
 #include "reflex/gauge_hardware.h"
+#include "reflex/pressure_hardware.h"
+#include "reflex/sensor_noise.h"
 
 namespace pamsim {
+
+// The linear encoder (seeds/000 Sec. III-A: a MUTOH DS-025) as counts of `resolution_m`:
+// it reads round(l / resolution) resolution (sensor_noise.h's quantise). Keys
+// sensors.encoder.model ("ideal" | "counts") and sensors.encoder.resolution_mm (> 0). The
+// DS-025's resolution could not be retrieved in this session: 0.01 mm is an ASSUMPTION, the
+// usual count of digital-scale linear encoders of its class (README row). Where pamsim uses
+// the encoder's reading: the fiber sensor's calibration at its first sample (FiberSensor);
+// the logged length_<m>_mm stays the plant's true length.
+struct EncoderConfig {
+  bool enabled = false;
+  double resolution_m = 1e-5;
+};
+double encoder_read_m(const EncoderConfig& encoder, double length_m);
 
 // Scenario keys sensors.* (paper units, named). Checked by validate() in sensing.h.
 struct SensorConfig {
@@ -67,6 +90,11 @@ struct SensorConfig {
   // sensors.gauge.* and sensors.instrument_seed: the gauge as hardware (gauge_hardware.h);
   // off by default (Eq. (8) exact, the published q and V_base)
   GaugeHardwareConfig gauge_hardware;
+  // sensors.pressure.*, sensors.fiber.*, sensors.encoder.*: the other sensors as hardware,
+  // each off by default
+  PressureHardwareConfig pressure_hardware;
+  FiberHardwareConfig fiber_hardware;
+  EncoderConfig encoder;
 };
 
 // An analog-to-digital converter: saturates at [v_min, v_max] and rounds to the nearest of
@@ -90,16 +118,19 @@ struct PressureReading {
   double pressure_pa = 0.0;  // pse540_pressure_pa(voltage_v)
 };
 
-// Reading = ADC(PSE540(p + bias + noise)), noise ~ N(0, pressure_noise_mpa^2).
+// Reading = ADC(PSE540(p + bias + noise)), noise ~ N(0, pressure_noise_mpa^2); with its
+// hardware (pressure_hardware.h), ADC(PSE540(round(hw(p) + bias + noise))).
 class PressureSensor {
  public:
-  explicit PressureSensor(const SensorConfig& config);
-  PressureReading sample(double p_true_pa, std::mt19937_64& rng) const;
+  explicit PressureSensor(const SensorConfig& config,
+                          std::optional<PressureHardware> hardware = std::nullopt);
+  PressureReading sample(double p_true_pa, std::mt19937_64& rng);
 
  private:
   double noise_pa_;
   double bias_pa_;
   AdcParams adc_;
+  std::optional<PressureHardware> hardware_;
 };
 
 // Strain gauge on a quarter bridge, Eq. (8): V = q f + V_base, or, given its hardware
@@ -124,10 +155,13 @@ class StrainGauge {
 // carries no velocity), plus N(0, fiber_noise_mm_s^2); 0 + noise at the first sample. Its
 // absolute length is the rate integrated from the encoder reading at the first sample, as
 // the paper calibrated it (Sec. IV-C): l_j = l_{j-1} + rate_j dt, so Eq. (11) applied to
-// that length gives back the rate.
+// that length gives back the rate. With its hardware (fiber_hardware.h) the rate is that of
+// the fabric's reading of the displacement from the first sample's length; with the encoder
+// as counts (EncoderConfig) the calibration is the encoder's count, not the true length.
 class FiberSensor {
  public:
-  FiberSensor(const SensorConfig& config, double sample_period_s);
+  FiberSensor(const SensorConfig& config, double sample_period_s,
+              std::optional<FiberHardware> hardware = std::nullopt);
   // One sample; encoder_length_m is the true length at this tick.
   double sample(double encoder_length_m, std::mt19937_64& rng);   // rate [m/s]
   double length_m() const { return length_m_; }                   // integrated [m]
@@ -135,12 +169,12 @@ class FiberSensor {
  private:
   double noise_m_s_;
   double dt_s_;
+  EncoderConfig encoder_;
+  std::optional<FiberHardware> hardware_;
   bool started_ = false;
-  double last_encoder_m_ = 0.0;
+  double start_m_ = 0.0;          // the true length at the first sample
+  double last_read_m_ = 0.0;   // the length the fabric read at the last sample
   double length_m_ = 0.0;
 };
-
-// One standard normal draw (the single noise primitive of all sensors).
-double standard_normal(std::mt19937_64& rng);
 
 }  // namespace pamsim

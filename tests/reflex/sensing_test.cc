@@ -257,7 +257,7 @@ TEST(SensorSuite, DrawsNoiseInTheDocumentedOrder) {
   const SensingConfig config;
   SensorSuite suite(config, plant.muscles, 42);
   std::mt19937_64 rng(42);
-  const PressureSensor pressure(config.sensors);
+  PressureSensor pressure(config.sensors);
   std::vector<StrainGauge> gauges;
   std::vector<FiberSensor> fibers;
   for (const MuscleSensorSpec& m : plant.muscles) {
@@ -344,6 +344,12 @@ std::vector<BadSensing> bad_sensing_values() {
       {"sensors.noise_scale", "-1", [](C c) { c.sensors.noise_scale = -1.0; }},
       {"sensors.noise_scale", "1001", [](C c) { c.sensors.noise_scale = 1001.0; }},
       {"sensors.noise_scale", "nan", [](C c) { c.sensors.noise_scale = kNaN; }},
+      // the sensors as hardware (issue 25, item 4): one per file, the rest in their own tests
+      {"sensors.encoder.resolution_mm", "0", [](C c) { c.sensors.encoder.resolution_m = 0.0; }},
+      {"sensors.encoder.resolution_mm", "nan", [](C c) { c.sensors.encoder.resolution_m = kNaN; }},
+      {"sensors.pressure.dynamic_bias_correlation_time_s", "0",
+       [](C c) { c.sensors.pressure_hardware.dynamic_bias_correlation_time_s = 0.0; }},
+      {"sensors.fiber.span_mm", "-1", [](C c) { c.sensors.fiber_hardware.span_m = -1e-3; }},
       {"reflex.lowpass_hz", "-1", [](C c) { c.velocity_lowpass_hz = -1.0; }},
       {"reflex.lowpass_hz", "60", [](C c) { c.velocity_lowpass_hz = 60.0; }},
       {"reflex.lowpass_hz", "nan", [](C c) { c.velocity_lowpass_hz = kNaN; }},

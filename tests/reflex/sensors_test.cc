@@ -58,7 +58,7 @@ TEST(Adc, SaturatesAtItsRange) {
 TEST(PressureSensor, NoiseFreeReadingAndSaturation) {
   std::mt19937_64 rng(1);
   SensorConfig c = noise_free();
-  const PressureSensor sensor(c);
+  PressureSensor sensor(c);
   const PressureReading r = sensor.sample(0.4e6, rng);
   EXPECT_NEAR(r.voltage_v, 2.6, 0.5 * adc_step_v(AdcParams{12, 0.0, 5.0}) + 1e-12);
   // one ADC step is 5/4095 V = 305 Pa
@@ -77,7 +77,7 @@ TEST(PressureSensor, NoiseStdMatchesConfigured) {
   SensorConfig c;
   c.pressure_noise_mpa = 0.002;
   c.pressure_adc_bits = 0;
-  const PressureSensor sensor(c);
+  PressureSensor sensor(c);
   std::mt19937_64 rng(42);
   const int n = 40000;
   double sum = 0.0;
@@ -185,7 +185,7 @@ TEST(Sensors, DeterministicPerSeed) {
   const SensorConfig c;   // default noise
   auto run = [&](std::uint64_t seed) {
     std::mt19937_64 rng(seed);
-    const PressureSensor p(c);
+    PressureSensor p(c);
     StrainGauge g(StrainGaugeParams{2.25e-3, 0.0}, c);
     FiberSensor f(c, 0.01);
     std::vector<double> out;

@@ -204,6 +204,27 @@ TEST(ScenarioTest, EveryBadValueNamesItsKey) {
       {"sensors.gauge.calibration.max_N=0", "sensors.gauge.calibration.max_N must be"},
       {"sensors.gauge.calibration.steps=0", "sensors.gauge.calibration.steps must be"},
       {"sensors.gauge.calibration.hold_s=-2", "sensors.gauge.calibration.hold_s must be"},
+      // the pressure sensor, fiber sensor and encoder as hardware (issue 25, item 4)
+      {"sensors.pressure.model=\"pse530\"", "sensors.pressure.model must be \"ideal\" or \"pse540\""},
+      {"sensors.pressure.bias_mean_MPa=nan", "sensors.pressure.bias_mean_MPa must be"},
+      {"sensors.pressure.bias_stddev_MPa=-0.001", "sensors.pressure.bias_stddev_MPa must be"},
+      {"sensors.pressure.gain_error_stddev_pct=-1", "sensors.pressure.gain_error_stddev_pct must be"},
+      {"sensors.pressure.dynamic_bias_stddev_MPa=-0.001", "sensors.pressure.dynamic_bias_stddev_MPa must be"},
+      {"sensors.pressure.dynamic_bias_correlation_time_s=0",
+       "sensors.pressure.dynamic_bias_correlation_time_s must be"},
+      {"sensors.pressure.dynamic_bias_correlation_time_s=nan",
+       "sensors.pressure.dynamic_bias_correlation_time_s must be"},
+      {"sensors.pressure.hysteresis_MPa=-0.002", "sensors.pressure.hysteresis_MPa must be"},
+      {"sensors.pressure.response_time_ms=-1", "sensors.pressure.response_time_ms must be"},
+      {"sensors.pressure.precision_MPa=-0.001", "sensors.pressure.precision_MPa must be"},
+      {"sensors.fiber.model=\"knit\"", "sensors.fiber.model must be \"ideal\" or \"fabric\""},
+      {"sensors.fiber.nonlinearity_pct=nan", "sensors.fiber.nonlinearity_pct must be"},
+      {"sensors.fiber.span_mm=0", "sensors.fiber.span_mm must be"},
+      {"sensors.fiber.creep_weights=[-0.1]", "sensors.fiber.creep_weights[0] must be >= 0"},
+      {"sensors.fiber.creep_times_s=[0]", "sensors.fiber.creep_times_s[0] must be > 0"},
+      {"sensors.fiber.creep_times_s=[1, 2]", "sensors.fiber.creep_times_s must list"},
+      {"sensors.encoder.model=\"optical\"", "sensors.encoder.model must be \"ideal\" or \"counts\""},
+      {"sensors.encoder.resolution_mm=0", "sensors.encoder.resolution_mm must be > 0"},
       {"sensors.instrument_seed=-1", "sensors.instrument_seed must be"},
       {"valve.dead_time_ms=-1", "valve.dead_time_ms"},
       // a time step that makes an uncountable or endless trial (issue 14)
@@ -279,6 +300,28 @@ TEST(ScenarioTest, TheGaugeAsHardwareIsCalibratedAndReadsTheForce) {
   EXPECT_EQ(again.trajectory.at(tr.rows() - 1, meas), tr.at(tr.rows() - 1, meas));
   const TrialResult other = run_trial(arm, sc, 2);
   EXPECT_EQ(other.trajectory.at(0, meas), tr.at(0, meas));
+}
+
+// The pressure sensor, fiber sensor and encoder as hardware reach the trial: the plant is
+// untouched (its true length), the estimate and the fiber's rate read the hardware.
+TEST(ScenarioTest, TheSensorsAsHardwareReachTheTrial) {
+  const std::vector<std::string> base = {"sim.duration_s=1.2"};
+  std::vector<std::string> on = base;
+  on.insert(on.end(), {"sensors.pressure.model=\"pse540\"", "sensors.fiber.model=\"fabric\"",
+                       "sensors.encoder.model=\"counts\""});
+  const Scenario ideal = load_scenario(kScenario, base), built = load_scenario(kScenario, on);
+  EXPECT_TRUE(built.sensing.sensors.pressure_hardware.enabled);
+  EXPECT_TRUE(built.sensing.sensors.fiber_hardware.enabled);
+  EXPECT_TRUE(built.sensing.sensors.encoder.enabled);
+  const TrialResult a = run_trial(load_trial_model(ideal), ideal, 1);
+  const TrialResult b = run_trial(load_trial_model(built), built, 1);
+  ASSERT_EQ(b.summary.status, "ok") << b.summary.message;
+  const Trajectory& ta = a.trajectory;
+  const Trajectory& tb = b.trajectory;
+  const std::size_t row = ta.rows() / 2;
+  // before the drop (1 s) the plant sees the same commands; the estimate does not
+  EXPECT_EQ(ta.at(row, ta.column("length_ago_mm")), tb.at(row, tb.column("length_ago_mm")));
+  EXPECT_NE(ta.at(row, ta.column("length_est_ago_mm")), tb.at(row, tb.column("length_est_ago_mm")));
 }
 
 TEST(ScenarioTest, UnknownKeyInTheFileIsRefusedByName) {

@@ -1,6 +1,6 @@
 // scenario_file.cc: see scenario_file.h. The top level (seed, model, sim, valve, controller,
-// reflex, sensors, metrics); muscles and events are read by scenario_muscles.cc and
-// scenario_events.cc.
+// reflex, metrics); muscles, events and sensors are read by scenario_muscles.cc,
+// scenario_events.cc and scenario_sensors.cc.
 #include "sim/io/scenario_file.h"
 
 #include <algorithm>
@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <map>
 
-#include "base/enum_names.h"
 #include "base/toml_file.h"
 #include "base/units.h"
 #include "reflex/controller_registry.h"
@@ -144,77 +143,6 @@ void read_model(ConfigReader& in, Scenario* sc) {
   sc->valve_model = parse_valve_model(valve, in.name() + ": valve.model");
 
   read_valve(in, valve, sc);
-}
-
-// an ADC's bit count, refused before an int could wrap it into range
-int read_bits(ConfigReader& in, const std::string& key, int fallback) {
-  const std::int64_t bits = in.get_int(key, fallback);
-  in.check(bits >= 0 && bits <= 64, key, "must be 0 (no ADC) or a bit count, got " +
-                                             std::to_string(bits));
-  return static_cast<int>(bits);
-}
-
-constexpr EnumName<bool> kGaugeModels[] = {{false, "linear"}, {true, "bridge"}};
-
-// a length key in mm, kept in m
-double get_mm(ConfigReader& in, const std::string& key, double fallback_m) {
-  return units::mm_to_m(in.get_double(key, units::m_to_mm(fallback_m)));
-}
-
-// sensors.gauge.* and sensors.instrument_seed: the gauge as hardware (reflex/gauge_hardware.h)
-void read_gauge_hardware(ConfigReader& in, GaugeHardwareConfig* g) {
-  const std::string model = in.get_string("sensors.gauge.model", "linear");
-  g->enabled = parse_name(kGaugeModels, model, in.where("sensors.gauge.model"));
-  const std::string b = "sensors.gauge.";
-  g->bridge.excitation_v = in.get_double(b + "excitation_V", g->bridge.excitation_v);
-  g->bridge.gauge_factor = in.get_double(b + "gauge_factor", g->bridge.gauge_factor);
-  g->bridge.nominal_ohm = in.get_double(b + "nominal_Ohm", g->bridge.nominal_ohm);
-  g->bridge.tolerance_pct = in.get_double(b + "tolerance_pct", g->bridge.tolerance_pct);
-  GaugeBoardParams& board = g->board;
-  board.youngs_modulus_pa = units::mpa_to_pa(in.get_double(
-      b + "board.youngs_modulus_MPa", units::pa_to_mpa(board.youngs_modulus_pa)));
-  board.width_m = get_mm(in, b + "board.width_mm", board.width_m);
-  board.thickness_m = get_mm(in, b + "board.thickness_mm", board.thickness_m);
-  board.gauge_position_m = get_mm(in, b + "board.gauge_position_mm", board.gauge_position_m);
-  board.contact_position_m = get_mm(in, b + "board.contact_position_mm", board.contact_position_m);
-  const std::vector<double> weights = in.get_double_list(b + "board.creep_weights", {});
-  const std::vector<double> times = in.get_double_list(b + "board.creep_times_s", {});
-  in.check(weights.size() == times.size(), b + "board.creep_times_s",
-           "must list one time per weight (" + std::to_string(weights.size()) + "), got " +
-               std::to_string(times.size()));
-  g->creep.clear();
-  for (std::size_t i = 0; i < weights.size(); ++i) g->creep.push_back({weights[i], times[i]});
-  g->calibration_max_n = in.get_double(b + "calibration.max_N", g->calibration_max_n);
-  const std::int64_t steps = in.get_int(b + "calibration.steps", g->calibration_steps);
-  in.check(steps >= 1 && steps <= 1000, b + "calibration.steps",
-           "must be within [1, 1000], got " + std::to_string(steps));
-  g->calibration_steps = static_cast<int>(steps);
-  g->calibration_hold_s = in.get_double(b + "calibration.hold_s", g->calibration_hold_s);
-  const std::int64_t seed = in.get_int("sensors.instrument_seed", 1);
-  in.check(seed >= 0, "sensors.instrument_seed", "must be >= 0, got " + std::to_string(seed));
-  g->instrument_seed = static_cast<std::uint64_t>(seed);
-}
-
-void read_sensors(ConfigReader& in, Scenario* sc) {
-  SensorConfig& s = sc->sensing.sensors;
-  s.pressure_noise_mpa = in.get_double("sensors.pressure_noise_MPa", s.pressure_noise_mpa);
-  s.pressure_bias_mpa = in.get_double("sensors.pressure_bias_MPa", s.pressure_bias_mpa);
-  s.pressure_adc_bits = read_bits(in, "sensors.pressure_adc_bits", s.pressure_adc_bits);
-  s.pressure_adc_min_v = in.get_double("sensors.pressure_adc_min_V", s.pressure_adc_min_v);
-  s.pressure_adc_max_v = in.get_double("sensors.pressure_adc_max_V", s.pressure_adc_max_v);
-  s.pressure_lowpass_hz = in.get_double("sensors.pressure_lowpass_hz", s.pressure_lowpass_hz);
-  s.gauge_noise_v = in.get_double("sensors.gauge_noise_V", s.gauge_noise_v);
-  s.gauge_adc_bits = read_bits(in, "sensors.gauge_adc_bits", s.gauge_adc_bits);
-  s.gauge_adc_min_v = in.get_double("sensors.gauge_adc_min_V", s.gauge_adc_min_v);
-  s.gauge_adc_max_v = in.get_double("sensors.gauge_adc_max_V", s.gauge_adc_max_v);
-  s.fiber_noise_mm_s = in.get_double("sensors.fiber_noise_mm_s", s.fiber_noise_mm_s);
-  s.noise_scale = in.get_double("sensors.noise_scale", s.noise_scale);
-  read_gauge_hardware(in, &s.gauge_hardware);
-  sc->sensing.control_hz = sc->control_hz;   // velocity_lowpass_hz: the controller's reader
-  in_file(in, [&] {
-    validate(sc->sensing);
-    return 0;
-  });
 }
 
 // controller.kind, then the kind's own keys (reflex/controller_registry.h)

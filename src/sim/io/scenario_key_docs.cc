@@ -146,7 +146,30 @@ std::vector<KeyDoc> gauge_hardware_docs() {
       {"sensors.gauge.calibration.max_N", "N", "50.0", "> 0", "the static calibration's largest load"},
       {"sensors.gauge.calibration.steps", "", "10", "[1, 1000]", "its load steps up (and as many down)"},
       {"sensors.gauge.calibration.hold_s", "s", "2.0", "[0, 3600]", "how long each load is held before it is read"},
-      {"sensors.instrument_seed", "", "1", ">= 0", "which built instruments (bridge arms): fixed across trials"},
+      {"sensors.instrument_seed", "", "1", ">= 0", "which built instruments (bridge arms, pressure sensors' offsets and gains): fixed across trials"},
+  };
+}
+
+// the pressure sensor, fiber sensor and encoder as hardware (reflex/pressure_hardware.h,
+// reflex/fiber_hardware.h, reflex/sensors.h)
+std::vector<KeyDoc> sensor_hardware_docs() {
+  return {
+      {"sensors.pressure.model", "", "\"ideal\"", "\"ideal\" | \"pse540\"", "the pressure sensor exact (+ noise), or the PSE540 class's offset, gain, hysteresis, response and drift"},
+      {"sensors.pressure.bias_mean_MPa", "MPa", "0.0", "finite", "mean of each sensor's offset, drawn once per instrument"},
+      {"sensors.pressure.bias_stddev_MPa", "MPa", "0.0047", ">= 0", "spread of each sensor's offset (ASSUMPTION: +-2 % F.S. as 3 sigma, half of it zero)"},
+      {"sensors.pressure.gain_error_stddev_pct", "%", "0.47", "[0, 50]", "spread of each sensor's gain error (ASSUMPTION: the other half)"},
+      {"sensors.pressure.dynamic_bias_stddev_MPa", "MPa", "4e-04", ">= 0", "stationary SD of the zero's Gauss-Markov drift, drawn per trial (ASSUMPTION)"},
+      {"sensors.pressure.dynamic_bias_correlation_time_s", "s", "3600.0", "> 0", "that drift's correlation time"},
+      {"sensors.pressure.hysteresis_MPa", "MPa", "0.002", ">= 0", "full width of the rising/falling loop (ASSUMPTION: the 0.2 % F.S. repeatability)"},
+      {"sensors.pressure.response_time_ms", "ms", "1.0", ">= 0", "0-90 % rise of the first-order response (ASSUMPTION)"},
+      {"sensors.pressure.precision_MPa", "MPa", "0.0", ">= 0 (0: none)", "the output rounded to this step (Gazebo's precision; the ADC quantises too)"},
+      {"sensors.fiber.model", "", "\"ideal\"", "\"ideal\" | \"fabric\"", "the fiber sensor's rate exact (+ noise), or the fabric's nonlinearity and creep"},
+      {"sensors.fiber.nonlinearity_pct", "%", "5.0", "(-100, 100)", "the reading's error at span_mm from the calibration length (ASSUMPTION)"},
+      {"sensors.fiber.span_mm", "mm", "20.0", "> 0", "the displacement nonlinearity_pct refers to"},
+      {"sensors.fiber.creep_weights", "", "[0.05]", "each >= 0", "the fabric's Prony creep weights (ASSUMPTION)"},
+      {"sensors.fiber.creep_times_s", "s", "[10.0]", "each > 0, one per weight", "the fabric's Prony retardation times"},
+      {"sensors.encoder.model", "", "\"ideal\"", "\"ideal\" | \"counts\"", "the linear encoder exact, or counting resolution_mm steps"},
+      {"sensors.encoder.resolution_mm", "mm", "0.01", "> 0", "the encoder's count (ASSUMPTION: DS-025 class); used by the fiber's calibration"},
   };
 }
 
@@ -169,7 +192,8 @@ std::vector<KeyDoc> controller_docs() {
 std::vector<KeyDoc> all_docs() {
   std::vector<KeyDoc> docs;
   for (const std::vector<KeyDoc>& part : {model_docs(), event_docs(), controller_docs(),
-                                          sensor_docs(), gauge_hardware_docs()}) {
+                                          sensor_docs(), gauge_hardware_docs(),
+                                          sensor_hardware_docs()}) {
     docs.insert(docs.end(), part.begin(), part.end());
   }
   return docs;

@@ -19,4 +19,7 @@ void read_events(ConfigReader& in, Scenario* sc);
 // are placeholders.
 void read_muscles(ConfigReader& in, Scenario* sc, bool lines_needed);
 
+// sensors.*, validated with the sensing (scenario_sensors.cc); sim.control_hz read first
+void read_sensors(ConfigReader& in, Scenario* sc);
+
 }  // namespace pamsim
