@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <toml++/toml.h>
 
@@ -62,6 +63,22 @@ struct Section {
     const double v = number(k);
     if (!(v >= 0.0)) fail(k, "must be >= 0 " + unit + ", got " + format_number(v));
     return v;
+  }
+
+  // A list of finite numbers, [] when absent (a single value is not a list).
+  std::vector<double> numbers(const std::string& k) const {
+    const toml::node* n = table.get(k);
+    if (n == nullptr) return {};
+    const toml::array* list = n->as_array();
+    if (list == nullptr) fail(k, "must be a list of numbers");
+    std::vector<double> out;
+    for (const toml::node& item : *list) {
+      const std::optional<double> v = item.value<double>();
+      if (!v || item.is_boolean()) fail(k, "must be a list of numbers");
+      if (!std::isfinite(*v)) fail(k, "must be finite, got " + format_number(*v));
+      out.push_back(*v);
+    }
+    return out;
   }
 
   std::string text(const std::string& k, const std::string& fallback) const {

@@ -282,14 +282,13 @@ double avbdl_force(const AvbdlParams& p, double p_pa, double length_m,
 }
 
 double avbdl_line_pull(const AvbdlParams& p, double p_pa, double taut_length_m,
-                       double length_rate_m_per_s) {
+                       const FrictionInput& friction) {
   // Eq. (25) plus the friction term at the line's length, held at the law's last length
   // past avbdl_max_length; a muscle at its full contraction (or pushing) pulls nothing
   const Shape shape = shape_of(p);
   const double l = std::min(taut_length_m, max_length(shape));
   if (l <= min_length(shape)) return 0.0;
-  const double f = static_force(p, shape, p_pa, l) +
-                   avbdl_smooth_friction_force(p, p_pa, l, length_rate_m_per_s);
+  const double f = static_force(p, shape, p_pa, l) + avbdl_friction(p, p_pa, l, friction);
   return std::max(f, 0.0);
 }
 

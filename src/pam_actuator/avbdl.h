@@ -48,8 +48,13 @@
 // quasi-static tensile tests); avbdl_smooth_friction_force, used by avbdl_force, is
 // tanh(v / v_s) F_f(direction of v): continuous in v (zero at rest, no jump at reversal) for
 // ODE solvers and MuJoCo steps; v_s sets how fast it saturates. Its price: no stiction, a
-// muscle at rest carries no friction. Friction defaults to zero (no published values):
-// fit it from a measured loop, whose width at (p, eps) is F_f,ext + F_f,con.
+// muscle at rest carries no friction, so it creeps to the friction-free equilibrium. The
+// Maxwell-slip form (FrictionModel::kMaxwellSlip, maxwell_slip.h, issue 25 item 2) sticks
+// instead: its elements hold their shares of F_f,ext (stretched side) and F_f,con
+// (shortened side) as the braid's contacts deflect, slip beyond their breakaway travel,
+// and keep what they hold when the muscle stops; their state is the trial's. Friction
+// defaults to zero (no published values): fit it from a measured loop, whose width at
+// (p, eps) is F_f,ext + F_f,con in both forms.
 //
 // Domain: 2 Ld <= L < b (validate_avbdl_params makes the whole contraction range
 // [b/sqrt(3), L0] lie inside it). Outside, results are not physical.
@@ -58,6 +63,7 @@
 #include <string>
 
 #include "pam_actuator/chou_hannaford.h"
+#include "pam_actuator/maxwell_slip.h"
 #include "base/units.h"
 #include "pam_actuator/wickramatunge.h"   // StretchDirection
 
@@ -88,10 +94,16 @@ struct AvbdlFrictionCoefficients {
   double strain_area_m2 = 0.0;     // A1: growth of A0 per unit contraction strain [m^2]
 };
 
+// How the friction depends on motion: the smooth tanh(v / v_s) of the rate, or Maxwell-slip
+// elements whose state is the motion's history.
+enum class FrictionModel { kSmooth, kMaxwellSlip };
+
 struct AvbdlFriction {
   AvbdlFrictionCoefficients extension;     // while lengthening
   AvbdlFrictionCoefficients contraction;   // while shortening
   double velocity_scale_m_per_s = 1e-3;    // v_s of the tanh, > 0
+  FrictionModel model = FrictionModel::kSmooth;
+  MaxwellSlipParams slip;                  // the elements, for kMaxwellSlip
 };
 
 // Defaults: the Festo DMSP-20 as seeds/003 Sec. 2.6 prints it (D 20 mm, L 200 mm, fibre
@@ -185,18 +197,35 @@ double avbdl_friction_force(const AvbdlParams& params, double p_pa, double lengt
 double avbdl_smooth_friction_force(const AvbdlParams& params, double p_pa, double length_m,
                                    double length_rate_m_per_s);
 
+// Signed friction [N] of the Maxwell-slip form: the elements in `slip_state` (params.friction
+// .slip.count values, maxwell_slip.h) holding their shares of F_f,ext where they are
+// stretched and of F_f,con where they are shortened, both at (p, L).
+double avbdl_slip_friction_force(const AvbdlParams& params, double p_pa, double length_m,
+                                 const double* slip_state);
+
+// What the friction of either form needs at a step: the length rate (kSmooth) and the
+// Maxwell-slip elements' state at this length (kMaxwellSlip; null reads as unloaded).
+struct FrictionInput {
+  double length_rate_m_per_s = 0.0;
+  const double* slip_state = nullptr;
+};
+// Signed friction [N] of the plant's own form.
+double avbdl_friction(const AvbdlParams& params, double p_pa, double length_m,
+                      const FrictionInput& input);
+
 // The plant force [N]: avbdl_static_force + avbdl_smooth_friction_force.
 double avbdl_force(const AvbdlParams& params, double p_pa, double length_m,
                    double length_rate_m_per_s);
 
 // For a muscle on a line whose ends are `taut_length_m` apart (the co-simulation's tendon
-// length minus the line): its pull [N] >= 0 (Eq. (25) plus the friction term), zero when it is slack (at or below the braid's
-// full contraction, or pulling nothing), the law at min(taut, avbdl_max_length) otherwise;
+// length minus the line): its pull [N] >= 0 (Eq. (25) plus avbdl_friction), zero when it is
+// slack (at or below the braid's full contraction, or pulling nothing), the law at
+// min(taut, avbdl_max_length) otherwise;
 // and its own length [m]: the taut length while it pulls, else its free length (a slack
 // muscle rests at avbdl_free_length, whatever the line's ends do). Each derives the
 // muscle's shape once (these run at every physics step).
 double avbdl_line_pull(const AvbdlParams& params, double p_pa, double taut_length_m,
-                       double length_rate_m_per_s);
+                       const FrictionInput& friction);
 double avbdl_line_muscle_length(const AvbdlParams& params, double p_pa, double taut_length_m);
 
 }  // namespace pamsim

@@ -1,6 +1,6 @@
 // avbdl_friction.cc: the fibre friction term of the AVBDL plant (pamsim's addition to
-// seeds/003), see avbdl.h: its magnitude, the rate-independent force and the smooth one
-// avbdl_force adds to Eq. (25).
+// seeds/003), see avbdl.h: its magnitude, the rate-independent force, the smooth one
+// avbdl_force adds to Eq. (25), and the Maxwell-slip one.
 #include <algorithm>
 #include <cmath>
 
@@ -31,6 +31,22 @@ double avbdl_smooth_friction_force(const AvbdlParams& p, double p_pa, double len
                                                                : StretchDirection::kContraction;
   return std::tanh(length_rate_m_per_s / p.friction.velocity_scale_m_per_s) *
          avbdl_friction_magnitude(p, p_pa, length_m, direction);
+}
+
+double avbdl_slip_friction_force(const AvbdlParams& p, double p_pa, double length_m,
+                                 const double* slip_state) {
+  const double up = avbdl_friction_magnitude(p, p_pa, length_m, StretchDirection::kExtension);
+  const double down = avbdl_friction_magnitude(p, p_pa, length_m, StretchDirection::kContraction);
+  return maxwell_slip_force(p.friction.slip, slip_state, up, down);
+}
+
+double avbdl_friction(const AvbdlParams& p, double p_pa, double length_m,
+                      const FrictionInput& input) {
+  if (p.friction.model == FrictionModel::kSmooth) {
+    return avbdl_smooth_friction_force(p, p_pa, length_m, input.length_rate_m_per_s);
+  }
+  if (input.slip_state == nullptr) return 0.0;   // unloaded elements hold nothing
+  return avbdl_slip_friction_force(p, p_pa, length_m, input.slip_state);
 }
 
 }  // namespace pamsim

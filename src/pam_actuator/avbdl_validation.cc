@@ -41,6 +41,9 @@ void validate_friction(const AvbdlFriction& f, const Checker& check) {
   check.finite("friction.velocity_scale_m_per_s", f.velocity_scale_m_per_s);
   check.require(f.velocity_scale_m_per_s > 0.0, "friction.velocity_scale_m_per_s", "> 0 m/s",
                 f.velocity_scale_m_per_s);
+  if (f.model == FrictionModel::kMaxwellSlip) {
+    validate_maxwell_slip(f.slip, check.prefix + "friction.");
+  }
 }
 
 }  // namespace

@@ -2,9 +2,7 @@
 #include "pam_actuator/maxwell_slip.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
-#include <utility>
 
 #include "base/format.h"
 #include "base/input_error.h"
@@ -12,9 +10,7 @@
 namespace pamsim {
 namespace {
 
-double slip_force(const MaxwellSlipElement& e, double p_pa) {
-  return e.slip_force_n + e.slip_force_per_pa_n * std::max(p_pa, 0.0);
-}
+constexpr double kWeightSumTolerance = 1e-6;
 
 void require(bool ok, const std::string& key, const char* allowed, double value) {
   if (!ok) throw InputError(key + " must be " + allowed + ", got " + format_value(value));
@@ -22,49 +18,34 @@ void require(bool ok, const std::string& key, const char* allowed, double value)
 
 }  // namespace
 
-void validate_maxwell_slip(const std::vector<MaxwellSlipElement>& elements,
-                           const std::string& prefix) {
-  for (std::size_t i = 0; i < elements.size(); ++i) {
-    const MaxwellSlipElement& e = elements[i];
-    const std::string key = prefix + "elements[" + std::to_string(i) + "].";
-    require(std::isfinite(e.stiffness_n_per_m) && e.stiffness_n_per_m > 0.0,
-            key + "stiffness_N_per_mm", "> 0", e.stiffness_n_per_m * 1e-3);
-    require(std::isfinite(e.slip_force_n) && e.slip_force_n >= 0.0, key + "slip_force_N",
-            ">= 0", e.slip_force_n);
-    require(std::isfinite(e.slip_force_per_pa_n) && e.slip_force_per_pa_n >= 0.0,
-            key + "slip_force_N_per_MPa", ">= 0", e.slip_force_per_pa_n * 1e6);
+void validate_maxwell_slip(const MaxwellSlipParams& params, const std::string& prefix) {
+  require(params.count >= 1 && params.count <= kMaxSlipElements, prefix + "breakaway_mm",
+          "1 to 4 elements long", params.count);
+  double sum = 0.0;
+  for (int i = 0; i < params.count; ++i) {
+    const std::string index = "[" + std::to_string(i) + "]";
+    require(std::isfinite(params.breakaway_m[i]) && params.breakaway_m[i] > 0.0,
+            prefix + "breakaway_mm" + index, "> 0", params.breakaway_m[i] * 1e3);
+    require(std::isfinite(params.weight[i]) && params.weight[i] > 0.0,
+            prefix + "weights" + index, "> 0", params.weight[i]);
+    sum += params.weight[i];
+  }
+  require(std::fabs(sum - 1.0) <= kWeightSumTolerance, prefix + "weights", "summing to 1", sum);
+}
+
+void maxwell_slip_advance(const MaxwellSlipParams& params, double step_m, double* state) {
+  // stick: the spring takes the whole step; slip: the block moves, the spring stays at +-1
+  for (int i = 0; i < params.count; ++i) {
+    state[i] = std::clamp(state[i] + step_m / params.breakaway_m[i], -1.0, 1.0);
   }
 }
 
-MaxwellSlip::MaxwellSlip(std::vector<MaxwellSlipElement> elements)
-    : elements_(std::move(elements)), deflection_m_(elements_.size(), 0.0) {
-  assert(std::all_of(elements_.begin(), elements_.end(),
-                     [](const MaxwellSlipElement& e) { return e.stiffness_n_per_m > 0.0; }));
-}
-
-double MaxwellSlip::update(double position_m, double p_pa) {
-  const double step = started_ ? position_m - position_m_ : 0.0;
-  started_ = true;
-  position_m_ = position_m;
-  for (std::size_t i = 0; i < elements_.size(); ++i) {
-    // stick: the spring takes the whole step; slip: the block moves, the spring holds F_i
-    const double limit = slip_force(elements_[i], p_pa) / elements_[i].stiffness_n_per_m;
-    deflection_m_[i] = std::clamp(deflection_m_[i] + step, -limit, limit);
-  }
-  return force_n();
-}
-
-double MaxwellSlip::force_n() const {
+double maxwell_slip_force(const MaxwellSlipParams& params, const double* state, double up_n,
+                          double down_n) {
   double f = 0.0;
-  for (std::size_t i = 0; i < elements_.size(); ++i) {
-    f += elements_[i].stiffness_n_per_m * deflection_m_[i];
+  for (int i = 0; i < params.count; ++i) {
+    f += params.weight[i] * state[i] * (state[i] >= 0.0 ? up_n : down_n);
   }
-  return f;
-}
-
-double MaxwellSlip::max_force_n(double p_pa) const {
-  double f = 0.0;
-  for (const MaxwellSlipElement& e : elements_) f += slip_force(e, p_pa);
   return f;
 }
 

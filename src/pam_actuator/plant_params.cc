@@ -2,7 +2,10 @@
 #include "pam_actuator/plant_params.h"
 
 #include <cmath>
+#include <string>
+#include <vector>
 
+#include "base/enum_names.h"
 #include "base/input_error.h"
 #include "base/toml_file.h"
 #include "base/toml_section.h"
@@ -31,12 +34,49 @@ AvbdlFrictionCoefficients read_stroke(const Section& stroke) {
           units::mm2_to_m2(stroke.non_negative("A1_mm2", "mm^2"))};
 }
 
+constexpr EnumName<FrictionModel> kFrictionModels[] = {
+    {FrictionModel::kSmooth, "smooth"}, {FrictionModel::kMaxwellSlip, "maxwell_slip"}};
+
+// model = "maxwell_slip" with breakaway_mm = [...] and weights = [...], one per element
+MaxwellSlipParams read_slip(const Section& friction) {
+  const std::vector<double> breakaway_mm = friction.numbers("breakaway_mm");
+  const std::vector<double> weights = friction.numbers("weights");
+  if (breakaway_mm.empty() || breakaway_mm.size() > static_cast<std::size_t>(kMaxSlipElements)) {
+    friction.fail("breakaway_mm", "must list 1 to " + std::to_string(kMaxSlipElements) +
+                                      " breakaway travels for model = \"maxwell_slip\"");
+  }
+  if (weights.size() != breakaway_mm.size()) {
+    friction.fail("weights", "must list one weight per breakaway_mm (" +
+                                 std::to_string(breakaway_mm.size()) + "), got " +
+                                 std::to_string(weights.size()));
+  }
+  MaxwellSlipParams slip;
+  slip.count = static_cast<int>(breakaway_mm.size());
+  for (int i = 0; i < slip.count; ++i) {
+    slip.breakaway_m[i] = units::mm_to_m(breakaway_mm[i]);
+    slip.weight[i] = weights[i];
+  }
+  return slip;
+}
+
 AvbdlFriction read_friction(const Section& friction) {
-  friction.reject_unknown({"contraction", "extension", "velocity_scale_mm_s"});
+  friction.reject_unknown({"breakaway_mm", "contraction", "extension", "model",
+                           "velocity_scale_mm_s", "weights"});
   AvbdlFriction f;
   f.extension = read_stroke(friction.sub("extension"));
   f.contraction = read_stroke(friction.sub("contraction"));
-  f.velocity_scale_m_per_s = units::mm_to_m(friction.positive("velocity_scale_mm_s", "mm/s"));
+  f.model = parse_name(kFrictionModels, friction.text("model", "smooth"),
+                       friction.file + ": " + friction.key("model"));
+  if (f.model == FrictionModel::kMaxwellSlip) {
+    f.slip = read_slip(friction);
+  } else if (friction.has("breakaway_mm") || friction.has("weights")) {
+    friction.fail(friction.has("weights") ? "weights" : "breakaway_mm",
+                  "belongs to model = \"maxwell_slip\" (this friction is \"smooth\")");
+  }
+  if (f.model == FrictionModel::kSmooth || friction.has("velocity_scale_mm_s")) {
+    f.velocity_scale_m_per_s =
+        units::mm_to_m(friction.positive("velocity_scale_mm_s", "mm/s"));
+  }
   return f;
 }
 

@@ -16,7 +16,10 @@
 //   material = "natural_rubber"         # or "silicone", or the constants:
 //   C10_MPa = 0.05  C01_MPa = 0.18  C20_MPa = 0.0035
 //   [friction]                          # optional: none when absent
-//   velocity_scale_mm_s = 1.0
+//   model = "smooth"                    # tanh(v / v_s) (default), or "maxwell_slip"
+//   velocity_scale_mm_s = 1.0           # v_s: required for "smooth"
+//   breakaway_mm = [0.1, 0.5]           # "maxwell_slip" only: 1-4 elements' travels
+//   weights = [0.5, 0.5]                # and their shares of F_f, summing to 1
 //   extension = { F0_N = 0.5, A0_mm2 = 1.0, A1_mm2 = 0.0 }
 //   contraction = { F0_N = 0.5, A0_mm2 = 1.0, A1_mm2 = 0.0 }
 #pragma once

@@ -1,6 +1,7 @@
 // tensile_test.cc: the virtual static tensile test, see tensile_test.h.
 #include "pam_actuator/tensile_test.h"
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <string>
@@ -80,8 +81,22 @@ std::vector<TensileRow> run_tensile_test(const AvbdlParams& plant,
                 format_value(options.max_deformation_mm));
   }
   const auto l_n = [&plant](double p) { return avbdl_free_length(plant, p); };
-  const auto force = [&plant](double p, double d, StrokeDirection stroke) {
+  // Maxwell-slip elements follow the stroke set point by set point (the law is rate
+  // independent, so the steps' size does not matter), unloaded at each pressure's start
+  std::array<double, kMaxSlipElements> slip{};
+  double last_l = 0.0;
+  const auto force = [&](double p, double d, StrokeDirection stroke) {
     const double l = avbdl_free_length(plant, p) + d;
+    if (plant.friction.model == FrictionModel::kMaxwellSlip) {
+      if (d == 0.0 && stroke == StrokeDirection::kLoading) {
+        slip.fill(0.0);
+      } else {
+        maxwell_slip_advance(plant.friction.slip, l - last_l, slip.data());
+      }
+      last_l = l;
+      return avbdl_static_force(plant, p, l) +
+             avbdl_slip_friction_force(plant, p, l, slip.data());
+    }
     const StretchDirection motion = stroke == StrokeDirection::kLoading
                                         ? StretchDirection::kExtension
                                         : StretchDirection::kContraction;

@@ -6,8 +6,9 @@
 //      response time read as its 0-90 % rise, tau = t_r / ln 10 (lowpass_filter.h; the
 //      chamber pressure held over the control tick, so exact for that input);
 //   2. hysteresis: a play (backlash) operator of full width h: rising and falling readings
-//      of one pressure differ by h (one Maxwell-slip element of unit stiffness, whose
-//      deflection is the play; pam_actuator/maxwell_slip.h);
+//      of one pressure differ by h (one Maxwell-slip element whose breakaway travel and
+//      slip force are both h / 2, so its force is its deflection, the play;
+//      pam_actuator/maxwell_slip.h);
 //   3. static error of this instrument, drawn once from sensors.instrument_seed:
 //      p (1 + g) + b, b ~ N(bias_mean, bias_stddev^2), g ~ N(0, gain_error_stddev^2);
 //   4. dynamic bias: a Gauss-Markov drift of the zero (sensor_noise.h), drawn from the
@@ -35,6 +36,7 @@
 // rig, so this instrument's offset moves the estimated length (~66 mm/MPa: 4.7 kPa ~ 0.3 mm).
 #pragma once
 
+#include <limits>
 #include <random>
 
 #include "pam_actuator/maxwell_slip.h"
@@ -77,7 +79,10 @@ class PressureHardware {
 
  private:
   LowpassFilter response_;
-  MaxwellSlip play_;
+  MaxwellSlipParams play_;        // one element, breakaway h / 2 (none for h = 0)
+  double play_state_ = 0.0;
+  double half_width_pa_ = 0.0;    // h / 2, the element's slip force
+  double last_felt_pa_ = std::numeric_limits<double>::quiet_NaN();
   double bias_pa_ = 0.0;
   double gain_error_ = 0.0;
   std::mt19937_64 trial_rng_;

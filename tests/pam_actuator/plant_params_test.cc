@@ -28,6 +28,8 @@ std::string write_temp(const std::string& text) {
   return path;
 }
 
+const std::string kSlip = "model = \"maxwell_slip\"\n";
+
 const char* kValid = R"(law = "avbdl"
 [geometry]
 length_mm = 180
@@ -129,6 +131,19 @@ TEST(PlantParamsTest, ExplicitConstantsAndFrictionAreRead) {
   EXPECT_DOUBLE_EQ(plant.avbdl.friction.velocity_scale_m_per_s, 1e-3);
 }
 
+TEST(PlantParamsTest, MaxwellSlipFrictionIsRead) {
+  std::string text = kValid;
+  text.replace(text.find("velocity_scale_mm_s = 1.0"), 25,
+               kSlip + "breakaway_mm = [0.05, 0.2, 1.0]\nweights = [0.25, 0.25, 0.5]");
+  const AvbdlFriction f = load_plant_params(write_temp(text)).avbdl.friction;
+  EXPECT_EQ(f.model, FrictionModel::kMaxwellSlip);
+  ASSERT_EQ(f.slip.count, 3);
+  EXPECT_DOUBLE_EQ(f.slip.breakaway_m[2], 1.0e-3);
+  EXPECT_DOUBLE_EQ(f.slip.weight[0], 0.25);
+  EXPECT_DOUBLE_EQ(f.contraction.strain_area_m2, 2.0e-6) << "the slip forces' law stays";
+  EXPECT_EQ(load_plant_params(write_temp(kValid)).avbdl.friction.model, FrictionModel::kSmooth);
+}
+
 TEST(PlantParamsTest, FreeLengthAndLengthAtForceInvertTheStaticLaw) {
   const AvbdlParams a = load_plant_params(kShipped).avbdl;
   for (double p : {0.1e6, 0.3e6, 0.6e6}) {
@@ -164,6 +179,22 @@ TEST(PlantParamsTest, EveryBadFileIsOneLineNamingFileAndKey) {
       {"F0_N = 0.5", "F0_N = -0.5", "friction.extension.F0_N"},
       {"A1_mm2 = 2.0", "A1_mm2 = -2.0", "friction.contraction.A1_mm2"},
       {"velocity_scale_mm_s = 1.0", "velocity_scale_mm_s = 0", "friction.velocity_scale_mm_s"},
+      {"velocity_scale_mm_s = 1.0", "model = \"stiction\"", "friction.model"},
+      {"velocity_scale_mm_s = 1.0", "model = \"maxwell_slip\"", "friction.breakaway_mm"},
+      {"velocity_scale_mm_s = 1.0", kSlip + "breakaway_mm = [0.1, 0]\nweights = [0.5, 0.5]",
+       "friction.breakaway_mm[1]"},
+      {"velocity_scale_mm_s = 1.0", kSlip + "breakaway_mm = [0.1, nan]\nweights = [0.5, 0.5]",
+       "friction.breakaway_mm"},
+      {"velocity_scale_mm_s = 1.0", kSlip + "breakaway_mm = [0.1, 0.2]\nweights = [1.0]",
+       "friction.weights"},
+      {"velocity_scale_mm_s = 1.0", kSlip + "breakaway_mm = [0.1, 0.2]\nweights = [0.5, 0.4]",
+       "friction.weights"},
+      {"velocity_scale_mm_s = 1.0", kSlip + "breakaway_mm = [0.1]\nweights = [\"all\"]",
+       "friction.weights"},
+      {"velocity_scale_mm_s = 1.0", kSlip + "breakaway_mm = 0.1\nweights = [1.0]",
+       "friction.breakaway_mm"},
+      {"velocity_scale_mm_s = 1.0", "velocity_scale_mm_s = 1.0\nweights = [1.0]",
+       "friction.weights"},
   };
   for (const Case& c : cases) {
     std::string text = kValid;

@@ -114,6 +114,37 @@ TEST(TensileTestTest, OnAPlantStartsAtItsFreeLengthAndShowsItsFriction) {
   }
 }
 
+// With Maxwell-slip friction the loop turns over at a reversal instead of jumping: at the
+// turning point the unloading sample reads what the loading one did (the elements have not
+// moved yet), one 2.5 mm step later (more than twice every breakaway travel) the whole
+// shortening friction acts; the first loading sample starts from unloaded elements.
+TEST(TensileTestTest, OnAMaxwellSlipPlantTheLoopTurnsOverAtTheReversal) {
+  AvbdlParams plant = avbdl_params_from_geometry(0.18, 0.010, 25.0 * M_PI / 180.0, 0.002,
+                                                 kNaturalRubberTreloar);
+  plant.friction.extension = {0.5, 2e-6, 0.0};
+  plant.friction.contraction = {0.3, 1e-6, 0.0};
+  plant.friction.model = FrictionModel::kMaxwellSlip;
+  plant.friction.slip.count = 2;
+  plant.friction.slip.weight = {0.5, 0.5};
+  plant.friction.slip.breakaway_m = {0.2e-3, 1.0e-3};
+  TensileTestOptions o;
+  o.pressures_mpa = {0.4, 0.6};
+  const std::vector<TensileRow> rows = run_tensile_test(plant, o);
+  ASSERT_EQ(rows.size(), 2u * 2u * 9u);
+  for (std::size_t start : {0u, 18u}) {
+    const double p = rows[start].pressure_mpa * 1e6;
+    const double l_n = avbdl_free_length(plant, p);
+    const auto static_at = [&](const TensileRow& r) {
+      return avbdl_static_force(plant, p, l_n + r.deformation_mm * 1e-3);
+    };
+    const double up = 0.5 + p * 2e-6, down = 0.3 + p * 1e-6;
+    EXPECT_NEAR(rows[start].force_n, static_at(rows[start]), 1e-9) << "unloaded at the start";
+    EXPECT_NEAR(rows[start + 8].force_n, static_at(rows[start + 8]) + up, 1e-9);
+    EXPECT_EQ(rows[start + 9].force_n, rows[start + 8].force_n) << "the turning point";
+    EXPECT_NEAR(rows[start + 10].force_n, static_at(rows[start + 10]) - down, 1e-9);
+  }
+}
+
 TEST(TensileTestTest, BadOptions) {
   const auto bad = [](auto edit) {
     TensileTestOptions o;

@@ -107,7 +107,7 @@ TEST_F(PamCallbackTest, RejectsModelsWithoutRoomForParameters) {
   EXPECT_THROW(store_pam_in_model(small.get(), 0, spring_, 0.1, 0, "small.xml"), InputError);
   // 11 slots hold the spring law, not a plant
   try {
-    store_plant_in_model(model_.get(), 0, AvbdlParams{}, "slider.xml");
+    store_plant_in_model(model_.get(), 0, AvbdlParams{}, -1, "slider.xml");
     ADD_FAILURE() << "a plant was stored in 11 slots";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("slider.xml: <size nuser_actuator> must be >= 28"),
@@ -128,7 +128,7 @@ TEST_F(PamCallbackTest, APlantActuatorPullsWithTheAvbdlLaw) {
   store_pam_in_model(m.get(), 0, spring_, kLineLength, 1, "slider28.xml");
   AvbdlParams none;
   EXPECT_FALSE(pam_plant_from_model(m.get(), 0, &none)) << "the spring law until a plant is stored";
-  store_plant_in_model(m.get(), 0, plant, "slider28.xml");
+  store_plant_in_model(m.get(), 0, plant, -1, "slider28.xml");
   AvbdlParams back;
   ASSERT_TRUE(pam_plant_from_model(m.get(), 0, &back));
   EXPECT_EQ(back.wall_thickness_m, plant.wall_thickness_m);
@@ -148,6 +148,113 @@ TEST_F(PamCallbackTest, APlantActuatorPullsWithTheAvbdlLaw) {
   mj_forward(m.get(), d.get());
   EXPECT_EQ(d->actuator_force[0], 0.0);
   EXPECT_NEAR(pam_muscle_length(m.get(), d.get(), 0), avbdl_free_length(plant, 0.4e6), 1e-12);
+}
+
+// Stores Table IV's agonist spring law (line 0.3 m, pressure at userdata[1]) and `plant`
+// (its slip state from userdata[2]) in actuator 0 of `m`.
+void store_slider_plant(mjModel* m, const AvbdlParams& plant) {
+  const SpringModel spring = spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,
+                                                           {0.911, 0.256, 7.00, -0.201, 0, 0});
+  store_pam_in_model(m, 0, spring, 0.3, 1, "slider39.xml");
+  store_plant_in_model(m, 0, plant, 2, "slider39.xml");
+}
+
+// The slider with room for a Maxwell-slip plant, overdamped (so it approaches monotonically),
+// under a constant load that stretches the muscle, with braid friction of the given form.
+struct LoadedSlider {
+  MjModelPtr m;
+  MjDataPtr d;
+  AvbdlParams plant;
+  static constexpr double kPressure = 0.4e6, kLoad = 20.0;   // [Pa], [N]
+
+  explicit LoadedSlider(FrictionModel form) {
+    std::string xml = kSliderXml;
+    xml.replace(xml.find("nuser_actuator=\"11\" nuserdata=\"2\""), 33,
+                "nuser_actuator=\"39\" nuserdata=\"5\"");
+    xml.replace(xml.find("type=\"slide\""), 12, "type=\"slide\" damping=\"400\"");
+    // the smooth friction's slope near rest, F_f / v_s = 1 800 N s/m, is explicit in the
+    // Euler step: stable only for c dt / m < 2
+    xml.replace(xml.find("<option "), 8, "<option timestep=\"0.0005\" ");
+    m = load_inline(xml.c_str(), "slider39.xml");
+    plant = avbdl_params_from_geometry(0.18, 0.010, units::deg_to_rad(25.0), 0.002,
+                                       kNaturalRubberTreloar);
+    plant.friction.extension = {1.0, 2.0e-6, 0.0};    // 1.8 N at 0.4 MPa
+    plant.friction.contraction = {1.0, 1.5e-6, 0.0};  // 1.6 N
+    plant.friction.model = form;
+    plant.friction.slip.count = 2;
+    plant.friction.slip.weight = {0.5, 0.5};
+    plant.friction.slip.breakaway_m = {0.05e-3, 0.2e-3};
+    store_slider_plant(m.get(), plant);
+    d = make_data(m.get());
+  }
+
+  // Starts `offset_m` from where the law holds the load, at rest, and lets it settle;
+  // returns the muscle length it rests at.
+  double settle_from(double offset_m) {
+    d->qpos[0] = avbdl_length_at_force(plant, kPressure, kLoad) + offset_m + 0.3;
+    d->userdata[1] = kPressure;
+    for (int k = 0; k < 12000; ++k) {   // 6 s
+      d->xfrc_applied[6 * 1 + 0] = kLoad;
+      mj_step(m.get(), d.get());
+      pam_commit_friction(m.get(), d.get(), 0, pam_muscle_length(m.get(), d.get(), 0));
+    }
+    EXPECT_LT(std::fabs(d->qvel[0]), 1e-5) << "at rest";
+    return pam_muscle_length(m.get(), d.get(), 0);
+  }
+};
+
+// The arm's braid friction as Maxwell-slip sticks: approached from a longer and from a
+// shorter length, the muscle stops on either side of the friction-free equilibrium, the
+// friction band over the law's stiffness apart; the smooth tanh(v / v_s) form creeps to the
+// same length from both sides (issue 25, item 2).
+TEST(PamCallbackSlipTest, MaxwellSlipStopsWithinTheFrictionBandAndSmoothFrictionCreeps) {
+  install_pam_actuator_callback();
+  LoadedSlider slip(FrictionModel::kMaxwellSlip), smooth(FrictionModel::kSmooth);
+  const double p = LoadedSlider::kPressure;
+  const double l_eq = avbdl_length_at_force(slip.plant, p, LoadedSlider::kLoad);
+  const double stiffness = (avbdl_static_force(slip.plant, p, l_eq + 1e-5) -
+                            avbdl_static_force(slip.plant, p, l_eq - 1e-5)) / 2e-5;
+  const double band = (1.0 + 2.0e-6 * p) + (1.0 + 1.5e-6 * p);
+  const double from_above = slip.settle_from(3e-3), from_below = slip.settle_from(-3e-3);
+  EXPECT_GT(from_above, l_eq) << "shortening, the friction holds back the pull";
+  EXPECT_LT(from_below, l_eq);
+  EXPECT_NEAR(from_above - from_below, band / stiffness, 0.1 * band / stiffness);
+  const double smooth_gap = smooth.settle_from(3e-3) - smooth.settle_from(-3e-3);
+  EXPECT_LT(std::fabs(smooth_gap), 0.05 * band / stiffness);
+}
+
+TEST(PamCallbackSlipTest, AMaxwellSlipPlantNeedsItsSlotsAndRoomForItsState) {
+  AvbdlParams plant = avbdl_params_from_geometry(0.18, 0.010, units::deg_to_rad(25.0), 0.002,
+                                                 kNaturalRubberTreloar);
+  plant.friction.model = FrictionModel::kMaxwellSlip;
+  plant.friction.slip.count = 2;
+  plant.friction.slip.weight = {0.5, 0.5};
+  plant.friction.slip.breakaway_m = {0.05e-3, 0.2e-3};
+  struct Case { const char* size; const char* message; };
+  for (const Case& c : {Case{"nuser_actuator=\"28\" nuserdata=\"5\"",
+                             "<size nuser_actuator> must be >= 39 for a PAM with Maxwell-slip"},
+                        Case{"nuser_actuator=\"39\" nuserdata=\"4\"",
+                             "<size nuserdata> must be >= 5 to hold"}}) {
+    std::string xml = kSliderXml;
+    xml.replace(xml.find("nuser_actuator=\"11\" nuserdata=\"2\""), 33, c.size);
+    MjModelPtr m = load_inline(xml.c_str(), "small.xml");
+    ASSERT_TRUE(m);
+    try {
+      store_plant_in_model(m.get(), 0, plant, 2, "small.xml");
+      ADD_FAILURE() << "stored in " << c.size;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("small.xml: ") + c.message),
+                std::string::npos) << e.what();
+    }
+  }
+  // read back whole from a model with room
+  LoadedSlider loaded(FrictionModel::kMaxwellSlip);
+  AvbdlParams back;
+  ASSERT_TRUE(pam_plant_from_model(loaded.m.get(), 0, &back));
+  EXPECT_EQ(back.friction.model, FrictionModel::kMaxwellSlip);
+  EXPECT_EQ(back.friction.slip.count, 2);
+  EXPECT_EQ(back.friction.slip.breakaway_m[1], 0.2e-3);
+  EXPECT_EQ(back.friction.slip.weight[0], 0.5);
 }
 
 }  // namespace

@@ -15,7 +15,69 @@ const mjtNum* user_slots(const mjModel* m, int id) {
   return m->actuator_user + static_cast<long>(id) * m->nuser_actuator;
 }
 
+// slots kPamPlantUserSize.. : the friction's form, its elements, its userdata block
+void store_friction_form(mjModel* m, int id, const AvbdlFriction& f, int slip_index,
+                         const char* path) {
+  const bool slip = f.model == FrictionModel::kMaxwellSlip;
+  if (m->nuser_actuator < kPamSlipUserSize) {
+    if (!slip) return;   // older models: smooth friction needs no slots
+    throw InputError(std::string(path) + ": <size nuser_actuator> must be >= " +
+                     std::to_string(kPamSlipUserSize) + " for a PAM with Maxwell-slip " +
+                     "friction, got " + std::to_string(m->nuser_actuator));
+  }
+  if (slip && (slip_index < 0 || slip_index + 1 + f.slip.count > m->nuserdata)) {
+    throw InputError(std::string(path) + ": <size nuserdata> must be >= " +
+                     std::to_string(slip_index + 1 + f.slip.count) +
+                     " to hold the PAMs' pressures and Maxwell-slip states");
+  }
+  mjtNum* u = m->actuator_user + static_cast<long>(id) * m->nuser_actuator + kPamPlantUserSize;
+  u[0] = slip ? 1.0 : 0.0;
+  u[1] = slip ? f.slip.count : 0;
+  for (int k = 0; k < kMaxSlipElements; ++k) {
+    u[2 + k] = f.slip.weight[k];
+    u[2 + kMaxSlipElements + k] = f.slip.breakaway_m[k];
+  }
+  u[2 + 2 * kMaxSlipElements] = slip ? slip_index : -1;
+}
+
+void read_friction_form(const mjModel* m, int id, AvbdlFriction* f) {
+  f->model = FrictionModel::kSmooth;
+  if (m->nuser_actuator < kPamSlipUserSize) return;
+  const mjtNum* u = user_slots(m, id) + kPamPlantUserSize;
+  if (u[0] != 1.0) return;
+  f->model = FrictionModel::kMaxwellSlip;
+  f->slip.count = static_cast<int>(u[1]);
+  for (int k = 0; k < kMaxSlipElements; ++k) {
+    f->slip.weight[k] = u[2 + k];
+    f->slip.breakaway_m[k] = u[2 + kMaxSlipElements + k];
+  }
+}
+
+// the actuator's slip block in d->userdata: [L_prev, s_1..s_N]
+int slip_block(const mjModel* m, int id) {
+  return static_cast<int>(user_slots(m, id)[kPamPlantUserSize + 2 + 2 * kMaxSlipElements]);
+}
+
+// The friction's input at the muscle length `length_m`: the tendon's rate (smooth), or the
+// elements as committed, moved (in `scratch`) to that length (Maxwell-slip).
+FrictionInput friction_input(const mjModel* m, const mjData* d, int id,
+                             const AvbdlParams& plant, double length_m, double* scratch) {
+  FrictionInput in;
+  in.length_rate_m_per_s = d->actuator_velocity[id];
+  if (plant.friction.model != FrictionModel::kMaxwellSlip) return in;
+  const mjtNum* block = d->userdata + slip_block(m, id);
+  std::copy(block + 1, block + 1 + plant.friction.slip.count, scratch);
+  if (block[0] > 0.0) maxwell_slip_advance(plant.friction.slip, length_m - block[0], scratch);
+  in.slip_state = scratch;
+  return in;
+}
+
 }  // namespace
+
+int pam_slip_block_size(const AvbdlParams& plant) {
+  return plant.friction.model == FrictionModel::kMaxwellSlip ? 1 + plant.friction.slip.count
+                                                             : 0;
+}
 
 void store_pam_in_model(mjModel* m, int id, const SpringModel& spring, double line_length_m,
                         int userdata_index, const char* path) {
@@ -42,7 +104,8 @@ void store_pam_in_model(mjModel* m, int id, const SpringModel& spring, double li
   u[10] = userdata_index;
 }
 
-void store_plant_in_model(mjModel* m, int id, const AvbdlParams& a, const char* path) {
+void store_plant_in_model(mjModel* m, int id, const AvbdlParams& a, int slip_userdata_index,
+                          const char* path) {
   if (m->nuser_actuator < kPamPlantUserSize) {
     throw InputError(std::string(path) + ": <size nuser_actuator> must be >= " +
                      std::to_string(kPamPlantUserSize) + " for a PAM with a plant law, got " +
@@ -58,6 +121,7 @@ void store_plant_in_model(mjModel* m, int id, const AvbdlParams& a, const char* 
                            f.contraction.force_n, f.contraction.pressure_area_m2,
                            f.contraction.strain_area_m2};
   std::copy(std::begin(values), std::end(values), u + kPamUserSize);
+  store_friction_form(m, id, f, slip_userdata_index, path);
 }
 
 bool pam_plant_from_model(const mjModel* m, int id, AvbdlParams* a) {
@@ -74,6 +138,7 @@ bool pam_plant_from_model(const mjModel* m, int id, AvbdlParams* a) {
   a->friction.velocity_scale_m_per_s = u[10];
   a->friction.extension = {u[11], u[12], u[13]};
   a->friction.contraction = {u[14], u[15], u[16]};
+  read_friction_form(m, id, &a->friction);
   return true;
 }
 
@@ -116,7 +181,9 @@ mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int id) {
   if (pam_plant_from_model(m, id, &plant)) {
     // a slack muscle contracts to its free length and pulls nothing; the law holds up to
     // avbdl_max_length (a muscle stretched to its fibre length would have to break)
-    return -avbdl_line_pull(plant, p, pam_length(m, d, id), d->actuator_velocity[id]);
+    const double taut = pam_length(m, d, id);
+    double slip_state[kMaxSlipElements];
+    return -avbdl_line_pull(plant, p, taut, friction_input(m, d, id, plant, taut, slip_state));
   }
 
   const SpringModel spring = pam_spring_from_model(m, id);
@@ -124,6 +191,20 @@ mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int id) {
   // Eq. (1)-(2): deformation from natural length; Eq. (3)-(5) pull, zero when slack
   const double deformation = pam_length(m, d, id) - natural_length(spring, p);
   return -spring_force(spring, p, deformation);
+}
+
+void pam_commit_friction(const mjModel* m, mjData* d, int id, double muscle_length_m) {
+  AvbdlParams plant;
+  if (!pam_plant_from_model(m, id, &plant) ||
+      plant.friction.model != FrictionModel::kMaxwellSlip) {
+    return;
+  }
+  // the muscle's own length: the line's while taut, its free length while slack
+  mjtNum* block = d->userdata + slip_block(m, id);
+  if (block[0] > 0.0) {
+    maxwell_slip_advance(plant.friction.slip, muscle_length_m - block[0], block + 1);
+  }
+  block[0] = muscle_length_m;
 }
 
 void install_pam_actuator_callback() { mjcb_act_bias = pam_actuator_force; }

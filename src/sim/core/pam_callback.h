@@ -9,7 +9,14 @@
 //   and, in models with nuser_actuator >= kPamPlantUserSize (written by store_plant_in_model),
 //     11 the plant law: 0 the spring law above (plant = estimator), 1 AVBDL (avbdl.h);
 //     12..27 the AVBDL parameters, SI: L0, D0, alpha0, wall, C10, C01, C20, Ld, a, v_s,
-//     extension F0, A0, A1, contraction F0, A0, A1.
+//     extension F0, A0, A1, contraction F0, A0, A1;
+//   and, in models with nuser_actuator >= kPamSlipUserSize, the friction's form:
+//     28 0 smooth, 1 Maxwell-slip; 29 its element count N; 30..33 weights; 34..37
+//     breakaway travels [m]; 38 index into d->userdata of this PAM's slip block
+//     [L_prev, s_1..s_N]: the muscle length at the last committed step (0: none yet, as
+//     mj_resetData leaves it) and the elements' states (maxwell_slip.h).
+// The Maxwell-slip state moves only at pam_commit_friction, once per physics step; the
+// callback evaluates the elements as they would be at the step's length, without storing it.
 // PAM length l = tendon length - line length. The spring law: d = l - l_n(p), Eq. (1)-(5);
 // AVBDL: seeds/003 Eq. (25) plus friction at the tendon's velocity. The force pulls only
 // (the actuator force is -f, f >= 0) and is zero when the PAM is slack.
@@ -24,6 +31,10 @@ namespace pamsim {
 
 inline constexpr int kPamUserSize = 11;
 inline constexpr int kPamPlantUserSize = 28;
+inline constexpr int kPamSlipUserSize = kPamPlantUserSize + 3 + 2 * kMaxSlipElements;
+
+// The userdata a PAM's Maxwell-slip state takes: L_prev and one state per element.
+int pam_slip_block_size(const AvbdlParams& plant);
 
 // Writes the PAM's parameters into actuator `id`'s user slots. Throws InputError if the
 // model declares nuser_actuator < kPamUserSize or the actuator is not a user-bias tendon
@@ -32,9 +43,12 @@ void store_pam_in_model(mjModel* m, int actuator_id, const SpringModel& spring,
                         double line_length_m, int userdata_index, const char* path);
 
 // Makes actuator `id`'s plant the AVBDL law (the spring law stays the estimator's and the
-// calibration's). Throws InputError if the model declares nuser_actuator < kPamPlantUserSize.
+// calibration's); a Maxwell-slip friction keeps its state in d->userdata from index
+// `slip_userdata_index` on (pam_slip_block_size values; ignored for smooth friction). Throws
+// InputError if the model declares nuser_actuator < kPamPlantUserSize, or, for a
+// Maxwell-slip friction, nuser_actuator < kPamSlipUserSize or too small a nuserdata.
 void store_plant_in_model(mjModel* m, int actuator_id, const AvbdlParams& plant,
-                          const char* path);
+                          int slip_userdata_index, const char* path);
 // The actuator's AVBDL plant, or false if its plant is the spring law.
 bool pam_plant_from_model(const mjModel* m, int actuator_id, AvbdlParams* plant);
 
@@ -51,6 +65,11 @@ double pam_length(const mjModel* m, const mjData* d, int actuator_id);
 // is slack (a slack muscle is not pulled below its free length). What the encoder, the
 // fiber sensor, the chamber volume and the error metrics see.
 double pam_muscle_length(const mjModel* m, const mjData* d, int actuator_id);
+
+// Moves the actuator's Maxwell-slip elements to the muscle's length at this step, its
+// pam_muscle_length (call once after each physics step, with the data the step's forces
+// were computed from); nothing for a smooth friction or the spring law.
+void pam_commit_friction(const mjModel* m, mjData* d, int actuator_id, double muscle_length_m);
 
 // The mjcb_act_bias callback: actuator force [N] (<= 0, a pull).
 mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int actuator_id);

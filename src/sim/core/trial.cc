@@ -129,9 +129,12 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
   pressure_pa_.resize(n_);
   command_pa_.resize(n_);
   muscle_length_m_.resize(n_);
+  slip_.assign(n_, 0);
   for (std::size_t i = 0; i < n_; ++i) {   // a physical muscle's chamber has its own shape
     const MuscleSpec& spec = sc.muscles[tm.muscles[i].spec];
-    if (!spec.plant_file.empty()) pneumatics_.set_plant_volume(static_cast<int>(i), spec.plant);
+    if (spec.plant_file.empty()) continue;
+    pneumatics_.set_plant_volume(static_cast<int>(i), spec.plant);
+    slip_[i] = spec.plant.friction.model == FrictionModel::kMaxwellSlip;
   }
   held_.assign(tm.holds.size(), 1);
   fired_.assign(sc.events.size(), 0);

@@ -209,6 +209,7 @@ MjDataPtr start_state(const Scenario& sc, const TrialModel& tm) {
 void set_lines(const Scenario& sc, TrialModel* tm) {
   mjModel* m = tm->model.get();
   int solved = -1;
+  int slip_index = static_cast<int>(tm->muscles.size());   // after the pressures
   for (std::size_t k = 0; k < tm->muscles.size(); ++k) {
     BoundMuscle& b = tm->muscles[k];
     const MuscleSpec& spec = sc.muscles[b.spec];
@@ -221,7 +222,8 @@ void set_lines(const Scenario& sc, TrialModel* tm) {
     store_pam_in_model(m, b.actuator, spec.pam.spring, b.line_length_m, static_cast<int>(k),
                        sc.model_file.c_str());
     if (!spec.plant_file.empty()) {
-      store_plant_in_model(m, b.actuator, spec.plant, sc.model_file.c_str());
+      store_plant_in_model(m, b.actuator, spec.plant, slip_index, sc.model_file.c_str());
+      slip_index += pam_slip_block_size(spec.plant);
     }
   }
   if (solved < 0) return;
