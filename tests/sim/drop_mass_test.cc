@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <functional>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,6 +14,7 @@
 #include "base/units.h"
 #include "pam_actuator/avbdl.h"
 #include "sim/core/runner.h"
+#include "sim/core/trial_model.h"
 #include "sim/io/scenario_file.h"
 
 namespace pamsim {
@@ -131,6 +135,70 @@ TEST(DropMassTest, SlackLineLeavesTheMuscleAtItsFreeLength) {
       EXPECT_LT(r.summary.metric("length_est_max_error_mm"), 0.5);
     }
   }
+}
+
+// The shipped plant files edited by `edit`, written to the test's temp folder as
+// <tag>_<muscle>.toml; the --set keys that use them.
+std::vector<std::string> edited_plants(const std::string& tag,
+                                       const std::function<void(std::string*)>& edit) {
+  std::vector<std::string> sets;
+  for (const std::string muscle : {"agonist", "antagonist"}) {
+    std::ifstream in(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_" + muscle + ".toml");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string plant = text.str();
+    edit(&plant);
+    const std::string path = ::testing::TempDir() + tag + "_" + muscle + ".toml";
+    std::ofstream(path) << plant;
+    sets.push_back("muscles." + muscle + ".plant=\"" + path + "\"");
+  }
+  return sets;
+}
+
+// After the drop the passive arm comes to rest. With the shipped tanh friction it creeps to
+// the friction-free equilibrium (the plants without their [friction] tables); with
+// Maxwell-slip braid friction (travels 0.1 and 0.5 mm) it stops within the friction band,
+// 0.2 deg short of it (issue 25, item 2). The drop itself, gross sliding over the same
+// loop, hardly changes.
+TEST(DropMassTest, MaxwellSlipFrictionStopsTheArmWhereTanhFrictionCreeps) {
+  const std::vector<std::string> slip_plants = edited_plants("slip", [](std::string* plant) {
+    const std::string smooth = "velocity_scale_mm_s = 1.0";
+    plant->replace(plant->find(smooth), smooth.size(),
+                   "model = \"maxwell_slip\"\nbreakaway_mm = [0.1, 0.5]\nweights = [0.5, 0.5]");
+  });
+  const auto strip_friction = [](std::string* plant) { plant->erase(plant->find("[friction]")); };
+  const std::vector<std::string> no_friction = edited_plants("frictionless", strip_friction);
+  const auto finish = [](std::vector<std::string> sets) {
+    sets.push_back("sim.duration_s=5");
+    const TrialResult r = run("drop_mass_passive.toml", sets);
+    EXPECT_EQ(r.summary.status, "ok") << r.summary.message;
+    return r.summary;
+  };
+  const TrialSummary smooth = finish({}), slip = finish(slip_plants);
+  const double rest = finish(no_friction).metric("final_angle_deg");
+  EXPECT_NEAR(smooth.metric("final_angle_deg"), rest, 0.01);
+  EXPECT_GT(slip.metric("final_angle_deg") - rest, 0.1) << "held up by the stuck braid";
+  EXPECT_NEAR(slip.metric("peak_drop_deg"), smooth.metric("peak_drop_deg"), 0.2);
+}
+
+// joints.<joint>.*: a bearing's damping and friction loss in place of the model's; more
+// damping, less drop; a changed joint is a changed trial model (a sweep rebuilds it).
+TEST(DropMassTest, JointKeysSetTheModelsDampingAndFrictionLoss) {
+  const std::vector<std::string> damped = {"joints.shoulder.damping_N_m_s_per_rad=1.5",
+                                           "joints.shoulder.frictionloss_N_m=0.02"};
+  const Scenario base = load_scenario(scenario_path("drop_mass_passive.toml"), {});
+  const Scenario sc = load_scenario(scenario_path("drop_mass_passive.toml"), damped);
+  const TrialModel arm = load_trial_model(sc);
+  const int dof = arm.model->jnt_dofadr[mj_name2id(arm.model.get(), mjOBJ_JOINT, "shoulder")];
+  EXPECT_EQ(arm.model->dof_damping[dof], 1.5);
+  EXPECT_EQ(arm.model->dof_frictionloss[dof], 0.02);
+  const Scenario friction_only = load_scenario(scenario_path("drop_mass_passive.toml"),
+                                               {"joints.shoulder.frictionloss_N_m=0.02"});
+  EXPECT_EQ(load_trial_model(friction_only).model->dof_damping[dof], 0.1) << "the model's";
+  EXPECT_FALSE(same_trial_model(base, sc));
+  EXPECT_FALSE(same_trial_model(sc, friction_only));
+  EXPECT_LT(run("drop_mass_passive.toml", damped).summary.metric("peak_drop_deg"),
+            run("drop_mass_passive.toml").summary.metric("peak_drop_deg") - 0.5);
 }
 
 // The outcome metrics agree with the trajectory they summarise, recomputed here from the log

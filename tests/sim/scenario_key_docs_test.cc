@@ -48,6 +48,7 @@ std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
         "valve.exhaust_critical_pressure_ratio=0.3", "valve.outlet_volume_cm3=2",
         "valve.tube_sonic_conductance_dm3_per_s_bar=1.3", "valve.tube_critical_pressure_ratio=0.4",
         "controller.p_max_MPa=0.6", "reflex.pairs=[[\"agonist\", \"antagonist\"]]",
+        "joints.shoulder.damping_N_m_s_per_rad=0", "joints.shoulder.frictionloss_N_m=0.001",
         // an event of each condition, and each action's keys
         "events.a.when.at_s=0.5", "events.a.action=\"add_mass\"", "events.a.body=\"basket\"",
         "events.a.mass_kg=0.1", "events.b.when.contact=[\"ball\", \"basket\"]",
@@ -68,7 +69,8 @@ std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
        {"muscles.pam.command.phase_deg=90", "muscles.pam.command.start_s=1",
         "events.low.when.joint=\"weight_slide\"", "events.low.when.below_mm=-500",
         "events.high.when.joint=\"weight_slide\"", "events.high.when.above_mm=500",
-        "events.high.action=\"end\""}},
+        "events.high.action=\"end\"", "joints.weight_slide.damping_N_s_per_m=60",
+        "joints.weight_slide.frictionloss_N=0.5"}},
   };
 }
 

@@ -107,6 +107,15 @@ TEST(ScenarioKeysTest, BodyHoldAndEventKeysNameTheirKey) {
       {{"bodies.basket.mass_kg=0"}, "bodies.basket.mass_kg"},
       {{"bodies.basket.mass_kg=2000"}, "bodies.basket.mass_kg"},
       {{"bodies.ghost.mass_kg=1"}, "bodies.ghost"},
+      {{"joints.shoulder.damping_N_m_s_per_rad=-0.1"}, "joints.shoulder.damping_N_m_s_per_rad"},
+      {{"joints.shoulder.damping_N_m_s_per_rad=nan"}, "joints.shoulder.damping_N_m_s_per_rad"},
+      {{"joints.shoulder.frictionloss_N_m=1e5"}, "joints.shoulder.frictionloss_N_m"},
+      {{"joints.shoulder.frictionloss_N=1"}, "joints.shoulder gives a slide's keys"},
+      {{"joints.shoulder.frictionloss_N=1", "joints.shoulder.frictionloss_N_m=1"},
+       "joints.shoulder mixes"},
+      {{"joints.shoulder.stiffness=1"}, "joints.shoulder gives none"},
+      {{"joints.elbow.damping_N_m_s_per_rad=1"}, "joints.elbow names a joint 'elbow'"},
+      {{"joints.ball.damping_N_m_s_per_rad=1"}, "joints.ball names joint 'ball'"},   // free
       {{"holds.ball.position_m=[1, 2]"}, "holds.ball.position_m"},
       {{"holds.ball.above_site=\"basket_floor\""}, "holds.ball"},   // and position_m
       {{"holds.arm.height_m=0.1", "holds.arm.above_site=\"basket_floor\""}, "holds.arm"},   // not free

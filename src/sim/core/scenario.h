@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -60,6 +61,18 @@ struct BodyMassSpec {
   double mass_kg = 0.0;
 };
 
+// joints.<joint>.*: a joint's viscous damping and dry friction (MuJoCo's damping and
+// frictionloss) in place of the model's, e.g. a bearing's (issue 25, item 2). A hinge's
+// keys are in N m s/rad and N m, a slide's in N s/m and N; `rotational` says which were
+// given. A value not given (NaN) keeps the model's.
+struct JointSpec {
+  std::string key;          // "joints.<joint>"
+  std::string joint;
+  bool rotational = true;
+  double damping = std::numeric_limits<double>::quiet_NaN();
+  double frictionloss = std::numeric_limits<double>::quiet_NaN();
+};
+
 // When an event fires: at a time, or on the first physics step a condition holds; either
 // only after another event has fired (`after`).
 enum class ConditionKind { kTime, kContact, kJointBelow, kJointAbove, kBodyBelow };
@@ -108,6 +121,7 @@ struct Scenario {
 
   std::vector<MuscleSpec> muscles;
   std::vector<BodyMassSpec> body_masses;
+  std::vector<JointSpec> joints;
   std::vector<HoldSpec> holds;
   std::vector<EventSpec> events;
 

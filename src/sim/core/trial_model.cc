@@ -193,6 +193,25 @@ void bind_pairs(const Scenario& sc, TrialModel* tm) {
   }
 }
 
+// joints.<joint>.*: damping and friction loss over the model's, in the joint's own units
+void set_joints(const Scenario& sc, mjModel* m) {
+  for (const JointSpec& j : sc.joints) {
+    const int id = require(sc, m, mjOBJ_JOINT, j.joint, j.key, "a joint");
+    const int type = m->jnt_type[id];
+    if (type != mjJNT_HINGE && type != mjJNT_SLIDE) {
+      fail(sc, j.key, "names joint '" + j.joint + "', which is neither a hinge nor a slide");
+    }
+    if ((type == mjJNT_HINGE) != j.rotational) {
+      fail(sc, j.key, "gives a " + std::string(j.rotational ? "hinge" : "slide") +
+                          "'s keys, but joint '" + j.joint + "' is a " +
+                          (type == mjJNT_HINGE ? "hinge" : "slide"));
+    }
+    const int dof = m->jnt_dofadr[id];
+    if (!std::isnan(j.damping)) m->dof_damping[dof] = j.damping;
+    if (!std::isnan(j.frictionloss)) m->dof_frictionloss[dof] = j.frictionloss;
+  }
+}
+
 // the start state: the joint at its start position, held bodies in place, at rest
 MjDataPtr start_state(const Scenario& sc, const TrialModel& tm) {
   const mjModel* m = tm.model.get();
@@ -295,6 +314,7 @@ TrialModel load_trial_model(const Scenario& sc) {
   for (const BodyMassSpec& b : sc.body_masses) {
     set_body_mass(m, require(sc, m, mjOBJ_BODY, b.body, b.key, "a body"), b.mass_kg);
   }
+  set_joints(sc, m);
   bind_holds(sc, &tm);
   bind_events(sc, &tm);
   bind_pairs(sc, &tm);
@@ -318,6 +338,11 @@ bool same_trial_model(const Scenario& a, const Scenario& b) {
     for (const BodyMassSpec& bm : sc.body_masses) {
       os << bm.body << ';';
       append_bits(os, bm.mass_kg);
+    }
+    for (const JointSpec& j : sc.joints) {
+      os << j.joint << ';';
+      append_bits(os, j.damping);
+      append_bits(os, j.frictionloss);
     }
     for (const HoldSpec& h : sc.holds) os << h.body << ';' << h.above_site << ';';
     for (const EventSpec& e : sc.events) {

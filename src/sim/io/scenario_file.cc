@@ -202,6 +202,7 @@ Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrid
   const bool has_drop = in.is_table("drop") || pamsim01;
   read_drop(in, &sc, pamsim01);
   read_bodies_and_holds(in, &sc);
+  read_joints(in, &sc);
   read_events(in, &sc);
   read_controller(in, &sc);
   read_sensors(in, &sc);

@@ -85,6 +85,10 @@ std::vector<KeyDoc> model_docs() {
 std::vector<KeyDoc> event_docs() {
   return {
       {"bodies.<body>.mass_kg", "kg", "(required)", "(0, 1000]", "a body's mass, in place of the model's"},
+      {"joints.<joint>.damping_N_m_s_per_rad", "N m s/rad", "(the model's)", "[0, 1e4]; a hinge", "the joint's viscous damping (MuJoCo damping), e.g. a bearing's"},
+      {"joints.<joint>.frictionloss_N_m", "N m", "(the model's)", "[0, 1e4]; a hinge", "the joint's dry friction torque (MuJoCo frictionloss)"},
+      {"joints.<joint>.damping_N_s_per_m", "N s/m", "(the model's)", "[0, 1e6]; a slide", "the joint's viscous damping (MuJoCo damping)"},
+      {"joints.<joint>.frictionloss_N", "N", "(the model's)", "[0, 1e6]; a slide", "the joint's dry friction force (MuJoCo frictionloss)"},
       {"holds.<body>.above_site", "", "(none)", "a site of the model", "hold the body above this site until released"},
       {"holds.<body>.height_m", "m", "0.0", "[0, 10]", "the held body's bottom above the site"},
       {"holds.<body>.position_m", "m", "(none)", "[x, y, z]", "hold the body here instead (not with above_site)"},

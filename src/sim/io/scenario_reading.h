@@ -19,6 +19,9 @@ void read_events(ConfigReader& in, Scenario* sc);
 // are placeholders.
 void read_muscles(ConfigReader& in, Scenario* sc, bool lines_needed);
 
+// joints.<joint>.* (scenario_joints.cc)
+void read_joints(ConfigReader& in, Scenario* sc);
+
 // sensors.*, validated with the sensing (scenario_sensors.cc); sim.control_hz read first
 void read_sensors(ConfigReader& in, Scenario* sc);
 
