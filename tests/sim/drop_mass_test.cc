@@ -181,6 +181,27 @@ TEST(DropMassTest, MaxwellSlipFrictionStopsTheArmWhereTanhFrictionCreeps) {
   EXPECT_NEAR(slip.metric("peak_drop_deg"), smooth.metric("peak_drop_deg"), 0.2);
 }
 
+// An extensible line (muscles.<m>.line_diameter_mm, line_modulus_MPa) keeps the calibrated
+// start (its unstretched length is the calibrated one less the start tension's stretch),
+// and, a soft spring in series with the muscle, lets the mass drop further.
+TEST(DropMassTest, ExtensibleLinesKeepTheStartAndSoftenTheArm) {
+  const std::vector<std::string> nylon = {
+      "muscles.agonist.line_diameter_mm=0.5", "muscles.agonist.line_modulus_MPa=2500",
+      "muscles.antagonist.line_diameter_mm=0.5", "muscles.antagonist.line_modulus_MPa=2500"};
+  const TrialResult rigid = run("drop_mass_passive.toml");
+  const TrialResult soft = run("drop_mass_passive.toml", nylon);
+  ASSERT_EQ(soft.summary.status, "ok") << soft.summary.message;
+  const Trajectory& tr = soft.trajectory;
+  const std::size_t t = tr.column("time_s"), angle = tr.column("angle_deg");
+  for (std::size_t row = 0; row < tr.rows() && tr.at(row, t) < 0.99; ++row) {
+    ASSERT_NEAR(tr.at(row, angle), -36.0, 1e-3) << "before the drop, t = " << tr.at(row, t);
+  }
+  EXPECT_GT(soft.summary.metric("peak_drop_deg"), rigid.summary.metric("peak_drop_deg") + 1.0);
+  const Scenario a = load_scenario(scenario_path("drop_mass_passive.toml"), {});
+  const Scenario b = load_scenario(scenario_path("drop_mass_passive.toml"), nylon);
+  EXPECT_FALSE(same_trial_model(a, b));
+}
+
 // joints.<joint>.*: a bearing's damping and friction loss in place of the model's; more
 // damping, less drop; a changed joint is a changed trial model (a sweep rebuilds it).
 TEST(DropMassTest, JointKeysSetTheModelsDampingAndFrictionLoss) {

@@ -257,5 +257,53 @@ TEST(PamCallbackSlipTest, AMaxwellSlipPlantNeedsItsSlotsAndRoomForItsState) {
   EXPECT_EQ(back.friction.slip.weight[0], 0.5);
 }
 
+// An extensible line in series with a linear spring law (Eq. (3) with a0 only): two springs in
+// series, F = k (x0 - l_n) / (1 + k c) with c = L0 / (E A), and the PAM's end where the
+// stretched line leaves it, x0 - c F (issue 25, item 3).
+TEST(PamCallbackLineTest, AnExtensibleLineIsASpringInSeriesWithTheMuscle) {
+  std::string xml = kSliderXml;
+  xml.replace(xml.find("nuser_actuator=\"11\""), 19, "nuser_actuator=\"40\"");
+  MjModelPtr m = load_inline(xml.c_str(), "slider40.xml");
+  ASSERT_TRUE(m);
+  install_pam_actuator_callback();
+  SpringModel linear;
+  linear.m_m_per_pa = -60e-9;   // l_n = 0.17 m - 60 mm/MPa p
+  linear.h_m = 0.170;
+  linear.coef = {5000.0, 0, 0, 0, 0, 0};   // k [N/m]
+  const double line = 0.3, ea = 300.0, c = line / ea, k = 5000.0, p = 0.4e6;
+  store_pam_in_model(m.get(), 0, linear, line, 1, "slider40.xml");
+  store_line_stiffness_in_model(m.get(), 0, ea, "slider40.xml");
+  EXPECT_EQ(pam_line_axial_stiffness(m.get(), 0), ea);
+  MjDataPtr d = make_data(m.get());
+  const double l_n = natural_length(linear, p);
+  for (double stretch : {0.002, 0.010, 0.030}) {
+    d->qpos[0] = line + l_n + stretch;
+    d->userdata[1] = p;
+    mj_forward(m.get(), d.get());
+    const double f = k * stretch / (1.0 + k * c);
+    EXPECT_NEAR(-d->actuator_force[0], f, 1e-9 * f) << stretch;
+    EXPECT_NEAR(pam_length(m.get(), d.get(), 0), l_n + stretch - c * f, 1e-12) << stretch;
+  }
+  d->qpos[0] = line + l_n - 0.001;   // slack: no tension, no stretch
+  mj_forward(m.get(), d.get());
+  EXPECT_EQ(d->actuator_force[0], 0.0);
+  EXPECT_NEAR(pam_length(m.get(), d.get(), 0), l_n - 0.001, 1e-15);
+
+  // a model without the slot holds only inextensible lines
+  std::string old_xml = kSliderXml;
+  old_xml.replace(old_xml.find("nuser_actuator=\"11\""), 19, "nuser_actuator=\"39\"");
+  MjModelPtr small = load_inline(old_xml.c_str(), "slider39.xml");
+  ASSERT_TRUE(small);
+  EXPECT_NO_THROW(store_line_stiffness_in_model(small.get(), 0, 0.0, "slider39.xml"));
+  EXPECT_EQ(pam_line_axial_stiffness(small.get(), 0), 0.0);
+  try {
+    store_line_stiffness_in_model(small.get(), 0, ea, "slider39.xml");
+    ADD_FAILURE() << "an extensible line in 39 slots";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("slider39.xml: <size nuser_actuator> must be >= 40"),
+              std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace pamsim

@@ -49,6 +49,7 @@ std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
         "valve.tube_sonic_conductance_dm3_per_s_bar=1.3", "valve.tube_critical_pressure_ratio=0.4",
         "controller.p_max_MPa=0.6", "reflex.pairs=[[\"agonist\", \"antagonist\"]]",
         "joints.shoulder.damping_N_m_s_per_rad=0", "joints.shoulder.frictionloss_N_m=0.001",
+        "muscles.agonist.line_diameter_mm=0.5", "muscles.agonist.line_modulus_MPa=2500",
         // an event of each condition, and each action's keys
         "events.a.when.at_s=0.5", "events.a.action=\"add_mass\"", "events.a.body=\"basket\"",
         "events.a.mass_kg=0.1", "events.b.when.contact=[\"ball\", \"basket\"]",

@@ -3,13 +3,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
 #include <string>
+
+#include <boost/math/tools/toms748_solve.hpp>
 
 #include "base/input_error.h"
 
 namespace pamsim {
 namespace {
+
+constexpr int kLineSolveBits = 40;          // the line's tension to ~1e-12 relative
+constexpr int kLineSolveIterations = 50;
 
 const mjtNum* user_slots(const mjModel* m, int id) {
   return m->actuator_user + static_cast<long>(id) * m->nuser_actuator;
@@ -72,7 +78,70 @@ FrictionInput friction_input(const mjModel* m, const mjData* d, int id,
   return in;
 }
 
+// The PAM's law, decoded once from the actuator's slots: the plant's (seeds/003 Eq. (25)
+// with friction; the slip state moved to the length asked for) or the spring law's (Eq.
+// (1)-(5)); pull() is the line's pull [N] >= 0 at pressure p with the line leaving the PAM
+// at `taut` [m], zero when slack, and grows with `taut`.
+struct PamLaw {
+  bool has_plant = false;
+  AvbdlParams plant;
+  SpringModel spring;
+
+  PamLaw(const mjModel* m, int id) {
+    has_plant = pam_plant_from_model(m, id, &plant);
+    if (!has_plant) spring = pam_spring_from_model(m, id);
+  }
+  double pull(const mjModel* m, const mjData* d, int id, double p, double taut) const {
+    if (has_plant) {
+      // a slack muscle contracts to its free length and pulls nothing; the law holds up to
+      // avbdl_max_length (a muscle stretched to its fibre length would have to break)
+      double slip_state[kMaxSlipElements];
+      const FrictionInput friction = friction_input(m, d, id, plant, taut, slip_state);
+      return avbdl_line_pull(plant, p, taut, friction);
+    }
+    return spring_force(spring, p, taut - natural_length(spring, p));
+  }
+};
+
+// The line's tension [N], and in *taut the length it leaves the PAM. An inextensible line
+// leaves it at tendon - L0; an extensible one, stretched by its tension, where
+// F = pull(tendon - L0 - c F), c = L0 / (E A): solved on [0, pull(tendon - L0)] by TOMS 748.
+double line_tension(const mjModel* m, const mjData* d, int id, double* taut) {
+  const double p = d->userdata[pam_userdata_index(m, id)];
+  const PamLaw law(m, id);
+  const double unstretched = d->actuator_length[id] - pam_line_length(m, id);
+  const double ea = pam_line_axial_stiffness(m, id);
+  *taut = unstretched;
+  const double rigid = law.pull(m, d, id, p, unstretched);
+  if (ea <= 0.0 || rigid <= 0.0) return rigid;
+  const double c = pam_line_length(m, id) / ea;
+  const auto residual = [&](double f) { return law.pull(m, d, id, p, unstretched - c * f) - f; };
+  std::uintmax_t iterations = kLineSolveIterations;
+  const auto [lo, hi] = boost::math::tools::toms748_solve(
+      residual, 0.0, rigid, rigid, residual(rigid),
+      boost::math::tools::eps_tolerance<double>(kLineSolveBits), iterations);
+  const double f = 0.5 * (lo + hi);
+  *taut = unstretched - c * f;
+  return f;
+}
+
 }  // namespace
+
+void store_line_stiffness_in_model(mjModel* m, int id, double axial_stiffness_n,
+                                   const char* path) {
+  if (m->nuser_actuator < kPamLineUserSize) {
+    if (axial_stiffness_n <= 0.0) return;   // older models: an inextensible line needs no slot
+    throw InputError(std::string(path) + ": <size nuser_actuator> must be >= " +
+                     std::to_string(kPamLineUserSize) + " for an extensible line, got " +
+                     std::to_string(m->nuser_actuator));
+  }
+  m->actuator_user[static_cast<long>(id) * m->nuser_actuator + kPamSlipUserSize] =
+      axial_stiffness_n;
+}
+
+double pam_line_axial_stiffness(const mjModel* m, int id) {
+  return m->nuser_actuator < kPamLineUserSize ? 0.0 : user_slots(m, id)[kPamSlipUserSize];
+}
 
 int pam_slip_block_size(const AvbdlParams& plant) {
   return plant.friction.model == FrictionModel::kMaxwellSlip ? 1 + plant.friction.slip.count
@@ -159,7 +228,11 @@ int pam_userdata_index(const mjModel* m, int id) {
 }
 
 double pam_length(const mjModel* m, const mjData* d, int id) {
-  return d->actuator_length[id] - pam_line_length(m, id);
+  const double unstretched = d->actuator_length[id] - pam_line_length(m, id);
+  if (pam_line_axial_stiffness(m, id) <= 0.0) return unstretched;
+  double taut = unstretched;
+  line_tension(m, d, id, &taut);
+  return taut;
 }
 
 double pam_muscle_length(const mjModel* m, const mjData* d, int id) {
@@ -173,24 +246,8 @@ double pam_muscle_length(const mjModel* m, const mjData* d, int id) {
 }
 
 mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int id) {
-  // parameters from the model, pressure from the trial's userdata
-  const double p = d->userdata[pam_userdata_index(m, id)];
-
-  // the physical plant: seeds/003 Eq. (25) with friction at the tendon's rate; pull only
-  AvbdlParams plant;
-  if (pam_plant_from_model(m, id, &plant)) {
-    // a slack muscle contracts to its free length and pulls nothing; the law holds up to
-    // avbdl_max_length (a muscle stretched to its fibre length would have to break)
-    const double taut = pam_length(m, d, id);
-    double slip_state[kMaxSlipElements];
-    return -avbdl_line_pull(plant, p, taut, friction_input(m, d, id, plant, taut, slip_state));
-  }
-
-  const SpringModel spring = pam_spring_from_model(m, id);
-
-  // Eq. (1)-(2): deformation from natural length; Eq. (3)-(5) pull, zero when slack
-  const double deformation = pam_length(m, d, id) - natural_length(spring, p);
-  return -spring_force(spring, p, deformation);
+  double taut = 0.0;
+  return -line_tension(m, d, id, &taut);
 }
 
 void pam_commit_friction(const mjModel* m, mjData* d, int id, double muscle_length_m) {

@@ -15,6 +15,10 @@
 //     breakaway travels [m]; 38 index into d->userdata of this PAM's slip block
 //     [L_prev, s_1..s_N]: the muscle length at the last committed step (0: none yet, as
 //     mj_resetData leaves it) and the elements' states (maxwell_slip.h).
+//   and, in models with nuser_actuator >= kPamLineUserSize, 39 the line's axial stiffness
+//   E A [N] (0: inextensible). An extensible line of unstretched length L0 (slot 9) and
+//   tension F is L0 (1 + F / (E A)) long, so the PAM's length is the tendon's minus that,
+//   and F solves F = pull(tendon - L0 - L0 F / (E A)) (issue 25, item 3).
 // The Maxwell-slip state moves only at pam_commit_friction, once per physics step; the
 // callback evaluates the elements as they would be at the step's length, without storing it.
 // PAM length l = tendon length - line length. The spring law: d = l - l_n(p), Eq. (1)-(5);
@@ -33,6 +37,8 @@ inline constexpr int kPamUserSize = 11;
 inline constexpr int kPamPlantUserSize = 28;
 inline constexpr int kPamSlipUserSize = kPamPlantUserSize + 3 + 2 * kMaxSlipElements;
 
+inline constexpr int kPamLineUserSize = kPamSlipUserSize + 1;
+
 // The userdata a PAM's Maxwell-slip state takes: L_prev and one state per element.
 int pam_slip_block_size(const AvbdlParams& plant);
 
@@ -49,6 +55,14 @@ void store_pam_in_model(mjModel* m, int actuator_id, const SpringModel& spring,
 // Maxwell-slip friction, nuser_actuator < kPamSlipUserSize or too small a nuserdata.
 void store_plant_in_model(mjModel* m, int actuator_id, const AvbdlParams& plant,
                           int slip_userdata_index, const char* path);
+// Makes actuator `id`'s line extensible with axial stiffness E A = axial_stiffness_n > 0, or
+// inextensible for 0. Throws InputError if an extensible line finds nuser_actuator <
+// kPamLineUserSize.
+void store_line_stiffness_in_model(mjModel* m, int actuator_id, double axial_stiffness_n,
+                                   const char* path);
+// E A [N] of the actuator's line; 0 for an inextensible one.
+double pam_line_axial_stiffness(const mjModel* m, int actuator_id);
+
 // The actuator's AVBDL plant, or false if its plant is the spring law.
 bool pam_plant_from_model(const mjModel* m, int actuator_id, AvbdlParams* plant);
 
@@ -57,9 +71,9 @@ SpringModel pam_spring_from_model(const mjModel* m, int actuator_id);
 double pam_line_length(const mjModel* m, int actuator_id);
 int pam_userdata_index(const mjModel* m, int actuator_id);
 
-// The length [m] the line leaves the PAM: tendon length - line length. While the line is
-// taut it is the muscle's length; when slack it is shorter than the muscle, which then
-// rests at its free length.
+// The length [m] the line leaves the PAM: tendon length - line length (stretched by its
+// tension, if extensible). While the line is taut it is the muscle's length; when slack it
+// is shorter than the muscle, which then rests at its free length.
 double pam_length(const mjModel* m, const mjData* d, int actuator_id);
 // The muscle's real length [m]: pam_length while the line is taut, the free length when it
 // is slack (a slack muscle is not pulled below its free length). What the encoder, the

@@ -42,6 +42,10 @@ struct MuscleSpec {
   PressureSchedule command;    // muscles.<name>.command
   LineSource line = LineSource::kFixed;
   double line_length_m = 0.0;  // kFixed
+  // The line's axial stiffness E A [N] (muscles.<m>.line_diameter_mm, line_modulus_MPa);
+  // 0: inextensible. An extensible line's length above is its length at the start state,
+  // under the start's tension (issue 25, item 3).
+  double line_axial_stiffness_n = 0.0;
 };
 
 // A free body held kinematically (at rest, upright) until an event releases it.

@@ -224,29 +224,32 @@ MjDataPtr start_state(const Scenario& sc, const TrialModel& tm) {
   return data;
 }
 
-// line lengths: fixed ones first, then at most one muscle solved for a static start
-void set_lines(const Scenario& sc, TrialModel* tm) {
+// Extensible lines (muscles.<m>.line_diameter_mm): each line's length so far is its length
+// at the start, under the start's tension F0; its unstretched length is L / (1 + F0 / (E A)),
+// so the start state stays as calibrated.
+void make_lines_extensible(const Scenario& sc, TrialModel* tm) {
   mjModel* m = tm->model.get();
-  int solved = -1;
-  int slip_index = static_cast<int>(tm->muscles.size());   // after the pressures
+  const auto extensible = [&](const BoundMuscle& b) {
+    return sc.muscles[b.spec].line_axial_stiffness_n > 0.0;
+  };
+  if (std::none_of(tm->muscles.begin(), tm->muscles.end(), extensible)) return;
+  MjDataPtr data = start_state(sc, *tm);   // the inextensible lines' tensions at the start
   for (std::size_t k = 0; k < tm->muscles.size(); ++k) {
     BoundMuscle& b = tm->muscles[k];
+    if (!extensible(b)) continue;
     const MuscleSpec& spec = sc.muscles[b.spec];
-    b.line_length_m = spec.line_length_m;
-    if (spec.line == LineSource::kEquilibrium) {
-      if (solved >= 0) fail(sc, spec.key + ".line", "\"equilibrium\" is allowed for one muscle only");
-      solved = static_cast<int>(k);
-      b.line_length_m = 1e3;   // slack while the others' forces are computed
-    }
+    const double ea = spec.line_axial_stiffness_n;
+    const double tension = -data->actuator_force[b.actuator];
+    b.line_length_m /= 1.0 + tension / ea;
     store_pam_in_model(m, b.actuator, spec.pam.spring, b.line_length_m, static_cast<int>(k),
                        sc.model_file.c_str());
-    if (!spec.plant_file.empty()) {
-      store_plant_in_model(m, b.actuator, spec.plant, slip_index, sc.model_file.c_str());
-      slip_index += pam_slip_block_size(spec.plant);
-    }
+    store_line_stiffness_in_model(m, b.actuator, ea, sc.model_file.c_str());
   }
-  if (solved < 0) return;
+}
 
+// the one muscle's line that holds the start state, given the others' (set_lines)
+void solve_line(const Scenario& sc, TrialModel* tm, int solved) {
+  mjModel* m = tm->model.get();
   // the tension that balances the start state on the degree of freedom it moves most
   BoundMuscle& b = tm->muscles[solved];
   const MuscleSpec& spec = sc.muscles[b.spec];
@@ -272,6 +275,31 @@ void set_lines(const Scenario& sc, TrialModel* tm) {
   }
   store_pam_in_model(m, b.actuator, spec.pam.spring, b.line_length_m, solved,
                      sc.model_file.c_str());
+}
+
+// line lengths: fixed ones first, then at most one muscle solved for a static start
+void set_lines(const Scenario& sc, TrialModel* tm) {
+  mjModel* m = tm->model.get();
+  int solved = -1;
+  int slip_index = static_cast<int>(tm->muscles.size());   // after the pressures
+  for (std::size_t k = 0; k < tm->muscles.size(); ++k) {
+    BoundMuscle& b = tm->muscles[k];
+    const MuscleSpec& spec = sc.muscles[b.spec];
+    b.line_length_m = spec.line_length_m;
+    if (spec.line == LineSource::kEquilibrium) {
+      if (solved >= 0) fail(sc, spec.key + ".line", "\"equilibrium\" is allowed for one muscle only");
+      solved = static_cast<int>(k);
+      b.line_length_m = 1e3;   // slack while the others' forces are computed
+    }
+    store_pam_in_model(m, b.actuator, spec.pam.spring, b.line_length_m, static_cast<int>(k),
+                       sc.model_file.c_str());
+    if (!spec.plant_file.empty()) {
+      store_plant_in_model(m, b.actuator, spec.plant, slip_index, sc.model_file.c_str());
+      slip_index += pam_slip_block_size(spec.plant);
+    }
+  }
+  if (solved >= 0) solve_line(sc, tm, solved);
+  make_lines_extensible(sc, tm);
 }
 
 void append_bits(std::ostringstream& os, double v) {
@@ -333,6 +361,7 @@ bool same_trial_model(const Scenario& a, const Scenario& b) {
       os << mu.actuator << ';' << mu.label << ';' << mu.params_file << ';' << mu.plant_file << ';'
          << static_cast<int>(mu.line) << ';';
       append_bits(os, mu.line_length_m);
+      append_bits(os, mu.line_axial_stiffness_n);
       append_bits(os, mu.command.at(0.0));
     }
     for (const BodyMassSpec& bm : sc.body_masses) {

@@ -179,9 +179,12 @@ bool TrialRun::physics_step(double t) {
     for (std::size_t i = 0; i < n_; ++i) {
       const int act = tm_.muscles[i].actuator;
       const double taut = pam_length(m_, d_, act), length = pam_muscle_length(m_, d_, act);
-      const bool slack = taut < length;
-      const double velocity =
-          slack ? (length - muscle_length_m_[i]) / sc_.timestep_s : d_->actuator_velocity[act];
+      // (an extensible line's stretch moves the muscle apart from the tendon: its length's
+      // rate too)
+      const bool slack = taut < length, stretches = pam_line_axial_stiffness(m_, act) > 0.0;
+      const double velocity = slack || stretches
+                                  ? (length - muscle_length_m_[i]) / sc_.timestep_s
+                                  : d_->actuator_velocity[act];
       muscle_length_m_[i] = length;
       if (slip_[i]) pam_commit_friction(m_, d_, act, length);
       pneumatics_.set_kinematics(static_cast<int>(i), length, velocity);

@@ -153,6 +153,20 @@ void read_muscle_command(ConfigReader& in, const Scenario& sc, const std::string
   });
 }
 
+// an extensible line: its diameter and its material's modulus, both or neither
+void read_line_stiffness(ConfigReader& in, MuscleSpec* m) {
+  const std::string d_key = m->key + ".line_diameter_mm", e_key = m->key + ".line_modulus_MPa";
+  if (!in.has(d_key) && !in.has(e_key)) return;
+  in.check(in.has(d_key) && in.has(e_key), in.has(d_key) ? e_key : d_key,
+           "is required with " + (in.has(d_key) ? d_key : e_key) + " (an extensible line)");
+  const double d_mm = in.require_double(d_key), e_mpa = in.require_double(e_key);
+  in.check(d_mm > 0.0 && d_mm <= 10.0, d_key, "must be in (0, 10] mm, got " + format_value(d_mm));
+  in.check(e_mpa > 0.0 && e_mpa <= 1e6, e_key,
+           "must be in (0, 1e6] MPa, got " + format_value(e_mpa));
+  const double radius_m = units::mm_to_m(d_mm) / 2.0;
+  m->line_axial_stiffness_n = units::mpa_to_pa(e_mpa) * units::kPi * radius_m * radius_m;
+}
+
 // the line: fixed, solved, or the calibration's
 void read_muscle_line(ConfigReader& in, const std::string& name,
                       const ArmCalibration* calibration, bool lines_needed, MuscleSpec* muscle) {
@@ -175,6 +189,7 @@ void read_muscle_line(ConfigReader& in, const std::string& name,
              "is required (or .line = \"equilibrium\", or model.calibration with " + name + "_line_mm)");
     m.line_length_m = c->line_length_m;
   }
+  read_line_stiffness(in, &m);
 }
 
 MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& name,
