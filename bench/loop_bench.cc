@@ -3,7 +3,9 @@
 //   BM_BareMjStep           mj_step alone on the same arm (the PAM force callback included,
 //                           pressures fixed at 0.4 MPa, the ball held until 1 s then dropped)
 //   BM_TrialLoop/passive    run_trial: + CVODE pneumatics, sensors, controller and logging
-//   BM_TrialLoop/reflex     the same with the stretch reflex on
+//   BM_TrialLoop/reflex     the same with the stretch reflex on (/reflex_ideal on the
+//                           ideal plant; /reflex_maxwell_slip and /reflex_nylon_lines with
+//                           the hardware models of issue 25 on)
 //   BM_TwentyTrials         run_trials(20) wall time on 1 and 2 threads (CPU column: all
 //                           threads of the process, so CPU / (threads * Time) is the
 //                           share of the cores the workers got)
@@ -96,8 +98,27 @@ void BM_BareMjStep(benchmark::State& state) {
 }
 BENCHMARK(BM_BareMjStep)->Unit(benchmark::kMillisecond);
 
-void BM_TrialLoop(benchmark::State& state, const char* scenario_file) {
-  const Scenario sc = scenario_named(scenario_file);
+// Variants of a scenario's hardware (issue 25): none, the plants' braid friction as
+// Maxwell-slip elements (travels 0.1 and 0.5 mm), or 0.5 mm nylon lines (E 2.5 GPa).
+enum class Hardware { kShipped, kMaxwellSlip, kNylonLines };
+
+void change_hardware(Hardware hardware, Scenario* sc) {
+  const double line_radius_m = 0.25e-3, nylon_modulus_pa = 2.5e9;
+  for (MuscleSpec& m : sc->muscles) {
+    if (hardware == Hardware::kNylonLines) {
+      m.line_axial_stiffness_n = nylon_modulus_pa * M_PI * line_radius_m * line_radius_m;
+    }
+    if (hardware != Hardware::kMaxwellSlip || m.plant_file.empty()) continue;
+    m.plant.friction.model = FrictionModel::kMaxwellSlip;
+    m.plant.friction.slip.count = 2;
+    m.plant.friction.slip.weight = {0.5, 0.5};
+    m.plant.friction.slip.breakaway_m = {0.1e-3, 0.5e-3};
+  }
+}
+
+void BM_TrialLoop(benchmark::State& state, const char* scenario_file, Hardware hardware) {
+  Scenario sc = scenario_named(scenario_file);
+  change_hardware(hardware, &sc);
   const TrialModel arm = load_trial_model(sc);
   TrialSummary summary;
   for (auto _ : state) {
@@ -117,11 +138,19 @@ void BM_TrialLoop(benchmark::State& state, const char* scenario_file) {
   state.counters["cvode_steps_per_step"] = summary.metric("cvode_steps") / per;
   state.counters["rhs_evals_per_step"] = summary.metric("cvode_rhs_evals") / per;
 }
-BENCHMARK_CAPTURE(BM_TrialLoop, passive, "drop_mass_passive.toml")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_TrialLoop, reflex, "drop_mass.toml")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TrialLoop, passive, "drop_mass_passive.toml", Hardware::kShipped)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TrialLoop, reflex, "drop_mass.toml", Hardware::kShipped)
+    ->Unit(benchmark::kMillisecond);
 // the same trial on the ideal plant (Table IV's law, ideal regulated source): what the
 // physical plant and the regulator's loop cost
-BENCHMARK_CAPTURE(BM_TrialLoop, reflex_ideal, "drop_mass_ideal.toml")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TrialLoop, reflex_ideal, "drop_mass_ideal.toml", Hardware::kShipped)
+    ->Unit(benchmark::kMillisecond);
+// what the hardware models cost when on: the Maxwell-slip state, the extensible line's solve
+BENCHMARK_CAPTURE(BM_TrialLoop, reflex_maxwell_slip, "drop_mass.toml", Hardware::kMaxwellSlip)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TrialLoop, reflex_nylon_lines, "drop_mass.toml", Hardware::kNylonLines)
+    ->Unit(benchmark::kMillisecond);
 
 void BM_TwentyTrials(benchmark::State& state) {
   const Scenario sc = scenario_named("drop_mass.toml");
