@@ -55,7 +55,11 @@ TEST(CliUsageTest, TheVersionIsTheSameInTheProgramTheCitationAndTheChangelog) {
   EXPECT_NE(citation.find(std::string("\nversion: ") + PAMSIM_VERSION + "\n"), std::string::npos);
   EXPECT_NE(citation.find("doi: 10.3390/act14110560"), std::string::npos);
   const std::string changelog = pamsim_test::read_file(source + "/CHANGELOG.md");
-  const auto newest = changelog.find("\n## ");
+  // the newest released section (an "## Unreleased" one above it gathers what comes next)
+  auto newest = changelog.find("\n## ");
+  if (newest != std::string::npos && changelog.compare(newest, 14, "\n## Unreleased") == 0) {
+    newest = changelog.find("\n## ", newest + 1);
+  }
   ASSERT_NE(newest, std::string::npos);
   EXPECT_EQ(changelog.compare(newest + 4, std::string(PAMSIM_VERSION).size(), PAMSIM_VERSION), 0)
       << changelog.substr(newest, 40);

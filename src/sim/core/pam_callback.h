@@ -18,7 +18,9 @@
 //   and, in models with nuser_actuator >= kPamLineUserSize, 39 the line's axial stiffness
 //   E A [N] (0: inextensible). An extensible line of unstretched length L0 (slot 9) and
 //   tension F is L0 (1 + F / (E A)) long, so the PAM's length is the tendon's minus that,
-//   and F solves F = pull(tendon - L0 - L0 F / (E A)) (issue 25, item 3).
+//   and F solves F = pull(tendon - L0 - L0 F / (E A)) (issue 25, item 3); a smooth
+//   friction's rate is then still the tendon's, not the muscle's (the line's stretch rate
+//   is left out of it).
 // The Maxwell-slip state moves only at pam_commit_friction, once per physics step; the
 // callback evaluates the elements as they would be at the step's length, without storing it.
 // PAM length l = tendon length - line length. The spring law: d = l - l_n(p), Eq. (1)-(5);
