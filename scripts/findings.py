@@ -87,6 +87,16 @@ def table(pamsim, threads, rows, header, base_overrides=()):
     return "\n".join(lines)
 
 
+def publish(text, out, name):
+    """Prints the Markdown and writes it to OUT/NAME whole (temp file, then rename)."""
+    os.makedirs(out, exist_ok=True)
+    tmp = os.path.join(out, f".{name}.tmp")
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, os.path.join(out, name))
+    print(text)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
@@ -125,13 +135,7 @@ def main():
         "",
         table(pamsim, args.threads, GATE_ROWS, "gate", REGULATOR_ROWS[-1][1]),
     ]
-    text = "\n".join(parts) + "\n"
-    os.makedirs(out, exist_ok=True)
-    tmp = os.path.join(out, ".findings.md.tmp")
-    with open(tmp, "w") as f:
-        f.write(text)
-    os.replace(tmp, os.path.join(out, "findings.md"))
-    print(text)
+    publish("\n".join(parts) + "\n", out, "findings.md")
 
 
 if __name__ == "__main__":

@@ -15,7 +15,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from findings import cell, run  # noqa: E402  (one `pamsim run --trials 20`, one table cell)
+from findings import cell, publish, run  # noqa: E402  (a run of 20 trials, a cell, the output)
 
 SCENARIOS = [("model reflex (1/800)", "drop_mass.toml"),
              ("fiber reflex (1/300)", "drop_mass_fiber.toml"),
@@ -73,13 +73,7 @@ def main():
             lines.append(f"| {label} | " + " | ".join(cell(m) for m in metrics) +
                          f" | {rest:.2f} deg |")
             print(lines[-1], file=sys.stderr)
-    text = "\n".join(lines) + "\n"
-    os.makedirs(out, exist_ok=True)
-    tmp = os.path.join(out, ".hardware_losses.md.tmp")
-    with open(tmp, "w") as f:
-        f.write(text)
-    os.replace(tmp, os.path.join(out, "hardware_losses.md"))
-    print(text)
+    publish("\n".join(lines) + "\n", out, "hardware_losses.md")
 
 
 if __name__ == "__main__":
