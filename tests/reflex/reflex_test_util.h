@@ -1,10 +1,11 @@
 // reflex_test_util.h: what the sensing and controller tests share: the Table IV arm's
-// muscles as the sensing sees them, and the bad values' cases and the check that a bad
-// value's message names its key and quotes the value.
+// muscles as the sensing sees them, the bad values' cases and the check that a bad value's
+// message names its key and quotes the value, and a reading's fields as one list.
 #pragma once
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -51,6 +52,13 @@ inline void expect_bad_value(const std::function<void()>& call, const std::strin
                 what.compare(what.size() - tail.size(), tail.size(), tail) == 0)
         << "expected to end with \"" << tail << "\": " << what;
   }
+}
+
+// every field of a reading, in declaration order
+inline std::vector<double> fields(const MuscleReading& r) {
+  return {r.pressure_sensor_v, r.gauge_v,          r.fiber_rate_m_s,
+          r.fiber_length_m,    r.fiber_velocity_m_s, r.pressure_meas_pa,
+          r.force_meas_n,      r.length_est_m,     r.velocity_est_m_s};
 }
 
 }  // namespace pamsim::test

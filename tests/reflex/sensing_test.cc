@@ -30,6 +30,7 @@ namespace {
 using test::expect_bad_value;
 using test::table_iv_agonist;
 using test::table_iv_antagonist;
+using test::fields;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -83,12 +84,6 @@ std::vector<std::vector<MuscleReading>> run(
   return out;
 }
 
-// every field of a reading, in declaration order
-std::vector<double> fields(const MuscleReading& r) {
-  return {r.pressure_sensor_v, r.gauge_v,          r.fiber_rate_m_s,
-          r.fiber_length_m,    r.fiber_velocity_m_s, r.pressure_meas_pa,
-          r.force_meas_n,      r.length_est_m,     r.velocity_est_m_s};
-}
 
 double rms(const std::vector<double>& x) {
   double sum2 = 0.0;

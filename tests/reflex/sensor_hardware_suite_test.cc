@@ -17,6 +17,8 @@
 namespace pamsim {
 namespace {
 
+using test::fields;
+
 // 300 ticks of both Table IV muscles under moving pressures, forces and lengths
 std::vector<std::vector<MuscleReading>> run(const SensingConfig& config, std::uint64_t seed) {
   SensorSuite suite(config, {test::table_iv_agonist(), test::table_iv_antagonist()}, seed);
@@ -36,11 +38,6 @@ std::vector<std::vector<MuscleReading>> run(const SensingConfig& config, std::ui
   return out;
 }
 
-std::vector<double> fields(const MuscleReading& r) {
-  return {r.pressure_sensor_v, r.gauge_v,           r.fiber_rate_m_s,
-          r.fiber_length_m,    r.fiber_velocity_m_s, r.pressure_meas_pa,
-          r.force_meas_n,      r.length_est_m,      r.velocity_est_m_s};
-}
 
 // FNV-1a over the bits of every field of every reading
 std::uint64_t digest(const std::vector<std::vector<MuscleReading>>& readings) {
