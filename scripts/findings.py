@@ -97,23 +97,29 @@ def publish(text, out, name):
     print(text)
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def options(doc):
+    """--pamsim, --out, --threads (the paths made absolute), then cd to the repository root,
+    where the scenario paths are relative."""
+    ap = argparse.ArgumentParser(description=doc.splitlines()[0])
     root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
     ap.add_argument("--pamsim", default=os.path.join(root, "build/src/sim/pamsim"))
     ap.add_argument("--out", default=os.path.join(root, "renders/findings"))
     ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
     args = ap.parse_args()
-    pamsim, out = os.path.abspath(args.pamsim), os.path.abspath(args.out)
     os.chdir(root)
+    return os.path.abspath(args.pamsim), os.path.abspath(args.out), args.threads
 
-    passive = run(pamsim, args.threads, "drop_mass_passive.toml", [])
-    ideal = run(pamsim, args.threads, "drop_mass_ideal.toml", [])
+
+def main():
+    pamsim, out, threads = options(__doc__)
+
+    passive = run(pamsim, threads, "drop_mass_passive.toml", [])
+    ideal = run(pamsim, threads, "drop_mass_ideal.toml", [])
     # drop_mass_fiber.toml's reflex on the ideal plant: Table II's fiber threshold and gain
-    ideal_fiber = run(pamsim, args.threads, "drop_mass_ideal.toml",
+    ideal_fiber = run(pamsim, threads, "drop_mass_ideal.toml",
                       ['reflex.sensor="fiber"', "reflex.v_thr_mm_s=25.0",
                        "reflex.k_MPa_s_per_mm=0.0033333333333333335"])
-    est = run(pamsim, args.threads, "drop_mass.toml", [])["length_est_rmse_pct"]
+    est = run(pamsim, threads, "drop_mass.toml", [])["length_est_rmse_pct"]
     est_ideal = ideal["length_est_rmse_pct"]
     parts = [
         f"Passive (no reflex): {cell(passive)}.",
@@ -125,15 +131,15 @@ def main():
         "",
         "Physical plant across the regulator bracket (dead time / valve lag / band):",
         "",
-        table(pamsim, args.threads, REGULATOR_ROWS, "regulator"),
+        table(pamsim, threads, REGULATOR_ROWS, "regulator"),
         "",
         "Physical plant, nominal regulator, each gate off:",
         "",
-        table(pamsim, args.threads, GATE_ROWS, "gate"),
+        table(pamsim, threads, GATE_ROWS, "gate"),
         "",
         "Physical plant, slowest regulator (10 / 20 / 50), each gate off:",
         "",
-        table(pamsim, args.threads, GATE_ROWS, "gate", REGULATOR_ROWS[-1][1]),
+        table(pamsim, threads, GATE_ROWS, "gate", REGULATOR_ROWS[-1][1]),
     ]
     publish("\n".join(parts) + "\n", out, "findings.md")
 

@@ -9,13 +9,12 @@ written to a temp folder. Prints Markdown; writes it to OUT too.
 
     python3 scripts/hardware_losses.py [--pamsim build/src/sim/pamsim] [--out renders/findings]
 """
-import argparse
 import os
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from findings import cell, publish, run  # noqa: E402  (a run of 20 trials, a cell, the output)
+from findings import cell, options, publish, run  # noqa: E402  (shared with findings.py)
 
 SCENARIOS = [("model reflex (1/800)", "drop_mass.toml"),
              ("fiber reflex (1/300)", "drop_mass_fiber.toml"),
@@ -55,20 +54,13 @@ def rows(folder):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
-    ap.add_argument("--pamsim", default=os.path.join(root, "build/src/sim/pamsim"))
-    ap.add_argument("--out", default=os.path.join(root, "renders/findings"))
-    ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
-    args = ap.parse_args()
-    pamsim, out = os.path.abspath(args.pamsim), os.path.abspath(args.out)
-    os.chdir(root)
+    pamsim, out, threads = options(__doc__)
 
     lines = ["| hardware | " + " | ".join(s[0] for s in SCENARIOS) + " | passive rest |",
              "| --- | " + " | ".join("---" for _ in SCENARIOS) + " | --- |"]
     with tempfile.TemporaryDirectory() as folder:
         for label, overrides in rows(folder):
-            metrics = [run(pamsim, args.threads, scenario, overrides) for _, scenario in SCENARIOS]
+            metrics = [run(pamsim, threads, scenario, overrides) for _, scenario in SCENARIOS]
             rest = metrics[-1]["final_angle_deg"]["mean"]
             lines.append(f"| {label} | " + " | ".join(cell(m) for m in metrics) +
                          f" | {rest:.2f} deg |")
