@@ -17,6 +17,15 @@ namespace {
 constexpr int kLineSolveBits = 40;          // the line's tension to ~1e-12 relative
 constexpr int kLineSolveIterations = 50;
 
+// Throws "<path>: <size nuser_actuator> must be >= <slots> for <what>, got <n>" if the
+// model's actuators have fewer user slots than `what` needs.
+void require_user_slots(const mjModel* m, int slots, const char* what, const char* path) {
+  if (m->nuser_actuator >= slots) return;
+  throw InputError(std::string(path) + ": <size nuser_actuator> must be >= " +
+                   std::to_string(slots) + " for " + what + ", got " +
+                   std::to_string(m->nuser_actuator));
+}
+
 const mjtNum* user_slots(const mjModel* m, int id) {
   return m->actuator_user + static_cast<long>(id) * m->nuser_actuator;
 }
@@ -25,12 +34,8 @@ const mjtNum* user_slots(const mjModel* m, int id) {
 void store_friction_form(mjModel* m, int id, const AvbdlFriction& f, int slip_index,
                          const char* path) {
   const bool slip = f.model == FrictionModel::kMaxwellSlip;
-  if (m->nuser_actuator < kPamSlipUserSize) {
-    if (!slip) return;   // older models: smooth friction needs no slots
-    throw InputError(std::string(path) + ": <size nuser_actuator> must be >= " +
-                     std::to_string(kPamSlipUserSize) + " for a PAM with Maxwell-slip " +
-                     "friction, got " + std::to_string(m->nuser_actuator));
-  }
+  if (!slip && m->nuser_actuator < kPamSlipUserSize) return;   // older models: no slots needed
+  require_user_slots(m, kPamSlipUserSize, "a PAM with Maxwell-slip friction", path);
   if (slip && (slip_index < 0 || slip_index + 1 + f.slip.count > m->nuserdata)) {
     throw InputError(std::string(path) + ": <size nuserdata> must be >= " +
                      std::to_string(slip_index + 1 + f.slip.count) +
@@ -113,12 +118,20 @@ double line_tension(const mjModel* m, const mjData* d, int id, double* taut) {
   const double ea = pam_line_axial_stiffness(m, id);
   *taut = unstretched;
   const double rigid = law.pull(m, d, id, p, unstretched);
-  if (ea <= 0.0 || rigid <= 0.0) return rigid;
+  if (ea <= 0.0 || !(rigid > 0.0)) return rigid;   // (a NaN pull is the trial's to report)
   const double c = pam_line_length(m, id) / ea;
   const auto residual = [&](double f) { return law.pull(m, d, id, p, unstretched - c * f) - f; };
+  // the root lies in [0, rigid] when the pull grows with length; at its end (or should the
+  // friction's strain term ever break that order) the tension is the inextensible pull,
+  // rather than let TOMS 748 throw through MuJoCo's C frames
+  const double at_rigid = residual(rigid);
+  if (!(at_rigid < 0.0)) {
+    *taut = unstretched - c * rigid;
+    return rigid;
+  }
   std::uintmax_t iterations = kLineSolveIterations;
   const auto [lo, hi] = boost::math::tools::toms748_solve(
-      residual, 0.0, rigid, rigid, residual(rigid),
+      residual, 0.0, rigid, rigid, at_rigid,
       boost::math::tools::eps_tolerance<double>(kLineSolveBits), iterations);
   const double f = 0.5 * (lo + hi);
   *taut = unstretched - c * f;
@@ -129,12 +142,8 @@ double line_tension(const mjModel* m, const mjData* d, int id, double* taut) {
 
 void store_line_stiffness_in_model(mjModel* m, int id, double axial_stiffness_n,
                                    const char* path) {
-  if (m->nuser_actuator < kPamLineUserSize) {
-    if (axial_stiffness_n <= 0.0) return;   // older models: an inextensible line needs no slot
-    throw InputError(std::string(path) + ": <size nuser_actuator> must be >= " +
-                     std::to_string(kPamLineUserSize) + " for an extensible line, got " +
-                     std::to_string(m->nuser_actuator));
-  }
+  if (axial_stiffness_n <= 0.0 && m->nuser_actuator < kPamLineUserSize) return;   // older models
+  require_user_slots(m, kPamLineUserSize, "an extensible line", path);
   m->actuator_user[static_cast<long>(id) * m->nuser_actuator + kPamSlipUserSize] =
       axial_stiffness_n;
 }
@@ -151,11 +160,7 @@ int pam_slip_block_size(const AvbdlParams& plant) {
 void store_pam_in_model(mjModel* m, int id, const SpringModel& spring, double line_length_m,
                         int userdata_index, const char* path) {
   const std::string name = mj_id2name(m, mjOBJ_ACTUATOR, id) ? mj_id2name(m, mjOBJ_ACTUATOR, id) : "?";
-  if (m->nuser_actuator < kPamUserSize) {
-    throw InputError(std::string(path) + ": <size nuser_actuator> must be >= " +
-                     std::to_string(kPamUserSize) + " for PAM actuators, got " +
-                     std::to_string(m->nuser_actuator));
-  }
+  require_user_slots(m, kPamUserSize, "PAM actuators", path);
   if (m->actuator_biastype[id] != mjBIAS_USER || m->actuator_trntype[id] != mjTRN_TENDON) {
     throw InputError(std::string(path) + ": actuator '" + name +
                      "' must be a general actuator on a tendon with biastype=\"user\"");
@@ -175,11 +180,7 @@ void store_pam_in_model(mjModel* m, int id, const SpringModel& spring, double li
 
 void store_plant_in_model(mjModel* m, int id, const AvbdlParams& a, int slip_userdata_index,
                           const char* path) {
-  if (m->nuser_actuator < kPamPlantUserSize) {
-    throw InputError(std::string(path) + ": <size nuser_actuator> must be >= " +
-                     std::to_string(kPamPlantUserSize) + " for a PAM with a plant law, got " +
-                     std::to_string(m->nuser_actuator));
-  }
+  require_user_slots(m, kPamPlantUserSize, "a PAM with a plant law", path);
   mjtNum* u = m->actuator_user + static_cast<long>(id) * m->nuser_actuator;
   const AvbdlFriction& f = a.friction;
   const double values[] = {1.0, a.length_m, a.diameter_m, a.braid_angle_rad,
