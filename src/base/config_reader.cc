@@ -325,6 +325,24 @@ std::optional<double> TableEntry::number(const char* key) const {
   return v;
 }
 
+std::vector<std::string> TableEntry::texts(const char* key, bool required) const {
+  const toml::node* n = table.get(key);
+  if (!n) {
+    if (required) in.fail(where + key, "is required");
+    return {};
+  }
+  const toml::array* list = n->as_array();
+  std::vector<std::string> out;
+  if (list) {
+    for (const toml::node& item : *list) {
+      if (!item.is_string()) break;
+      out.push_back(*item.value<std::string>());
+    }
+  }
+  if (!list || out.size() != list->size()) in.fail(where + key, "must be a list of strings");
+  return out;
+}
+
 TableArray::TableArray(ConfigReader& in, const std::string& name) : in_(in), name_(name) {
   const toml::node* n = in.raw(name);
   if (!n) return;

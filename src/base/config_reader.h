@@ -117,6 +117,9 @@ struct TableEntry {
   std::string text(const char* key, bool required, const std::string& fallback = "") const;
   // A finite number, or nothing if the key is absent.
   std::optional<double> number(const char* key) const;
+  // A list of strings ("... must be a list of strings"); a missing one is refused if
+  // `required`, else empty.
+  std::vector<std::string> texts(const char* key, bool required) const;
 };
 
 // The array of tables `name` ([[name]]) of a reader's document, marked read; empty if absent.

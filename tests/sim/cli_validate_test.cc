@@ -167,4 +167,73 @@ TEST(CliValidateTest, BadInputIsOneLineAndLeavesNoTable) {
   }
 }
 
+// A reaching protocol of one short trial with the given [[budget_source]] tables (the
+// shipped scenario, its path made absolute), written into dir.
+fs::path budget_protocol(const fs::path& dir, const std::string& sources) {
+  pamsim_test::write_text(
+      dir / "budget.toml",
+      "scenario = \"" + std::string(PAMSIM_SOURCE_DIR) + "/scenarios/reaching.toml\"\n"
+      "trials = 1\nwindow_s = [2.0, 4.0]\n" + sources);
+  return dir / "budget.toml";
+}
+
+const char kBudgetSources[] =
+    "[[budget_source]]\nname = \"white noise\"\n"
+    "on = [\"sensors.noise_scale=1\"]\noff = [\"sensors.noise_scale=0\"]\n"
+    "[[budget_source]]\nname = \"pressure sensor\"\n"
+    "on = ['sensors.pressure.model=\"pse540\"']\n";
+
+// --budget: the runs none, all, each alone and all but each, for every case; the table
+// printed is the file; the same bytes on one and two threads.
+TEST(CliValidateTest, BudgetHasEveryRunOfEveryCaseOnAnyThreadCount) {
+  const fs::path dir = fresh_dir("cli_validate_budget");
+  const fs::path protocol = budget_protocol(dir, kBudgetSources);
+  const std::string args = "validate reaching " + protocol.string() +
+                           " --budget --set sim.duration_s=5 --out ";
+  const CliResult r = run_pamsim(args + (dir / "a").string() + " --threads 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = csv_rows(read_file(dir / "a" / "budget.csv"));
+  ASSERT_EQ(rows.size(), 1u + 4 * 6);  // (agonist, antagonist) x (model, fiber) x 6 runs
+  EXPECT_EQ(rows[1][0], "agonist model");
+  EXPECT_EQ(rows[1][1], "none");
+  EXPECT_EQ(rows[6][1], "all but pressure sensor");
+  EXPECT_EQ(rows[6][2], "pressure sensor");
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_TRUE(std::isfinite(std::stod(rows[i][4]))) << i;
+  }
+  // the fiber's only error without noise is the integration's rounding; with it, far more
+  EXPECT_LT(std::stod(rows[6 + 1][4]), 1e-9) << "agonist fiber, none";
+  EXPECT_GT(std::stod(rows[6 + 3][4]), 0.05) << "agonist fiber, only white noise";
+  EXPECT_TRUE(fs::exists(dir / "a" / "budget.png"));
+  EXPECT_EQ(r.out, read_file(dir / "a" / "budget.md"));
+  ASSERT_EQ(run_pamsim(args + (dir / "b").string() + " --threads 1 --no-plot").exit_code, 0);
+  EXPECT_EQ(read_file(dir / "a" / "budget.csv"), read_file(dir / "b" / "budget.csv"));
+  EXPECT_FALSE(fs::exists(dir / "b" / "budget.png"));
+}
+
+TEST(CliValidateTest, BadBudgetIsOneLineAndLeavesNoBudget) {
+  const fs::path dir = fresh_dir("cli_validate_budget_bad");
+  const fs::path out = dir / "out";
+  struct Case {
+    std::string protocol, set, says;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"", "", "budget_source: --budget needs at least one [[budget_source]]"},
+           {"[[budget_source]]\nname = \"p\"\non = ['sensors.pressure.model=\"psx\"']\n", "",
+            "budget source \"p\" on: "},
+           {"[[budget_source]]\nname = \"p\"\non = ['sensors.nosuch=1']\n", "",
+            "sensors.nosuch"},
+           {kBudgetSources, " --set sensors.noise_scale=2", "sets sensors.noise_scale"},
+           {"[[budget_source]]\nname = \"p\"\non = []\n", "", "budget_source[0].on"}}) {
+    const fs::path protocol = budget_protocol(dir, c.protocol);
+    const CliResult r = run_pamsim("validate reaching " + protocol.string() + " --budget" + c.set +
+                                   " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << c.says;
+    EXPECT_EQ(line_count(r.err), 1) << c.says << ": " << r.err;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(protocol.string()), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out / "budget.csv")) << c.says;
+  }
+}
+
 }  // namespace

@@ -3,6 +3,7 @@
 // and `--threads N`: the papers' validation experiments (seeds/000 Table III and Table V) as
 // protocols over data files (scenarios/validate_*.toml; src/sim/validate/). Inputs are all
 // read and checked before any trial runs; the tables are written last, each atomically.
+// With `--budget`, each the protocol's error budget instead (validate/protocol_budgets.h).
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -11,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -28,6 +30,7 @@
 #include "sim/io/provenance.h"
 #include "sim/io/staged_outputs.h"
 #include "sim/validate/length_estimation.h"
+#include "sim/validate/protocol_budgets.h"
 #include "sim/validate/reaching.h"
 
 namespace pamsim {
@@ -41,6 +44,7 @@ struct ValidateOptions {
   std::optional<std::uint64_t> seed;
   int threads = 0;
   bool force = false;
+  bool budget = false;
   bool no_plot = false;
   bool quiet = false;
   std::string plot_format = "png";
@@ -54,6 +58,12 @@ const std::vector<std::string> kLengthOutputs = [] {
 const std::vector<std::string> kReachingOutputs = [] {
   std::vector<std::string> names = {"table5.csv", "table5.md", kProvenanceFile};
   for (const std::string& plot : plot_file_names({"fig7.png"})) names.push_back(plot);
+  return names;
+}();
+
+const std::vector<std::string> kBudgetOutputs = [] {
+  std::vector<std::string> names = {"budget.csv", "budget.md", kProvenanceFile};
+  for (const std::string& plot : plot_file_names({"budget.png"})) names.push_back(plot);
   return names;
 }();
 
@@ -101,10 +111,49 @@ void attach_progress(ValidationOptions* v, const std::string& label, int total, 
   v->progress = [p](int done, int) { p->update(done); };
 }
 
+// --budget: runs `run` (a protocol's budget of `sources`, protocol_budgets.h, `trials` per
+// run of the protocol) and writes budget.csv, budget.md and budget.png into --out (default
+// renders/validate_<name>_budget)
+void run_budget_command(const ValidateOptions& o, const std::string& name,
+                        const std::vector<BudgetSource>& sources, int trials,
+                        const std::function<ErrorBudget(const ValidationOptions&)>& run) {
+  const auto started = std::chrono::steady_clock::now();
+  const std::string started_utc = utc_timestamp();
+  ValidationOptions v = common_options(o, "renders/validate_" + name + "_budget");
+  if (!o.force) refuse_earlier_outputs(v.out_dir, kBudgetOutputs);
+  use_plot_formats(o.plot_format);
+  const bool plots = plots_wanted(o.no_plot);
+  require_writable(v.out_dir);
+  const std::string command = "validate " + name + " --budget";
+  const int total = trials * static_cast<int>(budget_configs(sources).size());
+  std::shared_ptr<ProgressReporter> progress;
+  attach_progress(&v, "pamsim " + command, total, o.quiet, &progress);
+  v.started = [&](int n) {
+    std::cerr << "pamsim validate: error budget of " << sources.size() << " sources, " << n
+              << " trials on " << v.threads << (v.threads == 1 ? " thread" : " threads") << "\n";
+  };
+  const ErrorBudget budget = run(v);
+  progress->finish(total);
+  StagedOutputs staged(v.out_dir, kBudgetOutputs);
+  staged.write([&] {
+    write_error_budget(budget, staged.staging(), plots);
+    write_validation_provenance(o, v, command, staged.path(kProvenanceFile), started, started_utc);
+  });
+  staged.publish();
+  std::cout << budget_markdown(budget);
+  std::cerr << "pamsim validate: outputs in " << v.out_dir << " (budget.csv, budget.md"
+            << (plots ? ", budget.png)\n" : ")\n");
+}
+
 void run_length_estimation(const ValidateOptions& o) {
   const auto started = std::chrono::steady_clock::now();
   const std::string started_utc = utc_timestamp();
   const LengthValidationSpec spec = load_length_validation(o.file, o.pams);
+  if (o.budget) {
+    return run_budget_command(o, "length_estimation", spec.budget,
+                              static_cast<int>(spec.pams.size()),
+                              [&](const ValidationOptions& v) { return run_length_budget(spec, v); });
+  }
   ValidationOptions v = common_options(o, "renders/validate_length_estimation");
   if (!o.force) refuse_earlier_outputs(v.out_dir, kLengthOutputs);
   use_plot_formats(o.plot_format);
@@ -138,6 +187,12 @@ void run_reaching(const ValidateOptions& o) {
   const auto started = std::chrono::steady_clock::now();
   const std::string started_utc = utc_timestamp();
   const ReachingValidationSpec spec = load_reaching_validation(o.file);
+  if (o.budget) {
+    return run_budget_command(o, "reaching", spec.budget, spec.trials,
+                              [&](const ValidationOptions& v) {
+      return run_reaching_budget(spec, v);
+    });
+  }
   ValidationOptions v = common_options(o, "renders/validate_reaching");
   if (!o.force) refuse_earlier_outputs(v.out_dir, kReachingOutputs);
   use_plot_formats(o.plot_format);
@@ -169,6 +224,9 @@ void add_common(CLI::App* cmd, ValidateOptions* o, const std::string& default_fi
       ->check(non_negative_seed);
   cmd->add_option("--threads", o->threads, "Worker threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--force", o->force, "Replace the outputs of an earlier validation in the folder");
+  cmd->add_flag("--budget", o->budget,
+                "The error budget instead of the table: the protocol with each hardware error "
+                "source ([[budget_source]]) on and off (budget.csv, budget.md, budget.png)");
   cmd->add_flag("--no-plot", o->no_plot, "Write no figures (gnuplot not needed)");
   cmd->add_flag("--quiet", o->quiet, "No progress bar or progress lines");
   add_plot_format_option(cmd, &o->plot_format);

@@ -15,6 +15,7 @@
 //                       test's, >= 3 distinct for Eq. (4)), max_deformation_mm (> step),
 //                       offset_MPa (the sine's, Eq. (6)-(7)), paper = { eq3 = [max, RMSE],
 //                       ... } (Table III, % of length; optional)
+//   [[budget_source]]   the hardware's error sources for --budget (error_budget.h)
 // Each PAM's dynamic trials set muscles.pam.plant, muscles.pam.params (the fit, written as
 // a PAM file), bodies.weight.mass_kg and muscles.pam.command.offset_MPa on the rig.
 #pragma once
@@ -32,6 +33,7 @@
 #include "pam_actuator/plant_params.h"
 #include "pam_actuator/tensile_test.h"
 #include "sim/core/trial.h"
+#include "sim/validate/error_budget.h"
 #include "sim/validate/validation_options.h"
 
 namespace pamsim {
@@ -55,6 +57,7 @@ struct LengthValidationSpec {
   StrainGaugeParams gauge;  // from tensile.sensors_from
   std::string gauge_file;
   std::vector<ValidationPam> pams;
+  std::vector<BudgetSource> budget;  // [[budget_source]]
 };
 
 // Reads and validates the protocol, with `protocol_overrides` ("key=value" of the protocol

@@ -164,6 +164,7 @@ LengthValidationSpec load_length_validation(const std::string& path,
     }
   }
   spec.pams = pams_asked(std::move(pams), only);
+  spec.budget = read_budget_sources(in);
   in.reject_unknown();
   return spec;
 }

@@ -109,6 +109,7 @@ ReachingValidationSpec load_reaching_validation(
     spec.paper[name] = {v[0], v[1]};
   }
   in.raw("paper");
+  spec.budget = read_budget_sources(in);
   in.reject_unknown();
   return spec;
 }

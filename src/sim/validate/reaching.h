@@ -14,6 +14,7 @@
 //                 neither (only to "all")
 //   [paper]       <method>_<muscle>[_before_slack|_after_slack] = [max, RMSE] (% of
 //                 length), method "model" or "fiber", muscle the scenario's muscle name
+//   [[budget_source]] the hardware's error sources for --budget (error_budget.h)
 // The fiber sensor reads only the rate of length change: its length is the rate integrated
 // from the encoder's length at the window's start (the paper calibrated it so).
 #pragma once
@@ -26,6 +27,7 @@
 
 #include "sim/core/scenario.h"
 #include "sim/core/trial.h"
+#include "sim/validate/error_budget.h"
 #include "sim/validate/validation_options.h"
 
 namespace pamsim {
@@ -37,6 +39,7 @@ struct ReachingValidationSpec {
   double window_start_s = 0.0, window_end_s = 0.0;
   double min_slack_s = 0.1;
   std::map<std::string, ErrorPct> paper;  // "model_agonist", "fiber_antagonist_after_slack"
+  std::vector<BudgetSource> budget;       // [[budget_source]]
 };
 
 // Throws InputError "<file>: <key> <problem>". `protocol_overrides` ("key=value" of the
