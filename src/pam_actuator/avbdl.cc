@@ -75,7 +75,11 @@ double integrate_unit_interval(const F& f) {
 // A reading of Eq. (24), which multiplies by "the bladder volume" without placing the wall;
 // a bladder inside the braid (R0 - t to R0) would hold (2 R0 - t) / (2 R0 + t) of this
 // rubber, two thirds for plant_agonist.toml (README, departures)
+// With a tube (bladder_diameter_m > 0): the annulus Db / 2 - t to Db / 2, 2 pi rb t.
 double bladder_area(const AvbdlParams& p) {
+  if (p.bladder_diameter_m > 0.0) {
+    return 2.0 * kPi * avbdl_bladder_reference_radius(p) * p.wall_thickness_m;
+  }
   const double r0 = 0.5 * p.diameter_m;
   return kPi * p.wall_thickness_m * (2.0 * r0 + p.wall_thickness_m);
 }
@@ -86,23 +90,43 @@ double bladder_area(const AvbdlParams& p) {
 struct Shape {
   BraidGeometry braid;
   double r0 = 0.0;                  // fitting radius D0 / 2
+  double rb = 0.0;                  // the bladder's reference radius (its stretch is R / rb)
   std::array<double, 4> profile{};  // eta(s) coefficients
   ProfileMoments moments;
   double bladder_area = 0.0;        // reference wall area per unit length
+  double min_length = 0.0;          // avbdl_min_length
 };
+
+// The length [m] at which a Gent-Gent bladder reaches 0.999 of its limit, I1 - 3 = Jm (the
+// braid cannot contract past it: the bladder would have to stretch without bound); 0 when
+// the braid's full contraction comes first, or for the Mooney-Rivlin law.
+double bladder_limit_length(const AvbdlParams& p, const BraidGeometry& g, double rb) {
+  if (p.bladder_law != BladderLaw::kGentGent) return 0.0;
+  // lambda^2 + 2 / lambda - 3 = 0.999 Jm, by Newton from sqrt(Jm + 3) (a few steps: the
+  // 2 / lambda term is small beyond a stretch of 3)
+  const double target = 0.999 * p.bladder_gent.jm + 3.0;
+  double l = std::sqrt(target);
+  for (int i = 0; i < 8; ++i) l -= (l * l + 2.0 / l - target) / (2.0 * l - 2.0 / (l * l));
+  const double k = 2.0 * kPi * g.turns * l * rb;   // 2 pi n R at that stretch
+  const double b = g.fibre_length_m;
+  return k < b ? std::sqrt(b * b - k * k) : b;
+}
 
 Shape shape_of(const AvbdlParams& p) {
   Shape s;
   s.braid = braid_from_initial_shape(p.length_m, p.diameter_m, p.braid_angle_rad);
   s.r0 = 0.5 * p.diameter_m;
+  s.rb = avbdl_bladder_reference_radius(p);
   s.profile = profile_coefficients(p.end_slope);
   s.moments = profile_moments(p.end_slope);
   s.bladder_area = bladder_area(p);
+  s.min_length = std::max(s.braid.fibre_length_m / std::sqrt(3.0),
+                          bladder_limit_length(p, s.braid, s.rb));
   return s;
 }
 
 // the lengths the law holds for (avbdl_min_length, avbdl_max_length)
-double min_length(const Shape& shape) { return shape.braid.fibre_length_m / std::sqrt(3.0); }
+double min_length(const Shape& shape) { return shape.min_length; }
 double max_length(const Shape& shape) { return kAvbdlMaxStretch * shape.braid.fibre_length_m; }
 
 double dvolume_dlength(const AvbdlParams& p, const Shape& shape, double length_m) {
@@ -126,19 +150,19 @@ double dvolume_dlength(const AvbdlParams& p, const Shape& shape, double length_m
 }
 
 double dbladder_energy_dlength(const AvbdlParams& p, const Shape& shape, double length_m) {
-  const double r0 = shape.r0;
+  const double r0 = shape.r0, rb = shape.rb;
   const double r = std::sqrt(radius_squared(shape.braid, length_m));
   const double area = shape.bladder_area;
   const std::array<double, 4>& c = shape.profile;
   const double dr = dradius_squared_dlength(shape.braid, length_m) / (2.0 * r);
 
-  // Eq. (21): dW/dlambda = sigma; the middle's stretch R / R0 moves with dR/dL
+  // Eq. (21): dW/dlambda = sigma; the middle's stretch R / rb moves with dR/dL
   const double dw_mid = area * (p.length_m - 2.0 * p.end_length_m) *
-                        mooney_rivlin_stress(p.bladder, r / r0) / r0;
+                        bladder_stress(p, r / rb) / rb;
   // at s the end radius moves by eta(s) dR/dL
   const double per_end = integrate_unit_interval([&](double s) {
     const double eta = profile(c, s);
-    return mooney_rivlin_stress(p.bladder, (r0 + (r - r0) * eta) / r0) * eta / r0;
+    return bladder_stress(p, (r0 + (r - r0) * eta) / rb) * eta / rb;
   });
   return (dw_mid + 2.0 * area * p.end_length_m * per_end) * dr;
 }
@@ -154,13 +178,21 @@ double static_force(const AvbdlParams& p, const Shape& shape, double p_pa, doubl
 double free_length(const AvbdlParams& p, const Shape& shape, double p_pa) {
   if (std::isnan(p_pa)) return p_pa;   // no length for no pressure: the trial diverges
   if (!(p_pa > 0.0)) return p.length_m;
-  const double lo = min_length(shape);
+  double lo = min_length(shape);
   const auto force = [&](double l) { return static_force(p, shape, p_pa, l); };
   if (force(lo) >= 0.0) return lo;              // still pulling at the braid's limit
-  if (force(p.length_m) <= 0.0) return p.length_m;
+  double hi = p.length_m;
+  if (force(hi) <= 0.0) {
+    // a tube bladder below the pressure at which it meets the braid at L0: the braid must
+    // be stretched past L0 until it narrows onto the tube (the law's bladder, the braid's,
+    // stays stretched at L0 and so never gets here)
+    if (p.bladder_diameter_m == 0.0 || force(max_length(shape)) <= 0.0) return p.length_m;
+    lo = hi;
+    hi = max_length(shape);
+  }
   std::uintmax_t iterations = 100;
   const auto [a, b] = boost::math::tools::toms748_solve(
-      force, lo, p.length_m, boost::math::tools::eps_tolerance<double>(45), iterations);
+      force, lo, hi, boost::math::tools::eps_tolerance<double>(45), iterations);
   return 0.5 * (a + b);
 }
 
@@ -235,19 +267,66 @@ double mooney_rivlin_energy_density(const MooneyRivlinConstants& c, double stret
 
 double avbdl_bladder_energy(const AvbdlParams& p, double length_m) {
   const double r0 = 0.5 * p.diameter_m;
+  const double rb = avbdl_bladder_reference_radius(p);
   const double r = avbdl_middle_radius(p, length_m);
   const double area = bladder_area(p);
   const std::array<double, 4> c = profile_coefficients(p.end_slope);
 
-  // Eq. (23)-(24), middle: V_bl(Lr) W_def(R / R0), with the bladder's reference (material)
-  // volume of the straight part, so that W depends on L only through the stretch
+  // Eq. (23)-(24), middle: V_bl(Lr) W_def(R / rb), with the bladder's reference (material)
+  // volume of the straight part, so that W depends on L only through the stretch (a tube
+  // is stretched at L0 already: W is then counted from its unstretched state, which moves
+  // no force, only the energy's zero)
   const double w_mid = area * (p.length_m - 2.0 * p.end_length_m) *
-                       mooney_rivlin_energy_density(p.bladder, r / r0);
+                       bladder_energy_density(p, r / rb);
   // Eq. (24), ends: the paper's sum over x slices, as a Gauss rule over s = x / Ld
   const double per_end = integrate_unit_interval([&](double s) {
-    return mooney_rivlin_energy_density(p.bladder, (r0 + (r - r0) * profile(c, s)) / r0);
+    return bladder_energy_density(p, (r0 + (r - r0) * profile(c, s)) / rb);
   });
   return w_mid + 2.0 * area * p.end_length_m * per_end;
+}
+
+double gent_gent_stress(const GentGentConstants& c, double stretch) {
+  // P = 2 (lambda - 1/lambda^2) (W1 + W2 / lambda), uniaxial, incompressible:
+  // W1 = mu Jm / (2 (Jm - (I1 - 3))), W2 = C2 / I2, I1 = lambda^2 + 2/lambda, I2 = 2 lambda
+  // + 1/lambda^2
+  const double l = stretch;
+  const double i1_minus_3 = l * l + 2.0 / l - 3.0;
+  const double i2 = 2.0 * l + 1.0 / (l * l);
+  const double w1 = 0.5 * c.mu_pa * c.jm / (c.jm - i1_minus_3);
+  return 2.0 * (l - 1.0 / (l * l)) * (w1 + c.c2_pa / (i2 * l));
+}
+
+double gent_gent_energy_density(const GentGentConstants& c, double stretch) {
+  const double l = stretch;
+  const double i1_minus_3 = l * l + 2.0 / l - 3.0;
+  const double i2 = 2.0 * l + 1.0 / (l * l);
+  return -0.5 * c.mu_pa * c.jm * std::log1p(-i1_minus_3 / c.jm) + c.c2_pa * std::log(i2 / 3.0);
+}
+
+double bladder_stress(const AvbdlParams& p, double stretch) {
+  return p.bladder_law == BladderLaw::kGentGent ? gent_gent_stress(p.bladder_gent, stretch)
+                                                : mooney_rivlin_stress(p.bladder, stretch);
+}
+
+double bladder_energy_density(const AvbdlParams& p, double stretch) {
+  return p.bladder_law == BladderLaw::kGentGent
+             ? gent_gent_energy_density(p.bladder_gent, stretch)
+             : mooney_rivlin_energy_density(p.bladder, stretch);
+}
+
+double avbdl_bladder_reference_radius(const AvbdlParams& p) {
+  if (p.bladder_diameter_m > 0.0) return 0.5 * p.bladder_diameter_m - 0.5 * p.wall_thickness_m;
+  return 0.5 * p.diameter_m;
+}
+
+double avbdl_bladder_free_pressure(const AvbdlParams& p, double radius_m) {
+  const double rb = avbdl_bladder_reference_radius(p);
+  const double stretch = radius_m / rb;
+  return bladder_stress(p, stretch) * p.wall_thickness_m / (stretch * rb);
+}
+
+double avbdl_bladder_contact_pressure(const AvbdlParams& p) {
+  return avbdl_bladder_free_pressure(p, 0.5 * p.diameter_m);
 }
 
 double avbdl_dbladder_energy_dlength(const AvbdlParams& p, double length_m) {

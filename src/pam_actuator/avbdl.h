@@ -19,6 +19,19 @@
 //   Eq. (26)       D_max = D0 L0 / L_min (as read)     replaced by the braid (avbdl_middle_radius)
 //   Eq. (27)-(29)  profile scaled to any D, L          avbdl_end_radius, avbdl_params_from_geometry
 //
+// The bladder's reference (issue 25, item 1). Seeds/003's DMSP-20 has a bladder as wide as
+// its braid, and by default so does this file's: the wall spans R0 to R0 + t and its hoop
+// stretch is R / R0. The papers' own muscles (seeds/000 Table I) are a rubber tube a third
+// to a quarter of the sleeve's diameter (the arm's: 4 mm inside 16 mm): with
+// bladder_diameter_m > 0 the wall is that tube, Db / 2 - t to Db / 2, its stretch is
+// R / rb with rb = Db / 2 - t / 2 (the wall's mid-surface; thin once inflated), so at L0 it
+// is already stretched R0 / rb (about 5): the tube inflates freely until it meets the braid,
+// and the braid pulls only at pressures above that (avbdl_bladder_free_pressure). Eq. (20)'s
+// Mooney-Rivlin fit holds to a stretch of 2.4; for the tube, BladderLaw::kGentGent, the
+// Gent-Gent law (Pucci & Saccomandi 2002), fitted here to Treloar's whole uniaxial curve
+// (to a stretch of 7.6) within 4 %. Both are used as the paper uses Eq. (20): the hoop's
+// nominal uniaxial stress and its work per reference volume.
+//
 // What pamsim builds where the paper gives data instead of formulas:
 // - The middle radius follows the inextensible braid (Chou & Hannaford, chou_hannaford.h):
 //   R(L) = sqrt(b^2 - L^2) / (2 pi n). For the DMSP-20 the braid reaches D = 38.6 mm at its
@@ -87,6 +100,25 @@ inline constexpr MooneyRivlinConstants kNaturalRubberTreloar{0.0505e6, 0.1771e6,
 // Actuators", IEEE Trans. Robot. 31(3), 778-789 (2015).
 inline constexpr MooneyRivlinConstants kSiliconeElastosilM4601{0.11e6, 0.0, 0.02e6};
 
+// The Gent-Gent law, W = -(mu Jm / 2) ln(1 - (I1 - 3) / Jm) + C2 ln(I2 / 3) [Pa] (E. Pucci
+// and G. Saccomandi, "A note on the Gent model for rubber-like materials", Rubber Chem.
+// Technol. 75, 839 (2002)): Gent's finite extensibility Jm on I1 and a logarithmic I2 term for the small-strain
+// softening Gent lacks. mu, C2 >= 0, Jm > 0; defined while I1 - 3 < Jm.
+struct GentGentConstants {
+  double mu_pa = 0.0;
+  double c2_pa = 0.0;
+  double jm = 0.0;
+};
+
+// Natural rubber: the Gent-Gent law fitted here (least squares on nominal stress, linear in
+// mu and C2 for each Jm) to all 25 points of Treloar's uniaxial data (the source of
+// kNaturalRubberTreloar), stretch 1 to 7.6: mu = 0.2373 MPa, C2 = 0.2992 MPa, Jm = 77.94;
+// every point within 4 % (RMS 0.054 MPa, largest 0.16 MPa at 7.6). Over the stretches a
+// Table I tube reaches (4-6) the Mooney-Rivlin fit above is 25-50 % too stiff.
+inline constexpr GentGentConstants kNaturalRubberTreloarGentGent{0.23732e6, 0.29918e6, 77.94};
+
+enum class BladderLaw { kMooneyRivlin, kGentGent };
+
 // One stroke direction's friction coefficients, all >= 0.
 struct AvbdlFrictionCoefficients {
   double force_n = 0.0;            // F0: friction at p = 0 [N]
@@ -117,6 +149,9 @@ struct AvbdlParams {
   double braid_angle_rad = units::deg_to_rad(25.0);     // alpha0, in (0, 54.74 deg)
   double wall_thickness_m = 0.002;                      // t >= 0 (R0 to R0 + t); 0: no loss
   MooneyRivlinConstants bladder = kNaturalRubberTreloar;
+  BladderLaw bladder_law = BladderLaw::kMooneyRivlin;   // kGentGent: bladder_gent instead
+  GentGentConstants bladder_gent = kNaturalRubberTreloarGentGent;
+  double bladder_diameter_m = 0.0;   // Db, the tube's outer diameter; 0: the braid's (above)
   double end_length_m = 0.032;                          // Ld >= 0; 0: no end regions
   double end_slope = 2.0;                               // a in [0, 3]; 2: parabolic shoulder
   AvbdlFriction friction;
@@ -125,7 +160,9 @@ struct AvbdlParams {
 // Throws InputError with one line "<key_prefix><key> must be ..., got <value>" for a
 // non-finite value, L0 or D0 <= 0, a braid angle outside (0, arccos(1/sqrt 3)) (at 0 the
 // fibre is no longer than L0; from 54.74 deg on the braid cannot contract from L0), t < 0,
-// C10 + C01 <= 0 (no initial shear modulus), C20 < 0, Ld < 0 or 2 Ld >= b / sqrt(3) (both
+// C10 + C01 <= 0 (no initial shear modulus), C20 < 0, a Gent-Gent law with mu <= 0, C2 < 0
+// or Jm <= 0, a bladder diameter < 0, not above 2 t or above D0, a Gent-Gent bladder that
+// the braid's full contraction would stretch to its limit, Ld < 0 or 2 Ld >= b / sqrt(3) (both
 // end regions must fit in the fully contracted muscle), a outside [0, 3], a negative
 // friction coefficient, or v_s <= 0. Keys are the field paths: "length_m",
 // "bladder.c10_pa", "friction.extension.force_n", ...
@@ -142,9 +179,11 @@ AvbdlParams avbdl_params_from_geometry(double length_m, double diameter_m,
 // b and n of the braid from L0, D0, alpha0 (chou_hannaford.h).
 BraidGeometry avbdl_braid(const AvbdlParams& params);
 
-// The lengths the law holds for [m]: from the braid's full contraction b / sqrt(3) to
-// kAvbdlMaxStretch b, just short of the fibre length b at which the muscle would have to
-// break (a pamsim cap: seeds/003 does not model a muscle stretched that far).
+// The lengths the law holds for [m]: from the braid's full contraction b / sqrt(3) (or,
+// for a Gent-Gent bladder that reaches 0.999 of its limit first, from that length: no
+// pressure contracts the muscle past it) to kAvbdlMaxStretch b, just short of the fibre
+// length b at which the muscle would have to break (a pamsim cap: seeds/003 does not model
+// a muscle stretched that far).
 inline constexpr double kAvbdlMaxStretch = 0.999;
 double avbdl_min_length(const AvbdlParams& params);
 double avbdl_max_length(const AvbdlParams& params);
@@ -169,6 +208,22 @@ double mooney_rivlin_stress(const MooneyRivlinConstants& c, double stretch);
 // Eq. (21)-(22): its integral from 1 to lambda, work per reference volume [J/m^3].
 double mooney_rivlin_energy_density(const MooneyRivlinConstants& c, double stretch);
 
+// The bladder's law at hoop stretch lambda: nominal stress [Pa] and work per reference
+// volume [J/m^3] (Eq. (20)-(22) or the Gent-Gent law, whichever params.bladder_law names).
+double gent_gent_stress(const GentGentConstants& c, double stretch);
+double gent_gent_energy_density(const GentGentConstants& c, double stretch);
+double bladder_stress(const AvbdlParams& params, double stretch);
+double bladder_energy_density(const AvbdlParams& params, double stretch);
+
+// The bladder's reference radius [m], its stretch being R / that: R0 by default, the tube's
+// mid-surface Db / 2 - t / 2 with bladder_diameter_m > 0 (see the top of this file).
+double avbdl_bladder_reference_radius(const AvbdlParams& params);
+// The gauge pressure [Pa] that holds the bladder, unconfined, at outer radius r >= its
+// reference: the thin tube's p = sigma(lambda) t / (lambda rb) with lambda = r / rb.
+// At r = R0 (avbdl_bladder_contact_pressure) the tube meets the braid of the muscle at L0.
+double avbdl_bladder_free_pressure(const AvbdlParams& params, double radius_m);
+double avbdl_bladder_contact_pressure(const AvbdlParams& params);
+
 // Eq. (23)-(24): work [J] stored in the bladder's radial deformation at length L
 // (0 at L0); and its slope dW/dL [N].
 double avbdl_bladder_energy(const AvbdlParams& params, double length_m);
@@ -178,8 +233,9 @@ double avbdl_dbladder_energy_dlength(const AvbdlParams& params, double length_m)
 double avbdl_static_force(const AvbdlParams& params, double p_pa, double length_m);
 
 // The free length [m] at gauge pressure p: where avbdl_static_force is zero, in
-// [b / sqrt(3), L0] (L0 for p <= 0; b / sqrt(3) if the pull is still positive there; NaN
-// for a NaN pressure). A slack muscle rests there. Solved by Boost.Math's TOMS 748 to
+// [avbdl_min_length, L0] (L0 for p <= 0; the minimum if the pull is still positive there;
+// NaN for a NaN pressure); for a tube bladder below the pressure at which it meets the
+// braid at L0, past L0, where the stretched braid has narrowed onto it. A slack muscle rests there. Solved by Boost.Math's TOMS 748 to
 // ~1e-13 relative.
 double avbdl_free_length(const AvbdlParams& params, double p_pa);
 

@@ -46,6 +46,35 @@ void validate_friction(const AvbdlFriction& f, const Checker& check) {
   }
 }
 
+// The Gent-Gent law's constants, and a tube bladder (bladder_diameter_m > 0) that fits in
+// its sleeve, holds its wall, and can reach the braid short of the Gent-Gent limit
+void validate_bladder_tube(const AvbdlParams& p, const Checker& check) {
+  check.finite("bladder_diameter_m", p.bladder_diameter_m);
+  check.require(p.bladder_diameter_m == 0.0 ||
+                    (p.bladder_diameter_m > 2.0 * p.wall_thickness_m &&
+                     p.bladder_diameter_m <= p.diameter_m),
+                "bladder_diameter_m",
+                "0 (the braid's) or in (2 wall = " + format_value(2.0 * p.wall_thickness_m) +
+                    ", diameter = " + format_value(p.diameter_m) + "] m",
+                p.bladder_diameter_m);
+  if (p.bladder_law != BladderLaw::kGentGent) return;
+  const GentGentConstants& g = p.bladder_gent;
+  check.finite("bladder.mu_pa", g.mu_pa);
+  check.finite("bladder.c2_pa", g.c2_pa);
+  check.finite("bladder.jm", g.jm);
+  check.require(g.mu_pa > 0.0, "bladder.mu_pa", "> 0 Pa", g.mu_pa);
+  check.non_negative("bladder.c2_pa", g.c2_pa);
+  check.require(g.jm > 0.0, "bladder.jm", "> 0", g.jm);
+  // the tube must reach the braid at L0 short of its limit (R0 / rb is its least stretch)
+  const double stretch = 0.5 * p.diameter_m / avbdl_bladder_reference_radius(p);
+  const double i1_minus_3 = stretch * stretch + 2.0 / stretch - 3.0;
+  check.require(i1_minus_3 < 0.999 * g.jm, "bladder_diameter_m",
+                "large enough that the sleeve stretches it short of the Gent-Gent limit (I1 - 3 "
+                "= " + format_value(i1_minus_3) + " at stretch " + format_value(stretch) +
+                    ", 0.999 Jm = " + format_value(0.999 * g.jm) + ")",
+                p.bladder_diameter_m);
+}
+
 }  // namespace
 
 void validate_avbdl_params(const AvbdlParams& p, const std::string& key_prefix) {
@@ -78,9 +107,10 @@ void validate_avbdl_params(const AvbdlParams& p, const std::string& key_prefix) 
                     " Pa (a positive initial shear modulus 2 (C10 + C01))",
                 p.bladder.c10_pa);
   check.non_negative("bladder.c20_pa", p.bladder.c20_pa);
+  validate_bladder_tube(p, check);
 
   // end regions: both fit in the muscle at its free-contraction length b / sqrt 3
-  const double l_min = avbdl_min_length(p);
+  const double l_min = avbdl_braid(p).fibre_length_m / std::sqrt(3.0);
   check.require(p.end_length_m >= 0.0 && 2.0 * p.end_length_m < l_min, "end_length_m",
                 "in [0, " + format_value(0.5 * l_min) + ") m (half the fully contracted length)",
                 p.end_length_m);

@@ -14,18 +14,52 @@
 namespace pamsim {
 namespace {
 
-MooneyRivlinConstants read_bladder(const Section& bladder) {
+constexpr EnumName<BladderLaw> kBladderLaws[] = {{BladderLaw::kMooneyRivlin, "mooney_rivlin"},
+                                                 {BladderLaw::kGentGent, "gent_gent"}};
+
+// The Mooney-Rivlin constants: a material's, or C10_MPa, C01_MPa, C20_MPa
+MooneyRivlinConstants read_mooney_rivlin(const Section& bladder) {
   if (bladder.has("material")) {
-    bladder.reject_unknown({"material"});
     const std::string material = bladder.text("material", "");
     if (material == "natural_rubber") return kNaturalRubberTreloar;
     if (material == "silicone") return kSiliconeElastosilM4601;
     bladder.fail("material", "must be \"natural_rubber\" or \"silicone\" (or give C10_MPa, "
                              "C01_MPa, C20_MPa), got \"" + material + "\"");
   }
-  bladder.reject_unknown({"C01_MPa", "C10_MPa", "C20_MPa"});
   return {units::mpa_to_pa(bladder.number("C10_MPa")), units::mpa_to_pa(bladder.number("C01_MPa")),
           units::mpa_to_pa(bladder.non_negative("C20_MPa", "MPa"))};
+}
+
+// The Gent-Gent constants: natural rubber's (the one material fitted), or mu_MPa, C2_MPa, Jm
+GentGentConstants read_gent_gent(const Section& bladder) {
+  if (bladder.has("material")) {
+    const std::string material = bladder.text("material", "");
+    if (material == "natural_rubber") return kNaturalRubberTreloarGentGent;
+    bladder.fail("material", "has no Gent-Gent fit but \"natural_rubber\" (or give mu_MPa, "
+                             "C2_MPa, Jm), got \"" + material + "\"");
+  }
+  return {units::mpa_to_pa(bladder.positive("mu_MPa", "MPa")),
+          units::mpa_to_pa(bladder.non_negative("C2_MPa", "MPa")), bladder.positive("Jm", "")};
+}
+
+// [bladder]: its law and material, and its own diameter (a tube inside the sleeve, Table I)
+void read_bladder(const Section& bladder, AvbdlParams* a) {
+  a->bladder_law = parse_name(kBladderLaws, bladder.text("law", "mooney_rivlin"),
+                              bladder.file + ": " + bladder.key("law"));
+  if (a->bladder_law == BladderLaw::kGentGent) {
+    bladder.reject_unknown({"C2_MPa", "Jm", "diameter_mm", "law", "material", "mu_MPa"});
+    a->bladder_gent = read_gent_gent(bladder);
+  } else {
+    bladder.reject_unknown({"C01_MPa", "C10_MPa", "C20_MPa", "diameter_mm", "law", "material"});
+    a->bladder = read_mooney_rivlin(bladder);
+  }
+  if (bladder.has("material") &&
+      (bladder.has("C10_MPa") || bladder.has("mu_MPa") || bladder.has("Jm"))) {
+    bladder.fail("material", "and the law's constants are given both: give one");
+  }
+  if (bladder.has("diameter_mm")) {
+    a->bladder_diameter_m = units::mm_to_m(bladder.positive("diameter_mm", "mm"));
+  }
 }
 
 AvbdlFrictionCoefficients read_stroke(const Section& stroke) {
@@ -92,6 +126,10 @@ std::string file_key(const std::string& field) {
       {"bladder.c10_pa", "bladder.C10_MPa"},
       {"bladder.c01_pa", "bladder.C01_MPa"},
       {"bladder.c20_pa", "bladder.C20_MPa"},
+      {"bladder_diameter_m", "bladder.diameter_mm"},
+      {"bladder.mu_pa", "bladder.mu_MPa"},
+      {"bladder.c2_pa", "bladder.C2_MPa"},
+      {"bladder.jm", "bladder.Jm"},
       {"friction.velocity_scale_m_per_s", "friction.velocity_scale_mm_s"},
       {"friction.extension.force_n", "friction.extension.F0_N"},
       {"friction.extension.pressure_area_m2", "friction.extension.A0_mm2"},
@@ -140,7 +178,7 @@ PlantParams load_plant_params(const std::string& path) {
     a.end_length_m = units::mm_to_m(geo.non_negative("end_length_mm", "mm"));
   }
   if (geo.has("end_slope")) a.end_slope = geo.number("end_slope");
-  a.bladder = read_bladder(top.sub("bladder"));
+  read_bladder(top.sub("bladder"), &a);
   a.friction = top.has("friction") ? read_friction(top.sub("friction")) : AvbdlFriction{};
 
   // the model's own checks, reported with the file's keys

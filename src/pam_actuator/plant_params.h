@@ -15,6 +15,10 @@
 //   [bladder]
 //   material = "natural_rubber"         # or "silicone", or the constants:
 //   C10_MPa = 0.05  C01_MPa = 0.18  C20_MPa = 0.0035
+//   law = "mooney_rivlin"               # optional (default), or "gent_gent": natural
+//                                       # rubber's fit, or mu_MPa, C2_MPa, Jm (avbdl.h)
+//   diameter_mm = 4.0                   # optional: a tube this wide (outer) inside the
+//                                       # sleeve, Table I; default: the sleeve's (avbdl.h)
 //   [friction]                          # optional: none when absent
 //   model = "smooth"                    # tanh(v / v_s) (default), or "maxwell_slip"
 //   velocity_scale_mm_s = 1.0           # v_s: required for "smooth"

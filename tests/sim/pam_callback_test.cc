@@ -305,5 +305,54 @@ TEST(PamCallbackLineTest, AnExtensibleLineIsASpringInSeriesWithTheMuscle) {
   }
 }
 
+// A tube bladder with the Gent-Gent law travels through the model's slots whole, and the
+// callback pulls with its law; a model without the slots refuses it by name.
+TEST(PamCallbackBladderTest, ATubeBladderPlantIsStoredWholeAndPullsWithItsLaw) {
+  std::string xml = kSliderXml;
+  xml.replace(xml.find("nuser_actuator=\"11\""), 19, "nuser_actuator=\"45\"");
+  MjModelPtr m = load_inline(xml.c_str(), "slider45.xml");
+  ASSERT_TRUE(m);
+  install_pam_actuator_callback();
+  AvbdlParams tube;
+  tube.length_m = 0.180;
+  tube.diameter_m = 0.016;
+  tube.wall_thickness_m = 0.5e-3;
+  tube.bladder_law = BladderLaw::kGentGent;
+  tube.bladder_diameter_m = 0.004;
+  tube.end_length_m = 0.0256;
+  const double line = 0.3;
+  store_pam_in_model(m.get(), 0, spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,
+                                                                {0.911, 0.256, 7.0, -0.2, 0, 0}),
+                     line, 1, "slider45.xml");
+  store_plant_in_model(m.get(), 0, tube, -1, "slider45.xml");
+  AvbdlParams back;
+  ASSERT_TRUE(pam_plant_from_model(m.get(), 0, &back));
+  EXPECT_EQ(back.bladder_law, BladderLaw::kGentGent);
+  EXPECT_EQ(back.bladder_diameter_m, 0.004);
+  EXPECT_EQ(back.bladder_gent.mu_pa, tube.bladder_gent.mu_pa);
+  EXPECT_EQ(back.bladder_gent.c2_pa, tube.bladder_gent.c2_pa);
+  EXPECT_EQ(back.bladder_gent.jm, tube.bladder_gent.jm);
+  MjDataPtr d = make_data(m.get());
+  const double p = 0.4e6, length = avbdl_free_length(tube, p) + 0.005;
+  d->qpos[0] = line + length;
+  d->userdata[1] = p;
+  mj_forward(m.get(), d.get());
+  EXPECT_NEAR(-d->actuator_force[0], avbdl_static_force(tube, p, length), 1e-9);
+
+  std::string old_xml = kSliderXml;
+  old_xml.replace(old_xml.find("nuser_actuator=\"11\""), 19, "nuser_actuator=\"40\"");
+  MjModelPtr small = load_inline(old_xml.c_str(), "slider40.xml");
+  ASSERT_TRUE(small);
+  try {
+    store_plant_in_model(small.get(), 0, tube, -1, "slider40.xml");
+    ADD_FAILURE() << "a tube bladder in 40 slots";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("slider40.xml: <size nuser_actuator> must be >= 45 for "
+                                         "a PAM with a tube bladder"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace pamsim

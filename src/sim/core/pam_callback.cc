@@ -64,6 +64,28 @@ void read_friction_form(const mjModel* m, int id, AvbdlFriction* f) {
   }
 }
 
+// slots kPamLineUserSize.. : the bladder's law and tube (none needed for the default)
+void store_bladder_form(mjModel* m, int id, const AvbdlParams& a, const char* path) {
+  const bool gent = a.bladder_law == BladderLaw::kGentGent;
+  if (!gent && a.bladder_diameter_m == 0.0 && m->nuser_actuator < kPamBladderUserSize) return;
+  require_user_slots(m, kPamBladderUserSize, "a PAM with a tube bladder or the Gent-Gent law",
+                     path);
+  mjtNum* u = m->actuator_user + static_cast<long>(id) * m->nuser_actuator + kPamLineUserSize;
+  u[0] = gent ? 1.0 : 0.0;
+  u[1] = a.bladder_diameter_m;
+  u[2] = a.bladder_gent.mu_pa;
+  u[3] = a.bladder_gent.c2_pa;
+  u[4] = a.bladder_gent.jm;
+}
+
+void read_bladder_form(const mjModel* m, int id, AvbdlParams* a) {
+  if (m->nuser_actuator < kPamBladderUserSize) return;
+  const mjtNum* u = user_slots(m, id) + kPamLineUserSize;
+  a->bladder_law = u[0] == 1.0 ? BladderLaw::kGentGent : BladderLaw::kMooneyRivlin;
+  a->bladder_diameter_m = u[1];
+  a->bladder_gent = {u[2], u[3], u[4]};
+}
+
 // the actuator's slip block in d->userdata: [L_prev, s_1..s_N]
 int slip_block(const mjModel* m, int id) {
   return static_cast<int>(user_slots(m, id)[kPamPlantUserSize + 2 + 2 * kMaxSlipElements]);
@@ -192,6 +214,7 @@ void store_plant_in_model(mjModel* m, int id, const AvbdlParams& a, int slip_use
                            f.contraction.strain_area_m2};
   std::copy(std::begin(values), std::end(values), u + kPamUserSize);
   store_friction_form(m, id, f, slip_userdata_index, path);
+  store_bladder_form(m, id, a, path);
 }
 
 bool pam_plant_from_model(const mjModel* m, int id, AvbdlParams* a) {
@@ -209,6 +232,7 @@ bool pam_plant_from_model(const mjModel* m, int id, AvbdlParams* a) {
   a->friction.extension = {u[11], u[12], u[13]};
   a->friction.contraction = {u[14], u[15], u[16]};
   read_friction_form(m, id, &a->friction);
+  read_bladder_form(m, id, a);
   return true;
 }
 

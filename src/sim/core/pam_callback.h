@@ -21,6 +21,9 @@
 //   and F solves F = pull(tendon - L0 - L0 F / (E A)) (issue 25, item 3); a smooth
 //   friction's rate is then still the tendon's, not the muscle's (the line's stretch rate
 //   is left out of it).
+//   and, in models with nuser_actuator >= kPamBladderUserSize, the bladder's form (avbdl.h):
+//     40 its law (0 Mooney-Rivlin, slots 16..18; 1 Gent-Gent), 41 its tube's diameter Db [m]
+//     (0: the braid's), 42..44 Gent-Gent mu [Pa], C2 [Pa], Jm.
 // The Maxwell-slip state moves only at pam_commit_friction, once per physics step; the
 // callback evaluates the elements as they would be at the step's length, without storing it.
 // PAM length l = tendon length - line length. The spring law: d = l - l_n(p), Eq. (1)-(5);
@@ -40,6 +43,7 @@ inline constexpr int kPamPlantUserSize = 28;
 inline constexpr int kPamSlipUserSize = kPamPlantUserSize + 3 + 2 * kMaxSlipElements;
 
 inline constexpr int kPamLineUserSize = kPamSlipUserSize + 1;
+inline constexpr int kPamBladderUserSize = kPamLineUserSize + 5;
 
 // The userdata a PAM's Maxwell-slip state takes: L_prev and one state per element.
 int pam_slip_block_size(const AvbdlParams& plant);
@@ -54,7 +58,8 @@ void store_pam_in_model(mjModel* m, int actuator_id, const SpringModel& spring,
 // calibration's); a Maxwell-slip friction keeps its state in d->userdata from index
 // `slip_userdata_index` on (pam_slip_block_size values; ignored for smooth friction). Throws
 // InputError if the model declares nuser_actuator < kPamPlantUserSize, or, for a
-// Maxwell-slip friction, nuser_actuator < kPamSlipUserSize or too small a nuserdata.
+// Maxwell-slip friction, nuser_actuator < kPamSlipUserSize or too small a nuserdata, or,
+// for a tube bladder or the Gent-Gent law, nuser_actuator < kPamBladderUserSize.
 void store_plant_in_model(mjModel* m, int actuator_id, const AvbdlParams& plant,
                           int slip_userdata_index, const char* path);
 // Makes actuator `id`'s line extensible with axial stiffness E A = axial_stiffness_n > 0, or
