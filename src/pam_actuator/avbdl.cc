@@ -109,7 +109,7 @@ double bladder_limit_length(const AvbdlParams& p, const BraidGeometry& g, double
   for (int i = 0; i < 8; ++i) l -= (l * l + 2.0 / l - target) / (2.0 * l - 2.0 / (l * l));
   const double k = 2.0 * kPi * g.turns * l * rb;   // 2 pi n R at that stretch
   const double b = g.fibre_length_m;
-  return k < b ? std::sqrt(b * b - k * k) : b;
+  return k < b ? std::sqrt(b * b - k * k) : 0.0;   // k >= b: wider than the braid ever is
 }
 
 Shape shape_of(const AvbdlParams& p) {

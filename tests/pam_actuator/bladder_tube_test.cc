@@ -127,6 +127,15 @@ TEST(BladderTubeTest, FreeLengthFallsWithPressureAndStaysShortOfTheBladdersLimit
   EXPECT_EQ(avbdl_min_length(p), avbdl_braid(p).fibre_length_m / std::sqrt(3.0));
   const double hard = avbdl_free_length(thick, units::mpa_to_pa(50.0));
   EXPECT_GT(hard, avbdl_min_length(thick)) << "no pressure contracts it past the limit";
+  // PAM-A's 6 mm tube in its 19.9 mm sleeve would reach its limit only wider than the braid
+  // ever gets (24.7 against 23.5 mm at zero length): the braid's limit holds
+  AvbdlParams wide = table1_agonist();
+  wide.length_m = 0.216;
+  wide.diameter_m = 0.0199;
+  wide.bladder_diameter_m = 0.006;
+  wide.end_length_m = 0.0318;
+  EXPECT_EQ(avbdl_min_length(wide), avbdl_braid(wide).fibre_length_m / std::sqrt(3.0));
+  EXPECT_LT(avbdl_free_length(wide, units::mpa_to_pa(0.8)), wide.length_m);
 }
 
 TEST(BladderTubeTest, BadTubeValuesNameTheirKey) {
