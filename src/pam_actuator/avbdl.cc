@@ -35,10 +35,7 @@ double profile(const std::array<double, 4>& c, double s) {
 }
 
 // integrals of eta and eta^2 over s in [0, 1]
-struct ProfileMoments {
-  double i1 = 0.0;
-  double i2 = 0.0;
-};
+using ProfileMoments = AvbdlProfileMoments;
 
 ProfileMoments profile_moments(double a) {
   const std::array<double, 4> c = profile_coefficients(a);
@@ -84,18 +81,7 @@ double bladder_area(const AvbdlParams& p) {
   return kPi * p.wall_thickness_m * (2.0 * r0 + p.wall_thickness_m);
 }
 
-// What the law needs of a muscle that does not change with its state, computed once per
-// public call (the braid's trigonometry, the profile's coefficients and moments), so that a
-// root solve or a co-simulation step does not recompute it at every evaluation.
-struct Shape {
-  BraidGeometry braid;
-  double r0 = 0.0;                  // fitting radius D0 / 2
-  double rb = 0.0;                  // the bladder's reference radius (its stretch is R / rb)
-  std::array<double, 4> profile{};  // eta(s) coefficients
-  ProfileMoments moments;
-  double bladder_area = 0.0;        // reference wall area per unit length
-  double min_length = 0.0;          // avbdl_min_length
-};
+using Shape = AvbdlShape;
 
 // The length [m] at which a Gent-Gent bladder reaches 0.999 of its limit, I1 - 3 = Jm (the
 // braid cannot contract past it: the bladder would have to stretch without bound); 0 when
@@ -112,7 +98,9 @@ double bladder_limit_length(const AvbdlParams& p, const BraidGeometry& g, double
   return k < b ? std::sqrt(b * b - k * k) : 0.0;   // k >= b: wider than the braid ever is
 }
 
-Shape shape_of(const AvbdlParams& p) {
+}  // namespace
+
+AvbdlShape avbdl_shape(const AvbdlParams& p) {
   Shape s;
   s.braid = braid_from_initial_shape(p.length_m, p.diameter_m, p.braid_angle_rad);
   s.r0 = 0.5 * p.diameter_m;
@@ -124,6 +112,10 @@ Shape shape_of(const AvbdlParams& p) {
                           bladder_limit_length(p, s.braid, s.rb));
   return s;
 }
+
+namespace {
+
+Shape shape_of(const AvbdlParams& p) { return avbdl_shape(p); }
 
 // the lengths the law holds for (avbdl_min_length, avbdl_max_length)
 double min_length(const Shape& shape) { return shape.min_length; }
@@ -168,11 +160,17 @@ double dbladder_energy_dlength(const AvbdlParams& p, const Shape& shape, double 
 }
 
 double static_force(const AvbdlParams& p, const Shape& shape, double p_pa, double length_m) {
+  // the shape's memo: the same (p, L) again (the force callback's, then the step's length)
+  if (p_pa == shape.memo_pressure_pa && length_m == shape.memo_length_m) return shape.memo_force_n;
   // Eq. (19): F dDL = p dV - dW_def with dDL = -dL, so Eq. (25) reads
   // F = -p dV/dL + dW_def/dL; the text lost (25)'s fraction bars and sign, this is the
   // sign for which the bladder's work lowers the pull of a contracted muscle
-  return -p_pa * dvolume_dlength(p, shape, length_m) +
-         dbladder_energy_dlength(p, shape, length_m);
+  const double f = -p_pa * dvolume_dlength(p, shape, length_m) +
+                   dbladder_energy_dlength(p, shape, length_m);
+  shape.memo_pressure_pa = p_pa;
+  shape.memo_length_m = length_m;
+  shape.memo_force_n = f;
+  return f;
 }
 
 double free_length(const AvbdlParams& p, const Shape& shape, double p_pa) {
@@ -223,14 +221,18 @@ double avbdl_end_radius(const AvbdlParams& p, double x_m, double length_m) {
 }
 
 double avbdl_volume(const AvbdlParams& p, double length_m) {
-  const BraidGeometry g = avbdl_braid(p);
+  return avbdl_volume(p, shape_of(p), length_m);
+}
+
+double avbdl_volume(const AvbdlParams& p, const AvbdlShape& shape, double length_m) {
+  const BraidGeometry& g = shape.braid;
   const double ld = p.end_length_m;
   assert(length_m >= 2.0 * ld && length_m < g.fibre_length_m);
-  const double r0 = 0.5 * p.diameter_m;
+  const double r0 = shape.r0;
   const double r_sq = radius_squared(g, length_m);
   const double r = std::sqrt(r_sq);
   const double dr = r - r0;
-  const ProfileMoments m = profile_moments(p.end_slope);
+  const ProfileMoments& m = shape.moments;
 
   // Eq. (12), (14): A = y_d A_d = 1/2 integral of y^2 over the end region [0, Ld]
   const double a_ends = 0.5 * ld * (r0 * r0 + 2.0 * r0 * dr * m.i1 + dr * dr * m.i2);
@@ -246,23 +248,8 @@ double avbdl_dvolume_dlength(const AvbdlParams& p, double length_m) {
   return dvolume_dlength(p, shape_of(p), length_m);
 }
 
-double mooney_rivlin_stress(const MooneyRivlinConstants& c, double stretch) {
-  // Eq. (20), C01 term reconstructed as 2 C01 (1 - 1/lambda^3) (the text lost its fraction
-  // bars); it is the one whose integral gives Eq. (22)'s C01 (1 + 2 lambda) term
-  const double l = stretch;
-  const double i1_minus_3 = l * l + 2.0 / l - 3.0;
-  return 2.0 * c.c10_pa * (l - 1.0 / (l * l)) + 2.0 * c.c01_pa * (1.0 - 1.0 / (l * l * l)) +
-         4.0 * c.c20_pa * (l - 1.0 / (l * l)) * i1_minus_3;
-}
-
-double mooney_rivlin_energy_density(const MooneyRivlinConstants& c, double stretch) {
-  // Eq. (22), the integral (21) of (20) from 1 to lambda:
-  // (lambda - 1)^2 / lambda^2 [C01 (1 + 2 lambda) + C10 lambda (2 + lambda)]
-  //   + C20 (lambda^3 - 3 lambda + 2)^2 / lambda^2
-  const double l = stretch;
-  const double cubic = l * l * l - 3.0 * l + 2.0;
-  const double c10_c01 = c.c01_pa * (1.0 + 2.0 * l) + c.c10_pa * l * (2.0 + l);
-  return (l - 1.0) * (l - 1.0) / (l * l) * c10_c01 + c.c20_pa * cubic * cubic / (l * l);
+double avbdl_dvolume_dlength(const AvbdlParams& p, const AvbdlShape& shape, double length_m) {
+  return dvolume_dlength(p, shape, length_m);
 }
 
 double avbdl_bladder_energy(const AvbdlParams& p, double length_m) {
@@ -283,50 +270,6 @@ double avbdl_bladder_energy(const AvbdlParams& p, double length_m) {
     return bladder_energy_density(p, (r0 + (r - r0) * profile(c, s)) / rb);
   });
   return w_mid + 2.0 * area * p.end_length_m * per_end;
-}
-
-double gent_gent_stress(const GentGentConstants& c, double stretch) {
-  // P = 2 (lambda - 1/lambda^2) (W1 + W2 / lambda), uniaxial, incompressible:
-  // W1 = mu Jm / (2 (Jm - (I1 - 3))), W2 = C2 / I2, I1 = lambda^2 + 2/lambda, I2 = 2 lambda
-  // + 1/lambda^2
-  const double l = stretch;
-  const double i1_minus_3 = l * l + 2.0 / l - 3.0;
-  const double i2 = 2.0 * l + 1.0 / (l * l);
-  const double w1 = 0.5 * c.mu_pa * c.jm / (c.jm - i1_minus_3);
-  return 2.0 * (l - 1.0 / (l * l)) * (w1 + c.c2_pa / (i2 * l));
-}
-
-double gent_gent_energy_density(const GentGentConstants& c, double stretch) {
-  const double l = stretch;
-  const double i1_minus_3 = l * l + 2.0 / l - 3.0;
-  const double i2 = 2.0 * l + 1.0 / (l * l);
-  return -0.5 * c.mu_pa * c.jm * std::log1p(-i1_minus_3 / c.jm) + c.c2_pa * std::log(i2 / 3.0);
-}
-
-double bladder_stress(const AvbdlParams& p, double stretch) {
-  return p.bladder_law == BladderLaw::kGentGent ? gent_gent_stress(p.bladder_gent, stretch)
-                                                : mooney_rivlin_stress(p.bladder, stretch);
-}
-
-double bladder_energy_density(const AvbdlParams& p, double stretch) {
-  return p.bladder_law == BladderLaw::kGentGent
-             ? gent_gent_energy_density(p.bladder_gent, stretch)
-             : mooney_rivlin_energy_density(p.bladder, stretch);
-}
-
-double avbdl_bladder_reference_radius(const AvbdlParams& p) {
-  if (p.bladder_diameter_m > 0.0) return 0.5 * p.bladder_diameter_m - 0.5 * p.wall_thickness_m;
-  return 0.5 * p.diameter_m;
-}
-
-double avbdl_bladder_free_pressure(const AvbdlParams& p, double radius_m) {
-  const double rb = avbdl_bladder_reference_radius(p);
-  const double stretch = radius_m / rb;
-  return bladder_stress(p, stretch) * p.wall_thickness_m / (stretch * rb);
-}
-
-double avbdl_bladder_contact_pressure(const AvbdlParams& p) {
-  return avbdl_bladder_free_pressure(p, 0.5 * p.diameter_m);
 }
 
 double avbdl_dbladder_energy_dlength(const AvbdlParams& p, double length_m) {
@@ -362,9 +305,13 @@ double avbdl_force(const AvbdlParams& p, double p_pa, double length_m,
 
 double avbdl_line_pull(const AvbdlParams& p, double p_pa, double taut_length_m,
                        const FrictionInput& friction) {
+  return avbdl_line_pull(p, shape_of(p), p_pa, taut_length_m, friction);
+}
+
+double avbdl_line_pull(const AvbdlParams& p, const AvbdlShape& shape, double p_pa,
+                       double taut_length_m, const FrictionInput& friction) {
   // Eq. (25) plus the friction term at the line's length, held at the law's last length
   // past avbdl_max_length; a muscle at its full contraction (or pushing) pulls nothing
-  const Shape shape = shape_of(p);
   const double l = std::min(taut_length_m, max_length(shape));
   if (l <= min_length(shape)) return 0.0;
   const double f = static_force(p, shape, p_pa, l) + avbdl_friction(p, p_pa, l, friction);
@@ -372,10 +319,14 @@ double avbdl_line_pull(const AvbdlParams& p, double p_pa, double taut_length_m,
 }
 
 double avbdl_line_muscle_length(const AvbdlParams& p, double p_pa, double taut_length_m) {
+  return avbdl_line_muscle_length(p, shape_of(p), p_pa, taut_length_m);
+}
+
+double avbdl_line_muscle_length(const AvbdlParams& p, const AvbdlShape& shape, double p_pa,
+                                double taut_length_m) {
   // while Eq. (25) pulls at the line's length the muscle is that long; otherwise the line
   // is slack and the muscle has contracted to where Eq. (25) is zero (a root solve, so
   // only then)
-  const Shape shape = shape_of(p);
   const double l = std::min(taut_length_m, max_length(shape));
   if (static_force(p, shape, p_pa, l) > 0.0) return taut_length_m;
   return std::max(taut_length_m, free_length(p, shape, p_pa));

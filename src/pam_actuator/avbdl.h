@@ -73,6 +73,8 @@
 // [b/sqrt(3), L0] lie inside it). Outside, results are not physical.
 #pragma once
 
+#include <array>
+#include <limits>
 #include <string>
 
 #include "pam_actuator/chou_hannaford.h"
@@ -157,6 +159,30 @@ struct AvbdlParams {
   AvbdlFriction friction;
 };
 
+// What the law derives from a muscle's parameters alone, computed once by avbdl_shape: the
+// braid, the end profile's coefficients and moments, the bladder's reference radius and
+// area, the shortest length. The overloads below that take one skip that work (a
+// co-simulation step evaluates the law several times); give them the shape of the same
+// parameters. A shape also remembers the last static force it computed (the force callback
+// and the step's muscle length ask for the same one): use a shape from one thread at a time.
+struct AvbdlProfileMoments {
+  double i1 = 0.0;   // integral of eta over [0, 1]
+  double i2 = 0.0;   // integral of eta^2
+};
+struct AvbdlShape {
+  BraidGeometry braid;
+  double r0 = 0.0;                    // fitting radius D0 / 2
+  double rb = 0.0;                    // the bladder's reference radius (its stretch R / rb)
+  std::array<double, 4> profile{};    // eta(s) coefficients
+  AvbdlProfileMoments moments;
+  double bladder_area = 0.0;          // reference wall area per unit length
+  double min_length = 0.0;            // avbdl_min_length
+  // the memo: static force [N] at (p, L) last computed with this shape (NaN: none)
+  mutable double memo_pressure_pa = std::numeric_limits<double>::quiet_NaN();
+  mutable double memo_length_m = std::numeric_limits<double>::quiet_NaN();
+  mutable double memo_force_n = 0.0;
+};
+
 // Throws InputError with one line "<key_prefix><key> must be ..., got <value>" for a
 // non-finite value, L0 or D0 <= 0, a braid angle outside (0, arccos(1/sqrt 3)) (at 0 the
 // fibre is no longer than L0; from 54.74 deg on the braid cannot contract from L0), t < 0,
@@ -179,6 +205,9 @@ AvbdlParams avbdl_params_from_geometry(double length_m, double diameter_m,
 // b and n of the braid from L0, D0, alpha0 (chou_hannaford.h).
 BraidGeometry avbdl_braid(const AvbdlParams& params);
 
+// The shape of valid parameters (AvbdlShape above).
+AvbdlShape avbdl_shape(const AvbdlParams& params);
+
 // The lengths the law holds for [m]: from the braid's full contraction b / sqrt(3) (or,
 // for a Gent-Gent bladder that reaches 0.999 of its limit first, from that length: no
 // pressure contracts the muscle past it) to kAvbdlMaxStretch b, just short of the fibre
@@ -200,8 +229,11 @@ double avbdl_end_radius(const AvbdlParams& params, double x_m, double length_m);
 
 // Eq. (9)-(17): gas volume [m^3] of the muscle at length L.
 double avbdl_volume(const AvbdlParams& params, double length_m);
+double avbdl_volume(const AvbdlParams& params, const AvbdlShape& shape, double length_m);
 // dV/dL [m^2], analytic.
 double avbdl_dvolume_dlength(const AvbdlParams& params, double length_m);
+double avbdl_dvolume_dlength(const AvbdlParams& params, const AvbdlShape& shape,
+                             double length_m);
 
 // Eq. (20): nominal uniaxial stress [Pa] at stretch lambda > 0.
 double mooney_rivlin_stress(const MooneyRivlinConstants& c, double stretch);
@@ -278,10 +310,15 @@ double avbdl_force(const AvbdlParams& params, double p_pa, double length_m,
 // slack (at or below the braid's full contraction, or pulling nothing), the law at
 // min(taut, avbdl_max_length) otherwise;
 // and its own length [m]: the taut length while it pulls, else its free length (a slack
-// muscle rests at avbdl_free_length, whatever the line's ends do). Each derives the
-// muscle's shape once (these run at every physics step).
+// muscle rests at avbdl_free_length, whatever the line's ends do). These run at every
+// physics step: the co-simulation gives them the muscle's shape (derived once per model),
+// whose memo lets the length reuse the pull's static force at the same (p, L).
 double avbdl_line_pull(const AvbdlParams& params, double p_pa, double taut_length_m,
                        const FrictionInput& friction);
+double avbdl_line_pull(const AvbdlParams& params, const AvbdlShape& shape, double p_pa,
+                       double taut_length_m, const FrictionInput& friction);
 double avbdl_line_muscle_length(const AvbdlParams& params, double p_pa, double taut_length_m);
+double avbdl_line_muscle_length(const AvbdlParams& params, const AvbdlShape& shape,
+                                double p_pa, double taut_length_m);
 
 }  // namespace pamsim

@@ -58,6 +58,7 @@ PneumaticOde::PneumaticOde(const PneumaticParams& params, ValveModel model,
   }
   input_.resize(braid_.size());
   plant_.resize(braid_.size());
+  shape_.resize(braid_.size());
   for (Input& in : input_) in.p_cmd_abs = in.p_sensed_abs = params_.atmospheric_pa;
   // ISO 6358-1: qm = C rho0 p_up sqrt(T0/T) psi(r); each restriction's C rho0 sqrt(T0/T)
   const auto coefficient = [this](double c) {
@@ -163,20 +164,23 @@ void PneumaticOde::set_kinematics(int muscle, double t0_s, double length_m,
 void PneumaticOde::set_plant_volume(int muscle, const AvbdlParams& plant) {
   validate_avbdl_params(plant, "plant.");
   plant_.at(static_cast<std::size_t>(muscle)) = plant;
+  shape_[static_cast<std::size_t>(muscle)] = avbdl_shape(plant);
   braid_[static_cast<std::size_t>(muscle)] = avbdl_braid(plant);   // its length limits
 }
 
 double PneumaticOde::volume_m3(int muscle, double t) const {
   const Input& in = input_[muscle];
   const double l = in.l0 + in.ldot * (t - in.t0);
-  if (plant_[muscle]) return avbdl_volume(*plant_[muscle], l) + params_.tube_dead_volume_m3;
+  if (plant_[muscle]) {
+    return avbdl_volume(*plant_[muscle], shape_[muscle], l) + params_.tube_dead_volume_m3;
+  }
   return chou_hannaford_volume(braid_[muscle], l) + params_.tube_dead_volume_m3;
 }
 
 double PneumaticOde::volume_rate_m3_s(int muscle, double t) const {
   const Input& in = input_[muscle];
   const double l = in.l0 + in.ldot * (t - in.t0);
-  if (plant_[muscle]) return avbdl_dvolume_dlength(*plant_[muscle], l) * in.ldot;
+  if (plant_[muscle]) return avbdl_dvolume_dlength(*plant_[muscle], shape_[muscle], l) * in.ldot;
   return chou_hannaford_dvolume_dlength(braid_[muscle], l) * in.ldot;
 }
 

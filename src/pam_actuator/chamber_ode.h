@@ -138,6 +138,7 @@ class PneumaticOde : public OdeSystem {
   ValveModel model_;
   std::vector<BraidGeometry> braid_;
   std::vector<std::optional<AvbdlParams>> plant_;   // per muscle, when set_plant_volume
+  std::vector<AvbdlShape> shape_;                   // the plant's shape, derived once
   std::vector<Input> input_;
   // an ISO 6358 restriction: C rho0 sqrt(T0/T) [kg/(s Pa)] and b
   struct Restriction {

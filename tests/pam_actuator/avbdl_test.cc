@@ -345,5 +345,30 @@ TEST(AvbdlTest, EveryBadValueNamesItsKey) {
   }
 }
 
+// The shape derived once gives what each call derives for itself, to the bit; its memo
+// answers the same (p, L) with the same force and recomputes for another
+TEST(AvbdlTest, AShapeDerivedOnceGivesTheSameBitsAndItsMemoOnlyRepeats) {
+  const AvbdlParams p = with_friction(arm_pam());
+  const AvbdlShape shape = avbdl_shape(p);
+  EXPECT_EQ(shape.min_length, avbdl_min_length(p));
+  FrictionInput rest;
+  for (double l : {0.150, 0.165, 0.172, 0.185}) {
+    for (double bar : {0.0, 2.0, 6.0}) {
+      const double pa = bar * kBar;
+      EXPECT_EQ(avbdl_volume(p, shape, l), avbdl_volume(p, l));
+      EXPECT_EQ(avbdl_dvolume_dlength(p, shape, l), avbdl_dvolume_dlength(p, l));
+      const double pull = avbdl_line_pull(p, shape, pa, l, rest);
+      EXPECT_EQ(pull, avbdl_line_pull(p, pa, l, rest));
+      EXPECT_EQ(avbdl_line_muscle_length(p, shape, pa, l), avbdl_line_muscle_length(p, pa, l));
+      EXPECT_EQ(avbdl_line_pull(p, shape, pa, l, rest), pull) << "the memo's answer";
+    }
+  }
+  const double l = 0.172;
+  avbdl_line_pull(p, shape, 4.0 * kBar, l, rest);
+  EXPECT_EQ(shape.memo_pressure_pa, 4.0 * kBar);
+  EXPECT_EQ(avbdl_line_pull(p, shape, 5.0 * kBar, l, rest), avbdl_line_pull(p, 5.0 * kBar, l, rest))
+      << "another pressure is computed, not remembered";
+}
+
 }  // namespace
 }  // namespace pamsim

@@ -2,10 +2,14 @@
 #include "sim/core/pam_callback.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <iterator>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include <boost/math/tools/toms748_solve.hpp>
 
@@ -112,11 +116,16 @@ FrictionInput friction_input(const mjModel* m, const mjData* d, int id,
 struct PamLaw {
   bool has_plant = false;
   AvbdlParams plant;
+  AvbdlShape shape;   // the plant's, derived once
   SpringModel spring;
 
   PamLaw(const mjModel* m, int id) {
     has_plant = pam_plant_from_model(m, id, &plant);
-    if (!has_plant) spring = pam_spring_from_model(m, id);
+    if (has_plant) {
+      shape = avbdl_shape(plant);
+    } else {
+      spring = pam_spring_from_model(m, id);
+    }
   }
   double pull(const mjModel* m, const mjData* d, int id, double p, double taut) const {
     if (has_plant) {
@@ -124,18 +133,48 @@ struct PamLaw {
       // avbdl_max_length (a muscle stretched to its fibre length would have to break)
       double slip_state[kMaxSlipElements];
       const FrictionInput friction = friction_input(m, d, id, plant, taut, slip_state);
-      return avbdl_line_pull(plant, p, taut, friction);
+      return avbdl_line_pull(plant, shape, p, taut, friction);
     }
     return spring_force(spring, p, taut - natural_length(spring, p));
   }
 };
+
+// Actuator `id`'s law, as this thread last decoded it: the few actuators a thread evaluates
+// keep theirs with the slots they came from, so a physics step decodes nothing and derives
+// no shape (and its shape's memo serves the step's muscle length with the force callback's
+// static force); slots that differ (stored anew, or another model at the same address) are
+// decoded again. Per thread, so trials on other threads share nothing.
+const PamLaw& pam_law(const mjModel* m, int id) {
+  struct Entry {
+    const mjModel* model = nullptr;
+    int id = -1;
+    std::vector<mjtNum> slots;
+    std::unique_ptr<PamLaw> law;
+  };
+  thread_local std::array<Entry, 8> cache;
+  thread_local std::size_t next = 0;
+  const mjtNum* u = user_slots(m, id);
+  const std::size_t n = static_cast<std::size_t>(m->nuser_actuator);
+  for (const Entry& e : cache) {
+    if (e.model == m && e.id == id && e.slots.size() == n &&
+        std::memcmp(e.slots.data(), u, n * sizeof(mjtNum)) == 0) {
+      return *e.law;
+    }
+  }
+  Entry& e = cache[next++ % cache.size()];
+  e.law = std::make_unique<PamLaw>(m, id);
+  e.model = m;
+  e.id = id;
+  e.slots.assign(u, u + n);
+  return *e.law;
+}
 
 // The line's tension [N], and in *taut the length it leaves the PAM. An inextensible line
 // leaves it at tendon - L0; an extensible one, stretched by its tension, where
 // F = pull(tendon - L0 - c F), c = L0 / (E A): solved on [0, pull(tendon - L0)] by TOMS 748.
 double line_tension(const mjModel* m, const mjData* d, int id, double* taut) {
   const double p = d->userdata[pam_userdata_index(m, id)];
-  const PamLaw law(m, id);
+  const PamLaw& law = pam_law(m, id);
   const double unstretched = d->actuator_length[id] - pam_line_length(m, id);
   const double ea = pam_line_axial_stiffness(m, id);
   *taut = unstretched;
@@ -263,11 +302,11 @@ double pam_length(const mjModel* m, const mjData* d, int id) {
 double pam_muscle_length(const mjModel* m, const mjData* d, int id) {
   // the plant's free length is a root solve, done only when the line is slack
   const double p = d->userdata[pam_userdata_index(m, id)];
-  AvbdlParams plant;
-  if (pam_plant_from_model(m, id, &plant)) {
-    return avbdl_line_muscle_length(plant, p, pam_length(m, d, id));
+  const PamLaw& law = pam_law(m, id);
+  if (law.has_plant) {
+    return avbdl_line_muscle_length(law.plant, law.shape, p, pam_length(m, d, id));
   }
-  return std::max(pam_length(m, d, id), natural_length(pam_spring_from_model(m, id), p));
+  return std::max(pam_length(m, d, id), natural_length(law.spring, p));
 }
 
 mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int id) {
