@@ -143,6 +143,7 @@ TEST(ErrorBudgetTest, BadSourcesNameTheirKey) {
            {"[[budget_source]]\n" + ok_on, "budget_source[0].name is required"},
            {"[[budget_source]]\nname = \"\"\n" + ok_on, "budget_source[0].name must not be empty"},
            {"[[budget_source]]\nname = \"a,b\"\n" + ok_on, "budget_source[0].name must hold no"},
+           {"[[budget_source]]\nname = \"a\\tb\"\n" + ok_on, "budget_source[0].name must hold no"},
            {"[[budget_source]]\nname = \"a\"\n" + ok_on + "[[budget_source]]\nname = \"a\"\n" +
                 ok_on,
             "budget_source[1].name repeats"},

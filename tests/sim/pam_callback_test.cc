@@ -35,6 +35,14 @@ constexpr char kSliderXml[] = R"(
   </actuator>
 </mujoco>)";
 
+// The slider with `slots` user slots per actuator, loaded as "slider<slots>.xml".
+MjModelPtr slider_with_slots(int slots) {
+  std::string xml = kSliderXml;
+  const std::string n = std::to_string(slots);
+  xml.replace(xml.find("nuser_actuator=\"11\""), 19, "nuser_actuator=\"" + n + "\"");
+  return load_inline(xml.c_str(), ("slider" + n + ".xml").c_str());
+}
+
 class PamCallbackTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -118,9 +126,7 @@ TEST_F(PamCallbackTest, RejectsModelsWithoutRoomForParameters) {
 // The same slider with room for a plant: the actuator force is the AVBDL law's (Eq. (25)),
 // pull only, and the plant's parameters read back exactly.
 TEST_F(PamCallbackTest, APlantActuatorPullsWithTheAvbdlLaw) {
-  std::string xml = kSliderXml;
-  xml.replace(xml.find("nuser_actuator=\"11\""), 19, "nuser_actuator=\"28\"");
-  MjModelPtr m = load_inline(xml.c_str(), "slider28.xml");
+  MjModelPtr m = slider_with_slots(28);
   ASSERT_TRUE(m);
   AvbdlParams plant = avbdl_params_from_geometry(0.18, 0.010, units::deg_to_rad(25.0), 0.002,
                                                  kNaturalRubberTreloar);
@@ -261,9 +267,7 @@ TEST(PamCallbackSlipTest, AMaxwellSlipPlantNeedsItsSlotsAndRoomForItsState) {
 // series, F = k (x0 - l_n) / (1 + k c) with c = L0 / (E A), and the PAM's end where the
 // stretched line leaves it, x0 - c F (issue 25, item 3).
 TEST(PamCallbackLineTest, AnExtensibleLineIsASpringInSeriesWithTheMuscle) {
-  std::string xml = kSliderXml;
-  xml.replace(xml.find("nuser_actuator=\"11\""), 19, "nuser_actuator=\"40\"");
-  MjModelPtr m = load_inline(xml.c_str(), "slider40.xml");
+  MjModelPtr m = slider_with_slots(40);
   ASSERT_TRUE(m);
   install_pam_actuator_callback();
   SpringModel linear;
@@ -290,9 +294,7 @@ TEST(PamCallbackLineTest, AnExtensibleLineIsASpringInSeriesWithTheMuscle) {
   EXPECT_NEAR(pam_length(m.get(), d.get(), 0), l_n - 0.001, 1e-15);
 
   // a model without the slot holds only inextensible lines
-  std::string old_xml = kSliderXml;
-  old_xml.replace(old_xml.find("nuser_actuator=\"11\""), 19, "nuser_actuator=\"39\"");
-  MjModelPtr small = load_inline(old_xml.c_str(), "slider39.xml");
+  MjModelPtr small = slider_with_slots(39);
   ASSERT_TRUE(small);
   EXPECT_NO_THROW(store_line_stiffness_in_model(small.get(), 0, 0.0, "slider39.xml"));
   EXPECT_EQ(pam_line_axial_stiffness(small.get(), 0), 0.0);
@@ -308,9 +310,7 @@ TEST(PamCallbackLineTest, AnExtensibleLineIsASpringInSeriesWithTheMuscle) {
 // A tube bladder with the Gent-Gent law travels through the model's slots whole, and the
 // callback pulls with its law; a model without the slots refuses it by name.
 TEST(PamCallbackBladderTest, ATubeBladderPlantIsStoredWholeAndPullsWithItsLaw) {
-  std::string xml = kSliderXml;
-  xml.replace(xml.find("nuser_actuator=\"11\""), 19, "nuser_actuator=\"45\"");
-  MjModelPtr m = load_inline(xml.c_str(), "slider45.xml");
+  MjModelPtr m = slider_with_slots(45);
   ASSERT_TRUE(m);
   install_pam_actuator_callback();
   AvbdlParams tube;
@@ -339,9 +339,7 @@ TEST(PamCallbackBladderTest, ATubeBladderPlantIsStoredWholeAndPullsWithItsLaw) {
   mj_forward(m.get(), d.get());
   EXPECT_NEAR(-d->actuator_force[0], avbdl_static_force(tube, p, length), 1e-9);
 
-  std::string old_xml = kSliderXml;
-  old_xml.replace(old_xml.find("nuser_actuator=\"11\""), 19, "nuser_actuator=\"40\"");
-  MjModelPtr small = load_inline(old_xml.c_str(), "slider40.xml");
+  MjModelPtr small = slider_with_slots(40);
   ASSERT_TRUE(small);
   try {
     store_plant_in_model(small.get(), 0, tube, -1, "slider40.xml");

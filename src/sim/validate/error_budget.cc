@@ -23,8 +23,8 @@ std::string override_key(const std::string& assignment) {
 void check_source_name(const TableEntry& e, const std::string& name,
                        const std::vector<BudgetSource>& before) {
   e.in.check(!name.empty(), e.where + "name", "must not be empty");
-  e.in.check(name.find_first_of(",\"|\n\r") == std::string::npos, e.where + "name",
-             "must hold no comma, quote, bar or newline, got \"" + name + "\"");
+  e.in.check(name.find_first_of(",\"|\t\n\r") == std::string::npos, e.where + "name",
+             "must hold no comma, quote, bar, tab or newline, got \"" + name + "\"");
   for (const BudgetSource& s : before) {
     e.in.check(s.name != name, e.where + "name", "repeats another source's, \"" + name + "\"");
   }

@@ -10,7 +10,8 @@
 // plus the sum of the shares' squares; the budget prints how close it comes.
 //
 // The sources are data, a protocol file's [[budget_source]] tables:
-//   name   what the source is ("pressure sensor"), unique; no comma, quote, bar or newline
+//   name   what the source is ("pressure sensor"), unique; no comma, quote, bar, tab or
+//          newline (it is a cell of the CSV, the Markdown and the chart's data)
 //   on     the scenario overrides ("key=value") that turn it on, at least one
 //   off    those that turn it off; default none (the scenario's own setting is off)
 // Every run sets every source's `on` or `off` after the user's --set, so a --set of a key

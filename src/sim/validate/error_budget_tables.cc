@@ -39,14 +39,6 @@ double quadrature_sum(const ErrorBudget& b, std::size_t k) {
   return std::sqrt(sum);
 }
 
-void markdown_header_row(std::ostringstream& out, const ErrorBudget& b, const char* first) {
-  out << "| " << first << " |";
-  for (const std::string& c : b.cases) out << ' ' << c << " |";
-  out << "\n| --- |";
-  for (std::size_t k = 0; k < b.cases.size(); ++k) out << " --- |";
-  out << '\n';
-}
-
 }  // namespace
 
 std::string budget_csv(const ErrorBudget& b) {
@@ -69,7 +61,7 @@ std::string budget_markdown(const ErrorBudget& b) {
       << "Cases: " << b.cases_are << ". Errors in % of length. Each source is turned on and off "
       << "by the scenario keys of the protocol file's [[budget_source]] tables.\n\n"
       << "## Every run: max / RMSE\n\n";
-  markdown_header_row(out, b, "run");
+  out << markdown_header("run", b.cases);
   for (std::size_t r = 0; r < b.configs.size(); ++r) {
     out << "| " << b.configs[r].name << " |";
     for (std::size_t k = 0; k < b.cases.size(); ++k) {
@@ -80,7 +72,7 @@ std::string budget_markdown(const ErrorBudget& b) {
   out << "\n## Each source's share of the RMS error: alone / by removal\n\n"
       << "Alone: sqrt(RMSE(only s)^2 - RMSE(none)^2); by removal: sqrt(RMSE(all)^2 - "
          "RMSE(all but s)^2); 0 where the source lowers the error.\n\n";
-  markdown_header_row(out, b, "source");
+  out << markdown_header("source", b.cases);
   for (std::size_t s = 0; s < b.sources.size(); ++s) {
     out << "| " << b.sources[s].name << " |";
     for (std::size_t k = 0; k < b.cases.size(); ++k) {

@@ -28,11 +28,9 @@ std::string equation_number(SpringLaw law) { return std::string(to_string(law)).
 
 // a Markdown table's header: the model column, then one per PAM
 void pam_columns(std::ostringstream& out, const LengthValidationSpec& spec) {
-  out << "| model |";
-  for (const ValidationPam& pam : spec.pams) out << " PAM-" << pam.name << " |";
-  out << "\n| --- |";
-  for (std::size_t i = 0; i < spec.pams.size(); ++i) out << " --- |";
-  out << '\n';
+  std::vector<std::string> pams;
+  for (const ValidationPam& pam : spec.pams) pams.push_back("PAM-" + pam.name);
+  out << markdown_header("model", pams);
 }
 
 }  // namespace

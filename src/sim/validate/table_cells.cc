@@ -19,6 +19,14 @@ std::string markdown_error_pct(const ErrorPct& e) {
   return markdown_number(e.max_pct) + " / " + markdown_number(e.rmse_pct);
 }
 
+std::string markdown_header(const std::string& first, const std::vector<std::string>& columns) {
+  std::string out = "| " + first + " |";
+  for (const std::string& c : columns) out += " " + c + " |";
+  out += "\n| --- |";
+  for (std::size_t i = 0; i < columns.size(); ++i) out += " --- |";
+  return out + "\n";
+}
+
 std::string csv_number(double v) { return std::isfinite(v) ? format_shortest(v) : std::string(); }
 
 }  // namespace pamsim

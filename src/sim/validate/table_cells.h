@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "sim/validate/validation_options.h"
 
@@ -14,6 +15,9 @@ std::string markdown_number(double v);
 
 // "max / RMSE", each as markdown_number: an error in % of length.
 std::string markdown_error_pct(const ErrorPct& e);
+
+// A Markdown table's header and its rule: "| <first> | <column> | ... |\n| --- | ... |\n".
+std::string markdown_header(const std::string& first, const std::vector<std::string>& columns);
 
 // A CSV cell's number: the shortest text that reads back the same double; empty where it is
 // not finite.
