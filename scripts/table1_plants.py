@@ -2,7 +2,8 @@
 """table1_plants.py: every shipped plant rebuilt with seeds/000 Table I's own diameters (issue
 25, item 1): the sleeve's diameter, the bladder a rubber tube of Table I's diameter inside it
 (`bladder.diameter_mm`, the Gent-Gent law for natural rubber: src/pam_actuator/avbdl.h),
-end regions 3.2 R0 long (the DMSP-20's 32 mm at R0 = 10 mm: they scale with the radius),
+end regions 3.2 R0 long (the plant file's default for a tube: the DMSP-20's 32 mm at R0 =
+10 mm, scaled with the radius),
 the friction rule of the shipped files on the new radius, the braid angle kept (25 deg, an
 assumption). Each is tested as the lab tests (`pamsim tensile`, 2.5 mm steps to 7.5 mm and
 back, the protocol's pressures) and fitted with Eq. (2)-(3) (`pamsim fit`); the table gives
@@ -35,7 +36,7 @@ PLANTS = [
     ("PAM-A", "plant_pam_a.toml", 19.9, 6.0, [0.4, 0.5, 0.6, 0.7, 0.8], None),
     ("PAM-B", "plant_pam_b.toml", 13.4, 4.0, [0.4, 0.5, 0.6, 0.7, 0.8], None),
     ("PAM-C", "plant_pam_c.toml", 13.4, 4.0, [0.4, 0.5, 0.6, 0.7, 0.8], None),
-    ("PAM-D", "plant_pam_d.toml", 19.0, 6.0, [0.2, 0.3, 0.4, 0.5, 0.6], None),
+    ("PAM-D (silicone)", "plant_pam_d.toml", 19.0, 6.0, [0.2, 0.3, 0.4, 0.5, 0.6], None),
 ]
 WALLS_MM = [0.5, 1.0]
 SHOWN_MPA = [0.2, 0.4, 0.6]   # where the free lengths and pulls are shown (A-C: 0.4-0.8)
@@ -51,7 +52,6 @@ def table1_plant(shipped, sleeve_mm, tube_mm, wall_mm):
     text = re.sub(r"^diameter_mm = [0-9.]+", f"diameter_mm = {sleeve_mm}", text, flags=re.M)
     text = re.sub(r"^wall_thickness_mm = [0-9.]+", f"wall_thickness_mm = {wall_mm}", text,
                   flags=re.M)
-    text = text.replace("[bladder]", f"end_length_mm = {3.2 * sleeve_mm / 2:.2f}\n\n[bladder]")
     silicone = 'material = "silicone"' in text
     text = re.sub(r"^material = .*$", ('material = "silicone"' if silicone else
                                        'material = "natural_rubber"\nlaw = "gent_gent"') +
@@ -114,7 +114,7 @@ def rows(pamsim, folder):
                 f5 = {p: table_iv(law, p)[1] for p in SHOWN_MPA}
                 paper = f"{shown(ln, '{:.1f}')}; {law[0]}; {shown(f5, '{:.0f}')}"
             lines.append(f"| {name} | {sleeve} / {tube} | {wall} | {shown(free, '{:.1f}')} | "
-                         f"{m:.1f} | {shown(pull, '{:.0f}')} | {paper} |")
+                         f"{m:.1f} | {shown(pull, '{:.0f}')} |" + (f" {paper} |" if paper else " |"))
             print(lines[-1], file=sys.stderr)
     return lines
 
@@ -122,7 +122,8 @@ def rows(pamsim, folder):
 def main():
     pamsim, out, _ = options(__doc__)
     lines = ["| muscle | Table I sleeve / tube [mm] | wall [mm] | free length at "
-             "0.2 / 0.4 / 0.6 MPa [mm] | fitted m [mm/MPa] | pull 5 mm past it [N] | "
+             "0.2 / 0.4 / 0.6 MPa [mm] | fitted m [mm/MPa] | pull 5 mm past it at 0.2 / 0.4 / 0.6 "
+             "MPa [N] | "
              "Table IV: l_n; m; pull |",
              "| --- | --- | --- | --- | --- | --- | --- |"]
     with tempfile.TemporaryDirectory() as folder:

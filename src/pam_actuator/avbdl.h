@@ -220,6 +220,11 @@ double avbdl_max_length(const AvbdlParams& params);
 // The DMSP-20's end regions relative to its length (32 of 200 mm, seeds/003 Sec. 2.2), the
 // default Ld = kAvbdlEndFraction L0 of any muscle (avbdl_params_from_geometry, plant files).
 inline constexpr double kAvbdlEndFraction = 0.032 / 0.200;
+// The same end regions relative to the muscle's radius (32 mm at R0 = 10 mm): the default of
+// a plant file with Table I's tube (bladder.diameter_mm), whose end regions are where the
+// braid flares from the fitting's radius, so they scale with the radius, not the length
+// (issue 25, item 1).
+inline constexpr double kAvbdlEndPerRadius = 0.032 / 0.010;
 
 // Radius of the straight middle part [m]: the braid's sqrt(b^2 - L^2) / (2 pi n).
 double avbdl_middle_radius(const AvbdlParams& params, double length_m);

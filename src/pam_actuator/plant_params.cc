@@ -173,12 +173,15 @@ PlantParams load_plant_params(const std::string& path) {
   }
   a.braid_angle_rad = units::deg_to_rad(angle_deg);
   a.wall_thickness_m = units::mm_to_m(geo.non_negative("wall_thickness_mm", "mm"));
-  a.end_length_m = kAvbdlEndFraction * length_m;
+  if (geo.has("end_slope")) a.end_slope = geo.number("end_slope");
+  read_bladder(top.sub("bladder"), &a);
+  // the end regions: given, or the DMSP-20's in proportion (to the length; to the radius for
+  // Table I's tube, whose ends are where the braid flares from the fitting)
+  a.end_length_m = a.bladder_diameter_m > 0.0 ? kAvbdlEndPerRadius * 0.5 * a.diameter_m
+                                              : kAvbdlEndFraction * length_m;
   if (geo.has("end_length_mm")) {
     a.end_length_m = units::mm_to_m(geo.non_negative("end_length_mm", "mm"));
   }
-  if (geo.has("end_slope")) a.end_slope = geo.number("end_slope");
-  read_bladder(top.sub("bladder"), &a);
   a.friction = top.has("friction") ? read_friction(top.sub("friction")) : AvbdlFriction{};
 
   // the model's own checks, reported with the file's keys

@@ -10,7 +10,8 @@
 //   diameter_mm = 16                    # D0
 //   braid_angle_deg = 25                # alpha0, to the axis, < 54.74
 //   wall_thickness_mm = 1.0             # bladder wall, >= 0
-//   end_length_mm = 28.8                # optional: default 0.16 L0 (the DMSP-20's 32 of 200)
+//   end_length_mm = 28.8                # optional: default 0.16 L0 (the DMSP-20's 32 of 200),
+//                                       # 3.2 R0 with bladder.diameter_mm (its 32 at 10 mm)
 //   end_slope = 2.0                     # optional: the end profile's shape a in [0, 3]
 //   [bladder]
 //   material = "natural_rubber"         # or "silicone", or the constants:

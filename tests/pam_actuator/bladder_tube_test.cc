@@ -178,10 +178,12 @@ TEST(BladderTubeTest, PlantFilesGiveTheTubeAndTheLawByKey) {
   EXPECT_EQ(p.avbdl.bladder_law, BladderLaw::kGentGent);
   EXPECT_DOUBLE_EQ(p.avbdl.bladder_diameter_m, 0.004);
   EXPECT_EQ(p.avbdl.bladder_gent.jm, kNaturalRubberTreloarGentGent.jm);
+  EXPECT_NEAR(p.avbdl.end_length_m, 3.2 * 0.008, 1e-15) << "a tube's ends scale with R0";
   const PlantParams q =
       load_plant_params(write_plant("law = \"gent_gent\"\nmu_MPa = 0.3\nC2_MPa = 0\nJm = 50\n"));
   EXPECT_DOUBLE_EQ(q.avbdl.bladder_gent.mu_pa, 0.3e6);
   EXPECT_EQ(q.avbdl.bladder_diameter_m, 0.0) << "no diameter: the braid's";
+  EXPECT_NEAR(q.avbdl.end_length_m, 0.16 * 0.180, 1e-15) << "and the ends scale with L0";
   for (const auto& [bladder, key] : std::vector<std::pair<std::string, std::string>>{
            {"material = \"natural_rubber\"\nlaw = \"ogden\"\n", "bladder.law"},
            {"material = \"silicone\"\nlaw = \"gent_gent\"\n", "bladder.material"},
