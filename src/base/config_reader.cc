@@ -69,6 +69,22 @@ void ConfigReader::apply_override(const std::string& assignment) {
   overridden_.insert(key);
 }
 
+void ConfigReader::nest_value(const std::string& key, const std::string& field) {
+  const auto parts = split_key(key);
+  toml::table* t = &doc_;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    toml::node* n = t->get(parts[i]);
+    if (!n || !n->is_table()) return;
+    t = n->as_table();
+  }
+  toml::node* value = t->get(parts.back());
+  if (!value || value->is_table()) return;
+  toml::table nested;
+  nested.insert_or_assign(field, *value);
+  t->insert_or_assign(parts.back(), std::move(nested));
+  if (overridden_.count(key)) overridden_.insert(key + "." + field);
+}
+
 const toml::node* ConfigReader::find(const std::string& key) const {
   const toml::node* n = &doc_;
   for (const auto& part : split_key(key)) {

@@ -30,6 +30,9 @@ class ConfigReader {
   // strings). Throws InputError "--set <arg>: ..." when malformed.
   void apply_override(const std::string& assignment);
   void apply_overrides(const std::vector<std::string>& assignments);
+  // If `key` holds a value (not a table), makes it a table holding that value as `field`:
+  // how a key that is a file's path grows keys of its own ("plant" -> "plant.file").
+  void nest_value(const std::string& key, const std::string& field);
 
   bool has(const std::string& key) const;
   double get_double(const std::string& key, double fallback);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "base/enum_names.h"
+#include "base/file_changes.h"
 #include "base/input_error.h"
 #include "base/toml_file.h"
 #include "base/toml_section.h"
@@ -143,10 +144,8 @@ std::string file_key(const std::string& field) {
   return field;
 }
 
-}  // namespace
-
-PlantParams load_plant_params(const std::string& path) {
-  const toml::table root = parse_toml_file(path);
+// The plant as `root` gives it; `path` names it in errors.
+PlantParams read_plant(const toml::table& root, const std::string& path) {
   const Section top{path, "", root};
   top.reject_unknown({"bladder", "friction", "geometry", "law", "name", "source"});
   PlantParams plant;
@@ -193,6 +192,17 @@ PlantParams load_plant_params(const std::string& path) {
     throw InputError(path + ": " + file_key(what.substr(0, space)) + ":" + what.substr(space));
   }
   return plant;
+}
+
+}  // namespace
+
+PlantParams load_plant_params(const std::string& path) {
+  return read_plant(parse_toml_file(path), path);
+}
+
+PlantParams load_plant_params(const std::string& path, const toml::table& changes,
+                              const std::string& prefix) {
+  return read_with_changes(path, changes, prefix, read_plant);
 }
 
 }  // namespace pamsim

@@ -31,6 +31,8 @@
 
 #include <string>
 
+#include <toml++/toml.h>
+
 #include "pam_actuator/avbdl.h"
 
 namespace pamsim {
@@ -45,5 +47,13 @@ struct PlantParams {
 // missing file, a syntax error, an unknown key, a missing or non-finite value, or
 // dimensions that cannot be (a braid angle impossible for the length, a negative friction).
 PlantParams load_plant_params(const std::string& path);
+
+// The same with `changes` (tables and values of the file's own layout, in its units: e.g.
+// geometry.wall_thickness_mm) written over the file's, each validated as the file's own: a
+// scenario's muscles.<m>.plant.<table>.<field> keys (issue 26, item 1). A refused change is
+// named "<prefix><key>: <problem>" (prefix "muscles.agonist.plant."), a refused value of the
+// file as above.
+PlantParams load_plant_params(const std::string& path, const toml::table& changes,
+                              const std::string& prefix);
 
 }  // namespace pamsim

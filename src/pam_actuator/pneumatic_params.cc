@@ -12,6 +12,7 @@
 
 #include "base/enum_names.h"
 #include "base/format.h"
+#include "base/file_changes.h"
 #include "base/input_error.h"
 #include "base/toml_file.h"
 #include "base/units.h"
@@ -325,10 +326,8 @@ void read_key(const std::string& path, const std::string& table_name, const Tabl
   }
 }
 
-}  // namespace
-
-PneumaticParams load_pneumatic_params(const std::string& path) {
-  const toml::table doc = parse_toml_file(path);
+// The parameters as `doc` gives them; `path` names it in errors.
+PneumaticParams read_pneumatics(const toml::table& doc, const std::string& path) {
   PneumaticParams p;
   const std::vector<Table> schema = pneumatic_schema(&p);
 
@@ -356,6 +355,17 @@ PneumaticParams load_pneumatic_params(const std::string& path) {
   // cross-field checks (command range within supply, laminar ratio above b)
   validate_pneumatic_params(p, path);
   return p;
+}
+
+}  // namespace
+
+PneumaticParams load_pneumatic_params(const std::string& path) {
+  return read_pneumatics(parse_toml_file(path), path);
+}
+
+PneumaticParams load_pneumatic_params(const std::string& path, const toml::table& changes,
+                                      const std::string& prefix) {
+  return read_with_changes(path, changes, prefix, read_pneumatics);
 }
 
 }  // namespace pamsim

@@ -8,6 +8,8 @@
 #include <optional>
 #include <string>
 
+#include <toml++/toml.h>
+
 namespace pamsim {
 
 // How the integrator treats a change of valve command (a jump in the regulator's
@@ -91,6 +93,12 @@ inline constexpr double kIso6358ReferenceTemperatureK = 293.15;
 // missing or unreadable file, a TOML syntax error, an unknown table or key, a value of the
 // wrong type, or a non-finite / out-of-range value.
 PneumaticParams load_pneumatic_params(const std::string& path);
+// The same with `changes` (tables and values of the file's own layout and units, e.g.
+// chamber.tube_dead_volume_cm3) written over the file's, each validated as the file's own: a
+// scenario's pneumatics.<table>.<field> keys (issue 26, item 1). A refused change is named
+// "<prefix><table>.<field>: <problem>" (prefix "pneumatics."); base/file_changes.h.
+PneumaticParams load_pneumatic_params(const std::string& path, const toml::table& changes,
+                                      const std::string& prefix);
 
 // "instant" | "delayed" and "chamber" | "outlet", both ways; parse_* throws InputError
 // "<context> must be \"a\" or \"b\", got \"x\"".

@@ -50,6 +50,7 @@ std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
         "controller.p_max_MPa=0.6", "reflex.pairs=[[\"agonist\", \"antagonist\"]]",
         "joints.shoulder.damping_N_m_s_per_rad=0", "joints.shoulder.frictionloss_N_m=0.001",
         "muscles.agonist.line_diameter_mm=0.5", "muscles.agonist.line_modulus_MPa=2500",
+        "pneumatics.chamber.tube_dead_volume_cm3=12",
         // an event of each condition, and each action's keys
         "events.a.when.at_s=0.5", "events.a.action=\"add_mass\"", "events.a.body=\"basket\"",
         "events.a.mass_kg=0.1", "events.b.when.contact=[\"ball\", \"basket\"]",
@@ -58,6 +59,8 @@ std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
         "events.e.when.body=\"ball\"", "events.e.when.below_z_m=-1"}},
       {s + "reaching.toml",   // the long forms: plant, label, ramp; holds by position
        {"muscles.agonist.command={kind=\"constant\", MPa=0.4}",
+        "muscles.antagonist.plant.geometry.wall_thickness_mm=3.0",
+        "muscles.antagonist.plant.friction.extension.A0_mm2=6.11",
         "muscles.antagonist.command={kind=\"steps\", times_s=[0.0, 1.0], MPa=[0.4, 0.5]}",
         "muscles.agonist.line_mm=150", "bodies.ball.mass_kg=0.2"}},
       {s + "reaching.toml",

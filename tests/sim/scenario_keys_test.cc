@@ -194,7 +194,7 @@ TEST(ScenarioKeysTest, AShorthandSetOnTheCommandLineReplacesTheLongForm) {
 // The keys a sweep's best.toml must rebase when it moves a scenario elsewhere.
 TEST(ScenarioKeysTest, PathKeysAreTheOnesThatNameFiles) {
   for (const char* key : {"model.file", "model.calibration", "model.pneumatics",
-                          "model.agonist_params", "muscles.pam.params", "muscles.pam.plant",
+                          "model.agonist_params", "muscles.pam.params", "muscles.pam.plant", "muscles.pam.plant.file",
                           "muscles.pam.command.file"}) {
     EXPECT_TRUE(is_scenario_path_key(key)) << key;
   }

@@ -39,6 +39,7 @@ struct MuscleSpec {
   PamParams pam;               // the law its estimator inverts, its gauge and geometry
   std::string plant_file;      // muscles.<name>.plant, or empty: the plant is pam's law
   AvbdlParams plant;           // the physical muscle (seeds/003), when plant_file is set
+  std::string plant_changes;   // muscles.<name>.plant.<table>.<field> as TOML text, if any
   PressureSchedule command;    // muscles.<name>.command
   LineSource line = LineSource::kFixed;
   double line_length_m = 0.0;  // kFixed

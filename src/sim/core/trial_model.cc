@@ -359,7 +359,7 @@ bool same_trial_model(const Scenario& a, const Scenario& b) {
     append_bits(os, sc.timestep_s);
     for (const MuscleSpec& mu : sc.muscles) {
       os << mu.actuator << ';' << mu.label << ';' << mu.params_file << ';' << mu.plant_file << ';'
-         << static_cast<int>(mu.line) << ';';
+         << mu.plant_changes << ';' << static_cast<int>(mu.line) << ';';
       append_bits(os, mu.line_length_m);
       append_bits(os, mu.line_axial_stiffness_n);
       append_bits(os, mu.command.at(0.0));

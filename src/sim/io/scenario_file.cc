@@ -131,6 +131,19 @@ void read_valve(ConfigReader& in, const std::string& valve, Scenario* sc) {
   }
 }
 
+// model.pneumatics, with any of its fields changed by pneumatics.<table>.<field>
+void read_pneumatics(ConfigReader& in, Scenario* sc) {
+  toml::table changes;
+  if (in.has("pneumatics")) {
+    const toml::node* t = in.raw("pneumatics");
+    if (!t->is_table()) in.fail("pneumatics", "must be a table of the pneumatics file's fields");
+    changes = *t->as_table();
+  }
+  sc->pneumatics = in_file(in, [&] {
+    return load_pneumatic_params(sc->pneumatics_file, changes, "pneumatics.");
+  });
+}
+
 void read_model(ConfigReader& in, Scenario* sc) {
   sc->model_file = in.get_input_path("model.file", "");
   in.check(!sc->model_file.empty(), "model.file", "is required");
@@ -138,7 +151,7 @@ void read_model(ConfigReader& in, Scenario* sc) {
   sc->calibration_file = in.get_input_path("model.calibration", "");
   sc->pneumatics_file = in.get_input_path("model.pneumatics", "");
   in.check(!sc->pneumatics_file.empty(), "model.pneumatics", "is required");
-  sc->pneumatics = load_pneumatic_params(sc->pneumatics_file);
+  read_pneumatics(in, sc);
   const std::string valve = in.get_string("valve.model", valve_model_name(sc->valve_model));
   sc->valve_model = parse_valve_model(valve, in.name() + ": valve.model");
 
@@ -181,8 +194,20 @@ void read_metrics(ConfigReader& in, Scenario* sc, bool has_drop) {
   make_metric_sets(*sc);   // throws "<file>: metrics ..." for an unknown set or missing events
 }
 
+// A --set of a plant's field (muscles.<m>.plant.<table>.<field>) on a scenario that names
+// the plant by its path alone: the path becomes muscles.<m>.plant.file first.
+void nest_plant_paths(ConfigReader& in, const std::vector<std::string>& overrides) {
+  for (const std::string& o : overrides) {
+    const std::vector<std::string> parts = split_key(o.substr(0, o.find('=')));
+    if (parts.size() > 3 && parts[0] == "muscles" && parts[2] == "plant") {
+      in.nest_value("muscles." + parts[1] + ".plant", "file");
+    }
+  }
+}
+
 Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrides,
                        bool lines_needed = true) {
+  nest_plant_paths(in, overrides);
   in.apply_overrides(overrides);
   Scenario sc;
   sc.path = in.name();
@@ -270,11 +295,13 @@ std::vector<ScenarioKeyValue> scenario_key_values(const std::string& path,
   std::vector<ScenarioKeyValue> out;
   for (std::size_t i = 0; i < asked.size(); ++i) {
     const std::string& key = asked[i];
-    const bool is_table_name = in.is_table(key) || is_scenario_table(key) ||
-        (i + 1 < asked.size() && asked[i + 1].rfind(key + ".", 0) == 0);
+    const toml::node_view<const toml::node> node = in.document().at_path(key);
+    // a name that may hold a table (muscles.<m>.plant) is a key where the file gives a value
+    const bool is_table_name = !(node && !node.is_table()) &&
+        (in.is_table(key) || is_scenario_table(key) ||
+         (i + 1 < asked.size() && asked[i + 1].rfind(key + ".", 0) == 0));
     if (is_table_name) continue;
     ScenarioKeyValue kv{key, "", false};
-    const toml::node_view<const toml::node> node = in.document().at_path(key);
     if (node) {
       kv.value = toml_value_text(*node.node());
     } else if (const auto d = in.defaults_used().find(key); d != in.defaults_used().end()) {
@@ -291,7 +318,7 @@ bool is_scenario_path_key(const std::string& key) {
   if (key.rfind("model.", 0) == 0 && ends_with(key, "_params")) return true;
   if (key.rfind("muscles.", 0) == 0) {
     return ends_with(key, ".params") || ends_with(key, ".plant") ||
-           ends_with(key, ".command.file");
+           ends_with(key, ".plant.file") || ends_with(key, ".command.file");
   }
   return false;
 }

@@ -11,6 +11,9 @@
 //                                 hinge or slide joint
 //   model.calibration             optional: start_angle_deg and <actuator>_line_mm (calibrate)
 //   model.pneumatics              valve and chamber parameters (models/pams/pneumatics.toml)
+//   pneumatics.<table>.<field>    optional: a field of model.pneumatics' file, in its units
+//                                 (chamber.tube_dead_volume_cm3), in place of the file's;
+//                                 validated as the file's own (base/file_changes.h)
 //   sim.timestep_s                physics step, (0, 0.01], default 0.001
 //   sim.duration_s                (0, 3600], default 3
 //   sim.control_hz                control and logging rate, default 100; a whole divisor of
@@ -21,7 +24,11 @@
 //                                 PAM actuator of the model
 //   muscles.<actuator>.plant      optional: the physical muscle's file (pam_actuator/
 //                                 plant_params.h, the AVBDL law); default: the plant obeys
-//                                 the params file's spring law (plant = estimator)
+//                                 the params file's spring law (plant = estimator). Or a
+//                                 table: file = the path, and any of the file's own fields
+//                                 (geometry.wall_thickness_mm, friction.extension.A0_mm2,
+//                                 ...), which replace the file's; a --set of such a field
+//                                 on a scenario that gives the path alone makes it the table
 //   muscles.<actuator>.label      name in columns and metrics, default the actuator's name
 //   muscles.<actuator>.line_mm    fishing-line length; or .line = "equilibrium" (solved so
 //                                 the start state is static); default: model.calibration's

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "base/format.h"
+#include "base/toml_file.h"
 #include "pam_actuator/plant_params.h"
 #include "base/units.h"
 #include "sim/io/calibration_file.h"
@@ -112,12 +113,25 @@ std::vector<std::string> muscle_names(const ConfigReader& in) {
 // gives them, are the plant's (the diameter may differ: plant_agonist.toml)
 void read_muscle_plant(ConfigReader& in, MuscleSpec* muscle) {
   MuscleSpec& m = *muscle;
-  m.plant_file = in.get_input_path(m.key + ".plant", "");
+  const std::string key = m.key + ".plant";
+  // a path, or a table: its file and the fields it changes (plant_params.h)
+  const bool changes = in.is_table(key);
+  m.plant_file = in.get_input_path(changes ? key + ".file" : key, "");
+  if (changes && m.plant_file.empty()) {
+    in.fail(key + ".file", "is required (the plant file whose fields " + key + " changes)");
+  }
+  toml::table fields;
+  if (changes) {
+    fields = *in.raw(key)->as_table();
+    fields.erase("file");
+    m.plant_changes = toml_text(fields);
+  }
   m.plant = in_file(in, [&] {
     try {
-      return load_plant_params(m.plant_file).avbdl;
+      return load_plant_params(m.plant_file, fields, key + ".").avbdl;
     } catch (const InputError& e) {
-      throw InputError(m.key + ".plant: " + e.what());
+      const std::string what = e.what();
+      throw InputError(what.rfind(key + ".", 0) == 0 ? what : key + ": " + what);
     }
   });
   if (!m.pam.geometry) return;
