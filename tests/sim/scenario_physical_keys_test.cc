@@ -5,6 +5,7 @@
 // another trial model, and both survive the run folder's resolved scenario.toml.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -114,6 +115,30 @@ TEST(ScenarioPlantKeysTest, BadFieldsNameTheirScenarioKey) {
               std::string::npos)
         << e.what();
   }
+}
+
+// A mass scales the model's inertia; an inertia given replaces it, with or without a mass.
+TEST(ScenarioBodyKeysTest, InertiaReplacesTheModelsAndAMassAloneScalesIt) {
+  auto inertia = [](const Scenario& sc, const char* body) {
+    const TrialModel tm = load_trial_model(sc);
+    const int b = mj_name2id(tm.model.get(), mjOBJ_BODY, body);
+    const mjtNum* i = tm.model->body_inertia + 3 * b;
+    return std::array<double, 3>{i[0], i[1], i[2]};
+  };
+  const Scenario base = load_scenario(kReaching);
+  const std::array<double, 3> model = inertia(base, "basket");
+  const std::array<double, 3> doubled = inertia(load_scenario(kReaching, {"bodies.basket.mass_kg=" + std::to_string(2 * 0.0831)}), "basket");
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(doubled[k], 2 * model[k], 1e-6 * model[k]);
+  const std::array<double, 3> given{1e-4, 2e-4, 2.5e-4};
+  const Scenario set = load_scenario(kReaching, {"bodies.basket.inertia_kg_m2=[1e-4, 2e-4, 2.5e-4]"});
+  EXPECT_EQ(inertia(set, "basket"), given);
+  EXPECT_FALSE(same_trial_model(base, set));
+  EXPECT_EQ(inertia(load_scenario(kReaching, {"bodies.basket.inertia_kg_m2=[1e-4, 2e-4, 2.5e-4]",
+                                              "bodies.basket.mass_kg=1"}), "basket"), given);
+  // the drop's ball: its mass from [drop], its inertia from bodies.ball
+  const std::string drop = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml";
+  EXPECT_EQ(inertia(load_scenario(drop, {"bodies.ball.inertia_kg_m2=[3e-5, 3e-5, 3e-5]"}), "ball"),
+            (std::array<double, 3>{3e-5, 3e-5, 3e-5}));
 }
 
 TEST(ScenarioPneumaticsKeysTest, ASetFieldChangesThatFieldOfThePneumaticsFileOnly) {

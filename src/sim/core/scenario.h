@@ -59,11 +59,13 @@ struct HoldSpec {
   std::array<double, 3> position_m{};
 };
 
-// A body's mass as the scenario sets it (inertia scaled with it).
+// A body's mass and/or principal moments of inertia as the scenario sets them: a mass alone
+// scales the model's inertia with it; an inertia given replaces the model's (after any mass).
 struct BodyMassSpec {
   std::string key;
   std::string body;
-  double mass_kg = 0.0;
+  double mass_kg = 0.0;                     // 0: the model's
+  std::array<double, 3> inertia_kg_m2{};   // all 0: the model's (scaled with a new mass)
 };
 
 // joints.<joint>.*: a joint's viscous damping and dry friction (MuJoCo's damping and

@@ -1,6 +1,7 @@
 // trial_model.cc: see trial_model.h.
 #include "sim/core/trial_model.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -340,7 +341,12 @@ TrialModel load_trial_model(const Scenario& sc) {
   bind_muscles(sc, &tm);
   bind_joint(sc, &tm);
   for (const BodyMassSpec& b : sc.body_masses) {
-    set_body_mass(m, require(sc, m, mjOBJ_BODY, b.body, b.key, "a body"), b.mass_kg);
+    const int body = require(sc, m, mjOBJ_BODY, b.body, b.key, "a body");
+    if (b.mass_kg > 0) set_body_mass(m, body, b.mass_kg);
+  }
+  for (const BodyMassSpec& b : sc.body_masses) {   // an inertia given wins over a scaled one
+    const int body = require(sc, m, mjOBJ_BODY, b.body, b.key, "a body");
+    if (b.inertia_kg_m2[0] > 0) std::copy_n(b.inertia_kg_m2.data(), 3, m->body_inertia + 3 * body);
   }
   set_joints(sc, m);
   bind_holds(sc, &tm);
@@ -367,6 +373,7 @@ bool same_trial_model(const Scenario& a, const Scenario& b) {
     for (const BodyMassSpec& bm : sc.body_masses) {
       os << bm.body << ';';
       append_bits(os, bm.mass_kg);
+      for (double i : bm.inertia_kg_m2) append_bits(os, i);
     }
     for (const JointSpec& j : sc.joints) {
       os << j.joint << ';';

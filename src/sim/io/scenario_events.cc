@@ -111,17 +111,45 @@ void read_drop(ConfigReader& in, Scenario* sc, bool implied) {
   sc->events.push_back(impact);
 }
 
-void read_bodies_and_holds(ConfigReader& in, Scenario* sc) {
+// bodies.<body>.inertia_kg_m2: three principal moments, each in (0, 1e3] kg m^2, that a
+// rigid body can have (each at most the sum of the other two, as MuJoCo's compiler demands)
+std::array<double, 3> read_inertia(ConfigReader& in, const std::string& key) {
+  const std::vector<double> i = in.get_double_list(key, {});
+  in.check(i.size() == 3, key, "must be [I1, I2, I3] in kg m^2 (principal moments)");
+  for (double v : i) {
+    in.check(v > 0 && v <= 1e3, key, "must hold moments in (0, 1000] kg m^2, got " + format_value(v));
+  }
+  for (int k = 0; k < 3; ++k) {
+    in.check(i[k] <= i[(k + 1) % 3] + i[(k + 2) % 3], key,
+             "is no rigid body's: each moment must be at most the sum of the other two");
+  }
+  return {i[0], i[1], i[2]};
+}
+
+void read_bodies(ConfigReader& in, Scenario* sc) {
   for (const std::string& body : in.child_keys("bodies")) {
     const std::string key = "bodies." + body + ".mass_kg";
-    const double mass = in.get_double(key, 0.0);
-    in.check(in.has(key) && mass > 0 && mass <= 1000, key,
-             "must be in (0, 1000] kg, got " + format_value(mass));
-    for (const BodyMassSpec& other : sc->body_masses) {
-      in.check(other.body != body, key, "sets body '" + body + "', already set by " + other.key);
+    const std::string inertia_key = "bodies." + body + ".inertia_kg_m2";
+    BodyMassSpec spec{key, body, 0.0, {}};
+    if (in.has(inertia_key)) spec.inertia_kg_m2 = read_inertia(in, inertia_key);
+    if (in.has(inertia_key) && !in.has(key)) {
+      spec.key = inertia_key;
+      sc->body_masses.push_back(spec);
+      continue;
     }
-    sc->body_masses.push_back({key, body, mass});
+    spec.mass_kg = in.get_double(key, 0.0);
+    in.check(in.has(key) && spec.mass_kg > 0 && spec.mass_kg <= 1000, key,
+             "must be in (0, 1000] kg, got " + format_value(spec.mass_kg));
+    for (const BodyMassSpec& other : sc->body_masses) {
+      in.check(other.body != body || other.mass_kg == 0, key,
+               "sets body '" + body + "', already set by " + other.key);
+    }
+    sc->body_masses.push_back(spec);
   }
+}
+
+void read_bodies_and_holds(ConfigReader& in, Scenario* sc) {
+  read_bodies(in, sc);
   for (const std::string& body : in.child_keys("holds")) {
     HoldSpec h;
     h.key = "holds." + body;

@@ -38,7 +38,8 @@
 //       kind = "sine"      offset_MPa, amplitude_MPa, period_s, phase_deg (0), start_s (0)
 //       kind = "steps"     times_s = [...], MPa = [...]
 //       kind = "table"     file: a CSV "time_s,MPa", piecewise linear
-//   bodies.<body>.mass_kg         (0, 1000]
+//   bodies.<body>.mass_kg         (0, 1000]; the model's inertia scaled with it
+//   bodies.<body>.inertia_kg_m2   [I1, I2, I3] principal moments, in place of the model's
 //   holds.<body>                  a free body held at rest until released: above_site and
 //                                 height_m in [0, 10] (its bottom, for a sphere), or
 //                                 position_m = [x, y, z]

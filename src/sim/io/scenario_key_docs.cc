@@ -90,7 +90,8 @@ std::vector<KeyDoc> model_docs() {
 // bodies, holds, events, the drop shorthand
 std::vector<KeyDoc> event_docs() {
   return {
-      {"bodies.<body>.mass_kg", "kg", "(required)", "(0, 1000]", "a body's mass, in place of the model's"},
+      {"bodies.<body>.mass_kg", "kg", "(the model's)", "(0, 1000]", "a body's mass, in place of the model's (its inertia scaled with it)"},
+      {"bodies.<body>.inertia_kg_m2", "kg m^2", "(the model's)", "[I1, I2, I3], each in (0, 1000], each <= the sum of the others", "a body's principal moments of inertia about its centre of mass, in place of the model's"},
       {"joints.<joint>.damping_N_m_s_per_rad", "N m s/rad", "(the model's)", "[0, 1e4]; a hinge", "the joint's viscous damping (MuJoCo damping), e.g. a bearing's"},
       {"joints.<joint>.frictionloss_N_m", "N m", "(the model's)", "[0, 1e4]; a hinge", "the joint's dry friction torque (MuJoCo frictionloss)"},
       {"joints.<joint>.damping_N_s_per_m", "N s/m", "(the model's)", "[0, 1e6]; a slide", "the joint's viscous damping (MuJoCo damping)"},
