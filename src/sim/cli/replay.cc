@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <map>
 
 #include "base/atomic_file.h"
 #include "base/format.h"
@@ -87,9 +88,11 @@ std::string first_difference(const std::map<std::string, DbValue>& stored,
   return "";
 }
 
-// The overrides that make a point's scenario, with the trial's seed.
+// The overrides that make a trial's scenario: its point's, its seed, and the values
+// [[randomize]] drew for it (as stored in its `row`).
 std::vector<std::string> trial_overrides(const ResultsDb& db, const SweepSummary& sweep,
-                                         std::int64_t point, std::uint64_t seed) {
+                                         std::int64_t point, std::uint64_t seed,
+                                         const std::map<std::string, DbValue>& row) {
   const PointSummary* at = nullptr;
   for (const PointSummary& p : sweep.points) {
     if (p.point == point) at = &p;
@@ -97,6 +100,9 @@ std::vector<std::string> trial_overrides(const ResultsDb& db, const SweepSummary
   if (at == nullptr) throw InputError(db.path() + ": point " + std::to_string(point) + " is missing");
   std::vector<std::string> overrides = point_overrides(sweep, *at);
   overrides.push_back("seed=" + std::to_string(seed));
+  for (const std::string& key : sweep.randomize_keys) {
+    overrides.push_back(key + "=" + format_number(row.at(key).number));
+  }
   return overrides;
 }
 
@@ -109,7 +115,7 @@ void replay(const ReplayOptions& opt) {
   const std::map<std::string, DbValue> row = stored_row(db, opt.trial);
   const auto point = static_cast<std::int64_t>(row.at("point").number);
   const auto seed = static_cast<std::uint64_t>(row.at("seed").number);
-  const std::vector<std::string> overrides = trial_overrides(db, sweep, point, seed);
+  const std::vector<std::string> overrides = trial_overrides(db, sweep, point, seed, row);
 
   const std::string out = !opt.out.empty() ? opt.out
       : (fs::path(opt.db).parent_path() / (fs::path(opt.db).stem().string() + "_trial_" +

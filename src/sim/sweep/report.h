@@ -38,6 +38,7 @@ struct SweepSummary {
   std::vector<std::string> axis_keys;
   std::vector<bool> axis_log;
   std::vector<std::vector<std::string>> axis_levels;   // grid designs: each axis's values
+  std::vector<std::string> randomize_keys; // [[randomize]]: drawn per trial, a column each
   std::vector<std::string> metric_names;
   std::vector<PointSummary> points;        // stored points, in point order
 

@@ -51,6 +51,7 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
     std::string columns = "trial INTEGER PRIMARY KEY, point INTEGER NOT NULL, "
                           "seed_index INTEGER NOT NULL, seed INTEGER NOT NULL";
     for (const auto& axis : sweep.axes) columns += ", " + quoted_identifier(axis.key);
+    for (const auto& r : sweep.randomize) columns += ", " + quoted_identifier(r.key) + " REAL";
     columns += ", status TEXT NOT NULL, message TEXT";
     for (const auto& name : sweep.metric_names) columns += ", " + quoted_identifier(name) + " REAL";
     db.exec("BEGIN; CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL); "
@@ -142,7 +143,8 @@ std::int64_t ResultsDb::trial_count() const {
 
 void ResultsDb::insert(const SweepDefinition& sweep, const std::vector<TrialRecord>& records) {
   if (records.empty()) return;
-  const std::size_t n_columns = 4 + sweep.axes.size() + 2 + sweep.metric_names.size();
+  const std::size_t n_columns =
+      4 + sweep.axes.size() + sweep.randomize.size() + 2 + sweep.metric_names.size();
   std::string sql = "INSERT INTO trials VALUES (?";
   for (std::size_t i = 1; i < n_columns; ++i) sql += ", ?";
   sql += ")";
@@ -168,6 +170,7 @@ void ResultsDb::insert(const SweepDefinition& sweep, const std::vector<TrialReco
           case AxisValue::Kind::kBool: sqlite3_bind_int(st, c++, v.flag ? 1 : 0); break;
         }
       }
+      for (double drawn : sweep.draws(r.trial)) sqlite3_bind_double(st, c++, drawn);
       sqlite3_bind_text(st, c++, r.summary.status.c_str(), -1, SQLITE_TRANSIENT);
       if (r.summary.message.empty()) sqlite3_bind_null(st, c++);
       else sqlite3_bind_text(st, c++, r.summary.message.c_str(), -1, SQLITE_TRANSIENT);

@@ -6,6 +6,7 @@
 //                      array: each `pamsim sweep` that ran trials into it, with its command
 //                      line, threads, start, wall time and trials run: provenance.h)
 //   trials(trial INTEGER PRIMARY KEY, point, seed_index, seed, <one column per axis key>,
+//          <one per [[randomize]] key: the value drawn for the trial>,
 //          status, message, <every metric of summary.json>; NULL where undefined, and all
 //          NULL for a trial that failed to run)
 // A new database is built under a temp name and renamed into place, so a half-made file never

@@ -150,6 +150,21 @@ std::uint64_t SweepDefinition::seed_of(std::int64_t trial) const {
   return base_seed + static_cast<std::uint64_t>(trial % seeds);
 }
 
+std::vector<double> SweepDefinition::draws(std::int64_t trial) const {
+  return draw_values(randomize, randomize_seed, trial % seeds);
+}
+
+std::vector<std::string> SweepDefinition::trial_overrides(std::int64_t trial) const {
+  std::vector<std::string> out = overrides(trial / seeds);
+  const std::vector<double> values = draws(trial);
+  for (std::size_t k = 0; k < randomize.size(); ++k) {
+    AxisValue v;
+    v.number = values[k];
+    out.push_back(randomize[k].key + "=" + v.toml());
+  }
+  return out;
+}
+
 std::string SweepDefinition::canonical_json() const {
   nlohmann::json axes_json = nlohmann::json::array();
   for (const auto& a : axes) {
@@ -160,10 +175,14 @@ std::string SweepDefinition::canonical_json() const {
     j["values"] = values;
     axes_json.push_back(j);
   }
-  const nlohmann::json j = {{"base_scenario", base_text}, {"fixed", fixed},
+  nlohmann::json j = {{"base_scenario", base_text}, {"fixed", fixed},
                             {"axes", axes_json},          {"design", sweep_design_name(design)},
                             {"samples", samples},         {"design_seed", design_seed},
                             {"seeds", seeds},             {"metrics", metric_names}};
+  if (!randomize.empty()) {   // (a sweep without draws is described as before they existed)
+    j["randomize"] = randomizations_json(randomize);
+    j["randomize_seed"] = randomize_seed;
+  }
   return j.dump();
 }
 

@@ -16,11 +16,15 @@
 //   [[axis]]     key = "reflex.v_thr_mm_s", and either
 //                  values = [..]                       (grid only), or
 //                  from, to, count, scale = "linear"|"log"   (count for grid only)
+//   [[randomize]] key and a distribution drawn per trial (randomize.h), e.g. a plant's field
+//   randomize_seed  seed of those draws, >= 0                                  default 1
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "sim/sweep/randomize.h"
 
 namespace pamsim {
 
@@ -60,6 +64,8 @@ struct SweepDefinition {
   std::int64_t samples = 0;       // random, lhs
   std::uint64_t design_seed = 1;  // random, lhs
   std::int64_t seeds = 1;
+  std::vector<Randomization> randomize;   // drawn per seed index (randomize.h)
+  std::uint64_t randomize_seed = 1;
   std::int64_t max_trials = 1000000;  // the cap on points x seeds (not part of the definition)
   std::uint64_t base_seed = 1;    // the base scenario's seed (with fixed overrides)
   // the metrics each trial stores (the database's metric columns), from the base scenario
@@ -74,8 +80,13 @@ struct SweepDefinition {
   // "key=value" overrides for a point: the fixed ones, then the axes'.
   std::vector<std::string> overrides(std::int64_t point) const;
   std::uint64_t seed_of(std::int64_t trial) const;
+  // The values [[randomize]] draws for trial `trial` (those of its seed index), in order.
+  std::vector<double> draws(std::int64_t trial) const;
+  // "key=value" overrides for a trial: its point's, then its draws.
+  std::vector<std::string> trial_overrides(std::int64_t trial) const;
   // What makes two sweeps the same experiment, as canonical JSON text: base scenario content,
-  // fixed overrides, axes, design and seeds (not the file names or the project version).
+  // fixed overrides, axes, design, seeds and any randomization (not the file names or the
+  // project version).
   std::string canonical_json() const;
 };
 

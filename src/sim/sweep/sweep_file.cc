@@ -3,6 +3,7 @@
 // point make a valid scenario with the same metrics, all before anything runs.
 #include "sim/sweep/sweep.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -16,23 +17,12 @@
 #include "sim/core/metrics.h"
 #include "sim/core/trial_model.h"
 #include "sim/io/scenario_file.h"
+#include "sim/sweep/sweep_file_fields.h"
 
 namespace pamsim {
 namespace {
 
-// Where a problem is: "<file>: axis[<i>].<key>" and the like.
-struct Where {
-  const std::string& file;
-  std::string prefix;
-  [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
-    throw InputError(file + ": " + prefix + key + " " + problem);
-  }
-  void check(bool ok, const std::string& key, const std::string& problem) const {
-    if (!ok) fail(key, problem);
-  }
-};
-
-AxisValue axis_value(const toml::node& n, const Where& where, const std::string& key) {
+AxisValue axis_value(const toml::node& n, const SweepFileWhere& where, const std::string& key) {
   AxisValue v;
   if (n.is_integer()) {
     v.kind = AxisValue::Kind::kInteger;
@@ -52,17 +42,6 @@ AxisValue axis_value(const toml::node& n, const Where& where, const std::string&
   return v;
 }
 
-double number_of(const toml::table& t, const char* key, const Where& where) {
-  const toml::node* n = t.get(key);
-  // (an integer beyond 2^53 has no exact double: toml++ gives none)
-  const bool numeric = n && (n->is_integer() || n->is_floating_point());
-  const std::optional<double> value = numeric ? n->value<double>() : std::nullopt;
-  if (!value) where.fail(key, "must be a number");
-  const double v = *value;
-  where.check(std::isfinite(v), key, "must be finite, got " + format_value(v));
-  return v;
-}
-
 // A grid level to 12 significant digits, so a log range lists 0.001, not 0.0010000000000000002.
 double tidy(double v) {
   char buf[32];
@@ -71,7 +50,7 @@ double tidy(double v) {
 }
 
 // An axis given as a list of values (grid designs only).
-void read_axis_values(const toml::table& t, SweepDesign design, const Where& where,
+void read_axis_values(const toml::table& t, SweepDesign design, const SweepFileWhere& where,
                       SweepAxis* axis) {
   where.check(design == SweepDesign::kGrid, "values",
               "is for grid designs; random and lhs sample a range (from, to)");
@@ -84,7 +63,7 @@ void read_axis_values(const toml::table& t, SweepDesign design, const Where& whe
 }
 
 // A grid axis's `count` levels over its range, ends exact.
-void read_grid_levels(const toml::table& t, std::int64_t max_trials, const Where& where,
+void read_grid_levels(const toml::table& t, std::int64_t max_trials, const SweepFileWhere& where,
                       SweepAxis* axis_out) {
   SweepAxis& axis = *axis_out;
   const toml::node* count_node = t.get("count");
@@ -106,7 +85,7 @@ void read_grid_levels(const toml::table& t, std::int64_t max_trials, const Where
 
 SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
                     std::int64_t max_trials, const std::string& file) {
-  const Where where{file, "axis[" + std::to_string(index) + "]."};
+  const SweepFileWhere where{file, "axis[" + std::to_string(index) + "]."};
   static const std::set<std::string> known = {"key", "values", "from", "to", "count", "scale"};
   for (const auto& [k, _] : t) {
     if (!known.count(std::string(k.str()))) {
@@ -131,8 +110,8 @@ SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
 
   axis.is_range = true;
   where.check(t.contains("from") && t.contains("to"), "from", "and to are both required");
-  axis.from = number_of(t, "from", where);
-  axis.to = number_of(t, "to", where);
+  axis.from = sweep_number(t, "from", where);
+  axis.to = sweep_number(t, "to", where);
   const std::string scale = t["scale"].value_or(std::string("linear"));
   where.check(scale == "linear" || scale == "log", "scale",
               "must be \"linear\" or \"log\", got \"" + scale + "\"");
@@ -153,7 +132,7 @@ SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
 // "a.b=value" for every leaf of [fixed].
 void flatten_fixed(const toml::table& t, const std::string& prefix, const std::string& file,
                    std::vector<std::string>* out) {
-  const Where where{file, "fixed."};
+  const SweepFileWhere where{file, "fixed."};
   for (const auto& [k, node] : t) {
     const std::string key = prefix + std::string(k.str());
     if (const toml::table* sub = node.as_table()) {
@@ -164,13 +143,25 @@ void flatten_fixed(const toml::table& t, const std::string& prefix, const std::s
   }
 }
 
-std::string describe_point(const SweepDefinition& def, std::int64_t point) {
-  std::string s;
+// "point 3 (key = value, ...)", with the draws of seed index s when the sweep draws any
+std::string describe_trial(const SweepDefinition& def, std::int64_t trial) {
+  const std::int64_t point = trial / def.seeds;
+  std::string s = "point " + std::to_string(point) + " (";
   for (std::size_t a = 0; a < def.axes.size(); ++a) {
     s += (a ? ", " : "") + def.axes[a].key + " = " + def.value(point, a).toml();
   }
-  return s;
+  if (def.randomize.empty()) return s + ")";
+  s += "; seed index " + std::to_string(trial % def.seeds) + " draws";
+  const std::vector<double> v = def.draws(trial);
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    s += (k ? ", " : " ") + def.randomize[k].key + " = " + format_shortest(v[k]);
+  }
+  return s + ")";
 }
+
+// The seed indices whose draws are checked before the sweep runs; later ones are checked as
+// their trials run (one refused is stored as a failed trial with the reason).
+constexpr std::int64_t kCheckedDraws = 100;
 
 const std::string kRaise = " (raise max_trials to run it)";
 
@@ -233,6 +224,24 @@ void read_axes(ConfigReader& in, SweepDefinition* def) {
   }
 }
 
+// [[randomize]] and randomize_seed; a drawn key may be neither an axis nor fixed
+void read_randomize(ConfigReader& in, SweepDefinition* def) {
+  def->randomize = read_randomizations(in.raw("randomize"), def->file);
+  const std::int64_t seed = in.get_int("randomize_seed", 1);
+  in.check(!def->randomize.empty() || !in.has("randomize_seed"), "randomize_seed",
+           "is for sweeps with [[randomize]] tables");
+  in.check(seed >= 0, "randomize_seed", "must be >= 0, got " + std::to_string(seed));
+  def->randomize_seed = static_cast<std::uint64_t>(seed);
+  for (const Randomization& r : def->randomize) {
+    for (const SweepAxis& a : def->axes) {
+      in.check(a.key != r.key, "randomize", "draws " + r.key + ", which is an axis too");
+    }
+    for (const std::string& f : def->fixed) {
+      in.check(f.rfind(r.key + "=", 0) != 0, "randomize", "draws " + r.key + ", which [fixed] sets too");
+    }
+  }
+}
+
 // A grid's points x seeds within max_trials, the product checked factor by factor (it could
 // wrap to 0 or below).
 void check_grid_size(ConfigReader& in, const SweepDefinition& def) {
@@ -267,16 +276,21 @@ void check_points(SweepDefinition* def) {
     throw InputError(def->file + ": base scenario: " + e.what());
   }
   def->base_seed = bound.seed;
-  for (std::int64_t p = 0; p < def->points(); ++p) {
+  // every point with the draws of seed index 0, then point 0 with the others' draws
+  std::vector<std::int64_t> trials;
+  for (std::int64_t p = 0; p < def->points(); ++p) trials.push_back(p * def->seeds);
+  const std::int64_t draws = def->randomize.empty() ? 1 : std::min(def->seeds, kCheckedDraws);
+  for (std::int64_t s = 1; s < draws; ++s) trials.push_back(s);
+  for (std::int64_t t : trials) {
     try {
-      const Scenario point = load_scenario_text(def->base_text, def->base_path, def->overrides(p));
+      const Scenario point =
+          load_scenario_text(def->base_text, def->base_path, def->trial_overrides(t));
       if (names_of(point) != def->metric_names) {
         throw InputError("changes the metrics or the muscles' labels, which a sweep's columns "
                          "cannot follow");
       }
     } catch (const InputError& e) {
-      throw InputError(def->file + ": point " + std::to_string(p) + " (" +
-                       describe_point(*def, p) + "): " + e.what());
+      throw InputError(def->file + ": " + describe_trial(*def, t) + ": " + e.what());
     }
   }
 }
@@ -290,6 +304,7 @@ SweepDefinition load_sweep(const std::string& path) {
   read_design(in, &def);
   read_base(in, &def);
   read_axes(in, &def);
+  read_randomize(in, &def);
   in.reject_unknown();
   check_grid_size(in, def);
   make_points(&def);

@@ -32,15 +32,18 @@ TrialSummary failed_summary(std::uint64_t seed, const std::string& why) {
 SweepTrialRunner::SweepTrialRunner(const SweepDefinition& sweep) : sweep_(sweep) {}
 SweepTrialRunner::~SweepTrialRunner() = default;
 
-void SweepTrialRunner::move_to(std::int64_t point) {
-  if (point == point_) return;
-  point_ = -1;
-  Scenario next = load_scenario_text(sweep_.base_text, sweep_.base_path, sweep_.overrides(point));
+void SweepTrialRunner::move_to(std::int64_t trial) {
+  // trials of one point share a scenario, unless [[randomize]] draws each its own
+  const std::int64_t scenario = sweep_.randomize.empty() ? trial / sweep_.seeds : trial;
+  if (scenario == scenario_id_) return;
+  scenario_id_ = -1;
+  Scenario next =
+      load_scenario_text(sweep_.base_text, sweep_.base_path, sweep_.trial_overrides(trial));
   if (!model_ || !same_trial_model(next, scenario_)) {
     model_ = std::make_unique<TrialModel>(load_trial_model(next));
   }
   scenario_ = std::move(next);
-  point_ = point;
+  scenario_id_ = scenario;
 }
 
 TrialRecord SweepTrialRunner::run(std::int64_t trial) {
@@ -50,7 +53,7 @@ TrialRecord SweepTrialRunner::run(std::int64_t trial) {
   record.seed_index = trial % sweep_.seeds;
   const std::uint64_t seed = sweep_.seed_of(trial);
   try {
-    move_to(record.point);
+    move_to(trial);
     record.summary = run_trial(*model_, scenario_, seed, false).summary;
   } catch (const std::exception& e) {   // anything but a divergence (that is a status already)
     record.summary = failed_summary(seed, e.what());

@@ -23,8 +23,8 @@ namespace pamsim {
 struct TrialModel;
 
 // Runs single trials of a sweep on the calling thread (one runner per thread). It keeps the
-// scenario and model of the point it ran last, reloading the model only when a point changes
-// it; each trial gets a fresh mjData and CVODE context, so a record depends only on its trial
+// scenario and model of the point it ran last (of the trial, when the sweep draws
+// [[randomize]] values per trial), reloading the model only when a scenario changes it; each trial gets a fresh mjData and CVODE context, so a record depends only on its trial
 // number. A trial that cannot run is returned with status "failed" and the reason.
 class SweepTrialRunner {
  public:
@@ -33,10 +33,10 @@ class SweepTrialRunner {
   TrialRecord run(std::int64_t trial);
 
  private:
-  void move_to(std::int64_t point);
+  void move_to(std::int64_t trial);
 
   const SweepDefinition& sweep_;
-  std::int64_t point_ = -1;
+  std::int64_t scenario_id_ = -1;   // the point (or trial) scenario_ was made for
   Scenario scenario_;
   std::unique_ptr<TrialModel> model_;
 };

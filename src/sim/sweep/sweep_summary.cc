@@ -71,6 +71,9 @@ void read_definition(const ResultsDb& db, SweepSummary* out) {
       if (sweep.design == "grid") sweep.points_total *= static_cast<std::int64_t>(levels.size());
       sweep.axis_levels.push_back(std::move(levels));
     }
+    for (const auto& r : def.value("randomize", nlohmann::json::array())) {
+      sweep.randomize_keys.push_back(r.at("key").get<std::string>());
+    }
   } catch (const nlohmann::json::exception& e) {
     throw InputError(db.path() + ": the sweep definition is incomplete (" + e.what() + ")");
   }

@@ -1,0 +1,57 @@
+// randomize.h: a sweep's parameters drawn per trial, the [[randomize]] tables of a sweep file
+// (issue 26, item 2): "does the tuned reflex keep the mass if the braid's friction is 30 %
+// higher and the wall 10 % thinner?". Each table names a scenario key (any numeric key: a
+// plant's or the pneumatics file's field, a body's mass, a joint's loss, ...) and how it is
+// drawn:
+//   key          = "muscles.agonist.plant.geometry.wall_thickness_mm"
+//   distribution = "uniform"     from, to (from < to)
+//                  "normal"      mean, stddev (> 0)
+//                  "lognormal"   median (> 0), sigma (> 0: the logarithm's standard deviation)
+//   min, max     optional, normal and lognormal: truncation (a draw outside is drawn again);
+//                the range must hold at least 1 % of the distribution
+// A trial's draws depend on the sweep's randomize_seed and the trial's seed index (trial t:
+// t % seeds) alone, never on its point, thread, shard or rank: every point sees the same
+// `seeds` drawn arms (common random numbers, as with the noise seeds), and a sweep draws the
+// same values wherever it runs. The values are stored with the trial (a column per key,
+// results_db.h), which is what `pamsim replay` runs again.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <toml++/toml.h>
+
+namespace pamsim {
+
+enum class Distribution { kUniform, kNormal, kLogNormal };
+
+struct Randomization {
+  std::string key;
+  Distribution distribution = Distribution::kUniform;
+  double a = 0.0;   // uniform: from; normal: mean; lognormal: median
+  double b = 0.0;   // uniform: to; normal: stddev; lognormal: sigma
+  double min = -std::numeric_limits<double>::infinity();   // normal, lognormal
+  double max = std::numeric_limits<double>::infinity();
+
+  // One draw (truncated to [min, max] by drawing again).
+  double draw(std::mt19937_64& rng) const;
+  // The share of the untruncated distribution inside [min, max].
+  double kept_share() const;
+};
+
+// The [[randomize]] tables of `file` (`node` null: none). Throws InputError
+// "<file>: randomize[<i>].<key> <problem>".
+std::vector<Randomization> read_randomizations(const toml::node* node, const std::string& file);
+
+// The values of the trials with seed index `seed_index`, one per randomization, in order.
+std::vector<double> draw_values(const std::vector<Randomization>& randomize,
+                                std::uint64_t randomize_seed, std::int64_t seed_index);
+
+// The randomizations as canonical JSON (part of the sweep's definition).
+nlohmann::json randomizations_json(const std::vector<Randomization>& randomize);
+
+}  // namespace pamsim
