@@ -16,7 +16,7 @@
 #include "base/input_error.h"
 #include "sim/core/metrics.h"
 #include "cli_util.h"
-#include "sim/sweep/randomize.h"
+#include "sim/io/randomize.h"
 #include "sim/sweep/results_db.h"
 #include "sim/sweep/sweep.h"
 #include "sim/sweep/sweep_runner.h"
@@ -188,12 +188,12 @@ TEST(RandomizeTest, BadTablesAreRefusedByTheirKey) {
   for (const auto& [body, says] : std::vector<std::pair<std::string, std::string>>{
            {head + "from = 1.0\nto = 2.0\n", "randomize[0].distribution is required"},
            {head + "distribution = \"beta\"\n", "randomize[0].distribution must be \"uniform\""},
-           {head + "distribution = \"uniform\"\nfrom = 2.0\n", "randomize[0].to must be a number"},
+           {head + "distribution = \"uniform\"\nfrom = 2.0\n", "randomize[0].to is required"},
            {head + "distribution = \"uniform\"\nfrom = 2.0\nto = 2.0\n", "randomize[0].from must be below to"},
            {head + "distribution = \"uniform\"\nfrom = 1.0\nto = nan\n", "randomize[0].to must be finite"},
-           {head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\nmin = 1.0\n", "randomize[0].min and max are for normal"},
+           {head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\nmin = 1.0\n", "randomize[0].min is not a key of a uniform draw"},
            {head + "distribution = \"normal\"\nmean = 2.0\nstddev = 0.0\n", "randomize[0].stddev must be > 0"},
-           {head + "distribution = \"normal\"\nmean = 2.0\nsd = 0.1\n", "randomize[0].sd is not a key"},
+           {head + "distribution = \"normal\"\nmean = 2.0\nsd = 0.1\n", "randomize[0].sd is not a key of a normal draw"},
            {head + "distribution = \"normal\"\nmean = 2.0\nstddev = 0.1\nmin = 2.5\nmax = 2.4\n", "randomize[0].min must be below max"},
            {head + "distribution = \"normal\"\nmean = 2.0\nstddev = 0.1\nmin = 2.4\n", "keep 0.003"},
            {head + "distribution = \"lognormal\"\nmedian = -1.0\nsigma = 0.1\n", "randomize[0].median must be > 0"},
@@ -202,7 +202,7 @@ TEST(RandomizeTest, BadTablesAreRefusedByTheirKey) {
            {head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n" + head +
                 "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize names " + kWall + " twice"},
            {"[[randomize]]\nkey = \"reflex.v_thr_mm_s\"\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "draws reflex.v_thr_mm_s, which is an axis too"},
-           {"randomize_seed = 3\n!", "randomize_seed is for sweeps with [[randomize]]"},
+           {"randomize_seed = 3\n!", "randomize_seed is for files with [[randomize]]"},
            {"randomize_seed = -1\n!" + head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize_seed must be >= 0"},
            {head + "distribution = \"uniform\"\nfrom = -2.0\nto = -1.0\n", "seed index 0 draws " + kWall},
            {"[[randomize]]\nkey = \"reflex.colour\"\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "reflex.colour"}}) {

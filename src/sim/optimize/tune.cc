@@ -17,7 +17,6 @@
 namespace pamsim {
 namespace {
 
-constexpr std::uint64_t kHeldOutSeedOffset = 1000;
 
 struct TrialOutcome {
   std::uint64_t seed = 0;
@@ -45,28 +44,43 @@ std::vector<TrialModel> shared_models(const std::vector<Scenario>& scenarios,
   return models;
 }
 
+// The scenarios of a setting's trials: one per noise level, or with [[randomize]] one per
+// trial (level-major), its seed index first_seed_offset + k % seeds drawing its arm.
+std::vector<Scenario> setting_scenarios(const TuneDefinition& def, const std::vector<double>& values,
+                                        std::uint64_t first_seed_offset, int seeds) {
+  std::vector<Scenario> scenarios;
+  const int per_level = def.randomize.empty() ? 1 : seeds;
+  for (double noise : def.noise_scales) {
+    for (int s = 0; s < per_level; ++s) {
+      std::vector<std::string> o = def.overrides_at(values);
+      o.push_back("sensors.noise_scale=" + format_number(noise));
+      append_draws(def.randomize, def.randomize_seed,
+                   static_cast<std::int64_t>(first_seed_offset) + s, &o);
+      scenarios.push_back(load_scenario_text(def.base_text, def.base_path, o));
+    }
+  }
+  return scenarios;
+}
+
 // Runs a setting's trials (seeds x noise levels) on the pool.
 std::vector<TrialOutcome> run_setting(const TuneDefinition& def, const std::vector<double>& values,
                                       std::uint64_t first_seed_offset, int seeds, int threads) {
-  std::vector<Scenario> scenarios;
-  for (double noise : def.noise_scales) {
-    std::vector<std::string> o = def.overrides_at(values);
-    o.push_back("sensors.noise_scale=" + format_number(noise));
-    scenarios.push_back(load_scenario_text(def.base_text, def.base_path, o));
-  }
+  const std::vector<Scenario> scenarios = setting_scenarios(def, values, first_seed_offset, seeds);
   std::vector<std::size_t> model_of;
   const std::vector<TrialModel> models = shared_models(scenarios, &model_of);
   const int per_level = seeds;
+  const bool per_trial = !def.randomize.empty();
   std::vector<TrialOutcome> out(def.noise_scales.size() * static_cast<std::size_t>(per_level));
   parallel_for(static_cast<int>(out.size()), threads, [&](int k) {
     const std::size_t level = static_cast<std::size_t>(k / per_level);
-    const Scenario& sc = scenarios[level];
+    const std::size_t which = per_trial ? static_cast<std::size_t>(k) : level;
+    const Scenario& sc = scenarios[which];
     const std::uint64_t seed =
         sc.seed + first_seed_offset + static_cast<std::uint64_t>(k % per_level);
     TrialOutcome& t = out[static_cast<std::size_t>(k)];
     t.seed = seed;
     t.noise_scale = def.noise_scales[level];
-    t.summary = run_trial(models[model_of[level]], sc, seed, /*keep_trajectory=*/false).summary;
+    t.summary = run_trial(models[model_of[which]], sc, seed, /*keep_trajectory=*/false).summary;
   });
   return out;
 }

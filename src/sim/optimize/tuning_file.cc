@@ -160,7 +160,30 @@ void check_setting(const TuneDefinition& def, const std::vector<double>& values,
 
 // Every reference, and every parameter at both bounds (the others mid-range), must make a
 // valid scenario (a bad key fails here).
+// With [[randomize]], the middle of the box on each drawn arm, tuning and held out.
+void check_draws(const TuneDefinition& def) {
+  if (def.randomize.empty()) return;
+  std::vector<double> middle;
+  for (const TuneParameter& p : def.parameters) middle.push_back(value_at(p, 0.5));
+  std::vector<std::int64_t> indices;
+  for (int s = 0; s < def.seeds; ++s) indices.push_back(s);
+  for (int s = 0; s < def.held_out_seeds; ++s) {
+    indices.push_back(static_cast<std::int64_t>(kHeldOutSeedOffset) + s);
+  }
+  for (std::int64_t s : indices) {
+    std::vector<std::string> o = def.overrides_at(middle);
+    append_draws(def.randomize, def.randomize_seed, s, &o);
+    try {
+      load_scenario_text(def.base_text, def.base_path, o);
+    } catch (const InputError& e) {
+      throw InputError(def.file + ": randomize (the draws of seed index " + std::to_string(s) +
+                       "): " + e.what());
+    }
+  }
+}
+
 void check_settings(const TuneDefinition& def) {
+  check_draws(def);
   for (std::size_t i = 0; i < def.references.size(); ++i) {
     check_setting(def, def.references[i].values, "reference[" + std::to_string(i) + "]",
                   def.references[i].name);
@@ -197,6 +220,14 @@ TuneDefinition load_tune_definition(const std::string& path) {
   read_objectives(in, metrics, &def);
   read_constraints(in, metrics, &def);
   read_references(in, &def);
+  read_randomizations(in, &def.randomize, &def.randomize_seed);
+  for (const Randomization& r : def.randomize) {
+    in.check(r.key != "sensors.noise_scale", "randomize", "cannot draw sensors.noise_scale: "
+             "use the tuning file's noise_scales");
+    for (const TuneParameter& p : def.parameters) {
+      in.check(p.key != r.key, "randomize", "draws " + r.key + ", which is a parameter too");
+    }
+  }
   in.reject_unknown();
   check_settings(def);
   return def;
@@ -218,7 +249,7 @@ std::string TuneDefinition::canonical_json() const {
   }
   nlohmann::json refs = nlohmann::json::array();
   for (const auto& r : references) refs.push_back({{"name", r.name}, {"values", r.values}});
-  const nlohmann::json j = {{"base_scenario", base_text},
+  nlohmann::json j = {{"base_scenario", base_text},
                             {"base_path", base_path},
                             {"overrides", overrides},
                             {"algorithm", algorithm == TuneAlgorithm::kCmaes ? "cmaes" : "nsga2"},
@@ -232,6 +263,10 @@ std::string TuneDefinition::canonical_json() const {
                             {"objectives", objs},
                             {"constraints", cons},
                             {"references", refs}};
+  if (!randomize.empty()) {   // (a definition without draws reads as before they existed)
+    j["randomize"] = randomizations_json(randomize);
+    j["randomize_seed"] = randomize_seed;
+  }
   return j.dump();
 }
 
@@ -278,6 +313,10 @@ TuneDefinition tune_definition_from_json(const std::string& json, const std::str
     def.noise_scales = j.at("noise_scales").get<std::vector<double>>();
     def.held_out_seeds = j.at("held_out_seeds").get<int>();
     lists_from_json(j, &def);
+    if (j.contains("randomize")) {
+      def.randomize = randomizations_from_json(j.at("randomize"));
+      def.randomize_seed = j.at("randomize_seed").get<std::uint64_t>();
+    }
     return def;
   } catch (const nlohmann::json::exception& e) {
     // a damaged database, or one from a pamsim whose definition had other fields

@@ -16,6 +16,8 @@
 //   [[objective]]     metric (a summary metric), maximize = false
 //   [[constraint]]    metric, min and/or max: on the metric's mean over an evaluation's trials
 //   [[reference]]     name, values = [one per parameter]: settings checked beside the best
+//   [[randomize]]     key and distribution drawn per seed (sim/io/randomize.h): robust tuning,
+//                     each evaluation's k-th seed on the same drawn arm; randomize_seed
 #pragma once
 
 #include <cstdint>
@@ -23,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/io/randomize.h"
 #include "sim/optimize/optimizer.h"
 #include "sim/optimize/search_space.h"
 
@@ -30,6 +33,9 @@ namespace pamsim {
 
 using TuneParameter = SearchParameter;
 using TuneAlgorithm = SearchAlgorithm;
+
+// The held-out seeds are base.seed + this + k (and, with [[randomize]], seed indices this + k).
+inline constexpr std::uint64_t kHeldOutSeedOffset = 1000;
 
 struct TuneObjective {
   std::string metric;
@@ -61,6 +67,8 @@ struct TuneDefinition {
   std::vector<TuneObjective> objectives;
   std::vector<TuneConstraint> constraints;
   std::vector<TuneReference> references;
+  std::vector<Randomization> randomize;   // drawn per seed index (robust tuning)
+  std::uint64_t randomize_seed = 1;
 
   // Everything that decides the evaluations, as canonical JSON (stored; a resume must match).
   std::string canonical_json() const;

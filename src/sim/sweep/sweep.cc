@@ -156,12 +156,7 @@ std::vector<double> SweepDefinition::draws(std::int64_t trial) const {
 
 std::vector<std::string> SweepDefinition::trial_overrides(std::int64_t trial) const {
   std::vector<std::string> out = overrides(trial / seeds);
-  const std::vector<double> values = draws(trial);
-  for (std::size_t k = 0; k < randomize.size(); ++k) {
-    AxisValue v;
-    v.number = values[k];
-    out.push_back(randomize[k].key + "=" + v.toml());
-  }
+  append_draws(randomize, randomize_seed, trial % seeds, &out);
   return out;
 }
 

@@ -17,12 +17,23 @@
 #include "sim/core/metrics.h"
 #include "sim/core/trial_model.h"
 #include "sim/io/scenario_file.h"
-#include "sim/sweep/sweep_file_fields.h"
 
 namespace pamsim {
 namespace {
 
-AxisValue axis_value(const toml::node& n, const SweepFileWhere& where, const std::string& key) {
+// Where a problem is: "<file>: axis[<i>].<key>" and the like.
+struct Where {
+  const std::string& file;
+  std::string prefix;
+  [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
+    throw InputError(file + ": " + prefix + key + " " + problem);
+  }
+  void check(bool ok, const std::string& key, const std::string& problem) const {
+    if (!ok) fail(key, problem);
+  }
+};
+
+AxisValue axis_value(const toml::node& n, const Where& where, const std::string& key) {
   AxisValue v;
   if (n.is_integer()) {
     v.kind = AxisValue::Kind::kInteger;
@@ -42,6 +53,17 @@ AxisValue axis_value(const toml::node& n, const SweepFileWhere& where, const std
   return v;
 }
 
+double number_of(const toml::table& t, const char* key, const Where& where) {
+  const toml::node* n = t.get(key);
+  // (an integer beyond 2^53 has no exact double: toml++ gives none)
+  const bool numeric = n && (n->is_integer() || n->is_floating_point());
+  const std::optional<double> value = numeric ? n->value<double>() : std::nullopt;
+  if (!value) where.fail(key, "must be a number");
+  const double v = *value;
+  where.check(std::isfinite(v), key, "must be finite, got " + format_value(v));
+  return v;
+}
+
 // A grid level to 12 significant digits, so a log range lists 0.001, not 0.0010000000000000002.
 double tidy(double v) {
   char buf[32];
@@ -50,7 +72,7 @@ double tidy(double v) {
 }
 
 // An axis given as a list of values (grid designs only).
-void read_axis_values(const toml::table& t, SweepDesign design, const SweepFileWhere& where,
+void read_axis_values(const toml::table& t, SweepDesign design, const Where& where,
                       SweepAxis* axis) {
   where.check(design == SweepDesign::kGrid, "values",
               "is for grid designs; random and lhs sample a range (from, to)");
@@ -63,7 +85,7 @@ void read_axis_values(const toml::table& t, SweepDesign design, const SweepFileW
 }
 
 // A grid axis's `count` levels over its range, ends exact.
-void read_grid_levels(const toml::table& t, std::int64_t max_trials, const SweepFileWhere& where,
+void read_grid_levels(const toml::table& t, std::int64_t max_trials, const Where& where,
                       SweepAxis* axis_out) {
   SweepAxis& axis = *axis_out;
   const toml::node* count_node = t.get("count");
@@ -85,7 +107,7 @@ void read_grid_levels(const toml::table& t, std::int64_t max_trials, const Sweep
 
 SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
                     std::int64_t max_trials, const std::string& file) {
-  const SweepFileWhere where{file, "axis[" + std::to_string(index) + "]."};
+  const Where where{file, "axis[" + std::to_string(index) + "]."};
   static const std::set<std::string> known = {"key", "values", "from", "to", "count", "scale"};
   for (const auto& [k, _] : t) {
     if (!known.count(std::string(k.str()))) {
@@ -110,8 +132,8 @@ SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
 
   axis.is_range = true;
   where.check(t.contains("from") && t.contains("to"), "from", "and to are both required");
-  axis.from = sweep_number(t, "from", where);
-  axis.to = sweep_number(t, "to", where);
+  axis.from = number_of(t, "from", where);
+  axis.to = number_of(t, "to", where);
   const std::string scale = t["scale"].value_or(std::string("linear"));
   where.check(scale == "linear" || scale == "log", "scale",
               "must be \"linear\" or \"log\", got \"" + scale + "\"");
@@ -132,7 +154,7 @@ SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
 // "a.b=value" for every leaf of [fixed].
 void flatten_fixed(const toml::table& t, const std::string& prefix, const std::string& file,
                    std::vector<std::string>* out) {
-  const SweepFileWhere where{file, "fixed."};
+  const Where where{file, "fixed."};
   for (const auto& [k, node] : t) {
     const std::string key = prefix + std::string(k.str());
     if (const toml::table* sub = node.as_table()) {
@@ -226,12 +248,7 @@ void read_axes(ConfigReader& in, SweepDefinition* def) {
 
 // [[randomize]] and randomize_seed; a drawn key may be neither an axis nor fixed
 void read_randomize(ConfigReader& in, SweepDefinition* def) {
-  def->randomize = read_randomizations(in.raw("randomize"), def->file);
-  const std::int64_t seed = in.get_int("randomize_seed", 1);
-  in.check(!def->randomize.empty() || !in.has("randomize_seed"), "randomize_seed",
-           "is for sweeps with [[randomize]] tables");
-  in.check(seed >= 0, "randomize_seed", "must be >= 0, got " + std::to_string(seed));
-  def->randomize_seed = static_cast<std::uint64_t>(seed);
+  read_randomizations(in, &def->randomize, &def->randomize_seed);
   for (const Randomization& r : def->randomize) {
     for (const SweepAxis& a : def->axes) {
       in.check(a.key != r.key, "randomize", "draws " + r.key + ", which is an axis too");

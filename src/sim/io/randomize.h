@@ -1,4 +1,4 @@
-// randomize.h: a sweep's parameters drawn per trial, the [[randomize]] tables of a sweep file
+// randomize.h: parameters drawn per trial, the [[randomize]] tables of a sweep or tuning file
 // (issue 26, item 2): "does the tuned reflex keep the mass if the braid's friction is 30 %
 // higher and the wall 10 % thinner?". Each table names a scenario key (any numeric key: a
 // plant's or the pneumatics file's field, a body's mass, a joint's loss, ...) and how it is
@@ -23,9 +23,10 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
-#include <toml++/toml.h>
 
 namespace pamsim {
+
+class ConfigReader;   // base/config_reader.h
 
 enum class Distribution { kUniform, kNormal, kLogNormal };
 
@@ -43,15 +44,23 @@ struct Randomization {
   double kept_share() const;
 };
 
-// The [[randomize]] tables of `file` (`node` null: none). Throws InputError
-// "<file>: randomize[<i>].<key> <problem>".
-std::vector<Randomization> read_randomizations(const toml::node* node, const std::string& file);
+// The [[randomize]] tables (none: empty) and randomize_seed of `in`'s document. Throws
+// InputError "<file>: randomize[<i>].<key> <problem>" and the like.
+void read_randomizations(ConfigReader& in, std::vector<Randomization>* randomize,
+                         std::uint64_t* randomize_seed);
 
 // The values of the trials with seed index `seed_index`, one per randomization, in order.
 std::vector<double> draw_values(const std::vector<Randomization>& randomize,
                                 std::uint64_t randomize_seed, std::int64_t seed_index);
 
-// The randomizations as canonical JSON (part of the sweep's definition).
+// Appends the draws of seed index `seed_index` to `overrides` as "key=value" (the value in
+// its shortest exact form).
+void append_draws(const std::vector<Randomization>& randomize, std::uint64_t randomize_seed,
+                  std::int64_t seed_index, std::vector<std::string>* overrides);
+
+// The randomizations as canonical JSON (part of a sweep's or tuning's definition), and back
+// (throws nlohmann::json::exception on a missing field).
 nlohmann::json randomizations_json(const std::vector<Randomization>& randomize);
+std::vector<Randomization> randomizations_from_json(const nlohmann::json& j);
 
 }  // namespace pamsim
