@@ -12,6 +12,7 @@ packages=(
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libsqlite3-dev                             # sweep results
   libpagmo-dev                               # pamsim tune: CMA-ES, NSGA-II (pagmo2)
+  libceres-dev                               # pamsim identify: Levenberg-Marquardt, covariances
   libosmesa6-dev                             # headless rendering (OSMesa, llvmpipe)
   libegl-dev libgl1-mesa-dri                 # the EGL backend and Mesa's software driver for it
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev   # MP4 encoding

@@ -25,6 +25,7 @@ void add_export_command(CLI::App& app);     // a sweep database as CSV
 void add_report_command(CLI::App& app);     // per-point statistics, heat maps, best setting
 void add_validate_command(CLI::App& app);   // the papers' validation experiments (Table III, V)
 void add_tune_command(CLI::App& app);       // tune settings with CMA-ES / NSGA-II (pagmo2)
+void add_identify_command(CLI::App& app);   // fit physical parameters to recordings (Ceres)
 void add_keys_command(CLI::App& app);       // the scenario keys, documented
 void add_replay_command(CLI::App& app);     // one trial of a sweep database, again, in full
 

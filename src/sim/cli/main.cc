@@ -71,6 +71,7 @@ int main(int argc, char** argv) {
   pamsim::add_report_command(app);
   pamsim::add_validate_command(app);
   pamsim::add_tune_command(app);
+  pamsim::add_identify_command(app);
   pamsim::add_keys_command(app);
   pamsim::add_replay_command(app);
 

@@ -69,6 +69,11 @@ thread_local ThreadTrialData t_trial_data;
 
 }  // namespace
 
+LogLayout trial_log_layout(const TrialModel& tm, const Scenario& sc) {
+  return make_log_layout(tm.joint.hinge, held_bodies(tm), labels_of(tm),
+                         sc.controller_has_reflexes());
+}
+
 TrialData::TrialData(const TrialModel& model, const mjModel* m) {
   ThreadTrialData& cache = t_trial_data;
   const bool shared_model = m == model.model.get();
@@ -110,8 +115,7 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
       sensors_(sc.sensing, sensor_specs(tm, sc), seed),
       controller_(make_controller(tm, sc)),
       metrics_(make_metric_sets(sc)),
-      layout_(make_log_layout(tm.joint.hinge, held_bodies(tm), labels_,
-                              sc.controller_has_reflexes())) {
+      layout_(trial_log_layout(tm, sc)) {
   if (m_->opt.timestep != sc.timestep_s) {
     throw std::logic_error("run_trial: the model's timestep differs from sim.timestep_s "
                            "(load it with load_trial_model)");

@@ -68,6 +68,10 @@ struct TrialOptions {
   TrialObserver* observer = nullptr;   // not owned; none by default (nothing to pay for)
 };
 
+// The columns of the log a trial of `scenario` on `model` writes (trial_log.h), without
+// running it.
+LogLayout trial_log_layout(const TrialModel& model, const Scenario& scenario);
+
 // Runs one trial of `scenario` with `seed` on `model` (shared, read-only; built by
 // load_trial_model from the same scenario, or one for which same_trial_model holds).
 // Never throws for a diverging simulation: it ends the trial with status "diverged".

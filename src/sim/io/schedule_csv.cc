@@ -1,7 +1,6 @@
 // schedule_csv.cc: see schedule_csv.h.
 #include "sim/io/schedule_csv.h"
 
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -13,23 +12,9 @@
 #include "base/input_error.h"
 #include "base/toml_file.h"
 #include "base/units.h"
+#include "sim/io/csv_cells.h"
 
 namespace pamsim {
-namespace {
-
-// a whole, trimmed cell as a finite number
-bool parse_cell(std::string cell, double* value) {
-  const auto b = cell.find_first_not_of(" \t\r");
-  const auto e = cell.find_last_not_of(" \t\r");
-  if (b == std::string::npos) return false;
-  cell = cell.substr(b, e - b + 1);
-  const char* first = cell.data();
-  if (*first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, cell.data() + cell.size(), *value);
-  return ec == std::errc() && ptr == cell.data() + cell.size() && std::isfinite(*value);
-}
-
-}  // namespace
 
 PressureSchedule read_schedule_csv(const std::string& path) {
   require_input_file(path);
@@ -65,7 +50,7 @@ PressureSchedule read_schedule_csv(const std::string& path) {
     const auto comma = line.find(',');
     double t = 0.0, p = 0.0;
     if (comma == std::string::npos || line.find(',', comma + 1) != std::string::npos ||
-        !parse_cell(line.substr(0, comma), &t) || !parse_cell(line.substr(comma + 1), &p)) {
+        !parse_finite_cell(line.substr(0, comma), &t) || !parse_finite_cell(line.substr(comma + 1), &p)) {
       throw InputError(where + ": expected two finite numbers \"time_s,MPa\"");
     }
     if (!times_s.empty() && !(t > times_s.back())) {

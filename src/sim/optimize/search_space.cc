@@ -3,11 +3,34 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "base/config_reader.h"
 #include "base/format.h"
+#include "base/input_error.h"
+#include "base/toml_file.h"
 
 namespace pamsim {
+
+SearchBase read_search_base(ConfigReader& in) {
+  SearchBase base;
+  base.path = in.require_path("base", "the base scenario file");
+  base.path = std::filesystem::weakly_canonical(std::filesystem::absolute(base.path)).string();
+  try {
+    base.text = read_text_file(base.path);
+  } catch (const InputError& e) {
+    in.fail("base", std::string("(") + e.what() + ")");
+  }
+  base.overrides = in.get_string_list("overrides", {});
+  return base;
+}
+
+std::int64_t read_bounded_int(ConfigReader& in, const std::string& key, std::int64_t fallback,
+                              std::int64_t lo, std::int64_t hi, const std::string& range_text) {
+  const std::int64_t v = in.get_int(key, fallback);
+  in.check(v >= lo && v <= hi, key, "must be in " + range_text + ", got " + std::to_string(v));
+  return v;
+}
 
 double value_at(const SearchParameter& p, double u) {
   if (p.log) return std::exp(std::log(p.from) + u * (std::log(p.to) - std::log(p.from)));

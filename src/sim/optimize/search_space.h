@@ -4,12 +4,26 @@
 // [[parameter]] tables of a tuning (or identification) file.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace pamsim {
 
 class ConfigReader;
+
+// What a tuning or identification file starts from: `base` (a scenario file, made absolute so
+// a stored definition does not depend on the folder pamsim ran from), its text, and
+// `overrides` ("key=value" strings at every trial). Throws InputError "<file>: base ...".
+struct SearchBase {
+  std::string path, text;
+  std::vector<std::string> overrides;
+};
+SearchBase read_search_base(ConfigReader& in);
+
+// An integer key within [lo, hi] (`range_text` is the "[lo, hi]" the message shows).
+std::int64_t read_bounded_int(ConfigReader& in, const std::string& key, std::int64_t fallback,
+                              std::int64_t lo, std::int64_t hi, const std::string& range_text);
 
 struct SearchParameter {
   std::string key;               // a scenario key, e.g. "reflex.v_thr_mm_s"

@@ -18,8 +18,6 @@
 namespace pamsim {
 namespace {
 
-namespace fs = std::filesystem;
-
 // The metric names the base scenario's trials report.
 std::vector<std::string> base_metric_names(const Scenario& sc) {
   const TrialModel model = load_trial_model(sc);
@@ -28,24 +26,11 @@ std::vector<std::string> base_metric_names(const Scenario& sc) {
   return metric_names(sc, labels, model.joint.hinge);
 }
 
-// An integer key within [lo, hi] (`range_text` is the "[lo, hi]" the message shows).
-std::int64_t bounded_int(ConfigReader& in, const std::string& key, std::int64_t fallback,
-                         std::int64_t lo, std::int64_t hi, const std::string& range_text) {
-  const std::int64_t v = in.get_int(key, fallback);
-  in.check(v >= lo && v <= hi, key, "must be in " + range_text + ", got " + std::to_string(v));
-  return v;
-}
-
 void read_base(ConfigReader& in, TuneDefinition* def) {
-  def->base_path = in.require_path("base", "the base scenario file");
-  // absolute: the stored definition must not depend on the folder pamsim ran from
-  def->base_path = fs::weakly_canonical(fs::absolute(def->base_path)).string();
-  try {
-    def->base_text = read_text_file(def->base_path);
-  } catch (const InputError& e) {
-    in.fail("base", std::string("(") + e.what() + ")");
-  }
-  def->overrides = in.get_string_list("overrides", {});
+  SearchBase base = read_search_base(in);
+  def->base_path = std::move(base.path);
+  def->base_text = std::move(base.text);
+  def->overrides = std::move(base.overrides);
 }
 
 void read_algorithm(ConfigReader& in, TuneDefinition* def) {
@@ -54,7 +39,7 @@ void read_algorithm(ConfigReader& in, TuneDefinition* def) {
            "must be \"cmaes\" or \"nsga2\", got \"" + algorithm + "\"");
   def->algorithm = algorithm == "cmaes" ? TuneAlgorithm::kCmaes : TuneAlgorithm::kNsga2;
   def->generations =
-      static_cast<unsigned>(bounded_int(in, "generations", def->generations, 1, 10000, "[1, 10000]"));
+      static_cast<unsigned>(read_bounded_int(in, "generations", def->generations, 1, 10000, "[1, 10000]"));
   const std::int64_t population = in.get_int("population", def->population);
   if (def->algorithm == TuneAlgorithm::kCmaes) {
     in.check(population >= 5 && population <= 10000, "population",
@@ -65,12 +50,12 @@ void read_algorithm(ConfigReader& in, TuneDefinition* def) {
   }
   def->population = static_cast<unsigned>(population);
   def->seed = static_cast<std::uint64_t>(
-      bounded_int(in, "seed", 1, 0, 4294967295LL, "[0, 2^32 - 1] (pagmo's seeds)"));
+      read_bounded_int(in, "seed", 1, 0, 4294967295LL, "[0, 2^32 - 1] (pagmo's seeds)"));
 }
 
 void read_trials(ConfigReader& in, TuneDefinition* def) {
   def->seeds = static_cast<int>(
-      bounded_int(in, "seeds", def->seeds, 1, 1000, "[1, 1000] (an objective needs trials)"));
+      read_bounded_int(in, "seeds", def->seeds, 1, 1000, "[1, 1000] (an objective needs trials)"));
   def->noise_scales = in.get_double_list("noise_scales", def->noise_scales);
   in.check(!def->noise_scales.empty(), "noise_scales", "must hold at least one level");
   const std::vector<double>& levels = def->noise_scales;
@@ -82,7 +67,7 @@ void read_trials(ConfigReader& in, TuneDefinition* def) {
              "noise_scales", "names " + format_value(n) + " twice");
   }
   def->held_out_seeds = static_cast<int>(
-      bounded_int(in, "held_out_seeds", def->held_out_seeds, 0, 1000, "[0, 1000]"));
+      read_bounded_int(in, "held_out_seeds", def->held_out_seeds, 0, 1000, "[0, 1000]"));
 }
 
 // Refuses a metric the base scenario does not report.

@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+"""make_recordings.py: the identification example's "lab recordings", made by pamsim itself
+from an arm whose parameters differ from the model's (the truth identify.toml must recover):
+the antagonist's bladder wall 2.7 mm (model: 3.0), the agonist's 2.2 mm (model: 2.0), the
+shoulder's damping 0.16 N m s/rad (model: 0.1). Each recording is one `pamsim run` of
+arm.toml with its commands, under another noise seed than the model's (a lab's noise is not
+the model's), cut down the way a lab's logger would give it: some channels only, its own
+sampling rate, 5 significant digits, and one with a gap.
+
+    python3 examples/identify/make_recordings.py [PAMSIM]   (about 2 s; default build/src/sim/pamsim)
+
+writes examples/identify/recordings/{steps,sine,ramps}.csv.
+"""
+import csv
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TRUTH = [
+    "muscles.antagonist.plant.geometry.wall_thickness_mm=2.7",
+    "muscles.agonist.plant.geometry.wall_thickness_mm=2.2",
+    "joints.shoulder.damping_N_m_s_per_rad=0.16",
+    "seed=7",
+]
+# name: (commands as --set, channels, sampling rate [Hz], gap [s] or None)
+RECORDINGS = {
+    "steps": (['muscles.agonist.command={kind="steps", times_s=[0.0, 1.5, 3.5], MPa=[0.3, 0.5, 0.35]}'],
+              ["angle_deg", "p_meas_ago_MPa", "p_meas_anta_MPa", "force_meas_ago_N", "force_meas_anta_N"],
+              50.0, (2.0, 2.4)),
+    "sine": (['muscles.antagonist.command={kind="sine", offset_MPa=0.4, amplitude_MPa=0.15, period_s=3.0}'],
+             ["angle_deg", "force_meas_anta_N"], 40.0, None),
+    "ramps": (['muscles.agonist.command={kind="ramp", from_MPa=0.25, to_MPa=0.55, start_s=0.5, duration_s=5.0}',
+               'muscles.antagonist.command={kind="ramp", from_MPa=0.55, to_MPa=0.25, start_s=0.5, duration_s=5.0}'],
+              ["angle_deg"], 25.0, None),
+}
+
+
+def record(pamsim, name, sets, channels, rate_hz, gap, out_dir):
+    with tempfile.TemporaryDirectory() as tmp:
+        args = [pamsim, "run", os.path.join(HERE, "arm.toml"), "--out", tmp, "--no-plot"]
+        for s in TRUTH + sets:
+            args += ["--set", s]
+        subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
+        with open(os.path.join(tmp, "trajectory.csv")) as f:
+            rows = list(csv.DictReader(f))
+    step = round(100.0 / rate_hz)   # the log is at 100 Hz
+    out = os.path.join(out_dir, name + ".csv")
+    with open(out + ".tmp", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["time_s"] + channels)
+        for row in rows[::step]:
+            t = float(row["time_s"])
+            if gap and gap[0] <= t < gap[1]:
+                continue
+            w.writerow([f"{t:.3f}"] + [f"{float(row[c]):.5g}" for c in channels])
+    os.replace(out + ".tmp", out)
+    return out
+
+
+def main():
+    pamsim = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "..", "build", "src", "sim", "pamsim")
+    out_dir = os.path.join(HERE, "recordings")
+    os.makedirs(out_dir, exist_ok=True)
+    for name, (sets, channels, rate, gap) in RECORDINGS.items():
+        print(record(pamsim, name, sets, channels, rate, gap, out_dir))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,106 @@
+// identify.cc: `pamsim identify FILE.toml [--db FILE] [--out DIR] [--threads N] [--resume]`
+// (issue 26): fits an identification file's parameters to its recordings
+// (src/sim/optimize/identify.h), every simulated point stored in SQLite as it is computed,
+// then writes identified.toml, identify.csv, identify_fits.csv and identify.md. Everything is
+// validated before the database is created; a killed run keeps every point; --resume replays
+// the search with them and goes on.
+#include "sim/optimize/identify_outputs.h"
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <string>
+
+#include "base/format.h"
+#include "base/input_error.h"
+#include "sim/cli/command_database.h"
+#include "sim/cli/cli_options.h"
+#include "sim/cli/commands.h"
+#include "sim/cli/stop_signal.h"
+#include "sim/core/runner.h"
+#include "sim/io/staged_outputs.h"
+
+namespace pamsim {
+namespace {
+
+struct IdentifyOptions {
+  std::string file;
+  DatabaseOptions database;
+  bool force = false;
+  bool quiet = false;
+};
+
+void print_result(const IdentifyResult& r) {
+  std::cout << "identified (cost " << format_value(r.cost_global) << " after CMA-ES, "
+            << format_value(r.cost_final) << " after the polish):\n";
+  for (const IdentifiedParameter& p : r.parameters) {
+    std::cout << "  " << p.parameter.key << " = " << format_value(p.value);
+    if (!p.identifiable) std::cout << "  (not determined by the recordings)";
+    else std::cout << " +- " << format_value(p.std_error) << (p.at_bound ? "  (at a bound)" : "");
+    std::cout << "\n";
+  }
+  for (const ChannelFit& f : r.fits) {
+    std::cout << "  " << f.recording << " " << f.channel << (f.held_out ? " (held out)" : "")
+              << ": RMSE " << format_value(f.rmse_before) << " -> " << format_value(f.rmse_after) << "\n";
+  }
+}
+
+void identify(const IdentifyOptions& opt) {
+  const int threads = resolve_thread_count(opt.database.threads);
+  const IdentifyDefinition def = load_identify_definition(opt.file);   // everything validated
+  const CommandDatabase where = command_database(opt.file, opt.database, "identify.db");
+  if (opt.database.resume && !where.exists) {
+    throw InputError(where.path + ": --resume, but there is no database");
+  }
+  if (!opt.database.resume && !where.exists && !opt.force) {
+    refuse_earlier_outputs(where.out, kIdentifyOutputs);
+  }
+  IdentifyDb db = open_in_database_folder(where, "identify.db", [&] {
+    return opt.database.resume ? IdentifyDb::open_to_resume(where.path, def)
+                               : IdentifyDb::create(where.path, def);
+  });
+  std::cerr << "pamsim identify: " << def.parameters.size() << " parameters, "
+            << def.recordings.size() << " recordings; CMA-ES " << def.generations
+            << " generations of " << def.population << ", then up to " << def.polish_iterations
+            << " Levenberg-Marquardt iterations, on " << threads << " threads into " << where.path
+            << " (" << db.size() << " points stored)\n";
+  StopOnSignal stop_on_signal;
+  IdentifyRunOptions run;
+  run.threads = threads;
+  run.stop = &stop_requested();
+  if (!opt.quiet) {
+    run.on_progress = [](const std::string& phase, std::int64_t points) {
+      if (points % 10 == 0) std::cerr << "pamsim identify: " << phase << " " << points << " points\n";
+    };
+  }
+  const IdentifyResult r = run_identify(def, db, run);
+  if (r.interrupted) {
+    std::cerr << "pamsim identify: interrupted with " << db.size() << " points stored; finish "
+              << "with: pamsim identify " << opt.file << " --db " << where.path << " --out "
+              << where.out << " --resume\n";
+    throw CommandExit(128 + stop_signal());
+  }
+  StagedOutputs staged(where.out, kIdentifyOutputs);
+  staged.write([&] { write_identify_outputs(def, r, staged); });
+  staged.publish();
+  print_result(r);
+  std::cerr << "pamsim identify: " << r.simulated << " points simulated, " << r.cached
+            << " from the database; " << format_value(r.global_s) << " s CMA-ES, "
+            << format_value(r.polish_s) << " s polish, " << format_value(r.check_s) << " s checks\n";
+  std::cout << "outputs: " << where.out << "/{identified.toml,identify.csv,identify_fits.csv,identify.md}\n";
+}
+
+}  // namespace
+
+void add_identify_command(CLI::App& app) {
+  const auto [cmd, opt] = add_command<IdentifyOptions>(
+      app, "identify", "Fit physical parameters to a lab's recordings (CMA-ES, then Ceres)",
+      identify);
+  cmd->add_option("identify", opt->file, "Identification file (TOML)")->required();
+  add_database_options(cmd, &opt->database, "Identification database (default DIR/identify.db)",
+                       "Continue the identification stored in the database",
+                       "Output folder (default renders/<identification file name>)");
+  cmd->add_flag("--force", opt->force, "Replace another identification's outputs in the folder");
+  cmd->add_flag("--quiet", opt->quiet, "No progress lines");
+}
+
+}  // namespace pamsim

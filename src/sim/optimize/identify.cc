@@ -1,0 +1,265 @@
+// identify.cc: see identify.h.
+#include "sim/optimize/identify.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include <ceres/ceres.h>
+
+#include "base/no_value.h"
+#include "sim/core/runner.h"
+#include "sim/optimize/identify_residuals.h"
+#include "sim/optimize/optimizer.h"
+
+namespace pamsim {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// A failed point's fitness for CMA-ES: worse than any point whose trials ran.
+constexpr double kFailedCost = 1e300;
+// The central difference's step in the unit box (relative to the coordinate; this at 0): wide
+// enough to step over the chamber ODE's tolerance, fine enough for 0.1 % of a range.
+constexpr double kDifferenceStep = 1e-3;
+
+// The global phase's objective: a point's cost (sum of squares).
+class IdentifyObjective : public Objective {
+ public:
+  IdentifyObjective(IdentifyResiduals& residuals, std::size_t n) : residuals_(residuals), n_(n) {}
+  std::size_t dimension() const override { return n_; }
+  std::size_t objective_count() const override { return 1; }
+  Evaluation evaluate(std::int64_t index, const std::vector<double>& unit) override {
+    Evaluation e;
+    e.index = index;
+    e.unit = unit;
+    e.values = residuals_.values_at(unit);
+    const double cost = sum_of_squares(residuals_.at(unit, "global"));
+    e.objectives = {cost};
+    e.fitness = {std::isfinite(cost) ? cost : kFailedCost};
+    e.trials = 1;
+    e.ok = std::isfinite(cost) ? 1 : 0;
+    return e;
+  }
+
+ private:
+  IdentifyResiduals& residuals_;
+  std::size_t n_;
+};
+
+// CMA-ES over the box; its best point (the middle without generations).
+std::vector<double> global_search(const IdentifyDefinition& def, IdentifyResiduals& residuals,
+                                  const IdentifyRunOptions& options, bool* interrupted) {
+  const std::size_t n = def.parameters.size();
+  if (def.generations == 0) return std::vector<double>(n, 0.5);
+  IdentifyObjective objective(residuals, n);
+  std::vector<Evaluation> history;
+  struct Recorder : Objective {   // keeps every evaluation for the best one
+    IdentifyObjective& inner;
+    std::vector<Evaluation>& out;
+    const IdentifyRunOptions& options;
+    Recorder(IdentifyObjective& i, std::vector<Evaluation>& o, const IdentifyRunOptions& op)
+        : inner(i), out(o), options(op) {}
+    std::size_t dimension() const override { return inner.dimension(); }
+    std::size_t objective_count() const override { return 1; }
+    Evaluation evaluate(std::int64_t index, const std::vector<double>& unit) override {
+      out.push_back(inner.evaluate(index, unit));
+      if (options.on_progress) options.on_progress("global", static_cast<std::int64_t>(out.size()));
+      return out.back();
+    }
+  } recorder(objective, history, options);
+  SearchOptions search;
+  search.stop = options.stop;
+  const SearchSettings settings{SearchAlgorithm::kCmaes, def.generations, def.population, def.seed};
+  *interrupted = run_search(settings, recorder, {}, search).interrupted;
+  const Evaluation* best = best_evaluation(history);
+  return best ? best->unit : std::vector<double>(n, 0.5);
+}
+
+// Ceres's view of the residuals: one parameter block of size 1 per parameter.
+struct PolishCost {
+  IdentifyResiduals* residuals;
+  std::size_t n;
+  bool operator()(double const* const* params, double* out) const {
+    std::vector<double> unit(n);
+    for (std::size_t i = 0; i < n; ++i) unit[i] = params[i][0];
+    const std::vector<double> r = residuals->at(unit, "polish");
+    if (r.empty()) return false;
+    std::copy(r.begin(), r.end(), out);
+    return true;
+  }
+};
+
+// The least-squares problem over `unit` (its storage), bounded to the box.
+struct PolishProblem {
+  std::vector<double> unit;
+  ceres::Problem problem;
+  std::vector<double*> blocks;
+  PolishProblem(IdentifyResiduals& residuals, const std::vector<double>& start) : unit(start) {
+    ceres::NumericDiffOptions diff;
+    diff.relative_step_size = kDifferenceStep;
+    auto* cost = new ceres::DynamicNumericDiffCostFunction<PolishCost, ceres::CENTRAL>(
+        new PolishCost{&residuals, unit.size()}, ceres::TAKE_OWNERSHIP, diff);
+    for (std::size_t i = 0; i < unit.size(); ++i) cost->AddParameterBlock(1);
+    cost->SetNumResiduals(static_cast<int>(residuals.count()));
+    for (double& u : unit) blocks.push_back(&u);
+    problem.AddResidualBlock(cost, nullptr, blocks);
+    for (double* b : blocks) {
+      problem.SetParameterLowerBound(b, 0, 0.0);
+      problem.SetParameterUpperBound(b, 0, 1.0);
+    }
+  }
+};
+
+// Aborts the solve once options.stop is set.
+struct StopCallback : ceres::IterationCallback {
+  const std::atomic<bool>* stop;
+  explicit StopCallback(const std::atomic<bool>* s) : stop(s) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    return stop && stop->load() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+  }
+};
+
+std::string polish(const IdentifyDefinition& def, PolishProblem& p,
+                   const IdentifyRunOptions& options, bool* interrupted) {
+  if (def.polish_iterations == 0) return "no polish (polish_iterations = 0)";
+  ceres::Solver::Options o;
+  o.minimizer_type = ceres::TRUST_REGION;
+  o.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  o.linear_solver_type = ceres::DENSE_QR;
+  o.max_num_iterations = def.polish_iterations;
+  o.num_threads = 1;   // the recordings of each point run in parallel instead
+  StopCallback stop(options.stop);
+  o.callbacks.push_back(&stop);
+  ceres::Solver::Summary summary;
+  ceres::Solve(o, &p.problem, &summary);
+  *interrupted = *interrupted || summary.termination_type == ceres::USER_FAILURE;
+  return summary.BriefReport();
+}
+
+// The Jacobian's squared column norms at p.unit; empty if it cannot be evaluated.
+std::vector<double> column_norms(PolishProblem& p) {
+  ceres::CRSMatrix jacobian;
+  double cost = 0.0;
+  if (!p.problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, &jacobian)) {
+    return {};
+  }
+  std::vector<double> norms(p.unit.size(), 0.0);
+  for (std::size_t k = 0; k < jacobian.values.size(); ++k) {
+    norms[static_cast<std::size_t>(jacobian.cols[k])] += jacobian.values[k] * jacobian.values[k];
+  }
+  return norms;
+}
+
+// dx/du of a parameter at u
+double slope_at(const SearchParameter& p, double u) {
+  return p.log ? value_at(p, u) * std::log(p.to / p.from) : p.to - p.from;
+}
+
+// Standard errors and correlations of the identifiable parameters (cov = s^2 (J^T J)^-1).
+void fill_uncertainty(PolishProblem& p, double s2, std::vector<IdentifiedParameter>* out) {
+  std::vector<IdentifiedParameter>& params = *out;
+  const std::vector<double> norms = column_norms(p);
+  const double largest = norms.empty() ? 0.0 : *std::max_element(norms.begin(), norms.end());
+  std::vector<std::size_t> free;
+  for (std::size_t i = 0; i < params.size(); ++i) {
+    params[i].identifiable = !norms.empty() && norms[i] > 1e-12 * largest && largest > 0;
+    params[i].std_error = kNaN;
+    if (params[i].identifiable) free.push_back(i);
+    else p.problem.SetParameterBlockConstant(p.blocks[i]);
+  }
+  ceres::Covariance::Options options;
+  options.algorithm_type = ceres::DENSE_SVD;
+  ceres::Covariance covariance(options);
+  std::vector<std::pair<const double*, const double*>> pairs;
+  for (std::size_t a : free) {
+    for (std::size_t b : free) if (a <= b) pairs.emplace_back(p.blocks[a], p.blocks[b]);
+  }
+  if (free.empty() || !std::isfinite(s2) || !covariance.Compute(pairs, &p.problem)) {
+    for (std::size_t i : free) params[i].identifiable = false;   // jointly undetermined
+    return;
+  }
+  auto cov = [&](std::size_t a, std::size_t b) {
+    double c = 0.0;
+    covariance.GetCovarianceBlock(p.blocks[std::min(a, b)], p.blocks[std::max(a, b)], &c);
+    return s2 * c;
+  };
+  for (std::size_t a : free) {
+    params[a].std_error = std::sqrt(cov(a, a)) * std::abs(slope_at(params[a].parameter, p.unit[a]));
+    for (std::size_t b : free) {
+      if (a == b) continue;
+      const double r = cov(a, b) / std::sqrt(cov(a, a) * cov(b, b));
+      if (std::abs(r) > 0.9) params[a].correlated.emplace_back(params[b].parameter.key, r);
+    }
+  }
+}
+
+// Every recording's channels before (the base scenario) and after (the identified values).
+std::vector<ChannelFit> channel_fits(const IdentifyDefinition& def,
+                                     const std::vector<double>& values, int threads) {
+  const std::size_t n = def.recordings.size();
+  std::vector<SimulatedRecording> sims(2 * n);
+  parallel_for(static_cast<int>(2 * n), threads, [&](int k) {
+    const IdentifyRecording& r = def.recordings[static_cast<std::size_t>(k) % n];
+    std::vector<std::string> before = def.overrides;
+    before.insert(before.end(), r.set.begin(), r.set.end());
+    sims[static_cast<std::size_t>(k)] =
+        simulate_recording(def, r, k < static_cast<int>(n) ? before : def.overrides_at(r, values));
+  });
+  std::vector<ChannelFit> fits;
+  for (std::size_t i = 0; i < n; ++i) {
+    const IdentifyRecording& r = def.recordings[i];
+    const std::vector<double> before = channel_rmse(r, sims[i]), after = channel_rmse(r, sims[n + i]);
+    for (std::size_t c = 0; c < r.channels.size(); ++c) {
+      fits.push_back({r.name, r.data.channels[r.channels[c]], r.held_out,
+                      r.data.sample_count(r.channels[c]), before[c], after[c]});
+    }
+  }
+  return fits;
+}
+
+}  // namespace
+
+IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
+                            const IdentifyRunOptions& options) {
+  IdentifyResult result;
+  IdentifyResiduals residuals(def, db, options.threads);
+  result.residuals = residuals.count();
+  auto t0 = Clock::now();
+  const std::vector<double> start = global_search(def, residuals, options, &result.interrupted);
+  result.cost_global = sum_of_squares(residuals.at(start, "global"));
+  result.global_s = seconds_since(t0);
+  t0 = Clock::now();
+  PolishProblem problem(residuals, start);
+  if (!result.interrupted) result.polish_summary = polish(def, problem, options, &result.interrupted);
+  result.unit = problem.unit;
+  for (double& u : result.unit) u = std::clamp(u, 0.0, 1.0);
+  const std::vector<double> final_residuals = residuals.at(result.unit, "polish");
+  result.cost_final = sum_of_squares(final_residuals);
+  result.polish_s = seconds_since(t0);
+  result.simulated = residuals.simulated;
+  result.cached = residuals.cached;
+  if (result.interrupted) return result;
+  t0 = Clock::now();
+  const std::vector<double> values = residuals.values_at(result.unit);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    IdentifiedParameter p;
+    p.parameter = def.parameters[i];
+    p.value = values[i];
+    p.at_bound = result.unit[i] < 1e-3 || result.unit[i] > 1.0 - 1e-3;
+    result.parameters.push_back(p);
+  }
+  const double dof = static_cast<double>(result.residuals) - static_cast<double>(values.size());
+  fill_uncertainty(problem, dof > 0 ? result.cost_final / dof : kNaN, &result.parameters);
+  result.fits = channel_fits(def, values, options.threads);
+  result.check_s = seconds_since(t0);
+  result.simulated = residuals.simulated;
+  result.cached = residuals.cached;   // (the checks' simulations are not stored)
+  return result;
+}
+
+}  // namespace pamsim

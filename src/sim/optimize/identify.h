@@ -1,0 +1,65 @@
+// identify.h: `pamsim identify` (issue 26): the parameters of an identification file fitted
+// to its recordings, in two phases over the parameters' unit box: a global search by pagmo2's
+// CMA-ES (optimizer.h; `generations` of `population`), then a local least-squares polish from
+// its best point by Ceres Solver's Levenberg-Marquardt (bounds [0, 1], central-difference
+// Jacobian), and the parameters' covariance at the result by ceres::Covariance:
+//   cov(u) = s^2 (J^T J)^-1,  s^2 = cost / (residuals - parameters),
+// carried to the parameters' units by dx/du. A parameter whose Jacobian column vanishes
+// (the recordings do not move with it) is reported unidentifiable and kept out of the
+// covariance; if J^T J is still singular, every parameter is (jointly undetermined).
+// Every residual vector is committed to the run's database as it is computed
+// (identify_db.h); a run stopped at any point and started again with the same database
+// replays both phases, deterministic, and simulates only what it had not.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sim/optimize/identify_db.h"
+#include "sim/optimize/identify_file.h"
+
+namespace pamsim {
+
+struct IdentifyRunOptions {
+  int threads = 1;
+  const std::atomic<bool>* stop = nullptr;   // set: stop after the simulation in flight
+  std::function<void(const std::string& phase, std::int64_t points)> on_progress;
+};
+
+struct IdentifiedParameter {
+  SearchParameter parameter;
+  double value = 0.0;
+  double std_error = 0.0;       // NaN when not determined
+  bool at_bound = false;        // within 0.1 % of the box's edge
+  bool identifiable = true;     // false: the recordings do not determine it
+  std::vector<std::pair<std::string, double>> correlated;   // |correlation| > 0.9
+};
+
+// A recording's channel before (the base scenario as it stands) and after identification.
+struct ChannelFit {
+  std::string recording, channel;
+  bool held_out = false;
+  std::size_t samples = 0;
+  double rmse_before = 0.0, rmse_after = 0.0;   // in the channel's unit
+};
+
+struct IdentifyResult {
+  std::vector<double> unit;                     // the identified point in the unit box
+  std::vector<IdentifiedParameter> parameters;
+  std::vector<ChannelFit> fits;
+  double cost_global = 0.0, cost_final = 0.0;   // sum of squared residuals (identify_residuals.h)
+  std::size_t residuals = 0;
+  std::int64_t simulated = 0, cached = 0;       // points simulated, points answered stored
+  double global_s = 0.0, polish_s = 0.0, check_s = 0.0;   // wall time of each phase
+  std::string polish_summary;                   // Ceres's brief report
+  bool interrupted = false;
+};
+
+IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
+                            const IdentifyRunOptions& options);
+
+}  // namespace pamsim

@@ -1,0 +1,178 @@
+// identify_file.cc: see identify_file.h.
+#include "sim/optimize/identify_file.h"
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "base/config_reader.h"
+#include "base/format.h"
+#include "base/input_error.h"
+#include "sim/core/trial.h"
+#include "sim/core/trial_model.h"
+#include "sim/io/scenario_file.h"
+
+namespace pamsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+void read_search(ConfigReader& in, IdentifyDefinition* def) {
+  def->generations = static_cast<unsigned>(
+      read_bounded_int(in, "generations", def->generations, 0, 1000, "[0, 1000]"));
+  def->population = static_cast<unsigned>(
+      read_bounded_int(in, "population", def->population, 5, 1000, "[5, 1000] (CMA-ES)"));
+  def->seed = static_cast<std::uint64_t>(
+      read_bounded_int(in, "seed", 1, 0, 4294967295LL, "[0, 2^32 - 1] (pagmo's seeds)"));
+  def->polish_iterations = static_cast<int>(
+      read_bounded_int(in, "polish_iterations", def->polish_iterations, 0, 1000, "[0, 1000]"));
+}
+
+bool is_name(const std::string& s) {
+  if (s.empty()) return false;
+  for (char c : s) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') return false;
+  }
+  return true;
+}
+
+// The channels a recording is matched on: those named, or every one it has.
+std::vector<std::size_t> read_channels(const TableEntry& e, const Recording& data) {
+  std::vector<std::size_t> out;
+  const std::vector<std::string> named = e.texts("channels", false);
+  if (named.empty()) {
+    for (std::size_t c = 0; c < data.channels.size(); ++c) out.push_back(c);
+    return out;
+  }
+  for (const std::string& name : named) {
+    const std::size_t c = data.channel(name);
+    if (c == data.channels.size()) {
+      e.in.fail(e.where + "channels", "names " + name + ", which " + data.path + " does not hold");
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+IdentifyRecording read_recording(ConfigReader& in, const TableEntry& e) {
+  IdentifyRecording r;
+  const std::string file = e.text("file", true);
+  const fs::path path = fs::path(in.name()).parent_path() / file;
+  try {
+    r.data = read_recording_csv(fs::path(file).is_absolute() ? file : path.string());
+  } catch (const InputError& err) {
+    in.fail(e.where + "file", std::string("(") + err.what() + ")");
+  }
+  r.name = e.text("name", false, fs::path(file).stem().string());
+  if (!is_name(r.name)) {
+    in.fail(e.where + "name", "must be letters, digits, '_' or '-', got \"" + r.name + "\"");
+  }
+  r.set = e.texts("set", false);
+  r.channels = read_channels(e, r.data);
+  r.weight = e.number("weight").value_or(1.0);
+  if (!(r.weight > 0)) in.fail(e.where + "weight", "must be > 0, got " + format_value(r.weight));
+  if (const toml::node* h = e.table.get("held_out")) {
+    if (!h->is_boolean()) in.fail(e.where + "held_out", "must be true or false");
+    r.held_out = *h->value<bool>();
+  }
+  return r;
+}
+
+void read_recordings(ConfigReader& in, IdentifyDefinition* def) {
+  const TableArray tables(in, "recording");
+  std::set<std::string> names;
+  bool fitted = false;
+  for (const TableEntry& e :
+       tables.entries({"file", "name", "set", "channels", "weight", "held_out"})) {
+    def->recordings.push_back(read_recording(in, e));
+    const IdentifyRecording& r = def->recordings.back();
+    in.check(names.insert(r.name).second, e.where + "name", "\"" + r.name + "\" is taken");
+    fitted = fitted || !r.held_out;
+  }
+  in.check(fitted, "recording", "needs at least one [[recording]] that is not held_out");
+}
+
+// Every recording's scenario loads with the parameters mid-box, logs its channels and lasts
+// as long as the recording.
+void check_recordings(const IdentifyDefinition& def) {
+  std::vector<double> middle;
+  for (const SearchParameter& p : def.parameters) middle.push_back(value_at(p, 0.5));
+  for (std::size_t i = 0; i < def.recordings.size(); ++i) {
+    const IdentifyRecording& r = def.recordings[i];
+    const std::string where = def.file + ": recording[" + std::to_string(i) + "] (" + r.name + ")";
+    for (const std::string& s : r.set) {
+      for (const SearchParameter& p : def.parameters) {
+        if (s.rfind(p.key + "=", 0) == 0) throw InputError(where + ": set gives " + p.key + ", a parameter");
+      }
+    }
+    Scenario sc;
+    try {
+      sc = load_scenario_text(def.base_text, def.base_path, def.overrides_at(r, middle));
+    } catch (const InputError& e) {
+      throw InputError(where + ": " + e.what());
+    }
+    const std::vector<std::string> logged = trial_log_layout(load_trial_model(sc), sc).columns;
+    for (std::size_t c : r.channels) {
+      const std::string& name = r.data.channels[c];
+      if (std::find(logged.begin(), logged.end(), name) == logged.end()) {
+        throw InputError(where + ": channel " + name + " is not a column pamsim logs for this "
+                         "scenario (trajectory.csv's columns)");
+      }
+    }
+    if (r.data.time_s.back() > sc.duration_s + 1e-9) {
+      throw InputError(where + ": the recording lasts " + format_value(r.data.time_s.back()) +
+                       " s, its scenario " + format_value(sc.duration_s) +
+                       " s (set sim.duration_s)");
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> IdentifyDefinition::overrides_at(const IdentifyRecording& recording,
+                                                          const std::vector<double>& values) const {
+  std::vector<std::string> base = overrides;
+  base.insert(base.end(), recording.set.begin(), recording.set.end());
+  return parameter_overrides(base, parameters, values);
+}
+
+std::string IdentifyDefinition::canonical_json() const {
+  nlohmann::json params = nlohmann::json::array();
+  for (const auto& p : parameters) {
+    params.push_back({{"key", p.key}, {"from", p.from}, {"to", p.to}, {"log", p.log}});
+  }
+  nlohmann::json recs = nlohmann::json::array();
+  for (const auto& r : recordings) {
+    std::vector<std::string> channels;
+    for (std::size_t c : r.channels) channels.push_back(r.data.channels[c]);
+    recs.push_back({{"name", r.name}, {"set", r.set}, {"channels", channels},
+                    {"weight", r.weight}, {"held_out", r.held_out}, {"time_s", r.data.time_s},
+                    {"samples", r.data.samples}});
+  }
+  const nlohmann::json j = {{"base_scenario", base_text}, {"base_path", base_path},
+                            {"overrides", overrides},     {"generations", generations},
+                            {"population", population},   {"seed", seed},
+                            {"polish_iterations", polish_iterations},
+                            {"parameters", params},       {"recordings", recs}};
+  return j.dump();
+}
+
+IdentifyDefinition load_identify_definition(const std::string& path) {
+  ConfigReader in(path);
+  IdentifyDefinition def;
+  def.file = path;
+  SearchBase base = read_search_base(in);
+  def.base_path = std::move(base.path);
+  def.base_text = std::move(base.text);
+  def.overrides = std::move(base.overrides);
+  read_search(in, &def);
+  def.parameters = read_search_parameters(in, {"seed"}, "a recording's noise is its own");
+  read_recordings(in, &def);
+  in.reject_unknown();
+  check_recordings(def);
+  return def;
+}
+
+}  // namespace pamsim

@@ -1,0 +1,67 @@
+// identify_file.h: an identification file (`pamsim identify`, issue 26) as data: the base
+// scenario, the parameters to identify (search_space.h: any scenario key, e.g. a plant's
+// field), the lab's recordings and how to search.
+//
+// Identification file keys (paths relative to the file):
+//   base                scenario file, required
+//   overrides           scenario overrides at every simulation ("key=value" strings)
+//   generations         CMA-ES generations of the global search, [0, 1000]; 0: none, the
+//                       polish starts from the middle of the box; default 6
+//   population          CMA-ES population, [5, 1000]; default 8
+//   seed                CMA-ES seed, [0, 2^32 - 1]; default 1
+//   polish_iterations   Levenberg-Marquardt iterations of the local polish (Ceres), [0, 1000];
+//                       default 30
+//   [[parameter]]       key (a scenario key), from < to, scale = "linear" | "log" (from > 0)
+//   [[recording]]       file: a recording (sim/io/recording_csv.h), required
+//                       name: letters, digits, '_' and '-'; default the file's stem; unique
+//                       set: the conditions it was recorded under, as --set "key=value"
+//                       channels: the columns to match; default every one it has
+//                       weight: > 0, its residuals' weight; default 1
+//                       held_out: true: used only to check the result; default false
+// At least one recording is fitted (not held out). Every recording's scenario must load, and
+// each channel must be one its trials log (trajectory.csv's columns); a recording must not
+// outlast its scenario's sim.duration_s.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sim/io/recording_csv.h"
+#include "sim/optimize/search_space.h"
+
+namespace pamsim {
+
+struct IdentifyRecording {
+  std::string name;
+  Recording data;
+  std::vector<std::string> set;        // the recording's own overrides
+  std::vector<std::size_t> channels;   // indices into data.channels
+  double weight = 1.0;
+  bool held_out = false;
+};
+
+struct IdentifyDefinition {
+  std::string file;
+  std::string base_path, base_text;
+  std::vector<std::string> overrides;
+  unsigned generations = 6, population = 8;
+  std::uint64_t seed = 1;
+  int polish_iterations = 30;
+  std::vector<SearchParameter> parameters;
+  std::vector<IdentifyRecording> recordings;
+
+  // The overrides of `recording`'s trial with the parameters at `values`.
+  std::vector<std::string> overrides_at(const IdentifyRecording& recording,
+                                        const std::vector<double>& values) const;
+  // Everything that decides the result, as canonical JSON (stored; a resume must match):
+  // the settings, parameters and every recording's name, set, channels, weight, role and
+  // samples.
+  std::string canonical_json() const;
+};
+
+// Reads and validates the file and its recordings. Throws InputError "<file>: <key> <problem>"
+// or the recording's own "<recording>: line <n>: <problem>".
+IdentifyDefinition load_identify_definition(const std::string& path);
+
+}  // namespace pamsim

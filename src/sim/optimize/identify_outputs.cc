@@ -1,0 +1,119 @@
+// identify_outputs.cc: see identify_outputs.h.
+#include "sim/optimize/identify_outputs.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "base/atomic_file.h"
+#include "base/format.h"
+#include "sim/io/scenario_file.h"
+#include "sim/io/staged_outputs.h"
+
+namespace pamsim {
+namespace {
+
+std::string cell(double v) { return std::isfinite(v) ? format_shortest(v) : ""; }
+
+// "key (0.97); key2 (-0.93)"
+std::string correlated_text(const IdentifiedParameter& p) {
+  std::string out;
+  for (const auto& [key, r] : p.correlated) {
+    out += (out.empty() ? "" : "; ") + key + " (" + format_value(std::round(r * 1000) / 1000) + ")";
+  }
+  return out;
+}
+
+// What a reader should make of a parameter's value.
+std::string verdict(const IdentifiedParameter& p) {
+  if (!p.identifiable) return "not determined by the recordings";
+  std::string v = p.at_bound ? "at a bound of its range" : "identified";
+  if (!p.correlated.empty()) v += ", strongly correlated";
+  return v;
+}
+
+std::string parameters_table(const IdentifyResult& r) {
+  std::ostringstream md;
+  md << "| parameter | range | identified | standard error | verdict | correlated (> 0.9) |\n"
+     << "| --- | --- | --- | --- | --- | --- |\n";
+  for (const IdentifiedParameter& p : r.parameters) {
+    md << "| `" << p.parameter.key << "` | " << format_value(p.parameter.from) << " - "
+       << format_value(p.parameter.to) << (p.parameter.log ? " (log)" : "") << " | "
+       << format_value(p.value) << " | "
+       << (std::isfinite(p.std_error) ? format_value(p.std_error) : "-") << " | " << verdict(p)
+       << " | " << correlated_text(p) << " |\n";
+  }
+  return md.str();
+}
+
+std::string fits_table(const IdentifyResult& r) {
+  std::ostringstream md;
+  md << "| recording | channel | role | samples | RMSE before | RMSE after |\n"
+     << "| --- | --- | --- | --- | --- | --- |\n";
+  for (const ChannelFit& f : r.fits) {
+    md << "| " << f.recording << " | " << f.channel << " | " << (f.held_out ? "held out" : "fitted")
+       << " | " << f.samples << " | " << format_value(f.rmse_before) << " | "
+       << format_value(f.rmse_after) << " |\n";
+  }
+  return md.str();
+}
+
+}  // namespace
+
+std::string identify_parameters_csv(const IdentifyResult& r) {
+  std::string out = "key,from,to,scale,identified,std_error,at_bound,identifiable,correlated_with\n";
+  for (const IdentifiedParameter& p : r.parameters) {
+    out += p.parameter.key + "," + cell(p.parameter.from) + "," + cell(p.parameter.to) + "," +
+           (p.parameter.log ? "log" : "linear") + "," + cell(p.value) + "," + cell(p.std_error) +
+           "," + (p.at_bound ? "1" : "0") + "," + (p.identifiable ? "1" : "0") + "," +
+           correlated_text(p) + "\n";
+  }
+  return out;
+}
+
+std::string identify_fits_csv(const IdentifyResult& r) {
+  std::string out = "recording,channel,held_out,samples,rmse_before,rmse_after\n";
+  for (const ChannelFit& f : r.fits) {
+    out += f.recording + "," + f.channel + "," + (f.held_out ? "1" : "0") + "," +
+           std::to_string(f.samples) + "," + cell(f.rmse_before) + "," + cell(f.rmse_after) + "\n";
+  }
+  return out;
+}
+
+std::string identify_markdown(const IdentifyDefinition& def, const IdentifyResult& r) {
+  std::ostringstream md;
+  md << "# Identification: " << def.file << "\n\n"
+     << "Base scenario `" << def.base_path << "`; " << def.recordings.size() << " recordings, "
+     << r.residuals << " residuals fitted. CMA-ES (" << def.generations << " generations of "
+     << def.population << ") reached a cost of " << format_value(r.cost_global) << " in "
+     << format_value(r.global_s) << " s; the Levenberg-Marquardt polish "
+     << format_value(r.cost_final) << " in " << format_value(r.polish_s) << " s ("
+     << r.polish_summary << "). " << r.simulated << " points simulated, " << r.cached
+     << " answered from the database.\n\n"
+     << "## Parameters\n\n" << parameters_table(r) << "\n"
+     << "Standard errors: s^2 (J^T J)^-1 at the result, s^2 the cost per degree of freedom "
+        "(ceres::Covariance); \"not determined\": the recordings do not move with it (its "
+        "Jacobian column vanishes) or J^T J is singular.\n\n"
+     << "## Recordings: RMSE before (the base scenario) and after, in each channel's unit\n\n"
+     << fits_table(r);
+  return md.str();
+}
+
+void write_identify_outputs(const IdentifyDefinition& def, const IdentifyResult& r,
+                            const StagedOutputs& out) {
+  std::vector<double> values;
+  for (const IdentifiedParameter& p : r.parameters) values.push_back(p.value);
+  std::string header = "# pamsim identify: " + def.file + ", from the recordings";
+  for (const IdentifyRecording& rec : def.recordings) {
+    if (!rec.held_out) header += " " + rec.data.path;
+  }
+  header += "\n";
+  write_file_atomically(out.path("identified.toml"),
+                        resolved_scenario_toml(def.base_text, def.base_path,
+                                               parameter_overrides(def.overrides, def.parameters, values),
+                                               out.dir(), header));
+  write_file_atomically(out.path("identify.csv"), identify_parameters_csv(r));
+  write_file_atomically(out.path("identify_fits.csv"), identify_fits_csv(r));
+  write_file_atomically(out.path("identify.md"), identify_markdown(def, r));
+}
+
+}  // namespace pamsim

@@ -1,0 +1,32 @@
+// identify_outputs.h: what `pamsim identify` writes into its output folder:
+//   identified.toml    the base scenario with the identified values (plus the file's
+//                      overrides), ready for `pamsim run`; its header names the recordings
+//   identify.csv       per parameter: key, bounds, identified value, standard error, whether
+//                      it hit a bound, whether the recordings determine it, and the parameters
+//                      it correlates with above 0.9
+//   identify_fits.csv  per recording and channel: fitted or held out, samples, RMSE before
+//                      (the base scenario as it stands) and after, in the channel's unit
+//   identify.md        both tables, and the search's cost and time
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sim/optimize/identify.h"
+
+namespace pamsim {
+
+class StagedOutputs;
+
+inline const std::vector<std::string> kIdentifyOutputs = {
+    "identified.toml", "identify.csv", "identify_fits.csv", "identify.md"};
+
+std::string identify_parameters_csv(const IdentifyResult& result);
+std::string identify_fits_csv(const IdentifyResult& result);
+std::string identify_markdown(const IdentifyDefinition& def, const IdentifyResult& result);
+
+// All of them into the staging folder of `out` (published by the caller).
+void write_identify_outputs(const IdentifyDefinition& def, const IdentifyResult& result,
+                            const StagedOutputs& out);
+
+}  // namespace pamsim

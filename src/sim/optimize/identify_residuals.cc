@@ -1,0 +1,148 @@
+// identify_residuals.cc: see identify_residuals.h.
+#include "sim/optimize/identify_residuals.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "base/no_value.h"
+#include "sim/core/runner.h"
+#include "sim/core/trial.h"
+#include "sim/core/trial_model.h"
+#include "sim/io/scenario_file.h"
+
+namespace pamsim {
+namespace {
+
+// column `c` of `log` at time t, linear between its rows (the log's ends beyond them)
+double interpolate(const Trajectory& log, std::size_t c, double t, std::size_t* row) {
+  const std::size_t n = log.rows();
+  while (*row + 1 < n && log.at(*row + 1, 0) <= t) ++*row;
+  if (*row + 1 >= n) return log.at(n - 1, c);
+  const double t0 = log.at(*row, 0), t1 = log.at(*row + 1, 0);
+  const double w = t1 > t0 ? (t - t0) / (t1 - t0) : 0.0;
+  return log.at(*row, c) + w * (log.at(*row + 1, c) - log.at(*row, c));
+}
+
+// the recorded channel's population standard deviation, 1 if it is (nearly) constant
+double channel_scale(const std::vector<double>& samples) {
+  double sum = 0, sum2 = 0;
+  int n = 0;
+  for (double v : samples) {
+    if (std::isnan(v)) continue;
+    sum += v;
+    sum2 += v * v;
+    ++n;
+  }
+  const double mean = sum / n, var = std::max(0.0, sum2 / n - mean * mean);
+  return var > 1e-24 ? std::sqrt(var) : 1.0;
+}
+
+}  // namespace
+
+SimulatedRecording simulate_recording(const IdentifyDefinition& def, const IdentifyRecording& r,
+                                      const std::vector<std::string>& overrides) {
+  SimulatedRecording out;
+  try {
+    const Scenario sc = load_scenario_text(def.base_text, def.base_path, overrides);
+    const TrialResult trial = run_trial(load_trial_model(sc), sc, sc.seed, true);
+    if (trial.summary.status != "ok") {
+      out.failure = trial.summary.status + ": " + trial.summary.message;
+      return out;
+    }
+    for (std::size_t c : r.channels) {
+      const std::size_t column = trial.trajectory.column(r.data.channels[c]);
+      std::vector<double> v(r.data.time_s.size(), kNaN);
+      std::size_t row = 0;
+      for (std::size_t k = 0; k < v.size(); ++k) {
+        const double t = r.data.time_s[k];
+        const double simulated = interpolate(trial.trajectory, column, t, &row);
+        if (!std::isnan(r.data.samples[c][k])) v[k] = simulated;
+      }
+      out.values.push_back(std::move(v));
+    }
+  } catch (const std::exception& e) {   // a value the scenario refuses, or a model that fails
+    out.failure = e.what();
+  }
+  return out;
+}
+
+std::vector<double> channel_rmse(const IdentifyRecording& r, const SimulatedRecording& sim) {
+  std::vector<double> out;
+  for (std::size_t i = 0; i < r.channels.size(); ++i) {
+    const std::vector<double>& rec = r.data.samples[r.channels[i]];
+    double sum = 0;
+    int n = 0;
+    for (std::size_t k = 0; k < rec.size() && sim.failure.empty(); ++k) {
+      if (std::isnan(rec[k])) continue;
+      sum += (sim.values[i][k] - rec[k]) * (sim.values[i][k] - rec[k]);
+      ++n;
+    }
+    out.push_back(sim.failure.empty() && n > 0 ? std::sqrt(sum / n) : kNaN);
+  }
+  return out;
+}
+
+IdentifyResiduals::IdentifyResiduals(const IdentifyDefinition& def, IdentifyDb& db, int threads)
+    : def_(def), db_(db), threads_(threads) {
+  for (std::size_t i = 0; i < def.recordings.size(); ++i) {
+    const IdentifyRecording& r = def.recordings[i];
+    std::vector<double> scales;
+    for (std::size_t c : r.channels) {
+      scales.push_back(channel_scale(r.data.samples[c]));
+      if (!r.held_out) count_ += r.data.sample_count(c);
+    }
+    scale_.push_back(std::move(scales));
+    if (!r.held_out) fitted_.push_back(i);
+  }
+}
+
+std::vector<double> IdentifyResiduals::values_at(const std::vector<double>& unit) const {
+  std::vector<double> values;
+  for (std::size_t i = 0; i < unit.size(); ++i) {
+    values.push_back(value_at(def_.parameters[i], std::clamp(unit[i], 0.0, 1.0)));
+  }
+  return values;
+}
+
+std::vector<double> IdentifyResiduals::at(const std::vector<double>& unit_in, const char* phase) {
+  std::vector<double> unit = unit_in;
+  for (double& u : unit) u = std::clamp(u, 0.0, 1.0);
+  if (const auto stored = db_.find(unit)) {
+    ++cached;
+    return *stored;
+  }
+  const std::vector<double> values = values_at(unit);
+  std::vector<SimulatedRecording> sims(fitted_.size());
+  parallel_for(static_cast<int>(fitted_.size()), threads_, [&](int k) {
+    const IdentifyRecording& r = def_.recordings[fitted_[static_cast<std::size_t>(k)]];
+    sims[static_cast<std::size_t>(k)] = simulate_recording(def_, r, def_.overrides_at(r, values));
+  });
+  std::vector<double> residuals;
+  for (std::size_t k = 0; k < fitted_.size(); ++k) {
+    if (!sims[k].failure.empty()) {
+      residuals.clear();
+      break;
+    }
+    const IdentifyRecording& r = def_.recordings[fitted_[k]];
+    const double w = std::sqrt(r.weight);
+    for (std::size_t i = 0; i < r.channels.size(); ++i) {
+      const std::vector<double>& rec = r.data.samples[r.channels[i]];
+      for (std::size_t j = 0; j < rec.size(); ++j) {
+        if (!std::isnan(rec[j])) residuals.push_back(w * (sims[k].values[i][j] - rec[j]) / scale_[fitted_[k]][i]);
+      }
+    }
+  }
+  ++simulated;
+  db_.insert(unit, phase, sum_of_squares(residuals), residuals);
+  return residuals;
+}
+
+double sum_of_squares(const std::vector<double>& residuals) {
+  if (residuals.empty()) return std::numeric_limits<double>::infinity();
+  double s = 0;
+  for (double r : residuals) s += r * r;
+  return s;
+}
+
+}  // namespace pamsim

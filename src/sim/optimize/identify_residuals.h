@@ -1,0 +1,60 @@
+// identify_residuals.h: what `pamsim identify` minimises (issue 26). A recording's trial is
+// its scenario (the base, the file's overrides, the recording's `set`, the parameters) run
+// with the scenario's seed; each chosen channel's simulated column is interpolated linearly
+// at the recording's sample times (gaps skipped). A residual is
+//   sqrt(weight) (simulated - recorded) / s_c,
+// s_c the recorded channel's standard deviation (1 if it is constant), so channels in volts,
+// degrees and MPa weigh alike; the cost is the sum of their squares over the fitted
+// recordings. Residual vectors are kept in the run's database (identify_db.h), so a point is
+// simulated once, whichever phase asks, and a resumed run simulates nothing twice.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sim/optimize/identify_db.h"
+#include "sim/optimize/identify_file.h"
+
+namespace pamsim {
+
+// A recording's chosen channels simulated at its sample times (NaN where it has no sample),
+// or the reason its trial did not run to the end.
+struct SimulatedRecording {
+  std::vector<std::vector<double>> values;   // per chosen channel, per row
+  std::string failure;                       // "" when the trial ran to the end
+};
+
+SimulatedRecording simulate_recording(const IdentifyDefinition& def,
+                                      const IdentifyRecording& recording,
+                                      const std::vector<std::string>& overrides);
+
+// Per chosen channel, the RMS of simulated - recorded over its samples, in its unit.
+std::vector<double> channel_rmse(const IdentifyRecording& recording, const SimulatedRecording& sim);
+
+class IdentifyResiduals {
+ public:
+  IdentifyResiduals(const IdentifyDefinition& def, IdentifyDb& db, int threads);
+
+  std::size_t count() const { return count_; }   // residuals of the fitted recordings
+  // The residuals at `unit` (clamped to [0, 1]), from the database or simulated (the fitted
+  // recordings on `threads` threads) and stored under `phase`; empty if a trial failed.
+  std::vector<double> at(const std::vector<double>& unit, const char* phase);
+  // The parameters' values at `unit`.
+  std::vector<double> values_at(const std::vector<double>& unit) const;
+
+  std::int64_t simulated = 0, cached = 0;   // points simulated, points answered from the db
+
+ private:
+  const IdentifyDefinition& def_;
+  IdentifyDb& db_;
+  int threads_;
+  std::size_t count_ = 0;
+  std::vector<std::size_t> fitted_;                 // recordings fitted, in order
+  std::vector<std::vector<double>> scale_;          // per recording, per chosen channel
+};
+
+// Sum of squares; +inf for an empty (failed) vector.
+double sum_of_squares(const std::vector<double>& residuals);
+
+}  // namespace pamsim
