@@ -39,6 +39,7 @@ TEST(RecordingCsvTest, MalformedFilesAreOneLineNamingFileAndLine) {
   for (const auto& [text, says] : std::vector<std::pair<std::string, std::string>>{
            {"angle_deg\n1\n2\n", "no time_s column"},
            {"time_s,angle_deg,angle_deg\n0,1,1\n1,2,2\n", "angle_deg is named twice"},
+           {"time_s\n0\n1\n", "no channel besides time_s"},
            {"time_s,,x\n0,1,1\n", "column 2 has no name"},
            {"time_s,angle_deg\n0,1\n1,2,3\n", "line 3: 3 cells, the header has 2"},
            {"time_s,angle_deg\n0,1\n1,nan\n", "line 3: angle_deg must be a finite number or empty, got \"nan\""},

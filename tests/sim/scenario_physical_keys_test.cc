@@ -42,6 +42,15 @@ TEST(ScenarioPlantKeysTest, ASetFieldChangesThatFieldOfThePlantFileOnly) {
   EXPECT_EQ(a.diameter_m, b.diameter_m);
   EXPECT_EQ(a.friction.extension.pressure_area_m2, b.friction.extension.pressure_area_m2);
   EXPECT_EQ(agonist(changed).plant_file, agonist(base).plant_file);
+  // another plant file and a field of it, in either order
+  const std::string other = "muscles.agonist.plant=\"" + std::string(PAMSIM_SOURCE_DIR) +
+                            "/models/pams/plant_antagonist.toml\"";
+  for (const auto& sets : {std::vector<std::string>{other, kWall + "=1.5"},
+                           std::vector<std::string>{kWall + "=1.5", other}}) {
+    const Scenario both = load_scenario(kReaching, sets);
+    EXPECT_EQ(agonist(both).plant.wall_thickness_m, 1.5e-3);
+    EXPECT_NE(agonist(both).plant_file.find("plant_antagonist.toml"), std::string::npos);
+  }
   EXPECT_FALSE(same_trial_model(base, changed)) << "a sweep over the field rebuilds the model";
   EXPECT_TRUE(same_trial_model(changed, load_scenario(kReaching, {kWall + "=1.5"})));
   // the file's own reading of the same value

@@ -17,6 +17,7 @@
 #include "sim/cli/commands.h"
 #include "sim/cli/stop_signal.h"
 #include "sim/core/runner.h"
+#include "sim/io/plot.h"
 #include "sim/io/staged_outputs.h"
 
 namespace pamsim {
@@ -27,6 +28,8 @@ struct IdentifyOptions {
   DatabaseOptions database;
   bool force = false;
   bool quiet = false;
+  bool no_plot = false;
+  std::string plot_format = "png";
 };
 
 void print_result(const IdentifyResult& r) {
@@ -54,6 +57,8 @@ void identify(const IdentifyOptions& opt) {
   if (!opt.database.resume && !where.exists && !opt.force) {
     refuse_earlier_outputs(where.out, kIdentifyOutputs);
   }
+  use_plot_formats(opt.plot_format);
+  const bool plots = plots_wanted(opt.no_plot);
   IdentifyDb db = open_in_database_folder(where, "identify.db", [&] {
     return opt.database.resume ? IdentifyDb::open_to_resume(where.path, def)
                                : IdentifyDb::create(where.path, def);
@@ -79,14 +84,19 @@ void identify(const IdentifyOptions& opt) {
               << where.out << " --resume\n";
     throw CommandExit(128 + stop_signal());
   }
+  if (r.polish_failed) {
+    std::cerr << "pamsim identify: warning: the polish failed (" << r.polish_summary
+              << "); the global search's best point stands\n";
+  }
   StagedOutputs staged(where.out, kIdentifyOutputs);
-  staged.write([&] { write_identify_outputs(def, r, staged); });
+  staged.write([&] { write_identify_outputs(def, r, staged, plots); });
   staged.publish();
   print_result(r);
   std::cerr << "pamsim identify: " << r.simulated << " points simulated, " << r.cached
             << " from the database; " << format_value(r.global_s) << " s CMA-ES, "
             << format_value(r.polish_s) << " s polish, " << format_value(r.check_s) << " s checks\n";
-  std::cout << "outputs: " << where.out << "/{identified.toml,identify.csv,identify_fits.csv,identify.md}\n";
+  std::cout << "outputs: " << where.out << "/{identified.toml,identify.csv,identify_fits.csv,identify.md"
+            << (plots ? ",recording_*.png" : "") << "}\n";
 }
 
 }  // namespace
@@ -101,6 +111,8 @@ void add_identify_command(CLI::App& app) {
                        "Output folder (default renders/<identification file name>)");
   cmd->add_flag("--force", opt->force, "Replace another identification's outputs in the folder");
   cmd->add_flag("--quiet", opt->quiet, "No progress lines");
+  cmd->add_flag("--no-plot", opt->no_plot, "Write no figures (gnuplot not needed)");
+  add_plot_format_option(cmd, &opt->plot_format);
 }
 
 }  // namespace pamsim

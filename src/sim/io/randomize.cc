@@ -85,8 +85,10 @@ double Randomization::draw(std::mt19937_64& rng) const {
     return a + (b - a) * u;
   }
   for (int i = 0; i < kMaxRedraws; ++i) {
-    std::normal_distribution<double> normal(0.0, 1.0);
-    const double z = normal(rng);
+    // Box-Muller on two portable uniforms: the same draws with any standard library
+    const double u1 = static_cast<double>(rng() >> 11) * 0x1.0p-53;
+    const double u2 = static_cast<double>(rng() >> 11) * 0x1.0p-53;
+    const double z = std::sqrt(-2.0 * std::log1p(-u1)) * std::cos(2.0 * M_PI * u2);
     const double v = distribution == Distribution::kNormal ? a + b * z : a * std::exp(b * z);
     if (v >= min && v <= max) return v;
   }

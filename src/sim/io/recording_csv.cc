@@ -30,6 +30,7 @@ void read_header(const std::string& line, const std::string& where, Recording* r
   if (*time_column == names.size()) {
     throw InputError(where + ": the header has no time_s column (columns: " + trim_cell(line) + ")");
   }
+  if (r->channels.empty()) throw InputError(where + ": the header names no channel besides time_s");
   r->samples.resize(r->channels.size());
 }
 

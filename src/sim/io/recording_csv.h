@@ -4,7 +4,7 @@
 // trial_log.h lists them), in that file's units. Any sampling rate, also uneven; an empty
 // cell is a sample that channel lacks (a gap, or a channel that started late). Lines starting
 // with '#' and blank lines are skipped.
-// Refused, naming the file and line: no `time_s` column, a column named twice, a row with
+// Refused, naming the file and line: no `time_s` column, no other column, a column named twice, a row with
 // another number of cells than the header, a cell that is not a finite number ("nan", "inf",
 // text), a time that does not increase strictly, a time before 0, a channel with no samples,
 // fewer than two rows.

@@ -194,21 +194,27 @@ void read_metrics(ConfigReader& in, Scenario* sc, bool has_drop) {
   make_metric_sets(*sc);   // throws "<file>: metrics ..." for an unknown set or missing events
 }
 
-// A --set of a plant's field (muscles.<m>.plant.<table>.<field>) on a scenario that names
-// the plant by its path alone: the path becomes muscles.<m>.plant.file first.
-void nest_plant_paths(ConfigReader& in, const std::vector<std::string>& overrides) {
+// The overrides in order, a plant's two forms kept apart: a --set of a plant's field
+// (muscles.<m>.plant.<table>.<field>) where the plant is a path alone makes the path
+// muscles.<m>.plant.file first; a --set of the path where the plant is a table already (its
+// fields changed) sets its file.
+void apply_scenario_overrides(ConfigReader& in, const std::vector<std::string>& overrides) {
   for (const std::string& o : overrides) {
-    const std::vector<std::string> parts = split_key(o.substr(0, o.find('=')));
-    if (parts.size() > 3 && parts[0] == "muscles" && parts[2] == "plant") {
-      in.nest_value("muscles." + parts[1] + ".plant", "file");
-    }
+    const std::size_t eq = o.find('=');
+    const std::string key = o.substr(0, eq);
+    const std::vector<std::string> parts = split_key(key);
+    const bool plant = parts.size() >= 3 && parts[0] == "muscles" && parts[2] == "plant";
+    if (plant && parts.size() > 3) in.nest_value("muscles." + parts[1] + ".plant", "file");
+    const std::string value = eq == std::string::npos ? "" : o.substr(o.find_first_not_of(' ', eq + 1));
+    const bool path = !value.empty() && (value[0] == '"' || value[0] == '\'');
+    in.apply_override(plant && parts.size() == 3 && path && in.is_table(key)
+                          ? key + ".file=" + value : o);
   }
 }
 
 Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrides,
                        bool lines_needed = true) {
-  nest_plant_paths(in, overrides);
-  in.apply_overrides(overrides);
+  apply_scenario_overrides(in, overrides);
   Scenario sc;
   sc.path = in.name();
   const std::int64_t seed = in.get_int("seed", 1);

@@ -8,6 +8,7 @@
 
 #include <ceres/ceres.h>
 
+#include "base/input_error.h"
 #include "base/no_value.h"
 #include "sim/core/runner.h"
 #include "sim/optimize/identify_residuals.h"
@@ -23,8 +24,8 @@ double seconds_since(Clock::time_point t0) {
 
 // A failed point's fitness for CMA-ES: worse than any point whose trials ran.
 constexpr double kFailedCost = 1e300;
-// The central difference's step in the unit box (relative to the coordinate; this at 0): wide
-// enough to step over the chamber ODE's tolerance, fine enough for 0.1 % of a range.
+// The finite difference's step in the unit box: wide enough to step over the chamber ODE's
+// tolerance, fine enough for 0.1 % of a parameter's range.
 constexpr double kDifferenceStep = 1e-3;
 
 // The global phase's objective: a point's cost (sum of squares).
@@ -80,18 +81,50 @@ std::vector<double> global_search(const IdentifyDefinition& def, IdentifyResidua
   return best ? best->unit : std::vector<double>(n, 0.5);
 }
 
-// Ceres's view of the residuals: one parameter block of size 1 per parameter.
-struct PolishCost {
-  IdentifyResiduals* residuals;
-  std::size_t n;
-  bool operator()(double const* const* params, double* out) const {
+// Ceres's view of the residuals: one parameter block of size 1 per parameter, the Jacobian by
+// differences of an absolute step in the unit box, central inside it and one-sided within
+// kDifferenceStep of an edge (never a point outside the box, which the parameters' ranges
+// may not allow). Ceres's own numeric differences scale the step with the coordinate, which
+// near 0 is far finer than the chamber ODE's tolerance.
+class UnitBoxCost : public ceres::CostFunction {
+ public:
+  UnitBoxCost(IdentifyResiduals& residuals, std::size_t n) : residuals_(residuals) {
+    for (std::size_t i = 0; i < n; ++i) mutable_parameter_block_sizes()->push_back(1);
+    set_num_residuals(static_cast<int>(residuals.count()));
+  }
+
+  bool Evaluate(double const* const* params, double* out, double** jacobians) const override {
+    const std::size_t n = parameter_block_sizes().size();
     std::vector<double> unit(n);
     for (std::size_t i = 0; i < n; ++i) unit[i] = params[i][0];
-    const std::vector<double> r = residuals->at(unit, "polish");
-    if (r.empty()) return false;
-    std::copy(r.begin(), r.end(), out);
+    const std::vector<double> r0 = residuals_.at(unit, "polish");
+    if (r0.empty()) return false;
+    std::copy(r0.begin(), r0.end(), out);
+    if (!jacobians) return true;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (jacobians[j] && !column(unit, j, r0, jacobians[j])) return false;
+    }
     return true;
   }
+
+ private:
+  // d r / d u_j into `column` (num_residuals values)
+  bool column(const std::vector<double>& unit, std::size_t j, const std::vector<double>& r0,
+              double* column) const {
+    const double h = kDifferenceStep;
+    const bool up = unit[j] + h <= 1.0, down = unit[j] - h >= 0.0;
+    std::vector<double> plus = unit, minus = unit;
+    plus[j] += up ? h : 0.0;
+    minus[j] -= down ? h : 0.0;
+    const std::vector<double> rp = up ? residuals_.at(plus, "polish") : r0;
+    const std::vector<double> rm = down ? residuals_.at(minus, "polish") : r0;
+    if (rp.empty() || rm.empty()) return false;
+    const double width = plus[j] - minus[j];
+    for (std::size_t i = 0; i < r0.size(); ++i) column[i] = (rp[i] - rm[i]) / width;
+    return true;
+  }
+
+  IdentifyResiduals& residuals_;
 };
 
 // The least-squares problem over `unit` (its storage), bounded to the box.
@@ -100,14 +133,8 @@ struct PolishProblem {
   ceres::Problem problem;
   std::vector<double*> blocks;
   PolishProblem(IdentifyResiduals& residuals, const std::vector<double>& start) : unit(start) {
-    ceres::NumericDiffOptions diff;
-    diff.relative_step_size = kDifferenceStep;
-    auto* cost = new ceres::DynamicNumericDiffCostFunction<PolishCost, ceres::CENTRAL>(
-        new PolishCost{&residuals, unit.size()}, ceres::TAKE_OWNERSHIP, diff);
-    for (std::size_t i = 0; i < unit.size(); ++i) cost->AddParameterBlock(1);
-    cost->SetNumResiduals(static_cast<int>(residuals.count()));
     for (double& u : unit) blocks.push_back(&u);
-    problem.AddResidualBlock(cost, nullptr, blocks);
+    problem.AddResidualBlock(new UnitBoxCost(residuals, unit.size()), nullptr, blocks);
     for (double* b : blocks) {
       problem.SetParameterLowerBound(b, 0, 0.0);
       problem.SetParameterUpperBound(b, 0, 1.0);
@@ -124,9 +151,13 @@ struct StopCallback : ceres::IterationCallback {
   }
 };
 
-std::string polish(const IdentifyDefinition& def, PolishProblem& p,
-                   const IdentifyRunOptions& options, bool* interrupted) {
-  if (def.polish_iterations == 0) return "no polish (polish_iterations = 0)";
+// Levenberg-Marquardt from p.unit; its brief report, interruption and failure into `result`.
+void polish(const IdentifyDefinition& def, PolishProblem& p, const IdentifyRunOptions& options,
+            IdentifyResult* result) {
+  if (def.polish_iterations == 0) {
+    result->polish_summary = "no polish (polish_iterations = 0)";
+    return;
+  }
   ceres::Solver::Options o;
   o.minimizer_type = ceres::TRUST_REGION;
   o.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
@@ -137,8 +168,9 @@ std::string polish(const IdentifyDefinition& def, PolishProblem& p,
   o.callbacks.push_back(&stop);
   ceres::Solver::Summary summary;
   ceres::Solve(o, &p.problem, &summary);
-  *interrupted = *interrupted || summary.termination_type == ceres::USER_FAILURE;
-  return summary.BriefReport();
+  result->interrupted = result->interrupted || summary.termination_type == ceres::USER_FAILURE;
+  result->polish_failed = summary.termination_type == ceres::FAILURE;
+  result->polish_summary = summary.BriefReport();
 }
 
 // The Jacobian's squared column norms at p.unit; empty if it cannot be evaluated.
@@ -215,8 +247,11 @@ std::vector<ChannelFit> channel_fits(const IdentifyDefinition& def,
     const IdentifyRecording& r = def.recordings[i];
     const std::vector<double> before = channel_rmse(r, sims[i]), after = channel_rmse(r, sims[n + i]);
     for (std::size_t c = 0; c < r.channels.size(); ++c) {
-      fits.push_back({r.name, r.data.channels[r.channels[c]], r.held_out,
-                      r.data.sample_count(r.channels[c]), before[c], after[c]});
+      ChannelFit f{r.name, r.data.channels[r.channels[c]], r.held_out,
+                   r.data.sample_count(r.channels[c]), before[c], after[c], {}, {}};
+      if (sims[i].failure.empty()) f.before = sims[i].values[c];
+      if (sims[n + i].failure.empty()) f.after = sims[n + i].values[c];
+      fits.push_back(std::move(f));
     }
   }
   return fits;
@@ -235,11 +270,15 @@ IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
   result.global_s = seconds_since(t0);
   t0 = Clock::now();
   PolishProblem problem(residuals, start);
-  if (!result.interrupted) result.polish_summary = polish(def, problem, options, &result.interrupted);
+  if (!result.interrupted) polish(def, problem, options, &result);
   result.unit = problem.unit;
   for (double& u : result.unit) u = std::clamp(u, 0.0, 1.0);
   const std::vector<double> final_residuals = residuals.at(result.unit, "polish");
   result.cost_final = sum_of_squares(final_residuals);
+  if (!std::isfinite(result.cost_final) && !result.interrupted) {
+    throw InputError(def.file + ": no point of the search ran its recordings' trials to the end "
+                     "(the first failure: " + residuals.first_failure() + ")");
+  }
   result.polish_s = seconds_since(t0);
   result.simulated = residuals.simulated;
   result.cached = residuals.cached;

@@ -45,6 +45,7 @@ struct ChannelFit {
   bool held_out = false;
   std::size_t samples = 0;
   double rmse_before = 0.0, rmse_after = 0.0;   // in the channel's unit
+  std::vector<double> before, after;            // simulated at the recording's times (NaN: gap)
 };
 
 struct IdentifyResult {
@@ -56,9 +57,12 @@ struct IdentifyResult {
   std::int64_t simulated = 0, cached = 0;       // points simulated, points answered stored
   double global_s = 0.0, polish_s = 0.0, check_s = 0.0;   // wall time of each phase
   std::string polish_summary;                   // Ceres's brief report
+  bool polish_failed = false;                   // Ceres ended in FAILURE: the global result stands
   bool interrupted = false;
 };
 
+// Throws InputError "<file>: no point of the search ran ..." when no point's trials all ran
+// to the end (a range no scenario allows, a model that diverges everywhere).
 IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
                             const IdentifyRunOptions& options);
 

@@ -1,6 +1,8 @@
 // identify_file.cc: see identify_file.h.
 #include "sim/optimize/identify_file.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -51,6 +53,9 @@ std::vector<std::size_t> read_channels(const TableEntry& e, const Recording& dat
     if (c == data.channels.size()) {
       e.in.fail(e.where + "channels", "names " + name + ", which " + data.path + " does not hold");
     }
+    if (std::find(out.begin(), out.end(), c) != out.end()) {
+      e.in.fail(e.where + "channels", "names " + name + " twice");
+    }
     out.push_back(c);
   }
   return out;
@@ -94,11 +99,41 @@ void read_recordings(ConfigReader& in, IdentifyDefinition* def) {
   in.check(fitted, "recording", "needs at least one [[recording]] that is not held_out");
 }
 
-// Every recording's scenario loads with the parameters mid-box, logs its channels and lasts
-// as long as the recording.
-void check_recordings(const IdentifyDefinition& def) {
+// The settings a recording's scenario is checked at: every parameter mid-box, then each at
+// its bounds with the others mid-box.
+std::vector<std::vector<double>> checked_settings(const IdentifyDefinition& def) {
   std::vector<double> middle;
   for (const SearchParameter& p : def.parameters) middle.push_back(value_at(p, 0.5));
+  std::vector<std::vector<double>> out = {middle};
+  for (std::size_t i = 0; i < def.parameters.size(); ++i) {
+    for (double u : {0.0, 1.0}) {
+      out.push_back(middle);
+      out.back()[i] = value_at(def.parameters[i], u);
+    }
+  }
+  return out;
+}
+
+// `recording`'s scenario at each checked setting loads and binds its model (InputError
+// "<where>: ..." otherwise); the one mid-box is returned.
+Scenario checked_scenario(const IdentifyDefinition& def, const IdentifyRecording& r,
+                          const std::string& where) {
+  Scenario middle;
+  for (const std::vector<double>& values : checked_settings(def)) {
+    try {
+      Scenario sc = load_scenario_text(def.base_text, def.base_path, def.overrides_at(r, values));
+      load_trial_model(sc);
+      if (middle.path.empty()) middle = std::move(sc);
+    } catch (const InputError& e) {
+      throw InputError(where + ": " + e.what());
+    }
+  }
+  return middle;
+}
+
+// Every recording's scenario loads with the parameters mid-box and at each bound, logs its
+// channels and lasts as long as the recording.
+void check_recordings(const IdentifyDefinition& def) {
   for (std::size_t i = 0; i < def.recordings.size(); ++i) {
     const IdentifyRecording& r = def.recordings[i];
     const std::string where = def.file + ": recording[" + std::to_string(i) + "] (" + r.name + ")";
@@ -107,12 +142,7 @@ void check_recordings(const IdentifyDefinition& def) {
         if (s.rfind(p.key + "=", 0) == 0) throw InputError(where + ": set gives " + p.key + ", a parameter");
       }
     }
-    Scenario sc;
-    try {
-      sc = load_scenario_text(def.base_text, def.base_path, def.overrides_at(r, middle));
-    } catch (const InputError& e) {
-      throw InputError(where + ": " + e.what());
-    }
+    const Scenario sc = checked_scenario(def, r, where);
     const std::vector<std::string> logged = trial_log_layout(load_trial_model(sc), sc).columns;
     for (std::size_t c : r.channels) {
       const std::string& name = r.data.channels[c];

@@ -99,7 +99,7 @@ std::string identify_markdown(const IdentifyDefinition& def, const IdentifyResul
 }
 
 void write_identify_outputs(const IdentifyDefinition& def, const IdentifyResult& r,
-                            const StagedOutputs& out) {
+                            const StagedOutputs& out, bool plots) {
   std::vector<double> values;
   for (const IdentifiedParameter& p : r.parameters) values.push_back(p.value);
   std::string header = "# pamsim identify: " + def.file + ", from the recordings";
@@ -114,6 +114,14 @@ void write_identify_outputs(const IdentifyDefinition& def, const IdentifyResult&
   write_file_atomically(out.path("identify.csv"), identify_parameters_csv(r));
   write_file_atomically(out.path("identify_fits.csv"), identify_fits_csv(r));
   write_file_atomically(out.path("identify.md"), identify_markdown(def, r));
+  if (!plots) return;
+  for (const IdentifyRecording& rec : def.recordings) {
+    std::vector<const ChannelFit*> fits;
+    for (const ChannelFit& f : r.fits) {
+      if (f.recording == rec.name) fits.push_back(&f);
+    }
+    write_recording_plot(out.path("recording_" + rec.name + ".png"), rec, fits);
+  }
 }
 
 }  // namespace pamsim

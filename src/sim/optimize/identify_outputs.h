@@ -7,6 +7,7 @@
 //   identify_fits.csv  per recording and channel: fitted or held out, samples, RMSE before
 //                      (the base scenario as it stands) and after, in the channel's unit
 //   identify.md        both tables, and the search's cost and time
+//   recording_<name>.png  each recording's channels: recorded, before and after (plots on)
 #pragma once
 
 #include <string>
@@ -19,14 +20,20 @@ namespace pamsim {
 class StagedOutputs;
 
 inline const std::vector<std::string> kIdentifyOutputs = {
-    "identified.toml", "identify.csv", "identify_fits.csv", "identify.md"};
+    "identified.toml", "identify.csv", "identify_fits.csv", "identify.md", "recording_*.png",
+    "recording_*.svg", "recording_*.pdf"};
 
 std::string identify_parameters_csv(const IdentifyResult& result);
 std::string identify_fits_csv(const IdentifyResult& result);
 std::string identify_markdown(const IdentifyDefinition& def, const IdentifyResult& result);
 
-// All of them into the staging folder of `out` (published by the caller).
+// All of them into the staging folder of `out` (published by the caller); the figures only
+// with `plots`.
 void write_identify_outputs(const IdentifyDefinition& def, const IdentifyResult& result,
-                            const StagedOutputs& out);
+                            const StagedOutputs& out, bool plots);
+
+// recording_<name>.png: `fits` are the recording's channels' (identify_plot.cc).
+void write_recording_plot(const std::string& png_path, const IdentifyRecording& recording,
+                          const std::vector<const ChannelFit*>& fits);
 
 }  // namespace pamsim

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
+#include "base/input_error.h"
 #include "base/no_value.h"
 #include "sim/core/runner.h"
 #include "sim/core/trial.h"
@@ -26,15 +28,16 @@ double interpolate(const Trajectory& log, std::size_t c, double t, std::size_t* 
 
 // the recorded channel's population standard deviation, 1 if it is (nearly) constant
 double channel_scale(const std::vector<double>& samples) {
-  double sum = 0, sum2 = 0;
+  double sum = 0;
   int n = 0;
   for (double v : samples) {
-    if (std::isnan(v)) continue;
-    sum += v;
-    sum2 += v * v;
-    ++n;
+    if (!std::isnan(v)) sum += v, ++n;
   }
-  const double mean = sum / n, var = std::max(0.0, sum2 / n - mean * mean);
+  const double mean = sum / n;
+  double var = 0;
+  for (double v : samples) {
+    if (!std::isnan(v)) var += (v - mean) * (v - mean) / n;
+  }
   return var > 1e-24 ? std::sqrt(var) : 1.0;
 }
 
@@ -61,7 +64,7 @@ SimulatedRecording simulate_recording(const IdentifyDefinition& def, const Ident
       }
       out.values.push_back(std::move(v));
     }
-  } catch (const std::exception& e) {   // a value the scenario refuses, or a model that fails
+  } catch (const InputError& e) {   // a value the scenario refuses, or a model that fails
     out.failure = e.what();
   }
   return out;
@@ -109,6 +112,10 @@ std::vector<double> IdentifyResiduals::at(const std::vector<double>& unit_in, co
   std::vector<double> unit = unit_in;
   for (double& u : unit) u = std::clamp(u, 0.0, 1.0);
   if (const auto stored = db_.find(unit)) {
+    if (!stored->empty() && stored->size() != count_) {
+      throw std::runtime_error(db_.path() + ": a stored point has " + std::to_string(stored->size()) +
+                               " residuals, not " + std::to_string(count_) + " (a damaged database)");
+    }
     ++cached;
     return *stored;
   }
@@ -121,6 +128,7 @@ std::vector<double> IdentifyResiduals::at(const std::vector<double>& unit_in, co
   std::vector<double> residuals;
   for (std::size_t k = 0; k < fitted_.size(); ++k) {
     if (!sims[k].failure.empty()) {
+      if (first_failure_.empty()) first_failure_ = sims[k].failure;
       residuals.clear();
       break;
     }

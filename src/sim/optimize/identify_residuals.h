@@ -19,7 +19,8 @@
 namespace pamsim {
 
 // A recording's chosen channels simulated at its sample times (NaN where it has no sample),
-// or the reason its trial did not run to the end.
+// or the reason its trial did not run to the end (a divergence, or a value the scenario
+// refuses: InputError; other errors propagate, and nothing is stored for the point).
 struct SimulatedRecording {
   std::vector<std::vector<double>> values;   // per chosen channel, per row
   std::string failure;                       // "" when the trial ran to the end
@@ -44,6 +45,8 @@ class IdentifyResiduals {
   std::vector<double> values_at(const std::vector<double>& unit) const;
 
   std::int64_t simulated = 0, cached = 0;   // points simulated, points answered from the db
+  // Why the first point that failed failed ("" if none did, or it was stored before).
+  const std::string& first_failure() const { return first_failure_; }
 
  private:
   const IdentifyDefinition& def_;
@@ -52,6 +55,7 @@ class IdentifyResiduals {
   std::size_t count_ = 0;
   std::vector<std::size_t> fitted_;                 // recordings fitted, in order
   std::vector<std::vector<double>> scale_;          // per recording, per chosen channel
+  std::string first_failure_;
 };
 
 // Sum of squares; +inf for an empty (failed) vector.

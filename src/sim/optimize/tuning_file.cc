@@ -143,8 +143,6 @@ void check_setting(const TuneDefinition& def, const std::vector<double>& values,
   }
 }
 
-// Every reference, and every parameter at both bounds (the others mid-range), must make a
-// valid scenario (a bad key fails here).
 // With [[randomize]], the middle of the box on each drawn arm, tuning and held out.
 void check_draws(const TuneDefinition& def) {
   if (def.randomize.empty()) return;
@@ -167,6 +165,8 @@ void check_draws(const TuneDefinition& def) {
   }
 }
 
+// Every reference, and every parameter at both bounds (the others mid-range), must make a
+// valid scenario (a bad key fails here).
 void check_settings(const TuneDefinition& def) {
   check_draws(def);
   for (std::size_t i = 0; i < def.references.size(); ++i) {
