@@ -5,11 +5,13 @@ the antagonist's bladder wall 2.7 mm (model: 3.0), the agonist's 2.2 mm (model: 
 shoulder's damping 0.16 N m s/rad (model: 0.1). Each recording is one `pamsim run` of
 arm.toml with its commands, under another noise seed than the model's (a lab's noise is not
 the model's), cut down the way a lab's logger would give it: some channels only, its own
-sampling rate, 5 significant digits, and one with a gap.
+sampling rate, 5 significant digits, and one with a gap; and a static tensile test of the
+true agonist (`pamsim tensile` on its plant file with the wall changed, 0.2-0.6 MPa, with the
+noise scripts/fit-estimators.sh gives the lab's sensors).
 
     python3 examples/identify/make_recordings.py [PAMSIM]   (about 2 s; default build/src/sim/pamsim)
 
-writes examples/identify/recordings/{steps,sine,ramps}.csv.
+writes examples/identify/recordings/{steps,sine,ramps,tensile_agonist}.csv.
 """
 import csv
 import os
@@ -59,12 +61,31 @@ def record(pamsim, name, sets, channels, rate_hz, gap, out_dir):
     return out
 
 
+def tensile(pamsim, out_dir):
+    """The true agonist's tensile test: its plant file with the true wall."""
+    with open(os.path.join(HERE, "..", "..", "models", "pams", "plant_agonist.toml")) as f:
+        text = f.read()
+    assert "wall_thickness_mm = 2.0" in text
+    text = text.replace("wall_thickness_mm = 2.0", "wall_thickness_mm = 2.2")
+    out = os.path.join(out_dir, "tensile_agonist.csv")
+    with tempfile.TemporaryDirectory() as tmp:
+        plant = os.path.join(tmp, "plant_agonist_true.toml")
+        with open(plant, "w") as f:
+            f.write(text)
+        subprocess.run([pamsim, "tensile", "--plant", plant, "-o", out, "--force", "--seed", "7",
+                        "--pressures-MPa", "0.2,0.3,0.4,0.5,0.6", "--max-deformation-mm", "15",
+                        "--noise-pressure-MPa", "0.001", "--noise-force-N", "0.5",
+                        "--noise-length-mm", "0.01"], check=True, stdout=subprocess.DEVNULL)
+    return out
+
+
 def main():
     pamsim = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "..", "build", "src", "sim", "pamsim")
     out_dir = os.path.join(HERE, "recordings")
     os.makedirs(out_dir, exist_ok=True)
     for name, (sets, channels, rate, gap) in RECORDINGS.items():
         print(record(pamsim, name, sets, channels, rate, gap, out_dir))
+    print(tensile(pamsim, out_dir))
 
 
 if __name__ == "__main__":

@@ -81,28 +81,45 @@ std::vector<TensileRow> run_tensile_test(const AvbdlParams& plant,
                 format_value(options.max_deformation_mm));
   }
   const auto l_n = [&plant](double p) { return avbdl_free_length(plant, p); };
-  // Maxwell-slip elements follow the stroke set point by set point (the law is rate
-  // independent, so the steps' size does not matter), unloaded at each pressure's start
-  std::array<double, kMaxSlipElements> slip{};
-  double last_l = 0.0;
+  PlantStroke pulled(plant);
   const auto force = [&](double p, double d, StrokeDirection stroke) {
-    const double l = avbdl_free_length(plant, p) + d;
-    if (plant.friction.model == FrictionModel::kMaxwellSlip) {
-      if (d == 0.0 && stroke == StrokeDirection::kLoading) {
-        slip.fill(0.0);
-      } else {
-        maxwell_slip_advance(plant.friction.slip, l - last_l, slip.data());
-      }
-      last_l = l;
-      return avbdl_static_force(plant, p, l) +
-             avbdl_slip_friction_force(plant, p, l, slip.data());
-    }
-    const StretchDirection motion = stroke == StrokeDirection::kLoading
-                                        ? StretchDirection::kExtension
-                                        : StretchDirection::kContraction;
-    return avbdl_static_force(plant, p, l) + avbdl_friction_force(plant, p, l, motion);
+    return pulled.force(p, avbdl_free_length(plant, p) + d, stroke,
+                        d == 0.0 && stroke == StrokeDirection::kLoading);
   };
   return run_tensile_test(StrokeForceLaw(force), l_n, options);
+}
+
+double PlantStroke::force(double p, double l, StrokeDirection stroke, bool start) {
+  // Maxwell-slip elements follow the stroke set point by set point (the law is rate
+  // independent, so the steps' size does not matter), unloaded at each loading start
+  if (plant_.friction.model == FrictionModel::kMaxwellSlip) {
+    if (start) {
+      slip_.fill(0.0);
+    } else {
+      maxwell_slip_advance(plant_.friction.slip, l - last_l_, slip_.data());
+    }
+    last_l_ = l;
+    return avbdl_static_force(plant_, p, l) + avbdl_slip_friction_force(plant_, p, l, slip_.data());
+  }
+  const StretchDirection motion = stroke == StrokeDirection::kLoading
+                                      ? StretchDirection::kExtension
+                                      : StretchDirection::kContraction;
+  return avbdl_static_force(plant_, p, l) + avbdl_friction_force(plant_, p, l, motion);
+}
+
+std::vector<double> plant_forces_along(const AvbdlParams& plant,
+                                       const std::vector<TensileRow>& rows) {
+  PlantStroke pulled(plant);
+  std::vector<double> forces;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const TensileRow& r = rows[i];
+    // a loading stroke starts at the first row and after an unloading one
+    const bool start = r.direction == StrokeDirection::kLoading &&
+                       (i == 0 || rows[i - 1].direction == StrokeDirection::kUnloading);
+    forces.push_back(pulled.force(units::mpa_to_pa(r.pressure_mpa), units::mm_to_m(r.length_mm),
+                                  r.direction, start));
+  }
+  return forces;
 }
 
 std::vector<TensileRow> run_tensile_test(const StrokeForceLaw& force,

@@ -5,11 +5,13 @@
 // hysteresis and Gaussian sensor noise make the data look like a real test.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
 
 #include "pam_actuator/avbdl.h"
+#include "pam_actuator/maxwell_slip.h"
 #include "pam_actuator/spring_model.h"
 
 namespace pamsim {
@@ -67,6 +69,29 @@ std::vector<TensileRow> run_tensile_test(const StrokeForceLaw& force,
 // the estimator's spring law.
 std::vector<TensileRow> run_tensile_test(const AvbdlParams& plant,
                                          const TensileTestOptions& options);
+
+// A plant pulled along a tensile test's set points in order: its static law plus its
+// friction on the stroke (tanh friction by the stroke's direction; Maxwell-slip elements
+// walked from set point to set point, unloaded where a loading stroke starts from d = 0).
+// What run_tensile_test(AvbdlParams) measures, and what `pamsim identify` compares a
+// recorded tensile test's forces with.
+class PlantStroke {
+ public:
+  explicit PlantStroke(const AvbdlParams& plant) : plant_(plant) {}
+  // The force [N] at gauge pressure p [Pa] and length l [m] on `stroke`; `start`: the first
+  // point of a loading stroke (the slip elements unloaded).
+  double force(double p_pa, double length_m, StrokeDirection stroke, bool start);
+
+ private:
+  const AvbdlParams& plant_;
+  std::array<double, kMaxSlipElements> slip_{};
+  double last_l_ = 0.0;
+};
+
+// The plant's forces [N] at the rows' recorded pressures and lengths, in their order (a
+// loading stroke starts at the first row and after an unloading row).
+std::vector<double> plant_forces_along(const AvbdlParams& plant,
+                                       const std::vector<TensileRow>& rows);
 
 // Same with the spring model's Eq. (2) and Eq. (3)-(5).
 std::vector<TensileRow> run_tensile_test(const SpringModel& model,

@@ -1,6 +1,6 @@
 // identify_test.cc: `pamsim identify` (issue 26) on a recording made by pamsim from an arm
 // whose antagonist's wall is 2.7 mm where the model says 3.0: the wall is recovered within
-// its standard error, a parameter the recording cannot see (the held ball's mass) is reported
+// its standard error (and the agonist's from a tensile test alone), a parameter the recording cannot see (the held ball's mass) is reported
 // as not determined, the held-out recording is predicted, a stopped run resumed gives the
 // uninterrupted run's result bit for bit, and every bad identification file is one line,
 // exit 2, no database.
@@ -16,10 +16,15 @@
 #include "base/format.h"
 #include "base/input_error.h"
 #include "cli_util.h"
+#include "pam_actuator/plant_params.h"
+#include "pam_actuator/tensile_csv.h"
+#include "pam_actuator/tensile_test.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
 #include "sim/io/scenario_file.h"
+#include "sim/io/staged_outputs.h"
 #include "sim/optimize/identify.h"
+#include "sim/optimize/identify_outputs.h"
 
 namespace pamsim {
 namespace {
@@ -89,6 +94,47 @@ TEST(IdentifyTest, RecoversTheWallAndSaysWhatTheRecordingCannotSee) {
   EXPECT_LE(r.cost_final, r.cost_global);
 }
 
+// A tensile test alone: the agonist's wall from its plant's forces at the recorded pressures
+// and lengths (no trial runs).
+TEST(IdentifyTest, ATensileTestAloneGivesThePlantsWall) {
+  const fs::path dir = pamsim_test::fresh_dir("identify_tensile");
+  AvbdlParams truth = load_plant_params(std::string(PAMSIM_SOURCE_DIR) +
+                                        "/models/pams/plant_agonist.toml").avbdl;
+  truth.wall_thickness_m = 2.2e-3;
+  TensileTestOptions test;
+  test.pressures_mpa = {0.2, 0.4, 0.6};
+  test.max_deformation_mm = 10.0;
+  test.noise_force_n = 0.5;
+  test.seed = 3;
+  pamsim_test::write_text(dir / "tensile.csv", tensile_rows_to_csv(run_tensile_test(truth, test)));
+  pamsim_test::write_text(dir / "id.toml",
+      "base = \"" + kArm + "\"\ngenerations = 2\npopulation = 5\npolish_iterations = 10\n"
+      "[[parameter]]\nkey = \"muscles.agonist.plant.geometry.wall_thickness_mm\"\nfrom = 1.5\nto = 3.0\n"
+      "[[tensile]]\nmuscle = \"agonist\"\nfile = \"tensile.csv\"\n");
+  const IdentifyDefinition def = load_identify_definition((dir / "id.toml").string());
+  const IdentifyResult r = run(def, (dir / "id.db").string(), false);
+  ASSERT_EQ(r.parameters.size(), 1u);
+  EXPECT_NEAR(r.parameters[0].value, 2.2, std::max(3 * r.parameters[0].std_error, 0.005));
+  ASSERT_EQ(r.fits.size(), 1u);
+  EXPECT_EQ(r.fits[0].recording, "tensile_agonist");
+  EXPECT_LT(r.fits[0].rmse_after, 0.7) << "about the 0.5 N noise";
+  EXPECT_GT(r.fits[0].rmse_before, 3 * r.fits[0].rmse_after);
+  // the outputs: the plant file with the identified wall, a plant file pamsim reads
+  {
+    StagedOutputs staged((dir / "out").string(), kIdentifyOutputs);
+    write_identify_outputs(def, r, staged, false);
+    staged.publish();
+  }
+  const PlantParams written = load_plant_params((dir / "out" / "plant_agonist.toml").string());
+  EXPECT_DOUBLE_EQ(written.avbdl.wall_thickness_m, r.parameters[0].value * 1e-3);
+  EXPECT_FALSE(fs::exists(dir / "out" / "plant_antagonist.toml")) << "no field of it identified";
+  EXPECT_FALSE(fs::exists(dir / "out" / "pneumatics.toml"));
+  const Scenario identified = load_scenario((dir / "out" / "identified.toml").string());
+  for (const MuscleSpec& m : identified.muscles) {
+    if (m.actuator == "agonist") EXPECT_DOUBLE_EQ(m.plant.wall_thickness_m, written.avbdl.wall_thickness_m);
+  }
+}
+
 TEST(IdentifyTest, AStoppedRunResumedIsTheUninterruptedOne) {
   const fs::path dir = pamsim_test::fresh_dir("identify_resume");
   const IdentifyDefinition def = load_identify_definition(identify_file(dir));
@@ -112,6 +158,8 @@ TEST(IdentifyTest, BadFilesAreOneLineExitTwoAndNoDatabase) {
   pamsim_test::write_text(dir / "back.csv", "time_s,angle_deg\n0,1\n0.5,2\n0.4,3\n");
   pamsim_test::write_text(dir / "notime.csv", "t,angle_deg\n0,1\n0.5,2\n");
   pamsim_test::write_text(dir / "rad.csv", "time_s,angle_rad\n0,1\n0.5,2\n");
+  pamsim_test::write_text(dir / "tensile.csv", "pressure_MPa,deformation_mm,force_N,length_mm\n"
+                                               "0.4,0,10,150\n0.4,2.5,20,152.5\n");
   auto with = [&](const std::string& from, const std::string& to) {
     std::string t = good;
     t.replace(t.find(from), from.size(), to);
@@ -130,7 +178,10 @@ TEST(IdentifyTest, BadFilesAreOneLineExitTwoAndNoDatabase) {
            {with("file = \"steps.csv\"", "file = \"steps.csv\"\nheld_out = true"), "needs at least one [[recording]] that is not held_out"},
            {with("file = \"steps.csv\"", "file = \"missing.csv\""), "missing.csv"},
            {with("overrides = [\"sim.duration_s=2\"]", "overrides = [\"sim.duration_s=1\"]"), "the recording lasts 1.98 s, its scenario 1 s"},
-           {good + "[[tensile]]\nmuscle = \"agonist\"\nfile = \"t.csv\"\n", "tensile"}}) {
+           {good + "[[tensile]]\nmuscle = \"agonist\"\nfile = \"t.csv\"\n", "tensile[0].file"},
+           {good + "[[tensile]]\nmuscle = \"elbow\"\nfile = \"steps.csv\"\n", "tensile[0].file"},
+           {good + "[[tensile]]\nmuscle = \"elbow\"\nfile = \"tensile.csv\"\n",
+            "tensile[0].muscle \"elbow\" is not a muscle of the base scenario (it has agonist, antagonist)"}}) {
     SCOPED_TRACE(says);
     pamsim_test::write_text(dir / "bad.toml", text);
     const pamsim_test::CliResult r = pamsim_test::run_pamsim(

@@ -87,9 +87,8 @@ TEST(TuneRandomizeTest, EveryPointTriedSeesTheSameDrawnArms) {
   TuneDb plain_db = TuneDb::create(plain_dir + "/tune.db", nominal);
   run_tune(nominal, plain_db, o);
   std::set<double> nominal_ends;
-  for (const auto& [seed, angle] : final_angles(plain_dir + "/tune.db").begin()->second) {
-    nominal_ends.insert(angle);
-  }
+  const auto nominal_angles = final_angles(plain_dir + "/tune.db");
+  for (const auto& [seed, angle] : nominal_angles.begin()->second) nominal_ends.insert(angle);
   EXPECT_EQ(nominal_ends.size(), 1u);
   EXPECT_EQ(arms.count(*nominal_ends.begin()), 0u);
 }

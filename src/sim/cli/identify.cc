@@ -96,7 +96,7 @@ void identify(const IdentifyOptions& opt) {
             << " from the database; " << format_value(r.global_s) << " s CMA-ES, "
             << format_value(r.polish_s) << " s polish, " << format_value(r.check_s) << " s checks\n";
   std::cout << "outputs: " << where.out << "/{identified.toml,identify.csv,identify_fits.csv,identify.md"
-            << (plots ? ",recording_*.png" : "") << "}\n";
+            << (plots ? ",recording_*.png" : "") << "} and the identified plant/pneumatics files\n";
 }
 
 }  // namespace

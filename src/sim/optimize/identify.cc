@@ -230,6 +230,28 @@ void fill_uncertainty(PolishProblem& p, double s2, std::vector<IdentifiedParamet
   }
 }
 
+// RMS of a - b, NaN if a is empty (its trial or plant failed)
+double rms_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.empty()) return kNaN;
+  double sum = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(sum / static_cast<double>(a.size()));
+}
+
+// Every tensile test's forces before (the base scenario) and after: "tensile_<muscle>", force_N.
+void add_tensile_fits(const IdentifyDefinition& def, const std::vector<double>& values,
+                      std::vector<ChannelFit>* fits) {
+  for (const IdentifyTensile& t : def.tensile) {
+    std::vector<double> recorded;
+    for (const TensileRow& r : t.rows) recorded.push_back(r.force_n);
+    std::string failure;
+    const std::vector<double> before = tensile_forces(def, t, def.overrides, &failure);
+    const std::vector<double> after = tensile_forces(def, t, def.overrides_at(values), &failure);
+    fits->push_back({"tensile_" + t.muscle, "force_N", false, t.rows.size(),
+                     rms_difference(before, recorded), rms_difference(after, recorded), {}, {}});
+  }
+}
+
 // Every recording's channels before (the base scenario) and after (the identified values).
 std::vector<ChannelFit> channel_fits(const IdentifyDefinition& def,
                                      const std::vector<double>& values, int threads) {
@@ -254,6 +276,7 @@ std::vector<ChannelFit> channel_fits(const IdentifyDefinition& def,
       fits.push_back(std::move(f));
     }
   }
+  add_tensile_fits(def, values, &fits);
   return fits;
 }
 

@@ -14,6 +14,7 @@
 #include "base/input_error.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
+#include "pam_actuator/tensile_csv.h"
 #include "sim/io/scenario_file.h"
 
 namespace pamsim {
@@ -85,18 +86,58 @@ IdentifyRecording read_recording(ConfigReader& in, const TableEntry& e) {
   return r;
 }
 
+void read_tensile(ConfigReader& in, IdentifyDefinition* def) {
+  const TableArray tables(in, "tensile");
+  for (const TableEntry& e : tables.entries({"muscle", "file", "weight"})) {
+    IdentifyTensile t;
+    t.muscle = e.text("muscle", true);
+    const std::string file = e.text("file", true);
+    t.file = fs::path(file).is_absolute() ? file : (fs::path(in.name()).parent_path() / file).string();
+    try {
+      t.rows = read_tensile_csv(t.file);
+    } catch (const InputError& err) {
+      in.fail(e.where + "file", std::string("(") + err.what() + ")");
+    }
+    t.weight = e.number("weight").value_or(1.0);
+    if (!(t.weight > 0)) in.fail(e.where + "weight", "must be > 0, got " + format_value(t.weight));
+    def->tensile.push_back(std::move(t));
+  }
+}
+
+// Each tensile test's muscle is one of the base scenario's, with a plant file.
+void check_tensile(const IdentifyDefinition& def) {
+  if (def.tensile.empty()) return;
+  std::vector<double> middle;
+  for (const SearchParameter& p : def.parameters) middle.push_back(value_at(p, 0.5));
+  const Scenario sc = load_scenario_text(def.base_text, def.base_path, def.overrides_at(middle));
+  for (std::size_t i = 0; i < def.tensile.size(); ++i) {
+    const std::string where = def.file + ": tensile[" + std::to_string(i) + "].muscle ";
+    std::string names;
+    const MuscleSpec* found = nullptr;
+    for (const MuscleSpec& m : sc.muscles) {
+      names += (names.empty() ? "" : ", ") + m.actuator;
+      if (m.actuator == def.tensile[i].muscle) found = &m;
+    }
+    if (!found) {
+      throw InputError(where + "\"" + def.tensile[i].muscle + "\" is not a muscle of the base "
+                       "scenario (it has " + names + ")");
+    }
+    if (found->plant_file.empty()) {
+      throw InputError(where + "\"" + found->actuator + "\" has no plant file (muscles." +
+                       found->actuator + ".plant): its law is the estimator's");
+    }
+  }
+}
+
 void read_recordings(ConfigReader& in, IdentifyDefinition* def) {
   const TableArray tables(in, "recording");
   std::set<std::string> names;
-  bool fitted = false;
   for (const TableEntry& e :
        tables.entries({"file", "name", "set", "channels", "weight", "held_out"})) {
     def->recordings.push_back(read_recording(in, e));
     const IdentifyRecording& r = def->recordings.back();
     in.check(names.insert(r.name).second, e.where + "name", "\"" + r.name + "\" is taken");
-    fitted = fitted || !r.held_out;
   }
-  in.check(fitted, "recording", "needs at least one [[recording]] that is not held_out");
 }
 
 // The settings a recording's scenario is checked at: every parameter mid-box, then each at
@@ -181,12 +222,24 @@ std::string IdentifyDefinition::canonical_json() const {
                     {"weight", r.weight}, {"held_out", r.held_out}, {"time_s", r.data.time_s},
                     {"samples", r.data.samples}});
   }
+  nlohmann::json tensile_json = nlohmann::json::array();
+  for (const auto& t : tensile) {
+    std::vector<std::vector<double>> rows;
+    for (const TensileRow& r : t.rows) {
+      rows.push_back({r.pressure_mpa, r.length_mm, r.force_n,
+                      r.direction == StrokeDirection::kLoading ? 1.0 : 0.0});
+    }
+    tensile_json.push_back({{"muscle", t.muscle}, {"weight", t.weight}, {"rows", rows}});
+  }
   const nlohmann::json j = {{"base_scenario", base_text}, {"base_path", base_path},
                             {"overrides", overrides},     {"generations", generations},
                             {"population", population},   {"seed", seed},
                             {"polish_iterations", polish_iterations},
                             {"parameters", params},       {"recordings", recs}};
-  return j.dump();
+  if (tensile.empty()) return j.dump();
+  nlohmann::json with = j;
+  with["tensile"] = tensile_json;
+  return with.dump();
 }
 
 IdentifyDefinition load_identify_definition(const std::string& path) {
@@ -200,8 +253,14 @@ IdentifyDefinition load_identify_definition(const std::string& path) {
   read_search(in, &def);
   def.parameters = read_search_parameters(in, {"seed"}, "a recording's noise is its own");
   read_recordings(in, &def);
+  read_tensile(in, &def);
+  const bool fitted = std::any_of(def.recordings.begin(), def.recordings.end(),
+                                  [](const IdentifyRecording& r) { return !r.held_out; });
+  in.check(fitted || !def.tensile.empty(), "recording",
+           "needs at least one [[recording]] that is not held_out, or a [[tensile]]");
   in.reject_unknown();
   check_recordings(def);
+  check_tensile(def);
   return def;
 }
 

@@ -18,7 +18,11 @@
 //                       channels: the columns to match; default every one it has
 //                       weight: > 0, its residuals' weight; default 1
 //                       held_out: true: used only to check the result; default false
-// At least one recording is fitted (not held out). Every recording's scenario must load, and
+//   [[tensile]]         muscle: a muscle of the base scenario with a plant file (its actuator
+//                       name); file: a tensile test of it in `pamsim tensile`'s CSV format;
+//                       weight: > 0, default 1. Its plant's forces at the recorded pressures
+//                       and lengths, on each row's stroke, must match the recorded forces.
+// At least one recording is fitted (not held out), or a tensile test given. Every recording's scenario must load, and
 // each channel must be one its trials log (trajectory.csv's columns); a recording must not
 // outlast its scenario's sim.duration_s.
 #pragma once
@@ -27,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "pam_actuator/tensile_test.h"
 #include "sim/io/recording_csv.h"
 #include "sim/optimize/search_space.h"
 
@@ -41,6 +46,13 @@ struct IdentifyRecording {
   bool held_out = false;
 };
 
+struct IdentifyTensile {
+  std::string muscle;               // the actuator's name (muscles.<muscle>)
+  std::string file;
+  std::vector<TensileRow> rows;
+  double weight = 1.0;
+};
+
 struct IdentifyDefinition {
   std::string file;
   std::string base_path, base_text;
@@ -50,7 +62,13 @@ struct IdentifyDefinition {
   int polish_iterations = 30;
   std::vector<SearchParameter> parameters;
   std::vector<IdentifyRecording> recordings;
+  std::vector<IdentifyTensile> tensile;
 
+  // The overrides of the base scenario with the parameters at `values` (the tensile tests'
+  // plants are its muscles').
+  std::vector<std::string> overrides_at(const std::vector<double>& values) const {
+    return parameter_overrides(overrides, parameters, values);
+  }
   // The overrides of `recording`'s trial with the parameters at `values`.
   std::vector<std::string> overrides_at(const IdentifyRecording& recording,
                                         const std::vector<double>& values) const;

@@ -5,7 +5,10 @@
 #include <sstream>
 
 #include "base/atomic_file.h"
+#include "base/config_reader.h"
+#include "base/file_changes.h"
 #include "base/format.h"
+#include "base/toml_file.h"
 #include "sim/io/scenario_file.h"
 #include "sim/io/staged_outputs.h"
 
@@ -57,6 +60,47 @@ std::string fits_table(const IdentifyResult& r) {
   return md.str();
 }
 
+// The identified fields of one parameter file: `prefix` "muscles.agonist.plant." or
+// "pneumatics.", as a table of the file's layout; empty if none is a parameter.
+toml::table identified_fields(const IdentifyResult& r, const std::string& prefix) {
+  toml::table fields;
+  for (const IdentifiedParameter& p : r.parameters) {
+    if (p.parameter.key.rfind(prefix, 0) != 0) continue;
+    const std::vector<std::string> parts = split_key(p.parameter.key.substr(prefix.size()));
+    toml::table* at = &fields;
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+      if (!at->get(parts[i])) at->insert(parts[i], toml::table{});
+      at = at->get(parts[i])->as_table();
+    }
+    at->insert_or_assign(parts.back(), p.value);
+  }
+  return fields;
+}
+
+// `file` with `fields` written over it, as TOML under `header` (the file's own comments are
+// in the file itself: TOML text cannot keep them through a rewrite).
+void write_identified_file(const std::string& out, const std::string& file,
+                           const toml::table& fields, const std::string& header) {
+  toml::table root = parse_toml_file(file);
+  write_changes(root, fields, "");
+  write_file_atomically(out, header + "# (identified from " + file + "; its comments say where "
+                                      "its other values come from)\n" + toml_text(root));
+}
+
+// plant_<muscle>.toml and pneumatics.toml with the identified fields.
+void write_identified_files(const IdentifyDefinition& def, const IdentifyResult& r,
+                            const StagedOutputs& out, const std::string& header) {
+  const Scenario sc = load_scenario_text(def.base_text, def.base_path, def.overrides);
+  for (const MuscleSpec& m : sc.muscles) {
+    const toml::table fields = identified_fields(r, "muscles." + m.actuator + ".plant.");
+    if (!fields.empty() && !m.plant_file.empty()) {
+      write_identified_file(out.path("plant_" + m.actuator + ".toml"), m.plant_file, fields, header);
+    }
+  }
+  const toml::table fields = identified_fields(r, "pneumatics.");
+  if (!fields.empty()) write_identified_file(out.path("pneumatics.toml"), sc.pneumatics_file, fields, header);
+}
+
 }  // namespace
 
 std::string identify_parameters_csv(const IdentifyResult& r) {
@@ -106,6 +150,7 @@ void write_identify_outputs(const IdentifyDefinition& def, const IdentifyResult&
   for (const IdentifyRecording& rec : def.recordings) {
     if (!rec.held_out) header += " " + rec.data.path;
   }
+  for (const IdentifyTensile& t : def.tensile) header += " " + t.file;
   header += "\n";
   write_file_atomically(out.path("identified.toml"),
                         resolved_scenario_toml(def.base_text, def.base_path,
@@ -114,6 +159,7 @@ void write_identify_outputs(const IdentifyDefinition& def, const IdentifyResult&
   write_file_atomically(out.path("identify.csv"), identify_parameters_csv(r));
   write_file_atomically(out.path("identify_fits.csv"), identify_fits_csv(r));
   write_file_atomically(out.path("identify.md"), identify_markdown(def, r));
+  write_identified_files(def, r, out, header);
   if (!plots) return;
   for (const IdentifyRecording& rec : def.recordings) {
     std::vector<const ChannelFit*> fits;

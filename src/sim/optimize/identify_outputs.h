@@ -8,6 +8,9 @@
 //                      (the base scenario as it stands) and after, in the channel's unit
 //   identify.md        both tables, and the search's cost and time
 //   recording_<name>.png  each recording's channels: recorded, before and after (plots on)
+//   plant_<muscle>.toml   for each muscle with a plant field among the parameters: its plant
+//                      file with the identified fields, a comment naming the recordings
+//   pneumatics.toml    the same for the pneumatics file's fields (pneumatics.<table>.<field>)
 #pragma once
 
 #include <string>
@@ -21,7 +24,7 @@ class StagedOutputs;
 
 inline const std::vector<std::string> kIdentifyOutputs = {
     "identified.toml", "identify.csv", "identify_fits.csv", "identify.md", "recording_*.png",
-    "recording_*.svg", "recording_*.pdf"};
+    "recording_*.svg", "recording_*.pdf", "plant_*.toml", "pneumatics.toml"};
 
 std::string identify_parameters_csv(const IdentifyResult& result);
 std::string identify_fits_csv(const IdentifyResult& result);

@@ -70,6 +70,20 @@ SimulatedRecording simulate_recording(const IdentifyDefinition& def, const Ident
   return out;
 }
 
+std::vector<double> tensile_forces(const IdentifyDefinition& def, const IdentifyTensile& t,
+                                   const std::vector<std::string>& overrides, std::string* failure) {
+  try {
+    const Scenario sc = load_scenario_text(def.base_text, def.base_path, overrides);
+    for (const MuscleSpec& m : sc.muscles) {
+      if (m.actuator == t.muscle) return plant_forces_along(m.plant, t.rows);
+    }
+    *failure = "no muscle " + t.muscle;
+  } catch (const InputError& e) {
+    *failure = e.what();
+  }
+  return {};
+}
+
 std::vector<double> channel_rmse(const IdentifyRecording& r, const SimulatedRecording& sim) {
   std::vector<double> out;
   for (std::size_t i = 0; i < r.channels.size(); ++i) {
@@ -98,6 +112,29 @@ IdentifyResiduals::IdentifyResiduals(const IdentifyDefinition& def, IdentifyDb& 
     scale_.push_back(std::move(scales));
     if (!r.held_out) fitted_.push_back(i);
   }
+  for (const IdentifyTensile& t : def.tensile) {
+    std::vector<double> forces;
+    for (const TensileRow& row : t.rows) forces.push_back(row.force_n);
+    tensile_scale_.push_back(channel_scale(forces));
+    count_ += t.rows.size();
+  }
+}
+
+bool IdentifyResiduals::append_tensile(const std::vector<double>& values, std::vector<double>* out) {
+  for (std::size_t k = 0; k < def_.tensile.size(); ++k) {
+    const IdentifyTensile& t = def_.tensile[k];
+    std::string failure;
+    const std::vector<double> forces = tensile_forces(def_, t, def_.overrides_at(values), &failure);
+    if (forces.empty()) {
+      if (first_failure_.empty()) first_failure_ = failure;
+      return false;
+    }
+    const double w = std::sqrt(t.weight);
+    for (std::size_t i = 0; i < forces.size(); ++i) {
+      out->push_back(w * (forces[i] - t.rows[i].force_n) / tensile_scale_[k]);
+    }
+  }
+  return true;
 }
 
 std::vector<double> IdentifyResiduals::values_at(const std::vector<double>& unit) const {
@@ -141,6 +178,8 @@ std::vector<double> IdentifyResiduals::at(const std::vector<double>& unit_in, co
       }
     }
   }
+  const bool ran = fitted_.empty() || !residuals.empty();
+  if (ran && !append_tensile(values, &residuals)) residuals.clear();
   ++simulated;
   db_.insert(unit, phase, sum_of_squares(residuals), residuals);
   return residuals;

@@ -5,7 +5,8 @@
 //   sqrt(weight) (simulated - recorded) / s_c,
 // s_c the recorded channel's standard deviation (1 if it is constant), so channels in volts,
 // degrees and MPa weigh alike; the cost is the sum of their squares over the fitted
-// recordings. Residual vectors are kept in the run's database (identify_db.h), so a point is
+// recordings. A tensile test's rows add sqrt(weight) (plant force - recorded force) / s_F, the
+// plant's force on each row's stroke at its recorded pressure and length (tensile_test.h). Residual vectors are kept in the run's database (identify_db.h), so a point is
 // simulated once, whichever phase asks, and a resumed run simulates nothing twice.
 #pragma once
 
@@ -29,6 +30,11 @@ struct SimulatedRecording {
 SimulatedRecording simulate_recording(const IdentifyDefinition& def,
                                       const IdentifyRecording& recording,
                                       const std::vector<std::string>& overrides);
+
+// The plant forces [N] of tensile test `t`'s muscle, the base scenario with `overrides`, at
+// its rows; empty (with *failure set) if the scenario refuses the overrides.
+std::vector<double> tensile_forces(const IdentifyDefinition& def, const IdentifyTensile& t,
+                                   const std::vector<std::string>& overrides, std::string* failure);
 
 // Per chosen channel, the RMS of simulated - recorded over its samples, in its unit.
 std::vector<double> channel_rmse(const IdentifyRecording& recording, const SimulatedRecording& sim);
@@ -55,6 +61,8 @@ class IdentifyResiduals {
   std::size_t count_ = 0;
   std::vector<std::size_t> fitted_;                 // recordings fitted, in order
   std::vector<std::vector<double>> scale_;          // per recording, per chosen channel
+  std::vector<double> tensile_scale_;               // per tensile test
+  bool append_tensile(const std::vector<double>& values, std::vector<double>* out);
   std::string first_failure_;
 };
 
