@@ -135,6 +135,38 @@ TEST(IdentifyTest, ATensileTestAloneGivesThePlantsWall) {
   }
 }
 
+// A sensor's gain, offset and delay: the recorded antagonist force is 1.05 F(t - 20 ms) + 2 N
+// of the model's own arm.
+TEST(IdentifyTest, ASensorsGainOffsetAndDelayAreParametersToo) {
+  const fs::path dir = pamsim_test::fresh_dir("identify_sensor");
+  const Scenario sc = load_scenario(kArm, {"sim.duration_s=2", "seed=7", kSine});
+  const TrialResult t = run_trial(load_trial_model(sc), sc, sc.seed, true);
+  const std::size_t force = t.trajectory.column("force_meas_anta_N");
+  std::string csv = "time_s,force_meas_anta_N\n";
+  for (std::size_t row = 2; row < t.trajectory.rows(); row += 2) {   // 100 Hz log, 20 ms = 2 rows
+    csv += format_shortest(t.trajectory.at(row, 0)) + "," +
+           format_shortest(1.05 * t.trajectory.at(row - 2, force) + 2.0) + "\n";
+  }
+  pamsim_test::write_text(dir / "sine.csv", csv);
+  pamsim_test::write_text(dir / "id.toml",
+      "base = \"" + kArm + "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 3\n"
+      "population = 6\npolish_iterations = 20\n"
+      "[[parameter]]\nkey = \"channel.force_meas_anta_N.gain\"\nfrom = 0.8\nto = 1.2\n"
+      "[[parameter]]\nkey = \"channel.force_meas_anta_N.offset\"\nfrom = -5.0\nto = 5.0\n"
+      "[[parameter]]\nkey = \"channel.force_meas_anta_N.delay_ms\"\nfrom = 0.0\nto = 50.0\n"
+      "[[recording]]\nfile = \"sine.csv\"\nset = ['" + kSine + "']\n");
+  const IdentifyDefinition def = load_identify_definition((dir / "id.toml").string());
+  const IdentifyResult r = run(def, (dir / "id.db").string(), false);
+  ASSERT_EQ(r.parameters.size(), 3u);
+  EXPECT_NEAR(r.parameters[0].value, 1.05, 0.005);
+  EXPECT_NEAR(r.parameters[1].value, 2.0, 0.1);
+  EXPECT_NEAR(r.parameters[2].value, 20.0, 1.0);
+  for (const IdentifiedParameter& p : r.parameters) EXPECT_TRUE(p.identifiable) << p.parameter.key;
+  EXPECT_LT(r.fits[0].rmse_after, 0.1 * r.fits[0].rmse_before) << "down to the gauge noise";
+  // a sensor's parameters are no scenario key: the trials' overrides do not hold them
+  EXPECT_EQ(def.overrides_at(std::vector<double>{1.0, 0.0, 0.0}), def.overrides);
+}
+
 TEST(IdentifyTest, AStoppedRunResumedIsTheUninterruptedOne) {
   const fs::path dir = pamsim_test::fresh_dir("identify_resume");
   const IdentifyDefinition def = load_identify_definition(identify_file(dir));
@@ -179,6 +211,10 @@ TEST(IdentifyTest, BadFilesAreOneLineExitTwoAndNoDatabase) {
            {with("file = \"steps.csv\"", "file = \"missing.csv\""), "missing.csv"},
            {with("overrides = [\"sim.duration_s=2\"]", "overrides = [\"sim.duration_s=1\"]"), "the recording lasts 1.98 s, its scenario 1 s"},
            {good + "[[tensile]]\nmuscle = \"agonist\"\nfile = \"t.csv\"\n", "tensile[0].file"},
+           {with("key = \"bodies.ball.mass_kg\"", "key = \"channel.angle_rad.offset\""), "no recording matches angle_rad"},
+           {with("key = \"bodies.ball.mass_kg\"", "key = \"channel.angle_deg.scale\""), "channel.<column>.offset, .gain or .delay_ms"},
+           {with("key = \"bodies.ball.mass_kg\"\nfrom = 0.1", "key = \"channel.angle_deg.gain\"\nfrom = -0.1"), "a gain's range must be above 0"},
+           {with("key = \"bodies.ball.mass_kg\"\nfrom = 0.1\nto = 0.4", "key = \"channel.angle_deg.delay_ms\"\nfrom = 0.0\nto = 2000.0"), "within [0, 1000] ms"},
            {good + "[[tensile]]\nmuscle = \"elbow\"\nfile = \"steps.csv\"\n", "tensile[0].file"},
            {good + "[[tensile]]\nmuscle = \"elbow\"\nfile = \"tensile.csv\"\n",
             "tensile[0].muscle \"elbow\" is not a muscle of the base scenario (it has agonist, antagonist)"}}) {

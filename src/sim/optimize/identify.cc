@@ -264,15 +264,24 @@ std::vector<ChannelFit> channel_fits(const IdentifyDefinition& def,
     sims[static_cast<std::size_t>(k)] =
         simulate_recording(def, r, k < static_cast<int>(n) ? before : def.overrides_at(r, values));
   });
+  // before: the sensors as ideal (gain 1, no offset, no delay)
+  std::vector<double> ideal = values;
+  for (std::size_t k = 0; k < ideal.size(); ++k) {
+    const ChannelParameter::Kind kind = def.channel_parameters[k].kind;
+    if (kind != ChannelParameter::Kind::kNone) ideal[k] = kind == ChannelParameter::Kind::kGain ? 1.0 : 0.0;
+  }
   std::vector<ChannelFit> fits;
   for (std::size_t i = 0; i < n; ++i) {
     const IdentifyRecording& r = def.recordings[i];
-    const std::vector<double> before = channel_rmse(r, sims[i]), after = channel_rmse(r, sims[n + i]);
+    const auto sampled_before = sample_channels(def, r, sims[i], ideal);
+    const auto sampled_after = sample_channels(def, r, sims[n + i], values);
+    const std::vector<double> before = channel_rmse(r, sampled_before);
+    const std::vector<double> after = channel_rmse(r, sampled_after);
     for (std::size_t c = 0; c < r.channels.size(); ++c) {
       ChannelFit f{r.name, r.data.channels[r.channels[c]], r.held_out,
                    r.data.sample_count(r.channels[c]), before[c], after[c], {}, {}};
-      if (sims[i].failure.empty()) f.before = sims[i].values[c];
-      if (sims[n + i].failure.empty()) f.after = sims[n + i].values[c];
+      if (!sampled_before.empty()) f.before = sampled_before[c];
+      if (!sampled_after.empty()) f.after = sampled_after[c];
       fits.push_back(std::move(f));
     }
   }

@@ -129,6 +129,35 @@ void check_tensile(const IdentifyDefinition& def) {
   }
 }
 
+// "channel.<column>.<kind>" parameters: their kind and column, each column one the recordings
+// match, a gain's range above 0 and a delay's within [0, 1000] ms.
+void read_channel_parameters(ConfigReader& in, IdentifyDefinition* def) {
+  using Kind = ChannelParameter::Kind;
+  for (std::size_t i = 0; i < def->parameters.size(); ++i) {
+    const SearchParameter& p = def->parameters[i];
+    ChannelParameter c;
+    const std::string where = "parameter[" + std::to_string(i) + "].key";
+    if (p.key.rfind("channel.", 0) == 0) {
+      const std::size_t dot = p.key.rfind('.');
+      const std::string kind = p.key.substr(dot + 1);
+      c.column = p.key.substr(8, dot > 8 ? dot - 8 : 0);
+      c.kind = kind == "offset" ? Kind::kOffset : kind == "gain" ? Kind::kGain
+             : kind == "delay_ms" ? Kind::kDelay : Kind::kNone;
+      in.check(c.kind != Kind::kNone && !c.column.empty(), where,
+               "\"" + p.key + "\": a channel's parameter is channel.<column>.offset, .gain or .delay_ms");
+      bool matched = false;
+      for (const IdentifyRecording& r : def->recordings) {
+        for (std::size_t k : r.channels) matched = matched || r.data.channels[k] == c.column;
+      }
+      in.check(matched, where, "\"" + p.key + "\": no recording matches " + c.column);
+      in.check(c.kind != Kind::kGain || p.from > 0, where, "\"" + p.key + "\": a gain's range must be above 0");
+      in.check(c.kind != Kind::kDelay || (p.from >= 0 && p.to <= 1000), where,
+               "\"" + p.key + "\": a delay's range must lie within [0, 1000] ms");
+    }
+    def->channel_parameters.push_back(c);
+  }
+}
+
 void read_recordings(ConfigReader& in, IdentifyDefinition* def) {
   const TableArray tables(in, "recording");
   std::set<std::string> names;
@@ -179,7 +208,7 @@ void check_recordings(const IdentifyDefinition& def) {
     const IdentifyRecording& r = def.recordings[i];
     const std::string where = def.file + ": recording[" + std::to_string(i) + "] (" + r.name + ")";
     for (const std::string& s : r.set) {
-      for (const SearchParameter& p : def.parameters) {
+      for (const SearchParameter& p : def.parameters) {   // (a channel. key is never a set's)
         if (s.rfind(p.key + "=", 0) == 0) throw InputError(where + ": set gives " + p.key + ", a parameter");
       }
     }
@@ -202,11 +231,44 @@ void check_recordings(const IdentifyDefinition& def) {
 
 }  // namespace
 
+std::vector<std::string> IdentifyDefinition::overrides_at(const std::vector<double>& values) const {
+  std::vector<std::string> out = overrides;
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    if (channel_parameters[i].kind != ChannelParameter::Kind::kNone) continue;
+    out.push_back(parameters[i].key + "=" + format_number(values[i]));
+  }
+  return out;
+}
+
 std::vector<std::string> IdentifyDefinition::overrides_at(const IdentifyRecording& recording,
                                                           const std::vector<double>& values) const {
-  std::vector<std::string> base = overrides;
-  base.insert(base.end(), recording.set.begin(), recording.set.end());
-  return parameter_overrides(base, parameters, values);
+  std::vector<std::string> out = overrides;
+  out.insert(out.end(), recording.set.begin(), recording.set.end());
+  const std::vector<std::string> params = overrides_at(values);
+  out.insert(out.end(), params.begin() + static_cast<std::ptrdiff_t>(overrides.size()), params.end());
+  return out;
+}
+
+ChannelTransform IdentifyDefinition::transform_at(const IdentifyRecording& recording, std::size_t i,
+                                                  const std::vector<double>& values) const {
+  ChannelTransform t;
+  const std::string& column = recording.data.channels[recording.channels[i]];
+  for (std::size_t k = 0; k < parameters.size(); ++k) {
+    const ChannelParameter& c = channel_parameters[k];
+    if (c.kind == ChannelParameter::Kind::kNone || c.column != column) continue;
+    if (c.kind == ChannelParameter::Kind::kOffset) t.offset = values[k];
+    if (c.kind == ChannelParameter::Kind::kGain) t.gain = values[k];
+    if (c.kind == ChannelParameter::Kind::kDelay) t.delay_s = values[k] * 1e-3;
+  }
+  return t;
+}
+
+std::vector<double> IdentifyDefinition::scenario_values(const std::vector<double>& values) const {
+  std::vector<double> out;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (channel_parameters[i].kind == ChannelParameter::Kind::kNone) out.push_back(values[i]);
+  }
+  return out;
 }
 
 std::string IdentifyDefinition::canonical_json() const {
@@ -254,6 +316,7 @@ IdentifyDefinition load_identify_definition(const std::string& path) {
   def.parameters = read_search_parameters(in, {"seed"}, "a recording's noise is its own");
   read_recordings(in, &def);
   read_tensile(in, &def);
+  read_channel_parameters(in, &def);
   const bool fitted = std::any_of(def.recordings.begin(), def.recordings.end(),
                                   [](const IdentifyRecording& r) { return !r.held_out; });
   in.check(fitted || !def.tensile.empty(), "recording",

@@ -11,7 +11,11 @@
 //   seed                CMA-ES seed, [0, 2^32 - 1]; default 1
 //   polish_iterations   Levenberg-Marquardt iterations of the local polish (Ceres), [0, 1000];
 //                       default 30
-//   [[parameter]]       key (a scenario key), from < to, scale = "linear" | "log" (from > 0)
+//   [[parameter]]       key (a scenario key), from < to, scale = "linear" | "log" (from > 0);
+//                       or a recorded channel's sensor, key = "channel.<column>.offset" (in
+//                       the column's unit), ".gain" (> 0) or ".delay_ms" (>= 0, <= 1000):
+//                       recorded = gain x simulated(t - delay) + offset, in every recording
+//                       that matches <column> (one instrument); not a scenario key
 //   [[recording]]       file: a recording (sim/io/recording_csv.h), required
 //                       name: letters, digits, '_' and '-'; default the file's stem; unique
 //                       set: the conditions it was recorded under, as --set "key=value"
@@ -46,6 +50,17 @@ struct IdentifyRecording {
   bool held_out = false;
 };
 
+// A parameter that is a recorded channel's sensor rather than a scenario key.
+struct ChannelParameter {
+  enum class Kind { kNone, kOffset, kGain, kDelay } kind = Kind::kNone;   // kNone: a scenario key
+  std::string column;
+};
+
+// What a channel's sensor does to the simulated column: gain x column(t - delay) + offset.
+struct ChannelTransform {
+  double gain = 1.0, offset = 0.0, delay_s = 0.0;
+};
+
 struct IdentifyTensile {
   std::string muscle;               // the actuator's name (muscles.<muscle>)
   std::string file;
@@ -61,17 +76,22 @@ struct IdentifyDefinition {
   std::uint64_t seed = 1;
   int polish_iterations = 30;
   std::vector<SearchParameter> parameters;
+  std::vector<ChannelParameter> channel_parameters;   // per parameter (kNone: a scenario key)
   std::vector<IdentifyRecording> recordings;
   std::vector<IdentifyTensile> tensile;
 
   // The overrides of the base scenario with the parameters at `values` (the tensile tests'
   // plants are its muscles').
-  std::vector<std::string> overrides_at(const std::vector<double>& values) const {
-    return parameter_overrides(overrides, parameters, values);
-  }
-  // The overrides of `recording`'s trial with the parameters at `values`.
+  std::vector<std::string> overrides_at(const std::vector<double>& values) const;
+  // The overrides of `recording`'s trial with the parameters at `values` (the scenario
+  // keys among them).
   std::vector<std::string> overrides_at(const IdentifyRecording& recording,
                                         const std::vector<double>& values) const;
+  // The sensor of `recording`'s chosen channel `i` with the parameters at `values`.
+  ChannelTransform transform_at(const IdentifyRecording& recording, std::size_t i,
+                                const std::vector<double>& values) const;
+  // The parameters' values that change the trials (the channel parameters' left out).
+  std::vector<double> scenario_values(const std::vector<double>& values) const;
   // Everything that decides the result, as canonical JSON (stored; a resume must match):
   // the settings, parameters and every recording's name, set, channels, weight, role and
   // samples.

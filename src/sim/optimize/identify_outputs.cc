@@ -154,7 +154,7 @@ void write_identify_outputs(const IdentifyDefinition& def, const IdentifyResult&
   header += "\n";
   write_file_atomically(out.path("identified.toml"),
                         resolved_scenario_toml(def.base_text, def.base_path,
-                                               parameter_overrides(def.overrides, def.parameters, values),
+                                               def.overrides_at(values),
                                                out.dir(), header));
   write_file_atomically(out.path("identify.csv"), identify_parameters_csv(r));
   write_file_atomically(out.path("identify_fits.csv"), identify_fits_csv(r));

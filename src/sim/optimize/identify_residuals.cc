@@ -16,14 +16,22 @@
 namespace pamsim {
 namespace {
 
-// column `c` of `log` at time t, linear between its rows (the log's ends beyond them)
-double interpolate(const Trajectory& log, std::size_t c, double t, std::size_t* row) {
-  const std::size_t n = log.rows();
-  while (*row + 1 < n && log.at(*row + 1, 0) <= t) ++*row;
-  if (*row + 1 >= n) return log.at(n - 1, c);
-  const double t0 = log.at(*row, 0), t1 = log.at(*row + 1, 0);
+// `column` at time t, linear between the rows of `time_s` (its ends beyond them); `row` is
+// where the search starts and is left at (times asked in increasing order)
+double interpolate(const std::vector<double>& time_s, const std::vector<double>& column, double t,
+                   std::size_t* row) {
+  const std::size_t n = time_s.size();
+  if (t <= time_s[0]) return column[0];
+  while (*row + 1 < n && time_s[*row + 1] <= t) ++*row;
+  if (*row + 1 >= n) return column[n - 1];
+  const double t0 = time_s[*row], t1 = time_s[*row + 1];
   const double w = t1 > t0 ? (t - t0) / (t1 - t0) : 0.0;
-  return log.at(*row, c) + w * (log.at(*row + 1, c) - log.at(*row, c));
+  return column[*row] + w * (column[*row + 1] - column[*row]);
+}
+
+// A point's settings as a key: their bits
+std::string bits_key(const std::vector<double>& values) {
+  return std::string(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
 }
 
 // the recorded channel's population standard deviation, 1 if it is (nearly) constant
@@ -53,19 +61,36 @@ SimulatedRecording simulate_recording(const IdentifyDefinition& def, const Ident
       out.failure = trial.summary.status + ": " + trial.summary.message;
       return out;
     }
+    const Trajectory& log = trial.trajectory;
+    for (std::size_t row = 0; row < log.rows(); ++row) out.time_s.push_back(log.at(row, 0));
     for (std::size_t c : r.channels) {
-      const std::size_t column = trial.trajectory.column(r.data.channels[c]);
-      std::vector<double> v(r.data.time_s.size(), kNaN);
-      std::size_t row = 0;
-      for (std::size_t k = 0; k < v.size(); ++k) {
-        const double t = r.data.time_s[k];
-        const double simulated = interpolate(trial.trajectory, column, t, &row);
-        if (!std::isnan(r.data.samples[c][k])) v[k] = simulated;
-      }
-      out.values.push_back(std::move(v));
+      const std::size_t column = log.column(r.data.channels[c]);
+      std::vector<double> v(log.rows());
+      for (std::size_t row = 0; row < v.size(); ++row) v[row] = log.at(row, column);
+      out.columns.push_back(std::move(v));
     }
   } catch (const InputError& e) {   // a value the scenario refuses, or a model that fails
     out.failure = e.what();
+  }
+  return out;
+}
+
+std::vector<std::vector<double>> sample_channels(const IdentifyDefinition& def,
+                                                 const IdentifyRecording& r,
+                                                 const SimulatedRecording& sim,
+                                                 const std::vector<double>& values) {
+  std::vector<std::vector<double>> out;
+  if (!sim.failure.empty()) return out;
+  for (std::size_t i = 0; i < r.channels.size(); ++i) {
+    const ChannelTransform t = def.transform_at(r, i, values);
+    const std::vector<double>& rec = r.data.samples[r.channels[i]];
+    std::vector<double> v(rec.size(), kNaN);
+    std::size_t row = 0;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const double simulated = interpolate(sim.time_s, sim.columns[i], r.data.time_s[k] - t.delay_s, &row);
+      if (!std::isnan(rec[k])) v[k] = t.gain * simulated + t.offset;
+    }
+    out.push_back(std::move(v));
   }
   return out;
 }
@@ -84,18 +109,19 @@ std::vector<double> tensile_forces(const IdentifyDefinition& def, const Identify
   return {};
 }
 
-std::vector<double> channel_rmse(const IdentifyRecording& r, const SimulatedRecording& sim) {
+std::vector<double> channel_rmse(const IdentifyRecording& r,
+                                 const std::vector<std::vector<double>>& sampled) {
   std::vector<double> out;
   for (std::size_t i = 0; i < r.channels.size(); ++i) {
     const std::vector<double>& rec = r.data.samples[r.channels[i]];
     double sum = 0;
     int n = 0;
-    for (std::size_t k = 0; k < rec.size() && sim.failure.empty(); ++k) {
+    for (std::size_t k = 0; k < rec.size() && !sampled.empty(); ++k) {
       if (std::isnan(rec[k])) continue;
-      sum += (sim.values[i][k] - rec[k]) * (sim.values[i][k] - rec[k]);
+      sum += (sampled[i][k] - rec[k]) * (sampled[i][k] - rec[k]);
       ++n;
     }
-    out.push_back(sim.failure.empty() && n > 0 ? std::sqrt(sum / n) : kNaN);
+    out.push_back(n > 0 ? std::sqrt(sum / n) : kNaN);
   }
   return out;
 }
@@ -157,32 +183,49 @@ std::vector<double> IdentifyResiduals::at(const std::vector<double>& unit_in, co
     return *stored;
   }
   const std::vector<double> values = values_at(unit);
+  std::vector<double> residuals;
+  if (!append_recordings(values, &residuals) || !append_tensile(values, &residuals)) {
+    residuals.clear();
+  }
+  ++simulated;
+  db_.insert(unit, phase, sum_of_squares(residuals), residuals);
+  return residuals;
+}
+
+const std::vector<SimulatedRecording>& IdentifyResiduals::trials_at(const std::vector<double>& values) {
+  const std::string key = bits_key(def_.scenario_values(values));
+  for (const auto& [k, trials] : trials_) {
+    if (k == key) return trials;
+  }
   std::vector<SimulatedRecording> sims(fitted_.size());
   parallel_for(static_cast<int>(fitted_.size()), threads_, [&](int k) {
     const IdentifyRecording& r = def_.recordings[fitted_[static_cast<std::size_t>(k)]];
     sims[static_cast<std::size_t>(k)] = simulate_recording(def_, r, def_.overrides_at(r, values));
   });
-  std::vector<double> residuals;
+  constexpr std::size_t kKept = 4;   // a Jacobian's channel columns reuse its centre's trials
+  if (trials_.size() == kKept) trials_.erase(trials_.begin());
+  trials_.emplace_back(key, std::move(sims));
+  return trials_.back().second;
+}
+
+bool IdentifyResiduals::append_recordings(const std::vector<double>& values, std::vector<double>* out) {
+  const std::vector<SimulatedRecording>& sims = trials_at(values);
   for (std::size_t k = 0; k < fitted_.size(); ++k) {
     if (!sims[k].failure.empty()) {
       if (first_failure_.empty()) first_failure_ = sims[k].failure;
-      residuals.clear();
-      break;
+      return false;
     }
     const IdentifyRecording& r = def_.recordings[fitted_[k]];
+    const std::vector<std::vector<double>> sampled = sample_channels(def_, r, sims[k], values);
     const double w = std::sqrt(r.weight);
     for (std::size_t i = 0; i < r.channels.size(); ++i) {
       const std::vector<double>& rec = r.data.samples[r.channels[i]];
       for (std::size_t j = 0; j < rec.size(); ++j) {
-        if (!std::isnan(rec[j])) residuals.push_back(w * (sims[k].values[i][j] - rec[j]) / scale_[fitted_[k]][i]);
+        if (!std::isnan(rec[j])) out->push_back(w * (sampled[i][j] - rec[j]) / scale_[fitted_[k]][i]);
       }
     }
   }
-  const bool ran = fitted_.empty() || !residuals.empty();
-  if (ran && !append_tensile(values, &residuals)) residuals.clear();
-  ++simulated;
-  db_.insert(unit, phase, sum_of_squares(residuals), residuals);
-  return residuals;
+  return true;
 }
 
 double sum_of_squares(const std::vector<double>& residuals) {

@@ -19,13 +19,22 @@
 
 namespace pamsim {
 
-// A recording's chosen channels simulated at its sample times (NaN where it has no sample),
-// or the reason its trial did not run to the end (a divergence, or a value the scenario
-// refuses: InputError; other errors propagate, and nothing is stored for the point).
+// A recording's trial: its log's time and the chosen channels' columns, or the reason it did
+// not run to the end (a divergence, or a value the scenario refuses: InputError; other
+// errors propagate, and nothing is stored for the point).
 struct SimulatedRecording {
-  std::vector<std::vector<double>> values;   // per chosen channel, per row
-  std::string failure;                       // "" when the trial ran to the end
+  std::vector<double> time_s;
+  std::vector<std::vector<double>> columns;   // per chosen channel, the log's rows
+  std::string failure;                        // "" when the trial ran to the end
 };
+
+// The chosen channels as the recording's sensors read them at its sample times: gain x
+// column(t - delay) + offset (definition's channel parameters at `values`), linear between
+// the log's rows; NaN where the recording has no sample. Empty if the trial failed.
+std::vector<std::vector<double>> sample_channels(const IdentifyDefinition& def,
+                                                 const IdentifyRecording& recording,
+                                                 const SimulatedRecording& sim,
+                                                 const std::vector<double>& values);
 
 SimulatedRecording simulate_recording(const IdentifyDefinition& def,
                                       const IdentifyRecording& recording,
@@ -36,8 +45,10 @@ SimulatedRecording simulate_recording(const IdentifyDefinition& def,
 std::vector<double> tensile_forces(const IdentifyDefinition& def, const IdentifyTensile& t,
                                    const std::vector<std::string>& overrides, std::string* failure);
 
-// Per chosen channel, the RMS of simulated - recorded over its samples, in its unit.
-std::vector<double> channel_rmse(const IdentifyRecording& recording, const SimulatedRecording& sim);
+// Per chosen channel, the RMS of sampled - recorded over its samples, in its unit (NaN for
+// an empty `sampled`: its trial failed).
+std::vector<double> channel_rmse(const IdentifyRecording& recording,
+                                 const std::vector<std::vector<double>>& sampled);
 
 class IdentifyResiduals {
  public:
@@ -62,6 +73,11 @@ class IdentifyResiduals {
   std::vector<std::size_t> fitted_;                 // recordings fitted, in order
   std::vector<std::vector<double>> scale_;          // per recording, per chosen channel
   std::vector<double> tensile_scale_;               // per tensile test
+  // the fitted recordings' trials of the last few scenario settings (the channel parameters'
+  // differences need no new trial), by the settings' bits
+  std::vector<std::pair<std::string, std::vector<SimulatedRecording>>> trials_;
+  const std::vector<SimulatedRecording>& trials_at(const std::vector<double>& values);
+  bool append_recordings(const std::vector<double>& values, std::vector<double>* out);
   bool append_tensile(const std::vector<double>& values, std::vector<double>* out);
   std::string first_failure_;
 };
