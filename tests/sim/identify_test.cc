@@ -84,6 +84,8 @@ TEST(IdentifyTest, RecoversTheWallAndSaysWhatTheRecordingCannotSee) {
   EXPECT_TRUE(wall.identifiable);
   EXPECT_NEAR(wall.value, 2.7, std::max(3 * wall.std_error, 0.01)) << "+- " << wall.std_error;
   EXPECT_GT(wall.std_error, 0.0);
+  EXPECT_EQ(wall.start, 3.0) << "plant_antagonist.toml's";
+  EXPECT_EQ(r.parameters[1].start, 0.2) << "the model's ball";
   EXPECT_FALSE(r.parameters[1].identifiable) << "the ball is held away from the arm";
   EXPECT_TRUE(std::isnan(r.parameters[1].std_error));
   ASSERT_EQ(r.fits.size(), 2u);
@@ -158,6 +160,7 @@ TEST(IdentifyTest, ASensorsGainOffsetAndDelayAreParametersToo) {
   const IdentifyDefinition def = load_identify_definition((dir / "id.toml").string());
   const IdentifyResult r = run(def, (dir / "id.db").string(), false);
   ASSERT_EQ(r.parameters.size(), 3u);
+  EXPECT_EQ(r.parameters[0].start, 1.0) << "a sensor starts ideal";
   EXPECT_NEAR(r.parameters[0].value, 1.05, 0.005);
   EXPECT_NEAR(r.parameters[1].value, 2.0, 0.1);
   EXPECT_NEAR(r.parameters[2].value, 20.0, 1.0);

@@ -11,6 +11,7 @@
 #include "base/input_error.h"
 #include "base/no_value.h"
 #include "sim/core/runner.h"
+#include "sim/optimize/identify_outputs.h"
 #include "sim/optimize/identify_residuals.h"
 #include "sim/optimize/optimizer.h"
 
@@ -317,9 +318,11 @@ IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
   if (result.interrupted) return result;
   t0 = Clock::now();
   const std::vector<double> values = residuals.values_at(result.unit);
+  const std::vector<double> starts = start_values(def);
   for (std::size_t i = 0; i < values.size(); ++i) {
     IdentifiedParameter p;
     p.parameter = def.parameters[i];
+    p.start = starts[i];
     p.value = values[i];
     p.at_bound = result.unit[i] < 1e-3 || result.unit[i] > 1.0 - 1e-3;
     result.parameters.push_back(p);

@@ -32,6 +32,7 @@ struct IdentifyRunOptions {
 
 struct IdentifiedParameter {
   SearchParameter parameter;
+  double start = 0.0;           // the model's value before (NaN: unknown)
   double value = 0.0;
   double std_error = 0.0;       // NaN when not determined
   bool at_bound = false;        // within 0.1 % of the box's edge

@@ -36,12 +36,12 @@ std::string verdict(const IdentifiedParameter& p) {
 
 std::string parameters_table(const IdentifyResult& r) {
   std::ostringstream md;
-  md << "| parameter | range | identified | standard error | verdict | correlated (> 0.9) |\n"
-     << "| --- | --- | --- | --- | --- | --- |\n";
+  md << "| parameter | range | start | identified | standard error | verdict | correlated (> 0.9) |\n"
+     << "| --- | --- | --- | --- | --- | --- | --- |\n";
   for (const IdentifiedParameter& p : r.parameters) {
     md << "| `" << p.parameter.key << "` | " << format_value(p.parameter.from) << " - "
        << format_value(p.parameter.to) << (p.parameter.log ? " (log)" : "") << " | "
-       << format_value(p.value) << " | "
+       << (std::isfinite(p.start) ? format_value(p.start) : "-") << " | " << format_value(p.value) << " | "
        << (std::isfinite(p.std_error) ? format_value(p.std_error) : "-") << " | " << verdict(p)
        << " | " << correlated_text(p) << " |\n";
   }
@@ -104,10 +104,11 @@ void write_identified_files(const IdentifyDefinition& def, const IdentifyResult&
 }  // namespace
 
 std::string identify_parameters_csv(const IdentifyResult& r) {
-  std::string out = "key,from,to,scale,identified,std_error,at_bound,identifiable,correlated_with\n";
+  std::string out = "key,from,to,scale,start,identified,std_error,at_bound,identifiable,correlated_with\n";
   for (const IdentifiedParameter& p : r.parameters) {
     out += p.parameter.key + "," + cell(p.parameter.from) + "," + cell(p.parameter.to) + "," +
-           (p.parameter.log ? "log" : "linear") + "," + cell(p.value) + "," + cell(p.std_error) +
+           (p.parameter.log ? "log" : "linear") + "," + cell(p.start) + "," + cell(p.value) + "," +
+           cell(p.std_error) +
            "," + (p.at_bound ? "1" : "0") + "," + (p.identifiable ? "1" : "0") + "," +
            correlated_text(p) + "\n";
   }

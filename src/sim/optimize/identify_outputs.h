@@ -1,7 +1,8 @@
 // identify_outputs.h: what `pamsim identify` writes into its output folder:
 //   identified.toml    the base scenario with the identified values (plus the file's
 //                      overrides), ready for `pamsim run`; its header names the recordings
-//   identify.csv       per parameter: key, bounds, identified value, standard error, whether
+//   identify.csv       per parameter: key, bounds, start (the model's value), identified
+//                      value, standard error, whether
 //                      it hit a bound, whether the recordings determine it, and the parameters
 //                      it correlates with above 0.9
 //   identify_fits.csv  per recording and channel: fitted or held out, samples, RMSE before
@@ -34,6 +35,10 @@ std::string identify_markdown(const IdentifyDefinition& def, const IdentifyResul
 // with `plots`.
 void write_identify_outputs(const IdentifyDefinition& def, const IdentifyResult& result,
                             const StagedOutputs& out, bool plots);
+
+// Each parameter's value in the model as it stands (the base scenario with the file's
+// overrides; a sensor's neutral value), NaN where pamsim cannot say (identify_start.cc).
+std::vector<double> start_values(const IdentifyDefinition& def);
 
 // recording_<name>.png: `fits` are the recording's channels' (identify_plot.cc).
 void write_recording_plot(const std::string& png_path, const IdentifyRecording& recording,
