@@ -80,6 +80,15 @@ std::vector<std::string> changed_inputs(const std::vector<InputFile>& earlier) {
   return changed;
 }
 
+std::vector<std::pair<std::string, std::string>> database_provenance_meta() {
+  return {{"pamsim_version", PAMSIM_VERSION},
+          {"git_commit", build_info().git_commit},
+          {"mujoco_version", build_info().mujoco_version},
+          {"sundials_version", build_info().sundials_version},
+          {"command_line", nlohmann::json(command_line()).dump()},
+          {"created_utc", utc_timestamp()}};
+}
+
 std::string utc_timestamp() {
   const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   std::tm tm{};

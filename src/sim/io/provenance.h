@@ -49,6 +49,10 @@ std::string utc_timestamp();
 void record_command_line(int argc, const char* const* argv);
 const std::vector<std::string>& command_line();
 
+// What a run's database records of what made it, as meta entries: pamsim_version,
+// git_commit, mujoco_version, sundials_version, command_line (JSON), created_utc.
+std::vector<std::pair<std::string, std::string>> database_provenance_meta();
+
 struct TrialTiming {
   std::uint64_t seed = 0;
   double wall_time_s = 0;

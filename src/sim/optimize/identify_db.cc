@@ -8,7 +8,6 @@
 #include <nlohmann/json.hpp>
 
 #include "base/input_error.h"
-#include "sim/io/build_info.h"
 #include "sim/io/provenance.h"
 
 namespace pamsim {
@@ -52,16 +51,10 @@ IdentifyDb IdentifyDb::create(const std::string& path, const IdentifyDefinition&
     db.exec("CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT);"
             "CREATE TABLE evaluations(point TEXT PRIMARY KEY, phase TEXT NOT NULL, cost REAL,"
             " residuals BLOB);");
-    db.put_meta({{"kind", kDbKind},
-                 {"identify_definition", def.canonical_json()},
-                 {"identify_file", def.file},
-                 {"pamsim_version", PAMSIM_VERSION},
-                 {"git_commit", build_info().git_commit},
-                 {"mujoco_version", build_info().mujoco_version},
-                 {"sundials_version", build_info().sundials_version},
-                 {"command_line", nlohmann::json(command_line()).dump()},
-                 {"created_utc", utc_timestamp()}},
-                "cannot write");
+    std::vector<std::pair<std::string, std::string>> meta = {
+        {"kind", kDbKind}, {"identify_definition", def.canonical_json()}, {"identify_file", def.file}};
+    for (auto& entry : database_provenance_meta()) meta.push_back(std::move(entry));
+    db.put_meta(meta, "cannot write");
   });
   return open_to_resume(path, def);
 }

@@ -11,7 +11,6 @@
 
 #include "base/input_error.h"
 #include "base/no_value.h"
-#include "sim/io/build_info.h"
 #include "sim/io/provenance.h"
 
 namespace pamsim {
@@ -40,16 +39,10 @@ void fill_new_database(const SqliteDb& db, const TuneDefinition& def) {
           ");"
           "CREATE TABLE trials(evaluation INTEGER, seed INTEGER, noise_scale REAL, status TEXT,"
           " message TEXT, metrics TEXT, PRIMARY KEY(evaluation, seed, noise_scale));");
-  db.put_meta({{"kind", "pamsim tune"},
-               {"tune_definition", def.canonical_json()},
-               {"tune_file", def.file},
-               {"pamsim_version", PAMSIM_VERSION},
-               {"git_commit", build_info().git_commit},
-               {"mujoco_version", build_info().mujoco_version},
-               {"sundials_version", build_info().sundials_version},
-               {"command_line", nlohmann::json(command_line()).dump()},
-               {"created_utc", utc_timestamp()}},
-              "cannot write");
+  std::vector<std::pair<std::string, std::string>> meta = {
+      {"kind", "pamsim tune"}, {"tune_definition", def.canonical_json()}, {"tune_file", def.file}};
+  for (auto& entry : database_provenance_meta()) meta.push_back(std::move(entry));
+  db.put_meta(meta, "cannot write");
 }
 
 // Binds `v` to the next parameter, NULL where it is not finite.
