@@ -116,7 +116,10 @@ TEST(ScenarioPlantKeysTest, BadFieldsNameTheirScenarioKey) {
             "muscles.agonist.plant.geometry.length_mm: is a value, not a table"},
            {"muscles.agonist.plant.bladder.diameter_mm=40",
             "muscles.agonist.plant.bladder.diameter_mm: must be 0"},
-           {"muscles.pam.plant.geometry.wall_thickness_mm=1", "muscles.pam"}});
+           {"muscles.pam.plant.geometry.wall_thickness_mm=1", "muscles.pam"},
+           // no value at all (a fuzzer's finding: it threw std::out_of_range)
+           {"muscles.agonist.plant=", "muscles.agonist.plant"},
+           {"muscles.agonist.plant.geometry.wall_thickness_mm=  ", kWall}});
   // a plant table without its file
   const auto dir = pamsim_test::fresh_dir("plant_keys_nofile");
   const std::string variant = pamsim_test::scenario_variant(

@@ -205,7 +205,8 @@ void apply_scenario_overrides(ConfigReader& in, const std::vector<std::string>& 
     const std::vector<std::string> parts = split_key(key);
     const bool plant = parts.size() >= 3 && parts[0] == "muscles" && parts[2] == "plant";
     if (plant && parts.size() > 3) in.nest_value("muscles." + parts[1] + ".plant", "file");
-    const std::string value = eq == std::string::npos ? "" : o.substr(o.find_first_not_of(' ', eq + 1));
+    const std::size_t start = eq == std::string::npos ? eq : o.find_first_not_of(' ', eq + 1);
+    const std::string value = start == std::string::npos ? "" : o.substr(start);
     const bool path = !value.empty() && (value[0] == '"' || value[0] == '\'');
     in.apply_override(plant && parts.size() == 3 && path && in.is_table(key)
                           ? key + ".file=" + value : o);
