@@ -96,6 +96,23 @@ TEST_F(CliRenderTest, DashStreamsTheVideoToStandardOutput) {
   EXPECT_EQ(line_count(run.err), 1) << run.err;
 }
 
+// --preset trades encoding speed for size: the same frames, a smaller file from veryslow
+TEST_F(CliRenderTest, PresetChoosesTheEncodersTradeOff) {
+  const fs::path dir = fresh_dir("render_preset");
+  std::uintmax_t bytes[2] = {0, 0};
+  const char* presets[2] = {"ultrafast", "veryslow"};
+  for (int i = 0; i < 2; ++i) {
+    const fs::path mp4 = dir / (std::string(presets[i]) + ".mp4");
+    const CliResult r = run_pamsim("render scenarios/drop_mass.toml --quiet --width 320 --height 240 "
+                                   "--set sim.duration_s=0.5 drop.time_s=0.2 --preset " +
+                                   std::string(presets[i]) + " -o " + mp4.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(decode_video(mp4.string()).frames, 15);
+    bytes[i] = fs::file_size(mp4);
+  }
+  EXPECT_LT(bytes[1], bytes[0]) << "veryslow packs the same frames tighter";
+}
+
 TEST_F(CliRenderTest, EglAndOsmesaDrawTheSameFrames) {
   const fs::path dir = fresh_dir("render_backends");
   const std::string common =
@@ -196,6 +213,7 @@ TEST_F(CliRenderTest, BadInputIsOneLineNonZeroAndLeavesNothing) {
       render + "-o " + mp4 + " --fps 1000",
       render + "-o " + mp4 + " --fps abc",
       render + "-o " + mp4 + " --quality best",
+      render + "-o " + mp4 + " --preset turbo",
       render + "-o " + mp4 + " --camera top",
       render + "-o " + mp4 + " --backend vulkan",
       render + "-o " + mp4 + " --backend egl --gpu 99",           // no such EGL device

@@ -1,6 +1,6 @@
 // render.cc: `pamsim render SCENARIO.toml [--set key=value ...] [-o FILE.mp4]
-// [--png-dir DIR] [--width W] [--height H] [--fps F] [--quality fast|default] [--camera NAME]
-// [--backend osmesa|egl] [--gpu N] [--plot] [--force]`: runs the scenario's trial (its own seed) and
+// [--png-dir DIR] [--width W] [--height H] [--fps F] [--quality fast|default] [--preset P]
+// [--camera NAME] [--backend osmesa|egl] [--gpu N] [--plot] [--force]`: runs the scenario's trial (its own seed) and
 // renders it headlessly while it runs (TrialVideo): H.264 MP4 (default
 // renders/<scenario>/<scenario>.mp4) and/or numbered PNGs, saying which GL renderer drew it.
 // The physics is the same as `pamsim run`'s, bit for bit.
@@ -105,6 +105,9 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--quality", opt->quality,
                   "fast (no shadows, reflections, skybox, multisampling) or default (the model's)")
       ->capture_default_str();
+  cmd->add_option("--preset", v.x264_preset,
+                  "libx264's speed/size trade-off: ultrafast ... veryslow (default: ultrafast "
+                  "with --quality fast, else veryfast)");
   cmd->add_option("--camera", v.camera, "A camera named in the model")->capture_default_str();
   cmd->add_option("--backend", opt->backend,
                   "GL context: osmesa or egl (default $PAMSIM_GL_BACKEND, else $MUJOCO_GL when "

@@ -178,6 +178,15 @@ void validate_video_options(const VideoOptions& o, const std::string& mp4_option
   if (o.mp4_path.empty() && o.png_dir.empty()) {
     throw InputError("nothing to write: give " + mp4_option + " FILE.mp4 or --png-dir DIR");
   }
+  if (!o.x264_preset.empty()) {
+    std::string names;
+    bool known = false;
+    for (const char* p : kX264Presets) {
+      known = known || o.x264_preset == p;
+      names += std::string(names.empty() ? "" : ", ") + p;
+    }
+    if (!known) throw InputError("--preset must be one of " + names + ", got '" + o.x264_preset + "'");
+  }
   if (!o.mp4_path.empty() && o.mp4_path != "-") {   // "-": standard output
     if (!ends_with_mp4(o.mp4_path)) {
       throw InputError(mp4_option + " " + o.mp4_path + ": the video is an MP4 file, name it .mp4");
@@ -230,7 +239,8 @@ TrialVideo::TrialVideo(const TrialModel& model, const Scenario& sc, const VideoO
     settings.width_px = options.width_px;
     settings.height_px = options.height_px;
     settings.fps = options.fps;
-    settings.x264_preset = x264_preset_for(options.quality);
+    settings.x264_preset =
+        options.x264_preset.empty() ? x264_preset_for(options.quality) : options.x264_preset;
     mp4_ = std::make_unique<Mp4Writer>(options.mp4_path, settings);
   }
   if (!options.png_dir.empty()) {

@@ -32,6 +32,8 @@ struct VideoOptions {
   int height_px = 720;
   int fps = 30;           // [1, kMaxVideoFps]
   RenderQuality quality = RenderQuality::kDefault;
+  std::string x264_preset;   // libx264's speed/size trade-off; empty: by quality (fast:
+                             // ultrafast, default: veryfast); one of kX264Presets
   std::string camera = "side";
   GlBackend backend = GlBackend::kOsmesa;
   EglDeviceChoice egl_device;   // egl only
@@ -42,6 +44,11 @@ struct VideoOptions {
 
 // "fast" | "default". Throws InputError "--quality must be fast or default, got '<name>'".
 RenderQuality parse_render_quality(const std::string& name);
+
+// libx264's presets, fastest first (what --preset accepts).
+inline constexpr const char* kX264Presets[] = {"ultrafast", "superfast", "veryfast", "faster",
+                                               "fast",      "medium",    "slow",     "slower",
+                                               "veryslow"};
 
 // Checks what needs no model: size, fps, the outputs' names. `mp4_option` names the option
 // that gave mp4_path in messages ("-o", "--video"). Throws InputError naming the option.
