@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "base/portable_random.h"
 #include "reflex/checks.h"
 
 namespace pamsim {
@@ -23,9 +24,9 @@ BridgeResistors nominal_bridge(const QuarterBridgeParams& p) {
 
 BridgeResistors draw_bridge(const QuarterBridgeParams& p, std::mt19937_64& rng) {
   const double spread = p.nominal_ohm * p.tolerance_pct / 100.0;
-  // the top 53 bits of one draw as a uniform [0, 1): the same arms on every platform
+  // a portable uniform [0, 1): the same arms on every platform
   const auto arm = [&] {
-    const double u = std::ldexp(static_cast<double>(rng() >> 11), -53);
+    const double u = unit_uniform(rng);
     return p.nominal_ohm + spread * (2.0 * u - 1.0);
   };
   BridgeResistors r;

@@ -9,6 +9,7 @@
 #include "base/config_reader.h"
 #include "base/enum_names.h"
 #include "base/format.h"
+#include "base/portable_random.h"
 #include "base/input_error.h"
 
 namespace pamsim {
@@ -81,14 +82,11 @@ double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
 
 double Randomization::draw(std::mt19937_64& rng) const {
   if (distribution == Distribution::kUniform) {
-    const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53;   // [0, 1), portable
+    const double u = unit_uniform(rng);
     return a + (b - a) * u;
   }
   for (int i = 0; i < kMaxRedraws; ++i) {
-    // Box-Muller on two portable uniforms: the same draws with any standard library
-    const double u1 = static_cast<double>(rng() >> 11) * 0x1.0p-53;
-    const double u2 = static_cast<double>(rng() >> 11) * 0x1.0p-53;
-    const double z = std::sqrt(-2.0 * std::log1p(-u1)) * std::cos(2.0 * M_PI * u2);
+    const double z = portable_standard_normal(rng);   // the same draws with any library
     const double v = distribution == Distribution::kNormal ? a + b * z : a * std::exp(b * z);
     if (v >= min && v <= max) return v;
   }

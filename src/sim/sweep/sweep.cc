@@ -15,15 +15,10 @@
 #include <toml++/toml.h>
 
 #include "base/enum_names.h"
+#include "base/portable_random.h"
 #include "base/input_error.h"
 
 namespace pamsim {
-namespace {
-
-// A uniform double in [0, 1) from the top 53 bits (the same on every platform).
-double unit_uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
-
-}  // namespace
 
 std::int64_t grid_points(const std::vector<SweepAxis>& axes, std::int64_t cap) {
   std::int64_t n = 1;
