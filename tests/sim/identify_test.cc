@@ -186,6 +186,19 @@ TEST(IdentifyTest, AStoppedRunResumedIsTheUninterruptedOne) {
   EXPECT_THROW(run(def, (dir / "whole.db").string(), false), InputError) << "it exists";
 }
 
+// The shipped example stays a valid identification: its recordings, tensile test and keys.
+TEST(IdentifyTest, TheShippedExampleLoads) {
+  const IdentifyDefinition def = load_identify_definition(
+      std::string(PAMSIM_SOURCE_DIR) + "/examples/identify/identify.toml");
+  EXPECT_EQ(def.parameters.size(), 4u);
+  ASSERT_EQ(def.recordings.size(), 3u);
+  EXPECT_TRUE(def.recordings[2].held_out);
+  EXPECT_EQ(def.recordings[0].data.channels.size(), 5u);
+  EXPECT_EQ(def.recordings[1].data.channels.size(), 2u) << "sine.csv: angle and one force";
+  ASSERT_EQ(def.tensile.size(), 1u);
+  EXPECT_EQ(def.tensile[0].muscle, "agonist");
+}
+
 TEST(IdentifyTest, BadFilesAreOneLineExitTwoAndNoDatabase) {
   const fs::path dir = pamsim_test::fresh_dir("identify_bad");
   const std::string good = pamsim_test::read_file(identify_file(dir));
