@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -168,6 +169,37 @@ TEST(IdentifyTest, ASensorsGainOffsetAndDelayAreParametersToo) {
   EXPECT_LT(r.fits[0].rmse_after, 0.1 * r.fits[0].rmse_before) << "down to the gauge noise";
   // a sensor's parameters are no scenario key: the trials' overrides do not hold them
   EXPECT_EQ(def.overrides_at(std::vector<double>{1.0, 0.0, 0.0}), def.overrides);
+}
+
+// A resume after a file the scenario reads changed is refused: its stored points belong to
+// the model as it was.
+TEST(IdentifyTest, AResumeAfterAnInputFileChangedIsRefused) {
+  const fs::path dir = pamsim_test::fresh_dir("identify_inputs");
+  fs::copy_file(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_antagonist.toml",
+                dir / "plant_antagonist.toml");
+  const std::string source_plant =
+      "plant = \"" + std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_antagonist.toml\"";
+  const std::string base = pamsim_test::scenario_variant(
+      dir, "reaching.toml", source_plant, "plant = \"" + (dir / "plant_antagonist.toml").string() + "\"");
+  record(dir / "steps.csv", kSteps);
+  pamsim_test::write_text(dir / "id.toml",
+      "base = \"" + base + "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 0\n"
+      "polish_iterations = 0\n"
+      "[[parameter]]\nkey = \"joints.shoulder.damping_N_m_s_per_rad\"\nfrom = 0.05\nto = 0.2\n"
+      "[[recording]]\nfile = \"steps.csv\"\nset = ['" + kSteps + "']\n");
+  const IdentifyDefinition def = load_identify_definition((dir / "id.toml").string());
+  const std::string db = (dir / "id.db").string();
+  { IdentifyDb made = IdentifyDb::create(db, def); }
+  { IdentifyDb same = IdentifyDb::open_to_resume(db, def); }   // nothing changed
+  std::ofstream(dir / "plant_antagonist.toml", std::ios::app) << "# edited\n";
+  try {
+    IdentifyDb::open_to_resume(db, def);
+    ADD_FAILURE() << "resumed on a changed plant file";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("muscles.antagonist.plant"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("changed since this identification began"),
+              std::string::npos) << e.what();
+  }
 }
 
 TEST(IdentifyTest, AStoppedRunResumedIsTheUninterruptedOne) {

@@ -7,7 +7,10 @@
 // exact bits of its point in the unit box; both phases (CMA-ES, then Ceres's Levenberg-
 // Marquardt) are deterministic, so a run killed at any moment is resumed by running it again
 // with the stored points answered from here: nothing is simulated twice and the result is the
-// uninterrupted run's. One writer at a time (its lock), WAL with full sync.
+// uninterrupted run's. The files the scenarios read are fingerprinted in meta "inputs" when
+// the database is made: a resume after one of them changed (a plant file edited) is refused,
+// since its stored points would belong to another model. One writer at a time (its lock),
+// WAL with full sync.
 #pragma once
 
 #include <map>

@@ -304,6 +304,25 @@ std::string IdentifyDefinition::canonical_json() const {
   return with.dump();
 }
 
+std::vector<std::pair<std::string, std::string>> identify_input_paths(const IdentifyDefinition& def) {
+  std::vector<std::pair<std::string, std::string>> out;
+  const std::string dir = fs::path(def.base_path).parent_path().string();
+  auto add = [&](const std::vector<std::string>& overrides) {
+    for (const auto& kp : load_recorded_scenario(def.base_text, def.base_path, overrides, dir, "").input_paths) {
+      const bool seen = std::any_of(out.begin(), out.end(),
+                                    [&](const auto& o) { return o.second == kp.second; });
+      if (!seen) out.push_back(kp);
+    }
+  };
+  add(def.overrides);
+  for (const IdentifyRecording& r : def.recordings) {
+    std::vector<std::string> o = def.overrides;
+    o.insert(o.end(), r.set.begin(), r.set.end());
+    add(o);
+  }
+  return out;
+}
+
 IdentifyDefinition load_identify_definition(const std::string& path) {
   ConfigReader in(path);
   IdentifyDefinition def;

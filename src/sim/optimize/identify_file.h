@@ -33,6 +33,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pam_actuator/tensile_test.h"
@@ -97,6 +98,11 @@ struct IdentifyDefinition {
   // samples.
   std::string canonical_json() const;
 };
+
+// The files the base scenario and every recording's scenario read (model, pneumatics,
+// calibration, parameter and plant files, schedule tables), as (scenario key, path), each
+// once: what a resumed identification must find unchanged (identify_db.h).
+std::vector<std::pair<std::string, std::string>> identify_input_paths(const IdentifyDefinition& def);
 
 // Reads and validates the file and its recordings. Throws InputError "<file>: <key> <problem>"
 // or the recording's own "<recording>: line <n>: <problem>".
