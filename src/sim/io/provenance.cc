@@ -80,6 +80,44 @@ std::vector<std::string> changed_inputs(const std::vector<InputFile>& earlier) {
   return changed;
 }
 
+nlohmann::json inputs_to_json(const std::vector<InputFile>& inputs) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const InputFile& f : inputs) {
+    out.push_back({{"key", f.key}, {"path", f.path}, {"bytes", f.bytes}, {"fnv1a64", f.fnv1a64}});
+  }
+  return out;
+}
+
+std::vector<InputFile> inputs_from_json(const nlohmann::json& j) {
+  std::vector<InputFile> out;
+  for (const auto& f : j) {
+    out.push_back({f.at("key").get<std::string>(), f.at("path").get<std::string>(),
+                   f.at("bytes").get<std::uint64_t>(), f.at("fnv1a64").get<std::string>()});
+  }
+  return out;
+}
+
+std::pair<std::string, std::string> inputs_meta(
+    const std::vector<std::pair<std::string, std::string>>& key_paths) {
+  return {"inputs", inputs_to_json(fingerprint_inputs(key_paths)).dump()};
+}
+
+void refuse_changed_inputs(const std::string& db_path, const std::string& stored,
+                           const std::string& what) {
+  const auto j = nlohmann::json::parse(stored, nullptr, false);
+  std::vector<InputFile> inputs;
+  try {
+    if (j.is_array()) inputs = inputs_from_json(j);
+  } catch (const nlohmann::json::exception&) {
+    throw InputError(db_path + ": its inputs entry is unreadable (a damaged database)");
+  }
+  const std::vector<std::string> changed = changed_inputs(inputs);
+  if (!changed.empty()) {
+    throw InputError(db_path + ": " + changed.front() + " since this " + what +
+                     " began; its stored points belong to the model as it was: start a new --db");
+  }
+}
+
 std::vector<std::pair<std::string, std::string>> database_provenance_meta() {
   return {{"pamsim_version", PAMSIM_VERSION},
           {"git_commit", build_info().git_commit},
@@ -123,10 +161,7 @@ nlohmann::json provenance_to_json(const Provenance& p) {
                       {"wall_time_s", number_or_null(t.wall_time_s)},
                       {"realtime_factor", number_or_null(t.realtime_factor)}});
   }
-  nlohmann::json inputs = nlohmann::json::array();
-  for (const InputFile& f : p.inputs) {
-    inputs.push_back({{"key", f.key}, {"path", f.path}, {"bytes", f.bytes}, {"fnv1a64", f.fnv1a64}});
-  }
+  const nlohmann::json inputs = inputs_to_json(p.inputs);
   nlohmann::json j = {{"format", "pamsim-provenance-1"},
                       {"command", p.command},
                       {"command_line", command_line()},
@@ -168,12 +203,7 @@ Provenance read_provenance(const std::string& dir) {
     p.seeds = field("seeds").get<std::vector<std::uint64_t>>();
     p.threads = field("threads").get<int>();
     if (j.contains("from")) p.from = j.at("from").get<std::string>();
-    if (j.contains("inputs")) {
-      for (const auto& f : j.at("inputs")) {
-        p.inputs.push_back({f.at("key").get<std::string>(), f.at("path").get<std::string>(),
-                            f.at("bytes").get<std::uint64_t>(), f.at("fnv1a64").get<std::string>()});
-      }
-    }
+    if (j.contains("inputs")) p.inputs = inputs_from_json(j.at("inputs"));
     if (j.contains("build")) {
       p.pamsim_version = j.at("build").value("pamsim_version", "");
       p.git_commit = j.at("build").value("git_commit", "");

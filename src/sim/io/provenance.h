@@ -49,6 +49,20 @@ std::string utc_timestamp();
 void record_command_line(int argc, const char* const* argv);
 const std::vector<std::string>& command_line();
 
+// Input files as JSON ({key, path, bytes, fnv1a64} each), and back (throws
+// nlohmann::json::exception on a malformed entry).
+nlohmann::json inputs_to_json(const std::vector<InputFile>& inputs);
+std::vector<InputFile> inputs_from_json(const nlohmann::json& j);
+
+// A database that resumes (tuning, identification) keeps its scenarios' input files in meta
+// "inputs" (this entry, fingerprinted now); refuse_changed_inputs, given that entry's value
+// on resume, throws InputError "<db_path>: <key> (<path>) changed since this <what> began;
+// ... start a new --db" when one of them changed (an entry of an older pamsim: none kept).
+std::pair<std::string, std::string> inputs_meta(
+    const std::vector<std::pair<std::string, std::string>>& key_paths);
+void refuse_changed_inputs(const std::string& db_path, const std::string& stored,
+                           const std::string& what);
+
 // What a run's database records of what made it, as meta entries: pamsim_version,
 // git_commit, mujoco_version, sundials_version, command_line (JSON), created_utc.
 std::vector<std::pair<std::string, std::string>> database_provenance_meta();

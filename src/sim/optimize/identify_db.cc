@@ -51,13 +51,9 @@ IdentifyDb IdentifyDb::create(const std::string& path, const IdentifyDefinition&
     db.exec("CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT);"
             "CREATE TABLE evaluations(point TEXT PRIMARY KEY, phase TEXT NOT NULL, cost REAL,"
             " residuals BLOB);");
-    nlohmann::json inputs = nlohmann::json::array();
-    for (const InputFile& f : fingerprint_inputs(identify_input_paths(def))) {
-      inputs.push_back({{"key", f.key}, {"path", f.path}, {"bytes", f.bytes}, {"fnv1a64", f.fnv1a64}});
-    }
     std::vector<std::pair<std::string, std::string>> meta = {
         {"kind", kDbKind}, {"identify_definition", def.canonical_json()},
-        {"identify_file", def.file}, {"inputs", inputs.dump()}};
+        {"identify_file", def.file}, inputs_meta(identify_input_paths(def))};
     for (auto& entry : database_provenance_meta()) meta.push_back(std::move(entry));
     db.put_meta(meta, "cannot write");
   });
@@ -71,19 +67,7 @@ IdentifyDb IdentifyDb::open_to_resume(const std::string& path, const IdentifyDef
     throw InputError(path + ": holds another identification (a different file, base scenario, "
                      "recording or setting); start a new --db");
   }
-  std::vector<InputFile> inputs;
-  const auto stored = nlohmann::json::parse(db.meta("inputs"), nullptr, false);
-  for (const auto& f : stored.is_array() ? stored : nlohmann::json::array()) {
-    if (f.is_object()) {
-      inputs.push_back({f.value("key", ""), f.value("path", ""), f.value("bytes", std::uint64_t{0}),
-                        f.value("fnv1a64", "")});
-    }
-  }
-  const std::vector<std::string> changed = changed_inputs(inputs);
-  if (!changed.empty()) {
-    throw InputError(path + ": " + changed.front() + " since this identification began; its "
-                     "points belong to the model as it was: start a new --db");
-  }
+  refuse_changed_inputs(path, db.meta("inputs"), "identification");
   db.become_writer("another pamsim identify is writing to it", kDbWhat);
   return IdentifyDb(std::move(db));
 }

@@ -4,6 +4,7 @@
 #include <sqlite3.h>
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -12,6 +13,7 @@
 #include "base/input_error.h"
 #include "base/no_value.h"
 #include "sim/io/provenance.h"
+#include "sim/io/scenario_file.h"
 
 namespace pamsim {
 namespace {
@@ -39,8 +41,11 @@ void fill_new_database(const SqliteDb& db, const TuneDefinition& def) {
           ");"
           "CREATE TABLE trials(evaluation INTEGER, seed INTEGER, noise_scale REAL, status TEXT,"
           " message TEXT, metrics TEXT, PRIMARY KEY(evaluation, seed, noise_scale));");
+  const std::string dir = std::filesystem::path(def.base_path).parent_path().string();
   std::vector<std::pair<std::string, std::string>> meta = {
-      {"kind", "pamsim tune"}, {"tune_definition", def.canonical_json()}, {"tune_file", def.file}};
+      {"kind", "pamsim tune"}, {"tune_definition", def.canonical_json()}, {"tune_file", def.file},
+      inputs_meta(load_recorded_scenario(def.base_text, def.base_path, def.overrides, dir, "")
+                      .input_paths)};
   for (auto& entry : database_provenance_meta()) meta.push_back(std::move(entry));
   db.put_meta(meta, "cannot write");
 }
@@ -72,6 +77,7 @@ TuneDb TuneDb::open_to_resume(const std::string& path, const TuneDefinition& def
                      ": holds another tuning definition (a different file, base scenario "
                      "or setting); start a new --db");
   }
+  refuse_changed_inputs(path, db.meta("inputs"), "tuning");
   db.db_.become_writer("another pamsim tune is writing to it", kWhat);
   return db;
 }

@@ -1,5 +1,7 @@
 // tune_db.h: a tuning run's database (SQLite, through the room of sim/io/sqlite_file.h):
 //   meta(key, value)   kind "pamsim tune", tune_definition (canonical JSON), tune_file,
+//                      inputs (the base scenario's files, fingerprinted: a resume after one
+//                      changed is refused, provenance.h),
 //                      pamsim_version, git_commit, mujoco_version, sundials_version,
 //                      command_line, created_utc
 //   evaluations(evaluation, u0.., x0.., objective0, fitness0, .., violation, trials, ok)
