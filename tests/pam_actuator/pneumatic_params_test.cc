@@ -149,12 +149,19 @@ TEST(PneumaticParamsTest, RegulatorLoopKeysAreChecked) {
 
   const PneumaticParams shipped =
       load_pneumatic_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/pneumatics.toml");
-  EXPECT_EQ(shipped.regulator_feedback, RegulatorFeedback::kInstant);
-  EXPECT_EQ(shipped.regulator_sense, RegulatorSense::kChamber);
-  EXPECT_FALSE(shipped.regulator_supply_conductance_m3_per_s_pa.has_value());
-  EXPECT_FALSE(shipped.regulator_exhaust_conductance_m3_per_s_pa.has_value());
-  EXPECT_EQ(regulator_supply_conductance(shipped), shipped.sonic_conductance_m3_per_s_pa);
-  EXPECT_EQ(regulator_exhaust_critical_ratio(shipped), shipped.critical_pressure_ratio);
+  // shipped: the ITV1000 class, its loop delayed and closed on its outlet (issue 25)
+  EXPECT_EQ(shipped.regulator_feedback, RegulatorFeedback::kDelayed);
+  EXPECT_EQ(shipped.regulator_sense, RegulatorSense::kOutlet);
+  EXPECT_NEAR(regulator_supply_conductance(shipped), 0.35e-8, 1e-22);
+  EXPECT_NEAR(regulator_exhaust_conductance(shipped), 0.35e-8, 1e-22);
+  // a file that leaves them out: the loop before, both paths following [valve]
+  const PneumaticParams plain = load_pneumatic_params(write_temp("plain.toml", "[regulator]\n"));
+  EXPECT_EQ(plain.regulator_feedback, RegulatorFeedback::kInstant);
+  EXPECT_EQ(plain.regulator_sense, RegulatorSense::kChamber);
+  EXPECT_FALSE(plain.regulator_supply_conductance_m3_per_s_pa.has_value());
+  EXPECT_FALSE(plain.regulator_exhaust_conductance_m3_per_s_pa.has_value());
+  EXPECT_EQ(regulator_supply_conductance(plain), plain.sonic_conductance_m3_per_s_pa);
+  EXPECT_EQ(regulator_exhaust_critical_ratio(plain), plain.critical_pressure_ratio);
 
   const PneumaticParams p = load_pneumatic_params(write_temp(
       "loop.toml",

@@ -205,12 +205,13 @@ TEST(RegulatorTest, BadSupplyAndExhaustRestrictionsAreNamed) {
   EXPECT_EQ(error_of(p), "");
 }
 
-TEST(RegulatorTest, TheShippedFileGivesTheNominalBracketValues) {
+// The shipped regulator is the bracket's slow end, the ITV1000 class (pneumatics.toml).
+TEST(RegulatorTest, TheShippedFileGivesTheItv1000BracketValues) {
   const PneumaticParams p =
       load_pneumatic_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/pneumatics.toml");
-  EXPECT_DOUBLE_EQ(p.regulator_dead_time_s, 0.005);
-  EXPECT_DOUBLE_EQ(p.regulator_valve_time_constant_s, 0.010);
-  EXPECT_DOUBLE_EQ(p.regulator_proportional_band_pa, 20e3);
+  EXPECT_DOUBLE_EQ(p.regulator_dead_time_s, 0.010);
+  EXPECT_DOUBLE_EQ(p.regulator_valve_time_constant_s, 0.020);
+  EXPECT_DOUBLE_EQ(p.regulator_proportional_band_pa, 380e3);
 }
 
 }  // namespace

@@ -376,6 +376,14 @@ reciprocal_trigger_inhibition = true
 pressure_noise_MPa = 0.001
 pressure_lowpass_hz = 0.0
 gauge_noise_V = 0.0005
+[sensors.pressure]
+model = "pse540"
+[sensors.gauge]
+model = "bridge"
+[sensors.fiber]
+model = "fabric"
+[sensors.encoder]
+model = "counts"
 )";
   const TrialResult shorthand = run_file("drop_mass.toml", {"sim.duration_s=2"});
   const TrialResult longhand = run_text(long_form);

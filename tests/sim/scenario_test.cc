@@ -87,14 +87,15 @@ TEST(ScenarioTest, PlantMustBeTheMuscleItsEstimatorDescribes) {
 // file's values stand.
 TEST(ScenarioTest, RegulatorKeysOverrideThePneumaticsFile) {
   const Scenario base = load_scenario(kScenario);
-  EXPECT_EQ(base.pneumatics.regulator_dead_time_s, 5.0 * 1e-3);
-  EXPECT_EQ(base.pneumatics.regulator_valve_time_constant_s, 10.0 * 1e-3);
-  EXPECT_EQ(base.pneumatics.regulator_proportional_band_pa, 20.0 * 1e3);
+  // the shipped ITV1000-class loop (models/pams/pneumatics.toml [regulator])
+  EXPECT_EQ(base.pneumatics.regulator_dead_time_s, 10.0 * 1e-3);
+  EXPECT_EQ(base.pneumatics.regulator_valve_time_constant_s, 20.0 * 1e-3);
+  EXPECT_EQ(base.pneumatics.regulator_proportional_band_pa, 380.0 * 1e3);
   const Scenario sc =
-      load_scenario(kScenario, {"valve.dead_time_ms=2", "valve.valve_time_constant_ms=20",
+      load_scenario(kScenario, {"valve.dead_time_ms=2", "valve.valve_time_constant_ms=5",
                                 "valve.proportional_band_kPa=50"});
   EXPECT_EQ(sc.pneumatics.regulator_dead_time_s, 2.0 * 1e-3);
-  EXPECT_EQ(sc.pneumatics.regulator_valve_time_constant_s, 20.0 * 1e-3);
+  EXPECT_EQ(sc.pneumatics.regulator_valve_time_constant_s, 5.0 * 1e-3);
   EXPECT_EQ(sc.pneumatics.regulator_proportional_band_pa, 50.0 * 1e3);
   // another valve model would ignore them: refused, by key
   const std::string ideal = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass_ideal.toml";
@@ -107,22 +108,23 @@ TEST(ScenarioTest, RegulatorKeysOverrideThePneumaticsFile) {
 // the bracket over the pneumatics file's [regulator]; absent, the file's model stands.
 TEST(ScenarioTest, RegulatorLoopKeysOverrideThePneumaticsFile) {
   const Scenario base = load_scenario(kScenario);
-  EXPECT_EQ(base.pneumatics.regulator_feedback, RegulatorFeedback::kInstant);
-  EXPECT_EQ(base.pneumatics.regulator_sense, RegulatorSense::kChamber);
-  EXPECT_FALSE(base.pneumatics.regulator_supply_conductance_m3_per_s_pa.has_value());
+  // the shipped loop: delayed, on the outlet, the ITV1000's conductance
+  EXPECT_EQ(base.pneumatics.regulator_feedback, RegulatorFeedback::kDelayed);
+  EXPECT_EQ(base.pneumatics.regulator_sense, RegulatorSense::kOutlet);
+  EXPECT_NEAR(*base.pneumatics.regulator_supply_conductance_m3_per_s_pa, 0.35e-8, 1e-22);
   const Scenario sc = load_scenario(
-      kScenario, {"valve.feedback=\"delayed\"", "valve.sense=\"outlet\"",
-                  "valve.sample_period_ms=0.5", "valve.supply_sonic_conductance_dm3_per_s_bar=0.35",
+      kScenario, {"valve.feedback=\"instant\"", "valve.sense=\"chamber\"",
+                  "valve.sample_period_ms=0.5", "valve.supply_sonic_conductance_dm3_per_s_bar=0.5",
                   "valve.supply_critical_pressure_ratio=0.25",
                   "valve.exhaust_sonic_conductance_dm3_per_s_bar=0.2",
                   "valve.exhaust_critical_pressure_ratio=0.35", "valve.outlet_volume_cm3=3",
                   "valve.tube_sonic_conductance_dm3_per_s_bar=2",
                   "valve.tube_critical_pressure_ratio=0.45"});
   const PneumaticParams& p = sc.pneumatics;
-  EXPECT_EQ(p.regulator_feedback, RegulatorFeedback::kDelayed);
-  EXPECT_EQ(p.regulator_sense, RegulatorSense::kOutlet);
+  EXPECT_EQ(p.regulator_feedback, RegulatorFeedback::kInstant);
+  EXPECT_EQ(p.regulator_sense, RegulatorSense::kChamber);
   EXPECT_EQ(p.regulator_sample_period_s, 0.5 * 1e-3);
-  EXPECT_NEAR(*p.regulator_supply_conductance_m3_per_s_pa, 0.35e-8, 1e-22);
+  EXPECT_NEAR(*p.regulator_supply_conductance_m3_per_s_pa, 0.5e-8, 1e-22);
   EXPECT_EQ(*p.regulator_supply_critical_ratio, 0.25);
   EXPECT_NEAR(*p.regulator_exhaust_conductance_m3_per_s_pa, 0.2e-8, 1e-22);
   EXPECT_EQ(*p.regulator_exhaust_critical_ratio, 0.35);
@@ -305,8 +307,11 @@ TEST(ScenarioTest, TheGaugeAsHardwareIsCalibratedAndReadsTheForce) {
 // The pressure sensor, fiber sensor and encoder as hardware reach the trial: the plant is
 // untouched (its true length), the estimate and the fiber's rate read the hardware.
 TEST(ScenarioTest, TheSensorsAsHardwareReachTheTrial) {
-  const std::vector<std::string> base = {"sim.duration_s=1.2"};
-  std::vector<std::string> on = base;
+  // the shipped drop scenario has them on: the ideal instruments are the comparison
+  const std::vector<std::string> base = {"sim.duration_s=1.2", "sensors.pressure.model=\"ideal\"",
+                                         "sensors.fiber.model=\"ideal\"",
+                                         "sensors.encoder.model=\"ideal\""};
+  std::vector<std::string> on = {"sim.duration_s=1.2"};
   on.insert(on.end(), {"sensors.pressure.model=\"pse540\"", "sensors.fiber.model=\"fabric\"",
                        "sensors.encoder.model=\"counts\""});
   const Scenario ideal = load_scenario(kScenario, base), built = load_scenario(kScenario, on);
