@@ -16,20 +16,22 @@ import tempfile
 
 TRIALS = 20
 
-# (label, overrides) for the regulator bracket of models/pams/pneumatics.toml [regulator]
+# (label, overrides) for the regulator bracket of models/pams/pneumatics.toml [regulator]:
+# the shipped ITV1000-class loop (issue 25), the ITV2000 class, the loop before issue 25
+LOOP_BEFORE = ['valve.feedback="instant"', 'valve.sense="chamber"', "valve.dead_time_ms=5",
+               "valve.valve_time_constant_ms=10", "valve.proportional_band_kPa=20",
+               "valve.supply_sonic_conductance_dm3_per_s_bar=1",
+               "valve.exhaust_sonic_conductance_dm3_per_s_bar=1"]
 REGULATOR_ROWS = [
     ("ideal source (`valve.model=\"iso6358\"`)", ['valve.model="iso6358"']),
-    ("nominal 5 ms / 10 ms / 20 kPa (shipped)", []),
-    ("dead time 2 ms", ["valve.dead_time_ms=2"]),
-    ("dead time 10 ms", ["valve.dead_time_ms=10"]),
-    ("valve lag 5 ms", ["valve.valve_time_constant_ms=5"]),
-    ("valve lag 20 ms", ["valve.valve_time_constant_ms=20"]),
-    ("band 10 kPa", ["valve.proportional_band_kPa=10"]),
-    ("band 50 kPa", ["valve.proportional_band_kPa=50"]),
-    ("fastest (2 / 5 / 10)", ["valve.dead_time_ms=2", "valve.valve_time_constant_ms=5",
-                              "valve.proportional_band_kPa=10"]),
-    ("slowest (10 / 20 / 50)", ["valve.dead_time_ms=10", "valve.valve_time_constant_ms=20",
-                                "valve.proportional_band_kPa=50"]),
+    ("loop before issue 25: instant, on the chamber, 5 ms / 10 ms / 20 kPa, C = 1", LOOP_BEFORE),
+    ("ITV2000 class: delayed, on its outlet, 2 ms / 5 ms / 250 kPa, C = 1",
+     ["valve.dead_time_ms=2", "valve.valve_time_constant_ms=5", "valve.proportional_band_kPa=250",
+      "valve.supply_sonic_conductance_dm3_per_s_bar=1",
+      "valve.exhaust_sonic_conductance_dm3_per_s_bar=1"]),
+    ("ITV1000 class with instant feedback (the pilot diaphragm's bound)",
+     ['valve.feedback="instant"']),
+    ("ITV1000 class: delayed, on its outlet, 10 ms / 20 ms / 380 kPa, C = 0.35 (shipped)", []),
 ]
 
 GATES_OFF = ["reflex.refractory_s=0", "reflex.arm_after_s=0", "reflex.min_tension_N=0",
@@ -129,17 +131,17 @@ def main():
         "Ideal plant (`drop_mass_ideal.toml`): model reflex " + cell(ideal) +
         "; fiber reflex " + cell(ideal_fiber) + ".",
         "",
-        "Physical plant across the regulator bracket (dead time / valve lag / band):",
+        "Physical plant across the regulator bracket (feedback, sensing, dead time / valve lag / band, C):",
         "",
         table(pamsim, threads, REGULATOR_ROWS, "regulator"),
         "",
-        "Physical plant, nominal regulator, each gate off:",
+        "Physical plant, shipped regulator (ITV1000 class), each gate off:",
         "",
         table(pamsim, threads, GATE_ROWS, "gate"),
         "",
-        "Physical plant, slowest regulator (10 / 20 / 50), each gate off:",
+        "Physical plant, the loop before issue 25, each gate off:",
         "",
-        table(pamsim, threads, GATE_ROWS, "gate", REGULATOR_ROWS[-1][1]),
+        table(pamsim, threads, GATE_ROWS, "gate", LOOP_BEFORE),
     ]
     publish("\n".join(parts) + "\n", out, "findings.md")
 
