@@ -273,6 +273,12 @@ std::vector<Table> pneumatic_schema(PneumaticParams* params) {
          [solver](const std::string& v) {
            solver->on_command_change =
                v == "warm" ? CommandChangePolicy::kWarm : CommandChangePolicy::kReinit;
+         }},
+        {"on_loop_action",
+         {"warm", "reinit"},
+         [solver](const std::string& v) {
+           solver->on_loop_action =
+               v == "warm" ? CommandChangePolicy::kWarm : CommandChangePolicy::kReinit;
          }}}},
   };
 }

@@ -33,6 +33,9 @@ struct PneumaticSolverParams {
   double relative_tolerance = 1e-4;   // [-], (0, 1e-2]
   double absolute_tolerance_pa = 1.0;  // [Pa], > 0
   CommandChangePolicy on_command_change = CommandChangePolicy::kReinit;
+  // The same for an action of the delayed regulator loop (the held sensed pressure steps
+  // by what the pressure moved in one sample period: a small jump every sample).
+  CommandChangePolicy on_loop_action = CommandChangePolicy::kWarm;
 };
 
 struct PneumaticParams {

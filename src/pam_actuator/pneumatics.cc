@@ -172,7 +172,7 @@ void PneumaticSystem::handle_events_due(double t_s) {
   while (feedback_->next_action_s() <= t_s) {
     if (!feedback_->act()) continue;
     for (int i = 0; i < muscle_count(); ++i) ode_->set_sensed_abs(i, feedback_->held()[i]);
-    if (params_.solver.on_command_change == CommandChangePolicy::kReinit) reinit_pending_ = true;
+    if (params_.solver.on_loop_action == CommandChangePolicy::kReinit) reinit_pending_ = true;
   }
 }
 

@@ -198,10 +198,17 @@ TEST(PneumaticParamsTest, SolverStringsAreChecked) {
             std::string::npos);
   EXPECT_NE(load_error("[solver]\non_command_change = 3\n").find("solver.on_command_change"),
             std::string::npos);
+  EXPECT_NE(load_error("[solver]\non_loop_action = \"cold\"\n")
+                .find("solver.on_loop_action: unknown value \"cold\", allowed warm | reinit"),
+            std::string::npos);
   const PneumaticParams p = load_pneumatic_params(write_temp(
       "adams.toml", "[solver]\nmethod = \"adams\"\non_command_change = \"warm\"\n"));
   EXPECT_EQ(p.solver.method, CvodeMethod::kAdams);
   EXPECT_EQ(p.solver.on_command_change, CommandChangePolicy::kWarm);
+  EXPECT_EQ(p.solver.on_loop_action, CommandChangePolicy::kWarm);   // its default
+  const PneumaticParams r =
+      load_pneumatic_params(write_temp("loop_reinit.toml", "[solver]\non_loop_action = \"reinit\"\n"));
+  EXPECT_EQ(r.solver.on_loop_action, CommandChangePolicy::kReinit);
 }
 
 }  // namespace

@@ -10,6 +10,9 @@
 // Re-pinned when the shipped physical scenarios took the hardware's error sources (issue 25:
 // PSE540-class pressure sensors, the bridge gauges with their calibration, the fabric fiber
 // sensor, encoder counts, the ITV1000-class regulator loop); drop_mass_ideal.toml's pin holds.
+// Re-pinned once more in the same change when the delayed loop's 1 ms actions stopped
+// restarting CVODE (solver.on_loop_action = "warm": the chamber within 0.42 kPa of a tight
+// reference against 0.31 with restarts, at a tenth of the right-hand sides).
 #include <gtest/gtest.h>
 
 extern "C" {
@@ -64,14 +67,14 @@ TEST(PhysicsDigestTest, Sha256OfAKnownTextIsTheStandardOne) {
 TEST(PhysicsDigestTest, ShortDropTrialsAreUnchanged) {
   const std::vector<std::string> shorter = {"sim.duration_s=1.5", "drop.time_s=0.3"};
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass.toml", shorter)),
-            "5984595edcbdcef9605141dcae16d00e8c8cccb54c94670542e842504e367f8e");
+            "a0eaa5f9fa7e8e0a47ad2af8f250e93ead6ce0e8b3c7e9ba825f923125a08199");
   // the ideal plant is drop_mass.toml as it was before the physical plants (issue 12)
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass_ideal.toml", shorter)),
             "6944d5d57b447a477901ad3d2f25cd58249b9c93c83ce16179dece4cad620015");
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass_fiber.toml", shorter)),
-            "967b00e10461922410412e510a38ee43869929ec3f338f1901098468ceb228b4");
+            "027fde543cebac002548e69affb093787d208c4502040ff084c32f1c197a6ac8");
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass_passive.toml", shorter)),
-            "c8f03cce37232eb84cc4f249ef42fdd7c1c4f74c527a52a16ee7d3013c1b6c72");
+            "d696feaadd4ddd7f2a0adb974022aed5cc989e539328fb20854d0a1781ff20cc");
 }
 
 }  // namespace
