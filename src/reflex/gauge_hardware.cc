@@ -32,6 +32,7 @@ void validate(const GaugeHardwareConfig& c) {
   validate_gauge_board(c.board, "sensors.gauge.board.");
   validate_prony(c.creep, "sensors.gauge.board.creep_weights",
                  "sensors.gauge.board.creep_times_s");
+  validate_board_vibration(c.vibration, "sensors.gauge.board.");
   checks::require_positive("sensors.gauge.calibration.max_N", c.calibration_max_n);
   if (!(c.calibration_steps >= 1 && c.calibration_steps <= 1000)) {
     checks::fail("sensors.gauge.calibration.steps", "within [1, 1000]", c.calibration_steps);
@@ -69,8 +70,23 @@ GaugeHardware::GaugeHardware(const GaugeHardwareConfig& config, const StrainGaug
   config_.bridge.amplifier_gain = gain_;
 }
 
+void GaugeHardware::enable_vibration(double physics_dt_s) {
+  if (!config_.vibration.enabled) return;
+  vibration_.emplace(board_first_mode_hz(config_.board, config_.vibration),
+                     config_.vibration.loss_factor / 2.0, physics_dt_s);
+}
+
+void GaugeHardware::observe(double f_n) {
+  if (vibration_) vibration_->step(f_n);
+}
+
 double GaugeHardware::voltage(double f_n) {
-  const double elastic = gauge_board_strain(config_.board, f_n, config_.board.contact_position_m);
+  const GaugeBoardParams& b = config_.board;
+  // a ringing board bends either way: its strain is linear in the equivalent pull
+  const double elastic =
+      vibration_ && vibration_->started()
+          ? gauge_board_strain(b, 1.0, b.contact_position_m) * vibration_->equivalent_force_n()
+          : gauge_board_strain(b, f_n, b.contact_position_m);
   const double strain = creep_.step(elastic);
   return quarter_bridge_output_v(config_.bridge, arms_, strain) + offset_v_;
 }

@@ -10,14 +10,20 @@
 // The amplifier's gain is the one unknown the paper pins: it is set so that a nominal gauge
 // (equal arms, no creep, small strain) has the muscle's published slope q (Table IV), and
 // its output offset is the published V_base; everything else is this gauge's physics.
+//
+// The board rings (board_vibration.h): fed the line's pull at every physics step
+// (observe()), a gauge reads the board's bend, not the pull of this instant. Without those
+// calls (the static calibration) it reads the pull held over the tick.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "pam_actuator/pam_params.h"
+#include "reflex/board_vibration.h"
 #include "reflex/gauge_board.h"
 #include "reflex/prony_creep.h"
 #include "reflex/quarter_bridge.h"
@@ -37,6 +43,7 @@ struct GaugeHardwareConfig {
   // sensors.gauge.board.creep_weights and creep_times_s (two lists of one length): none
   // until sized from PMMA data
   std::vector<PronyTerm> creep;
+  BoardVibrationParams vibration;   // sensors.gauge.board.vibration, density_kg_m3, loss_factor
   std::uint64_t instrument_seed = 1;   // sensors.instrument_seed: which built instruments
   // the static calibration (sensors.gauge.calibration.*): loads 0 .. max_n in `steps`
   // equal steps up and back down, each held hold_s before it is read
@@ -60,7 +67,15 @@ class GaugeHardware {
   GaugeHardware(const GaugeHardwareConfig& config, const StrainGaugeParams& nominal,
                 std::mt19937_64& instrument_rng, double sample_period_s);
 
-  // The amplifier's output at the end of a tick over which the line pulled f_n [N].
+  // The board's ringing, stepped by physics_dt_s from the first observe() on (a no-op when
+  // sensors.gauge.board.vibration is off).
+  void enable_vibration(double physics_dt_s);
+  bool vibrates() const { return vibration_.has_value(); }
+  // One physics step with the line's pull f_n [N] held over it.
+  void observe(double f_n);
+
+  // The amplifier's output at the end of a tick over which the line pulled f_n [N] (or, once
+  // observed, as far as the ringing board is bent now).
   double voltage(double f_n);
   double gain() const { return gain_; }
   const BridgeResistors& arms() const { return arms_; }
@@ -71,6 +86,7 @@ class GaugeHardware {
   double gain_ = 0.0;
   double offset_v_ = 0.0;
   PronyCreep creep_;
+  std::optional<BoardVibration> vibration_;
 };
 
 // The lab's static calibration of `gauge` (pass one not yet sampled: its creep must start

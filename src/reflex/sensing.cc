@@ -109,7 +109,13 @@ SensorSuite::SensorSuite(const SensingConfig& config,
         FiberSensor(config.sensors, dt_s, fiber_hardware(config.sensors, dt_s)),
         LengthEstimator(muscle.estimator, calibrated, estimator_params(config), dt_s),
         LowpassFilter(config.velocity_lowpass_hz, dt_s)});
+    channels_.back().gauge.enable_vibration(config.physics_dt_s);
+    observes_forces_ = observes_forces_ || channels_.back().gauge.vibrates();
   }
+}
+
+void SensorSuite::observe(const std::vector<double>& force_n) {
+  for (std::size_t j = 0; j < channels_.size(); ++j) channels_[j].gauge.observe(force_n[j]);
 }
 
 void SensorSuite::sample(const std::vector<MuscleTruth>& truth,

@@ -46,6 +46,7 @@ struct SensingConfig {
   // pressure (sensors.pressure_lowpass_hz) is no substitute (see its caveat in sensors.h).
   double velocity_lowpass_hz = 0.0;
   double control_hz = 100.0;         // sim.control_hz
+  double physics_dt_s = 0.001;       // sim.timestep_s: a ringing gauge board's step
 };
 
 // Throw InputError "<key> must be ..., got <value>" naming the scenario key:
@@ -63,6 +64,10 @@ class SensorSuite {
   int muscle_count() const { return static_cast<int>(channels_.size()); }
   // One tick: truth[j] -> (*readings)[j]; both sized muscle_count().
   void sample(const std::vector<MuscleTruth>& truth, std::vector<MuscleReading>* readings);
+  // Whether an instrument follows the line's pull between ticks (a ringing gauge board,
+  // gauge_hardware.h); if so, observe() at every physics step with each muscle's pull [N].
+  bool observes_forces() const { return observes_forces_; }
+  void observe(const std::vector<double>& force_n);
 
  private:
   struct Channel {
@@ -74,6 +79,7 @@ class SensorSuite {
   };
   std::mt19937_64 rng_;
   std::vector<Channel> channels_;
+  bool observes_forces_ = false;
 };
 
 }  // namespace pamsim

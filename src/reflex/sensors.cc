@@ -79,6 +79,14 @@ double StrainGauge::sample(double f_true_n, std::mt19937_64& rng) {
   return adc_read(adc_, clean + noise_v_ * standard_normal(rng));
 }
 
+void StrainGauge::enable_vibration(double physics_dt_s) {
+  if (hardware_) hardware_->enable_vibration(physics_dt_s);
+}
+
+void StrainGauge::observe(double f_true_n) {
+  if (hardware_) hardware_->observe(std::max(f_true_n, 0.0));
+}
+
 FiberSensor::FiberSensor(const SensorConfig& config, double sample_period_s,
                          std::optional<FiberHardware> hardware)
     : noise_m_s_(config.noise_scale * units::mm_to_m(config.fiber_noise_mm_s)),

@@ -142,6 +142,10 @@ class StrainGauge {
   StrainGauge(const StrainGaugeParams& gauge, const SensorConfig& config,
               std::optional<GaugeHardware> hardware = std::nullopt);
   double sample(double f_true_n, std::mt19937_64& rng);   // [V]
+  // The board's ringing (gauge_hardware.h): on, then fed the pull at every physics step.
+  void enable_vibration(double physics_dt_s);
+  bool vibrates() const { return hardware_ && hardware_->vibrates(); }
+  void observe(double f_true_n);
 
  private:
   StrainGaugeParams gauge_;

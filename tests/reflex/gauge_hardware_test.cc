@@ -91,6 +91,10 @@ TEST(GaugeHardwareTest, EveryBadKeyIsNamed) {
       {"sensors.gauge.calibration.max_N", [](GaugeHardwareConfig& c) { c.calibration_max_n = 0; }},
       {"sensors.gauge.calibration.steps", [](GaugeHardwareConfig& c) { c.calibration_steps = 0; }},
       {"sensors.gauge.calibration.hold_s", [](GaugeHardwareConfig& c) { c.calibration_hold_s = -1; }},
+      {"sensors.gauge.board.loss_factor", [](GaugeHardwareConfig& c) { c.vibration.loss_factor = 1.0; }},
+      {"sensors.gauge.board.loss_factor", [](GaugeHardwareConfig& c) { c.vibration.loss_factor = 0.0; }},
+      {"sensors.gauge.board.loss_factor", [](GaugeHardwareConfig& c) { c.vibration.loss_factor = NAN; }},
+      {"sensors.gauge.board.density_kg_m3", [](GaugeHardwareConfig& c) { c.vibration.density_kg_m3 = -1; }},
   };
   for (const Case& k : cases) {
     GaugeHardwareConfig c = config(0.4);

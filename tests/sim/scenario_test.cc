@@ -281,7 +281,9 @@ TEST(ScenarioTest, ABadGaugeCreepTermIsNamedWithItsIndex) {
 // The gauge as hardware reaches the trial: its calibrated Eq. (8) reads the force back, and
 // the same instrument seed builds the same gauges whatever the trial's seed.
 TEST(ScenarioTest, TheGaugeAsHardwareIsCalibratedAndReadsTheForce) {
+  // the board held still (its ringing at the impact: the test after this one)
   const std::vector<std::string> bridge = {"sensors.gauge.model=\"bridge\"",
+                                           "sensors.gauge.board.vibration=false",
                                            "sensors.gauge_noise_V=0", "sim.duration_s=1.5"};
   const Scenario sc = load_scenario(kScenario, bridge);
   EXPECT_TRUE(sc.sensing.sensors.gauge_hardware.enabled);
@@ -302,6 +304,27 @@ TEST(ScenarioTest, TheGaugeAsHardwareIsCalibratedAndReadsTheForce) {
   EXPECT_EQ(again.trajectory.at(tr.rows() - 1, meas), tr.at(tr.rows() - 1, meas));
   const TrialResult other = run_trial(arm, sc, 2);
   EXPECT_EQ(other.trajectory.at(0, meas), tr.at(0, meas));
+}
+
+// The gauge board's ringing reaches the trial: at rest it reads as the still board does,
+// at the impact (1.17 s) it reads the bend of the moment, not the pull.
+TEST(ScenarioTest, TheRingingBoardReadsAsTheStillOneButAtTheImpact) {
+  const std::vector<std::string> base = {"sensors.gauge_noise_V=0", "sim.duration_s=1.3"};
+  std::vector<std::string> still = base;
+  still.push_back("sensors.gauge.board.vibration=false");
+  const Scenario a = load_scenario(kScenario, base), b = load_scenario(kScenario, still);
+  const TrialResult ringing = run_trial(load_trial_model(a), a, 1);
+  const TrialResult held = run_trial(load_trial_model(b), b, 1);
+  const Trajectory& tr = ringing.trajectory;
+  const std::size_t meas = tr.column("force_meas_ago_N"), time = tr.column("time_s");
+  double before = 0.0, after = 0.0;
+  for (std::size_t row = 0; row < tr.rows(); ++row) {
+    const double d = std::fabs(tr.at(row, meas) - held.trajectory.at(row, meas));
+    double& worst = tr.at(row, time) < 1.16 ? before : after;
+    worst = std::max(worst, d);
+  }
+  EXPECT_LT(before, 1e-9);
+  EXPECT_GT(after, 0.5);
 }
 
 // The pressure sensor, fiber sensor and encoder as hardware reach the trial: the plant is

@@ -133,6 +133,7 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
   pressure_pa_.resize(n_);
   command_pa_.resize(n_);
   muscle_length_m_.resize(n_);
+  step_force_n_.resize(n_);
   slip_.assign(n_, 0);
   for (std::size_t i = 0; i < n_; ++i) {   // a physical muscle's chamber has its own shape
     const MuscleSpec& spec = sc.muscles[tm.muscles[i].spec];

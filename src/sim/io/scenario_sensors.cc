@@ -77,6 +77,10 @@ void read_gauge_hardware(ConfigReader& in, GaugeHardwareConfig* g) {
   board.gauge_position_m = get_mm(in, b + "board.gauge_position_mm", board.gauge_position_m);
   board.contact_position_m = get_mm(in, b + "board.contact_position_mm", board.contact_position_m);
   g->creep = read_creep(in, b + "board.", g->creep);
+  BoardVibrationParams& v = g->vibration;
+  v.enabled = in.get_bool(b + "board.vibration", v.enabled);
+  v.density_kg_m3 = in.get_double(b + "board.density_kg_m3", v.density_kg_m3);
+  v.loss_factor = in.get_double(b + "board.loss_factor", v.loss_factor);
   g->calibration_max_n = in.get_double(b + "calibration.max_N", g->calibration_max_n);
   const std::int64_t steps = in.get_int(b + "calibration.steps", g->calibration_steps);
   in.check(steps >= 1 && steps <= 1000, b + "calibration.steps",
@@ -133,6 +137,7 @@ void read_sensors(ConfigReader& in, Scenario* sc) {
   read_pressure_hardware(in, &s.pressure_hardware);
   read_fiber_and_encoder(in, &s.fiber_hardware, &s.encoder);
   sc->sensing.control_hz = sc->control_hz;   // velocity_lowpass_hz: the controller's reader
+  sc->sensing.physics_dt_s = sc->timestep_s;
   in_file(in, [&] {
     validate(sc->sensing);
     return 0;
