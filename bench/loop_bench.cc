@@ -99,10 +99,19 @@ void BM_BareMjStep(benchmark::State& state) {
 BENCHMARK(BM_BareMjStep)->Unit(benchmark::kMillisecond);
 
 // Variants of a scenario's hardware (issue 25): none, the plants' braid friction as
-// Maxwell-slip elements (travels 0.1 and 0.5 mm), or 0.5 mm nylon lines (E 2.5 GPa).
-enum class Hardware { kShipped, kMaxwellSlip, kNylonLines };
+// Maxwell-slip elements (travels 0.1 and 0.5 mm), 0.5 mm nylon lines (E 2.5 GPa), the
+// gauge board held still, or every instrument ideal (the shipped ones are hardware).
+enum class Hardware { kShipped, kMaxwellSlip, kNylonLines, kStillBoard, kIdealInstruments };
 
 void change_hardware(Hardware hardware, Scenario* sc) {
+  SensorConfig& s = sc->sensing.sensors;
+  if (hardware == Hardware::kStillBoard) s.gauge_hardware.vibration.enabled = false;
+  if (hardware == Hardware::kIdealInstruments) {
+    s.gauge_hardware.enabled = false;
+    s.pressure_hardware.enabled = false;
+    s.fiber_hardware.enabled = false;
+    s.encoder.enabled = false;
+  }
   const double line_radius_m = 0.25e-3, nylon_modulus_pa = 2.5e9;
   for (MuscleSpec& m : sc->muscles) {
     if (hardware == Hardware::kNylonLines) {
@@ -150,6 +159,12 @@ BENCHMARK_CAPTURE(BM_TrialLoop, reflex_ideal, "drop_mass_ideal.toml", Hardware::
 BENCHMARK_CAPTURE(BM_TrialLoop, reflex_maxwell_slip, "drop_mass.toml", Hardware::kMaxwellSlip)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_TrialLoop, reflex_nylon_lines, "drop_mass.toml", Hardware::kNylonLines)
+    ->Unit(benchmark::kMillisecond);
+// what the instruments as hardware cost: the board's ringing, and all of them
+BENCHMARK_CAPTURE(BM_TrialLoop, reflex_still_board, "drop_mass.toml", Hardware::kStillBoard)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TrialLoop, reflex_ideal_instruments, "drop_mass.toml",
+                  Hardware::kIdealInstruments)
     ->Unit(benchmark::kMillisecond);
 
 void BM_TwentyTrials(benchmark::State& state) {

@@ -162,13 +162,6 @@ void TrialRun::log_row(double t) {
 }
 
 bool TrialRun::physics_step(double t) {
-  // an instrument that follows the pull between ticks sees this step's (a ringing board)
-  if (sensors_.observes_forces()) {
-    for (std::size_t i = 0; i < n_; ++i) {
-      step_force_n_[i] = -pam_actuator_force(m_, d_, tm_.muscles[i].actuator);
-    }
-    sensors_.observe(step_force_n_);
-  }
   // forces with the pressures at t
   mj_step2(m_, d_);
   const char* unstable = diverged_reason(d_);
@@ -176,6 +169,14 @@ bool TrialRun::physics_step(double t) {
   if (unstable) {
     set_status("diverged", unstable, t);
     return false;
+  }
+  // an instrument that follows the pull between ticks sees this step's (a ringing board):
+  // the lines' pulls MuJoCo has just applied over [t, t + dt]
+  if (sensors_.observes_forces()) {
+    for (std::size_t i = 0; i < n_; ++i) {
+      step_force_n_[i] = -d_->actuator_force[tm_.muscles[i].actuator];
+    }
+    sensors_.observe(step_force_n_);
   }
 
   // pneumatics over [t, t + dt] with this step's muscle length and velocity: the line's
