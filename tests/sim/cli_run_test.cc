@@ -90,6 +90,30 @@ TEST(CliRunTest, BadInputIsOneLineNonZeroAndWritesNothing) {
   }
 }
 
+// The hardware's error sources (issue 25): a negative creep constant, a tolerance over 100 %,
+// a line diameter of zero, a loss factor of 1: one line naming the key, exit 2, no output.
+TEST(CliRunTest, BadHardwareKeysAreOneLineExitTwoAndWriteNothing) {
+  const fs::path out = fresh_dir("run_bad_hardware") / "new" / "out";
+  struct Case { std::string set, key; };
+  for (const Case& c : std::vector<Case>{
+           {"--set 'sensors.gauge.board.creep_weights=[-0.02]' "
+            "--set 'sensors.gauge.board.creep_times_s=[60]'",
+            "sensors.gauge.board.creep_weights[0]"},
+           {"--set 'sensors.fiber.creep_weights=[-0.02]' --set 'sensors.fiber.creep_times_s=[60]'",
+            "sensors.fiber.creep_weights[0]"},
+           {"--set sensors.gauge.tolerance_pct=150", "sensors.gauge.tolerance_pct"},
+           {"--set muscles.agonist.line_diameter_mm=0 --set muscles.agonist.line_modulus_MPa=2500",
+            "muscles.agonist.line_diameter_mm"},
+           {"--set sensors.gauge.board.loss_factor=1", "sensors.gauge.board.loss_factor"}}) {
+    const CliResult r = run_pamsim("run scenarios/drop_mass.toml " + c.set + " --out " +
+                                   out.string());
+    EXPECT_EQ(r.exit_code, 2) << c.set;
+    EXPECT_EQ(line_count(r.err), 1) << c.set << ": " << r.err;
+    EXPECT_NE(r.err.find(c.key), std::string::npos) << c.set << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out.parent_path())) << c.set;
+  }
+}
+
 // Every regular file under `dir` with its bytes (folders as names), for before/after checks.
 std::map<std::string, std::string> snapshot(const fs::path& dir) {
   std::map<std::string, std::string> files;
