@@ -17,33 +17,31 @@ import subprocess
 import sys
 import tempfile
 
-ITV2000 = ["valve.supply_sonic_conductance_dm3_per_s_bar=1.0",
-           "valve.exhaust_sonic_conductance_dm3_per_s_bar=1.0",
-           "valve.dead_time_ms=2", "valve.valve_time_constant_ms=5"]
-ITV1000 = ["valve.supply_sonic_conductance_dm3_per_s_bar=0.35",
-           "valve.exhaust_sonic_conductance_dm3_per_s_bar=0.35",
-           "valve.dead_time_ms=10", "valve.valve_time_constant_ms=20"]
-LOOP = ['valve.feedback="delayed"', 'valve.sense="outlet"']
+def loop(feedback, sense, dead_ms, lag_ms, band_kpa, conductance):
+    """The --set overrides of one regulator: its loop, dead time, valve lag, band, and the
+    supply and exhaust sonic conductance [dm^3/(s bar)]."""
+    return [f'valve.feedback="{feedback}"', f'valve.sense="{sense}"',
+            f"valve.dead_time_ms={dead_ms}", f"valve.valve_time_constant_ms={lag_ms}",
+            f"valve.proportional_band_kPa={band_kpa}",
+            f"valve.supply_sonic_conductance_dm3_per_s_bar={conductance}",
+            f"valve.exhaust_sonic_conductance_dm3_per_s_bar={conductance}"]
 
-# (label, overrides); the fast / slow ends' bands are pneumatics.toml's derivation
+
+# (label, overrides); the fast / slow ends' bands are pneumatics.toml's derivation; the
+# shipped regulator (since issue 25) is the slow end with its loop delayed at the outlet
 ROWS = [
-    ("shipped (instant, chamber; 5 ms / 10 ms / 20 kPa)", []),
-    ("shipped, dead time 1000 ms", ["valve.dead_time_ms=1000"]),
-    ("old bracket fastest (2 / 5 / 10 kPa)", ["valve.dead_time_ms=2",
-                                              "valve.valve_time_constant_ms=5",
-                                              "valve.proportional_band_kPa=10"]),
-    ("old bracket slowest (10 / 20 / 50 kPa)", ["valve.dead_time_ms=10",
-                                                "valve.valve_time_constant_ms=20",
-                                                "valve.proportional_band_kPa=50"]),
-    ("fast end, ITV2000 class, instant loop", ITV2000 + ["valve.proportional_band_kPa=250"]),
-    ("fast end, ITV2000 class, delayed loop at the outlet",
-     ITV2000 + LOOP + ["valve.proportional_band_kPa=250"]),
-    ("slow end, ITV1000 class, instant loop", ITV1000 + ["valve.proportional_band_kPa=380"]),
-    ("slow end, ITV1000 class, delayed loop at the outlet",
-     ITV1000 + LOOP + ["valve.proportional_band_kPa=380"]),
-    ("delayed loop at the outlet, shipped 20 kPa band", LOOP),
+    ("loop before issue 25 (instant, chamber; 5 ms / 10 ms / 20 kPa, C = 1)",
+     loop("instant", "chamber", 5, 10, 20, 1.0)),
+    ("loop before issue 25, dead time 1000 ms", loop("instant", "chamber", 1000, 10, 20, 1.0)),
+    ("old bracket fastest (2 / 5 / 10 kPa)", loop("instant", "chamber", 2, 5, 10, 1.0)),
+    ("old bracket slowest (10 / 20 / 50 kPa)", loop("instant", "chamber", 10, 20, 50, 1.0)),
+    ("fast end, ITV2000 class, instant loop", loop("instant", "chamber", 2, 5, 250, 1.0)),
+    ("fast end, ITV2000 class, delayed loop at the outlet", loop("delayed", "outlet", 2, 5, 250, 1.0)),
+    ("slow end, ITV1000 class, instant loop", loop("instant", "chamber", 10, 20, 380, 0.35)),
+    ("slow end, ITV1000 class, delayed loop at the outlet (shipped)", []),
+    ("delayed loop at the outlet, the old 20 kPa band", loop("delayed", "outlet", 5, 10, 20, 1.0)),
     ("delayed loop at the outlet, dead time 1000 ms, band 250 kPa",
-     LOOP + ["valve.dead_time_ms=1000", "valve.proportional_band_kPa=250"]),
+     loop("delayed", "outlet", 1000, 10, 250, 1.0)),
 ]
 
 
