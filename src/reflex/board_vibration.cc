@@ -22,7 +22,7 @@ void validate_board_vibration(const BoardVibrationParams& v, const std::string& 
 }
 
 double board_first_mode_hz(const GaugeBoardParams& board, const BoardVibrationParams& v) {
-  const double length = board.contact_position_m;
+  const double length = board_free_length_m(board);
   const double area = board.width_m * board.thickness_m;
   const double second_moment = board.width_m * std::pow(board.thickness_m, 3) / 12.0;
   return kLambda1 * kLambda1 / (2.0 * kPi * length * length) *

@@ -3,8 +3,8 @@
 // the ringing (issue 25, item 3: "impact-excited vibration of line and board"; the paper's
 // mistrips and self-retriggering came from a noisy velocity estimate, seeds/000 Sec. IV).
 //
-// The board is the cantilever of gauge_board.h, clamped at x = 0 and pulled at the contact
-// point x_c, which this model takes as its free end (L = x_c). Its first mode (Euler-
+// The board is the cantilever of gauge_board.h, clamped at x = 0, free at L_b and pulled at
+// the contact point x_c (the mode's shape taken as the static one's). Its first mode (Euler-
 // Bernoulli, a uniform clamped-free beam; Blevins, Formulas for Natural Frequency and Mode
 // Shape, Table 8-1: lambda_1 = 1.87510):
 //   f1 = lambda_1^2 / (2 pi L^2) sqrt(E I / (rho A)),   I = w t^3 / 12,   A = w t,
@@ -21,8 +21,8 @@
 // PLEXIGLAS GS/XT technical data, ISO 1183); its loss factor 0.02-0.04 at room temperature
 // in the audio range (the material table of Cremer, Heckl & Petersson, Structure-Borne
 // Sound, 3rd ed., Springer 2005: "Plexiglas 2-4e-2"), taken as 0.03. The board's own size
-// is the assumption of gauge_hardware.h (20 x 5 mm, the line 40 mm from the clamp: f1 about
-// 840 Hz, a ringing that decays with a time constant of 1 / (zeta w1), about 13 ms).
+// is the assumption of gauge_hardware.h (20 x 5 mm, free 45 mm from the clamp: f1 about
+// 660 Hz, a ringing that decays with a time constant of 1 / (zeta w1), about 16 ms).
 #pragma once
 
 #include <string>
@@ -40,7 +40,7 @@ struct BoardVibrationParams {
 // Throws InputError "<prefix><key> must be ..., got <value>" (density_kg_m3, loss_factor).
 void validate_board_vibration(const BoardVibrationParams& v, const std::string& prefix);
 
-// f1 [Hz] of the board clamped at 0 and free at its contact position (formula above).
+// f1 [Hz] of the board clamped at 0 and free at L_b (formula above).
 double board_first_mode_hz(const GaugeBoardParams& board, const BoardVibrationParams& v);
 
 // The board's first mode under the line's pull, stepped by a fixed dt.

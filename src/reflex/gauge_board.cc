@@ -17,6 +17,10 @@ void validate_gauge_board(const GaugeBoardParams& b, const std::string& prefix) 
     checks::fail(prefix + "contact_position_mm", "beyond gauge_position_mm (the lever's end)",
                  units::m_to_mm(b.contact_position_m));
   }
+  if (!(b.length_m == 0.0 || b.length_m >= b.contact_position_m)) {
+    checks::fail(prefix + "length_mm", "0 (ending at contact_position_mm) or at least it",
+                 units::m_to_mm(b.length_m));
+  }
 }
 
 double gauge_board_strain(const GaugeBoardParams& b, double f_n, double contact_m) {

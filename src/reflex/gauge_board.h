@@ -22,10 +22,17 @@ struct GaugeBoardParams {
   double thickness_m = 0.0;      // t > 0
   double gauge_position_m = 0.0; // x_g >= 0, from the clamp to the gauge's centre
   double contact_position_m = 0.0;  // x_c > x_g, from the clamp to where the line bears
+  double length_m = 0.0;         // L_b >= x_c, the free end; 0: the board ends at x_c
 };
 
+// L_b, or x_c where the board ends at its contact.
+inline double board_free_length_m(const GaugeBoardParams& b) {
+  return b.length_m > 0.0 ? b.length_m : b.contact_position_m;
+}
+
 // Throws InputError "<prefix><key> must be ..., got <value>" (keys in mm and MPa:
-// youngs_modulus_MPa, width_mm, thickness_mm, gauge_position_mm, contact_position_mm).
+// youngs_modulus_MPa, width_mm, thickness_mm, gauge_position_mm, contact_position_mm,
+// length_mm).
 void validate_gauge_board(const GaugeBoardParams& board, const std::string& prefix);
 
 // The surface strain under the gauge with the line's pull f_n [N] at contact_m [m] (the

@@ -33,6 +33,7 @@ void validate(const GaugeHardwareConfig& c) {
   validate_prony(c.creep, "sensors.gauge.board.creep_weights",
                  "sensors.gauge.board.creep_times_s");
   validate_board_vibration(c.vibration, "sensors.gauge.board.");
+  validate_gauge_contact(c.contact, "sensors.gauge.contact.");
   checks::require_positive("sensors.gauge.calibration.max_N", c.calibration_max_n);
   if (!(c.calibration_steps >= 1 && c.calibration_steps <= 1000)) {
     checks::fail("sensors.gauge.calibration.steps", "within [1, 1000]", c.calibration_steps);
@@ -66,7 +67,8 @@ GaugeHardware::GaugeHardware(const GaugeHardwareConfig& config, const StrainGaug
       arms_(draw_bridge(config.bridge, instrument_rng)),
       gain_(nominal.q_v_per_n / nominal_volts_per_newton(config)),
       offset_v_(nominal.v_base_v),
-      creep_(config.creep, sample_period_s) {
+      creep_(config.creep, sample_period_s),
+      contact_(config.contact, config.board) {
   config_.bridge.amplifier_gain = gain_;
 }
 
@@ -77,16 +79,20 @@ void GaugeHardware::enable_vibration(double physics_dt_s) {
 }
 
 void GaugeHardware::observe(double f_n) {
-  if (vibration_) vibration_->step(f_n);
+  // a line that has slid off the board no longer bends it
+  if (vibration_) vibration_->step(contact_.lost() ? 0.0 : f_n);
 }
 
+void GaugeHardware::follow(double length_m, double f_n) { contact_.follow(length_m, f_n); }
+
 double GaugeHardware::voltage(double f_n) {
-  const GaugeBoardParams& b = config_.board;
-  // a ringing board bends either way: its strain is linear in the equivalent pull
-  const double elastic =
-      vibration_ && vibration_->started()
-          ? gauge_board_strain(b, 1.0, b.contact_position_m) * vibration_->equivalent_force_n()
-          : gauge_board_strain(b, f_n, b.contact_position_m);
+  // the bend per newton at the contact of this moment (none once the line is off the
+  // board); a ringing board bends either way, its strain linear in the equivalent pull
+  const double per_newton =
+      contact_.lost() ? 0.0 : gauge_board_strain(config_.board, 1.0, contact_.position_m());
+  const double pull = vibration_ && vibration_->started() ? vibration_->equivalent_force_n()
+                                                           : std::max(f_n, 0.0);
+  const double elastic = per_newton * pull;
   const double strain = creep_.step(elastic);
   return quarter_bridge_output_v(config_.bridge, arms_, strain) + offset_v_;
 }

@@ -25,6 +25,7 @@
 #include "pam_actuator/pam_params.h"
 #include "reflex/board_vibration.h"
 #include "reflex/gauge_board.h"
+#include "reflex/gauge_contact.h"
 #include "reflex/prony_creep.h"
 #include "reflex/quarter_bridge.h"
 
@@ -39,11 +40,12 @@ struct GaugeHardwareConfig {
   // sensors.gauge.board.*: the paper gives no board dimensions; these are an ASSUMPTION (a
   // 20 x 5 mm acrylic strip, the gauge 10 mm from the clamp, the line 30 mm beyond it:
   // about 0.5 % strain at 50 N), a README row. E from gauge_board.h.
-  GaugeBoardParams board = {3.3e9, 0.020, 0.005, 0.010, 0.040};
+  GaugeBoardParams board = {3.3e9, 0.020, 0.005, 0.010, 0.040, 0.045};
   // sensors.gauge.board.creep_weights and creep_times_s (two lists of one length): none
   // until sized from PMMA data
   std::vector<PronyTerm> creep;
   BoardVibrationParams vibration;   // sensors.gauge.board.vibration, density_kg_m3, loss_factor
+  GaugeContactParams contact;       // sensors.gauge.contact.*
   std::uint64_t instrument_seed = 1;   // sensors.instrument_seed: which built instruments
   // the static calibration (sensors.gauge.calibration.*): loads 0 .. max_n in `steps`
   // equal steps up and back down, each held hold_s before it is read
@@ -73,6 +75,10 @@ class GaugeHardware {
   bool vibrates() const { return vibration_.has_value(); }
   // One physics step with the line's pull f_n [N] held over it.
   void observe(double f_n);
+  // One control tick: where the line bears on the board now (gauge_contact.h), the muscle
+  // at length_m pulled by f_n [N].
+  void follow(double length_m, double f_n);
+  bool contact_lost() const { return contact_.lost(); }
 
   // The amplifier's output at the end of a tick over which the line pulled f_n [N] (or, once
   // observed, as far as the ringing board is bent now).
@@ -87,6 +93,7 @@ class GaugeHardware {
   double offset_v_ = 0.0;
   PronyCreep creep_;
   std::optional<BoardVibration> vibration_;
+  GaugeContact contact_;
 };
 
 // The lab's static calibration of `gauge` (pass one not yet sampled: its creep must start

@@ -126,6 +126,7 @@ void SensorSuite::sample(const std::vector<MuscleTruth>& truth,
 
     // sensors, in a fixed order: pressure, gauge, fiber
     const PressureReading pressure = ch.pressure.sample(truth[j].pressure_pa, rng_);
+    ch.gauge.follow(truth[j].length_m, truth[j].force_n);
     r.gauge_v = ch.gauge.sample(truth[j].force_n, rng_);
     r.fiber_rate_m_s = ch.fiber.sample(truth[j].length_m, rng_);
     r.pressure_sensor_v = pressure.voltage_v;

@@ -87,6 +87,10 @@ void StrainGauge::observe(double f_true_n) {
   if (hardware_) hardware_->observe(std::max(f_true_n, 0.0));
 }
 
+void StrainGauge::follow(double length_m, double f_true_n) {
+  if (hardware_) hardware_->follow(length_m, f_true_n);
+}
+
 FiberSensor::FiberSensor(const SensorConfig& config, double sample_period_s,
                          std::optional<FiberHardware> hardware)
     : noise_m_s_(config.noise_scale * units::mm_to_m(config.fiber_noise_mm_s)),

@@ -146,6 +146,8 @@ class StrainGauge {
   void enable_vibration(double physics_dt_s);
   bool vibrates() const { return hardware_ && hardware_->vibrates(); }
   void observe(double f_true_n);
+  // Each tick before sample(): where the line bears on the board (gauge_contact.h).
+  void follow(double length_m, double f_true_n);
 
  private:
   StrainGaugeParams gauge_;

@@ -152,6 +152,28 @@ TEST(ValidateTest, SlackEpisodeIsALongEnoughDropOfATautLine) {
       slack_episode_start(tension_log(std::vector<double>(50, 3.0)), "m", 0.0, 0.49, 0.1)));
 }
 
+// A gauge that reads nothing while its line pulls (the line has left the board) is an
+// episode too, with its cause; a reading that merely dips, or a weak pull, is not.
+TEST(ValidateTest, AGaugeThatStopsReadingUnderLoadIsAnEpisode) {
+  Trajectory tr;
+  tr.columns = {"time_s", "force_m_N", "force_meas_m_N"};
+  for (int i = 0; i < 100; ++i) {
+    const double f = 20.0;
+    double meas = i < 60 ? 20.0 : 0.1;   // the gauge falls silent at 0.60 s
+    if (i == 30 || i == 31) meas = 0.2;  // a 20 ms dropout: too short
+    tr.values.insert(tr.values.end(), {0.01 * i, f, meas});
+  }
+  const SlackEpisode e = first_slack_episode(tr, "m", 0.0, 0.99, 0.1);
+  EXPECT_NEAR(e.start_s, 0.60, 1e-12);
+  EXPECT_EQ(e.cause, "gauge");
+  // a pull under kPulledN that reads little is not a lost gauge
+  for (std::size_t i = 0; i < tr.rows(); ++i) tr.values[3 * i + 1] = kPulledN - 1.0;
+  EXPECT_TRUE(std::isnan(first_slack_episode(tr, "m", 0.0, 0.99, 0.1).start_s));
+  // zero tension is slack, whatever the gauge reads
+  for (std::size_t i = 60; i < tr.rows(); ++i) tr.values[3 * i + 1] = 0.0;
+  EXPECT_EQ(first_slack_episode(tr, "m", 0.0, 0.99, 0.1).cause, "slack");
+}
+
 TEST(ValidateTest, ReachingFindsTheAntagonistsSlackAndIsThreadIndependent) {
   const ReachingValidationSpec spec =
       load_reaching_validation(kScenarios + "validate_reaching.toml");

@@ -22,6 +22,7 @@ int read_bits(ConfigReader& in, const std::string& key, int fallback) {
 }
 
 constexpr EnumName<bool> kGaugeModels[] = {{false, "linear"}, {true, "bridge"}};
+constexpr EnumName<bool> kContactModels[] = {{false, "fixed"}, {true, "sliding"}};
 constexpr EnumName<bool> kPressureModels[] = {{false, "ideal"}, {true, "pse540"}};
 constexpr EnumName<bool> kFiberModels[] = {{false, "ideal"}, {true, "fabric"}};
 constexpr EnumName<bool> kEncoderModels[] = {{false, "ideal"}, {true, "counts"}};
@@ -61,6 +62,17 @@ std::vector<PronyTerm> read_creep(ConfigReader& in, const std::string& prefix,
   return creep;
 }
 
+// sensors.gauge.contact.*: where the line bears on the board (reflex/gauge_contact.h)
+void read_gauge_contact(ConfigReader& in, GaugeContactParams* c) {
+  const std::string k = "sensors.gauge.contact.";
+  c->sliding = read_model(in, k + "model", kContactModels, c->sliding);
+  c->misalignment_m = get_mm(in, k + "misalignment_mm", c->misalignment_m);
+  c->fitting_distance_m = get_mm(in, k + "fitting_distance_mm", c->fitting_distance_m);
+  c->shaft_distance_m = get_mm(in, k + "shaft_distance_mm", c->shaft_distance_m);
+  c->wrap_deg = in.get_double(k + "wrap_deg", c->wrap_deg);
+  c->friction_coefficient = in.get_double(k + "friction_coefficient", c->friction_coefficient);
+}
+
 // sensors.gauge.* and sensors.instrument_seed: the gauge as hardware (reflex/gauge_hardware.h)
 void read_gauge_hardware(ConfigReader& in, GaugeHardwareConfig* g) {
   g->enabled = read_model(in, "sensors.gauge.model", kGaugeModels, false);
@@ -76,11 +88,13 @@ void read_gauge_hardware(ConfigReader& in, GaugeHardwareConfig* g) {
   board.thickness_m = get_mm(in, b + "board.thickness_mm", board.thickness_m);
   board.gauge_position_m = get_mm(in, b + "board.gauge_position_mm", board.gauge_position_m);
   board.contact_position_m = get_mm(in, b + "board.contact_position_mm", board.contact_position_m);
+  board.length_m = get_mm(in, b + "board.length_mm", board.length_m);
   g->creep = read_creep(in, b + "board.", g->creep);
   BoardVibrationParams& v = g->vibration;
   v.enabled = in.get_bool(b + "board.vibration", v.enabled);
   v.density_kg_m3 = in.get_double(b + "board.density_kg_m3", v.density_kg_m3);
   v.loss_factor = in.get_double(b + "board.loss_factor", v.loss_factor);
+  read_gauge_contact(in, &g->contact);
   g->calibration_max_n = in.get_double(b + "calibration.max_N", g->calibration_max_n);
   const std::int64_t steps = in.get_int(b + "calibration.steps", g->calibration_steps);
   in.check(steps >= 1 && steps <= 1000, b + "calibration.steps",

@@ -114,25 +114,35 @@ ReachingValidationSpec load_reaching_validation(
   return spec;
 }
 
-double slack_episode_start(const Trajectory& tr, const std::string& label, double start_s,
-                           double end_s, double min_slack_s) {
+SlackEpisode first_slack_episode(const Trajectory& tr, const std::string& label, double start_s,
+                                 double end_s, double min_slack_s) {
   const std::size_t t = tr.column("time_s"), force = tr.column("force_" + label + "_N");
+  const std::string meas_name = "force_meas_" + label + "_N";
+  const bool read = tr.has_column(meas_name);
+  const std::size_t meas = read ? tr.column(meas_name) : 0;
   bool was_taut = false;
-  double slack_since = kNaN;
+  SlackEpisode episode{kNaN, ""};
   for (std::size_t i = 0; i < tr.rows(); ++i) {
     const double time = tr.at(i, t);
     if (time < start_s - 1e-9) continue;
     if (time > end_s + 1e-9) break;
-    if (tr.at(i, force) > 0.0) {
+    const double f = tr.at(i, force);
+    const bool unread = read && f >= kPulledN && tr.at(i, meas) < kReadN;
+    if (f > 0.0 && !unread) {
       was_taut = true;
-      slack_since = kNaN;
+      episode = {kNaN, ""};
       continue;
     }
     if (!was_taut) continue;
-    if (std::isnan(slack_since)) slack_since = time;
-    if (time - slack_since >= min_slack_s - 1e-9) return slack_since;
+    if (std::isnan(episode.start_s)) episode = {time, unread ? "gauge" : "slack"};
+    if (time - episode.start_s >= min_slack_s - 1e-9) return episode;
   }
-  return kNaN;
+  return {kNaN, ""};
+}
+
+double slack_episode_start(const Trajectory& tr, const std::string& label, double start_s,
+                           double end_s, double min_slack_s) {
+  return first_slack_episode(tr, label, start_s, end_s, min_slack_s).start_s;
 }
 
 namespace {
@@ -141,11 +151,14 @@ namespace {
 // before and after its slack episode); its slack episodes' starts, per trial, in *starts.
 void pool_muscle_errors(const ReachingValidationSpec& spec,
                         const std::vector<TrialResult>& trials, const std::string& label,
-                        double dt, ErrorPool (&pools)[2][3], std::vector<double>* starts) {
+                        double dt, ErrorPool (&pools)[2][3], std::vector<double>* starts,
+                        std::vector<std::string>* causes) {
   for (const TrialResult& r : trials) {
-    const double slack = slack_episode_start(r.trajectory, label, spec.window_start_s,
-                                             spec.window_end_s, spec.min_slack_s);
+    const SlackEpisode episode = first_slack_episode(r.trajectory, label, spec.window_start_s,
+                                                     spec.window_end_s, spec.min_slack_s);
+    const double slack = episode.start_s;
     starts->push_back(slack);
+    causes->push_back(episode.cause);
     const MuscleErrors e =
         muscle_errors(r.trajectory, label, spec.window_start_s, spec.window_end_s, dt);
     // before: from the line's first taut sample to the episode; after: from the episode
@@ -221,10 +234,12 @@ ReachingValidationResult run_reaching_validation(const ReachingValidationSpec& s
       }
     }
     std::vector<double> starts;
+    std::vector<std::string> causes;
     // pools per method and part, over every trial
     ErrorPool pools[2][3];
-    pool_muscle_errors(spec, result.trials, m.label, dt, pools, &starts);
+    pool_muscle_errors(spec, result.trials, m.label, dt, pools, &starts, &causes);
     result.slack_start_s.push_back(starts);
+    result.episode_cause.push_back(causes);
     add_muscle_rows(spec, m, pools, &result.rows);
   }
   return result;
@@ -233,7 +248,7 @@ ReachingValidationResult run_reaching_validation(const ReachingValidationSpec& s
 std::string table5_csv(const ReachingValidationResult& result) {
   std::ostringstream out;
   out << "muscle,method,part,samples,max_error_pct,rmse_pct,paper_max_error_pct,paper_rmse_pct,"
-         "slack_start_s\n";
+         "slack_start_s,episode_cause\n";
   for (const ReachingRow& row : result.rows) {
     std::size_t m = 0;
     while (m < result.scenario.muscles.size() && result.scenario.muscles[m].actuator != row.muscle)
@@ -242,7 +257,8 @@ std::string table5_csv(const ReachingValidationResult& result) {
         << csv_number(row.sim.max_pct) << ',' << csv_number(row.sim.rmse_pct) << ','
         << (row.paper ? csv_number(row.paper->max_pct) : "") << ','
         << (row.paper ? csv_number(row.paper->rmse_pct) : "") << ','
-        << csv_number(result.slack_start_s[m].front()) << '\n';
+        << csv_number(result.slack_start_s[m].front()) << ','
+        << result.episode_cause[m].front() << '\n';
   }
   return out.str();
 }
@@ -283,12 +299,16 @@ std::string table5_markdown(const ReachingValidationResult& result,
   for (const TrialResult& r : result.trials) ok += r.summary.status == "ok";
   out << "\nTrials that ran to the end: " << ok << " of " << result.trials.size()
       << ". Slack episodes (a line that has been taut goes " << format_value(spec.min_slack_s)
-      << " s at zero tension; before = from the line's first taut sample to the episode), start "
-         "per trial [s]:\n\n";
+      << " s without a signal: at zero tension (slack), or pulling while its gauge reads "
+         "nothing (gauge: the line has left the board); before = from the line's first taut "
+         "sample to the episode), start per trial [s]:\n\n";
   for (std::size_t m = 0; m < result.scenario.muscles.size(); ++m) {
     out << "- " << result.scenario.muscles[m].actuator << ":";
-    for (double s : result.slack_start_s[m])
-      out << ' ' << (std::isnan(s) ? "none" : format_value(s));
+    for (std::size_t k = 0; k < result.slack_start_s[m].size(); ++k) {
+      const double s = result.slack_start_s[m][k];
+      out << ' ' << (std::isnan(s) ? "none" : format_value(s) + " (" +
+                                                  result.episode_cause[m][k] + ")");
+    }
     out << '\n';
   }
   return out.str();

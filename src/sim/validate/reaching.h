@@ -62,8 +62,10 @@ struct ReachingRow {
 struct ReachingValidationResult {
   Scenario scenario;
   std::vector<TrialResult> trials;
-  // per muscle (the scenario's order), per trial: the slack episode's start [s], or NaN
+  // per muscle (the scenario's order), per trial: the slack episode's start [s], or NaN, and
+  // its cause ("slack": the line; "gauge": the line pulls and its gauge reads nothing; "")
   std::vector<std::vector<double>> slack_start_s;
+  std::vector<std::vector<std::string>> episode_cause;
   std::vector<ReachingRow> rows;
 };
 
@@ -74,12 +76,25 @@ ReachingValidationResult run_reaching_validation(const ReachingValidationSpec& s
                                                  const ValidationOptions& options);
 
 // The first slack episode of a muscle in one trajectory: the time [s] at which a line that
-// was taut inside [start, end] has zero tension for min_slack_s, or NaN.
+// was taut inside [start, end] sends no signal for min_slack_s, or NaN. No signal, as the
+// paper saw it ("slackness and failure to send voltage signals", Sec. IV-B): the line at
+// zero tension (cause "slack"), or pulling at least kPulledN while its gauge's force
+// (force_meas_<label>_N, where logged) reads under kReadN (cause "gauge": the line has left
+// the board, gauge_contact.h).
+struct SlackEpisode {
+  double start_s;
+  std::string cause;   // "slack" | "gauge" | "" (none)
+};
+inline constexpr double kPulledN = 5.0;   // 20 sigma of the gauge's noise on the agonist
+inline constexpr double kReadN = 1.0;
+SlackEpisode first_slack_episode(const Trajectory& trajectory, const std::string& label,
+                                 double start_s, double end_s, double min_slack_s);
 double slack_episode_start(const Trajectory& trajectory, const std::string& label, double start_s,
                            double end_s, double min_slack_s);
 
 // out_dir/table5.csv (muscle, method, part, samples, max_error_pct, rmse_pct,
-// paper_max_error_pct, paper_rmse_pct, slack_start_s: the first trial's), out_dir/table5.md
+// paper_max_error_pct, paper_rmse_pct, slack_start_s and episode_cause: the first trial's),
+// out_dir/table5.md
 // (Table V's layout, the paper's values beside) and out_dir/fig7.png (the first trial's
 // errors over time, slack episodes shaded; not without `draw`). Each file whole or not at all.
 void write_reaching_validation(const ReachingValidationResult& result,
