@@ -34,8 +34,9 @@ struct PneumaticSolverParams {
   double absolute_tolerance_pa = 1.0;  // [Pa], > 0
   CommandChangePolicy on_command_change = CommandChangePolicy::kReinit;
   // The same for an action of the delayed regulator loop (the held sensed pressure steps
-  // by what the pressure moved in one sample period: a small jump every sample).
-  CommandChangePolicy on_loop_action = CommandChangePolicy::kWarm;
+  // by what the pressure moved in one sample period: a small jump every sample). A file
+  // that does not say restarts there, as before the key; the shipped file says "warm".
+  CommandChangePolicy on_loop_action = CommandChangePolicy::kReinit;
 };
 
 struct PneumaticParams {

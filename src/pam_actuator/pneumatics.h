@@ -35,8 +35,9 @@
 // - The regulator loop (BM_RegulatorLoopStep, CPU time on 2 shared cores, reinit): the model
 //   as it was (feedback "instant", sense "chamber") ~1.8 us; sense "outlet" ~4.2 us (a third
 //   state, and the tube's laminar region is stiff); feedback "delayed" ~11.6 us and with
-//   the outlet ~13.1 us: every action of a 1 ms sample is a jump in the valve's target,
-//   so CVODE restarts there and takes ~6 steps per physics step ("warm": ~8 smaller ones).
+//   the outlet ~13.1 us with solver.on_loop_action = "reinit": every action of a 1 ms sample
+//   is a jump in the valve's target, CVODE restarts there and takes ~6 steps per physics
+//   step (with commands every 10 ms and "warm" everywhere: ~8 smaller ones).
 //   On the drop trial, where commands change at 100 Hz and the loop acts every 1 ms,
 //   solver.on_loop_action = "warm" takes 1.0 step and 1.1 rhs evaluations per physics step
 //   against 2.0 and 10.5 with "reinit" (chamber within 0.42 against 0.31 kPa of a rtol 1e-9

@@ -12,10 +12,12 @@
 // gauge's strain follows the mode's amplitude, written here as the pull F_b that would bend
 // the board as far statically:
 //   F_b'' + 2 zeta w1 F_b' + w1^2 F_b = w1^2 F(t)     (w1 = 2 pi f1),
-// with the line's pull F held over each physics step (MuJoCo's step: F is known at its
-// start). The step is exact for that held input (the free response of the damped
-// oscillator about the new equilibrium), so a mode above the step's Nyquist frequency is
-// still integrated right at the step instants.
+// with the line's pull F taken as linear between the physics steps' instants (a first-order
+// hold: the line's tension is continuous; MuJoCo's held staircase would itself ring a mode
+// above the step's Nyquist frequency, 500 Hz at 1 ms, and make the ringing depend on the
+// step). The step is exact for that input: the particular solution F - 2 zeta F' / w1 plus
+// the damped oscillator's free response. Each call brings the board to the instant of the
+// pull it is given, so a reading between calls is one physics step behind the pull.
 //
 // The figures (each a key, sensors.gauge.board.*): PMMA's density 1190 kg/m^3 (Evonik
 // PLEXIGLAS GS/XT technical data, ISO 1183); its loss factor 0.02-0.04 at room temperature
@@ -46,11 +48,11 @@ double board_first_mode_hz(const GaugeBoardParams& board, const BoardVibrationPa
 // The board's first mode under the line's pull, stepped by a fixed dt.
 class BoardVibration {
  public:
-  // natural_hz > 0, 0 < damping_ratio < 1, dt_s > 0.
+  // natural_hz > 0 and finite, 0 < damping_ratio < 1, dt_s > 0 (std::invalid_argument).
   BoardVibration(double natural_hz, double damping_ratio, double dt_s);
 
-  // Advances one dt with the pull f_n [N] held over it. The first call starts the board at
-  // rest under f_n (a trial starts in equilibrium).
+  // Advances one dt, the pull going linearly from the last call's to f_n [N]. The first call
+  // starts the board at rest under f_n (a trial starts in equilibrium).
   void step(double f_n);
   // The static pull that would bend the board as far as it is bent now [N]; it can be
   // negative while the board rings through its rest shape after a release.
@@ -58,10 +60,13 @@ class BoardVibration {
   bool started() const { return started_; }
 
  private:
-  // the free response over dt: [e; v](t + dt) = P [e; v](t), e = F_b - F
+  // the free response over dt: [e; v](t + dt) = P [e; v](t), e = F_b - the particular one
   double p11_ = 0.0, p12_ = 0.0, p21_ = 0.0, p22_ = 0.0;
+  double dt_s_ = 0.0;
+  double lag_s_ = 0.0;     // 2 zeta / w1: the particular solution's lag behind a ramp
   double force_n_ = 0.0;   // F_b
   double rate_n_s_ = 0.0;  // dF_b/dt
+  double input_n_ = 0.0;   // the last call's pull
   bool started_ = false;
 };
 

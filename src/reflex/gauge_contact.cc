@@ -11,7 +11,9 @@ namespace pamsim {
 
 void validate_gauge_contact(const GaugeContactParams& c, const std::string& prefix) {
   checks::require_finite(prefix + "misalignment_mm", units::m_to_mm(c.misalignment_m));
-  checks::require_positive(prefix + "fitting_distance_mm", units::m_to_mm(c.fitting_distance_m));
+  if (!(c.fitting_distance_m >= 1e-3)) {
+    checks::fail(prefix + "fitting_distance_mm", ">= 1 mm", units::m_to_mm(c.fitting_distance_m));
+  }
   checks::require_positive(prefix + "shaft_distance_mm", units::m_to_mm(c.shaft_distance_m));
   if (!(c.wrap_deg > 0.0 && c.wrap_deg < 180.0)) {
     checks::fail(prefix + "wrap_deg", "within (0, 180) deg", c.wrap_deg);

@@ -25,7 +25,7 @@
 // mm (the board at the fitting), d2 = 250 mm (the MJCF's 0.4 m from anchor to shaft less the
 // muscle), theta = 30 deg, mu = 0.3 (nylon on acrylic, the usual 0.2-0.4 of polymer pairs),
 // and the board 5 mm longer than the contact position. With them the contact sticks over
-// the arm's whole stroke (w about 2.4 mm, y* moving about 0.2 mm): README says what it would
+// the arm's whole stroke (w about 2.9 mm, y* moving about 0.2 mm): README says what it would
 // take to lose it.
 #pragma once
 
@@ -38,7 +38,7 @@ namespace pamsim {
 struct GaugeContactParams {
   bool sliding = true;                 // sensors.gauge.contact.model: "fixed" | "sliding"
   double misalignment_m = 0.002;       // D, misalignment_mm (either sign)
-  double fitting_distance_m = 0.020;   // d1, fitting_distance_mm > 0
+  double fitting_distance_m = 0.020;   // d1, fitting_distance_mm >= 1
   double shaft_distance_m = 0.250;     // d2, shaft_distance_mm > 0
   double wrap_deg = 30.0;              // theta, wrap_deg in (0, 180)
   double friction_coefficient = 0.3;   // mu >= 0

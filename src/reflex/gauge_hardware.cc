@@ -33,6 +33,11 @@ void validate(const GaugeHardwareConfig& c) {
   validate_prony(c.creep, "sensors.gauge.board.creep_weights",
                  "sensors.gauge.board.creep_times_s");
   validate_board_vibration(c.vibration, "sensors.gauge.board.");
+  const double f1 = board_first_mode_hz(c.board, c.vibration);
+  if (c.vibration.enabled && !(f1 > 0.0 && std::isfinite(f1))) {
+    checks::fail("sensors.gauge.board.length_mm", "short enough that the board has a first mode",
+                 units::m_to_mm(c.board.length_m));
+  }
   validate_gauge_contact(c.contact, "sensors.gauge.contact.");
   checks::require_positive("sensors.gauge.calibration.max_N", c.calibration_max_n);
   if (!(c.calibration_steps >= 1 && c.calibration_steps <= 1000)) {

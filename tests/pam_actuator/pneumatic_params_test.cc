@@ -205,10 +205,10 @@ TEST(PneumaticParamsTest, SolverStringsAreChecked) {
       "adams.toml", "[solver]\nmethod = \"adams\"\non_command_change = \"warm\"\n"));
   EXPECT_EQ(p.solver.method, CvodeMethod::kAdams);
   EXPECT_EQ(p.solver.on_command_change, CommandChangePolicy::kWarm);
-  EXPECT_EQ(p.solver.on_loop_action, CommandChangePolicy::kWarm);   // its default
-  const PneumaticParams r =
-      load_pneumatic_params(write_temp("loop_reinit.toml", "[solver]\non_loop_action = \"reinit\"\n"));
-  EXPECT_EQ(r.solver.on_loop_action, CommandChangePolicy::kReinit);
+  EXPECT_EQ(p.solver.on_loop_action, CommandChangePolicy::kReinit);   // unsaid: as before the key
+  const PneumaticParams w =
+      load_pneumatic_params(write_temp("loop_warm.toml", "[solver]\non_loop_action = \"warm\"\n"));
+  EXPECT_EQ(w.solver.on_loop_action, CommandChangePolicy::kWarm);
 }
 
 }  // namespace

@@ -47,7 +47,7 @@ TEST(GaugeContactTest, TheRestingPointIsTheShortestPath) {
   EXPECT_NEAR(y, 0.5 * (a + b), 1e-7);   // a minimum's flatness limits the search
   // exactly: the path's slope in y is zero there (equal angles on both sides of the edge)
   const double h = 1e-7;
-  EXPECT_NEAR(path_length(c, y_p, l1, y + h) - path_length(c, y_p, l1, y - h), 0.0, 1e-16);
+  EXPECT_NEAR(path_length(c, y_p, l1, y + h) - path_length(c, y_p, l1, y - h), 0.0, 1e-15);
   EXPECT_DOUBLE_EQ(contact_rest_position_m(c, y0, 0.0), y0);   // at the start, the contact
 }
 
@@ -134,6 +134,7 @@ TEST(GaugeContactTest, EveryBadKeyIsNamed) {
   const Case cases[] = {
       {"sensors.gauge.contact.misalignment_mm", [](GaugeContactParams& c) { c.misalignment_m = NAN; }},
       {"sensors.gauge.contact.fitting_distance_mm", [](GaugeContactParams& c) { c.fitting_distance_m = 0; }},
+      {"sensors.gauge.contact.fitting_distance_mm", [](GaugeContactParams& c) { c.fitting_distance_m = 0.5e-3; }},
       {"sensors.gauge.contact.shaft_distance_mm", [](GaugeContactParams& c) { c.shaft_distance_m = -1; }},
       {"sensors.gauge.contact.wrap_deg", [](GaugeContactParams& c) { c.wrap_deg = 180; }},
       {"sensors.gauge.contact.wrap_deg", [](GaugeContactParams& c) { c.wrap_deg = 0; }},

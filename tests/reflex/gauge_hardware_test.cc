@@ -95,6 +95,8 @@ TEST(GaugeHardwareTest, EveryBadKeyIsNamed) {
       {"sensors.gauge.board.loss_factor", [](GaugeHardwareConfig& c) { c.vibration.loss_factor = 0.0; }},
       {"sensors.gauge.board.loss_factor", [](GaugeHardwareConfig& c) { c.vibration.loss_factor = NAN; }},
       {"sensors.gauge.board.density_kg_m3", [](GaugeHardwareConfig& c) { c.vibration.density_kg_m3 = -1; }},
+      {"sensors.gauge.board.length_mm", [](GaugeHardwareConfig& c) { c.board.length_m = 0.030; }},
+      {"sensors.gauge.board.length_mm", [](GaugeHardwareConfig& c) { c.board.length_m = 1e200; }},
   };
   for (const Case& k : cases) {
     GaugeHardwareConfig c = config(0.4);

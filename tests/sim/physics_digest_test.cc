@@ -16,6 +16,8 @@
 // And again for the gauge board's ringing (board_vibration.h, on with the bridge gauge) and
 // for its line's contact that slides and sticks along the board (gauge_contact.h: the strain
 // per newton at the contact of the moment; the board's free end 45 mm).
+// Last, the board's pull taken as linear between steps (a first-order hold: the held
+// staircase rang the 664 Hz mode by itself, 30 % more at 1 ms than at 0.25 ms).
 #include <gtest/gtest.h>
 
 extern "C" {
@@ -70,14 +72,14 @@ TEST(PhysicsDigestTest, Sha256OfAKnownTextIsTheStandardOne) {
 TEST(PhysicsDigestTest, ShortDropTrialsAreUnchanged) {
   const std::vector<std::string> shorter = {"sim.duration_s=1.5", "drop.time_s=0.3"};
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass.toml", shorter)),
-            "46eb3f01bad8eed125a0055ea92e8ad52e38c7a6155d11e9db0393ccd8b32d5f");
+            "3333232a056226e005f8de0770bd6a5b5be21e3bd140c96d545449b37be3bc03");
   // the ideal plant is drop_mass.toml as it was before the physical plants (issue 12)
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass_ideal.toml", shorter)),
             "6944d5d57b447a477901ad3d2f25cd58249b9c93c83ce16179dece4cad620015");
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass_fiber.toml", shorter)),
-            "6918b2cefb847faf9abfe853a18836bcdc17ef6b63091d95778f36edb7d1d5e5");
+            "6bee77511bc2b39863d029a08655a35b15e728c652f28ae34de47c6ed31610ea");
   EXPECT_EQ(sha256_hex(trajectory_csv_of("drop_mass_passive.toml", shorter)),
-            "e27d2c3c951ce2f7e1cb229b392015a94fa58a3042c36c0ee92fb5f1283514d9");
+            "c3ceb1e961de67116dc171a3fac1625ebbddea2cd7c80ef15525842611731e82");
 }
 
 }  // namespace

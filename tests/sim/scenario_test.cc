@@ -316,14 +316,18 @@ TEST(ScenarioTest, TheRingingBoardReadsAsTheStillOneButAtTheImpact) {
   const TrialResult ringing = run_trial(load_trial_model(a), a, 1);
   const TrialResult held = run_trial(load_trial_model(b), b, 1);
   const Trajectory& tr = ringing.trajectory;
+  ASSERT_EQ(tr.rows(), held.trajectory.rows());
   const std::size_t meas = tr.column("force_meas_ago_N"), time = tr.column("time_s");
   double before = 0.0, after = 0.0;
   for (std::size_t row = 0; row < tr.rows(); ++row) {
     const double d = std::fabs(tr.at(row, meas) - held.trajectory.at(row, meas));
+    ASSERT_TRUE(std::isfinite(d)) << "row " << row;
     double& worst = tr.at(row, time) < 1.16 ? before : after;
     worst = std::max(worst, d);
   }
-  EXPECT_LT(before, 1e-9);
+  // at rest the board reads the pull (one physics step behind it: a still arm's pull
+  // hardly moves in 1 ms); the impact rings it
+  EXPECT_LT(before, 1e-3);
   EXPECT_GT(after, 0.5);
 }
 

@@ -172,6 +172,11 @@ TEST(ValidateTest, AGaugeThatStopsReadingUnderLoadIsAnEpisode) {
   // zero tension is slack, whatever the gauge reads
   for (std::size_t i = 60; i < tr.rows(); ++i) tr.values[3 * i + 1] = 0.0;
   EXPECT_EQ(first_slack_episode(tr, "m", 0.0, 0.99, 0.1).cause, "slack");
+  // a gauge that lost its line before the window: unread from the window's first sample
+  for (std::size_t i = 0; i < tr.rows(); ++i) tr.values[3 * i + 1] = 20.0;
+  const SlackEpisode early = first_slack_episode(tr, "m", 0.65, 0.99, 0.1);
+  EXPECT_NEAR(early.start_s, 0.65, 1e-12);
+  EXPECT_EQ(early.cause, "gauge");
 }
 
 TEST(ValidateTest, ReachingFindsTheAntagonistsSlackAndIsThreadIndependent) {

@@ -133,6 +133,8 @@ SlackEpisode first_slack_episode(const Trajectory& tr, const std::string& label,
       episode = {kNaN, ""};
       continue;
     }
+    // a line that pulls unread is taut: its gauge may have lost it before the window
+    was_taut = was_taut || unread;
     if (!was_taut) continue;
     if (std::isnan(episode.start_s)) episode = {time, unread ? "gauge" : "slack"};
     if (time - episode.start_s >= min_slack_s - 1e-9) return episode;
