@@ -272,10 +272,7 @@ std::vector<double> IdentifyDefinition::scenario_values(const std::vector<double
 }
 
 std::string IdentifyDefinition::canonical_json() const {
-  nlohmann::json params = nlohmann::json::array();
-  for (const auto& p : parameters) {
-    params.push_back({{"key", p.key}, {"from", p.from}, {"to", p.to}, {"log", p.log}});
-  }
+  const nlohmann::json params = search_parameters_json(parameters);
   nlohmann::json recs = nlohmann::json::array();
   for (const auto& r : recordings) {
     std::vector<std::string> channels;

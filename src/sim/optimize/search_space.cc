@@ -5,6 +5,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include <nlohmann/json.hpp>
+
 #include "base/config_reader.h"
 #include "base/format.h"
 #include "base/input_error.h"
@@ -87,6 +89,14 @@ std::vector<SearchParameter> read_search_parameters(ConfigReader& in,
   }
   in.check(!out.empty(), "parameter", "needs at least one [[parameter]]");
   return out;
+}
+
+nlohmann::json search_parameters_json(const std::vector<SearchParameter>& parameters) {
+  nlohmann::json params = nlohmann::json::array();
+  for (const auto& p : parameters) {
+    params.push_back({{"key", p.key}, {"from", p.from}, {"to", p.to}, {"log", p.log}});
+  }
+  return params;
 }
 
 }  // namespace pamsim

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 namespace pamsim {
 
 class ConfigReader;
@@ -46,5 +48,9 @@ std::vector<std::string> parameter_overrides(const std::vector<std::string>& bas
 std::vector<SearchParameter> read_search_parameters(ConfigReader& in,
                                                     const std::vector<std::string>& reserved,
                                                     const std::string& reserved_hint);
+
+// The parameters as their definitions' canonical JSON lists them (tuning and identification
+// databases: [{key, from, to, log}, ...]), so that both store them alike.
+nlohmann::json search_parameters_json(const std::vector<SearchParameter>& parameters);
 
 }  // namespace pamsim

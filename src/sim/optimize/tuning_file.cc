@@ -219,10 +219,7 @@ TuneDefinition load_tune_definition(const std::string& path) {
 }
 
 std::string TuneDefinition::canonical_json() const {
-  nlohmann::json params = nlohmann::json::array();
-  for (const auto& p : parameters) {
-    params.push_back({{"key", p.key}, {"from", p.from}, {"to", p.to}, {"log", p.log}});
-  }
+  const nlohmann::json params = search_parameters_json(parameters);
   nlohmann::json objs = nlohmann::json::array();
   for (const auto& o : objectives) objs.push_back({{"metric", o.metric}, {"maximize", o.maximize}});
   nlohmann::json cons = nlohmann::json::array();
