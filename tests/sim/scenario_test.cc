@@ -270,6 +270,27 @@ TEST(ScenarioTest, EveryBadValueNamesItsKey) {
   }
 }
 
+// An instrument's hardware keys with its ideal model would be ignored: refused, by key, as
+// the valve's regulator keys are with another valve.
+TEST(ScenarioTest, HardwareKeysOfAnIdealInstrumentAreRefused) {
+  struct Case { std::vector<std::string> set; std::string says; };
+  for (const Case& c : std::vector<Case>{
+           {{"sensors.gauge.model=\"linear\"", "sensors.gauge.contact.misalignment_mm=300"},
+            "sensors.gauge.contact.misalignment_mm is used only by sensors.gauge.model = "
+            "\"bridge\", not \"linear\""},
+           {{"sensors.pressure.model=\"ideal\"", "sensors.pressure.response_time_ms=5"},
+            "sensors.pressure.response_time_ms is used only by sensors.pressure.model = "
+            "\"pse540\""},
+           {{"sensors.fiber.model=\"ideal\"", "sensors.fiber.span_mm=30"},
+            "sensors.fiber.span_mm is used only by sensors.fiber.model = \"fabric\""},
+           {{"sensors.encoder.model=\"ideal\"", "sensors.encoder.resolution_mm=0.1"},
+            "sensors.encoder.resolution_mm is used only by sensors.encoder.model = \"counts\""}}) {
+    EXPECT_NE(error_of(c.set).find(c.says), std::string::npos) << c.says << ": " << error_of(c.set);
+  }
+  // the model alone, either way, is fine
+  EXPECT_EQ(error_of({"sensors.gauge.model=\"linear\""}), "");
+}
+
 // The gauge's creep is two lists: a bad weight is named with its index.
 TEST(ScenarioTest, ABadGaugeCreepTermIsNamedWithItsIndex) {
   const std::string message = error_of({"sensors.gauge.board.creep_weights=[0.02, -0.1]",

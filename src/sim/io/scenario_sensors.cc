@@ -34,6 +34,22 @@ bool read_model(ConfigReader& in, const std::string& key, const EnumName<bool> (
   return parse_name(names, model, in.where(key));
 }
 
+// An instrument's model, "<prefix>model": its hardware keys (the rest under <prefix>) are
+// used only by the hardware model and refused with the ideal one, which would ignore them
+// (as the valve's regulator keys are).
+bool read_instrument_model(ConfigReader& in, const std::string& prefix,
+                           const EnumName<bool> (&names)[2], bool fallback) {
+  const bool hardware = read_model(in, prefix + "model", names, fallback);
+  if (hardware) return true;
+  for (const std::string& key : in.leaf_keys()) {
+    if (key.rfind(prefix, 0) != 0 || key == prefix + "model") continue;
+    in.check(false, key,
+             std::string("is used only by ") + prefix + "model = \"" + name_of(names, true) +
+                 "\", not \"" + name_of(names, false) + "\"");
+  }
+  return false;
+}
+
 // a length key in mm, kept in m
 double get_mm(ConfigReader& in, const std::string& key, double fallback_m) {
   return units::mm_to_m(in.get_double(key, units::m_to_mm(fallback_m)));
@@ -75,7 +91,7 @@ void read_gauge_contact(ConfigReader& in, GaugeContactParams* c) {
 
 // sensors.gauge.* and sensors.instrument_seed: the gauge as hardware (reflex/gauge_hardware.h)
 void read_gauge_hardware(ConfigReader& in, GaugeHardwareConfig* g) {
-  g->enabled = read_model(in, "sensors.gauge.model", kGaugeModels, false);
+  g->enabled = read_instrument_model(in, "sensors.gauge.", kGaugeModels, false);
   const std::string b = "sensors.gauge.";
   g->bridge.excitation_v = in.get_double(b + "excitation_V", g->bridge.excitation_v);
   g->bridge.gauge_factor = in.get_double(b + "gauge_factor", g->bridge.gauge_factor);
@@ -109,7 +125,7 @@ void read_gauge_hardware(ConfigReader& in, GaugeHardwareConfig* g) {
 // sensors.pressure.*: the PSE540 as hardware (reflex/pressure_hardware.h)
 void read_pressure_hardware(ConfigReader& in, PressureHardwareConfig* p) {
   const std::string b = "sensors.pressure.";
-  p->enabled = read_model(in, b + "model", kPressureModels, p->enabled);
+  p->enabled = read_instrument_model(in, b, kPressureModels, p->enabled);
   p->bias_mean_pa = get_mpa(in, b + "bias_mean_MPa", p->bias_mean_pa);
   p->bias_stddev_pa = get_mpa(in, b + "bias_stddev_MPa", p->bias_stddev_pa);
   p->gain_error_stddev_pct = in.get_double(b + "gain_error_stddev_pct", p->gain_error_stddev_pct);
@@ -123,11 +139,11 @@ void read_pressure_hardware(ConfigReader& in, PressureHardwareConfig* p) {
 
 // sensors.fiber.* (reflex/fiber_hardware.h) and sensors.encoder.* (reflex/sensors.h)
 void read_fiber_and_encoder(ConfigReader& in, FiberHardwareConfig* f, EncoderConfig* e) {
-  f->enabled = read_model(in, "sensors.fiber.model", kFiberModels, f->enabled);
+  f->enabled = read_instrument_model(in, "sensors.fiber.", kFiberModels, f->enabled);
   f->nonlinearity_pct = in.get_double("sensors.fiber.nonlinearity_pct", f->nonlinearity_pct);
   f->span_m = get_mm(in, "sensors.fiber.span_mm", f->span_m);
   f->creep = read_creep(in, "sensors.fiber.", f->creep);
-  e->enabled = read_model(in, "sensors.encoder.model", kEncoderModels, e->enabled);
+  e->enabled = read_instrument_model(in, "sensors.encoder.", kEncoderModels, e->enabled);
   e->resolution_m = get_mm(in, "sensors.encoder.resolution_mm", e->resolution_m);
 }
 
