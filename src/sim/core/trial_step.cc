@@ -171,7 +171,8 @@ bool TrialRun::physics_step(double t) {
     return false;
   }
   // an instrument that follows the pull between ticks sees this step's (a ringing board):
-  // the lines' pulls MuJoCo has just applied over [t, t + dt]
+  // the lines' pulls at t, which MuJoCo has just applied (the board takes its pull as linear
+  // from the last step's to this one, board_vibration.h)
   if (sensors_.observes_forces()) {
     for (std::size_t i = 0; i < n_; ++i) {
       step_force_n_[i] = -d_->actuator_force[tm_.muscles[i].actuator];
