@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """hardware_losses.py: reruns README's "Findings" on the hardware's losses (issue 25, items 2
 and 3): the falling-mass experiment over 20 seeds with the braid friction as Maxwell-slip
-elements, the shoulder on a ball bearing's losses instead of the MJCF's damping, and the
-fishing lines extensible (nylon, braided polyethylene). Each row is `pamsim run --trials 20`
+elements, the shoulder on a ball bearing's losses instead of the MJCF's damping, the
+bladders' rubber relaxing, and the fishing lines extensible (nylon, braided polyethylene). Each row is `pamsim run --trials 20`
 with `--set` overrides; the Maxwell-slip rows use the shipped plant files with their
 [friction] made "maxwell_slip" (travels 0.1 and 0.5 mm, an example: no source sizes them),
 written to a temp folder. Prints Markdown; writes it to OUT too.
@@ -28,6 +28,15 @@ def line(diameter_mm, modulus_mpa):
             for k in (f"diameter_mm={diameter_mm}", f"modulus_MPa={modulus_mpa}")]
 
 
+# the bladder rubber's relaxation: a loss tangent of 0.05 held over 0.16-160 Hz by one Prony
+# term per decade, g = (2 tan(delta) / pi) ln 10 (src/pam_actuator/bladder_relaxation.h); the
+# loss tangent is an unfilled natural rubber's order of magnitude, not a measured value
+RELAXATION_WEIGHT = 2 * 0.05 / 3.141592653589793 * 2.302585092994046
+RELAXING = [f"muscles.{m}.plant.bladder.{k}" for m in ("agonist", "antagonist")
+            for k in ("relaxation_weights=[" + ",".join([f"{RELAXATION_WEIGHT:.4f}"] * 4) + "]",
+                      "relaxation_times_s=[0.001,0.01,0.1,1.0]")]
+
+
 def slip_plants(folder):
     """The shipped plants with Maxwell-slip braid friction; the --set keys that use them."""
     sets = []
@@ -49,6 +58,8 @@ def rows(folder):
             ("Maxwell-slip braid friction", slip),
             ("ball bearing instead of 0.1 N m s/rad", BEARING),
             ("ball bearing and Maxwell-slip", BEARING + slip),
+            ("relaxing bladders (tan delta 0.05, 0.16-160 Hz)", RELAXING),
+            ("ball bearing, Maxwell-slip and relaxing bladders", BEARING + slip + RELAXING),
             ("0.5 mm nylon lines (2.5 GPa)", line(0.5, 2500)),
             ("0.5 mm braided PE lines (50 GPa)", line(0.5, 50000))]
 

@@ -276,6 +276,11 @@ double avbdl_dbladder_energy_dlength(const AvbdlParams& p, double length_m) {
   return dbladder_energy_dlength(p, shape_of(p), length_m);
 }
 
+double avbdl_dbladder_energy_dlength(const AvbdlParams& p, const AvbdlShape& shape,
+                                     double length_m) {
+  return dbladder_energy_dlength(p, shape, length_m);
+}
+
 double avbdl_static_force(const AvbdlParams& p, double p_pa, double length_m) {
   return static_force(p, shape_of(p), p_pa, length_m);
 }

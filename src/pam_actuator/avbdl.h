@@ -77,6 +77,7 @@
 #include <limits>
 #include <string>
 
+#include "pam_actuator/bladder_relaxation.h"
 #include "pam_actuator/chou_hannaford.h"
 #include "pam_actuator/maxwell_slip.h"
 #include "base/units.h"
@@ -154,6 +155,7 @@ struct AvbdlParams {
   BladderLaw bladder_law = BladderLaw::kMooneyRivlin;   // kGentGent: bladder_gent instead
   GentGentConstants bladder_gent = kNaturalRubberTreloarGentGent;
   double bladder_diameter_m = 0.0;   // Db, the tube's outer diameter; 0: the braid's (above)
+  BladderRelaxation relaxation;      // the rubber's rate term (bladder_relaxation.h); none
   double end_length_m = 0.032;                          // Ld >= 0; 0: no end regions
   double end_slope = 2.0;                               // a in [0, 3]; 2: parabolic shoulder
   AvbdlFriction friction;
@@ -190,7 +192,8 @@ struct AvbdlShape {
 // or Jm <= 0, a bladder diameter < 0, not above 2 t or above D0, a Gent-Gent bladder that
 // the braid's full contraction would stretch to its limit, Ld < 0 or 2 Ld >= b / sqrt(3) (both
 // end regions must fit in the fully contracted muscle), a outside [0, 3], a negative
-// friction coefficient, or v_s <= 0. Keys are the field paths: "length_m",
+// friction coefficient, v_s <= 0, or a bladder relaxation term with a negative weight or a
+// non-positive time (bladder_relaxation.h). Keys are the field paths: "length_m",
 // "bladder.c10_pa", "friction.extension.force_n", ...
 void validate_avbdl_params(const AvbdlParams& params, const std::string& key_prefix);
 
@@ -265,6 +268,8 @@ double avbdl_bladder_contact_pressure(const AvbdlParams& params);
 // (0 at L0); and its slope dW/dL [N].
 double avbdl_bladder_energy(const AvbdlParams& params, double length_m);
 double avbdl_dbladder_energy_dlength(const AvbdlParams& params, double length_m);
+double avbdl_dbladder_energy_dlength(const AvbdlParams& params, const AvbdlShape& shape,
+                                     double length_m);
 
 // Eq. (25): the paper's static force [N], -p dV/dL + dW/dL, without friction.
 double avbdl_static_force(const AvbdlParams& params, double p_pa, double length_m);

@@ -57,6 +57,7 @@ void validate_bladder_tube(const AvbdlParams& p, const Checker& check) {
                 "0 (the braid's) or in (2 wall = " + format_value(2.0 * p.wall_thickness_m) +
                     ", diameter = " + format_value(p.diameter_m) + "] m",
                 p.bladder_diameter_m);
+  validate_bladder_relaxation(p.relaxation, check.prefix + "bladder.");
   if (p.bladder_law != BladderLaw::kGentGent) return;
   const GentGentConstants& g = p.bladder_gent;
   check.finite("bladder.mu_pa", g.mu_pa);

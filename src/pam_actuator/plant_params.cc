@@ -43,15 +43,47 @@ GentGentConstants read_gent_gent(const Section& bladder) {
           units::mpa_to_pa(bladder.non_negative("C2_MPa", "MPa")), bladder.positive("Jm", "")};
 }
 
+// relaxation_weights = [...] and relaxation_times_s = [...], one per Prony term
+BladderRelaxation read_relaxation(const Section& bladder) {
+  const std::vector<double> times = bladder.numbers("relaxation_times_s");
+  const std::vector<double> weights = bladder.numbers("relaxation_weights");
+  if (times.size() > static_cast<std::size_t>(kMaxRelaxationTerms)) {
+    bladder.fail("relaxation_times_s", "must list at most " +
+                                           std::to_string(kMaxRelaxationTerms) + " terms, got " +
+                                           std::to_string(times.size()));
+  }
+  if (weights.size() != times.size()) {
+    bladder.fail("relaxation_weights", "must list one weight per relaxation_times_s (" +
+                                           std::to_string(times.size()) + "), got " +
+                                           std::to_string(weights.size()));
+  }
+  BladderRelaxation r;
+  r.count = static_cast<int>(times.size());
+  for (int i = 0; i < r.count; ++i) {
+    const std::string index = "[" + std::to_string(i) + "]";
+    if (!(times[i] > 0.0)) {
+      bladder.fail("relaxation_times_s", index + " must be > 0 s, got " + format_number(times[i]));
+    }
+    if (!(weights[i] >= 0.0)) {
+      bladder.fail("relaxation_weights", index + " must be >= 0, got " + format_number(weights[i]));
+    }
+    r.time_s[i] = times[i];
+    r.weight[i] = weights[i];
+  }
+  return r;
+}
+
 // [bladder]: its law and material, and its own diameter (a tube inside the sleeve, Table I)
 void read_bladder(const Section& bladder, AvbdlParams* a) {
   a->bladder_law = parse_name(kBladderLaws, bladder.text("law", "mooney_rivlin"),
                               bladder.file + ": " + bladder.key("law"));
   if (a->bladder_law == BladderLaw::kGentGent) {
-    bladder.reject_unknown({"C2_MPa", "Jm", "diameter_mm", "law", "material", "mu_MPa"});
+    bladder.reject_unknown({"C2_MPa", "Jm", "diameter_mm", "law", "material", "mu_MPa",
+                            "relaxation_times_s", "relaxation_weights"});
     a->bladder_gent = read_gent_gent(bladder);
   } else {
-    bladder.reject_unknown({"C01_MPa", "C10_MPa", "C20_MPa", "diameter_mm", "law", "material"});
+    bladder.reject_unknown({"C01_MPa", "C10_MPa", "C20_MPa", "diameter_mm", "law", "material",
+                            "relaxation_times_s", "relaxation_weights"});
     a->bladder = read_mooney_rivlin(bladder);
   }
   if (bladder.has("material") &&
@@ -60,6 +92,9 @@ void read_bladder(const Section& bladder, AvbdlParams* a) {
   }
   if (bladder.has("diameter_mm")) {
     a->bladder_diameter_m = units::mm_to_m(bladder.positive("diameter_mm", "mm"));
+  }
+  if (bladder.has("relaxation_times_s") || bladder.has("relaxation_weights")) {
+    a->relaxation = read_relaxation(bladder);
   }
 }
 

@@ -20,6 +20,8 @@
 //                                       # rubber's fit, or mu_MPa, C2_MPa, Jm (avbdl.h)
 //   diameter_mm = 4.0                   # optional: a tube this wide (outer) inside the
 //                                       # sleeve, Table I; default: the sleeve's (avbdl.h)
+//   relaxation_weights = [0.07, 0.07]   # optional: the rubber's Prony series g_i >= 0
+//   relaxation_times_s = [0.01, 0.1]    # and tau_i > 0 [s], 0-4 terms (bladder_relaxation.h)
 //   [friction]                          # optional: none when absent
 //   model = "smooth"                    # tanh(v / v_s) (default), or "maxwell_slip"
 //   velocity_scale_mm_s = 1.0           # v_s: required for "smooth"

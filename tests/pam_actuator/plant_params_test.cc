@@ -29,6 +29,9 @@ std::string write_temp(const std::string& text) {
 }
 
 const std::string kSlip = "model = \"maxwell_slip\"\n";
+// a [bladder]'s relaxation with two terms, its weights to follow
+const std::string kRelaxing = "C20_MPa = 0.0035\nrelaxation_times_s = [0.01, 0.1]\n"
+                              "relaxation_weights = ";
 
 const char* kValid = R"(law = "avbdl"
 [geometry]
@@ -159,6 +162,16 @@ TEST(PlantParamsTest, FreeLengthAndLengthAtForceInvertTheStaticLaw) {
   EXPECT_EQ(avbdl_length_at_force(a, 0.4e6, 1e7), -1.0);   // more than it can pull
 }
 
+TEST(PlantParamsTest, TheBladdersRelaxationIsRead) {
+  std::string text = kValid;
+  text.replace(text.find("C20_MPa = 0.0035"), 16, kRelaxing + "[0.07, 0.03]");
+  const BladderRelaxation r = load_plant_params(write_temp(text)).avbdl.relaxation;
+  ASSERT_EQ(r.count, 2);
+  EXPECT_EQ(r.time_s[1], 0.1);
+  EXPECT_EQ(r.weight[0], 0.07);
+  EXPECT_EQ(load_plant_params(write_temp(kValid)).avbdl.relaxation.count, 0) << "none given";
+}
+
 TEST(PlantParamsTest, EveryBadFileIsOneLineNamingFileAndKey) {
   struct Case {
     std::string from, to, key;
@@ -195,6 +208,16 @@ TEST(PlantParamsTest, EveryBadFileIsOneLineNamingFileAndKey) {
        "friction.breakaway_mm"},
       {"velocity_scale_mm_s = 1.0", "velocity_scale_mm_s = 1.0\nweights = [1.0]",
        "friction.weights"},
+      {"C20_MPa = 0.0035", kRelaxing + "[-0.1, 0.1]", "bladder.relaxation_weights: [0]"},
+      {"C20_MPa = 0.0035", kRelaxing + "[0.1]", "bladder.relaxation_weights"},
+      {"C20_MPa = 0.0035", "C20_MPa = 0.0035\nrelaxation_weights = [0.1]",
+       "bladder.relaxation_weights"},
+      {"C20_MPa = 0.0035",
+       "C20_MPa = 0.0035\nrelaxation_times_s = [1, 2, 3, 4, 5]\n"
+       "relaxation_weights = [1, 1, 1, 1, 1]", "bladder.relaxation_times_s"},
+      {"C20_MPa = 0.0035",
+       "C20_MPa = 0.0035\nrelaxation_times_s = [0.01, 0]\nrelaxation_weights = [0.1, 0.1]",
+       "bladder.relaxation_times_s: [1]"},
   };
   for (const Case& c : cases) {
     std::string text = kValid;

@@ -91,7 +91,8 @@ TEST(CliRunTest, BadInputIsOneLineNonZeroAndWritesNothing) {
 }
 
 // The hardware's error sources (issue 25): a negative creep constant, a tolerance over 100 %,
-// a line diameter of zero, a loss factor of 1: one line naming the key, exit 2, no output.
+// a line diameter of zero, a loss factor of 1, a bladder relaxing in negative time: one line
+// naming the key, exit 2, no output.
 TEST(CliRunTest, BadHardwareKeysAreOneLineExitTwoAndWriteNothing) {
   const fs::path out = fresh_dir("run_bad_hardware") / "new" / "out";
   struct Case { std::string set, key; };
@@ -104,7 +105,10 @@ TEST(CliRunTest, BadHardwareKeysAreOneLineExitTwoAndWriteNothing) {
            {"--set sensors.gauge.tolerance_pct=150", "sensors.gauge.tolerance_pct"},
            {"--set muscles.agonist.line_diameter_mm=0 --set muscles.agonist.line_modulus_MPa=2500",
             "muscles.agonist.line_diameter_mm"},
-           {"--set sensors.gauge.board.loss_factor=1", "sensors.gauge.board.loss_factor"}}) {
+           {"--set sensors.gauge.board.loss_factor=1", "sensors.gauge.board.loss_factor"},
+           {"--set 'muscles.agonist.plant.bladder.relaxation_times_s=[-1]' "
+            "--set 'muscles.agonist.plant.bladder.relaxation_weights=[0.07]'",
+            "muscles.agonist.plant.bladder.relaxation_times_s: [0] must be > 0 s"}}) {
     const CliResult r = run_pamsim("run scenarios/drop_mass.toml " + c.set + " --out " +
                                    out.string());
     EXPECT_EQ(r.exit_code, 2) << c.set;

@@ -202,7 +202,7 @@ struct LoadedSlider {
     for (int k = 0; k < 12000; ++k) {   // 6 s
       d->xfrc_applied[6 * 1 + 0] = kLoad;
       mj_step(m.get(), d.get());
-      pam_commit_friction(m.get(), d.get(), 0, pam_muscle_length(m.get(), d.get(), 0));
+      pam_commit_history(m.get(), d.get(), 0, pam_muscle_length(m.get(), d.get(), 0));
     }
     EXPECT_LT(std::fabs(d->qvel[0]), 1e-5) << "at rest";
     return pam_muscle_length(m.get(), d.get(), 0);

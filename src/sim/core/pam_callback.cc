@@ -15,85 +15,17 @@
 
 #include "base/input_error.h"
 
+#include "sim/core/pam_slots.h"
+
 namespace pamsim {
 namespace {
 
+using pam_slots::relaxation_block;
+using pam_slots::slip_block;
+using pam_slots::user_slots;
+
 constexpr int kLineSolveBits = 40;          // the line's tension to ~1e-12 relative
 constexpr int kLineSolveIterations = 50;
-
-// Throws "<path>: <size nuser_actuator> must be >= <slots> for <what>, got <n>" if the
-// model's actuators have fewer user slots than `what` needs.
-void require_user_slots(const mjModel* m, int slots, const char* what, const char* path) {
-  if (m->nuser_actuator >= slots) return;
-  throw InputError(std::string(path) + ": <size nuser_actuator> must be >= " +
-                   std::to_string(slots) + " for " + what + ", got " +
-                   std::to_string(m->nuser_actuator));
-}
-
-const mjtNum* user_slots(const mjModel* m, int id) {
-  return m->actuator_user + static_cast<long>(id) * m->nuser_actuator;
-}
-
-// slots kPamPlantUserSize.. : the friction's form, its elements, its userdata block
-void store_friction_form(mjModel* m, int id, const AvbdlFriction& f, int slip_index,
-                         const char* path) {
-  const bool slip = f.model == FrictionModel::kMaxwellSlip;
-  if (!slip && m->nuser_actuator < kPamSlipUserSize) return;   // older models: no slots needed
-  require_user_slots(m, kPamSlipUserSize, "a PAM with Maxwell-slip friction", path);
-  if (slip && (slip_index < 0 || slip_index + 1 + f.slip.count > m->nuserdata)) {
-    throw InputError(std::string(path) + ": <size nuserdata> must be >= " +
-                     std::to_string(slip_index + 1 + f.slip.count) +
-                     " to hold the PAMs' pressures and Maxwell-slip states");
-  }
-  mjtNum* u = m->actuator_user + static_cast<long>(id) * m->nuser_actuator + kPamPlantUserSize;
-  u[0] = slip ? 1.0 : 0.0;
-  u[1] = slip ? f.slip.count : 0;
-  for (int k = 0; k < kMaxSlipElements; ++k) {
-    u[2 + k] = f.slip.weight[k];
-    u[2 + kMaxSlipElements + k] = f.slip.breakaway_m[k];
-  }
-  u[2 + 2 * kMaxSlipElements] = slip ? slip_index : -1;
-}
-
-void read_friction_form(const mjModel* m, int id, AvbdlFriction* f) {
-  f->model = FrictionModel::kSmooth;
-  if (m->nuser_actuator < kPamSlipUserSize) return;
-  const mjtNum* u = user_slots(m, id) + kPamPlantUserSize;
-  if (u[0] != 1.0) return;
-  f->model = FrictionModel::kMaxwellSlip;
-  f->slip.count = static_cast<int>(u[1]);
-  for (int k = 0; k < kMaxSlipElements; ++k) {
-    f->slip.weight[k] = u[2 + k];
-    f->slip.breakaway_m[k] = u[2 + kMaxSlipElements + k];
-  }
-}
-
-// slots kPamLineUserSize.. : the bladder's law and tube (none needed for the default)
-void store_bladder_form(mjModel* m, int id, const AvbdlParams& a, const char* path) {
-  const bool gent = a.bladder_law == BladderLaw::kGentGent;
-  if (!gent && a.bladder_diameter_m == 0.0 && m->nuser_actuator < kPamBladderUserSize) return;
-  require_user_slots(m, kPamBladderUserSize, "a PAM with a tube bladder or the Gent-Gent law",
-                     path);
-  mjtNum* u = m->actuator_user + static_cast<long>(id) * m->nuser_actuator + kPamLineUserSize;
-  u[0] = gent ? 1.0 : 0.0;
-  u[1] = a.bladder_diameter_m;
-  u[2] = a.bladder_gent.mu_pa;
-  u[3] = a.bladder_gent.c2_pa;
-  u[4] = a.bladder_gent.jm;
-}
-
-void read_bladder_form(const mjModel* m, int id, AvbdlParams* a) {
-  if (m->nuser_actuator < kPamBladderUserSize) return;
-  const mjtNum* u = user_slots(m, id) + kPamLineUserSize;
-  a->bladder_law = u[0] == 1.0 ? BladderLaw::kGentGent : BladderLaw::kMooneyRivlin;
-  a->bladder_diameter_m = u[1];
-  a->bladder_gent = {u[2], u[3], u[4]};
-}
-
-// the actuator's slip block in d->userdata: [L_prev, s_1..s_N]
-int slip_block(const mjModel* m, int id) {
-  return static_cast<int>(user_slots(m, id)[kPamPlantUserSize + 2 + 2 * kMaxSlipElements]);
-}
 
 // The friction's input at the muscle length `length_m`: the tendon's rate (smooth), or the
 // elements as committed, moved (in `scratch`) to that length (Maxwell-slip).
@@ -117,15 +49,38 @@ struct PamLaw {
   bool has_plant = false;
   AvbdlParams plant;
   AvbdlShape shape;   // the plant's, derived once
+  double max_length_m = 0.0;
   SpringModel spring;
+  mutable double step_s = 0.0;           // the relaxation's constants, for this time step
+  mutable RelaxationStep relaxation_step_constants;
 
   PamLaw(const mjModel* m, int id) {
     has_plant = pam_plant_from_model(m, id, &plant);
     if (has_plant) {
       shape = avbdl_shape(plant);
+      max_length_m = avbdl_max_length(plant);
     } else {
       spring = pam_spring_from_model(m, id);
     }
+  }
+  const RelaxationStep& relaxation(const mjModel* m) const {
+    if (m->opt.timestep != step_s) {
+      step_s = m->opt.timestep;
+      relaxation_step_constants = relaxation_step(plant.relaxation, step_s);
+    }
+    return relaxation_step_constants;
+  }
+  // the bladder's relaxation block advanced to `length` [m] over one step, into `h`; the
+  // overstresses' sum [N] (0 before the first commit)
+  double overstress(const mjModel* m, const mjData* d, int id, double length, double* h) const {
+    const mjtNum* block = d->userdata + relaxation_block(m, id);
+    const double relaxed =
+        avbdl_dbladder_energy_dlength(plant, shape, std::min(length, max_length_m));
+    if (!(block[0] > 0.0)) {
+      std::fill(h, h + plant.relaxation.count, 0.0);
+      return 0.0;
+    }
+    return relaxation_advance(plant.relaxation, relaxation(m), block + 2, relaxed - block[1], h);
   }
   double pull(const mjModel* m, const mjData* d, int id, double p, double taut) const {
     if (has_plant) {
@@ -133,7 +88,10 @@ struct PamLaw {
       // avbdl_max_length (a muscle stretched to its fibre length would have to break)
       double slip_state[kMaxSlipElements];
       const FrictionInput friction = friction_input(m, d, id, plant, taut, slip_state);
-      return avbdl_line_pull(plant, shape, p, taut, friction);
+      const double f = avbdl_line_pull(plant, shape, p, taut, friction);
+      if (plant.relaxation.count == 0 || !(f > 0.0)) return f;
+      double h[kMaxRelaxationTerms];
+      return std::max(f + overstress(m, d, id, taut, h), 0.0);
     }
     return spring_force(spring, p, taut - natural_length(spring, p));
   }
@@ -198,98 +156,7 @@ double line_tension(const mjModel* m, const mjData* d, int id, double* taut) {
   *taut = unstretched - c * f;
   return f;
 }
-
 }  // namespace
-
-void store_line_stiffness_in_model(mjModel* m, int id, double axial_stiffness_n,
-                                   const char* path) {
-  if (axial_stiffness_n <= 0.0 && m->nuser_actuator < kPamLineUserSize) return;   // older models
-  require_user_slots(m, kPamLineUserSize, "an extensible line", path);
-  m->actuator_user[static_cast<long>(id) * m->nuser_actuator + kPamSlipUserSize] =
-      axial_stiffness_n;
-}
-
-double pam_line_axial_stiffness(const mjModel* m, int id) {
-  return m->nuser_actuator < kPamLineUserSize ? 0.0 : user_slots(m, id)[kPamSlipUserSize];
-}
-
-int pam_slip_block_size(const AvbdlParams& plant) {
-  return plant.friction.model == FrictionModel::kMaxwellSlip ? 1 + plant.friction.slip.count
-                                                             : 0;
-}
-
-void store_pam_in_model(mjModel* m, int id, const SpringModel& spring, double line_length_m,
-                        int userdata_index, const char* path) {
-  const std::string name = mj_id2name(m, mjOBJ_ACTUATOR, id) ? mj_id2name(m, mjOBJ_ACTUATOR, id) : "?";
-  require_user_slots(m, kPamUserSize, "PAM actuators", path);
-  if (m->actuator_biastype[id] != mjBIAS_USER || m->actuator_trntype[id] != mjTRN_TENDON) {
-    throw InputError(std::string(path) + ": actuator '" + name +
-                     "' must be a general actuator on a tendon with biastype=\"user\"");
-  }
-  if (userdata_index < 0 || userdata_index >= m->nuserdata) {
-    throw InputError(std::string(path) + ": <size nuserdata> must be > " +
-                     std::to_string(userdata_index) + " to hold the PAM pressures");
-  }
-  mjtNum* u = m->actuator_user + static_cast<long>(id) * m->nuser_actuator;
-  u[0] = static_cast<int>(spring.law);
-  u[1] = spring.m_m_per_pa;
-  u[2] = spring.h_m;
-  for (int k = 0; k < 6; ++k) u[3 + k] = spring.coef[k];
-  u[9] = line_length_m;
-  u[10] = userdata_index;
-}
-
-void store_plant_in_model(mjModel* m, int id, const AvbdlParams& a, int slip_userdata_index,
-                          const char* path) {
-  require_user_slots(m, kPamPlantUserSize, "a PAM with a plant law", path);
-  mjtNum* u = m->actuator_user + static_cast<long>(id) * m->nuser_actuator;
-  const AvbdlFriction& f = a.friction;
-  const double values[] = {1.0, a.length_m, a.diameter_m, a.braid_angle_rad,
-                           a.wall_thickness_m, a.bladder.c10_pa, a.bladder.c01_pa,
-                           a.bladder.c20_pa, a.end_length_m, a.end_slope,
-                           f.velocity_scale_m_per_s, f.extension.force_n,
-                           f.extension.pressure_area_m2, f.extension.strain_area_m2,
-                           f.contraction.force_n, f.contraction.pressure_area_m2,
-                           f.contraction.strain_area_m2};
-  std::copy(std::begin(values), std::end(values), u + kPamUserSize);
-  store_friction_form(m, id, f, slip_userdata_index, path);
-  store_bladder_form(m, id, a, path);
-}
-
-bool pam_plant_from_model(const mjModel* m, int id, AvbdlParams* a) {
-  if (m->nuser_actuator < kPamPlantUserSize) return false;
-  const mjtNum* u = user_slots(m, id) + kPamUserSize;
-  if (u[0] != 1.0) return false;
-  a->length_m = u[1];
-  a->diameter_m = u[2];
-  a->braid_angle_rad = u[3];
-  a->wall_thickness_m = u[4];
-  a->bladder = {u[5], u[6], u[7]};
-  a->end_length_m = u[8];
-  a->end_slope = u[9];
-  a->friction.velocity_scale_m_per_s = u[10];
-  a->friction.extension = {u[11], u[12], u[13]};
-  a->friction.contraction = {u[14], u[15], u[16]};
-  read_friction_form(m, id, &a->friction);
-  read_bladder_form(m, id, a);
-  return true;
-}
-
-SpringModel pam_spring_from_model(const mjModel* m, int id) {
-  const mjtNum* u = user_slots(m, id);
-  SpringModel spring;
-  spring.law = static_cast<SpringLaw>(static_cast<int>(u[0]));
-  spring.m_m_per_pa = u[1];
-  spring.h_m = u[2];
-  for (int k = 0; k < 6; ++k) spring.coef[k] = u[3 + k];
-  return spring;
-}
-
-double pam_line_length(const mjModel* m, int id) { return user_slots(m, id)[9]; }
-
-int pam_userdata_index(const mjModel* m, int id) {
-  return static_cast<int>(user_slots(m, id)[10]);
-}
 
 double pam_length(const mjModel* m, const mjData* d, int id) {
   const double unstretched = d->actuator_length[id] - pam_line_length(m, id);
@@ -314,18 +181,27 @@ mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int id) {
   return -line_tension(m, d, id, &taut);
 }
 
-void pam_commit_friction(const mjModel* m, mjData* d, int id, double muscle_length_m) {
-  AvbdlParams plant;
-  if (!pam_plant_from_model(m, id, &plant) ||
-      plant.friction.model != FrictionModel::kMaxwellSlip) {
-    return;
-  }
+void pam_commit_history(const mjModel* m, mjData* d, int id, double muscle_length_m) {
+  const PamLaw& law = pam_law(m, id);
+  if (!law.has_plant) return;
+  const AvbdlParams& plant = law.plant;
   // the muscle's own length: the line's while taut, its free length while slack
-  mjtNum* block = d->userdata + slip_block(m, id);
-  if (block[0] > 0.0) {
-    maxwell_slip_advance(plant.friction.slip, muscle_length_m - block[0], block + 1);
+  if (plant.friction.model == FrictionModel::kMaxwellSlip) {
+    mjtNum* block = d->userdata + slip_block(m, id);
+    if (block[0] > 0.0) {
+      maxwell_slip_advance(plant.friction.slip, muscle_length_m - block[0], block + 1);
+    }
+    block[0] = muscle_length_m;
   }
-  block[0] = muscle_length_m;
+  if (plant.relaxation.count > 0) {
+    mjtNum* block = d->userdata + relaxation_block(m, id);
+    double h[kMaxRelaxationTerms];
+    law.overstress(m, d, id, muscle_length_m, h);
+    std::copy(h, h + plant.relaxation.count, block + 2);
+    block[1] = avbdl_dbladder_energy_dlength(plant, law.shape,
+                                             std::min(muscle_length_m, law.max_length_m));
+    block[0] = muscle_length_m;
+  }
 }
 
 void install_pam_actuator_callback() { mjcb_act_bias = pam_actuator_force; }

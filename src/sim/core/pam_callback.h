@@ -24,8 +24,14 @@
 //   and, in models with nuser_actuator >= kPamBladderUserSize, the bladder's form (avbdl.h):
 //     40 its law (0 Mooney-Rivlin, slots 16..18; 1 Gent-Gent), 41 its tube's diameter Db [m]
 //     (0: the braid's), 42..44 Gent-Gent mu [Pa], C2 [Pa], Jm.
-// The Maxwell-slip state moves only at pam_commit_friction, once per physics step; the
-// callback evaluates the elements as they would be at the step's length, without storing it.
+//   and, in models with nuser_actuator >= kPamRelaxationUserSize, the bladder's rate term
+//   (bladder_relaxation.h): 45 its term count N (0: none), 46..49 weights g_i, 50..53
+//   times tau_i [s], 54 index into d->userdata of this PAM's relaxation block
+//   [L_prev, F_e(L_prev), h_1..h_N]: the committed length (0: none yet), the bladder's relaxed
+//   force there [N] and the terms' overstresses [N].
+// The Maxwell-slip and relaxation states move only at pam_commit_history, once per physics
+// step; the callback evaluates them as they would be at the step's length, without storing.
+// The overstress adds to a taut muscle's pull (a slack one pulls nothing).
 // PAM length l = tendon length - line length. The spring law: d = l - l_n(p), Eq. (1)-(5);
 // AVBDL: seeds/003 Eq. (25) plus friction at the tendon's velocity. The force pulls only
 // (the actuator force is -f, f >= 0) and is zero when the PAM is slack.
@@ -44,9 +50,11 @@ inline constexpr int kPamSlipUserSize = kPamPlantUserSize + 3 + 2 * kMaxSlipElem
 
 inline constexpr int kPamLineUserSize = kPamSlipUserSize + 1;
 inline constexpr int kPamBladderUserSize = kPamLineUserSize + 5;
+inline constexpr int kPamRelaxationUserSize = kPamBladderUserSize + 2 + 2 * kMaxRelaxationTerms;
 
-// The userdata a PAM's Maxwell-slip state takes: L_prev and one state per element.
-int pam_slip_block_size(const AvbdlParams& plant);
+// The userdata a PAM's history takes: its Maxwell-slip block (L_prev and one state per
+// element) and its relaxation block (above), each only when used.
+int pam_history_size(const AvbdlParams& plant);
 
 // Writes the PAM's parameters into actuator `id`'s user slots. Throws InputError if the
 // model declares nuser_actuator < kPamUserSize or the actuator is not a user-bias tendon
@@ -55,13 +63,14 @@ void store_pam_in_model(mjModel* m, int actuator_id, const SpringModel& spring,
                         double line_length_m, int userdata_index, const char* path);
 
 // Makes actuator `id`'s plant the AVBDL law (the spring law stays the estimator's and the
-// calibration's); a Maxwell-slip friction keeps its state in d->userdata from index
-// `slip_userdata_index` on (pam_slip_block_size values; ignored for smooth friction). Throws
-// InputError if the model declares nuser_actuator < kPamPlantUserSize, or, for a
-// Maxwell-slip friction, nuser_actuator < kPamSlipUserSize or too small a nuserdata, or,
-// for a tube bladder or the Gent-Gent law, nuser_actuator < kPamBladderUserSize.
+// calibration's); its history (a Maxwell-slip friction's state, then the bladder's
+// relaxation) takes pam_history_size values of d->userdata from index `history_index` on.
+// Throws InputError if the model declares nuser_actuator < kPamPlantUserSize, or, for a
+// Maxwell-slip friction, nuser_actuator < kPamSlipUserSize, for a tube bladder or the
+// Gent-Gent law, nuser_actuator < kPamBladderUserSize, for a relaxing bladder,
+// nuser_actuator < kPamRelaxationUserSize, or too small a nuserdata for the history.
 void store_plant_in_model(mjModel* m, int actuator_id, const AvbdlParams& plant,
-                          int slip_userdata_index, const char* path);
+                          int history_index, const char* path);
 // Makes actuator `id`'s line extensible with axial stiffness E A = axial_stiffness_n > 0, or
 // inextensible for 0. Throws InputError if an extensible line finds nuser_actuator <
 // kPamLineUserSize.
@@ -87,10 +96,12 @@ double pam_length(const mjModel* m, const mjData* d, int actuator_id);
 // fiber sensor, the chamber volume and the error metrics see.
 double pam_muscle_length(const mjModel* m, const mjData* d, int actuator_id);
 
-// Moves the actuator's Maxwell-slip elements to the muscle's length at this step, its
-// pam_muscle_length (call once after each physics step, with the data the step's forces
-// were computed from); nothing for a smooth friction or the spring law.
-void pam_commit_friction(const mjModel* m, mjData* d, int actuator_id, double muscle_length_m);
+// Moves the actuator's history (Maxwell-slip elements, bladder relaxation) to the muscle's
+// length at this step, its pam_muscle_length (call once after each physics step, with the
+// data the step's forces were computed from); nothing for a plant without history
+// (pam_has_history) or the spring law.
+void pam_commit_history(const mjModel* m, mjData* d, int actuator_id, double muscle_length_m);
+bool pam_has_history(const AvbdlParams& plant);
 
 // The mjcb_act_bias callback: actuator force [N] (<= 0, a pull).
 mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int actuator_id);

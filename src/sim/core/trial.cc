@@ -134,12 +134,12 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
   command_pa_.resize(n_);
   muscle_length_m_.resize(n_);
   step_force_n_.resize(n_);
-  slip_.assign(n_, 0);
+  history_.assign(n_, 0);
   for (std::size_t i = 0; i < n_; ++i) {   // a physical muscle's chamber has its own shape
     const MuscleSpec& spec = sc.muscles[tm.muscles[i].spec];
     if (spec.plant_file.empty()) continue;
     pneumatics_.set_plant_volume(static_cast<int>(i), spec.plant);
-    slip_[i] = spec.plant.friction.model == FrictionModel::kMaxwellSlip;
+    history_[i] = pam_has_history(spec.plant);
   }
   held_.assign(tm.holds.size(), 1);
   fired_.assign(sc.events.size(), 0);

@@ -282,7 +282,7 @@ void solve_line(const Scenario& sc, TrialModel* tm, int solved) {
 void set_lines(const Scenario& sc, TrialModel* tm) {
   mjModel* m = tm->model.get();
   int solved = -1;
-  int slip_index = static_cast<int>(tm->muscles.size());   // after the pressures
+  int history_index = static_cast<int>(tm->muscles.size());   // after the pressures
   for (std::size_t k = 0; k < tm->muscles.size(); ++k) {
     BoundMuscle& b = tm->muscles[k];
     const MuscleSpec& spec = sc.muscles[b.spec];
@@ -295,8 +295,8 @@ void set_lines(const Scenario& sc, TrialModel* tm) {
     store_pam_in_model(m, b.actuator, spec.pam.spring, b.line_length_m, static_cast<int>(k),
                        sc.model_file.c_str());
     if (!spec.plant_file.empty()) {
-      store_plant_in_model(m, b.actuator, spec.plant, slip_index, sc.model_file.c_str());
-      slip_index += pam_slip_block_size(spec.plant);
+      store_plant_in_model(m, b.actuator, spec.plant, history_index, sc.model_file.c_str());
+      history_index += pam_history_size(spec.plant);
     }
   }
   if (solved >= 0) solve_line(sc, tm, solved);

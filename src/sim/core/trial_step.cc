@@ -182,8 +182,9 @@ bool TrialRun::physics_step(double t) {
 
   // pneumatics over [t, t + dt] with this step's muscle length and velocity: the line's
   // while it is taut; a slack muscle rests at its free length, which moves with its
-  // pressure (the length's rate over the last step). A Maxwell-slip friction's elements
-  // move to that length now, after every force of the step was computed.
+  // pressure (the length's rate over the last step). The muscle's history (a Maxwell-slip
+  // friction's elements, the bladder's relaxation) moves to that length now, after every
+  // force of the step was computed.
   try {
     for (std::size_t i = 0; i < n_; ++i) {
       const int act = tm_.muscles[i].actuator;
@@ -195,7 +196,7 @@ bool TrialRun::physics_step(double t) {
                                   ? (length - muscle_length_m_[i]) / sc_.timestep_s
                                   : d_->actuator_velocity[act];
       muscle_length_m_[i] = length;
-      if (slip_[i]) pam_commit_friction(m_, d_, act, length);
+      if (history_[i]) pam_commit_history(m_, d_, act, length);
       pneumatics_.set_kinematics(static_cast<int>(i), length, velocity);
     }
     pneumatics_.advance(t + sc_.timestep_s);
