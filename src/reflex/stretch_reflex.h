@@ -57,6 +57,35 @@ struct StretchReflexParams {
   double arm_after_s = 0.1;
 };
 
+// The timing every reflex shares (the stretch reflex here, the tension reflex of
+// tension_reflex.h): a trigger opens a window of round(duration_s / dt) ticks (>= 1), the
+// trigger tick its first; a window is never extended or restarted while it runs; after it,
+// round(refractory_s / dt) ticks refractory; no trigger while t < arm_after_s.
+class ReflexWindow {
+ public:
+  // durations >= 0 and control_period_s > 0 (asserted).
+  ReflexWindow(double duration_s, double refractory_s, double arm_after_s,
+               double control_period_s);
+
+  // One control tick at time_s: opens a window if `trigger` and the reflex is idle, armed
+  // and not refractory. Returns true while a window is open (this tick included).
+  bool update(double time_s, bool trigger);
+
+  bool active() const { return active_; }
+  // True if the last update() opened a window.
+  bool triggered() const { return triggered_; }
+
+ private:
+  double arm_after_s_;
+  int window_ticks_;
+  int refractory_ticks_;
+  double arm_tolerance_s_;
+  int window_left_ = 0;
+  int refractory_left_ = 0;
+  bool active_ = false;
+  bool triggered_ = false;
+};
+
 class StretchReflex {
  public:
   // control_period_s > 0. Parameters must have passed validate() (asserted).
@@ -68,23 +97,16 @@ class StretchReflex {
   // trigger at this tick (a running window goes on): the controller's gates.
   double update(double time_s, double velocity_m_s, bool may_trigger = true);
 
-  bool active() const { return active_; }
+  bool active() const { return window_.active(); }
   // True if the last update() opened a window (the controller keeps the trigger times).
-  bool triggered() const { return triggered_; }
+  bool triggered() const { return window_.triggered(); }
 
  private:
   double v_thr_m_s_;
   double k_pa_s_per_m_;
   ReflexMode mode_;
-  double arm_after_s_;
-  int window_ticks_;
-  int refractory_ticks_;
-  double arm_tolerance_s_;
-  int window_left_ = 0;
-  int refractory_left_ = 0;
+  ReflexWindow window_;
   double v_latched_m_s_ = 0.0;
-  bool active_ = false;
-  bool triggered_ = false;
 };
 
 // The two muscles of an antagonistic pair, in the order of Eq. (12)-(13).
