@@ -66,8 +66,12 @@ class Controller {
   // Called once per control tick, in time order, starting at t = 0; `out` is sized by the
   // caller (ControlOutput::resize) and every element is written.
   virtual void update(const ControlInput& in, ControlOutput* out) = 0;
-  // Reflex trigger times per muscle so far (nullptr for a controller without reflexes).
+  // Reflex trigger times per muscle so far (nullptr for a controller without reflexes):
+  // the stretch (Ia) reflexes', and the tension (Ib) reflexes'.
   virtual const std::vector<std::vector<double>>* trigger_times_s() const { return nullptr; }
+  virtual const std::vector<std::vector<double>>* tension_trigger_times_s() const {
+    return nullptr;
+  }
 };
 
 }  // namespace pamsim

@@ -15,6 +15,8 @@ std::vector<ControllerKind>& kinds() {
   static std::vector<ControllerKind> list = {
       pass_through_controller_kind(),
       stretch_reflex_controller_kind(),
+      tension_reflex_controller_kind(),
+      stretch_tension_reflex_controller_kind(),
   };
   return list;
 }

@@ -1,5 +1,6 @@
 // controller_registry.h: the kinds of controller a scenario may choose by controller.kind,
-// by name, in registration order: the built-in kinds ("none", "stretch_reflex"), listed in
+// by name, in registration order: the built-in kinds ("none", "stretch_reflex",
+// "tension_reflex", "stretch_tension_reflex"), listed in
 // controller_registry.cc, then any registered by a ControllerRegistrar.
 //
 // Why the built-in kinds are a list and not self-registering: the reflex library is a

@@ -1,6 +1,6 @@
-// stretch_reflex_controller.cc: the kind "stretch_reflex" whole: its scenario keys (read,
-// checked, documented), configuration checks, and the per-tick pipeline
-// reading -> reflex -> Eq. (12)-(13).
+// stretch_reflex_controller.cc: the reflex controllers' configuration checks and per-tick
+// pipeline reading -> reflexes (Ia, Ib) -> Eq. (12)-(13); their kinds' keys are in
+// reflex_kinds.cc.
 #include "reflex/stretch_reflex_controller.h"
 
 #include <algorithm>
@@ -9,7 +9,6 @@
 #include <limits>
 #include <set>
 
-#include "base/config_reader.h"
 #include "base/enum_names.h"
 #include "base/input_error.h"
 #include "base/units.h"
@@ -76,6 +75,7 @@ void validate(const StretchReflexControllerConfig& config) {
   }
   require_non_negative("reflex.arm_after_s", reflex.arm_after_s);
   require_non_negative("reflex.min_tension_N", reflex.min_tension_n);
+  if (config.tension) validate(config.ib, config.control_hz);
 
   // the valve range, in MPa as in the scenario file
   require_positive("controller.p_max_MPa", units::pa_to_mpa(config.p_max_pa));
@@ -103,9 +103,12 @@ StretchReflexController::StretchReflexController(const StretchReflexControllerCo
     : config_(validated(config)),
       partner_(config.muscle_count, -1),
       reflexes_(config.muscle_count, StretchReflex(config.reflex, 1.0 / config.control_hz)),
+      tension_reflexes_(config.muscle_count, TensionReflex(config.ib, 1.0 / config.control_hz)),
       dp_pa_(config.muscle_count, 0.0),
+      dp_ib_pa_(config.muscle_count, 0.0),
       was_active_(config.muscle_count, 0),
-      trigger_times_s_(config.muscle_count) {
+      trigger_times_s_(config.muscle_count),
+      tension_trigger_times_s_(config.muscle_count) {
   for (const ReflexPair& pair : config.pairs) {
     partner_[pair.agonist] = pair.antagonist;
     partner_[pair.antagonist] = pair.agonist;
@@ -126,19 +129,13 @@ void StretchReflexController::update(const ControlInput& in, ControlOutput* out)
     const double v = rc.sensor == ReflexSensor::kFiber ? r.fiber_velocity_m_s : r.velocity_est_m_s;
     out->velocity_m_s[j] = v;
     dp_pa_[j] = 0.0;
+    dp_ib_pa_[j] = 0.0;
     out->reflex_active[j] = 0;
-
-    // this muscle's reflex, Eq. (14), behind the tension and reciprocal gates; while the
-    // controller is switched off its windows and refractory time run out without acting
-    const int partner = partner_[j];
-    if (!rc.enabled || partner < 0) continue;
-    const bool loaded = rc.min_tension_n <= 0.0 || r.force_meas_n >= rc.min_tension_n;
-    const bool other_quiet = !(rc.reciprocal_trigger_inhibition && was_active_[partner]);
-    const double dp = reflexes_[j].update(in.time_s, v, in.enabled && loaded && other_quiet);
-    if (!in.enabled) continue;
-    dp_pa_[j] = dp;
-    out->reflex_active[j] = reflexes_[j].active() ? 1 : 0;
-    if (reflexes_[j].triggered()) trigger_times_s_[j].push_back(in.time_s);
+    // while the controller is switched off its windows and refractory times run out
+    // without acting
+    if (!rc.enabled || partner_[j] < 0) continue;
+    if (config_.stretch) run_stretch_reflex(j, in, v, out);
+    if (config_.tension) run_tension_reflex(j, in);
   }
 
   // Eq. (12)-(13) per pair, clamped to the valve's range; unpaired muscles get p_tp
@@ -146,12 +143,51 @@ void StretchReflexController::update(const ControlInput& in, ControlOutput* out)
     if (partner_[j] < 0) out->p_cmd_pa[j] = std::clamp(p_tp[j], 0.0, config_.p_max_pa);
   }
   for (const ReflexPair& pair : config_.pairs) {
-    const PairValues p = reflex_commands({p_tp[pair.agonist], p_tp[pair.antagonist]},
-                                         {dp_pa_[pair.agonist], dp_pa_[pair.antagonist]},
-                                         config_.p_max_pa);
+    const PairValues p_tp_pair = {p_tp[pair.agonist], p_tp[pair.antagonist]};
+    const PairValues dp = {dp_pa_[pair.agonist], dp_pa_[pair.antagonist]};
+    const PairValues p =
+        config_.tension
+            ? reflex_commands(p_tp_pair, dp, {dp_ib_pa_[pair.agonist], dp_ib_pa_[pair.antagonist]},
+                              config_.ib.excite_antagonist, config_.p_max_pa)
+            : reflex_commands(p_tp_pair, dp, config_.p_max_pa);
     out->p_cmd_pa[pair.agonist] = p[kAgonist];
     out->p_cmd_pa[pair.antagonist] = p[kAntagonist];
   }
+}
+
+void StretchReflexController::run_stretch_reflex(std::size_t j, const ControlInput& in, double v,
+                                                 ControlOutput* out) {
+  // this muscle's reflex, Eq. (14), behind the tension and reciprocal gates
+  const ReflexConfig& rc = config_.reflex;
+  const bool loaded = rc.min_tension_n <= 0.0 || (*in.readings)[j].force_meas_n >= rc.min_tension_n;
+  const bool other_quiet = !(rc.reciprocal_trigger_inhibition && was_active_[partner_[j]]);
+  const double dp = reflexes_[j].update(in.time_s, v, in.enabled && loaded && other_quiet);
+  if (!in.enabled) return;
+  dp_pa_[j] = dp;
+  out->reflex_active[j] = reflexes_[j].active() ? 1 : 0;
+  if (reflexes_[j].triggered()) trigger_times_s_[j].push_back(in.time_s);
+}
+
+void StretchReflexController::run_tension_reflex(std::size_t j, const ControlInput& in) {
+  // the muscle's tension reflex on its gauge's tension, Eq. (8)-(9)
+  const double dp = tension_reflexes_[j].update(in.time_s, (*in.readings)[j].force_meas_n,
+                                                in.enabled);
+  if (!in.enabled) return;
+  dp_ib_pa_[j] = dp;
+  if (tension_reflexes_[j].triggered()) tension_trigger_times_s_[j].push_back(in.time_s);
+}
+
+PairValues reflex_commands(const PairValues& p_tp_pa, const PairValues& dp_ia_pa,
+                           const PairValues& dp_ib_pa, bool excite_antagonist,
+                           double p_max_pa) {
+  const double e = excite_antagonist ? 1.0 : 0.0;
+  PairValues p;
+  p[kAgonist] = p_tp_pa[kAgonist] + dp_ia_pa[kAgonist] - dp_ia_pa[kAntagonist] -
+                dp_ib_pa[kAgonist] + e * dp_ib_pa[kAntagonist];
+  p[kAntagonist] = p_tp_pa[kAntagonist] + dp_ia_pa[kAntagonist] - dp_ia_pa[kAgonist] -
+                   dp_ib_pa[kAntagonist] + e * dp_ib_pa[kAgonist];
+  for (double& pj : p) pj = std::clamp(pj, 0.0, p_max_pa);
+  return p;
 }
 
 int StretchReflexController::trigger_count(int muscle) const {
@@ -164,152 +200,6 @@ double StretchReflexController::first_trigger_time_s() const {
     if (!times.empty() && !(times.front() >= first)) first = times.front();
   }
   return first;
-}
-
-// ---- the kind: scenario keys, summary fields, factory ----
-
-namespace {
-
-using NamePairs = std::vector<std::array<std::string, 2>>;
-
-// reflex.*; reflex.lowpass_hz is the sensing's
-ReflexConfig read_reflex(ConfigReader& in, SensingConfig* sensing) {
-  ReflexConfig r;
-  r.enabled = in.get_bool("reflex.enabled", r.enabled);
-  const std::string sensor = in.get_string("reflex.sensor", to_string(r.sensor));
-  r.sensor = in_file(in, [&] { return parse_reflex_sensor(sensor); });
-  // Table II values are the defaults for the chosen sensor
-  const ReflexConfig table = table_ii_reflex_config(r.sensor);
-  r.v_thr_mm_s = in.get_double("reflex.v_thr_mm_s", table.v_thr_mm_s);
-  r.k_MPa_s_per_mm = in.get_double("reflex.k_MPa_s_per_mm", table.k_MPa_s_per_mm);
-  r.duration_s = in.get_double("reflex.duration_s", r.duration_s);
-  const std::string mode = in.get_string("reflex.mode", to_string(r.mode));
-  r.mode = in_file(in, [&] { return parse_reflex_mode(mode); });
-  r.refractory_s = in.get_double("reflex.refractory_s", r.refractory_s);
-  r.arm_after_s = in.get_double("reflex.arm_after_s", r.arm_after_s);
-  sensing->velocity_lowpass_hz = in.get_double("reflex.lowpass_hz", sensing->velocity_lowpass_hz);
-  r.min_tension_n = in.get_double("reflex.min_tension_N", r.min_tension_n);
-  r.reciprocal_trigger_inhibition =
-      in.get_bool("reflex.reciprocal_trigger_inhibition", r.reciprocal_trigger_inhibition);
-  return r;
-}
-
-// controller.p_max_MPa [Pa]: within the regulator's range, above every schedule
-double read_p_max(ConfigReader& in, const ControllerScenario& sc) {
-  const double p_max_pa = in.has("controller.p_max_MPa")
-                              ? units::mpa_to_pa(in.get_double("controller.p_max_MPa", 0.0))
-                              : sc.command_max_pa;
-  // one pressure limit everywhere: the reflex cannot ask beyond what the regulator gives
-  in.check(!(p_max_pa > sc.command_max_pa), "controller.p_max_MPa",
-           "must be <= the regulator's command maximum (" +
-               format_value(units::pa_to_mpa(sc.command_max_pa)) + " MPa), got " +
-               format_value(units::pa_to_mpa(p_max_pa)));
-  for (const ControllerScenario::Muscle& m : sc.muscles) {   // they would be clamped silently
-    in.check(!(m.command_max_pa > p_max_pa), m.key + ".command",
-             "goes up to " + format_value(units::pa_to_mpa(m.command_max_pa)) +
-                 " MPa, above controller.p_max_MPa = " + format_value(units::pa_to_mpa(p_max_pa)));
-  }
-  return p_max_pa;
-}
-
-// reflex.pairs by actuator name; agonist/antagonist by default
-NamePairs read_pairs(ConfigReader& in, const ControllerScenario& sc) {
-  const auto is_muscle = [&](const std::string& name) {
-    return std::any_of(sc.muscles.begin(), sc.muscles.end(),
-                       [&](const ControllerScenario::Muscle& m) { return m.actuator == name; });
-  };
-  NamePairs pairs;
-  if (in.has("reflex.pairs")) {
-    const toml::array* a = in.raw("reflex.pairs")->as_array();
-    in.check(a != nullptr, "reflex.pairs", "must be a list of [agonist, antagonist] name pairs");
-    for (const toml::node& item : *a) {
-      const toml::array* pair = item.as_array();
-      const bool ok = pair && pair->size() == 2 && (*pair)[0].is_string() && (*pair)[1].is_string();
-      in.check(ok, "reflex.pairs", "must be a list of [agonist, antagonist] name pairs");
-      pairs.push_back({*(*pair)[0].value<std::string>(), *(*pair)[1].value<std::string>()});
-    }
-  } else if (is_muscle("agonist") && is_muscle("antagonist")) {
-    pairs.push_back({"agonist", "antagonist"});
-  }
-  in.check(!pairs.empty(), "reflex.pairs",
-           "is required: the scenario has no muscles named agonist and antagonist");
-  // each pair two different muscles of the scenario, each muscle in one pair at most
-  std::set<std::string> paired;
-  for (const auto& pair : pairs) {
-    in.check(pair[0] != pair[1], "reflex.pairs", "pairs muscle '" + pair[0] + "' with itself");
-    for (const std::string& name : pair) {
-      in.check(is_muscle(name), "reflex.pairs",
-               "names muscle '" + name + "', which is not a muscle of the scenario");
-      in.check(paired.insert(name).second, "reflex.pairs",
-               "puts muscle '" + name + "' in two pairs");
-    }
-  }
-  return pairs;
-}
-
-std::shared_ptr<const ControllerConfig> read_stretch_reflex(ConfigReader& in,
-                                                            const ControllerScenario& sc) {
-  auto config = std::make_shared<StretchReflexScenarioConfig>();
-  config->reflex = read_reflex(in, sc.sensing);
-  config->p_max_pa = read_p_max(in, sc);
-  config->pairs = read_pairs(in, sc);
-  // the values at the scenario's control rate (the pairs are checked by name above)
-  in_file(in, [&] {
-    validate(config->bound({static_cast<int>(sc.muscles.size()), sc.control_hz, {}}));
-    return 0;
-  });
-  return config;
-}
-
-std::vector<ControllerKeyDoc> stretch_reflex_docs() {
-  const ReflexConfig d;
-  const ReflexConfig fiber = table_ii_reflex_config(ReflexSensor::kFiber);
-  const auto quoted = [](const char* name) { return "\"" + std::string(name) + "\""; };
-  const auto boolean = [](bool b) { return std::string(b ? "true" : "false"); };
-  return {
-      {"controller.p_max_MPa", "MPa", "(valve.command_max_MPa)", "(0, valve.command_max_MPa]", "the highest pressure the reflex commands"},
-      {"reflex.enabled", "", boolean(d.enabled), "true | false", "the reflex may trigger (false: the passive arm, same sensing)"},
-      {"reflex.sensor", "", quoted(to_string(d.sensor)), "\"model\" | \"fiber\"", "the stretch velocity from the spring model (Eq. (9)-(11)) or a fiber sensor"},
-      {"reflex.v_thr_mm_s", "mm/s", "(Table II: " + format_number(d.v_thr_mm_s) + " model, " + format_number(fiber.v_thr_mm_s) + " fiber)", "> 0", "the trigger threshold V_thr, Eq. (12)"},
-      {"reflex.k_MPa_s_per_mm", "MPa s/mm", "(Table II: 1/800 model, 1/300 fiber)", ">= 0", "the reflex gain k, Eq. (13)-(14)"},
-      {"reflex.duration_s", "s", format_number(d.duration_s), ">= one control period", "the reflex window"},
-      {"reflex.mode", "", quoted(to_string(d.mode)), "\"follow\" | \"latch\"", "the command follows the velocity, or holds its trigger value"},
-      {"reflex.refractory_s", "s", format_number(d.refractory_s), ">= 0 (0: off)", "no retrigger this long after a window ends"},
-      {"reflex.arm_after_s", "s", format_number(d.arm_after_s), ">= 0 (0: off)", "no trigger before this time"},
-      {"reflex.lowpass_hz", "Hz", format_number(SensingConfig{}.velocity_lowpass_hz), "0 (off) or (0, sim.control_hz / 2]", "low-pass on the estimated velocity"},
-      {"reflex.min_tension_N", "N", format_number(d.min_tension_n), ">= 0", "trigger only while the gauge reads at least this tension"},
-      {"reflex.reciprocal_trigger_inhibition", "", boolean(d.reciprocal_trigger_inhibition), "true | false", "a triggered muscle inhibits its antagonist's trigger"},
-      {"reflex.pairs", "", "([[\"agonist\", \"antagonist\"]] when both exist)", "[[agonist, antagonist], ...]", "the reflex pairs by actuator name"},
-  };
-}
-
-}  // namespace
-
-StretchReflexControllerConfig StretchReflexScenarioConfig::bound(
-    const ControllerSetup& setup) const {
-  StretchReflexControllerConfig config;
-  config.reflex = reflex;
-  config.p_max_pa = p_max_pa;
-  config.control_hz = setup.control_hz;
-  config.muscle_count = setup.muscle_count;
-  config.pairs = setup.pairs;
-  return config;
-}
-
-std::vector<SummaryField> StretchReflexScenarioConfig::summary_fields() const {
-  return {{"reflex_enabled", reflex.enabled},
-          {"reflex_sensor", std::string(to_string(reflex.sensor))},
-          {"v_thr_mm_s", reflex.v_thr_mm_s},
-          {"k_MPa_s_per_mm", reflex.k_MPa_s_per_mm}};
-}
-
-std::unique_ptr<Controller> StretchReflexScenarioConfig::make_controller(
-    const ControllerSetup& setup) const {
-  return std::make_unique<StretchReflexController>(bound(setup));
-}
-
-ControllerKind stretch_reflex_controller_kind() {
-  return {"stretch_reflex", {"reflex"}, read_stretch_reflex, stretch_reflex_docs()};
 }
 
 }  // namespace pamsim

@@ -1,16 +1,21 @@
-// stretch_reflex_controller.h: controller "stretch_reflex", the paper's controller for the
-// falling-mass experiment (Sec. III-D): the scheduled goal pressures (the top controller's
-// p_tp) plus one stretch reflex per muscle of each antagonistic pair declared in the
-// scenario (Eq. (12)-(14)), driven by the model-based velocity estimate (Eq. (9)-(11)) or by
-// the fiber sensor's rate. Muscles in no pair get their scheduled command.
+// stretch_reflex_controller.h: the reflex controllers. Controller "stretch_reflex" is the
+// paper's controller for the falling-mass experiment (Sec. III-D): the scheduled goal
+// pressures (the top controller's p_tp) plus one stretch (Ia) reflex per muscle of each
+// antagonistic pair declared in the scenario (Eq. (12)-(14)), driven by the model-based
+// velocity estimate (Eq. (9)-(11)) or by the fiber sensor's rate. "tension_reflex" has the
+// tension (Ib) reflex of tension_reflex.h instead, driven by the strain gauge's tension
+// (Eq. (8)-(9)); "stretch_tension_reflex" has both, the paper's next step (Sec. V). Muscles
+// in no pair get their scheduled command.
 //
 // Per control tick, muscle by muscle in model order:
 //   1. take v from the reading: the estimate (reflex.sensor = "model") or the fiber rate
 //      ("fiber"), both low-passed at reflex.lowpass_hz by the sensing (sensing.h,
 //      SensingConfig::velocity_lowpass_hz, which this kind's reader sets);
 //   2. run the muscle's stretch reflex (stretch_reflex.h) if reflex.enabled and the
-//      controller is on, behind two gates (below);
-// then command each pair by Eq. (12)-(13), clamped to [0, p_max].
+//      controller is on, behind two gates (below); and its tension reflex on the measured
+//      tension, behind none;
+// then command each pair, clamped to [0, p_max]: by Eq. (12)-(13) with the Ia reflexes
+// alone, and with the Ib reflexes by the rule of reflex_commands (below).
 #pragma once
 
 #include <string>
@@ -19,6 +24,7 @@
 #include "reflex/controller.h"
 #include "reflex/controller_kind.h"
 #include "reflex/stretch_reflex.h"
+#include "reflex/tension_reflex.h"
 
 namespace pamsim {
 
@@ -56,6 +62,9 @@ ReflexConfig table_ii_reflex_config(ReflexSensor sensor);
 
 struct StretchReflexControllerConfig {
   ReflexConfig reflex;
+  bool stretch = true;                     // the Ia reflexes run
+  bool tension = false;                    // the Ib reflexes run (reflex.ib.*)
+  TensionReflexParams ib;
   // valve range [Pa]: the commands are clamped to [0, p_max]     controller.p_max_MPa
   double p_max_pa = 0.8e6;
   double control_hz = 100.0;                                   // sim.control_hz
@@ -64,22 +73,38 @@ struct StretchReflexControllerConfig {
 };
 
 // Checks every field once, throwing InputError "<key> must be ..., got <value>" naming the
-// scenario key: reflex.* as documented on the structs, sim.control_hz, controller.p_max_MPa,
-// and reflex.pairs (indices in range, no muscle in two pairs or paired with itself).
+// scenario key: reflex.* and, with the tension reflex, reflex.ib.* as documented on the
+// structs, sim.control_hz, controller.p_max_MPa, and reflex.pairs (indices in range, no
+// muscle in two pairs or paired with itself).
 // (reflex.lowpass_hz is the sensing's velocity low-pass: SensingConfig, checked there.)
 void validate(const StretchReflexControllerConfig& config);
 
-// The kind "stretch_reflex" as a scenario configures it (controller_kind.h): the keys
-// reflex.* and controller.p_max_MPa, read by stretch_reflex_controller_kind()'s reader.
+// Eq. (12)-(13) with the Ib reflexes (pamsim's rule; the paper gives none): every reflex's
+// output reaches its muscle's command and its partner's as inputs converge on a motor
+// neuron, summed:
+//   p_ago  = p_tp_ago  + dp_ia_ago  - dp_ia_anta - dp_ib_ago  + e dp_ib_anta
+//   p_anta = p_tp_anta + dp_ia_anta - dp_ia_ago  - dp_ib_anta + e dp_ib_ago
+// with e = 1 if reflex.ib.excite_antagonist, else 0; each clamped to [0, p_max_pa]. So a
+// tension reflex can cancel its own muscle's stretch reflex, as autogenic inhibition does.
+PairValues reflex_commands(const PairValues& p_tp_pa, const PairValues& dp_ia_pa,
+                           const PairValues& dp_ib_pa, bool excite_antagonist,
+                           double p_max_pa);
+
+// A reflex kind as a scenario configures it (controller_kind.h): the keys reflex.*,
+// reflex.ib.* and controller.p_max_MPa, read by the kinds' readers.
 class StretchReflexScenarioConfig final : public ControllerConfig {
  public:
   ReflexConfig reflex;     // reflex.*
+  bool stretch = true;     // the kind's reflexes: Ia, Ib
+  bool tension = false;
+  TensionReflexParams ib;  // reflex.ib.*
   double p_max_pa = 0.0;   // controller.p_max_MPa, or the regulator's command maximum
 
   // The controller's configuration for a trial's muscles, pairs and control rate.
   StretchReflexControllerConfig bound(const ControllerSetup& setup) const;
   bool has_reflexes() const override { return true; }
-  // reflex_enabled, reflex_sensor, v_thr_mm_s, k_MPa_s_per_mm
+  // reflex_enabled; with Ia reflex_sensor, v_thr_mm_s, k_MPa_s_per_mm; with Ib
+  // ib_f_thr_N, ib_df_thr_N_s, ib_k_MPa_per_N
   std::vector<SummaryField> summary_fields() const override;
   std::unique_ptr<Controller> make_controller(const ControllerSetup& setup) const override;
 };
@@ -89,6 +114,10 @@ class StretchReflexScenarioConfig final : public ControllerConfig {
 // muscle's schedule against controller.p_max_MPa, and sets the sensing's velocity low-pass
 // from reflex.lowpass_hz.
 ControllerKind stretch_reflex_controller_kind();
+// The kinds "tension_reflex" (Ib alone: reflex.enabled, reflex.pairs and reflex.ib.*) and
+// "stretch_tension_reflex" (both: every key above), listed in controller_registry.cc.
+ControllerKind tension_reflex_controller_kind();
+ControllerKind stretch_tension_reflex_controller_kind();
 
 class StretchReflexController final : public Controller {
  public:
@@ -99,6 +128,9 @@ class StretchReflexController final : public Controller {
   const std::vector<std::vector<double>>* trigger_times_s() const override {
     return &trigger_times_s_;
   }
+  const std::vector<std::vector<double>>* tension_trigger_times_s() const override {
+    return config_.tension ? &tension_trigger_times_s_ : nullptr;
+  }
 
   const StretchReflexControllerConfig& config() const { return config_; }
   int trigger_count(int muscle) const;
@@ -106,12 +138,19 @@ class StretchReflexController final : public Controller {
   double first_trigger_time_s() const;
 
  private:
+  // muscle j's reflexes at this tick (j in a pair, the reflexes enabled)
+  void run_stretch_reflex(std::size_t j, const ControlInput& in, double v, ControlOutput* out);
+  void run_tension_reflex(std::size_t j, const ControlInput& in);
+
   StretchReflexControllerConfig config_;
   std::vector<int> partner_;            // pair partner of each muscle, -1 if unpaired
   std::vector<StretchReflex> reflexes_;
-  std::vector<double> dp_pa_;           // this tick's reflex outputs
+  std::vector<TensionReflex> tension_reflexes_;
+  std::vector<double> dp_pa_;           // this tick's reflex outputs: Ia
+  std::vector<double> dp_ib_pa_;        // and Ib
   std::vector<char> was_active_;        // whose window was open at the previous tick
   std::vector<std::vector<double>> trigger_times_s_;
+  std::vector<std::vector<double>> tension_trigger_times_s_;
 };
 
 }  // namespace pamsim

@@ -118,6 +118,23 @@ TEST(CliRunTest, BadHardwareKeysAreOneLineExitTwoAndWriteNothing) {
   }
 }
 
+// The reflex kinds of issue 27: an Ib threshold below zero, a reflex pair naming a muscle
+// twice: one line naming the key, exit 2, nothing written.
+TEST(CliRunTest, BadTensionReflexKeysAreOneLineExitTwoAndWriteNothing) {
+  const fs::path out = fresh_dir("run_bad_tension_reflex") / "new" / "out";
+  struct Case { std::string set, key; };
+  for (const Case& c : std::vector<Case>{
+           {"--set reflex.ib.f_thr_N=-1", "reflex.ib.f_thr_N must be > 0"},
+           {"--set 'reflex.pairs=[[\"agonist\", \"agonist\"]]'", "reflex.pairs"}}) {
+    const CliResult r = run_pamsim("run scenarios/drop_mass_heavy_ia_ib.toml " + c.set +
+                                   " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << c.set;
+    EXPECT_EQ(line_count(r.err), 1) << c.set << ": " << r.err;
+    EXPECT_NE(r.err.find(c.key), std::string::npos) << c.set << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out.parent_path())) << c.set;
+  }
+}
+
 // Every regular file under `dir` with its bytes (folders as names), for before/after checks.
 std::map<std::string, std::string> snapshot(const fs::path& dir) {
   std::map<std::string, std::string> files;

@@ -110,9 +110,12 @@ std::string error_of(const std::string& kind, const std::string& extra = "") {
 
 TEST(ControllerPlugin, RegisteredAfterTheBuiltInKinds) {
   ASSERT_NE(find_controller_kind("constant_command"), nullptr);
-  EXPECT_EQ(controller_kind_choices(), "\"none\", \"stretch_reflex\" or \"constant_command\"");
+  EXPECT_EQ(controller_kind_choices(),
+            "\"none\", \"stretch_reflex\", \"tension_reflex\", \"stretch_tension_reflex\" or "
+            "\"constant_command\"");
   EXPECT_EQ(error_of("bang_bang"),
-            kReaching + ": controller.kind must be \"none\", \"stretch_reflex\" or "
+            kReaching + ": controller.kind must be \"none\", \"stretch_reflex\", "
+                        "\"tension_reflex\", \"stretch_tension_reflex\" or "
                         "\"constant_command\", got \"bang_bang\"");
 }
 

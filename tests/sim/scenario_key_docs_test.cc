@@ -38,6 +38,9 @@ std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
   return {
       {s + "drop_mass.toml", {}},   // the 0.1 shorthands, drop, reflex, sensors
       {s + "drop_mass_fiber.toml", {}},
+      {s + "drop_mass.toml",   // the tension (Ib) reflex's keys
+       {"controller.kind=\"stretch_tension_reflex\"", "reflex.ib.f_thr_N=60",
+        "reflex.ib.k_MPa_per_N=0.002"}},
       {s + "drop_mass.toml",
        {"valve.dead_time_ms=5", "valve.valve_time_constant_ms=10",
         "valve.proportional_band_kPa=20", "valve.supply_MPa=0.7", "valve.command_max_MPa=0.7",

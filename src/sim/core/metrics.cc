@@ -133,6 +133,23 @@ class ReflexMetrics final : public MetricSet {
   int impact_;
 };
 
+// tension: the lines' peak pulls and the tension reflexes' triggers
+class TensionMetrics final : public MetricSet {
+ public:
+  void finish(const FinishedTrial& r, std::vector<Metric>* out) const override {
+    const auto* triggers = r.tension_trigger_times_s;
+    double first = kNaN;
+    for (std::size_t j = 0; j < r.labels.size(); ++j) {
+      const double peak = j < r.peak_tension_n.size() ? r.peak_tension_n[j] : kNaN;
+      out->push_back({"peak_tension_" + r.labels[j] + "_N", peak});
+      const std::size_t n = triggers ? (*triggers)[j].size() : 0;
+      out->push_back({"tension_triggers_" + r.labels[j], static_cast<double>(n), true});
+      if (n > 0 && !((*triggers)[j].front() >= first)) first = (*triggers)[j].front();
+    }
+    out->push_back({"first_tension_trigger_time_s", first});
+  }
+};
+
 // length_estimate: the estimate against the encoder, all muscles pooled [mm]
 class LengthEstimateMetrics final : public MetricSet {
  public:
@@ -220,7 +237,8 @@ bool is_timing_metric(const std::string& name) {
 }
 
 const std::vector<std::string>& metric_set_names() {
-  static const std::vector<std::string> names = {"drop", "reflex", "length_estimate", "tracking"};
+  static const std::vector<std::string> names = {"drop", "reflex", "length_estimate", "tracking",
+                                                 "tension"};
   return names;
 }
 
@@ -235,9 +253,11 @@ std::vector<std::unique_ptr<MetricSet>> make_metric_sets(const Scenario& sc) {
       sets.push_back(std::make_unique<LengthEstimateMetrics>());
     } else if (name == "tracking") {
       sets.push_back(std::make_unique<TrackingMetrics>());
+    } else if (name == "tension") {
+      sets.push_back(std::make_unique<TensionMetrics>());
     } else {
       throw InputError(sc.path + ": metrics names an unknown set \"" + name +
-                       "\" (known: drop, reflex, length_estimate, tracking)");
+                       "\" (known: drop, reflex, length_estimate, tracking, tension)");
     }
   }
   sets.push_back(std::make_unique<TrialMetrics>());

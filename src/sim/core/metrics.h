@@ -19,6 +19,9 @@
 //                     length_est_rmse_<m>_pct, length_est_max_error_<m>_pct (in % of the
 //                     true length, Table III's metric); the joint's start, final, min and
 //                     max (angle_*_deg or position_*_mm)
+//   tension           per muscle: peak_tension_<m>_N (the line's largest pull over every
+//                     physics step) and tension_triggers_<m> (its tension (Ib) reflex's
+//                     triggers; 0 without one); first_tension_trigger_time_s
 //   (always) trial    steps, sim_time_s, wall_time_s, realtime_factor
 //   (always) solver   cvode_steps, cvode_rhs_evals
 // A metric is NaN where it is undefined (an event that did not happen); JSON writes null.
@@ -65,6 +68,9 @@ struct FinishedTrial {
   std::vector<double> event_position;     // the joint's position when it fired [rad or m]
   std::vector<char> event_holds_at_end;   // per event: its condition holds in the final state
   const std::vector<std::vector<double>>* trigger_times_s = nullptr;   // per muscle, or none
+  // the tension (Ib) reflexes' trigger times, per muscle, or none
+  const std::vector<std::vector<double>>* tension_trigger_times_s = nullptr;
+  std::vector<double> peak_tension_n;     // per muscle, the largest pull of a physics step
   long steps = 0;
   double sim_time_s = 0.0;
   double wall_time_s = 0.0;

@@ -134,6 +134,7 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
   command_pa_.resize(n_);
   muscle_length_m_.resize(n_);
   step_force_n_.resize(n_);
+  peak_tension_n_.assign(n_, 0.0);
   history_.assign(n_, 0);
   for (std::size_t i = 0; i < n_; ++i) {   // a physical muscle's chamber has its own shape
     const MuscleSpec& spec = sc.muscles[tm.muscles[i].spec];
@@ -184,6 +185,8 @@ TrialSummary TrialRun::finish(long steps, std::chrono::steady_clock::duration wa
     record.event_holds_at_end.push_back(condition_holds(k) ? 1 : 0);
   }
   record.trigger_times_s = controller_->trigger_times_s();
+  record.tension_trigger_times_s = controller_->tension_trigger_times_s();
+  record.peak_tension_n = peak_tension_n_;
   record.steps = steps;
   record.sim_time_s = steps * sc_.timestep_s;
   record.wall_time_s = std::chrono::duration<double>(wall - observer_wall_).count();

@@ -96,6 +96,7 @@ class TrialRun {
   double first_trigger_s_ = std::numeric_limits<double>::quiet_NaN();   // for the observer
   std::vector<double> muscle_length_m_;   // per muscle, at the last physics step
   std::vector<double> step_force_n_;      // per muscle, this physics step's pull (sensors)
+  std::vector<double> peak_tension_n_;    // per muscle, the largest pull of any physics step
   std::vector<char> history_;             // per muscle: its plant has a history (slip, relaxation)
   std::vector<std::array<double, 3>> hold_pos_;
   std::vector<char> held_;

@@ -173,12 +173,11 @@ bool TrialRun::physics_step(double t) {
   // an instrument that follows the pull between ticks sees this step's (a ringing board):
   // the lines' pulls at t, which MuJoCo has just applied (the board takes its pull as linear
   // from the last step's to this one, board_vibration.h)
-  if (sensors_.observes_forces()) {
-    for (std::size_t i = 0; i < n_; ++i) {
-      step_force_n_[i] = -d_->actuator_force[tm_.muscles[i].actuator];
-    }
-    sensors_.observe(step_force_n_);
+  for (std::size_t i = 0; i < n_; ++i) {
+    step_force_n_[i] = -d_->actuator_force[tm_.muscles[i].actuator];
+    peak_tension_n_[i] = std::max(peak_tension_n_[i], step_force_n_[i]);
   }
+  if (sensors_.observes_forces()) sensors_.observe(step_force_n_);
 
   // pneumatics over [t, t + dt] with this step's muscle length and velocity: the line's
   // while it is taut; a slack muscle rests at its free length, which moves with its

@@ -165,10 +165,12 @@ void read_controller(ConfigReader& in, Scenario* sc) {
   if (!chosen) {
     in.fail("controller.kind", "must be " + controller_kind_choices() + ", got \"" + kind + "\"");
   }
-  // another kind's section would be ignored: refused
+  // another kind's section would be ignored: refused (kinds may share one: the reflex kinds
+  // all read [reflex], each its own keys of it, and reject_unknown names the rest)
   for (const ControllerKind& other : controller_kinds()) {
-    if (other.name == kind) continue;
     for (const std::string& section : other.sections) {
+      const auto& own = chosen->sections;
+      if (std::find(own.begin(), own.end(), section) != own.end()) continue;
       in.check(!in.has(section), section, "is the " + other.name + " controller's section, but "
                                           "controller.kind is \"" + kind + "\"");
     }

@@ -3,6 +3,9 @@
 // together when one changes. A controller kind documents its own keys, in its file.
 #include "sim/io/scenario_key_docs.h"
 
+#include <set>
+#include <string>
+
 #include "base/config_reader.h"   // split_key
 #include "reflex/controller_registry.h"
 
@@ -34,7 +37,7 @@ std::vector<KeyDoc> model_docs() {
   return {
       {"seed", "", "1", "integer >= 0", "the trial's random seed (sensor noise); trial k of --trials uses seed + k"},
       {"metrics", "", "(drop: [\"drop\", \"reflex\", \"length_estimate\"]; else tracking, length_estimate, reflex)",
-       "list of \"drop\", \"reflex\", \"length_estimate\", \"tracking\"", "the metric sets in summary.json"},
+       "list of \"drop\", \"reflex\", \"length_estimate\", \"tracking\", \"tension\"", "the metric sets in summary.json"},
       {"model.file", "", "(required)", "path to an MJCF file", "the arm's MuJoCo model, relative to the scenario file"},
       {"model.joint", "", "(the model's first hinge or slide joint)", "a joint of the model", "the joint logged and measured"},
       {"model.calibration", "", "(none)", "path", "start_angle_deg and <actuator>_line_mm (pamsim calibrate)"},
@@ -194,7 +197,9 @@ std::vector<KeyDoc> sensor_hardware_docs() {
   };
 }
 
-// controller.kind and each kind's keys (reflex/controller_kind.h, in the kind's own file)
+// controller.kind and each kind's keys (reflex/controller_kind.h, in the kind's own file); a
+// key that several kinds read (the reflex kinds share reflex.*) is listed once, as the first
+// kind documents it
 std::vector<KeyDoc> controller_docs() {
   std::string kinds;
   for (const ControllerKind& kind : controller_kinds()) {
@@ -202,9 +207,10 @@ std::vector<KeyDoc> controller_docs() {
   }
   std::vector<KeyDoc> docs = {{"controller.kind", "", std::string("\"") +
                                default_controller_kind() + "\"", kinds, "the controller"}};
+  std::set<std::string> listed;
   for (const ControllerKind& kind : controller_kinds()) {
     for (const ControllerKeyDoc& d : kind.docs) {
-      docs.push_back({d.key, d.unit, d.fallback, d.allowed, d.meaning});
+      if (listed.insert(d.key).second) docs.push_back({d.key, d.unit, d.fallback, d.allowed, d.meaning});
     }
   }
   return docs;

@@ -1,0 +1,64 @@
+// tension_reflex.cc: see tension_reflex.h.
+#include "reflex/tension_reflex.h"
+
+#include <cassert>
+#include <cmath>
+
+#include "base/units.h"
+#include "reflex/checks.h"
+
+namespace pamsim {
+
+void validate(const TensionReflexParams& p, double control_hz) {
+  using namespace checks;
+  require_positive("reflex.ib.f_thr_N", p.f_thr_N);
+  require_non_negative("reflex.ib.df_thr_N_s", p.df_thr_N_s);
+  require_non_negative("reflex.ib.k_MPa_per_N", p.k_MPa_per_N);
+  const double dt = 1.0 / control_hz;
+  if (!(std::isfinite(p.duration_s) && p.duration_s >= dt * (1.0 - 1e-9) &&
+        p.duration_s <= 1e9 * dt)) {
+    fail("reflex.ib.duration_s", "in [one control period (" + format_value(dt) + " s), 1e9 of them]",
+         p.duration_s);
+  }
+  if (p.mode != ReflexMode::kFollow && p.mode != ReflexMode::kLatch) {
+    fail("reflex.ib.mode", "\"follow\" or \"latch\"", static_cast<int>(p.mode));
+  }
+  require_non_negative("reflex.ib.refractory_s", p.refractory_s);
+  if (!(p.refractory_s <= 1e9 * dt)) {
+    fail("reflex.ib.refractory_s", "at most 1e9 control periods", p.refractory_s);
+  }
+  require_non_negative("reflex.ib.arm_after_s", p.arm_after_s);
+  require_cutoff("reflex.ib.rate_lowpass_hz", p.rate_lowpass_hz, control_hz);
+}
+
+TensionReflex::TensionReflex(const TensionReflexParams& params, double control_period_s)
+    : f_thr_n_(params.f_thr_N),
+      df_thr_n_s_(params.df_thr_N_s),
+      k_pa_per_n_(params.k_MPa_per_N * units::kPaPerMPa),
+      mode_(params.mode),
+      period_s_(control_period_s),
+      window_(params.duration_s, params.refractory_s, params.arm_after_s, control_period_s),
+      rate_filter_(params.rate_lowpass_hz, control_period_s) {
+  assert(params.f_thr_N > 0.0 && params.k_MPa_per_N >= 0.0 && params.df_thr_N_s >= 0.0);
+}
+
+double TensionReflex::update(double time_s, double tension_n, bool may_trigger) {
+  // the rate by backward difference, low-passed; a missing reading (NaN) triggers nothing
+  // and leaves the rate as it was
+  const bool reading = std::isfinite(tension_n);
+  if (reading) {
+    const double raw_rate = has_last_ ? (tension_n - last_tension_n_) / period_s_ : 0.0;
+    rate_n_s_ = rate_filter_.step(raw_rate);
+    last_tension_n_ = tension_n;
+    has_last_ = true;
+  }
+  const bool over =
+      reading && (tension_n > f_thr_n_ || (df_thr_n_s_ > 0.0 && rate_n_s_ > df_thr_n_s_));
+  if (!window_.update(time_s, may_trigger && over)) return 0.0;
+  if (window_.triggered()) f_latched_n_ = tension_n;
+  const double f = mode_ == ReflexMode::kLatch ? f_latched_n_
+                 : (tension_n > 0.0 ? tension_n : 0.0);
+  return k_pa_per_n_ * f;
+}
+
+}  // namespace pamsim

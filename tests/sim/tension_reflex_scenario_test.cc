@@ -1,0 +1,91 @@
+// tension_reflex_scenario_test.cc: the tension (Ib) reflex through scenarios (issue 27,
+// item 1): on the paper's drop an Ib reflex sized above its tension never fires and the
+// trial is bit for bit the Ia trial; on the heavier drop Ia + Ib keeps the agonist's peak
+// pull below Ia alone's and keeps the mass, Ib alone unloads it further and drops further;
+// the peak-tension metric bounds every logged pull; the kinds' keys are their own (an Ia
+// key with "tension_reflex", a missing or negative Ib threshold: one line naming the key).
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "base/input_error.h"
+#include "sim/core/trial.h"
+#include "sim/core/trial_model.h"
+#include "sim/io/scenario_file.h"
+
+namespace pamsim {
+namespace {
+
+const std::string kScenarios = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/";
+
+TrialResult run(const std::string& file, const std::vector<std::string>& overrides = {},
+                std::uint64_t seed = 3) {
+  const Scenario sc = load_scenario(kScenarios + file, overrides);
+  const TrialModel model = load_trial_model(sc);
+  return run_trial(model, sc, seed);
+}
+
+const std::vector<std::string> kSilentIb = {
+    "controller.kind=\"stretch_tension_reflex\"", "reflex.ib.f_thr_N=60",
+    "reflex.ib.df_thr_N_s=600", "reflex.ib.k_MPa_per_N=0.004",
+    "metrics=[\"drop\", \"reflex\", \"tension\"]"};
+
+TEST(TensionReflexScenarioTest, OnThePapersDropASilentIbReflexChangesNothing) {
+  const TrialResult ia = run("drop_mass.toml", {"metrics=[\"drop\", \"reflex\", \"tension\"]"});
+  const TrialResult both = run("drop_mass.toml", kSilentIb);
+  ASSERT_EQ(ia.summary.status, "ok");
+  EXPECT_EQ(both.summary.metric("tension_triggers_ago"), 0.0);
+  EXPECT_EQ(ia.trajectory.values, both.trajectory.values);
+  EXPECT_EQ(ia.summary.metric("peak_tension_ago_N"), both.summary.metric("peak_tension_ago_N"));
+}
+
+TEST(TensionReflexScenarioTest, OnTheHeavierDropIbUnloadsTheLineAndTheArmStillKeepsTheMass) {
+  const TrialResult ia = run("drop_mass_heavy.toml");
+  const TrialResult both = run("drop_mass_heavy_ia_ib.toml");
+  const TrialResult ib = run("drop_mass_heavy_ib.toml");
+  for (const TrialResult* r : {&ia, &both, &ib}) {
+    ASSERT_EQ(r->summary.status, "ok");
+    EXPECT_EQ(r->summary.metric("mass_retained"), 1.0);
+  }
+  const auto peak = [](const TrialResult& r) { return r.summary.metric("peak_tension_ago_N"); };
+  const auto drop = [](const TrialResult& r) { return r.summary.metric("peak_drop_deg"); };
+  EXPECT_GT(both.summary.metric("tension_triggers_ago"), 0.0);
+  EXPECT_LT(peak(both), peak(ia) - 10.0) << "Ib takes the Ia reflex's extra pull off the line";
+  EXPECT_LT(peak(ib), peak(both));
+  EXPECT_GT(drop(both), drop(ia)) << "and pays for it in drop";
+  EXPECT_GT(drop(ib), drop(both));
+  // the metric is the largest pull of any physics step: at least every logged sample
+  const Trajectory& log = both.trajectory;
+  const std::size_t column = log.column("force_ago_N");
+  for (std::size_t row = 0; row < log.rows(); ++row) {
+    ASSERT_LE(log.at(row, column), peak(both)) << row;
+  }
+}
+
+TEST(TensionReflexScenarioTest, EachKindReadsItsOwnKeysAndNamesABadOne) {
+  struct Case { std::string file; std::vector<std::string> sets; std::string says; };
+  const std::vector<Case> cases = {
+      {"drop_mass_heavy_ia_ib.toml", {"reflex.ib.f_thr_N=-5"},
+       "reflex.ib.f_thr_N must be > 0, got -5"},
+      {"drop_mass.toml", {"controller.kind=\"stretch_tension_reflex\"", "reflex.ib.k_MPa_per_N=0.004"},
+       "reflex.ib.f_thr_N is required"},
+      {"drop_mass_heavy_ib.toml", {"reflex.v_thr_mm_s=70"}, "reflex.v_thr_mm_s"},
+      {"drop_mass.toml", {"reflex.ib.f_thr_N=60"}, "reflex.ib.f_thr_N"},   // Ia kind: unknown
+      {"drop_mass_heavy_ia_ib.toml", {"reflex.ib.mode=\"hold\""}, "reflex.ib.mode"},
+      {"drop_mass_heavy_ia_ib.toml", {"reflex.pairs=[[\"agonist\", \"agonist\"]]"},
+       "reflex.pairs"}};
+  for (const Case& c : cases) {
+    try {
+      load_scenario(kScenarios + c.file, c.sets);
+      ADD_FAILURE() << c.sets[0] << " accepted";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(c.says), std::string::npos) << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pamsim
