@@ -13,6 +13,7 @@
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
 #include "sim/io/scenario_file.h"
+#include "sim/sweep/sweep.h"
 
 namespace pamsim {
 namespace {
@@ -61,6 +62,14 @@ TEST(TensionReflexScenarioTest, OnTheHeavierDropIbUnloadsTheLineAndTheArmStillKe
   for (std::size_t row = 0; row < log.rows(); ++row) {
     ASSERT_LE(log.at(row, column), peak(both)) << row;
   }
+}
+
+// The shipped sweep of both gains reads: 12 x 12 points of the two gains, 3 seeds each
+TEST(TensionReflexScenarioTest, TheGainSweepIsAGridOfValidScenarios) {
+  const SweepDefinition sweep = load_sweep(kScenarios + "sweep_ia_ib.toml");
+  EXPECT_EQ(sweep.trials(), 12 * 12 * 3);
+  ASSERT_EQ(sweep.axes.size(), 2u);
+  EXPECT_EQ(sweep.axes[1].key, "reflex.ib.k_MPa_per_N");
 }
 
 TEST(TensionReflexScenarioTest, EachKindReadsItsOwnKeysAndNamesABadOne) {
