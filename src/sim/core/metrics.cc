@@ -8,6 +8,7 @@
 #include "base/input_error.h"
 #include "base/no_value.h"
 #include "base/units.h"
+#include "sim/core/sensor_metrics.h"
 
 namespace pamsim {
 namespace {
@@ -238,11 +239,12 @@ bool is_timing_metric(const std::string& name) {
 
 const std::vector<std::string>& metric_set_names() {
   static const std::vector<std::string> names = {"drop", "reflex", "length_estimate", "tracking",
-                                                 "tension"};
+                                                 "tension", "sensors"};
   return names;
 }
 
-std::vector<std::unique_ptr<MetricSet>> make_metric_sets(const Scenario& sc) {
+std::vector<std::unique_ptr<MetricSet>> make_metric_sets(const Scenario& sc,
+                                                         const mjModel* model) {
   std::vector<std::unique_ptr<MetricSet>> sets;
   for (const std::string& name : sc.metrics) {
     if (name == "drop") {
@@ -255,9 +257,11 @@ std::vector<std::unique_ptr<MetricSet>> make_metric_sets(const Scenario& sc) {
       sets.push_back(std::make_unique<TrackingMetrics>());
     } else if (name == "tension") {
       sets.push_back(std::make_unique<TensionMetrics>());
+    } else if (name == "sensors") {
+      sets.push_back(std::make_unique<SensorMetrics>(model));
     } else {
       throw InputError(sc.path + ": metrics names an unknown set \"" + name +
-                       "\" (known: drop, reflex, length_estimate, tracking, tension)");
+                       "\" (known: drop, reflex, length_estimate, tracking, tension, sensors)");
     }
   }
   sets.push_back(std::make_unique<TrialMetrics>());
@@ -266,7 +270,7 @@ std::vector<std::unique_ptr<MetricSet>> make_metric_sets(const Scenario& sc) {
 }
 
 std::vector<std::string> metric_names(const Scenario& sc, const std::vector<std::string>& labels,
-                                      bool hinge) {
+                                      bool hinge, const mjModel* model) {
   // every set writes the same names whatever the data: finish a trial with no rows
   const LogLayout layout = make_log_layout(hinge, {}, labels, false);
   Trajectory log;
@@ -281,7 +285,7 @@ std::vector<std::string> metric_names(const Scenario& sc, const std::vector<std:
   record.event_position.assign(sc.events.size(), kNaN);
   record.event_holds_at_end.assign(sc.events.size(), 0);
   std::vector<Metric> metrics;
-  for (const auto& set : make_metric_sets(sc)) set->finish(record, &metrics);
+  for (const auto& set : make_metric_sets(sc, model)) set->finish(record, &metrics);
   std::vector<std::string> names;
   for (const Metric& m : metrics) names.push_back(m.name);
   return names;

@@ -19,6 +19,8 @@
 //                     length_est_rmse_<m>_pct, length_est_max_error_<m>_pct (in % of the
 //                     true length, Table III's metric); the joint's start, final, min and
 //                     max (angle_*_deg or position_*_mm)
+//   sensors           the extremes of every named MJCF sensor over every physics step, and
+//                     a touch sensor's touchdowns (sensor_metrics.h)
 //   tension           per muscle: peak_tension_<m>_N (the line's largest pull over every
 //                     physics step) and tension_triggers_<m> (its tension (Ib) reflex's
 //                     triggers; 0 without one); first_tension_trigger_time_s
@@ -26,6 +28,8 @@
 //   (always) solver   cvode_steps, cvode_rhs_evals
 // A metric is NaN where it is undefined (an event that did not happen); JSON writes null.
 #pragma once
+
+#include <mujoco/mujoco.h>
 
 #include <cstdint>
 #include <memory>
@@ -86,6 +90,8 @@ class MetricSet {
   virtual bool wants_steps() const { return false; }
   virtual void on_step(double /*time_s*/, double /*joint_position*/,
                        const std::vector<double>& /*event_time_s*/) {}
+  // ... and the trial's MuJoCo data after every physics step (read only).
+  virtual void on_state(const mjData* /*d*/) {}
   // Appends the set's metrics, always the same names in the same order.
   virtual void finish(const FinishedTrial& record, std::vector<Metric>* out) const = 0;
 };
@@ -94,11 +100,15 @@ class MetricSet {
 const std::vector<std::string>& metric_set_names();
 
 // The sets of a scenario: its `metrics` list, then trial and solver. Throws InputError
-// "<scenario>: metrics ..." for an unknown name or a set whose events are missing.
-std::vector<std::unique_ptr<MetricSet>> make_metric_sets(const Scenario& scenario);
+// "<scenario>: metrics ..." for an unknown name or a set whose events are missing. The
+// "sensors" set reads `model`'s sensors (none for a null model: a scenario checked alone).
+std::vector<std::unique_ptr<MetricSet>> make_metric_sets(const Scenario& scenario,
+                                                         const mjModel* model = nullptr);
 
-// The metric names a scenario's summaries hold, in order (a sweep database's columns).
+// The metric names a scenario's summaries hold on its trial model, in order (a sweep
+// database's columns).
 std::vector<std::string> metric_names(const Scenario& scenario,
-                                      const std::vector<std::string>& labels, bool hinge);
+                                      const std::vector<std::string>& labels, bool hinge,
+                                      const mjModel* model);
 
 }  // namespace pamsim

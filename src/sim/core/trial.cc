@@ -114,7 +114,7 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
       pneumatics_(sc.pneumatics, sc.valve_model, braids_of(tm), start_p_pa_, 0.0),
       sensors_(sc.sensing, sensor_specs(tm, sc), seed),
       controller_(make_controller(tm, sc)),
-      metrics_(make_metric_sets(sc)),
+      metrics_(make_metric_sets(sc, m_)),
       layout_(trial_log_layout(tm, sc)) {
   if (m_->opt.timestep != sc.timestep_s) {
     throw std::logic_error("run_trial: the model's timestep differs from sim.timestep_s "

@@ -95,7 +95,10 @@ bool TrialRun::after_step() {
     if (fired_[k] || (after >= 0 && !fired_[after])) continue;
     if (condition_holds(k)) fire(k, d_->time);
   }
-  for (MetricSet* set : step_metrics_) set->on_step(d_->time, joint_position(), event_time_s_);
+  for (MetricSet* set : step_metrics_) {
+    set->on_step(d_->time, joint_position(), event_time_s_);
+    set->on_state(d_);
+  }
   if (d_->time >= next_observation_s_) show_observer();
   return end_message_.empty();
 }

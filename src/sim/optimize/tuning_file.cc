@@ -23,7 +23,7 @@ std::vector<std::string> base_metric_names(const Scenario& sc) {
   const TrialModel model = load_trial_model(sc);
   std::vector<std::string> labels;
   for (const BoundMuscle& m : model.muscles) labels.push_back(m.label);
-  return metric_names(sc, labels, model.joint.hinge);
+  return metric_names(sc, labels, model.joint.hinge, model.model.get());
 }
 
 void read_base(ConfigReader& in, TuneDefinition* def) {

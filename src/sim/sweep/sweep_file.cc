@@ -284,7 +284,7 @@ void check_points(SweepDefinition* def) {
     }
     std::vector<std::string> labels;
     for (const BoundMuscle& m : model.muscles) labels.push_back(m.label);
-    return metric_names(sc, labels, model.joint.hinge);
+    return metric_names(sc, labels, model.joint.hinge, model.model.get());
   };
   try {
     bound = load_scenario_text(def->base_text, def->base_path, def->fixed);
