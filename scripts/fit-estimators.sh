@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# fit-estimators.sh: the lab's pipeline for the arm's two muscles (seeds/000 Sec. II-A):
+# fit-estimators.sh: the lab's pipeline for the arm's two muscles and the leg's eight
+# (seeds/000 Sec. II-A):
 # a static tensile test on each physical plant (models/pams/plant_<m>.toml), then the
 # Eq. (2)-(3) least-squares fit, written as the estimator's parameter file
 # models/pams/fitted_<m>.toml (strain gauge q and geometry copied from Table IV's file).
-# The drop-mass scenarios invert these fits. Rerun after changing a plant file;
+# The drop-mass scenarios invert these fits; the leg's (models/pams/leg/plant_<m>.toml ->
+# models/pams/leg/fitted_<m>.toml) carry the arm agonist's gauge (Table IV's q) and their
+# plant's own geometry. Rerun after changing a plant file;
 # tests/sim/cli_plant_test.cc checks that the committed files are what this script writes.
 #
 # Protocol: the arm's pressure range, 0.2-0.7 MPa in 0.1 MPa steps (the reaching task's
@@ -25,4 +28,22 @@ for m in agonist antagonist; do
     --noise-length-mm 0.01 --seed 1 -o "$csv_dir/plant_$m.csv"
   "$pamsim" fit --model eq3 "$csv_dir/plant_$m.csv" \
     --sensors-from "models/pams/table4_$m.toml" -o "$out/fitted_$m.toml"
+done
+# the leg's muscles (issue 27): the same protocol on each plant; the strain gauge is the arm
+# agonist's (Table IV q), the geometry the plant's own length and sleeve
+mkdir -p "$out/leg"
+sensors="$(mktemp)"
+trap 'rm -f "$sensors"' EXIT
+for m in IL GM RF VAS BFS GAS SOL TA; do
+  length=$(sed -n 's/^length_mm = \([0-9.]*\).*/\1/p' "models/pams/leg/plant_$m.toml")
+  diameter=$(sed -n 's/^diameter_mm = \([0-9.]*\).*/\1/p' "models/pams/leg/plant_$m.toml")
+  sed -e "s/^length_mm = .*/length_mm = $length/" -e "s/^sleeve_diameter_mm = .*/sleeve_diameter_mm = $diameter/" \
+    -e "s/^bladder_diameter_mm = .*/bladder_diameter_mm = $diameter/" models/pams/table4_agonist.toml > "$sensors"
+  "$pamsim" tensile --plant "models/pams/leg/plant_$m.toml" --pressures-MPa 0.2,0.3,0.4,0.5,0.6,0.7 \
+    --max-deformation-mm 15 --noise-pressure-MPa 0.001 --noise-force-N 0.05 \
+    --noise-length-mm 0.01 --seed 1 -o "$csv_dir/leg_$m.csv" --force
+  "$pamsim" fit --model eq3 "$csv_dir/leg_$m.csv" --sensors-from "$sensors" \
+    -o "$out/leg/fitted_$m.toml" --force
+  sed -i "s|--sensors-from $sensors|--sensors-from models/pams/table4_agonist.toml (q, with the plant geometry)|" \
+    "$out/leg/fitted_$m.toml"
 done

@@ -39,7 +39,8 @@ double estimate_rmse_pct(const fs::path& out) {
   return nlohmann::json::parse(in)["length_est_rmse_pam_pct"].get<double>();
 }
 
-// The drop scenarios' estimators (models/pams/fitted_*.toml) are what the lab's pipeline
+// The drop scenarios' and the leg's estimators (models/pams/fitted_*.toml,
+// models/pams/leg/fitted_*.toml) are what the lab's pipeline
 // (scripts/fit-estimators.sh) gives for the shipped plants today: a plant file changed
 // without refitting fails here. Every line but the provenance, which names the CSV.
 TEST(CliPlantTest, CommittedFittedEstimatorsAreWhatThePipelineWrites) {
@@ -47,11 +48,18 @@ TEST(CliPlantTest, CommittedFittedEstimatorsAreWhatThePipelineWrites) {
   const std::string cmd = std::string("bash ") + PAMSIM_SOURCE_DIR + "/scripts/fit-estimators.sh " +
                           PAMSIM_BINARY + " " + out.string() + " > /dev/null 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  for (const char* m : {"agonist", "antagonist"}) {
+  for (const char* m : {"agonist", "antagonist", "leg/IL", "leg/GM", "leg/RF", "leg/VAS",
+                        "leg/BFS", "leg/GAS", "leg/SOL", "leg/TA"}) {
     SCOPED_TRACE(m);
-    std::istringstream fresh(pamsim_test::read_file(out / ("fitted_" + std::string(m) + ".toml")));
+    // "leg/IL" -> leg/fitted_IL.toml
+    std::string name = m;
+    const std::size_t slash = name.find('/');
+    const std::string file = slash == std::string::npos
+                                 ? "fitted_" + name + ".toml"
+                                 : name.substr(0, slash + 1) + "fitted_" + name.substr(slash + 1) + ".toml";
+    std::istringstream fresh(pamsim_test::read_file(out / file));
     std::istringstream shipped(pamsim_test::read_file(std::string(PAMSIM_SOURCE_DIR) +
-                                                      "/models/pams/fitted_" + m + ".toml"));
+                                                      "/models/pams/" + file));
     std::string a, b;
     int lines = 0;
     while (std::getline(fresh, a)) {

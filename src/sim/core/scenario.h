@@ -78,6 +78,7 @@ struct JointSpec {
   bool rotational = true;
   double damping = std::numeric_limits<double>::quiet_NaN();
   double frictionloss = std::numeric_limits<double>::quiet_NaN();
+  double start = std::numeric_limits<double>::quiet_NaN();   // its position at t = 0 [rad, m]
 };
 
 // When an event fires: at a time, or on the first physics step a condition holds; either

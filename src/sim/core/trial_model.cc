@@ -194,8 +194,10 @@ void bind_pairs(const Scenario& sc, TrialModel* tm) {
   }
 }
 
-// joints.<joint>.*: damping and friction loss over the model's, in the joint's own units
-void set_joints(const Scenario& sc, mjModel* m) {
+// joints.<joint>.*: damping and friction loss over the model's, in the joint's own units;
+// its start position (MuJoCo's qpos0 is the bodies' reference, so not that)
+void set_joints(const Scenario& sc, TrialModel* tm) {
+  mjModel* m = tm->model.get();
   for (const JointSpec& j : sc.joints) {
     const int id = require(sc, m, mjOBJ_JOINT, j.joint, j.key, "a joint");
     const int type = m->jnt_type[id];
@@ -210,6 +212,7 @@ void set_joints(const Scenario& sc, mjModel* m) {
     const int dof = m->jnt_dofadr[id];
     if (!std::isnan(j.damping)) m->dof_damping[dof] = j.damping;
     if (!std::isnan(j.frictionloss)) m->dof_frictionloss[dof] = j.frictionloss;
+    if (!std::isnan(j.start)) tm->start_qpos.push_back({m->jnt_qposadr[id], j.start});
   }
 }
 
@@ -217,6 +220,7 @@ void set_joints(const Scenario& sc, mjModel* m) {
 MjDataPtr start_state(const Scenario& sc, const TrialModel& tm) {
   const mjModel* m = tm.model.get();
   MjDataPtr data = make_data(m);
+  for (const auto& [adr, value] : tm.start_qpos) data->qpos[adr] = value;
   if (sc.has_start_position) data->qpos[tm.joint.qpos] = sc.start_position;
   for (std::size_t k = 0; k < tm.muscles.size(); ++k) {
     data->userdata[k] = sc.muscles[tm.muscles[k].spec].command.at(0.0);
@@ -348,7 +352,7 @@ TrialModel load_trial_model(const Scenario& sc) {
     const int body = require(sc, m, mjOBJ_BODY, b.body, b.key, "a body");
     if (b.inertia_kg_m2[0] > 0) std::copy_n(b.inertia_kg_m2.data(), 3, m->body_inertia + 3 * body);
   }
-  set_joints(sc, m);
+  set_joints(sc, &tm);
   bind_holds(sc, &tm);
   bind_events(sc, &tm);
   bind_pairs(sc, &tm);
@@ -379,6 +383,7 @@ bool same_trial_model(const Scenario& a, const Scenario& b) {
       os << j.joint << ';';
       append_bits(os, j.damping);
       append_bits(os, j.frictionloss);
+      append_bits(os, j.start);
     }
     for (const HoldSpec& h : sc.holds) os << h.body << ';' << h.above_site << ';';
     for (const EventSpec& e : sc.events) {

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pam_actuator/chou_hannaford.h"
@@ -59,6 +60,8 @@ struct TrialModel {
   std::vector<BoundMuscle> muscles;   // model actuator order
   BoundJoint joint;
   std::vector<BoundHold> holds;       // Scenario::holds order
+  // joints.<joint>.start_*: (qpos address, position [rad or m]) set at the start
+  std::vector<std::pair<int, double>> start_qpos;
   std::vector<BoundEvent> events;     // Scenario::events order
   std::vector<ReflexPair> pairs;      // by muscle index (model order)
   bool events_change_model = false;   // an add_mass event: each trial copies the model

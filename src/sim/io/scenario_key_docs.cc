@@ -97,6 +97,8 @@ std::vector<KeyDoc> event_docs() {
       {"bodies.<body>.inertia_kg_m2", "kg m^2", "(the model's)", "[I1, I2, I3], each in (0, 1000], each <= the sum of the others", "a body's principal moments of inertia about its centre of mass, in place of the model's"},
       {"joints.<joint>.damping_N_m_s_per_rad", "N m s/rad", "(the model's)", "[0, 1e4]; a hinge", "the joint's viscous damping (MuJoCo damping), e.g. a bearing's"},
       {"joints.<joint>.frictionloss_N_m", "N m", "(the model's)", "[0, 1e4]; a hinge", "the joint's dry friction torque (MuJoCo frictionloss)"},
+      {"joints.<joint>.start_deg", "deg", "(the model's)", "[-360, 360]; a hinge", "the joint's angle at the start"},
+      {"joints.<joint>.start_mm", "mm", "(the model's)", "[-1e4, 1e4]; a slide", "the joint's position at the start"},
       {"joints.<joint>.damping_N_s_per_m", "N s/m", "(the model's)", "[0, 1e6]; a slide", "the joint's viscous damping (MuJoCo damping)"},
       {"joints.<joint>.frictionloss_N", "N", "(the model's)", "[0, 1e6]; a slide", "the joint's dry friction force (MuJoCo frictionloss)"},
       {"holds.<body>.above_site", "", "(none)", "a site of the model", "hold the body above this site until released"},

@@ -1,0 +1,98 @@
+// leg_test.cc: the PAM leg (models/leg_pam.xml, issue 27) through its scenarios, with no
+// leg-specific code: each line starts its muscle 2 mm past the plant's free length at 0.4 MPa
+// (scripts/leg_calibration.py), the leg falls 100 mm, lands (the floor's push peaks above
+// its weight), bounces and stands crouched; dropped from higher it collapses further; the
+// start keys place it; and its scenarios refuse bad input by key.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "base/input_error.h"
+#include "base/units.h"
+#include "pam_actuator/avbdl.h"
+#include "sim/core/trial.h"
+#include "sim/core/trial_model.h"
+#include "sim/io/scenario_file.h"
+
+namespace pamsim {
+namespace {
+
+const std::string kScenarios = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/";
+constexpr double kLegMass_kg = 1.016 + 0.30 + 0.14 + 0.044;   // trunk, thigh, shank, foot
+
+TrialResult land(const std::vector<std::string>& overrides = {}) {
+  const Scenario sc = load_scenario(kScenarios + "landing.toml", overrides);
+  const TrialModel model = load_trial_model(sc);
+  return run_trial(model, sc, sc.seed);
+}
+
+TEST(LegTest, EachLineStartsItsMuscleTwoMillimetresPastItsFreeLength) {
+  const Scenario sc = load_scenario(kScenarios + "landing.toml", {"sim.duration_s=0.01"});
+  const TrialModel model = load_trial_model(sc);
+  const TrialResult r = run_trial(model, sc, sc.seed);
+  ASSERT_EQ(sc.muscles.size(), 8u);
+  for (const MuscleSpec& m : sc.muscles) {
+    SCOPED_TRACE(m.key);
+    const double start_mm = r.trajectory.at(0, r.trajectory.column("length_" + m.label + "_mm"));
+    const double free_mm = units::m_to_mm(avbdl_free_length(m.plant, 0.4e6));
+    // the script reads the free length off the tensile CSV (its encoder's 0.01 mm noise)
+    EXPECT_NEAR(start_mm, free_mm + 2.0, 0.05);
+  }
+}
+
+TEST(LegTest, TheLegLandsBouncesAndStandsCrouched) {
+  const TrialResult r = land();
+  ASSERT_EQ(r.summary.status, "ok") << r.summary.message;
+  const double weight_n = kLegMass_kg * 9.81;
+  EXPECT_GT(r.summary.metric("grf_max_N"), 3.0 * weight_n) << "an impact, not a touch";
+  EXPECT_GE(r.summary.metric("grf_touchdowns"), 1.0);
+  EXPECT_NEAR(r.summary.metric("trunk_z_max_mm"), 475.0 + 93.3, 0.1) << "it starts 100 mm up";
+  // it stands at the end, crouched near its start, not collapsed onto its knee's limit
+  EXPECT_NEAR(r.summary.metric("angle_final_deg"), 20.0, 5.0);
+  EXPECT_LT(r.summary.metric("knee_angle_max_deg"), 60.0);
+  EXPECT_GT(r.summary.metric("trunk_z_min_mm"), 400.0);
+}
+
+TEST(LegTest, AHigherDropCollapsesTheKneeFurtherAndPushesHarder) {
+  const TrialResult low = land({"joints.trunk_z.start_mm=43.3"});
+  const TrialResult high = land({"joints.trunk_z.start_mm=193.3"});
+  EXPECT_GT(high.summary.metric("knee_angle_max_deg"), low.summary.metric("knee_angle_max_deg"));
+  EXPECT_GT(high.summary.metric("grf_max_N"), low.summary.metric("grf_max_N"));
+  EXPECT_GT(high.summary.metric("peak_tension_VAS_N"), low.summary.metric("peak_tension_VAS_N"));
+}
+
+// The reflex scenario with its reflexes off is the reflex-free landing, bit for bit
+TEST(LegTest, TheReflexLandingWithItsReflexesOffIsThePassiveOne) {
+  const Scenario sc = load_scenario(kScenarios + "landing_reflex.toml", {"reflex.enabled=false"});
+  const TrialModel model = load_trial_model(sc);
+  const TrialResult off = run_trial(model, sc, sc.seed);
+  const TrialResult none = land();
+  EXPECT_EQ(off.summary.metric("knee_angle_max_deg"), none.summary.metric("knee_angle_max_deg"));
+  EXPECT_EQ(off.summary.metric("grf_max_N"), none.summary.metric("grf_max_N"));
+}
+
+TEST(LegTest, BadLegInputIsOneLineNamingTheKey) {
+  struct Case { std::string file, set, says; };
+  for (const Case& c : std::vector<Case>{
+           {"landing.toml", "joints.knee.start_deg=720", "joints.knee.start_deg"},
+           {"landing.toml", "joints.trunk_z.start_deg=10", "joints.trunk_z"},   // a slide
+           {"landing_reflex.toml", "reflex.ib.f_thr_N=-1", "reflex.ib.f_thr_N"},
+           {"landing_reflex.toml", "reflex.pairs=[[\"VAS\", \"BFS\"], [\"VAS\", \"TA\"]]",
+            "reflex.pairs"},
+           {"landing.toml", "muscles.VAS.line_mm=0", "muscles.VAS.line_mm"}}) {
+    try {
+      const Scenario sc = load_scenario(kScenarios + c.file, {c.set});
+      load_trial_model(sc);
+      ADD_FAILURE() << c.set << " accepted";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(c.says), std::string::npos) << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pamsim
