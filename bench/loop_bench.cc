@@ -9,6 +9,9 @@
 //   BM_TwentyTrials         run_trials(20) wall time on 1 and 2 threads (CPU column: all
 //                           threads of the process, so CPU / (threads * Time) is the
 //                           share of the cores the workers got)
+// and the same for the PAM leg's 1.5 s landing (issue 27; eight muscles, 1500 steps):
+//   BM_LegBareMjStep, BM_TrialLoop/landing (no reflex), BM_TrialLoop/landing_reflex,
+//   BM_TwentyLandings
 // Counters: s_per_step (seconds per physics step, SI-prefixed: "4.1u" = 4.1 us) and
 // items_per_second (physics steps per second); for the trial loop also CVODE steps and
 // right-hand-side evaluations per physics step; trials_per_s for the batch.
@@ -167,18 +170,57 @@ BENCHMARK_CAPTURE(BM_TrialLoop, reflex_ideal_instruments, "drop_mass.toml",
                   Hardware::kIdealInstruments)
     ->Unit(benchmark::kMillisecond);
 
-void BM_TwentyTrials(benchmark::State& state) {
-  const Scenario sc = scenario_named("drop_mass.toml");
-  const TrialModel arm = load_trial_model(sc);
+// kBatchTrials trials of a scenario on state.range(0) threads
+void run_batch(benchmark::State& state, const char* scenario_file) {
+  const Scenario sc = scenario_named(scenario_file);
+  const TrialModel model = load_trial_model(sc);
   const int threads = static_cast<int>(state.range(0));
   for (auto _ : state) {
-    const auto results = run_trials(arm, sc, kBatchTrials, threads);
+    const auto results = run_trials(model, sc, kBatchTrials, threads);
     benchmark::DoNotOptimize(results.data());
   }
   state.counters["trials_per_s"] =
       benchmark::Counter(kBatchTrials, benchmark::Counter::kIsIterationInvariantRate);
 }
+
+void BM_TwentyTrials(benchmark::State& state) { run_batch(state, "drop_mass.toml"); }
 BENCHMARK(BM_TwentyTrials)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+
+// The leg's landing model with mj_step alone: its start posture and height, every pressure
+// fixed at 0.4 MPa (the PAM force callback included)
+void BM_LegBareMjStep(benchmark::State& state) {
+  const Scenario sc = scenario_named("landing.toml");
+  const TrialModel leg = load_trial_model(sc);
+  const mjModel* m = leg.model.get();
+  MjDataPtr data = make_data(m);
+  mjData* d = data.get();
+  const long n_steps = std::lround(sc.duration_s / sc.timestep_s);
+  for (auto _ : state) {
+    mj_resetData(m, d);
+    for (const auto& [adr, value] : leg.start_qpos) d->qpos[adr] = value;
+    for (std::size_t i = 0; i < leg.muscles.size(); ++i) d->userdata[i] = kFixedPressurePa;
+    for (long step = 0; step < n_steps; ++step) mj_step(m, d);
+    benchmark::DoNotOptimize(d->qpos[0]);
+  }
+  if (!std::isfinite(d->qpos[0]) || d->warning[mjWARN_BADQACC].number > 0) {
+    state.SkipWithError("bare mj_step loop on the leg diverged");
+  }
+  report_steps(state, n_steps);
+}
+BENCHMARK(BM_LegBareMjStep)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TrialLoop, landing, "landing.toml", Hardware::kShipped)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TrialLoop, landing_reflex, "landing_reflex.toml", Hardware::kShipped)
+    ->Unit(benchmark::kMillisecond);
+
+void BM_TwentyLandings(benchmark::State& state) { run_batch(state, "landing_reflex.toml"); }
+BENCHMARK(BM_TwentyLandings)
     ->ArgName("threads")
     ->Arg(1)
     ->Arg(2)
