@@ -63,13 +63,26 @@ bool bodies_touch(const mjModel* m, const mjData* d, int a, int b) {
   return false;
 }
 
+// A scenario's trial model with data of its own, for mj_step alone over its duration
+struct BareLoop {
+  explicit BareLoop(const char* file)
+      : sc(scenario_named(file)), tm(load_trial_model(sc)), m(tm.model.get()),
+        data(make_data(m)), d(data.get()), n_steps(std::lround(sc.duration_s / sc.timestep_s)) {}
+  Scenario sc;
+  TrialModel tm;
+  const mjModel* m;
+  MjDataPtr data;
+  mjData* d;
+  long n_steps;
+};
+
 void BM_BareMjStep(benchmark::State& state) {
-  const Scenario sc = scenario_named("drop_mass.toml");
-  const TrialModel arm = load_trial_model(sc);
-  const mjModel* m = arm.model.get();
-  MjDataPtr data = make_data(m);
-  mjData* d = data.get();
-  const long n_steps = std::lround(sc.duration_s / sc.timestep_s);
+  BareLoop loop("drop_mass.toml");
+  const Scenario& sc = loop.sc;
+  const TrialModel& arm = loop.tm;
+  const mjModel* m = loop.m;
+  mjData* d = loop.d;
+  const long n_steps = loop.n_steps;
   const BoundHold& ball = arm.holds.at(0);
   const double drop_time_s = sc.event("release")->when.at_s;
   const int basket = mj_name2id(m, mjOBJ_BODY, "basket");
@@ -195,12 +208,11 @@ BENCHMARK(BM_TwentyTrials)
 // The leg's landing model with mj_step alone: its start posture and height, every pressure
 // fixed at 0.4 MPa (the PAM force callback included)
 void BM_LegBareMjStep(benchmark::State& state) {
-  const Scenario sc = scenario_named("landing.toml");
-  const TrialModel leg = load_trial_model(sc);
-  const mjModel* m = leg.model.get();
-  MjDataPtr data = make_data(m);
-  mjData* d = data.get();
-  const long n_steps = std::lround(sc.duration_s / sc.timestep_s);
+  BareLoop loop("landing.toml");
+  const TrialModel& leg = loop.tm;
+  const mjModel* m = loop.m;
+  mjData* d = loop.d;
+  const long n_steps = loop.n_steps;
   for (auto _ : state) {
     mj_resetData(m, d);
     for (const auto& [adr, value] : leg.start_qpos) d->qpos[adr] = value;

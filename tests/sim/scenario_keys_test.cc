@@ -10,38 +10,15 @@
 #include "base/input_error.h"
 #include "sim/core/trial_model.h"
 #include "sim/io/scenario_file.h"
+#include "scenario_errors.h"
 
 namespace pamsim {
 namespace {
 
-const std::string kScenarios = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/";
-
-// The message of the InputError that reading `scenario` with `overrides` and binding its
-// model throws, or "" if none.
-std::string error_of(const std::string& scenario, const std::vector<std::string>& overrides) {
-  try {
-    const Scenario sc = load_scenario(kScenarios + scenario, overrides);
-    load_trial_model(sc);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-struct BadValue {
-  std::vector<std::string> assignments;
-  std::string key;   // the message names it
-};
-
-void expect_each_named(const std::string& scenario, const std::vector<BadValue>& cases) {
-  for (const BadValue& c : cases) {
-    const std::string what = scenario + " --set " + c.assignments.front();
-    const std::string message = error_of(scenario, c.assignments);
-    EXPECT_NE(message.find(c.key), std::string::npos) << what << " -> \"" << message << "\"";
-    EXPECT_NE(message.find(scenario), std::string::npos) << what << " -> " << message;
-    EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
-  }
-}
+using pamsim_test::BadValue;
+using pamsim_test::error_of;
+using pamsim_test::expect_each_named;
+using pamsim_test::kScenarios;
 
 TEST(ScenarioKeysTest, ShippedExperimentsLoad) {
   for (const char* name : {"pulley_sine_5kg.toml", "pulley_sine_10kg.toml", "reaching.toml"}) {
