@@ -63,7 +63,8 @@ struct StretchReflexParams {
 // round(refractory_s / dt) ticks refractory; no trigger while t < arm_after_s.
 class ReflexWindow {
  public:
-  // durations >= 0 and control_period_s > 0 (asserted).
+  // refractory_s, arm_after_s >= 0 and control_period_s > 0 (asserted); a window lasts at
+  // least one tick whatever duration_s.
   ReflexWindow(double duration_s, double refractory_s, double arm_after_s,
                double control_period_s);
 

@@ -13,7 +13,8 @@
 //      SensingConfig::velocity_lowpass_hz, which this kind's reader sets);
 //   2. run the muscle's stretch reflex (stretch_reflex.h) if reflex.enabled and the
 //      controller is on, behind two gates (below); and its tension reflex on the measured
-//      tension, behind none;
+//      tension, with no gate of its own (its windows are not the log's reflex_<m> flag,
+//      which is the stretch reflex's; the metric set "tension" counts its triggers);
 // then command each pair, clamped to [0, p_max]: by Eq. (12)-(13) with the Ia reflexes
 // alone, and with the Ib reflexes by the rule of reflex_commands (below).
 #pragma once

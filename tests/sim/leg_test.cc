@@ -120,6 +120,7 @@ TEST(LegTest, BadLegInputIsOneLineNamingTheKey) {
   pamsim_test::expect_each_named("landing.toml", {
       {{"joints.knee.start_deg=720"}, "joints.knee.start_deg"},
       {{"joints.trunk_z.start_deg=10"}, "joints.trunk_z"},   // a slide
+      {{"joints.knee.start_deg=-10"}, "joints.knee.start_deg must be within the joint's range"},
       {{"muscles.VAS.line_mm=0"}, "muscles.VAS.line_mm"}});
   pamsim_test::expect_each_named("landing_reflex.toml", {
       {{"reflex.ib.f_thr_N=-1"}, "reflex.ib.f_thr_N"},

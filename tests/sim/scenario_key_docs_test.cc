@@ -52,7 +52,6 @@ std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
         "valve.tube_sonic_conductance_dm3_per_s_bar=1.3", "valve.tube_critical_pressure_ratio=0.4",
         "controller.p_max_MPa=0.6", "reflex.pairs=[[\"agonist\", \"antagonist\"]]",
         "joints.shoulder.damping_N_m_s_per_rad=0", "joints.shoulder.frictionloss_N_m=0.001",
-        "joints.shoulder.start_deg=-30",
         "muscles.agonist.line_diameter_mm=0.5", "muscles.agonist.line_modulus_MPa=2500",
         "pneumatics.chamber.tube_dead_volume_cm3=12",
         // an event of each condition, and each action's keys
@@ -79,7 +78,8 @@ std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
         "events.low.when.joint=\"weight_slide\"", "events.low.when.below_mm=-500",
         "events.high.when.joint=\"weight_slide\"", "events.high.when.above_mm=500",
         "events.high.action=\"end\"", "joints.weight_slide.damping_N_s_per_m=60",
-        "joints.weight_slide.frictionloss_N=0.5", "joints.weight_slide.start_mm=-5"}},
+        "joints.weight_slide.frictionloss_N=0.5"}},
+      {s + "landing.toml", {}},   // joints.<joint>.start_deg and start_mm
   };
 }
 

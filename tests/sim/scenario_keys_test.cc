@@ -106,6 +106,7 @@ TEST(ScenarioKeysTest, BodyHoldAndEventKeysNameTheirKey) {
       {{"joints.shoulder.stiffness=1"}, "joints.shoulder gives none"},
       {{"joints.shoulder.start_deg=400"}, "joints.shoulder.start_deg must be in [-360, 360] deg"},
       {{"joints.shoulder.start_deg=nan"}, "joints.shoulder.start_deg"},
+      {{"joints.shoulder.start_deg=-30"}, "joints.shoulder.start_deg would move the start"},
       {{"joints.shoulder.start_mm=10"}, "joints.shoulder gives a slide's keys"},
       {{"joints.elbow.damping_N_m_s_per_rad=1"}, "joints.elbow names a joint 'elbow'"},
       {{"joints.ball.damping_N_m_s_per_rad=1"}, "joints.ball names joint 'ball'"},   // free

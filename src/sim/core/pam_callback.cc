@@ -71,11 +71,13 @@ struct PamLaw {
     return relaxation_step_constants;
   }
   // the bladder's relaxation block advanced to `length` [m] over one step, into `h`; the
-  // overstresses' sum [N] (0 before the first commit)
-  double overstress(const mjModel* m, const mjData* d, int id, double length, double* h) const {
+  // overstresses' sum [N] (0 before the first commit); the relaxed force there into *relaxed
+  double overstress(const mjModel* m, const mjData* d, int id, double length, double* h,
+                    double* relaxed_out = nullptr) const {
     const mjtNum* block = d->userdata + relaxation_block(m, id);
     const double relaxed =
         avbdl_dbladder_energy_dlength(plant, shape, std::min(length, max_length_m));
+    if (relaxed_out) *relaxed_out = relaxed;
     if (!(block[0] > 0.0)) {
       std::fill(h, h + plant.relaxation.count, 0.0);
       return 0.0;
@@ -109,7 +111,7 @@ const PamLaw& pam_law(const mjModel* m, int id) {
     std::vector<mjtNum> slots;
     std::unique_ptr<PamLaw> law;
   };
-  thread_local std::array<Entry, 8> cache;
+  thread_local std::array<Entry, 16> cache;   // two legs of eight PAMs
   thread_local std::size_t next = 0;
   const mjtNum* u = user_slots(m, id);
   const std::size_t n = static_cast<std::size_t>(m->nuser_actuator);
@@ -195,11 +197,10 @@ void pam_commit_history(const mjModel* m, mjData* d, int id, double muscle_lengt
   }
   if (plant.relaxation.count > 0) {
     mjtNum* block = d->userdata + relaxation_block(m, id);
-    double h[kMaxRelaxationTerms];
-    law.overstress(m, d, id, muscle_length_m, h);
+    double h[kMaxRelaxationTerms], relaxed = 0.0;
+    law.overstress(m, d, id, muscle_length_m, h, &relaxed);
     std::copy(h, h + plant.relaxation.count, block + 2);
-    block[1] = avbdl_dbladder_energy_dlength(plant, law.shape,
-                                             std::min(muscle_length_m, law.max_length_m));
+    block[1] = relaxed;
     block[0] = muscle_length_m;
   }
 }

@@ -1,6 +1,8 @@
 // sensor_metrics.cc: see sensor_metrics.h.
 #include "sim/core/sensor_metrics.h"
 
+#include <cmath>
+
 #include "base/no_value.h"
 #include "base/units.h"
 
@@ -63,11 +65,11 @@ SensorMetrics::SensorMetrics(const mjModel* m) {
 void SensorMetrics::on_state(const mjData* d) {
   for (Channel& c : channels_) {
     const double v = c.scale * d->sensordata[c.address];
-    if (!c.seen) {
+    if (!c.seen || std::isnan(v)) {
       c.min = c.max = v;
-    } else {
-      if (!(v >= c.min)) c.min = v;   // NaN sticks: a diverged trial's extremes are NaN
-      if (!(v <= c.max)) c.max = v;
+    } else if (!std::isnan(c.min)) {   // NaN sticks: a diverged trial's extremes are NaN
+      if (v < c.min) c.min = v;
+      if (v > c.max) c.max = v;
     }
     const bool touching = v > 0.0;
     if (c.touch && c.seen && touching && !c.touching) ++c.touchdowns;

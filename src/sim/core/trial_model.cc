@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <cstring>
 
+#include "base/format.h"
 #include "base/input_error.h"
 #include "base/units.h"
+#include "sim/core/metrics.h"
 #include "sim/core/muscle_law.h"
 #include "sim/core/pam_callback.h"
 
@@ -211,7 +213,31 @@ void set_joints(const Scenario& sc, TrialModel* tm) {
     const int dof = m->jnt_dofadr[id];
     if (!std::isnan(j.damping)) m->dof_damping[dof] = j.damping;
     if (!std::isnan(j.frictionloss)) m->dof_frictionloss[dof] = j.frictionloss;
-    if (!std::isnan(j.start)) tm->start_qpos.push_back({m->jnt_qposadr[id], j.start});
+    if (std::isnan(j.start)) continue;
+    const std::string key = j.key + (j.rotational ? ".start_deg" : ".start_mm");
+    if (sc.has_start_position && j.joint == sc.joint) {
+      fail(sc, key, "would move the start that model.calibration sets (its start_angle_deg)");
+    }
+    const double* range = m->jnt_range + 2 * id;
+    if (m->jnt_limited[id] && !(j.start >= range[0] && j.start <= range[1])) {
+      const double unit = j.rotational ? units::rad_to_deg(1.0) : units::m_to_mm(1.0);
+      fail(sc, key, "must be within the joint's range [" + format_value(unit * range[0]) + ", " +
+                        format_value(unit * range[1]) + "], got " + format_value(unit * j.start));
+    }
+    tm->start_qpos.push_back({m->jnt_qposadr[id], j.start});
+  }
+}
+
+// every metric of the scenario's sets named once: a model's sensor named like another set's
+// metric ("angle" gives angle_min_deg, as tracking does) would make two columns of one name
+void check_metric_names(const Scenario& sc, const TrialModel& tm) {
+  std::vector<std::string> labels;
+  for (const BoundMuscle& b : tm.muscles) labels.push_back(b.label);
+  std::vector<std::string> names = metric_names(sc, labels, tm.joint.hinge, tm.model.get());
+  std::sort(names.begin(), names.end());
+  const auto twice = std::adjacent_find(names.begin(), names.end());
+  if (twice != names.end()) {
+    fail(sc, "metrics", "name two metrics " + *twice + " (rename the model's sensor that gives it)");
   }
 }
 
@@ -350,6 +376,7 @@ TrialModel load_trial_model(const Scenario& sc) {
   bind_events(sc, &tm);
   bind_pairs(sc, &tm);
   set_lines(sc, &tm);
+  check_metric_names(sc, tm);
   return tm;
 }
 
