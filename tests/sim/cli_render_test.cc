@@ -58,6 +58,20 @@ TEST_F(CliRenderTest, DropMassVideoDecodesWithDurationTimesFpsFrames) {
   expect_exactly(dir, {"v.mp4"});
 }
 
+// The PAM leg (issue 27, item 5) renders with no code of its own: its eight muscles drawn
+// as the arm's two, its own camera
+TEST_F(CliRenderTest, TheLegsLandingRendersFromItsOwnCamera) {
+  const fs::path dir = fresh_dir("render_leg");
+  const std::string mp4 = (dir / "leg.mp4").string();
+  const CliResult r = run_pamsim("render scenarios/landing.toml -o " + mp4 +
+                                 " --width 320 --height 240 --quality fast --camera side");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto video = decode_video(mp4);
+  ASSERT_TRUE(video.opened) << mp4;
+  EXPECT_EQ(video.width, 320);
+  EXPECT_EQ(video.frames, 45) << "1.5 s x 30 fps";
+}
+
 TEST_F(CliRenderTest, VideoDoesNotChangeTheTrial) {
   const fs::path dir = fresh_dir("render_physics");
   const std::string common = "run scenarios/drop_mass.toml --set sim.duration_s=1.5 --out ";
