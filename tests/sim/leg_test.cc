@@ -66,6 +66,23 @@ TEST(LegTest, AHigherDropCollapsesTheKneeFurtherAndPushesHarder) {
   EXPECT_GT(high.summary.metric("peak_tension_VAS_N"), low.summary.metric("peak_tension_VAS_N"));
 }
 
+// With its antigravity muscles at 0.1 MPa the leg cannot hold its weight: the "fall" event
+// (the trunk below 0.40 m) ends the trial and the metric set "events" says when; the shipped
+// landing does not fall
+TEST(LegTest, AWeakLegFallsAndTheFallEventSaysWhen) {
+  EXPECT_TRUE(std::isnan(land().summary.metric("event_fall_time_s")));
+  std::vector<std::string> weak;
+  for (const char* m : {"GM", "VAS", "SOL"}) {
+    weak.push_back(std::string("muscles.") + m + ".command={kind=\"constant\", MPa=0.1}");
+  }
+  const TrialResult r = land(weak);
+  ASSERT_EQ(r.summary.status, "ok");
+  const double fall = r.summary.metric("event_fall_time_s");
+  EXPECT_GT(fall, 0.143) << "after the landing (a 100 mm free fall takes 0.143 s)";
+  EXPECT_LT(fall, 1.0);
+  EXPECT_EQ(r.summary.message, "ended by event fall");
+}
+
 // The reflex scenario with its reflexes off is the reflex-free landing, bit for bit
 TEST(LegTest, TheReflexLandingWithItsReflexesOffIsThePassiveOne) {
   const Scenario sc = load_scenario(kScenarios + "landing_reflex.toml", {"reflex.enabled=false"});

@@ -134,6 +134,23 @@ class ReflexMetrics final : public MetricSet {
   int impact_;
 };
 
+// events: when each of the scenario's events fired (NaN if it never did): a landing's "fall"
+// (a trunk below a height, action "end"), a drop's "impact"
+class EventMetrics final : public MetricSet {
+ public:
+  explicit EventMetrics(const Scenario& sc) {
+    for (const EventSpec& e : sc.events) names_.push_back("event_" + e.name + "_time_s");
+  }
+  void finish(const FinishedTrial& r, std::vector<Metric>* out) const override {
+    for (std::size_t k = 0; k < names_.size(); ++k) {
+      out->push_back({names_[k], k < r.event_time_s.size() ? r.event_time_s[k] : kNaN});
+    }
+  }
+
+ private:
+  std::vector<std::string> names_;
+};
+
 // tension: the lines' peak pulls and the tension reflexes' triggers
 class TensionMetrics final : public MetricSet {
  public:
@@ -239,7 +256,7 @@ bool is_timing_metric(const std::string& name) {
 
 const std::vector<std::string>& metric_set_names() {
   static const std::vector<std::string> names = {"drop", "reflex", "length_estimate", "tracking",
-                                                 "tension", "sensors"};
+                                                 "tension", "sensors", "events"};
   return names;
 }
 
@@ -259,9 +276,12 @@ std::vector<std::unique_ptr<MetricSet>> make_metric_sets(const Scenario& sc,
       sets.push_back(std::make_unique<TensionMetrics>());
     } else if (name == "sensors") {
       sets.push_back(std::make_unique<SensorMetrics>(model));
+    } else if (name == "events") {
+      sets.push_back(std::make_unique<EventMetrics>(sc));
     } else {
       throw InputError(sc.path + ": metrics names an unknown set \"" + name +
-                       "\" (known: drop, reflex, length_estimate, tracking, tension, sensors)");
+                       "\" (known: drop, reflex, length_estimate, tracking, tension, sensors, "
+                       "events)");
     }
   }
   sets.push_back(std::make_unique<TrialMetrics>());

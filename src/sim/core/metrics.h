@@ -21,6 +21,7 @@
 //                     max (angle_*_deg or position_*_mm)
 //   sensors           the extremes of every named MJCF sensor over every physics step, and
 //                     a touch sensor's touchdowns (sensor_metrics.h)
+//   events            event_<name>_time_s: when each scenario event fired, NaN if never
 //   tension           per muscle: peak_tension_<m>_N (the line's largest pull over every
 //                     physics step) and tension_triggers_<m> (its tension (Ib) reflex's
 //                     triggers; 0 without one); first_tension_trigger_time_s

@@ -37,7 +37,7 @@ std::vector<KeyDoc> model_docs() {
   return {
       {"seed", "", "1", "integer >= 0", "the trial's random seed (sensor noise); trial k of --trials uses seed + k"},
       {"metrics", "", "(drop: [\"drop\", \"reflex\", \"length_estimate\"]; else tracking, length_estimate, reflex)",
-       "list of \"drop\", \"reflex\", \"length_estimate\", \"tracking\", \"tension\", \"sensors\"", "the metric sets in summary.json"},
+       "list of \"drop\", \"reflex\", \"length_estimate\", \"tracking\", \"tension\", \"sensors\", \"events\"", "the metric sets in summary.json"},
       {"model.file", "", "(required)", "path to an MJCF file", "the arm's MuJoCo model, relative to the scenario file"},
       {"model.joint", "", "(the model's first hinge or slide joint)", "a joint of the model", "the joint logged and measured"},
       {"model.calibration", "", "(none)", "path", "start_angle_deg and <actuator>_line_mm (pamsim calibrate)"},
