@@ -133,6 +133,23 @@ TEST(LegTest, TheLegHopsPeriodically) {
   EXPECT_GE(reflexes.summary.metric("grf_touchdowns"), 5.0);
 }
 
+// From its deep crouch, held at 0.17 MPa, the push-off lifts the straight leg's sole clear of
+// the floor by more than 50 mm (94 mm without reflexes), with or without the reflexes, and it
+// lands without falling
+TEST(LegTest, TheSquatJumpLeavesTheFloor) {
+  for (const char* reflexes : {"reflex.enabled=false", "reflex.enabled=true"}) {
+    SCOPED_TRACE(reflexes);
+    const Scenario sc = load_scenario(kScenarios + "squat_jump.toml", {reflexes});
+    const TrialModel model = load_trial_model(sc);
+    const TrialResult r = run_trial(model, sc, sc.seed);
+    ASSERT_EQ(r.summary.status, "ok") << r.summary.message;
+    EXPECT_NEAR(r.summary.metric("position_start_mm"), -58.9, 0.1) << "the deep crouch";
+    EXPECT_GT(r.summary.metric("trunk_z_max_mm") - 475.0, 50.0);
+    EXPECT_GE(r.summary.metric("grf_touchdowns"), 1.0);
+    EXPECT_TRUE(std::isnan(r.summary.metric("event_fall_time_s")));
+  }
+}
+
 TEST(LegTest, BadLegInputIsOneLineNamingTheKey) {
   pamsim_test::expect_each_named("landing.toml", {
       {{"joints.knee.start_deg=720"}, "joints.knee.start_deg"},
