@@ -17,6 +17,7 @@
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
 #include "sim/io/scenario_file.h"
+#include "sim/optimize/tuning_file.h"
 #include "sim/sweep/sweep.h"
 #include "scenario_errors.h"
 
@@ -110,6 +111,13 @@ TEST(LegTest, TheGainSweepIsAGridBehindADirectValve) {
   ASSERT_EQ(sweep.axes.size(), 2u);
   EXPECT_EQ(sweep.axes[0].key, "reflex.k_MPa_s_per_mm");
   EXPECT_EQ(sweep.fixed, std::vector<std::string>{"valve.model='iso6358'"});
+}
+
+TEST(LegTest, TheGainTuningReadsBehindADirectValve) {
+  const TuneDefinition tune = load_tune_definition(kScenarios + "tune_landing.toml");
+  ASSERT_EQ(tune.parameters.size(), 2u);
+  EXPECT_EQ(tune.parameters[1].key, "reflex.ib.k_MPa_per_N");
+  EXPECT_EQ(tune.overrides, std::vector<std::string>{"valve.model=\"iso6358\""});
 }
 
 // The reflex scenario with its reflexes off is the reflex-free landing, bit for bit
