@@ -224,9 +224,11 @@ TrialVideo::TrialVideo(const TrialModel& model, const Scenario& sc, const VideoO
     for (std::size_t i = 0; i < n; ++i) lines.push_back(muscle_rgb(i, true));
     lines.push_back({1.0f, 1.0f, 1.0f});   // the reflex trigger, white
     init_figure(&plots_->pressure, "pressure [MPa] (dim: command)", "%.1f", sc.duration_s, lines);
+    // one entry per colour, its muscles joined ("red IL/BFS"): short for a leg's eight
     static const char* kColourNames[] = {"red", "blue", "green", "purple"};
-    for (std::size_t i = 0; i < n; ++i) {
-      plot_key_ += (i ? ", " : "") + std::string(kColourNames[i % 4]) + " " + model.muscles[i].label;
+    for (std::size_t c = 0; c < std::min<std::size_t>(n, 4); ++c) {
+      plot_key_ += (c ? ", " : "") + std::string(kColourNames[c]) + " ";
+      for (std::size_t i = c; i < n; i += 4) plot_key_ += (i > c ? "/" : "") + model.muscles[i].label;
     }
     plots_->angle.linergb[1][0] = plots_->angle.linergb[1][1] = plots_->angle.linergb[1][2] = 1.0f;
   }
