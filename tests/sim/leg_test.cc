@@ -3,7 +3,8 @@
 // (scripts/leg_calibration.py), the leg falls 100 mm, lands (the floor's push peaks above
 // its weight), bounces and stands crouched; dropped from higher it collapses further; the
 // start keys place it; it hops periodically under its feedforward pattern, with and without
-// its reflexes; and its scenarios refuse bad input by key.
+// its reflexes; each tendon crosses the joints its muscle says it spans (RF and GAS two);
+// and its scenarios refuse bad input by key.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -192,7 +193,11 @@ TEST(LegTest, BadLegInputIsOneLineNamingTheKey) {
       {{"joints.knee.start_deg=720"}, "joints.knee.start_deg"},
       {{"joints.trunk_z.start_deg=10"}, "joints.trunk_z"},   // a slide
       {{"joints.knee.start_deg=-10"}, "joints.knee.start_deg must be within the joint's range"},
-      {{"muscles.VAS.line_mm=0"}, "muscles.VAS.line_mm"}});
+      {{"muscles.VAS.line_mm=0"}, "muscles.VAS.line_mm"},
+      // a biarticular tendon whose path misses a joint it is said to cross
+      {{"muscles.RF.spans=[\"hip\", \"ankle\"]"},
+       "muscles.RF.spans names joint 'ankle', which the tendon's path misses"},
+      {{"muscles.GAS.spans=[\"knee\", \"elbow\"]"}, "muscles.GAS.spans"}});
   pamsim_test::expect_each_named("landing_reflex.toml", {
       {{"reflex.ib.f_thr_N=-1"}, "reflex.ib.f_thr_N"},
       {{"reflex.pairs=[[\"VAS\", \"BFS\"], [\"VAS\", \"TA\"]]"}, "reflex.pairs"}});

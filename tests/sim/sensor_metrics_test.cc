@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "inline_mjcf.h"
+#include "base/input_error.h"
 #include "sim/core/mujoco_util.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
@@ -118,6 +119,22 @@ TEST(SensorMetricsTest, ABoxThatStartsOnTheFloorHasNoTouchdown) {
   const std::vector<Metric> metrics = run(m.get(), 0.5);
   EXPECT_EQ(value(metrics, "grf_touchdowns"), 0.0);
   EXPECT_GT(value(metrics, "grf_min_N"), 0.0);
+}
+
+// A sensor named like another set's metric ("angle" gives angle_min_deg, as tracking does)
+// would make two columns of one name: refused with the name
+TEST(SensorMetricsTest, TwoMetricsOfOneNameAreRefused) {
+  Scenario sc;
+  sc.path = "leg.toml";
+  EXPECT_NO_THROW(require_unique_metric_names(sc, {"angle_min_deg", "grf_max_N"}));
+  try {
+    require_unique_metric_names(sc, {"angle_min_deg", "grf_max_N", "angle_min_deg"});
+    ADD_FAILURE() << "a repeated name was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "leg.toml: metrics name two metrics angle_min_deg (rename the model's sensor that "
+              "gives it)");
+  }
 }
 
 // Through a scenario: the arm has no sensors, so the set adds no metrics and the summary

@@ -289,6 +289,15 @@ std::vector<std::unique_ptr<MetricSet>> make_metric_sets(const Scenario& sc,
   return sets;
 }
 
+void require_unique_metric_names(const Scenario& sc, std::vector<std::string> names) {
+  std::sort(names.begin(), names.end());
+  const auto twice = std::adjacent_find(names.begin(), names.end());
+  if (twice != names.end()) {
+    throw InputError(sc.path + ": metrics name two metrics " + *twice +
+                     " (rename the model's sensor that gives it)");
+  }
+}
+
 std::vector<std::string> metric_names(const Scenario& sc, const std::vector<std::string>& labels,
                                       bool hinge, const mjModel* model) {
   // every set writes the same names whatever the data: finish a trial with no rows

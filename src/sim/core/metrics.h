@@ -106,6 +106,10 @@ const std::vector<std::string>& metric_set_names();
 std::vector<std::unique_ptr<MetricSet>> make_metric_sets(const Scenario& scenario,
                                                          const mjModel* model = nullptr);
 
+// Throws InputError "<scenario>: metrics name two metrics <name> ..." if a name repeats (a
+// model's sensor named like another set's metric: "angle" gives angle_min_deg, as tracking).
+void require_unique_metric_names(const Scenario& scenario, std::vector<std::string> names);
+
 // The metric names a scenario's summaries hold on its trial model, in order (a sweep
 // database's columns).
 std::vector<std::string> metric_names(const Scenario& scenario,

@@ -47,6 +47,9 @@ struct MuscleSpec {
   // 0: inextensible. An extensible line's length above is its length at the start state,
   // under the start's tension (issue 25, item 3).
   double line_axial_stiffness_n = 0.0;
+  // muscles.<m>.spans: the joints its tendon must cross (checked when the model is bound: a
+  // moment arm at each in the start state); empty: not checked
+  std::vector<std::string> spans;
 };
 
 // A free body held kinematically (at rest, upright) until an event releases it.

@@ -17,6 +17,8 @@
 namespace pamsim {
 namespace {
 
+constexpr double kMinMomentArm_m = 1e-4;   // 0.1 mm: below it a tendon does not cross a joint
+
 // "<scenario>: <key> <problem>"
 [[noreturn]] void fail(const Scenario& sc, const std::string& key, const std::string& problem) {
   throw InputError(sc.path + ": " + key + " " + problem);
@@ -228,18 +230,6 @@ void set_joints(const Scenario& sc, TrialModel* tm) {
   }
 }
 
-// every metric of the scenario's sets named once: a model's sensor named like another set's
-// metric ("angle" gives angle_min_deg, as tracking does) would make two columns of one name
-void check_metric_names(const Scenario& sc, const TrialModel& tm) {
-  std::vector<std::string> labels;
-  for (const BoundMuscle& b : tm.muscles) labels.push_back(b.label);
-  std::vector<std::string> names = metric_names(sc, labels, tm.joint.hinge, tm.model.get());
-  std::sort(names.begin(), names.end());
-  const auto twice = std::adjacent_find(names.begin(), names.end());
-  if (twice != names.end()) {
-    fail(sc, "metrics", "name two metrics " + *twice + " (rename the model's sensor that gives it)");
-  }
-}
 
 // the start state: the joint at its start position, held bodies in place, at rest
 MjDataPtr start_state(const Scenario& sc, const TrialModel& tm) {
@@ -252,6 +242,26 @@ MjDataPtr start_state(const Scenario& sc, const TrialModel& tm) {
   }
   mj_forward(m, data.get());
   return data;
+}
+
+// muscles.<m>.spans: a moment arm of the muscle's tendon at each joint it names, in the
+// start state (a biarticular tendon whose path misses a joint has none there)
+void check_spans(const Scenario& sc, const TrialModel& tm) {
+  const mjModel* m = tm.model.get();
+  MjDataPtr data;
+  for (const BoundMuscle& b : tm.muscles) {
+    const MuscleSpec& spec = sc.muscles[b.spec];
+    for (const std::string& joint : spec.spans) {
+      const int j = require(sc, m, mjOBJ_JOINT, joint, spec.key + ".spans", "a joint");
+      if (!data) data = start_state(sc, tm);
+      const double arm = data->actuator_moment[static_cast<long>(b.actuator) * m->nv +
+                                               m->jnt_dofadr[j]];
+      if (std::fabs(arm) < kMinMomentArm_m) {
+        fail(sc, spec.key + ".spans", "names joint '" + joint + "', which the tendon's path "
+                                          "misses (no moment arm there at the start)");
+      }
+    }
+  }
 }
 
 // Extensible lines (muscles.<m>.line_diameter_mm): each line's length so far is its length
@@ -376,7 +386,10 @@ TrialModel load_trial_model(const Scenario& sc) {
   bind_events(sc, &tm);
   bind_pairs(sc, &tm);
   set_lines(sc, &tm);
-  check_metric_names(sc, tm);
+  check_spans(sc, tm);
+  std::vector<std::string> labels;
+  for (const BoundMuscle& b : tm.muscles) labels.push_back(b.label);
+  require_unique_metric_names(sc, metric_names(sc, labels, tm.joint.hinge, tm.model.get()));
   return tm;
 }
 

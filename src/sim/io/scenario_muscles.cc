@@ -228,6 +228,7 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
 
   read_muscle_command(in, sc, name, &m);
   read_muscle_line(in, name, calibration, lines_needed, &m);
+  m.spans = in.get_string_list(m.key + ".spans", {});
   return m;
 }
 
