@@ -79,7 +79,8 @@ std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
         "events.high.when.joint=\"weight_slide\"", "events.high.when.above_mm=500",
         "events.high.action=\"end\"", "joints.weight_slide.damping_N_s_per_m=60",
         "joints.weight_slide.frictionloss_N=0.5"}},
-      {s + "landing.toml", {}},   // joints.<joint>.start_deg and start_mm
+      {s + "landing.toml", {}},   // joints.<joint>.start_deg and start_mm, muscles.<m>.spans
+      {s + "drop_mass_heavy.toml", {}},   // muscles.<m>.line_limit_N
   };
 }
 

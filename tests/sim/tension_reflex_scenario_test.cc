@@ -57,6 +57,10 @@ TEST(TensionReflexScenarioTest, OnTheHeavierDropIbUnloadsTheLineAndTheArmStillKe
   EXPECT_LT(peak(ib), peak(both));
   EXPECT_GT(drop(both), drop(ia)) << "and pays for it in drop";
   EXPECT_GT(drop(ib), drop(both));
+  // the agonist's line's 100 N working limit: Ia alone over it, Ia + Ib under
+  EXPECT_DOUBLE_EQ(ia.summary.metric("line_load_ago_pct"), peak(ia));
+  EXPECT_GT(ia.summary.metric("line_load_ago_pct"), 100.0);
+  EXPECT_LT(both.summary.metric("line_load_ago_pct"), 100.0);
   // the metric is the largest pull of any physics step: at least every logged sample
   const Trajectory& log = both.trajectory;
   const std::size_t column = log.column("force_ago_N");
@@ -77,7 +81,9 @@ TEST(TensionReflexScenarioTest, EachKindReadsItsOwnKeysAndNamesABadOne) {
   pamsim_test::expect_each_named("drop_mass_heavy_ia_ib.toml", {
       {{"reflex.ib.f_thr_N=-5"}, "reflex.ib.f_thr_N must be > 0, got -5"},
       {{"reflex.ib.mode=\"hold\""}, "reflex.ib.mode"},
-      {{"reflex.pairs=[[\"agonist\", \"agonist\"]]"}, "reflex.pairs"}});
+      {{"reflex.pairs=[[\"agonist\", \"agonist\"]]"}, "reflex.pairs"},
+      {{"muscles.agonist.line_limit_N=0"}, "muscles.agonist.line_limit_N must be in (0, 1e5] N"},
+      {{"muscles.agonist.line_limit_N=nan"}, "muscles.agonist.line_limit_N"}});
   pamsim_test::expect_each_named("drop_mass.toml", {
       {{"controller.kind=\"stretch_tension_reflex\"", "reflex.ib.k_MPa_per_N=0.004"},
        "reflex.ib.f_thr_N is required"},

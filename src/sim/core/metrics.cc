@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "base/input_error.h"
 #include "base/no_value.h"
@@ -151,21 +152,32 @@ class EventMetrics final : public MetricSet {
   std::vector<std::string> names_;
 };
 
-// tension: the lines' peak pulls and the tension reflexes' triggers
+// tension: the lines' peak pulls (and in per cent of a line's working limit, where the
+// scenario gives one) and the tension reflexes' triggers
 class TensionMetrics final : public MetricSet {
  public:
+  explicit TensionMetrics(const Scenario& sc) {
+    for (const MuscleSpec& m : sc.muscles) limit_n_[m.label] = m.line_limit_n;
+  }
   void finish(const FinishedTrial& r, std::vector<Metric>* out) const override {
     const auto* triggers = r.tension_trigger_times_s;
     double first = kNaN;
     for (std::size_t j = 0; j < r.labels.size(); ++j) {
       const double peak = j < r.peak_tension_n.size() ? r.peak_tension_n[j] : kNaN;
       out->push_back({"peak_tension_" + r.labels[j] + "_N", peak});
+      const auto limit = limit_n_.find(r.labels[j]);
+      if (limit != limit_n_.end() && !std::isnan(limit->second)) {
+        out->push_back({"line_load_" + r.labels[j] + "_pct", 100.0 * peak / limit->second});
+      }
       const std::size_t n = triggers ? (*triggers)[j].size() : 0;
       out->push_back({"tension_triggers_" + r.labels[j], static_cast<double>(n), true});
       if (n > 0 && !((*triggers)[j].front() >= first)) first = (*triggers)[j].front();
     }
     out->push_back({"first_tension_trigger_time_s", first});
   }
+
+ private:
+  std::map<std::string, double> limit_n_;   // by label
 };
 
 // length_estimate: the estimate against the encoder, all muscles pooled [mm]
@@ -273,7 +285,7 @@ std::vector<std::unique_ptr<MetricSet>> make_metric_sets(const Scenario& sc,
     } else if (name == "tracking") {
       sets.push_back(std::make_unique<TrackingMetrics>());
     } else if (name == "tension") {
-      sets.push_back(std::make_unique<TensionMetrics>());
+      sets.push_back(std::make_unique<TensionMetrics>(sc));
     } else if (name == "sensors") {
       sets.push_back(std::make_unique<SensorMetrics>(model));
     } else if (name == "events") {

@@ -23,8 +23,10 @@
 //                     a touch sensor's touchdowns (sensor_metrics.h)
 //   events            event_<name>_time_s: when each scenario event fired, NaN if never
 //   tension           per muscle: peak_tension_<m>_N (the line's largest pull over every
-//                     physics step) and tension_triggers_<m> (its tension (Ib) reflex's
-//                     triggers; 0 without one); first_tension_trigger_time_s
+//                     physics step), line_load_<m>_pct (that in per cent of its
+//                     muscles.<m>.line_limit_N, where given) and tension_triggers_<m> (its
+//                     tension (Ib) reflex's triggers; 0 without one);
+//                     first_tension_trigger_time_s
 //   (always) trial    steps, sim_time_s, wall_time_s, realtime_factor
 //   (always) solver   cvode_steps, cvode_rhs_evals
 // A metric is NaN where it is undefined (an event that did not happen); JSON writes null.

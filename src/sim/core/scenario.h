@@ -50,6 +50,9 @@ struct MuscleSpec {
   // muscles.<m>.spans: the joints its tendon must cross (checked when the model is bound: a
   // moment arm at each in the start state); empty: not checked
   std::vector<std::string> spans;
+  // muscles.<m>.line_limit_N: the line's working load [N] (NaN: none); the metric set
+  // "tension" gives the peak pull in per cent of it
+  double line_limit_n = std::numeric_limits<double>::quiet_NaN();
 };
 
 // A free body held kinematically (at rest, upright) until an event releases it.

@@ -72,6 +72,7 @@ std::vector<KeyDoc> model_docs() {
       {"muscles.<actuator>.plant.<table>.<stroke>.<field>", "(the file's)", "(the plant file's)", "as in the plant file (pam_actuator/plant_params.h)", "a field of the plant file's friction strokes, e.g. friction.extension.A0_mm2"},
       {"muscles.<actuator>.label", "", "(the actuator's name)", "no spaces, commas or quotes; unique", "the muscle's name in columns and metrics"},
       {"muscles.<actuator>.line", "", "(none)", "\"equilibrium\"", "solve the line length so the start is static"},
+      {"muscles.<actuator>.line_limit_N", "N", "(none)", "(0, 1e5]", "the line's working load: the tension metrics give the peak pull in per cent of it"},
       {"muscles.<actuator>.spans", "", "(not checked)", "list of joints of the model", "the joints its tendon must cross: refused if its path misses one (no moment arm at the start)"},
       {"muscles.<actuator>.line_mm", "mm", "(model.calibration's)", "> 0", "the fishing line's length (at the start, under its tension)"},
       {"muscles.<actuator>.line_diameter_mm", "mm", "(none: inextensible)", "(0, 10]; with line_modulus_MPa", "the fishing line's diameter: it stretches by its tension over E A"},

@@ -229,6 +229,11 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
   read_muscle_command(in, sc, name, &m);
   read_muscle_line(in, name, calibration, lines_needed, &m);
   m.spans = in.get_string_list(m.key + ".spans", {});
+  if (in.has(m.key + ".line_limit_N")) {
+    m.line_limit_n = in.require_double(m.key + ".line_limit_N");
+    in.check(m.line_limit_n > 0.0 && m.line_limit_n <= 1e5, m.key + ".line_limit_N",
+             "must be in (0, 1e5] N, got " + format_value(m.line_limit_n));
+  }
   return m;
 }
 
