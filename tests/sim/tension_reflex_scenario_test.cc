@@ -87,7 +87,9 @@ TEST(TensionReflexScenarioTest, EachKindReadsItsOwnKeysAndNamesABadOne) {
   pamsim_test::expect_each_named("drop_mass.toml", {
       {{"controller.kind=\"stretch_tension_reflex\"", "reflex.ib.k_MPa_per_N=0.004"},
        "reflex.ib.f_thr_N is required"},
-      {{"reflex.ib.f_thr_N=60"}, "reflex.ib.f_thr_N"}});   // the Ia kind: an unknown key
+      {{"reflex.ib.f_thr_N=60"}, "reflex.ib.f_thr_N"},   // the Ia kind: an unknown key
+      {{"muscles.agonist.line_limit_N=100"},   // no tension set to read it
+       "muscles.agonist.line_limit_N needs the metric set \"tension\""}});
   pamsim_test::expect_each_named("drop_mass_heavy_ib.toml", {
       {{"reflex.v_thr_mm_s=70"}, "reflex.v_thr_mm_s"}});   // an Ia key with the Ib kind
 }

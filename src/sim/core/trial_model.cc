@@ -253,6 +253,9 @@ void check_spans(const Scenario& sc, const TrialModel& tm) {
     const MuscleSpec& spec = sc.muscles[b.spec];
     for (const std::string& joint : spec.spans) {
       const int j = require(sc, m, mjOBJ_JOINT, joint, spec.key + ".spans", "a joint");
+      if (m->jnt_type[j] != mjJNT_HINGE && m->jnt_type[j] != mjJNT_SLIDE) {
+        fail(sc, spec.key + ".spans", "names joint '" + joint + "': a hinge or slide only");
+      }
       if (!data) data = start_state(sc, tm);
       const double arm = data->actuator_moment[static_cast<long>(b.actuator) * m->nv +
                                                m->jnt_dofadr[j]];

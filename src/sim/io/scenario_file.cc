@@ -194,6 +194,12 @@ void read_metrics(ConfigReader& in, Scenario* sc, bool has_drop) {
   }
   sc->metrics = in.get_string_list("metrics", defaults);
   make_metric_sets(*sc);   // throws "<file>: metrics ..." for an unknown set or missing events
+  // a line's working load is read only by the tension set: refused where it would be ignored
+  const bool tension = std::count(sc->metrics.begin(), sc->metrics.end(), "tension") > 0;
+  for (const MuscleSpec& m : sc->muscles) {
+    in.check(tension || std::isnan(m.line_limit_n), m.key + ".line_limit_N",
+             "needs the metric set \"tension\" in metrics (it would be ignored)");
+  }
 }
 
 // The overrides in order, a plant's two forms kept apart: a --set of a plant's field

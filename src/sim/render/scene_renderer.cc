@@ -184,4 +184,6 @@ const unsigned char* SceneRenderer::read_pixels() {
   return rgb_.data();
 }
 
+int SceneRenderer::line_height_px() const { return context_->charHeight; }
+
 }  // namespace pamsim

@@ -53,6 +53,8 @@ class SceneRenderer {
 
   int width_px() const { return viewport_.width; }
   int height_px() const { return viewport_.height; }
+  // the overlay font's line height [px]
+  int line_height_px() const;
   // The GL context in use: "<description>: <vendor>, <renderer>, OpenGL <version>".
   std::string gl_in_use() const;
 

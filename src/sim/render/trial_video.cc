@@ -22,6 +22,8 @@ namespace {
 
 constexpr double kPlotWidthShare = 0.32;    // of the frame, each plot
 constexpr double kPlotHeightShare = 0.26;
+constexpr double kTableLineSpacing = 1.25;  // the overlay table's rows, in font line heights
+constexpr int kMinPlotHeightPx = 60;
 constexpr double kAngleTickDeg = 10.0;      // the angle plot's range: multiples of this
 constexpr double kPressureTickMpa = 0.1;    // the pressure plot's range: [0, a multiple]
 constexpr double kDefaultMuscleDiameterM = 0.016;   // a muscle without [geometry]
@@ -354,9 +356,18 @@ void TrialVideo::draw_overlays(const TrialSnapshot& snap) {
     }
   }
   const int w = static_cast<int>(kPlotWidthShare * renderer_.width_px());
-  const int h = static_cast<int>(kPlotHeightShare * renderer_.height_px());
+  const int h = plot_height_px(labels.size() + 3);   // time, joint, the muscles, reflex
   renderer_.draw_figure(mjrRect{0, 0, w, h}, &p.pressure);
   renderer_.draw_figure(mjrRect{0, h, w, h}, &p.angle);
+}
+
+int TrialVideo::plot_height_px(std::size_t table_rows) const {
+  // a share of the frame, less where the table above the two plots is tall (a leg's eight
+  // muscles): the plots stay below it
+  const int share = static_cast<int>(kPlotHeightShare * renderer_.height_px());
+  const int table = static_cast<int>(kTableLineSpacing * static_cast<double>(table_rows + 1) *
+                                     renderer_.line_height_px());
+  return std::max(kMinPlotHeightPx, std::min(share, (renderer_.height_px() - table) / 2));
 }
 
 void TrialVideo::finish() {

@@ -86,6 +86,8 @@ class TrialVideo : public TrialObserver {
   };
   std::vector<SceneRenderer::Capsule> muscle_capsules(const TrialSnapshot& snapshot) const;
   void draw_overlays(const TrialSnapshot& snapshot);
+  // each live plot's height [px] below a table of `table_rows` rows
+  int plot_height_px(std::size_t table_rows) const;
 
   VideoOptions options_;
   std::string title_;                 // "drop_mass.toml, seed 1"
