@@ -196,14 +196,18 @@ void run_batch(benchmark::State& state, const char* scenario_file) {
       benchmark::Counter(kBatchTrials, benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// a batch on 1 and 2 threads, timed by the wall clock with every thread's CPU time
+void batch_settings(benchmark::internal::Benchmark* b) {
+  b->ArgName("threads")
+      ->Arg(1)
+      ->Arg(2)
+      ->MeasureProcessCPUTime()
+      ->UseRealTime()
+      ->Unit(benchmark::kMillisecond);
+}
+
 void BM_TwentyTrials(benchmark::State& state) { run_batch(state, "drop_mass.toml"); }
-BENCHMARK(BM_TwentyTrials)
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime()
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TwentyTrials)->Apply(batch_settings);
 
 // The leg's landing model with mj_step alone: its start posture and height, every pressure
 // fixed at 0.4 MPa (the PAM force callback included)
@@ -232,13 +236,7 @@ BENCHMARK_CAPTURE(BM_TrialLoop, landing_reflex, "landing_reflex.toml", Hardware:
     ->Unit(benchmark::kMillisecond);
 
 void BM_TwentyLandings(benchmark::State& state) { run_batch(state, "landing_reflex.toml"); }
-BENCHMARK(BM_TwentyLandings)
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime()
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TwentyLandings)->Apply(batch_settings);
 
 }  // namespace
 }  // namespace pamsim

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "inline_mjcf.h"
+#include "slider_mjcf.h"
 #include "base/input_error.h"
 #include "base/units.h"
 #include "sim/core/mujoco_util.h"
@@ -17,23 +18,7 @@ namespace {
 
 using pamsim_test::load_inline;
 
-// A slider pulled by one PAM on a fixed tendon: tendon length = qpos, moment arm 1.
-constexpr char kSliderXml[] = R"(
-<mujoco>
-  <size nuser_actuator="11" nuserdata="2"/>
-  <option gravity="0 0 0"/>
-  <worldbody>
-    <body>
-      <joint name="slide" type="slide" axis="1 0 0"/>
-      <geom type="sphere" size="0.01" mass="1"/>
-    </body>
-  </worldbody>
-  <tendon><fixed name="t"><joint joint="slide" coef="1"/></fixed></tendon>
-  <actuator>
-    <general name="pam" tendon="t" biastype="user" gaintype="fixed" gainprm="0"
-             forcelimited="true" forcerange="-5000 0"/>
-  </actuator>
-</mujoco>)";
+using pamsim_test::kSliderXml;
 
 // The slider with `slots` user slots per actuator, loaded as "slider<slots>.xml".
 MjModelPtr slider_with_slots(int slots) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "inline_mjcf.h"
+#include "slider_mjcf.h"
 #include "base/input_error.h"
 #include "base/units.h"
 #include "sim/core/mujoco_util.h"
@@ -18,24 +19,6 @@ namespace {
 
 using pamsim_test::load_inline;
 
-// A slider pulled by one PAM on a fixed tendon (tendon length = qpos), with room for a
-// relaxing bladder: 2 pressures' worth of userdata, then the history block.
-constexpr char kSliderXml[] = R"(
-<mujoco>
-  <size nuser_actuator="55" nuserdata="8"/>
-  <option gravity="0 0 0" timestep="0.001"/>
-  <worldbody>
-    <body>
-      <joint name="slide" type="slide" axis="1 0 0"/>
-      <geom type="sphere" size="0.01" mass="1"/>
-    </body>
-  </worldbody>
-  <tendon><fixed name="t"><joint joint="slide" coef="1"/></fixed></tendon>
-  <actuator>
-    <general name="pam" tendon="t" biastype="user" gaintype="fixed" gainprm="0"
-             forcelimited="true" forcerange="-5000 0"/>
-  </actuator>
-</mujoco>)";
 
 constexpr double kLine = 0.3, kPressure = 0.4e6;
 
@@ -48,9 +31,13 @@ AvbdlParams relaxing_plant() {
   return plant;
 }
 
-MjModelPtr model_with(const AvbdlParams& plant, const char* size = nullptr) {
-  std::string xml = kSliderXml;
-  if (size) xml.replace(xml.find("nuser_actuator=\"55\" nuserdata=\"8\""), 33, size);
+// The slider (slider_mjcf.h) with room for a relaxing bladder (`size`: 2 pressures' worth of
+// userdata, then the history block) and a 1 ms step
+MjModelPtr model_with(const AvbdlParams& plant,
+                      const char* size = "nuser_actuator=\"55\" nuserdata=\"8\"") {
+  std::string xml = pamsim_test::kSliderXml;
+  xml.replace(xml.find("nuser_actuator=\"11\" nuserdata=\"2\""), 33, size);
+  xml.replace(xml.find("gravity=\"0 0 0\""), 15, "gravity=\"0 0 0\" timestep=\"0.001\"");
   MjModelPtr m = load_inline(xml.c_str(), "relaxing.xml");
   const SpringModel spring = spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,
                                                            {0.911, 0.256, 7.00, -0.201, 0, 0});
