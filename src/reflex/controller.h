@@ -52,11 +52,13 @@ struct ControlInput {
 struct ControlOutput {
   std::vector<double> p_cmd_pa;       // valve commands, gauge [Pa]
   std::vector<double> velocity_m_s;   // the velocity each muscle's control acted on (logged)
-  std::vector<char> reflex_active;    // 1 while the muscle's reflex window is open
+  std::vector<char> reflex_active;    // 1 while the muscle's stretch (Ia) window is open
+  std::vector<char> tension_reflex_active;   // 1 while its tension (Ib) window is open
   void resize(int muscle_count) {
     p_cmd_pa.assign(muscle_count, 0.0);
     velocity_m_s.assign(muscle_count, 0.0);
     reflex_active.assign(muscle_count, 0);
+    tension_reflex_active.assign(muscle_count, 0);
   }
 };
 

@@ -59,6 +59,8 @@ class ControllerConfig {
   // True: the log has the reflex_<m> columns, and a scenario without a drop lists the
   // "reflex" metric set by default.
   virtual bool has_reflexes() const { return false; }
+  // True: the log also has the tension_reflex_<m> columns (the Ib windows).
+  virtual bool has_tension_reflexes() const { return false; }
   // Appended to summary.json's "scenario" object, in this order.
   virtual std::vector<SummaryField> summary_fields() const { return {}; }
   // A new controller for one trial.

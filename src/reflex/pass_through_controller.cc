@@ -19,6 +19,7 @@ void PassThroughController::update(const ControlInput& in, ControlOutput* out) {
     out->p_cmd_pa[j] = (*in.p_tp_pa)[j];
     out->velocity_m_s[j] = readings[j].velocity_est_m_s;
     out->reflex_active[j] = 0;
+    out->tension_reflex_active[j] = 0;
   }
 }
 

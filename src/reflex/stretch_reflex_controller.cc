@@ -131,11 +131,12 @@ void StretchReflexController::update(const ControlInput& in, ControlOutput* out)
     dp_pa_[j] = 0.0;
     dp_ib_pa_[j] = 0.0;
     out->reflex_active[j] = 0;
+    out->tension_reflex_active[j] = 0;
     // while the controller is switched off its windows and refractory times run out
     // without acting
     if (!rc.enabled || partner_[j] < 0) continue;
     if (config_.stretch) run_stretch_reflex(j, in, v, out);
-    if (config_.tension) run_tension_reflex(j, in);
+    if (config_.tension) run_tension_reflex(j, in, out);
   }
 
   // Eq. (12)-(13) per pair, clamped to the valve's range; unpaired muscles get p_tp
@@ -168,12 +169,14 @@ void StretchReflexController::run_stretch_reflex(std::size_t j, const ControlInp
   if (reflexes_[j].triggered()) trigger_times_s_[j].push_back(in.time_s);
 }
 
-void StretchReflexController::run_tension_reflex(std::size_t j, const ControlInput& in) {
+void StretchReflexController::run_tension_reflex(std::size_t j, const ControlInput& in,
+                                                 ControlOutput* out) {
   // the muscle's tension reflex on its gauge's tension, Eq. (8)-(9)
   const double dp = tension_reflexes_[j].update(in.time_s, (*in.readings)[j].force_meas_n,
                                                 in.enabled);
   if (!in.enabled) return;
   dp_ib_pa_[j] = dp;
+  out->tension_reflex_active[j] = tension_reflexes_[j].active() ? 1 : 0;
   if (tension_reflexes_[j].triggered()) tension_trigger_times_s_[j].push_back(in.time_s);
 }
 

@@ -104,6 +104,7 @@ class StretchReflexScenarioConfig final : public ControllerConfig {
   // The controller's configuration for a trial's muscles, pairs and control rate.
   StretchReflexControllerConfig bound(const ControllerSetup& setup) const;
   bool has_reflexes() const override { return true; }
+  bool has_tension_reflexes() const override { return tension; }
   // reflex_enabled; with Ia reflex_sensor, v_thr_mm_s, k_MPa_s_per_mm; with Ib
   // ib_f_thr_N, ib_df_thr_N_s, ib_k_MPa_per_N
   std::vector<SummaryField> summary_fields() const override;
@@ -141,7 +142,7 @@ class StretchReflexController final : public Controller {
  private:
   // muscle j's reflexes at this tick (j in a pair, the reflexes enabled)
   void run_stretch_reflex(std::size_t j, const ControlInput& in, double v, ControlOutput* out);
-  void run_tension_reflex(std::size_t j, const ControlInput& in);
+  void run_tension_reflex(std::size_t j, const ControlInput& in, ControlOutput* out);
 
   StretchReflexControllerConfig config_;
   std::vector<int> partner_;            // pair partner of each muscle, -1 if unpaired

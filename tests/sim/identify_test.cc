@@ -134,7 +134,9 @@ TEST(IdentifyTest, ATensileTestAloneGivesThePlantsWall) {
   EXPECT_FALSE(fs::exists(dir / "out" / "pneumatics.toml"));
   const Scenario identified = load_scenario((dir / "out" / "identified.toml").string());
   for (const MuscleSpec& m : identified.muscles) {
-    if (m.actuator == "agonist") EXPECT_DOUBLE_EQ(m.plant.wall_thickness_m, written.avbdl.wall_thickness_m);
+    if (m.actuator == "agonist") {
+      EXPECT_DOUBLE_EQ(m.plant.wall_thickness_m, written.avbdl.wall_thickness_m);
+    }
   }
 }
 

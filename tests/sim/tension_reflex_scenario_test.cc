@@ -38,7 +38,17 @@ TEST(TensionReflexScenarioTest, OnThePapersDropASilentIbReflexChangesNothing) {
   const TrialResult both = run("drop_mass.toml", kSilentIb);
   ASSERT_EQ(ia.summary.status, "ok");
   EXPECT_EQ(both.summary.metric("tension_triggers_ago"), 0.0);
-  EXPECT_EQ(ia.trajectory.values, both.trajectory.values);
+  // the Ia trial's columns bit for bit; the Ib windows' columns (the Ia kind has none) zero
+  for (std::size_t c = 0; c < both.trajectory.columns.size(); ++c) {
+    const std::string& name = both.trajectory.columns[c];
+    const bool ib_column = name.rfind("tension_reflex_", 0) == 0;
+    ASSERT_EQ(ia.trajectory.has_column(name), !ib_column) << name;
+    for (std::size_t row = 0; row < both.trajectory.rows(); ++row) {
+      const double expected = ib_column ? 0.0 : ia.trajectory.at(row, ia.trajectory.column(name));
+      ASSERT_EQ(both.trajectory.at(row, c), expected) << name << " row " << row;
+    }
+  }
+  EXPECT_EQ(ia.trajectory.rows(), both.trajectory.rows());
   EXPECT_EQ(ia.summary.metric("peak_tension_ago_N"), both.summary.metric("peak_tension_ago_N"));
 }
 
@@ -67,6 +77,27 @@ TEST(TensionReflexScenarioTest, OnTheHeavierDropIbUnloadsTheLineAndTheArmStillKe
   for (std::size_t row = 0; row < log.rows(); ++row) {
     ASSERT_LE(log.at(row, column), peak(both)) << row;
   }
+}
+
+// The log's tension_reflex_<m> column marks the Ib windows: it opens at the first Ib
+// trigger and stays open for the window (0.2 s at 100 Hz: 20 rows); a kind without the Ib
+// reflex logs no such column
+TEST(TensionReflexScenarioTest, TheLogMarksTheIbWindowFromItsFirstTrigger) {
+  const TrialResult ia = run("drop_mass_heavy.toml");
+  const TrialResult both = run("drop_mass_heavy_ia_ib.toml");
+  EXPECT_FALSE(ia.trajectory.has_column("tension_reflex_ago"));
+  const Trajectory& log = both.trajectory;
+  const std::size_t time = log.column("time_s"), window = log.column("tension_reflex_ago");
+  std::size_t first = log.rows();
+  for (std::size_t row = 0; row < log.rows() && first == log.rows(); ++row) {
+    if (log.at(row, window) == 1.0) first = row;
+  }
+  ASSERT_LT(first, log.rows()) << "no Ib window logged";
+  EXPECT_EQ(log.at(first, time), both.summary.metric("first_tension_trigger_time_s"));
+  for (std::size_t row = first; row < first + 20; ++row) {
+    ASSERT_EQ(log.at(row, window), 1.0) << row;
+  }
+  EXPECT_EQ(log.at(log.rows() - 1, window), 0.0) << "the window closes";
 }
 
 // The shipped sweep of both gains reads: 12 x 12 points of the two gains, 3 seeds each

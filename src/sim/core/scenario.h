@@ -162,8 +162,12 @@ struct Scenario {
   }
   // The muscle pairs the controller names (by actuator), none without a controller.
   const std::vector<std::array<std::string, 2>>& controller_pairs() const;
-  // The log has reflex_<m> columns (ControllerConfig::has_reflexes).
+  // The log has reflex_<m> columns (ControllerConfig::has_reflexes), and tension_reflex_<m>
+  // columns (has_tension_reflexes).
   bool controller_has_reflexes() const { return controller && controller->has_reflexes(); }
+  bool controller_has_tension_reflexes() const {
+    return controller && controller->has_tension_reflexes();
+  }
 };
 
 }  // namespace pamsim

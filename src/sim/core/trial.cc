@@ -71,7 +71,7 @@ thread_local ThreadTrialData t_trial_data;
 
 LogLayout trial_log_layout(const TrialModel& tm, const Scenario& sc) {
   return make_log_layout(tm.joint.hinge, held_bodies(tm), labels_of(tm),
-                         sc.controller_has_reflexes());
+                         sc.controller_has_reflexes(), sc.controller_has_tension_reflexes());
 }
 
 TrialData::TrialData(const TrialModel& model, const mjModel* m) {

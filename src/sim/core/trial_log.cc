@@ -17,7 +17,8 @@ bool Trajectory::has_column(const std::string& name) const {
 }
 
 LogLayout make_log_layout(bool hinge, const std::vector<std::string>& bodies,
-                          const std::vector<std::string>& labels, bool reflex_columns) {
+                          const std::vector<std::string>& labels, bool reflex_columns,
+                          bool tension_reflex_columns) {
   LogLayout layout;
   std::vector<std::string>& c = layout.columns;
   auto add = [&c](const std::string& name) {
@@ -48,6 +49,7 @@ LogLayout make_log_layout(bool hinge, const std::vector<std::string>& bodies,
   per_muscle(&MuscleColumns::length_est, "length_est_", "_mm");
   per_muscle(&MuscleColumns::velocity_est, "velocity_est_", "_mm_s");
   if (reflex_columns) per_muscle(&MuscleColumns::reflex, "reflex_", "");
+  if (tension_reflex_columns) per_muscle(&MuscleColumns::tension_reflex, "tension_reflex_", "");
   per_muscle(&MuscleColumns::pressure_sensor, "pressure_sensor_", "_V");
   per_muscle(&MuscleColumns::gauge, "gauge_", "_V");
   per_muscle(&MuscleColumns::fiber_rate, "fiber_rate_", "_mm_s");

@@ -9,7 +9,9 @@
 //   force_<m>_N, length_<m>_mm      true line tension and PAM length (the encoder)
 //   length_est_<m>_mm               model-based estimate, Eq. (9)-(10)
 //   velocity_est_<m>_mm_s           the velocity the controller acted on, Eq. (11) or fiber
-//   reflex_<m>                      1 while the reflex window is open (stretch_reflex only)
+//   reflex_<m>                      1 while the stretch (Ia) reflex window is open (reflex kinds)
+//   tension_reflex_<m>              1 while the tension (Ib) reflex window is open (the kinds
+//                                   tension_reflex and stretch_tension_reflex)
 //   pressure_sensor_<m>_V, gauge_<m>_V, fiber_rate_<m>_mm_s   raw sensor readings
 //   p_meas_<m>_MPa, force_meas_<m>_N                          what the controller believes
 // The falling-mass scenarios' columns are exactly those of pamsim 0.1 (a pinned test).
@@ -34,7 +36,8 @@ struct Trajectory {
 inline constexpr std::size_t kNoColumn = static_cast<std::size_t>(-1);
 
 struct MuscleColumns {
-  std::size_t p_cmd, p, force, length, length_est, velocity_est, reflex = kNoColumn;
+  std::size_t p_cmd, p, force, length, length_est, velocity_est;
+  std::size_t reflex = kNoColumn, tension_reflex = kNoColumn;
   std::size_t pressure_sensor, gauge, fiber_rate, p_meas, force_meas;
 };
 
@@ -45,8 +48,10 @@ struct LogLayout {
   std::vector<MuscleColumns> muscle;    // per muscle, model order
 };
 
-// `hinge`: the joint's kind; `bodies`: the held bodies' names; `labels`: the muscles'.
+// `hinge`: the joint's kind; `bodies`: the held bodies' names; `labels`: the muscles';
+// `reflex_columns`, `tension_reflex_columns`: the controller has Ia, Ib reflexes.
 LogLayout make_log_layout(bool hinge, const std::vector<std::string>& bodies,
-                          const std::vector<std::string>& labels, bool reflex_columns);
+                          const std::vector<std::string>& labels, bool reflex_columns,
+                          bool tension_reflex_columns = false);
 
 }  // namespace pamsim

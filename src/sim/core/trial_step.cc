@@ -155,6 +155,9 @@ void TrialRun::log_row(double t) {
     row_[c.length_est] = units::m_to_mm(r.length_est_m);
     row_[c.velocity_est] = units::m_to_mm(out_.velocity_m_s[i]);
     if (c.reflex != kNoColumn) row_[c.reflex] = out_.reflex_active[i] ? 1.0 : 0.0;
+    if (c.tension_reflex != kNoColumn) {
+      row_[c.tension_reflex] = out_.tension_reflex_active[i] ? 1.0 : 0.0;
+    }
     row_[c.pressure_sensor] = r.pressure_sensor_v;
     row_[c.gauge] = r.gauge_v;
     row_[c.fiber_rate] = units::m_to_mm(r.fiber_rate_m_s);
