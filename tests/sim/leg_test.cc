@@ -15,6 +15,7 @@
 #include "base/input_error.h"
 #include "base/units.h"
 #include "pam_actuator/avbdl.h"
+#include "sim/core/calibration.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
 #include "sim/io/scenario_file.h"
@@ -88,6 +89,30 @@ TEST(LegTest, AWeakLegFallsAndTheFallEventSaysWhen) {
   EXPECT_GT(fall, 0.143) << "after the landing (a 100 mm free fall takes 0.143 s)";
   EXPECT_LT(fall, 1.0);
   EXPECT_EQ(r.summary.message, "ended by event fall");
+}
+
+// `pamsim calibrate` balances its joint with the model's other joints at their start keys
+// (it had left them at 0): the knee holds the shank and foot, whose lever turns with the
+// thigh, so the hip's start changes the knee's gravity torque
+double knee_gravity_torque_nm(const std::vector<std::string>& overrides) {
+  const Scenario sc = load_scenario(kScenarios + "landing.toml", overrides);
+  const TrialModel model = load_trial_model(sc);
+  CalibrationRequest req;
+  req.start_angle_rad = units::deg_to_rad(20.0);
+  req.pressure_agonist_pa = req.pressure_antagonist_pa = 0.4e6;
+  req.antagonist_deformation_m = 0.002;
+  ReflexPair knee;
+  knee.agonist = model.muscle_index(sc, "VAS");
+  knee.antagonist = model.muscle_index(sc, "BFS");
+  return solve_calibration(model, sc, knee, req).gravity_torque_nm;
+}
+
+TEST(LegTest, CalibrationPlacesTheOtherJointsAtTheirStartKeys) {
+  const double flexed = knee_gravity_torque_nm({"joints.hip.start_deg=60"});
+  const double crouched = knee_gravity_torque_nm({});   // hip 10
+  const double straight = knee_gravity_torque_nm({"joints.hip.start_deg=0"});
+  EXPECT_GT(std::fabs(flexed - crouched), 0.1 * std::fabs(crouched));
+  EXPECT_NE(crouched, straight);
 }
 
 // Issue 27 asks that Ia + Ib collapse the knee less than no reflex at the shipped height.

@@ -1,6 +1,7 @@
 // calibration.h: solve the fishing-line lengths of an antagonistic pair so that the arm
 // rests at the start angle (-36 deg in the paper, Sec. IV-D) with both PAMs at the
-// calibration pressures. (`pamsim calibrate`; the result is read back by model.calibration.)
+// calibration pressures, the model's other joints at their start keys. (`pamsim calibrate`;
+// the result is read back by model.calibration.)
 //
 // At rest the PAM torques balance gravity: sum_i r_i F_i = qfrc_bias, where r_i is the
 // actuator's moment arm on the joint (from MuJoCo) and F_i = -f_i the pulling actuator
