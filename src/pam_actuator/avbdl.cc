@@ -173,6 +173,11 @@ double static_force(const AvbdlParams& p, const Shape& shape, double p_pa, doubl
   return f;
 }
 
+// the free length's root to 2^-45; the tracked search's first step and its widenings
+constexpr int kFreeLengthBits = 45;
+constexpr double kFreeLengthFirstStep_m = 1e-6;
+constexpr int kFreeLengthWidenings = 16;
+
 double free_length(const AvbdlParams& p, const Shape& shape, double p_pa) {
   if (std::isnan(p_pa)) return p_pa;   // no length for no pressure: the trial diverges
   if (!(p_pa > 0.0)) return p.length_m;
@@ -190,8 +195,40 @@ double free_length(const AvbdlParams& p, const Shape& shape, double p_pa) {
   }
   std::uintmax_t iterations = 100;
   const auto [a, b] = boost::math::tools::toms748_solve(
-      force, lo, hi, boost::math::tools::eps_tolerance<double>(45), iterations);
+      force, lo, hi, boost::math::tools::eps_tolerance<double>(kFreeLengthBits), iterations);
   return 0.5 * (a + b);
+}
+
+// free_length searched from `near` (a trial's last root, FreeLengthTrack): outwards in
+// steps growing eightfold until the pull changes sign (it grows with the length), then TOMS
+// 748 in that bracket; the whole stroke's search where the steps leave the range it spans
+double free_length_near(const AvbdlParams& p, const Shape& shape, double p_pa, double near) {
+  const double lo = min_length(shape);
+  const double hi = p.bladder_diameter_m > 0.0 ? max_length(shape) : p.length_m;
+  if (!(p_pa > 0.0) || !(near > lo && near < hi)) return free_length(p, shape, p_pa);
+  const auto force = [&](double l) { return static_force(p, shape, p_pa, l); };
+  double a = near, fa = force(a);
+  const double direction = fa > 0.0 ? -1.0 : 1.0;   // a pull: the root is shorter
+  double step = kFreeLengthFirstStep_m;
+  for (int k = 0; k < kFreeLengthWidenings && fa != 0.0; ++k, step *= 8.0) {
+    const double b = a + direction * step;
+    if (!(b > lo && b < hi)) break;
+    const double fb = force(b);
+    if ((fb > 0.0) == (fa > 0.0) && fb != 0.0) {
+      a = b;
+      fa = fb;
+      continue;
+    }
+    std::uintmax_t iterations = 100;
+    const boost::math::tools::eps_tolerance<double> tolerance(kFreeLengthBits);
+    const auto [x, y] = direction < 0.0
+                            ? boost::math::tools::toms748_solve(force, b, a, fb, fa, tolerance,
+                                                                iterations)
+                            : boost::math::tools::toms748_solve(force, a, b, fa, fb, tolerance,
+                                                                iterations);
+    return 0.5 * (x + y);
+  }
+  return fa == 0.0 ? a : free_length(p, shape, p_pa);
 }
 
 }  // namespace
@@ -335,6 +372,19 @@ double avbdl_line_muscle_length(const AvbdlParams& p, const AvbdlShape& shape, d
   const double l = std::min(taut_length_m, max_length(shape));
   if (static_force(p, shape, p_pa, l) > 0.0) return taut_length_m;
   return std::max(taut_length_m, free_length(p, shape, p_pa));
+}
+
+double avbdl_line_muscle_length(const AvbdlParams& p, const AvbdlShape& shape, double p_pa,
+                                double taut_length_m, FreeLengthTrack* track) {
+  const double l = std::min(taut_length_m, max_length(shape));
+  if (static_force(p, shape, p_pa, l) > 0.0) return taut_length_m;
+  if (!(p_pa == track->pressure_pa)) {
+    track->length_m = std::isnan(track->length_m)
+                          ? free_length(p, shape, p_pa)
+                          : free_length_near(p, shape, p_pa, track->length_m);
+    track->pressure_pa = p_pa;
+  }
+  return std::max(taut_length_m, track->length_m);
 }
 
 }  // namespace pamsim

@@ -331,4 +331,17 @@ double avbdl_line_muscle_length(const AvbdlParams& params, double p_pa, double t
 double avbdl_line_muscle_length(const AvbdlParams& params, const AvbdlShape& shape,
                                 double p_pa, double taut_length_m);
 
+// A trial's last free length of one muscle and the pressure it was solved at (issue 29).
+// Given to the length below, a slack muscle's root is searched from the last one (a
+// pressure that moved little in a step moved the root little: a few evaluations of Eq. (25)
+// where a bracket over the whole stroke takes a dozen), and the same pressure again returns
+// it at once. The root agrees with the untracked one to the solver's tolerance (2^-45), not
+// bit for bit; one track per muscle per trial keeps trials deterministic.
+struct FreeLengthTrack {
+  double pressure_pa = std::numeric_limits<double>::quiet_NaN();
+  double length_m = std::numeric_limits<double>::quiet_NaN();
+};
+double avbdl_line_muscle_length(const AvbdlParams& params, const AvbdlShape& shape,
+                                double p_pa, double taut_length_m, FreeLengthTrack* track);
+
 }  // namespace pamsim

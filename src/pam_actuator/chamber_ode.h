@@ -60,6 +60,9 @@ class OdeSystem {
   virtual ~OdeSystem() = default;
   virtual int size() const = 0;
   virtual void rhs(double t, const double* y, double* ydot) = 0;
+  // How far from the diagonal dydot/dy can be non-zero (a system of independent blocks of
+  // k states: k - 1); size() - 1, a dense Jacobian, unless a system says less.
+  virtual int half_bandwidth() const { return size() - 1; }
 };
 
 // Thrown by rhs() for a trial state outside the model's domain (e.g. p <= 0 absolute).
@@ -93,6 +96,8 @@ class PneumaticOde : public OdeSystem {
 
   int size() const override { return states_per_muscle() * muscle_count(); }
   void rhs(double t, const double* y, double* ydot) override;
+  // each muscle's states depend on its own alone (a block of states_per_muscle())
+  int half_bandwidth() const override { return states_per_muscle() - 1; }
 
   int muscle_count() const { return static_cast<int>(braid_.size()); }
   // 1 (first_order), 2 (iso6358; regulator sensing the chamber), 3 (regulator sensing

@@ -3,8 +3,10 @@
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_band.h>
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sundials/sundials_version.h>
+#include <sunmatrix/sunmatrix_band.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <cstdlib>
@@ -59,11 +61,21 @@ CvodeIntegrator::CvodeIntegrator(OdeSystem& system, const CvodeOptions& options,
     check(CVodeSetUserData(cvode_, this), "CVodeSetUserData");
     check(CVodeSetMaxNumSteps(cvode_, options.max_steps_per_call), "CVodeSetMaxNumSteps");
 
-    // dense Newton: the systems are tiny (2 states per muscle)
-    matrix_ = SUNDenseMatrix(size_, size_, ctx_);
-    if (matrix_ == nullptr) throw IntegrationError("SUNDenseMatrix failed");
-    solver_ = SUNLinSol_Dense(y_, matrix_, ctx_);
-    if (solver_ == nullptr) throw IntegrationError("SUNLinSol_Dense failed");
+    // Newton with a banded Jacobian where the system's is (a muscle's states depend on its
+    // own: its difference quotients take half_bandwidth * 2 + 1 right-hand sides, not one
+    // per state, and its LU grows with the muscles, not their cube), else dense
+    const int band = system.half_bandwidth();
+    if (band < size_ - 1) {
+      matrix_ = SUNBandMatrix(size_, band, band, ctx_);
+      if (matrix_ == nullptr) throw IntegrationError("SUNBandMatrix failed");
+      solver_ = SUNLinSol_Band(y_, matrix_, ctx_);
+      if (solver_ == nullptr) throw IntegrationError("SUNLinSol_Band failed");
+    } else {
+      matrix_ = SUNDenseMatrix(size_, size_, ctx_);
+      if (matrix_ == nullptr) throw IntegrationError("SUNDenseMatrix failed");
+      solver_ = SUNLinSol_Dense(y_, matrix_, ctx_);
+      if (solver_ == nullptr) throw IntegrationError("SUNLinSol_Dense failed");
+    }
     check(CVodeSetLinearSolver(cvode_, solver_, matrix_), "CVodeSetLinearSolver");
   } catch (...) {
     free_all();

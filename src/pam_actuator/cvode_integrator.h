@@ -39,7 +39,8 @@ class IntegrationError : public std::runtime_error {
 std::string sundials_version();
 
 struct CvodeOptions {
-  CvodeMethod method = CvodeMethod::kBdf;  // BDF + dense Newton, or Adams + dense Newton
+  // BDF or Adams, with Newton on a dense or banded Jacobian (OdeSystem::half_bandwidth)
+  CvodeMethod method = CvodeMethod::kBdf;
   double relative_tolerance = 1e-6;
   double absolute_tolerance = 0.1;  // in the state's units (Pa here)
   long max_steps_per_call = 5000;   // CVodeSetMaxNumSteps

@@ -18,9 +18,10 @@
 //
 // Integration strategy (measured with bench/pneumatics_bench.cc, 2 muscles, 3 Hz motion,
 // a new command every 10 ms; accuracy against a rtol 1e-9 reference in pneumatics_test.cc):
-// - BDF with a dense Newton solver: the ISO 6358 flow function, linearised near pressure
-//   equilibrium, gives time constants down to ~1 ms at 1e-8 m^3/(s Pa) and ~50 cm^3 (less
-//   for a larger valve or smaller chamber), i.e. the size of the physics step: mildly stiff.
+// - BDF with a Newton solver (banded: one block per muscle): the ISO 6358 flow function,
+//   linearised near pressure equilibrium, gives time constants down to ~1 ms at 1e-8
+//   m^3/(s Pa) and ~50 cm^3 (less for a larger valve or smaller chamber), i.e. the size of
+//   the physics step: mildly stiff.
 // - A stop time at every step end: CVODE never runs past t + dt with this step's
 //   kinematics (causal; no stale-input overshoot to interpolate back from). So there is at
 //   least one CVODE step per physics step (~1.1 us of CVODE overhead each, here).

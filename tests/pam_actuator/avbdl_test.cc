@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "base/input_error.h"
+#include "base/no_value.h"
 #include "base/units.h"
 
 namespace pamsim {
@@ -343,6 +344,34 @@ TEST(AvbdlTest, EveryBadValueNamesItsKey) {
       EXPECT_EQ(m.find('\n'), std::string::npos) << m;
     }
   }
+}
+
+// A slack muscle's free length tracked over a trial's pressures (issue 29): each agrees with
+// the search over the whole stroke to the solvers' tolerance, whether the pressure crept (a
+// step's change) or jumped; the same pressure again answers the same length; a taut muscle
+// is its line's length and leaves the track alone; no pressure is as untracked
+TEST(AvbdlTest, ATrackedFreeLengthAgreesWithTheWholeSearch) {
+  const AvbdlParams p = with_friction(arm_pam());
+  const AvbdlShape shape = avbdl_shape(p);
+  const double slack = shape.min_length;   // the line's ends closer than any free length
+  FreeLengthTrack track;
+  std::vector<double> pressures;
+  for (int k = 0; k <= 500; ++k) pressures.push_back((1.0 + 0.01 * k) * kBar);   // 1 -> 6 bar
+  pressures.insert(pressures.end(), {1.5 * kBar, 6.5 * kBar, 0.2 * kBar});      // jumps
+  for (double pa : pressures) {
+    const double whole = avbdl_line_muscle_length(p, shape, pa, slack);
+    const double tracked = avbdl_line_muscle_length(p, shape, pa, slack, &track);
+    ASSERT_GT(whole, slack);
+    ASSERT_NEAR(tracked, whole, 1e-12 * whole) << pa / kBar << " bar";
+    ASSERT_EQ(avbdl_line_muscle_length(p, shape, pa, slack, &track), tracked) << "again";
+    ASSERT_EQ(track.pressure_pa, pa);
+  }
+  const FreeLengthTrack before = track;
+  const double taut = p.length_m;   // pulled straight at 0.2 bar: it pulls, the line is taut
+  EXPECT_EQ(avbdl_line_muscle_length(p, shape, 0.25 * kBar, taut, &track), taut);
+  EXPECT_EQ(track.length_m, before.length_m);
+  EXPECT_EQ(avbdl_line_muscle_length(p, shape, kNaN, slack, &track),
+            avbdl_line_muscle_length(p, shape, kNaN, slack));
 }
 
 // The shape derived once gives what each call derives for itself, to the bit; its memo

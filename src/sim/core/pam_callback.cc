@@ -168,12 +168,14 @@ double pam_length(const mjModel* m, const mjData* d, int id) {
   return taut;
 }
 
-double pam_muscle_length(const mjModel* m, const mjData* d, int id) {
+double pam_muscle_length(const mjModel* m, const mjData* d, int id, FreeLengthTrack* track) {
   // the plant's free length is a root solve, done only when the line is slack
   const double p = d->userdata[pam_userdata_index(m, id)];
   const PamLaw& law = pam_law(m, id);
   if (law.has_plant) {
-    return avbdl_line_muscle_length(law.plant, law.shape, p, pam_length(m, d, id));
+    const double taut = pam_length(m, d, id);
+    return track ? avbdl_line_muscle_length(law.plant, law.shape, p, taut, track)
+                 : avbdl_line_muscle_length(law.plant, law.shape, p, taut);
   }
   return std::max(pam_length(m, d, id), natural_length(law.spring, p));
 }

@@ -93,8 +93,10 @@ int pam_userdata_index(const mjModel* m, int actuator_id);
 double pam_length(const mjModel* m, const mjData* d, int actuator_id);
 // The muscle's real length [m]: pam_length while the line is taut, the free length when it
 // is slack (a slack muscle is not pulled below its free length). What the encoder, the
-// fiber sensor, the chamber volume and the error metrics see.
-double pam_muscle_length(const mjModel* m, const mjData* d, int actuator_id);
+// fiber sensor, the chamber volume and the error metrics see. A trial passes its muscle's
+// `track` (avbdl.h), so a slack muscle's free length is searched from its last one.
+double pam_muscle_length(const mjModel* m, const mjData* d, int actuator_id,
+                         FreeLengthTrack* track = nullptr);
 
 // Moves the actuator's history (Maxwell-slip elements, bladder relaxation) to the muscle's
 // length at this step, its pam_muscle_length (call once after each physics step, with the

@@ -133,6 +133,7 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
   pressure_pa_.resize(n_);
   command_pa_.resize(n_);
   muscle_length_m_.resize(n_);
+  free_length_.resize(n_);
   step_force_n_.resize(n_);
   peak_tension_n_.assign(n_, 0.0);
   history_.assign(n_, 0);
@@ -169,7 +170,7 @@ void TrialRun::start_state() {
   for (std::size_t i = 0; i < n_; ++i) {
     pneumatics_.set_command(static_cast<int>(i), start_p_pa_[i]);
     d_->userdata[i] = pneumatics_.pressure_pa(static_cast<int>(i));
-    muscle_length_m_[i] = pam_muscle_length(m_, d_, tm_.muscles[i].actuator);
+    muscle_length_m_[i] = pam_muscle_length(m_, d_, tm_.muscles[i].actuator, &free_length_[i]);
   }
 }
 
@@ -255,7 +256,8 @@ TrialObservation TrialRun::observe() const {
     o.pressure_pa.push_back(pneumatics_.pressure_pa(static_cast<int>(i)));
     o.command_pa.push_back(pneumatics_.command_pa(static_cast<int>(i)));
     o.force_n.push_back(-pam_actuator_force(m_, d_, act));
-    o.length_m.push_back(pam_muscle_length(m_, d_, act));
+    FreeLengthTrack track = free_length_[i];   // a look changes nothing in the trial
+    o.length_m.push_back(pam_muscle_length(m_, d_, act, &track));
     o.length_est_m.push_back(readings_[i].length_est_m);
     o.reflex_active.push_back(i < out_.reflex_active.size() ? out_.reflex_active[i] : 0);
   }

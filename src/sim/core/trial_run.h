@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "pam_actuator/avbdl.h"
 #include "pam_actuator/pneumatics.h"
 #include "reflex/sensing.h"
 #include "sim/core/trial.h"
@@ -95,6 +96,7 @@ class TrialRun {
   std::vector<double> pressure_pa_, command_pa_;
   double first_trigger_s_ = std::numeric_limits<double>::quiet_NaN();   // for the observer
   std::vector<double> muscle_length_m_;   // per muscle, at the last physics step
+  std::vector<FreeLengthTrack> free_length_;   // per muscle: its last free length (avbdl.h)
   std::vector<double> step_force_n_;      // per muscle, this physics step's pull (sensors)
   std::vector<double> peak_tension_n_;    // per muscle, the largest pull of any physics step
   std::vector<char> history_;             // per muscle: its plant has a history (slip, relaxation)

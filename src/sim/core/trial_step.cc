@@ -109,7 +109,7 @@ bool TrialRun::control_tick(double t) {
     const int act = tm_.muscles[i].actuator;
     truth_[i].pressure_pa = pneumatics_.pressure_pa(static_cast<int>(i));
     truth_[i].force_n = -pam_actuator_force(m_, d_, act);
-    truth_[i].length_m = pam_muscle_length(m_, d_, act);
+    truth_[i].length_m = pam_muscle_length(m_, d_, act, &free_length_[i]);
     p_tp_pa_[i] = sc_.muscles[tm_.muscles[i].spec].command.at(t);
   }
   sensors_.sample(truth_, &readings_);
@@ -193,7 +193,8 @@ bool TrialRun::physics_step(double t) {
   try {
     for (std::size_t i = 0; i < n_; ++i) {
       const int act = tm_.muscles[i].actuator;
-      const double taut = pam_length(m_, d_, act), length = pam_muscle_length(m_, d_, act);
+      const double taut = pam_length(m_, d_, act);
+      const double length = pam_muscle_length(m_, d_, act, &free_length_[i]);
       // (an extensible line's stretch moves the muscle apart from the tendon: its length's
       // rate too)
       const bool slack = taut < length, stretches = pam_line_axial_stiffness(m_, act) > 0.0;
