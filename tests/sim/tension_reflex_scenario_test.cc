@@ -100,6 +100,29 @@ TEST(TensionReflexScenarioTest, TheLogMarksTheIbWindowFromItsFirstTrigger) {
   EXPECT_EQ(log.at(log.rows() - 1, window), 0.0) << "the window closes";
 }
 
+// What an observer (the video) is shown: the Ib windows beside the Ia ones, as the log has
+// them; and watching a trial changes none of its bits
+class IbWatcher : public TrialObserver {
+ public:
+  double next_observation_time_s() const override { return 0.01 * shown; }
+  void observe(const TrialSnapshot& snapshot) override {
+    ++shown;
+    if (snapshot.tension_reflex_active && (*snapshot.tension_reflex_active)[0]) ++ib_open;
+  }
+  int shown = 0, ib_open = 0;
+};
+
+TEST(TensionReflexScenarioTest, AnObserverSeesTheIbWindowsAndChangesNothing) {
+  const Scenario sc = load_scenario(kScenarios + "drop_mass_heavy_ia_ib.toml");
+  const TrialModel model = load_trial_model(sc);
+  IbWatcher watcher;
+  TrialOptions options;
+  options.observer = &watcher;
+  const TrialResult watched = run_trial(model, sc, 3, options);
+  EXPECT_GE(watcher.ib_open, 15) << "the 0.2 s window, seen every 10 ms";
+  EXPECT_EQ(watched.trajectory.values, run("drop_mass_heavy_ia_ib.toml").trajectory.values);
+}
+
 // The shipped sweep of both gains reads: 12 x 12 points of the two gains, 3 seeds each
 TEST(TensionReflexScenarioTest, TheGainSweepIsAGridOfValidScenarios) {
   const SweepDefinition sweep = load_sweep(kScenarios + "sweep_ia_ib.toml");

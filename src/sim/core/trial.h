@@ -43,6 +43,7 @@ struct TrialSnapshot {
   const std::vector<double>* pressure_pa = nullptr;   // chamber pressures
   const std::vector<double>* command_pa = nullptr;    // valve commands
   const std::vector<char>* reflex_active = nullptr;   // as of the last control tick
+  const std::vector<char>* tension_reflex_active = nullptr;   // the Ib windows, likewise
   // the control tick at which a reflex window first opened, NaN before (first_trigger_time_s)
   double first_trigger_s = std::numeric_limits<double>::quiet_NaN();
 };

@@ -236,6 +236,7 @@ void TrialRun::show_observer() {
   snapshot.pressure_pa = &pressure_pa_;
   snapshot.command_pa = &command_pa_;
   snapshot.reflex_active = &out_.reflex_active;
+  snapshot.tension_reflex_active = &out_.tension_reflex_active;
   snapshot.first_trigger_s = first_trigger_s_;
   options_.observer->observe(snapshot);
   next_observation_s_ = options_.observer->next_observation_time_s() - kObservationToleranceS;

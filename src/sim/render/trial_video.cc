@@ -114,12 +114,16 @@ void set_y_range(mjvFigure* figure, double min, double max, double tick) {
   if (figure->range[1][1] <= figure->range[1][0]) figure->range[1][1] += static_cast<float>(tick);
 }
 
-// the muscles whose reflex window is open, or "off"
+// the muscles whose stretch (Ia) or tension (Ib) window is open ("VAS + SOL Ib"), or "off"
 std::string reflex_state(const TrialSnapshot& snap) {
   std::string state;
-  for (std::size_t i = 0; i < snap.reflex_active->size(); ++i) {
-    if ((*snap.reflex_active)[i]) state += (state.empty() ? "" : " + ") + (*snap.labels)[i];
-  }
+  const auto add = [&](const std::vector<char>* open, const char* suffix) {
+    for (std::size_t i = 0; open != nullptr && i < open->size(); ++i) {
+      if ((*open)[i]) state += (state.empty() ? "" : " + ") + (*snap.labels)[i] + suffix;
+    }
+  };
+  add(snap.reflex_active, "");
+  add(snap.tension_reflex_active, " Ib");
   return state.empty() ? "off" : state;
 }
 
