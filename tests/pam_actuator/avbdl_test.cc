@@ -348,16 +348,13 @@ TEST(AvbdlTest, EveryBadValueNamesItsKey) {
 
 // A slack muscle's free length tracked over a trial's pressures (issue 29): each agrees with
 // the search over the whole stroke to the solvers' tolerance, whether the pressure crept (a
-// step's change) or jumped; the same pressure again answers the same length; a taut muscle
-// is its line's length and leaves the track alone; no pressure is as untracked
-TEST(AvbdlTest, ATrackedFreeLengthAgreesWithTheWholeSearch) {
-  const AvbdlParams p = with_friction(arm_pam());
+// step's change) or jumped, for the law's bladder and for a tube (whose low pressures put
+// the root past L0); the same pressure again answers the same length; a taut muscle is its
+// line's length and leaves the track alone; after no pressure (NaN) the track starts over
+void expect_tracked_as_whole(const AvbdlParams& p, const std::vector<double>& pressures) {
   const AvbdlShape shape = avbdl_shape(p);
   const double slack = shape.min_length;   // the line's ends closer than any free length
   FreeLengthTrack track;
-  std::vector<double> pressures;
-  for (int k = 0; k <= 500; ++k) pressures.push_back((1.0 + 0.01 * k) * kBar);   // 1 -> 6 bar
-  pressures.insert(pressures.end(), {1.5 * kBar, 6.5 * kBar, 0.2 * kBar});      // jumps
   for (double pa : pressures) {
     const double whole = avbdl_line_muscle_length(p, shape, pa, slack);
     const double tracked = avbdl_line_muscle_length(p, shape, pa, slack, &track);
@@ -367,11 +364,27 @@ TEST(AvbdlTest, ATrackedFreeLengthAgreesWithTheWholeSearch) {
     ASSERT_EQ(track.pressure_pa, pa);
   }
   const FreeLengthTrack before = track;
-  const double taut = p.length_m;   // pulled straight at 0.2 bar: it pulls, the line is taut
+  const double taut = avbdl_max_length(p);   // pulled to the law's end: the line is taut
   EXPECT_EQ(avbdl_line_muscle_length(p, shape, 0.25 * kBar, taut, &track), taut);
   EXPECT_EQ(track.length_m, before.length_m);
-  EXPECT_EQ(avbdl_line_muscle_length(p, shape, kNaN, slack, &track),
-            avbdl_line_muscle_length(p, shape, kNaN, slack));
+  avbdl_line_muscle_length(p, shape, kNaN, slack, &track);
+  EXPECT_TRUE(std::isnan(track.pressure_pa));
+  EXPECT_NEAR(avbdl_line_muscle_length(p, shape, 3.0 * kBar, slack, &track),
+              avbdl_line_muscle_length(p, shape, 3.0 * kBar, slack), 1e-15);
+}
+
+TEST(AvbdlTest, ATrackedFreeLengthAgreesWithTheWholeSearch) {
+  std::vector<double> pressures;
+  for (int k = 0; k <= 500; ++k) pressures.push_back((1.0 + 0.01 * k) * kBar);   // 1 -> 6 bar
+  pressures.insert(pressures.end(), {1.5 * kBar, 6.5 * kBar, 0.2 * kBar});      // jumps
+  expect_tracked_as_whole(with_friction(arm_pam()), pressures);
+  AvbdlParams tube = with_friction(arm_pam());
+  tube.bladder_diameter_m = 0.6 * tube.diameter_m;
+  std::vector<double> low;
+  for (int k = 1; k <= 300; ++k) low.push_back(0.01 * k * kBar);   // 0.01 -> 3 bar
+  low.insert(low.end(), {0.02 * kBar, 2.0 * kBar});
+  ASSERT_GT(avbdl_free_length(tube, 0.05 * kBar), tube.length_m) << "a root past L0";
+  expect_tracked_as_whole(tube, low);
 }
 
 // The shape derived once gives what each call derives for itself, to the bit; its memo

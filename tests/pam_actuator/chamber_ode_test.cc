@@ -6,6 +6,7 @@
 
 #include <stdexcept>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -158,6 +159,47 @@ TEST(ChamberOdeTest, APlantsChamberHasItsAvbdlVolume) {
   EXPECT_DOUBLE_EQ(ode.volume_m3(1, 0.5), avbdl_volume(plant, l) + dead);
   EXPECT_DOUBLE_EQ(ode.volume_rate_m3_s(1, 0.5), avbdl_dvolume_dlength(plant, l) * -0.02);
   EXPECT_THROW(ode.set_plant_volume(2, plant), std::out_of_range);
+}
+
+// Each muscle's derivatives depend on its own states alone, in a block of
+// states_per_muscle() (what the banded Jacobian of cvode_integrator.cc relies on): moving
+// one state moves no other muscle's derivative by a bit, for every valve model and sensing
+TEST(ChamberOdeTest, EachMuscleIsABlockOfItsOwnStates) {
+  struct Case {
+    ValveModel model;
+    RegulatorSense sense;
+    int states;
+  };
+  for (const Case& c : {Case{ValveModel::kFirstOrder, RegulatorSense::kChamber, 1},
+                        Case{ValveModel::kIso6358, RegulatorSense::kChamber, 2},
+                        Case{ValveModel::kRegulator, RegulatorSense::kChamber, 2},
+                        Case{ValveModel::kRegulator, RegulatorSense::kOutlet, 3}}) {
+    PneumaticParams params;
+    params.regulator_sense = c.sense;
+    PneumaticOde ode(params, c.model, {table_one_braid(), table_one_braid(), table_one_braid()});
+    ASSERT_EQ(ode.states_per_muscle(), c.states);
+    ASSERT_EQ(ode.half_bandwidth(), c.states - 1);
+    std::vector<double> y(ode.size());
+    for (int i = 0; i < ode.muscle_count(); ++i) {
+      ode.set_command_abs(i, (3.0 + i) * 1e5);
+      ode.set_sensed_abs(i, (2.5 + i) * 1e5);
+      ode.set_kinematics(i, 0.0, 0.16 + 0.005 * i, 0.01 * (i - 1));
+      for (int k = 0; k < c.states; ++k) y[c.states * i + k] = (2.0 + 0.5 * i + 0.1 * k) * 1e5;
+      if (ode.valve_opening_index(i) >= 0) y[ode.valve_opening_index(i)] = 0.2 * (i - 1);
+    }
+    std::vector<double> base(ode.size()), moved(ode.size());
+    ode.rhs(0.0, y.data(), base.data());
+    for (int j = 0; j < ode.size(); ++j) {
+      std::vector<double> z = y;
+      z[j] += 0.01 * std::max(std::fabs(z[j]), 1.0);
+      ode.rhs(0.0, z.data(), moved.data());
+      for (int i = 0; i < ode.size(); ++i) {
+        if (i / c.states == j / c.states) continue;
+        ASSERT_EQ(moved[i], base[i]) << valve_model_name(c.model) << ": state " << j
+                                     << " moved derivative " << i;
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -118,29 +119,33 @@ TEST(LegTest, CalibrationPlacesTheOtherJointsAtTheirStartKeys) {
 // Issue 27 asks that Ia + Ib collapse the knee less than no reflex at the shipped height.
 // Behind the shipped ITV1000-class regulator (Mowgli 2's kind of valve: proportional
 // pressure-control valves on the robot) that is physically false: the impact is over about
-// 25 ms after touchdown, inside the regulator's 10 ms dead time and 20 ms lag, so the
-// collapse and the floor's push are the same with and without the reflexes (to 0.1 deg and
-// 1 N), while the reflexes do act on what follows (fewer bounces). This test pins that
-// finding; the next one the direct valve's, where the reflexes can act within the impact.
+// 25 ms after touchdown, inside the regulator's 10 ms dead time and 20 ms lag, so on every
+// seed the collapse and the floor's push are the same with and without the reflexes (to 0.1
+// deg and 1 N), while the Ia reflex does act on what follows (fewer bounces over five
+// seeds: a single seed's count can flip). The Ib reflex is silent on this landing (its
+// threshold is above the 100 mm landing's pulls). This test pins that finding; the next one
+// the direct valve's, where the reflexes can act within the impact.
 TEST(LegTest, BehindTheShippedRegulatorTheReflexesActOnlyAfterTheImpact) {
-  const auto land_with = [](const std::vector<std::string>& sets) {
-    const Scenario sc = load_scenario(kScenarios + "landing_reflex.toml", sets);
-    const TrialModel model = load_trial_model(sc);
-    return run_trial(model, sc, sc.seed);
-  };
-  const TrialResult none = land_with({"reflex.enabled=false"});
-  const TrialResult both = land_with({});
-  ASSERT_GT(both.summary.metric("reflex_triggers_VAS"), 0.0) << "the Ia reflex fires";
-  EXPECT_NEAR(both.summary.metric("knee_angle_max_deg"), none.summary.metric("knee_angle_max_deg"),
-              0.1);
-  EXPECT_NEAR(both.summary.metric("grf_max_N"), none.summary.metric("grf_max_N"), 1.0);
-  EXPECT_LT(both.summary.metric("grf_touchdowns"), none.summary.metric("grf_touchdowns"));
+  const Scenario on = load_scenario(kScenarios + "landing_reflex.toml");
+  const Scenario off = load_scenario(kScenarios + "landing_reflex.toml", {"reflex.enabled=false"});
+  const TrialModel model = load_trial_model(on);
+  double touchdowns_on = 0.0, touchdowns_off = 0.0;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const TrialSummary with = run_trial(model, on, seed).summary;
+    const TrialSummary without = run_trial(model, off, seed).summary;
+    ASSERT_GT(with.metric("reflex_triggers_VAS"), 0.0) << "the Ia reflex fires, seed " << seed;
+    EXPECT_NEAR(with.metric("knee_angle_max_deg"), without.metric("knee_angle_max_deg"), 0.1);
+    EXPECT_NEAR(with.metric("grf_max_N"), without.metric("grf_max_N"), 1.0);
+    touchdowns_on += with.metric("grf_touchdowns");
+    touchdowns_off += without.metric("grf_touchdowns");
+  }
+  EXPECT_LT(touchdowns_on, touchdowns_off);
 }
 
 // Behind a direct valve, with the gains scenarios/sweep_landing_gains.toml finds (Ia 0.00094,
 // Ib 0.0034), Ia + Ib collapses the knee less than no reflex on the 100 mm landing (29.45 deg
-// against 30.7 over 20 seeds, every seed below), where the Ia reflex alone collapses it more
-// (37.8): the Ib reflex takes back the Ia reflex's push on the rebound. Behind the shipped
+// against 30.7 over seeds 1-20, every one below; on seeds 1001-1020 two of 20 collapse more,
+// README), where the Ia reflex alone collapses it more (37.8): the Ib reflex takes back the Ia reflex's push on the rebound. Behind the shipped
 // regulator no reflex changes the collapse (README, "The leg").
 TEST(LegTest, BehindADirectValveIaAndIbCollapseTheKneeLessThanNoReflex) {
   const auto collapse = [](const std::vector<std::string>& sets) {

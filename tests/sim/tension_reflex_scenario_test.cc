@@ -39,6 +39,7 @@ TEST(TensionReflexScenarioTest, OnThePapersDropASilentIbReflexChangesNothing) {
   ASSERT_EQ(ia.summary.status, "ok");
   EXPECT_EQ(both.summary.metric("tension_triggers_ago"), 0.0);
   // the Ia trial's columns bit for bit; the Ib windows' columns (the Ia kind has none) zero
+  ASSERT_EQ(ia.trajectory.rows(), both.trajectory.rows());
   for (std::size_t c = 0; c < both.trajectory.columns.size(); ++c) {
     const std::string& name = both.trajectory.columns[c];
     const bool ib_column = name.rfind("tension_reflex_", 0) == 0;
@@ -48,7 +49,6 @@ TEST(TensionReflexScenarioTest, OnThePapersDropASilentIbReflexChangesNothing) {
       ASSERT_EQ(both.trajectory.at(row, c), expected) << name << " row " << row;
     }
   }
-  EXPECT_EQ(ia.trajectory.rows(), both.trajectory.rows());
   EXPECT_EQ(ia.summary.metric("peak_tension_ago_N"), both.summary.metric("peak_tension_ago_N"));
 }
 
@@ -92,7 +92,7 @@ TEST(TensionReflexScenarioTest, TheLogMarksTheIbWindowFromItsFirstTrigger) {
   for (std::size_t row = 0; row < log.rows() && first == log.rows(); ++row) {
     if (log.at(row, window) == 1.0) first = row;
   }
-  ASSERT_LT(first, log.rows()) << "no Ib window logged";
+  ASSERT_LE(first + 20, log.rows()) << "no Ib window logged, or too late";
   EXPECT_EQ(log.at(first, time), both.summary.metric("first_tension_trigger_time_s"));
   for (std::size_t row = first; row < first + 20; ++row) {
     ASSERT_EQ(log.at(row, window), 1.0) << row;

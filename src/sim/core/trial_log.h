@@ -14,7 +14,8 @@
 //                                   tension_reflex and stretch_tension_reflex)
 //   pressure_sensor_<m>_V, gauge_<m>_V, fiber_rate_<m>_mm_s   raw sensor readings
 //   p_meas_<m>_MPa, force_meas_<m>_N                          what the controller believes
-// The falling-mass scenarios' columns are exactly those of pamsim 0.1 (a pinned test).
+// The falling-mass scenarios' columns (the Ia reflex's) are exactly those of pamsim 0.1 (a
+// pinned test); the Ib kinds add their tension_reflex_<m> columns.
 #pragma once
 
 #include <cstddef>
