@@ -249,6 +249,17 @@ TEST(LegTest, TheSquatJumpLeavesTheFloor) {
   }
 }
 
+// What binding checks (a tendon's spans, the metric names against the model's sensors) is
+// part of the trial model: a sweep point that changes only those is bound, and checked, anew
+TEST(LegTest, SpansAndMetricSetsAreOfTheTrialModel) {
+  const Scenario base = load_scenario(kScenarios + "landing.toml");
+  EXPECT_TRUE(same_trial_model(base, load_scenario(kScenarios + "landing.toml")));
+  EXPECT_FALSE(same_trial_model(
+      base, load_scenario(kScenarios + "landing.toml", {"muscles.RF.spans=[\"hip\"]"})));
+  EXPECT_FALSE(same_trial_model(
+      base, load_scenario(kScenarios + "landing.toml", {"metrics=[\"tracking\"]"})));
+}
+
 TEST(LegTest, BadLegInputIsOneLineNamingTheKey) {
   pamsim_test::expect_each_named("landing.toml", {
       {{"joints.knee.start_deg=720"}, "joints.knee.start_deg"},

@@ -141,6 +141,14 @@ TEST(ScenarioKeysTest, BodyHoldAndEventKeysNameTheirKey) {
   });
 }
 
+// A start key on the calibrated joint is refused when model.joint names it (above) and when
+// it is the model's first hinge by default (drop_mass.toml names none)
+TEST(ScenarioKeysTest, AStartKeyOnTheDefaultCalibratedJointIsRefused) {
+  expect_each_named("drop_mass.toml", {
+      {{"joints.shoulder.start_deg=-30"}, "joints.shoulder.start_deg would move the start"},
+  });
+}
+
 TEST(ScenarioKeysTest, ReflexPairsNameKnownDistinctMuscles) {
   expect_each_named("drop_mass.toml", {
       {{"reflex.pairs=[[\"agonist\", \"biceps\"]]"}, "reflex.pairs"},

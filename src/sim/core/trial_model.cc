@@ -217,7 +217,8 @@ void set_joints(const Scenario& sc, TrialModel* tm) {
     if (!std::isnan(j.frictionloss)) m->dof_frictionloss[dof] = j.frictionloss;
     if (std::isnan(j.start)) continue;
     const std::string key = j.key + (j.rotational ? ".start_deg" : ".start_mm");
-    if (sc.has_start_position && j.joint == sc.joint) {
+    // the calibrated joint: model.joint's, or the default it falls back to
+    if (sc.has_start_position && m->jnt_qposadr[id] == tm->joint.qpos) {
       fail(sc, key, "would move the start that model.calibration sets (its start_angle_deg)");
     }
     const double* range = m->jnt_range + 2 * id;

@@ -31,7 +31,9 @@ bool same_trial_model(const Scenario& a, const Scenario& b) {
       append_bits(os, mu.line_length_m);
       append_bits(os, mu.line_axial_stiffness_n);
       append_bits(os, mu.command.at(0.0));
+      for (const std::string& joint : mu.spans) os << joint << ',';   // checked when bound
     }
+    for (const std::string& set : sc.metrics) os << set << ',';   // names checked when bound
     for (const BodyMassSpec& bm : sc.body_masses) {
       os << bm.body << ';';
       append_bits(os, bm.mass_kg);

@@ -181,7 +181,9 @@ bool TrialRun::physics_step(double t) {
   // from the last step's to this one, board_vibration.h)
   for (std::size_t i = 0; i < n_; ++i) {
     step_force_n_[i] = -d_->actuator_force[tm_.muscles[i].actuator];
-    peak_tension_n_[i] = std::max(peak_tension_n_[i], step_force_n_[i]);
+    // a NaN pull sticks, as the sensors' extremes do: a diverged trial reports no peak
+    double& peak = peak_tension_n_[i];
+    if (!std::isnan(peak) && !(step_force_n_[i] <= peak)) peak = step_force_n_[i];
   }
   if (sensors_.observes_forces()) sensors_.observe(step_force_n_);
 
