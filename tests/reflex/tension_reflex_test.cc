@@ -70,7 +70,7 @@ TEST(TensionReflexTest, ARisingTensionTriggersOnItsRateAtTheTickTheClosedFormGiv
   TensionReflex level_only(p, kDt);
   int fired = -1;
   for (int k = 0; k <= expected + 1; ++k) {
-    const double f = r * kDt * k;   // at most 100 * 0.01 * 12 N, under 60 N for this ramp
+    const double f = r * kDt * k;   // 10 N a tick: under the 60 N level for these few ticks
     ASSERT_LT(f, 60.0);
     rate.update(k * kDt, f);
     level_only.update(k * kDt, f);
@@ -89,8 +89,10 @@ TEST(TensionReflexTest, LatchHoldsTheTriggeringTensionAndAMissingReadingTriggers
   EXPECT_FALSE(reflex.triggered());
   EXPECT_DOUBLE_EQ(reflex.update(0.01, 75.0), 0.004e6 * 75.0);
   EXPECT_DOUBLE_EQ(reflex.update(0.02, 20.0), 0.004e6 * 75.0);
+  const double rate = reflex.rate_n_s();
+  ASSERT_TRUE(std::isfinite(rate));
   EXPECT_DOUBLE_EQ(reflex.update(0.03, kNaN), 0.004e6 * 75.0);
-  EXPECT_TRUE(std::isfinite(reflex.rate_n_s())) << "a NaN reading leaves the rate as it was";
+  EXPECT_EQ(reflex.rate_n_s(), rate) << "a NaN reading leaves the rate as it was";
 }
 
 TEST(TensionReflexTest, NotArmedNotTriggered) {

@@ -90,26 +90,16 @@ TEST(CliRunTest, BadInputIsOneLineNonZeroAndWritesNothing) {
   }
 }
 
-// The hardware's error sources (issue 25): a negative creep constant, a tolerance over 100 %,
-// a line diameter of zero, a loss factor of 1, a bladder relaxing in negative time: one line
-// naming the key, exit 2, no output.
-TEST(CliRunTest, BadHardwareKeysAreOneLineExitTwoAndWriteNothing) {
-  const fs::path out = fresh_dir("run_bad_hardware") / "new" / "out";
-  struct Case { std::string set, key; };
-  for (const Case& c : std::vector<Case>{
-           {"--set 'sensors.gauge.board.creep_weights=[-0.02]' "
-            "--set 'sensors.gauge.board.creep_times_s=[60]'",
-            "sensors.gauge.board.creep_weights[0]"},
-           {"--set 'sensors.fiber.creep_weights=[-0.02]' --set 'sensors.fiber.creep_times_s=[60]'",
-            "sensors.fiber.creep_weights[0]"},
-           {"--set sensors.gauge.tolerance_pct=150", "sensors.gauge.tolerance_pct"},
-           {"--set muscles.agonist.line_diameter_mm=0 --set muscles.agonist.line_modulus_MPa=2500",
-            "muscles.agonist.line_diameter_mm"},
-           {"--set sensors.gauge.board.loss_factor=1", "sensors.gauge.board.loss_factor"},
-           {"--set 'muscles.agonist.plant.bladder.relaxation_times_s=[-1]' "
-            "--set 'muscles.agonist.plant.bladder.relaxation_weights=[0.07]'",
-            "muscles.agonist.plant.bladder.relaxation_times_s: [0] must be > 0 s"}}) {
-    const CliResult r = run_pamsim("run scenarios/drop_mass.toml " + c.set + " --out " +
+// `pamsim run SCENARIO --set ...` for each case: exit 2, one line naming the key, and
+// nothing written (not even the output folder's parent)
+struct BadSet {
+  std::string set, key;
+};
+void expect_refused_writing_nothing(const std::string& scenario, const std::string& dir,
+                                    const std::vector<BadSet>& cases) {
+  const fs::path out = fresh_dir(dir) / "new" / "out";
+  for (const BadSet& c : cases) {
+    const CliResult r = run_pamsim("run scenarios/" + scenario + " " + c.set + " --out " +
                                    out.string());
     EXPECT_EQ(r.exit_code, 2) << c.set;
     EXPECT_EQ(line_count(r.err), 1) << c.set << ": " << r.err;
@@ -118,21 +108,30 @@ TEST(CliRunTest, BadHardwareKeysAreOneLineExitTwoAndWriteNothing) {
   }
 }
 
+// The hardware's error sources (issue 25): a negative creep constant, a tolerance over 100 %,
+// a line diameter of zero, a loss factor of 1, a bladder relaxing in negative time.
+TEST(CliRunTest, BadHardwareKeysAreOneLineExitTwoAndWriteNothing) {
+  expect_refused_writing_nothing("drop_mass.toml", "run_bad_hardware", {
+      {"--set 'sensors.gauge.board.creep_weights=[-0.02]' "
+       "--set 'sensors.gauge.board.creep_times_s=[60]'",
+       "sensors.gauge.board.creep_weights[0]"},
+      {"--set 'sensors.fiber.creep_weights=[-0.02]' --set 'sensors.fiber.creep_times_s=[60]'",
+       "sensors.fiber.creep_weights[0]"},
+      {"--set sensors.gauge.tolerance_pct=150", "sensors.gauge.tolerance_pct"},
+      {"--set muscles.agonist.line_diameter_mm=0 --set muscles.agonist.line_modulus_MPa=2500",
+       "muscles.agonist.line_diameter_mm"},
+      {"--set sensors.gauge.board.loss_factor=1", "sensors.gauge.board.loss_factor"},
+      {"--set 'muscles.agonist.plant.bladder.relaxation_times_s=[-1]' "
+       "--set 'muscles.agonist.plant.bladder.relaxation_weights=[0.07]'",
+       "muscles.agonist.plant.bladder.relaxation_times_s: [0] must be > 0 s"}});
+}
+
 // The reflex kinds of issue 27: an Ib threshold below zero, a reflex pair naming a muscle
-// twice: one line naming the key, exit 2, nothing written.
+// twice.
 TEST(CliRunTest, BadTensionReflexKeysAreOneLineExitTwoAndWriteNothing) {
-  const fs::path out = fresh_dir("run_bad_tension_reflex") / "new" / "out";
-  struct Case { std::string set, key; };
-  for (const Case& c : std::vector<Case>{
-           {"--set reflex.ib.f_thr_N=-1", "reflex.ib.f_thr_N must be > 0"},
-           {"--set 'reflex.pairs=[[\"agonist\", \"agonist\"]]'", "reflex.pairs"}}) {
-    const CliResult r = run_pamsim("run scenarios/drop_mass_heavy_ia_ib.toml " + c.set +
-                                   " --out " + out.string());
-    EXPECT_EQ(r.exit_code, 2) << c.set;
-    EXPECT_EQ(line_count(r.err), 1) << c.set << ": " << r.err;
-    EXPECT_NE(r.err.find(c.key), std::string::npos) << c.set << ": " << r.err;
-    EXPECT_FALSE(fs::exists(out.parent_path())) << c.set;
-  }
+  expect_refused_writing_nothing("drop_mass_heavy_ia_ib.toml", "run_bad_tension_reflex", {
+      {"--set reflex.ib.f_thr_N=-1", "reflex.ib.f_thr_N must be > 0"},
+      {"--set 'reflex.pairs=[[\"agonist\", \"agonist\"]]'", "reflex.pairs"}});
 }
 
 // Every regular file under `dir` with its bytes (folders as names), for before/after checks.

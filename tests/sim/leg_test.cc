@@ -55,7 +55,7 @@ TEST(LegTest, TheLegLandsBouncesAndStandsCrouched) {
   ASSERT_EQ(r.summary.status, "ok") << r.summary.message;
   const double weight_n = kLegMass_kg * 9.81;
   EXPECT_GT(r.summary.metric("grf_max_N"), 3.0 * weight_n) << "an impact, not a touch";
-  EXPECT_GE(r.summary.metric("grf_touchdowns"), 1.0);
+  EXPECT_GE(r.summary.metric("grf_touchdowns"), 2.0) << "it bounces";
   EXPECT_NEAR(r.summary.metric("trunk_z_max_mm"), 475.0 + 93.3, 0.1) << "it starts 100 mm up";
   // it stands at the end, crouched near its start, not collapsed onto its knee's limit
   EXPECT_NEAR(r.summary.metric("angle_final_deg"), 20.0, 5.0);
@@ -228,7 +228,7 @@ TEST(LegTest, TheLegHopsPeriodically) {
 }
 
 // From its deep crouch, held at 0.17 MPa, the push-off lifts the straight leg's sole clear of
-// the floor by more than 50 mm (94 mm without reflexes), with or without the reflexes, and it
+// the floor by more than 50 mm (96 mm without reflexes), with or without the reflexes, and it
 // lands without falling
 TEST(LegTest, TheSquatJumpLeavesTheFloor) {
   for (const char* reflexes : {"reflex.enabled=false", "reflex.enabled=true"}) {

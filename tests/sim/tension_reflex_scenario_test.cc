@@ -71,6 +71,9 @@ TEST(TensionReflexScenarioTest, OnTheHeavierDropIbUnloadsTheLineAndTheArmStillKe
   EXPECT_DOUBLE_EQ(ia.summary.metric("line_load_ago_pct"), peak(ia));
   EXPECT_GT(ia.summary.metric("line_load_ago_pct"), 100.0);
   EXPECT_LT(both.summary.metric("line_load_ago_pct"), 100.0);
+  // (at 100 N the per cent reads as newtons; another limit shows the division)
+  const TrialResult at_80 = run("drop_mass_heavy.toml", {"muscles.agonist.line_limit_N=80"});
+  EXPECT_DOUBLE_EQ(at_80.summary.metric("line_load_ago_pct"), 100.0 * peak(ia) / 80.0);
   // the metric is the largest pull of any physics step: at least every logged sample
   const Trajectory& log = both.trajectory;
   const std::size_t column = log.column("force_ago_N");
