@@ -219,7 +219,7 @@ void BM_LegBareMjStep(benchmark::State& state) {
   const long n_steps = loop.n_steps;
   for (auto _ : state) {
     mj_resetData(m, d);
-    for (const auto& [adr, value] : leg.start_qpos) d->qpos[adr] = value;
+    leg.place_at_start(loop.sc, d);
     for (std::size_t i = 0; i < leg.muscles.size(); ++i) d->userdata[i] = kFixedPressurePa;
     for (long step = 0; step < n_steps; ++step) mj_step(m, d);
     benchmark::DoNotOptimize(d->qpos[0]);

@@ -366,16 +366,15 @@ double avbdl_line_muscle_length(const AvbdlParams& p, double p_pa, double taut_l
 
 double avbdl_line_muscle_length(const AvbdlParams& p, const AvbdlShape& shape, double p_pa,
                                 double taut_length_m) {
-  // while Eq. (25) pulls at the line's length the muscle is that long; otherwise the line
-  // is slack and the muscle has contracted to where Eq. (25) is zero (a root solve, so
-  // only then)
-  const double l = std::min(taut_length_m, max_length(shape));
-  if (static_force(p, shape, p_pa, l) > 0.0) return taut_length_m;
-  return std::max(taut_length_m, free_length(p, shape, p_pa));
+  FreeLengthTrack none;   // no last root: the search over the whole stroke
+  return avbdl_line_muscle_length(p, shape, p_pa, taut_length_m, &none);
 }
 
 double avbdl_line_muscle_length(const AvbdlParams& p, const AvbdlShape& shape, double p_pa,
                                 double taut_length_m, FreeLengthTrack* track) {
+  // while Eq. (25) pulls at the line's length the muscle is that long; otherwise the line
+  // is slack and the muscle has contracted to where Eq. (25) is zero (a root solve, so
+  // only then)
   const double l = std::min(taut_length_m, max_length(shape));
   if (static_force(p, shape, p_pa, l) > 0.0) return taut_length_m;
   if (!(p_pa == track->pressure_pa)) {

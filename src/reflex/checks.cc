@@ -2,6 +2,7 @@
 #include "reflex/checks.h"
 
 #include <cmath>
+#include <utility>
 
 #include "base/input_error.h"
 
@@ -29,6 +30,24 @@ void require_cutoff(const std::string& key, double value, double control_hz) {
     fail(key, "0 (off) or in (0, " + format_value(nyquist) + "] Hz (sim.control_hz / 2)",
          value);
   }
+}
+
+void require_window(const std::string& prefix, double duration_s, double refractory_s,
+                    double arm_after_s, double dt) {
+  if (!(std::isfinite(duration_s) && duration_s >= dt * (1.0 - 1e-9))) {
+    fail(prefix + ".duration_s", ">= one control period (" + format_value(dt) + " s)",
+         duration_s);
+  }
+  require_non_negative(prefix + ".refractory_s", refractory_s);
+  const double max_ticks_s = 1e9 * dt;
+  for (const auto& [key, value] : {std::pair{".duration_s", duration_s},
+                                   std::pair{".refractory_s", refractory_s}}) {
+    if (!(value <= max_ticks_s)) {
+      fail(prefix + key, "at most " + format_value(max_ticks_s) + " s (1e9 control periods)",
+           value);
+    }
+  }
+  require_non_negative(prefix + ".arm_after_s", arm_after_s);
 }
 
 void require_adc(const std::string& prefix, int bits, double v_min, double v_max) {

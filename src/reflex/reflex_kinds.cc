@@ -47,9 +47,7 @@ TensionReflexParams read_tension(ConfigReader& in) {
   p.df_thr_N_s = in.get_double("reflex.ib.df_thr_N_s", p.df_thr_N_s);
   p.duration_s = in.get_double("reflex.ib.duration_s", p.duration_s);
   const std::string mode = in.get_string("reflex.ib.mode", to_string(p.mode));
-  in.check(mode == "follow" || mode == "latch", "reflex.ib.mode",
-           "must be \"follow\" or \"latch\", got \"" + mode + "\"");
-  p.mode = mode == "latch" ? ReflexMode::kLatch : ReflexMode::kFollow;
+  p.mode = in_file(in, [&] { return parse_reflex_mode(mode, "reflex.ib.mode"); });
   p.refractory_s = in.get_double("reflex.ib.refractory_s", p.refractory_s);
   p.arm_after_s = in.get_double("reflex.ib.arm_after_s", p.arm_after_s);
   p.rate_lowpass_hz = in.get_double("reflex.ib.rate_lowpass_hz", p.rate_lowpass_hz);

@@ -19,8 +19,8 @@ constexpr EnumName<ReflexMode> kModeNames[] = {{ReflexMode::kFollow, "follow"},
 
 const char* to_string(ReflexMode mode) { return name_of(kModeNames, mode); }
 
-ReflexMode parse_reflex_mode(const std::string& name) {
-  return parse_name(kModeNames, name, "reflex.mode");
+ReflexMode parse_reflex_mode(const std::string& name, const std::string& key) {
+  return parse_name(kModeNames, name, key);
 }
 
 ReflexWindow::ReflexWindow(double duration_s, double refractory_s, double arm_after_s,

@@ -35,8 +35,8 @@ enum class ReflexMode { kFollow, kLatch };
 
 // "follow" | "latch"
 const char* to_string(ReflexMode mode);
-// Throws InputError naming the key reflex.mode on anything else.
-ReflexMode parse_reflex_mode(const std::string& name);
+// Throws InputError naming `key` (reflex.mode, reflex.ib.mode) on anything else.
+ReflexMode parse_reflex_mode(const std::string& name, const std::string& key = "reflex.mode");
 
 // Scenario keys reflex.* (paper units, named). Defaults: Table II's model-based reflex.
 struct StretchReflexParams {

@@ -60,20 +60,7 @@ void validate(const StretchReflexControllerConfig& config) {
   }
   require_positive("reflex.v_thr_mm_s", reflex.v_thr_mm_s);
   require_non_negative("reflex.k_MPa_s_per_mm", reflex.k_MPa_s_per_mm);
-  if (!(std::isfinite(reflex.duration_s) && reflex.duration_s >= dt * (1.0 - 1e-9))) {
-    fail("reflex.duration_s", ">= one control period (" + format_value(dt) + " s)",
-         reflex.duration_s);
-  }
-  require_non_negative("reflex.refractory_s", reflex.refractory_s);
-  // both are counted in int control ticks (stretch_reflex.cc): a bound far below INT_MAX
-  const double max_ticks_s = 1e9 * dt;
-  for (const auto& [key, value] : {std::pair{"reflex.duration_s", reflex.duration_s},
-                                   std::pair{"reflex.refractory_s", reflex.refractory_s}}) {
-    if (!(value <= max_ticks_s)) {
-      fail(key, "at most " + format_value(max_ticks_s) + " s (1e9 control periods)", value);
-    }
-  }
-  require_non_negative("reflex.arm_after_s", reflex.arm_after_s);
+  require_window("reflex", reflex.duration_s, reflex.refractory_s, reflex.arm_after_s, dt);
   require_non_negative("reflex.min_tension_N", reflex.min_tension_n);
   if (config.tension) validate(config.ib, config.control_hz);
 

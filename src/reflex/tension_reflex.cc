@@ -14,20 +14,10 @@ void validate(const TensionReflexParams& p, double control_hz) {
   require_positive("reflex.ib.f_thr_N", p.f_thr_N);
   require_non_negative("reflex.ib.df_thr_N_s", p.df_thr_N_s);
   require_non_negative("reflex.ib.k_MPa_per_N", p.k_MPa_per_N);
-  const double dt = 1.0 / control_hz;
-  if (!(std::isfinite(p.duration_s) && p.duration_s >= dt * (1.0 - 1e-9) &&
-        p.duration_s <= 1e9 * dt)) {
-    fail("reflex.ib.duration_s", "in [one control period (" + format_value(dt) + " s), 1e9 of them]",
-         p.duration_s);
-  }
   if (p.mode != ReflexMode::kFollow && p.mode != ReflexMode::kLatch) {
     fail("reflex.ib.mode", "\"follow\" or \"latch\"", static_cast<int>(p.mode));
   }
-  require_non_negative("reflex.ib.refractory_s", p.refractory_s);
-  if (!(p.refractory_s <= 1e9 * dt)) {
-    fail("reflex.ib.refractory_s", "at most 1e9 control periods", p.refractory_s);
-  }
-  require_non_negative("reflex.ib.arm_after_s", p.arm_after_s);
+  require_window("reflex.ib", p.duration_s, p.refractory_s, p.arm_after_s, 1.0 / control_hz);
   require_cutoff("reflex.ib.rate_lowpass_hz", p.rate_lowpass_hz, control_hz);
 }
 

@@ -47,7 +47,7 @@ ArmCalibration solve_calibration(const TrialModel& tm, const Scenario& sc, const
   // gravity torque and moment arms at the start angle, at rest, every other joint at its
   // start key (joints.<j>.start_deg|mm; one on the calibrated joint is the request's angle
   // here, and refused when a scenario reads its calibration)
-  for (const auto& [adr, value] : tm.start_qpos) d->qpos[adr] = value;
+  tm.place_at_start(sc, d);
   d->qpos[tm.joint.qpos] = req.start_angle_rad;
   mj_forward(m, d);
   const int dof = tm.joint.dof;

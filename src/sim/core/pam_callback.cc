@@ -173,9 +173,9 @@ double pam_muscle_length(const mjModel* m, const mjData* d, int id, FreeLengthTr
   const double p = d->userdata[pam_userdata_index(m, id)];
   const PamLaw& law = pam_law(m, id);
   if (law.has_plant) {
-    const double taut = pam_length(m, d, id);
-    return track ? avbdl_line_muscle_length(law.plant, law.shape, p, taut, track)
-                 : avbdl_line_muscle_length(law.plant, law.shape, p, taut);
+    FreeLengthTrack none;   // no last root: the whole stroke's search
+    return avbdl_line_muscle_length(law.plant, law.shape, p, pam_length(m, d, id),
+                                    track ? track : &none);
   }
   return std::max(pam_length(m, d, id), natural_length(law.spring, p));
 }

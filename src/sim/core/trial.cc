@@ -151,8 +151,7 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
 
 void TrialRun::start_state() {
   // at rest at the start position; held bodies wait in place
-  for (const auto& [adr, value] : tm_.start_qpos) d_->qpos[adr] = value;
-  if (sc_.has_start_position) d_->qpos[tm_.joint.qpos] = sc_.start_position;
+  tm_.place_at_start(sc_, d_);
   mj_forward(m_, d_);
   for (std::size_t h = 0; h < tm_.holds.size(); ++h) {
     const BoundHold& b = tm_.holds[h];

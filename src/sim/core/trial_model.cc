@@ -236,8 +236,7 @@ void set_joints(const Scenario& sc, TrialModel* tm) {
 MjDataPtr start_state(const Scenario& sc, const TrialModel& tm) {
   const mjModel* m = tm.model.get();
   MjDataPtr data = make_data(m);
-  for (const auto& [adr, value] : tm.start_qpos) data->qpos[adr] = value;
-  if (sc.has_start_position) data->qpos[tm.joint.qpos] = sc.start_position;
+  tm.place_at_start(sc, data.get());
   for (std::size_t k = 0; k < tm.muscles.size(); ++k) {
     data->userdata[k] = sc.muscles[tm.muscles[k].spec].command.at(0.0);
   }

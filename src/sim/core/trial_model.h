@@ -68,6 +68,12 @@ struct TrialModel {
 
   // The muscle index of an actuator name, or -1.
   int muscle_index(const Scenario& scenario, const std::string& actuator) const;
+  // Puts the joints of `d` at their start: each joints.<joint>.start_* key's, then the
+  // calibrated joint at the scenario's start angle (when it has one).
+  void place_at_start(const Scenario& scenario, mjData* d) const {
+    for (const auto& [adr, value] : start_qpos) d->qpos[adr] = value;
+    if (scenario.has_start_position) d->qpos[joint.qpos] = scenario.start_position;
+  }
 };
 
 // Loads the model of `scenario` and binds everything it names. Throws InputError naming the
