@@ -6,7 +6,9 @@
 # models/pams/fitted_<m>.toml (strain gauge q and geometry copied from Table IV's file).
 # The drop-mass scenarios invert these fits; the leg's (models/pams/leg/plant_<m>.toml ->
 # models/pams/leg/fitted_<m>.toml) carry the arm agonist's gauge (Table IV's q) and their
-# plant's own geometry. Rerun after changing a plant file;
+# plant's own geometry; the arm's muscles as Table I builds them (models/pams/table1/plant_<m>.toml
+# -> models/pams/table1/fitted_<m>.toml, issue 25) Table IV's gauge and their plant's
+# identified braid angle. Rerun after changing a plant file;
 # tests/sim/cli_plant_test.cc checks that the committed files are what this script writes.
 #
 # Protocol: the arm's pressure range, 0.2-0.7 MPa in 0.1 MPa steps (the reaching task's
@@ -21,29 +23,42 @@ out="${2:+$(realpath "$2")}"
 cd "$root"
 csv_dir="${out:-renders/tensile}"
 out="${out:-models/pams}"
-mkdir -p "$csv_dir" "$out"
-for m in agonist antagonist; do
-  "$pamsim" tensile --plant "models/pams/plant_$m.toml" --pressures-MPa 0.2,0.3,0.4,0.5,0.6,0.7 \
+mkdir -p "$csv_dir" "$out" "$out/leg" "$out/table1"
+sensors="$(mktemp)"
+trap 'rm -f "$sensors"' EXIT
+
+# fit_plant PLANT CSV SENSORS FITTED [SAID]: the protocol's tensile test of PLANT into CSV,
+# the Eq. (2)-(3) fit with SENSORS' gauge and geometry into FITTED, whose provenance names
+# SAID in place of a temp SENSORS file
+fit_plant() {
+  "$pamsim" tensile --plant "$1" --pressures-MPa 0.2,0.3,0.4,0.5,0.6,0.7 \
     --max-deformation-mm 15 --noise-pressure-MPa 0.001 --noise-force-N 0.05 \
-    --noise-length-mm 0.01 --seed 1 -o "$csv_dir/plant_$m.csv"
-  "$pamsim" fit --model eq3 "$csv_dir/plant_$m.csv" \
-    --sensors-from "models/pams/table4_$m.toml" -o "$out/fitted_$m.toml"
+    --noise-length-mm 0.01 --seed 1 -o "$2" --force
+  "$pamsim" fit --model eq3 "$2" --sensors-from "$3" -o "$4" --force
+  if [ -n "${5:-}" ]; then sed -i "s|--sensors-from $3|--sensors-from $5|" "$4"; fi
+}
+
+for m in agonist antagonist; do
+  fit_plant "models/pams/plant_$m.toml" "$csv_dir/plant_$m.csv" "models/pams/table4_$m.toml" \
+    "$out/fitted_$m.toml"
 done
 # the leg's muscles (issue 27): the same protocol on each plant; the strain gauge is the arm
 # agonist's (Table IV q), the geometry the plant's own length and sleeve
-mkdir -p "$out/leg"
-sensors="$(mktemp)"
-trap 'rm -f "$sensors"' EXIT
 for m in IL GM RF VAS BFS GAS SOL TA; do
   length=$(sed -n 's/^length_mm = \([0-9.]*\).*/\1/p' "models/pams/leg/plant_$m.toml")
   diameter=$(sed -n 's/^diameter_mm = \([0-9.]*\).*/\1/p' "models/pams/leg/plant_$m.toml")
   sed -e "s/^length_mm = .*/length_mm = $length/" -e "s/^sleeve_diameter_mm = .*/sleeve_diameter_mm = $diameter/" \
     -e "s/^bladder_diameter_mm = .*/bladder_diameter_mm = $diameter/" models/pams/table4_agonist.toml > "$sensors"
-  "$pamsim" tensile --plant "models/pams/leg/plant_$m.toml" --pressures-MPa 0.2,0.3,0.4,0.5,0.6,0.7 \
-    --max-deformation-mm 15 --noise-pressure-MPa 0.001 --noise-force-N 0.05 \
-    --noise-length-mm 0.01 --seed 1 -o "$csv_dir/leg_$m.csv" --force
-  "$pamsim" fit --model eq3 "$csv_dir/leg_$m.csv" --sensors-from "$sensors" \
-    -o "$out/leg/fitted_$m.toml" --force
-  sed -i "s|--sensors-from $sensors|--sensors-from models/pams/table4_agonist.toml (q, with the plant geometry)|" \
-    "$out/leg/fitted_$m.toml"
+  fit_plant "models/pams/leg/plant_$m.toml" "$csv_dir/leg_$m.csv" "$sensors" "$out/leg/fitted_$m.toml" \
+    "models/pams/table4_agonist.toml (q, with the plant geometry)"
+done
+# the arm's muscles as Table I builds them (issue 25; models/pams/table1/, identified by
+# examples/table1): the arm's protocol; the strain gauge is Table IV's, the geometry the
+# plant's (its identified braid angle, not Table IV's assumed 25 deg)
+for m in agonist antagonist; do
+  angle=$(sed -n 's/^braid_angle_deg = \([0-9.]*\).*/\1/p' "models/pams/table1/plant_$m.toml")
+  sed -e "s/^braid_angle_deg = .*/braid_angle_deg = $angle        # [deg] the plant's (identified)/" \
+    "models/pams/table4_$m.toml" > "$sensors"
+  fit_plant "models/pams/table1/plant_$m.toml" "$csv_dir/table1_$m.csv" "$sensors" \
+    "$out/table1/fitted_$m.toml" "models/pams/table4_$m.toml (q; the braid angle of the plant)"
 done

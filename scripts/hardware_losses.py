@@ -2,7 +2,8 @@
 """hardware_losses.py: reruns README's "Findings" on the hardware's losses (issue 25, items 2
 and 3): the falling-mass experiment over 20 seeds with the braid friction as Maxwell-slip
 elements, the shoulder on a ball bearing's losses instead of the MJCF's damping, the
-bladders' rubber relaxing, and the fishing lines extensible (nylon, braided polyethylene). Each row is `pamsim run --trials 20`
+bladders' rubber relaxing, the fishing lines extensible (nylon, braided polyethylene), and the
+arm's muscles as Table I builds them (models/pams/table1, with and without the bearing). Each row is `pamsim run --trials 20`
 with `--set` overrides; the Maxwell-slip rows use the shipped plant files with their
 [friction] made "maxwell_slip" (travels 0.1 and 0.5 mm, an example: no source sizes them),
 written to a temp folder. Prints Markdown; writes it to OUT too.
@@ -21,6 +22,13 @@ SCENARIOS = [("model reflex (1/800)", "drop_mass.toml"),
              ("passive", "drop_mass_passive.toml")]
 # a ball bearing: SKF's M = 0.5 mu P d, mu = 0.0015, the lines' 30-60 N, an 8 mm bore
 BEARING = ["joints.shoulder.damping_N_m_s_per_rad=0", "joints.shoulder.frictionloss_N_m=0.0003"]
+
+
+# the arm's muscles as seeds/000 Table I builds them (a 4 mm tube in the sleeve), wall and
+# braid angle identified from Table IV (examples/table1), their own fits and calibration
+TABLE1 = [f'muscles.{m}.plant="../models/pams/table1/plant_{m}.toml"' for m in ("agonist", "antagonist")] + \
+         [f'model.{m}_params="../models/pams/table1/fitted_{m}.toml"' for m in ("agonist", "antagonist")] + \
+         ['model.calibration="../models/arm_2pam_table1_calibration.toml"']
 
 
 def line(diameter_mm, modulus_mpa):
@@ -61,7 +69,11 @@ def rows(folder):
             ("relaxing bladders (tan delta 0.05, 0.16-160 Hz)", RELAXING),
             ("ball bearing, Maxwell-slip and relaxing bladders", BEARING + slip + RELAXING),
             ("0.5 mm nylon lines (2.5 GPa)", line(0.5, 2500)),
-            ("0.5 mm braided PE lines (50 GPa)", line(0.5, 50000))]
+            ("0.5 mm braided PE lines (50 GPa)", line(0.5, 50000)),
+            ("Table I's muscles (a 4 mm tube in the sleeve, identified from Table IV)", TABLE1),
+            ("Table I's muscles on a ball bearing", TABLE1 + BEARING),
+            ("Table I's muscles on a ball bearing, 0.5 mm braided PE lines", TABLE1 + BEARING +
+             line(0.5, 50000))]
 
 
 def main():

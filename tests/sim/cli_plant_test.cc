@@ -40,7 +40,7 @@ double estimate_rmse_pct(const fs::path& out) {
 }
 
 // The drop scenarios' and the leg's estimators (models/pams/fitted_*.toml,
-// models/pams/leg/fitted_*.toml) are what the lab's pipeline
+// models/pams/leg/fitted_*.toml, models/pams/table1/fitted_*.toml) are what the lab's pipeline
 // (scripts/fit-estimators.sh) gives for the shipped plants today: a plant file changed
 // without refitting fails here. Every line but the provenance, which names the CSV.
 TEST(CliPlantTest, CommittedFittedEstimatorsAreWhatThePipelineWrites) {
@@ -49,7 +49,8 @@ TEST(CliPlantTest, CommittedFittedEstimatorsAreWhatThePipelineWrites) {
                           PAMSIM_BINARY + " " + out.string() + " > /dev/null 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
   for (const char* m : {"agonist", "antagonist", "leg/IL", "leg/GM", "leg/RF", "leg/VAS",
-                        "leg/BFS", "leg/GAS", "leg/SOL", "leg/TA"}) {
+                        "leg/BFS", "leg/GAS", "leg/SOL", "leg/TA", "table1/agonist",
+                        "table1/antagonist"}) {
     SCOPED_TRACE(m);
     // "leg/IL" -> leg/fitted_IL.toml
     std::string name = m;

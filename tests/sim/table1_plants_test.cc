@@ -1,0 +1,103 @@
+// table1_plants_test.cc: the arm's muscles as seeds/000 Table I builds them (issue 25, item
+// 1; models/pams/table1/): the shipped wall and braid angle are what `pamsim identify
+// examples/table1/identify.toml` gives from Table IV's laws, the example's tensile rows are
+// Table IV's law (its refit gives Table IV back), and the committed calibration is what
+// `pamsim calibrate` writes for these plants. The estimators' fits are checked with the other
+// plants' (cli_plant_test.cc).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "cli_util.h"
+#include "pam_actuator/pam_params.h"
+#include "pam_actuator/plant_params.h"
+#include "sim/io/calibration_file.h"
+
+namespace pamsim {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kSource = PAMSIM_SOURCE_DIR;
+
+// identify.csv's (identified, standard error) per key
+std::map<std::string, std::pair<double, double>> identified(const fs::path& csv) {
+  std::istringstream in(pamsim_test::read_file(csv));
+  std::string line;
+  std::getline(in, line);   // key,from,to,scale,start,identified,std_error,...
+  std::map<std::string, std::pair<double, double>> out;
+  while (std::getline(in, line)) {
+    std::istringstream row(line);
+    std::string cells[7];
+    for (std::string& c : cells) std::getline(row, c, ',');
+    out[cells[0]] = {std::stod(cells[5]), std::stod(cells[6])};
+  }
+  return out;
+}
+
+TEST(Table1PlantsTest, TheShippedWallsAndAnglesAreWhatTheExampleIdentifies) {
+  const fs::path out = pamsim_test::fresh_dir("table1_identify");
+  const pamsim_test::CliResult r = pamsim_test::run_pamsim(
+      "identify examples/table1/identify.toml --no-plot --quiet --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto found = identified(out / "identify.csv");
+  for (const char* m : {"agonist", "antagonist"}) {
+    SCOPED_TRACE(m);
+    const AvbdlParams shipped =
+        load_plant_params(kSource + "/models/pams/table1/plant_" + std::string(m) + ".toml").avbdl;
+    const std::string key = std::string("muscles.") + m + ".plant.geometry.";
+    ASSERT_EQ(found.count(key + "wall_thickness_mm"), 1u);
+    const auto [wall, wall_se] = found.at(key + "wall_thickness_mm");
+    const auto [angle, angle_se] = found.at(key + "braid_angle_deg");
+    // the files hold the result rounded well inside its standard error
+    EXPECT_NEAR(shipped.wall_thickness_m * 1e3, wall, 0.01);
+    EXPECT_NEAR(shipped.braid_angle_rad * 180.0 / M_PI, angle, 0.1);
+    EXPECT_LT(0.01, wall_se);
+    EXPECT_LT(0.1, angle_se);
+    // a tube in Table I's sleeve, not the sleeve-referenced bladder of the other plants
+    EXPECT_DOUBLE_EQ(shipped.bladder_diameter_m, 0.004);
+  }
+}
+
+TEST(Table1PlantsTest, TheExamplesTensileRowsAreTableIVsLaw) {
+  for (const char* m : {"agonist", "antagonist"}) {
+    SCOPED_TRACE(m);
+    const PamParams table4 = load_pam_params(kSource + "/models/pams/table4_" + std::string(m) + ".toml");
+    const PamParams refit = load_pam_params(kSource + "/examples/table1/recordings/table4_" +
+                                            std::string(m) + "_refit.toml");
+    // SI inside: the slope in m/Pa, the intercept in m; the coefficients to 1e-4 of their own (the rows have 6 digits)
+    EXPECT_NEAR(refit.spring.m_m_per_pa, table4.spring.m_m_per_pa, 1e-15);
+    EXPECT_NEAR(refit.spring.h_m, table4.spring.h_m, 1e-12);
+    for (std::size_t k = 0; k < refit.spring.coef.size(); ++k) {
+      EXPECT_NEAR(refit.spring.coef[k], table4.spring.coef[k], 1e-4 * std::abs(table4.spring.coef[k]));
+    }
+    EXPECT_FALSE(refit.geometry) << "no braid angle for the identification to contradict";
+    ASSERT_TRUE(refit.strain_gauge && table4.strain_gauge);
+    EXPECT_EQ(refit.strain_gauge->q_v_per_n, table4.strain_gauge->q_v_per_n);
+  }
+}
+
+TEST(Table1PlantsTest, TheCommittedCalibrationIsWhatCalibrateWrites) {
+  const fs::path out = pamsim_test::fresh_dir("table1_calibrate");
+  std::string args = "calibrate scenarios/drop_mass_passive.toml -o " + (out / "c.toml").string();
+  for (const char* m : {"agonist", "antagonist"}) {
+    args += std::string(" --set 'muscles.") + m + ".plant=\"../models/pams/table1/plant_" + m +
+            ".toml\"' --set 'model." + m + "_params=\"../models/pams/table1/fitted_" + m + ".toml\"'";
+  }
+  const pamsim_test::CliResult r = pamsim_test::run_pamsim(args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const ArmCalibration fresh = load_calibration((out / "c.toml").string());
+  const ArmCalibration shipped = load_calibration(kSource + "/models/arm_2pam_table1_calibration.toml");
+  ASSERT_EQ(fresh.lines.size(), 2u);
+  ASSERT_EQ(shipped.lines.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(fresh.lines[k].actuator, shipped.lines[k].actuator);
+    EXPECT_NEAR(fresh.lines[k].line_length_m, shipped.lines[k].line_length_m, 1e-9);
+  }
+}
+
+}  // namespace
+}  // namespace pamsim
