@@ -64,9 +64,11 @@ def main():
         write_atomically(csv_path, "pressure_MPa,deformation_mm,force_N,length_mm,direction\n" +
                          "\n".join(rows(table4_law(muscle))) + "\n")
         refit = os.path.join(folder, f"table4_{muscle}_refit.toml")
-        table4 = os.path.join(ROOT, "models", "pams", f"table4_{muscle}.toml")
-        subprocess.run([pamsim, "fit", "--model", "eq3", csv_path, "--sensors-from", table4,
-                        "--force", "-o", refit], check=True, stdout=subprocess.DEVNULL)
+        # from the repository's root, so the provenance names the files as the repository does
+        subprocess.run([os.path.abspath(pamsim), "fit", "--model", "eq3",
+                        os.path.relpath(csv_path, ROOT), "--sensors-from",
+                        f"models/pams/table4_{muscle}.toml", "--force", "-o", refit],
+                       check=True, stdout=subprocess.DEVNULL, cwd=ROOT)
         with open(refit) as f:   # the gauge's q stays; the geometry (its assumed braid) goes
             text = re.sub(r"\n\[geometry\][^\[]*", "\n", f.read())
         write_atomically(refit, text)
