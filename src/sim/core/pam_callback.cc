@@ -169,15 +169,19 @@ double pam_length(const mjModel* m, const mjData* d, int id) {
 }
 
 double pam_muscle_length(const mjModel* m, const mjData* d, int id, FreeLengthTrack* track) {
+  return pam_muscle_length_at(m, d, id, pam_length(m, d, id), track);
+}
+
+double pam_muscle_length_at(const mjModel* m, const mjData* d, int id, double taut,
+                            FreeLengthTrack* track) {
   // the plant's free length is a root solve, done only when the line is slack
   const double p = d->userdata[pam_userdata_index(m, id)];
   const PamLaw& law = pam_law(m, id);
   if (law.has_plant) {
     FreeLengthTrack none;   // no last root: the whole stroke's search
-    return avbdl_line_muscle_length(law.plant, law.shape, p, pam_length(m, d, id),
-                                    track ? track : &none);
+    return avbdl_line_muscle_length(law.plant, law.shape, p, taut, track ? track : &none);
   }
-  return std::max(pam_length(m, d, id), natural_length(law.spring, p));
+  return std::max(taut, natural_length(law.spring, p));
 }
 
 mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int id) {

@@ -97,6 +97,10 @@ double pam_length(const mjModel* m, const mjData* d, int actuator_id);
 // `track` (avbdl.h), so a slack muscle's free length is searched from its last one.
 double pam_muscle_length(const mjModel* m, const mjData* d, int actuator_id,
                          FreeLengthTrack* track = nullptr);
+// The same, with the step's pam_length already at hand (`taut` [m]): an extensible line's
+// length is a root solve, so a step that needs both solves it once.
+double pam_muscle_length_at(const mjModel* m, const mjData* d, int actuator_id, double taut,
+                            FreeLengthTrack* track = nullptr);
 
 // Moves the actuator's history (Maxwell-slip elements, bladder relaxation) to the muscle's
 // length at this step, its pam_muscle_length (call once after each physics step, with the

@@ -196,7 +196,7 @@ bool TrialRun::physics_step(double t) {
     for (std::size_t i = 0; i < n_; ++i) {
       const int act = tm_.muscles[i].actuator;
       const double taut = pam_length(m_, d_, act);
-      const double length = pam_muscle_length(m_, d_, act, &free_length_[i]);
+      const double length = pam_muscle_length_at(m_, d_, act, taut, &free_length_[i]);
       // (an extensible line's stretch moves the muscle apart from the tendon: its length's
       // rate too)
       const bool slack = taut < length, stretches = pam_line_axial_stiffness(m_, act) > 0.0;
