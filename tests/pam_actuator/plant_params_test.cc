@@ -69,22 +69,26 @@ TEST(PlantParamsTest, ShippedAgonistPlantLoads) {
 }
 
 // Every shipped plant file loads, with the dimensions its header gives (Table I where it
-// says so) and the friction rule of plant_agonist.toml: A0 = 0.030 pi R0^2 lengthening,
-// 0.024 pi R0^2 shortening, A1 = 2.4 A0 (to the file's rounding in mm^2).
+// says so: PAMs A-C with Table I's tube inside the sleeve, 0 where the sleeve is the
+// bladder's reference) and the friction rule of plant_agonist.toml: A0 = 0.030 pi R0^2
+// lengthening, 0.024 pi R0^2 shortening, A1 = 2.4 A0 (to the file's rounding in mm^2).
 TEST(PlantParamsTest, ShippedPlantsHaveTheirStatedDimensionsAndFrictionRule) {
-  struct Shipped { const char* file; double length_mm, diameter_mm; bool silicone; };
-  for (const Shipped& s : {Shipped{"plant_agonist.toml", 180, 10.0, false},
-                           Shipped{"plant_antagonist.toml", 180, 16.1, false},
-                           Shipped{"plant_pam_a.toml", 216, 19.9, false},
-                           Shipped{"plant_pam_b.toml", 211, 13.4, false},
-                           Shipped{"plant_pam_c.toml", 141, 13.4, false},
-                           Shipped{"plant_pam_d.toml", 212, 19.0, true}}) {
+  struct Shipped { const char* file; double length_mm, diameter_mm, tube_mm; bool silicone; };
+  for (const Shipped& s : {Shipped{"plant_agonist.toml", 180, 10.0, 0.0, false},
+                           Shipped{"plant_antagonist.toml", 180, 16.1, 0.0, false},
+                           Shipped{"plant_pam_a.toml", 216, 19.9, 6.0, false},
+                           Shipped{"plant_pam_b.toml", 211, 13.4, 4.0, false},
+                           Shipped{"plant_pam_c.toml", 141, 13.4, 4.0, false},
+                           Shipped{"plant_pam_d.toml", 212, 19.0, 0.0, true},
+                           Shipped{"table1/plant_agonist.toml", 180, 16.0, 4.0, false},
+                           Shipped{"table1/plant_antagonist.toml", 180, 16.1, 4.0, false}}) {
     SCOPED_TRACE(s.file);
     const PlantParams plant =
         load_plant_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/" + s.file);
     EXPECT_FALSE(plant.source.empty());
     EXPECT_NEAR(plant.avbdl.length_m, s.length_mm * 1e-3, 1e-12);
     EXPECT_NEAR(plant.avbdl.diameter_m, s.diameter_mm * 1e-3, 1e-12);
+    EXPECT_NEAR(plant.avbdl.bladder_diameter_m, s.tube_mm * 1e-3, 1e-12);
     EXPECT_EQ(plant.avbdl.bladder.c10_pa,
               (s.silicone ? kSiliconeElastosilM4601 : kNaturalRubberTreloar).c10_pa);
     const double area_mm2 = units::kPi * std::pow(s.diameter_mm / 2.0, 2);
