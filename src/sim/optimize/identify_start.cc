@@ -1,8 +1,8 @@
 // identify_start.cc: start_values of identify_outputs.h: each parameter's value in the model
 // as it stands (the base scenario with the file's overrides), where identification starts
-// from: a sensor's neutral value, a plant's or the pneumatics file's field from that file, a
-// joint's losses and a body's mass from the loaded model, any other key from the scenario
-// (its value or default).
+// from: a sensor's neutral value, a plant's field as the scenario changes it (else as its
+// file gives it), the pneumatics file's field from that file, a joint's losses and a body's
+// mass from the loaded model, any other key from the scenario (its value or default).
 #include <cmath>
 
 #include "base/config_reader.h"
@@ -20,6 +20,17 @@ double file_value(const std::string& file, const std::string& path) {
   const toml::table root = parse_toml_file(file);
   const auto node = root.at_path(path);
   return node && node.is_number() ? node.value<double>().value_or(kNaN) : kNaN;
+}
+
+// a plant's field at dotted `path`: the scenario's own change of it (muscles.<m>.plant as a
+// table, or a --set of the field), else the plant file's
+double plant_value(const MuscleSpec& m, const std::string& path) {
+  if (!m.plant_changes.empty()) {
+    const toml::table changes = parse_toml_text(m.plant_changes, m.key + ".plant");
+    const auto node = changes.at_path(path);
+    if (node && node.is_number()) return node.value<double>().value_or(kNaN);
+  }
+  return file_value(m.plant_file, path);
 }
 
 // joints.<j>.damping_* / frictionloss_*, bodies.<b>.mass_kg: the bound model's
@@ -60,7 +71,7 @@ double start_of(const IdentifyDefinition& def, std::size_t i, const Scenario& sc
   if (parts.size() > 3 && parts[0] == "muscles" && parts[2] == "plant") {
     for (const MuscleSpec& m : sc.muscles) {
       if (m.actuator == parts[1] && !m.plant_file.empty()) {
-        return file_value(m.plant_file, key.substr(("muscles." + parts[1] + ".plant.").size()));
+        return plant_value(m, key.substr(("muscles." + parts[1] + ".plant.").size()));
       }
     }
   }
