@@ -57,7 +57,7 @@ done
 # plant's (its identified braid angle, not Table IV's assumed 25 deg)
 for m in agonist antagonist; do
   angle=$(sed -n 's/^braid_angle_deg = \([0-9.]*\).*/\1/p' "models/pams/table1/plant_$m.toml")
-  sed -e "s/^braid_angle_deg = .*/braid_angle_deg = $angle        # [deg] the plant's (identified)/" \
+  sed -e "s/^braid_angle_deg = .*/braid_angle_deg = $angle   # [deg] the plant's (identified)/" \
     "models/pams/table4_$m.toml" > "$sensors"
   fit_plant "models/pams/table1/plant_$m.toml" "$csv_dir/table1_$m.csv" "$sensors" \
     "$out/table1/fitted_$m.toml" "models/pams/table4_$m.toml (q; the braid angle of the plant)"

@@ -26,9 +26,9 @@ BEARING = ["joints.shoulder.damping_N_m_s_per_rad=0", "joints.shoulder.frictionl
 
 # the arm's muscles as seeds/000 Table I builds them (a 4 mm tube in the sleeve), wall and
 # braid angle identified from Table IV (examples/table1), their own fits and calibration
-TABLE1 = [f'muscles.{m}.plant="../models/pams/table1/plant_{m}.toml"' for m in ("agonist", "antagonist")] + \
-         [f'model.{m}_params="../models/pams/table1/fitted_{m}.toml"' for m in ("agonist", "antagonist")] + \
-         ['model.calibration="../models/arm_2pam_table1_calibration.toml"']
+TABLE1 = [f'{key}="../models/pams/table1/{kind}_{m}.toml"' for m in ("agonist", "antagonist")
+          for key, kind in ((f"muscles.{m}.plant", "plant"), (f"model.{m}_params", "fitted"))]
+TABLE1 += ['model.calibration="../models/arm_2pam_table1_calibration.toml"']
 
 
 def line(diameter_mm, modulus_mpa):

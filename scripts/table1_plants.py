@@ -53,11 +53,13 @@ def table1_plant(shipped, sleeve_mm, tube_mm, wall_mm):
     text = re.sub(r"^wall_thickness_mm = [0-9.]+", f"wall_thickness_mm = {wall_mm}", text,
                   flags=re.M)
     silicone = 'material = "silicone"' in text
-    # a plant built with its tube already (PAMs A-C): the tube's lines are written anew below
-    head, bladder = text.split("[bladder]", 1)
-    bladder = re.sub(r'^(law = "gent_gent"|diameter_mm = )[^\n]*\n( +#[^\n]*\n)*', "",
-                     bladder, flags=re.M)
-    text = head + "[bladder]" + bladder
+    # a plant built with its tube already (PAMs A-C): the [bladder] table's law and tube lines
+    # (and their comments' continuation lines) are written anew below
+    head, rest = text.split("\n[bladder]\n", 1)
+    end = rest.find("\n[")
+    bladder, tail = (rest, "") if end < 0 else (rest[:end + 1], rest[end + 1:])
+    bladder = re.sub(r"^(law|diameter_mm) = [^\n]*\n( +#[^\n]*\n)*", "", bladder, flags=re.M)
+    text = head + "\n[bladder]\n" + bladder + tail
     text = re.sub(r"^material = .*$", ('material = "silicone"' if silicone else
                                        'material = "natural_rubber"\nlaw = "gent_gent"') +
                   f"\ndiameter_mm = {tube_mm}", text, flags=re.M)

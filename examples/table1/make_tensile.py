@@ -8,7 +8,7 @@ protocol scripts/fit-estimators.sh runs on the plants (the arm's 0.2-0.7 MPa in 
 steps; 2.5 mm steps from the natural length l_n(p) = h + m p to 15 mm and back): force
 (a3 p d + a2 p + a1 d + a0) d at length l_n(p) + d, without noise or hysteresis (a fit has
 neither). It also writes each law refitted from its own rows (`pamsim fit`), which is Table
-IV's law without a [geometry] table: identify.toml's base scenario needs an estimator, and
+IV's law without a [geometry] table: identify_table1.toml's base scenario needs an estimator, and
 one that names no braid angle lets the identification move the plant's (its strain
 gauge's q is Table IV's).
 
@@ -21,6 +21,8 @@ import os
 import re
 import subprocess
 import sys
+import tempfile
+import tomllib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -30,10 +32,9 @@ DEFORMATIONS_MM = [2.5 * k for k in range(7)]   # 0 .. 15 mm
 
 def table4_law(muscle):
     """(m, h, a0, a1, a2, a3) of models/pams/table4_<muscle>.toml's [spring] table."""
-    with open(os.path.join(ROOT, "models", "pams", f"table4_{muscle}.toml")) as f:
-        text = f.read()
-    return {k: float(re.search(rf"^{k} = (\S+)", text, re.M).group(1))
-            for k in ("m", "h", "a0", "a1", "a2", "a3")}
+    with open(os.path.join(ROOT, "models", "pams", f"table4_{muscle}.toml"), "rb") as f:
+        spring = tomllib.load(f)["spring"]
+    return {k: float(spring[k]) for k in ("m", "h", "a0", "a1", "a2", "a3")}
 
 
 def rows(law):
@@ -44,7 +45,8 @@ def rows(law):
         back = DEFORMATIONS_MM[-2::-1]
         for direction, steps in (("loading", DEFORMATIONS_MM), ("unloading", back)):
             for d in steps:
-                f = (law["a3"] * p * d + law["a2"] * p + law["a1"] * d + law["a0"]) * d   # Eq. (3)
+                # Eq. (3)
+                f = (law["a3"] * p * d + law["a2"] * p + law["a1"] * d + law["a0"]) * d
                 out.append(f"{p:g},{d:g},{f:.6g},{natural + d:.6g},{direction}")
     return out
 
@@ -56,22 +58,24 @@ def write_atomically(path, text):
 
 
 def main():
-    pamsim = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "src", "sim", "pamsim")
+    default = os.path.join(ROOT, "build", "src", "sim", "pamsim")
+    pamsim = sys.argv[1] if len(sys.argv) > 1 else default
     folder = os.path.join(HERE, "recordings")
     os.makedirs(folder, exist_ok=True)
     for muscle in ("agonist", "antagonist"):
         csv_path = os.path.join(folder, f"tensile_{muscle}.csv")
         write_atomically(csv_path, "pressure_MPa,deformation_mm,force_N,length_mm,direction\n" +
                          "\n".join(rows(table4_law(muscle))) + "\n")
-        refit = os.path.join(folder, f"table4_{muscle}_refit.toml")
-        # from the repository's root, so the provenance names the files as the repository does
-        subprocess.run([os.path.abspath(pamsim), "fit", "--model", "eq3",
-                        os.path.relpath(csv_path, ROOT), "--sensors-from",
-                        f"models/pams/table4_{muscle}.toml", "--force", "-o", refit],
-                       check=True, stdout=subprocess.DEVNULL, cwd=ROOT)
-        with open(refit) as f:   # the gauge's q stays; the geometry (its assumed braid) goes
-            text = re.sub(r"\n\[geometry\][^\[]*", "\n", f.read())
-        write_atomically(refit, text)
+        with tempfile.TemporaryDirectory() as tmp:
+            fitted = os.path.join(tmp, "refit.toml")
+            # from the repository's root: the provenance names the files as the repository does
+            subprocess.run([os.path.abspath(pamsim), "fit", "--model", "eq3",
+                            os.path.relpath(csv_path, ROOT), "--sensors-from",
+                            f"models/pams/table4_{muscle}.toml", "-o", fitted],
+                           check=True, stdout=subprocess.DEVNULL, cwd=ROOT)
+            with open(fitted) as f:   # the gauge's q stays; the geometry (its braid) goes
+                text = re.sub(r"\n\[geometry\][^\[]*", "\n", f.read())
+        write_atomically(os.path.join(folder, f"table4_{muscle}_refit.toml"), text)
         print(f"wrote {csv_path}")
 
 

@@ -81,7 +81,8 @@ TEST(PlantParamsTest, ShippedPlantsHaveTheirStatedDimensionsAndFrictionRule) {
                            Shipped{"plant_pam_c.toml", 141, 13.4, 4.0, false},
                            Shipped{"plant_pam_d.toml", 212, 19.0, 0.0, true},
                            Shipped{"table1/plant_agonist.toml", 180, 16.0, 4.0, false},
-                           Shipped{"table1/plant_antagonist.toml", 180, 16.1, 4.0, false}}) {
+                           Shipped{"table1/plant_antagonist.toml", 180, 16.1, 4.0,
+                                   false}}) {
     SCOPED_TRACE(s.file);
     const PlantParams plant =
         load_plant_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/" + s.file);
@@ -115,10 +116,14 @@ TEST(PlantParamsTest, ShippedPlantsHaveTheirStatedDimensionsAndFrictionRule) {
 // length, the braid stretched onto it (0.1 MPa here), short of the fibre length.
 TEST(PlantParamsTest, FreeLengthIsWhereTheLawStopsPulling) {
   for (const char* file : {"plant_agonist.toml", "plant_antagonist.toml", "plant_pam_a.toml",
-                           "plant_pam_b.toml", "plant_pam_c.toml", "plant_pam_d.toml"}) {
+                           "plant_pam_b.toml", "plant_pam_c.toml", "plant_pam_d.toml",
+                           "table1/plant_agonist.toml", "table1/plant_antagonist.toml"}) {
     SCOPED_TRACE(file);
     const AvbdlParams p =
         load_plant_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/" + file).avbdl;
+    const std::string name = file;
+    // PAMs A-C's tubes (1.0 mm walls) have not met the braid at 0.1 MPa
+    const bool slack_at_0_1 = name.rfind("plant_pam_", 0) == 0 && name != "plant_pam_d.toml";
     const double neutral = avbdl_braid(p).fibre_length_m / std::sqrt(3.0);
     const double longest = p.bladder_diameter_m > 0.0 ? avbdl_max_length(p) : p.length_m;
     double previous = longest;
@@ -130,6 +135,7 @@ TEST(PlantParamsTest, FreeLengthIsWhereTheLawStopsPulling) {
       EXPECT_GT(avbdl_static_force(p, p_pa, past), 0.0) << p_mpa << " MPa";
       EXPECT_GT(free, neutral);
       EXPECT_LT(free, previous) << p_mpa << " MPa";
+      if (slack_at_0_1 && p_mpa == 0.1) EXPECT_GT(free, p.length_m);
       previous = free;
     }
   }

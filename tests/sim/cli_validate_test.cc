@@ -60,10 +60,13 @@ TEST(CliValidateTest, LengthEstimationWritesEveryPamLawAndWeight) {
   // (PAMs A-C as Table I builds them, issue 25) shows here, and the README is rerun with it
   const std::map<std::string, double> readme_rmse = {{"A", 0.438}, {"B", 0.459}, {"C", 0.458},
                                                      {"D", 0.475}};
+  int pinned = 0;
   for (std::size_t i = 1; i < rows.size(); ++i) {
     if (rows[i][1] != "eq3" || rows[i][2] != "5") continue;
     EXPECT_NEAR(std::stod(rows[i][5]), readme_rmse.at(rows[i][0]), 0.0005) << rows[i][0];
+    ++pinned;
   }
+  EXPECT_EQ(pinned, 4) << "PAMs A-D, Eq. (3), 5 kg";
   const std::string md = read_file(out / "table3.md");
   EXPECT_NE(md.find("| Eq. (5) |"), std::string::npos);
   EXPECT_NE(md.find("(1.72 / 0.861)"), std::string::npos) << "Table III's PAM-A Eq. (3) beside";

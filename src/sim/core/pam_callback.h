@@ -97,8 +97,9 @@ double pam_length(const mjModel* m, const mjData* d, int actuator_id);
 // `track` (avbdl.h), so a slack muscle's free length is searched from its last one.
 double pam_muscle_length(const mjModel* m, const mjData* d, int actuator_id,
                          FreeLengthTrack* track = nullptr);
-// The same, with the step's pam_length already at hand (`taut` [m]): an extensible line's
-// length is a root solve, so a step that needs both solves it once.
+// The same, with the step's pam_length already at hand (`taut` [m], which must be
+// pam_length(m, d, actuator_id) of this same state): an extensible line's length is a root
+// solve, so a step that needs both solves it once.
 double pam_muscle_length_at(const mjModel* m, const mjData* d, int actuator_id, double taut,
                             FreeLengthTrack* track = nullptr);
 
