@@ -60,6 +60,8 @@ def write_atomically(path, text):
 def main():
     default = os.path.join(ROOT, "build", "src", "sim", "pamsim")
     pamsim = sys.argv[1] if len(sys.argv) > 1 else default
+    if not os.access(pamsim, os.X_OK):
+        sys.exit(f"make_tensile.py: {pamsim}: no pamsim there (build it, or give its path)")
     folder = os.path.join(HERE, "recordings")
     os.makedirs(folder, exist_ok=True)
     for muscle in ("agonist", "antagonist"):
@@ -69,10 +71,12 @@ def main():
         with tempfile.TemporaryDirectory() as tmp:
             fitted = os.path.join(tmp, "refit.toml")
             # from the repository's root: the provenance names the files as the repository does
-            subprocess.run([os.path.abspath(pamsim), "fit", "--model", "eq3",
-                            os.path.relpath(csv_path, ROOT), "--sensors-from",
-                            f"models/pams/table4_{muscle}.toml", "-o", fitted],
-                           check=True, stdout=subprocess.DEVNULL, cwd=ROOT)
+            done = subprocess.run([os.path.abspath(pamsim), "fit", "--model", "eq3",
+                                   os.path.relpath(csv_path, ROOT), "--sensors-from",
+                                   f"models/pams/table4_{muscle}.toml", "-o", fitted],
+                                  stdout=subprocess.DEVNULL, cwd=ROOT)
+            if done.returncode != 0:   # pamsim fit has said why, in one line
+                sys.exit(f"make_tensile.py: pamsim fit exited {done.returncode}")
             with open(fitted) as f:   # the gauge's q stays; the geometry (its braid) goes
                 text = re.sub(r"\n\[geometry\][^\[]*", "\n", f.read())
         write_atomically(os.path.join(folder, f"table4_{muscle}_refit.toml"), text)
