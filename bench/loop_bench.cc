@@ -2,6 +2,10 @@
 // trial (3000 physics steps of 1 ms), all in one run so the ratios are meaningful:
 //   BM_BareMjStep           mj_step alone on the same arm (the PAM force callback included,
 //                           pressures fixed at 0.4 MPa, the ball held until 1 s then dropped)
+//   BM_AffineActuatorMjStep the same loop with each PAM MuJoCo's own affine actuator (its
+//                           force linearised at the start): the floor, no callback
+//   BM_PamForceCallback     the force callback alone (ns per call) on the arm's AVBDL agonist,
+//                           the pressure moved each call so no memo answers it
 //   BM_TrialLoop/passive    run_trial: + CVODE pneumatics, sensors, controller and logging
 //   BM_TrialLoop/reflex     the same with the stretch reflex on (/reflex_ideal on the
 //                           ideal plant; /reflex_maxwell_slip and /reflex_nylon_lines with
@@ -17,8 +21,10 @@
 // right-hand-side evaluations per physics step; trials_per_s for the batch.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "sim/core/pam_callback.h"
 #include "sim/core/runner.h"
@@ -76,19 +82,17 @@ struct BareLoop {
   long n_steps;
 };
 
-void BM_BareMjStep(benchmark::State& state) {
-  BareLoop loop("drop_mass.toml");
+// The drop-mass trial's physics alone on model `m` (the arm's or a variant of it): the
+// calibrated angle, fixed pressures, the ball held above the basket until the release, then
+// dropped into it; the run skipped with an error if it diverged or missed the basket.
+void drop_loop(benchmark::State& state, const BareLoop& loop, const mjModel* m) {
   const Scenario& sc = loop.sc;
   const TrialModel& arm = loop.tm;
-  const mjModel* m = loop.m;
   mjData* d = loop.d;
-  const long n_steps = loop.n_steps;
   const BoundHold& ball = arm.holds.at(0);
   const double drop_time_s = sc.event("release")->when.at_s;
   const int basket = mj_name2id(m, mjOBJ_BODY, "basket");
-
   for (auto _ : state) {
-    // the trial's initial state: calibrated angle, fixed pressures, ball above the basket
     mj_resetData(m, d);
     d->qpos[arm.joint.qpos] = sc.start_position;
     for (std::size_t i = 0; i < arm.muscles.size(); ++i) d->userdata[i] = kFixedPressurePa;
@@ -96,9 +100,7 @@ void BM_BareMjStep(benchmark::State& state) {
     const double* floor = d->site_xpos + 3 * ball.site;
     const double hold_pos[3] = {floor[0], floor[1],
                                 floor[2] + sc.holds.at(0).height_m + ball.radius_m};
-
-    // hold until the release, then let the ball fall into the basket
-    for (long step = 0; step < n_steps; ++step) {
+    for (long step = 0; step < loop.n_steps; ++step) {
       const double t = step * sc.timestep_s;
       if (!(t >= drop_time_s - 1e-12)) hold_at(ball, d, hold_pos);
       mj_step(m, d);
@@ -110,9 +112,73 @@ void BM_BareMjStep(benchmark::State& state) {
   } else if (!bodies_touch(m, d, ball.body, basket)) {
     state.SkipWithError("bare mj_step loop: the ball did not land in the basket");
   }
-  report_steps(state, n_steps);
+  report_steps(state, loop.n_steps);
+}
+
+void BM_BareMjStep(benchmark::State& state) {
+  BareLoop loop("drop_mass.toml");
+  drop_loop(state, loop, loop.m);
 }
 BENCHMARK(BM_BareMjStep)->Unit(benchmark::kMillisecond);
+
+// The bare loop's floor: each PAM actuator replaced by MuJoCo's own affine bias, its force
+// linearised about the start state (F0 + k (L - L0), k = dF/dL there), so mj_step calls no
+// user callback while the arm, held by springs of the muscles' stiffness, moves much as it
+// does with them (the ball is dropped the same way, so the contacts are alike).
+void BM_AffineActuatorMjStep(benchmark::State& state) {
+  BareLoop loop("drop_mass.toml");
+  const TrialModel& arm = loop.tm;
+  MjModelPtr copy(mj_copyModel(nullptr, loop.m));
+  mjModel* m = copy.get();
+  mjData* d = loop.d;
+  const auto start = [&](double offset_rad) {
+    mj_resetData(loop.m, d);
+    d->qpos[arm.joint.qpos] = loop.sc.start_position + offset_rad;
+    for (std::size_t i = 0; i < arm.muscles.size(); ++i) d->userdata[i] = kFixedPressurePa;
+    mj_forward(loop.m, d);
+  };
+  std::vector<double> force_lo, length_lo;
+  start(-1e-3);
+  for (const BoundMuscle& b : arm.muscles) {
+    force_lo.push_back(d->actuator_force[b.actuator]);
+    length_lo.push_back(d->actuator_length[b.actuator]);
+  }
+  start(0.0);
+  for (std::size_t i = 0; i < arm.muscles.size(); ++i) {
+    const int a = arm.muscles[i].actuator;
+    const double f0 = d->actuator_force[a], l0 = d->actuator_length[a];
+    const double k = (f0 - force_lo[i]) / (l0 - length_lo[i]);
+    m->actuator_biastype[a] = mjBIAS_AFFINE;
+    mjtNum* bias = m->actuator_biasprm + static_cast<long>(a) * mjNBIAS;
+    std::fill(bias, bias + mjNBIAS, 0.0);
+    bias[0] = f0 - k * l0;
+    bias[1] = k;
+  }
+  drop_loop(state, loop, m);
+}
+BENCHMARK(BM_AffineActuatorMjStep)->Unit(benchmark::kMillisecond);
+
+// The PAM force callback alone, on the drop-mass arm's agonist (the AVBDL plant with its
+// friction) at the start state; the chamber pressure steps by 1 Pa each call so that every
+// call computes the law (a physics step calls it once per muscle).
+void BM_PamForceCallback(benchmark::State& state) {
+  BareLoop loop("drop_mass.toml");
+  const TrialModel& arm = loop.tm;
+  mjData* d = loop.d;
+  arm.place_at_start(loop.sc, d);
+  for (std::size_t i = 0; i < arm.muscles.size(); ++i) d->userdata[i] = kFixedPressurePa;
+  mj_forward(loop.m, d);
+  const int agonist = arm.muscles.at(0).actuator;
+  long call = 0;
+  for (auto _ : state) {
+    d->userdata[0] = kFixedPressurePa + static_cast<double>(call++ % 1000);
+    benchmark::DoNotOptimize(pam_actuator_force(loop.m, d, agonist));
+  }
+  if (!(pam_actuator_force(loop.m, d, agonist) < 0.0)) {
+    state.SkipWithError("the agonist pulls nothing at the start state");
+  }
+}
+BENCHMARK(BM_PamForceCallback)->Unit(benchmark::kNanosecond);
 
 // Variants of a scenario's hardware (issue 25): none, the plants' braid friction as
 // Maxwell-slip elements (travels 0.1 and 0.5 mm), 0.5 mm nylon lines (E 2.5 GPa), the

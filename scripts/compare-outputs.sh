@@ -23,7 +23,10 @@ root=$(pwd)
 run_all() {
   local pamsim=$1 out=$2
   mkdir -p "$out"
-  for s in drop_mass drop_mass_fiber drop_mass_ideal drop_mass_passive pulley_sine_5kg reaching; do
+  # every shipped run scenario (the arm, the pulley rig, the leg's eight muscles)
+  for s in drop_mass drop_mass_fiber drop_mass_heavy drop_mass_heavy_ia_ib drop_mass_heavy_ib \
+           drop_mass_ideal drop_mass_passive pulley_sine_5kg pulley_sine_10kg reaching \
+           landing landing_reflex hopping squat_jump; do
     "$pamsim" run "scenarios/$s.toml" --out "$out/run_$s" --no-plot > "$out/run_$s.stdout"
   done
   "$pamsim" run scenarios/drop_mass.toml --trials 4 --threads 2 --out "$out/run_trials" \

@@ -20,12 +20,11 @@ using pamsim_test::load_inline;
 
 using pamsim_test::kSliderXml;
 
-// The slider with `slots` user slots per actuator, loaded as "slider<slots>.xml".
-MjModelPtr slider_with_slots(int slots) {
+// The slider with `userdata` values of d->userdata, loaded as "slider.xml".
+MjModelPtr slider_with_userdata(int userdata) {
   std::string xml = kSliderXml;
-  const std::string n = std::to_string(slots);
-  xml.replace(xml.find("nuser_actuator=\"11\""), 19, "nuser_actuator=\"" + n + "\"");
-  return load_inline(xml.c_str(), ("slider" + n + ".xml").c_str());
+  xml.replace(xml.find("nuserdata=\"2\""), 13, "nuserdata=\"" + std::to_string(userdata) + "\"");
+  return load_inline(xml.c_str(), "slider.xml");
 }
 
 class PamCallbackTest : public ::testing::Test {
@@ -90,36 +89,72 @@ TEST_F(PamCallbackTest, PullsOnlyAndMovesTheSliderTowardShorter) {
   EXPECT_LT(data_->qacc[0], 0.0);
 }
 
-TEST_F(PamCallbackTest, RejectsModelsWithoutRoomForParameters) {
-  constexpr char kSmall[] = R"(<mujoco><size nuser_actuator="3"/><worldbody><body>
+// Only a user-bias tendon actuator with room for its pressure in userdata is a PAM; a plant
+// or a line's stiffness needs a bound spring law first.
+TEST_F(PamCallbackTest, RejectsActuatorsThatCannotBePams) {
+  constexpr char kNoRoom[] = R"(<mujoco><worldbody><body>
     <joint name="j" type="slide"/><geom size="0.1" mass="1"/></body></worldbody>
     <tendon><fixed name="t"><joint joint="j" coef="1"/></fixed></tendon>
     <actuator><general tendon="t" biastype="user"/></actuator></mujoco>)";
-  MjModelPtr small = load_inline(kSmall, "small.xml");
-  ASSERT_TRUE(small);
-  EXPECT_THROW(store_pam_in_model(small.get(), 0, spring_, 0.1, 0, "small.xml"), InputError);
-  // 11 slots hold the spring law, not a plant
+  MjModelPtr no_room = load_inline(kNoRoom, "small.xml");
+  ASSERT_TRUE(no_room);
+  EXPECT_THROW(store_pam_in_model(no_room.get(), 0, spring_, 0.1, 0, "small.xml"), InputError);
+  std::string affine = kSliderXml;
+  affine.replace(affine.find("biastype=\"user\""), 15, "biastype=\"affine\"");
+  MjModelPtr not_user = load_inline(affine.c_str(), "affine.xml");
+  ASSERT_TRUE(not_user);
+  EXPECT_THROW(store_pam_in_model(not_user.get(), 0, spring_, 0.1, 0, "affine.xml"), InputError);
+  MjModelPtr unbound = load_inline(kSliderXml, "slider.xml");
   try {
-    store_plant_in_model(model_.get(), 0, AvbdlParams{}, -1, "slider.xml");
-    ADD_FAILURE() << "a plant was stored in 11 slots";
+    store_plant_in_model(unbound.get(), 0, AvbdlParams{}, -1, "slider.xml");
+    ADD_FAILURE() << "a plant was bound to an actuator with no spring law";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("slider.xml: <size nuser_actuator> must be >= 28"),
+    EXPECT_NE(std::string(e.what()).find("slider.xml: actuator 0 is not a bound PAM"),
               std::string::npos) << e.what();
   }
+  EXPECT_THROW(store_line_stiffness_in_model(unbound.get(), 0, 300.0, "slider.xml"), InputError);
 }
 
-// The same slider with room for a plant: the actuator force is the AVBDL law's (Eq. (25)),
+// The binding belongs to the model: a copy (copy_model) pulls with the same law, a rebinding
+// is seen at once by a thread that has evaluated the old one, an unbound actuator pulls
+// nothing, and a deleted model's bindings are gone.
+TEST_F(PamCallbackTest, TheBindingFollowsTheModelItsCopiesAndItsRebindings) {
+  const double p = units::mpa_to_pa(0.4), l = natural_length(spring_, p) + 0.010;
+  const double pull = -actuator_force(l, p);
+  MjModelPtr copy = copy_model(model_.get());
+  MjDataPtr d = make_data(copy.get());
+  mj_copyData(d.get(), model_.get(), data_.get());
+  mj_forward(copy.get(), d.get());
+  EXPECT_EQ(-d->actuator_force[0], pull) << "the copy pulls with the original's law";
+
+  store_pam_in_model(model_.get(), 0, spring_, kLineLength + 0.005, 1, "slider.xml");
+  EXPECT_NEAR(-actuator_force(l + 0.005, p), pull, 1e-9 * pull) << "the longer line, seen";
+  mj_forward(copy.get(), d.get());
+  EXPECT_EQ(-d->actuator_force[0], pull) << "the copy keeps the law it was given";
+
+  const mjModel* deleted = copy.get();
+  copy.reset();
+  EXPECT_EQ(find_muscle(deleted, 0), nullptr);
+  MjModelPtr unbound = load_inline(kSliderXml, "slider.xml");
+  MjDataPtr du = make_data(unbound.get());
+  du->qpos[0] = l + kLineLength;
+  du->userdata[1] = p;
+  mj_forward(unbound.get(), du.get());
+  EXPECT_EQ(du->actuator_force[0], 0.0);
+}
+
+// The same slider with a plant: the actuator force is the AVBDL law's (Eq. (25)),
 // pull only, and the plant's parameters read back exactly.
 TEST_F(PamCallbackTest, APlantActuatorPullsWithTheAvbdlLaw) {
-  MjModelPtr m = slider_with_slots(28);
+  MjModelPtr m = load_inline(kSliderXml, "slider.xml");
   ASSERT_TRUE(m);
   AvbdlParams plant = avbdl_params_from_geometry(0.18, 0.010, units::deg_to_rad(25.0), 0.002,
                                                  kNaturalRubberTreloar);
   plant.friction.extension.force_n = 0.5;
-  store_pam_in_model(m.get(), 0, spring_, kLineLength, 1, "slider28.xml");
+  store_pam_in_model(m.get(), 0, spring_, kLineLength, 1, "slider.xml");
   AvbdlParams none;
   EXPECT_FALSE(pam_plant_from_model(m.get(), 0, &none)) << "the spring law until a plant is stored";
-  store_plant_in_model(m.get(), 0, plant, -1, "slider28.xml");
+  store_plant_in_model(m.get(), 0, plant, -1, "slider.xml");
   AvbdlParams back;
   ASSERT_TRUE(pam_plant_from_model(m.get(), 0, &back));
   EXPECT_EQ(back.wall_thickness_m, plant.wall_thickness_m);
@@ -152,11 +187,11 @@ TEST_F(PamCallbackTest, APlantActuatorPullsWithTheAvbdlLaw) {
 void store_slider_plant(mjModel* m, const AvbdlParams& plant) {
   const SpringModel spring = spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,
                                                            {0.911, 0.256, 7.00, -0.201, 0, 0});
-  store_pam_in_model(m, 0, spring, 0.3, 1, "slider39.xml");
-  store_plant_in_model(m, 0, plant, 2, "slider39.xml");
+  store_pam_in_model(m, 0, spring, 0.3, 1, "slider.xml");
+  store_plant_in_model(m, 0, plant, 2, "slider.xml");
 }
 
-// The slider with room for a Maxwell-slip plant, overdamped (so it approaches monotonically),
+// The slider with room for a Maxwell-slip plant's state, overdamped (so it approaches monotonically),
 // under a constant load that stretches the muscle, with braid friction of the given form.
 struct LoadedSlider {
   MjModelPtr m;
@@ -166,13 +201,12 @@ struct LoadedSlider {
 
   explicit LoadedSlider(FrictionModel form) {
     std::string xml = kSliderXml;
-    xml.replace(xml.find("nuser_actuator=\"11\" nuserdata=\"2\""), 33,
-                "nuser_actuator=\"39\" nuserdata=\"5\"");
+    xml.replace(xml.find("nuserdata=\"2\""), 13, "nuserdata=\"5\"");
     xml.replace(xml.find("type=\"slide\""), 12, "type=\"slide\" damping=\"400\"");
     // the smooth friction's slope near rest, F_f / v_s = 1 800 N s/m, is explicit in the
     // Euler step: stable only for c dt / m < 2
     xml.replace(xml.find("<option "), 8, "<option timestep=\"0.0005\" ");
-    m = load_inline(xml.c_str(), "slider39.xml");
+    m = load_inline(xml.c_str(), "slider.xml");
     plant = avbdl_params_from_geometry(0.18, 0.010, units::deg_to_rad(25.0), 0.002,
                                        kNaturalRubberTreloar);
     plant.friction.extension = {1.0, 2.0e-6, 0.0};    // 1.8 N at 0.4 MPa
@@ -220,27 +254,22 @@ TEST(PamCallbackSlipTest, MaxwellSlipStopsWithinTheFrictionBandAndSmoothFriction
   EXPECT_LT(std::fabs(smooth_gap), 0.05 * band / stiffness);
 }
 
-TEST(PamCallbackSlipTest, AMaxwellSlipPlantNeedsItsSlotsAndRoomForItsState) {
+TEST(PamCallbackSlipTest, AMaxwellSlipPlantNeedsRoomForItsState) {
   AvbdlParams plant = avbdl_params_from_geometry(0.18, 0.010, units::deg_to_rad(25.0), 0.002,
                                                  kNaturalRubberTreloar);
   plant.friction.model = FrictionModel::kMaxwellSlip;
   plant.friction.slip.count = 2;
   plant.friction.slip.weight = {0.5, 0.5};
   plant.friction.slip.breakaway_m = {0.05e-3, 0.2e-3};
-  struct Case { const char* size; const char* message; };
-  for (const Case& c : {Case{"nuser_actuator=\"28\" nuserdata=\"5\"",
-                             "<size nuser_actuator> must be >= 39 for a PAM with Maxwell-slip"},
-                        Case{"nuser_actuator=\"39\" nuserdata=\"4\"",
-                             "<size nuserdata> must be >= 5 to hold"}}) {
-    std::string xml = kSliderXml;
-    xml.replace(xml.find("nuser_actuator=\"11\" nuserdata=\"2\""), 33, c.size);
-    MjModelPtr m = load_inline(xml.c_str(), "small.xml");
+  for (int history_index : {2, -1}) {   // 2 + 1 + 2 values need nuserdata 5
+    MjModelPtr m = slider_with_userdata(4);
     ASSERT_TRUE(m);
+    store_pam_in_model(m.get(), 0, SpringModel{}, 0.3, 1, "slider.xml");
     try {
-      store_plant_in_model(m.get(), 0, plant, 2, "small.xml");
-      ADD_FAILURE() << "stored in " << c.size;
+      store_plant_in_model(m.get(), 0, plant, history_index, "slider.xml");
+      ADD_FAILURE() << "bound with its history at " << history_index;
     } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(std::string("small.xml: ") + c.message),
+      EXPECT_NE(std::string(e.what()).find("slider.xml: <size nuserdata> must be >= "),
                 std::string::npos) << e.what();
     }
   }
@@ -258,7 +287,7 @@ TEST(PamCallbackSlipTest, AMaxwellSlipPlantNeedsItsSlotsAndRoomForItsState) {
 // series, F = k (x0 - l_n) / (1 + k c) with c = L0 / (E A), and the PAM's end where the
 // stretched line leaves it, x0 - c F (issue 25, item 3).
 TEST(PamCallbackLineTest, AnExtensibleLineIsASpringInSeriesWithTheMuscle) {
-  MjModelPtr m = slider_with_slots(40);
+  MjModelPtr m = load_inline(kSliderXml, "slider.xml");
   ASSERT_TRUE(m);
   install_pam_actuator_callback();
   SpringModel linear;
@@ -266,8 +295,8 @@ TEST(PamCallbackLineTest, AnExtensibleLineIsASpringInSeriesWithTheMuscle) {
   linear.h_m = 0.170;
   linear.coef = {5000.0, 0, 0, 0, 0, 0};   // k [N/m]
   const double line = 0.3, ea = 300.0, c = line / ea, k = 5000.0, p = 0.4e6;
-  store_pam_in_model(m.get(), 0, linear, line, 1, "slider40.xml");
-  store_line_stiffness_in_model(m.get(), 0, ea, "slider40.xml");
+  store_pam_in_model(m.get(), 0, linear, line, 1, "slider.xml");
+  store_line_stiffness_in_model(m.get(), 0, ea, "slider.xml");
   EXPECT_EQ(pam_line_axial_stiffness(m.get(), 0), ea);
   MjDataPtr d = make_data(m.get());
   const double l_n = natural_length(linear, p);
@@ -284,24 +313,17 @@ TEST(PamCallbackLineTest, AnExtensibleLineIsASpringInSeriesWithTheMuscle) {
   EXPECT_EQ(d->actuator_force[0], 0.0);
   EXPECT_NEAR(pam_length(m.get(), d.get(), 0), l_n - 0.001, 1e-15);
 
-  // a model without the slot holds only inextensible lines
-  MjModelPtr small = slider_with_slots(39);
-  ASSERT_TRUE(small);
-  EXPECT_NO_THROW(store_line_stiffness_in_model(small.get(), 0, 0.0, "slider39.xml"));
-  EXPECT_EQ(pam_line_axial_stiffness(small.get(), 0), 0.0);
-  try {
-    store_line_stiffness_in_model(small.get(), 0, ea, "slider39.xml");
-    ADD_FAILURE() << "an extensible line in 39 slots";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("slider39.xml: <size nuser_actuator> must be >= 40"),
-              std::string::npos) << e.what();
-  }
+  // made inextensible again: the muscle's end is the line's, tendon - L0
+  store_line_stiffness_in_model(m.get(), 0, 0.0, "slider.xml");
+  EXPECT_EQ(pam_line_axial_stiffness(m.get(), 0), 0.0);
+  d->qpos[0] = line + l_n + 0.010;
+  mj_forward(m.get(), d.get());
+  EXPECT_NEAR(-d->actuator_force[0], k * 0.010, 1e-9 * k * 0.010);
 }
 
-// A tube bladder with the Gent-Gent law travels through the model's slots whole, and the
-// callback pulls with its law; a model without the slots refuses it by name.
+// A tube bladder with the Gent-Gent law is bound whole, and the callback pulls with its law.
 TEST(PamCallbackBladderTest, ATubeBladderPlantIsStoredWholeAndPullsWithItsLaw) {
-  MjModelPtr m = slider_with_slots(45);
+  MjModelPtr m = load_inline(kSliderXml, "slider.xml");
   ASSERT_TRUE(m);
   install_pam_actuator_callback();
   AvbdlParams tube;
@@ -314,8 +336,8 @@ TEST(PamCallbackBladderTest, ATubeBladderPlantIsStoredWholeAndPullsWithItsLaw) {
   const double line = 0.3;
   store_pam_in_model(m.get(), 0, spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,
                                                                 {0.911, 0.256, 7.0, -0.2, 0, 0}),
-                     line, 1, "slider45.xml");
-  store_plant_in_model(m.get(), 0, tube, -1, "slider45.xml");
+                     line, 1, "slider.xml");
+  store_plant_in_model(m.get(), 0, tube, -1, "slider.xml");
   AvbdlParams back;
   ASSERT_TRUE(pam_plant_from_model(m.get(), 0, &back));
   EXPECT_EQ(back.bladder_law, BladderLaw::kGentGent);
@@ -329,18 +351,6 @@ TEST(PamCallbackBladderTest, ATubeBladderPlantIsStoredWholeAndPullsWithItsLaw) {
   d->userdata[1] = p;
   mj_forward(m.get(), d.get());
   EXPECT_NEAR(-d->actuator_force[0], avbdl_static_force(tube, p, length), 1e-9);
-
-  MjModelPtr small = slider_with_slots(40);
-  ASSERT_TRUE(small);
-  try {
-    store_plant_in_model(small.get(), 0, tube, -1, "slider40.xml");
-    ADD_FAILURE() << "a tube bladder in 40 slots";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("slider40.xml: <size nuser_actuator> must be >= 45 for "
-                                         "a PAM with a tube bladder"),
-              std::string::npos)
-        << e.what();
-  }
 }
 
 }  // namespace

@@ -1,14 +1,14 @@
 // slider_mjcf.h: the tests' one-PAM slider: a body on a slide joint pulled by one PAM
 // actuator on a fixed tendon (tendon length = qpos, moment arm 1), no gravity. Tests that need
-// more user slots, userdata or another time step replace the attributes in the text (the
-// <size> element is `nuser_actuator="11" nuserdata="2"`, the option `gravity="0 0 0"`).
+// more userdata or another time step replace the attributes in the text (the <size> element
+// is `nuserdata="2"`, the option `gravity="0 0 0"`).
 #pragma once
 
 namespace pamsim_test {
 
 inline constexpr char kSliderXml[] = R"(
 <mujoco>
-  <size nuser_actuator="11" nuserdata="2"/>
+  <size nuserdata="2"/>
   <option gravity="0 0 0"/>
   <worldbody>
     <body>

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <mutex>
+#include <stdexcept>
 
 #include "base/input_error.h"
 #include "sim/core/pam_callback.h"
@@ -44,6 +45,18 @@ MjModelPtr load_mjcf(const std::string& path) {
     throw InputError(path + ": model failed to load: " + why);
   }
   return MjModelPtr(m);
+}
+
+void MjModelDeleter::operator()(mjModel* m) const {
+  unbind_muscles(m);
+  mj_deleteModel(m);
+}
+
+MjModelPtr copy_model(const mjModel* m) {
+  MjModelPtr copy(mj_copyModel(nullptr, m));
+  if (!copy) throw std::runtime_error("mj_copyModel failed");
+  copy_muscle_bindings(m, copy.get());
+  return copy;
 }
 
 MjDataPtr make_data(const mjModel* m) {

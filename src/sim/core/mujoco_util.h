@@ -1,5 +1,6 @@
-// mujoco_util.h: owning handles for mjModel/mjData, the process-wide MuJoCo error and
-// warning handlers (so a batch run never waits on stdin), and model loading that turns
+// mujoco_util.h: owning handles for mjModel/mjData (a model's handle also owns its muscle
+// bindings), the process-wide MuJoCo error and warning handlers (so a batch run never waits
+// on stdin), and model loading that turns
 // MuJoCo's error buffer into an InputError naming the file.
 #pragma once
 
@@ -10,8 +11,9 @@
 
 namespace pamsim {
 
+// Forgets the model's muscle bindings (muscle_binding.h), then deletes it.
 struct MjModelDeleter {
-  void operator()(mjModel* m) const { mj_deleteModel(m); }
+  void operator()(mjModel* m) const;
 };
 struct MjDataDeleter {
   void operator()(mjData* d) const { mj_deleteData(d); }
@@ -28,6 +30,9 @@ void install_mujoco_handlers();
 MjModelPtr load_mjcf(const std::string& path);
 
 MjDataPtr make_data(const mjModel* m);
+
+// A copy of `m` (mj_copyModel) with the same muscle bindings.
+MjModelPtr copy_model(const mjModel* m);
 
 // Id of a named object or InputError "<path>: model has no <what> named '<name>'".
 int require_id(const mjModel* m, mjtObj type, const std::string& name, const std::string& path);

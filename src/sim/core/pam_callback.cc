@@ -5,7 +5,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <iterator>
 #include <memory>
 #include <string>
@@ -15,68 +14,52 @@
 
 #include "base/input_error.h"
 
-#include "sim/core/pam_slots.h"
 
 namespace pamsim {
 namespace {
 
-using pam_slots::relaxation_block;
-using pam_slots::slip_block;
-using pam_slots::user_slots;
-
 constexpr int kLineSolveBits = 40;          // the line's tension to ~1e-12 relative
 constexpr int kLineSolveIterations = 50;
 
-// The friction's input at the muscle length `length_m`: the tendon's rate (smooth), or the
-// elements as committed, moved (in `scratch`) to that length (Maxwell-slip).
-FrictionInput friction_input(const mjModel* m, const mjData* d, int id,
-                             const AvbdlParams& plant, double length_m, double* scratch) {
-  FrictionInput in;
-  in.length_rate_m_per_s = d->actuator_velocity[id];
-  if (plant.friction.model != FrictionModel::kMaxwellSlip) return in;
-  const mjtNum* block = d->userdata + slip_block(m, id);
-  std::copy(block + 1, block + 1 + plant.friction.slip.count, scratch);
-  if (block[0] > 0.0) maxwell_slip_advance(plant.friction.slip, length_m - block[0], scratch);
-  in.slip_state = scratch;
-  return in;
-}
-
-// The PAM's law, decoded once from the actuator's slots: the plant's (seeds/003 Eq. (25)
-// with friction; the slip state moved to the length asked for) or the spring law's (Eq.
-// (1)-(5)); pull() is the line's pull [N] >= 0 at pressure p with the line leaving the PAM
-// at `taut` [m], zero when slack, and grows with `taut`.
+// The PAM's law as bound (muscle_binding.h): the plant's (seeds/003 Eq. (25) with friction;
+// the slip state moved to the length asked for) or the spring law's (Eq. (1)-(5)); pull()
+// is the line's pull [N] >= 0 at pressure p with the line leaving the PAM at `taut` [m],
+// zero when slack, and grows with `taut`. A thread's own copy: its shape's memo and the
+// relaxation's constants for the model's time step change as it is used.
 struct PamLaw {
-  bool has_plant = false;
-  AvbdlParams plant;
-  AvbdlShape shape;   // the plant's, derived once
-  double max_length_m = 0.0;
-  SpringModel spring;
+  BoundMuscleLaw bound;
+  const MuscleBinding& b() const { return bound.binding; }
   mutable double step_s = 0.0;           // the relaxation's constants, for this time step
   mutable RelaxationStep relaxation_step_constants;
 
-  PamLaw(const mjModel* m, int id) {
-    has_plant = pam_plant_from_model(m, id, &plant);
-    if (has_plant) {
-      shape = avbdl_shape(plant);
-      max_length_m = avbdl_max_length(plant);
-    } else {
-      spring = pam_spring_from_model(m, id);
-    }
-  }
   const RelaxationStep& relaxation(const mjModel* m) const {
     if (m->opt.timestep != step_s) {
       step_s = m->opt.timestep;
-      relaxation_step_constants = relaxation_step(plant.relaxation, step_s);
+      relaxation_step_constants = relaxation_step(b().plant.relaxation, step_s);
     }
     return relaxation_step_constants;
   }
+  // The friction's input at the muscle length `length_m`: the tendon's rate (smooth), or
+  // the elements as committed, moved (in `scratch`) to that length (Maxwell-slip).
+  FrictionInput friction_input(const mjData* d, int id, double length_m, double* scratch) const {
+    FrictionInput in;
+    in.length_rate_m_per_s = d->actuator_velocity[id];
+    const AvbdlFriction& f = b().plant.friction;
+    if (f.model != FrictionModel::kMaxwellSlip) return in;
+    const mjtNum* block = d->userdata + b().slip_block;
+    std::copy(block + 1, block + 1 + f.slip.count, scratch);
+    if (block[0] > 0.0) maxwell_slip_advance(f.slip, length_m - block[0], scratch);
+    in.slip_state = scratch;
+    return in;
+  }
   // the bladder's relaxation block advanced to `length` [m] over one step, into `h`; the
   // overstresses' sum [N] (0 before the first commit); the relaxed force there into *relaxed
-  double overstress(const mjModel* m, const mjData* d, int id, double length, double* h,
+  double overstress(const mjModel* m, const mjData* d, double length, double* h,
                     double* relaxed_out = nullptr) const {
-    const mjtNum* block = d->userdata + relaxation_block(m, id);
+    const AvbdlParams& plant = b().plant;
+    const mjtNum* block = d->userdata + b().relaxation_block;
     const double relaxed =
-        avbdl_dbladder_energy_dlength(plant, shape, std::min(length, max_length_m));
+        avbdl_dbladder_energy_dlength(plant, bound.shape, std::min(length, bound.max_length_m));
     if (relaxed_out) *relaxed_out = relaxed;
     if (!(block[0] > 0.0)) {
       std::fill(h, h + plant.relaxation.count, 0.0);
@@ -85,62 +68,65 @@ struct PamLaw {
     return relaxation_advance(plant.relaxation, relaxation(m), block + 2, relaxed - block[1], h);
   }
   double pull(const mjModel* m, const mjData* d, int id, double p, double taut) const {
-    if (has_plant) {
+    if (b().has_plant) {
       // a slack muscle contracts to its free length and pulls nothing; the law holds up to
       // avbdl_max_length (a muscle stretched to its fibre length would have to break)
       double slip_state[kMaxSlipElements];
-      const FrictionInput friction = friction_input(m, d, id, plant, taut, slip_state);
-      const double f = avbdl_line_pull(plant, shape, p, taut, friction);
-      if (plant.relaxation.count == 0 || !(f > 0.0)) return f;
+      const FrictionInput friction = friction_input(d, id, taut, slip_state);
+      const double f = avbdl_line_pull(b().plant, bound.shape, p, taut, friction);
+      if (b().plant.relaxation.count == 0 || !(f > 0.0)) return f;
       double h[kMaxRelaxationTerms];
-      return std::max(f + overstress(m, d, id, taut, h), 0.0);
+      return std::max(f + overstress(m, d, taut, h), 0.0);
     }
-    return spring_force(spring, p, taut - natural_length(spring, p));
+    return spring_force(b().spring, p, taut - natural_length(b().spring, p));
   }
 };
 
-// Actuator `id`'s law, as this thread last decoded it: the few actuators a thread evaluates
-// keep theirs with the slots they came from, so a physics step decodes nothing and derives
-// no shape (and its shape's memo serves the step's muscle length with the force callback's
-// static force); slots that differ (stored anew, or another model at the same address) are
-// decoded again. Per thread, so trials on other threads share nothing.
+// Actuator `id`'s law, as this thread last copied it from the binding table: the few
+// actuators a thread evaluates keep theirs, so a physics step takes no lock and derives
+// nothing (and its shape's memo serves the step's muscle length with the force callback's
+// static force). The copies are dropped whenever a binding is made, copied or forgotten
+// (muscle_binding_epoch). Per thread, so trials on other threads share nothing mutable. An
+// actuator with no binding has the law of an unbound MuscleBinding, which pulls nothing.
 const PamLaw& pam_law(const mjModel* m, int id) {
   struct Entry {
     const mjModel* model = nullptr;
     int id = -1;
-    std::vector<mjtNum> slots;
-    std::unique_ptr<PamLaw> law;
+    PamLaw law;
   };
   thread_local std::array<Entry, 16> cache;   // two legs of eight PAMs
   thread_local std::size_t next = 0;
-  const mjtNum* u = user_slots(m, id);
-  const std::size_t n = static_cast<std::size_t>(m->nuser_actuator);
+  thread_local std::uint64_t epoch = 0;
+  const std::uint64_t now = muscle_binding_epoch();
+  if (now != epoch) {
+    for (Entry& e : cache) e.model = nullptr;
+    epoch = now;
+  }
   for (const Entry& e : cache) {
-    if (e.model == m && e.id == id && e.slots.size() == n &&
-        std::memcmp(e.slots.data(), u, n * sizeof(mjtNum)) == 0) {
-      return *e.law;
-    }
+    if (e.model == m && e.id == id) return e.law;
   }
   Entry& e = cache[next++ % cache.size()];
-  e.law = std::make_unique<PamLaw>(m, id);
+  const std::shared_ptr<const BoundMuscleLaw> bound = find_muscle(m, id);
+  e.law = PamLaw{};
+  if (bound) e.law.bound = *bound;
   e.model = m;
   e.id = id;
-  e.slots.assign(u, u + n);
-  return *e.law;
+  return e.law;
 }
 
 // The line's tension [N], and in *taut the length it leaves the PAM. An inextensible line
 // leaves it at tendon - L0; an extensible one, stretched by its tension, where
 // F = pull(tendon - L0 - c F), c = L0 / (E A): solved on [0, pull(tendon - L0)] by TOMS 748.
 double line_tension(const mjModel* m, const mjData* d, int id, double* taut) {
-  const double p = d->userdata[pam_userdata_index(m, id)];
   const PamLaw& law = pam_law(m, id);
-  const double unstretched = d->actuator_length[id] - pam_line_length(m, id);
-  const double ea = pam_line_axial_stiffness(m, id);
+  if (law.b().pressure_index < 0) return 0.0;   // unbound
+  const double p = d->userdata[law.b().pressure_index];
+  const double unstretched = d->actuator_length[id] - law.b().line_length_m;
+  const double ea = law.b().line_axial_stiffness_n;
   *taut = unstretched;
   const double rigid = law.pull(m, d, id, p, unstretched);
   if (ea <= 0.0 || !(rigid > 0.0)) return rigid;   // (a NaN pull is the trial's to report)
-  const double c = pam_line_length(m, id) / ea;
+  const double c = law.b().line_length_m / ea;
   const auto residual = [&](double f) { return law.pull(m, d, id, p, unstretched - c * f) - f; };
   // the root lies in [0, rigid] when the pull grows with length; at its end (or should the
   // friction's strain term ever break that order) the tension is the inextensible pull,
@@ -160,9 +146,27 @@ double line_tension(const mjModel* m, const mjData* d, int id, double* taut) {
 }
 }  // namespace
 
+bool pam_plant_from_model(const mjModel* m, int id, AvbdlParams* plant) {
+  const PamLaw& law = pam_law(m, id);
+  if (!law.b().has_plant) return false;
+  *plant = law.b().plant;
+  return true;
+}
+
+SpringModel pam_spring_from_model(const mjModel* m, int id) { return pam_law(m, id).b().spring; }
+
+double pam_line_length(const mjModel* m, int id) { return pam_law(m, id).b().line_length_m; }
+
+double pam_line_axial_stiffness(const mjModel* m, int id) {
+  return pam_law(m, id).b().line_axial_stiffness_n;
+}
+
+int pam_userdata_index(const mjModel* m, int id) { return pam_law(m, id).b().pressure_index; }
+
 double pam_length(const mjModel* m, const mjData* d, int id) {
-  const double unstretched = d->actuator_length[id] - pam_line_length(m, id);
-  if (pam_line_axial_stiffness(m, id) <= 0.0) return unstretched;
+  const PamLaw& law = pam_law(m, id);
+  const double unstretched = d->actuator_length[id] - law.b().line_length_m;
+  if (law.b().line_axial_stiffness_n <= 0.0) return unstretched;
   double taut = unstretched;
   line_tension(m, d, id, &taut);
   return taut;
@@ -175,13 +179,15 @@ double pam_muscle_length(const mjModel* m, const mjData* d, int id, FreeLengthTr
 double pam_muscle_length_at(const mjModel* m, const mjData* d, int id, double taut,
                             FreeLengthTrack* track) {
   // the plant's free length is a root solve, done only when the line is slack
-  const double p = d->userdata[pam_userdata_index(m, id)];
   const PamLaw& law = pam_law(m, id);
-  if (law.has_plant) {
+  if (law.b().pressure_index < 0) return taut;   // unbound
+  const double p = d->userdata[law.b().pressure_index];
+  if (law.b().has_plant) {
     FreeLengthTrack none;   // no last root: the whole stroke's search
-    return avbdl_line_muscle_length(law.plant, law.shape, p, taut, track ? track : &none);
+    return avbdl_line_muscle_length(law.b().plant, law.bound.shape, p, taut,
+                                    track ? track : &none);
   }
-  return std::max(taut, natural_length(law.spring, p));
+  return std::max(taut, natural_length(law.b().spring, p));
 }
 
 mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int id) {
@@ -191,20 +197,20 @@ mjtNum pam_actuator_force(const mjModel* m, const mjData* d, int id) {
 
 void pam_commit_history(const mjModel* m, mjData* d, int id, double muscle_length_m) {
   const PamLaw& law = pam_law(m, id);
-  if (!law.has_plant) return;
-  const AvbdlParams& plant = law.plant;
+  if (!law.b().has_plant) return;
+  const AvbdlParams& plant = law.b().plant;
   // the muscle's own length: the line's while taut, its free length while slack
   if (plant.friction.model == FrictionModel::kMaxwellSlip) {
-    mjtNum* block = d->userdata + slip_block(m, id);
+    mjtNum* block = d->userdata + law.b().slip_block;
     if (block[0] > 0.0) {
       maxwell_slip_advance(plant.friction.slip, muscle_length_m - block[0], block + 1);
     }
     block[0] = muscle_length_m;
   }
   if (plant.relaxation.count > 0) {
-    mjtNum* block = d->userdata + relaxation_block(m, id);
+    mjtNum* block = d->userdata + law.b().relaxation_block;
     double h[kMaxRelaxationTerms], relaxed = 0.0;
-    law.overstress(m, d, id, muscle_length_m, h, &relaxed);
+    law.overstress(m, d, muscle_length_m, h, &relaxed);
     std::copy(h, h + plant.relaxation.count, block + 2);
     block[1] = relaxed;
     block[0] = muscle_length_m;

@@ -1,6 +1,6 @@
 // trial_model.h: a scenario's MuJoCo model, ready for trials: loaded, its PAM actuators
-// bound to the scenario's muscles by name (parameters and line lengths written into the
-// actuators' user slots, see pam_callback.h), body masses set, and the ids of everything
+// bound to the scenario's muscles by name (laws and line lengths bound to the model's
+// actuators, see muscle_binding.h), body masses set, and the ids of everything
 // the scenario names (joint, held bodies, event bodies and joints) looked up and checked.
 // Built once per run and then only read, so all worker threads share one mjModel (each
 // trial has its own mjData; a trial whose events change the model copies it).
@@ -27,7 +27,7 @@ struct BoundMuscle {
   int actuator = -1;
   std::string label;
   BraidGeometry braid;           // the chamber volume law, from the params' [geometry]
-  double line_length_m = 0.0;    // as stored in the actuator
+  double line_length_m = 0.0;    // as bound to the actuator
 };
 
 struct BoundJoint {
