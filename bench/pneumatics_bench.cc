@@ -12,7 +12,7 @@
 #include <cmath>
 #include <memory>
 
-#include "pam_actuator/pneumatics.h"
+#include "pneumatics/pneumatics.h"
 #include "base/units.h"
 
 namespace {

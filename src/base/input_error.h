@@ -17,6 +17,13 @@ class InputError : public std::runtime_error {
       : std::runtime_error(printable_message(message)) {}
 };
 
+// Throws InputError "<key> must be <allowed>, got <value>" unless `ok`: the one line a
+// validated parameter's bad value gets.
+inline void require_value(bool ok, const std::string& key, const std::string& allowed,
+                          double value) {
+  if (!ok) throw InputError(key + " must be " + allowed + ", got " + format_value(value));
+}
+
 }  // namespace pamsim
 
 namespace pamsim {

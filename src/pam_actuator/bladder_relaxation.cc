@@ -8,23 +8,16 @@
 #include "base/input_error.h"
 
 namespace pamsim {
-namespace {
-
-void require(bool ok, const std::string& key, const char* allowed, double value) {
-  if (!ok) throw InputError(key + " must be " + allowed + ", got " + format_value(value));
-}
-
-}  // namespace
 
 void validate_bladder_relaxation(const BladderRelaxation& params, const std::string& prefix) {
-  require(params.count >= 0 && params.count <= kMaxRelaxationTerms,
-          prefix + "relaxation_times_s", "0 to 4 terms long", params.count);
+  require_value(params.count >= 0 && params.count <= kMaxRelaxationTerms,
+                prefix + "relaxation_times_s", "0 to 4 terms long", params.count);
   for (int i = 0; i < params.count; ++i) {
     const std::string index = "[" + std::to_string(i) + "]";
-    require(std::isfinite(params.weight[i]) && params.weight[i] >= 0.0,
-            prefix + "relaxation_weights" + index, ">= 0", params.weight[i]);
-    require(std::isfinite(params.time_s[i]) && params.time_s[i] > 0.0,
-            prefix + "relaxation_times_s" + index, "> 0 s", params.time_s[i]);
+    require_value(std::isfinite(params.weight[i]) && params.weight[i] >= 0.0,
+                  prefix + "relaxation_weights" + index, ">= 0", params.weight[i]);
+    require_value(std::isfinite(params.time_s[i]) && params.time_s[i] > 0.0,
+                  prefix + "relaxation_times_s" + index, "> 0 s", params.time_s[i]);
   }
 }
 

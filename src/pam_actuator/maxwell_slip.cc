@@ -12,25 +12,22 @@ namespace {
 
 constexpr double kWeightSumTolerance = 1e-6;
 
-void require(bool ok, const std::string& key, const char* allowed, double value) {
-  if (!ok) throw InputError(key + " must be " + allowed + ", got " + format_value(value));
-}
-
 }  // namespace
 
 void validate_maxwell_slip(const MaxwellSlipParams& params, const std::string& prefix) {
-  require(params.count >= 1 && params.count <= kMaxSlipElements, prefix + "breakaway_mm",
-          "1 to 4 elements long", params.count);
+  require_value(params.count >= 1 && params.count <= kMaxSlipElements, prefix + "breakaway_mm",
+                "1 to 4 elements long", params.count);
   double sum = 0.0;
   for (int i = 0; i < params.count; ++i) {
     const std::string index = "[" + std::to_string(i) + "]";
-    require(std::isfinite(params.breakaway_m[i]) && params.breakaway_m[i] > 0.0,
-            prefix + "breakaway_mm" + index, "> 0", params.breakaway_m[i] * 1e3);
-    require(std::isfinite(params.weight[i]) && params.weight[i] > 0.0,
-            prefix + "weights" + index, "> 0", params.weight[i]);
+    require_value(std::isfinite(params.breakaway_m[i]) && params.breakaway_m[i] > 0.0,
+                  prefix + "breakaway_mm" + index, "> 0", params.breakaway_m[i] * 1e3);
+    require_value(std::isfinite(params.weight[i]) && params.weight[i] > 0.0,
+                  prefix + "weights" + index, "> 0", params.weight[i]);
     sum += params.weight[i];
   }
-  require(std::fabs(sum - 1.0) <= kWeightSumTolerance, prefix + "weights", "summing to 1", sum);
+  require_value(std::fabs(sum - 1.0) <= kWeightSumTolerance, prefix + "weights", "summing to 1",
+                sum);
 }
 
 void maxwell_slip_advance(const MaxwellSlipParams& params, double step_m, double* state) {

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "reflex/controller.h"
-#include "reflex/sensing.h"
+#include "sensing/sensing.h"
 
 namespace pamsim {
 

@@ -12,7 +12,7 @@
 #include "base/enum_names.h"
 #include "base/input_error.h"
 #include "base/units.h"
-#include "reflex/checks.h"
+#include "sensing/checks.h"
 
 namespace pamsim {
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "base/units.h"
-#include "reflex/checks.h"
+#include "sensing/checks.h"
 
 namespace pamsim {
 

@@ -20,7 +20,7 @@
 // it peaks, as the Ia reflex's velocity does for length.
 #pragma once
 
-#include "reflex/lowpass_filter.h"
+#include "sensing/lowpass_filter.h"
 #include "reflex/stretch_reflex.h"
 
 namespace pamsim {

@@ -17,13 +17,13 @@
 
 #include <gtest/gtest.h>
 
-#include "reflex_test_util.h"
+#include "../sensing/sensing_test_util.h"
 
 #include "base/input_error.h"
 #include "pam_actuator/spring_model.h"
 #include "reflex/controller.h"
 #include "reflex/pass_through_controller.h"
-#include "reflex/sensing.h"
+#include "sensing/sensing.h"
 
 namespace pamsim {
 namespace {

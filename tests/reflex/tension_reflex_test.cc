@@ -12,7 +12,7 @@
 #include <limits>
 #include <vector>
 
-#include "reflex_test_util.h"
+#include "../sensing/sensing_test_util.h"
 
 #include "reflex/stretch_reflex_controller.h"
 

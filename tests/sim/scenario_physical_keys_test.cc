@@ -13,7 +13,7 @@
 #include "base/input_error.h"
 #include "cli_util.h"
 #include "pam_actuator/plant_params.h"
-#include "pam_actuator/pneumatic_params.h"
+#include "pneumatics/pneumatic_params.h"
 #include "sim/core/trial_model.h"
 #include "sim/io/scenario_file.h"
 

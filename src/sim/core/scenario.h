@@ -15,9 +15,9 @@
 
 #include "pam_actuator/avbdl.h"
 #include "pam_actuator/pam_params.h"
-#include "pam_actuator/pneumatics.h"
+#include "pneumatics/pneumatics.h"
 #include "reflex/controller_kind.h"
-#include "reflex/sensing.h"
+#include "sensing/sensing.h"
 #include "sim/core/schedule.h"
 
 namespace pamsim {

@@ -1,7 +1,7 @@
 // trial.h: one trial of any scenario, the co-simulation loop of DESIGN.md "One trial":
 //   before each physics step: events due at this time fire (release a held body, add a
 //     payload, switch the controller, end the trial); held bodies are put back in place;
-//   mj_step1; at sim.control_hz: every muscle's sensors are sampled (reflex/sensing.h), the
+//   mj_step1; at sim.control_hz: every muscle's sensors are sampled (sensing/sensing.h), the
 //     controller turns the readings and the scheduled commands into valve commands, and one
 //     log row is written (trial_log.h);
 //   mj_step2 applies the PAM force law through the actuator callback with the pressures at

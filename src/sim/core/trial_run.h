@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "pam_actuator/avbdl.h"
-#include "pam_actuator/pneumatics.h"
-#include "reflex/sensing.h"
+#include "pneumatics/pneumatics.h"
+#include "sensing/sensing.h"
 #include "sim/core/trial.h"
 
 namespace pamsim {

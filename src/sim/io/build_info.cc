@@ -4,7 +4,7 @@
 
 #include <mujoco/mujoco.h>
 
-#include "pam_actuator/cvode_integrator.h"
+#include "pneumatics/cvode_integrator.h"
 #include "pamsim_git_commit.h"
 
 namespace pamsim {

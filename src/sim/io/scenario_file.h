@@ -56,7 +56,7 @@
 //   reflex.*                      the stretch reflex (reflex/stretch_reflex_controller.h)
 //   reflex.pairs                  [[agonist, antagonist], ...] by actuator name; default
 //                                 [["agonist", "antagonist"]] when both muscles exist
-//   sensors.*                     the sensors (reflex/sensors.h)
+//   sensors.*                     the sensors (sensing/sensors.h)
 //   valve.model                   "iso6358" | "first_order" | "regulator" (pneumatics.h)
 //   valve.supply_MPa, valve.command_max_MPa   a rig's own supply and regulator range, in
 //                                 place of model.pneumatics' (command max <= supply)

@@ -1,5 +1,5 @@
 // scenario_key_docs.cc: see scenario_key_docs.h. The ranges are those the readers check
-// (scenario_file.cc, scenario_muscles.cc, scenario_events.cc, reflex/sensing.cc); keep them
+// (scenario_file.cc, scenario_muscles.cc, scenario_events.cc, sensing/sensing.cc); keep them
 // together when one changes. A controller kind documents its own keys, in its file.
 #include "sim/io/scenario_key_docs.h"
 
@@ -42,7 +42,7 @@ std::vector<KeyDoc> model_docs() {
       {"model.joint", "", "(the model's first hinge or slide joint)", "a joint of the model", "the joint logged and measured"},
       {"model.calibration", "", "(none)", "path", "start_angle_deg and <actuator>_line_mm (pamsim calibrate)"},
       {"model.pneumatics", "", "(required)", "path", "valve and chamber parameters (models/pams/pneumatics.toml)"},
-      {"pneumatics.<table>.<field>", "(the file's)", "(model.pneumatics')", "as in the pneumatics file (pam_actuator/pneumatic_params.h)", "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index"},
+      {"pneumatics.<table>.<field>", "(the file's)", "(model.pneumatics')", "as in the pneumatics file (pneumatics/pneumatic_params.h)", "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index"},
       {"model.<actuator>_params", "", "(none)", "path", "shorthand of muscles.<actuator>.params (pamsim 0.1 files)"},
       {"pressure.<actuator>_MPa", "MPa", "(none)", "[0, controller.p_max_MPa]", "shorthand of a constant muscles.<actuator>.command"},
       {"sim.timestep_s", "s", "0.001", "(0, 0.01]", "physics step"},
@@ -146,7 +146,7 @@ std::vector<KeyDoc> sensor_docs() {
   };
 }
 
-// the gauge as hardware (reflex/gauge_hardware.h)
+// the gauge as hardware (sensing/gauge_hardware.h)
 std::vector<KeyDoc> gauge_hardware_docs() {
   return {
       {"sensors.gauge.model", "", "\"linear\"", "\"linear\" | \"bridge\"", "Eq. (8) as exact, or the gauge as board, bridge and calibration"},
@@ -178,8 +178,8 @@ std::vector<KeyDoc> gauge_hardware_docs() {
   };
 }
 
-// the pressure sensor, fiber sensor and encoder as hardware (reflex/pressure_hardware.h,
-// reflex/fiber_hardware.h, reflex/sensors.h)
+// the pressure sensor, fiber sensor and encoder as hardware (sensing/pressure_hardware.h,
+// sensing/fiber_hardware.h, sensing/sensors.h)
 std::vector<KeyDoc> sensor_hardware_docs() {
   return {
       {"sensors.pressure.model", "", "\"ideal\"", "\"ideal\" | \"pse540\"", "the pressure sensor exact (+ noise), or the PSE540 class's offset, gain, hysteresis, response and drift"},

@@ -1,7 +1,7 @@
 // scenario_sensors.cc: sensors.* (noise, ADCs, low-pass) and the sensors as hardware:
-// sensors.gauge.* and sensors.instrument_seed (reflex/gauge_hardware.h), sensors.pressure.*
-// (reflex/pressure_hardware.h), sensors.fiber.* (reflex/fiber_hardware.h) and
-// sensors.encoder.* (reflex/sensors.h). Validated with the sensing (reflex/sensing.h).
+// sensors.gauge.* and sensors.instrument_seed (sensing/gauge_hardware.h), sensors.pressure.*
+// (sensing/pressure_hardware.h), sensors.fiber.* (sensing/fiber_hardware.h) and
+// sensors.encoder.* (sensing/sensors.h). Validated with the sensing (sensing/sensing.h).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -78,7 +78,7 @@ std::vector<PronyTerm> read_creep(ConfigReader& in, const std::string& prefix,
   return creep;
 }
 
-// sensors.gauge.contact.*: where the line bears on the board (reflex/gauge_contact.h)
+// sensors.gauge.contact.*: where the line bears on the board (sensing/gauge_contact.h)
 void read_gauge_contact(ConfigReader& in, GaugeContactParams* c) {
   const std::string k = "sensors.gauge.contact.";
   c->sliding = read_model(in, k + "model", kContactModels, c->sliding);
@@ -89,7 +89,7 @@ void read_gauge_contact(ConfigReader& in, GaugeContactParams* c) {
   c->friction_coefficient = in.get_double(k + "friction_coefficient", c->friction_coefficient);
 }
 
-// sensors.gauge.* and sensors.instrument_seed: the gauge as hardware (reflex/gauge_hardware.h)
+// sensors.gauge.* and sensors.instrument_seed: the gauge as hardware (sensing/gauge_hardware.h)
 void read_gauge_hardware(ConfigReader& in, GaugeHardwareConfig* g) {
   g->enabled = read_instrument_model(in, "sensors.gauge.", kGaugeModels, false);
   const std::string b = "sensors.gauge.";
@@ -122,7 +122,7 @@ void read_gauge_hardware(ConfigReader& in, GaugeHardwareConfig* g) {
   g->instrument_seed = static_cast<std::uint64_t>(seed);
 }
 
-// sensors.pressure.*: the PSE540 as hardware (reflex/pressure_hardware.h)
+// sensors.pressure.*: the PSE540 as hardware (sensing/pressure_hardware.h)
 void read_pressure_hardware(ConfigReader& in, PressureHardwareConfig* p) {
   const std::string b = "sensors.pressure.";
   p->enabled = read_instrument_model(in, b, kPressureModels, p->enabled);
@@ -137,7 +137,7 @@ void read_pressure_hardware(ConfigReader& in, PressureHardwareConfig* p) {
   p->precision_pa = get_mpa(in, b + "precision_MPa", p->precision_pa);
 }
 
-// sensors.fiber.* (reflex/fiber_hardware.h) and sensors.encoder.* (reflex/sensors.h)
+// sensors.fiber.* (sensing/fiber_hardware.h) and sensors.encoder.* (sensing/sensors.h)
 void read_fiber_and_encoder(ConfigReader& in, FiberHardwareConfig* f, EncoderConfig* e) {
   f->enabled = read_instrument_model(in, "sensors.fiber.", kFiberModels, f->enabled);
   f->nonlinearity_pct = in.get_double("sensors.fiber.nonlinearity_pct", f->nonlinearity_pct);

@@ -1,0 +1,31 @@
+// fiber_hardware.cc: see fiber_hardware.h.
+#include "sensing/fiber_hardware.h"
+
+#include <cmath>
+
+#include "base/units.h"
+#include "sensing/checks.h"
+
+namespace pamsim {
+
+void validate(const FiberHardwareConfig& c) {
+  if (!(std::isfinite(c.nonlinearity_pct) && std::fabs(c.nonlinearity_pct) < 100.0)) {
+    checks::fail("sensors.fiber.nonlinearity_pct", "finite and within (-100, 100) %",
+                 c.nonlinearity_pct);
+  }
+  checks::require_positive("sensors.fiber.span_mm", units::m_to_mm(c.span_m));
+  validate_prony(c.creep, "sensors.fiber.creep_weights", "sensors.fiber.creep_times_s");
+}
+
+FiberHardware::FiberHardware(const FiberHardwareConfig& config, double sample_period_s)
+    : quadratic_per_m_(config.nonlinearity_pct / (100.0 * config.span_m)),
+      creep_(config.creep, sample_period_s) {}
+
+double FiberHardware::reading_m(double u_m) {
+  // the linear conversion of a resistance that is not linear in the strain
+  const double nonlinear = u_m * (1.0 + quadratic_per_m_ * u_m);
+  // the knit's relaxation under the held displacement
+  return creep_.step(nonlinear);
+}
+
+}  // namespace pamsim

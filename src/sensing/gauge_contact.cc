@@ -1,0 +1,58 @@
+// gauge_contact.cc: see gauge_contact.h.
+#include "sensing/gauge_contact.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "base/units.h"
+#include "sensing/checks.h"
+
+namespace pamsim {
+
+void validate_gauge_contact(const GaugeContactParams& c, const std::string& prefix) {
+  checks::require_finite(prefix + "misalignment_mm", units::m_to_mm(c.misalignment_m));
+  if (!(c.fitting_distance_m >= 1e-3)) {
+    checks::fail(prefix + "fitting_distance_mm", ">= 1 mm", units::m_to_mm(c.fitting_distance_m));
+  }
+  checks::require_positive(prefix + "shaft_distance_mm", units::m_to_mm(c.shaft_distance_m));
+  if (!(c.wrap_deg > 0.0 && c.wrap_deg < 180.0)) {
+    checks::fail(prefix + "wrap_deg", "within (0, 180) deg", c.wrap_deg);
+  }
+  checks::require_non_negative(prefix + "friction_coefficient", c.friction_coefficient);
+}
+
+double contact_rest_position_m(const GaugeContactParams& c, double y0_m, double shortening_m) {
+  const double d1 = c.fitting_distance_m, d2 = c.shaft_distance_m;
+  const double l1 = d1 + shortening_m;
+  return y0_m + c.misalignment_m * (l1 / (l1 + d2) - d1 / (d1 + d2));
+}
+
+double contact_stick_band_m(const GaugeContactParams& c, double shortening_m) {
+  const double l1 = c.fitting_distance_m + shortening_m;
+  return 2.0 * c.friction_coefficient * std::sin(units::deg_to_rad(c.wrap_deg) / 2.0) /
+         (1.0 / l1 + 1.0 / c.shaft_distance_m);
+}
+
+GaugeContact::GaugeContact(const GaugeContactParams& c, const GaugeBoardParams& board)
+    : params_(c),
+      free_end_m_(board_free_length_m(board)),
+      y0_m_(board.contact_position_m),
+      y_m_(board.contact_position_m) {}
+
+void GaugeContact::follow(double length_m, double f_n) {
+  if (!started_) {
+    start_length_m_ = length_m;
+    started_ = true;
+  }
+  // a fixed contact, a line gone, or a slack one (nothing drags it) stays where it is
+  if (!params_.sliding || lost_ || !(f_n > 0.0)) return;
+  // the fitting cannot pass the board: the span keeps a millimetre
+  const double s = std::max(start_length_m_ - length_m, 1e-3 - params_.fitting_distance_m);
+  const double rest = contact_rest_position_m(params_, y0_m_, s);
+  const double band = contact_stick_band_m(params_, s);
+  // the clamp stops it at y = 0; past the free end it has slid off
+  y_m_ = std::max(std::clamp(y_m_, rest - band, rest + band), 0.0);
+  if (y_m_ > free_end_m_) lost_ = true;
+}
+
+}  // namespace pamsim

@@ -1,0 +1,75 @@
+// gauge_contact.h: where the fishing line bears on the gauge's board, and whether it still
+// does (issue 25, item 3: "a contact point that moves and sticks, ... the line able to lose
+// that contact by geometry"; seeds/000 Sec. IV-B: "the voltage values fluctuated
+// significantly due to slight positional shifts of the fishing line", and the agonist's
+// signal was lost as its muscle contracted).
+//
+// The line runs from the muscle's end fitting over the board's edge (the cantilever of
+// gauge_board.h, clamped at y = 0, free at y = L_b) on to the arm's shaft. Along the edge,
+// the shaft lies a misalignment D beside the fitting. Unfolded into a plane, the line's
+// shortest path crosses the edge where similar triangles put it (the reflection law):
+//   y* = y_p + D L1 / (L1 + L2),
+// L1 the fitting's distance to the edge, L2 the edge's to the shaft. The fitting moves away
+// from the board as the muscle shortens by s (L1 = d1 + s), so y* moves; y_p is such that
+// y* is the board's contact position y0 at the start. The line's pull drags it toward y*
+// with the lateral force T (1/L1 + 1/L2) (y* - y), and its bend theta over the edge presses
+// it on with 2 T sin(theta / 2), whose friction mu holds it: the contact sticks while
+//   |y* - y| <= w = 2 mu sin(theta / 2) / (1/L1 + 1/L2)
+// (the pull cancels: a play of half-width w), and slides to the play's edge beyond. A slack
+// line rests where it lies. A contact past the board's free end has slid off it: the gauge
+// is unloaded from then on, whatever the line pulls (the paper's "failure to send voltage
+// signals"). The reading follows the pull times the lever y - y_g (gauge_board.h).
+//
+// The figures (each a key, sensors.gauge.contact.*) are an ASSUMPTION, a README row: the
+// paper gives no geometry of its gauges. D = 2 mm (an assembly's lateral tolerance), d1 = 20
+// mm (the board at the fitting), d2 = 250 mm (the MJCF's 0.4 m from anchor to shaft less the
+// muscle), theta = 30 deg, mu = 0.3 (nylon on acrylic, the usual 0.2-0.4 of polymer pairs),
+// and the board 5 mm longer than the contact position. With them the contact sticks over
+// the arm's whole stroke (w about 2.9 mm, y* moving about 0.2 mm): README says what it would
+// take to lose it.
+#pragma once
+
+#include <string>
+
+#include "sensing/gauge_board.h"
+
+namespace pamsim {
+
+struct GaugeContactParams {
+  bool sliding = true;                 // sensors.gauge.contact.model: "fixed" | "sliding"
+  double misalignment_m = 0.002;       // D, misalignment_mm (either sign)
+  double fitting_distance_m = 0.020;   // d1, fitting_distance_mm >= 1
+  double shaft_distance_m = 0.250;     // d2, shaft_distance_mm > 0
+  double wrap_deg = 30.0;              // theta, wrap_deg in (0, 180)
+  double friction_coefficient = 0.3;   // mu >= 0
+};
+
+// Throws InputError "<prefix><key> must be ..., got <value>" for the contact.* keys.
+void validate_gauge_contact(const GaugeContactParams& c, const std::string& prefix);
+
+// y* [m] once the muscle has shortened by s [m] from the start (negative: lengthened).
+double contact_rest_position_m(const GaugeContactParams& c, double y0_m, double shortening_m);
+// w [m], the half-width of the band in which the contact sticks.
+double contact_stick_band_m(const GaugeContactParams& c, double shortening_m);
+
+class GaugeContact {
+ public:
+  GaugeContact(const GaugeContactParams& c, const GaugeBoardParams& board);
+
+  // One control tick with the muscle at length_m, its line pulling f_n [N]. The first call
+  // fixes the start length (the contact at the board's contact position).
+  void follow(double length_m, double f_n);
+  double position_m() const { return y_m_; }
+  bool lost() const { return lost_; }
+
+ private:
+  GaugeContactParams params_;
+  double free_end_m_ = 0.0;   // L_b
+  double y0_m_ = 0.0;
+  double y_m_ = 0.0;
+  double start_length_m_ = 0.0;
+  bool started_ = false;
+  bool lost_ = false;
+};
+
+}  // namespace pamsim

@@ -1,0 +1,47 @@
+// quarter_bridge.cc: see quarter_bridge.h.
+#include "sensing/quarter_bridge.h"
+
+#include <cmath>
+
+#include "base/portable_random.h"
+#include "sensing/checks.h"
+
+namespace pamsim {
+
+void validate_quarter_bridge(const QuarterBridgeParams& p, const std::string& prefix) {
+  checks::require_positive(prefix + "excitation_V", p.excitation_v);
+  checks::require_positive(prefix + "gauge_factor", p.gauge_factor);
+  checks::require_positive(prefix + "nominal_Ohm", p.nominal_ohm);
+  checks::require_positive(prefix + "amplifier_gain", p.amplifier_gain);
+  if (!(p.tolerance_pct >= 0.0 && p.tolerance_pct < 100.0)) {
+    checks::fail(prefix + "tolerance_pct", "in [0, 100) percent", p.tolerance_pct);
+  }
+}
+
+BridgeResistors nominal_bridge(const QuarterBridgeParams& p) {
+  return {p.nominal_ohm, p.nominal_ohm, p.nominal_ohm, p.nominal_ohm};
+}
+
+BridgeResistors draw_bridge(const QuarterBridgeParams& p, std::mt19937_64& rng) {
+  const double spread = p.nominal_ohm * p.tolerance_pct / 100.0;
+  // a portable uniform [0, 1): the same arms on every platform
+  const auto arm = [&] {
+    const double u = unit_uniform(rng);
+    return p.nominal_ohm + spread * (2.0 * u - 1.0);
+  };
+  BridgeResistors r;
+  r.r1_ohm = arm();
+  r.r2_ohm = arm();
+  r.r3_ohm = arm();
+  r.gauge_ohm = arm();
+  return r;
+}
+
+double quarter_bridge_output_v(const QuarterBridgeParams& p, const BridgeResistors& r,
+                               double strain) {
+  const double r_gauge = r.gauge_ohm * (1.0 + p.gauge_factor * strain);
+  const double bridge = r_gauge / (r_gauge + r.r3_ohm) - r.r2_ohm / (r.r1_ohm + r.r2_ohm);
+  return p.amplifier_gain * p.excitation_v * bridge;
+}
+
+}  // namespace pamsim

@@ -1,0 +1,145 @@
+// sensing.cc: configuration checks and the per-tick sensor -> estimate pipeline.
+#include "sensing/sensing.h"
+
+#include <array>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+#include "base/units.h"
+#include "sensing/checks.h"
+
+namespace pamsim {
+namespace {
+
+using namespace checks;
+
+LengthEstimatorParams estimator_params(const SensingConfig& config) {
+  LengthEstimatorParams params;
+  params.pressure_lowpass_hz = config.sensors.pressure_lowpass_hz;
+  params.velocity_lowpass_hz = config.velocity_lowpass_hz;
+  return params;
+}
+
+// the generators' tags (sensor_noise.h): one per source, never reused
+enum Stream : std::uint32_t { kPressureInstrument = 1, kPressureTrial = 2 };
+
+// muscle `index`'s pressure sensor as hardware, if on: its offset and gain drawn from
+// sensors.instrument_seed, its drift from the trial's seed
+std::optional<PressureHardware> pressure_hardware(const SensorConfig& s, std::uint64_t seed,
+                                                  std::uint32_t index, double dt_s) {
+  if (!s.pressure_hardware.enabled) return std::nullopt;
+  std::mt19937_64 instrument = derived_generator(s.gauge_hardware.instrument_seed,
+                                                 kPressureInstrument, index);
+  return PressureHardware(s.pressure_hardware, instrument,
+                          derived_generator(seed, kPressureTrial, index), dt_s);
+}
+
+std::optional<FiberHardware> fiber_hardware(const SensorConfig& s, double dt_s) {
+  if (!s.fiber_hardware.enabled) return std::nullopt;
+  return FiberHardware(s.fiber_hardware, dt_s);
+}
+
+}  // namespace
+
+void validate(const SensingConfig& config) {
+  // control rate first: the cutoffs are checked against it
+  require_positive("sim.control_hz", config.control_hz);
+  const SensorConfig& s = config.sensors;
+  require_non_negative("sensors.pressure_noise_MPa", s.pressure_noise_mpa);
+  if (!(std::isfinite(s.pressure_bias_mpa) && std::abs(s.pressure_bias_mpa) < 1.0)) {
+    fail("sensors.pressure_bias_MPa", "finite and within (-1, 1) MPa (the sensor's span)",
+         s.pressure_bias_mpa);
+  }
+  require_adc("sensors.pressure_adc", s.pressure_adc_bits, s.pressure_adc_min_v,
+              s.pressure_adc_max_v);
+  require_cutoff("sensors.pressure_lowpass_hz", s.pressure_lowpass_hz, config.control_hz);
+  require_non_negative("sensors.gauge_noise_V", s.gauge_noise_v);
+  require_adc("sensors.gauge_adc", s.gauge_adc_bits, s.gauge_adc_min_v, s.gauge_adc_max_v);
+  require_non_negative("sensors.fiber_noise_mm_s", s.fiber_noise_mm_s);
+  if (!(s.noise_scale >= 0.0 && s.noise_scale <= 1000.0)) {
+    fail("sensors.noise_scale", "within [0, 1000]", s.noise_scale);
+  }
+  require_cutoff("reflex.lowpass_hz", config.velocity_lowpass_hz, config.control_hz);
+  validate(s.gauge_hardware);
+  validate_calibration_length(s.gauge_hardware, config.control_hz);
+  validate(s.pressure_hardware);
+  validate(s.fiber_hardware);
+  require_positive("sensors.encoder.resolution_mm", units::m_to_mm(s.encoder.resolution_m));
+}
+
+void validate(const MuscleSensorSpec& muscle) {
+  // the gauge's slope and offset, and a finite estimator law
+  const std::string& key = muscle.key;
+  require_positive(key + ".strain_gauge.q_V_per_N", muscle.gauge.q_v_per_n);
+  require_finite(key + ".strain_gauge.V_base_V", muscle.gauge.v_base_v);
+  double m_mm_per_mpa = 0.0;
+  double h_mm = 0.0;
+  std::array<double, 6> coef{};
+  spring_model_to_paper_units(muscle.estimator, &m_mm_per_mpa, &h_mm, &coef);
+  require_finite(key + ".spring.m", m_mm_per_mpa);
+  require_positive(key + ".spring.h", h_mm);
+  for (int k = 0; k < coefficient_count(muscle.estimator.law); ++k) {
+    require_finite(key + ".spring." + coefficient_name(muscle.estimator.law, k), coef[k]);
+  }
+}
+
+SensorSuite::SensorSuite(const SensingConfig& config,
+                         const std::vector<MuscleSensorSpec>& muscles, std::uint64_t seed)
+    : rng_(seed) {
+  validate(config);
+  const double dt_s = 1.0 / config.control_hz;
+  const GaugeHardwareConfig& hardware = config.sensors.gauge_hardware;
+  // the built instruments: the same for every trial of a scenario, whatever its seed
+  std::mt19937_64 instruments(hardware.instrument_seed);
+  channels_.reserve(muscles.size());
+  for (const MuscleSensorSpec& muscle : muscles) {
+    validate(muscle);
+    const auto index = static_cast<std::uint32_t>(channels_.size());
+    // the estimator's Eq. (8): the published constants, or this gauge's calibration
+    std::optional<GaugeHardware> gauge;
+    StrainGaugeParams calibrated = muscle.gauge;
+    if (hardware.enabled) {
+      gauge.emplace(hardware, muscle.gauge, instruments, dt_s);
+      calibrated = calibrate_gauge(*gauge, hardware, dt_s, muscle.key);
+    }
+    channels_.push_back(Channel{
+        PressureSensor(config.sensors, pressure_hardware(config.sensors, seed, index, dt_s)),
+        StrainGauge(muscle.gauge, config.sensors, std::move(gauge)),
+        FiberSensor(config.sensors, dt_s, fiber_hardware(config.sensors, dt_s)),
+        LengthEstimator(muscle.estimator, calibrated, estimator_params(config), dt_s),
+        LowpassFilter(config.velocity_lowpass_hz, dt_s)});
+    channels_.back().gauge.enable_vibration(config.physics_dt_s);
+    observes_forces_ = observes_forces_ || channels_.back().gauge.vibrates();
+  }
+}
+
+void SensorSuite::observe(const std::vector<double>& force_n) {
+  for (std::size_t j = 0; j < channels_.size(); ++j) channels_[j].gauge.observe(force_n[j]);
+}
+
+void SensorSuite::sample(const std::vector<MuscleTruth>& truth,
+                         std::vector<MuscleReading>* readings) {
+  for (std::size_t j = 0; j < channels_.size(); ++j) {
+    Channel& ch = channels_[j];
+    MuscleReading& r = (*readings)[j];
+
+    // sensors, in a fixed order: pressure, gauge, fiber
+    const PressureReading pressure = ch.pressure.sample(truth[j].pressure_pa, rng_);
+    ch.gauge.follow(truth[j].length_m, truth[j].force_n);
+    r.gauge_v = ch.gauge.sample(truth[j].force_n, rng_);
+    r.fiber_rate_m_s = ch.fiber.sample(truth[j].length_m, rng_);
+    r.pressure_sensor_v = pressure.voltage_v;
+    r.fiber_length_m = ch.fiber.length_m();
+
+    // model-based estimate, Eq. (9)-(11), and the fiber's low-passed rate
+    const LengthEstimate est = ch.estimator.update(pressure.pressure_pa, r.gauge_v);
+    r.pressure_meas_pa = est.pressure_pa;
+    r.force_meas_n = est.force_n;
+    r.length_est_m = est.length_m;
+    r.velocity_est_m_s = est.velocity_m_s;
+    r.fiber_velocity_m_s = ch.fiber_velocity_filter.step(r.fiber_rate_m_s);
+  }
+}
+
+}  // namespace pamsim
