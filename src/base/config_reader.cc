@@ -111,7 +111,7 @@ std::string ConfigReader::described(const std::string& key, double value) const 
 }
 
 void ConfigReader::fail(const std::string& key, const std::string& problem) const {
-  throw InputError(where(key) + " " + problem);
+  throw InputError(where(key) + " " + problem, {name_, key, problem});
 }
 
 double ConfigReader::get_double(const std::string& key, double fallback) {

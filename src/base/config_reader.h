@@ -10,6 +10,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <toml++/toml.h>
@@ -158,7 +159,9 @@ auto in_file(const ConfigReader& in, F&& parse) -> decltype(parse()) {
   try {
     return parse();
   } catch (const InputError& e) {
-    throw InputError(in.name() + ": " + e.what());
+    InputErrorParts parts = e.parts();   // a key's error found in this file
+    if (!parts.key.empty() && parts.file.empty()) parts.file = in.name();
+    throw InputError(in.name() + ": " + e.what(), std::move(parts));
   }
 }
 

@@ -10,7 +10,9 @@ void write_table(toml::table& root, const toml::table& changes, const std::strin
     const std::string key = at + std::string(k.str());
     if (const toml::table* sub = v.as_table()) {
       toml::node* there = root.get(k.str());
-      if (there && !there->is_table()) throw InputError(prefix + key + ": is a value, not a table");
+      if (there && !there->is_table()) {
+        throw file_key_error("", prefix + key, "is a value, not a table");
+      }
       if (!there) root.insert_or_assign(k.str(), toml::table{});
       write_table(*root.get(k.str())->as_table(), *sub, key + ".", prefix, changed);
     } else {
@@ -31,13 +33,13 @@ std::vector<std::string> write_changes(toml::table& root, const toml::table& cha
 
 void rethrow_as_change(const InputError& error, const std::string& path,
                        const std::vector<std::string>& changed, const std::string& prefix) {
-  const std::string what = error.what(), head = path + ": ";
-  if (what.rfind(head, 0) != 0) return;
-  const std::string rest = what.substr(head.size());
-  const std::string key = rest.substr(0, rest.find(':'));   // the file's key it names
+  const InputErrorParts& parts = error.parts();
+  if (parts.file != path || parts.key.empty()) return;
   for (const std::string& k : changed) {
     // the changed value itself, or a table the change made ("pipes" of "pipes.x")
-    if (k == key || k.rfind(key + ".", 0) == 0) throw InputError(prefix + rest);
+    if (k == parts.key || k.rfind(parts.key + ".", 0) == 0) {
+      throw file_key_error("", prefix + parts.key, parts.problem);
+    }
   }
 }
 

@@ -22,13 +22,13 @@ namespace pamsim {
 std::vector<std::string> write_changes(toml::table& root, const toml::table& changes,
                                        const std::string& prefix);
 
-// If `error` reads "<path>: <key>: ..." where <key> is one of `changed` or a table holding
-// one, throws it as "<prefix><key>: ..."; otherwise returns.
+// If `error` names a key of the file at `path` (its parts) that is one of `changed` or a
+// table holding one, throws it as "<prefix><key>: <problem>"; otherwise returns.
 void rethrow_as_change(const InputError& error, const std::string& path,
                        const std::vector<std::string>& changed, const std::string& prefix);
 
 // The file at `path` parsed, `changes` written over it, and read by `read(table, path)`,
-// which throws InputError "<path>: <key>: <problem>" for a bad value.
+// which throws InputError "<path>: <key>: <problem>" for a bad value (file_key_error).
 template <class Read>
 auto read_with_changes(const std::string& path, const toml::table& changes,
                        const std::string& prefix, Read read) {

@@ -27,7 +27,7 @@ struct Section {
   std::string key(const std::string& k) const { return prefix + k; }
 
   [[noreturn]] void fail(const std::string& k, const std::string& problem) const {
-    throw InputError(file + ": " + key(k) + ": " + problem);
+    throw file_key_error(file, key(k), problem);
   }
 
   // every key must be in `allowed`

@@ -16,7 +16,7 @@ namespace {
 struct Checker {
   const std::string& prefix;
   void require(bool ok, const std::string& key, const std::string& allowed, double v) const {
-    if (!ok) throw InputError(prefix + key + " must be " + allowed + ", got " + format_value(v));
+    require_value(ok, prefix + key, allowed, v);
   }
   void finite(const std::string& key, double v) const {
     require(std::isfinite(v), key, "finite", v);

@@ -222,9 +222,8 @@ PlantParams read_plant(const toml::table& root, const std::string& path) {
   try {
     validate_avbdl_params(a, "");
   } catch (const InputError& e) {
-    const std::string what = e.what();
-    const auto space = what.find(' ');
-    throw InputError(path + ": " + file_key(what.substr(0, space)) + ":" + what.substr(space));
+    if (e.parts().key.empty()) throw;
+    throw file_key_error(path, file_key(e.parts().key), e.parts().problem);
   }
   return plant;
 }

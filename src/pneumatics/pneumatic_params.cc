@@ -53,17 +53,18 @@ std::string interval(const NumberKey& k) {
 
 void read_number(const std::string& path, const std::string& table, const NumberKey& k,
                  const toml::node& node) {
-  const std::string where = path + ": " + table + "." + k.name + ": ";
+  const std::string key = table + "." + k.name;
   if (!node.is_number()) {
     std::ostringstream type;
     type << node.type();
-    throw InputError(where + "must be a number, got a " + type.str());
+    throw file_key_error(path, key, "must be a number, got a " + type.str());
   }
   const double v = node.value<double>().value();
   const bool ok = std::isfinite(v) && (k.lo_open ? v > k.lo : v >= k.lo) &&
                   (k.hi_open ? v < k.hi : v <= k.hi);
   if (!ok) {
-    throw InputError(where + "value " + format_value(v) + " out of range, allowed " + interval(k));
+    throw file_key_error(path, key,
+                         "value " + format_value(v) + " out of range, allowed " + interval(k));
   }
   if (k.optional_target != nullptr) {
     *k.optional_target = v * k.to_si;
@@ -296,14 +297,13 @@ void read_string(const std::string& path, const std::string& table, const String
   const std::string allowed = allowed_values(k);
   const auto value = node.value<std::string>();
   if (!value) {
-    throw InputError(path + ": " + table + "." + k.name + ": must be a string, allowed " +
-                     allowed);
+    throw file_key_error(path, table + "." + k.name, "must be a string, allowed " + allowed);
   }
   bool ok = false;
   for (const std::string& a : k.allowed) ok = ok || *value == a;
   if (!ok) {
-    throw InputError(path + ": " + table + "." + k.name + ": unknown value \"" + *value +
-                     "\", allowed " + allowed);
+    throw file_key_error(path, table + "." + k.name,
+                         "unknown value \"" + *value + "\", allowed " + allowed);
   }
   k.set(*value);
 }
@@ -327,8 +327,7 @@ void read_key(const std::string& path, const std::string& table_name, const Tabl
     std::string allowed;
     for (const NumberKey& k : table.numbers) allowed += std::string(allowed.empty() ? "" : ", ") + k.name;
     for (const StringKey& k : table.strings) allowed += std::string(allowed.empty() ? "" : ", ") + k.name;
-    throw InputError(path + ": " + table_name + "." + key_name + ": unknown key (allowed: " +
-                     allowed + ")");
+    throw file_key_error(path, table_name + "." + key_name, "unknown key (allowed: " + allowed + ")");
   }
 }
 
@@ -345,13 +344,13 @@ PneumaticParams read_pneumatics(const toml::table& doc, const std::string& path)
       if (table_name == t.name) table = &t;
     }
     if (table == nullptr) {
-      throw InputError(path + ": " + table_name +
-                       ": unknown table (allowed: supply, gas, valve, chamber, first_order, "
-                       "regulator, solver)");
+      throw file_key_error(path, table_name,
+                           "unknown table (allowed: supply, gas, valve, chamber, first_order, "
+                           "regulator, solver)");
     }
     const toml::table* tbl = table_node.as_table();
     if (tbl == nullptr) {
-      throw InputError(path + ": " + table_name + ": must be a table");
+      throw file_key_error(path, table_name, "must be a table");
     }
     for (const auto& [key, node] : *tbl) {
       read_key(path, table_name, *table, std::string(key.str()), node);

@@ -130,8 +130,9 @@ void read_muscle_plant(ConfigReader& in, MuscleSpec* muscle) {
     try {
       return load_plant_params(m.plant_file, fields, key + ".").avbdl;
     } catch (const InputError& e) {
-      const std::string what = e.what();
-      throw InputError(what.rfind(key + ".", 0) == 0 ? what : key + ": " + what);
+      // a changed field is named by its scenario key already; the file's own by the file
+      if (e.parts().file.empty() && e.parts().key.rfind(key + ".", 0) == 0) throw;
+      throw InputError(key + ": " + e.what());
     }
   });
   if (!m.pam.geometry) return;
