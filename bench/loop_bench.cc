@@ -28,7 +28,7 @@
 
 #include "sim/core/pam_callback.h"
 #include "sim/core/runner.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/core/trial.h"
 
 namespace pamsim {

@@ -21,7 +21,7 @@
 
 #include "sim/render/mp4_writer.h"
 #include "sim/core/runner.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/render/scene_renderer.h"
 #include "sim/render/trial_video.h"
 

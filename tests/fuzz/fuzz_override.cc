@@ -9,7 +9,7 @@
 #include "base/input_error.h"
 #include "base/toml_file.h"
 #include "base/config_reader.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const std::string kDropMass = PAMSIM_SOURCE_DIR "/scenarios/drop_mass.toml";

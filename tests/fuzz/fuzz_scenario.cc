@@ -6,7 +6,7 @@
 
 #include "fuzz_input.h"
 #include "base/input_error.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "cli_util.h"
-#include "sim/io/scenario_key_docs.h"
+#include "sim/scenario/scenario_key_docs.h"
 
 namespace {
 

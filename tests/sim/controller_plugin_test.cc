@@ -22,7 +22,7 @@
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
 #include "sim/io/outputs.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
 namespace {

@@ -15,7 +15,7 @@
 #include "pam_actuator/avbdl.h"
 #include "sim/core/runner.h"
 #include "sim/core/trial_model.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
 namespace {

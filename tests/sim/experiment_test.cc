@@ -15,7 +15,7 @@
 #include "three_pam_model.h"
 #include "sim/core/runner.h"
 #include "sim/core/trial.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
 namespace {

@@ -22,7 +22,7 @@
 #include "pam_actuator/tensile_test.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/io/staged_outputs.h"
 #include "sim/optimize/identify.h"
 #include "sim/optimize/identify_outputs.h"

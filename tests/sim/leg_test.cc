@@ -19,7 +19,7 @@
 #include "sim/core/calibration.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/optimize/tuning_file.h"
 #include "sim/sweep/sweep.h"
 #include "scenario_errors.h"

@@ -35,7 +35,7 @@ extern "C" {
 
 #include "sim/core/runner.h"
 #include "sim/io/outputs.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
 namespace {

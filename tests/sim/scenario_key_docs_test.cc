@@ -1,9 +1,9 @@
-// scenario_key_docs_test.cc: the documented keys (io/scenario_key_docs.h) are exactly the
+// scenario_key_docs_test.cc: the documented keys (scenario/scenario_key_docs.h) are exactly the
 // keys the scenario reader asks for, over the shipped scenarios and variants that reach every
 // optional key (schedules of each kind, events of each condition, holds, valve and reflex
 // options), so neither list can drift from the other; the documented literal defaults are
 // the reader's.
-#include "sim/io/scenario_key_docs.h"
+#include "sim/scenario/scenario_key_docs.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 #include "cli_util.h"
 #include "base/input_error.h"
 #include "base/toml_file.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 namespace {
 

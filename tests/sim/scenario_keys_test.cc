@@ -9,7 +9,7 @@
 
 #include "base/input_error.h"
 #include "sim/core/trial_model.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "scenario_errors.h"
 
 namespace pamsim {

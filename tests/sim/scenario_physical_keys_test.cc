@@ -15,7 +15,7 @@
 #include "pam_actuator/plant_params.h"
 #include "pneumatics/pneumatic_params.h"
 #include "sim/core/trial_model.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
 namespace {

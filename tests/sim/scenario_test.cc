@@ -1,6 +1,6 @@
 // scenario_test.cc: every scenario key is validated with one clear message naming the file
 // and the key; unknown keys, broken files and broken models are refused.
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

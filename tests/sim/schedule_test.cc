@@ -2,7 +2,7 @@
 // (constant, ramp, sine, steps, piecewise-linear table), their ranges, the CSV reader's
 // one-line errors (naming the file and the line) and validate's.
 #include "sim/core/schedule.h"
-#include "sim/io/schedule_csv.h"
+#include "sim/scenario/schedule_csv.h"
 
 #include <gtest/gtest.h>
 

@@ -15,7 +15,7 @@
 #include "sim/core/mujoco_util.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
 namespace {

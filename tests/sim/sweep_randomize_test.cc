@@ -16,7 +16,7 @@
 #include "base/input_error.h"
 #include "sim/core/metrics.h"
 #include "cli_util.h"
-#include "sim/io/randomize.h"
+#include "sim/scenario/randomize.h"
 #include "sim/sweep/results_db.h"
 #include "sim/sweep/sweep.h"
 #include "sim/sweep/sweep_runner.h"

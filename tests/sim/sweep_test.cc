@@ -15,7 +15,7 @@
 #include "cli_util.h"
 #include "base/input_error.h"
 #include "reflex/stretch_reflex_controller.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/cli/progress.h"
 #include "sim/sweep/report.h"
 #include "sim/sweep/results_db.h"

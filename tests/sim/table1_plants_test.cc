@@ -19,7 +19,7 @@
 #include "pam_actuator/plant_params.h"
 #include "pam_actuator/spring_model.h"
 #include "pam_actuator/tensile_csv.h"
-#include "sim/io/calibration_file.h"
+#include "sim/scenario/calibration_file.h"
 
 namespace pamsim {
 namespace {

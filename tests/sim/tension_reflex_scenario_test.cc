@@ -12,7 +12,7 @@
 #include "base/input_error.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/sweep/sweep.h"
 #include "scenario_errors.h"
 

@@ -1,7 +1,7 @@
 // trial_test.cc: the co-simulated arm: static equilibrium at the calibrated start angle,
 // the passive drop's events, convergence in the timestep, and determinism across threads;
 // a trial stepped by its caller (SteppedTrial) is run_trial's, and takes outside commands.
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/core/trial.h"
 
 #include <gtest/gtest.h>

@@ -14,9 +14,9 @@
 #include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "base/config_reader.h"
-#include "sim/io/calibration_file.h"
+#include "sim/scenario/calibration_file.h"
 #include "sim/io/outputs.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
 namespace {

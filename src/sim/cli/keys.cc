@@ -1,5 +1,5 @@
 // keys.cc: `pamsim keys [SCENARIO] [--set key=value ...] [--json]`: every scenario key with
-// its unit, default, allowed values and meaning (io/scenario_key_docs.h); with a scenario, every
+// its unit, default, allowed values and meaning (scenario/scenario_key_docs.h); with a scenario, every
 // key it can take (its muscles', holds' and events' keys by name) with the value in effect
 // and whether that is the default.
 #include <CLI/CLI.hpp>
@@ -9,8 +9,8 @@
 #include "base/input_error.h"
 #include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
-#include "sim/io/scenario_file.h"
-#include "sim/io/scenario_key_docs.h"
+#include "sim/scenario/scenario_file.h"
+#include "sim/scenario/scenario_key_docs.h"
 
 namespace pamsim {
 namespace {

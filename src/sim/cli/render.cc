@@ -17,7 +17,7 @@
 #include "sim/cli/progress.h"
 #include "sim/core/runner.h"
 #include "sim/io/outputs.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/io/staged_outputs.h"
 #include "sim/render/trial_video.h"
 

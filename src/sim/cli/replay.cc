@@ -23,7 +23,7 @@
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
 #include "sim/io/provenance.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/io/staged_outputs.h"
 #include "sim/sweep/report.h"
 #include "sim/sweep/results_db.h"

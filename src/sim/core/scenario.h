@@ -2,7 +2,7 @@
 // actuators with which parameter files and command schedules, what happens when (holds and
 // events), which controller, which metrics. The core (trial.h) runs any such description
 // and knows no experiment by name: the falling mass, the pulley's sinusoid and the reaching
-// ramps are scenario files (scenarios/*.toml), read and validated by io/scenario_file.h,
+// ramps are scenario files (scenarios/*.toml), read and validated by scenario/scenario_file.h,
 // which documents every key.
 #pragma once
 

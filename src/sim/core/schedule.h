@@ -1,6 +1,6 @@
 // schedule.h: a muscle's commanded pressure over time, the paper's "top controller" p_tp of
 // Eq. (12)-(13): what the valve is asked for before any reflex acts. One per muscle, from
-// the scenario's muscles.<name>.command table (see io/scenario_file.h for its keys):
+// the scenario's muscles.<name>.command table (see scenario/scenario_file.h for its keys):
 //   constant  p(t) = p0
 //   ramp      p0 until start_s, then linear to p1 over duration_s, then p1 (the reaching
 //             task: 0.2 -> 0.6 MPa over 12 s)
@@ -8,7 +8,7 @@
 //             offset before (the length-estimation test: 0.2 sin(2 pi t / 5) + 0.6 MPa)
 //   steps     levels[i] from times[i] on, levels[0] before times[0]
 //   table     piecewise linear through (time_s, MPa) points read from a CSV file
-//             (io/schedule_csv.h), held constant before the first and after the last point
+//             (scenario/schedule_csv.h), held constant before the first and after the last point
 // Pressures are gauge [Pa] inside; the scenario gives MPa.
 #pragma once
 
@@ -45,7 +45,7 @@ struct PressureSchedule {
 };
 
 // The piecewise-linear schedule through rows (times_s[i], values_pa[i]), at least one, as
-// read from the file `source` (io/schedule_csv.h reads it).
+// read from the file `source` (scenario/schedule_csv.h reads it).
 PressureSchedule table_schedule(std::vector<double> times_s, std::vector<double> values_pa,
                                 std::string source);
 

@@ -15,7 +15,7 @@
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
 #include "pam_actuator/tensile_csv.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
 namespace {

@@ -9,7 +9,7 @@
 #include "base/file_changes.h"
 #include "base/format.h"
 #include "base/toml_file.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/io/staged_outputs.h"
 
 namespace pamsim {

@@ -9,7 +9,7 @@
 #include "base/no_value.h"
 #include "base/toml_file.h"
 #include "sim/core/trial_model.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/optimize/identify_outputs.h"
 
 namespace pamsim {

@@ -13,7 +13,7 @@
 #include "base/input_error.h"
 #include "base/no_value.h"
 #include "sim/io/provenance.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
 namespace {

@@ -11,7 +11,7 @@
 #include "base/input_error.h"
 #include "sim/io/gnuplot.h"
 #include "sim/io/outputs.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/io/staged_outputs.h"
 
 namespace pamsim {

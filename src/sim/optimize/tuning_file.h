@@ -16,7 +16,7 @@
 //   [[objective]]     metric (a summary metric), maximize = false
 //   [[constraint]]    metric, min and/or max: on the metric's mean over an evaluation's trials
 //   [[reference]]     name, values = [one per parameter]: settings checked beside the best
-//   [[randomize]]     key and distribution drawn per seed (sim/io/randomize.h): robust tuning,
+//   [[randomize]]     key and distribution drawn per seed (sim/scenario/randomize.h): robust tuning,
 //                     each evaluation's k-th seed on the same drawn arm; randomize_seed
 #pragma once
 
@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/io/randomize.h"
+#include "sim/scenario/randomize.h"
 #include "sim/optimize/optimizer.h"
 #include "sim/optimize/search_space.h"
 

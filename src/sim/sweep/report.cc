@@ -16,8 +16,8 @@
 #include "base/config_reader.h"
 #include "sim/io/outputs.h"
 #include "sim/core/metrics.h"
-#include "sim/io/scenario_file.h"
-#include "sim/io/scenario_key_docs.h"
+#include "sim/scenario/scenario_file.h"
+#include "sim/scenario/scenario_key_docs.h"
 #include "sim/sweep/running_stats.h"
 #include "sim/sweep/sweep.h"
 

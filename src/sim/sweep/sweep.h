@@ -16,7 +16,7 @@
 //   [[axis]]     key = "reflex.v_thr_mm_s", and either
 //                  values = [..]                       (grid only), or
 //                  from, to, count, scale = "linear"|"log"   (count for grid only)
-//   [[randomize]] key and a distribution drawn per trial (sim/io/randomize.h), e.g. a plant's field
+//   [[randomize]] key and a distribution drawn per trial (sim/scenario/randomize.h), e.g. a plant's field
 //   randomize_seed  seed of those draws, >= 0                                  default 1
 #pragma once
 
@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/io/randomize.h"
+#include "sim/scenario/randomize.h"
 
 namespace pamsim {
 

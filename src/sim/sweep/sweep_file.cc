@@ -16,7 +16,7 @@
 #include "base/toml_file.h"
 #include "sim/core/metrics.h"
 #include "sim/core/trial_model.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "base/input_error.h"
 #include "sim/core/runner.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/core/trial.h"
 
 namespace pamsim {

@@ -6,7 +6,7 @@
 
 #include "base/format.h"
 #include "base/input_error.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
 namespace {

@@ -17,7 +17,7 @@
 #include "base/config_reader.h"
 #include "sim/io/gnuplot.h"
 #include "sim/io/outputs.h"
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/validate/table_cells.h"
 
 namespace pamsim {

@@ -1,7 +1,7 @@
 // scenario_key_docs.cc: see scenario_key_docs.h. The ranges are those the readers check
 // (scenario_file.cc, scenario_muscles.cc, scenario_events.cc, sensing/sensing.cc); keep them
 // together when one changes. A controller kind documents its own keys, in its file.
-#include "sim/io/scenario_key_docs.h"
+#include "sim/scenario/scenario_key_docs.h"
 
 #include <set>
 #include <string>

@@ -6,7 +6,7 @@
 // model is bound (trial_model.cc).
 #include "base/format.h"
 #include "base/units.h"
-#include "sim/io/scenario_reading.h"
+#include "sim/scenario/scenario_reading.h"
 
 namespace pamsim {
 namespace {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "base/units.h"
-#include "sim/io/scenario_reading.h"
+#include "sim/scenario/scenario_reading.h"
 
 namespace pamsim {
 namespace {

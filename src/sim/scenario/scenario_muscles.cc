@@ -8,8 +8,8 @@
 #include "base/toml_file.h"
 #include "pam_actuator/plant_params.h"
 #include "base/units.h"
-#include "sim/io/calibration_file.h"
-#include "sim/io/scenario_reading.h"
+#include "sim/scenario/calibration_file.h"
+#include "sim/scenario/scenario_reading.h"
 
 namespace pamsim {
 namespace {

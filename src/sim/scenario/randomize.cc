@@ -1,5 +1,5 @@
 // randomize.cc: see randomize.h.
-#include "sim/io/randomize.h"
+#include "sim/scenario/randomize.h"
 
 #include <cmath>
 #include <optional>

@@ -8,7 +8,7 @@
 
 #include "base/enum_names.h"
 #include "base/units.h"
-#include "sim/io/scenario_reading.h"
+#include "sim/scenario/scenario_reading.h"
 
 namespace pamsim {
 namespace {

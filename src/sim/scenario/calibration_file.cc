@@ -1,5 +1,5 @@
 // calibration_file.cc: see calibration_file.h.
-#include "sim/io/calibration_file.h"
+#include "sim/scenario/calibration_file.h"
 
 #include <cmath>
 #include <sstream>

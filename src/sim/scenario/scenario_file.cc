@@ -1,7 +1,7 @@
 // scenario_file.cc: see scenario_file.h. The top level (seed, model, sim, valve, controller,
 // reflex, metrics); muscles, events and sensors are read by scenario_muscles.cc,
 // scenario_events.cc and scenario_sensors.cc.
-#include "sim/io/scenario_file.h"
+#include "sim/scenario/scenario_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,8 +12,8 @@
 #include "base/units.h"
 #include "reflex/controller_registry.h"
 #include "sim/core/metrics.h"
-#include "sim/io/scenario_key_docs.h"
-#include "sim/io/scenario_reading.h"
+#include "sim/scenario/scenario_key_docs.h"
+#include "sim/scenario/scenario_reading.h"
 
 namespace pamsim {
 namespace {

@@ -1,5 +1,5 @@
 // schedule_csv.cc: see schedule_csv.h.
-#include "sim/io/schedule_csv.h"
+#include "sim/scenario/schedule_csv.h"
 
 #include <cmath>
 #include <cstdint>
