@@ -21,6 +21,7 @@ packages=(
   pmccabe                                    # scripts/check-sizes.sh: function lengths
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev                   # make fuzz: libFuzzer and clang's sanitizer runtimes
+  libomp-14-dev                              # clang's OpenMP, which SUNDIALS' CMake config asks for
   libopenmpi-dev openmpi-bin                 # sweeps over MPI ranks (-DPAMSIM_MPI=ON, mpirun)
   slurm-wlm munge                            # tests/slurm: a one-node Slurm for scripts/slurm/
   pybind11-dev python3-dev python3-numpy python3-pytest   # the Python module and its tests

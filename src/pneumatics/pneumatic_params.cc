@@ -2,9 +2,7 @@
 #include "pneumatics/pneumatic_params.h"
 
 #include <cmath>
-#include <functional>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -14,64 +12,12 @@
 #include "base/format.h"
 #include "base/file_changes.h"
 #include "base/input_error.h"
+#include "base/key_table.h"
 #include "base/toml_file.h"
 #include "base/units.h"
 
 namespace pamsim {
 namespace {
-
-// one numeric key: allowed interval in the file's units and the conversion to SI
-struct NumberKey {
-  const char* name;
-  double lo;
-  double hi;
-  bool lo_open;
-  bool hi_open;
-  double to_si;
-  double* target;
-  std::optional<double>* optional_target = nullptr;   // a key whose absence means "unset"
-};
-
-struct StringKey {
-  const char* name;
-  std::vector<std::string> allowed;
-  std::function<void(const std::string&)> set;
-};
-
-struct Table {
-  const char* name;
-  std::vector<NumberKey> numbers;
-  std::vector<StringKey> strings;
-};
-
-std::string interval(const NumberKey& k) {
-  std::string lo = k.lo_open ? "(" : "[";
-  std::string hi = k.hi_open ? ")" : "]";
-  std::string hi_value = std::isinf(k.hi) ? "inf" : format_value(k.hi);
-  return lo + format_value(k.lo) + ", " + hi_value + hi;
-}
-
-void read_number(const std::string& path, const std::string& table, const NumberKey& k,
-                 const toml::node& node) {
-  const std::string key = table + "." + k.name;
-  if (!node.is_number()) {
-    std::ostringstream type;
-    type << node.type();
-    throw file_key_error(path, key, "must be a number, got a " + type.str());
-  }
-  const double v = node.value<double>().value();
-  const bool ok = std::isfinite(v) && (k.lo_open ? v > k.lo : v >= k.lo) &&
-                  (k.hi_open ? v < k.hi : v <= k.hi);
-  if (!ok) {
-    throw file_key_error(path, key,
-                         "value " + format_value(v) + " out of range, allowed " + interval(k));
-  }
-  if (k.optional_target != nullptr) {
-    *k.optional_target = v * k.to_si;
-  } else {
-    *k.target = v * k.to_si;
-  }
-}
 
 // the regulator loop's feedback, sense and restrictions ([regulator]); `require` throws
 template <typename Require>
@@ -191,178 +137,158 @@ void validate_pneumatic_params(const PneumaticParams& p, const std::string& cont
 
 namespace {
 
-// [regulator]: the closed-loop regulator's keys (valve.model = "regulator")
-Table regulator_table(PneumaticParams* params, double dm3_per_s_bar) {
-  PneumaticParams& p = *params;
-  return {"regulator",
-          {{"dead_time_ms", 0.0, 1000.0, false, false, 1e-3, &p.regulator_dead_time_s},
-           {"valve_time_constant_ms", 0.0, 10000.0, true, false, 1e-3,
-            &p.regulator_valve_time_constant_s},
-           {"proportional_band_kPa", 0.0, 2000.0, true, false, 1e3,
-            &p.regulator_proportional_band_pa},
-           {"sample_period_ms", 0.0, 100.0, true, false, 1e-3, &p.regulator_sample_period_s},
-           {"supply_sonic_conductance_dm3_per_s_bar", 0.0, 100.0, true, false, dm3_per_s_bar,
-            nullptr, &p.regulator_supply_conductance_m3_per_s_pa},
-           {"supply_critical_pressure_ratio", 0.0, 1.0, false, true, 1.0, nullptr,
-            &p.regulator_supply_critical_ratio},
-           {"exhaust_sonic_conductance_dm3_per_s_bar", 0.0, 100.0, true, false, dm3_per_s_bar,
-            nullptr, &p.regulator_exhaust_conductance_m3_per_s_pa},
-           {"exhaust_critical_pressure_ratio", 0.0, 1.0, false, true, 1.0, nullptr,
-            &p.regulator_exhaust_critical_ratio},
-           {"outlet_volume_cm3", 0.0, 1000.0, true, false, 1e-6, &p.regulator_outlet_volume_m3},
-           {"tube_sonic_conductance_dm3_per_s_bar", 0.0, 100.0, true, false, dm3_per_s_bar,
-            &p.tube_conductance_m3_per_s_pa},
-           {"tube_critical_pressure_ratio", 0.0, 1.0, false, true, 1.0, &p.tube_critical_ratio}},
-          {{"feedback",
-            {"instant", "delayed"},
-            [params](const std::string& v) {
-              params->regulator_feedback = parse_regulator_feedback(v, "regulator.feedback");
-            }},
-           {"sense",
-            {"chamber", "outlet"},
-            [params](const std::string& v) {
-              params->regulator_sense = parse_regulator_sense(v, "regulator.sense");
-            }}}};
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kDm3PerSBar = 1e-3 / units::kPaPerBar;   // dm^3/(s bar) -> m^3/(s Pa)
+const char* const kDm3PerSBarUnit = "dm^3/(s bar)";
+
+// a choice between two policies of the solver at a discontinuity
+ChoiceRow policy_row(const char* name, const char* doc, CommandChangePolicy* field) {
+  return {name, {"warm", "reinit"}, doc,
+          [field](const std::string& v) {
+            *field = v == "warm" ? CommandChangePolicy::kWarm : CommandChangePolicy::kReinit;
+          },
+          [field] { return std::string(*field == CommandChangePolicy::kWarm ? "warm" : "reinit"); }};
 }
 
-// The file's schema: table, key (unit in the name), allowed interval, factor to SI; each
-// key writes its field of *params.
-std::vector<Table> pneumatic_schema(PneumaticParams* params) {
+// [regulator]: the closed-loop regulator's keys (valve.model = "regulator")
+KeyTable regulator_table(PneumaticParams* params) {
   PneumaticParams& p = *params;
-  PneumaticSolverParams* solver = &p.solver;
-  const double inf = std::numeric_limits<double>::infinity();
-  const double kDm3PerSBar = 1e-3 / units::kPaPerBar;   // dm^3/(s bar) -> m^3/(s Pa)
+  return {"regulator",
+          {{"dead_time_ms", "ms", 1e-3, {0.0, 1000.0, false, false},
+            "the dead time before a command (and a delayed loop's sample) acts",
+            &p.regulator_dead_time_s},
+           {"valve_time_constant_ms", "ms", 1e-3, {0.0, 10000.0, true, false},
+            "the main valve's first-order lag", &p.regulator_valve_time_constant_s},
+           {"proportional_band_kPa", "kPa", 1e3, {0.0, 2000.0, true, false},
+            "the pressure error that opens the main valve fully", &p.regulator_proportional_band_pa},
+           {"sample_period_ms", "ms", 1e-3, {0.0, 100.0, true, false},
+            "how often a delayed loop samples its sensed pressure (feedback = \"delayed\")",
+            &p.regulator_sample_period_s},
+           {"supply_sonic_conductance_dm3_per_s_bar", kDm3PerSBarUnit, kDm3PerSBar,
+            {0.0, 100.0, true, false}, "ISO 6358 C of the filling path (unset: [valve]'s)",
+            nullptr, &p.regulator_supply_conductance_m3_per_s_pa},
+           {"supply_critical_pressure_ratio", "", 1.0, {0.0, 1.0, false, true},
+            "ISO 6358 b of the filling path (unset: [valve]'s)", nullptr,
+            &p.regulator_supply_critical_ratio},
+           {"exhaust_sonic_conductance_dm3_per_s_bar", kDm3PerSBarUnit, kDm3PerSBar,
+            {0.0, 100.0, true, false}, "ISO 6358 C of the venting path (unset: [valve]'s)",
+            nullptr, &p.regulator_exhaust_conductance_m3_per_s_pa},
+           {"exhaust_critical_pressure_ratio", "", 1.0, {0.0, 1.0, false, true},
+            "ISO 6358 b of the venting path (unset: [valve]'s)", nullptr,
+            &p.regulator_exhaust_critical_ratio},
+           {"outlet_volume_cm3", "cm^3", 1e-6, {0.0, 1000.0, true, false},
+            "the gas volume at the regulator's outlet port (sense = \"outlet\")",
+            &p.regulator_outlet_volume_m3},
+           {"tube_sonic_conductance_dm3_per_s_bar", kDm3PerSBarUnit, kDm3PerSBar,
+            {0.0, 100.0, true, false},
+            "ISO 6358 C of the tube and fittings from the outlet to the chamber",
+            &p.tube_conductance_m3_per_s_pa},
+           {"tube_critical_pressure_ratio", "", 1.0, {0.0, 1.0, false, true},
+            "ISO 6358 b of that tube", &p.tube_critical_ratio}},
+          {{"feedback", {"instant", "delayed"},
+            "the loop acts on its sensed pressure as it is, or as sampled one dead time ago",
+            [params](const std::string& v) {
+              params->regulator_feedback = parse_regulator_feedback(v, "regulator.feedback");
+            },
+            [params] { return std::string(regulator_feedback_name(params->regulator_feedback)); }},
+           {"sense", {"chamber", "outlet"},
+            "where the loop senses: in the chamber, or at its own outlet port",
+            [params](const std::string& v) {
+              params->regulator_sense = parse_regulator_sense(v, "regulator.sense");
+            },
+            [params] { return std::string(regulator_sense_name(params->regulator_sense)); }}}};
+}
+
+// [solver]: CVODE's settings
+KeyTable solver_table(PneumaticSolverParams* solver) {
+  return {"solver",
+          {{"relative_tolerance", "", 1.0, {0.0, 1e-2, true, false},
+            "CVODE's relative tolerance", &solver->relative_tolerance},
+           {"absolute_tolerance_Pa", "Pa", 1.0, {0.0, 1e4, true, false},
+            "CVODE's absolute tolerance on the pressures", &solver->absolute_tolerance_pa}},
+          {{"method", {"bdf", "adams"}, "CVODE's linear multistep method",
+            [solver](const std::string& v) {
+              solver->method = v == "bdf" ? CvodeMethod::kBdf : CvodeMethod::kAdams;
+            },
+            [solver] { return std::string(solver->method == CvodeMethod::kBdf ? "bdf" : "adams"); }},
+           policy_row("on_command_change",
+                      "at a change of valve command, keep CVODE's history or restart it",
+                      &solver->on_command_change),
+           policy_row("on_loop_action", "the same at each action of a delayed regulator loop",
+                      &solver->on_loop_action)}};
+}
+
+}  // namespace
+
+std::vector<KeyTable> pneumatic_key_table(PneumaticParams* params) {
+  PneumaticParams& p = *params;
+  const double mpa = units::kPaPerMPa;
   return {
       {"supply",
-       {{"supply_MPa", 0.0, 2.0, true, false, units::kPaPerMPa, &p.supply_gauge_pa},
-        {"atmospheric_kPa", 50.0, 120.0, false, false, 1e3, &p.atmospheric_pa}},
+       {{"supply_MPa", "MPa", mpa, {0.0, 2.0, true, false}, "the regulator's supply, gauge",
+         &p.supply_gauge_pa},
+        {"atmospheric_kPa", "kPa", 1e3, {50.0, 120.0, false, false}, "the atmosphere, absolute",
+         &p.atmospheric_pa}},
        {}},
       {"gas",
-       {{"gas_constant_J_per_kg_K", 0.0, inf, true, true, 1.0, &p.gas_constant_j_per_kg_k},
-        {"temperature_K", 200.0, 400.0, false, false, 1.0, &p.temperature_k},
-        {"polytropic_index", 1.0, 1.4, false, false, 1.0, &p.polytropic_index}},
+       {{"gas_constant_J_per_kg_K", "J/(kg K)", 1.0, {0.0, kInf, true, true},
+         "the working gas's specific gas constant", &p.gas_constant_j_per_kg_k},
+        {"temperature_K", "K", 1.0, {200.0, 400.0, false, false},
+         "the supply's and the chamber's gas temperature", &p.temperature_k},
+        {"polytropic_index", "", 1.0, {1.0, 1.4, false, false},
+         "n of the chamber's p V^n (1 isothermal, 1.4 adiabatic)", &p.polytropic_index}},
        {}},
       {"valve",
-       {{"sonic_conductance_dm3_per_s_bar", 0.0, 100.0, false, false, kDm3PerSBar,
+       {{"sonic_conductance_dm3_per_s_bar", kDm3PerSBarUnit, kDm3PerSBar,
+         {0.0, 100.0, false, false},
+         "ISO 6358 C of the restriction between regulator and chamber (0: closed)",
          &p.sonic_conductance_m3_per_s_pa},
-        {"critical_pressure_ratio", 0.0, 1.0, false, true, 1.0, &p.critical_pressure_ratio},
-        {"laminar_ratio", 0.9, 1.0, false, true, 1.0, &p.laminar_ratio},
-        {"regulator_time_constant_ms", 0.0, 10000.0, true, false, 1e-3,
+        {"critical_pressure_ratio", "", 1.0, {0.0, 1.0, false, true},
+         "ISO 6358 b of that restriction", &p.critical_pressure_ratio},
+        {"laminar_ratio", "", 1.0, {0.9, 1.0, false, true},
+         "the pressure ratio above which the flow is taken as linear to zero at 1",
+         &p.laminar_ratio},
+        {"regulator_time_constant_ms", "ms", 1e-3, {0.0, 10000.0, true, false},
+         "the regulated pressure's first-order lag (valve.model = \"iso6358\")",
          &p.regulator_time_constant_s},
-        {"command_min_MPa", 0.0, 2.0, false, false, units::kPaPerMPa, &p.command_min_gauge_pa},
-        {"command_max_MPa", 0.0, 2.0, true, false, units::kPaPerMPa,
-         &p.command_max_gauge_pa}},
+        {"command_min_MPa", "MPa", mpa, {0.0, 2.0, false, false},
+         "the lowest command, gauge (commands are clamped to [min, max])",
+         &p.command_min_gauge_pa},
+        {"command_max_MPa", "MPa", mpa, {0.0, 2.0, true, false},
+         "the highest command, gauge (at most the supply)", &p.command_max_gauge_pa}},
        {}},
       {"chamber",
-       {{"tube_dead_volume_cm3", 0.0, 10000.0, false, false, 1e-6, &p.tube_dead_volume_m3}},
+       {{"tube_dead_volume_cm3", "cm^3", 1e-6, {0.0, 10000.0, false, false},
+         "the tube's and fittings' volume between the valve and the muscle",
+         &p.tube_dead_volume_m3}},
        {}},
       {"first_order",
-       {{"time_constant_ms", 0.0, 100000.0, true, false, 1e-3,
+       {{"time_constant_ms", "ms", 1e-3, {0.0, 100000.0, true, false},
+         "tau of the first-order valve (valve.model = \"first_order\")",
          &p.first_order_time_constant_s}},
        {}},
-      regulator_table(params, kDm3PerSBar),
-      {"solver",
-       {{"relative_tolerance", 0.0, 1e-2, true, false, 1.0, &solver->relative_tolerance},
-        {"absolute_tolerance_Pa", 0.0, 1e4, true, false, 1.0, &solver->absolute_tolerance_pa}},
-       {{"method",
-         {"bdf", "adams"},
-         [solver](const std::string& v) {
-           solver->method = v == "bdf" ? CvodeMethod::kBdf : CvodeMethod::kAdams;
-         }},
-        {"on_command_change",
-         {"warm", "reinit"},
-         [solver](const std::string& v) {
-           solver->on_command_change =
-               v == "warm" ? CommandChangePolicy::kWarm : CommandChangePolicy::kReinit;
-         }},
-        {"on_loop_action",
-         {"warm", "reinit"},
-         [solver](const std::string& v) {
-           solver->on_loop_action =
-               v == "warm" ? CommandChangePolicy::kWarm : CommandChangePolicy::kReinit;
-         }}}},
+      regulator_table(params),
+      solver_table(&p.solver),
   };
 }
 
-// "a | b": the values a string key allows
-std::string allowed_values(const StringKey& k) {
-  std::string allowed;
-  for (const std::string& a : k.allowed) allowed += (allowed.empty() ? "" : " | ") + a;
-  return allowed;
-}
-
-// One string key: one of the values it allows, handed to its setter.
-void read_string(const std::string& path, const std::string& table, const StringKey& k,
-                 const toml::node& node) {
-  const std::string allowed = allowed_values(k);
-  const auto value = node.value<std::string>();
-  if (!value) {
-    throw file_key_error(path, table + "." + k.name, "must be a string, allowed " + allowed);
-  }
-  bool ok = false;
-  for (const std::string& a : k.allowed) ok = ok || *value == a;
-  if (!ok) {
-    throw file_key_error(path, table + "." + k.name,
-                         "unknown value \"" + *value + "\", allowed " + allowed);
-  }
-  k.set(*value);
-}
-
-// One key of a table: read by the schema, or refused with the keys the table has.
-void read_key(const std::string& path, const std::string& table_name, const Table& table,
-              const std::string& key_name, const toml::node& node) {
-  bool known = false;
-  for (const NumberKey& k : table.numbers) {
-    if (key_name == k.name) {
-      read_number(path, table_name, k, node);
-      known = true;
-    }
-  }
-  for (const StringKey& k : table.strings) {
-    if (key_name != k.name) continue;
-    known = true;
-    read_string(path, table_name, k, node);
-  }
-  if (!known) {
-    std::string allowed;
-    for (const NumberKey& k : table.numbers) allowed += std::string(allowed.empty() ? "" : ", ") + k.name;
-    for (const StringKey& k : table.strings) allowed += std::string(allowed.empty() ? "" : ", ") + k.name;
-    throw file_key_error(path, table_name + "." + key_name, "unknown key (allowed: " + allowed + ")");
-  }
-}
+namespace {
 
 // The parameters as `doc` gives them; `path` names it in errors.
 PneumaticParams read_pneumatics(const toml::table& doc, const std::string& path) {
   PneumaticParams p;
-  const std::vector<Table> schema = pneumatic_schema(&p);
-
-  // walk the document: every table and key must be in the schema
-  for (const auto& [table_key, table_node] : doc) {
-    const std::string table_name(table_key.str());
-    const Table* table = nullptr;
-    for (const Table& t : schema) {
-      if (table_name == t.name) table = &t;
-    }
-    if (table == nullptr) {
-      throw file_key_error(path, table_name,
-                           "unknown table (allowed: supply, gas, valve, chamber, first_order, "
-                           "regulator, solver)");
-    }
-    const toml::table* tbl = table_node.as_table();
-    if (tbl == nullptr) {
-      throw file_key_error(path, table_name, "must be a table");
-    }
-    for (const auto& [key, node] : *tbl) {
-      read_key(path, table_name, *table, std::string(key.str()), node);
-    }
-  }
-
+  read_key_tables(doc, path, pneumatic_key_table(&p));
   // cross-field checks (command range within supply, laminar ratio above b)
   validate_pneumatic_params(p, path);
   return p;
 }
 
 }  // namespace
+
+std::vector<KeyDoc> pneumatic_key_docs() {
+  PneumaticParams defaults;
+  return key_table_docs(pneumatic_key_table(&defaults));
+}
 
 PneumaticParams load_pneumatic_params(const std::string& path) {
   return read_pneumatics(parse_toml_file(path), path);

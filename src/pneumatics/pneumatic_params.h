@@ -10,6 +10,7 @@
 
 #include <toml++/toml.h>
 
+#include "base/key_table.h"
 #include "pneumatics/ode_system.h"
 
 namespace pamsim {
@@ -102,6 +103,14 @@ PneumaticParams load_pneumatic_params(const std::string& path);
 // "<prefix><table>.<field>: <problem>" (prefix "pneumatics."); base/file_changes.h.
 PneumaticParams load_pneumatic_params(const std::string& path, const toml::table& changes,
                                       const std::string& prefix);
+
+// The file's key table: each key's unit, factor to SI, range and meaning, and the field of
+// *params it writes (whose value before a file is read is the key's default). The reader
+// reads by it; so do the key reference and the tests' bad values.
+std::vector<KeyTable> pneumatic_key_table(PneumaticParams* params);
+// Every key of the file (its table, unit, default, range and meaning): the file's key
+// reference (`pamsim keys --pneumatics`).
+std::vector<KeyDoc> pneumatic_key_docs();
 
 // "instant" | "delayed" and "chamber" | "outlet", both ways; parse_* throws InputError
 // "<context> must be \"a\" or \"b\", got \"x\"".

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <toml++/toml.h>
+
 #include "cli_util.h"
 #include "sim/scenario/scenario_key_docs.h"
 
@@ -49,6 +51,28 @@ TEST(CliKeysTest, KeysListsTheDocumentationAndAScenariosValues) {
   EXPECT_EQ(line_count(bad.err), 1) << bad.err;
   EXPECT_EQ(run_pamsim("keys --set seed=1").exit_code, 2);
   EXPECT_EQ(run_pamsim("keys /nonexistent.toml").exit_code, 2);
+}
+
+// The pneumatics file's reference comes from its reader's key table: the shipped file's keys
+// are all in it, with the units their names carry.
+TEST(CliKeysTest, KeysPneumaticsListsThePneumaticsFilesKeys) {
+  const CliResult r = run_pamsim("keys --pneumatics --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::map<std::string, nlohmann::json> by_key;
+  for (const auto& j : nlohmann::json::parse(r.out)) by_key[j["key"]] = j;
+  EXPECT_EQ(by_key["regulator.dead_time_ms"]["unit"], "ms");
+  EXPECT_EQ(by_key["regulator.dead_time_ms"]["allowed"], "[0, 1000]");
+  EXPECT_EQ(by_key["solver.method"]["default"], "\"bdf\"");
+  const toml::table shipped = toml::parse_file("models/pams/pneumatics.toml");
+  for (const auto& [table, node] : shipped) {
+    for (const auto& [key, value] : *node.as_table()) {
+      EXPECT_TRUE(by_key.count(std::string(table.str()) + "." + std::string(key.str())))
+          << table << "." << key;
+    }
+  }
+  const CliResult both = run_pamsim("keys --pneumatics scenarios/drop_mass.toml");
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_EQ(line_count(both.err), 1) << both.err;
 }
 
 TEST(CliKeysTest, AMisspelledKeyGetsTheKeyMeant) {

@@ -1,12 +1,14 @@
 // keys.cc: `pamsim keys [SCENARIO] [--set key=value ...] [--json]`: every scenario key with
-// its unit, default, allowed values and meaning (scenario/scenario_key_docs.h); with a scenario, every
-// key it can take (its muscles', holds' and events' keys by name) with the value in effect
-// and whether that is the default.
+// its unit, default, allowed values and meaning (scenario/scenario_key_docs.h); with a
+// scenario, every key it can take (its muscles', holds' and events' keys by name) with the
+// value in effect and whether that is the default. `--pneumatics`: the pneumatics file's keys
+// instead (model.pneumatics, pneumatics.<table>.<field>), from its reader's key table.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "base/input_error.h"
+#include "pneumatics/pneumatic_params.h"
 #include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/scenario/scenario_file.h"
@@ -19,6 +21,7 @@ struct KeysOptions {
   std::string scenario;
   std::vector<std::string> overrides;
   bool json = false;
+  bool pneumatics = false;
 };
 
 nlohmann::json doc_json(const KeyDoc& d) {
@@ -32,16 +35,24 @@ void print_doc(const std::string& head, const KeyDoc& d) {
             << "\n";
 }
 
+// every documented key of a file kind, as text or one JSON array
+void print_docs(const std::vector<KeyDoc>& docs, bool json) {
+  nlohmann::json all = nlohmann::json::array();
+  for (const KeyDoc& d : docs) {
+    if (json) all.push_back(doc_json(d));
+    else print_doc(d.key, d);
+  }
+  if (json) std::cout << all.dump(2) << "\n";
+}
+
 void keys(const KeysOptions& opt) {
+  if (opt.pneumatics && !(opt.scenario.empty() && opt.overrides.empty())) {
+    throw InputError("--pneumatics lists the pneumatics file's keys: it takes no scenario or --set");
+  }
+  if (opt.pneumatics) return print_docs(pneumatic_key_docs(), opt.json);
   if (opt.scenario.empty()) {
     if (!opt.overrides.empty()) throw InputError("--set needs a scenario");
-    nlohmann::json all = nlohmann::json::array();
-    for (const KeyDoc& d : scenario_key_docs()) {
-      if (opt.json) all.push_back(doc_json(d));
-      else print_doc(d.key, d);
-    }
-    if (opt.json) std::cout << all.dump(2) << "\n";
-    return;
+    return print_docs(scenario_key_docs(), opt.json);
   }
   nlohmann::json all = nlohmann::json::array();
   for (const ScenarioKeyValue& kv : scenario_key_values(opt.scenario, opt.overrides)) {
@@ -73,6 +84,9 @@ void add_keys_command(CLI::App& app) {
   cmd->add_option("scenario", opt->scenario, "Scenario file (TOML)");
   add_overrides_option(cmd, &opt->overrides, "Override a scenario key: --set reflex.v_thr_mm_s=60");
   cmd->add_flag("--json", opt->json, "One JSON array on stdout");
+  cmd->add_flag("--pneumatics", opt->pneumatics,
+                "The pneumatics file's keys (tables supply, gas, valve, chamber, first_order, "
+                "regulator, solver) instead of the scenario's");
 }
 
 }  // namespace pamsim

@@ -42,7 +42,7 @@ std::vector<KeyDoc> model_docs() {
       {"model.joint", "", "(the model's first hinge or slide joint)", "a joint of the model", "the joint logged and measured"},
       {"model.calibration", "", "(none)", "path", "start_angle_deg and <actuator>_line_mm (pamsim calibrate)"},
       {"model.pneumatics", "", "(required)", "path", "valve and chamber parameters (models/pams/pneumatics.toml)"},
-      {"pneumatics.<table>.<field>", "(the file's)", "(model.pneumatics')", "as in the pneumatics file (pneumatics/pneumatic_params.h)", "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index"},
+      {"pneumatics.<table>.<field>", "(the file's)", "(model.pneumatics')", "as in the pneumatics file (pamsim keys --pneumatics)", "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index"},
       {"model.<actuator>_params", "", "(none)", "path", "shorthand of muscles.<actuator>.params (pamsim 0.1 files)"},
       {"pressure.<actuator>_MPa", "MPa", "(none)", "[0, controller.p_max_MPa]", "shorthand of a constant muscles.<actuator>.command"},
       {"sim.timestep_s", "s", "0.001", "(0, 0.01]", "physics step"},

@@ -8,16 +8,9 @@
 #include <string>
 #include <vector>
 
-namespace pamsim {
+#include "base/key_table.h"   // KeyDoc
 
-struct KeyDoc {
-  std::string key;       // dotted, with placeholders
-  std::string unit;      // "s", "MPa", "" (none)
-  std::string fallback;  // the default as TOML text ("0.001", "\"iso6358\""), or in
-                         // parentheses where it is not one value ("(Table II)", "(required)")
-  std::string allowed;   // the values the reader accepts
-  std::string meaning;
-};
+namespace pamsim {
 
 const std::vector<KeyDoc>& scenario_key_docs();
 

@@ -1,0 +1,77 @@
+// key_table.h: a parameter file's keys as rows, one row a key: its name as the file writes
+// it (the unit in the name: "dead_time_ms"), the unit, the factor from that unit to SI,
+// the range it allows in that unit, its meaning, and the field it fills. A key's unit,
+// range, default (the field's value before the file is read: the struct's own) and doc
+// live in its row and nowhere else; the reader, the range checks, the key reference
+// (KeyDoc, as `pamsim keys` prints it) and the tests' bad values all come from the rows.
+#pragma once
+
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+namespace pamsim {
+
+// An interval of allowed values, in the file's unit; finite values only.
+struct KeyRange {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false;
+  bool hi_open = false;
+  bool contains(double v) const;
+  std::string text() const;   // "(0, 2]", "[200, 400]", "(0, inf)"
+};
+
+// A number key: the file's value times to_si is written to *target (or *optional_target, a
+// field whose absence means "unset").
+struct NumberRow {
+  std::string name;   // "dead_time_ms"
+  std::string unit;   // "ms"; "" for a pure number
+  double to_si = 1.0;
+  KeyRange range;
+  std::string doc;
+  double* target = nullptr;
+  std::optional<double>* optional_target = nullptr;
+};
+
+// A key whose value is one of a few names.
+struct ChoiceRow {
+  std::string name;
+  std::vector<std::string> allowed;
+  std::string doc;
+  std::function<void(const std::string&)> set;   // sets the field from an allowed name
+  std::function<std::string()> get;              // the name the field holds now
+};
+
+// One TOML table of the file.
+struct KeyTable {
+  std::string name;   // "regulator"
+  std::vector<NumberRow> numbers;
+  std::vector<ChoiceRow> choices;
+};
+
+// One key as a reference shows it (`pamsim keys`, the docs' key references).
+struct KeyDoc {
+  std::string key;       // dotted, with placeholders where the user names the part
+  std::string unit;      // "s", "MPa", "" (none)
+  std::string fallback;  // the default as TOML text ("0.001", "\"iso6358\""), or in
+                         // parentheses where it is not one value ("(Table II)", "(unset)")
+  std::string allowed;   // the values the reader accepts
+  std::string meaning;
+};
+
+// Reads `doc` (the file at `path`) by `tables`: every table and key must have a row, a
+// number must be a finite number within its range, a choice one of its names; each value
+// goes to its field. Throws InputError "<path>: <table>.<key>: <problem>"
+// (file_key_error) for an unknown table or key, a wrong type or a value out of range.
+void read_key_tables(const toml::table& doc, const std::string& path,
+                     const std::vector<KeyTable>& tables);
+
+// Every row as a reference line "<table>.<key>", its default being its field's value now.
+std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables);
+
+}  // namespace pamsim
