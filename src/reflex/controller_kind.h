@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "base/key_table.h"
 #include "reflex/controller.h"
 #include "sensing/sensing.h"
 
@@ -31,9 +32,6 @@ struct ControllerScenario {
   double control_hz = 100.0;           // sim.control_hz
   double command_max_pa = 0.0;         // the regulator's command maximum [Pa]
   std::vector<Muscle> muscles;         // scenario order
-  // the sensing the trial will run: a kind sets the velocity low-pass its control needs
-  // (SensingConfig::velocity_lowpass_hz, validated with the sensing)
-  SensingConfig* sensing = nullptr;
 };
 
 // What a trial gives a kind's factory once the model is bound.
@@ -56,6 +54,10 @@ class ControllerConfig {
   virtual ~ControllerConfig() = default;
   // Antagonistic pairs by actuator name (the trial model binds them to indices, once).
   std::vector<std::array<std::string, 2>> pairs;
+  // The low-pass its control needs on the estimated velocity and the fiber rate [Hz], 0:
+  // none. The sensing applies it (SensingConfig::velocity_lowpass_hz): the scenario hands
+  // it over, and validates it with the sensing.
+  double velocity_lowpass_hz = SensingConfig{}.velocity_lowpass_hz;
   // True: the log has the reflex_<m> columns, and a scenario without a drop lists the
   // "reflex" metric set by default.
   virtual bool has_reflexes() const { return false; }
@@ -67,10 +69,8 @@ class ControllerConfig {
   virtual std::unique_ptr<Controller> make_controller(const ControllerSetup& setup) const = 0;
 };
 
-// One key of a kind for `pamsim keys` (the fields of sim/io's KeyDoc).
-struct ControllerKeyDoc {
-  std::string key, unit, fallback, allowed, meaning;
-};
+// One key of a kind for `pamsim keys`: the key reference's own row (base/key_table.h).
+using ControllerKeyDoc = KeyDoc;
 
 struct ControllerKind {
   std::string name;                    // controller.kind

@@ -19,8 +19,9 @@ namespace {
 
 using NamePairs = std::vector<std::array<std::string, 2>>;
 
-// reflex.* of the stretch reflex; reflex.lowpass_hz is the sensing's
-void read_stretch(ConfigReader& in, SensingConfig* sensing, ReflexConfig* out) {
+// reflex.* of the stretch reflex; reflex.lowpass_hz, the low-pass its velocity needs, into
+// *lowpass_hz (the sensing applies it)
+void read_stretch(ConfigReader& in, double* lowpass_hz, ReflexConfig* out) {
   ReflexConfig& r = *out;
   const std::string sensor = in.get_string("reflex.sensor", to_string(r.sensor));
   r.sensor = in_file(in, [&] { return parse_reflex_sensor(sensor); });
@@ -33,7 +34,7 @@ void read_stretch(ConfigReader& in, SensingConfig* sensing, ReflexConfig* out) {
   r.mode = in_file(in, [&] { return parse_reflex_mode(mode); });
   r.refractory_s = in.get_double("reflex.refractory_s", r.refractory_s);
   r.arm_after_s = in.get_double("reflex.arm_after_s", r.arm_after_s);
-  sensing->velocity_lowpass_hz = in.get_double("reflex.lowpass_hz", sensing->velocity_lowpass_hz);
+  *lowpass_hz = in.get_double("reflex.lowpass_hz", *lowpass_hz);
   r.min_tension_n = in.get_double("reflex.min_tension_N", r.min_tension_n);
   r.reciprocal_trigger_inhibition =
       in.get_bool("reflex.reciprocal_trigger_inhibition", r.reciprocal_trigger_inhibition);
@@ -116,7 +117,7 @@ std::shared_ptr<const ControllerConfig> read_reflexes(ConfigReader& in,
   config->stretch = stretch;
   config->tension = tension;
   config->reflex.enabled = in.get_bool("reflex.enabled", config->reflex.enabled);
-  if (stretch) read_stretch(in, sc.sensing, &config->reflex);
+  if (stretch) read_stretch(in, &config->velocity_lowpass_hz, &config->reflex);
   if (tension) config->ib = read_tension(in);
   config->p_max_pa = read_p_max(in, sc);
   config->pairs = read_pairs(in, sc);

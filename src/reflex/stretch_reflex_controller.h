@@ -10,7 +10,7 @@
 // Per control tick, muscle by muscle in model order:
 //   1. take v from the reading: the estimate (reflex.sensor = "model") or the fiber rate
 //      ("fiber"), both low-passed at reflex.lowpass_hz by the sensing (sensing.h,
-//      SensingConfig::velocity_lowpass_hz, which this kind's reader sets);
+//      SensingConfig::velocity_lowpass_hz, from this kind's ControllerConfig);
 //   2. run the muscle's stretch reflex (stretch_reflex.h) if reflex.enabled and the
 //      controller is on, behind two gates (below); and its tension reflex on the measured
 //      tension, with no gate of its own (its windows are not the log's reflex_<m> flag,

@@ -37,7 +37,8 @@ struct MuscleSensorSpec {
 
 struct SensingConfig {
   SensorConfig sensors;              // sensors.*
-  // reflex.lowpass_hz (set by the stretch_reflex kind's reader; the one place it is held):
+  // reflex.lowpass_hz (the controller's, ControllerConfig::velocity_lowpass_hz, handed over
+  // by the scenario; its default is this one):
   // first-order low-pass on Eq. (11)'s v and the fiber rate, 0 (off) or (0, control_hz / 2].
   // Default off: DESIGN.md measured that 10 Hz delays the trigger by ~30 ms and halves the
   // gain and 5 Hz never triggers. On the physical plant (README, the noise sweep) 10 Hz

@@ -181,9 +181,10 @@ void read_controller(ConfigReader& in, Scenario* sc) {
   for (const MuscleSpec& m : sc->muscles) {
     context.muscles.push_back({m.actuator, m.key, m.command.max_pa()});
   }
-  context.sensing = &sc->sensing;
   sc->controller_kind = kind;
   sc->controller = chosen->read(in, context);
+  // the low-pass the controller needs, applied by the sensing (validated with it)
+  sc->sensing.velocity_lowpass_hz = sc->controller->velocity_lowpass_hz;
 }
 
 void read_metrics(ConfigReader& in, Scenario* sc, bool has_drop) {

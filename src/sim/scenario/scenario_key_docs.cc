@@ -213,8 +213,8 @@ std::vector<KeyDoc> controller_docs() {
                                default_controller_kind() + "\"", kinds, "the controller"}};
   std::set<std::string> listed;
   for (const ControllerKind& kind : controller_kinds()) {
-    for (const ControllerKeyDoc& d : kind.docs) {
-      if (listed.insert(d.key).second) docs.push_back({d.key, d.unit, d.fallback, d.allowed, d.meaning});
+    for (const KeyDoc& d : kind.docs) {
+      if (listed.insert(d.key).second) docs.push_back(d);
     }
   }
   return docs;

@@ -166,7 +166,7 @@ void read_sensors(ConfigReader& in, Scenario* sc) {
   read_gauge_hardware(in, &s.gauge_hardware);
   read_pressure_hardware(in, &s.pressure_hardware);
   read_fiber_and_encoder(in, &s.fiber_hardware, &s.encoder);
-  sc->sensing.control_hz = sc->control_hz;   // velocity_lowpass_hz: the controller's reader
+  sc->sensing.control_hz = sc->control_hz;   // velocity_lowpass_hz: the controller's config
   sc->sensing.physics_dt_s = sc->timestep_s;
   in_file(in, [&] {
     validate(sc->sensing);
