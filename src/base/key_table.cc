@@ -70,7 +70,9 @@ bool KeyRange::contains(double v) const {
 }
 
 std::string KeyRange::text() const {
-  const auto bound = [](double b) { return std::isinf(b) ? (b < 0 ? "-inf" : "inf") : format_value(b); };
+  const auto bound = [](double b) {
+    return std::isinf(b) ? std::string(b < 0 ? "-inf" : "inf") : format_value(b);
+  };
   return std::string(lo_open ? "(" : "[") + bound(lo) + ", " + bound(hi) + (hi_open ? ")" : "]");
 }
 
@@ -84,7 +86,9 @@ void read_key_tables(const toml::table& doc, const std::string& path,
       if (t.name == name) table = &t;
       names += (names.empty() ? "" : ", ") + t.name;
     }
-    if (table == nullptr) throw file_key_error(path, name, "unknown table (allowed: " + names + ")");
+    if (table == nullptr) {
+      throw file_key_error(path, name, "unknown table (allowed: " + names + ")");
+    }
     const toml::table* entries = table_node.as_table();
     if (entries == nullptr) throw file_key_error(path, name, "must be a table");
     for (const auto& [key, node] : *entries) read_key(path, *table, std::string(key.str()), node);

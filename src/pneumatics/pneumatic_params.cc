@@ -147,7 +147,9 @@ ChoiceRow policy_row(const char* name, const char* doc, CommandChangePolicy* fie
           [field](const std::string& v) {
             *field = v == "warm" ? CommandChangePolicy::kWarm : CommandChangePolicy::kReinit;
           },
-          [field] { return std::string(*field == CommandChangePolicy::kWarm ? "warm" : "reinit"); }};
+          [field] {
+            return std::string(*field == CommandChangePolicy::kWarm ? "warm" : "reinit");
+          }};
 }
 
 // [regulator]: the closed-loop regulator's keys (valve.model = "regulator")
@@ -160,7 +162,8 @@ KeyTable regulator_table(PneumaticParams* params) {
            {"valve_time_constant_ms", "ms", 1e-3, {0.0, 10000.0, true, false},
             "the main valve's first-order lag", &p.regulator_valve_time_constant_s},
            {"proportional_band_kPa", "kPa", 1e3, {0.0, 2000.0, true, false},
-            "the pressure error that opens the main valve fully", &p.regulator_proportional_band_pa},
+            "the pressure error that opens the main valve fully",
+            &p.regulator_proportional_band_pa},
            {"sample_period_ms", "ms", 1e-3, {0.0, 100.0, true, false},
             "how often a delayed loop samples its sensed pressure (feedback = \"delayed\")",
             &p.regulator_sample_period_s},
@@ -210,7 +213,9 @@ KeyTable solver_table(PneumaticSolverParams* solver) {
             [solver](const std::string& v) {
               solver->method = v == "bdf" ? CvodeMethod::kBdf : CvodeMethod::kAdams;
             },
-            [solver] { return std::string(solver->method == CvodeMethod::kBdf ? "bdf" : "adams"); }},
+            [solver] {
+              return std::string(solver->method == CvodeMethod::kBdf ? "bdf" : "adams");
+            }},
            policy_row("on_command_change",
                       "at a change of valve command, keep CVODE's history or restart it",
                       &solver->on_command_change),

@@ -191,8 +191,9 @@ void store_slider_plant(mjModel* m, const AvbdlParams& plant) {
   store_plant_in_model(m, 0, plant, 2, "slider.xml");
 }
 
-// The slider with room for a Maxwell-slip plant's state, overdamped (so it approaches monotonically),
-// under a constant load that stretches the muscle, with braid friction of the given form.
+// The slider with room for a Maxwell-slip plant's state, overdamped (so it approaches
+// monotonically), under a constant load that stretches the muscle, with braid friction of
+// the given form.
 struct LoadedSlider {
   MjModelPtr m;
   MjDataPtr d;

@@ -47,7 +47,8 @@ void print_docs(const std::vector<KeyDoc>& docs, bool json) {
 
 void keys(const KeysOptions& opt) {
   if (opt.pneumatics && !(opt.scenario.empty() && opt.overrides.empty())) {
-    throw InputError("--pneumatics lists the pneumatics file's keys: it takes no scenario or --set");
+    throw InputError(
+        "--pneumatics lists the pneumatics file's keys: it takes no scenario or --set");
   }
   if (opt.pneumatics) return print_docs(pneumatic_key_docs(), opt.json);
   if (opt.scenario.empty()) {

@@ -109,8 +109,8 @@ int pam_history_size(const AvbdlParams& plant) {
 
 bool pam_has_history(const AvbdlParams& plant) { return pam_history_size(plant) > 0; }
 
-void store_pam_in_model(mjModel* m, int id, const SpringModel& spring, double line_length_m,
-                        int userdata_index, const char* path) {
+void store_pam_in_model(const mjModel* m, int id, const SpringModel& spring,
+                        double line_length_m, int userdata_index, const char* path) {
   const char* name = mj_id2name(m, mjOBJ_ACTUATOR, id);
   if (m->actuator_biastype[id] != mjBIAS_USER || m->actuator_trntype[id] != mjTRN_TENDON) {
     throw InputError(std::string(path) + ": actuator '" + (name ? name : "?") +
@@ -128,8 +128,8 @@ void store_pam_in_model(mjModel* m, int id, const SpringModel& spring, double li
   bind_muscle(m, id, b);
 }
 
-void store_plant_in_model(mjModel* m, int id, const AvbdlParams& plant, int history_index,
-                          const char* path) {
+void store_plant_in_model(const mjModel* m, int id, const AvbdlParams& plant,
+                          int history_index, const char* path) {
   MuscleBinding b = bound(m, id, path);
   b.has_plant = true;
   b.plant = plant;
@@ -147,7 +147,7 @@ void store_plant_in_model(mjModel* m, int id, const AvbdlParams& plant, int hist
   bind_muscle(m, id, b);
 }
 
-void store_line_stiffness_in_model(mjModel* m, int id, double axial_stiffness_n,
+void store_line_stiffness_in_model(const mjModel* m, int id, double axial_stiffness_n,
                                    const char* path) {
   MuscleBinding b = bound(m, id, path);
   b.line_axial_stiffness_n = axial_stiffness_n;

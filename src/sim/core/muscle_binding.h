@@ -64,17 +64,17 @@ bool pam_has_history(const AvbdlParams& plant);
 // an AVBDL plant bound before stays. Throws InputError naming `path` (the model file) if the
 // actuator is not a general actuator on a tendon with biastype="user", or the model's
 // nuserdata cannot hold the pressure.
-void store_pam_in_model(mjModel* m, int actuator_id, const SpringModel& spring,
+void store_pam_in_model(const mjModel* m, int actuator_id, const SpringModel& spring,
                         double line_length_m, int userdata_index, const char* path);
 // Makes actuator `id`'s plant the AVBDL law (the spring law stays the estimator's and the
 // calibration's); its history (a Maxwell-slip friction's state, then the bladder's
 // relaxation) takes pam_history_size values of d->userdata from `history_index` on. Throws
 // InputError if the model's nuserdata cannot hold that history, or the actuator is unbound.
-void store_plant_in_model(mjModel* m, int actuator_id, const AvbdlParams& plant,
+void store_plant_in_model(const mjModel* m, int actuator_id, const AvbdlParams& plant,
                           int history_index, const char* path);
 // Makes actuator `id`'s line extensible with axial stiffness E A = axial_stiffness_n > 0, or
 // inextensible for 0. Throws InputError if the actuator is unbound.
-void store_line_stiffness_in_model(mjModel* m, int actuator_id, double axial_stiffness_n,
-                                   const char* path);
+void store_line_stiffness_in_model(const mjModel* m, int actuator_id,
+                                   double axial_stiffness_n, const char* path);
 
 }  // namespace pamsim
