@@ -1,20 +1,33 @@
 // key_table.cc: see key_table.h.
 #include "base/key_table.h"
 
+#include <cassert>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
+#include "base/config_reader.h"
 #include "base/format.h"
 #include "base/input_error.h"
 
 namespace pamsim {
 namespace {
 
-// "a | b": the names a choice allows
+// "\"a\" | \"b\"": the names a choice allows, as TOML strings
 std::string choices_text(const ChoiceRow& row) {
   std::string allowed;
-  for (const std::string& a : row.allowed) allowed += (allowed.empty() ? "" : " | ") + a;
+  for (const std::string& a : row.allowed) {
+    allowed += (allowed.empty() ? "\"" : " | \"") + a + "\"";
+  }
   return allowed;
+}
+
+bool allows(const ChoiceRow& row, const std::string& value) {
+  for (const std::string& a : row.allowed) {
+    if (value == a) return true;
+  }
+  return false;
 }
 
 void read_number(const std::string& path, const std::string& key, const NumberRow& row,
@@ -40,11 +53,33 @@ void read_choice(const std::string& path, const std::string& key, const ChoiceRo
                  const toml::node& node) {
   const auto value = node.value<std::string>();
   if (!value) throw file_key_error(path, key, "must be a string, allowed " + choices_text(row));
-  for (const std::string& a : row.allowed) {
-    if (*value == a) return row.set(*value);
-  }
+  if (allows(row, *value)) return row.set(*value);
   throw file_key_error(path, key,
                        "unknown value \"" + *value + "\", allowed " + choices_text(row));
+}
+
+// The field a number row fills, as a pointer to its SI value (nullptr: an unset optional)
+const double* field(const NumberRow& row) {
+  if (row.optional_target == nullptr) return row.target;
+  return row.optional_target->has_value() ? &**row.optional_target : nullptr;
+}
+
+void read_number_row(ConfigReader& in, const std::string& key, const NumberRow& row) {
+  if (!in.has(key)) {
+    in.check(!row.required, key, "is required");
+    if (const double* si = field(row)) in.get_double(key, from_si(row, *si));   // the default
+    return;
+  }
+  const double v = in.get_double(key, 0.0);
+  in.check(row.range.contains(v), key,
+           "must be in " + row.range.text() + ", got " + format_value(v));
+  in.check(std::isfinite(v * row.to_si), key,
+           "is " + format_value(v) + ", beyond what a double holds in SI units");
+  if (row.optional_target != nullptr) {
+    *row.optional_target = v * row.to_si;
+  } else {
+    *row.target = v * row.to_si;
+  }
 }
 
 // One key of a table: read by its row, or refused with the keys the table has.
@@ -57,9 +92,16 @@ void read_key(const std::string& path, const KeyTable& table, const std::string&
   for (const ChoiceRow& row : table.choices) {
     if (row.name == name) return read_choice(path, key, row, node);
   }
+  for (const BoolRow& row : table.bools) {
+    if (row.name != name) continue;
+    if (!node.is_boolean()) throw file_key_error(path, key, "must be true or false");
+    *row.target = *node.value<bool>();
+    return;
+  }
   std::string allowed;
   for (const NumberRow& row : table.numbers) allowed += (allowed.empty() ? "" : ", ") + row.name;
   for (const ChoiceRow& row : table.choices) allowed += (allowed.empty() ? "" : ", ") + row.name;
+  for (const BoolRow& row : table.bools) allowed += (allowed.empty() ? "" : ", ") + row.name;
   throw file_key_error(path, key, "unknown key (allowed: " + allowed + ")");
 }
 
@@ -73,7 +115,9 @@ std::string KeyRange::text() const {
   const auto bound = [](double b) {
     return std::isinf(b) ? std::string(b < 0 ? "-inf" : "inf") : format_value(b);
   };
-  return std::string(lo_open ? "(" : "[") + bound(lo) + ", " + bound(hi) + (hi_open ? ")" : "]");
+  // an infinite end is never in (contains() takes finite values only)
+  return std::string(lo_open || std::isinf(lo) ? "(" : "[") + bound(lo) + ", " + bound(hi) +
+         (hi_open || std::isinf(hi) ? ")" : "]");
 }
 
 void read_key_tables(const toml::table& doc, const std::string& path,
@@ -95,19 +139,75 @@ void read_key_tables(const toml::table& doc, const std::string& path,
   }
 }
 
+void read_key_rows(ConfigReader& in, const KeyTable& table) {
+  const auto key = [&](const std::string& name) { return table.name + "." + name; };
+  for (const ChoiceRow& row : table.choices) {
+    const std::string k = key(row.name);
+    const std::string value = in.get_string(k, row.get());
+    if (!in.has(k)) continue;
+    in.check(allows(row, value), k,
+             "is \"" + value + "\", allowed " + choices_text(row));
+    row.set(value);
+  }
+  for (const BoolRow& row : table.bools) *row.target = in.get_bool(key(row.name), *row.target);
+  for (const NumberRow& row : table.numbers) read_number_row(in, key(row.name), row);
+}
+
+void check_key_rows(const KeyTable& table) {
+  for (const NumberRow& row : table.numbers) {
+    const double* si = field(row);
+    if (si == nullptr) continue;
+    const double v = from_si(row, *si);
+    require_value(row.range.contains(v), table.name + "." + row.name, "in " + row.range.text(), v);
+  }
+  for (const ChoiceRow& row : table.choices) {
+    const std::string key = table.name + "." + row.name;
+    const std::string value = row.get();
+    if (!allows(row, value)) {
+      const std::string problem = "must be " + choices_text(row) + ", got \"" + value + "\"";
+      throw InputError(key + " " + problem, {"", key, problem});
+    }
+  }
+}
+
+double from_si(const NumberRow& row, double si) {
+  // the shortest of 15, 16 or 17 significant digits that the reader takes back to `si`
+  for (int digits = 15; digits <= 16; ++digits) {
+    char buf[40];
+    std::snprintf(buf, sizeof(buf), "%.*g", digits, si / row.to_si);
+    const double v = std::strtod(buf, nullptr);
+    if (v * row.to_si == si) return v;
+  }
+  return si / row.to_si;
+}
+
+double file_value(const KeyTable& table, const std::string& name) {
+  for (const NumberRow& row : table.numbers) {
+    if (row.name != name) continue;
+    const double* si = field(row);
+    return si ? from_si(row, *si) : std::numeric_limits<double>::quiet_NaN();
+  }
+  assert(false && "file_value: no such row");
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
   std::vector<KeyDoc> docs;
   for (const KeyTable& t : tables) {
     for (const NumberRow& row : t.numbers) {
-      const bool unset = row.optional_target != nullptr && !row.optional_target->has_value();
-      const double si = row.optional_target ? row.optional_target->value_or(0.0) : *row.target;
-      docs.push_back({t.name + "." + row.name, row.unit,
-                      unset ? "(unset)" : format_number(si / row.to_si), row.range.text(),
-                      row.doc});
+      const double* si = field(row);
+      std::string fallback = si ? format_number(from_si(row, *si)) : "(unset)";
+      if (row.required) fallback = "(required)";
+      if (!row.fallback_doc.empty()) fallback = row.fallback_doc;
+      docs.push_back({t.name + "." + row.name, row.unit, fallback, row.range.text(), row.doc});
     }
     for (const ChoiceRow& row : t.choices) {
       docs.push_back({t.name + "." + row.name, "", "\"" + row.get() + "\"", choices_text(row),
                       row.doc});
+    }
+    for (const BoolRow& row : t.bools) {
+      docs.push_back({t.name + "." + row.name, "", *row.target ? "true" : "false",
+                      "true | false", row.doc});
     }
   }
   return docs;

@@ -36,6 +36,16 @@ struct NumberRow {
   std::string doc;
   double* target = nullptr;
   std::optional<double>* optional_target = nullptr;
+  bool required = false;      // a file must give it (the field's value is no default)
+  std::string fallback_doc{};   // the default as a reference shows it, where it is not the
+                                // field's one value ("(Table II: 70 model, 25 fiber)")
+};
+
+// A true/false key.
+struct BoolRow {
+  std::string name;
+  std::string doc;
+  bool* target = nullptr;
 };
 
 // A key whose value is one of a few names.
@@ -52,7 +62,10 @@ struct KeyTable {
   std::string name;   // "regulator"
   std::vector<NumberRow> numbers;
   std::vector<ChoiceRow> choices;
+  std::vector<BoolRow> bools{};
 };
+
+class ConfigReader;
 
 // One key as a reference shows it (`pamsim keys`, the docs' key references).
 struct KeyDoc {
@@ -70,6 +83,28 @@ struct KeyDoc {
 // (file_key_error) for an unknown table or key, a wrong type or a value out of range.
 void read_key_tables(const toml::table& doc, const std::string& path,
                      const std::vector<KeyTable>& tables);
+
+// One table of a larger document (a scenario's "reflex"), read by `in` (ConfigReader, which
+// marks the keys read and refuses the keys nobody reads): the choices first (a choice may set
+// other fields' defaults, as reflex.sensor sets Table II's), then the true/false keys, then
+// the numbers. A key the document does not give leaves its field as it is (and is listed
+// among the reader's defaults); a given one must have its row's type and range. Throws
+// InputError "<file>: <table>.<key> <problem>" through ConfigReader::fail.
+void read_key_rows(ConfigReader& in, const KeyTable& table);
+
+// The rows' fields as they are now, checked against the rows' ranges and choices: a
+// validate() of a struct its table is bound to. Throws InputError
+// "<table>.<key> must be in <range>, got <value>" (require_value).
+void check_key_rows(const KeyTable& table);
+
+// A field's SI value in its row's unit: the shortest decimal of 15 to 17 significant digits
+// that the reader turns back into the same SI value (the file's 70 mm/s, read as 0.07 m/s,
+// shows as 70 again, not 70.00000000000001; Table II's 1/300 MPa s/mm in full).
+double from_si(const NumberRow& row, double si);
+
+// Row `name`'s field in the row's unit (from_si); NaN for an unset optional. The row must
+// exist (asserted).
+double file_value(const KeyTable& table, const std::string& name);
 
 // Every row as a reference line "<table>.<key>", its default being its field's value now.
 std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables);

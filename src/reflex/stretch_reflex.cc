@@ -54,12 +54,11 @@ bool ReflexWindow::update(double time_s, bool trigger) {
 }
 
 StretchReflex::StretchReflex(const StretchReflexParams& params, double control_period_s)
-    : v_thr_m_s_(units::mm_to_m(params.v_thr_mm_s)),
-      // MPa per mm/s -> Pa per m/s
-      k_pa_s_per_m_(params.k_MPa_s_per_mm * units::kPaPerMPa / units::kMPerMm),
+    : v_thr_m_s_(params.v_thr_m_s),
+      k_pa_s_per_m_(params.k_pa_s_per_m),
       mode_(params.mode),
       window_(params.duration_s, params.refractory_s, params.arm_after_s, control_period_s) {
-  assert(params.v_thr_mm_s > 0.0 && params.k_MPa_s_per_mm >= 0.0);
+  assert(params.v_thr_m_s > 0.0 && params.k_pa_s_per_m >= 0.0);
 }
 
 double StretchReflex::update(double time_s, double velocity_m_s, bool may_trigger) {

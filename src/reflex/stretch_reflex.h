@@ -38,10 +38,12 @@ const char* to_string(ReflexMode mode);
 // Throws InputError naming `key` (reflex.mode, reflex.ib.mode) on anything else.
 ReflexMode parse_reflex_mode(const std::string& name, const std::string& key = "reflex.mode");
 
-// Scenario keys reflex.* (paper units, named). Defaults: Table II's model-based reflex.
+// The stretch reflex's parameters, SI; their scenario keys reflex.* (paper units, named) are
+// rows of reflex_keys.h. Defaults: Table II's model-based reflex.
 struct StretchReflexParams {
-  double v_thr_mm_s = 70.0;              // reflex.v_thr_mm_s, V_thr > 0 (fiber: 25)
-  double k_MPa_s_per_mm = 1.0 / 800.0;   // reflex.k_MPa_s_per_mm, k >= 0 (fiber: 1/300)
+  double v_thr_m_s = 0.070;              // V_thr > 0 [m/s], reflex.v_thr_mm_s = 70 (fiber 25)
+  // k >= 0 [Pa/(m/s)], reflex.k_MPa_s_per_mm = 1/800 (fiber 1/300): 1/800 MPa per mm/s
+  double k_pa_s_per_m = 1e9 / 800.0;
   double duration_s = 0.2;               // reflex.duration_s, >= one control period
   ReflexMode mode = ReflexMode::kFollow; // reflex.mode
   // reflex.refractory_s >= 0. Default 0.5 s: on the ideal plant (drop_mass_ideal.toml) the

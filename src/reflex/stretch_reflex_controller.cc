@@ -12,6 +12,7 @@
 #include "base/enum_names.h"
 #include "base/input_error.h"
 #include "base/units.h"
+#include "reflex/reflex_keys.h"
 #include "sensing/checks.h"
 
 namespace pamsim {
@@ -39,8 +40,8 @@ ReflexConfig table_ii_reflex_config(ReflexSensor sensor) {
   ReflexConfig reflex;   // the model-based reflex's values are StretchReflexParams' defaults
   reflex.sensor = sensor;
   if (sensor == ReflexSensor::kFiber) {
-    reflex.v_thr_mm_s = 25.0;
-    reflex.k_MPa_s_per_mm = 1.0 / 300.0;
+    reflex.v_thr_m_s = 0.025;
+    reflex.k_pa_s_per_m = 1e9 / 300.0;   // 1/300 MPa per mm/s
   }
   return reflex;
 }
@@ -52,16 +53,10 @@ void validate(const StretchReflexControllerConfig& config) {
 
   // reflex.*
   const ReflexConfig& reflex = config.reflex;
-  if (reflex.sensor != ReflexSensor::kModel && reflex.sensor != ReflexSensor::kFiber) {
-    fail("reflex.sensor", "\"model\" or \"fiber\"", static_cast<int>(reflex.sensor));
-  }
-  if (reflex.mode != ReflexMode::kFollow && reflex.mode != ReflexMode::kLatch) {
-    fail("reflex.mode", "\"follow\" or \"latch\"", static_cast<int>(reflex.mode));
-  }
-  require_positive("reflex.v_thr_mm_s", reflex.v_thr_mm_s);
-  require_non_negative("reflex.k_MPa_s_per_mm", reflex.k_MPa_s_per_mm);
+  ReflexConfig fields = reflex;   // the rows' ranges and choices (the low-pass is the sensing's)
+  double lowpass_hz = 0.0;
+  check_key_rows(stretch_reflex_key_table(&fields, &lowpass_hz));
   require_window("reflex", reflex.duration_s, reflex.refractory_s, reflex.arm_after_s, dt);
-  require_non_negative("reflex.min_tension_N", reflex.min_tension_n);
   if (config.tension) validate(config.ib, config.control_hz);
 
   // the valve range, in MPa as in the scenario file

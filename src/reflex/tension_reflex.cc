@@ -4,19 +4,15 @@
 #include <cassert>
 #include <cmath>
 
-#include "base/units.h"
+#include "reflex/reflex_keys.h"
 #include "sensing/checks.h"
 
 namespace pamsim {
 
 void validate(const TensionReflexParams& p, double control_hz) {
   using namespace checks;
-  require_positive("reflex.ib.f_thr_N", p.f_thr_N);
-  require_non_negative("reflex.ib.df_thr_N_s", p.df_thr_N_s);
-  require_non_negative("reflex.ib.k_MPa_per_N", p.k_MPa_per_N);
-  if (p.mode != ReflexMode::kFollow && p.mode != ReflexMode::kLatch) {
-    fail("reflex.ib.mode", "\"follow\" or \"latch\"", static_cast<int>(p.mode));
-  }
+  TensionReflexParams fields = p;   // the rows' ranges and choices
+  check_key_rows(tension_reflex_key_table(&fields));
   require_window("reflex.ib", p.duration_s, p.refractory_s, p.arm_after_s, 1.0 / control_hz);
   require_cutoff("reflex.ib.rate_lowpass_hz", p.rate_lowpass_hz, control_hz);
 }
@@ -24,12 +20,12 @@ void validate(const TensionReflexParams& p, double control_hz) {
 TensionReflex::TensionReflex(const TensionReflexParams& params, double control_period_s)
     : f_thr_n_(params.f_thr_N),
       df_thr_n_s_(params.df_thr_N_s),
-      k_pa_per_n_(params.k_MPa_per_N * units::kPaPerMPa),
+      k_pa_per_n_(params.k_pa_per_n),
       mode_(params.mode),
       period_s_(control_period_s),
       window_(params.duration_s, params.refractory_s, params.arm_after_s, control_period_s),
       rate_filter_(params.rate_lowpass_hz, control_period_s) {
-  assert(params.f_thr_N > 0.0 && params.k_MPa_per_N >= 0.0 && params.df_thr_N_s >= 0.0);
+  assert(params.f_thr_N > 0.0 && params.k_pa_per_n >= 0.0 && params.df_thr_N_s >= 0.0);
 }
 
 double TensionReflex::update(double time_s, double tension_n, bool may_trigger) {

@@ -25,13 +25,14 @@
 
 namespace pamsim {
 
-// Scenario keys reflex.ib.* (paper units, named). No paper gives an Ib threshold or gain for
-// a PAM: a scenario with the Ib reflex must give f_thr_N and k_MPa_per_N (the values here
-// are placeholders for tests).
+// The Ib reflex's parameters, SI; their scenario keys reflex.ib.* (paper units, named) are
+// rows of reflex_keys.h. No paper gives an Ib threshold or gain for a PAM: a scenario with
+// the Ib reflex must give f_thr_N and k_MPa_per_N (the values here are placeholders for
+// tests).
 struct TensionReflexParams {
   double f_thr_N = 60.0;              // reflex.ib.f_thr_N > 0, the tension threshold
   double df_thr_N_s = 0.0;            // reflex.ib.df_thr_N_s >= 0, rate threshold (0: off)
-  double k_MPa_per_N = 0.002;         // reflex.ib.k_MPa_per_N >= 0, the gain
+  double k_pa_per_n = 2000.0;         // reflex.ib.k_MPa_per_N >= 0, the gain [Pa/N]
   double duration_s = 0.2;            // reflex.ib.duration_s, >= one control period
   ReflexMode mode = ReflexMode::kFollow;   // reflex.ib.mode
   double refractory_s = 0.0;          // reflex.ib.refractory_s >= 0

@@ -14,6 +14,7 @@
 
 #include "base/format.h"
 #include "base/input_error.h"
+#include "base/key_table_test_util.h"
 #include "pneumatics/pneumatic_params.h"
 
 namespace pamsim {
@@ -42,14 +43,6 @@ InputErrorParts refusal_of(const std::string& table, const std::string& key,
     return e.parts();
   }
   return {};
-}
-
-// the values just outside a range, each side that is finite
-std::vector<double> outside(const KeyRange& r) {
-  std::vector<double> values;
-  if (std::isfinite(r.lo)) values.push_back(r.lo_open ? r.lo : r.lo - 1.0 - std::fabs(r.lo));
-  if (std::isfinite(r.hi)) values.push_back(r.hi_open ? r.hi : r.hi + 1.0 + std::fabs(r.hi));
-  return values;
 }
 
 TEST(PneumaticKeyTableTest, EveryKeyHasOneDocumentedRow) {
@@ -96,9 +89,7 @@ TEST(PneumaticKeyTableTest, EveryNumberRowRefusesWhatItsRangeAndTypeExclude) {
   for (const KeyTable& table : pneumatic_key_table(&p)) {
     for (const NumberRow& row : table.numbers) {
       const std::string key = table.name + "." + row.name;
-      std::vector<std::string> bad = {"\"x\"", "nan", "true"};
-      for (double v : outside(row.range)) bad.push_back(format_number(v));
-      for (const std::string& value : bad) {
+      for (const std::string& value : bad_number_texts(row)) {
         const InputErrorParts parts = refusal_of(table.name, row.name, value);
         EXPECT_EQ(parts.key, key) << value;
         EXPECT_EQ(parts.file, path) << key;

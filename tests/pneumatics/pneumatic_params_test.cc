@@ -139,10 +139,10 @@ TEST(PneumaticParamsTest, RegulatorLoopKeysAreChecked) {
             std::string::npos)
       << ratio;
   EXPECT_NE(load_error("[regulator]\nfeedback = \"late\"\n")
-                .find("regulator.feedback: unknown value \"late\", allowed instant | delayed"),
+                .find("regulator.feedback: unknown value \"late\", allowed \"instant\" | \"delayed\""),
             std::string::npos);
   EXPECT_NE(load_error("[regulator]\nsense = \"muscle\"\n")
-                .find("regulator.sense: unknown value \"muscle\", allowed chamber | outlet"),
+                .find("regulator.sense: unknown value \"muscle\", allowed \"chamber\" | \"outlet\""),
             std::string::npos);
   EXPECT_NE(load_error("[regulator]\nsense = 1\n").find("regulator.sense: must be a string"),
             std::string::npos);
@@ -194,12 +194,12 @@ TEST(PneumaticParamsTest, CommandRangeMustBeWithinSupply) {
 
 TEST(PneumaticParamsTest, SolverStringsAreChecked) {
   EXPECT_NE(load_error("[solver]\nmethod = \"rk4\"\n")
-                .find("solver.method: unknown value \"rk4\", allowed bdf | adams"),
+                .find("solver.method: unknown value \"rk4\", allowed \"bdf\" | \"adams\""),
             std::string::npos);
   EXPECT_NE(load_error("[solver]\non_command_change = 3\n").find("solver.on_command_change"),
             std::string::npos);
   EXPECT_NE(load_error("[solver]\non_loop_action = \"cold\"\n")
-                .find("solver.on_loop_action: unknown value \"cold\", allowed warm | reinit"),
+                .find("solver.on_loop_action: unknown value \"cold\", allowed \"warm\" | \"reinit\""),
             std::string::npos);
   const PneumaticParams p = load_pneumatic_params(write_temp(
       "adams.toml", "[solver]\nmethod = \"adams\"\non_command_change = \"warm\"\n"));

@@ -181,7 +181,7 @@ TEST(StretchReflexController, StretchRampTriggersAgonistReflex) {
     EXPECT_EQ(during.reflex_active[1], 0);
     // agonist up by k v, antagonist down by k v (v ~ 150 mm/s), within [0, p_max]
     // (the fiber gain 1/300 asks for 0.5 MPa: both commands hit the valve's range)
-    const double k_v = std::min(rig.controller.reflex.k_MPa_s_per_mm * 150.0 * 1e6, 0.4e6);
+    const double k_v = std::min(rig.controller.reflex.k_pa_s_per_m * 0.150, 0.4e6);
     EXPECT_NEAR(during.p_cmd_pa[0] - 0.4e6, k_v, 0.15 * k_v);
     EXPECT_NEAR(0.4e6 - during.p_cmd_pa[1], k_v, 0.15 * k_v);
     // follow mode: back to the goal once the stretch stops, inside the window
@@ -233,7 +233,7 @@ TEST(StretchReflexController, QuietNoisySamplesNeverTripAtDefaults) {
       EXPECT_TRUE(std::isnan(h.controller.first_trigger_time_s()));
     }
     // a margin, not just luck: the largest stretch velocity stays well under threshold
-    const double v_thr = table_ii_reflex_config(sensor).v_thr_mm_s * 1e-3;
+    const double v_thr = table_ii_reflex_config(sensor).v_thr_m_s;
     EXPECT_LT(max_v, 0.6 * v_thr) << to_string(sensor) << " max v " << max_v;
   }
 }
@@ -551,13 +551,15 @@ std::vector<BadValue> bad_values() {
   return {
       {"sim.control_hz", "0", [](C c) { c.control_hz = 0.0; }},
       {"sim.control_hz", "nan", [](C c) { c.control_hz = kNaN; }},
-      {"reflex.sensor", "7", [](C c) { c.reflex.sensor = static_cast<ReflexSensor>(7); }},
-      {"reflex.mode", "7", [](C c) { c.reflex.mode = static_cast<ReflexMode>(7); }},
-      {"reflex.v_thr_mm_s", "-5", [](C c) { c.reflex.v_thr_mm_s = -5.0; }},
-      {"reflex.v_thr_mm_s", "0", [](C c) { c.reflex.v_thr_mm_s = 0.0; }},
-      {"reflex.v_thr_mm_s", "nan", [](C c) { c.reflex.v_thr_mm_s = kNaN; }},
-      {"reflex.k_MPa_s_per_mm", "-0.001", [](C c) { c.reflex.k_MPa_s_per_mm = -0.001; }},
-      {"reflex.k_MPa_s_per_mm", "nan", [](C c) { c.reflex.k_MPa_s_per_mm = kNaN; }},
+      // an enum outside its names reads as "?"
+      {"reflex.sensor", "\"?\"", [](C c) { c.reflex.sensor = static_cast<ReflexSensor>(7); }},
+      {"reflex.mode", "\"?\"", [](C c) { c.reflex.mode = static_cast<ReflexMode>(7); }},
+      // SI fields, reported in the keys' units
+      {"reflex.v_thr_mm_s", "-5", [](C c) { c.reflex.v_thr_m_s = -0.005; }},
+      {"reflex.v_thr_mm_s", "0", [](C c) { c.reflex.v_thr_m_s = 0.0; }},
+      {"reflex.v_thr_mm_s", "nan", [](C c) { c.reflex.v_thr_m_s = kNaN; }},
+      {"reflex.k_MPa_s_per_mm", "-0.001", [](C c) { c.reflex.k_pa_s_per_m = -1e6; }},
+      {"reflex.k_MPa_s_per_mm", "nan", [](C c) { c.reflex.k_pa_s_per_m = kNaN; }},
       {"reflex.duration_s", "-0.2", [](C c) { c.reflex.duration_s = -0.2; }},
       {"reflex.duration_s", "0.001", [](C c) { c.reflex.duration_s = 0.001; }},
       {"reflex.duration_s", "nan", [](C c) { c.reflex.duration_s = kNaN; }},
@@ -628,8 +630,8 @@ TEST(StretchReflexControllerConfig, MessagesSayWhatIsAllowed) {
     return std::string("no throw");
   };
   using C = StretchReflexControllerConfig&;
-  EXPECT_EQ(message([](C c) { c.reflex.v_thr_mm_s = -5.0; }),
-            "reflex.v_thr_mm_s must be > 0, got -5");
+  EXPECT_EQ(message([](C c) { c.reflex.v_thr_m_s = -0.005; }),
+            "reflex.v_thr_mm_s must be in (0, inf), got -5");
   EXPECT_EQ(message([](C c) { c.reflex.duration_s = 0.001; }),
             "reflex.duration_s must be >= one control period (0.01 s), got 0.001");
   EXPECT_EQ(message([](C c) { c.pairs = {ReflexPair{0, 2}}; }),
@@ -659,12 +661,12 @@ TEST(ReflexSensor, ParsesAndRejectsNamingTheKey) {
 TEST(ReflexSensor, TableIiThresholdsAndGains) {
   const ReflexConfig model = table_ii_reflex_config(ReflexSensor::kModel);
   EXPECT_EQ(model.sensor, ReflexSensor::kModel);
-  EXPECT_DOUBLE_EQ(model.v_thr_mm_s, 70.0);
-  EXPECT_DOUBLE_EQ(model.k_MPa_s_per_mm, 1.0 / 800.0);
+  EXPECT_DOUBLE_EQ(model.v_thr_m_s, 70.0e-3);            // 70 mm/s
+  EXPECT_DOUBLE_EQ(model.k_pa_s_per_m, 1e6 / 800.0 / 1e-3);   // 1/800 MPa per mm/s
   const ReflexConfig fiber = table_ii_reflex_config(ReflexSensor::kFiber);
   EXPECT_EQ(fiber.sensor, ReflexSensor::kFiber);
-  EXPECT_DOUBLE_EQ(fiber.v_thr_mm_s, 25.0);
-  EXPECT_DOUBLE_EQ(fiber.k_MPa_s_per_mm, 1.0 / 300.0);
+  EXPECT_DOUBLE_EQ(fiber.v_thr_m_s, 25.0e-3);
+  EXPECT_DOUBLE_EQ(fiber.k_pa_s_per_m, 1e6 / 300.0 / 1e-3);
   // the other fields keep their defaults
   EXPECT_DOUBLE_EQ(fiber.duration_s, ReflexConfig{}.duration_s);
   EXPECT_EQ(fiber.enabled, ReflexConfig{}.enabled);

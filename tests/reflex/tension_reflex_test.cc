@@ -27,7 +27,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 TensionReflexParams params() {
   TensionReflexParams p;
   p.f_thr_N = 60.0;
-  p.k_MPa_per_N = 0.004;
+  p.k_pa_per_n = 4000.0;   // 0.004 MPa/N
   p.duration_s = 0.05;   // 5 ticks
   p.refractory_s = 0.03;  // 3 ticks
   p.arm_after_s = 0.0;
@@ -159,7 +159,7 @@ TEST(TensionReflexTest, EveryValidatedKeyRefusesABadValue) {
   bad([](TensionReflexParams& p) { p.f_thr_N = -5.0; }, "reflex.ib.f_thr_N", "-5");
   bad([](TensionReflexParams& p) { p.f_thr_N = 0.0; }, "reflex.ib.f_thr_N", "0");
   bad([](TensionReflexParams& p) { p.df_thr_N_s = -1.0; }, "reflex.ib.df_thr_N_s", "-1");
-  bad([](TensionReflexParams& p) { p.k_MPa_per_N = kNaN; }, "reflex.ib.k_MPa_per_N", "nan");
+  bad([](TensionReflexParams& p) { p.k_pa_per_n = kNaN; }, "reflex.ib.k_MPa_per_N", "nan");
   bad([](TensionReflexParams& p) { p.duration_s = 0.001; }, "reflex.ib.duration_s", "0.001");
   bad([](TensionReflexParams& p) { p.refractory_s = -0.1; }, "reflex.ib.refractory_s", "-0.1");
   bad([](TensionReflexParams& p) { p.arm_after_s = -1.0; }, "reflex.ib.arm_after_s", "-1");

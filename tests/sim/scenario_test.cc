@@ -54,15 +54,15 @@ TEST(ScenarioTest, ShippedScenariosLoad) {
   const Scenario sc = load_scenario(kScenario);
   const StretchReflexScenarioConfig* reflex = sc.controller_config<StretchReflexScenarioConfig>();
   ASSERT_NE(reflex, nullptr);
-  EXPECT_DOUBLE_EQ(reflex->reflex.v_thr_mm_s, 70.0);
-  EXPECT_DOUBLE_EQ(reflex->reflex.k_MPa_s_per_mm, 1.0 / 800.0);
+  EXPECT_DOUBLE_EQ(reflex->reflex.v_thr_m_s, 70.0e-3);   // 70 mm/s
+  EXPECT_DOUBLE_EQ(reflex->reflex.k_pa_s_per_m, 1e6 / 800.0 / 1e-3);   // 1/800 MPa s/mm
   EXPECT_DOUBLE_EQ(sc.muscle("agonist")->command.at(0.0), 0.4e6);
 }
 
 TEST(ScenarioTest, OverridesTakeEffect) {
   const Scenario sc = load_scenario(kScenario, {"reflex.v_thr_mm_s=55", "seed=9",
                                                 "valve.model=first_order"});
-  EXPECT_DOUBLE_EQ(sc.controller_config<StretchReflexScenarioConfig>()->reflex.v_thr_mm_s, 55.0);
+  EXPECT_DOUBLE_EQ(sc.controller_config<StretchReflexScenarioConfig>()->reflex.v_thr_m_s, 55.0e-3);
   EXPECT_EQ(sc.seed, 9u);
   EXPECT_EQ(sc.valve_model, ValveModel::kFirstOrder);
 }

@@ -321,8 +321,8 @@ TEST_F(SweepTest, BestScenarioKeepsTheBaseAndSetsThePoint) {
   const pamsim::Scenario base = pamsim::load_scenario(kDropMass, {});
   const auto* reflex = sc.controller_config<pamsim::StretchReflexScenarioConfig>();
   ASSERT_NE(reflex, nullptr);
-  EXPECT_EQ(reflex->reflex.v_thr_mm_s, 50.0);
-  EXPECT_EQ(reflex->reflex.k_MPa_s_per_mm, 0.002);
+  EXPECT_DOUBLE_EQ(reflex->reflex.v_thr_m_s, 50.0e-3);   // the file's 50 mm/s, in SI
+  EXPECT_DOUBLE_EQ(reflex->reflex.k_pa_s_per_m, 0.002e9);
   EXPECT_EQ(fs::weakly_canonical(sc.model_file), fs::weakly_canonical(base.model_file));
   EXPECT_EQ(sc.duration_s, base.duration_s);
   EXPECT_EQ(text.rfind("# header\n", 0), 0u);
