@@ -157,13 +157,13 @@ std::vector<std::string> overrides_of(const py::object& given) {
   return given.cast<std::vector<std::string>>();
 }
 
-py::dict summary_to_dict(const TrialSummary& s) {
+// summary.json's object as `pamsim run` writes it (status, seed, the metrics by name, null
+// where undefined, "scenario"), and "metrics": every metric again, NaN where undefined, the
+// timing ones included (the shape of `summary` before 0.4, kept for its callers)
+py::dict summary_to_dict(const TrialSummary& s, const std::string& summary_json) {
+  py::dict out = py::module_::import("json").attr("loads")(summary_json);
   py::dict metrics;
   for (const Metric& m : s.metrics) metrics[py::str(m.name)] = m.value;
-  py::dict out;
-  out["status"] = s.status;
-  out["message"] = s.message;
-  out["seed"] = s.seed;
   out["metrics"] = metrics;
   return out;
 }
@@ -183,7 +183,7 @@ struct PyResult {
     }
     return a;
   }
-  py::dict summary() const { return summary_to_dict(result.summary); }
+  py::dict summary() const { return summary_to_dict(result.summary, summary_json()); }
   std::string csv() const { return trajectory_to_csv(result.trajectory); }
   std::string summary_json() const { return summary_to_json(result.summary, scenario, false).dump(2) + "\n"; }
 };

@@ -26,6 +26,7 @@ packages=(
   slurm-wlm munge                            # tests/slurm: a one-node Slurm for scripts/slurm/
   pybind11-dev python3-dev python3-numpy python3-pytest   # the Python module and its tests
   python3-pandas python3-matplotlib          # DataFrames in the module; the example script
+  python3-venv python3-pip                   # pip install . into a fresh virtual environment
 )
 
 missing=()

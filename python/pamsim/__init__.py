@@ -7,10 +7,14 @@ Units are the papers' (MPa, mm, N) and are named in every argument and key.
     law = pamsim.SpringModel.from_file("models/pams/table4_agonist.toml")
     law.force_N(pressure_MPa=[0.4, 0.5], deformation_mm=10.0)       # numpy, vectorised
     result = pamsim.run("scenarios/drop_mass.toml", {"reflex.v_thr_mm_s": 60.0})
-    result.summary["metrics"]["peak_drop_deg"]; pamsim.frame(result)  # a DataFrame
+    result.summary["peak_drop_deg"]; pamsim.frame(result)   # summary.json's object; a DataFrame
 
 Errors in input raise pamsim.InputError, a ValueError with pamsim's one-line message.
 """
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
 from ._pamsim import (  # noqa: F401
     InputError,
     Result,
@@ -26,14 +30,19 @@ from ._pamsim import (  # noqa: F401
     tensile_test,
 )
 
+if TYPE_CHECKING:   # numpy is imported when a value needs it; pandas only by frame()
+    import numpy as np
+    import numpy.typing as npt
+    import pandas
 
-def trajectory(result):
+
+def trajectory(result: Result) -> dict[str, npt.NDArray[np.float64]]:
     """A Result's log as {column: numpy array}."""
     values = result.values
     return {name: values[:, k] for k, name in enumerate(result.columns)}
 
 
-def frame(result_or_columns):
+def frame(result_or_columns: Result | dict[str, Any]) -> pandas.DataFrame:
     """A pandas DataFrame of a Result's log, or of the {column: values} that read_sweep,
     read_tensile_csv and tensile_test return (pandas must be installed)."""
     import pandas

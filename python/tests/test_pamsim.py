@@ -72,6 +72,11 @@ def test_run_equals_the_command_lines_trajectory_byte_for_byte(tmp_path):
     summary = json.loads((tmp_path / "cli" / "summary.json").read_text())
     assert result.summary["status"] == "ok"
     assert result.summary["metrics"]["peak_drop_deg"] == summary["peak_drop_deg"]
+    # summary is summary.json's object (the file's path aside), plus "metrics"
+    mine = dict(result.summary)
+    del mine["metrics"]
+    del mine["scenario"]["file"], summary["scenario"]["file"]
+    assert mine == summary
     # overrides as a dict are the same thing
     same = pamsim.run(DROP, {"sim.duration_s": 1.5, "drop.time_s": 0.3})
     assert np.array_equal(same.values, result.values)
