@@ -175,7 +175,32 @@ class PyTrial {
     out["length_est_mm"] = scaled(o.length_est_m, 1e3);
     std::vector<bool> active(o.reflex_active.begin(), o.reflex_active.end());
     out["reflex_active"] = active;
+    out["measured"] = measured(o);
     return out;
+  }
+
+  // What the controller saw at the last control tick, in the log's units and by its columns'
+  // names (trajectory.csv's p_meas, force_meas, length_est, velocity_est, fiber_rate,
+  // pressure_sensor and gauge): one value per muscle each, NaN where an instrument is absent.
+  static py::dict measured(const TrialObservation& o) {
+    // the log's own conversions (trial_step.cc), so that the values are its bits
+    const auto same = [](double v) { return v; };
+    const auto column = [&](auto field, auto convert) {
+      std::vector<double> v;
+      for (const MuscleReading& r : o.readings) v.push_back(convert(r.*field));
+      return v;
+    };
+    std::vector<double> velocity;
+    for (double v : o.velocity_est_m_s) velocity.push_back(units::m_to_mm(v));
+    py::dict m;
+    m["p_meas_MPa"] = column(&MuscleReading::pressure_meas_pa, units::pa_to_mpa);
+    m["force_meas_N"] = column(&MuscleReading::force_meas_n, same);
+    m["length_est_mm"] = column(&MuscleReading::length_est_m, units::m_to_mm);
+    m["velocity_est_mm_s"] = velocity;
+    m["fiber_rate_mm_s"] = column(&MuscleReading::fiber_rate_m_s, units::m_to_mm);
+    m["pressure_sensor_V"] = column(&MuscleReading::pressure_sensor_v, same);
+    m["gauge_V"] = column(&MuscleReading::gauge_v, same);
+    return m;
   }
 
   PyResult finish() {

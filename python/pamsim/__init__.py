@@ -10,6 +10,8 @@ Units are the papers' (MPa, mm, N) and are named in every argument and key.
     result.summary["peak_drop_deg"]; pamsim.frame(result)   # summary.json's object; a DataFrame
 
 Errors in input raise pamsim.InputError, a ValueError with pamsim's one-line message.
+With gymnasium installed, importing pamsim registers its environments (pamsim.envs):
+gymnasium.make("pamsim/DropMass-v0").
 """
 from __future__ import annotations
 
@@ -50,3 +52,17 @@ def frame(result_or_columns: Result | dict[str, Any]) -> pandas.DataFrame:
     if isinstance(result_or_columns, Result):
         return pandas.DataFrame(result_or_columns.values, columns=result_or_columns.columns)
     return pandas.DataFrame(result_or_columns)
+
+
+def _register_envs() -> None:
+    """Registers pamsim.envs with gymnasium when it is installed (its import is optional)."""
+    import importlib.util
+
+    if importlib.util.find_spec("gymnasium") is None:
+        return
+    from .envs import register_envs
+
+    register_envs()
+
+
+_register_envs()

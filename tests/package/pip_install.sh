@@ -5,7 +5,8 @@
 # of BUILD_DIR installed into WORK_DIR/prefix, so that only the module compiles (a user's
 # plain `pip install .` builds pamsim too); then `pip wheel .` and that wheel installed into a
 # second environment. Each imports pamsim from outside the source tree, with no PYTHONPATH,
-# and runs a trial. Then the package's typing and style: ruff, mypy --strict, and the stub of
+# and runs a trial. Then the Gymnasium environments' tests (python/tests/test_envs.py) with
+# gymnasium from the registry, and the package's typing and style: ruff, mypy --strict, and the stub of
 # the compiled module against the module itself (mypy.stubtest).
 set -euo pipefail
 source_dir=$(cd "$(dirname "$0")/../.." && pwd)
@@ -42,7 +43,12 @@ python3 -m venv "$work/venv2"
 "$work/venv2/bin/pip" install --quiet "$work"/wheels/pamsim-*.whl
 check "$work/venv2"
 
-"$work/venv/bin/pip" install --quiet ruff mypy
+# the Gymnasium environments, as a user gets them (gymnasium from the registry)
+"$work/venv/bin/pip" install --quiet gymnasium pytest ruff mypy
+(cd "$work" && "$work/venv/bin/python" -c \
+  "import pamsim, gymnasium; gymnasium.make('pamsim/DropMass-v0'); print('DropMass-v0 made')")
+(cd "$work" && "$work/venv/bin/python" -m pytest -q -p no:cacheprovider \
+   "$source_dir/python/tests/test_envs.py")
 "$work/venv/bin/ruff" check --config "$source_dir/pyproject.toml" "$source_dir/python"
 (cd "$work" && "$work/venv/bin/mypy" --config-file "$source_dir/pyproject.toml" -p pamsim &&
  "$work/venv/bin/python" -m mypy.stubtest --mypy-config-file "$source_dir/pyproject.toml" \

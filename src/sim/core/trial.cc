@@ -258,7 +258,9 @@ TrialObservation TrialRun::observe() const {
     o.length_m.push_back(pam_muscle_length(m_, d_, act, &track));
     o.length_est_m.push_back(readings_[i].length_est_m);
     o.reflex_active.push_back(i < out_.reflex_active.size() ? out_.reflex_active[i] : 0);
+    o.velocity_est_m_s.push_back(i < out_.velocity_m_s.size() ? out_.velocity_m_s[i] : 0.0);
   }
+  o.readings = readings_;
   return o;
 }
 

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "sensing/muscle_reading.h"
 #include "sim/core/metrics.h"
 #include "sim/core/scenario.h"
 #include "sim/core/trial_log.h"
@@ -99,6 +100,11 @@ struct TrialObservation {
   std::vector<double> length_m;        // each PAM's length
   std::vector<double> length_est_m;    // the estimator's length, as of the last control tick
   std::vector<char> reflex_active;     // as of the last control tick (stretch reflex only)
+  // What the controller saw at the last control tick, as the log's row of that tick has it:
+  // the instruments' readings and estimates (sensing/muscle_reading.h), and the velocity
+  // each muscle's control acted on (the log's velocity_est_<m>_mm_s).
+  std::vector<MuscleReading> readings;
+  std::vector<double> velocity_est_m_s;
 };
 
 // A trial advanced by its caller one control period at a time, for a controller outside

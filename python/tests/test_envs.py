@@ -1,0 +1,90 @@
+"""The Gymnasium environments (pamsim.envs), where gymnasium is installed (the pip install
+test installs it; Debian has no package): the environment checker, the observation against
+the trial log at the same tick, determinism and the reset's randomization, and bad actions."""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+gymnasium = pytest.importorskip("gymnasium")
+
+import pamsim  # noqa: E402  (registers the environments)
+from pamsim.envs.drop_mass import MEASURED  # noqa: E402
+
+
+def make(**kwargs):
+    return gymnasium.make("pamsim/DropMass-v0", **kwargs)
+
+
+def test_every_registered_environment_passes_the_checker():
+    from gymnasium.utils.env_checker import check_env
+
+    for env_id in ("pamsim/DropMass-v0", "pamsim/DropMass-Noisy-v0"):
+        env = gymnasium.make(env_id)
+        check_env(env.unwrapped, skip_render_check=True)
+        env.close()
+
+
+def episode(env, seed, action):
+    obs, info = env.reset(seed=seed)
+    observations, rewards = [obs], []
+    while True:
+        obs, reward, terminated, truncated, step_info = env.step(action)
+        observations.append(obs)
+        rewards.append(reward)
+        if terminated or truncated:
+            return np.array(observations), np.array(rewards), info, step_info
+
+
+def test_the_observation_is_the_logs_measured_columns_at_the_same_tick():
+    env = make(duration_s=0.8)
+    observations, _, _, _ = episode(env, 3, np.array([0.4, 0.4], dtype=np.float32))
+    result = env.unwrapped.last_result
+    log = pamsim.trajectory(result)
+    labels = env.unwrapped.muscles   # the log's muscle labels ("ago", "anta")
+    for k, obs in enumerate(observations[:-1]):   # the last step ends the trial
+        expected = [_column(log, c, m)[k] for m in labels for c in MEASURED]
+        np.testing.assert_array_equal(obs, np.array(expected), err_msg=f"tick {k}")
+
+
+def _column(log, measured, label):
+    # "p_meas_MPa" -> "p_meas_ago_MPa": the muscle's label before the unit
+    stem, unit = {"p_meas_MPa": ("p_meas", "MPa"), "force_meas_N": ("force_meas", "N"),
+                  "length_est_mm": ("length_est", "mm"),
+                  "velocity_est_mm_s": ("velocity_est", "mm_s")}[measured]
+    return log[f"{stem}_{label}_{unit}"]
+
+
+def test_the_same_seed_gives_the_same_episode_and_seeds_differ():
+    action = np.array([0.45, 0.35], dtype=np.float32)
+    a = episode(make(duration_s=0.8), 11, action)
+    b = episode(make(duration_s=0.8), 11, action)
+    assert a[0].tobytes() == b[0].tobytes() and a[1].tobytes() == b[1].tobytes()
+    infos = [make(duration_s=0.8).reset(seed=s)[1] for s in (1, 2, 3)]
+    assert len({(i["drop_time_s"], i["mass_kg"], i["height_m"]) for i in infos}) == 3
+    for i in infos:
+        assert 0.3 <= i["drop_time_s"] <= 0.6 and 0.15 <= i["mass_kg"] <= 0.25
+        assert 0.10 <= i["height_m"] <= 0.18
+
+
+def test_a_nan_action_raises_and_leaves_the_episode_where_it_was():
+    env = make(duration_s=0.8)
+    obs, _ = env.reset(seed=1)
+    before = env.unwrapped._trial.observe()["time_s"]
+    with pytest.raises(ValueError, match="NaN"):
+        env.step(np.array([np.nan, 0.4], dtype=np.float32))
+    assert env.unwrapped._trial.observe()["time_s"] == before
+
+
+def test_an_action_outside_the_space_is_clipped_with_one_warning_per_episode():
+    env = make(duration_s=0.8)
+    env.reset(seed=1)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        for _ in range(3):
+            env.step(np.array([2.0, -1.0], dtype=np.float32))
+    assert len([w for w in caught if "clipped" in str(w.message)]) == 1
+    assert env.unwrapped._trial.observe()["command_MPa"][0] <= 0.8
