@@ -40,7 +40,7 @@ def episode(env, seed, action):
 
 
 def test_the_observation_is_the_logs_measured_columns_at_the_same_tick():
-    env = make(duration_s=0.8)
+    env = make(duration_s=0.7)
     observations, _, _, _ = episode(env, 3, np.array([0.4, 0.4], dtype=np.float32))
     result = env.unwrapped.last_result
     log = pamsim.trajectory(result)
@@ -60,10 +60,10 @@ def _column(log, measured, label):
 
 def test_the_same_seed_gives_the_same_episode_and_seeds_differ():
     action = np.array([0.45, 0.35], dtype=np.float32)
-    a = episode(make(duration_s=0.8), 11, action)
-    b = episode(make(duration_s=0.8), 11, action)
+    a = episode(make(duration_s=0.7), 11, action)
+    b = episode(make(duration_s=0.7), 11, action)
     assert a[0].tobytes() == b[0].tobytes() and a[1].tobytes() == b[1].tobytes()
-    infos = [make(duration_s=0.8).reset(seed=s)[1] for s in (1, 2, 3)]
+    infos = [make(duration_s=0.7).reset(seed=s)[1] for s in (1, 2, 3)]
     assert len({(i["drop_time_s"], i["mass_kg"], i["height_m"]) for i in infos}) == 3
     for i in infos:
         assert 0.3 <= i["drop_time_s"] <= 0.6 and 0.15 <= i["mass_kg"] <= 0.25
@@ -71,7 +71,7 @@ def test_the_same_seed_gives_the_same_episode_and_seeds_differ():
 
 
 def test_a_nan_action_raises_and_leaves_the_episode_where_it_was():
-    env = make(duration_s=0.8)
+    env = make(duration_s=0.7)
     obs, _ = env.reset(seed=1)
     before = env.unwrapped._trial.observe()["time_s"]
     with pytest.raises(ValueError, match="NaN"):
@@ -80,7 +80,7 @@ def test_a_nan_action_raises_and_leaves_the_episode_where_it_was():
 
 
 def test_an_action_outside_the_space_is_clipped_with_one_warning_per_episode():
-    env = make(duration_s=0.8)
+    env = make(duration_s=0.7)
     env.reset(seed=1)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -88,3 +88,40 @@ def test_an_action_outside_the_space_is_clipped_with_one_warning_per_episode():
             env.step(np.array([2.0, -1.0], dtype=np.float32))
     assert len([w for w in caught if "clipped" in str(w.message)]) == 1
     assert env.unwrapped._trial.observe()["command_MPa"][0] <= 0.8
+
+
+def vector_episode(vec, steps):
+    """`steps` batched steps of a fixed action from reset(seed=5): every output's bytes."""
+    out = [vec.reset(seed=5)[0].tobytes()]
+    action = np.tile(np.array([0.45, 0.35], dtype=np.float32), (vec.num_envs, 1))
+    for _ in range(steps):
+        obs, reward, terminated, truncated, _ = vec.step(action)
+        out += [obs.tobytes(), reward.tobytes(), terminated.tobytes(), truncated.tobytes()]
+    vec.close()
+    return out
+
+
+def test_threaded_and_sync_vector_envs_give_the_same_episode_bytes():
+    from pamsim.envs import ThreadedVectorEnv
+    from pamsim.envs.drop_mass import DropMassEnv
+
+    def fns():
+        return [lambda: DropMassEnv(duration_s=0.7) for _ in range(3)]
+
+    sync = gymnasium.vector.SyncVectorEnv(fns())
+    threaded = ThreadedVectorEnv(fns(), threads=2)
+    steps = 150   # past the 70-step episodes: the autoresets are compared too
+    a, b = vector_episode(sync, steps), vector_episode(threaded, steps)
+    assert a == b
+    made = gymnasium.make_vec("pamsim/DropMass-v0", num_envs=2,
+                              vectorization_mode="vector_entry_point", duration_s=0.7)
+    assert isinstance(made, ThreadedVectorEnv) and made.num_envs == 2
+    made.close()
+
+
+def test_gymnasiums_sync_and_async_vector_envs_run_it_alike():
+    kwargs = {"num_envs": 2, "duration_s": 0.7}
+    sync = gymnasium.make_vec("pamsim/DropMass-v0", vectorization_mode="sync", **kwargs)
+    asynchronous = gymnasium.make_vec("pamsim/DropMass-v0", vectorization_mode="async",
+                                      **kwargs)
+    assert vector_episode(sync, 20) == vector_episode(asynchronous, 20)

@@ -6,14 +6,16 @@ gymnasium installed (``pip install gymnasium``):
 
 ``pamsim/DropMass-v0``: the falling-mass experiment of Yoshida and Hosoda's stretch reflex
 paper with the agent as the arm's controller (``drop_mass.DropMassEnv``);
-``pamsim/DropMass-Noisy-v0``: the same with twice the sensors' noise.
+``pamsim/DropMass-Noisy-v0``: the same with twice the sensors' noise. Vectorised by
+gymnasium (``make_vec(..., vectorization_mode="sync" | "async")``) or on threads in one
+process (``"vector_entry_point"``: ``vector.ThreadedVectorEnv``).
 """
 
 from __future__ import annotations
 
 from typing import Any
 
-__all__ = ["DropMassEnv", "register_envs"]
+__all__ = ["DropMassEnv", "ThreadedVectorEnv", "register_envs"]
 
 
 def __getattr__(name: str) -> Any:
@@ -22,6 +24,10 @@ def __getattr__(name: str) -> Any:
         from .drop_mass import DropMassEnv
 
         return DropMassEnv
+    if name == "ThreadedVectorEnv":
+        from .vector import ThreadedVectorEnv
+
+        return ThreadedVectorEnv
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
@@ -30,8 +36,9 @@ def register_envs() -> None:
     import gymnasium
 
     entry = "pamsim.envs.drop_mass:DropMassEnv"
+    vector = "pamsim.envs.vector:make_threaded"   # make_vec(..., "vector_entry_point")
     if "pamsim/DropMass-v0" in gymnasium.registry:
         return
-    gymnasium.register("pamsim/DropMass-v0", entry_point=entry)
-    gymnasium.register("pamsim/DropMass-Noisy-v0", entry_point=entry,
+    gymnasium.register("pamsim/DropMass-v0", entry_point=entry, vector_entry_point=vector)
+    gymnasium.register("pamsim/DropMass-Noisy-v0", entry_point=entry, vector_entry_point=vector,
                        kwargs={"noise_scale": 2.0})

@@ -81,7 +81,11 @@ class DropMassEnv(gymnasium.Env[Obs, Act]):
         self._warned = False
         self._time_s = 0.0
         self.last_result: Any = None
-        probe = Trial(self.scenario, self._overrides(0.5, 0.2, 0.14))
+        if randomize and not duration_s > DROP_TIME_S[1]:
+            raise ValueError(f"duration_s must exceed the latest drop time {DROP_TIME_S[1]} s, "
+                             f"got {duration_s}")
+        probe = Trial(self.scenario, self._draws_as_overrides(
+            [DROP_TIME_S[1], MASS_KG[1], HEIGHT_M[1]] if randomize else [math.nan] * 3))
         self.muscles: list[str] = list(probe.muscles)
         n = len(self.muscles)
         self.action_space = spaces.Box(0.0, p_max_MPa, shape=(n,), dtype=np.float32)
@@ -92,6 +96,11 @@ class DropMassEnv(gymnasium.Env[Obs, Act]):
         return {"sim.duration_s": self.duration_s, "drop.time_s": drop_time_s,
                 "drop.mass_kg": mass_kg, "drop.height_m": height_m,
                 "sensors.noise_scale": self.noise_scale}
+
+    def _draws_as_overrides(self, draws: list[float]) -> dict[str, Any]:
+        """The scenario keys of a reset's draws (NaN: the scenario's own value)."""
+        return {k: v for k, v in self._overrides(*draws).items()
+                if not (isinstance(v, float) and math.isnan(v))}
 
     def _observe(self) -> Obs:
         assert self._trial is not None
@@ -111,8 +120,7 @@ class DropMassEnv(gymnasium.Env[Obs, Act]):
             draws = [float(rng.uniform(*r)) for r in (DROP_TIME_S, MASS_KG, HEIGHT_M)]
         else:
             draws = [math.nan] * 3
-        overrides = {k: v for k, v in self._overrides(*draws).items()
-                     if not (isinstance(v, float) and math.isnan(v))}
+        overrides = self._draws_as_overrides(draws)
         sensor_seed = int(rng.integers(1, 2**31))
         self._trial = Trial(self.scenario, overrides, seed=sensor_seed)
         self._start_angle_deg = self._trial.observe()["angle_deg"]
