@@ -44,12 +44,16 @@ python3 -m venv "$work/venv2"
 check "$work/venv2"
 
 # the Gymnasium environments, as a user gets them (gymnasium from the registry)
-"$work/venv/bin/pip" install --quiet gymnasium pytest ruff mypy
+"$work/venv/bin/pip" install --quiet gymnasium cma pytest ruff mypy
 (cd "$work" && "$work/venv/bin/python" -c \
   "import pamsim, gymnasium; gymnasium.make('pamsim/DropMass-v0'); print('DropMass-v0 made')")
 (cd "$work" && "$work/venv/bin/python" -m pytest -q -p no:cacheprovider \
    "$source_dir/python/tests/test_envs.py")
-"$work/venv/bin/ruff" check --config "$source_dir/pyproject.toml" "$source_dir/python"
+# the learning example runs (one generation; its table in the docs comes from 25)
+(cd "$work" && "$work/venv/bin/python" -W ignore "$source_dir/examples/learn_reflex.py" \
+   --generations 1 --out "$work/learn_reflex.csv" | tail -4)
+"$work/venv/bin/ruff" check --config "$source_dir/pyproject.toml" "$source_dir/python" \
+  "$source_dir/examples/learn_reflex.py" "$source_dir/bench/env_throughput.py"
 (cd "$work" && "$work/venv/bin/mypy" --config-file "$source_dir/pyproject.toml" -p pamsim &&
  "$work/venv/bin/python" -m mypy.stubtest --mypy-config-file "$source_dir/pyproject.toml" \
    --allowlist "$source_dir/python/stubtest_allowlist.txt" pamsim._pamsim)

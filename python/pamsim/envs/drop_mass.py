@@ -17,9 +17,11 @@ p_meas_<m>_MPa, force_meas_<m>_N, length_est_<m>_mm, velocity_est_<m>_mm_s have 
 same tick; with ``fiber=True`` also the fiber sensor's rate [mm/s] (fiber_rate_<m>_mm_s);
 with ``observation="privileged"`` also the true angle [deg] and angular velocity [deg/s].
 
-Reward: minus the arm's drop below its starting angle [deg] times the control period [s]
-each step (the integral of the drop, deg s); when the episode ends with the mass lost from
-the basket (summary mass_retained = 0), a further -``mass_lost_penalty`` (default 10).
+Reward: minus the arm's deviation from its starting angle, |angle - start| [deg], times the
+control period [s] each step (the integral of the deviation, deg s: the posture held against
+the drop, so that lifting the arm out of the way earns nothing); when the episode ends with
+the mass lost from the basket (summary mass_retained = 0), a further -``mass_lost_penalty``
+(default 10).
 
 Each reset draws the drop time in [0.3, 0.6] s, the mass in [0.15, 0.25] kg and the drop
 height in [0.10, 0.18] m (around the paper's 0.2 kg from 14 cm), and the sensors' noise seed,
@@ -152,7 +154,7 @@ class DropMassEnv(gymnasium.Env[Obs, Act]):
         o = self._trial.observe()
         period_s = o["time_s"] - self._time_s   # the control period just run
         self._time_s = o["time_s"]
-        reward = -max(0.0, self._start_angle_deg - o["angle_deg"]) * period_s
+        reward = -abs(o["angle_deg"] - self._start_angle_deg) * period_s
         obs = self._observe()
         if running and not self._trial.done:
             return obs, reward, False, False, {}
