@@ -3,6 +3,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -21,6 +22,11 @@ std::string choices_text(const ChoiceRow& row) {
     allowed += (allowed.empty() ? "\"" : " | \"") + a + "\"";
   }
   return allowed;
+}
+
+// "[0, 64]"
+std::string int_range(const IntRow& row) {
+  return "[" + std::to_string(row.lo) + ", " + std::to_string(row.hi) + "]";
 }
 
 bool allows(const ChoiceRow& row, const std::string& value) {
@@ -92,6 +98,17 @@ void read_key(const std::string& path, const KeyTable& table, const std::string&
   for (const ChoiceRow& row : table.choices) {
     if (row.name == name) return read_choice(path, key, row, node);
   }
+  for (const IntRow& row : table.ints) {
+    if (row.name != name) continue;
+    const auto v = node.value<std::int64_t>();
+    if (!node.is_integer() || !v) throw file_key_error(path, key, "must be an integer");
+    if (*v < row.lo || *v > row.hi) {
+      throw file_key_error(path, key, "value " + std::to_string(*v) +
+                                          " out of range, allowed " + int_range(row));
+    }
+    *row.target = static_cast<int>(*v);
+    return;
+  }
   for (const BoolRow& row : table.bools) {
     if (row.name != name) continue;
     if (!node.is_boolean()) throw file_key_error(path, key, "must be true or false");
@@ -102,6 +119,7 @@ void read_key(const std::string& path, const KeyTable& table, const std::string&
   for (const NumberRow& row : table.numbers) allowed += (allowed.empty() ? "" : ", ") + row.name;
   for (const ChoiceRow& row : table.choices) allowed += (allowed.empty() ? "" : ", ") + row.name;
   for (const BoolRow& row : table.bools) allowed += (allowed.empty() ? "" : ", ") + row.name;
+  for (const IntRow& row : table.ints) allowed += (allowed.empty() ? "" : ", ") + row.name;
   throw file_key_error(path, key, "unknown key (allowed: " + allowed + ")");
 }
 
@@ -150,6 +168,13 @@ void read_key_rows(ConfigReader& in, const KeyTable& table) {
     row.set(value);
   }
   for (const BoolRow& row : table.bools) *row.target = in.get_bool(key(row.name), *row.target);
+  for (const IntRow& row : table.ints) {
+    const std::string k = key(row.name);
+    const std::int64_t v = in.get_int(k, *row.target);
+    in.check(v >= row.lo && v <= row.hi, k, "must be in " + int_range(row) + ", got " +
+                                                std::to_string(v));
+    *row.target = static_cast<int>(v);
+  }
   for (const NumberRow& row : table.numbers) read_number_row(in, key(row.name), row);
 }
 
@@ -159,6 +184,10 @@ void check_key_rows(const KeyTable& table) {
     if (si == nullptr) continue;
     const double v = from_si(row, *si);
     require_value(row.range.contains(v), table.name + "." + row.name, "in " + row.range.text(), v);
+  }
+  for (const IntRow& row : table.ints) {
+    require_value(*row.target >= row.lo && *row.target <= row.hi, table.name + "." + row.name,
+                  "in " + int_range(row), *row.target);
   }
   for (const ChoiceRow& row : table.choices) {
     const std::string key = table.name + "." + row.name;
@@ -208,6 +237,10 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
     for (const BoolRow& row : t.bools) {
       docs.push_back({t.name + "." + row.name, "", *row.target ? "true" : "false",
                       "true | false", row.doc});
+    }
+    for (const IntRow& row : t.ints) {
+      docs.push_back({t.name + "." + row.name, "", std::to_string(*row.target), int_range(row),
+                      row.doc});
     }
   }
   return docs;

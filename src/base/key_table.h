@@ -41,6 +41,15 @@ struct NumberRow {
                                 // field's one value ("(Table II: 70 model, 25 fiber)")
 };
 
+// An integer key (a count: bits, steps), in [lo, hi].
+struct IntRow {
+  std::string name;
+  std::string doc;
+  long lo = 0;
+  long hi = 0;
+  int* target = nullptr;
+};
+
 // A true/false key.
 struct BoolRow {
   std::string name;
@@ -63,6 +72,7 @@ struct KeyTable {
   std::vector<NumberRow> numbers;
   std::vector<ChoiceRow> choices;
   std::vector<BoolRow> bools{};
+  std::vector<IntRow> ints{};
 };
 
 class ConfigReader;
@@ -87,7 +97,7 @@ void read_key_tables(const toml::table& doc, const std::string& path,
 // One table of a larger document (a scenario's "reflex"), read by `in` (ConfigReader, which
 // marks the keys read and refuses the keys nobody reads): the choices first (a choice may set
 // other fields' defaults, as reflex.sensor sets Table II's), then the true/false keys, then
-// the numbers. A key the document does not give leaves its field as it is (and is listed
+// the integers, then the numbers. A key the document does not give leaves its field as it is (and is listed
 // among the reader's defaults); a given one must have its row's type and range. Throws
 // InputError "<file>: <table>.<key> <problem>" through ConfigReader::fail.
 void read_key_rows(ConfigReader& in, const KeyTable& table);

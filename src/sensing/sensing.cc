@@ -8,6 +8,7 @@
 
 #include "base/units.h"
 #include "sensing/checks.h"
+#include "sensing/sensor_keys.h"
 
 namespace pamsim {
 namespace {
@@ -46,20 +47,12 @@ void validate(const SensingConfig& config) {
   // control rate first: the cutoffs are checked against it
   require_positive("sim.control_hz", config.control_hz);
   const SensorConfig& s = config.sensors;
-  require_non_negative("sensors.pressure_noise_MPa", s.pressure_noise_mpa);
-  if (!(std::isfinite(s.pressure_bias_mpa) && std::abs(s.pressure_bias_mpa) < 1.0)) {
-    fail("sensors.pressure_bias_MPa", "finite and within (-1, 1) MPa (the sensor's span)",
-         s.pressure_bias_mpa);
-  }
+  SensorConfig fields = s;   // each key's own range (sensor_keys.h), then what joins keys
+  check_key_rows(sensor_key_table(&fields));
   require_adc("sensors.pressure_adc", s.pressure_adc_bits, s.pressure_adc_min_v,
               s.pressure_adc_max_v);
   require_cutoff("sensors.pressure_lowpass_hz", s.pressure_lowpass_hz, config.control_hz);
-  require_non_negative("sensors.gauge_noise_V", s.gauge_noise_v);
   require_adc("sensors.gauge_adc", s.gauge_adc_bits, s.gauge_adc_min_v, s.gauge_adc_max_v);
-  require_non_negative("sensors.fiber_noise_mm_s", s.fiber_noise_mm_s);
-  if (!(s.noise_scale >= 0.0 && s.noise_scale <= 1000.0)) {
-    fail("sensors.noise_scale", "within [0, 1000]", s.noise_scale);
-  }
   require_cutoff("reflex.lowpass_hz", config.velocity_lowpass_hz, config.control_hz);
   validate(s.gauge_hardware);
   validate_calibration_length(s.gauge_hardware, config.control_hz);

@@ -48,8 +48,8 @@ double pse540_pressure_pa(double v) {
 
 PressureSensor::PressureSensor(const SensorConfig& config,
                                std::optional<PressureHardware> hardware)
-    : noise_pa_(config.noise_scale * units::mpa_to_pa(config.pressure_noise_mpa)),
-      bias_pa_(units::mpa_to_pa(config.pressure_bias_mpa)),
+    : noise_pa_(config.noise_scale * config.pressure_noise_pa),
+      bias_pa_(config.pressure_bias_pa),
       adc_{config.pressure_adc_bits, config.pressure_adc_min_v, config.pressure_adc_max_v},
       hardware_(std::move(hardware)) {}
 
@@ -93,7 +93,7 @@ void StrainGauge::follow(double length_m, double f_true_n) {
 
 FiberSensor::FiberSensor(const SensorConfig& config, double sample_period_s,
                          std::optional<FiberHardware> hardware)
-    : noise_m_s_(config.noise_scale * units::mm_to_m(config.fiber_noise_mm_s)),
+    : noise_m_s_(config.noise_scale * config.fiber_noise_m_s),
       dt_s_(sample_period_s),
       encoder_(config.encoder),
       hardware_(std::move(hardware)) {

@@ -15,9 +15,9 @@
 // noise of the other sensors, does not depend on which noise levels a sweep sets to 0.
 //
 // Defaults (SensorConfig) and why:
-//  - pressure_noise_mpa = 0.001 MPa (1 kPa, 0.1 % F.S.) random noise per sample. The PSE540's
+//  - sensors.pressure_noise_MPa = 0.001 (1 kPa, 0.1 % F.S.) random noise per sample. The PSE540's
 //    +/-2 % F.S. accuracy is a slowly varying offset, not sample-to-sample noise: it is the
-//    separate pressure_bias_mpa (default 0; a bias shifts the length estimate by about
+//    separate sensors.pressure_bias_MPa (default 0; a bias shifts the length estimate by about
 //    66 mm/MPa at the operating point but cancels in the velocity, Eq. (11)), or, drawn per
 //    instrument with its gain error, hysteresis, response and drift, sensors.pressure.*
 //    (pressure_hardware.h). Its repeatability
@@ -28,7 +28,7 @@
 //    antagonist (q = 4.33e-3 V/N), the 0.2 N level of DESIGN.md's prototype.
 //  - gauge ADC: 16 bit over -5..+5 V (a bridge amplifier into a bipolar DAQ input, so noise
 //    around V_base is not clipped): 0.15 mV = 0.07 N per step on the agonist.
-//  - fiber_noise_mm_s = 2 mm/s on the rate: the fiber reflex threshold of Table II (25 mm/s)
+//  - sensors.fiber_noise_mm_s = 2 on the rate: the fiber reflex threshold of Table II (25 mm/s)
 //    is 12 standard deviations away, and the integrated length drifts only ~0.6 mm over 10 s.
 // With these defaults (no pressure low-pass), the velocity estimate at 100 Hz has a standard
 // deviation of about 9 mm/s (drop_mass.toml's quiet second: 9.6 mm/s agonist, 8.4 mm/s
@@ -61,10 +61,11 @@ struct EncoderConfig {
 };
 double encoder_read_m(const EncoderConfig& encoder, double length_m);
 
-// Scenario keys sensors.* (paper units, named). Checked by validate() in sensing.h.
+// The sensors' parameters, SI; their scenario keys sensors.* (paper units, named) are rows
+// of sensor_keys.h. Checked by validate() in sensing.h.
 struct SensorConfig {
-  double pressure_noise_mpa = 0.001;   // sensors.pressure_noise_MPa, std dev, >= 0
-  double pressure_bias_mpa = 0.0;      // sensors.pressure_bias_MPa, constant offset, |.| < 1
+  double pressure_noise_pa = 1000.0;   // std dev >= 0 [Pa], sensors.pressure_noise_MPa = 0.001
+  double pressure_bias_pa = 0.0;       // constant offset [Pa], sensors.pressure_bias_MPa in (-1, 1)
   int pressure_adc_bits = 12;          // sensors.pressure_adc_bits, 0 (ideal) or 4..24
   double pressure_adc_min_v = 0.0;     // sensors.pressure_adc_min_V
   double pressure_adc_max_v = 5.0;     // sensors.pressure_adc_max_V, > min
@@ -83,7 +84,7 @@ struct SensorConfig {
   int gauge_adc_bits = 16;             // sensors.gauge_adc_bits, 0 (ideal) or 4..24
   double gauge_adc_min_v = -5.0;       // sensors.gauge_adc_min_V
   double gauge_adc_max_v = 5.0;        // sensors.gauge_adc_max_V, > min
-  double fiber_noise_mm_s = 2.0;       // sensors.fiber_noise_mm_s, std dev, >= 0
+  double fiber_noise_m_s = 0.002;      // std dev >= 0 [m/s], sensors.fiber_noise_mm_s = 2
   // sensors.noise_scale, in [0, 1000]: multiplies the three noise standard deviations above
   // (not the bias), one knob for a sweep over sensor noise; 1 leaves them as given.
   double noise_scale = 1.0;
@@ -118,7 +119,7 @@ struct PressureReading {
   double pressure_pa = 0.0;  // pse540_pressure_pa(voltage_v)
 };
 
-// Reading = ADC(PSE540(p + bias + noise)), noise ~ N(0, pressure_noise_mpa^2); with its
+// Reading = ADC(PSE540(p + bias + noise)), noise ~ N(0, pressure_noise_pa^2); with its
 // hardware (pressure_hardware.h), ADC(PSE540(round(hw(p) + bias + noise))).
 class PressureSensor {
  public:
@@ -158,7 +159,7 @@ class StrainGauge {
 
 // Conductive-fiber sensor: measures the rate of change of length. Modelled as the true mean
 // velocity over the last sample period, (l_j - l_{j-1}) / dt from the encoder (PlantSample
-// carries no velocity), plus N(0, fiber_noise_mm_s^2); 0 + noise at the first sample. Its
+// carries no velocity), plus N(0, fiber_noise_m_s^2); 0 + noise at the first sample. Its
 // absolute length is the rate integrated from the encoder reading at the first sample, as
 // the paper calibrated it (Sec. IV-C): l_j = l_{j-1} + rate_j dt, so Eq. (11) applied to
 // that length gives back the rate. With its hardware (fiber_hardware.h) the rate is that of

@@ -3,11 +3,15 @@
 // of another type, NaN.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "base/format.h"
+#include "base/input_error.h"
 #include "base/key_table.h"
 
 namespace pamsim {
@@ -25,6 +29,19 @@ inline std::vector<std::string> bad_number_texts(const NumberRow& row) {
   std::vector<std::string> bad = {"\"x\"", "nan", "true"};
   for (double v : outside(row.range)) bad.push_back(format_number(v));
   return bad;
+}
+
+// The parts of the InputError that `read` throws, which must be one line; a test failure
+// naming `what` (the key and value tried) if it throws none.
+inline InputErrorParts refusal_parts(const std::function<void()>& read, const std::string& what) {
+  try {
+    read();
+    ADD_FAILURE() << what << " was read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    return e.parts();
+  }
+  return {};
 }
 
 }  // namespace pamsim

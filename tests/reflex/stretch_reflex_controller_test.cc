@@ -245,7 +245,7 @@ TEST(StretchReflexController, PressureLowpassRemovesMistripsAtHighNoise) {
     int count = 0;
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       Rig rig;
-      rig.sensing.sensors.pressure_noise_mpa = 0.003;
+      rig.sensing.sensors.pressure_noise_pa = 0.003e6;   // 0.003 MPa
       rig.sensing.sensors.gauge_noise_v = 0.5 * rig.muscles[0].gauge.q_v_per_n;
       rig.sensing.sensors.pressure_lowpass_hz = pressure_lowpass_hz;
       rig.controller.reflex.refractory_s = 0.0;
@@ -366,7 +366,7 @@ TEST(StretchReflexController, SwitchedOffControllerHoldsScheduleAndOpensNoWindow
 TEST(StretchReflexController, LatchModeHoldsTheTriggerCommand) {
   Rig rig;
   rig.controller.reflex.mode = ReflexMode::kLatch;
-  rig.sensing.sensors.pressure_noise_mpa = 0.0;
+  rig.sensing.sensors.pressure_noise_pa = 0.0;
   rig.sensing.sensors.gauge_noise_v = 0.0;
   Harness h(rig);
   run_ramp(&h);

@@ -54,7 +54,7 @@ TEST(FiberHardwareTest, AHeldStretchCreepsAsThePronyStepAndRecovers) {
 
 TEST(FiberHardwareTest, TheSensorsLengthDriftsByTheFabricsCreep) {
   SensorConfig config;
-  config.fiber_noise_mm_s = 0.0;
+  config.fiber_noise_m_s = 0.0;
   config.fiber_hardware = fabric(0.0, {{0.05, 10.0}});
   FiberSensor fiber(config, kDt, FiberHardware(config.fiber_hardware, kDt));
   std::mt19937_64 rng(1);
@@ -68,7 +68,7 @@ TEST(FiberHardwareTest, TheSensorsLengthDriftsByTheFabricsCreep) {
 
 TEST(EncoderTest, TheFiberIsCalibratedToTheEncodersCount) {
   SensorConfig config;
-  config.fiber_noise_mm_s = 0.0;
+  config.fiber_noise_m_s = 0.0;
   config.encoder = {true, 1e-5};
   EXPECT_DOUBLE_EQ(encoder_read_m(config.encoder, 0.1600049), 0.16);
   EXPECT_DOUBLE_EQ(encoder_read_m(config.encoder, 0.1600051), 0.16001);

@@ -124,7 +124,7 @@ TEST(PressureHardwareTest, DynamicBiasHasItsStationarySpreadAcrossTrials) {
 TEST(PressureHardwareTest, TheSensorRoundsToItsPrecisionAfterTheNoise) {
   SensorConfig config;
   config.pressure_adc_bits = 0;
-  config.pressure_noise_mpa = 0.0;
+  config.pressure_noise_pa = 0.0;
   const PressureHardwareConfig c =
       only([](PressureHardwareConfig& c) { c.precision_pa = 5000.0; });
   PressureSensor sensor(config, build(c));

@@ -43,11 +43,11 @@ std::vector<MuscleSensorSpec> table_iv_muscles() {
 // no noise, ideal converters, no filters: the readings should equal the truth
 SensingConfig noise_free() {
   SensingConfig config;
-  config.sensors.pressure_noise_mpa = 0.0;
+  config.sensors.pressure_noise_pa = 0.0;
   config.sensors.pressure_adc_bits = 0;
   config.sensors.gauge_noise_v = 0.0;
   config.sensors.gauge_adc_bits = 0;
-  config.sensors.fiber_noise_mm_s = 0.0;
+  config.sensors.fiber_noise_m_s = 0.0;
   return config;
 }
 
@@ -201,7 +201,7 @@ TEST(SensorSuite, PressureLowpassRemovesNoiseThatReadsAsVelocity) {
 
   auto velocity_rms = [&](double pressure_lowpass_hz) {
     SensingConfig config = noise_free();
-    config.sensors.pressure_noise_mpa = sigma_p_pa * 1e-6;
+    config.sensors.pressure_noise_pa = sigma_p_pa;
     config.sensors.pressure_lowpass_hz = pressure_lowpass_hz;
     Plant plant;
     plant.muscles = {ago};
@@ -282,7 +282,7 @@ TEST(SensorSuite, OneSensorsNoiseLevelLeavesTheOthersNoiseAlone) {
   // that switches the fiber noise off sees the same pressure and gauge noise
   auto run_with_fiber_noise = [](double fiber_noise_mm_s) {
     SensingConfig config;
-    config.sensors.fiber_noise_mm_s = fiber_noise_mm_s;
+    config.sensors.fiber_noise_m_s = fiber_noise_mm_s * 1e-3;
     Plant plant;
     SensorSuite suite(config, plant.muscles, 11);
     return run(&suite, &plant, 50);
@@ -312,11 +312,11 @@ std::vector<BadSensing> bad_sensing_values() {
       {"sim.control_hz", "0", [](C c) { c.control_hz = 0.0; }},
       {"sim.control_hz", "-100", [](C c) { c.control_hz = -100.0; }},
       {"sim.control_hz", "nan", [](C c) { c.control_hz = kNaN; }},
-      {"sensors.pressure_noise_MPa", "-0.001", [](C c) { c.sensors.pressure_noise_mpa = -0.001; }},
-      {"sensors.pressure_noise_MPa", "nan", [](C c) { c.sensors.pressure_noise_mpa = kNaN; }},
-      {"sensors.pressure_bias_MPa", "1.5", [](C c) { c.sensors.pressure_bias_mpa = 1.5; }},
-      {"sensors.pressure_bias_MPa", "-1", [](C c) { c.sensors.pressure_bias_mpa = -1.0; }},
-      {"sensors.pressure_bias_MPa", "nan", [](C c) { c.sensors.pressure_bias_mpa = kNaN; }},
+      {"sensors.pressure_noise_MPa", "-0.001", [](C c) { c.sensors.pressure_noise_pa = -1000.0; }},
+      {"sensors.pressure_noise_MPa", "nan", [](C c) { c.sensors.pressure_noise_pa = kNaN; }},
+      {"sensors.pressure_bias_MPa", "1.5", [](C c) { c.sensors.pressure_bias_pa = 1.5e6; }},
+      {"sensors.pressure_bias_MPa", "-1", [](C c) { c.sensors.pressure_bias_pa = -1e6; }},
+      {"sensors.pressure_bias_MPa", "nan", [](C c) { c.sensors.pressure_bias_pa = kNaN; }},
       {"sensors.pressure_adc_bits", "-1", [](C c) { c.sensors.pressure_adc_bits = -1; }},
       {"sensors.pressure_adc_bits", "2", [](C c) { c.sensors.pressure_adc_bits = 2; }},
       {"sensors.pressure_adc_bits", "32", [](C c) { c.sensors.pressure_adc_bits = 32; }},
@@ -334,8 +334,8 @@ std::vector<BadSensing> bad_sensing_values() {
       {"sensors.gauge_adc_min_V", "-inf", [](C c) { c.sensors.gauge_adc_min_v = -kInf; }},
       {"sensors.gauge_adc_max_V", "-5", [](C c) { c.sensors.gauge_adc_max_v = -5.0; }},
       {"sensors.gauge_adc_max_V", "nan", [](C c) { c.sensors.gauge_adc_max_v = kNaN; }},
-      {"sensors.fiber_noise_mm_s", "-2", [](C c) { c.sensors.fiber_noise_mm_s = -2.0; }},
-      {"sensors.fiber_noise_mm_s", "nan", [](C c) { c.sensors.fiber_noise_mm_s = kNaN; }},
+      {"sensors.fiber_noise_mm_s", "-2", [](C c) { c.sensors.fiber_noise_m_s = -2e-3; }},
+      {"sensors.fiber_noise_mm_s", "nan", [](C c) { c.sensors.fiber_noise_m_s = kNaN; }},
       {"sensors.noise_scale", "-1", [](C c) { c.sensors.noise_scale = -1.0; }},
       {"sensors.noise_scale", "1001", [](C c) { c.sensors.noise_scale = 1001.0; }},
       {"sensors.noise_scale", "nan", [](C c) { c.sensors.noise_scale = kNaN; }},

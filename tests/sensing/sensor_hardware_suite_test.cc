@@ -100,7 +100,7 @@ TEST(SensorHardwareSuite, PressureHardwareLeavesTheOtherSensorsStreamAlone) {
 TEST(SensorHardwareSuite, EachMuscleHasItsOwnInstrumentFixedByTheSeeds) {
   SensingConfig on;
   on.sensors.pressure_hardware.enabled = true;
-  on.sensors.pressure_noise_mpa = 0.0;
+  on.sensors.pressure_noise_pa = 0.0;
   on.sensors.pressure_adc_bits = 0;
   on.sensors.pressure_hardware.dynamic_bias_stddev_pa = 0.0;
   // both muscles at one pressure read differently: two instruments

@@ -14,9 +14,9 @@ namespace {
 
 SensorConfig noise_free() {
   SensorConfig c;
-  c.pressure_noise_mpa = 0.0;
+  c.pressure_noise_pa = 0.0;
   c.gauge_noise_v = 0.0;
-  c.fiber_noise_mm_s = 0.0;
+  c.fiber_noise_m_s = 0.0;
   return c;
 }
 
@@ -69,13 +69,13 @@ TEST(PressureSensor, NoiseFreeReadingAndSaturation) {
   EXPECT_DOUBLE_EQ(high.pressure_pa, 1.0e6);
   // a bias shifts the reading
   c.pressure_adc_bits = 0;
-  c.pressure_bias_mpa = 0.02;
+  c.pressure_bias_pa = 0.02e6;
   EXPECT_NEAR(PressureSensor(c).sample(0.4e6, rng).pressure_pa, 0.42e6, 1e-6);
 }
 
 TEST(PressureSensor, NoiseStdMatchesConfigured) {
   SensorConfig c;
-  c.pressure_noise_mpa = 0.002;
+  c.pressure_noise_pa = 0.002e6;
   c.pressure_adc_bits = 0;
   PressureSensor sensor(c);
   std::mt19937_64 rng(42);
@@ -140,7 +140,7 @@ TEST(FiberSensor, CalibratedToEncoderAndIntegratesRate) {
 
 TEST(FiberSensor, NoiseStdMatchesConfigured) {
   SensorConfig c;
-  c.fiber_noise_mm_s = 3.0;
+  c.fiber_noise_m_s = 3.0e-3;
   FiberSensor fiber(c, 0.01);
   std::mt19937_64 rng(11);
   const int n = 40000;
@@ -158,7 +158,7 @@ TEST(Sensors, NoiseScaleMultipliesEveryNoiseStd) {
   SensorConfig one;
   one.pressure_adc_bits = 0;
   one.gauge_adc_bits = 0;
-  one.pressure_bias_mpa = 0.01;   // not scaled
+  one.pressure_bias_pa = 0.01e6;   // not scaled
   SensorConfig scaled = one;
   scaled.noise_scale = 2.5;
   const StrainGaugeParams gauge{2.25e-3, 0.0};

@@ -8,6 +8,7 @@
 
 #include "base/config_reader.h"   // split_key
 #include "reflex/controller_registry.h"
+#include "sensing/sensor_keys.h"
 
 namespace pamsim {
 namespace {
@@ -130,20 +131,8 @@ std::vector<KeyDoc> event_docs() {
 }
 
 std::vector<KeyDoc> sensor_docs() {
-  return {
-      {"sensors.pressure_noise_MPa", "MPa", "0.001", ">= 0", "pressure sensor noise SD"},
-      {"sensors.pressure_bias_MPa", "MPa", "0.0", "(-1, 1)", "pressure sensor offset"},
-      {"sensors.pressure_adc_bits", "", "12", "0 (ideal) or [4, 24]", "the pressure ADC's resolution"},
-      {"sensors.pressure_adc_min_V", "V", "0.0", "finite", "the pressure ADC's range, low end"},
-      {"sensors.pressure_adc_max_V", "V", "5.0", "> sensors.pressure_adc_min_V", "the pressure ADC's range, high end"},
-      {"sensors.pressure_lowpass_hz", "Hz", "0.0", "0 (off) or (0, sim.control_hz / 2]", "low-pass on the measured pressure"},
-      {"sensors.gauge_noise_V", "V", "0.0005", ">= 0", "strain gauge noise SD"},
-      {"sensors.gauge_adc_bits", "", "16", "0 (ideal) or [4, 24]", "the gauge ADC's resolution"},
-      {"sensors.gauge_adc_min_V", "V", "-5.0", "finite", "the gauge ADC's range, low end"},
-      {"sensors.gauge_adc_max_V", "V", "5.0", "> sensors.gauge_adc_min_V", "the gauge ADC's range, high end"},
-      {"sensors.fiber_noise_mm_s", "mm/s", "2.0", ">= 0", "fiber sensor noise SD"},
-      {"sensors.noise_scale", "", "1.0", "[0, 1000]", "multiplies the three noise SDs (a sweep's one knob)"},
-  };
+  SensorConfig defaults;   // the rows' defaults are the struct's own
+  return key_table_docs({sensor_key_table(&defaults)});
 }
 
 // the gauge as hardware (sensing/gauge_hardware.h)

@@ -1,4 +1,5 @@
-// scenario_sensors.cc: sensors.* (noise, ADCs, low-pass) and the sensors as hardware:
+// scenario_sensors.cc: sensors.* (noise, ADCs, low-pass: the rows of sensing/sensor_keys.h)
+// and the sensors as hardware:
 // sensors.gauge.* and sensors.instrument_seed (sensing/gauge_hardware.h), sensors.pressure.*
 // (sensing/pressure_hardware.h), sensors.fiber.* (sensing/fiber_hardware.h) and
 // sensors.encoder.* (sensing/sensors.h). Validated with the sensing (sensing/sensing.h).
@@ -7,19 +8,13 @@
 #include <vector>
 
 #include "base/enum_names.h"
+#include "base/key_table.h"
 #include "base/units.h"
+#include "sensing/sensor_keys.h"
 #include "sim/scenario/scenario_reading.h"
 
 namespace pamsim {
 namespace {
-
-// an ADC's bit count, refused before an int could wrap it into range
-int read_bits(ConfigReader& in, const std::string& key, int fallback) {
-  const std::int64_t bits = in.get_int(key, fallback);
-  in.check(bits >= 0 && bits <= 64, key, "must be 0 (no ADC) or a bit count, got " +
-                                             std::to_string(bits));
-  return static_cast<int>(bits);
-}
 
 constexpr EnumName<bool> kGaugeModels[] = {{false, "linear"}, {true, "bridge"}};
 constexpr EnumName<bool> kContactModels[] = {{false, "fixed"}, {true, "sliding"}};
@@ -151,18 +146,7 @@ void read_fiber_and_encoder(ConfigReader& in, FiberHardwareConfig* f, EncoderCon
 
 void read_sensors(ConfigReader& in, Scenario* sc) {
   SensorConfig& s = sc->sensing.sensors;
-  s.pressure_noise_mpa = in.get_double("sensors.pressure_noise_MPa", s.pressure_noise_mpa);
-  s.pressure_bias_mpa = in.get_double("sensors.pressure_bias_MPa", s.pressure_bias_mpa);
-  s.pressure_adc_bits = read_bits(in, "sensors.pressure_adc_bits", s.pressure_adc_bits);
-  s.pressure_adc_min_v = in.get_double("sensors.pressure_adc_min_V", s.pressure_adc_min_v);
-  s.pressure_adc_max_v = in.get_double("sensors.pressure_adc_max_V", s.pressure_adc_max_v);
-  s.pressure_lowpass_hz = in.get_double("sensors.pressure_lowpass_hz", s.pressure_lowpass_hz);
-  s.gauge_noise_v = in.get_double("sensors.gauge_noise_V", s.gauge_noise_v);
-  s.gauge_adc_bits = read_bits(in, "sensors.gauge_adc_bits", s.gauge_adc_bits);
-  s.gauge_adc_min_v = in.get_double("sensors.gauge_adc_min_V", s.gauge_adc_min_v);
-  s.gauge_adc_max_v = in.get_double("sensors.gauge_adc_max_V", s.gauge_adc_max_v);
-  s.fiber_noise_mm_s = in.get_double("sensors.fiber_noise_mm_s", s.fiber_noise_mm_s);
-  s.noise_scale = in.get_double("sensors.noise_scale", s.noise_scale);
+  read_key_rows(in, sensor_key_table(&s));   // sensors.*: noise, ADCs, the pressure low-pass
   read_gauge_hardware(in, &s.gauge_hardware);
   read_pressure_hardware(in, &s.pressure_hardware);
   read_fiber_and_encoder(in, &s.fiber_hardware, &s.encoder);
