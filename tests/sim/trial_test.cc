@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "base/input_error.h"
@@ -213,6 +214,28 @@ TEST(SteppedTrialTest, SteppingWithTheScenariosControllerReproducesRunTrial) {
   }
   const TrialResult again = stepped.finish();
   EXPECT_EQ(std::memcmp(again.trajectory.values.data(), ran.trajectory.values.data(),
+                        ran.trajectory.values.size() * sizeof(double)), 0);
+}
+
+// A stepped trial may move between threads (a thread pool steps it, as ThreadedVectorEnv
+// does): reset on a thread that then exits, and stepped on this one, beside a run_trial
+// here, it is still run_trial's trial bit for bit (it owns its data; under ASan a borrow
+// from the exited thread would be a use after free).
+TEST(SteppedTrialTest, ATrialResetOnAnotherThreadRunsOnThisOne) {
+  const Scenario sc = load_scenario(kReflex, {"sim.duration_s=1.2", "drop.time_s=0.3"});
+  const TrialModel arm = load_trial_model(sc);
+  const TrialResult ran = run_trial(arm, sc, 3);
+  SteppedTrial stepped(arm, sc, 1);
+  std::thread([&] { stepped.reset(3); }).join();
+  stepped.step();
+  const TrialResult beside = run_trial(arm, sc, 3);   // this thread's data, while it runs
+  while (stepped.step()) {
+  }
+  const TrialResult mine = stepped.finish();
+  ASSERT_EQ(mine.trajectory.values.size(), ran.trajectory.values.size());
+  EXPECT_EQ(std::memcmp(mine.trajectory.values.data(), ran.trajectory.values.data(),
+                        ran.trajectory.values.size() * sizeof(double)), 0);
+  EXPECT_EQ(std::memcmp(beside.trajectory.values.data(), ran.trajectory.values.data(),
                         ran.trajectory.values.size() * sizeof(double)), 0);
 }
 

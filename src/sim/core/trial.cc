@@ -74,10 +74,10 @@ LogLayout trial_log_layout(const TrialModel& tm, const Scenario& sc) {
                          sc.controller_has_reflexes(), sc.controller_has_tension_reflexes());
 }
 
-TrialData::TrialData(const TrialModel& model, const mjModel* m) {
+TrialData::TrialData(const TrialModel& model, const mjModel* m, bool stays_on_thread) {
   ThreadTrialData& cache = t_trial_data;
   const bool shared_model = m == model.model.get();
-  if (!shared_model || cache.lent) {
+  if (!shared_model || cache.lent || !stays_on_thread) {
     own_ = make_data(m);
     d_ = own_.get();
     return;
@@ -98,14 +98,14 @@ TrialData::~TrialData() {
 }
 
 TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
-                   const TrialOptions& opt)
+                   const TrialOptions& opt, bool stays_on_thread)
     : tm_(tm),
       sc_(sc),
       options_(opt),
       own_model_(tm.events_change_model ? copy_model(tm.model.get()) : nullptr),
       mutable_model_(own_model_.get()),
       m_(own_model_ ? own_model_.get() : tm.model.get()),
-      data_(tm, m_),
+      data_(tm, m_, stays_on_thread),
       d_(data_.get()),
       n_(tm.muscles.size()),
       labels_(labels_of(tm)),
@@ -287,8 +287,10 @@ SteppedTrial::SteppedTrial(const TrialModel& model, const Scenario& scenario, st
 SteppedTrial::~SteppedTrial() = default;
 
 void SteppedTrial::reset(std::uint64_t seed) {
-  state_->run.reset();   // (one trial per thread's mjData at a time)
-  state_->run = std::make_unique<TrialRun>(model_, state_->scenario, seed, state_->options);
+  state_->run.reset();
+  // its own mjData: the caller may step, reset and destroy it from any thread
+  state_->run = std::make_unique<TrialRun>(model_, state_->scenario, seed, state_->options,
+                                           /*stays_on_thread=*/false);
   state_->run->begin();
 }
 

@@ -24,7 +24,10 @@ namespace pamsim {
 // (a trial inside a trial), gets its own.
 class TrialData {
  public:
-  TrialData(const TrialModel& model, const mjModel* m);
+  // `stays_on_thread`: the trial is run, and destroyed, on the thread that makes it (run_trial),
+  // so it may borrow that thread's data; a SteppedTrial, which its caller may step and reset
+  // from any thread (a thread pool), owns its data.
+  TrialData(const TrialModel& model, const mjModel* m, bool stays_on_thread);
   ~TrialData();
   TrialData(const TrialData&) = delete;
   TrialData& operator=(const TrialData&) = delete;
@@ -40,7 +43,8 @@ class TrialData {
 // run() is begin(), step() until it returns false, end(); SteppedTrial calls them itself.
 class TrialRun {
  public:
-  TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed, const TrialOptions& opt);
+  TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed, const TrialOptions& opt,
+           bool stays_on_thread = true);
   TrialResult run();
 
   void begin();          // the start state; the observer's first look
