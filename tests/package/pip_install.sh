@@ -6,8 +6,9 @@
 # plain `pip install .` builds pamsim too); then `pip wheel .` and that wheel installed into a
 # second environment. Each imports pamsim from outside the source tree, with no PYTHONPATH,
 # and runs a trial. Then the Gymnasium environments' tests (python/tests/test_envs.py) with
-# gymnasium from the registry, and the package's typing and style: ruff, mypy --strict, and the stub of
-# the compiled module against the module itself (mypy.stubtest).
+# gymnasium from the registry, one generation of examples/learn_reflex.py, and the package's
+# typing and style: ruff, mypy --strict, and the stub of the compiled module against the
+# module itself (mypy.stubtest).
 set -euo pipefail
 source_dir=$(cd "$(dirname "$0")/../.." && pwd)
 build=$1
