@@ -223,13 +223,6 @@ double file_value(const KeyTable& table, const std::string& name) {
 std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
   std::vector<KeyDoc> docs;
   for (const KeyTable& t : tables) {
-    for (const NumberRow& row : t.numbers) {
-      const double* si = field(row);
-      std::string fallback = si ? format_number(from_si(row, *si)) : "(unset)";
-      if (row.required) fallback = "(required)";
-      if (!row.fallback_doc.empty()) fallback = row.fallback_doc;
-      docs.push_back({t.name + "." + row.name, row.unit, fallback, row.range.text(), row.doc});
-    }
     for (const ChoiceRow& row : t.choices) {
       docs.push_back({t.name + "." + row.name, "", "\"" + row.get() + "\"", choices_text(row),
                       row.doc});
@@ -241,6 +234,13 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
     for (const IntRow& row : t.ints) {
       docs.push_back({t.name + "." + row.name, "", std::to_string(*row.target), int_range(row),
                       row.doc});
+    }
+    for (const NumberRow& row : t.numbers) {
+      const double* si = field(row);
+      std::string fallback = si ? format_number(from_si(row, *si)) : "(unset)";
+      if (row.required) fallback = "(required)";
+      if (!row.fallback_doc.empty()) fallback = row.fallback_doc;
+      docs.push_back({t.name + "." + row.name, row.unit, fallback, row.range.text(), row.doc});
     }
   }
   return docs;

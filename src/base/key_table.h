@@ -116,7 +116,8 @@ double from_si(const NumberRow& row, double si);
 // exist (asserted).
 double file_value(const KeyTable& table, const std::string& name);
 
-// Every row as a reference line "<table>.<key>", its default being its field's value now.
+// Every row as a reference line "<table>.<key>", its default being its field's value now, in
+// the order the reader reads them: choices, true/false keys, integers, numbers.
 std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables);
 
 }  // namespace pamsim

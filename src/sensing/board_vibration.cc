@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "sensing/checks.h"
 
 namespace pamsim {
 namespace {
@@ -13,13 +12,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kLambda1 = 1.8751040687119611;   // first root of 1 + cos x cosh x = 0
 
 }  // namespace
-
-void validate_board_vibration(const BoardVibrationParams& v, const std::string& prefix) {
-  checks::require_positive(prefix + "density_kg_m3", v.density_kg_m3);
-  if (!(v.loss_factor > 0.0 && v.loss_factor < 1.0)) {
-    checks::fail(prefix + "loss_factor", "within (0, 1)", v.loss_factor);
-  }
-}
 
 double board_first_mode_hz(const GaugeBoardParams& board, const BoardVibrationParams& v) {
   const double length = board_free_length_m(board);

@@ -39,9 +39,6 @@ struct BoardVibrationParams {
   double loss_factor = 0.03;        // sensors.gauge.board.loss_factor, (0, 1)
 };
 
-// Throws InputError "<prefix><key> must be ..., got <value>" (density_kg_m3, loss_factor).
-void validate_board_vibration(const BoardVibrationParams& v, const std::string& prefix);
-
 // f1 [Hz] of the board clamped at 0 and free at L_b (formula above).
 double board_first_mode_hz(const GaugeBoardParams& board, const BoardVibrationParams& v);
 

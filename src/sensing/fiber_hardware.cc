@@ -4,16 +4,13 @@
 #include <cmath>
 
 #include "base/units.h"
-#include "sensing/checks.h"
+#include "sensing/instrument_keys.h"
 
 namespace pamsim {
 
 void validate(const FiberHardwareConfig& c) {
-  if (!(std::isfinite(c.nonlinearity_pct) && std::fabs(c.nonlinearity_pct) < 100.0)) {
-    checks::fail("sensors.fiber.nonlinearity_pct", "finite and within (-100, 100) %",
-                 c.nonlinearity_pct);
-  }
-  checks::require_positive("sensors.fiber.span_mm", units::m_to_mm(c.span_m));
+  FiberHardwareConfig fields = c;   // each key's own range (instrument_keys.h), then the creep
+  check_key_rows(fiber_hardware_key_table(&fields));
   validate_prony(c.creep, "sensors.fiber.creep_weights", "sensors.fiber.creep_times_s");
 }
 

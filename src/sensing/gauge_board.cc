@@ -9,10 +9,6 @@
 namespace pamsim {
 
 void validate_gauge_board(const GaugeBoardParams& b, const std::string& prefix) {
-  checks::require_positive(prefix + "youngs_modulus_MPa", units::pa_to_mpa(b.youngs_modulus_pa));
-  checks::require_positive(prefix + "width_mm", units::m_to_mm(b.width_m));
-  checks::require_positive(prefix + "thickness_mm", units::m_to_mm(b.thickness_m));
-  checks::require_non_negative(prefix + "gauge_position_mm", units::m_to_mm(b.gauge_position_m));
   if (!(b.contact_position_m > b.gauge_position_m)) {
     checks::fail(prefix + "contact_position_mm", "beyond gauge_position_mm (the lever's end)",
                  units::m_to_mm(b.contact_position_m));

@@ -30,9 +30,9 @@ inline double board_free_length_m(const GaugeBoardParams& b) {
   return b.length_m > 0.0 ? b.length_m : b.contact_position_m;
 }
 
-// Throws InputError "<prefix><key> must be ..., got <value>" (keys in mm and MPa:
-// youngs_modulus_MPa, width_mm, thickness_mm, gauge_position_mm, contact_position_mm,
-// length_mm).
+// What joins the board's keys (each key's own range is its row, sensing/instrument_keys.h):
+// throws InputError "<prefix><key> must be ..., got <value>" for a contact_position_mm not
+// beyond gauge_position_mm, or a length_mm neither 0 nor at least contact_position_mm.
 void validate_gauge_board(const GaugeBoardParams& board, const std::string& prefix);
 
 // The surface strain under the gauge with the line's pull f_n [N] at contact_m [m] (the

@@ -5,21 +5,8 @@
 #include <cmath>
 
 #include "base/units.h"
-#include "sensing/checks.h"
 
 namespace pamsim {
-
-void validate_gauge_contact(const GaugeContactParams& c, const std::string& prefix) {
-  checks::require_finite(prefix + "misalignment_mm", units::m_to_mm(c.misalignment_m));
-  if (!(c.fitting_distance_m >= 1e-3)) {
-    checks::fail(prefix + "fitting_distance_mm", ">= 1 mm", units::m_to_mm(c.fitting_distance_m));
-  }
-  checks::require_positive(prefix + "shaft_distance_mm", units::m_to_mm(c.shaft_distance_m));
-  if (!(c.wrap_deg > 0.0 && c.wrap_deg < 180.0)) {
-    checks::fail(prefix + "wrap_deg", "within (0, 180) deg", c.wrap_deg);
-  }
-  checks::require_non_negative(prefix + "friction_coefficient", c.friction_coefficient);
-}
 
 double contact_rest_position_m(const GaugeContactParams& c, double y0_m, double shortening_m) {
   const double d1 = c.fitting_distance_m, d2 = c.shaft_distance_m;

@@ -44,9 +44,6 @@ struct GaugeContactParams {
   double friction_coefficient = 0.3;   // mu >= 0
 };
 
-// Throws InputError "<prefix><key> must be ..., got <value>" for the contact.* keys.
-void validate_gauge_contact(const GaugeContactParams& c, const std::string& prefix);
-
 // y* [m] once the muscle has shortened by s [m] from the start (negative: lengthened).
 double contact_rest_position_m(const GaugeContactParams& c, double y0_m, double shortening_m);
 // w [m], the half-width of the band in which the contact sticks.

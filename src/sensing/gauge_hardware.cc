@@ -11,6 +11,7 @@
 #include "base/input_error.h"
 #include "base/units.h"
 #include "sensing/checks.h"
+#include "sensing/instrument_keys.h"
 
 namespace pamsim {
 namespace {
@@ -26,26 +27,16 @@ double nominal_volts_per_newton(const GaugeHardwareConfig& c) {
 }  // namespace
 
 void validate(const GaugeHardwareConfig& c) {
-  QuarterBridgeParams bridge = c.bridge;
-  bridge.amplifier_gain = 1.0;   // derived, not a key
-  validate_quarter_bridge(bridge, "sensors.gauge.");
+  // each key's own range (instrument_keys.h), then what joins keys
+  GaugeHardwareConfig fields = c;
+  for (const KeyTable& table : gauge_hardware_key_tables(&fields)) check_key_rows(table);
   validate_gauge_board(c.board, "sensors.gauge.board.");
   validate_prony(c.creep, "sensors.gauge.board.creep_weights",
                  "sensors.gauge.board.creep_times_s");
-  validate_board_vibration(c.vibration, "sensors.gauge.board.");
   const double f1 = board_first_mode_hz(c.board, c.vibration);
   if (c.vibration.enabled && !(f1 > 0.0 && std::isfinite(f1))) {
     checks::fail("sensors.gauge.board.length_mm", "short enough that the board has a first mode",
                  units::m_to_mm(c.board.length_m));
-  }
-  validate_gauge_contact(c.contact, "sensors.gauge.contact.");
-  checks::require_positive("sensors.gauge.calibration.max_N", c.calibration_max_n);
-  if (!(c.calibration_steps >= 1 && c.calibration_steps <= 1000)) {
-    checks::fail("sensors.gauge.calibration.steps", "within [1, 1000]", c.calibration_steps);
-  }
-  if (!(c.calibration_hold_s >= 0.0 && c.calibration_hold_s <= 3600.0)) {
-    checks::fail("sensors.gauge.calibration.hold_s", "within [0, 3600] s",
-                 c.calibration_hold_s);
   }
   // PMMA breaks at a few percent of strain: a board bent further is no gauge
   const double strain = gauge_board_strain(c.board, c.calibration_max_n, c.board.contact_position_m);

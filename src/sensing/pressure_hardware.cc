@@ -5,37 +5,13 @@
 #include <utility>
 
 #include "base/units.h"
-#include "sensing/checks.h"
+#include "sensing/instrument_keys.h"
 
 namespace pamsim {
-namespace {
-
-using namespace checks;
-
-// a pressure key in MPa, checked on its value in MPa
-void require_mpa(const char* key, double pa, bool any_sign) {
-  const double mpa = units::pa_to_mpa(pa);
-  if (any_sign) {
-    require_finite(key, mpa);
-  } else {
-    require_non_negative(key, mpa);
-  }
-}
-
-}  // namespace
 
 void validate(const PressureHardwareConfig& c) {
-  require_mpa("sensors.pressure.bias_mean_MPa", c.bias_mean_pa, true);
-  require_mpa("sensors.pressure.bias_stddev_MPa", c.bias_stddev_pa, false);
-  if (!(c.gain_error_stddev_pct >= 0.0 && c.gain_error_stddev_pct <= 50.0)) {
-    fail("sensors.pressure.gain_error_stddev_pct", "within [0, 50] %", c.gain_error_stddev_pct);
-  }
-  require_mpa("sensors.pressure.dynamic_bias_stddev_MPa", c.dynamic_bias_stddev_pa, false);
-  require_positive("sensors.pressure.dynamic_bias_correlation_time_s",
-                   c.dynamic_bias_correlation_time_s);
-  require_mpa("sensors.pressure.hysteresis_MPa", c.hysteresis_pa, false);
-  require_non_negative("sensors.pressure.response_time_ms", 1e3 * c.response_time_s);
-  require_mpa("sensors.pressure.precision_MPa", c.precision_pa, false);
+  PressureHardwareConfig fields = c;   // each key's own range (instrument_keys.h)
+  check_key_rows(pressure_hardware_key_table(&fields));
 }
 
 double response_cutoff_hz(double rise_time_s) {

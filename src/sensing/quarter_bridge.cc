@@ -4,19 +4,8 @@
 #include <cmath>
 
 #include "base/portable_random.h"
-#include "sensing/checks.h"
 
 namespace pamsim {
-
-void validate_quarter_bridge(const QuarterBridgeParams& p, const std::string& prefix) {
-  checks::require_positive(prefix + "excitation_V", p.excitation_v);
-  checks::require_positive(prefix + "gauge_factor", p.gauge_factor);
-  checks::require_positive(prefix + "nominal_Ohm", p.nominal_ohm);
-  checks::require_positive(prefix + "amplifier_gain", p.amplifier_gain);
-  if (!(p.tolerance_pct >= 0.0 && p.tolerance_pct < 100.0)) {
-    checks::fail(prefix + "tolerance_pct", "in [0, 100) percent", p.tolerance_pct);
-  }
-}
 
 BridgeResistors nominal_bridge(const QuarterBridgeParams& p) {
   return {p.nominal_ohm, p.nominal_ohm, p.nominal_ohm, p.nominal_ohm};

@@ -25,11 +25,6 @@ struct QuarterBridgeParams {
   double amplifier_gain = 1.0;        // G > 0 (an instrumentation amplifier after the bridge)
 };
 
-// Throws InputError "<prefix><key> must be ..., got <value>" for a non-positive or
-// non-finite excitation_V, gauge_factor, nominal_Ohm or amplifier_gain, or a
-// tolerance_pct outside [0, 100).
-void validate_quarter_bridge(const QuarterBridgeParams& params, const std::string& prefix);
-
 // One built bridge: the gauge's unstrained resistance and the three completion resistors.
 struct BridgeResistors {
   double r1_ohm = 120.0, r2_ohm = 120.0, r3_ohm = 120.0, gauge_ohm = 120.0;

@@ -6,8 +6,8 @@
 #include <optional>
 #include <utility>
 
-#include "base/units.h"
 #include "sensing/checks.h"
+#include "sensing/instrument_keys.h"
 #include "sensing/sensor_keys.h"
 
 namespace pamsim {
@@ -58,7 +58,8 @@ void validate(const SensingConfig& config) {
   validate_calibration_length(s.gauge_hardware, config.control_hz);
   validate(s.pressure_hardware);
   validate(s.fiber_hardware);
-  require_positive("sensors.encoder.resolution_mm", units::m_to_mm(s.encoder.resolution_m));
+  EncoderConfig encoder = s.encoder;
+  check_key_rows(encoder_key_table(&encoder));
 }
 
 void validate(const MuscleSensorSpec& muscle) {

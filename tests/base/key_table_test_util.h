@@ -1,12 +1,14 @@
 // key_table_test_util.h: bad values generated from a key table's row (base/key_table.h), for
 // the tests that every row refuses what it excludes: each finite side of its range, a value
-// of another type, NaN.
+// of another type, NaN; and the check that a reader's keys are its rows, each once.
 #pragma once
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -42,6 +44,30 @@ inline InputErrorParts refusal_parts(const std::function<void()>& read, const st
     return e.parts();
   }
   return {};
+}
+
+// Every row's dotted key "<table>.<name>", counted (a key twice is a defect).
+inline std::map<std::string, int> row_keys(const std::vector<KeyTable>& tables) {
+  std::map<std::string, int> rows;
+  for (const KeyTable& t : tables) {
+    for (const NumberRow& r : t.numbers) ++rows[t.name + "." + r.name];
+    for (const IntRow& r : t.ints) ++rows[t.name + "." + r.name];
+    for (const BoolRow& r : t.bools) ++rows[t.name + "." + r.name];
+    for (const ChoiceRow& r : t.choices) ++rows[t.name + "." + r.name];
+  }
+  return rows;
+}
+
+// Each row once, and the keys a reader asked for (`asked`) exactly the rows' keys.
+inline void expect_rows_are_the_asked_keys(const std::map<std::string, int>& rows,
+                                           const std::set<std::string>& asked) {
+  for (const auto& [key, count] : rows) {
+    EXPECT_EQ(count, 1) << key;
+    EXPECT_EQ(asked.count(key), 1u) << key << " has a row but is not read";
+  }
+  for (const std::string& key : asked) {
+    EXPECT_EQ(rows.count(key), 1u) << key << " is read but has no row";
+  }
 }
 
 }  // namespace pamsim

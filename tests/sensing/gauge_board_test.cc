@@ -9,6 +9,7 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "sensing/gauge_hardware.h"
 
 namespace pamsim {
 namespace {
@@ -60,14 +61,15 @@ TEST(GaugeBoardTest, EveryBadValueNamesItsKey) {
                         Case{"thickness_mm", &GaugeBoardParams::thickness_m, std::nan("")},
                         Case{"gauge_position_mm", &GaugeBoardParams::gauge_position_m, -0.001},
                         Case{"contact_position_mm", &GaugeBoardParams::contact_position_m, 0.01}}) {
-    GaugeBoardParams b = board();
-    b.*c.field = c.value;
+    GaugeHardwareConfig gauge;   // each key's row, then what joins them
+    gauge.board.*c.field = c.value;
     try {
-      validate_gauge_board(b, "gauge.board.");
+      validate(gauge);
       ADD_FAILURE() << "no throw for " << c.key;
     } catch (const InputError& e) {
       const std::string what = e.what();
-      EXPECT_EQ(what.rfind(std::string("gauge.board.") + c.key + " must be ", 0), 0u) << what;
+      EXPECT_EQ(what.rfind(std::string("sensors.gauge.board.") + c.key + " must be ", 0), 0u)
+          << what;
     }
   }
   EXPECT_NO_THROW(validate_gauge_board(board(), "gauge.board."));

@@ -141,10 +141,10 @@ TEST(GaugeContactTest, EveryBadKeyIsNamed) {
       {"sensors.gauge.contact.friction_coefficient", [](GaugeContactParams& c) { c.friction_coefficient = -0.1; }},
   };
   for (const Case& k : cases) {
-    GaugeContactParams c;
-    k.spoil(c);
+    GaugeHardwareConfig gauge;   // the contact's keys are the gauge's rows
+    k.spoil(gauge.contact);
     try {
-      validate_gauge_contact(c, "sensors.gauge.contact.");
+      validate(gauge);
       ADD_FAILURE() << "no throw for " << k.key;
     } catch (const InputError& e) {
       EXPECT_EQ(std::string(e.what()).rfind(std::string(k.key) + " must be ", 0), 0u) << e.what();

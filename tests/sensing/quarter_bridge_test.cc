@@ -11,6 +11,7 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "sensing/gauge_hardware.h"
 
 namespace pamsim {
 namespace {
@@ -68,21 +69,20 @@ TEST(QuarterBridgeTest, EveryBadValueNamesItsKey) {
   for (const Case& c : {Case{"excitation_V", &QuarterBridgeParams::excitation_v, 0.0},
                         Case{"gauge_factor", &QuarterBridgeParams::gauge_factor, -2.0},
                         Case{"nominal_Ohm", &QuarterBridgeParams::nominal_ohm, nan},
-                        Case{"amplifier_gain", &QuarterBridgeParams::amplifier_gain, 0.0},
                         Case{"tolerance_pct", &QuarterBridgeParams::tolerance_pct, 100.0},
                         Case{"tolerance_pct", &QuarterBridgeParams::tolerance_pct, 150.0},
                         Case{"tolerance_pct", &QuarterBridgeParams::tolerance_pct, -0.1}}) {
-    QuarterBridgeParams p;
-    p.*c.field = c.value;
+    GaugeHardwareConfig gauge;   // the bridge's keys are the gauge's rows
+    gauge.bridge.*c.field = c.value;
     try {
-      validate_quarter_bridge(p, "gauge.");
+      validate(gauge);
       ADD_FAILURE() << "no throw for " << c.key << " = " << c.value;
     } catch (const InputError& e) {
       const std::string what = e.what();
-      EXPECT_EQ(what.rfind(std::string("gauge.") + c.key + " must be ", 0), 0u) << what;
+      EXPECT_EQ(what.rfind(std::string("sensors.gauge.") + c.key + " must be ", 0), 0u) << what;
     }
   }
-  EXPECT_NO_THROW(validate_quarter_bridge(QuarterBridgeParams{}, "gauge."));
+  EXPECT_NO_THROW(validate(GaugeHardwareConfig{}));
 }
 
 }  // namespace

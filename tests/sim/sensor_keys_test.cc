@@ -31,19 +31,15 @@ InputErrorParts refusal_of(const std::string& key, const std::string& value) {
 
 TEST(SensorKeysTest, EveryKeyTheReaderAsksForHasExactlyOneRow) {
   SensorConfig s;
-  const KeyTable table = sensor_key_table(&s);
-  std::map<std::string, int> rows;
-  for (const NumberRow& r : table.numbers) ++rows["sensors." + r.name];
-  for (const IntRow& r : table.ints) ++rows["sensors." + r.name];
-  for (const auto& [key, count] : rows) EXPECT_EQ(count, 1) << key;
+  const std::map<std::string, int> rows = row_keys({sensor_key_table(&s)});
   std::set<std::string> asked;
   for (const ScenarioKeyValue& kv : scenario_key_values(kDropMass, {})) {
     const std::vector<std::string> parts = split_key(kv.key);
-    if (parts.size() != 2 || parts[0] != "sensors" || parts[1] == "instrument_seed") continue;
-    asked.insert(kv.key);
-    EXPECT_EQ(rows.count(kv.key), 1u) << kv.key << " is read but has no row";
+    if (parts.size() == 2 && parts[0] == "sensors" && parts[1] != "instrument_seed") {
+      asked.insert(kv.key);
+    }
   }
-  for (const auto& [key, count] : rows) EXPECT_EQ(asked.count(key), 1u) << key << " not read";
+  expect_rows_are_the_asked_keys(rows, asked);
   EXPECT_EQ(rows.size(), 12u);
 }
 

@@ -1,6 +1,7 @@
-// scenario_key_docs.cc: see scenario_key_docs.h. The ranges are those the readers check
-// (scenario_file.cc, scenario_muscles.cc, scenario_events.cc, sensing/sensing.cc); keep them
-// together when one changes. A controller kind documents its own keys, in its file.
+// scenario_key_docs.cc: see scenario_key_docs.h. The keys with rows (base/key_table.h: the
+// sensors', the instruments', a controller kind's) are documented by their rows; the rest
+// here, with the ranges their readers check (scenario_file.cc, scenario_muscles.cc,
+// scenario_events.cc): keep those together when one changes.
 #include "sim/scenario/scenario_key_docs.h"
 
 #include <set>
@@ -8,6 +9,7 @@
 
 #include "base/config_reader.h"   // split_key
 #include "reflex/controller_registry.h"
+#include "sensing/instrument_keys.h"
 #include "sensing/sensor_keys.h"
 
 namespace pamsim {
@@ -135,59 +137,20 @@ std::vector<KeyDoc> sensor_docs() {
   return key_table_docs({sensor_key_table(&defaults)});
 }
 
-// the gauge as hardware (sensing/gauge_hardware.h)
-std::vector<KeyDoc> gauge_hardware_docs() {
-  return {
-      {"sensors.gauge.model", "", "\"linear\"", "\"linear\" | \"bridge\"", "Eq. (8) as exact, or the gauge as board, bridge and calibration"},
-      {"sensors.gauge.excitation_V", "V", "5.0", "> 0", "the bridge's excitation"},
-      {"sensors.gauge.gauge_factor", "", "2.0", "> 0", "the foil gauge's gauge factor"},
-      {"sensors.gauge.nominal_Ohm", "Ohm", "120.0", "> 0", "the gauge's and the completion resistors' resistance"},
-      {"sensors.gauge.tolerance_pct", "%", "0.4166666666666667", "[0, 100)", "each bridge arm within nominal +- this (paper: 0.5 Ohm of 120)"},
-      {"sensors.gauge.board.youngs_modulus_MPa", "MPa", "3300.0", "> 0", "the acrylic board's modulus"},
-      {"sensors.gauge.board.width_mm", "mm", "20.0", "> 0", "the board's width (ASSUMPTION: not published)"},
-      {"sensors.gauge.board.thickness_mm", "mm", "5.0", "> 0", "the board's thickness (ASSUMPTION)"},
-      {"sensors.gauge.board.gauge_position_mm", "mm", "10.0", ">= 0", "the gauge's distance from the clamp (ASSUMPTION)"},
-      {"sensors.gauge.board.contact_position_mm", "mm", "40.0", "> gauge_position_mm", "where the line bears on the board (ASSUMPTION)"},
+// the instruments as hardware: their rows (sensing/instrument_keys.h), then the keys outside
+// them, the creep series and the instruments' seed
+std::vector<KeyDoc> instrument_docs() {
+  SensorConfig defaults;   // the rows' defaults are the structs' own
+  std::vector<KeyDoc> docs = key_table_docs(instrument_key_tables(&defaults));
+  const std::vector<KeyDoc> lists = {
       {"sensors.gauge.board.creep_weights", "", "(none)", "each >= 0", "the board's Prony creep weights"},
       {"sensors.gauge.board.creep_times_s", "s", "(none)", "each > 0, one per weight", "the board's Prony retardation times"},
-      {"sensors.gauge.board.length_mm", "mm", "45.0", "0 (ends at contact_position_mm) or >= it", "the board's free end (ASSUMPTION)"},
-      {"sensors.gauge.board.vibration", "", "true", "true | false", "the board's first bending mode rings under a sharp pull and the gauge samples it (board_vibration.h)"},
-      {"sensors.gauge.contact.model", "", "\"sliding\"", "\"fixed\" | \"sliding\"", "the line's contact on the board held, or sliding and sticking along its edge and lost past its free end (gauge_contact.h)"},
-      {"sensors.gauge.contact.misalignment_mm", "mm", "2.0", "finite", "the arm's shaft beside the muscle's fitting, along the board's edge (ASSUMPTION)"},
-      {"sensors.gauge.contact.fitting_distance_mm", "mm", "20.0", "> 0", "from the muscle's end fitting to the board's edge at the start (ASSUMPTION)"},
-      {"sensors.gauge.contact.shaft_distance_mm", "mm", "250.0", "> 0", "from the board's edge on to the arm's shaft (ASSUMPTION)"},
-      {"sensors.gauge.contact.wrap_deg", "deg", "30.0", "(0, 180)", "the line's bend over the board's edge (ASSUMPTION)"},
-      {"sensors.gauge.contact.friction_coefficient", "", "0.3", ">= 0", "line on board (ASSUMPTION: nylon on acrylic)"},
-      {"sensors.gauge.board.density_kg_m3", "kg/m^3", "1190.0", "> 0", "the board's density (PMMA)"},
-      {"sensors.gauge.board.loss_factor", "", "0.03", "(0, 1)", "the board's material loss factor (PMMA 0.02-0.04); damping ratio = half of it"},
-      {"sensors.gauge.calibration.max_N", "N", "50.0", "> 0", "the static calibration's largest load"},
-      {"sensors.gauge.calibration.steps", "", "10", "[1, 1000]", "its load steps up (and as many down)"},
-      {"sensors.gauge.calibration.hold_s", "s", "2.0", "[0, 3600]", "how long each load is held before it is read"},
-      {"sensors.instrument_seed", "", "1", ">= 0", "which built instruments (bridge arms, pressure sensors' offsets and gains): fixed across trials"},
-  };
-}
-
-// the pressure sensor, fiber sensor and encoder as hardware (sensing/pressure_hardware.h,
-// sensing/fiber_hardware.h, sensing/sensors.h)
-std::vector<KeyDoc> sensor_hardware_docs() {
-  return {
-      {"sensors.pressure.model", "", "\"ideal\"", "\"ideal\" | \"pse540\"", "the pressure sensor exact (+ noise), or the PSE540 class's offset, gain, hysteresis, response and drift"},
-      {"sensors.pressure.bias_mean_MPa", "MPa", "0.0", "finite", "mean of each sensor's offset, drawn once per instrument"},
-      {"sensors.pressure.bias_stddev_MPa", "MPa", "0.0047", ">= 0", "spread of each sensor's offset (ASSUMPTION: +-2 % F.S. as 3 sigma, half of it zero)"},
-      {"sensors.pressure.gain_error_stddev_pct", "%", "0.47", "[0, 50]", "spread of each sensor's gain error (ASSUMPTION: the other half)"},
-      {"sensors.pressure.dynamic_bias_stddev_MPa", "MPa", "4e-04", ">= 0", "stationary SD of the zero's Gauss-Markov drift, drawn per trial (ASSUMPTION)"},
-      {"sensors.pressure.dynamic_bias_correlation_time_s", "s", "3600.0", "> 0", "that drift's correlation time"},
-      {"sensors.pressure.hysteresis_MPa", "MPa", "0.002", ">= 0", "full width of the rising/falling loop (ASSUMPTION: the 0.2 % F.S. repeatability)"},
-      {"sensors.pressure.response_time_ms", "ms", "1.0", ">= 0", "0-90 % rise of the first-order response (ASSUMPTION)"},
-      {"sensors.pressure.precision_MPa", "MPa", "0.0", ">= 0 (0: none)", "the output rounded to this step (Gazebo's precision; the ADC quantises too)"},
-      {"sensors.fiber.model", "", "\"ideal\"", "\"ideal\" | \"fabric\"", "the fiber sensor's rate exact (+ noise), or the fabric's nonlinearity and creep"},
-      {"sensors.fiber.nonlinearity_pct", "%", "5.0", "(-100, 100)", "the reading's error at span_mm from the calibration length (ASSUMPTION)"},
-      {"sensors.fiber.span_mm", "mm", "20.0", "> 0", "the displacement nonlinearity_pct refers to"},
       {"sensors.fiber.creep_weights", "", "[0.05]", "each >= 0", "the fabric's Prony creep weights (ASSUMPTION)"},
       {"sensors.fiber.creep_times_s", "s", "[10.0]", "each > 0, one per weight", "the fabric's Prony retardation times"},
-      {"sensors.encoder.model", "", "\"ideal\"", "\"ideal\" | \"counts\"", "the linear encoder exact, or counting resolution_mm steps"},
-      {"sensors.encoder.resolution_mm", "mm", "0.01", "> 0", "the encoder's count (ASSUMPTION: DS-025 class); used by the fiber's calibration"},
+      {"sensors.instrument_seed", "", "1", ">= 0", "which built instruments (bridge arms, pressure sensors' offsets and gains): fixed across trials"},
   };
+  docs.insert(docs.end(), lists.begin(), lists.end());
+  return docs;
 }
 
 // controller.kind and each kind's keys (reflex/controller_kind.h, in the kind's own file); a
@@ -212,8 +175,7 @@ std::vector<KeyDoc> controller_docs() {
 std::vector<KeyDoc> all_docs() {
   std::vector<KeyDoc> docs;
   for (const std::vector<KeyDoc>& part : {model_docs(), event_docs(), controller_docs(),
-                                          sensor_docs(), gauge_hardware_docs(),
-                                          sensor_hardware_docs()}) {
+                                          sensor_docs(), instrument_docs()}) {
     docs.insert(docs.end(), part.begin(), part.end());
   }
   return docs;
