@@ -4,6 +4,7 @@
 
 #include "base/units.h"
 #include "sim/scenario/scenario_reading.h"
+#include "sim/scenario/time_and_drop_keys.h"
 
 namespace pamsim {
 namespace {
@@ -70,16 +71,10 @@ ConditionSpec read_condition(ConfigReader& in, const std::string& key, const Sce
 
 void read_drop(ConfigReader& in, Scenario* sc, bool implied) {
   if (!in.is_table("drop") && !implied) return;
-  const bool enabled = in.get_bool("drop.enabled", true);
-  const double mass_kg = in.get_double("drop.mass_kg", 0.2);
-  in.check(mass_kg > 0 && mass_kg <= 10, "drop.mass_kg",
-           "must be in (0, 10] kg, got " + format_value(mass_kg));
-  const double height_m = in.get_double("drop.height_m", 0.14);
-  in.check(height_m >= 0 && height_m <= 1, "drop.height_m",
-           "must be in [0, 1] m, got " + format_value(height_m));
-  const double time_s = in.get_double("drop.time_s", 1.0);
-  in.check(time_s >= 0 && time_s < sc->duration_s, "drop.time_s",
-           "must be in [0, sim.duration_s): " + in.described("drop.time_s", time_s) +
+  DropShorthand drop;
+  read_key_rows(in, drop_key_table(&drop));
+  in.check(drop.time_s < sc->duration_s, "drop.time_s",
+           "must be in [0, sim.duration_s): " + in.described("drop.time_s", drop.time_s) +
                " with " + in.described("sim.duration_s", sc->duration_s) +
                "; set the other too (--set drop.time_s=...)");
   const std::string body = in.get_string("drop.body", "ball");
@@ -87,19 +82,19 @@ void read_drop(ConfigReader& in, Scenario* sc, bool implied) {
   const std::string site = in.get_string("drop.site", "basket_floor");
 
   // the mass, held above the basket floor, released at time_s; the impact marked
-  sc->body_masses.push_back({"drop.mass_kg", body, mass_kg});
+  sc->body_masses.push_back({"drop.mass_kg", body, drop.mass_kg});
   HoldSpec hold;
   hold.key = "drop";
   hold.body = body;
   hold.above_site = site;
-  hold.height_m = height_m;
+  hold.height_m = drop.height_m;
   sc->holds.push_back(hold);
   EventSpec release;
   release.key = "drop";
   release.name = "release";
   release.action = EventAction::kRelease;
   release.body = body;
-  release.when.at_s = enabled ? time_s : INFINITY;
+  release.when.at_s = drop.enabled ? drop.time_s : INFINITY;
   sc->events.push_back(release);
   EventSpec impact;
   impact.key = "drop";

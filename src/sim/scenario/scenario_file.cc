@@ -14,34 +14,22 @@
 #include "sim/core/metrics.h"
 #include "sim/scenario/scenario_key_docs.h"
 #include "sim/scenario/scenario_reading.h"
+#include "sim/scenario/time_and_drop_keys.h"
 
 namespace pamsim {
 namespace {
 
-// The longest trial a scenario may ask for without saying so (sim.max_steps): an hour at
-// 0.5 ms; a mistyped time step (1e-9 s) would otherwise run for days, or (1e-308 s) for an
-// infinite, uncountable number of steps.
-constexpr double kDefaultMaxSteps = 1e7;
-
+// sim.*: each key by its row (time_and_drop_keys.h), then what joins them
 void read_time(ConfigReader& in, Scenario* sc) {
-  sc->timestep_s = in.get_double("sim.timestep_s", sc->timestep_s);
-  in.check(sc->timestep_s > 0 && sc->timestep_s <= 0.01, "sim.timestep_s",
-           "must be in (0, 0.01] s, got " + format_value(sc->timestep_s));
-  sc->duration_s = in.get_double("sim.duration_s", sc->duration_s);
-  in.check(sc->duration_s > 0 && sc->duration_s <= 3600, "sim.duration_s",
-           "must be in (0, 3600] s, got " + format_value(sc->duration_s));
+  double max_steps = kDefaultMaxSteps;
+  read_key_rows(in, sim_key_table(sc, &max_steps));
   // every derived count must be a count: a trial of at most sim.max_steps physics steps
-  const double max_steps = in.get_double("sim.max_steps", kDefaultMaxSteps);
-  in.check(max_steps >= 1 && max_steps <= 1e10, "sim.max_steps",
-           "must be in [1, 1e10], got " + format_value(max_steps));
   const double steps = sc->duration_s / sc->timestep_s;
   in.check(steps <= max_steps, "sim.timestep_s",
            "of " + format_value(sc->timestep_s) + " s makes " + format_value(steps) +
                " physics steps for " + in.described("sim.duration_s", sc->duration_s) +
                " s, more than " + in.described("sim.max_steps", max_steps) +
                " (raise it to allow)");
-  sc->control_hz = in.get_double("sim.control_hz", sc->control_hz);
-  in.check(sc->control_hz > 0, "sim.control_hz", "must be > 0, got " + format_value(sc->control_hz));
   const double ratio = 1.0 / (sc->control_hz * sc->timestep_s);
   in.check(ratio >= 1.0 - 1e-9 && std::fabs(ratio - std::round(ratio)) < 1e-6, "sim.control_hz",
            "must divide the physics rate 1/sim.timestep_s into whole steps: " +

@@ -1,8 +1,9 @@
-// scenario_key_docs.cc: see scenario_key_docs.h. The keys with rows (base/key_table.h: the
-// sensors', the instruments', a controller kind's) are documented by their rows; the rest
+// scenario_key_docs.cc: see scenario_key_docs.h. The keys with rows (base/key_table.h: [sim],
+// [drop], the sensors', the instruments', a controller kind's) are documented by their rows; the rest
 // here, with the ranges their readers check (scenario_file.cc, scenario_muscles.cc,
 // scenario_events.cc): keep those together when one changes.
 #include "sim/scenario/scenario_key_docs.h"
+#include "sim/scenario/time_and_drop_keys.h"
 
 #include <set>
 #include <string>
@@ -48,10 +49,6 @@ std::vector<KeyDoc> model_docs() {
       {"pneumatics.<table>.<field>", "(the file's)", "(model.pneumatics')", "as in the pneumatics file (pamsim keys --pneumatics)", "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index"},
       {"model.<actuator>_params", "", "(none)", "path", "shorthand of muscles.<actuator>.params (pamsim 0.1 files)"},
       {"pressure.<actuator>_MPa", "MPa", "(none)", "[0, controller.p_max_MPa]", "shorthand of a constant muscles.<actuator>.command"},
-      {"sim.timestep_s", "s", "0.001", "(0, 0.01]", "physics step"},
-      {"sim.duration_s", "s", "3.0", "(0, 3600], after every timed event", "simulated time of a trial"},
-      {"sim.control_hz", "Hz", "100.0", "> 0, a whole divisor of 1 / sim.timestep_s", "control, sensing and logging rate"},
-      {"sim.max_steps", "", "1e+07", "[1, 1e10], >= duration_s / timestep_s", "the most physics steps a trial may take"},
       {"valve.model", "", "\"iso6358\"", "\"iso6358\" | \"first_order\" | \"regulator\"", "the valve and chamber model (pneumatics.h)"},
       {"valve.supply_MPa", "MPa", "(model.pneumatics')", "> 0, >= valve.command_max_MPa", "a rig's own supply pressure (gauge)"},
       {"valve.command_max_MPa", "MPa", "(model.pneumatics')", "(0, valve.supply_MPa]", "a rig's own regulator range"},
@@ -122,14 +119,18 @@ std::vector<KeyDoc> event_docs() {
       {"events.<event>.when.above_mm", "mm", "(none)", "a slide's position", "with when.joint: fire above it"},
       {"events.<event>.when.body", "", "(one when.* is required)", "a body of the model", "fire on this body's height"},
       {"events.<event>.when.below_z_m", "m", "(required with when.body)", "a height", "with when.body: fire below it"},
-      {"drop.enabled", "", "true", "true | false", "shorthand: drop the mass at drop.time_s"},
-      {"drop.mass_kg", "kg", "0.2", "(0, 10]", "shorthand: the falling mass"},
-      {"drop.height_m", "m", "0.14", "[0, 1]", "shorthand: its fall height above the basket floor"},
-      {"drop.time_s", "s", "1.0", "[0, sim.duration_s)", "shorthand: when it is released"},
       {"drop.body", "", "\"ball\"", "a free body of the model", "shorthand: the falling body"},
       {"drop.basket", "", "\"basket\"", "a body of the model", "shorthand: the body it lands in (the impact event)"},
       {"drop.site", "", "\"basket_floor\"", "a site of the model", "shorthand: the site it is held above"},
   };
+}
+
+// [sim] and the drop's numbers (time_and_drop_keys.h)
+std::vector<KeyDoc> time_and_drop_docs() {
+  Scenario scenario;   // the rows' defaults are the struct's own
+  double max_steps = kDefaultMaxSteps;
+  DropShorthand drop;
+  return key_table_docs({sim_key_table(&scenario, &max_steps), drop_key_table(&drop)});
 }
 
 std::vector<KeyDoc> sensor_docs() {
@@ -174,8 +175,8 @@ std::vector<KeyDoc> controller_docs() {
 
 std::vector<KeyDoc> all_docs() {
   std::vector<KeyDoc> docs;
-  for (const std::vector<KeyDoc>& part : {model_docs(), event_docs(), controller_docs(),
-                                          sensor_docs(), instrument_docs()}) {
+  for (const std::vector<KeyDoc>& part : {model_docs(), time_and_drop_docs(), event_docs(),
+                                          controller_docs(), sensor_docs(), instrument_docs()}) {
     docs.insert(docs.end(), part.begin(), part.end());
   }
   return docs;

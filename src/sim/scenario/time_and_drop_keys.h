@@ -1,0 +1,34 @@
+// time_and_drop_keys.h: the scenario's own tables as key-table rows (base/key_table.h): [sim],
+// trial's time, and [drop], the falling-mass shorthand's numbers. Each key's unit, range,
+// default and meaning is one row, which the reader (scenario_file.cc, scenario_events.cc),
+// `pamsim keys` and the tests read. What joins keys stays with the reader: a control rate
+// that divides the physics rate, the steps a trial takes, a drop before the trial's end.
+#pragma once
+
+#include "base/key_table.h"
+#include "sim/core/scenario.h"
+
+namespace pamsim {
+
+// The most physics steps a trial may take unless sim.max_steps says more: an hour at 0.5 ms.
+// A mistyped time step (1e-9 s) would otherwise run for days, or (1e-308 s) for an
+// uncountable number of steps.
+inline constexpr double kDefaultMaxSteps = 1e7;
+
+// [sim], bound to `scenario`'s time step, duration and control rate and to `max_steps` (read
+// to check the trial's length, not kept).
+KeyTable sim_key_table(Scenario* scenario, double* max_steps);
+
+// The drop shorthand's numbers (drop.*; its body, basket and site are names the reader
+// takes as they are): the mass held above the basket floor and released.
+struct DropShorthand {
+  bool enabled = true;
+  double mass_kg = 0.2;
+  double height_m = 0.14;
+  double time_s = 1.0;
+};
+
+// [drop], bound to `drop`.
+KeyTable drop_key_table(DropShorthand* drop);
+
+}  // namespace pamsim
