@@ -166,3 +166,36 @@ TEST(CliPlantTest, BadPipelineInputIsOneLineAndExit2) {
 }
 
 }  // namespace
+
+// --set changes a plant field in the file's units exactly as the file itself would; a bad one
+// is refused in one line naming it
+TEST(CliPlantTest, TensileSetChangesAPlantFieldAsEditingTheFileWould) {
+  const fs::path dir = fresh_dir("plant_set");
+  const std::string plant = "models/pams/plant_agonist.toml";
+  const std::string set = (dir / "set.csv").string(), edited = (dir / "edited.csv").string();
+  const std::string original = (dir / "original.csv").string();
+  std::string text = pamsim_test::read_file(plant);
+  const std::string field = "wall_thickness_mm = 2.0";
+  ASSERT_NE(text.find(field), std::string::npos);
+  text.replace(text.find(field), field.size(), "wall_thickness_mm = 1.5");
+  const std::string edited_plant = (dir / "plant.toml").string();
+  pamsim_test::write_text(edited_plant, text);
+  ASSERT_EQ(run_pamsim("tensile --plant " + plant + " --set geometry.wall_thickness_mm=1.5 -o " +
+                       set).exit_code, 0);
+  ASSERT_EQ(run_pamsim("tensile --plant " + edited_plant + " -o " + edited).exit_code, 0);
+  ASSERT_EQ(run_pamsim("tensile --plant " + plant + " -o " + original).exit_code, 0);
+  EXPECT_EQ(pamsim_test::read_file(set), pamsim_test::read_file(edited));
+  EXPECT_NE(pamsim_test::read_file(set), pamsim_test::read_file(original));
+  const std::string out = (dir / "bad.csv").string();
+  for (const auto& [args, key] : std::vector<std::pair<std::string, std::string>>{
+           {"--plant " + plant + " --set geometry.wall_thickness_mm=-1", "wall_thickness_mm"},
+           {"--plant " + plant + " --set geometry.thickness_mm=1", "thickness_mm"},
+           {"--plant " + plant + " --set geometry.wall_thickness_mm", "wall_thickness_mm"},
+           {"--params models/pams/table4_agonist.toml --set geometry.length_mm=170", "--plant"}}) {
+    const CliResult r = run_pamsim("tensile " + args + " -o " + out);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(key), std::string::npos) << args << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
+}

@@ -1,14 +1,18 @@
-// tensile.cc: `pamsim tensile --params FILE | --plant FILE ... -o FILE.csv`, the virtual
-// static tensile test of seeds/000 Sec. II-B on a PAM parameter file's spring law or on a
-// physical plant (the lab's way to the estimator: test the muscle, then `pamsim fit`).
+// tensile.cc: `pamsim tensile --params FILE | --plant FILE [--set table.field=value ...] ...
+// -o FILE.csv`, the virtual static tensile test of seeds/000 Sec. II-B on a PAM parameter
+// file's spring law or on a physical plant (the lab's way to the estimator: test the muscle,
+// then `pamsim fit`). --set changes a plant file's fields in its own units, each validated as
+// the file's own (the scenario's muscles.<m>.plant.<table>.<field> does the same).
 #include <CLI/CLI.hpp>
 
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "base/atomic_file.h"
+#include "base/config_reader.h"
 #include "base/input_error.h"
 #include "pam_actuator/pam_params.h"
 #include "pam_actuator/plant_params.h"
@@ -25,6 +29,7 @@ struct TensileCommand {
   std::string params_path;
   std::string plant_path;
   std::string output_path;
+  std::vector<std::string> plant_changes;   // --set geometry.wall_thickness_mm=0.5
   bool force = false;
   TensileTestOptions test;
 };
@@ -63,9 +68,16 @@ void run_tensile(const TensileCommand& c) {
   if (c.params_path.empty() == c.plant_path.empty()) {
     throw InputError("tensile: give one of --params (a spring law) or --plant (a plant file)");
   }
+  if (c.plant_path.empty() && !c.plant_changes.empty()) {
+    throw InputError("tensile: --set changes a plant file's fields: give --plant");
+  }
+  ConfigReader changes("", "tensile");   // the --set fields, as the plant file's own tables
+  changes.apply_overrides(c.plant_changes);
   const std::vector<TensileRow> rows =
-      c.plant_path.empty() ? run_tensile_test(load_pam_params(c.params_path).spring, c.test)
-                           : run_tensile_test(load_plant_params(c.plant_path).avbdl, c.test);
+      c.plant_path.empty()
+          ? run_tensile_test(load_pam_params(c.params_path).spring, c.test)
+          : run_tensile_test(load_plant_params(c.plant_path, changes.document(), "--set ").avbdl,
+                             c.test);
   write_file_atomically(c.output_path, tensile_rows_to_csv(rows));
   // stderr: with -o - the CSV itself is on stdout
   std::fprintf(stderr, "pamsim: wrote %zu rows to %s\n", rows.size(),
@@ -81,6 +93,8 @@ void add_tensile_command(CLI::App& app) {
   TensileTestOptions& t = c->test;
   cmd->add_option("--params", c->params_path, "PAM parameter file (TOML): test its spring law");
   cmd->add_option("--plant", c->plant_path, "plant file (TOML, models/pams/plant_*.toml)");
+  add_overrides_option(cmd, &c->plant_changes,
+                       "Change a plant file's field: --set geometry.wall_thickness_mm=0.5");
   cmd->add_option("-o,--output", c->output_path, "output CSV file")->required();
   cmd->add_flag("--force", c->force, "replace an existing output file");
   cmd->add_option("--seed", t.seed, "noise seed (same seed, same data)")
