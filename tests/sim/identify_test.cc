@@ -17,6 +17,7 @@
 #include "base/format.h"
 #include "base/input_error.h"
 #include "cli_util.h"
+#include "identify_test_arm.h"
 #include "pam_actuator/plant_params.h"
 #include "pam_actuator/tensile_csv.h"
 #include "pam_actuator/tensile_test.h"
@@ -31,28 +32,9 @@ namespace pamsim {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kArm = std::string(PAMSIM_SOURCE_DIR) + "/examples/identify/arm.toml";
-const std::string kSteps =
-    "muscles.agonist.command={kind=\"steps\", times_s=[0.0, 1.0], MPa=[0.3, 0.5]}";
-const std::string kSine =
-    "muscles.antagonist.command={kind=\"sine\", offset_MPa=0.4, amplitude_MPa=0.15, period_s=1.5}";
-
-// The true arm's angle at 50 Hz over 2 s, noise seed 7, as a recording.
-void record(const fs::path& file, const std::string& command) {
-  const Scenario sc = load_scenario(kArm, {"muscles.antagonist.plant.geometry.wall_thickness_mm=2.7",
-                                           "sim.duration_s=2", "seed=7", command});
-  const TrialResult t = run_trial(load_trial_model(sc), sc, sc.seed, true);
-  std::string csv = "time_s,angle_deg\n";
-  const std::size_t angle = t.trajectory.column("angle_deg");
-  for (std::size_t row = 0; row < t.trajectory.rows(); row += 2) {
-    csv += format_shortest(t.trajectory.at(row, 0)) + "," + format_shortest(t.trajectory.at(row, angle)) + "\n";
-  }
-  pamsim_test::write_text(file, csv);
-}
-
 std::string identify_file(const fs::path& dir) {
-  record(dir / "steps.csv", kSteps);
-  record(dir / "sine.csv", kSine);
+  record_arm(dir / "steps.csv", kSteps);
+  record_arm(dir / "sine.csv", kSine);
   const std::string text =
       "base = \"" + kArm + "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
       "population = 6\npolish_iterations = 10\n"
@@ -183,7 +165,7 @@ TEST(IdentifyTest, AResumeAfterAnInputFileChangedIsRefused) {
       "plant = \"" + std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_antagonist.toml\"";
   const std::string base = pamsim_test::scenario_variant(
       dir, "reaching.toml", source_plant, "plant = \"" + (dir / "plant_antagonist.toml").string() + "\"");
-  record(dir / "steps.csv", kSteps);
+  record_arm(dir / "steps.csv", kSteps);
   pamsim_test::write_text(dir / "id.toml",
       "base = \"" + base + "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 0\n"
       "polish_iterations = 0\n"

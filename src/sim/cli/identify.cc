@@ -7,6 +7,7 @@
 #include "sim/optimize/identify_outputs.h"
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <iostream>
 #include <string>
 
@@ -19,6 +20,7 @@
 #include "sim/core/runner.h"
 #include "sim/io/plot.h"
 #include "sim/io/staged_outputs.h"
+#include "sim/optimize/identify_uncertainty.h"
 
 namespace pamsim {
 namespace {
@@ -38,12 +40,20 @@ void print_result(const IdentifyResult& r) {
   for (const IdentifiedParameter& p : r.parameters) {
     std::cout << "  " << p.parameter.key << " = " << format_value(p.value);
     if (!p.identifiable) std::cout << "  (not determined by the recordings)";
-    else std::cout << " +- " << format_value(p.std_error) << (p.at_bound ? "  (at a bound)" : "");
+    else std::cout << " +- " << format_value(p.std_error) << ", 95 % in ["
+                   << format_value(p.ci95_lo) << ", " << format_value(p.ci95_hi) << "]"
+                   << (p.at_bound ? "  (at a bound)" : "");
     std::cout << "\n";
   }
   for (const ChannelFit& f : r.fits) {
     std::cout << "  " << f.recording << " " << f.channel << (f.held_out ? " (held out)" : "")
-              << ": RMSE " << format_value(f.rmse_before) << " -> " << format_value(f.rmse_after) << "\n";
+              << ": RMSE " << format_value(f.rmse_before) << " -> " << format_value(f.rmse_after);
+    if (std::isfinite(f.noise_floor)) std::cout << " (noise " << format_value(f.noise_floor) << ")";
+    std::cout << "\n";
+  }
+  // a fit the model cannot explain: its standard errors are not to be trusted
+  for (const std::string& line : unexplained_channels(r)) {
+    std::cout << "warning: " << line << "; the standard errors above are not to be trusted\n";
   }
 }
 

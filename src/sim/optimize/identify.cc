@@ -13,6 +13,7 @@
 #include "sim/core/runner.h"
 #include "sim/optimize/identify_outputs.h"
 #include "sim/optimize/identify_residuals.h"
+#include "sim/optimize/identify_uncertainty.h"
 #include "sim/optimize/optimizer.h"
 
 namespace pamsim {
@@ -174,61 +175,21 @@ void polish(const IdentifyDefinition& def, PolishProblem& p, const IdentifyRunOp
   result->polish_summary = summary.BriefReport();
 }
 
-// The Jacobian's squared column norms at p.unit; empty if it cannot be evaluated.
-std::vector<double> column_norms(PolishProblem& p) {
-  ceres::CRSMatrix jacobian;
+// The residuals and their Jacobian at p.unit, dense (residuals x parameters); an empty
+// Jacobian if they cannot be evaluated.
+void evaluate_dense(PolishProblem& p, Eigen::MatrixXd* jacobian, Eigen::VectorXd* residuals) {
+  ceres::CRSMatrix crs;
+  std::vector<double> r;
   double cost = 0.0;
-  if (!p.problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, &jacobian)) {
-    return {};
-  }
-  std::vector<double> norms(p.unit.size(), 0.0);
-  for (std::size_t k = 0; k < jacobian.values.size(); ++k) {
-    norms[static_cast<std::size_t>(jacobian.cols[k])] += jacobian.values[k] * jacobian.values[k];
-  }
-  return norms;
-}
-
-// dx/du of a parameter at u
-double slope_at(const SearchParameter& p, double u) {
-  return p.log ? value_at(p, u) * std::log(p.to / p.from) : p.to - p.from;
-}
-
-// Standard errors and correlations of the identifiable parameters (cov = s^2 (J^T J)^-1).
-void fill_uncertainty(PolishProblem& p, double s2, std::vector<IdentifiedParameter>* out) {
-  std::vector<IdentifiedParameter>& params = *out;
-  const std::vector<double> norms = column_norms(p);
-  const double largest = norms.empty() ? 0.0 : *std::max_element(norms.begin(), norms.end());
-  std::vector<std::size_t> free;
-  for (std::size_t i = 0; i < params.size(); ++i) {
-    params[i].identifiable = !norms.empty() && norms[i] > 1e-12 * largest && largest > 0;
-    params[i].std_error = kNaN;
-    if (params[i].identifiable) free.push_back(i);
-    else p.problem.SetParameterBlockConstant(p.blocks[i]);
-  }
-  ceres::Covariance::Options options;
-  options.algorithm_type = ceres::DENSE_SVD;
-  ceres::Covariance covariance(options);
-  std::vector<std::pair<const double*, const double*>> pairs;
-  for (std::size_t a : free) {
-    for (std::size_t b : free) if (a <= b) pairs.emplace_back(p.blocks[a], p.blocks[b]);
-  }
-  if (free.empty() || !std::isfinite(s2) || !covariance.Compute(pairs, &p.problem)) {
-    for (std::size_t i : free) params[i].identifiable = false;   // jointly undetermined
-    return;
-  }
-  auto cov = [&](std::size_t a, std::size_t b) {
-    double c = 0.0;
-    covariance.GetCovarianceBlock(p.blocks[std::min(a, b)], p.blocks[std::max(a, b)], &c);
-    return s2 * c;
-  };
-  for (std::size_t a : free) {
-    params[a].std_error = std::sqrt(cov(a, a)) * std::abs(slope_at(params[a].parameter, p.unit[a]));
-    for (std::size_t b : free) {
-      if (a == b) continue;
-      const double r = cov(a, b) / std::sqrt(cov(a, a) * cov(b, b));
-      if (std::abs(r) > 0.9) params[a].correlated.emplace_back(params[b].parameter.key, r);
+  if (!p.problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &r, nullptr, &crs)) return;
+  *jacobian = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
+  for (std::size_t row = 0; row + 1 < crs.rows.size(); ++row) {
+    for (auto k = static_cast<std::size_t>(crs.rows[row]);
+         k < static_cast<std::size_t>(crs.rows[row + 1]); ++k) {
+      (*jacobian)(static_cast<Eigen::Index>(row), crs.cols[k]) = crs.values[k];
     }
   }
+  *residuals = Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size()));
 }
 
 // RMS of a - b, NaN if a is empty (its trial or plant failed)
@@ -283,6 +244,7 @@ std::vector<ChannelFit> channel_fits(const IdentifyDefinition& def,
                    r.data.sample_count(r.channels[c]), before[c], after[c], {}, {}};
       if (!sampled_before.empty()) f.before = sampled_before[c];
       if (!sampled_after.empty()) f.after = sampled_after[c];
+      judge_channel(r.data.samples[r.channels[c]], &f);
       fits.push_back(std::move(f));
     }
   }
@@ -327,8 +289,10 @@ IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
     p.at_bound = result.unit[i] < 1e-3 || result.unit[i] > 1.0 - 1e-3;
     result.parameters.push_back(p);
   }
-  const double dof = static_cast<double>(result.residuals) - static_cast<double>(values.size());
-  fill_uncertainty(problem, dof > 0 ? result.cost_final / dof : kNaN, &result.parameters);
+  Eigen::MatrixXd jacobian;
+  Eigen::VectorXd at_result;
+  evaluate_dense(problem, &jacobian, &at_result);
+  fill_uncertainty(jacobian, at_result, residuals.segments(), result.unit, &result);
   result.fits = channel_fits(def, values, options.threads);
   result.check_s = seconds_since(t0);
   result.simulated = residuals.simulated;

@@ -2,11 +2,10 @@
 // to its recordings, in two phases over the parameters' unit box: a global search by pagmo2's
 // CMA-ES (optimizer.h; `generations` of `population`), then a local least-squares polish from
 // its best point by Ceres Solver's Levenberg-Marquardt (bounds [0, 1], central-difference
-// Jacobian), and the parameters' covariance at the result by ceres::Covariance:
-//   cov(u) = s^2 (J^T J)^-1,  s^2 = cost / (residuals - parameters),
-// carried to the parameters' units by dx/du. A parameter whose Jacobian column vanishes
-// (the recordings do not move with it) is reported unidentifiable and kept out of the
-// covariance; if J^T J is still singular, every parameter is (jointly undetermined).
+// Jacobian), and the parameters' covariance at the result, one that holds for residuals
+// correlated in time (identify_uncertainty.h: a prewhitened HAC sandwich, with the plain
+// s^2 (J^T J)^-1 beside it), carried to the parameters' units by dx/du; each channel is
+// judged against its own noise floor.
 // Every residual vector is committed to the run's database as it is computed
 // (identify_db.h); a run stopped at any point and started again with the same database
 // replays both phases, deterministic, and simulates only what it had not.
@@ -15,6 +14,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,7 +34,9 @@ struct IdentifiedParameter {
   SearchParameter parameter;
   double start = 0.0;           // the model's value before (NaN: unknown)
   double value = 0.0;
-  double std_error = 0.0;       // NaN when not determined
+  double std_error = 0.0;       // HAC (identify_uncertainty.h); NaN when not determined
+  double std_error_plain = 0.0; // s^2 (J^T J)^-1, for comparison; NaN when not determined
+  double ci95_lo = 0.0, ci95_hi = 0.0;   // the 95 % interval from std_error (NaN: none)
   bool at_bound = false;        // within 0.1 % of the box's edge
   bool identifiable = true;     // false: the recordings do not determine it
   std::vector<std::pair<std::string, double>> correlated;   // |correlation| > 0.9
@@ -47,6 +49,11 @@ struct ChannelFit {
   std::size_t samples = 0;
   double rmse_before = 0.0, rmse_after = 0.0;   // in the channel's unit
   std::vector<double> before, after;            // simulated at the recording's times (NaN: gap)
+  // the recorded channel's white noise in its unit, and the Ljung-Box p-value of the
+  // residuals after (identify_uncertainty.h); NaN: unknown (too few samples, a tensile test)
+  double noise_floor = std::numeric_limits<double>::quiet_NaN();
+  double whiteness_p = std::numeric_limits<double>::quiet_NaN();
+  bool explained = true;         // RMSE after within kExplainedNoiseFactor noise floors
 };
 
 struct IdentifyResult {
@@ -57,6 +64,8 @@ struct IdentifyResult {
   std::size_t residuals = 0;
   std::int64_t simulated = 0, cached = 0;       // points simulated, points answered stored
   double global_s = 0.0, polish_s = 0.0, check_s = 0.0;   // wall time of each phase
+  int hac_lags = 0;                             // the HAC covariance's Bartlett bandwidth
+  double residual_lag1 = 0.0;                   // the residuals' pooled lag-1 autocorrelation
   std::string polish_summary;                   // Ceres's brief report
   bool polish_failed = false;                   // Ceres ended in FAILURE: the global result stands
   bool interrupted = false;

@@ -9,6 +9,7 @@
 #include "base/file_changes.h"
 #include "base/format.h"
 #include "base/toml_file.h"
+#include "sim/optimize/identify_uncertainty.h"
 #include "sim/scenario/scenario_file.h"
 #include "sim/io/staged_outputs.h"
 
@@ -26,36 +27,59 @@ std::string correlated_text(const IdentifiedParameter& p) {
   return out;
 }
 
-// What a reader should make of a parameter's value.
-std::string verdict(const IdentifiedParameter& p) {
+// What a reader should make of a parameter's value (`explained`: every fitted channel is).
+std::string verdict(const IdentifiedParameter& p, bool explained) {
   if (!p.identifiable) return "not determined by the recordings";
   std::string v = p.at_bound ? "at a bound of its range" : "identified";
   if (!p.correlated.empty()) v += ", strongly correlated";
+  if (!explained) v += "; not to be trusted: the model does not explain the recordings";
   return v;
 }
 
+// "[lo, hi]", or "-" where there is none
+std::string interval_text(const IdentifiedParameter& p) {
+  if (!std::isfinite(p.ci95_lo)) return "-";
+  return "[" + format_value(p.ci95_lo) + ", " + format_value(p.ci95_hi) + "]";
+}
+
+std::string value_or_dash(double v) { return std::isfinite(v) ? format_value(v) : "-"; }
+
 std::string parameters_table(const IdentifyResult& r) {
   std::ostringstream md;
-  md << "| parameter | range | start | identified | standard error | verdict | correlated (> 0.9) |\n"
-     << "| --- | --- | --- | --- | --- | --- | --- |\n";
+  const bool explained = unexplained_channels(r).empty();
+  md << "| parameter | range | start | identified | standard error | 95 % interval | "
+        "plain s.e. | verdict | correlated (> 0.9) |\n"
+     << "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
   for (const IdentifiedParameter& p : r.parameters) {
     md << "| `" << p.parameter.key << "` | " << format_value(p.parameter.from) << " - "
        << format_value(p.parameter.to) << (p.parameter.log ? " (log)" : "") << " | "
-       << (std::isfinite(p.start) ? format_value(p.start) : "-") << " | " << format_value(p.value) << " | "
-       << (std::isfinite(p.std_error) ? format_value(p.std_error) : "-") << " | " << verdict(p)
-       << " | " << correlated_text(p) << " |\n";
+       << value_or_dash(p.start) << " | " << format_value(p.value) << " | "
+       << value_or_dash(p.std_error) << " | " << interval_text(p) << " | "
+       << value_or_dash(p.std_error_plain) << " | " << verdict(p, explained) << " | "
+       << correlated_text(p) << " |\n";
   }
   return md.str();
 }
 
+// the unexplained channels as a warning paragraph, or nothing
+std::string unexplained_text(const IdentifyResult& r) {
+  std::string out;
+  for (const std::string& line : unexplained_channels(r)) out += "**Warning**: " + line + ".\n";
+  if (!out.empty()) out += "The standard errors below are not to be trusted.\n\n";
+  return out;
+}
+
 std::string fits_table(const IdentifyResult& r) {
   std::ostringstream md;
-  md << "| recording | channel | role | samples | RMSE before | RMSE after |\n"
-     << "| --- | --- | --- | --- | --- | --- |\n";
+  md << "| recording | channel | role | samples | RMSE before | RMSE after | noise floor | "
+        "RMSE / noise | whiteness p | explained |\n"
+     << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
   for (const ChannelFit& f : r.fits) {
     md << "| " << f.recording << " | " << f.channel << " | " << (f.held_out ? "held out" : "fitted")
        << " | " << f.samples << " | " << format_value(f.rmse_before) << " | "
-       << format_value(f.rmse_after) << " |\n";
+       << format_value(f.rmse_after) << " | " << value_or_dash(f.noise_floor) << " | "
+       << value_or_dash(f.rmse_after / f.noise_floor) << " | " << value_or_dash(f.whiteness_p)
+       << " | " << (f.explained ? "yes" : "no") << " |\n";
   }
   return md.str();
 }
@@ -104,22 +128,27 @@ void write_identified_files(const IdentifyDefinition& def, const IdentifyResult&
 }  // namespace
 
 std::string identify_parameters_csv(const IdentifyResult& r) {
-  std::string out = "key,from,to,scale,start,identified,std_error,at_bound,identifiable,correlated_with\n";
+  std::string out = "key,from,to,scale,start,identified,std_error,at_bound,identifiable,"
+                    "correlated_with,std_error_plain,ci95_lo,ci95_hi\n";
   for (const IdentifiedParameter& p : r.parameters) {
     out += p.parameter.key + "," + cell(p.parameter.from) + "," + cell(p.parameter.to) + "," +
            (p.parameter.log ? "log" : "linear") + "," + cell(p.start) + "," + cell(p.value) + "," +
            cell(p.std_error) +
            "," + (p.at_bound ? "1" : "0") + "," + (p.identifiable ? "1" : "0") + "," +
-           correlated_text(p) + "\n";
+           correlated_text(p) + "," + cell(p.std_error_plain) + "," + cell(p.ci95_lo) + "," +
+           cell(p.ci95_hi) + "\n";
   }
   return out;
 }
 
 std::string identify_fits_csv(const IdentifyResult& r) {
-  std::string out = "recording,channel,held_out,samples,rmse_before,rmse_after\n";
+  std::string out = "recording,channel,held_out,samples,rmse_before,rmse_after,noise_floor,"
+                    "whiteness_p,explained\n";
   for (const ChannelFit& f : r.fits) {
     out += f.recording + "," + f.channel + "," + (f.held_out ? "1" : "0") + "," +
-           std::to_string(f.samples) + "," + cell(f.rmse_before) + "," + cell(f.rmse_after) + "\n";
+           std::to_string(f.samples) + "," + cell(f.rmse_before) + "," + cell(f.rmse_after) +
+           "," + cell(f.noise_floor) + "," + cell(f.whiteness_p) + "," +
+           (f.explained ? "1" : "0") + "\n";
   }
   return out;
 }
@@ -134,10 +163,16 @@ std::string identify_markdown(const IdentifyDefinition& def, const IdentifyResul
      << format_value(r.cost_final) << " in " << format_value(r.polish_s) << " s ("
      << r.polish_summary << "). " << r.simulated << " points simulated, " << r.cached
      << " answered from the database.\n\n"
+     << unexplained_text(r)
      << "## Parameters\n\n" << parameters_table(r) << "\n"
-     << "Standard errors: s^2 (J^T J)^-1 at the result, s^2 the cost per degree of freedom "
-        "(ceres::Covariance); \"not determined\": the recordings do not move with it (its "
-        "Jacobian column vanishes) or J^T J is singular.\n\n"
+     << "Standard errors and 95 % intervals: the sandwich (HAC) covariance, which holds for "
+        "residuals correlated in time, as a recording's are (Newey-West with Andrews' "
+        "bandwidth, here " << r.hac_lags << " lags for a pooled lag-1 autocorrelation of "
+     << format_value(std::round(r.residual_lag1 * 1000) / 1000) << ", prewhitened); "
+        "\"plain s.e.\": s^2 (J^T J)^-1, which assumes independent residuals. \"not "
+        "determined\": the recordings do not move with it (its Jacobian column vanishes) or "
+        "J^T J is singular. The costs are sums of squared residuals (Ceres's own report "
+        "halves them).\n\n"
      << "## Recordings: RMSE before (the base scenario) and after, in each channel's unit\n\n"
      << fits_table(r);
   return md.str();

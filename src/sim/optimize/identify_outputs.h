@@ -2,12 +2,15 @@
 //   identified.toml    the base scenario with the identified values (plus the file's
 //                      overrides), ready for `pamsim run`; its header names the recordings
 //   identify.csv       per parameter: key, bounds, start (the model's value), identified
-//                      value, standard error, whether
-//                      it hit a bound, whether the recordings determine it, and the parameters
-//                      it correlates with above 0.9
+//                      value, standard error (HAC, identify_uncertainty.h), whether
+//                      it hit a bound, whether the recordings determine it, the parameters
+//                      it correlates with above 0.9, the plain s^2 (J^T J)^-1 error and the
+//                      95 % interval
 //   identify_fits.csv  per recording and channel: fitted or held out, samples, RMSE before
-//                      (the base scenario as it stands) and after, in the channel's unit
-//   identify.md        both tables, and the search's cost and time
+//                      (the base scenario as it stands) and after, in the channel's unit, the
+//                      channel's noise floor, the residuals' Ljung-Box p-value, explained
+//   identify.md        both tables, the search's cost and time, and a warning for each
+//                      fitted channel the model does not explain
 //   recording_<name>.png  each recording's channels: recorded, before and after (plots on)
 //   plant_<muscle>.toml   for each muscle with a plant field among the parameters: its plant
 //                      file with the identified fields, a comment naming the recordings

@@ -133,7 +133,7 @@ IdentifyResiduals::IdentifyResiduals(const IdentifyDefinition& def, IdentifyDb& 
     std::vector<double> scales;
     for (std::size_t c : r.channels) {
       scales.push_back(channel_scale(r.data.samples[c]));
-      if (!r.held_out) count_ += r.data.sample_count(c);
+      if (!r.held_out) segments_.push_back(r.data.sample_count(c));
     }
     scale_.push_back(std::move(scales));
     if (!r.held_out) fitted_.push_back(i);
@@ -142,8 +142,9 @@ IdentifyResiduals::IdentifyResiduals(const IdentifyDefinition& def, IdentifyDb& 
     std::vector<double> forces;
     for (const TensileRow& row : t.rows) forces.push_back(row.force_n);
     tensile_scale_.push_back(channel_scale(forces));
-    count_ += t.rows.size();
+    segments_.push_back(t.rows.size());
   }
+  for (std::size_t length : segments_) count_ += length;
 }
 
 bool IdentifyResiduals::append_tensile(const std::vector<double>& values, std::vector<double>* out) {

@@ -55,6 +55,9 @@ class IdentifyResiduals {
   IdentifyResiduals(const IdentifyDefinition& def, IdentifyDb& db, int threads);
 
   std::size_t count() const { return count_; }   // residuals of the fitted recordings
+  // The residual vector's series, in order: each fitted recording's channels, then each
+  // tensile test; their lengths sum to count() (lags of a series stay within it).
+  const std::vector<std::size_t>& segments() const { return segments_; }
   // The residuals at `unit` (clamped to [0, 1]), from the database or simulated (the fitted
   // recordings on `threads` threads) and stored under `phase`; empty if a trial failed.
   std::vector<double> at(const std::vector<double>& unit, const char* phase);
@@ -70,6 +73,7 @@ class IdentifyResiduals {
   IdentifyDb& db_;
   int threads_;
   std::size_t count_ = 0;
+  std::vector<std::size_t> segments_;
   std::vector<std::size_t> fitted_;                 // recordings fitted, in order
   std::vector<std::vector<double>> scale_;          // per recording, per chosen channel
   std::vector<double> tensile_scale_;               // per tensile test
