@@ -63,7 +63,39 @@ TEST(IdentifyUncertaintyTest, AnUnmodelledSensorDelayIsReportedAsNotExplained) {
   IdentifyDefinition def = load_identify_definition((dir / "id.toml").string());
   const std::string md = identify_markdown(def, r);
   EXPECT_NE(md.find("not to be trusted"), std::string::npos);
+  EXPECT_EQ(identify_warnings(def, r).front(), lines[0] + "; the standard errors are not to be trusted");
   EXPECT_NE(identify_fits_csv(r).find(",0\n"), std::string::npos) << identify_fits_csv(r);
+}
+
+}  // namespace
+}  // namespace pamsim
+
+namespace pamsim {
+namespace {
+
+// the warnings a user must not miss, from a result built by hand
+TEST(IdentifyUncertaintyTest, NoConvergenceAndABoundAreWarnings) {
+  IdentifyDefinition def;
+  def.polish_iterations = 10;
+  IdentifyResult r;
+  IdentifiedParameter wall;
+  wall.parameter.key = "muscles.antagonist.plant.geometry.wall_thickness_mm";
+  wall.parameter.from = 2.0;
+  wall.parameter.to = 4.0;
+  wall.value = 4.0;
+  wall.at_bound = true;
+  r.parameters.push_back(wall);
+  r.polish_converged = false;
+  r.polish_iterations = 10;
+  const std::vector<std::string> warnings = identify_warnings(def, r);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0], "the polish stopped after 10 iterations without converging "
+                         "(polish_iterations = 10): the point may not be the minimum");
+  EXPECT_EQ(warnings[1], "muscles.antagonist.plant.geometry.wall_thickness_mm = 4 sits at a "
+                         "bound of its range [2, 4]: widen it, or the value is not identified");
+  r.polish_converged = true;
+  r.parameters[0].at_bound = false;
+  EXPECT_TRUE(identify_warnings(def, r).empty());
 }
 
 }  // namespace

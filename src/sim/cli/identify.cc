@@ -20,7 +20,6 @@
 #include "sim/core/runner.h"
 #include "sim/io/plot.h"
 #include "sim/io/staged_outputs.h"
-#include "sim/optimize/identify_uncertainty.h"
 
 namespace pamsim {
 namespace {
@@ -34,7 +33,7 @@ struct IdentifyOptions {
   std::string plot_format = "png";
 };
 
-void print_result(const IdentifyResult& r) {
+void print_result(const IdentifyDefinition& def, const IdentifyResult& r) {
   std::cout << "identified (cost " << format_value(r.cost_global) << " after CMA-ES, "
             << format_value(r.cost_final) << " after the polish):\n";
   for (const IdentifiedParameter& p : r.parameters) {
@@ -50,10 +49,6 @@ void print_result(const IdentifyResult& r) {
               << ": RMSE " << format_value(f.rmse_before) << " -> " << format_value(f.rmse_after);
     if (std::isfinite(f.noise_floor)) std::cout << " (noise " << format_value(f.noise_floor) << ")";
     std::cout << "\n";
-  }
-  // a fit the model cannot explain: its standard errors are not to be trusted
-  for (const std::string& line : unexplained_channels(r)) {
-    std::cout << "warning: " << line << "; the standard errors above are not to be trusted\n";
   }
 }
 
@@ -94,19 +89,22 @@ void identify(const IdentifyOptions& opt) {
               << where.out << " --resume\n";
     throw CommandExit(128 + stop_signal());
   }
-  if (r.polish_failed) {
-    std::cerr << "pamsim identify: warning: the polish failed (" << r.polish_summary
-              << "); the global search's best point stands\n";
-  }
   StagedOutputs staged(where.out, kIdentifyOutputs);
   staged.write([&] { write_identify_outputs(def, r, staged, plots); });
   staged.publish();
-  print_result(r);
+  print_result(def, r);
   std::cerr << "pamsim identify: " << r.simulated << " points simulated, " << r.cached
             << " from the database; " << format_value(r.global_s) << " s CMA-ES, "
             << format_value(r.polish_s) << " s polish, " << format_value(r.check_s) << " s checks\n";
   std::cout << "outputs: " << where.out << "/{identified.toml,identify.csv,identify_fits.csv,identify.md"
             << (plots ? ",recording_*.png" : "") << "} and the identified plant/pneumatics files\n";
+  // the search's budget and how it ended, then what a user must not miss, last
+  std::cout << "search: CMA-ES " << def.generations << " generations of " << def.population
+            << " (cost " << format_value(r.cost_global) << "), then " << r.polish_iterations
+            << " Levenberg-Marquardt iterations of at most " << def.polish_iterations << " ("
+            << (r.polish_failed ? "failed" : r.polish_converged ? "converged" : "not converged")
+            << ", cost " << format_value(r.cost_final) << ")\n";
+  for (const std::string& line : identify_warnings(def, r)) std::cout << "warning: " << line << "\n";
 }
 
 }  // namespace

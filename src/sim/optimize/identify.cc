@@ -172,6 +172,9 @@ void polish(const IdentifyDefinition& def, PolishProblem& p, const IdentifyRunOp
   ceres::Solve(o, &p.problem, &summary);
   result->interrupted = result->interrupted || summary.termination_type == ceres::USER_FAILURE;
   result->polish_failed = summary.termination_type == ceres::FAILURE;
+  result->polish_converged = summary.termination_type == ceres::CONVERGENCE;
+  // Ceres lists the starting point as iteration 0
+  result->polish_iterations = std::max(0, static_cast<int>(summary.iterations.size()) - 1);
   result->polish_summary = summary.BriefReport();
 }
 

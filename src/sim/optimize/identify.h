@@ -68,6 +68,8 @@ struct IdentifyResult {
   double residual_lag1 = 0.0;                   // the residuals' pooled lag-1 autocorrelation
   std::string polish_summary;                   // Ceres's brief report
   bool polish_failed = false;                   // Ceres ended in FAILURE: the global result stands
+  bool polish_converged = true;                 // Ceres reported CONVERGENCE (or no polish ran)
+  int polish_iterations = 0;                    // Levenberg-Marquardt iterations taken
   bool interrupted = false;
 };
 

@@ -61,12 +61,11 @@ std::string parameters_table(const IdentifyResult& r) {
   return md.str();
 }
 
-// the unexplained channels as a warning paragraph, or nothing
-std::string unexplained_text(const IdentifyResult& r) {
+// the warnings as a paragraph, or nothing
+std::string warnings_text(const IdentifyDefinition& def, const IdentifyResult& r) {
   std::string out;
-  for (const std::string& line : unexplained_channels(r)) out += "**Warning**: " + line + ".\n";
-  if (!out.empty()) out += "The standard errors below are not to be trusted.\n\n";
-  return out;
+  for (const std::string& line : identify_warnings(def, r)) out += "**Warning**: " + line + ".\n";
+  return out.empty() ? out : out + "\n";
 }
 
 std::string fits_table(const IdentifyResult& r) {
@@ -127,6 +126,29 @@ void write_identified_files(const IdentifyDefinition& def, const IdentifyResult&
 
 }  // namespace
 
+std::vector<std::string> identify_warnings(const IdentifyDefinition& def,
+                                           const IdentifyResult& r) {
+  std::vector<std::string> out;
+  for (const std::string& line : unexplained_channels(r)) {
+    out.push_back(line + "; the standard errors are not to be trusted");
+  }
+  if (r.polish_failed) {
+    out.push_back("the polish failed; the global search's best point stands (" +
+                  r.polish_summary + ")");
+  } else if (!r.polish_converged && def.polish_iterations > 0) {
+    out.push_back("the polish stopped after " + std::to_string(r.polish_iterations) +
+                  " iterations without converging (polish_iterations = " +
+                  std::to_string(def.polish_iterations) + "): the point may not be the minimum");
+  }
+  for (const IdentifiedParameter& p : r.parameters) {
+    if (!p.at_bound) continue;
+    out.push_back(p.parameter.key + " = " + format_value(p.value) + " sits at a bound of its " +
+                  "range [" + format_value(p.parameter.from) + ", " +
+                  format_value(p.parameter.to) + "]: widen it, or the value is not identified");
+  }
+  return out;
+}
+
 std::string identify_parameters_csv(const IdentifyResult& r) {
   std::string out = "key,from,to,scale,start,identified,std_error,at_bound,identifiable,"
                     "correlated_with,std_error_plain,ci95_lo,ci95_hi\n";
@@ -163,7 +185,7 @@ std::string identify_markdown(const IdentifyDefinition& def, const IdentifyResul
      << format_value(r.cost_final) << " in " << format_value(r.polish_s) << " s ("
      << r.polish_summary << "). " << r.simulated << " points simulated, " << r.cached
      << " answered from the database.\n\n"
-     << unexplained_text(r)
+     << warnings_text(def, r)
      << "## Parameters\n\n" << parameters_table(r) << "\n"
      << "Standard errors and 95 % intervals: the sandwich (HAC) covariance, which holds for "
         "residuals correlated in time, as a recording's are (Newey-West with Andrews' "

@@ -30,6 +30,11 @@ inline const std::vector<std::string> kIdentifyOutputs = {
     "identified.toml", "identify.csv", "identify_fits.csv", "identify.md", "recording_*.png",
     "recording_*.svg", "recording_*.pdf", "plant_*.toml", "pneumatics.toml"};
 
+// What a user must not miss, one line each: a fitted channel the model does not explain, a
+// polish that did not converge or failed, a parameter at a bound of its range.
+std::vector<std::string> identify_warnings(const IdentifyDefinition& def,
+                                           const IdentifyResult& result);
+
 std::string identify_parameters_csv(const IdentifyResult& result);
 std::string identify_fits_csv(const IdentifyResult& result);
 std::string identify_markdown(const IdentifyDefinition& def, const IdentifyResult& result);
