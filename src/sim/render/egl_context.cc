@@ -281,6 +281,9 @@ class EglGlContext : public GlContext {
   std::string renderer() const override {
     return gl_strings(reinterpret_cast<GlGetString>(egl_.GetProcAddress("glGetString")));
   }
+  void* gl_function(const char* name) const override {
+    return reinterpret_cast<void*>(egl_.GetProcAddress(name));
+  }
 
  private:
   const EglApi& egl_;

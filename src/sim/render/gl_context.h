@@ -52,6 +52,10 @@ class GlContext {
   virtual std::string description() const = 0;
   // The GL implementation drawing, from glGetString: "<vendor>, <renderer>, OpenGL <version>".
   virtual std::string renderer() const = 0;
+  // A GL entry point of this context by name ("glBegin"), as its backend resolves it
+  // (OSMesaGetProcAddress, eglGetProcAddress: the linked one may belong to another library);
+  // null where missing.
+  virtual void* gl_function(const char* name) const = 0;
 };
 
 // A context for rendering, current on return. MuJoCo draws into its own offscreen buffer;

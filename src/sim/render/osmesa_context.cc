@@ -47,6 +47,9 @@ class OsMesaGlContext : public GlContext {
   std::string renderer() const override {
     return gl_strings(reinterpret_cast<GlGetString>(OSMesaGetProcAddress("glGetString")));
   }
+  void* gl_function(const char* name) const override {
+    return reinterpret_cast<void*>(OSMesaGetProcAddress(name));
+  }
   void set_fallback_reason(std::string why) { fallback_reason_ = std::move(why); }
 
  private:

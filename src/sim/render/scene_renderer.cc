@@ -93,6 +93,8 @@ SceneRenderer::SceneRenderer(const mjModel* model, const std::string& model_path
   // GL context, then MuJoCo's scene and render context drawing offscreen
   gl_ = create_gl_context(options.backend, options.width_px, options.height_px,
                           options.egl_device);
+  backdrop_ = std::make_unique<Backdrop>(*gl_);
+  backdrop_geom_ = options.backdrop_geom;
   scene_.reset(new mjvScene);
   mjv_defaultScene(scene_.get());
   mjv_makeScene(model_.get(), scene_.get(), kMaxSceneGeoms);
@@ -138,28 +140,6 @@ void SceneRenderer::draw_scene(const mjData* data, const std::vector<Capsule>& c
   mjv_updateScene(model_.get(), data_.get(), &option_, nullptr, &camera_, mjCAT_ALL,
                   scene_.get());
   mjvScene* scn = scene_.get();
-  // a plain backdrop: a wide, unlit light-grey panel 2.5 m behind the scene, facing the
-  // camera (MuJoCo 2.2 has no background colour; without a skybox it is black)
-  if (scn->ngeom < scn->maxgeom) {
-    const mjvGLCamera& eye = scn->camera[0];
-    mjtNum right[3], up[3], forward[3], pos[3];
-    for (int i = 0; i < 3; ++i) {
-      forward[i] = eye.forward[i];
-      up[i] = eye.up[i];
-      pos[i] = eye.pos[i] + 2.5 * eye.forward[i];
-    }
-    mju_cross(right, forward, up);
-    const mjtNum mat[9] = {right[0], up[0], forward[0], right[1], up[1],
-                           forward[1], right[2], up[2], forward[2]};
-    const mjtNum size[3] = {20.0, 20.0, 0.01};
-    const float rgba[4] = {0.93f, 0.93f, 0.95f, 1.0f};
-    mjvGeom* g = scn->geoms + scn->ngeom++;
-    mjv_initGeom(g, mjGEOM_BOX, size, pos, mat, rgba);
-    g->category = mjCAT_DECOR;
-    g->emission = 1.0f;
-    g->specular = 0.0f;
-    g->reflectance = 0.0f;
-  }
   for (const Capsule& c : capsules) {
     if (scn->ngeom >= scn->maxgeom) break;
     mjvGeom* g = scn->geoms + scn->ngeom++;
@@ -168,7 +148,13 @@ void SceneRenderer::draw_scene(const mjData* data, const std::vector<Capsule>& c
                       c.to[1], c.to[2]);
     g->category = mjCAT_DECOR;
   }
+  // the plain backdrop: a quad after drawing where that pays and draws what the geom would,
+  // else the geom (backdrop.h)
+  const bool quad =
+      !backdrop_geom_ && Backdrop::quad_pays(*scn) && backdrop_->quad_matches_geom(*scn);
+  if (!quad) Backdrop::add_geom(scn);
   mjr_render(viewport_, scn, context_.get());
+  if (quad) backdrop_->draw_quad(*scn, viewport_);
 }
 
 void SceneRenderer::draw_text(const char* titles, const char* values, int corner) {

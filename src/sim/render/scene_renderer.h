@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/render/backdrop.h"
 #include "sim/render/gl_context.h"
 #include "sim/core/mujoco_util.h"
 
@@ -32,6 +33,9 @@ struct SceneRenderOptions {
   std::string camera = "side";   // a camera named in the model
   GlBackend backend = GlBackend::kOsmesa;
   EglDeviceChoice egl_device;    // egl only
+  // the backdrop always as a scene geom (backdrop.h), never as the quad that draws it
+  // faster where it can: for comparisons
+  bool backdrop_geom = false;
 };
 
 // Throws InputError naming `model_path` if `model` has no camera `camera` (the message lists
@@ -94,6 +98,8 @@ class SceneRenderer {
   mjvCamera camera_;
   mjrRect viewport_;
   std::unique_ptr<GlContext> gl_;
+  std::unique_ptr<Backdrop> backdrop_;
+  bool backdrop_geom_ = false;   // SceneRenderOptions::backdrop_geom
   std::unique_ptr<mjvScene, SceneDeleter> scene_;
   std::unique_ptr<mjrContext, ContextDeleter> context_;   // freed while gl_ is current
   std::vector<unsigned char> rgb_;
