@@ -248,6 +248,14 @@ TEST(IdentifyTest, BadFilesAreOneLineExitTwoAndNoDatabase) {
            {with("key = \"bodies.ball.mass_kg\"\nfrom = 0.1", "key = \"channel.angle_deg.gain\"\nfrom = -0.1"), "a gain's range must be above 0"},
            {with("key = \"bodies.ball.mass_kg\"\nfrom = 0.1\nto = 0.4", "key = \"channel.angle_deg.delay_ms\"\nfrom = 0.0\nto = 2000.0"), "within [0, 1000] ms"},
            {good + "[[tensile]]\nmuscle = \"elbow\"\nfile = \"steps.csv\"\n", "tensile[0].file"},
+           {"interval = 1.5\n" + good, "interval must be in (0, 1), got 1.5"},
+           {"interval = 0\n" + good, "interval must be in (0, 1), got 0"},
+           {with("file = \"steps.csv\"", "file = \"steps.csv\"\nnoise = { angle_deg = 0 }"),
+            "recording[0].noise.angle_deg must be a noise floor > 0"},
+           {with("file = \"steps.csv\"", "file = \"steps.csv\"\nnoise = { angle_deg = -0.1 }"),
+            "recording[0].noise.angle_deg must be a noise floor > 0"},
+           {with("file = \"steps.csv\"", "file = \"steps.csv\"\nnoise = { omega_deg_s = 1 }"),
+            "recording[0].noise.omega_deg_s is not a channel the recording is matched on"},
            {good + "[[tensile]]\nmuscle = \"elbow\"\nfile = \"tensile.csv\"\n",
             "tensile[0].muscle \"elbow\" is not a muscle of the base scenario (it has agonist, antagonist)"}}) {
     SCOPED_TRACE(says);

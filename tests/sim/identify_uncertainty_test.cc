@@ -4,7 +4,8 @@
 // explained, the wall's 95 % interval contains the truth and the HAC error is given beside
 // the plain one; with the same recording seen through an unmodelled 60 ms sensor delay, the
 // report says the model does not explain it, names the recording and the channel, and marks
-// the standard errors as not to be trusted.
+// the standard errors as not to be trusted; a noise floor the file gives replaces the
+// recording's own, and the file's interval level scales the intervals by its normal quantile.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,13 +24,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-IdentifyResult identify_wall(const fs::path& dir, std::size_t delay_rows) {
+// the wall identified from the recording `delay_rows` late; `top` and `recording` add keys to
+// the file's top and its [[recording]]
+IdentifyResult identify_wall(const fs::path& dir, std::size_t delay_rows,
+                             const std::string& top = "", const std::string& recording = "") {
   record_arm(dir / "steps.csv", kSteps, delay_rows);
   pamsim_test::write_text(dir / "id.toml",
-      "base = \"" + kArm + "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
+      top + "base = \"" + kArm + "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
       "population = 6\npolish_iterations = 10\n[[parameter]]\n"
       "key = \"muscles.antagonist.plant.geometry.wall_thickness_mm\"\nfrom = 2.0\nto = 4.0\n"
-      "[[recording]]\nfile = \"steps.csv\"\nset = ['" + kSteps + "']\n");
+      "[[recording]]\nfile = \"steps.csv\"\nset = ['" + kSteps + "']\n" + recording);
   const IdentifyDefinition def = load_identify_definition((dir / "id.toml").string());
   IdentifyDb db = IdentifyDb::create((dir / "id.db").string(), def);
   IdentifyRunOptions options;
@@ -42,8 +46,8 @@ TEST(IdentifyUncertaintyTest, AnExplainedRecordingGivesAnIntervalAroundTheTruth)
   ASSERT_EQ(r.parameters.size(), 1u);
   const IdentifiedParameter& wall = r.parameters[0];
   ASSERT_TRUE(wall.identifiable);
-  EXPECT_LE(wall.ci95_lo, 2.7);
-  EXPECT_GE(wall.ci95_hi, 2.7);
+  EXPECT_LE(wall.interval_lo, 2.7);
+  EXPECT_GE(wall.interval_hi, 2.7);
   EXPECT_GT(wall.std_error, 0.0);
   EXPECT_GT(wall.std_error_plain, 0.0);
   ASSERT_EQ(r.fits.size(), 1u);
@@ -72,6 +76,24 @@ TEST(IdentifyUncertaintyTest, AnUnmodelledSensorDelayIsReportedAsNotExplained) {
 
 namespace pamsim {
 namespace {
+
+// the file's noise floor replaces the recording's own, its level sets the intervals'
+TEST(IdentifyUncertaintyTest, AGivenNoiseFloorAndIntervalLevelAreUsed) {
+  const fs::path dir = pamsim_test::fresh_dir("uncertainty_given");
+  const IdentifyResult wide = identify_wall(dir, 6);
+  const IdentifyResult given =
+      identify_wall(pamsim_test::fresh_dir("uncertainty_given2"), 6, "interval = 0.5\n",
+                    "noise = { angle_deg = 1.0 }\n");
+  ASSERT_EQ(given.fits.size(), 1u);
+  EXPECT_EQ(given.fits[0].noise_floor, 1.0);
+  EXPECT_TRUE(given.fits[0].explained) << "1.9 deg of RMS is within 3 floors of 1 deg";
+  const IdentifiedParameter& a = wide.parameters[0];
+  const IdentifiedParameter& b = given.parameters[0];
+  EXPECT_EQ(a.std_error, b.std_error);
+  // 0.6745 / 1.96 of the 95 % interval's half-width (linear scale)
+  EXPECT_NEAR((b.interval_hi - b.interval_lo) / (a.interval_hi - a.interval_lo),
+              0.6744897501960817 / 1.959963984540054, 1e-9);
+}
 
 // the warnings a user must not miss, from a result built by hand
 TEST(IdentifyUncertaintyTest, NoConvergenceAndABoundAreWarnings) {

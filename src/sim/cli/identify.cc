@@ -39,8 +39,9 @@ void print_result(const IdentifyDefinition& def, const IdentifyResult& r) {
   for (const IdentifiedParameter& p : r.parameters) {
     std::cout << "  " << p.parameter.key << " = " << format_value(p.value);
     if (!p.identifiable) std::cout << "  (not determined by the recordings)";
-    else std::cout << " +- " << format_value(p.std_error) << ", 95 % in ["
-                   << format_value(p.ci95_lo) << ", " << format_value(p.ci95_hi) << "]"
+    else std::cout << " +- " << format_value(p.std_error) << ", "
+                   << format_value(100.0 * r.interval_level) << " % in ["
+                   << format_value(p.interval_lo) << ", " << format_value(p.interval_hi) << "]"
                    << (p.at_bound ? "  (at a bound)" : "");
     std::cout << "\n";
   }

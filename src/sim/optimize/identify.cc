@@ -247,7 +247,7 @@ std::vector<ChannelFit> channel_fits(const IdentifyDefinition& def,
                    r.data.sample_count(r.channels[c]), before[c], after[c], {}, {}};
       if (!sampled_before.empty()) f.before = sampled_before[c];
       if (!sampled_after.empty()) f.after = sampled_after[c];
-      judge_channel(r.data.samples[r.channels[c]], &f);
+      judge_channel(r.data.samples[r.channels[c]], r.noise[c], &f);
       fits.push_back(std::move(f));
     }
   }
@@ -295,7 +295,7 @@ IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
   Eigen::MatrixXd jacobian;
   Eigen::VectorXd at_result;
   evaluate_dense(problem, &jacobian, &at_result);
-  fill_uncertainty(jacobian, at_result, residuals.segments(), result.unit, &result);
+  fill_uncertainty(jacobian, at_result, residuals.segments(), result.unit, def.interval, &result);
   result.fits = channel_fits(def, values, options.threads);
   result.check_s = seconds_since(t0);
   result.simulated = residuals.simulated;

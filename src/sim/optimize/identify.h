@@ -36,7 +36,9 @@ struct IdentifiedParameter {
   double value = 0.0;
   double std_error = 0.0;       // HAC (identify_uncertainty.h); NaN when not determined
   double std_error_plain = 0.0; // s^2 (J^T J)^-1, for comparison; NaN when not determined
-  double ci95_lo = 0.0, ci95_hi = 0.0;   // the 95 % interval from std_error (NaN: none)
+  // the interval of the file's level (identify_file.h: interval, 0.95 unless it says) from
+  // std_error; NaN: none
+  double interval_lo = 0.0, interval_hi = 0.0;
   bool at_bound = false;        // within 0.1 % of the box's edge
   bool identifiable = true;     // false: the recordings do not determine it
   std::vector<std::pair<std::string, double>> correlated;   // |correlation| > 0.9
@@ -64,6 +66,7 @@ struct IdentifyResult {
   std::size_t residuals = 0;
   std::int64_t simulated = 0, cached = 0;       // points simulated, points answered stored
   double global_s = 0.0, polish_s = 0.0, check_s = 0.0;   // wall time of each phase
+  double interval_level = 0.95;                 // the parameters' intervals' level
   int hac_lags = 0;                             // the HAC covariance's Bartlett bandwidth
   double residual_lag1 = 0.0;                   // the residuals' pooled lag-1 autocorrelation
   std::string polish_summary;                   // Ceres's brief report

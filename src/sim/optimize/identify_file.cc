@@ -5,6 +5,8 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <limits>
+#include <optional>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -31,6 +33,30 @@ void read_search(ConfigReader& in, IdentifyDefinition* def) {
       read_bounded_int(in, "seed", 1, 0, 4294967295LL, "[0, 2^32 - 1] (pagmo's seeds)"));
   def->polish_iterations = static_cast<int>(
       read_bounded_int(in, "polish_iterations", def->polish_iterations, 0, 1000, "[0, 1000]"));
+  def->interval = in.get_double("interval", def->interval);
+  in.check(def->interval > 0.0 && def->interval < 1.0, "interval",
+           "must be in (0, 1), got " + format_value(def->interval));
+}
+
+// noise = { <channel> = floor }: a chosen channel's noise floor, > 0 in its unit
+std::vector<double> read_noise(const TableEntry& e, const Recording& data,
+                               const std::vector<std::size_t>& channels) {
+  std::vector<double> noise(channels.size(), std::numeric_limits<double>::quiet_NaN());
+  const toml::node* given = e.table.get("noise");
+  if (given == nullptr) return noise;
+  if (!given->is_table()) e.in.fail(e.where + "noise", "must be a table { <channel> = floor }");
+  for (const auto& [name, value] : *given->as_table()) {
+    const std::string key = e.where + "noise." + std::string(name.str());
+    std::size_t i = 0;
+    while (i < channels.size() && data.channels[channels[i]] != name.str()) ++i;
+    if (i == channels.size()) e.in.fail(key, "is not a channel the recording is matched on");
+    const std::optional<double> v = value.value<double>();
+    if (!v || !(*v > 0.0) || !std::isfinite(*v)) {
+      e.in.fail(key, "must be a noise floor > 0 in the channel's unit");
+    }
+    noise[i] = *v;
+  }
+  return noise;
 }
 
 bool is_name(const std::string& s) {
@@ -77,6 +103,7 @@ IdentifyRecording read_recording(ConfigReader& in, const TableEntry& e) {
   }
   r.set = e.texts("set", false);
   r.channels = read_channels(e, r.data);
+  r.noise = read_noise(e, r.data, r.channels);
   r.weight = e.number("weight").value_or(1.0);
   if (!(r.weight > 0)) in.fail(e.where + "weight", "must be > 0, got " + format_value(r.weight));
   if (const toml::node* h = e.table.get("held_out")) {
@@ -162,7 +189,7 @@ void read_recordings(ConfigReader& in, IdentifyDefinition* def) {
   const TableArray tables(in, "recording");
   std::set<std::string> names;
   for (const TableEntry& e :
-       tables.entries({"file", "name", "set", "channels", "weight", "held_out"})) {
+       tables.entries({"file", "name", "set", "channels", "weight", "held_out", "noise"})) {
     def->recordings.push_back(read_recording(in, e));
     const IdentifyRecording& r = def->recordings.back();
     in.check(names.insert(r.name).second, e.where + "name", "\"" + r.name + "\" is taken");

@@ -11,6 +11,8 @@
 //   seed                CMA-ES seed, [0, 2^32 - 1]; default 1
 //   polish_iterations   Levenberg-Marquardt iterations of the local polish (Ceres), [0, 1000];
 //                       default 30
+//   interval            the level of the parameters' reported intervals, in (0, 1); default
+//                       0.95 (identify_uncertainty.h)
 //   [[parameter]]       key (a scenario key), from < to, scale = "linear" | "log" (from > 0);
 //                       or a recorded channel's sensor, key = "channel.<column>.offset" (in
 //                       the column's unit), ".gain" (> 0) or ".delay_ms" (>= 0, <= 1000):
@@ -22,6 +24,8 @@
 //                       channels: the columns to match; default every one it has
 //                       weight: > 0, its residuals' weight; default 1
 //                       held_out: true: used only to check the result; default false
+//                       noise: a chosen channel's noise floor, > 0 in its unit, as a table
+//                       ({ angle_deg = 0.01 }); default: estimated from the recording
 //   [[tensile]]         muscle: a muscle of the base scenario with a plant file (its actuator
 //                       name); file: a tensile test of it in `pamsim tensile`'s CSV format;
 //                       weight: > 0, default 1. Its plant's forces at the recorded pressures
@@ -49,6 +53,7 @@ struct IdentifyRecording {
   std::vector<std::size_t> channels;   // indices into data.channels
   double weight = 1.0;
   bool held_out = false;
+  std::vector<double> noise;           // per chosen channel, its given noise floor (NaN: none)
 };
 
 // A parameter that is a recorded channel's sensor rather than a scenario key.
@@ -76,6 +81,8 @@ struct IdentifyDefinition {
   unsigned generations = 6, population = 8;
   std::uint64_t seed = 1;
   int polish_iterations = 30;
+  double interval = 0.95;   // the reported intervals' level (not in canonical_json: it does
+                            // not change the search)
   std::vector<SearchParameter> parameters;
   std::vector<ChannelParameter> channel_parameters;   // per parameter (kNone: a scenario key)
   std::vector<IdentifyRecording> recordings;

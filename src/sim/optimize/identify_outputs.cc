@@ -38,16 +38,22 @@ std::string verdict(const IdentifiedParameter& p, bool explained) {
 
 // "[lo, hi]", or "-" where there is none
 std::string interval_text(const IdentifiedParameter& p) {
-  if (!std::isfinite(p.ci95_lo)) return "-";
-  return "[" + format_value(p.ci95_lo) + ", " + format_value(p.ci95_hi) + "]";
+  if (!std::isfinite(p.interval_lo)) return "-";
+  return "[" + format_value(p.interval_lo) + ", " + format_value(p.interval_hi) + "]";
 }
 
 std::string value_or_dash(double v) { return std::isfinite(v) ? format_value(v) : "-"; }
 
+// "95 %"
+std::string level_text(const IdentifyResult& r) {
+  return format_value(100.0 * r.interval_level) + " %";
+}
+
 std::string parameters_table(const IdentifyResult& r) {
   std::ostringstream md;
   const bool explained = unexplained_channels(r).empty();
-  md << "| parameter | range | start | identified | standard error | 95 % interval | "
+  md << "| parameter | range | start | identified | standard error | " << level_text(r)
+     << " interval | "
         "plain s.e. | verdict | correlated (> 0.9) |\n"
      << "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
   for (const IdentifiedParameter& p : r.parameters) {
@@ -151,14 +157,14 @@ std::vector<std::string> identify_warnings(const IdentifyDefinition& def,
 
 std::string identify_parameters_csv(const IdentifyResult& r) {
   std::string out = "key,from,to,scale,start,identified,std_error,at_bound,identifiable,"
-                    "correlated_with,std_error_plain,ci95_lo,ci95_hi\n";
+                    "correlated_with,std_error_plain,interval_lo,interval_hi\n";
   for (const IdentifiedParameter& p : r.parameters) {
     out += p.parameter.key + "," + cell(p.parameter.from) + "," + cell(p.parameter.to) + "," +
            (p.parameter.log ? "log" : "linear") + "," + cell(p.start) + "," + cell(p.value) + "," +
            cell(p.std_error) +
            "," + (p.at_bound ? "1" : "0") + "," + (p.identifiable ? "1" : "0") + "," +
-           correlated_text(p) + "," + cell(p.std_error_plain) + "," + cell(p.ci95_lo) + "," +
-           cell(p.ci95_hi) + "\n";
+           correlated_text(p) + "," + cell(p.std_error_plain) + "," + cell(p.interval_lo) + "," +
+           cell(p.interval_hi) + "\n";
   }
   return out;
 }
@@ -187,7 +193,7 @@ std::string identify_markdown(const IdentifyDefinition& def, const IdentifyResul
      << " answered from the database.\n\n"
      << warnings_text(def, r)
      << "## Parameters\n\n" << parameters_table(r) << "\n"
-     << "Standard errors and 95 % intervals: the sandwich (HAC) covariance, which holds for "
+     << "Standard errors and " << level_text(r) << " intervals: the sandwich (HAC) covariance, which holds for "
         "residuals correlated in time, as a recording's are (Newey-West with Andrews' "
         "bandwidth, here " << r.hac_lags << " lags for a pooled lag-1 autocorrelation of "
      << format_value(std::round(r.residual_lag1 * 1000) / 1000) << ", prewhitened); "

@@ -4,14 +4,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include <boost/math/distributions/normal.hpp>
+
 #include "base/format.h"
 #include "base/no_value.h"
 #include "sim/optimize/residual_statistics.h"
 
 namespace pamsim {
 namespace {
-
-constexpr double kZ95 = 1.959963984540054;   // the standard normal's 97.5 % quantile
 
 // dx/du of a parameter at u
 double slope_at(const SearchParameter& p, double u) {
@@ -29,15 +29,33 @@ std::vector<Eigen::Index> determined_columns(const Eigen::MatrixXd& jacobian) {
   return free;
 }
 
+// The recorded channel's own noise floor, at least kResolvedFraction of its spread: a
+// noise-free channel (a simulated recording, a still one) is explained by a model within that.
+double judged_floor(const std::vector<double>& recorded) {
+  double mean = 0.0, count = 0.0, spread = 0.0;
+  for (double v : recorded) {
+    if (!std::isnan(v)) mean += v, count += 1.0;
+  }
+  mean /= std::max(count, 1.0);
+  for (double v : recorded) {
+    if (!std::isnan(v)) spread += (v - mean) * (v - mean);
+  }
+  spread = std::sqrt(spread / std::max(count, 1.0));
+  return std::max(noise_floor(recorded), kResolvedFraction * spread);
+}
+
 }  // namespace
 
 void fill_uncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
                       const std::vector<std::size_t>& segments, const std::vector<double>& unit,
-                      IdentifyResult* result) {
+                      double level, IdentifyResult* result) {
+  // the standard normal's quantile at 1/2 + level/2 (1.96 for 0.95)
+  const double z = boost::math::quantile(boost::math::normal(), 0.5 + 0.5 * level);
   std::vector<IdentifiedParameter>& params = result->parameters;
+  result->interval_level = level;
   for (IdentifiedParameter& p : params) {
     p.identifiable = false;
-    p.std_error = p.std_error_plain = p.ci95_lo = p.ci95_hi = kNaN;
+    p.std_error = p.std_error_plain = p.interval_lo = p.interval_hi = kNaN;
   }
   if (jacobian.rows() != r.size() || jacobian.cols() != static_cast<Eigen::Index>(params.size())) {
     return;   // the Jacobian could not be evaluated
@@ -62,10 +80,10 @@ void fill_uncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
     p.identifiable = true;
     p.std_error = se_u * std::abs(slope_at(p.parameter, u));
     p.std_error_plain = std::sqrt(plain(ka, ka)) * std::abs(slope_at(p.parameter, u));
-    const double lo = value_at(p.parameter, u - kZ95 * se_u);
-    const double hi = value_at(p.parameter, u + kZ95 * se_u);
-    p.ci95_lo = std::min(lo, hi);
-    p.ci95_hi = std::max(lo, hi);
+    const double lo = value_at(p.parameter, u - z * se_u);
+    const double hi = value_at(p.parameter, u + z * se_u);
+    p.interval_lo = std::min(lo, hi);
+    p.interval_hi = std::max(lo, hi);
     for (std::size_t b = 0; b < free.size(); ++b) {
       const auto kb = static_cast<Eigen::Index>(b);
       if (a == b) continue;
@@ -77,20 +95,13 @@ void fill_uncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
   }
 }
 
-void judge_channel(const std::vector<double>& recorded, ChannelFit* fit) {
-  fit->noise_floor = noise_floor(recorded);
-  // a noise-free channel (a simulated recording, a quantised but still channel) is floored at
-  // kResolvedFraction of its spread: a model within that of it explains it
-  double mean = 0.0, count = 0.0, spread = 0.0;
-  for (double v : recorded) {
-    if (!std::isnan(v)) mean += v, count += 1.0;
+void judge_channel(const std::vector<double>& recorded, double given, ChannelFit* fit) {
+  if (std::isfinite(given)) {
+    fit->noise_floor = given;
+  } else {
+    fit->noise_floor = judged_floor(recorded);
   }
-  mean /= std::max(count, 1.0);
-  for (double v : recorded) {
-    if (!std::isnan(v)) spread += (v - mean) * (v - mean);
-  }
-  spread = std::sqrt(spread / std::max(count, 1.0));
-  fit->noise_floor = std::max(fit->noise_floor, kResolvedFraction * spread);
+
   std::vector<double> residuals;
   for (std::size_t i = 0; i < recorded.size() && i < fit->after.size(); ++i) {
     const double d = fit->after[i] - recorded[i];
