@@ -50,7 +50,8 @@ test: build
 # ThreadSanitizer in build-tsan. Any report fails the test that caused it.
 ASAN_CONFIG := $(SANITIZE_TYPE) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
                -DPAMSIM_SANITIZE=address,undefined -DPAMSIM_FUZZ=ON
-FUZZ_TARGETS := fuzz_scenario fuzz_override fuzz_sweep fuzz_tensile_csv
+FUZZ_TARGETS := fuzz_scenario fuzz_override fuzz_sweep fuzz_tensile_csv fuzz_identify \
+                fuzz_recording_csv
 
 sanitize: deps
 	cmake -S . -B $(BUILD_DIR)-asan $(ASAN_CONFIG)
@@ -61,7 +62,8 @@ sanitize: deps
 	cd $(BUILD_DIR)-tsan && $(TSAN_ENV) ctest --output-on-failure -j $(JOBS) \
 	  -R '^(SweepTest|CliSweepTest|TuneTest|TrialTest)\.' -E '$(TSAN_SKIP)'
 
-# libFuzzer (clang, ASan + UBSan) on the scenario, override, sweep and tensile CSV readers,
+# libFuzzer (clang, ASan + UBSan) on the scenario, override, sweep, tensile CSV,
+# identification file and recording readers,
 # FUZZ_SECONDS each from tests/fuzz/corpus (scripts/fuzz.sh).
 fuzz: deps
 	cmake -S . -B $(BUILD_DIR)-asan $(ASAN_CONFIG)
