@@ -1,0 +1,123 @@
+// key_table_test.cc: the key-table rows (base/key_table.h) on a table made here: a whole
+// document read by read_key_tables (a number to its SI field, a choice, an integer, a
+// true/false key; each refused in one line naming the file and the key for a wrong type, a
+// value outside its range, an unknown key or table), ranges written as intervals, the file's
+// value given back from SI without a trailing digit, check_key_rows on the fields as they
+// are, and the reference lines in the reader's order.
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "base/input_error.h"
+#include "base/key_table.h"
+
+namespace pamsim {
+namespace {
+
+struct Fields {
+  double delay_s = 0.02;
+  int bits = 12;
+  bool on = false;
+  std::string mode = "fast";
+};
+
+KeyTable table(Fields* f) {
+  KeyTable t{"loop", {}, {}, {}};
+  t.numbers = {{"delay_ms", "ms", 1e-3, {0.0, 1000.0, false, true}, "the delay", &f->delay_s}};
+  t.choices = {{"mode", {"fast", "slow"}, "the mode",
+                [f](const std::string& v) { f->mode = v; }, [f] { return f->mode; }}};
+  t.bools = {{"on", "switched on", &f->on}};
+  t.ints = {{"bits", "resolution", 4, 24, &f->bits}};
+  return t;
+}
+
+// the refusal's parts of reading `text` as file "f.toml"
+InputErrorParts refusal(const std::string& text) {
+  Fields f;
+  try {
+    read_key_tables(toml::parse(text), "f.toml", {table(&f)});
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    return e.parts();
+  }
+  ADD_FAILURE() << "read: " << text;
+  return {};
+}
+
+TEST(KeyTableTest, ADocumentReachesItsFieldsInSi) {
+  Fields f;
+  read_key_tables(toml::parse("[loop]\ndelay_ms = 70\nmode = \"slow\"\non = true\nbits = 16\n"),
+                  "f.toml", {table(&f)});
+  EXPECT_EQ(f.delay_s, 70 * 1e-3);
+  EXPECT_EQ(f.mode, "slow");
+  EXPECT_TRUE(f.on);
+  EXPECT_EQ(f.bits, 16);
+}
+
+TEST(KeyTableTest, EveryBadValueIsOneLineNamingTheFileAndTheKey) {
+  struct Case { const char* text; const char* key; const char* says; };
+  for (const Case& c : {
+           Case{"[loop]\ndelay_ms = 1000\n", "loop.delay_ms", "out of range, allowed [0, 1000)"},
+           Case{"[loop]\ndelay_ms = \"x\"\n", "loop.delay_ms", "must be a number"},
+           Case{"[loop]\nmode = \"medium\"\n", "loop.mode", "unknown value \"medium\""},
+           Case{"[loop]\nmode = 1\n", "loop.mode", "must be a string"},
+           Case{"[loop]\non = 1\n", "loop.on", "must be true or false"},
+           Case{"[loop]\nbits = 2.5\n", "loop.bits", "must be an integer"},
+           Case{"[loop]\nbits = 25\n", "loop.bits", "out of range, allowed [4, 24]"},
+           Case{"[loop]\nbit = 12\n", "loop.bit",
+                "unknown key (allowed: delay_ms, mode, on, bits)"},
+           Case{"[lop]\nbits = 12\n", "lop", "unknown table (allowed: loop)"},
+           Case{"loop = 3\n", "loop", "must be a table"}}) {
+    const InputErrorParts parts = refusal(c.text);
+    EXPECT_EQ(parts.file, "f.toml") << c.text;
+    EXPECT_EQ(parts.key, c.key) << c.text;
+    EXPECT_NE(parts.problem.find(c.says), std::string::npos) << parts.problem;
+  }
+}
+
+TEST(KeyTableTest, RangesAndFileValuesReadAsWritten) {
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ((KeyRange{0.0, inf, true, false}).text(), "(0, inf)");
+  EXPECT_EQ((KeyRange{-1.0, 1.0, false, true}).text(), "[-1, 1)");
+  EXPECT_FALSE((KeyRange{0.0, 1.0, true, false}).contains(0.0));
+  EXPECT_FALSE((KeyRange{}).contains(std::numeric_limits<double>::quiet_NaN()));
+  Fields f;
+  const KeyTable t = table(&f);
+  f.delay_s = 70 * 1e-3;   // 0.07000000000000001 in SI
+  EXPECT_EQ(file_value(t, "delay_ms"), 70.0);
+  f.delay_s = 1e-3 / 3.0;
+  EXPECT_EQ(from_si(t.numbers[0], f.delay_s) * 1e-3, f.delay_s);
+}
+
+TEST(KeyTableTest, CheckedFieldsAndReferenceLines) {
+  Fields f;
+  const KeyTable t = table(&f);
+  EXPECT_NO_THROW(check_key_rows(t));
+  f.bits = 3;
+  EXPECT_THROW(check_key_rows(t), InputError);
+  f.bits = 12;
+  f.delay_s = 2.0;   // 2000 ms
+  try {
+    check_key_rows(t);
+    ADD_FAILURE() << "no throw";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "loop.delay_ms must be in [0, 1000), got 2000");
+  }
+  f.delay_s = 0.02;
+  const std::vector<KeyDoc> docs = key_table_docs({t});
+  ASSERT_EQ(docs.size(), 4u);
+  EXPECT_EQ(docs[0].key, "loop.mode");   // the reader's order: choices, bools, ints, numbers
+  EXPECT_EQ(docs[0].fallback, "\"fast\"");
+  EXPECT_EQ(docs[1].allowed, "true | false");
+  EXPECT_EQ(docs[2].allowed, "[4, 24]");
+  EXPECT_EQ(docs[3].key, "loop.delay_ms");
+  EXPECT_EQ(docs[3].fallback, "20.0");   // as TOML writes it
+  EXPECT_EQ(docs[3].unit, "ms");
+}
+
+}  // namespace
+}  // namespace pamsim
