@@ -3,13 +3,10 @@
 // (examples/identify: its arm.toml and recordings/ resolve) loads, every recording's scenario
 // checked, or is refused with an InputError. The identification itself is not run.
 #include <toml++/toml.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "fuzz_input.h"
@@ -31,35 +28,18 @@ double loads_asked(const toml::table& doc) {
   return (1.0 + 2.0 * count("parameter")) * std::max(1.0, count("recording"));
 }
 
-// A folder (returned) that looks like the source tree (examples/identify/ with links to the
-// example's files, models/ a link), where the input is written as examples/identify/id.toml.
-std::string source_mirror() {
-  namespace fs = std::filesystem;
-  const fs::path root =
-      fs::temp_directory_path() / ("pamsim_fuzz_identify_" + std::to_string(::getpid()));
-  const fs::path source = PAMSIM_SOURCE_DIR;
-  fs::remove_all(root);
-  fs::create_directories(root / "examples" / "identify");
-  fs::create_directory_symlink(source / "models", root / "models");
-  for (const auto& e : fs::directory_iterator(source / "examples" / "identify")) {
-    fs::create_symlink(e.path(), root / "examples" / "identify" / e.path().filename());
-  }
-  return root.string();
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const pamsim_fuzz::RemovedAtExit root{source_mirror()};
+  // the input as examples/identify/id.toml of a mirror of the source tree
+  static const pamsim_fuzz::RemovedAtExit root{
+      pamsim_fuzz::source_mirror("identify", "examples/identify")};
   static const std::string path = root.path + "/examples/identify/id.toml";
   try {
     if (loads_asked(toml::parse(pamsim_fuzz::input_text(data, size))) > kMaxLoads) return 0;
   } catch (const toml::parse_error&) {  // the reader must say so too
   }
-  {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-  }
+  pamsim_fuzz::write_input(path, data, size);
   try {
     pamsim::load_identify_definition(path);
   } catch (const pamsim::InputError&) {

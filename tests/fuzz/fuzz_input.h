@@ -1,5 +1,6 @@
 // fuzz_input.h: what the libFuzzer harnesses share: the input as a file for readers that
-// take a path (one per process, rewritten for each input), and the rule every reader must
+// take a path (one per process, rewritten for each input), a mirror of the source tree for
+// readers whose files name others, and the rule every reader must
 // keep: a bad input is an InputError (one line) and nothing else escapes; a crash, a
 // sanitizer report, a hang or another exception is a finding.
 #pragma once
@@ -33,6 +34,30 @@ inline std::string input_file(const std::uint8_t* data, std::size_t size, const 
 
 inline std::string input_text(const std::uint8_t* data, std::size_t size) {
   return std::string(reinterpret_cast<const char*>(data), size);
+}
+
+// Writes the input to `path` as it is.
+inline void write_input(const std::string& path, const std::uint8_t* data, std::size_t size) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+}
+
+// A folder (returned; the caller removes it at exit) that looks like the source tree for a
+// file in `dir` ("scenarios", "examples/identify"): `dir` holds links to the source's files
+// there and models/ is a link, so that a reader's relative paths ("../models/...") resolve as
+// in the source tree, and nothing is written there. `tag` names the folder.
+inline std::string source_mirror(const std::string& tag, const std::string& dir) {
+  namespace fs = std::filesystem;
+  const fs::path root =
+      fs::temp_directory_path() / ("pamsim_fuzz_" + tag + "_" + std::to_string(::getpid()));
+  const fs::path source = PAMSIM_SOURCE_DIR;
+  fs::remove_all(root);
+  fs::create_directories(root / dir);
+  fs::create_directory_symlink(source / "models", root / "models");
+  for (const auto& e : fs::directory_iterator(source / dir)) {
+    fs::create_symlink(e.path(), root / dir / e.path().filename());
+  }
+  return root.string();
 }
 
 }  // namespace pamsim_fuzz

@@ -2,14 +2,11 @@
 // sweep file beside the shipped scenarios loads (every point validated) or is refused with an
 // InputError.
 #include <toml++/toml.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "fuzz_input.h"
@@ -44,37 +41,17 @@ double trials_asked(const toml::table& doc) {
   return points * std::max(1.0, integer_or(doc.get("seeds"), 1));
 }
 
-// A folder (returned) that looks like the source tree (scenarios/ with links to the shipped
-// scenario files, models/ a link), where the input is written as scenarios/sweep.toml: its base
-// "drop_mass.toml" and that scenario's "../models/..." resolve as in the source tree, and
-// nothing is written there.
-std::string source_mirror() {
-  namespace fs = std::filesystem;
-  const fs::path root =
-      fs::temp_directory_path() / ("pamsim_fuzz_sweep_" + std::to_string(::getpid()));
-  const fs::path source = PAMSIM_SOURCE_DIR;
-  fs::remove_all(root);
-  fs::create_directories(root / "scenarios");
-  fs::create_directory_symlink(source / "models", root / "models");
-  for (const auto& e : fs::directory_iterator(source / "scenarios")) {
-    fs::create_symlink(e.path(), root / "scenarios" / e.path().filename());
-  }
-  return root.string();
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const pamsim_fuzz::RemovedAtExit root{source_mirror()};  // scenarios/sweep.toml in it
+  // the input as scenarios/sweep.toml of a mirror of the source tree
+  static const pamsim_fuzz::RemovedAtExit root{pamsim_fuzz::source_mirror("sweep", "scenarios")};
   static const std::string path = root.path + "/scenarios/sweep.toml";
   try {
     if (trials_asked(toml::parse(pamsim_fuzz::input_text(data, size))) > kMaxTrials) return 0;
   } catch (const toml::parse_error&) {  // the reader must say so too
   }
-  {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-  }
+  pamsim_fuzz::write_input(path, data, size);
   try {
     pamsim::load_sweep(path);
   } catch (const pamsim::InputError&) {
