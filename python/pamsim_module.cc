@@ -157,6 +157,12 @@ class PyTrial {
 
   bool done() const { return trial_->done(); }
 
+  // the valve's command range's top [MPa] (the scenario's valve.command_max_MPa, else its
+  // pneumatics file's): the largest command a muscle's valve acts on
+  double command_max_mpa() const {
+    return units::pa_to_mpa(loaded_.scenario.pneumatics.command_max_gauge_pa);
+  }
+
   py::dict observe() const {
     const TrialObservation o = trial_->observe();
     const bool hinge = loaded_.model->joint.hinge;
@@ -324,6 +330,8 @@ PYBIND11_MODULE(_pamsim, m) {
       .def("observe", &PyTrial::observe)
       .def_property_readonly("done", &PyTrial::done)
       .def_property_readonly("muscles", &PyTrial::muscles)
+      .def_property_readonly("command_max_MPa", &PyTrial::command_max_mpa,
+                             "The valve's largest command [MPa] (valve.command_max_MPa)")
       .def("finish", &PyTrial::finish, "The trial's Result (ended early if not done); then reset");
 
   m.def("read_sweep", &read_sweep, py::arg("path"),

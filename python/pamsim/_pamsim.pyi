@@ -98,6 +98,11 @@ class Trial:
     @property
     def muscles(self) -> list[str]:
         ...
+    @property
+    def command_max_MPa(self) -> float:
+        """
+        The valve's largest command [MPa] (valve.command_max_MPa)
+        """
 def _cxx_force_loop_s(arg0: SpringModel, arg1: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg2: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> float:
     ...
 def _cxx_step_s(scenario: str, overrides: typing.Any, periods: typing.SupportsInt | typing.SupportsIndex) -> float:

@@ -90,6 +90,14 @@ def test_an_action_outside_the_space_is_clipped_with_one_warning_per_episode():
     assert env.unwrapped._trial.observe()["command_MPa"][0] <= 0.8
 
 
+def test_the_action_space_tops_at_the_scenarios_valve_range_unless_given():
+    env = make(duration_s=0.7)
+    top = pamsim.Trial(env.unwrapped.scenario).command_max_MPa
+    assert 0.0 < top <= 1.0
+    assert np.all(env.action_space.high == np.float32(top))
+    assert np.all(make(duration_s=0.7, p_max_MPa=0.5).action_space.high == np.float32(0.5))
+
+
 def vector_episode(vec, steps):
     """`steps` batched steps of a fixed action from reset(seed=5): every output's bytes."""
     out = [vec.reset(seed=5)[0].tobytes()]

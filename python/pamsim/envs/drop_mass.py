@@ -65,7 +65,7 @@ class DropMassEnv(gymnasium.Env[Obs, Act]):
     def __init__(self, scenario: str | None = None, observation: str = "measured",
                  fiber: bool = False, randomize: bool = True, noise_scale: float = 1.0,
                  duration_s: float = 1.5, mass_lost_penalty: float = 10.0,
-                 p_max_MPa: float = 0.8, render_mode: str | None = None) -> None:
+                 p_max_MPa: float | None = None, render_mode: str | None = None) -> None:
         if observation not in ("measured", "privileged"):
             raise ValueError(f'observation must be "measured" or "privileged", got {observation!r}')
         if render_mode is not None:
@@ -77,7 +77,6 @@ class DropMassEnv(gymnasium.Env[Obs, Act]):
         self.duration_s = duration_s
         self.mass_lost_penalty = mass_lost_penalty
         self.noise_scale = noise_scale
-        self.p_max_MPa = p_max_MPa
         self._trial: Trial | None = None
         self._start_angle_deg = 0.0
         self._warned = False
@@ -89,8 +88,10 @@ class DropMassEnv(gymnasium.Env[Obs, Act]):
         probe = Trial(self.scenario, self._draws_as_overrides(
             [DROP_TIME_S[1], MASS_KG[1], HEIGHT_M[1]] if randomize else [math.nan] * 3))
         self.muscles: list[str] = list(probe.muscles)
+        # the actions' top: the scenario's valve range unless given
+        self.p_max_MPa: float = probe.command_max_MPa if p_max_MPa is None else p_max_MPa
         n = len(self.muscles)
-        self.action_space = spaces.Box(0.0, p_max_MPa, shape=(n,), dtype=np.float32)
+        self.action_space = spaces.Box(0.0, self.p_max_MPa, shape=(n,), dtype=np.float32)
         size = n * (len(MEASURED) + (1 if fiber else 0)) + (2 if self.privileged else 0)
         self.observation_space = spaces.Box(-np.inf, np.inf, shape=(size,), dtype=np.float64)
 
