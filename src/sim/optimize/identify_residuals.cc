@@ -34,21 +34,6 @@ std::string bits_key(const std::vector<double>& values) {
   return std::string(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
 }
 
-// the recorded channel's population standard deviation, 1 if it is (nearly) constant
-double channel_scale(const std::vector<double>& samples) {
-  double sum = 0;
-  int n = 0;
-  for (double v : samples) {
-    if (!std::isnan(v)) sum += v, ++n;
-  }
-  const double mean = sum / n;
-  double var = 0;
-  for (double v : samples) {
-    if (!std::isnan(v)) var += (v - mean) * (v - mean) / n;
-  }
-  return var > 1e-24 ? std::sqrt(var) : 1.0;
-}
-
 }  // namespace
 
 SimulatedRecording simulate_recording(const IdentifyDefinition& def, const IdentifyRecording& r,
@@ -227,6 +212,20 @@ bool IdentifyResiduals::append_recordings(const std::vector<double>& values, std
     }
   }
   return true;
+}
+
+double channel_scale(const std::vector<double>& samples) {
+  double sum = 0;
+  int n = 0;
+  for (double v : samples) {
+    if (!std::isnan(v)) sum += v, ++n;
+  }
+  const double mean = sum / n;
+  double var = 0;
+  for (double v : samples) {
+    if (!std::isnan(v)) var += (v - mean) * (v - mean) / n;
+  }
+  return var > 1e-24 ? std::sqrt(var) : 1.0;
 }
 
 double sum_of_squares(const std::vector<double>& residuals) {

@@ -86,6 +86,10 @@ class IdentifyResiduals {
   std::string first_failure_;
 };
 
+// A recorded channel's population standard deviation over its samples (NaN: a gap), 1 if it is
+// (nearly) constant: the scale of its residuals, and of its smallest noise floor.
+double channel_scale(const std::vector<double>& samples);
+
 // Sum of squares; +inf for an empty (failed) vector.
 double sum_of_squares(const std::vector<double>& residuals);
 

@@ -8,6 +8,7 @@
 
 #include "base/format.h"
 #include "base/no_value.h"
+#include "sim/optimize/identify_residuals.h"
 #include "sim/optimize/residual_statistics.h"
 
 namespace pamsim {
@@ -32,16 +33,7 @@ std::vector<Eigen::Index> determined_columns(const Eigen::MatrixXd& jacobian) {
 // The recorded channel's own noise floor, at least kResolvedFraction of its spread: a
 // noise-free channel (a simulated recording, a still one) is explained by a model within that.
 double judged_floor(const std::vector<double>& recorded) {
-  double mean = 0.0, count = 0.0, spread = 0.0;
-  for (double v : recorded) {
-    if (!std::isnan(v)) mean += v, count += 1.0;
-  }
-  mean /= std::max(count, 1.0);
-  for (double v : recorded) {
-    if (!std::isnan(v)) spread += (v - mean) * (v - mean);
-  }
-  spread = std::sqrt(spread / std::max(count, 1.0));
-  return std::max(noise_floor(recorded), kResolvedFraction * spread);
+  return std::max(noise_floor(recorded), kResolvedFraction * channel_scale(recorded));
 }
 
 }  // namespace
@@ -101,15 +93,12 @@ void judge_channel(const std::vector<double>& recorded, double given, ChannelFit
   } else {
     fit->noise_floor = judged_floor(recorded);
   }
-
   std::vector<double> residuals;
   for (std::size_t i = 0; i < recorded.size() && i < fit->after.size(); ++i) {
     const double d = fit->after[i] - recorded[i];
     if (!std::isnan(d)) residuals.push_back(d);
   }
-  const WhitenessTest white = ljung_box(residuals);
-  fit->whiteness_p = white.lags > 0 && residuals.size() > static_cast<std::size_t>(white.lags) + 1
-                         ? white.p_value : kNaN;
+  fit->whiteness_p = ljung_box(residuals).p_value;
   fit->explained = !(fit->rmse_after > kExplainedNoiseFactor * fit->noise_floor);
 }
 

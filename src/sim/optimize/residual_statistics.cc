@@ -56,7 +56,10 @@ WhitenessTest ljung_box(const std::vector<double>& r, int lags) {
   const double n = static_cast<double>(r.size());
   WhitenessTest test;
   test.lags = lags > 0 ? lags : std::max(1, std::min(20, static_cast<int>(r.size() / 5)));
-  if (r.size() < static_cast<std::size_t>(test.lags) + 2) return test;
+  if (r.size() < static_cast<std::size_t>(test.lags) + 2) {
+    test.p_value = kNaN;
+    return test;
+  }
   const std::vector<double> rho = autocorrelation(r, test.lags);
   for (int k = 1; k <= test.lags; ++k) test.q += rho[k] * rho[k] / (n - k);
   test.q *= n * (n + 2.0);
