@@ -21,7 +21,8 @@ ASAN_ENV := ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 \
             LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitize/lsan.supp:print_suppressions=0 \
             UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 TSAN_ENV := TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
-TSAN_TESTS := sweep_test cli_sweep_test tune_test trial_test
+# the test files whose trials run on threads (tests/CMakeLists.txt's PAMSIM_TEST_FILES)
+TSAN_TESTS := sweep_test|cli_sweep_test|tune_test|trial_test
 # (a test that emulates a full disk with a 1 KiB file-size limit: TSan's own runtime dies of
 # SIGBUS under it; the ASan run covers it)
 TSAN_SKIP := ADatabaseThatCannotBeMadeLeavesNoFolder
@@ -57,8 +58,9 @@ sanitize: deps
 	cmake -S . -B $(BUILD_DIR)-asan $(ASAN_CONFIG)
 	cmake --build $(BUILD_DIR)-asan -j $(JOBS)
 	cd $(BUILD_DIR)-asan && $(ASAN_ENV) ctest --output-on-failure -j $(JOBS)
-	cmake -S . -B $(BUILD_DIR)-tsan $(SANITIZE_TYPE) -DPAMSIM_SANITIZE=thread
-	cmake --build $(BUILD_DIR)-tsan -j $(JOBS) --target pamsim $(TSAN_TESTS)
+	cmake -S . -B $(BUILD_DIR)-tsan $(SANITIZE_TYPE) -DPAMSIM_SANITIZE=thread \
+	  -DPAMSIM_TEST_FILES='$(TSAN_TESTS)'
+	cmake --build $(BUILD_DIR)-tsan -j $(JOBS) --target pamsim sim_tests
 	cd $(BUILD_DIR)-tsan && $(TSAN_ENV) ctest --output-on-failure -j $(JOBS) \
 	  -R '^(SweepTest|CliSweepTest|TuneTest|TrialTest)\.' -E '$(TSAN_SKIP)'
 

@@ -135,7 +135,9 @@ TEST(PlantParamsTest, FreeLengthIsWhereTheLawStopsPulling) {
       EXPECT_GT(avbdl_static_force(p, p_pa, past), 0.0) << p_mpa << " MPa";
       EXPECT_GT(free, neutral);
       EXPECT_LT(free, previous) << p_mpa << " MPa";
-      if (slack_at_0_1 && p_mpa == 0.1) EXPECT_GT(free, p.length_m);
+      if (slack_at_0_1 && p_mpa == 0.1) {
+        EXPECT_GT(free, p.length_m);
+      }
       previous = free;
     }
   }

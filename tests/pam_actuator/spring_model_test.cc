@@ -10,19 +10,13 @@
 #include "pam_actuator/identification.h"
 #include "base/input_error.h"
 #include "pam_actuator/tensile_test.h"
+#include "pam_actuator/table4_springs.h"
 
 namespace pamsim {
 namespace {
 
-// Table IV of seeds/000, paper units
-SpringModel agonist() {
-  return spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,
-                                       {0.911, 0.256, 7.00, -0.201, 0.0, 0.0});
-}
-SpringModel antagonist() {
-  return spring_model_from_paper_units(SpringLaw::kEq3, -70.3, 178.5,
-                                       {22.4, -0.129, 1.24, 0.871, 0.0, 0.0});
-}
+using pamsim_test::table4_agonist;
+using pamsim_test::table4_antagonist;
 
 // Eq. (4) and (5) sets fitted to a noise-free virtual tensile test of the agonist law
 SpringModel fitted(SpringLaw law, const SpringModel& truth) {
@@ -36,18 +30,18 @@ TEST(SpringModelTest, Table4AgonistForceMatchesHandComputation) {
   // Eq. (3) at p = 0.4 MPa, d = 10 mm: (-0.201*0.4*10 + 7*0.4 + 0.256*10 + 0.911) * 10
   const double expected = (-0.201 * 0.4 * 10 + 7.00 * 0.4 + 0.256 * 10 + 0.911) * 10;
   EXPECT_NEAR(expected, 54.67, 1e-12);
-  EXPECT_NEAR(spring_force(agonist(), 0.4e6, 10e-3), 54.67, 54.67 * 1e-9);
+  EXPECT_NEAR(spring_force(table4_agonist(), 0.4e6, 10e-3), 54.67, 54.67 * 1e-9);
 }
 
 TEST(SpringModelTest, NaturalLengthIsEq2InSi) {
   // l_n = -60.1 mm/MPa * 0.4 MPa + 170.1 mm = 146.06 mm
-  EXPECT_NEAR(natural_length(agonist(), 0.4e6), 0.14606, 1e-12);
+  EXPECT_NEAR(natural_length(table4_agonist(), 0.4e6), 0.14606, 1e-12);
 }
 
 TEST(SpringModelTest, SlackLineGivesZeroForceAndStiffness) {
   for (double d : {0.0, -1e-3, -0.1}) {
-    EXPECT_EQ(spring_force(agonist(), 0.4e6, d), 0.0);
-    EXPECT_EQ(spring_stiffness(agonist(), 0.4e6, d), 0.0);
+    EXPECT_EQ(spring_force(table4_agonist(), 0.4e6, d), 0.0);
+    EXPECT_EQ(spring_stiffness(table4_agonist(), 0.4e6, d), 0.0);
   }
 }
 
@@ -55,7 +49,7 @@ TEST(SpringModelTest, StiffnessMatchesFiniteDifference) {
   const std::array<double, 6> eq4 = {0.911, 0.256, 7.00, 0.002, -0.201, 1.5};
   const std::array<double, 6> eq5 = {3.0, 0.005, 0.01, 0.5, 10.0, 0.0};
   const std::vector<SpringModel> models = {
-      agonist(), antagonist(), spring_model_from_paper_units(SpringLaw::kEq4, 0, 170, eq4),
+      table4_agonist(), table4_antagonist(), spring_model_from_paper_units(SpringLaw::kEq4, 0, 170, eq4),
       spring_model_from_paper_units(SpringLaw::kEq5, 0, 170, eq5)};
   for (const SpringModel& model : models) {
     for (double p : {0.1e6, 0.45e6, 0.8e6}) {
@@ -131,19 +125,19 @@ void expect_round_trip(const SpringModel& model) {
 }
 
 TEST(SpringModelTest, RoundTripTable4Eq3) {
-  expect_round_trip(agonist());
-  expect_round_trip(antagonist());
+  expect_round_trip(table4_agonist());
+  expect_round_trip(table4_antagonist());
 }
 
 TEST(SpringModelTest, RoundTripFittedEq4AndEq5) {
-  const SpringModel eq4 = fitted(SpringLaw::kEq4, agonist());
-  const SpringModel eq5 = fitted(SpringLaw::kEq5, agonist());
+  const SpringModel eq4 = fitted(SpringLaw::kEq4, table4_agonist());
+  const SpringModel eq5 = fitted(SpringLaw::kEq5, table4_agonist());
   // the cubic path is really exercised: the d^3 coefficient is non-zero
   EXPECT_NE(deformation_polynomial(eq5, 0.4e6)[2], 0.0);
   expect_round_trip(eq4);
   expect_round_trip(eq5);
-  expect_round_trip(fitted(SpringLaw::kEq4, antagonist()));
-  expect_round_trip(fitted(SpringLaw::kEq5, antagonist()));
+  expect_round_trip(fitted(SpringLaw::kEq4, table4_antagonist()));
+  expect_round_trip(fitted(SpringLaw::kEq5, table4_antagonist()));
 }
 
 TEST(SpringModelTest, RoundTripHandMadeCubics) {
@@ -159,18 +153,18 @@ TEST(SpringModelTest, RoundTripHandMadeCubics) {
 TEST(SpringModelTest, SlackAndNoPhysicalRoot) {
   // f <= 0: slack, d = 0
   for (double f : {0.0, -3.0}) {
-    const DeformationEstimate e = invert_spring_model(agonist(), 0.4e6, f);
+    const DeformationEstimate e = invert_spring_model(table4_agonist(), 0.4e6, f);
     EXPECT_EQ(e.status, InversionStatus::kSlack);
     EXPECT_EQ(e.d_m, 0.0);
   }
   // antagonist at 0.1 MPa has A2 < 0: f peaks at d = A1 / (2|A2|); beyond it no root
-  const std::array<double, 3> a = deformation_polynomial(antagonist(), 0.1e6);
+  const std::array<double, 3> a = deformation_polynomial(table4_antagonist(), 0.1e6);
   ASSERT_LT(a[1], 0.0);
   const double f_max = a[0] * a[0] / (4 * -a[1]);
-  const DeformationEstimate below = invert_spring_model(antagonist(), 0.1e6, 0.999 * f_max);
+  const DeformationEstimate below = invert_spring_model(table4_antagonist(), 0.1e6, 0.999 * f_max);
   EXPECT_EQ(below.status, InversionStatus::kOk);
   EXPECT_LT(below.d_m, a[0] / (2 * -a[1]));
-  const DeformationEstimate beyond = invert_spring_model(antagonist(), 0.1e6, 1.001 * f_max);
+  const DeformationEstimate beyond = invert_spring_model(table4_antagonist(), 0.1e6, 1.001 * f_max);
   EXPECT_EQ(beyond.status, InversionStatus::kNoPhysicalRoot);
   EXPECT_EQ(beyond.d_m, 0.0);
 }
@@ -178,7 +172,7 @@ TEST(SpringModelTest, SlackAndNoPhysicalRoot) {
 TEST(SpringModelTest, LinearLimitWhenQuadraticTermVanishes) {
   // a3 p + a1 = 0 at p = 0.256 / 0.201 MPa: f = A1 d exactly
   const double p = 0.256 / 0.201 * 1e6;
-  const SpringModel model = agonist();
+  const SpringModel model = table4_agonist();
   const std::array<double, 3> a = deformation_polynomial(model, p);
   EXPECT_NEAR(a[1], 0.0, 1e-6 * std::abs(a[0]));
   const DeformationEstimate e = invert_spring_model(model, p, 50.0);
@@ -207,7 +201,7 @@ TEST(SpringModelTest, NeverNaN) {
   const double inf = std::numeric_limits<double>::infinity();
   const SpringModel eq5 = spring_model_from_paper_units(SpringLaw::kEq5, -60.1, 170.1,
                                                         {3.0, 0.005, 0.01, 0.5, 10.0, 0.0});
-  for (const SpringModel& model : {agonist(), antagonist(), eq5}) {
+  for (const SpringModel& model : {table4_agonist(), table4_antagonist(), eq5}) {
     for (double p : {nan, inf, -inf, -1e6, 0.0, 0.4e6, 1e12}) {
       for (double f : {nan, inf, -inf, -1.0, 0.0, 1e-300, 54.67, 1e9, 1e300}) {
         const DeformationEstimate e = invert_spring_model(model, p, f);

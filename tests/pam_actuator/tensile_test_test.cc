@@ -13,17 +13,16 @@
 
 #include "base/input_error.h"
 #include "pam_actuator/tensile_csv.h"
+#include "pam_actuator/table4_springs.h"
 
 namespace pamsim {
 namespace {
 
-SpringModel agonist() {
-  return spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,
-                                       {0.911, 0.256, 7.00, -0.201, 0.0, 0.0});
-}
+using pamsim_test::table4_agonist;
+
 
 TEST(TensileTestTest, ProtocolShape) {
-  const std::vector<TensileRow> rows = run_tensile_test(agonist(), TensileTestOptions{});
+  const std::vector<TensileRow> rows = run_tensile_test(table4_agonist(), TensileTestOptions{});
   // 5 pressures x (9 loading + 9 unloading) set points of 0..20 mm
   ASSERT_EQ(rows.size(), 5u * 18u);
   std::set<double> pressures;
@@ -38,7 +37,7 @@ TEST(TensileTestTest, ProtocolShape) {
       // Eq. (1)-(2): l = l_n + d; noise-free force is the law itself
       const double p = r.pressure_mpa * 1e6;
       EXPECT_NEAR(r.length_mm, -60.1 * r.pressure_mpa + 170.1 + r.deformation_mm, 1e-9);
-      EXPECT_NEAR(r.force_n, spring_force(agonist(), p, r.deformation_mm * 1e-3), 1e-12);
+      EXPECT_NEAR(r.force_n, spring_force(table4_agonist(), p, r.deformation_mm * 1e-3), 1e-12);
     }
   }
 }
@@ -66,10 +65,10 @@ TEST(TensileTestTest, NoiseIsDeterministicPerSeed) {
   o.noise_force_n = 0.2;
   o.noise_length_mm = 0.05;
   o.seed = 42;
-  const auto a = run_tensile_test(agonist(), o);
-  const auto b = run_tensile_test(agonist(), o);
+  const auto a = run_tensile_test(table4_agonist(), o);
+  const auto b = run_tensile_test(table4_agonist(), o);
   o.seed = 43;
-  const auto c = run_tensile_test(agonist(), o);
+  const auto c = run_tensile_test(table4_agonist(), o);
   int differing = 0;
   double sum_sq = 0.0;
   for (size_t k = 0; k < a.size(); ++k) {
@@ -188,7 +187,7 @@ TEST_F(TensileCsvTest, RoundTripIsExact) {
   o.noise_force_n = 0.3;
   o.noise_pressure_mpa = 0.001;
   o.noise_length_mm = 0.01;
-  const auto rows = run_tensile_test(agonist(), o);
+  const auto rows = run_tensile_test(table4_agonist(), o);
   write(tensile_rows_to_csv(rows));
   const auto back = read_tensile_csv(path_);
   ASSERT_EQ(back.size(), rows.size());

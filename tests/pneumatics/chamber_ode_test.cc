@@ -13,14 +13,12 @@
 
 #include "base/input_error.h"
 #include "base/units.h"
+#include "pneumatics/pneumatics_test_util.h"
 
 namespace pamsim {
 namespace {
 
-BraidGeometry table_one_braid() {
-  // seeds/000 Table I: 180 mm, 16 mm sleeve; braid angle assumed 25 deg
-  return braid_from_initial_shape(0.18, 0.016, units::deg_to_rad(25.0));
-}
+using pamsim_test::table_one_braid;
 
 TEST(ChamberOdeTest, ParsesValveModelNames) {
   EXPECT_EQ(parse_valve_model("iso6358", "x"), ValveModel::kIso6358);

@@ -13,17 +13,14 @@
 
 #include "base/input_error.h"
 #include "base/units.h"
+#include "pneumatics/pneumatics_test_util.h"
 
 namespace pamsim {
 namespace {
 
-constexpr double kDt = 1e-3;  // physics step [s]
-constexpr double kL0 = 0.18;  // seeds/000 Table I muscle length [m]
-
-BraidGeometry table_one_braid() {
-  // seeds/000 Table I: 180 mm, 16 mm sleeve; braid angle assumed 25 deg
-  return braid_from_initial_shape(kL0, 0.016, units::deg_to_rad(25.0));
-}
+using pamsim_test::kDt;
+using pamsim_test::kL0;
+using pamsim_test::table_one_braid;
 
 // runs n physics steps at fixed length l for every muscle
 void run_fixed_length(PneumaticSystem& sys, int n, double l) {

@@ -15,17 +15,16 @@
 #include "base/units.h"
 #include "pneumatics/pneumatics.h"
 #include "pneumatics/sampled_delay_line.h"
+#include "pneumatics/pneumatics_test_util.h"
 
 namespace pamsim {
 namespace {
 
-constexpr double kDt = 1e-3;       // physics step [s]
-constexpr double kLength = 0.15;   // a contracted Table I muscle [m]
-constexpr double kBarToPa = 1e5;   // dm^3/(s bar) -> m^3/(s Pa): 1e-3 / kBarToPa
+using pamsim_test::kDt;
+using pamsim_test::kLength;
+using pamsim_test::table_one_braid;
 
-BraidGeometry table_one_braid() {
-  return braid_from_initial_shape(0.18, 0.016, units::deg_to_rad(25.0));
-}
+constexpr double kBarToPa = 1e5;   // dm^3/(s bar) -> m^3/(s Pa): 1e-3 / kBarToPa
 
 // a loop that is stable with its feedback delayed: a band wide enough for the dead time
 PneumaticParams loop_params(RegulatorFeedback feedback, RegulatorSense sense) {

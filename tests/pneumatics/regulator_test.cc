@@ -13,16 +13,14 @@
 #include "base/input_error.h"
 #include "pneumatics/pneumatics.h"
 #include "base/units.h"
+#include "pneumatics/pneumatics_test_util.h"
 
 namespace pamsim {
 namespace {
 
-constexpr double kDt = 1e-3;       // physics step [s]
-constexpr double kLength = 0.15;   // a contracted Table I muscle [m]
-
-BraidGeometry table_one_braid() {
-  return braid_from_initial_shape(0.18, 0.016, units::deg_to_rad(25.0));
-}
+using pamsim_test::kDt;
+using pamsim_test::kLength;
+using pamsim_test::table_one_braid;
 
 // p(t) [Pa gauge] after each of n physics steps at fixed length, a step to p_cmd at t = 0
 std::vector<double> step_response(const PneumaticParams& params, double p0, double p_cmd,

@@ -24,16 +24,17 @@
 #include "reflex/controller.h"
 #include "reflex/pass_through_controller.h"
 #include "sensing/sensing.h"
+#include "base/control_step.h"
+#include "base/no_value.h"
 
 namespace pamsim {
 namespace {
 
+using pamsim_test::kControlDt;
+
 using test::expect_bad_value;
 using test::table_iv_agonist;
 using test::table_iv_antagonist;
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kDt = 0.01;           // 100 Hz, the default sim.control_hz
 constexpr double kRampV_m_s = 0.150;   // the stretch of the ramps below
 
 // Everything a harness is built from. Defaults: the falling-mass operating point (DESIGN.md),
@@ -145,9 +146,9 @@ struct Harness {
 // shortened alike down to 5 mm of slack
 void stretch_at(Harness* h, int tick, int first, int muscle, int shortened = -1) {
   if (tick < first || tick >= first + 5) return;
-  h->rig.d_m[muscle] += kRampV_m_s * kDt;
+  h->rig.d_m[muscle] += kRampV_m_s * kControlDt;
   if (shortened >= 0) {
-    h->rig.d_m[shortened] = std::max(h->rig.d_m[shortened] - kRampV_m_s * kDt, -5e-3);
+    h->rig.d_m[shortened] = std::max(h->rig.d_m[shortened] - kRampV_m_s * kControlDt, -5e-3);
   }
 }
 
@@ -326,7 +327,7 @@ TEST(StretchReflexController, DisabledReflexMatchesPassThrough) {
   EXPECT_EQ(none.trigger_times_s(), nullptr);
   for (std::size_t tick = 0; tick < h.outputs.size(); ++tick) {
     ControlInput in;
-    in.time_s = tick * kDt;
+    in.time_s = tick * kControlDt;
     in.readings = &h.reading_log[tick];
     in.p_tp_pa = &rig.p_tp_pa;
     ControlOutput expected;

@@ -9,11 +9,13 @@
 #include <gtest/gtest.h>
 
 #include "base/input_error.h"
+#include "base/control_step.h"
 
 namespace pamsim {
 namespace {
 
-constexpr double kDt = 0.01;   // 100 Hz
+using pamsim_test::kControlDt;
+
 
 StretchReflexParams params(double refractory_s = 10.0, double arm_after_s = 0.0) {
   StretchReflexParams p;   // 70 mm/s, k = 1/800 MPa per mm/s, 0.2 s, follow
@@ -43,14 +45,14 @@ std::vector<double> run(LoggedReflex* reflex, int n, double v_mm_s, int* active_
                         int start_tick = 0) {
   std::vector<double> dp;
   for (int j = start_tick; j < start_tick + n; ++j) {
-    dp.push_back(reflex->update(j * kDt, v_mm_s * 1e-3));
+    dp.push_back(reflex->update(j * kControlDt, v_mm_s * 1e-3));
     if (reflex->active()) ++*active_ticks;
   }
   return dp;
 }
 
 TEST(StretchReflex, NoTriggerBelowOrAtThreshold) {
-  LoggedReflex reflex(params(), kDt);
+  LoggedReflex reflex(params(), kControlDt);
   int active = 0;
   for (double dp : run(&reflex, 100, 69.9, &active)) EXPECT_EQ(dp, 0.0);
   for (double dp : run(&reflex, 100, 70.0, &active, 100)) EXPECT_EQ(dp, 0.0);   // "exceeds"
@@ -60,7 +62,7 @@ TEST(StretchReflex, NoTriggerBelowOrAtThreshold) {
 }
 
 TEST(StretchReflex, OneWindowOf200msAboveThreshold) {
-  LoggedReflex reflex(params(), kDt);
+  LoggedReflex reflex(params(), kControlDt);
   int active = 0;
   // stays above threshold for 1 s: the window is neither extended nor restarted
   const std::vector<double> dp = run(&reflex, 100, 100.0, &active);
@@ -76,14 +78,14 @@ TEST(StretchReflex, OneWindowOf200msAboveThreshold) {
 TEST(StretchReflex, SingleSpikeGivesFullWindow) {
   StretchReflexParams p = params();
   p.mode = ReflexMode::kLatch;
-  LoggedReflex reflex(p, kDt);
+  LoggedReflex reflex(p, kControlDt);
   int active = 0;
   run(&reflex, 5, 0.0, &active);
   run(&reflex, 1, 150.0, &active, 5);
   const std::vector<double> dp = run(&reflex, 40, 0.0, &active, 6);
   EXPECT_EQ(active, 20);
   EXPECT_EQ(reflex.trigger_count(), 1);
-  EXPECT_DOUBLE_EQ(reflex.trigger_times_s()[0], 5 * kDt);
+  EXPECT_DOUBLE_EQ(reflex.trigger_times_s()[0], 5 * kControlDt);
   EXPECT_NEAR(dp[18], 150.0 / 800.0 * 1e6, 1e-6);   // last tick of the window (tick 24)
   EXPECT_EQ(dp[19], 0.0);                            // tick 25: over
 }
@@ -93,12 +95,12 @@ TEST(StretchReflex, FollowTracksVelocityLatchHoldsTrigger) {
   StretchReflexParams follow = params();
   StretchReflexParams latch = params();
   latch.mode = ReflexMode::kLatch;
-  LoggedReflex rf(follow, kDt);
-  LoggedReflex rl(latch, kDt);
+  LoggedReflex rf(follow, kControlDt);
+  LoggedReflex rl(latch, kControlDt);
   const double k_pa_per_mm_s = 1e6 / 800.0;
   for (int j = 0; j < 7; ++j) {
-    const double df = rf.update(j * kDt, v_mm_s[j] * 1e-3);
-    const double dl = rl.update(j * kDt, v_mm_s[j] * 1e-3);
+    const double df = rf.update(j * kControlDt, v_mm_s[j] * 1e-3);
+    const double dl = rl.update(j * kControlDt, v_mm_s[j] * 1e-3);
     if (j == 0) {
       EXPECT_EQ(df, 0.0);
       EXPECT_EQ(dl, 0.0);
@@ -113,14 +115,14 @@ TEST(StretchReflex, FollowTracksVelocityLatchHoldsTrigger) {
 
 TEST(StretchReflex, RefractoryPeriodDelaysTheNextTrigger) {
   // constant stretch: windows of 20 ticks separated by 10 refractory ticks
-  LoggedReflex reflex(params(0.1), kDt);
+  LoggedReflex reflex(params(0.1), kControlDt);
   int active = 0;
   run(&reflex, 100, 100.0, &active);
   ASSERT_EQ(reflex.trigger_count(), 4);   // ticks 0, 30, 60, 90
   EXPECT_NEAR(reflex.trigger_times_s()[1], 0.30, 1e-12);
   EXPECT_NEAR(reflex.trigger_times_s()[3], 0.90, 1e-12);
   // without a refractory period it re-fires at once
-  LoggedReflex eager(params(0.0), kDt);
+  LoggedReflex eager(params(0.0), kControlDt);
   active = 0;
   run(&eager, 100, 100.0, &active);
   EXPECT_EQ(eager.trigger_count(), 5);    // ticks 0, 20, 40, 60, 80
@@ -129,7 +131,7 @@ TEST(StretchReflex, RefractoryPeriodDelaysTheNextTrigger) {
 }
 
 TEST(StretchReflex, DisarmedUntilArmAfter) {
-  LoggedReflex reflex(params(10.0, 0.5), kDt);
+  LoggedReflex reflex(params(10.0, 0.5), kControlDt);
   int active = 0;
   const std::vector<double> dp = run(&reflex, 60, 200.0, &active);
   EXPECT_EQ(reflex.trigger_count(), 1);
@@ -141,7 +143,7 @@ TEST(StretchReflex, DisarmedUntilArmAfter) {
 TEST(StretchReflex, DurationRoundsToWholeTicks) {
   StretchReflexParams p = params();
   p.duration_s = 0.05;
-  LoggedReflex reflex(p, kDt);
+  LoggedReflex reflex(p, kControlDt);
   int active = 0;
   run(&reflex, 50, 100.0, &active);
   EXPECT_EQ(active, 5);
@@ -149,8 +151,8 @@ TEST(StretchReflex, DurationRoundsToWholeTicks) {
 
 TEST(ReflexCommands, ReciprocalInhibitionSigns) {
   // the agonist fires at 100 mm/s: agonist up by k v, antagonist down by k v, Eq. (12)-(13)
-  LoggedReflex ago(params(), kDt);
-  LoggedReflex anta(params(), kDt);
+  LoggedReflex ago(params(), kControlDt);
+  LoggedReflex anta(params(), kControlDt);
   const double dp_ago = ago.update(0.0, 0.100);
   const double dp_anta = anta.update(0.0, -0.100);
   const auto p = reflex_commands({0.4e6, 0.4e6}, {dp_ago, dp_anta}, 0.8e6);

@@ -15,16 +15,17 @@
 #include "../sensing/sensing_test_util.h"
 
 #include "reflex/stretch_reflex_controller.h"
+#include "base/control_step.h"
+#include "base/no_value.h"
 
 namespace pamsim {
 namespace {
 
+using pamsim_test::kControlDt;
+
 using test::expect_bad_value;
 
-constexpr double kDt = 0.01;   // 100 Hz
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-TensionReflexParams params() {
+TensionReflexParams tension_params() {
   TensionReflexParams p;
   p.f_thr_N = 60.0;
   p.k_pa_per_n = 4000.0;   // 0.004 MPa/N
@@ -35,7 +36,7 @@ TensionReflexParams params() {
 }
 
 TEST(TensionReflexTest, ALevelOverTheThresholdOpensAWindowOfKTimesTheTension) {
-  TensionReflex reflex(params(), kDt);
+  TensionReflex reflex(tension_params(), kControlDt);
   EXPECT_EQ(reflex.update(0.00, 59.0), 0.0);
   // 80 N: dp = 0.004 MPa/N * 80 N = 0.32 MPa, following the tension in the window
   const std::vector<double> tension = {80, 90, 50, 10, 70};
@@ -56,24 +57,24 @@ TEST(TensionReflexTest, ALevelOverTheThresholdOpensAWindowOfKTimesTheTension) {
 // r (1 - (1 - alpha)^n) (the filter starts at its first input, 0). The reflex triggers at the
 // first tick that exceeds dF_thr, and never with dF_thr = 0.
 TEST(TensionReflexTest, ARisingTensionTriggersOnItsRateAtTheTickTheClosedFormGives) {
-  TensionReflexParams p = params();
+  TensionReflexParams p = tension_params();
   p.df_thr_N_s = 600.0;
   p.rate_lowpass_hz = 10.0;
-  const double r = 1000.0, alpha = 1.0 - std::exp(-2.0 * M_PI * 10.0 * kDt);
+  const double r = 1000.0, alpha = 1.0 - std::exp(-2.0 * M_PI * 10.0 * kControlDt);
   int expected = -1;
   for (int n = 1; n < 50 && expected < 0; ++n) {
     if (r * (1.0 - std::pow(1.0 - alpha, n)) > 600.0) expected = n;
   }
   ASSERT_GT(expected, 1);
-  TensionReflex rate(p, kDt);
+  TensionReflex rate(p, kControlDt);
   p.df_thr_N_s = 0.0;
-  TensionReflex level_only(p, kDt);
+  TensionReflex level_only(p, kControlDt);
   int fired = -1;
   for (int k = 0; k <= expected + 1; ++k) {
-    const double f = r * kDt * k;   // 10 N a tick: under the 60 N level for these few ticks
+    const double f = r * kControlDt * k;   // 10 N a tick: under the 60 N level for these few ticks
     ASSERT_LT(f, 60.0);
-    rate.update(k * kDt, f);
-    level_only.update(k * kDt, f);
+    rate.update(k * kControlDt, f);
+    level_only.update(k * kControlDt, f);
     if (rate.triggered() && fired < 0) fired = k;
     EXPECT_FALSE(level_only.triggered()) << k;
   }
@@ -82,9 +83,9 @@ TEST(TensionReflexTest, ARisingTensionTriggersOnItsRateAtTheTickTheClosedFormGiv
 }
 
 TEST(TensionReflexTest, LatchHoldsTheTriggeringTensionAndAMissingReadingTriggersNothing) {
-  TensionReflexParams p = params();
+  TensionReflexParams p = tension_params();
   p.mode = ReflexMode::kLatch;
-  TensionReflex reflex(p, kDt);
+  TensionReflex reflex(p, kControlDt);
   EXPECT_EQ(reflex.update(0.00, kNaN), 0.0);
   EXPECT_FALSE(reflex.triggered());
   EXPECT_DOUBLE_EQ(reflex.update(0.01, 75.0), 0.004e6 * 75.0);
@@ -96,9 +97,9 @@ TEST(TensionReflexTest, LatchHoldsTheTriggeringTensionAndAMissingReadingTriggers
 }
 
 TEST(TensionReflexTest, NotArmedNotTriggered) {
-  TensionReflexParams p = params();
+  TensionReflexParams p = tension_params();
   p.arm_after_s = 0.1;
-  TensionReflex reflex(p, kDt);
+  TensionReflex reflex(p, kControlDt);
   EXPECT_EQ(reflex.update(0.05, 200.0), 0.0);
   EXPECT_GT(reflex.update(0.10, 200.0), 0.0);
 }
@@ -127,7 +128,7 @@ TEST(TensionReflexTest, ASilentTensionReflexLeavesTheStretchReflexsCommands) {
   ia.reflex.arm_after_s = 0.0;
   StretchReflexControllerConfig both = ia;
   both.tension = true;
-  both.ib = params();
+  both.ib = tension_params();
   StretchReflexController a(ia), b(both);
   ASSERT_NE(b.tension_trigger_times_s(), nullptr);
   EXPECT_EQ(a.tension_trigger_times_s(), nullptr);
@@ -141,7 +142,7 @@ TEST(TensionReflexTest, ASilentTensionReflexLeavesTheStretchReflexsCommands) {
     readings[1].velocity_est_m_s = -0.1 * std::sin(0.3 * k);
     readings[0].force_meas_n = 30.0 + 25.0 * std::sin(0.2 * k);   // under 60 N
     readings[1].force_meas_n = 20.0;
-    const ControlInput in{k * kDt, true, &readings, &p_tp};
+    const ControlInput in{k * kControlDt, true, &readings, &p_tp};
     a.update(in, &out_a);
     b.update(in, &out_b);
     ASSERT_EQ(out_a.p_cmd_pa, out_b.p_cmd_pa) << "tick " << k;
@@ -152,7 +153,7 @@ TEST(TensionReflexTest, ASilentTensionReflexLeavesTheStretchReflexsCommands) {
 
 TEST(TensionReflexTest, EveryValidatedKeyRefusesABadValue) {
   const auto bad = [](auto change, const char* key, const char* value) {
-    TensionReflexParams p = params();
+    TensionReflexParams p = tension_params();
     change(p);
     expect_bad_value([&] { validate(p, 100.0); }, key, value);
   };

@@ -10,11 +10,12 @@
 #include <random>
 
 #include "sensing/gauge_hardware.h"
+#include "base/units.h"
 
 namespace pamsim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using units::kPi;
 
 // f1 = 1.8751^2 / (2 pi L^2) sqrt(E t^2 / (12 rho)) for a strip (I / A = t^2 / 12), by hand:
 // the default board, 3.3 GPa, 1190 kg/m^3, 5 mm thick, free end 45 mm: 664.2 Hz

@@ -12,11 +12,14 @@
 
 #include "sensing/sensors.h"
 #include "sensing_test_util.h"
+#include "base/control_step.h"
+#include "base/no_value.h"
 
 namespace pamsim {
 namespace {
 
-constexpr double kDt = 0.01;
+using pamsim_test::kControlDt;
+
 
 FiberHardwareConfig fabric(double nonlinearity_pct, std::vector<PronyTerm> creep) {
   FiberHardwareConfig c;
@@ -28,27 +31,27 @@ FiberHardwareConfig fabric(double nonlinearity_pct, std::vector<PronyTerm> creep
 }
 
 TEST(FiberHardwareTest, NonlinearityIsItsPercentOfTheReadingAtTheSpan) {
-  FiberHardware fiber(fabric(5.0, {}), kDt);
+  FiberHardware fiber(fabric(5.0, {}), kControlDt);
   // u (1 + 0.05 u / 20 mm): 5 % at +-20 mm, 2.5 % at 10 mm, quadratic, signed
   EXPECT_NEAR(fiber.reading_m(0.020), 0.021, 1e-15);
   EXPECT_NEAR(fiber.reading_m(0.010), 0.01025, 1e-15);
   EXPECT_NEAR(fiber.reading_m(-0.020), -0.019, 1e-15);
   EXPECT_DOUBLE_EQ(fiber.reading_m(0.0), 0.0);
-  FiberHardware under(fabric(-5.0, {}), kDt);
+  FiberHardware under(fabric(-5.0, {}), kControlDt);
   EXPECT_NEAR(under.reading_m(0.020), 0.019, 1e-15);
 }
 
 TEST(FiberHardwareTest, AHeldStretchCreepsAsThePronyStepAndRecovers) {
   const double g = 0.05, tau = 10.0, u = 0.008;
-  FiberHardware fiber(fabric(0.0, {{g, tau}}), kDt);
+  FiberHardware fiber(fabric(0.0, {{g, tau}}), kControlDt);
   for (int n = 1; n <= 1000; ++n) {
     const double r = fiber.reading_m(u);
-    EXPECT_NEAR(r, u * (1.0 + g * (1.0 - std::exp(-n * kDt / tau))), 1e-15) << n;
+    EXPECT_NEAR(r, u * (1.0 + g * (1.0 - std::exp(-n * kControlDt / tau))), 1e-15) << n;
   }
   // released after 10 s: the creep recovers from g (1 - e^-1) as exp(-t / tau)
   const double crept = g * (1.0 - std::exp(-1.0));
   for (int n = 1; n <= 500; ++n) {
-    EXPECT_NEAR(fiber.reading_m(0.0), u * crept * std::exp(-n * kDt / tau), 1e-15) << n;
+    EXPECT_NEAR(fiber.reading_m(0.0), u * crept * std::exp(-n * kControlDt / tau), 1e-15) << n;
   }
 }
 
@@ -56,7 +59,7 @@ TEST(FiberHardwareTest, TheSensorsLengthDriftsByTheFabricsCreep) {
   SensorConfig config;
   config.fiber_noise_m_s = 0.0;
   config.fiber_hardware = fabric(0.0, {{0.05, 10.0}});
-  FiberSensor fiber(config, kDt, FiberHardware(config.fiber_hardware, kDt));
+  FiberSensor fiber(config, kControlDt, FiberHardware(config.fiber_hardware, kControlDt));
   std::mt19937_64 rng(1);
   fiber.sample(0.160, rng);
   // stretched 8 mm in one tick and held 10 s: the integrated length reads the creep
@@ -79,7 +82,7 @@ TEST(EncoderTest, TheFiberIsCalibratedToTheEncodersCount) {
     EXPECT_LE(std::fabs(r - l), 0.5e-5 + 1e-15);
     EXPECT_NEAR(r / 1e-5, std::round(r / 1e-5), 1e-6);
   }
-  FiberSensor fiber(config, kDt);
+  FiberSensor fiber(config, kControlDt);
   std::mt19937_64 rng(1);
   fiber.sample(0.1600049, rng);
   EXPECT_DOUBLE_EQ(fiber.length_m(), 0.16);
@@ -90,7 +93,6 @@ TEST(EncoderTest, TheFiberIsCalibratedToTheEncodersCount) {
 
 TEST(FiberHardwareTest, EveryBadKeyIsNamed) {
   using C = FiberHardwareConfig;
-  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   const test::BadValueOf<C> cases[] = {
       {"sensors.fiber.nonlinearity_pct", "nan", [](C& c) { c.nonlinearity_pct = kNaN; }},
       {"sensors.fiber.nonlinearity_pct", "100", [](C& c) { c.nonlinearity_pct = 100; }},

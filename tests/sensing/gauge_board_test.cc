@@ -14,7 +14,7 @@
 namespace pamsim {
 namespace {
 
-GaugeBoardParams board() {
+GaugeBoardParams strip_board() {
   GaugeBoardParams b;   // a 20 x 2 mm acrylic strip, gauge 10 mm from the clamp
   b.width_m = 0.020;
   b.thickness_m = 0.002;
@@ -24,7 +24,7 @@ GaugeBoardParams board() {
 }
 
 TEST(GaugeBoardTest, StrainIsTheCantileverSurfaceStrain) {
-  const GaugeBoardParams b = board();
+  const GaugeBoardParams b = strip_board();
   // by hand: M = 10 N x 30 mm = 0.3 N m; I = w t^3 / 12 = 1.333e-11 m^4; c = 1 mm;
   // eps = M c / (E I) = 0.3 x 0.001 / (3.3e9 x 1.333e-11) = 6.818e-3
   const double i_m4 = 0.020 * std::pow(0.002, 3) / 12.0;
@@ -37,7 +37,7 @@ TEST(GaugeBoardTest, StrainIsTheCantileverSurfaceStrain) {
 }
 
 TEST(GaugeBoardTest, AContactShiftReadsAsAForceChange) {
-  const GaugeBoardParams b = board();
+  const GaugeBoardParams b = strip_board();
   // a 1 mm shift along a 30 mm lever: 1/30 of the reading, as 1/30 more force would give
   const double at = gauge_board_strain(b, 10.0, 0.040);
   const double shifted = gauge_board_strain(b, 10.0, 0.041);
@@ -46,7 +46,7 @@ TEST(GaugeBoardTest, AContactShiftReadsAsAForceChange) {
 }
 
 TEST(GaugeBoardTest, ASlackLineOrAContactAtTheGaugeBendsNothingThere) {
-  const GaugeBoardParams b = board();
+  const GaugeBoardParams b = strip_board();
   EXPECT_EQ(gauge_board_strain(b, 0.0, 0.040), 0.0);
   EXPECT_EQ(gauge_board_strain(b, -3.0, 0.040), 0.0);
   EXPECT_EQ(gauge_board_strain(b, 10.0, 0.010), 0.0);
@@ -72,7 +72,7 @@ TEST(GaugeBoardTest, EveryBadValueNamesItsKey) {
           << what;
     }
   }
-  EXPECT_NO_THROW(validate_gauge_board(board(), "gauge.board."));
+  EXPECT_NO_THROW(validate_gauge_board(strip_board(), "gauge.board."));
 }
 
 }  // namespace

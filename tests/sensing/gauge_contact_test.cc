@@ -19,7 +19,7 @@ namespace {
 
 constexpr double kL0 = 0.150;   // the muscle's start length [m]
 
-GaugeBoardParams board() { return GaugeHardwareConfig{}.board; }   // contact 40, free end 45 mm
+GaugeBoardParams default_board() { return GaugeHardwareConfig{}.board; }   // contact 40, free end 45 mm
 
 // the path fitting -> edge point y -> shaft, unfolded: its length as a function of y
 double path_length(const GaugeContactParams& c, double y_p, double l1, double y) {
@@ -58,7 +58,7 @@ TEST(GaugeContactTest, TheContactSticksWithinThePlayThenFollowsAtItsEdge) {
   c.misalignment_m = 0.300;
   const double w0 = 2.0 * 0.3 * std::sin(15.0 * M_PI / 180.0) / (1.0 / 0.020 + 1.0 / 0.250);
   EXPECT_NEAR(contact_stick_band_m(c, 0.0), w0, 1e-15);
-  GaugeContact contact(c, board());
+  GaugeContact contact(c, default_board());
   contact.follow(kL0, 10.0);
   for (double s = 0.0; s <= 0.006; s += 1e-4) {
     contact.follow(kL0 - s, 10.0);
@@ -81,7 +81,7 @@ TEST(GaugeContactTest, AFrictionlessLineLeavesTheBoardWhereGeometryPredicts) {
   const double r = (0.045 - 0.040) / 0.200 + 0.020 / 0.270;
   const double s_loss = r * 0.250 / (1.0 - r) - 0.020;
   EXPECT_GT(s_loss, 0.005);
-  GaugeContact before(c, board()), after(c, board());
+  GaugeContact before(c, default_board()), after(c, default_board());
   before.follow(kL0, 10.0);
   after.follow(kL0, 10.0);
   before.follow(kL0 - (s_loss - 1e-6), 10.0);
@@ -96,12 +96,12 @@ TEST(GaugeContactTest, ASlackLineAndAFixedContactStayPut) {
   GaugeContactParams c;
   c.misalignment_m = 0.300;
   c.friction_coefficient = 0.0;
-  GaugeContact slack(c, board());
+  GaugeContact slack(c, default_board());
   slack.follow(kL0, 0.0);
   slack.follow(kL0 - 0.010, 0.0);
   EXPECT_DOUBLE_EQ(slack.position_m(), 0.040);
   c.sliding = false;
-  GaugeContact fixed(c, board());
+  GaugeContact fixed(c, default_board());
   fixed.follow(kL0, 10.0);
   fixed.follow(kL0 - 0.010, 10.0);
   EXPECT_DOUBLE_EQ(fixed.position_m(), 0.040);

@@ -11,11 +11,13 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "base/control_step.h"
 
 namespace pamsim {
 namespace {
 
-constexpr double kDt = 0.01;
+using pamsim_test::kControlDt;
+
 const StrainGaugeParams kPublished{2.25e-3, 0.1};   // Table IV's agonist q, an offset
 
 GaugeHardwareConfig config(double tolerance_pct, double max_n = 50.0) {
@@ -29,11 +31,11 @@ GaugeHardwareConfig config(double tolerance_pct, double max_n = 50.0) {
 TEST(GaugeHardwareTest, ANominalGaugeReadsThePublishedSlopeAndOffset) {
   const GaugeHardwareConfig c = config(0.0, 5.0);
   std::mt19937_64 rng(1);
-  GaugeHardware gauge(c, kPublished, rng, kDt);
+  GaugeHardware gauge(c, kPublished, rng, kControlDt);
   EXPECT_DOUBLE_EQ(gauge.voltage(0.0), 0.1);
   // 1 N: q plus the bridge's own bend, GF eps / 2 of it (eps ~ 1.1e-4 per N here)
   EXPECT_NEAR(gauge.voltage(1.0) - 0.1, 2.25e-3, 2.25e-3 * 2e-4);
-  const StrainGaugeParams fit = calibrate_gauge(gauge, c, kDt, "muscles.agonist");
+  const StrainGaugeParams fit = calibrate_gauge(gauge, c, kControlDt, "muscles.agonist");
   EXPECT_NEAR(fit.q_v_per_n, 2.25e-3, 2.25e-3 * 1e-3);
   EXPECT_NEAR(fit.v_base_v, 0.1, 1e-5);
 }
@@ -41,8 +43,8 @@ TEST(GaugeHardwareTest, ANominalGaugeReadsThePublishedSlopeAndOffset) {
 TEST(GaugeHardwareTest, ABuiltGaugeCalibratesItsOwnOffsetAway) {
   const GaugeHardwareConfig c = config(100.0 * 0.5 / 120.0);
   std::mt19937_64 rng(3);
-  GaugeHardware gauge(c, kPublished, rng, kDt);
-  const StrainGaugeParams fit = calibrate_gauge(gauge, c, kDt, "muscles.agonist");
+  GaugeHardware gauge(c, kPublished, rng, kControlDt);
+  const StrainGaugeParams fit = calibrate_gauge(gauge, c, kControlDt, "muscles.agonist");
   // the arms' offset, by hand from the drawn arms, amplified
   const BridgeResistors& r = gauge.arms();
   const double zero = gauge.gain() * 5.0 *
@@ -60,20 +62,20 @@ TEST(GaugeHardwareTest, ACreepingBoardCalibratesToItsCompliance) {
   c.creep = {{0.05, 0.1}};     // 5 % more strain, 0.1 s: complete within a 2 s hold
   std::mt19937_64 rng(1);
   const StrainGaugeParams fit =
-      calibrate_gauge(GaugeHardware(c, kPublished, rng, kDt), c, kDt, "muscles.agonist");
+      calibrate_gauge(GaugeHardware(c, kPublished, rng, kControlDt), c, kControlDt, "muscles.agonist");
   EXPECT_NEAR(fit.q_v_per_n / 2.25e-3, 1.05, 2e-3);
   c.calibration_hold_s = 0.0;  // read at once: one tick of creep, 1 - exp(-0.1)
   std::mt19937_64 rng2(1);
   const StrainGaugeParams quick =
-      calibrate_gauge(GaugeHardware(c, kPublished, rng2, kDt), c, kDt, "muscles.agonist");
+      calibrate_gauge(GaugeHardware(c, kPublished, rng2, kControlDt), c, kControlDt, "muscles.agonist");
   EXPECT_LT(quick.q_v_per_n, fit.q_v_per_n);
 }
 
 TEST(GaugeHardwareTest, TheInstrumentSeedFixesTheArms) {
   const GaugeHardwareConfig c = config(0.4);
   std::mt19937_64 a(5), b(5), other(6);
-  const GaugeHardware ga(c, kPublished, a, kDt), gb(c, kPublished, b, kDt),
-      go(c, kPublished, other, kDt);
+  const GaugeHardware ga(c, kPublished, a, kControlDt), gb(c, kPublished, b, kControlDt),
+      go(c, kPublished, other, kControlDt);
   EXPECT_EQ(ga.arms().r1_ohm, gb.arms().r1_ohm);
   EXPECT_EQ(ga.arms().gauge_ohm, gb.arms().gauge_ohm);
   EXPECT_NE(ga.arms().r1_ohm, go.arms().r1_ohm);

@@ -1,6 +1,7 @@
 // lowpass_filter_test.cc: the discretised first-order low-pass against its continuous
 // step response, DC gain, first-sample initialisation and the off switch.
 #include "sensing/lowpass_filter.h"
+#include "base/units.h"
 
 #include <cmath>
 
@@ -9,7 +10,7 @@
 namespace pamsim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using units::kPi;
 
 TEST(LowpassFilter, StepResponseMatchesContinuousAtSamples) {
   const double fc = 5.0;

@@ -13,11 +13,14 @@
 
 #include "sensing/sensors.h"
 #include "sensing_test_util.h"
+#include "base/control_step.h"
+#include "base/no_value.h"
 
 namespace pamsim {
 namespace {
 
-constexpr double kDt = 0.01;
+using pamsim_test::kControlDt;
+
 
 // one source at a time: everything else off
 PressureHardwareConfig only(void (*set)(PressureHardwareConfig&)) {
@@ -33,7 +36,7 @@ PressureHardwareConfig only(void (*set)(PressureHardwareConfig&)) {
 }
 
 PressureHardware build(const PressureHardwareConfig& c, std::uint64_t instrument_seed = 1,
-                       std::uint64_t trial_seed = 1, double dt = kDt) {
+                       std::uint64_t trial_seed = 1, double dt = kControlDt) {
   std::mt19937_64 instrument(instrument_seed);
   return PressureHardware(c, instrument, std::mt19937_64(trial_seed), dt);
 }
@@ -135,7 +138,6 @@ TEST(PressureHardwareTest, TheSensorRoundsToItsPrecisionAfterTheNoise) {
 
 TEST(PressureHardwareTest, EveryBadKeyIsNamed) {
   using C = PressureHardwareConfig;
-  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   const test::BadValueOf<C> cases[] = {
       {"sensors.pressure.bias_mean_MPa", "nan", [](C& c) { c.bias_mean_pa = kNaN; }},
       {"sensors.pressure.bias_stddev_MPa", "-0.001", [](C& c) { c.bias_stddev_pa = -1000; }},

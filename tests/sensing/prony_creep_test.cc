@@ -11,12 +11,14 @@
 #include <vector>
 
 #include "base/input_error.h"
+#include "base/control_step.h"
 
 namespace pamsim {
 namespace {
 
+using pamsim_test::kControlDt;
+
 const std::vector<PronyTerm> kTerms = {{0.02, 1.0}, {0.05, 60.0}, {0.08, 1800.0}};
-constexpr double kDt = 0.01;
 
 double creep_after(double t) {
   double out = 1.0;
@@ -25,26 +27,26 @@ double creep_after(double t) {
 }
 
 TEST(PronyCreepTest, ALoadStepCreepsAsTheClosedFormAtEveryTick) {
-  PronyCreep creep(kTerms, kDt);
+  PronyCreep creep(kTerms, kControlDt);
   for (int k = 1; k <= 60000; ++k) {   // 10 minutes at 100 Hz
     const double out = creep.step(2.0);
     if (k % 997 == 0 || k == 1) {
-      ASSERT_NEAR(out, 2.0 * creep_after(k * kDt), 1e-12) << "tick " << k;
+      ASSERT_NEAR(out, 2.0 * creep_after(k * kControlDt), 1e-12) << "tick " << k;
     }
   }
 }
 
 TEST(PronyCreepTest, RemovingTheLoadRecoversAsTheClosedForm) {
-  PronyCreep creep(kTerms, kDt);
+  PronyCreep creep(kTerms, kControlDt);
   const int loaded = 30000;   // 300 s under load
   for (int k = 0; k < loaded; ++k) creep.step(1.0);
-  const double t1 = loaded * kDt;
+  const double t1 = loaded * kControlDt;
   for (int k = 1; k <= 30000; ++k) {
     const double out = creep.step(0.0);
     if (k % 1009 == 0 || k == 1) {
       double expected = 0.0;
       for (const PronyTerm& p : kTerms) {
-        expected += p.weight * (1.0 - std::exp(-t1 / p.time_s)) * std::exp(-k * kDt / p.time_s);
+        expected += p.weight * (1.0 - std::exp(-t1 / p.time_s)) * std::exp(-k * kControlDt / p.time_s);
       }
       ASSERT_NEAR(out, expected, 1e-12) << "tick " << k;
     }
@@ -57,7 +59,7 @@ TEST(PronyCreepTest, AHeldLoadTendsToTheLongTermFactorAndNoTermsMeansNoCreep) {
   for (int k = 0; k < 10000; ++k) out = creep.step(1.0);   // 28 h: every tau long past
   EXPECT_NEAR(out, creep.long_term_factor(), 1e-12);
   EXPECT_DOUBLE_EQ(creep.long_term_factor(), 1.15);
-  PronyCreep elastic({}, kDt);
+  PronyCreep elastic({}, kControlDt);
   EXPECT_EQ(elastic.step(3.5), 3.5);
   EXPECT_EQ(elastic.long_term_factor(), 1.0);
 }

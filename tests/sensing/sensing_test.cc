@@ -23,18 +23,19 @@
 #include "base/units.h"
 #include "sensing/lowpass_filter.h"
 #include "sensing/sensors.h"
+#include "base/control_step.h"
+#include "base/no_value.h"
 
 namespace pamsim {
 namespace {
+
+using pamsim_test::kControlDt;
 
 using test::expect_bad_value;
 using test::table_iv_agonist;
 using test::table_iv_antagonist;
 using test::fields;
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kDt = 0.01;   // 100 Hz, the default sim.control_hz
 
 std::vector<MuscleSensorSpec> table_iv_muscles() {
   return {table_iv_agonist(), table_iv_antagonist()};
@@ -141,7 +142,7 @@ TEST(SensorSuite, StretchReadsAsVelocityOnThatMuscleOnly) {
   Plant plant;
   SensorSuite suite(noise_free(), plant.muscles, 1);
   const auto readings = run(&suite, &plant, 20, [](int j, Plant* p) {
-    if (j >= 10) p->d_m[0] += 0.150 * kDt;
+    if (j >= 10) p->d_m[0] += 0.150 * kControlDt;
   });
   for (int tick = 0; tick < 20; ++tick) {
     const double v_true = tick >= 10 ? 0.150 : 0.0;
@@ -151,7 +152,7 @@ TEST(SensorSuite, StretchReadsAsVelocityOnThatMuscleOnly) {
     EXPECT_NEAR(ago.velocity_est_m_s, v_true, 1e-6) << tick;
     EXPECT_NEAR(ago.fiber_rate_m_s, v_true, 1e-9) << tick;
     EXPECT_NEAR(ago.fiber_velocity_m_s, v_true, 1e-9) << tick;   // reflex.lowpass_hz = 0
-    const double d_m = 6.66e-3 + std::max(0, tick - 9) * 0.150 * kDt;
+    const double d_m = 6.66e-3 + std::max(0, tick - 9) * 0.150 * kControlDt;
     EXPECT_NEAR(ago.length_est_m, natural_length(plant.muscles[0].estimator, 0.4e6) + d_m, 1e-9);
     EXPECT_NEAR(anta.velocity_est_m_s, 0.0, 1e-9) << tick;
     EXPECT_EQ(anta.fiber_rate_m_s, 0.0) << tick;
@@ -167,9 +168,9 @@ TEST(SensorSuite, VelocityLowpassIsFirstOrderOnBothVelocities) {
   Plant plant;
   SensorSuite suite(config, plant.muscles, 1);
   const auto readings = run(&suite, &plant, 30, [](int j, Plant* p) {
-    if (j >= 10) p->d_m[0] += 0.150 * kDt;
+    if (j >= 10) p->d_m[0] += 0.150 * kControlDt;
   });
-  const double alpha = 1.0 - std::exp(-2.0 * units::kPi * 10.0 * kDt);
+  const double alpha = 1.0 - std::exp(-2.0 * units::kPi * 10.0 * kControlDt);
   for (int tick = 0; tick < 30; ++tick) {
     const int n = tick - 10;
     const double v = n < 0 ? 0.0 : 0.150 * (1.0 - std::pow(1.0 - alpha, n + 1));
@@ -215,8 +216,8 @@ TEST(SensorSuite, PressureLowpassRemovesNoiseThatReadsAsVelocity) {
     }
     return rms(v);
   };
-  const double unfiltered = std::sqrt(2.0) * sigma_p_pa * std::abs(dl_dp) / kDt;
-  const double alpha = lowpass_alpha(5.0, kDt);
+  const double unfiltered = std::sqrt(2.0) * sigma_p_pa * std::abs(dl_dp) / kControlDt;
+  const double alpha = lowpass_alpha(5.0, kControlDt);
   const double filtered = unfiltered * alpha / std::sqrt(2.0 - alpha);
   EXPECT_NEAR(velocity_rms(0.0), unfiltered, 0.05 * unfiltered);   // ~28 mm/s
   EXPECT_NEAR(velocity_rms(5.0), filtered, 0.05 * filtered);       // ~6 mm/s
@@ -232,7 +233,7 @@ TEST(SensorSuite, DeterministicPerSeed) {
     SensorSuite suite(SensingConfig{}, plant.muscles, seed);
     std::vector<double> out;
     const auto readings = run(&suite, &plant, 200, [](int j, Plant* p) {
-      if (j > 100 && j <= 105) p->d_m[0] += 0.150 * kDt;
+      if (j > 100 && j <= 105) p->d_m[0] += 0.150 * kControlDt;
     });
     for (const std::vector<MuscleReading>& tick : readings) {
       for (const MuscleReading& r : tick) {
@@ -257,14 +258,14 @@ TEST(SensorSuite, DrawsNoiseInTheDocumentedOrder) {
   std::vector<FiberSensor> fibers;
   for (const MuscleSensorSpec& m : plant.muscles) {
     gauges.emplace_back(m.gauge, config.sensors);
-    fibers.emplace_back(config.sensors, kDt);
+    fibers.emplace_back(config.sensors, kControlDt);
   }
   const auto readings = run(&suite, &plant, 20, [](int j, Plant* p) {
-    if (j >= 10) p->d_m[0] += 0.150 * kDt;
+    if (j >= 10) p->d_m[0] += 0.150 * kControlDt;
   });
   Plant replay;
   for (int tick = 0; tick < 20; ++tick) {
-    if (tick >= 10) replay.d_m[0] += 0.150 * kDt;
+    if (tick >= 10) replay.d_m[0] += 0.150 * kControlDt;
     const std::vector<MuscleTruth> truth = replay.truth();
     for (int j = 0; j < 2; ++j) {
       const double pressure_v = pressure.sample(truth[j].pressure_pa, rng).voltage_v;

@@ -12,7 +12,7 @@
 namespace pamsim {
 namespace {
 
-SensorConfig noise_free() {
+SensorConfig noise_free_sensors() {
   SensorConfig c;
   c.pressure_noise_pa = 0.0;
   c.gauge_noise_v = 0.0;
@@ -57,7 +57,7 @@ TEST(Adc, SaturatesAtItsRange) {
 
 TEST(PressureSensor, NoiseFreeReadingAndSaturation) {
   std::mt19937_64 rng(1);
-  SensorConfig c = noise_free();
+  SensorConfig c = noise_free_sensors();
   PressureSensor sensor(c);
   const PressureReading r = sensor.sample(0.4e6, rng);
   EXPECT_NEAR(r.voltage_v, 2.6, 0.5 * adc_step_v(AdcParams{12, 0.0, 5.0}) + 1e-12);
@@ -95,7 +95,7 @@ TEST(PressureSensor, NoiseStdMatchesConfigured) {
 
 TEST(StrainGauge, Eq8AndSlackReadsVBase) {
   std::mt19937_64 rng(3);
-  SensorConfig c = noise_free();
+  SensorConfig c = noise_free_sensors();
   c.gauge_adc_bits = 0;
   StrainGauge gauge(StrainGaugeParams{2.25e-3, 0.3}, c);
   EXPECT_NEAR(gauge.sample(32.5, rng), 2.25e-3 * 32.5 + 0.3, 1e-15);
@@ -103,7 +103,7 @@ TEST(StrainGauge, Eq8AndSlackReadsVBase) {
   EXPECT_DOUBLE_EQ(gauge.sample(0.0, rng), 0.3);
   EXPECT_DOUBLE_EQ(gauge.sample(-5.0, rng), 0.3);
   // with the default 16-bit ADC, V_base to within half a step
-  StrainGauge quantised(StrainGaugeParams{2.25e-3, 0.3}, noise_free());
+  StrainGauge quantised(StrainGaugeParams{2.25e-3, 0.3}, noise_free_sensors());
   EXPECT_NEAR(quantised.sample(0.0, rng), 0.3, 0.5 * adc_step_v(AdcParams{16, -5.0, 5.0}));
 }
 
@@ -127,7 +127,7 @@ TEST(StrainGauge, SlackReadingIsVBasePlusNoise) {
 
 TEST(FiberSensor, CalibratedToEncoderAndIntegratesRate) {
   std::mt19937_64 rng(7);
-  FiberSensor fiber(noise_free(), 0.01);
+  FiberSensor fiber(noise_free_sensors(), 0.01);
   EXPECT_DOUBLE_EQ(fiber.sample(0.160, rng), 0.0);
   EXPECT_DOUBLE_EQ(fiber.length_m(), 0.160);
   // stretching at 150 mm/s

@@ -17,6 +17,7 @@
 #include "cli_util.h"
 #include "three_pam_model.h"
 #include "video_decode.h"
+#include "sim/test_paths.h"
 
 namespace {
 
@@ -28,7 +29,7 @@ using pamsim_test::read_file;
 using pamsim_test::run_pamsim;
 using pamsim_test::write_text;
 
-const std::string kSource = PAMSIM_SOURCE_DIR;
+using pamsim_test::kSource;
 
 // A shipped scenario's text with its ../models/ paths made absolute, to be written elsewhere.
 std::string movable(const std::string& scenario) {

@@ -16,12 +16,13 @@
 #include "sim/core/runner.h"
 #include "sim/core/trial.h"
 #include "sim/scenario/scenario_file.h"
+#include "sim/test_paths.h"
 
 namespace pamsim {
 namespace {
 
-const std::string kSource = PAMSIM_SOURCE_DIR;
-const std::string kScenarios = kSource + "/scenarios/";
+using pamsim_test::kSource;
+using pamsim_test::kScenarios;
 
 TrialResult run_file(const std::string& name, const std::vector<std::string>& overrides = {}) {
   const Scenario sc = load_scenario(kScenarios + name, overrides);

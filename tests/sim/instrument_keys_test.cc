@@ -18,12 +18,13 @@
 #include "base/units.h"
 #include "sensing/instrument_keys.h"
 #include "sim/scenario/scenario_file.h"
+#include "sim/test_paths.h"
 
 namespace pamsim {
 namespace {
 
-const std::string kScenarios = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/";
-const std::string kDropMass = kScenarios + "drop_mass.toml";
+using pamsim_test::kScenarios;
+using pamsim_test::kDropMass;
 
 // the key set to `value` as an override of the shipped drop; the refusal's parts
 InputErrorParts refusal_of(const std::string& key, const std::string& value) {

@@ -10,8 +10,8 @@
 //
 // A deliberate change writes the references again and says in its commit what moved and why:
 //   for s in drop_mass drop_mass_ideal drop_mass_fiber drop_mass_passive; do
-//     pamsim run scenarios/$s.toml --set sim.duration_s=1.5 --set drop.time_s=0.3 \
-//       --out /tmp/ref_$s --force && cp /tmp/ref_$s/trajectory.csv tests/reference/$s.csv
+//     pamsim run scenarios/$s.toml --set sim.duration_s=1.5 --set drop.time_s=0.3 --force
+//       --out /tmp/ref_$s && cp /tmp/ref_$s/trajectory.csv tests/reference/$s.csv   (one line)
 //   done
 #include <gtest/gtest.h>
 

@@ -10,10 +10,10 @@
 #include "base/input_error.h"
 #include "sim/core/trial_model.h"
 #include "sim/scenario/scenario_file.h"
+#include "sim/test_paths.h"
 
 namespace pamsim_test {
 
-inline const std::string kScenarios = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/";
 
 // The message of the InputError that reading scenarios/`scenario` with `overrides` and
 // binding its model throws, or "" if none.

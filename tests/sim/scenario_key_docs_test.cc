@@ -17,6 +17,7 @@
 #include "base/input_error.h"
 #include "base/toml_file.h"
 #include "sim/scenario/scenario_file.h"
+#include "sim/test_paths.h"
 
 namespace {
 
@@ -24,7 +25,7 @@ namespace fs = std::filesystem;
 using pamsim_test::fresh_dir;
 using pamsim_test::write_text;
 
-const std::string kSource = PAMSIM_SOURCE_DIR;
+using pamsim_test::kSource;
 
 struct Read {
   std::string scenario;

@@ -136,13 +136,13 @@ TEST(ScenarioTest, RegulatorLoopKeysOverrideThePneumaticsFile) {
             std::string::npos);
 }
 
-struct BadValue {
+struct BadOverride {
   std::string assignment;
   std::string key;
 };
 
 TEST(ScenarioTest, EveryBadValueNamesItsKey) {
-  const std::vector<BadValue> cases = {
+  const std::vector<BadOverride> cases = {
       {"seed=-1", "seed"},
       {"seed=1.5", "seed"},
       {"sim.timestep_s=0", "sim.timestep_s"},

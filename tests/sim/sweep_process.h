@@ -18,12 +18,12 @@
 
 #include "cli_util.h"
 #include "sim/sweep/results_db.h"
+#include "sim/test_paths.h"
 
 namespace pamsim_test {
 
 namespace fs = std::filesystem;
 
-const std::string kDropMass = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml";
 
 // A sweep file on the drop-mass scenario with short trials and the given extra text.
 inline std::string short_sweep(const std::string& body) {

@@ -20,13 +20,14 @@
 #include "sim/sweep/results_db.h"
 #include "sim/sweep/sweep.h"
 #include "sim/sweep/sweep_runner.h"
+#include "sim/test_paths.h"
 
 namespace pamsim {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kDropMass = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml";
+using pamsim_test::kDropMass;
 const std::string kWall = "muscles.agonist.plant.geometry.wall_thickness_mm";
 
 // A sweep of drop_mass.toml, 1.3 s long: `top` its top-level keys, `tables` the rest.

@@ -21,6 +21,7 @@
 #include "sim/sweep/results_db.h"
 #include "sim/sweep/sweep.h"
 #include "sim/sweep/sweep_runner.h"
+#include "sim/test_paths.h"
 
 namespace {
 
@@ -32,7 +33,7 @@ using pamsim::SweepDefinition;
 using pamsim_test::fresh_dir;
 using pamsim_test::write_text;
 
-const std::string kDropMass = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml";
+using pamsim_test::kDropMass;
 
 SweepDefinition sweep_from(const fs::path& dir, const std::string& body) {
   const fs::path file = dir / "sweep.toml";

@@ -20,12 +20,13 @@
 #include "pam_actuator/spring_model.h"
 #include "pam_actuator/tensile_csv.h"
 #include "sim/scenario/calibration_file.h"
+#include "sim/test_paths.h"
 
 namespace pamsim {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kSource = PAMSIM_SOURCE_DIR;
+using pamsim_test::kSource;
 
 struct Identified {
   double start = 0.0, value = 0.0, std_error = 0.0;

@@ -13,11 +13,12 @@
 #include "base/key_table_test_util.h"
 #include "sim/scenario/scenario_file.h"
 #include "sim/scenario/time_and_drop_keys.h"
+#include "sim/test_paths.h"
 
 namespace pamsim {
 namespace {
 
-const std::string kDropMass = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml";
+using pamsim_test::kDropMass;
 
 std::vector<KeyTable> tables(Scenario* sc, double* max_steps, DropShorthand* drop) {
   return {sim_key_table(sc, max_steps), drop_key_table(drop)};

@@ -18,11 +18,12 @@
 #include "sim/optimize/tune.h"
 #include "sim/optimize/tune_db.h"
 #include "sim/optimize/tuning_file.h"
+#include "sim/test_paths.h"
 
 namespace pamsim {
 namespace {
 
-const std::string kScenarios = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/";
+using pamsim_test::kScenarios;
 
 // The ideal arm without drop or reflex for 0.6 s: where it ends depends on the basket's mass
 // (drawn) and not on the pressure sensor's bias (the parameter), which only the estimate sees.

@@ -18,12 +18,13 @@
 
 #include "cli_util.h"
 #include "base/input_error.h"
+#include "sim/test_paths.h"
 
 namespace pamsim {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kScenarios = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/";
+using pamsim_test::kScenarios;
 
 // A pressure-sensor bias b shifts every Eq. (3) inversion: on the ideal plant without noise
 // the length estimate is exact only at b = 0, so the estimate's RMS error has its minimum

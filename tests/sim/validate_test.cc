@@ -21,12 +21,13 @@
 #include "sim/core/runner.h"
 #include "sim/validate/length_estimation.h"
 #include "sim/validate/reaching.h"
+#include "sim/test_paths.h"
 
 namespace pamsim {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kScenarios = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/";
+using pamsim_test::kScenarios;
 
 std::string fresh_out(const std::string& name) {
   const fs::path dir =
