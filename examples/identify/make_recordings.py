@@ -39,10 +39,16 @@ RECORDINGS = {
 }
 
 
-def record(pamsim, name, sets, channels, rate_hz, gap, out_dir):
+def record(pamsim, name, sets, channels, rate_hz, gap, out_dir, truth=TRUTH, offsets=None,
+           delays=None):
+    """One recording: arm.toml run with `truth` and `sets`, `channels` kept at `rate_hz` (without
+    the samples in `gap`), each channel shifted by its entry in `offsets` (an instrument's
+    zero error, in the column's unit) and read late by its entry in `delays` [s] (an unmodelled
+    delay); scripts/identify_coverage.py draws them."""
+    offsets, delays = offsets or {}, delays or {}
     with tempfile.TemporaryDirectory() as tmp:
         args = [pamsim, "run", os.path.join(HERE, "arm.toml"), "--out", tmp, "--no-plot"]
-        for s in TRUTH + sets:
+        for s in truth + sets:
             args += ["--set", s]
         subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
         with open(os.path.join(tmp, "trajectory.csv")) as f:
@@ -52,11 +58,12 @@ def record(pamsim, name, sets, channels, rate_hz, gap, out_dir):
     with open(out + ".tmp", "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["time_s"] + channels)
-        for row in rows[::step]:
-            t = float(row["time_s"])
+        for i in range(0, len(rows), step):
+            t = float(rows[i]["time_s"])
             if gap and gap[0] <= t < gap[1]:
                 continue
-            w.writerow([f"{t:.3f}"] + [f"{float(row[c]):.5g}" for c in channels])
+            seen = {c: rows[max(0, i - round(100.0 * delays.get(c, 0.0)))][c] for c in channels}
+            w.writerow([f"{t:.3f}"] + [f"{float(seen[c]) + offsets.get(c, 0.0):.5g}" for c in channels])
     os.replace(out + ".tmp", out)
     return out
 

@@ -30,19 +30,24 @@ using pamsim_test::kSource;
 
 struct Identified {
   double start = 0.0, value = 0.0, std_error = 0.0;
+  std::string correlated_with, verdict;
 };
 
 // identify.csv's rows by key
 std::map<std::string, Identified> identified(const fs::path& csv) {
   std::istringstream in(pamsim_test::read_file(csv));
   std::string line;
-  std::getline(in, line);   // key,from,to,scale,start,identified,std_error,...
+  std::getline(in, line);   // key,from,to,scale,start,identified,std_error,...,"verdict"
   std::map<std::string, Identified> out;
   while (std::getline(in, line)) {
     std::istringstream row(line);
-    std::string cells[7];
+    std::string cells[10];
     for (std::string& c : cells) std::getline(row, c, ',');
-    out[cells[0]] = {std::stod(cells[4]), std::stod(cells[5]), std::stod(cells[6])};
+    const std::size_t quote = line.find('"');
+    const std::string verdict =
+        quote == std::string::npos ? "" : line.substr(quote + 1, line.size() - quote - 2);
+    out[cells[0]] = {std::stod(cells[4]), std::stod(cells[5]), std::stod(cells[6]), cells[9],
+                     verdict};
   }
   return out;
 }
@@ -72,6 +77,13 @@ TEST(Table1PlantsTest, TheShippedWallsAndAnglesAreWhatTheExampleIdentifies) {
     EXPECT_NEAR(shipped.braid_angle_rad * 180.0 / units::kPi, angle.value, 0.1);
     EXPECT_LT(0.01, wall.std_error);
     EXPECT_LT(0.1, angle.std_error);
+    // the verdict column says what the other columns say
+    for (const Identified& p : {wall, angle}) {
+      EXPECT_EQ(p.verdict.rfind("identified", 0), 0u) << p.verdict;
+      EXPECT_EQ(p.correlated_with.empty(),
+                p.verdict.find("strongly correlated") == std::string::npos)
+          << p.verdict;
+    }
     // a tube in Table I's sleeve, not the sleeve-referenced bladder of the other plants
     EXPECT_DOUBLE_EQ(shipped.bladder_diameter_m, 0.004);
   }

@@ -157,14 +157,15 @@ std::vector<std::string> identify_warnings(const IdentifyDefinition& def,
 
 std::string identify_parameters_csv(const IdentifyResult& r) {
   std::string out = "key,from,to,scale,start,identified,std_error,at_bound,identifiable,"
-                    "correlated_with,std_error_plain,interval_lo,interval_hi\n";
+                    "correlated_with,std_error_plain,interval_lo,interval_hi,verdict\n";
+  const bool explained = unexplained_channels(r).empty();
   for (const IdentifiedParameter& p : r.parameters) {
     out += p.parameter.key + "," + cell(p.parameter.from) + "," + cell(p.parameter.to) + "," +
            (p.parameter.log ? "log" : "linear") + "," + cell(p.start) + "," + cell(p.value) + "," +
            cell(p.std_error) +
            "," + (p.at_bound ? "1" : "0") + "," + (p.identifiable ? "1" : "0") + "," +
            correlated_text(p) + "," + cell(p.std_error_plain) + "," + cell(p.interval_lo) + "," +
-           cell(p.interval_hi) + "\n";
+           cell(p.interval_hi) + ",\"" + verdict(p, explained) + "\"\n";
   }
   return out;
 }
