@@ -2,7 +2,8 @@
 """make_recordings.py: the identification example's "lab recordings", made by pamsim itself
 from an arm whose parameters differ from the model's (the truth identify.toml must recover):
 the antagonist's bladder wall 2.7 mm (model: 3.0), the agonist's 2.2 mm (model: 2.0), the
-shoulder's damping 0.16 N m s/rad (model: 0.1). Each recording is one `pamsim run` of
+shoulder's damping 0.16 N m s/rad (model: 0.1), the regulator's dead time 6 ms (model: 10).
+Each recording is one `pamsim run` of
 arm.toml with its commands, under another noise seed than the model's (a lab's noise is not
 the model's), cut down the way a lab's logger would give it: some channels only, its own
 sampling rate, 5 significant digits, and one with a gap; and a static tensile test of the
@@ -24,6 +25,7 @@ TRUTH = [
     "muscles.antagonist.plant.geometry.wall_thickness_mm=2.7",
     "muscles.agonist.plant.geometry.wall_thickness_mm=2.2",
     "joints.shoulder.damping_N_m_s_per_rad=0.16",
+    "valve.dead_time_ms=6",
     "seed=7",
 ]
 # name: (commands as --set, channels, sampling rate [Hz], gap [s] or None)

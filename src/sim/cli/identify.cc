@@ -9,8 +9,10 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <string>
 
+#include "base/atomic_file.h"
 #include "base/format.h"
 #include "base/input_error.h"
 #include "sim/cli/command_database.h"
@@ -20,6 +22,7 @@
 #include "sim/core/runner.h"
 #include "sim/io/plot.h"
 #include "sim/io/staged_outputs.h"
+#include "sim/optimize/identify_plan.h"
 
 namespace pamsim {
 namespace {
@@ -30,10 +33,12 @@ struct IdentifyOptions {
   bool force = false;
   bool quiet = false;
   bool no_plot = false;
+  bool plan = false;
   std::string plot_format = "png";
 };
 
-void print_result(const IdentifyDefinition& def, const IdentifyResult& r) {
+// The values, the channels' fits and, with --plan, the candidates ranked.
+void print_result(const IdentifyResult& r, const std::optional<IdentifyPlan>& plan) {
   std::cout << "identified (cost " << format_value(r.cost_global) << " after CMA-ES, "
             << format_value(r.cost_final) << " after the polish):\n";
   for (const IdentifiedParameter& p : r.parameters) {
@@ -51,11 +56,30 @@ void print_result(const IdentifyDefinition& def, const IdentifyResult& r) {
     if (std::isfinite(f.noise_floor)) std::cout << " (noise " << format_value(f.noise_floor) << ")";
     std::cout << "\n";
   }
+  if (!plan) return;
+  std::cout << "plan (plan.md):\n";
+  for (const std::string& line : plan_lines(*plan)) std::cout << "  " << line << "\n";
+}
+
+// The outputs into `out`, staged then published together; the plan's with one.
+void publish_outputs(const IdentifyDefinition& def, const IdentifyResult& r, const std::string& out,
+                     bool plots, const std::optional<IdentifyPlan>& plan) {
+  StagedOutputs staged(out, kIdentifyOutputs);
+  staged.write([&] {
+    write_identify_outputs(def, r, staged, plots);
+    if (!plan) return;
+    write_file_atomically(staged.path("plan.csv"), plan_csv(*plan));
+    write_file_atomically(staged.path("plan.md"), plan_markdown(*plan));
+  });
+  staged.publish();
 }
 
 void identify(const IdentifyOptions& opt) {
   const int threads = resolve_thread_count(opt.database.threads);
   const IdentifyDefinition def = load_identify_definition(opt.file);   // everything validated
+  if (opt.plan && def.candidates.empty()) {
+    throw InputError(opt.file + ": --plan ranks the file's [[candidate]] experiments, and it has none");
+  }
   const CommandDatabase where = command_database(opt.file, opt.database, "identify.db");
   if (opt.database.resume && !where.exists) {
     throw InputError(where.path + ": --resume, but there is no database");
@@ -90,10 +114,10 @@ void identify(const IdentifyOptions& opt) {
               << where.out << " --resume\n";
     throw CommandExit(128 + stop_signal());
   }
-  StagedOutputs staged(where.out, kIdentifyOutputs);
-  staged.write([&] { write_identify_outputs(def, r, staged, plots); });
-  staged.publish();
-  print_result(def, r);
+  std::optional<IdentifyPlan> plan;
+  if (opt.plan) plan = plan_candidates(def, r, threads);
+  publish_outputs(def, r, where.out, plots, plan);
+  print_result(r, plan);
   std::cerr << "pamsim identify: " << r.simulated << " points simulated, " << r.cached
             << " from the database; " << format_value(r.global_s) << " s CMA-ES, "
             << format_value(r.polish_s) << " s polish, " << format_value(r.check_s) << " s checks\n";
@@ -121,6 +145,9 @@ void add_identify_command(CLI::App& app) {
   cmd->add_flag("--force", opt->force, "Replace another identification's outputs in the folder");
   cmd->add_flag("--quiet", opt->quiet, "No progress lines");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no figures (gnuplot not needed)");
+  cmd->add_flag("--plan", opt->plan,
+                "Then rank the file's [[candidate]] experiments by how much each would shrink "
+                "the parameters' uncertainty (plan.csv, plan.md)");
   add_plot_format_option(cmd, &opt->plot_format);
 }
 

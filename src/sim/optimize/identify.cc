@@ -26,9 +26,6 @@ double seconds_since(Clock::time_point t0) {
 
 // A failed point's fitness for CMA-ES: worse than any point whose trials ran.
 constexpr double kFailedCost = 1e300;
-// The finite difference's step in the unit box: wide enough to step over the chamber ODE's
-// tolerance, fine enough for 0.1 % of a parameter's range.
-constexpr double kDifferenceStep = 1e-3;
 
 // The global phase's objective: a point's cost (sum of squares).
 class IdentifyObjective : public Objective {

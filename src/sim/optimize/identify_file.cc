@@ -17,6 +17,7 @@
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
 #include "pam_actuator/tensile_csv.h"
+#include "sim/optimize/identify_file_recordings.h"
 #include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
@@ -36,81 +37,6 @@ void read_search(ConfigReader& in, IdentifyDefinition* def) {
   def->interval = in.get_double("interval", def->interval);
   in.check(def->interval > 0.0 && def->interval < 1.0, "interval",
            "must be in (0, 1), got " + format_value(def->interval));
-}
-
-// noise = { <channel> = floor }: a chosen channel's noise floor, > 0 in its unit
-std::vector<double> read_noise(const TableEntry& e, const Recording& data,
-                               const std::vector<std::size_t>& channels) {
-  std::vector<double> noise(channels.size(), std::numeric_limits<double>::quiet_NaN());
-  const toml::node* given = e.table.get("noise");
-  if (given == nullptr) return noise;
-  if (!given->is_table()) e.in.fail(e.where + "noise", "must be a table { <channel> = floor }");
-  for (const auto& [name, value] : *given->as_table()) {
-    const std::string key = e.where + "noise." + std::string(name.str());
-    std::size_t i = 0;
-    while (i < channels.size() && data.channels[channels[i]] != name.str()) ++i;
-    if (i == channels.size()) e.in.fail(key, "is not a channel the recording is matched on");
-    const std::optional<double> v = value.value<double>();
-    if (!v || !(*v > 0.0) || !std::isfinite(*v)) {
-      e.in.fail(key, "must be a noise floor > 0 in the channel's unit");
-    }
-    noise[i] = *v;
-  }
-  return noise;
-}
-
-bool is_name(const std::string& s) {
-  if (s.empty()) return false;
-  for (char c : s) {
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') return false;
-  }
-  return true;
-}
-
-// The channels a recording is matched on: those named, or every one it has.
-std::vector<std::size_t> read_channels(const TableEntry& e, const Recording& data) {
-  std::vector<std::size_t> out;
-  const std::vector<std::string> named = e.texts("channels", false);
-  if (named.empty()) {
-    for (std::size_t c = 0; c < data.channels.size(); ++c) out.push_back(c);
-    return out;
-  }
-  for (const std::string& name : named) {
-    const std::size_t c = data.channel(name);
-    if (c == data.channels.size()) {
-      e.in.fail(e.where + "channels", "names " + name + ", which " + data.path + " does not hold");
-    }
-    if (std::find(out.begin(), out.end(), c) != out.end()) {
-      e.in.fail(e.where + "channels", "names " + name + " twice");
-    }
-    out.push_back(c);
-  }
-  return out;
-}
-
-IdentifyRecording read_recording(ConfigReader& in, const TableEntry& e) {
-  IdentifyRecording r;
-  const std::string file = e.text("file", true);
-  const fs::path path = fs::path(in.name()).parent_path() / file;
-  try {
-    r.data = read_recording_csv(fs::path(file).is_absolute() ? file : path.string());
-  } catch (const InputError& err) {
-    in.fail(e.where + "file", std::string("(") + err.what() + ")");
-  }
-  r.name = e.text("name", false, fs::path(file).stem().string());
-  if (!is_name(r.name)) {
-    in.fail(e.where + "name", "must be letters, digits, '_' or '-', got \"" + r.name + "\"");
-  }
-  r.set = e.texts("set", false);
-  r.channels = read_channels(e, r.data);
-  r.noise = read_noise(e, r.data, r.channels);
-  r.weight = e.number("weight").value_or(1.0);
-  if (!(r.weight > 0)) in.fail(e.where + "weight", "must be > 0, got " + format_value(r.weight));
-  if (const toml::node* h = e.table.get("held_out")) {
-    if (!h->is_boolean()) in.fail(e.where + "held_out", "must be true or false");
-    r.held_out = *h->value<bool>();
-  }
-  return r;
 }
 
 void read_tensile(ConfigReader& in, IdentifyDefinition* def) {
@@ -185,17 +111,6 @@ void read_channel_parameters(ConfigReader& in, IdentifyDefinition* def) {
   }
 }
 
-void read_recordings(ConfigReader& in, IdentifyDefinition* def) {
-  const TableArray tables(in, "recording");
-  std::set<std::string> names;
-  for (const TableEntry& e :
-       tables.entries({"file", "name", "set", "channels", "weight", "held_out", "noise"})) {
-    def->recordings.push_back(read_recording(in, e));
-    const IdentifyRecording& r = def->recordings.back();
-    in.check(names.insert(r.name).second, e.where + "name", "\"" + r.name + "\" is taken");
-  }
-}
-
 // The settings a recording's scenario is checked at: every parameter mid-box, then each at
 // its bounds with the others mid-box.
 std::vector<std::vector<double>> checked_settings(const IdentifyDefinition& def) {
@@ -228,31 +143,40 @@ Scenario checked_scenario(const IdentifyDefinition& def, const IdentifyRecording
   return middle;
 }
 
-// Every recording's scenario loads with the parameters mid-box and at each bound, logs its
-// channels and lasts as long as the recording.
+// `r`'s scenario loads with the parameters mid-box and at each bound, logs its channels and
+// lasts as long as the recording; `where` names it in a refusal.
+void check_recording(const IdentifyDefinition& def, const IdentifyRecording& r,
+                     const std::string& where) {
+  for (const std::string& s : r.set) {
+    for (const SearchParameter& p : def.parameters) {   // (a channel. key is never a set's)
+      if (s.rfind(p.key + "=", 0) == 0) throw InputError(where + ": set gives " + p.key + ", a parameter");
+    }
+  }
+  const Scenario sc = checked_scenario(def, r, where);
+  const std::vector<std::string> logged = trial_log_layout(load_trial_model(sc), sc).columns;
+  for (std::size_t c : r.channels) {
+    const std::string& name = r.data.channels[c];
+    if (std::find(logged.begin(), logged.end(), name) == logged.end()) {
+      throw InputError(where + ": channel " + name + " is not a column pamsim logs for this "
+                       "scenario (trajectory.csv's columns)");
+    }
+  }
+  if (r.data.time_s.back() > sc.duration_s + 1e-9) {
+    throw InputError(where + ": the recording lasts " + format_value(r.data.time_s.back()) +
+                     " s, its scenario " + format_value(sc.duration_s) +
+                     " s (set sim.duration_s)");
+  }
+}
+
+// Every recording and candidate, checked (check_recording).
 void check_recordings(const IdentifyDefinition& def) {
   for (std::size_t i = 0; i < def.recordings.size(); ++i) {
     const IdentifyRecording& r = def.recordings[i];
-    const std::string where = def.file + ": recording[" + std::to_string(i) + "] (" + r.name + ")";
-    for (const std::string& s : r.set) {
-      for (const SearchParameter& p : def.parameters) {   // (a channel. key is never a set's)
-        if (s.rfind(p.key + "=", 0) == 0) throw InputError(where + ": set gives " + p.key + ", a parameter");
-      }
-    }
-    const Scenario sc = checked_scenario(def, r, where);
-    const std::vector<std::string> logged = trial_log_layout(load_trial_model(sc), sc).columns;
-    for (std::size_t c : r.channels) {
-      const std::string& name = r.data.channels[c];
-      if (std::find(logged.begin(), logged.end(), name) == logged.end()) {
-        throw InputError(where + ": channel " + name + " is not a column pamsim logs for this "
-                         "scenario (trajectory.csv's columns)");
-      }
-    }
-    if (r.data.time_s.back() > sc.duration_s + 1e-9) {
-      throw InputError(where + ": the recording lasts " + format_value(r.data.time_s.back()) +
-                       " s, its scenario " + format_value(sc.duration_s) +
-                       " s (set sim.duration_s)");
-    }
+    check_recording(def, r, def.file + ": recording[" + std::to_string(i) + "] (" + r.name + ")");
+  }
+  for (std::size_t i = 0; i < def.candidates.size(); ++i) {
+    const IdentifyRecording& c = def.candidates[i];
+    check_recording(def, c, def.file + ": candidate[" + std::to_string(i) + "] (" + c.name + ")");
   }
 }
 
@@ -360,6 +284,7 @@ IdentifyDefinition load_identify_definition(const std::string& path) {
   read_recordings(in, &def);
   read_tensile(in, &def);
   read_channel_parameters(in, &def);
+  read_candidates(in, &def);
   const bool fitted = std::any_of(def.recordings.begin(), def.recordings.end(),
                                   [](const IdentifyRecording& r) { return !r.held_out; });
   in.check(fitted || !def.tensile.empty(), "recording",

@@ -26,6 +26,14 @@
 //                       held_out: true: used only to check the result; default false
 //                       noise: a chosen channel's noise floor, > 0 in its unit, as a table
 //                       ({ angle_deg = 0.01 }); default: estimated from the recording
+//   [[candidate]]       an experiment a lab could run next, for `pamsim identify --plan`
+//                       (identify_plan.h): no data. name (required, unique; letters, digits,
+//                       '_', '-'); set: its conditions as --set "key=value" (a command
+//                       schedule, an event such as a drop); channels: the columns a lab could
+//                       log, at least one; rate_hz: their sampling rate, (0, 10000], default
+//                       100; duration_s: (0, its scenario's sim.duration_s], default that;
+//                       noise: { <channel> = floor }, > 0, required for a channel no fitted
+//                       recording measures (default: the floor identify finds for it there)
 //   [[tensile]]         muscle: a muscle of the base scenario with a plant file (its actuator
 //                       name); file: a tensile test of it in `pamsim tensile`'s CSV format;
 //                       weight: > 0, default 1. Its plant's forces at the recorded pressures
@@ -87,6 +95,9 @@ struct IdentifyDefinition {
   std::vector<ChannelParameter> channel_parameters;   // per parameter (kNone: a scenario key)
   std::vector<IdentifyRecording> recordings;
   std::vector<IdentifyTensile> tensile;
+  // [[candidate]]s: a recording's conditions and channels on a sample grid, no data
+  // (samples 0); not part of the search (nor of canonical_json)
+  std::vector<IdentifyRecording> candidates;
 
   // The overrides of the base scenario with the parameters at `values` (the tensile tests'
   // plants are its muscles').

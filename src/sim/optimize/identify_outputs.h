@@ -15,6 +15,7 @@
 //   plant_<muscle>.toml   for each muscle with a plant field among the parameters: its plant
 //                      file with the identified fields, a comment naming the recordings
 //   pneumatics.toml    the same for the pneumatics file's fields (pneumatics.<table>.<field>)
+//   plan.csv, plan.md  with --plan: the [[candidate]] experiments ranked (identify_plan.h)
 #pragma once
 
 #include <string>
@@ -28,7 +29,8 @@ class StagedOutputs;
 
 inline const std::vector<std::string> kIdentifyOutputs = {
     "identified.toml", "identify.csv", "identify_fits.csv", "identify.md", "recording_*.png",
-    "recording_*.svg", "recording_*.pdf", "plant_*.toml", "pneumatics.toml"};
+    "recording_*.svg", "recording_*.pdf", "plant_*.toml", "pneumatics.toml", "plan.csv",
+    "plan.md"};
 
 // What a user must not miss, one line each: a fitted channel the model does not explain, a
 // polish that did not converge or failed, a parameter at a bound of its range.

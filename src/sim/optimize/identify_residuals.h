@@ -19,6 +19,11 @@
 
 namespace pamsim {
 
+// The finite difference's step in the unit box (the polish's Jacobian, the plan's
+// sensitivities): wide enough to step over the chamber ODE's tolerance, fine enough for
+// 0.1 % of a parameter's range.
+inline constexpr double kDifferenceStep = 1e-3;
+
 // A recording's trial: its log's time and the chosen channels' columns, or the reason it did
 // not run to the end (a divergence, or a value the scenario refuses: InputError; other
 // errors propagate, and nothing is stored for the point).

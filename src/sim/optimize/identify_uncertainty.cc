@@ -14,11 +14,6 @@
 namespace pamsim {
 namespace {
 
-// dx/du of a parameter at u
-double slope_at(const SearchParameter& p, double u) {
-  return p.log ? value_at(p, u) * std::log(p.to / p.from) : p.to - p.from;
-}
-
 // The parameters the recordings move (a Jacobian column not vanishing against the largest).
 std::vector<Eigen::Index> determined_columns(const Eigen::MatrixXd& jacobian) {
   const Eigen::VectorXd norms = jacobian.colwise().squaredNorm();

@@ -39,6 +39,10 @@ double value_at(const SearchParameter& p, double u) {
   return p.from + u * (p.to - p.from);
 }
 
+double slope_at(const SearchParameter& p, double u) {
+  return p.log ? value_at(p, u) * std::log(p.to / p.from) : p.to - p.from;
+}
+
 std::vector<std::string> parameter_overrides(const std::vector<std::string>& base,
                                              const std::vector<SearchParameter>& parameters,
                                              const std::vector<double>& values) {

@@ -35,6 +35,8 @@ struct SearchParameter {
 
 // The parameter's value at `u` in [0, 1]: linear, or geometric on a log scale.
 double value_at(const SearchParameter& p, double u);
+// dx/du at `u`: the range, or on a log scale the value times log(to / from).
+double slope_at(const SearchParameter& p, double u);
 
 // `base` followed by "key=value" for each parameter (values in the parameters' order, in
 // their shortest round-trip form).

@@ -1,0 +1,186 @@
+// identify_file_recordings.cc: see identify_file_recordings.h.
+#include "sim/optimize/identify_file_recordings.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <set>
+
+#include "base/format.h"
+#include "base/input_error.h"
+#include "sim/scenario/scenario_file.h"
+
+namespace pamsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+// noise = { <channel> = floor }: a chosen channel's noise floor, > 0 in its unit
+std::vector<double> read_noise(const TableEntry& e, const Recording& data,
+                               const std::vector<std::size_t>& channels) {
+  std::vector<double> noise(channels.size(), std::numeric_limits<double>::quiet_NaN());
+  const toml::node* given = e.table.get("noise");
+  if (given == nullptr) return noise;
+  if (!given->is_table()) e.in.fail(e.where + "noise", "must be a table { <channel> = floor }");
+  for (const auto& [name, value] : *given->as_table()) {
+    const std::string key = e.where + "noise." + std::string(name.str());
+    std::size_t i = 0;
+    while (i < channels.size() && data.channels[channels[i]] != name.str()) ++i;
+    if (i == channels.size()) e.in.fail(key, "is not a channel the recording is matched on");
+    const std::optional<double> v = value.value<double>();
+    if (!v || !(*v > 0.0) || !std::isfinite(*v)) {
+      e.in.fail(key, "must be a noise floor > 0 in the channel's unit");
+    }
+    noise[i] = *v;
+  }
+  return noise;
+}
+
+bool is_name(const std::string& s) {
+  if (s.empty()) return false;
+  for (char c : s) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') return false;
+  }
+  return true;
+}
+
+// The channels a recording is matched on: those named, or every one it has.
+std::vector<std::size_t> read_channels(const TableEntry& e, const Recording& data) {
+  std::vector<std::size_t> out;
+  const std::vector<std::string> named = e.texts("channels", false);
+  if (named.empty()) {
+    for (std::size_t c = 0; c < data.channels.size(); ++c) out.push_back(c);
+    return out;
+  }
+  for (const std::string& name : named) {
+    const std::size_t c = data.channel(name);
+    if (c == data.channels.size()) {
+      e.in.fail(e.where + "channels", "names " + name + ", which " + data.path + " does not hold");
+    }
+    if (std::find(out.begin(), out.end(), c) != out.end()) {
+      e.in.fail(e.where + "channels", "names " + name + " twice");
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+IdentifyRecording read_recording(ConfigReader& in, const TableEntry& e) {
+  IdentifyRecording r;
+  const std::string file = e.text("file", true);
+  const fs::path path = fs::path(in.name()).parent_path() / file;
+  try {
+    r.data = read_recording_csv(fs::path(file).is_absolute() ? file : path.string());
+  } catch (const InputError& err) {
+    in.fail(e.where + "file", std::string("(") + err.what() + ")");
+  }
+  r.name = e.text("name", false, fs::path(file).stem().string());
+  if (!is_name(r.name)) {
+    in.fail(e.where + "name", "must be letters, digits, '_' or '-', got \"" + r.name + "\"");
+  }
+  r.set = e.texts("set", false);
+  r.channels = read_channels(e, r.data);
+  r.noise = read_noise(e, r.data, r.channels);
+  r.weight = e.number("weight").value_or(1.0);
+  if (!(r.weight > 0)) in.fail(e.where + "weight", "must be > 0, got " + format_value(r.weight));
+  if (const toml::node* h = e.table.get("held_out")) {
+    if (!h->is_boolean()) in.fail(e.where + "held_out", "must be true or false");
+    r.held_out = *h->value<bool>();
+  }
+  return r;
+}
+
+// Whether a fitted recording is matched on channel `name` (its noise floor then stands for
+// a candidate's).
+bool fitted_channel(const IdentifyDefinition& def, const std::string& name) {
+  for (const IdentifyRecording& r : def.recordings) {
+    if (r.held_out) continue;
+    for (std::size_t c : r.channels) {
+      if (r.data.channels[c] == name) return true;
+    }
+  }
+  return false;
+}
+
+// A candidate's sample times: every 1 / rate_hz from 0 to its duration (the scenario's
+// sim.duration_s unless it says).
+std::vector<double> candidate_times(ConfigReader& in, const TableEntry& e,
+                                    const IdentifyDefinition& def, const IdentifyRecording& c) {
+  const double rate = e.number("rate_hz").value_or(100.0);
+  in.check(rate > 0.0 && rate <= 10000.0, e.where + "rate_hz",
+           "must be within (0, 10000] Hz, got " + format_value(rate));
+  std::vector<std::string> overrides = def.overrides;
+  overrides.insert(overrides.end(), c.set.begin(), c.set.end());
+  double duration = 0.0;
+  try {
+    duration = load_scenario_text(def.base_text, def.base_path, overrides).duration_s;
+  } catch (const InputError& err) {
+    in.fail(e.where + "set", std::string("(") + err.what() + ")");
+  }
+  const double given = e.number("duration_s").value_or(duration);
+  in.check(given > 0.0 && given <= duration, e.where + "duration_s",
+           "must be within (0, " + format_value(duration) + "] s (its scenario's sim.duration_s), got " +
+               format_value(given));
+  std::vector<double> times;
+  for (std::size_t k = 0; static_cast<double>(k) / rate <= given + 1e-9; ++k) {
+    times.push_back(static_cast<double>(k) / rate);
+  }
+  return times;
+}
+
+IdentifyRecording read_candidate(ConfigReader& in, const TableEntry& e,
+                                 const IdentifyDefinition& def) {
+  IdentifyRecording c;
+  c.name = e.text("name", true);
+  if (!is_name(c.name)) {
+    in.fail(e.where + "name", "must be letters, digits, '_' or '-', got \"" + c.name + "\"");
+  }
+  c.set = e.texts("set", false);
+  c.data.path = "candidate " + c.name;
+  c.data.channels = e.texts("channels", false);
+  in.check(!c.data.channels.empty(), e.where + "channels",
+           "must name at least one channel a lab could log (trajectory.csv's columns)");
+  c.data.time_s = candidate_times(in, e, def, c);
+  for (std::size_t k = 0; k < c.data.channels.size(); ++k) {
+    in.check(std::count(c.data.channels.begin(), c.data.channels.end(), c.data.channels[k]) == 1,
+             e.where + "channels", "names " + c.data.channels[k] + " twice");
+    c.channels.push_back(k);
+    c.data.samples.emplace_back(c.data.time_s.size(), 0.0);
+  }
+  c.noise = read_noise(e, c.data, c.channels);
+  for (std::size_t k = 0; k < c.channels.size(); ++k) {
+    in.check(!std::isnan(c.noise[k]) || fitted_channel(def, c.data.channels[k]),
+             e.where + "noise", "gives no floor for " + c.data.channels[k] +
+                                    ", which no fitted recording measures");
+  }
+  return c;
+}
+
+}  // namespace
+
+void read_recordings(ConfigReader& in, IdentifyDefinition* def) {
+  const TableArray tables(in, "recording");
+  std::set<std::string> names;
+  for (const TableEntry& e :
+       tables.entries({"file", "name", "set", "channels", "weight", "held_out", "noise"})) {
+    def->recordings.push_back(read_recording(in, e));
+    const IdentifyRecording& r = def->recordings.back();
+    in.check(names.insert(r.name).second, e.where + "name", "\"" + r.name + "\" is taken");
+  }
+}
+
+void read_candidates(ConfigReader& in, IdentifyDefinition* def) {
+  const TableArray tables(in, "candidate");
+  std::set<std::string> names;
+  for (const TableEntry& e :
+       tables.entries({"name", "set", "channels", "rate_hz", "duration_s", "noise"})) {
+    def->candidates.push_back(read_candidate(in, e, *def));
+    const IdentifyRecording& c = def->candidates.back();
+    in.check(names.insert(c.name).second, e.where + "name", "\"" + c.name + "\" is taken");
+  }
+}
+
+}  // namespace pamsim
