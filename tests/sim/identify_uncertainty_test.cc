@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "base/no_value.h"
 #include "identify_test_arm.h"
 #include "sim/optimize/identify.h"
 #include "sim/optimize/identify_outputs.h"
@@ -118,6 +119,33 @@ TEST(IdentifyUncertaintyTest, NoConvergenceAndABoundAreWarnings) {
   r.polish_converged = true;
   r.parameters[0].at_bound = false;
   EXPECT_TRUE(identify_warnings(def, r).empty());
+}
+
+// a channel with too few samples for its noise floor is not judged: unknown, not explained,
+// and a warning says how to judge it
+TEST(IdentifyUncertaintyTest, TooFewSamplesToEstimateTheNoiseIsUnknown) {
+  const std::vector<double> recorded = {0.0, 1.0, 0.5, 2.0, 1.5, 3.0, 2.5, 4.0, 3.5};
+  ChannelFit fit;
+  fit.recording = "sparse";
+  fit.channel = "angle_deg";
+  fit.after = std::vector<double>(recorded.size(), 1.0);
+  fit.rmse_after = 1.0;
+  judge_channel(recorded, kNaN, &fit);
+  EXPECT_TRUE(std::isnan(fit.noise_floor)) << "seven second differences are too few";
+  EXPECT_FALSE(fit.judged);
+  EXPECT_FALSE(fit.explained);
+  IdentifyResult r;
+  r.fits.push_back(fit);
+  EXPECT_TRUE(unexplained_channels(r).empty()) << "unknown is not \"does not explain\"";
+  const std::vector<std::string> warnings = identify_warnings(IdentifyDefinition{}, r);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], "recording sparse (angle_deg) has too few samples to estimate its "
+                         "noise: whether the model explains it is unknown (give noise = { "
+                         "angle_deg = ... })");
+  EXPECT_NE(identify_fits_csv(r).find(",\n"), std::string::npos) << "explained: empty";
+  judge_channel(recorded, 0.5, &fit);   // a given floor judges it
+  EXPECT_TRUE(fit.judged);
+  EXPECT_TRUE(fit.explained) << "1 <= 3 x 0.5";
 }
 
 }  // namespace

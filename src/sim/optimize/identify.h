@@ -56,6 +56,8 @@ struct ChannelFit {
   double noise_floor = std::numeric_limits<double>::quiet_NaN();
   double whiteness_p = std::numeric_limits<double>::quiet_NaN();
   bool explained = true;         // RMSE after within kExplainedNoiseFactor noise floors
+  bool judged = true;            // false: too few samples to estimate the floor, so whether
+                                 // the model explains the channel is unknown (explained false)
 };
 
 struct IdentifyResult {

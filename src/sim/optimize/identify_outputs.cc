@@ -84,7 +84,7 @@ std::string fits_table(const IdentifyResult& r) {
        << " | " << f.samples << " | " << format_value(f.rmse_before) << " | "
        << format_value(f.rmse_after) << " | " << value_or_dash(f.noise_floor) << " | "
        << value_or_dash(f.rmse_after / f.noise_floor) << " | " << value_or_dash(f.whiteness_p)
-       << " | " << (f.explained ? "yes" : "no") << " |\n";
+       << " | " << (!f.judged ? "unknown" : f.explained ? "yes" : "no") << " |\n";
   }
   return md.str();
 }
@@ -138,6 +138,12 @@ std::vector<std::string> identify_warnings(const IdentifyDefinition& def,
   for (const std::string& line : unexplained_channels(r)) {
     out.push_back(line + "; the standard errors are not to be trusted");
   }
+  for (const ChannelFit& f : r.fits) {
+    if (f.held_out || f.judged) continue;
+    out.push_back("recording " + f.recording + " (" + f.channel + ") has too few samples to " +
+                  "estimate its noise: whether the model explains it is unknown (give noise = { " +
+                  f.channel + " = ... })");
+  }
   if (r.polish_failed) {
     out.push_back("the polish failed; the global search's best point stands (" +
                   r.polish_summary + ")");
@@ -177,7 +183,7 @@ std::string identify_fits_csv(const IdentifyResult& r) {
     out += f.recording + "," + f.channel + "," + (f.held_out ? "1" : "0") + "," +
            std::to_string(f.samples) + "," + cell(f.rmse_before) + "," + cell(f.rmse_after) +
            "," + cell(f.noise_floor) + "," + cell(f.whiteness_p) + "," +
-           (f.explained ? "1" : "0") + "\n";
+           (!f.judged ? "" : f.explained ? "1" : "0") + "\n";
   }
   return out;
 }

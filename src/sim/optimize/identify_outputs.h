@@ -8,7 +8,8 @@
 //                      95 % interval
 //   identify_fits.csv  per recording and channel: fitted or held out, samples, RMSE before
 //                      (the base scenario as it stands) and after, in the channel's unit, the
-//                      channel's noise floor, the residuals' Ljung-Box p-value, explained
+//                      channel's noise floor, the residuals' Ljung-Box p-value, explained (1 or 0;
+//                      empty: too few samples to estimate the floor, so unknown)
 //   identify.md        both tables, the search's cost and time, and a warning for each
 //                      fitted channel the model does not explain
 //   recording_<name>.png  each recording's channels: recorded, before and after (plots on)

@@ -94,13 +94,14 @@ void judge_channel(const std::vector<double>& recorded, double given, ChannelFit
     if (!std::isnan(d)) residuals.push_back(d);
   }
   fit->whiteness_p = ljung_box(residuals).p_value;
-  fit->explained = !(fit->rmse_after > kExplainedNoiseFactor * fit->noise_floor);
+  fit->judged = std::isfinite(fit->noise_floor);
+  fit->explained = fit->judged && !(fit->rmse_after > kExplainedNoiseFactor * fit->noise_floor);
 }
 
 std::vector<std::string> unexplained_channels(const IdentifyResult& result) {
   std::vector<std::string> lines;
   for (const ChannelFit& f : result.fits) {
-    if (f.held_out || f.explained) continue;
+    if (f.held_out || f.explained || !f.judged) continue;
     lines.push_back("the model does not explain recording " + f.recording + " (" + f.channel +
                     "): RMS " + format_value(std::round(f.rmse_after / f.noise_floor * 10) / 10) +
                     " x the noise");

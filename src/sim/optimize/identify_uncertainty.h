@@ -14,7 +14,8 @@
 //    kExplainedNoiseFactor times its floor: a model that explains a recording leaves the
 //    recording's noise and its own simulated noise, sqrt(2) times the floor, plus what the
 //    instruments add that is not white (creep, ringing, quantisation). Where a fitted channel
-//    is not explained, no standard error is to be trusted.
+//    is not explained, no standard error is to be trusted. A channel with too few samples
+//    to estimate its floor, and none given, is not judged (ChannelFit::judged): unknown.
 #pragma once
 
 #include <cstddef>
