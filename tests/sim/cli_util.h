@@ -67,6 +67,21 @@ inline void write_text(const std::filesystem::path& path, const std::string& tex
   out << text;
 }
 
+// `text` as dir/bad.toml, run as `pamsim <command> dir/bad.toml <options> --out dir/out`, is
+// refused as bad input must be: exit 2, one line that contains `says`, no output folder.
+inline void expect_file_refused(const std::filesystem::path& dir, const std::string& command,
+                                const std::string& text, const std::string& options,
+                                const std::string& says) {
+  SCOPED_TRACE(says);
+  write_text(dir / "bad.toml", text);
+  const CliResult r = run_pamsim(command + " " + (dir / "bad.toml").string() + " " + options +
+                                 " --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "nothing written";
+}
+
 // A copy of a shipped scenario (scenarios/<name>) in `dir` with `from` replaced by `to` (once;
 // a test fails if `from` is not there), its model paths made absolute.
 inline std::string scenario_variant(const std::filesystem::path& dir, const std::string& scenario,

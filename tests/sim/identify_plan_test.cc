@@ -109,14 +109,7 @@ TEST(IdentifyPlanTest, BadCandidatesAreOneLineExitTwoAndNothingWritten) {
            {good + still + "channels = [\"angle_deg\"]\n" + still + "channels = [\"angle_deg\"]\n", "candidate[1].name \"still\" is taken"},
            {good + still + "channels = [\"angle_deg\"]\nset = ['bodies.ball.mass_kg=0.2']\n", "set gives bodies.ball.mass_kg, a parameter"},
            {good, "--plan ranks the file's [[candidate]] experiments, and it has none"}}) {
-    SCOPED_TRACE(says);
-    pamsim_test::write_text(dir / "bad.toml", text);
-    const pamsim_test::CliResult r = pamsim_test::run_pamsim(
-        "identify " + (dir / "bad.toml").string() + " --plan --out " + (dir / "out").string());
-    EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_FALSE(fs::exists(dir / "out")) << "no database, no folder";
+    pamsim_test::expect_file_refused(dir, "identify", text, "--plan", says);
   }
 }
 

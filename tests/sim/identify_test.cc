@@ -259,14 +259,7 @@ TEST(IdentifyTest, BadFilesAreOneLineExitTwoAndNoDatabase) {
             "recording[0].noise.omega_deg_s is not a channel the recording is matched on"},
            {good + "[[tensile]]\nmuscle = \"elbow\"\nfile = \"tensile.csv\"\n",
             "tensile[0].muscle \"elbow\" is not a muscle of the base scenario (it has agonist, antagonist)"}}) {
-    SCOPED_TRACE(says);
-    pamsim_test::write_text(dir / "bad.toml", text);
-    const pamsim_test::CliResult r = pamsim_test::run_pamsim(
-        "identify " + (dir / "bad.toml").string() + " --out " + (dir / "out").string());
-    EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_FALSE(fs::exists(dir / "out")) << "no database, no folder";
+    pamsim_test::expect_file_refused(dir, "identify", text, "", says);
   }
 }
 
