@@ -230,7 +230,7 @@ std::string IdentifyDefinition::canonical_json() const {
     for (std::size_t c : r.channels) channels.push_back(r.data.channels[c]);
     recs.push_back({{"name", r.name}, {"set", r.set}, {"channels", channels},
                     {"weight", r.weight}, {"held_out", r.held_out}, {"time_s", r.data.time_s},
-                    {"samples", r.data.samples}});
+                    {"samples", r.data.samples}, {"noise", r.noise}});
   }
   nlohmann::json tensile_json = nlohmann::json::array();
   for (const auto& t : tensile) {
@@ -245,7 +245,10 @@ std::string IdentifyDefinition::canonical_json() const {
                             {"overrides", overrides},     {"generations", generations},
                             {"population", population},   {"seed", seed},
                             {"polish_iterations", polish_iterations},
-                            {"parameters", params},       {"recordings", recs}};
+                            {"parameters", params},       {"recordings", recs},
+                            // residuals over the channels' noise floors (pamsim 0.4): a
+                            // database of an earlier scale does not resume
+                            {"residual_scale", "noise_floor"}};
   if (tensile.empty()) return j.dump();
   nlohmann::json with = j;
   with["tensile"] = tensile_json;

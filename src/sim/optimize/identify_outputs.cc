@@ -153,7 +153,7 @@ std::vector<std::string> identify_warnings(const IdentifyDefinition& def,
                   std::to_string(def.polish_iterations) + "): the point may not be the minimum");
   }
   for (const IdentifiedParameter& p : r.parameters) {
-    if (!p.at_bound) continue;
+    if (!p.at_bound || !p.identifiable) continue;   // (undetermined: said so, wherever it sits)
     out.push_back(p.parameter.key + " = " + format_value(p.value) + " sits at a bound of its " +
                   "range [" + format_value(p.parameter.from) + ", " +
                   format_value(p.parameter.to) + "]: widen it, or the value is not identified");

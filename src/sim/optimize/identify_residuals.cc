@@ -11,6 +11,7 @@
 #include "sim/core/runner.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
+#include "sim/optimize/residual_statistics.h"
 #include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
@@ -116,8 +117,9 @@ IdentifyResiduals::IdentifyResiduals(const IdentifyDefinition& def, IdentifyDb& 
   for (std::size_t i = 0; i < def.recordings.size(); ++i) {
     const IdentifyRecording& r = def.recordings[i];
     std::vector<double> scales;
-    for (std::size_t c : r.channels) {
-      scales.push_back(channel_scale(r.data.samples[c]));
+    for (std::size_t k = 0; k < r.channels.size(); ++k) {
+      const std::size_t c = r.channels[k];
+      scales.push_back(residual_floor(r.data.samples[c], r.noise[k]));
       if (!r.held_out) segments_.push_back(r.data.sample_count(c));
     }
     scale_.push_back(std::move(scales));
@@ -126,7 +128,7 @@ IdentifyResiduals::IdentifyResiduals(const IdentifyDefinition& def, IdentifyDb& 
   for (const IdentifyTensile& t : def.tensile) {
     std::vector<double> forces;
     for (const TensileRow& row : t.rows) forces.push_back(row.force_n);
-    tensile_scale_.push_back(channel_scale(forces));
+    tensile_scale_.push_back(residual_floor(forces, kNaN));
     segments_.push_back(t.rows.size());
   }
   for (std::size_t length : segments_) count_ += length;
@@ -212,6 +214,16 @@ bool IdentifyResiduals::append_recordings(const std::vector<double>& values, std
     }
   }
   return true;
+}
+
+double judged_floor(const std::vector<double>& samples) {
+  return std::max(noise_floor(samples), kResolvedFraction * channel_scale(samples));
+}
+
+double residual_floor(const std::vector<double>& samples, double given) {
+  if (std::isfinite(given)) return given;
+  const double floor = judged_floor(samples);
+  return std::isfinite(floor) ? floor : channel_scale(samples);
 }
 
 double channel_scale(const std::vector<double>& samples) {

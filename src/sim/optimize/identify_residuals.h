@@ -2,12 +2,18 @@
 // its scenario (the base, the file's overrides, the recording's `set`, the parameters) run
 // with the scenario's seed; each chosen channel's simulated column is interpolated linearly
 // at the recording's sample times (gaps skipped). A residual is
-//   sqrt(weight) (simulated - recorded) / s_c,
-// s_c the recorded channel's standard deviation (1 if it is constant), so channels in volts,
-// degrees and MPa weigh alike; the cost is the sum of their squares over the fitted
-// recordings. A tensile test's rows add sqrt(weight) (plant force - recorded force) / s_F, the
-// plant's force on each row's stroke at its recorded pressure and length (tensile_test.h). Residual vectors are kept in the run's database (identify_db.h), so a point is
-// simulated once, whichever phase asks, and a resumed run simulates nothing twice.
+//   sqrt(weight) (simulated - recorded) / sigma_c,
+// sigma_c the channel's noise floor (residual_floor: the file's `noise`, else estimated from
+// the recording), so that the cost is the chi-square of white noise at the floors: each
+// channel weighs by what it can tell (least squares as maximum likelihood), whatever its unit.
+// (Until pamsim 0.4 sigma_c was the channel's standard deviation, which let the noisy force
+// and pressure channels outweigh a precise angle: the example's fit ended with its angle 45
+// noise floors off at a cost no higher than the truth's.) A tensile test's rows add
+// sqrt(weight) (plant force - recorded force) / sigma_F, the plant's force on each row's
+// stroke at its recorded pressure and length (tensile_test.h), sigma_F the recorded forces'
+// floor found the same way. Residual vectors are kept in the run's database
+// (identify_db.h), so a point is simulated once, whichever phase asks, and a resumed run
+// simulates nothing twice.
 #pragma once
 
 #include <cstdint>
@@ -92,8 +98,22 @@ class IdentifyResiduals {
 };
 
 // A recorded channel's population standard deviation over its samples (NaN: a gap), 1 if it is
-// (nearly) constant: the scale of its residuals, and of its smallest noise floor.
+// (nearly) constant: the scale of its smallest noise floor.
 double channel_scale(const std::vector<double>& samples);
+
+// The smallest noise floor a channel is given, as a fraction of its standard deviation: a
+// noise-free recording (simulated, or a smooth channel) is explained by a model within
+// kExplainedNoiseFactor x 0.1 % of its spread (identify_uncertainty.h).
+inline constexpr double kResolvedFraction = 1e-3;
+
+// A recorded channel's noise floor: its white noise from its second differences
+// (residual_statistics.h: noise_floor), at least kResolvedFraction of its spread; NaN where it
+// has too few samples (under 10).
+double judged_floor(const std::vector<double>& samples);
+
+// The floor a channel's residuals are divided by: `given` (the file's noise), else
+// judged_floor, else (too few samples) the channel's standard deviation.
+double residual_floor(const std::vector<double>& samples, double given);
 
 // Sum of squares; +inf for an empty (failed) vector.
 double sum_of_squares(const std::vector<double>& residuals);

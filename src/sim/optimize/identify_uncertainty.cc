@@ -25,12 +25,6 @@ std::vector<Eigen::Index> determined_columns(const Eigen::MatrixXd& jacobian) {
   return free;
 }
 
-// The recorded channel's own noise floor, at least kResolvedFraction of its spread: a
-// noise-free channel (a simulated recording, a still one) is explained by a model within that.
-double judged_floor(const std::vector<double>& recorded) {
-  return std::max(noise_floor(recorded), kResolvedFraction * channel_scale(recorded));
-}
-
 }  // namespace
 
 void fill_uncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,

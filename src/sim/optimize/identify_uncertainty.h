@@ -29,10 +29,6 @@
 namespace pamsim {
 
 inline constexpr double kExplainedNoiseFactor = 3.0;
-// The smallest noise floor a channel is given, as a fraction of its standard deviation: a
-// noise-free recording (simulated, or a smooth channel) is explained by a model within
-// kExplainedNoiseFactor x 0.1 % of its spread.
-inline constexpr double kResolvedFraction = 1e-3;
 
 // Fills std_error, std_error_plain, interval_lo, interval_hi (at `level`, in (0, 1)),
 // identifiable and correlated of result->parameters (their values at `unit`) from the
