@@ -15,12 +15,6 @@
 namespace pamsim {
 namespace {
 
-std::vector<double> values_at(const IdentifyDefinition& def, const std::vector<double>& unit) {
-  std::vector<double> values;
-  for (std::size_t i = 0; i < unit.size(); ++i) values.push_back(value_at(def.parameters[i], unit[i]));
-  return values;
-}
-
 // The points a parameter's central difference steps to: its two sides of `unit` (one of them
 // `unit` itself within kDifferenceStep of a bound) and their distance.
 struct Sides {
@@ -54,7 +48,7 @@ Eigen::MatrixXd sensitivity(const IdentifyDefinition& def, const IdentifyRecordi
   std::vector<SimulatedRecording> trials(points.size());
   parallel_for(static_cast<int>(points.size()), threads, [&](int k) {
     const auto i = static_cast<std::size_t>(k);
-    trials[i] = simulate_recording(def, r, def.overrides_at(r, values_at(def, points[i])));
+    trials[i] = simulate_recording(def, r, def.overrides_at(r, parameter_values(def, points[i])));
   });
   for (const SimulatedRecording& t : trials) {
     if (!t.failure.empty()) {
@@ -62,7 +56,7 @@ Eigen::MatrixXd sensitivity(const IdentifyDefinition& def, const IdentifyRecordi
       return {};
     }
   }
-  const auto centre = sample_channels(def, r, trials[0], values_at(def, unit));
+  const auto centre = sample_channels(def, r, trials[0], parameter_values(def, unit));
   Eigen::Index rows = 0;
   for (std::size_t c = 0; c < centre.size(); ++c) {
     if (!(noise[c] > 0.0)) continue;
@@ -71,8 +65,8 @@ Eigen::MatrixXd sensitivity(const IdentifyDefinition& def, const IdentifyRecordi
   Eigen::MatrixXd s = Eigen::MatrixXd::Zero(rows, static_cast<Eigen::Index>(n));
   for (std::size_t j = 0; j < n; ++j) {
     const Sides side = sides_of(unit, j);
-    const auto plus = sample_channels(def, r, trials[trial_of[j].first], values_at(def, side.plus));
-    const auto minus = sample_channels(def, r, trials[trial_of[j].second], values_at(def, side.minus));
+    const auto plus = sample_channels(def, r, trials[trial_of[j].first], parameter_values(def, side.plus));
+    const auto minus = sample_channels(def, r, trials[trial_of[j].second], parameter_values(def, side.minus));
     Eigen::Index row = 0;
     for (std::size_t c = 0; c < centre.size(); ++c) {
       if (!(noise[c] > 0.0)) continue;
@@ -95,8 +89,8 @@ Eigen::MatrixXd tensile_sensitivity(const IdentifyDefinition& def, const Identif
     if (def.channel_parameters[j].kind != ChannelParameter::Kind::kNone) continue;
     const Sides side = sides_of(unit, j);
     std::string failure;
-    const auto plus = tensile_forces(def, t, def.overrides_at(values_at(def, side.plus)), &failure);
-    const auto minus = tensile_forces(def, t, def.overrides_at(values_at(def, side.minus)), &failure);
+    const auto plus = tensile_forces(def, t, def.overrides_at(parameter_values(def, side.plus)), &failure);
+    const auto minus = tensile_forces(def, t, def.overrides_at(parameter_values(def, side.minus)), &failure);
     if (plus.empty() || minus.empty()) continue;
     for (std::size_t k = 0; k < plus.size(); ++k) {
       s(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(j)) =

@@ -152,9 +152,13 @@ bool IdentifyResiduals::append_tensile(const std::vector<double>& values, std::v
 }
 
 std::vector<double> IdentifyResiduals::values_at(const std::vector<double>& unit) const {
+  return parameter_values(def_, unit);
+}
+
+std::vector<double> parameter_values(const IdentifyDefinition& def, const std::vector<double>& unit) {
   std::vector<double> values;
   for (std::size_t i = 0; i < unit.size(); ++i) {
-    values.push_back(value_at(def_.parameters[i], std::clamp(unit[i], 0.0, 1.0)));
+    values.push_back(value_at(def.parameters[i], std::clamp(unit[i], 0.0, 1.0)));
   }
   return values;
 }

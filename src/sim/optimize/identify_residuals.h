@@ -115,6 +115,9 @@ double judged_floor(const std::vector<double>& samples);
 // judged_floor, else (too few samples) the channel's standard deviation.
 double residual_floor(const std::vector<double>& samples, double given);
 
+// The definition's parameters' values at `unit` (each clamped to [0, 1]).
+std::vector<double> parameter_values(const IdentifyDefinition& def, const std::vector<double>& unit);
+
 // Sum of squares; +inf for an empty (failed) vector.
 double sum_of_squares(const std::vector<double>& residuals);
 
