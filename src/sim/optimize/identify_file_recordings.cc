@@ -124,6 +124,11 @@ std::vector<double> candidate_times(ConfigReader& in, const TableEntry& e,
   in.check(given > 0.0 && given <= duration, e.where + "duration_s",
            "must be within (0, " + format_value(duration) + "] s (its scenario's sim.duration_s), got " +
                format_value(given));
+  // (a bound on what a candidate holds: a 6 s trial at 100 Hz is 600 samples)
+  constexpr double kMaxSamples = 1e6;
+  in.check(rate * given <= kMaxSamples, e.where + "rate_hz",
+           "x duration_s gives " + format_value(std::floor(rate * given) + 1) +
+               " samples, more than the 1000000 a candidate may hold");
   std::vector<double> times;
   for (std::size_t k = 0; static_cast<double>(k) / rate <= given + 1e-9; ++k) {
     times.push_back(static_cast<double>(k) / rate);
