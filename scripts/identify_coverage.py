@@ -116,7 +116,10 @@ def identify(pamsim, path, threads):
             "--quiet"]
     if os.path.exists(os.path.join(out, "identify.db")):
         args.append("--resume")
-    subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
+    done = subprocess.run(args, stdout=subprocess.DEVNULL)
+    if done.returncode != 0:   # pamsim said why on stderr; the arm's database is kept
+        sys.exit(f"identify_coverage.py: pamsim identify {path} exited {done.returncode}; "
+                 "run the script again to resume")
     return out
 
 
