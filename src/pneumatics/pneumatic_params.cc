@@ -152,8 +152,9 @@ ChoiceRow policy_row(const char* name, const char* doc, CommandChangePolicy* fie
           }};
 }
 
-// [regulator]: the closed-loop regulator's keys (valve.model = "regulator")
-KeyTable regulator_table(PneumaticParams* params) {
+}  // namespace
+
+KeyTable pneumatic_regulator_table(PneumaticParams* params) {
   PneumaticParams& p = *params;
   return {"regulator",
           {{"dead_time_ms", "ms", 1e-3, {0.0, 1000.0, false, false},
@@ -201,6 +202,8 @@ KeyTable regulator_table(PneumaticParams* params) {
             },
             [params] { return std::string(regulator_sense_name(params->regulator_sense)); }}}};
 }
+
+namespace {
 
 // [solver]: CVODE's settings
 KeyTable solver_table(PneumaticSolverParams* solver) {
@@ -272,7 +275,7 @@ std::vector<KeyTable> pneumatic_key_table(PneumaticParams* params) {
          "tau of the first-order valve (valve.model = \"first_order\")",
          &p.first_order_time_constant_s}},
        {}},
-      regulator_table(params),
+      pneumatic_regulator_table(params),
       solver_table(&p.solver),
   };
 }

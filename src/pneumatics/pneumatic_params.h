@@ -108,6 +108,9 @@ PneumaticParams load_pneumatic_params(const std::string& path, const toml::table
 // *params it writes (whose value before a file is read is the key's default). The reader
 // reads by it; so do the key reference and the tests' bad values.
 std::vector<KeyTable> pneumatic_key_table(PneumaticParams* params);
+// Its [regulator] table alone: the closed-loop regulator's keys (valve.model = "regulator"),
+// which a scenario's valve.<key> also reads, for a rig's own point of the file's bracket.
+KeyTable pneumatic_regulator_table(PneumaticParams* params);
 // Every key of the file (its table, unit, default, range and meaning): the file's key
 // reference (`pamsim keys --pneumatics`).
 std::vector<KeyDoc> pneumatic_key_docs();

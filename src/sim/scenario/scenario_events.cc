@@ -4,7 +4,7 @@
 
 #include "base/units.h"
 #include "sim/scenario/scenario_reading.h"
-#include "sim/scenario/time_and_drop_keys.h"
+#include "sim/scenario/scenario_key_tables.h"
 
 namespace pamsim {
 namespace {

@@ -14,12 +14,12 @@
 #include "sim/core/metrics.h"
 #include "sim/scenario/scenario_key_docs.h"
 #include "sim/scenario/scenario_reading.h"
-#include "sim/scenario/time_and_drop_keys.h"
+#include "sim/scenario/scenario_key_tables.h"
 
 namespace pamsim {
 namespace {
 
-// sim.*: each key by its row (time_and_drop_keys.h), then what joins them
+// sim.*: each key by its row (scenario_key_tables.h), then what joins them
 void read_time(ConfigReader& in, Scenario* sc) {
   double max_steps = kDefaultMaxSteps;
   read_key_rows(in, sim_key_table(sc, &max_steps));
@@ -37,75 +37,30 @@ void read_time(ConfigReader& in, Scenario* sc) {
                in.described("sim.timestep_s", sc->timestep_s) + " s");
 }
 
-// valve.feedback, valve.sense and the loop's restrictions and volumes (issue 25, item 5)
-template <typename Only, typename Number>
-void read_regulator_loop(ConfigReader& in, const Only& regulator_only, const Number& number,
-                         PneumaticParams* p) {
-  if (regulator_only("valve.feedback")) {
-    p->regulator_feedback = parse_regulator_feedback(
-        in.get_string("valve.feedback", regulator_feedback_name(p->regulator_feedback)),
-        in.where("valve.feedback"));
-  }
-  if (regulator_only("valve.sense")) {
-    p->regulator_sense = parse_regulator_sense(
-        in.get_string("valve.sense", regulator_sense_name(p->regulator_sense)),
-        in.where("valve.sense"));
-  }
-  constexpr double kDm3PerSBar = 1e-3 / units::kPaPerBar;
-  number("valve.sample_period_ms", 1e-3, false, 100.0, &p->regulator_sample_period_s);
-  // an unset restriction of the file follows its [valve] C and b
-  const auto optional = [&](const char* key, double scale, double hi, bool hi_open,
-                            bool zero_ok, std::optional<double>* field, double fallback) {
-    double v = field->value_or(fallback);
-    number(key, scale, zero_ok, hi, &v, hi_open);
-    if (in.has(key)) *field = v;
-  };
-  const double c = p->sonic_conductance_m3_per_s_pa, b = p->critical_pressure_ratio;
-  optional("valve.supply_sonic_conductance_dm3_per_s_bar", kDm3PerSBar, 100.0, false, false,
-           &p->regulator_supply_conductance_m3_per_s_pa, c);
-  optional("valve.supply_critical_pressure_ratio", 1.0, 1.0, true, true,
-           &p->regulator_supply_critical_ratio, b);
-  optional("valve.exhaust_sonic_conductance_dm3_per_s_bar", kDm3PerSBar, 100.0, false, false,
-           &p->regulator_exhaust_conductance_m3_per_s_pa, c);
-  optional("valve.exhaust_critical_pressure_ratio", 1.0, 1.0, true, true,
-           &p->regulator_exhaust_critical_ratio, b);
-  number("valve.outlet_volume_cm3", 1e-6, false, 1000.0, &p->regulator_outlet_volume_m3);
-  number("valve.tube_sonic_conductance_dm3_per_s_bar", kDm3PerSBar, false, 100.0,
-         &p->tube_conductance_m3_per_s_pa);
-  number("valve.tube_critical_pressure_ratio", 1.0, true, 1.0, &p->tube_critical_ratio, true);
-}
-
 // valve.*: a rig's own supply and regulator range, and a point of the regulator's bracket,
 // over the pneumatics file's values
 void read_valve(ConfigReader& in, const std::string& valve, Scenario* sc) {
-  PneumaticParams& p = sc->pneumatics;
-  p.supply_gauge_pa = units::mpa_to_pa(in.get_double("valve.supply_MPa", units::pa_to_mpa(p.supply_gauge_pa)));
-  p.command_max_gauge_pa = units::mpa_to_pa(
-      in.get_double("valve.command_max_MPa", units::pa_to_mpa(p.command_max_gauge_pa)));
-  // the regulator's loop (valve.model = "regulator"), over the pneumatics file's [regulator]:
-  // a scenario or a sweep axis picks a point of its bracket (the ranges and scales of that
-  // file's keys); refused with another valve model, which would ignore them
-  const auto regulator_only = [&](const char* key) {
-    if (!in.has(key)) return false;
-    in.check(sc->valve_model == ValveModel::kRegulator, key,
+  // each key by the pneumatics file's own row; the regulator's refused with another valve
+  // model, which would ignore them
+  std::vector<std::string> regulator_rows;
+  KeyTable given = valve_key_table(&sc->pneumatics, &regulator_rows);
+  for (const std::string& name : regulator_rows) {
+    const std::string key = "valve." + name;
+    in.check(!in.has(key) || sc->valve_model == ValveModel::kRegulator, key,
              "is used only by valve.model = \"regulator\", not \"" + valve + "\"");
-    return true;
+  }
+  // a regulator key the scenario does not give is no default of the scenario's: the file's
+  const auto is_regulator_and_absent = [&](const auto& row) {
+    return !in.has("valve." + row.name) &&
+           std::find(regulator_rows.begin(), regulator_rows.end(), row.name) !=
+               regulator_rows.end();
   };
-  const auto regulator_key = [&](const char* key, double scale, bool zero_ok, double hi,
-                                 double* field, bool hi_open = false) {
-    if (!regulator_only(key)) return;
-    const double v = in.get_double(key, *field / scale);
-    in.check((zero_ok ? v >= 0.0 : v > 0.0) && (hi_open ? v < hi : v <= hi), key,
-             std::string("must be within ") + (zero_ok ? "[0, " : "(0, ") + format_value(hi) +
-                 (hi_open ? ")" : "]") + ", got " + format_value(v));
-    *field = v * scale;
+  const auto drop_absent = [&](auto* rows) {
+    rows->erase(std::remove_if(rows->begin(), rows->end(), is_regulator_and_absent), rows->end());
   };
-  regulator_key("valve.dead_time_ms", 1e-3, true, 1000.0, &p.regulator_dead_time_s);
-  regulator_key("valve.valve_time_constant_ms", 1e-3, false, 10000.0,
-                &p.regulator_valve_time_constant_s);
-  regulator_key("valve.proportional_band_kPa", 1e3, false, 2000.0,
-                &p.regulator_proportional_band_pa);
-  read_regulator_loop(in, regulator_only, regulator_key, &p);
+  drop_absent(&given.choices);
+  drop_absent(&given.numbers);
+  read_key_rows(in, given);
   // a rig's supply and command range, and the loop's restrictions, must make sense together
   for (const char* key : {"valve.supply_MPa", "valve.command_max_MPa",
                           "valve.supply_critical_pressure_ratio",
@@ -113,7 +68,7 @@ void read_valve(ConfigReader& in, const std::string& valve, Scenario* sc) {
                           "valve.tube_critical_pressure_ratio"}) {
     if (!in.has(key)) continue;
     in_file(in, [&] {
-      validate_pneumatic_params(p, key);
+      validate_pneumatic_params(sc->pneumatics, key);
       return 0;
     });
   }

@@ -1,10 +1,11 @@
 // scenario_key_docs.cc: see scenario_key_docs.h. The keys with rows (base/key_table.h: [sim],
-// [drop], the sensors', the instruments', a controller kind's) are documented by their rows; the rest
+// [drop], [valve], the sensors', the instruments', a controller kind's) are documented by their rows; the rest
 // here, with the ranges their readers check (scenario_file.cc, scenario_muscles.cc,
 // scenario_events.cc): keep those together when one changes.
 #include "sim/scenario/scenario_key_docs.h"
-#include "sim/scenario/time_and_drop_keys.h"
+#include "sim/scenario/scenario_key_tables.h"
 
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -50,21 +51,6 @@ std::vector<KeyDoc> model_docs() {
       {"model.<actuator>_params", "", "(none)", "path", "shorthand of muscles.<actuator>.params (pamsim 0.1 files)"},
       {"pressure.<actuator>_MPa", "MPa", "(none)", "[0, controller.p_max_MPa]", "shorthand of a constant muscles.<actuator>.command"},
       {"valve.model", "", "\"iso6358\"", "\"iso6358\" | \"first_order\" | \"regulator\"", "the valve and chamber model (pneumatics.h)"},
-      {"valve.supply_MPa", "MPa", "(model.pneumatics')", "> 0, >= valve.command_max_MPa", "a rig's own supply pressure (gauge)"},
-      {"valve.command_max_MPa", "MPa", "(model.pneumatics')", "(0, valve.supply_MPa]", "a rig's own regulator range"},
-      {"valve.dead_time_ms", "ms", "(model.pneumatics' [regulator])", "[0, 1000]; valve.model = \"regulator\"", "the regulator loop's dead time"},
-      {"valve.valve_time_constant_ms", "ms", "(model.pneumatics' [regulator])", "(0, 10000]; valve.model = \"regulator\"", "the regulator valve's time constant"},
-      {"valve.proportional_band_kPa", "kPa", "(model.pneumatics' [regulator])", "(0, 2000]; valve.model = \"regulator\"", "the regulator's proportional band"},
-      {"valve.feedback", "", "(model.pneumatics' [regulator]: \"instant\")", "\"instant\" | \"delayed\"; valve.model = \"regulator\"", "the loop acts on its sensed pressure now, or on its sample of one dead time ago"},
-      {"valve.sense", "", "(model.pneumatics' [regulator]: \"chamber\")", "\"chamber\" | \"outlet\"; valve.model = \"regulator\"", "where the loop senses: the chamber, or its own outlet before the tube"},
-      {"valve.sample_period_ms", "ms", "(model.pneumatics' [regulator])", "(0, 100]; valve.model = \"regulator\"", "the loop's sample period (feedback \"delayed\")"},
-      {"valve.supply_sonic_conductance_dm3_per_s_bar", "dm^3/(s bar)", "(model.pneumatics' [regulator], else [valve]'s)", "(0, 100]; valve.model = \"regulator\"", "ISO 6358 C of the regulator's supply (filling) path"},
-      {"valve.supply_critical_pressure_ratio", "", "(model.pneumatics' [regulator], else [valve]'s)", "[0, laminar ratio); valve.model = \"regulator\"", "ISO 6358 b of the regulator's supply path"},
-      {"valve.exhaust_sonic_conductance_dm3_per_s_bar", "dm^3/(s bar)", "(model.pneumatics' [regulator], else [valve]'s)", "(0, 100]; valve.model = \"regulator\"", "ISO 6358 C of the regulator's exhaust (venting) path"},
-      {"valve.exhaust_critical_pressure_ratio", "", "(model.pneumatics' [regulator], else [valve]'s)", "[0, laminar ratio); valve.model = \"regulator\"", "ISO 6358 b of the regulator's exhaust path"},
-      {"valve.outlet_volume_cm3", "cm^3", "(model.pneumatics' [regulator])", "(0, 1000]; valve.model = \"regulator\"", "the regulator's outlet volume (sense \"outlet\")"},
-      {"valve.tube_sonic_conductance_dm3_per_s_bar", "dm^3/(s bar)", "(model.pneumatics' [regulator])", "(0, 100]; valve.model = \"regulator\"", "ISO 6358 C of tube and fittings, outlet to chamber (sense \"outlet\")"},
-      {"valve.tube_critical_pressure_ratio", "", "(model.pneumatics' [regulator])", "[0, laminar ratio); valve.model = \"regulator\"", "ISO 6358 b of tube and fittings (sense \"outlet\")"},
       {"muscles.<actuator>.params", "", "(required)", "path to a PAM parameter file", "the estimator's spring model (models/pams/...)"},
       {"muscles.<actuator>.plant", "", "(the params file's law)", "path to a plant file; or a table: file and any of that file's fields in its units (muscles.<m>.plant.geometry.wall_thickness_mm = 1.5), each validated as the file's own", "the physical muscle (AVBDL law with friction)"},
       {"muscles.<actuator>.plant.file", "", "(required in the table form)", "path to a plant file", "the plant file whose fields muscles.<actuator>.plant.<table>.<field> change"},
@@ -125,7 +111,23 @@ std::vector<KeyDoc> event_docs() {
   };
 }
 
-// [sim] and the drop's numbers (time_and_drop_keys.h)
+// valve.*'s numbers and choices: the pneumatics file's rows (scenario_key_tables.h), each
+// defaulting to the file's value
+std::vector<KeyDoc> valve_docs() {
+  PneumaticParams defaults;
+  std::vector<std::string> regulator_rows;
+  std::vector<KeyDoc> docs = key_table_docs({valve_key_table(&defaults, &regulator_rows)});
+  for (KeyDoc& d : docs) {
+    const std::string name = d.key.substr(d.key.find('.') + 1);
+    const bool regulator = std::find(regulator_rows.begin(), regulator_rows.end(), name) !=
+                           regulator_rows.end();
+    d.fallback = regulator ? "(model.pneumatics' [regulator])" : "(model.pneumatics')";
+    if (regulator) d.allowed += "; valve.model = \"regulator\"";
+  }
+  return docs;
+}
+
+// [sim] and the drop's numbers (scenario_key_tables.h)
 std::vector<KeyDoc> time_and_drop_docs() {
   Scenario scenario;   // the rows' defaults are the struct's own
   double max_steps = kDefaultMaxSteps;
@@ -175,7 +177,7 @@ std::vector<KeyDoc> controller_docs() {
 
 std::vector<KeyDoc> all_docs() {
   std::vector<KeyDoc> docs;
-  for (const std::vector<KeyDoc>& part : {model_docs(), time_and_drop_docs(), event_docs(),
+  for (const std::vector<KeyDoc>& part : {model_docs(), valve_docs(), time_and_drop_docs(), event_docs(),
                                           controller_docs(), sensor_docs(), instrument_docs()}) {
     docs.insert(docs.end(), part.begin(), part.end());
   }

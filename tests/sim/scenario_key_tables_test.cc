@@ -1,5 +1,5 @@
-// time_and_drop_keys_test.cc: [sim] and the drop's numbers (time_and_drop_keys.h) through the
-// scenario reader: every key the reader asks for under sim. and drop. (the drop's names
+// scenario_key_tables_test.cc: [sim], the drop's numbers and [valve] (scenario_key_tables.h)
+// through the scenario reader: every key the reader asks for under sim. and drop. (the drop's names
 // aside) has exactly one row and every row is read; a bad value of every row, generated from
 // the row, is refused in one line naming the scenario file and the key; a value reaches its
 // field; and what joins keys (the steps a trial takes, a drop before the end) is still refused.
@@ -12,7 +12,7 @@
 #include "base/input_error.h"
 #include "base/key_table_test_util.h"
 #include "sim/scenario/scenario_file.h"
-#include "sim/scenario/time_and_drop_keys.h"
+#include "sim/scenario/scenario_key_tables.h"
 #include "sim/test_paths.h"
 
 namespace pamsim {
@@ -81,6 +81,71 @@ TEST(TimeAndDropKeysTest, AValueReachesItsFieldAndWhatJoinsKeysIsStillChecked) {
   EXPECT_EQ(refused_key({"sim.timestep_s=0.0001", "sim.max_steps=1000"}), "sim.timestep_s");
   EXPECT_EQ(refused_key({"sim.control_hz=300"}), "sim.control_hz");   // 1 kHz / 300
   EXPECT_EQ(refused_key({"drop.time_s=3.0"}), "drop.time_s");        // at the trial's end
+}
+
+// valve.model = "regulator" and each of the table's keys at its default: the reader then
+// asks for every valve key
+std::vector<std::string> every_valve_key(const KeyTable& valve) {
+  std::vector<std::string> overrides = {"valve.model=\"regulator\""};
+  for (const NumberRow& row : valve.numbers) {
+    overrides.push_back("valve." + row.name + "=" + format_number(file_value(valve, row.name)));
+  }
+  for (const ChoiceRow& row : valve.choices) {
+    overrides.push_back("valve." + row.name + "=\"" + row.get() + "\"");
+  }
+  return overrides;
+}
+
+TEST(ValveKeysTest, EveryValveKeyTheReaderAsksForIsOneRowOfThePneumaticsFile) {
+  PneumaticParams p = load_scenario(kDropMass).pneumatics;   // the file's values
+  std::vector<std::string> regulator;
+  const KeyTable valve = valve_key_table(&p, &regulator);
+  std::set<std::string> asked;
+  for (const ScenarioKeyValue& kv : scenario_key_values(kDropMass, every_valve_key(valve))) {
+    if (split_key(kv.key).front() == "valve" && kv.key != "valve.model") asked.insert(kv.key);
+  }
+  expect_rows_are_the_asked_keys(row_keys({valve}), asked);
+  EXPECT_EQ(asked.size(), regulator.size() + 2);   // the supply and the command's maximum
+  // given at the file's own values, the keys change nothing
+  const PneumaticParams read = load_scenario(kDropMass, every_valve_key(valve)).pneumatics;
+  EXPECT_EQ(read.regulator_dead_time_s, p.regulator_dead_time_s);
+  EXPECT_EQ(read.tube_conductance_m3_per_s_pa, p.tube_conductance_m3_per_s_pa);
+  EXPECT_EQ(read.supply_gauge_pa, p.supply_gauge_pa);
+}
+
+TEST(ValveKeysTest, EveryRowRefusesABadValueAndARegulatorKeyWantsTheRegulator) {
+  PneumaticParams p;
+  std::vector<std::string> regulator;
+  const KeyTable valve = valve_key_table(&p, &regulator);
+  int refused = 0;
+  for (const NumberRow& row : valve.numbers) {
+    const std::string key = "valve." + row.name;
+    for (const std::string& value : bad_number_texts(row)) {
+      const InputErrorParts parts = refusal_parts(
+          [&] { load_scenario(kDropMass, {"valve.model=\"regulator\"", key + "=" + value}); },
+          key + " = " + value);
+      EXPECT_EQ(parts.key, key) << value;
+      EXPECT_EQ(parts.file, kDropMass) << key;
+      ++refused;
+    }
+  }
+  for (const ChoiceRow& row : valve.choices) {
+    const std::string key = "valve." + row.name;
+    EXPECT_EQ(refusal_parts([&] { load_scenario(kDropMass, {"valve.model=\"regulator\"",
+                                                            key + "=\"neither\""}); },
+                            key)
+                  .key,
+              key);
+  }
+  EXPECT_GE(refused, 5 * static_cast<int>(valve.numbers.size()));
+  // a regulator key with another valve model, which would ignore it
+  for (const std::string& name : regulator) {
+    const std::string key = "valve." + name;
+    const InputErrorParts parts = refusal_parts(
+        [&] { load_scenario(kDropMass, {"valve.model=\"iso6358\"", key + "=1"}); }, key);
+    EXPECT_EQ(parts.key, key);
+    EXPECT_NE(parts.problem.find("valve.model = \"regulator\""), std::string::npos) << key;
+  }
 }
 
 }  // namespace

@@ -1,7 +1,10 @@
-// time_and_drop_keys.cc: the rows of [sim] and [drop] (see time_and_drop_keys.h).
-#include "sim/scenario/time_and_drop_keys.h"
+// scenario_key_tables.cc: the rows of [sim], [drop] and [valve] (see scenario_key_tables.h).
+#include "sim/scenario/scenario_key_tables.h"
 
+#include <cassert>
 #include <limits>
+
+#include "pneumatics/pneumatic_params.h"
 
 namespace pamsim {
 
@@ -31,6 +34,26 @@ KeyTable drop_key_table(DropShorthand* drop) {
        "shorthand: its fall height above the basket floor", &drop->height_m},
       {"time_s", "s", 1.0, {0.0, 3600.0, false, true},
        "shorthand: when it is released, before sim.duration_s", &drop->time_s}};
+  return t;
+}
+
+KeyTable valve_key_table(PneumaticParams* pneumatics, std::vector<std::string>* regulator_rows) {
+  KeyTable t = pneumatic_regulator_table(pneumatics);
+  for (const NumberRow& row : t.numbers) regulator_rows->push_back(row.name);
+  for (const ChoiceRow& row : t.choices) regulator_rows->push_back(row.name);
+  // the supply and the command range, first, as the file's [supply] and [valve] give them
+  const auto file_row = [&](const std::string& table, const std::string& name) {
+    for (const KeyTable& file_table : pneumatic_key_table(pneumatics)) {
+      for (const NumberRow& row : file_table.numbers) {
+        if (file_table.name == table && row.name == name) return row;
+      }
+    }
+    assert(false && "valve_key_table: no such row of the pneumatics file");
+    return NumberRow{};
+  };
+  t.numbers.insert(t.numbers.begin(),
+                   {file_row("supply", "supply_MPa"), file_row("valve", "command_max_MPa")});
+  t.name = "valve";
   return t;
 }
 

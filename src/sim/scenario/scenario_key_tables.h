@@ -1,9 +1,13 @@
-// time_and_drop_keys.h: the scenario's own tables as key-table rows (base/key_table.h): [sim],
-// trial's time, and [drop], the falling-mass shorthand's numbers. Each key's unit, range,
+// scenario_key_tables.h: the scenario's own tables as key-table rows (base/key_table.h): [sim],
+// trial's time, [drop], the falling-mass shorthand's numbers, and [valve], a rig's own point
+// of the pneumatics file's supply, command range and regulator. Each key's unit, range,
 // default and meaning is one row, which the reader (scenario_file.cc, scenario_events.cc),
 // `pamsim keys` and the tests read. What joins keys stays with the reader: a control rate
 // that divides the physics rate, the steps a trial takes, a drop before the trial's end.
 #pragma once
+
+#include <string>
+#include <vector>
 
 #include "base/key_table.h"
 #include "sim/core/scenario.h"
@@ -30,5 +34,13 @@ struct DropShorthand {
 
 // [drop], bound to `drop`.
 KeyTable drop_key_table(DropShorthand* drop);
+
+// [valve]'s numbers and choices (valve.model, a name of the reader's, aside): the pneumatics
+// file's own rows (pneumatic_params.h), bound to `pneumatics`: [supply].supply_MPa,
+// [valve].command_max_MPa and every [regulator] row, with their units, ranges and meanings,
+// so that a scenario or a sweep axis picks a point of the file's bracket by the file's rows.
+// The regulator's rows are listed in `regulator_rows`, which valve.model = "regulator" must
+// accompany (another valve model would ignore them).
+KeyTable valve_key_table(PneumaticParams* pneumatics, std::vector<std::string>* regulator_rows);
 
 }  // namespace pamsim
