@@ -1,8 +1,8 @@
 // identify_plan_test.cc: `pamsim identify --plan` (identify_plan.h). The D-optimal gain and
 // the standard deviations after against their closed forms for a linear model; on the example
 // arm, a candidate that drops the ball determines its mass (which no recording sees) and
-// ranks first, while one that never moves the ball leaves the mass exactly at its prior; and
-// every bad [[candidate]] is one line naming its key, exit 2, nothing written.
+// ranks first, while one that never moves the ball leaves the mass exactly at its prior; a
+// fitted recording whose trial fails is named as left out; and every bad [[candidate]] is one line naming its key, exit 2, nothing written.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -88,6 +88,25 @@ TEST(IdentifyPlanTest, ADropDeterminesTheBallsMassAndStillnessLeavesItsPrior) {
   EXPECT_EQ(lines[0].rfind("1. drop: information gain ", 0), 0u) << lines[0];
   EXPECT_NE(plan_markdown(plan).find("| `bodies.ball.mass_kg` | 0.3 | drop |"), std::string::npos)
       << plan_markdown(plan);
+}
+
+// A fitted recording whose trial fails when the plan differences it is named as left out of
+// the current information (every gain is then overstated), not silently dropped.
+TEST(IdentifyPlanTest, AFittedRecordingWhoseTrialFailsIsNamedAsLeftOut) {
+  const fs::path dir = pamsim_test::fresh_dir("identify_plan_left_out");
+  IdentifyDefinition def = load_identify_definition(plan_file(dir, kStill));
+  IdentifyDb db = IdentifyDb::create((dir / "id.db").string(), def);
+  IdentifyRunOptions options;
+  options.threads = 2;
+  const IdentifyResult r = run_identify(def, db, options);
+  EXPECT_TRUE(plan_candidates(def, r, 2).left_out.empty());
+  def.recordings[0].set.push_back("bodies.no_such_body.mass_kg=1");   // its trials now fail
+  const IdentifyPlan plan = plan_candidates(def, r, 2);
+  ASSERT_EQ(plan.left_out.size(), 1u);
+  EXPECT_EQ(plan.left_out[0].rfind(def.recordings[0].name + ": ", 0), 0u) << plan.left_out[0];
+  EXPECT_NE(plan.left_out[0].find("no_such_body"), std::string::npos) << plan.left_out[0];
+  const std::vector<std::string> lines = plan_lines(plan);
+  EXPECT_NE(lines.back().find("left out of the current information"), std::string::npos);
 }
 
 TEST(IdentifyPlanTest, BadCandidatesAreOneLineExitTwoAndNothingWritten) {

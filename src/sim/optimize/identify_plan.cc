@@ -65,32 +65,39 @@ Eigen::MatrixXd sensitivity(const IdentifyDefinition& def, const IdentifyRecordi
   Eigen::MatrixXd s = Eigen::MatrixXd::Zero(rows, static_cast<Eigen::Index>(n));
   for (std::size_t j = 0; j < n; ++j) {
     const Sides side = sides_of(unit, j);
-    const auto plus = sample_channels(def, r, trials[trial_of[j].first], parameter_values(def, side.plus));
-    const auto minus = sample_channels(def, r, trials[trial_of[j].second], parameter_values(def, side.minus));
+    const auto plus =
+        sample_channels(def, r, trials[trial_of[j].first], parameter_values(def, side.plus));
+    const auto minus =
+        sample_channels(def, r, trials[trial_of[j].second], parameter_values(def, side.minus));
     Eigen::Index row = 0;
     for (std::size_t c = 0; c < centre.size(); ++c) {
       if (!(noise[c] > 0.0)) continue;
       for (std::size_t k = 0; k < centre[c].size(); ++k) {
         if (std::isnan(centre[c][k])) continue;
-        s(row++, static_cast<Eigen::Index>(j)) = (plus[c][k] - minus[c][k]) / side.width / noise[c];
+        s(row++, static_cast<Eigen::Index>(j)) =
+            (plus[c][k] - minus[c][k]) / side.width / noise[c];
       }
     }
   }
   return s;
 }
 
-// A tensile test's force sensitivities over `floor` [N].
+// A tensile test's force sensitivities over `floor` [N]; a parameter whose test failed on a
+// side keeps a zero column, with *failure set.
 Eigen::MatrixXd tensile_sensitivity(const IdentifyDefinition& def, const IdentifyTensile& t,
-                                    const std::vector<double>& unit, double floor) {
+                                    const std::vector<double>& unit, double floor,
+                                    std::string* failure) {
   const std::size_t n = unit.size();
   Eigen::MatrixXd s = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(t.rows.size()),
                                             static_cast<Eigen::Index>(n));
   for (std::size_t j = 0; j < n && floor > 0.0; ++j) {
     if (def.channel_parameters[j].kind != ChannelParameter::Kind::kNone) continue;
     const Sides side = sides_of(unit, j);
-    std::string failure;
-    const auto plus = tensile_forces(def, t, def.overrides_at(parameter_values(def, side.plus)), &failure);
-    const auto minus = tensile_forces(def, t, def.overrides_at(parameter_values(def, side.minus)), &failure);
+    const auto forces_at = [&](const std::vector<double>& u) {
+      return tensile_forces(def, t, def.overrides_at(parameter_values(def, u)), failure);
+    };
+    const auto plus = forces_at(side.plus);
+    const auto minus = forces_at(side.minus);
     if (plus.empty() || minus.empty()) continue;
     for (std::size_t k = 0; k < plus.size(); ++k) {
       s(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(j)) =
@@ -110,9 +117,11 @@ double floor_of(const IdentifyResult& result, const std::string& recording,
   return kNaN;
 }
 
-// The information of the fitted recordings and tensile tests, with the prior I.
+// The information of the fitted recordings and tensile tests, with the prior I. A recording
+// or test whose trial failed is left out, and named in *failures: the information it lacks
+// makes every candidate's gain look larger.
 Eigen::MatrixXd information_now(const IdentifyDefinition& def, const IdentifyResult& result,
-                                int threads) {
+                                int threads, std::vector<std::string>* left_out) {
   const auto n = static_cast<Eigen::Index>(result.unit.size());
   Eigen::MatrixXd f = Eigen::MatrixXd::Identity(n, n);
   for (const IdentifyRecording& r : def.recordings) {
@@ -121,6 +130,7 @@ Eigen::MatrixXd information_now(const IdentifyDefinition& def, const IdentifyRes
     for (std::size_t c : r.channels) noise.push_back(floor_of(result, r.name, r.data.channels[c]));
     std::string failure;
     const Eigen::MatrixXd s = sensitivity(def, r, result.unit, noise, threads, &failure);
+    if (!failure.empty()) left_out->push_back(r.name + ": " + failure);
     if (s.size() > 0) f += s.transpose() * s;
   }
   for (const IdentifyTensile& t : def.tensile) {
@@ -128,7 +138,9 @@ Eigen::MatrixXd information_now(const IdentifyDefinition& def, const IdentifyRes
     for (const ChannelFit& fit : result.fits) {
       if (fit.recording == "tensile_" + t.muscle) floor = fit.rmse_after;
     }
-    const Eigen::MatrixXd s = tensile_sensitivity(def, t, result.unit, floor);
+    std::string failure;
+    const Eigen::MatrixXd s = tensile_sensitivity(def, t, result.unit, floor, &failure);
+    if (!failure.empty()) left_out->push_back("tensile_" + t.muscle + ": " + failure);
     f += s.transpose() * s;
   }
   return f;
@@ -148,7 +160,9 @@ std::vector<double> slopes(const IdentifyDefinition& def, const IdentifyResult& 
 std::size_t best_for(const IdentifyPlan& plan, std::size_t j) {
   std::size_t best = plan.ranked.size();
   for (std::size_t c = 0; c < plan.ranked.size(); ++c) {
-    if (best == plan.ranked.size() || plan.ranked[c].sd_after[j] < plan.ranked[best].sd_after[j]) best = c;
+    if (best == plan.ranked.size() || plan.ranked[c].sd_after[j] < plan.ranked[best].sd_after[j]) {
+      best = c;
+    }
   }
   return best;
 }
@@ -178,16 +192,18 @@ IdentifyPlan plan_candidates(const IdentifyDefinition& def, const IdentifyResult
                              int threads) {
   IdentifyPlan plan;
   for (const SearchParameter& p : def.parameters) plan.keys.push_back(p.key);
-  const Eigen::MatrixXd now = information_now(def, result, threads);
+  const Eigen::MatrixXd now = information_now(def, result, threads, &plan.left_out);
   const std::vector<double> slope = slopes(def, result);
-  const Eigen::VectorXd sd_now = information_gain(now, Eigen::MatrixXd::Zero(now.rows(), now.cols())).sd;
+  const Eigen::VectorXd sd_now =
+      information_gain(now, Eigen::MatrixXd::Zero(now.rows(), now.cols())).sd;
   for (std::size_t j = 0; j < slope.size(); ++j) {
     plan.sd_now.push_back(sd_now(static_cast<Eigen::Index>(j)) * slope[j]);
   }
   for (const IdentifyRecording& c : def.candidates) {
     std::vector<double> noise;
     for (std::size_t k = 0; k < c.channels.size(); ++k) {
-      noise.push_back(std::isnan(c.noise[k]) ? floor_of(result, "", c.data.channels[k]) : c.noise[k]);
+      noise.push_back(std::isnan(c.noise[k]) ? floor_of(result, "", c.data.channels[k])
+                                             : c.noise[k]);
     }
     std::string failure;
     const Eigen::MatrixXd s = sensitivity(def, c, result.unit, noise, threads, &failure);
@@ -202,8 +218,9 @@ IdentifyPlan plan_candidates(const IdentifyDefinition& def, const IdentifyResult
     }
     plan.ranked.push_back(std::move(pc));
   }
-  std::stable_sort(plan.ranked.begin(), plan.ranked.end(),
-                   [](const PlannedCandidate& a, const PlannedCandidate& b) { return a.d_gain > b.d_gain; });
+  std::stable_sort(
+      plan.ranked.begin(), plan.ranked.end(),
+      [](const PlannedCandidate& a, const PlannedCandidate& b) { return a.d_gain > b.d_gain; });
   return plan;
 }
 
@@ -233,6 +250,9 @@ std::vector<std::string> plan_lines(const IdentifyPlan& plan) {
                     rounded(plan.ranked[b].sd_after[j]) + " with " + plan.ranked[b].name);
   }
   for (const std::string& f : plan.failures) lines.push_back("not ranked: " + f);
+  for (const std::string& f : plan.left_out) {
+    lines.push_back("left out of the current information (every gain overstated): " + f);
+  }
   return lines;
 }
 
@@ -251,12 +271,15 @@ std::string plan_markdown(const IdentifyPlan& plan) {
      << "| --- | --- | --- | --- |\n";
   for (std::size_t j = 0; j < plan.keys.size(); ++j) {
     const std::size_t b = best_for(plan, j);
-    md << "| `" << plan.keys[j] << "` | " << rounded(plan.sd_now[j]) << " | "
-       << (b < plan.ranked.size() ? plan.ranked[b].name + " | " + rounded(plan.ranked[b].sd_after[j])
-                                  : std::string("- | -"))
-       << " |\n";
+    const std::string best = b < plan.ranked.size()
+                                 ? plan.ranked[b].name + " | " + rounded(plan.ranked[b].sd_after[j])
+                                 : std::string("- | -");
+    md << "| `" << plan.keys[j] << "` | " << rounded(plan.sd_now[j]) << " | " << best << " |\n";
   }
   for (const std::string& f : plan.failures) md << "\nNot ranked: " << f << "\n";
+  for (const std::string& f : plan.left_out) {
+    md << "\nLeft out of the current information (every gain overstated): " << f << "\n";
+  }
   return md.str();
 }
 

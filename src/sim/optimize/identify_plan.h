@@ -41,9 +41,14 @@ struct PlannedCandidate {
 
 struct IdentifyPlan {
   std::vector<std::string> keys;     // the parameters
-  std::vector<double> sd_now;        // per parameter, in its unit (the prior's where nothing sees it)
+  // per parameter, in its unit (the prior's where nothing sees it)
+  std::vector<double> sd_now;
   std::vector<PlannedCandidate> ranked;   // best first (ties: the file's order)
-  std::vector<std::string> failures;      // "<candidate>: <why>" for a candidate whose trial failed
+  // "<candidate>: <why>" for a candidate whose trial failed
+  std::vector<std::string> failures;
+  // "<recording>: <why>" for a fitted recording or tensile test whose trial failed at a side
+  // of a difference: its information is missing from F_now, so every gain is overstated
+  std::vector<std::string> left_out;
 };
 
 // The file's candidates ranked at `result`'s point (its fits give the channels' noise
