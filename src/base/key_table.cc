@@ -91,7 +91,7 @@ void read_number_row(ConfigReader& in, const std::string& key, const NumberRow& 
 // One key of a table: read by its row, or refused with the keys the table has.
 void read_key(const std::string& path, const KeyTable& table, const std::string& name,
               const toml::node& node) {
-  const std::string key = table.name + "." + name;
+  const std::string key = row_key(table, name);
   for (const NumberRow& row : table.numbers) {
     if (row.name == name) return read_number(path, key, row, node);
   }
@@ -106,7 +106,7 @@ void read_key(const std::string& path, const KeyTable& table, const std::string&
       throw file_key_error(path, key, "value " + std::to_string(*v) +
                                           " out of range, allowed " + int_range(row));
     }
-    *row.target = static_cast<int>(*v);
+    row.set(*v);
     return;
   }
   for (const BoolRow& row : table.bools) {
@@ -124,6 +124,10 @@ void read_key(const std::string& path, const KeyTable& table, const std::string&
 }
 
 }  // namespace
+
+std::string row_key(const KeyTable& table, const std::string& name) {
+  return table.name.empty() ? name : table.name + "." + name;
+}
 
 bool KeyRange::contains(double v) const {
   return std::isfinite(v) && (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
@@ -158,7 +162,7 @@ void read_key_tables(const toml::table& doc, const std::string& path,
 }
 
 void read_key_rows(ConfigReader& in, const KeyTable& table) {
-  const auto key = [&](const std::string& name) { return table.name + "." + name; };
+  const auto key = [&](const std::string& name) { return row_key(table, name); };
   for (const ChoiceRow& row : table.choices) {
     const std::string k = key(row.name);
     const std::string value = in.get_string(k, row.get());
@@ -170,10 +174,10 @@ void read_key_rows(ConfigReader& in, const KeyTable& table) {
   for (const BoolRow& row : table.bools) *row.target = in.get_bool(key(row.name), *row.target);
   for (const IntRow& row : table.ints) {
     const std::string k = key(row.name);
-    const std::int64_t v = in.get_int(k, *row.target);
+    const std::int64_t v = in.get_int(k, row.get());
     in.check(v >= row.lo && v <= row.hi, k, "must be in " + int_range(row) + ", got " +
                                                 std::to_string(v));
-    *row.target = static_cast<int>(v);
+    row.set(v);
   }
   for (const NumberRow& row : table.numbers) read_number_row(in, key(row.name), row);
 }
@@ -183,14 +187,15 @@ void check_key_rows(const KeyTable& table) {
     const double* si = field(row);
     if (si == nullptr) continue;
     const double v = from_si(row, *si);
-    require_value(row.range.contains(v), table.name + "." + row.name, "in " + row.range.text(), v);
+    require_value(row.range.contains(v), row_key(table, row.name), "in " + row.range.text(), v);
   }
   for (const IntRow& row : table.ints) {
-    require_value(*row.target >= row.lo && *row.target <= row.hi, table.name + "." + row.name,
-                  "in " + int_range(row), *row.target);
+    const std::int64_t v = row.get();
+    require_value(v >= row.lo && v <= row.hi, row_key(table, row.name), "in " + int_range(row),
+                  static_cast<double>(v));
   }
   for (const ChoiceRow& row : table.choices) {
-    const std::string key = table.name + "." + row.name;
+    const std::string key = row_key(table, row.name);
     const std::string value = row.get();
     if (!allows(row, value)) {
       const std::string problem = "must be " + choices_text(row) + ", got \"" + value + "\"";
@@ -224,15 +229,15 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
   std::vector<KeyDoc> docs;
   for (const KeyTable& t : tables) {
     for (const ChoiceRow& row : t.choices) {
-      docs.push_back({t.name + "." + row.name, "", "\"" + row.get() + "\"", choices_text(row),
+      docs.push_back({row_key(t, row.name), "", "\"" + row.get() + "\"", choices_text(row),
                       row.doc});
     }
     for (const BoolRow& row : t.bools) {
-      docs.push_back({t.name + "." + row.name, "", *row.target ? "true" : "false",
+      docs.push_back({row_key(t, row.name), "", *row.target ? "true" : "false",
                       "true | false", row.doc});
     }
     for (const IntRow& row : t.ints) {
-      docs.push_back({t.name + "." + row.name, "", std::to_string(*row.target), int_range(row),
+      docs.push_back({row_key(t, row.name), "", std::to_string(row.get()), int_range(row),
                       row.doc});
     }
     for (const NumberRow& row : t.numbers) {
@@ -240,7 +245,7 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
       std::string fallback = si ? format_number(from_si(row, *si)) : "(unset)";
       if (row.required) fallback = "(required)";
       if (!row.fallback_doc.empty()) fallback = row.fallback_doc;
-      docs.push_back({t.name + "." + row.name, row.unit, fallback, row.range.text(), row.doc});
+      docs.push_back({row_key(t, row.name), row.unit, fallback, row.range.text(), row.doc});
     }
   }
   return docs;

@@ -6,10 +6,12 @@
 // (KeyDoc, as `pamsim keys` prints it) and the tests' bad values all come from the rows.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <toml++/toml.h>
@@ -41,14 +43,23 @@ struct NumberRow {
                                 // field's one value ("(Table II: 70 model, 25 fiber)")
 };
 
-// An integer key (a count: bits, steps), in [lo, hi].
+// An integer key (a count: bits, steps, a seed), in [lo, hi]; int_row binds it to a field.
 struct IntRow {
   std::string name;
   std::string doc;
-  long lo = 0;
-  long hi = 0;
-  int* target = nullptr;
+  std::int64_t lo = 0;
+  std::int64_t hi = 0;
+  std::function<void(std::int64_t)> set;   // sets the field
+  std::function<std::int64_t()> get;       // the field's value now
 };
+
+// An IntRow bound to an integer field of any type whose range holds [lo, hi].
+template <typename Int>
+IntRow int_row(std::string name, std::string doc, std::int64_t lo, std::int64_t hi, Int* field) {
+  return {std::move(name), std::move(doc), lo, hi,
+          [field](std::int64_t v) { *field = static_cast<Int>(v); },
+          [field] { return static_cast<std::int64_t>(*field); }};
+}
 
 // A true/false key.
 struct BoolRow {
@@ -68,7 +79,7 @@ struct ChoiceRow {
 
 // One TOML table of the file.
 struct KeyTable {
-  std::string name;   // "regulator"
+  std::string name;   // "regulator"; "" for the file's top-level keys
   std::vector<NumberRow> numbers;
   std::vector<ChoiceRow> choices;
   std::vector<BoolRow> bools{};
@@ -106,6 +117,9 @@ void read_key_rows(ConfigReader& in, const KeyTable& table);
 // validate() of a struct its table is bound to. Throws InputError
 // "<table>.<key> must be in <range>, got <value>" (require_value).
 void check_key_rows(const KeyTable& table);
+
+// A row's key as a file writes it: "<table>.<name>", or "<name>" in the top-level table "".
+std::string row_key(const KeyTable& table, const std::string& name);
 
 // A field's SI value in its row's unit: the shortest decimal of 15 to 17 significant digits
 // that the reader turns back into the same SI value (the file's 70 mm/s, read as 0.07 m/s,

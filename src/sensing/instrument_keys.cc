@@ -93,8 +93,8 @@ std::vector<KeyTable> gauge_hardware_key_tables(GaugeHardwareConfig* gauge) {
       {"tolerance_pct", "%", 1.0, {0.0, 100.0, false, true},
        "each bridge arm within nominal +- this (paper: 0.5 Ohm of 120)", &q.tolerance_pct}};
   KeyTable calibration{"sensors.gauge.calibration", {}, {}, {}};
-  calibration.ints = {{"steps", "its load steps up (and as many down)", 1, 1000,
-                       &g.calibration_steps}};
+  calibration.ints = {int_row("steps", "its load steps up (and as many down)", 1, 1000,
+                              &g.calibration_steps)};
   calibration.numbers = {
       {"max_N", "N", 1.0, kPositive, "the static calibration's largest load",
        &g.calibration_max_n},

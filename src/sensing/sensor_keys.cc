@@ -14,10 +14,10 @@ KeyTable sensor_key_table(SensorConfig* sensors) {
   const KeyRange any{-inf, inf, true, true};
   KeyTable t{"sensors", {}, {}, {}};
   // a bit count within an int; validate() allows 0 (no ADC) or 4..24
-  t.ints = {{"pressure_adc_bits", "the pressure ADC's resolution (0: ideal, else 4 to 24)", 0,
-             64, &s.pressure_adc_bits},
-            {"gauge_adc_bits", "the gauge ADC's resolution (0: ideal, else 4 to 24)", 0, 64,
-             &s.gauge_adc_bits}};
+  t.ints = {int_row("pressure_adc_bits", "the pressure ADC's resolution (0: ideal, else 4 to 24)",
+                    0, 64, &s.pressure_adc_bits),
+            int_row("gauge_adc_bits", "the gauge ADC's resolution (0: ideal, else 4 to 24)", 0,
+                    64, &s.gauge_adc_bits)};
   t.numbers = {
       {"pressure_noise_MPa", "MPa", units::kPaPerMPa, non_negative, "pressure sensor noise SD",
        &s.pressure_noise_pa},

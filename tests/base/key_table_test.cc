@@ -31,7 +31,7 @@ KeyTable table(Fields* f) {
   t.choices = {{"mode", {"fast", "slow"}, "the mode",
                 [f](const std::string& v) { f->mode = v; }, [f] { return f->mode; }}};
   t.bools = {{"on", "switched on", &f->on}};
-  t.ints = {{"bits", "resolution", 4, 24, &f->bits}};
+  t.ints = {int_row("bits", "resolution", 4, 24, &f->bits)};
   return t;
 }
 

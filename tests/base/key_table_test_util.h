@@ -33,6 +33,11 @@ inline std::vector<std::string> bad_number_texts(const NumberRow& row) {
   return bad;
 }
 
+// an integer row's bad values as TOML text: a fraction, a string, and each side just outside
+inline std::vector<std::string> bad_int_texts(const IntRow& row) {
+  return {"1.5", "\"x\"", std::to_string(row.lo - 1), std::to_string(row.hi + 1)};
+}
+
 // The parts of the InputError that `read` throws, which must be one line; a test failure
 // naming `what` (the key and value tried) if it throws none.
 inline InputErrorParts refusal_parts(const std::function<void()>& read, const std::string& what) {
@@ -50,10 +55,10 @@ inline InputErrorParts refusal_parts(const std::function<void()>& read, const st
 inline std::map<std::string, int> row_keys(const std::vector<KeyTable>& tables) {
   std::map<std::string, int> rows;
   for (const KeyTable& t : tables) {
-    for (const NumberRow& r : t.numbers) ++rows[t.name + "." + r.name];
-    for (const IntRow& r : t.ints) ++rows[t.name + "." + r.name];
-    for (const BoolRow& r : t.bools) ++rows[t.name + "." + r.name];
-    for (const ChoiceRow& r : t.choices) ++rows[t.name + "." + r.name];
+    for (const NumberRow& r : t.numbers) ++rows[row_key(t, r.name)];
+    for (const IntRow& r : t.ints) ++rows[row_key(t, r.name)];
+    for (const BoolRow& r : t.bools) ++rows[row_key(t, r.name)];
+    for (const ChoiceRow& r : t.choices) ++rows[row_key(t, r.name)];
   }
   return rows;
 }

@@ -130,7 +130,7 @@ TEST(IdentifyUncertaintyTest, TooFewSamplesToEstimateTheNoiseIsUnknown) {
   fit.channel = "angle_deg";
   fit.after = std::vector<double>(recorded.size(), 1.0);
   fit.rmse_after = 1.0;
-  judge_channel(recorded, kNaN, &fit);
+  judge_channel(recorded, kNaN, 3.0, &fit);
   EXPECT_TRUE(std::isnan(fit.noise_floor)) << "seven second differences are too few";
   EXPECT_FALSE(fit.judged);
   EXPECT_FALSE(fit.explained);
@@ -143,9 +143,11 @@ TEST(IdentifyUncertaintyTest, TooFewSamplesToEstimateTheNoiseIsUnknown) {
                          "noise: whether the model explains it is unknown (give noise = { "
                          "angle_deg = ... })");
   EXPECT_NE(identify_fits_csv(r).find(",\n"), std::string::npos) << "explained: empty";
-  judge_channel(recorded, 0.5, &fit);   // a given floor judges it
+  judge_channel(recorded, 0.5, 3.0, &fit);   // a given floor judges it
   EXPECT_TRUE(fit.judged);
   EXPECT_TRUE(fit.explained) << "1 <= 3 x 0.5";
+  judge_channel(recorded, 0.5, 1.5, &fit);   // the file's explained_noise_factor = 1.5
+  EXPECT_FALSE(fit.explained) << "1 > 1.5 x 0.5";
 }
 
 }  // namespace

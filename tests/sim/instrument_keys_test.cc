@@ -67,8 +67,7 @@ TEST(InstrumentKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {
       }
     }
     for (const IntRow& row : t.ints) {
-      for (const std::string& value : {std::string("1.5"), std::string("\"x\""),
-                                       std::to_string(row.lo - 1), std::to_string(row.hi + 1)}) {
+      for (const std::string& value : bad_int_texts(row)) {
         expect_refused(t.name + "." + row.name, value);
       }
     }

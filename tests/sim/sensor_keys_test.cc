@@ -57,8 +57,7 @@ TEST(SensorKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {
     }
   }
   for (const IntRow& row : table.ints) {
-    for (const std::string& value : {std::string("1.5"), std::string("\"x\""),
-                                     std::to_string(row.lo - 1), std::to_string(row.hi + 1)}) {
+    for (const std::string& value : bad_int_texts(row)) {
       EXPECT_EQ(refusal_of("sensors." + row.name, value).key, "sensors." + row.name) << value;
       ++refused;
     }

@@ -2,7 +2,8 @@
 // its unit, default, allowed values and meaning (scenario/scenario_key_docs.h); with a
 // scenario, every key it can take (its muscles', holds' and events' keys by name) with the
 // value in effect and whether that is the default. `--pneumatics`: the pneumatics file's keys
-// instead (model.pneumatics, pneumatics.<table>.<field>), from its reader's key table.
+// instead (model.pneumatics, pneumatics.<table>.<field>), from its reader's key table;
+// `--identify`, `--tune`: an identification or tuning file's top-level keys, from their rows.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -11,6 +12,8 @@
 #include "pneumatics/pneumatic_params.h"
 #include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
+#include "sim/optimize/identify_file.h"
+#include "sim/optimize/tuning_file.h"
 #include "sim/scenario/scenario_file.h"
 #include "sim/scenario/scenario_key_docs.h"
 
@@ -22,6 +25,8 @@ struct KeysOptions {
   std::vector<std::string> overrides;
   bool json = false;
   bool pneumatics = false;
+  bool identify = false;
+  bool tune = false;
 };
 
 nlohmann::json doc_json(const KeyDoc& d) {
@@ -45,12 +50,27 @@ void print_docs(const std::vector<KeyDoc>& docs, bool json) {
   if (json) std::cout << all.dump(2) << "\n";
 }
 
-void keys(const KeysOptions& opt) {
-  if (opt.pneumatics && !(opt.scenario.empty() && opt.overrides.empty())) {
-    throw InputError(
-        "--pneumatics lists the pneumatics file's keys: it takes no scenario or --set");
+// --pneumatics, --identify or --tune: another file's keys, which take no scenario
+bool print_file_keys(const KeysOptions& opt) {
+  if (opt.pneumatics + opt.identify + opt.tune == 0) return false;
+  if (opt.pneumatics + opt.identify + opt.tune > 1) {
+    throw InputError("--pneumatics, --identify and --tune list different files' keys: give one");
   }
-  if (opt.pneumatics) return print_docs(pneumatic_key_docs(), opt.json);
+  if (!(opt.scenario.empty() && opt.overrides.empty())) {
+    throw InputError("--pneumatics, --identify and --tune list a file's keys: they take no "
+                     "scenario or --set");
+  }
+  IdentifyDefinition identify;   // the rows' defaults are the structs' own
+  TuneDefinition tune;
+  print_docs(opt.pneumatics ? pneumatic_key_docs()
+             : opt.identify ? key_table_docs({identify_search_table(&identify)})
+                            : key_table_docs({tune_search_table(&tune)}),
+             opt.json);
+  return true;
+}
+
+void keys(const KeysOptions& opt) {
+  if (print_file_keys(opt)) return;
   if (opt.scenario.empty()) {
     if (!opt.overrides.empty()) throw InputError("--set needs a scenario");
     return print_docs(scenario_key_docs(), opt.json);
@@ -88,6 +108,13 @@ void add_keys_command(CLI::App& app) {
   cmd->add_flag("--pneumatics", opt->pneumatics,
                 "The pneumatics file's keys (tables supply, gas, valve, chamber, first_order, "
                 "regulator, solver) instead of the scenario's");
+  cmd->add_flag("--identify", opt->identify,
+                "An identification file's search and judgement keys (generations, "
+                "population, seed, polish_iterations, interval, explained_noise_factor) "
+                "instead of the scenario's");
+  cmd->add_flag("--tune", opt->tune,
+                "A tuning file's search keys (algorithm, generations, population, seed, seeds, "
+                "held_out_seeds) instead of the scenario's");
 }
 
 }  // namespace pamsim

@@ -244,7 +244,7 @@ std::vector<ChannelFit> channel_fits(const IdentifyDefinition& def,
                    r.data.sample_count(r.channels[c]), before[c], after[c], {}, {}};
       if (!sampled_before.empty()) f.before = sampled_before[c];
       if (!sampled_after.empty()) f.after = sampled_after[c];
-      judge_channel(r.data.samples[r.channels[c]], r.noise[c], &f);
+      judge_channel(r.data.samples[r.channels[c]], r.noise[c], def.explained_noise_factor, &f);
       fits.push_back(std::move(f));
     }
   }

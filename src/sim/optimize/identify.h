@@ -55,7 +55,7 @@ struct ChannelFit {
   // residuals after (identify_uncertainty.h); NaN: unknown (too few samples, a tensile test)
   double noise_floor = std::numeric_limits<double>::quiet_NaN();
   double whiteness_p = std::numeric_limits<double>::quiet_NaN();
-  bool explained = true;         // RMSE after within kExplainedNoiseFactor noise floors
+  bool explained = true;         // RMSE after within explained_noise_factor noise floors
   bool judged = true;            // false: too few samples to estimate the floor, so whether
                                  // the model explains the channel is unknown (explained false)
 };

@@ -25,20 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void read_search(ConfigReader& in, IdentifyDefinition* def) {
-  def->generations = static_cast<unsigned>(
-      read_bounded_int(in, "generations", def->generations, 0, 1000, "[0, 1000]"));
-  def->population = static_cast<unsigned>(
-      read_bounded_int(in, "population", def->population, 5, 1000, "[5, 1000] (CMA-ES)"));
-  def->seed = static_cast<std::uint64_t>(
-      read_bounded_int(in, "seed", 1, 0, 4294967295LL, "[0, 2^32 - 1] (pagmo's seeds)"));
-  def->polish_iterations = static_cast<int>(
-      read_bounded_int(in, "polish_iterations", def->polish_iterations, 0, 1000, "[0, 1000]"));
-  def->interval = in.get_double("interval", def->interval);
-  in.check(def->interval > 0.0 && def->interval < 1.0, "interval",
-           "must be in (0, 1), got " + format_value(def->interval));
-}
-
 void read_tensile(ConfigReader& in, IdentifyDefinition* def) {
   const TableArray tables(in, "tensile");
   for (const TableEntry& e : tables.entries({"muscle", "file", "weight"})) {
@@ -182,6 +168,27 @@ void check_recordings(const IdentifyDefinition& def) {
 
 }  // namespace
 
+KeyTable identify_search_table(IdentifyDefinition* def) {
+  KeyTable t{"", {}, {}, {}};
+  t.ints = {
+      int_row("generations",
+              "CMA-ES generations of the global search (0: none, the polish starts from the "
+              "middle of the box)",
+              0, 1000, &def->generations),
+      int_row("population", "CMA-ES population", 5, 1000, &def->population),
+      int_row("seed", "CMA-ES seed (pagmo's seeds are 32-bit)", 0, 4294967295LL, &def->seed),
+      int_row("polish_iterations", "Levenberg-Marquardt iterations of the local polish (Ceres)",
+              0, 1000, &def->polish_iterations)};
+  t.numbers = {
+      {"interval", "", 1.0, {0.0, 1.0, true, true},
+       "the level of the parameters' reported intervals", &def->interval},
+      {"explained_noise_factor", "", 1.0, {1.0, 1000.0, false, false},
+       "a fitted channel is explained when its RMS after the fit is at most this many noise "
+       "floors (the model's own noise and the recording's make sqrt(2))",
+       &def->explained_noise_factor}};
+  return t;
+}
+
 std::vector<std::string> IdentifyDefinition::overrides_at(const std::vector<double>& values) const {
   std::vector<std::string> out = overrides;
   for (std::size_t i = 0; i < parameters.size(); ++i) {
@@ -282,7 +289,7 @@ IdentifyDefinition load_identify_definition(const std::string& path) {
   def.base_path = std::move(base.path);
   def.base_text = std::move(base.text);
   def.overrides = std::move(base.overrides);
-  read_search(in, &def);
+  read_key_rows(in, identify_search_table(&def));
   def.parameters = read_search_parameters(in, {"seed"}, "a recording's noise is its own");
   read_recordings(in, &def);
   read_tensile(in, &def);

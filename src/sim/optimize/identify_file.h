@@ -5,14 +5,8 @@
 // Identification file keys (paths relative to the file):
 //   base                scenario file, required
 //   overrides           scenario overrides at every simulation ("key=value" strings)
-//   generations         CMA-ES generations of the global search, [0, 1000]; 0: none, the
-//                       polish starts from the middle of the box; default 6
-//   population          CMA-ES population, [5, 1000]; default 8
-//   seed                CMA-ES seed, [0, 2^32 - 1]; default 1
-//   polish_iterations   Levenberg-Marquardt iterations of the local polish (Ceres), [0, 1000];
-//                       default 30
-//   interval            the level of the parameters' reported intervals, in (0, 1); default
-//                       0.95 (identify_uncertainty.h)
+//   generations, population, seed, polish_iterations, interval, explained_noise_factor: how
+//                       to search and how to judge, rows of identify_search_table below
 //   [[parameter]]       key (a scenario key), from < to, scale = "linear" | "log" (from > 0);
 //                       or a recorded channel's sensor, key = "channel.<column>.offset" (in
 //                       the column's unit), ".gain" (> 0) or ".delay_ms" (>= 0, <= 1000):
@@ -48,6 +42,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/key_table.h"
 #include "pam_actuator/tensile_test.h"
 #include "sim/io/recording_csv.h"
 #include "sim/optimize/search_space.h"
@@ -89,8 +84,10 @@ struct IdentifyDefinition {
   unsigned generations = 6, population = 8;
   std::uint64_t seed = 1;
   int polish_iterations = 30;
-  double interval = 0.95;   // the reported intervals' level (not in canonical_json: it does
-                            // not change the search)
+  // the reported intervals' level, and the RMS in noise floors within which a fitted channel
+  // is explained (identify_uncertainty.h); neither in canonical_json: neither changes the search
+  double interval = 0.95;
+  double explained_noise_factor = 3.0;
   std::vector<SearchParameter> parameters;
   std::vector<ChannelParameter> channel_parameters;   // per parameter (kNone: a scenario key)
   std::vector<IdentifyRecording> recordings;
@@ -121,6 +118,11 @@ struct IdentifyDefinition {
 // calibration, parameter and plant files, schedule tables), as (scenario key, path), each
 // once: what a resumed identification must find unchanged (identify_db.h).
 std::vector<std::pair<std::string, std::string>> identify_input_paths(const IdentifyDefinition& def);
+
+// The file's top-level numbers as rows (base/key_table.h), bound to `def`: each one's range,
+// default (the struct's own) and meaning; the reader, `pamsim keys --identify` and the tests
+// read them.
+KeyTable identify_search_table(IdentifyDefinition* def);
 
 // Reads and validates the file and its recordings. Throws InputError "<file>: <key> <problem>"
 // or the recording's own "<recording>: line <n>: <problem>".

@@ -103,7 +103,7 @@ double channel_scale(const std::vector<double>& samples);
 
 // The smallest noise floor a channel is given, as a fraction of its standard deviation: a
 // noise-free recording (simulated, or a smooth channel) is explained by a model within
-// kExplainedNoiseFactor x 0.1 % of its spread (identify_uncertainty.h).
+// explained_noise_factor x 0.1 % of its spread (identify_uncertainty.h).
 inline constexpr double kResolvedFraction = 1e-3;
 
 // A recorded channel's noise floor: its white noise from its second differences

@@ -76,7 +76,8 @@ void fill_uncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
   }
 }
 
-void judge_channel(const std::vector<double>& recorded, double given, ChannelFit* fit) {
+void judge_channel(const std::vector<double>& recorded, double given, double explained_factor,
+                   ChannelFit* fit) {
   if (std::isfinite(given)) {
     fit->noise_floor = given;
   } else {
@@ -89,7 +90,7 @@ void judge_channel(const std::vector<double>& recorded, double given, ChannelFit
   }
   fit->whiteness_p = ljung_box(residuals).p_value;
   fit->judged = std::isfinite(fit->noise_floor);
-  fit->explained = fit->judged && !(fit->rmse_after > kExplainedNoiseFactor * fit->noise_floor);
+  fit->explained = fit->judged && !(fit->rmse_after > explained_factor * fit->noise_floor);
 }
 
 std::vector<std::string> unexplained_channels(const IdentifyResult& result) {

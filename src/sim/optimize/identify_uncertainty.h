@@ -9,11 +9,11 @@
 //    recordings and is kept out; a singular rest leaves all of them undetermined.
 //  - each recording's channel judged against its own noise: the noise floor the file gives,
 //    else the recorded channel's own (its second differences), the fit's RMS in multiples of
-//    it, and the Ljung-Box
-//    p-value of its residuals. A channel is "explained" when the RMS is at most
-//    kExplainedNoiseFactor times its floor: a model that explains a recording leaves the
-//    recording's noise and its own simulated noise, sqrt(2) times the floor, plus what the
-//    instruments add that is not white (creep, ringing, quantisation). Where a fitted channel
+//    it, and the Ljung-Box p-value of its residuals. A channel is "explained" when the RMS is
+//    at most the file's explained_noise_factor (default 3) times its floor: a model that
+//    explains a recording leaves the recording's noise and its own simulated noise, sqrt(2)
+//    times the floor, plus what the instruments add that is not white (creep, ringing,
+//    quantisation). Where a fitted channel
 //    is not explained, no standard error is to be trusted. A channel with too few samples
 //    to estimate its floor, and none given, is not judged (ChannelFit::judged): unknown.
 #pragma once
@@ -28,8 +28,6 @@
 
 namespace pamsim {
 
-inline constexpr double kExplainedNoiseFactor = 3.0;
-
 // Fills std_error, std_error_plain, interval_lo, interval_hi (at `level`, in (0, 1)),
 // identifiable and correlated of result->parameters (their values at `unit`) from the
 // residuals `r` and their Jacobian in the unit
@@ -41,7 +39,9 @@ void fill_uncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
 
 // A channel's noise floor (`given`, or NaN: estimated), RMS in floors, residual whiteness and
 // verdict, from its recorded samples (NaN: a gap) and the fit's `after` at the same times.
-void judge_channel(const std::vector<double>& recorded, double given, ChannelFit* fit);
+// Explained: the RMS at most `explained_factor` floors.
+void judge_channel(const std::vector<double>& recorded, double given, double explained_factor,
+                   ChannelFit* fit);
 
 // "the model does not explain recording <r> (<channel>): RMS <k> x the noise" for each
 // fitted channel that is not explained; empty if all are.

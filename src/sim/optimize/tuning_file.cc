@@ -33,29 +33,15 @@ void read_base(ConfigReader& in, TuneDefinition* def) {
   def->overrides = std::move(base.overrides);
 }
 
-void read_algorithm(ConfigReader& in, TuneDefinition* def) {
-  const std::string algorithm = in.get_string("algorithm", "cmaes");
-  in.check(algorithm == "cmaes" || algorithm == "nsga2", "algorithm",
-           "must be \"cmaes\" or \"nsga2\", got \"" + algorithm + "\"");
-  def->algorithm = algorithm == "cmaes" ? TuneAlgorithm::kCmaes : TuneAlgorithm::kNsga2;
-  def->generations =
-      static_cast<unsigned>(read_bounded_int(in, "generations", def->generations, 1, 10000, "[1, 10000]"));
-  const std::int64_t population = in.get_int("population", def->population);
-  if (def->algorithm == TuneAlgorithm::kCmaes) {
-    in.check(population >= 5 && population <= 10000, "population",
-             "must be in [5, 10000] for cmaes, got " + std::to_string(population));
-  } else {
-    in.check(population >= 8 && population <= 10000 && population % 4 == 0, "population",
-             "must be a multiple of 4 in [8, 10000] for nsga2, got " + std::to_string(population));
+// The rows (tune_search_table), then what joins keys: nsga2's population a multiple of 4 of
+// at least 8, the noise levels each once.
+void read_search_and_trials(ConfigReader& in, TuneDefinition* def) {
+  read_key_rows(in, tune_search_table(def));
+  if (def->algorithm == TuneAlgorithm::kNsga2) {
+    in.check(def->population >= 8 && def->population % 4 == 0, "population",
+             "must be a multiple of 4 in [8, 10000] for nsga2, got " +
+                 std::to_string(def->population));
   }
-  def->population = static_cast<unsigned>(population);
-  def->seed = static_cast<std::uint64_t>(
-      read_bounded_int(in, "seed", 1, 0, 4294967295LL, "[0, 2^32 - 1] (pagmo's seeds)"));
-}
-
-void read_trials(ConfigReader& in, TuneDefinition* def) {
-  def->seeds = static_cast<int>(
-      read_bounded_int(in, "seeds", def->seeds, 1, 1000, "[1, 1000] (an objective needs trials)"));
   def->noise_scales = in.get_double_list("noise_scales", def->noise_scales);
   in.check(!def->noise_scales.empty(), "noise_scales", "must hold at least one level");
   const std::vector<double>& levels = def->noise_scales;
@@ -66,8 +52,6 @@ void read_trials(ConfigReader& in, TuneDefinition* def) {
     in.check(std::find(levels.begin(), levels.begin() + i, n) == levels.begin() + i,
              "noise_scales", "names " + format_value(n) + " twice");
   }
-  def->held_out_seeds = static_cast<int>(
-      read_bounded_int(in, "held_out_seeds", def->held_out_seeds, 0, 1000, "[0, 1000]"));
 }
 
 // Refuses a metric the base scenario does not report.
@@ -185,13 +169,36 @@ void check_settings(const TuneDefinition& def) {
 
 }  // namespace
 
+KeyTable tune_search_table(TuneDefinition* def) {
+  KeyTable t{"", {}, {}, {}};
+  t.choices = {{"algorithm", {"cmaes", "nsga2"},
+                "pagmo2's CMA-ES (exactly one objective) or NSGA-II (one or more)",
+                [def](const std::string& v) {
+                  def->algorithm = v == "cmaes" ? TuneAlgorithm::kCmaes : TuneAlgorithm::kNsga2;
+                },
+                [def] {
+                  return std::string(def->algorithm == TuneAlgorithm::kCmaes ? "cmaes" : "nsga2");
+                }}};
+  t.ints = {
+      int_row("generations", "the optimiser's generations", 1, 10000, &def->generations),
+      int_row("population", "its population (nsga2: a multiple of 4, at least 8)", 5, 10000,
+              &def->population),
+      int_row("seed", "the optimiser's seed (pagmo's seeds are 32-bit)", 0, 4294967295LL,
+              &def->seed),
+      int_row("seeds", "trials per noise level of an evaluation (seeds base.seed ..)", 1, 1000,
+              &def->seeds),
+      int_row("held_out_seeds", "seeds of the final check (base.seed + 1000 ..)", 0, 1000,
+              &def->held_out_seeds)};
+  return t;
+}
+
+
 TuneDefinition load_tune_definition(const std::string& path) {
   ConfigReader in(path);
   TuneDefinition def;
   def.file = path;
   read_base(in, &def);
-  read_algorithm(in, &def);
-  read_trials(in, &def);
+  read_search_and_trials(in, &def);
   // the base scenario must load with the overrides, and tells which metrics exist
   Scenario base;
   try {

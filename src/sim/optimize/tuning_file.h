@@ -6,12 +6,10 @@
 // Tuning file keys (paths relative to the file):
 //   base              scenario file, required
 //   overrides         scenario overrides at every evaluation ("key=value" strings)
-//   algorithm         "cmaes" (exactly one objective) | "nsga2" (one or more)
-//   generations       >= 1; population: >= 5 (cmaes), a multiple of 4 >= 8 (nsga2)
-//   seed              the optimiser's seed, >= 0
-//   seeds             trials per noise level of an evaluation (seeds base.seed ..), >= 1
-//   noise_scales      sensors.noise_scale levels each evaluation averages over; default [1]
-//   held_out_seeds    seeds of the final check (base.seed + 1000 ..), >= 0; default 20
+//   algorithm, generations, population, seed, seeds, held_out_seeds: rows of
+//                     tune_search_table below (`pamsim keys --tune`)
+//   noise_scales      sensors.noise_scale levels each evaluation averages over, each in
+//                     [0, 1000] once; default [1]
 //   [[parameter]]     key (a scenario key), from < to, scale = "linear" | "log" (from > 0)
 //   [[objective]]     metric (a summary metric), maximize = false
 //   [[constraint]]    metric, min and/or max: on the metric's mean over an evaluation's trials
@@ -25,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "base/key_table.h"
 #include "sim/scenario/randomize.h"
 #include "sim/optimize/optimizer.h"
 #include "sim/optimize/search_space.h"
@@ -79,6 +78,11 @@ struct TuneDefinition {
     return parameter_overrides(overrides, parameters, values);
   }
 };
+
+// The file's top-level search keys as rows (base/key_table.h), bound to `def`: each one's
+// range, default (the struct's own) and meaning; the reader, `pamsim keys --tune` and the
+// tests read them.
+KeyTable tune_search_table(TuneDefinition* def);
 
 // Reads and validates the file, the base scenario (with the overrides, and with each
 // parameter at both bounds) and the metric names. Throws InputError "<file>: <key> <problem>".
