@@ -1,6 +1,7 @@
 // key_table.cc: see key_table.h.
 #include "base/key_table.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <cstdint>
@@ -129,6 +130,15 @@ std::string row_key(const KeyTable& table, const std::string& name) {
   return table.name.empty() ? name : table.name + "." + name;
 }
 
+std::vector<std::string> key_names(const KeyTable& table) {
+  std::vector<std::string> keys;
+  for (const ChoiceRow& row : table.choices) keys.push_back(row_key(table, row.name));
+  for (const BoolRow& row : table.bools) keys.push_back(row_key(table, row.name));
+  for (const IntRow& row : table.ints) keys.push_back(row_key(table, row.name));
+  for (const NumberRow& row : table.numbers) keys.push_back(row_key(table, row.name));
+  return keys;
+}
+
 bool KeyRange::contains(double v) const {
   return std::isfinite(v) && (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
 }
@@ -180,6 +190,19 @@ void read_key_rows(ConfigReader& in, const KeyTable& table) {
     row.set(v);
   }
   for (const NumberRow& row : table.numbers) read_number_row(in, key(row.name), row);
+}
+
+KeyTable rows_given(const ConfigReader& in, KeyTable table) {
+  const auto drop_absent = [&](auto* rows) {
+    rows->erase(std::remove_if(rows->begin(), rows->end(),
+                               [&](const auto& row) { return !in.has(row_key(table, row.name)); }),
+                rows->end());
+  };
+  drop_absent(&table.numbers);
+  drop_absent(&table.choices);
+  drop_absent(&table.bools);
+  drop_absent(&table.ints);
+  return table;
 }
 
 void check_key_rows(const KeyTable& table) {

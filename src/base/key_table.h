@@ -113,6 +113,11 @@ void read_key_tables(const toml::table& doc, const std::string& path,
 // InputError "<file>: <table>.<key> <problem>" through ConfigReader::fail.
 void read_key_rows(ConfigReader& in, const KeyTable& table);
 
+// `table` with only the rows whose keys `in` has: for optional keys whose absence means
+// another source's value (the model's, the pneumatics file's), which the reader then neither
+// sets nor lists among its defaults.
+KeyTable rows_given(const ConfigReader& in, KeyTable table);
+
 // The rows' fields as they are now, checked against the rows' ranges and choices: a
 // validate() of a struct its table is bound to. Throws InputError
 // "<table>.<key> must be in <range>, got <value>" (require_value).
@@ -120,6 +125,8 @@ void check_key_rows(const KeyTable& table);
 
 // A row's key as a file writes it: "<table>.<name>", or "<name>" in the top-level table "".
 std::string row_key(const KeyTable& table, const std::string& name);
+// Every row's key, in the reader's order (choices, true/false keys, integers, numbers).
+std::vector<std::string> key_names(const KeyTable& table);
 
 // A field's SI value in its row's unit: the shortest decimal of 15 to 17 significant digits
 // that the reader turns back into the same SI value (the file's 70 mm/s, read as 0.07 m/s,

@@ -1,16 +1,19 @@
-// scenario_key_tables_test.cc: [sim], the drop's numbers and [valve] (scenario_key_tables.h)
-// through the scenario reader: every key the reader asks for under sim. and drop. (the drop's names
+// scenario_key_tables_test.cc: [sim], the drop's numbers, [valve] and joints.<joint>
+// (scenario_key_tables.h) through the scenario reader: every key the reader asks for under sim. and drop. (the drop's names
 // aside) has exactly one row and every row is read; a bad value of every row, generated from
 // the row, is refused in one line naming the scenario file and the key; a value reaches its
 // field; and what joins keys (the steps a trial takes, a drop before the end) is still refused.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 #include <string>
+#include <utility>
 
 #include "base/config_reader.h"
 #include "base/input_error.h"
 #include "base/key_table_test_util.h"
+#include "base/units.h"
 #include "sim/scenario/scenario_file.h"
 #include "sim/scenario/scenario_key_tables.h"
 #include "sim/test_paths.h"
@@ -83,29 +86,30 @@ TEST(TimeAndDropKeysTest, AValueReachesItsFieldAndWhatJoinsKeysIsStillChecked) {
   EXPECT_EQ(refused_key({"drop.time_s=3.0"}), "drop.time_s");        // at the trial's end
 }
 
-// valve.model = "regulator" and each of the table's keys at its default: the reader then
+// valve.model = "regulator" and each of the tables' keys at its default: the reader then
 // asks for every valve key
-std::vector<std::string> every_valve_key(const KeyTable& valve) {
+std::vector<std::string> every_valve_key(const std::vector<KeyTable>& valve) {
   std::vector<std::string> overrides = {"valve.model=\"regulator\""};
-  for (const NumberRow& row : valve.numbers) {
-    overrides.push_back("valve." + row.name + "=" + format_number(file_value(valve, row.name)));
-  }
-  for (const ChoiceRow& row : valve.choices) {
-    overrides.push_back("valve." + row.name + "=\"" + row.get() + "\"");
+  for (const KeyTable& t : valve) {
+    for (const NumberRow& row : t.numbers) {
+      overrides.push_back("valve." + row.name + "=" + format_number(file_value(t, row.name)));
+    }
+    for (const ChoiceRow& row : t.choices) {
+      overrides.push_back("valve." + row.name + "=\"" + row.get() + "\"");
+    }
   }
   return overrides;
 }
 
 TEST(ValveKeysTest, EveryValveKeyTheReaderAsksForIsOneRowOfThePneumaticsFile) {
   PneumaticParams p = load_scenario(kDropMass).pneumatics;   // the file's values
-  std::vector<std::string> regulator;
-  const KeyTable valve = valve_key_table(&p, &regulator);
+  const std::vector<KeyTable> valve = valve_key_tables(&p);
   std::set<std::string> asked;
   for (const ScenarioKeyValue& kv : scenario_key_values(kDropMass, every_valve_key(valve))) {
     if (split_key(kv.key).front() == "valve" && kv.key != "valve.model") asked.insert(kv.key);
   }
-  expect_rows_are_the_asked_keys(row_keys({valve}), asked);
-  EXPECT_EQ(asked.size(), regulator.size() + 2);   // the supply and the command's maximum
+  expect_rows_are_the_asked_keys(row_keys(valve), asked);
+  EXPECT_EQ(asked.size(), key_names(valve.at(1)).size() + 2);   // the supply, the command's max
   // given at the file's own values, the keys change nothing
   const PneumaticParams read = load_scenario(kDropMass, every_valve_key(valve)).pneumatics;
   EXPECT_EQ(read.regulator_dead_time_s, p.regulator_dead_time_s);
@@ -115,8 +119,10 @@ TEST(ValveKeysTest, EveryValveKeyTheReaderAsksForIsOneRowOfThePneumaticsFile) {
 
 TEST(ValveKeysTest, EveryRowRefusesABadValueAndARegulatorKeyWantsTheRegulator) {
   PneumaticParams p;
-  std::vector<std::string> regulator;
-  const KeyTable valve = valve_key_table(&p, &regulator);
+  const std::vector<KeyTable> tables = valve_key_tables(&p);
+  KeyTable valve = tables.at(1);   // the regulator's rows, then the rig's
+  valve.numbers.insert(valve.numbers.end(), tables.at(0).numbers.begin(),
+                       tables.at(0).numbers.end());
   int refused = 0;
   for (const NumberRow& row : valve.numbers) {
     const std::string key = "valve." + row.name;
@@ -139,13 +145,56 @@ TEST(ValveKeysTest, EveryRowRefusesABadValueAndARegulatorKeyWantsTheRegulator) {
   }
   EXPECT_GE(refused, 5 * static_cast<int>(valve.numbers.size()));
   // a regulator key with another valve model, which would ignore it
-  for (const std::string& name : regulator) {
-    const std::string key = "valve." + name;
+  for (const std::string& key : key_names(tables.at(1))) {
     const InputErrorParts parts = refusal_parts(
         [&] { load_scenario(kDropMass, {"valve.model=\"iso6358\"", key + "=1"}); }, key);
     EXPECT_EQ(parts.key, key);
     EXPECT_NE(parts.problem.find("valve.model = \"regulator\""), std::string::npos) << key;
   }
+}
+
+// joints.<joint>.*: every row of a hinge (the arm's shoulder) and of a slide (the leg's trunk)
+// refuses its bad values naming the key; a given value reaches its field, in SI; the other
+// kind's key is refused.
+TEST(JointKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
+  JointSpec defaults;
+  const std::string landing = pamsim_test::kScenarios + "landing.toml";
+  int refused = 0;
+  const std::pair<KeyTable, std::pair<std::string, std::string>> cases[] = {
+      {hinge_key_table(&defaults), {kDropMass, "joints.shoulder"}},
+      {slide_key_table(&defaults), {landing, "joints.trunk_z"}}};
+  for (const auto& [table, where] : cases) {
+    const auto& [scenario, prefix] = where;
+    for (const NumberRow& row : table.numbers) {
+      const std::string key = prefix + "." + row.name;
+      for (const std::string& value : bad_number_texts(row)) {
+        const InputErrorParts parts =
+            refusal_parts([&] { load_scenario(scenario, {key + "=" + value}); }, key + value);
+        EXPECT_EQ(parts.key, key) << value;
+        ++refused;
+      }
+    }
+  }
+  EXPECT_EQ(refused, 6 * 5);
+  const Scenario arm = load_scenario(kDropMass, {"joints.shoulder.start_deg=-5",
+                                                 "joints.shoulder.frictionloss_N_m=0.02"});
+  ASSERT_EQ(arm.joints.size(), 1u);
+  EXPECT_TRUE(arm.joints[0].rotational);
+  EXPECT_DOUBLE_EQ(arm.joints[0].start, -5.0 * units::kPi / 180.0);
+  EXPECT_EQ(arm.joints[0].frictionloss, 0.02);
+  EXPECT_TRUE(std::isnan(arm.joints[0].damping)) << "not given: the model's";
+  const Scenario leg = load_scenario(landing, {"joints.trunk_z.start_mm=100"});
+  bool found = false;
+  for (const JointSpec& j : leg.joints) {
+    if (j.joint != "trunk_z") continue;
+    found = true;
+    EXPECT_FALSE(j.rotational);
+    EXPECT_DOUBLE_EQ(j.start, 0.1);
+  }
+  EXPECT_TRUE(found);
+  EXPECT_EQ(refusal_parts([&] { load_scenario(landing, {"joints.trunk_z.start_deg=10"}); },
+                          "a hinge's key on a slide").key,
+            "joints.trunk_z");
 }
 
 }  // namespace

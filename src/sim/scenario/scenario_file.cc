@@ -41,26 +41,15 @@ void read_time(ConfigReader& in, Scenario* sc) {
 // over the pneumatics file's values
 void read_valve(ConfigReader& in, const std::string& valve, Scenario* sc) {
   // each key by the pneumatics file's own row; the regulator's refused with another valve
-  // model, which would ignore them
-  std::vector<std::string> regulator_rows;
-  KeyTable given = valve_key_table(&sc->pneumatics, &regulator_rows);
-  for (const std::string& name : regulator_rows) {
-    const std::string key = "valve." + name;
+  // model, which would ignore them, and where not given, no default of the scenario's
+  const std::vector<KeyTable> tables = valve_key_tables(&sc->pneumatics);
+  const KeyTable& regulator = tables.at(1);
+  for (const std::string& key : key_names(regulator)) {
     in.check(!in.has(key) || sc->valve_model == ValveModel::kRegulator, key,
              "is used only by valve.model = \"regulator\", not \"" + valve + "\"");
   }
-  // a regulator key the scenario does not give is no default of the scenario's: the file's
-  const auto is_regulator_and_absent = [&](const auto& row) {
-    return !in.has("valve." + row.name) &&
-           std::find(regulator_rows.begin(), regulator_rows.end(), row.name) !=
-               regulator_rows.end();
-  };
-  const auto drop_absent = [&](auto* rows) {
-    rows->erase(std::remove_if(rows->begin(), rows->end(), is_regulator_and_absent), rows->end());
-  };
-  drop_absent(&given.choices);
-  drop_absent(&given.numbers);
-  read_key_rows(in, given);
+  read_key_rows(in, tables.at(0));
+  read_key_rows(in, rows_given(in, regulator));
   // a rig's supply and command range, and the loop's restrictions, must make sense together
   for (const char* key : {"valve.supply_MPa", "valve.command_max_MPa",
                           "valve.supply_critical_pressure_ratio",

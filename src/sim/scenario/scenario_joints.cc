@@ -4,60 +4,32 @@
 // leg starts crouched or a trunk high above the ground).
 // Whether the joint exists, and is of the kind its keys' units say, is checked when the
 // model is bound (trial_model.cc).
-#include "base/format.h"
-#include "base/units.h"
+#include "base/key_table.h"
+#include "sim/scenario/scenario_key_tables.h"
 #include "sim/scenario/scenario_reading.h"
 
 namespace pamsim {
-namespace {
-
-// the key's value, >= 0 and at most `max`; NaN when not given
-double read_loss(ConfigReader& in, const std::string& key, double max, const char* unit) {
-  if (!in.has(key)) return std::numeric_limits<double>::quiet_NaN();
-  const double v = in.require_double(key);
-  in.check(v >= 0.0 && v <= max, key, "must be in [0, " + format_value(max) + "] " + unit +
-                                          ", got " + format_value(v));
-  return v;
-}
-
-// the key's value in [-max, max], in SI (times `si`); NaN when not given
-double read_start(ConfigReader& in, const std::string& key, double max, const char* unit,
-                  double si) {
-  if (!in.has(key)) return std::numeric_limits<double>::quiet_NaN();
-  const double v = in.require_double(key);
-  in.check(v >= -max && v <= max, key, "must be in [-" + format_value(max) + ", " +
-                                           format_value(max) + "] " + unit + ", got " +
-                                           format_value(v));
-  return v * si;
-}
-
-}  // namespace
 
 void read_joints(ConfigReader& in, Scenario* sc) {
   for (const std::string& name : in.child_keys("joints")) {
     JointSpec j;
     j.key = "joints." + name;
     j.joint = name;
-    const bool hinge = in.has(j.key + ".damping_N_m_s_per_rad") ||
-                       in.has(j.key + ".frictionloss_N_m") || in.has(j.key + ".start_deg");
-    const bool slide = in.has(j.key + ".damping_N_s_per_m") ||
-                       in.has(j.key + ".frictionloss_N") || in.has(j.key + ".start_mm");
-    in.check(!(hinge && slide), j.key, "mixes a hinge's keys (damping_N_m_s_per_rad, "
-                                       "frictionloss_N_m, start_deg) with a slide's "
-                                       "(damping_N_s_per_m, frictionloss_N, start_mm)");
-    in.check(hinge || slide, j.key, "gives none of damping_N_m_s_per_rad, frictionloss_N_m, "
-                                    "start_deg (a hinge), damping_N_s_per_m, frictionloss_N, "
-                                    "start_mm (a slide)");
-    j.rotational = hinge;
-    if (hinge) {
-      j.damping = read_loss(in, j.key + ".damping_N_m_s_per_rad", 1e4, "N m s/rad");
-      j.frictionloss = read_loss(in, j.key + ".frictionloss_N_m", 1e4, "N m");
-      j.start = read_start(in, j.key + ".start_deg", 360.0, "deg", units::deg_to_rad(1.0));
-    } else {
-      j.damping = read_loss(in, j.key + ".damping_N_s_per_m", 1e6, "N s/m");
-      j.frictionloss = read_loss(in, j.key + ".frictionloss_N", 1e6, "N");
-      j.start = read_start(in, j.key + ".start_mm", 1e4, "mm", units::mm_to_m(1.0));
-    }
+    KeyTable hinge = hinge_key_table(&j), slide = slide_key_table(&j);
+    hinge.name = slide.name = j.key;
+    const auto gives = [&](const KeyTable& t) { return !rows_given(in, t).numbers.empty(); };
+    const auto list = [](const KeyTable& t) {
+      std::string names;
+      for (const NumberRow& row : t.numbers) names += (names.empty() ? "" : ", ") + row.name;
+      return names;
+    };
+    const bool is_hinge = gives(hinge), is_slide = gives(slide);
+    in.check(!(is_hinge && is_slide), j.key, "mixes a hinge's keys (" + list(hinge) +
+                                                 ") with a slide's (" + list(slide) + ")");
+    in.check(is_hinge || is_slide, j.key, "gives none of " + list(hinge) + " (a hinge), " +
+                                              list(slide) + " (a slide)");
+    j.rotational = is_hinge;
+    read_key_rows(in, rows_given(in, is_hinge ? hinge : slide));
     sc->joints.push_back(j);
   }
 }

@@ -83,12 +83,6 @@ std::vector<KeyDoc> event_docs() {
   return {
       {"bodies.<body>.mass_kg", "kg", "(the model's)", "(0, 1000]", "a body's mass, in place of the model's (its inertia scaled with it)"},
       {"bodies.<body>.inertia_kg_m2", "kg m^2", "(the model's)", "[I1, I2, I3], each in (0, 1000], each <= the sum of the others", "a body's principal moments of inertia about its centre of mass, in place of the model's"},
-      {"joints.<joint>.damping_N_m_s_per_rad", "N m s/rad", "(the model's)", "[0, 1e4]; a hinge", "the joint's viscous damping (MuJoCo damping), e.g. a bearing's"},
-      {"joints.<joint>.frictionloss_N_m", "N m", "(the model's)", "[0, 1e4]; a hinge", "the joint's dry friction torque (MuJoCo frictionloss)"},
-      {"joints.<joint>.start_deg", "deg", "(the model's)", "[-360, 360]; a hinge", "the joint's angle at the start"},
-      {"joints.<joint>.start_mm", "mm", "(the model's)", "[-1e4, 1e4]; a slide", "the joint's position at the start"},
-      {"joints.<joint>.damping_N_s_per_m", "N s/m", "(the model's)", "[0, 1e6]; a slide", "the joint's viscous damping (MuJoCo damping)"},
-      {"joints.<joint>.frictionloss_N", "N", "(the model's)", "[0, 1e6]; a slide", "the joint's dry friction force (MuJoCo frictionloss)"},
       {"holds.<body>.above_site", "", "(none)", "a site of the model", "hold the body above this site until released"},
       {"holds.<body>.height_m", "m", "0.0", "[0, 10]", "the held body's bottom above the site"},
       {"holds.<body>.position_m", "m", "(none)", "[x, y, z]", "hold the body here instead (not with above_site)"},
@@ -115,14 +109,29 @@ std::vector<KeyDoc> event_docs() {
 // defaulting to the file's value
 std::vector<KeyDoc> valve_docs() {
   PneumaticParams defaults;
-  std::vector<std::string> regulator_rows;
-  std::vector<KeyDoc> docs = key_table_docs({valve_key_table(&defaults, &regulator_rows)});
-  for (KeyDoc& d : docs) {
-    const std::string name = d.key.substr(d.key.find('.') + 1);
-    const bool regulator = std::find(regulator_rows.begin(), regulator_rows.end(), name) !=
-                           regulator_rows.end();
-    d.fallback = regulator ? "(model.pneumatics' [regulator])" : "(model.pneumatics')";
-    if (regulator) d.allowed += "; valve.model = \"regulator\"";
+  const std::vector<KeyTable> tables = valve_key_tables(&defaults);
+  std::vector<KeyDoc> docs = key_table_docs({tables.at(0)});
+  for (KeyDoc& d : docs) d.fallback = "(model.pneumatics')";
+  for (KeyDoc d : key_table_docs({tables.at(1)})) {
+    d.fallback = "(model.pneumatics' [regulator])";
+    d.allowed += "; valve.model = \"regulator\"";
+    docs.push_back(d);
+  }
+  return docs;
+}
+
+// joints.<joint>.*: a hinge's rows and a slide's (scenario_key_tables.h)
+std::vector<KeyDoc> joint_docs() {
+  JointSpec defaults;
+  std::vector<KeyDoc> docs;
+  const std::pair<KeyTable, const char*> kinds[] = {{hinge_key_table(&defaults), "; a hinge"},
+                                                    {slide_key_table(&defaults), "; a slide"}};
+  for (const auto& [table, kind] : kinds) {
+    for (KeyDoc d : key_table_docs({table})) {
+      d.fallback = "(the model's)";
+      d.allowed += kind;
+      docs.push_back(d);
+    }
   }
   return docs;
 }
@@ -177,7 +186,7 @@ std::vector<KeyDoc> controller_docs() {
 
 std::vector<KeyDoc> all_docs() {
   std::vector<KeyDoc> docs;
-  for (const std::vector<KeyDoc>& part : {model_docs(), valve_docs(), time_and_drop_docs(), event_docs(),
+  for (const std::vector<KeyDoc>& part : {model_docs(), valve_docs(), joint_docs(), time_and_drop_docs(), event_docs(),
                                           controller_docs(), sensor_docs(), instrument_docs()}) {
     docs.insert(docs.end(), part.begin(), part.end());
   }

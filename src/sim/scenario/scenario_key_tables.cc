@@ -4,6 +4,7 @@
 #include <cassert>
 #include <limits>
 
+#include "base/units.h"
 #include "pneumatics/pneumatic_params.h"
 
 namespace pamsim {
@@ -37,23 +38,45 @@ KeyTable drop_key_table(DropShorthand* drop) {
   return t;
 }
 
-KeyTable valve_key_table(PneumaticParams* pneumatics, std::vector<std::string>* regulator_rows) {
-  KeyTable t = pneumatic_regulator_table(pneumatics);
-  for (const NumberRow& row : t.numbers) regulator_rows->push_back(row.name);
-  for (const ChoiceRow& row : t.choices) regulator_rows->push_back(row.name);
-  // the supply and the command range, first, as the file's [supply] and [valve] give them
+std::vector<KeyTable> valve_key_tables(PneumaticParams* pneumatics) {
+  // the supply and the command range, as the file's [supply] and [valve] give them
   const auto file_row = [&](const std::string& table, const std::string& name) {
     for (const KeyTable& file_table : pneumatic_key_table(pneumatics)) {
       for (const NumberRow& row : file_table.numbers) {
         if (file_table.name == table && row.name == name) return row;
       }
     }
-    assert(false && "valve_key_table: no such row of the pneumatics file");
+    assert(false && "valve_key_tables: no such row of the pneumatics file");
     return NumberRow{};
   };
-  t.numbers.insert(t.numbers.begin(),
-                   {file_row("supply", "supply_MPa"), file_row("valve", "command_max_MPa")});
-  t.name = "valve";
+  KeyTable rig{"valve", {file_row("supply", "supply_MPa"), file_row("valve", "command_max_MPa")},
+               {}};
+  KeyTable regulator = pneumatic_regulator_table(pneumatics);
+  regulator.name = "valve";
+  return {rig, regulator};
+}
+
+KeyTable hinge_key_table(JointSpec* joint) {
+  KeyTable t{"joints.<joint>", {}, {}, {}};
+  t.numbers = {
+      {"damping_N_m_s_per_rad", "N m s/rad", 1.0, {0.0, 1e4, false, false},
+       "the hinge's viscous damping (MuJoCo damping), e.g. a bearing's", &joint->damping},
+      {"frictionloss_N_m", "N m", 1.0, {0.0, 1e4, false, false},
+       "the hinge's dry friction torque (MuJoCo frictionloss)", &joint->frictionloss},
+      {"start_deg", "deg", units::deg_to_rad(1.0), {-360.0, 360.0, false, false},
+       "the hinge's angle at the start", &joint->start}};
+  return t;
+}
+
+KeyTable slide_key_table(JointSpec* joint) {
+  KeyTable t{"joints.<joint>", {}, {}, {}};
+  t.numbers = {
+      {"damping_N_s_per_m", "N s/m", 1.0, {0.0, 1e6, false, false},
+       "the slide's viscous damping (MuJoCo damping)", &joint->damping},
+      {"frictionloss_N", "N", 1.0, {0.0, 1e6, false, false},
+       "the slide's dry friction force (MuJoCo frictionloss)", &joint->frictionloss},
+      {"start_mm", "mm", units::mm_to_m(1.0), {-1e4, 1e4, false, false},
+       "the slide's position at the start", &joint->start}};
   return t;
 }
 

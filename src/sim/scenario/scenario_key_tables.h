@@ -1,6 +1,6 @@
 // scenario_key_tables.h: the scenario's own tables as key-table rows (base/key_table.h): [sim],
-// trial's time, [drop], the falling-mass shorthand's numbers, and [valve], a rig's own point
-// of the pneumatics file's supply, command range and regulator. Each key's unit, range,
+// trial's time, [drop], the falling-mass shorthand's numbers, [valve], a rig's own point of
+// the pneumatics file's supply, command range and regulator, and joints.<joint>. Each key's unit, range,
 // default and meaning is one row, which the reader (scenario_file.cc, scenario_events.cc),
 // `pamsim keys` and the tests read. What joins keys stays with the reader: a control rate
 // that divides the physics rate, the steps a trial takes, a drop before the trial's end.
@@ -36,11 +36,17 @@ struct DropShorthand {
 KeyTable drop_key_table(DropShorthand* drop);
 
 // [valve]'s numbers and choices (valve.model, a name of the reader's, aside): the pneumatics
-// file's own rows (pneumatic_params.h), bound to `pneumatics`: [supply].supply_MPa,
-// [valve].command_max_MPa and every [regulator] row, with their units, ranges and meanings,
-// so that a scenario or a sweep axis picks a point of the file's bracket by the file's rows.
-// The regulator's rows are listed in `regulator_rows`, which valve.model = "regulator" must
-// accompany (another valve model would ignore them).
-KeyTable valve_key_table(PneumaticParams* pneumatics, std::vector<std::string>* regulator_rows);
+// file's own rows (pneumatic_params.h), bound to `pneumatics`, so that a scenario or a sweep
+// axis picks a point of the file's bracket by the file's rows. Two tables, both "valve": a
+// rig's supply and command range ([supply].supply_MPa, [valve].command_max_MPa), then every
+// [regulator] row, which valve.model = "regulator" must accompany (another valve model would
+// ignore them).
+std::vector<KeyTable> valve_key_tables(PneumaticParams* pneumatics);
+
+// joints.<joint> (its table name "joints.<joint>", a placeholder a reader replaces with the
+// joint's name), bound to `joint`: a hinge's damping, friction loss and start angle, or a
+// slide's (their units in their names). Each is optional (NaN: the model's own).
+KeyTable hinge_key_table(JointSpec* joint);
+KeyTable slide_key_table(JointSpec* joint);
 
 }  // namespace pamsim
