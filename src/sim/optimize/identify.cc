@@ -163,6 +163,12 @@ void polish(const IdentifyDefinition& def, PolishProblem& p, const IdentifyRunOp
   o.linear_solver_type = ceres::DENSE_QR;
   o.max_num_iterations = def.polish_iterations;
   o.num_threads = 1;   // the recordings of each point run in parallel instead
+  // With bounds, Ceres searches along each step before it tries it (a projected Armijo line
+  // search, trust_region_minimizer.cc). With its default cubic interpolation the search asks
+  // for the gradient at each trial step, here a whole Jacobian of differences (two trials per
+  // parameter), wasted whenever the step is then rejected; quadratic interpolation fits
+  // through the cost and slope at the start and needs only the cost at a trial step.
+  o.line_search_interpolation_type = ceres::QUADRATIC;
   StopCallback stop(options.stop);
   o.callbacks.push_back(&stop);
   ceres::Solver::Summary summary;
