@@ -3,7 +3,8 @@
 // scenario, every key it can take (its muscles', holds' and events' keys by name) with the
 // value in effect and whether that is the default. `--pneumatics`: the pneumatics file's keys
 // instead (model.pneumatics, pneumatics.<table>.<field>), from its reader's key table;
-// `--identify`, `--tune`: an identification or tuning file's top-level keys, from their rows.
+// `--identify`, `--tune`, `--sweep`: an identification, tuning or sweep file's top-level keys,
+// from their rows.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -14,6 +15,7 @@
 #include "sim/cli/commands.h"
 #include "sim/optimize/identify_file.h"
 #include "sim/optimize/tuning_file.h"
+#include "sim/sweep/sweep.h"
 #include "sim/scenario/scenario_file.h"
 #include "sim/scenario/scenario_key_docs.h"
 
@@ -27,6 +29,7 @@ struct KeysOptions {
   bool pneumatics = false;
   bool identify = false;
   bool tune = false;
+  bool sweep = false;
 };
 
 nlohmann::json doc_json(const KeyDoc& d) {
@@ -50,21 +53,23 @@ void print_docs(const std::vector<KeyDoc>& docs, bool json) {
   if (json) std::cout << all.dump(2) << "\n";
 }
 
-// --pneumatics, --identify or --tune: another file's keys, which take no scenario
+// --pneumatics, --identify, --tune or --sweep: another file's keys, which take no scenario
 bool print_file_keys(const KeysOptions& opt) {
-  if (opt.pneumatics + opt.identify + opt.tune == 0) return false;
-  if (opt.pneumatics + opt.identify + opt.tune > 1) {
-    throw InputError("--pneumatics, --identify and --tune list different files' keys: give one");
-  }
+  const int files = opt.pneumatics + opt.identify + opt.tune + opt.sweep;
+  if (files == 0) return false;
+  const std::string flags = "--pneumatics, --identify, --tune and --sweep";
+  if (files > 1) throw InputError(flags + " list different files' keys: give one");
   if (!(opt.scenario.empty() && opt.overrides.empty())) {
-    throw InputError("--pneumatics, --identify and --tune list a file's keys: they take no "
-                     "scenario or --set");
+    throw InputError(flags + " list a file's keys: they take no scenario or --set");
   }
   IdentifyDefinition identify;   // the rows' defaults are the structs' own
   TuneDefinition tune;
+  SweepDefinition sweep;
   print_docs(opt.pneumatics ? pneumatic_key_docs()
              : opt.identify ? key_table_docs({identify_search_table(&identify)})
-                            : key_table_docs({tune_search_table(&tune)}),
+             : opt.tune     ? key_table_docs({tune_search_table(&tune)})
+                            : key_table_docs({sweep_design_table(&sweep),
+                                              sweep_sampling_table(&sweep)}),
              opt.json);
   return true;
 }
@@ -115,6 +120,9 @@ void add_keys_command(CLI::App& app) {
   cmd->add_flag("--tune", opt->tune,
                 "A tuning file's search keys (algorithm, generations, population, seed, seeds, "
                 "held_out_seeds) instead of the scenario's");
+  cmd->add_flag("--sweep", opt->sweep,
+                "A sweep file's design keys (design, seeds, max_trials, samples, design_seed) "
+                "instead of the scenario's");
 }
 
 }  // namespace pamsim

@@ -6,12 +6,8 @@
 //
 // Sweep file keys:
 //   base         scenario file (path, relative to the sweep file)            required
-//   seeds        seeds per point, >= 1                                         default 1
-//   design       "grid" | "random" | "lhs"                                     default "grid"
-//   samples      points of a random or lhs design, >= 1                        (not for grid)
-//   design_seed  seed of the random or lhs design, >= 0                        default 1
-//   max_trials   the most trials (points x seeds) the sweep may hold, >= 1     default 10^6
-//                (a cap against a typo that asks for 10^20 trials; raise it for a big sweep)
+//   design, seeds, max_trials, and samples, design_seed (random and lhs only): rows of
+//                sweep_design_table and sweep_sampling_table below (`pamsim keys --sweep`)
 //   [fixed]      scenario keys set at every point, as in the scenario: [fixed.sim] duration_s = 2
 //   [[axis]]     key = "reflex.v_thr_mm_s", and either
 //                  values = [..]                       (grid only), or
@@ -24,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "base/key_table.h"
 #include "sim/scenario/randomize.h"
 
 namespace pamsim {
@@ -117,6 +114,16 @@ std::int64_t grid_points(const std::vector<SweepAxis>& axes, std::int64_t cap);
 // Fills def->point_values from its axes and design (the grid row-major, the first axis
 // varying slowest; random and lhs drawn from design_seed).
 void make_points(SweepDefinition* def);
+
+// The most a count key (seeds, max_trials, samples) allows: 10^12, far past any sweep, and
+// far from a product's overflow.
+inline constexpr std::int64_t kMaxCount = 1000000000000;
+
+// The sweep file's top-level keys as rows (base/key_table.h), bound to `def`: design, seeds
+// and max_trials; and samples and design_seed, which only a random or lhs design reads. The
+// reader, `pamsim keys --sweep` and the tests read them.
+KeyTable sweep_design_table(SweepDefinition* def);
+KeyTable sweep_sampling_table(SweepDefinition* def);
 
 // Reads and validates a sweep file (sweep_file.cc), including every point's scenario. Throws InputError
 // "<file>: <key> <problem>" for the first problem found.

@@ -187,33 +187,26 @@ constexpr std::int64_t kCheckedDraws = 100;
 
 const std::string kRaise = " (raise max_trials to run it)";
 
-// design, max_trials, seeds, and for random/lhs samples and design_seed
+// design, max_trials, seeds (rows), and for random/lhs samples and design_seed (rows that a
+// grid refuses); then what joins them: the trials within max_trials
 void read_design(ConfigReader& in, SweepDefinition* def) {
-  const std::string design = in.get_string("design", "grid");
-  def->design = parse_sweep_design(design, in.name() + ": design");
-
-  def->max_trials = in.get_int("max_trials", def->max_trials);
-  in.check(def->max_trials >= 1, "max_trials",
-           "must be >= 1, got " + std::to_string(def->max_trials));
-  def->seeds = in.get_int("seeds", 1);
-  in.check(def->seeds >= 1, "seeds", "must be >= 1, got " + std::to_string(def->seeds));
+  read_key_rows(in, sweep_design_table(def));
   in.check(def->seeds <= def->max_trials, "seeds",
            "is " + std::to_string(def->seeds) + ", more trials than max_trials = " +
                std::to_string(def->max_trials) + kRaise);
+  const KeyTable sampling = sweep_sampling_table(def);
   if (def->design == SweepDesign::kGrid) {
-    in.check(!in.has("samples"), "samples", "is for random and lhs designs");
-    in.check(!in.has("design_seed"), "design_seed", "is for random and lhs designs");
+    for (const std::string& key : key_names(sampling)) {
+      in.check(!in.has(key), key, "is for random and lhs designs");
+    }
     return;
   }
-  def->samples = in.get_int("samples", 0);
-  in.check(def->samples >= 1, "samples", "must be >= 1 for a " + design + " design, got " +
-                                             std::to_string(def->samples));
+  in.check(in.has("samples"), "samples",
+           std::string("is required for a ") + sweep_design_name(def->design) + " design");
+  read_key_rows(in, sampling);
   in.check(def->samples <= def->max_trials / def->seeds, "samples",
            std::to_string(def->samples) + " x seeds " + std::to_string(def->seeds) +
                " is more trials than max_trials = " + std::to_string(def->max_trials) + kRaise);
-  const std::int64_t seed = in.get_int("design_seed", 1);
-  in.check(seed >= 0, "design_seed", "must be >= 0, got " + std::to_string(seed));
-  def->design_seed = static_cast<std::uint64_t>(seed);
 }
 
 // base (its text) and [fixed]
@@ -313,6 +306,31 @@ void check_points(SweepDefinition* def) {
 }
 
 }  // namespace
+
+KeyTable sweep_design_table(SweepDefinition* def) {
+  KeyTable t{"", {}, {}, {}};
+  t.choices = {{"design", {"grid", "random", "lhs"},
+                "how the axes become points: their full grid, uniform random draws, or a Latin "
+                "hypercube",
+                [def](const std::string& v) { def->design = parse_sweep_design(v, "design"); },
+                [def] { return std::string(sweep_design_name(def->design)); }}};
+  t.ints = {int_row("seeds", "seeds per point (common to every point)", 1, kMaxCount, &def->seeds),
+            int_row("max_trials",
+                    "the most trials (points x seeds) the sweep may hold: a cap against a typo "
+                    "that asks for 10^20 trials; raise it for a big sweep",
+                    1, kMaxCount, &def->max_trials)};
+  return t;
+}
+
+KeyTable sweep_sampling_table(SweepDefinition* def) {
+  KeyTable t{"", {}, {}, {}};
+  t.ints = {int_row("samples", "points of a random or lhs design (required there)", 1, kMaxCount,
+                    &def->samples),
+            int_row("design_seed", "seed of the random or lhs design's draws", 0,
+                    std::int64_t{1} << 62, &def->design_seed)};
+  return t;
+}
+
 
 SweepDefinition load_sweep(const std::string& path) {
   ConfigReader in(path);

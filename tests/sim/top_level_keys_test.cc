@@ -1,8 +1,9 @@
-// search_file_keys_test.cc: an identification file's and a tuning file's top-level keys as
-// rows (identify_file.h's identify_search_table, tuning_file.h's tune_search_table): a bad
-// value of every row, generated from the row, is refused in one line naming the file and the
-// key; a value reaches its field; and `pamsim keys --identify` / `--tune` list each row once
-// with the struct's default.
+// top_level_keys_test.cc: an identification, a tuning and a sweep file's top-level keys as
+// rows (identify_file.h's identify_search_table, tuning_file.h's tune_search_table, sweep.h's
+// sweep_design_table and sweep_sampling_table): a bad value of every row, generated from the
+// row, is refused in one line naming the file and the key; a value reaches its field; and
+// `pamsim keys --identify` / `--tune` / `--sweep` list each row once with the struct's
+// default.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include "identify_test_arm.h"
 #include "sim/optimize/identify_file.h"
 #include "sim/optimize/tuning_file.h"
+#include "sim/sweep/sweep.h"
 #include "sim/test_paths.h"
 
 namespace pamsim {
@@ -130,6 +132,49 @@ TEST(IdentifyKeysTest, AValueReachesItsFieldAndKeysListsEveryRowOnce) {
   const pamsim_test::CliResult both = pamsim_test::run_pamsim("keys --identify --pneumatics");
   EXPECT_EQ(both.exit_code, 2);
   EXPECT_EQ(pamsim_test::line_count(both.err), 1) << both.err;
+}
+
+// A one-axis sweep of the drop-mass scenario with `top` first: a grid, or with `sampled` a
+// random design of two samples unless `top` gives them.
+std::string sweep_keys_file(const fs::path& dir, const std::string& top, bool sampled) {
+  const bool own_samples = top.rfind("samples", 0) == 0;
+  const std::string design = !sampled ? "" : own_samples ? "design = \"random\"\n"
+                                                         : "design = \"random\"\nsamples = 2\n";
+  pamsim_test::write_text(
+      dir / "sweep.toml",
+      design + top + "\nbase = \"" + pamsim_test::kDropMass + "\"\n[[axis]]\n"
+      "key = \"reflex.v_thr_mm_s\"\n" +
+          (sampled ? "from = 50.0\nto = 80.0\n" : "values = [60.0]\n"));
+  return (dir / "sweep.toml").string();
+}
+
+TEST(SweepKeysTest, EveryRowRefusesABadValueAndAGridRefusesTheSamplingKeys) {
+  const fs::path dir = pamsim_test::fresh_dir("sweep_keys_bad");
+  SweepDefinition defaults;
+  const auto load = [](const std::string& path) { load_sweep(path); };
+  int refused = expect_every_row_refused(
+      sweep_design_table(&defaults),
+      [&](const std::string& line) { return sweep_keys_file(dir, line, false); }, load);
+  refused += expect_every_row_refused(
+      sweep_sampling_table(&defaults),
+      [&](const std::string& line) { return sweep_keys_file(dir, line, true); }, load);
+  EXPECT_EQ(refused, 4 * 4 + 2);
+  for (const std::string& key : key_names(sweep_sampling_table(&defaults))) {
+    const std::string path = sweep_keys_file(dir, key + " = 3", false);
+    EXPECT_EQ(refusal_parts([&] { load_sweep(path); }, key + " with a grid").key, key);
+  }
+  const SweepDefinition s =
+      load_sweep(sweep_keys_file(dir, "design_seed = 7\nseeds = 3\nmax_trials = 10", true));
+  EXPECT_EQ(s.design, SweepDesign::kRandom);
+  EXPECT_EQ(s.samples, 2);
+  EXPECT_EQ(s.design_seed, 7u);
+  EXPECT_EQ(s.seeds, 3);
+  EXPECT_EQ(s.max_trials, 10);
+  const pamsim_test::CliResult r = pamsim_test::run_pamsim("keys --sweep --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::map<std::string, int> listed;
+  for (const auto& j : nlohmann::json::parse(r.out)) ++listed[j["key"]];
+  EXPECT_EQ(listed, row_keys({sweep_design_table(&defaults), sweep_sampling_table(&defaults)}));
 }
 
 }  // namespace
