@@ -133,3 +133,19 @@ def test_gymnasiums_sync_and_async_vector_envs_run_it_alike():
     asynchronous = gymnasium.make_vec("pamsim/DropMass-v0", vectorization_mode="async",
                                       **kwargs)
     assert vector_episode(sync, 20) == vector_episode(asynchronous, 20)
+
+
+def test_a_slide_joints_scenario_observes_and_rewards_in_mm():
+    from pamsim.envs.drop_mass import data_dir
+
+    scenario = str(data_dir() / "scenarios" / "pulley_sine_5kg.toml")
+    env = make(scenario=scenario, observation="privileged", randomize=False, duration_s=0.3)
+    obs, _ = env.reset(seed=1)
+    assert obs.shape == env.observation_space.shape
+    o = env.unwrapped._trial.observe()
+    assert "position_mm" in o and "angle_deg" not in o
+    assert obs[-2] == o["position_mm"] and obs[-1] == o["velocity_mm_s"]
+    _, reward, _, _, _ = env.step(env.action_space.high)
+    moved = env.unwrapped._trial.observe()["position_mm"] - env.unwrapped._start_position
+    assert reward == pytest.approx(-abs(moved) * 0.01, rel=1e-9)   # 100 Hz control
+    env.close()

@@ -15,7 +15,8 @@ Observation (float64), per muscle in model order: measured pressure [MPa], gauge
 estimated length [mm], estimated stretch velocity [mm/s], as the trial log's columns
 p_meas_<m>_MPa, force_meas_<m>_N, length_est_<m>_mm, velocity_est_<m>_mm_s have them at the
 same tick; with ``fiber=True`` also the fiber sensor's rate [mm/s] (fiber_rate_<m>_mm_s);
-with ``observation="privileged"`` also the true angle [deg] and angular velocity [deg/s].
+with ``observation="privileged"`` also the true angle [deg] and angular velocity [deg/s] (on
+a scenario whose measured joint is a slide: its position [mm] and velocity [mm/s]).
 
 Reward: minus the arm's deviation from its starting angle, |angle - start| [deg], times the
 control period [s] each step (the integral of the deviation, deg s: the posture held against
@@ -59,6 +60,14 @@ def data_dir() -> Path:
     return Path(__file__).resolve().parent.parent / "data"
 
 
+def _joint_state(observation: dict[str, Any]) -> tuple[float, float]:
+    """The measured joint's true position and velocity: a hinge's [deg, deg/s], a slide's
+    [mm, mm/s]."""
+    if "angle_deg" in observation:
+        return observation["angle_deg"], observation["angular_velocity_deg_s"]
+    return observation["position_mm"], observation["velocity_mm_s"]
+
+
 class DropMassEnv(gymnasium.Env[Obs, Act]):
     metadata: dict[str, Any] = {"render_modes": []}
 
@@ -78,7 +87,7 @@ class DropMassEnv(gymnasium.Env[Obs, Act]):
         self.mass_lost_penalty = mass_lost_penalty
         self.noise_scale = noise_scale
         self._trial: Trial | None = None
-        self._start_angle_deg = 0.0
+        self._start_position = 0.0
         self._warned = False
         self._time_s = 0.0
         self.last_result: Any = None
@@ -112,7 +121,7 @@ class DropMassEnv(gymnasium.Env[Obs, Act]):
         names = MEASURED + (("fiber_rate_mm_s",) if self.fiber else ())
         values = [m[name][i] for i in range(len(self.muscles)) for name in names]
         if self.privileged:
-            values += [o["angle_deg"], o["angular_velocity_deg_s"]]
+            values += list(_joint_state(o))
         return np.array(values, dtype=np.float64)
 
     def reset(self, *, seed: int | None = None,
@@ -126,7 +135,7 @@ class DropMassEnv(gymnasium.Env[Obs, Act]):
         overrides = self._draws_as_overrides(draws)
         sensor_seed = int(rng.integers(1, 2**31))
         self._trial = Trial(self.scenario, overrides, seed=sensor_seed)
-        self._start_angle_deg = self._trial.observe()["angle_deg"]
+        self._start_position = _joint_state(self._trial.observe())[0]
         self._trial.step()   # the first tick with the scenario's own commands
         self._time_s = self._trial.observe()["time_s"]
         self._warned = False
@@ -155,7 +164,7 @@ class DropMassEnv(gymnasium.Env[Obs, Act]):
         o = self._trial.observe()
         period_s = o["time_s"] - self._time_s   # the control period just run
         self._time_s = o["time_s"]
-        reward = -abs(o["angle_deg"] - self._start_angle_deg) * period_s
+        reward = -abs(_joint_state(o)[0] - self._start_position) * period_s
         obs = self._observe()
         if running and not self._trial.done:
             return obs, reward, False, False, {}
