@@ -51,11 +51,35 @@ class IdentifyObjective : public Objective {
   std::size_t n_;
 };
 
-// CMA-ES over the box; its best point (the middle without generations).
-std::vector<double> global_search(const IdentifyDefinition& def, IdentifyResiduals& residuals,
-                                  const IdentifyRunOptions& options, bool* interrupted) {
+// The polish's starts from CMA-ES's points: the best, then the next best that lie at least
+// kStartSpacing of the box (in some parameter) from every start chosen, up to def.starts; the
+// middle of the box alone without generations.
+constexpr double kStartSpacing = 0.1;
+std::vector<std::vector<double>> distinct_starts(const IdentifyDefinition& def,
+                                                 std::vector<Evaluation> history) {
+  std::stable_sort(history.begin(), history.end(), [](const Evaluation& a, const Evaluation& b) {
+    return a.fitness.at(0) < b.fitness.at(0);
+  });
+  std::vector<std::vector<double>> starts;
+  for (const Evaluation& e : history) {
+    if (starts.size() >= static_cast<std::size_t>(def.starts)) break;
+    const bool apart = std::all_of(starts.begin(), starts.end(), [&](const auto& s) {
+      double d = 0.0;
+      for (std::size_t i = 0; i < s.size(); ++i) d = std::max(d, std::abs(s[i] - e.unit[i]));
+      return d >= kStartSpacing;
+    });
+    if (apart) starts.push_back(e.unit);
+  }
+  return starts;
+}
+
+// CMA-ES over the box; the polish's starts (distinct_starts).
+std::vector<std::vector<double>> global_search(const IdentifyDefinition& def,
+                                               IdentifyResiduals& residuals,
+                                               const IdentifyRunOptions& options,
+                                               bool* interrupted) {
   const std::size_t n = def.parameters.size();
-  if (def.generations == 0) return std::vector<double>(n, 0.5);
+  if (def.generations == 0) return {std::vector<double>(n, 0.5)};
   IdentifyObjective objective(residuals, n);
   std::vector<Evaluation> history;
   struct Recorder : Objective {   // keeps every evaluation for the best one
@@ -76,8 +100,9 @@ std::vector<double> global_search(const IdentifyDefinition& def, IdentifyResidua
   search.stop = options.stop;
   const SearchSettings settings{SearchAlgorithm::kCmaes, def.generations, def.population, def.seed};
   *interrupted = run_search(settings, recorder, {}, search).interrupted;
-  const Evaluation* best = best_evaluation(history);
-  return best ? best->unit : std::vector<double>(n, 0.5);
+  std::vector<std::vector<double>> starts = distinct_starts(def, history);
+  if (starts.empty()) starts.push_back(std::vector<double>(n, 0.5));
+  return starts;
 }
 
 // Ceres's view of the residuals: one parameter block of size 1 per parameter, the Jacobian by
@@ -181,6 +206,36 @@ void polish(const IdentifyDefinition& def, PolishProblem& p, const IdentifyRunOp
   result->polish_summary = summary.BriefReport();
 }
 
+// The polish from every start in turn: every end in result->starts; the problem whose end is
+// lowest (the earlier start of equals) returned, its polish's report in *result.
+std::unique_ptr<PolishProblem> polish_from_starts(const IdentifyDefinition& def,
+                                                  IdentifyResiduals& residuals,
+                                                  const std::vector<std::vector<double>>& starts,
+                                                  const IdentifyRunOptions& options,
+                                                  IdentifyResult* result) {
+  std::unique_ptr<PolishProblem> best;
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    auto problem = std::make_unique<PolishProblem>(residuals, starts[k]);
+    IdentifyResult report;
+    if (!result->interrupted) polish(def, *problem, options, &report);
+    result->interrupted = result->interrupted || report.interrupted;
+    PolishEnd end{starts[k], problem->unit, 0.0, report.polish_converged};
+    for (double& u : end.end) u = std::clamp(u, 0.0, 1.0);
+    end.cost = sum_of_squares(residuals.at(end.end, "polish"));
+    if (!best || end.cost < result->starts[result->best_start].cost) {
+      best = std::move(problem);
+      result->best_start = k;
+      result->polish_summary = report.polish_summary;
+      result->polish_failed = report.polish_failed;
+      result->polish_converged = report.polish_converged;
+      result->polish_iterations = report.polish_iterations;
+    }
+    result->starts.push_back(std::move(end));
+    if (result->interrupted) break;
+  }
+  return best;
+}
+
 // The residuals and their Jacobian at p.unit, dense (residuals x parameters); an empty
 // Jacobian if they cannot be evaluated.
 void evaluate_dense(PolishProblem& p, Eigen::MatrixXd* jacobian, Eigen::VectorXd* residuals) {
@@ -266,16 +321,15 @@ IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
   IdentifyResiduals residuals(def, db, options.threads);
   result.residuals = residuals.count();
   auto t0 = Clock::now();
-  const std::vector<double> start = global_search(def, residuals, options, &result.interrupted);
-  result.cost_global = sum_of_squares(residuals.at(start, "global"));
+  const std::vector<std::vector<double>> polish_starts =
+      global_search(def, residuals, options, &result.interrupted);
+  result.cost_global = sum_of_squares(residuals.at(polish_starts.front(), "global"));
   result.global_s = seconds_since(t0);
   t0 = Clock::now();
-  PolishProblem problem(residuals, start);
-  if (!result.interrupted) polish(def, problem, options, &result);
-  result.unit = problem.unit;
-  for (double& u : result.unit) u = std::clamp(u, 0.0, 1.0);
-  const std::vector<double> final_residuals = residuals.at(result.unit, "polish");
-  result.cost_final = sum_of_squares(final_residuals);
+  const std::unique_ptr<PolishProblem> problem =
+      polish_from_starts(def, residuals, polish_starts, options, &result);
+  result.unit = result.starts[result.best_start].end;
+  result.cost_final = result.starts[result.best_start].cost;
   if (!std::isfinite(result.cost_final) && !result.interrupted) {
     throw InputError(def.file + ": no point of the search ran its recordings' trials to the end "
                      "(the first failure: " + residuals.first_failure() + ")");
@@ -297,7 +351,7 @@ IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
   }
   Eigen::MatrixXd jacobian;
   Eigen::VectorXd at_result;
-  evaluate_dense(problem, &jacobian, &at_result);
+  evaluate_dense(*problem, &jacobian, &at_result);
   fill_uncertainty(jacobian, at_result, residuals.segments(), result.unit, def.interval, &result);
   result.fits = channel_fits(def, values, options.threads);
   result.check_s = seconds_since(t0);

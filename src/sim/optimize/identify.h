@@ -60,6 +60,13 @@ struct ChannelFit {
                                  // the model explains the channel is unknown (explained false)
 };
 
+// Where one of the polish's starts ended (IdentifyDefinition::starts).
+struct PolishEnd {
+  std::vector<double> start, end;   // in the unit box
+  double cost = 0.0;                // sum of squared residuals at the end
+  bool converged = false;
+};
+
 struct IdentifyResult {
   std::vector<double> unit;                     // the identified point in the unit box
   std::vector<IdentifiedParameter> parameters;
@@ -76,6 +83,10 @@ struct IdentifyResult {
   bool polish_converged = true;                 // Ceres reported CONVERGENCE (or no polish ran)
   int polish_iterations = 0;                    // Levenberg-Marquardt iterations taken
   bool interrupted = false;
+  // every start the polish ran, in the order they were chosen (the global search's best
+  // first), and which of them the result is (the lowest end)
+  std::vector<PolishEnd> starts;
+  std::size_t best_start = 0;
 };
 
 // Throws InputError "<file>: no point of the search ran ..." when no point's trials all ran

@@ -178,7 +178,12 @@ KeyTable identify_search_table(IdentifyDefinition* def) {
       int_row("population", "CMA-ES population", 5, 1000, &def->population),
       int_row("seed", "CMA-ES seed (pagmo's seeds are 32-bit)", 0, 4294967295LL, &def->seed),
       int_row("polish_iterations", "Levenberg-Marquardt iterations of the local polish (Ceres)",
-              0, 1000, &def->polish_iterations)};
+              0, 1000, &def->polish_iterations),
+      int_row("starts",
+              "the polish's starts: the global search's best point, then its best points at "
+              "least 0.1 of the box from every start before (the lowest end is the result; "
+              "one that ends higher is reported as a local minimum)",
+              1, 20, &def->starts)};
   t.numbers = {
       {"interval", "", 1.0, {0.0, 1.0, true, true},
        "the level of the parameters' reported intervals", &def->interval},
@@ -256,6 +261,12 @@ std::string IdentifyDefinition::canonical_json() const {
                             // residuals over the channels' noise floors (pamsim 0.4): a
                             // database of an earlier scale does not resume
                             {"residual_scale", "noise_floor"}};
+  if (starts > 1) {   // (a database of one start resumes as it did)
+    nlohmann::json with = j;
+    with["starts"] = starts;
+    if (!tensile.empty()) with["tensile"] = tensile_json;
+    return with.dump();
+  }
   if (tensile.empty()) return j.dump();
   nlohmann::json with = j;
   with["tensile"] = tensile_json;

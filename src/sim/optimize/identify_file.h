@@ -84,6 +84,7 @@ struct IdentifyDefinition {
   unsigned generations = 6, population = 8;
   std::uint64_t seed = 1;
   int polish_iterations = 30;
+  int starts = 1;   // Levenberg-Marquardt starts (identify.h: IdentifyResult::starts)
   // the reported intervals' level, and the RMS in noise floors within which a fitted channel
   // is explained (identify_uncertainty.h); neither in canonical_json: neither changes the search
   double interval = 0.95;

@@ -9,6 +9,7 @@
 #include "base/file_changes.h"
 #include "base/format.h"
 #include "base/toml_file.h"
+#include "sim/optimize/identify_residuals.h"
 #include "sim/optimize/identify_uncertainty.h"
 #include "sim/scenario/scenario_file.h"
 #include "sim/io/staged_outputs.h"
@@ -132,9 +133,71 @@ void write_identified_files(const IdentifyDefinition& def, const IdentifyResult&
 
 }  // namespace
 
+// Where polish end `e` lies from the result's: the parameter farthest from the result's value
+// in standard errors (among those the recordings determine), else in the unit box;
+// "<key> = <value> against <result's> (<k> standard errors)".
+std::string where_apart(const IdentifyDefinition& def, const IdentifyResult& r,
+                        const PolishEnd& e, double* unit_apart, double* se_apart) {
+  const PolishEnd& best = r.starts[r.best_start];
+  const std::vector<double> at_e = parameter_values(def, e.end);
+  const std::vector<double> at_best = parameter_values(def, best.end);
+  std::size_t by_box = 0, by_se = 0;
+  double most_se = -1.0;   // none determined
+  *unit_apart = 0.0;
+  for (std::size_t i = 0; i < e.end.size(); ++i) {
+    const double d = std::abs(e.end[i] - best.end[i]);
+    if (d > *unit_apart) {
+      *unit_apart = d;
+      by_box = i;
+    }
+    const IdentifiedParameter* p = i < r.parameters.size() ? &r.parameters[i] : nullptr;
+    if (!p || !p->identifiable || !(p->std_error > 0.0)) continue;
+    const double se = std::abs(at_e[i] - at_best[i]) / p->std_error;
+    if (se > most_se) {
+      most_se = se;
+      by_se = i;
+    }
+  }
+  *se_apart = most_se;
+  if (e.end.empty()) return "";
+  const std::size_t i = most_se >= 0.0 ? by_se : by_box;
+  const std::string errors = " (" + format_value(std::round(most_se * 10) / 10) +
+                             " standard errors)";
+  return def.parameters[i].key + " = " + format_value(at_e[i]) + " against " +
+         format_value(at_best[i]) + (most_se >= 0.0 ? errors : "");
+}
+
+std::vector<std::string> start_warnings(const IdentifyDefinition& def, const IdentifyResult& r) {
+  std::vector<std::string> out;
+  if (r.starts.size() < 2) return out;
+  const PolishEnd& best = r.starts[r.best_start];
+  for (std::size_t k = 0; k < r.starts.size(); ++k) {
+    const PolishEnd& e = r.starts[k];
+    double apart = 0.0, apart_se = -1.0;
+    const std::string where = where_apart(def, r, e, &apart, &apart_se);
+    // elsewhere: more than kSameEnd standard errors off in a parameter the recordings
+    // determine (an undetermined one may end anywhere), or, without them, of the box
+    const bool elsewhere = apart_se >= 0.0 ? apart_se > kSameEndErrors : apart > kSameEnd;
+    const std::string start = "the polish's start " + std::to_string(k + 1) + " of " +
+                              std::to_string(r.starts.size());
+    const std::string costs = "cost " + format_value(e.cost) + " against the result's " +
+                              format_value(best.cost) + " (start " +
+                              std::to_string(r.best_start + 1) + ")";
+    if (e.cost > best.cost + kLocalMinimumMargin) {
+      out.push_back(start + (e.converged ? " ended in a local minimum: "
+                                         : " stopped without converging: ") +
+                    costs + ", at " + where);
+    } else if (k != r.best_start && elsewhere) {
+      out.push_back(start + " ended as low at another point: " + costs + ", at " + where +
+                    ": the recordings do not single out one minimum");
+    }
+  }
+  return out;
+}
+
 std::vector<std::string> identify_warnings(const IdentifyDefinition& def,
                                            const IdentifyResult& r) {
-  std::vector<std::string> out;
+  std::vector<std::string> out = start_warnings(def, r);
   for (const std::string& line : unexplained_channels(r)) {
     out.push_back(line + "; the standard errors are not to be trusted");
   }

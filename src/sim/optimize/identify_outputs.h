@@ -33,6 +33,16 @@ inline const std::vector<std::string> kIdentifyOutputs = {
     "recording_*.svg", "recording_*.pdf", "plant_*.toml", "pneumatics.toml", "plan.csv",
     "plan.md"};
 
+// A polish start that ends more than kLocalMinimumMargin (chi-square of one degree of freedom
+// at 95 %) above the result's cost ended in a local minimum (or stopped short of one); one that
+// ends within it but elsewhere (more than kSameEndErrors of the result's standard errors off
+// in a parameter the recordings determine; without standard errors, kSameEnd of the box) is
+// an equal minimum: the recordings do not single out one. One line each (none for one start).
+inline constexpr double kLocalMinimumMargin = 3.84;
+inline constexpr double kSameEndErrors = 2.0;
+inline constexpr double kSameEnd = 0.01;
+std::vector<std::string> start_warnings(const IdentifyDefinition& def, const IdentifyResult& r);
+
 // What a user must not miss, one line each: a fitted channel the model does not explain, a
 // polish that did not converge or failed, a parameter at a bound of its range.
 std::vector<std::string> identify_warnings(const IdentifyDefinition& def,
