@@ -14,7 +14,7 @@ identify.csv gives its value, standard error (HAC), plain standard error, interv
 verdict. A control arm whose encoder is read 60 ms late (a delay the model lacks) must come
 out "does not explain".
 
-    python3 scripts/identify_coverage.py [--arms 20] [--seed 1] [--threads 2]
+    python3 scripts/identify_coverage.py [--arms 20] [--seed 1] [--threads 2] [--starts 1]
         [--pamsim build/src/sim/pamsim] [--out renders/identify_coverage]
 
 writes OUT/coverage.csv (one row per arm and parameter) and OUT/coverage.md (the summary the
@@ -174,7 +174,8 @@ def summary(rows, arms, control, args):
     """coverage.md: per parameter and in all, against the claims the docs make."""
     keys = list(dict.fromkeys(r["key"] for r in rows))
     md = [f"# `pamsim identify`: coverage over {args.arms} synthetic arms", "",
-          f"`python3 scripts/identify_coverage.py --arms {args.arms} --seed {args.seed}`: "
+          f"`python3 scripts/identify_coverage.py --arms {args.arms} --seed {args.seed}"
+          f"{'' if args.starts == 1 else f' --starts {args.starts}'}`: "
           "each arm's truth drawn from the script's ranges, its recordings made by pamsim "
           "with a noise seed and instruments of its own; seven parameters fitted per arm.", "",
           "| parameter | 95 % interval contains the truth | plain s^2 (J^T J)^-1 interval does "
@@ -228,9 +229,13 @@ def main():
     ap.add_argument("--pamsim", default=os.path.join(ROOT, "build", "src", "sim", "pamsim"))
     ap.add_argument("--out", default=os.path.join(ROOT, "renders", "identify_coverage"))
     ap.add_argument("--no-control", action="store_true", help="skip the misspecified arm")
+    ap.add_argument("--starts", type=int, default=1,
+                    help="the polish's starts per arm (identify's `starts`, 1 to 20)")
     args = ap.parse_args()
-    if args.arms < 1 or args.threads < 1:
-        sys.exit("identify_coverage.py: --arms and --threads must be at least 1")
+    if args.arms < 1 or args.threads < 1 or not 1 <= args.starts <= 20:
+        sys.exit("identify_coverage.py: --arms and --threads must be at least 1, --starts "
+                 "within [1, 20]")
+    SEARCH["starts"] = args.starts
     rng = random.Random(args.seed)
     rows, arms = [], []
     for i in range(args.arms):
