@@ -76,15 +76,16 @@ TEST(CliUsageTest, MessagesEscapeAndShortenEchoedValuesAndNameTheKeyOfAMissingFi
   const auto nul = run_pamsim("sweep " + (dir / "nul.toml").string());
   EXPECT_EQ(nul.exit_code, 2);
   EXPECT_EQ(line_count(nul.err), 1) << nul.err;
-  EXPECT_NE(nul.err.find("got \"ab\\x00cd\\x1B[31m\""), std::string::npos) << nul.err;
+  EXPECT_NE(nul.err.find("design is \"ab\\x00cd\\x1B[31m\""), std::string::npos) << nul.err;
 
   pamsim_test::write_text(dir / "big.toml", base + "design = \"" + std::string(3 << 20, 'x') + "\"\n");
   const auto big = run_pamsim("sweep " + (dir / "big.toml").string());
   EXPECT_EQ(big.exit_code, 2);
   EXPECT_EQ(line_count(big.err), 1);
   EXPECT_LT(big.err.size(), 800u);
-  // the quoted value is cut to 240 bytes at each end
-  EXPECT_NE(big.err.find("...(" + std::to_string((3 << 20) + 2 - 480) + " bytes)..."),
+  // the word of the quoted value (its quotes and the comma after it) is cut to 240 bytes at
+  // each end
+  EXPECT_NE(big.err.find("...(" + std::to_string((3 << 20) + 3 - 480) + " bytes)..."),
             std::string::npos) << big.err;
 
   const auto model = run_pamsim(
