@@ -207,7 +207,8 @@ void polish(const IdentifyDefinition& def, PolishProblem& p, const IdentifyRunOp
 }
 
 // The polish from every start in turn: every end in result->starts; the problem whose end is
-// lowest (the earlier start of equals) returned, its polish's report in *result.
+// lowest (the earlier start of equals; a start whose trials failed, never) returned, its
+// polish's report in *result.
 std::unique_ptr<PolishProblem> polish_from_starts(const IdentifyDefinition& def,
                                                   IdentifyResiduals& residuals,
                                                   const std::vector<std::vector<double>>& starts,
@@ -222,7 +223,9 @@ std::unique_ptr<PolishProblem> polish_from_starts(const IdentifyDefinition& def,
     PolishEnd end{starts[k], problem->unit, 0.0, report.polish_converged};
     for (double& u : end.end) u = std::clamp(u, 0.0, 1.0);
     end.cost = sum_of_squares(residuals.at(end.end, "polish"));
-    if (!best || end.cost < result->starts[result->best_start].cost) {
+    // lower, or the first end whose trials ran (a failed start's cost is NaN)
+    const double lowest = best ? result->starts[result->best_start].cost : kNaN;
+    if (!best || end.cost < lowest || (std::isnan(lowest) && !std::isnan(end.cost))) {
       best = std::move(problem);
       result->best_start = k;
       result->polish_summary = report.polish_summary;
