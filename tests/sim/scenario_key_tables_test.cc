@@ -164,7 +164,7 @@ TEST(JointKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
       {hinge_key_table(&defaults), {kDropMass, "joints.shoulder"}},
       {slide_key_table(&defaults), {landing, "joints.trunk_z"}}};
   for (const auto& [table, where] : cases) {
-    const auto& [scenario, prefix] = where;
+    const std::string scenario = where.first, prefix = where.second;   // (lambdas capture them)
     for (const NumberRow& row : table.numbers) {
       const std::string key = prefix + "." + row.name;
       for (const std::string& value : bad_number_texts(row)) {
