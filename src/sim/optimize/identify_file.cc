@@ -261,15 +261,12 @@ std::string IdentifyDefinition::canonical_json() const {
                             // residuals over the channels' noise floors (pamsim 0.4): a
                             // database of an earlier scale does not resume
                             {"residual_scale", "noise_floor"}};
-  if (starts > 1) {   // (a database of one start resumes as it did)
-    nlohmann::json with = j;
-    with["starts"] = starts;
-    if (!tensile.empty()) with["tensile"] = tensile_json;
-    return with.dump();
-  }
-  if (tensile.empty()) return j.dump();
+  // each added only where given, so that an older database (no tensile tests, one start)
+  // resumes as it did
+  if (tensile.empty() && starts == 1) return j.dump();
   nlohmann::json with = j;
-  with["tensile"] = tensile_json;
+  if (!tensile.empty()) with["tensile"] = tensile_json;
+  if (starts > 1) with["starts"] = starts;
   return with.dump();
 }
 
