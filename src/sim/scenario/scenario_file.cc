@@ -9,7 +9,6 @@
 #include <map>
 
 #include "base/toml_file.h"
-#include "base/units.h"
 #include "reflex/controller_registry.h"
 #include "sim/core/metrics.h"
 #include "sim/scenario/scenario_key_docs.h"
