@@ -62,18 +62,42 @@ TEST(IdentifyStartsTest, ALocalMinimumAndAnEqualMinimumElsewhereAreEachOneLine) 
   EXPECT_TRUE(start_warnings(def, r).empty()) << "one start: nothing to compare";
 }
 
-// The wall fitted to a 2 s step recording from `starts` starts.
+TEST(IdentifyStartsTest, FewerStartsThanAskedIsOneLineWithItsReason) {
+  IdentifyDefinition def = two_walls();
+  def.starts = 3;
+  IdentifyResult r;
+  r.starts = {{{0.5, 0.5}, {0.2, 0.5}, 10.0, true}};
+  def.generations = 0;
+  ASSERT_EQ(start_warnings(def, r).size(), 1u);
+  EXPECT_EQ(start_warnings(def, r)[0],
+            "starts = 3 asked, 1 run: without a global search (generations = 0) the polish "
+            "starts from the middle of the box alone");
+  def.generations = 2;
+  r.starts.push_back({{0.9, 0.1}, {0.2, 0.5}, 10.0, true});
+  ASSERT_EQ(start_warnings(def, r).size(), 1u);
+  EXPECT_EQ(start_warnings(def, r)[0].rfind("starts = 3 asked, 2 run: the global search's "
+                                            "points held no more that lie 0.1 of the box apart",
+                                            0),
+            0u) << start_warnings(def, r)[0];
+  r.interrupted = true;
+  EXPECT_TRUE(start_warnings(def, r).empty()) << "an interrupted run resumes with every start";
+  r.interrupted = false;
+  def.starts = 2;
+  EXPECT_TRUE(start_warnings(def, r).empty());
+}
+
+// The wall fitted from `starts` starts to the 2 s step recording dir/steps.csv.
 IdentifyResult fit_from(const fs::path& dir, int starts) {
-  fs::create_directories(dir);
-  record_arm(dir / "steps.csv", kSteps);
-  pamsim_test::write_text(dir / "id.toml",
+  const fs::path file = dir / ("id" + std::to_string(starts) + ".toml");
+  pamsim_test::write_text(file,
       "base = \"" + kArm + "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
       "population = 6\npolish_iterations = 10\nstarts = " + std::to_string(starts) + "\n"
       "[[parameter]]\nkey = \"muscles.antagonist.plant.geometry.wall_thickness_mm\"\n"
       "from = 2.0\nto = 4.0\n"
       "[[recording]]\nfile = \"steps.csv\"\nset = ['" + kSteps + "']\n");
-  const IdentifyDefinition def = load_identify_definition((dir / "id.toml").string());
-  IdentifyDb db = IdentifyDb::create((dir / "id.db").string(), def);
+  const IdentifyDefinition def = load_identify_definition(file.string());
+  IdentifyDb db = IdentifyDb::create((dir / ("id" + std::to_string(starts) + ".db")).string(),
+                                     def);
   IdentifyRunOptions options;
   options.threads = 2;
   return run_identify(def, db, options);
@@ -81,8 +105,9 @@ IdentifyResult fit_from(const fs::path& dir, int starts) {
 
 TEST(IdentifyStartsTest, TheResultIsTheLowestEndAndTheFirstStartEndsAsASingleStartDoes) {
   const fs::path dir = pamsim_test::fresh_dir("identify_starts");
-  const IdentifyResult one = fit_from(dir / "one", 1);
-  const IdentifyResult three = fit_from(dir / "three", 3);
+  record_arm(dir / "steps.csv", kSteps);
+  const IdentifyResult one = fit_from(dir, 1);
+  const IdentifyResult three = fit_from(dir, 3);
   ASSERT_EQ(one.starts.size(), 1u);
   ASSERT_GE(three.starts.size(), 2u) << "twelve CMA-ES points hold starts 0.1 apart";
   EXPECT_EQ(three.starts[0].start, one.starts[0].start);

@@ -54,7 +54,6 @@ class IdentifyObjective : public Objective {
 // The polish's starts from CMA-ES's points: the best, then the next best that lie at least
 // kStartSpacing of the box (in some parameter) from every start chosen, up to def.starts; the
 // middle of the box alone without generations.
-constexpr double kStartSpacing = 0.1;
 std::vector<std::vector<double>> distinct_starts(const IdentifyDefinition& def,
                                                  std::vector<Evaluation> history) {
   std::stable_sort(history.begin(), history.end(), [](const Evaluation& a, const Evaluation& b) {

@@ -60,6 +60,10 @@ struct ChannelFit {
                                  // the model explains the channel is unknown (explained false)
 };
 
+// The polish's starts are CMA-ES's best points that lie at least this fraction of the box
+// apart, in some parameter, from every start chosen before (IdentifyDefinition::starts).
+inline constexpr double kStartSpacing = 0.1;
+
 // Where one of the polish's starts ended (IdentifyDefinition::starts).
 struct PolishEnd {
   std::vector<double> start, end;   // in the unit box

@@ -1,6 +1,7 @@
 // identify_outputs.cc: see identify_outputs.h.
 #include "sim/optimize/identify_outputs.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -169,6 +170,17 @@ std::string where_apart(const IdentifyDefinition& def, const IdentifyResult& r,
 
 std::vector<std::string> start_warnings(const IdentifyDefinition& def, const IdentifyResult& r) {
   std::vector<std::string> out;
+  const std::size_t asked = static_cast<std::size_t>(std::max(def.starts, 1));
+  if (r.starts.size() < asked && !r.interrupted) {
+    out.push_back("starts = " + std::to_string(asked) + " asked, " +
+                  std::to_string(r.starts.size()) + " run: " +
+                  (def.generations == 0
+                       ? "without a global search (generations = 0) the polish starts from the "
+                         "middle of the box alone"
+                       : "the global search's points held no more that lie " +
+                             format_value(kStartSpacing) + " of the box apart (more generations "
+                             "or a larger population give more)"));
+  }
   if (r.starts.size() < 2) return out;
   const PolishEnd& best = r.starts[r.best_start];
   for (std::size_t k = 0; k < r.starts.size(); ++k) {

@@ -37,7 +37,8 @@ inline const std::vector<std::string> kIdentifyOutputs = {
 // at 95 %) above the result's cost ended in a local minimum (or stopped short of one); one that
 // ends within it but elsewhere (more than kSameEndErrors of the result's standard errors off
 // in a parameter the recordings determine; without standard errors, kSameEnd of the box) is
-// an equal minimum: the recordings do not single out one. One line each (none for one start).
+// an equal minimum: the recordings do not single out one. One line each (none for one start),
+// and one when fewer starts ran than `starts` asks, with the reason.
 inline constexpr double kLocalMinimumMargin = 3.84;
 inline constexpr double kSameEndErrors = 2.0;
 inline constexpr double kSameEnd = 0.01;
