@@ -171,7 +171,7 @@ std::string where_apart(const IdentifyDefinition& def, const IdentifyResult& r,
 std::vector<std::string> start_warnings(const IdentifyDefinition& def, const IdentifyResult& r) {
   std::vector<std::string> out;
   const std::size_t asked = static_cast<std::size_t>(std::max(def.starts, 1));
-  if (r.starts.size() < asked && !r.interrupted) {
+  if (asked > 1 && !r.starts.empty() && r.starts.size() < asked && !r.interrupted) {
     out.push_back("starts = " + std::to_string(asked) + " asked, " +
                   std::to_string(r.starts.size()) + " run: " +
                   (def.generations == 0
