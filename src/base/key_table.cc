@@ -12,58 +12,12 @@
 #include "base/config_reader.h"
 #include "base/format.h"
 #include "base/input_error.h"
+#include "base/key_table_text.h"
 
 namespace pamsim {
 namespace {
 
-// "\"a\" | \"b\"": the names a choice allows, as TOML strings
-std::string choices_text(const ChoiceRow& row) {
-  std::string allowed;
-  for (const std::string& a : row.allowed) {
-    allowed += (allowed.empty() ? "\"" : " | \"") + a + "\"";
-  }
-  return allowed;
-}
-
-// "[0, 64]"
-std::string int_range(const IntRow& row) {
-  return "[" + std::to_string(row.lo) + ", " + std::to_string(row.hi) + "]";
-}
-
-bool allows(const ChoiceRow& row, const std::string& value) {
-  for (const std::string& a : row.allowed) {
-    if (value == a) return true;
-  }
-  return false;
-}
-
-void read_number(const std::string& path, const std::string& key, const NumberRow& row,
-                 const toml::node& node) {
-  if (!node.is_number()) {
-    std::ostringstream type;
-    type << node.type();
-    throw file_key_error(path, key, "must be a number, got a " + type.str());
-  }
-  const double v = node.value<double>().value();
-  if (!row.range.contains(v)) {
-    throw file_key_error(path, key,
-                         "value " + format_value(v) + " out of range, allowed " + row.range.text());
-  }
-  if (row.optional_target != nullptr) {
-    *row.optional_target = v * row.to_si;
-  } else {
-    *row.target = v * row.to_si;
-  }
-}
-
-void read_choice(const std::string& path, const std::string& key, const ChoiceRow& row,
-                 const toml::node& node) {
-  const auto value = node.value<std::string>();
-  if (!value) throw file_key_error(path, key, "must be a string, allowed " + choices_text(row));
-  if (allows(row, *value)) return row.set(*value);
-  throw file_key_error(path, key,
-                       "unknown value \"" + *value + "\", allowed " + choices_text(row));
-}
+using namespace key_table_text;
 
 // The field a number row fills, as a pointer to its SI value (nullptr: an unset optional)
 const double* field(const NumberRow& row) {
@@ -80,48 +34,13 @@ void read_number_row(ConfigReader& in, const std::string& key, const NumberRow& 
   const double v = in.get_double(key, 0.0);
   in.check(row.range.contains(v), key,
            "must be in " + row.range.text() + ", got " + format_value(v));
-  in.check(std::isfinite(v * row.to_si), key,
+  in.check(std::isfinite(row.si(v)), key,
            "is " + format_value(v) + ", beyond what a double holds in SI units");
   if (row.optional_target != nullptr) {
-    *row.optional_target = v * row.to_si;
+    *row.optional_target = row.si(v);
   } else {
-    *row.target = v * row.to_si;
+    *row.target = row.si(v);
   }
-}
-
-// One key of a table: read by its row, or refused with the keys the table has.
-void read_key(const std::string& path, const KeyTable& table, const std::string& name,
-              const toml::node& node) {
-  const std::string key = row_key(table, name);
-  for (const NumberRow& row : table.numbers) {
-    if (row.name == name) return read_number(path, key, row, node);
-  }
-  for (const ChoiceRow& row : table.choices) {
-    if (row.name == name) return read_choice(path, key, row, node);
-  }
-  for (const IntRow& row : table.ints) {
-    if (row.name != name) continue;
-    const auto v = node.value<std::int64_t>();
-    if (!node.is_integer() || !v) throw file_key_error(path, key, "must be an integer");
-    if (*v < row.lo || *v > row.hi) {
-      throw file_key_error(path, key, "value " + std::to_string(*v) +
-                                          " out of range, allowed " + int_range(row));
-    }
-    row.set(*v);
-    return;
-  }
-  for (const BoolRow& row : table.bools) {
-    if (row.name != name) continue;
-    if (!node.is_boolean()) throw file_key_error(path, key, "must be true or false");
-    *row.target = *node.value<bool>();
-    return;
-  }
-  std::string allowed;
-  for (const NumberRow& row : table.numbers) allowed += (allowed.empty() ? "" : ", ") + row.name;
-  for (const ChoiceRow& row : table.choices) allowed += (allowed.empty() ? "" : ", ") + row.name;
-  for (const BoolRow& row : table.bools) allowed += (allowed.empty() ? "" : ", ") + row.name;
-  for (const IntRow& row : table.ints) allowed += (allowed.empty() ? "" : ", ") + row.name;
-  throw file_key_error(path, key, "unknown key (allowed: " + allowed + ")");
 }
 
 }  // namespace
@@ -136,6 +55,8 @@ std::vector<std::string> key_names(const KeyTable& table) {
   for (const BoolRow& row : table.bools) keys.push_back(row_key(table, row.name));
   for (const IntRow& row : table.ints) keys.push_back(row_key(table, row.name));
   for (const NumberRow& row : table.numbers) keys.push_back(row_key(table, row.name));
+  for (const TextRow& row : table.texts) keys.push_back(row_key(table, row.name));
+  for (const ListRow& row : table.lists) keys.push_back(row_key(table, row.name));
   return keys;
 }
 
@@ -150,25 +71,6 @@ std::string KeyRange::text() const {
   // an infinite end is never in (contains() takes finite values only)
   return std::string(lo_open || std::isinf(lo) ? "(" : "[") + bound(lo) + ", " + bound(hi) +
          (hi_open || std::isinf(hi) ? ")" : "]");
-}
-
-void read_key_tables(const toml::table& doc, const std::string& path,
-                     const std::vector<KeyTable>& tables) {
-  for (const auto& [table_key, table_node] : doc) {
-    const std::string name(table_key.str());
-    const KeyTable* table = nullptr;
-    std::string names;
-    for (const KeyTable& t : tables) {
-      if (t.name == name) table = &t;
-      names += (names.empty() ? "" : ", ") + t.name;
-    }
-    if (table == nullptr) {
-      throw file_key_error(path, name, "unknown table (allowed: " + names + ")");
-    }
-    const toml::table* entries = table_node.as_table();
-    if (entries == nullptr) throw file_key_error(path, name, "must be a table");
-    for (const auto& [key, node] : *entries) read_key(path, *table, std::string(key.str()), node);
-  }
 }
 
 void read_key_rows(ConfigReader& in, const KeyTable& table) {
@@ -190,6 +92,22 @@ void read_key_rows(ConfigReader& in, const KeyTable& table) {
     row.set(v);
   }
   for (const NumberRow& row : table.numbers) read_number_row(in, key(row.name), row);
+  for (const TextRow& row : table.texts) *row.target = in.get_string(key(row.name), *row.target);
+  for (const ListRow& row : table.lists) {
+    const std::string k = key(row.name);
+    std::vector<double> shown;   // the default in the file's unit
+    for (double si : *row.target) shown.push_back(si / row.to_si);
+    const std::vector<double> values = in.get_double_list(k, shown);
+    if (!in.has(k)) continue;
+    in.check(values.size() <= row.max_count, k, "must list at most " +
+                                                    std::to_string(row.max_count) + " values");
+    row.target->clear();
+    for (double v : values) {
+      in.check(row.range.contains(v), k, "must hold values in " + row.range.text() + ", got " +
+                                             format_value(v));
+      row.target->push_back(v * row.to_si);
+    }
+  }
 }
 
 KeyTable rows_given(const ConfigReader& in, KeyTable table) {
@@ -202,6 +120,8 @@ KeyTable rows_given(const ConfigReader& in, KeyTable table) {
   drop_absent(&table.choices);
   drop_absent(&table.bools);
   drop_absent(&table.ints);
+  drop_absent(&table.texts);
+  drop_absent(&table.lists);
   return table;
 }
 
@@ -217,6 +137,12 @@ void check_key_rows(const KeyTable& table) {
     require_value(v >= row.lo && v <= row.hi, row_key(table, row.name), "in " + int_range(row),
                   static_cast<double>(v));
   }
+  for (const ListRow& row : table.lists) {
+    for (double si : *row.target) {
+      require_value(row.range.contains(si / row.to_si), row_key(table, row.name),
+                    list_allowed(row), si / row.to_si);
+    }
+  }
   for (const ChoiceRow& row : table.choices) {
     const std::string key = row_key(table, row.name);
     const std::string value = row.get();
@@ -231,11 +157,11 @@ double from_si(const NumberRow& row, double si) {
   // the shortest of 15, 16 or 17 significant digits that the reader takes back to `si`
   for (int digits = 15; digits <= 16; ++digits) {
     char buf[40];
-    std::snprintf(buf, sizeof(buf), "%.*g", digits, si / row.to_si);
+    std::snprintf(buf, sizeof(buf), "%.*g", digits, si * row.divisor / row.to_si);
     const double v = std::strtod(buf, nullptr);
-    if (v * row.to_si == si) return v;
+    if (row.si(v) == si) return v;
   }
-  return si / row.to_si;
+  return si * row.divisor / row.to_si;
 }
 
 double file_value(const KeyTable& table, const std::string& name) {
@@ -269,6 +195,17 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
       if (row.required) fallback = "(required)";
       if (!row.fallback_doc.empty()) fallback = row.fallback_doc;
       docs.push_back({row_key(t, row.name), row.unit, fallback, row.range.text(), row.doc});
+    }
+    for (const TextRow& row : t.texts) {
+      docs.push_back({row_key(t, row.name), "", "\"" + *row.target + "\"", "a string", row.doc});
+    }
+    for (const ListRow& row : t.lists) {
+      std::string values;
+      for (double si : *row.target) {
+        values += (values.empty() ? "" : ", ") + format_number(si / row.to_si);
+      }
+      docs.push_back({row_key(t, row.name), row.unit, "[" + values + "]", list_allowed(row),
+                      row.doc});
     }
   }
   return docs;

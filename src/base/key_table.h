@@ -41,6 +41,10 @@ struct NumberRow {
   bool required = false;      // a file must give it (the field's value is no default)
   std::string fallback_doc{};   // the default as a reference shows it, where it is not the
                                 // field's one value ("(Table II: 70 model, 25 fiber)")
+  double divisor = 1.0;   // SI = value * to_si / divisor: degrees as units::deg_to_rad
+                          // rounds them (to_si = pi, divisor = 180)
+
+  double si(double value) const { return value * to_si / divisor; }
 };
 
 // An integer key (a count: bits, steps, a seed), in [lo, hi]; int_row binds it to a field.
@@ -68,6 +72,25 @@ struct BoolRow {
   bool* target = nullptr;
 };
 
+// A list of numbers (a series' terms), each in `range` in the file's unit, at most
+// max_count of them; the SI values go to *target.
+struct ListRow {
+  std::string name;
+  std::string unit;
+  double to_si = 1.0;
+  KeyRange range;
+  std::size_t max_count = 0;
+  std::string doc;
+  std::vector<double>* target = nullptr;
+};
+
+// A free text key (a name, a source's citation).
+struct TextRow {
+  std::string name;
+  std::string doc;
+  std::string* target = nullptr;
+};
+
 // A key whose value is one of a few names.
 struct ChoiceRow {
   std::string name;
@@ -84,6 +107,9 @@ struct KeyTable {
   std::vector<ChoiceRow> choices;
   std::vector<BoolRow> bools{};
   std::vector<IntRow> ints{};
+  std::vector<TextRow> texts{};
+  std::vector<ListRow> lists{};
+  bool optional = false;   // the file may leave the whole table out (its required rows with it)
 };
 
 class ConfigReader;
@@ -100,10 +126,13 @@ struct KeyDoc {
 
 // Reads `doc` (the file at `path`) by `tables`: every table and key must have a row, a
 // number must be a finite number within its range, a choice one of its names; each value
-// goes to its field. Throws InputError "<path>: <table>.<key>: <problem>"
-// (file_key_error) for an unknown table or key, a wrong type or a value out of range.
-void read_key_tables(const toml::table& doc, const std::string& path,
-                     const std::vector<KeyTable>& tables);
+// goes to its field. The top-level keys are table ""'s, a table inside table "a" is table
+// "a.b". A required row must be given when its table is in the file, and when the table's
+// parent is (the top level always is) unless the table is optional. Throws InputError "<path>: <table>.<key>: <problem>" (file_key_error) for an
+// unknown table or key, a wrong type, a value out of range or a required key missing.
+// Returns the keys given, dotted ("geometry.length_mm").
+std::vector<std::string> read_key_tables(const toml::table& doc, const std::string& path,
+                                         const std::vector<KeyTable>& tables);
 
 // One table of a larger document (a scenario's "reflex"), read by `in` (ConfigReader, which
 // marks the keys read and refuses the keys nobody reads): the choices first (a choice may set
@@ -125,7 +154,8 @@ void check_key_rows(const KeyTable& table);
 
 // A row's key as a file writes it: "<table>.<name>", or "<name>" in the top-level table "".
 std::string row_key(const KeyTable& table, const std::string& name);
-// Every row's key, in the reader's order (choices, true/false keys, integers, numbers).
+// Every row's key, in the reader's order (choices, true/false keys, integers, numbers, texts,
+// lists).
 std::vector<std::string> key_names(const KeyTable& table);
 
 // A field's SI value in its row's unit: the shortest decimal of 15 to 17 significant digits

@@ -185,16 +185,16 @@ struct AvbdlShape {
   mutable double memo_force_n = 0.0;
 };
 
-// Throws InputError with one line "<key_prefix><key> must be ..., got <value>" for a
-// non-finite value, L0 or D0 <= 0, a braid angle outside (0, arccos(1/sqrt 3)) (at 0 the
-// fibre is no longer than L0; from 54.74 deg on the braid cannot contract from L0), t < 0,
-// C10 + C01 <= 0 (no initial shear modulus), C20 < 0, a Gent-Gent law with mu <= 0, C2 < 0
-// or Jm <= 0, a bladder diameter < 0, not above 2 t or above D0, a Gent-Gent bladder that
-// the braid's full contraction would stretch to its limit, Ld < 0 or 2 Ld >= b / sqrt(3) (both
-// end regions must fit in the fully contracted muscle), a outside [0, 3], a negative
-// friction coefficient, v_s <= 0, or a bladder relaxation term with a negative weight or a
-// non-positive time (bladder_relaxation.h). Keys are the field paths: "length_m",
-// "bladder.c10_pa", "friction.extension.force_n", ...
+// Throws InputError with one line "<key_prefix><key> must be ..., got <value>" for a value
+// outside its key's row (avbdl_keys.h: non-finite, L0 or D0 <= 0, a braid angle outside
+// (0, arccos(1/sqrt 3)), t < 0, C20 < 0, a Gent-Gent mu <= 0, C2 < 0 or Jm <= 0, a end slope
+// outside [0, 3], a negative friction coefficient, v_s <= 0), and for what joins keys:
+// C10 + C01 <= 0 (no initial shear modulus), a bladder diameter not 0 and not in
+// (2 t, D0], a Gent-Gent bladder that the braid's full contraction would stretch to its
+// limit, 2 Ld >= b / sqrt(3) (both end regions must fit in the fully contracted muscle), a
+// bladder relaxation term or Maxwell-slip element out of its rules (bladder_relaxation.h,
+// maxwell_slip.h). Keys and values are the plant file's, in its units:
+// "geometry.length_mm", "bladder.C10_MPa", "friction.extension.F0_N", ...
 void validate_avbdl_params(const AvbdlParams& params, const std::string& key_prefix);
 
 // Eq. (27)-(29) for any muscle: the given geometry and bladder, end regions as long as the

@@ -1,78 +1,92 @@
 // pam_params.cc: read, validate and write one PAM's parameter file (see pam_params.h).
 #include "pam_actuator/pam_params.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <iterator>
+#include <limits>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <set>
+#include <vector>
 #include <sstream>
 
 #include <toml++/toml.h>
 
 #include "base/input_error.h"
 #include "base/toml_file.h"
-#include "base/toml_section.h"
+#include "base/key_table.h"
 #include "base/units.h"
 
 namespace pamsim {
 namespace {
 
-// spring.units must name the paper's units exactly
-void check_units(const Section& spring) {
-  const Section u = spring.sub("units");
-  u.reject_unknown({"force", "length", "pressure"});
-  const std::pair<const char*, const char*> expected[] = {
-      {"pressure", "MPa"}, {"length", "mm"}, {"force", "N"}};
-  for (const auto& [k, unit] : expected) {
-    const std::string got = u.text(k, "");
-    if (got != unit) {
-      u.fail(k, "must be \"" + std::string(unit) + "\" (the paper's units), got \"" + got +
-                    "\"");
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr SpringLaw kLaws[] = {SpringLaw::kEq3, SpringLaw::kEq4, SpringLaw::kEq5};
+
+// What a parameter file fills, in its own units where the conversion joins keys (the spring
+// law's coefficients), and the optional tables before the file says whether it has them.
+struct PamFile {
+  PamParams params;
+  SpringLaw law = SpringLaw::kEq3;
+  std::string pressure_unit = "MPa", length_unit = "mm", force_unit = "N";
+  double m_mm_per_mpa = 0.0, h_mm = 0.0;
+  std::array<std::array<double, 6>, 3> coef{};   // each law's, paper order
+  StrainGaugeParams gauge;
+  PamGeometry geometry;
+};
+
+ChoiceRow unit_row(const char* name, const char* unit, std::string* field) {
+  return {name, {unit}, "the file's " + std::string(name) + " unit: the paper's",
+          [field](const std::string& v) { *field = v; }, [field] { return *field; }};
+}
+
+std::vector<KeyTable> pam_key_tables(PamFile* f) {
+  KeyTable top{"", {}, {}};
+  top.texts = {{"name", "the muscle's name", &f->params.name},
+               {"source", "where the numbers come from", &f->params.source}};
+  KeyTable spring{"spring", {}, {}};
+  spring.choices = {{"law", {"eq3", "eq4", "eq5"},
+                     "the spring law the estimator inverts: Eq. (3), (4) or (5) (Yoshida and "
+                     "Hosoda)",
+                     [f](const std::string& v) { f->law = parse_spring_law(v, "spring.law"); },
+                     [f] { return std::string(to_string(f->law)); }}};
+  spring.numbers = {{"m", "mm/MPa", 1.0, {-kInf, kInf}, "Eq. (2)'s slope of the natural length",
+                     &f->m_mm_per_mpa, nullptr, true},
+                    {"h", "mm", 1.0, {0.0, kInf, true}, "Eq. (2)'s natural length at p = 0",
+                     &f->h_mm, nullptr, true}};
+  for (std::size_t l = 0; l < 3; ++l) {
+    for (int k = 0; k < coefficient_count(kLaws[l]); ++k) {
+      spring.numbers.push_back({coefficient_name(kLaws[l], k), "", 1.0, {-kInf, kInf},
+                                std::string("law = \"") + to_string(kLaws[l]) +
+                                    "\": a coefficient (f in N from p in MPa, d in mm)",
+                                &f->coef[l][static_cast<std::size_t>(k)]});
     }
   }
-}
-
-SpringModel read_spring(const Section& spring) {
-  const SpringLaw law = parse_spring_law(spring.text("law", ""), spring.file + ": spring.law");
-
-  // keys allowed for this law
-  std::set<std::string> allowed = {"law", "units", "m", "h"};
-  for (int k = 0; k < coefficient_count(law); ++k) allowed.insert(coefficient_name(law, k));
-  spring.reject_unknown(allowed);
-  check_units(spring);
-
-  // Eq. (2) and the law's coefficients, in paper units
-  const double m = spring.number("m");
-  const double h = spring.positive("h", "mm");
-  std::array<double, 6> coef{};
-  for (int k = 0; k < coefficient_count(law); ++k) {
-    coef[k] = spring.number(coefficient_name(law, k));
-  }
-  return spring_model_from_paper_units(law, m, h, coef);
-}
-
-StrainGaugeParams read_strain_gauge(const Section& gauge) {
-  gauge.reject_unknown({"V_base_V", "q_V_per_N"});
-  StrainGaugeParams out;
-  out.q_v_per_n = gauge.positive("q_V_per_N", "V/N");
-  out.v_base_v = gauge.has("V_base_V") ? gauge.number("V_base_V") : 0.0;
-  return out;
-}
-
-PamGeometry read_geometry(const Section& geo) {
-  geo.reject_unknown(
-      {"braid_angle_deg", "bladder_diameter_mm", "length_mm", "sleeve_diameter_mm"});
-  PamGeometry out;
-  out.length_m = units::mm_to_m(geo.positive("length_mm", "mm"));
-  out.sleeve_diameter_m = units::mm_to_m(geo.positive("sleeve_diameter_mm", "mm"));
-  out.bladder_diameter_m = units::mm_to_m(geo.positive("bladder_diameter_mm", "mm"));
-  const double angle = geo.number("braid_angle_deg");
-  if (!(angle > 0.0 && angle < 90.0)) {
-    geo.fail("braid_angle_deg", "must be in (0, 90) deg, got " + format_number(angle));
-  }
-  out.braid_angle_rad = units::deg_to_rad(angle);
-  return out;
+  KeyTable units{"spring.units", {}, {}};
+  units.choices = {unit_row("pressure", "MPa", &f->pressure_unit),
+                   unit_row("length", "mm", &f->length_unit),
+                   unit_row("force", "N", &f->force_unit)};
+  KeyTable gauge{"strain_gauge", {}, {}};
+  gauge.optional = true;
+  gauge.numbers = {{"q_V_per_N", "V/N", 1.0, {0.0, kInf, true}, "Eq. (8)'s slope q",
+                    &f->gauge.q_v_per_n, nullptr, true},
+                   {"V_base_V", "V", 1.0, {-kInf, kInf}, "Eq. (8)'s offset", &f->gauge.v_base_v}};
+  KeyTable geometry{"geometry", {}, {}};
+  geometry.optional = true;
+  const KeyRange positive{0.0, kInf, true};
+  geometry.numbers = {
+      {"length_mm", "mm", units::kMPerMm, positive, "L0, unpressurised (Table I)",
+       &f->geometry.length_m, nullptr, true},
+      {"sleeve_diameter_mm", "mm", units::kMPerMm, positive, "D0, the sleeve's (Table I)",
+       &f->geometry.sleeve_diameter_m, nullptr, true},
+      {"bladder_diameter_mm", "mm", units::kMPerMm, positive, "the tube's (Table I)",
+       &f->geometry.bladder_diameter_m, nullptr, true},
+      {"braid_angle_deg", "deg", units::kPi, {0.0, 90.0, true, true},
+       "alpha0, the braid's angle to the axis", &f->geometry.braid_angle_rad, nullptr, true, "",
+       180.0}};
+  return {top, spring, units, gauge, geometry};
 }
 
 std::string quoted(const std::string& s) {
@@ -84,17 +98,37 @@ std::string quoted(const std::string& s) {
 }  // namespace
 
 PamParams load_pam_params(const std::string& path) {
-  const toml::table root = parse_toml_file(path);
-  const Section top{path, "", root};
-  top.reject_unknown({"geometry", "name", "source", "spring", "strain_gauge"});
+  PamFile f;
+  const std::vector<std::string> given = read_key_tables(parse_toml_file(path), path,
+                                                         pam_key_tables(&f));
+  const auto has = [&](const std::string& key) {
+    return std::find(given.begin(), given.end(), key) != given.end();
+  };
+  for (const char* k : {"spring.law", "spring.units.pressure", "spring.units.length",
+                        "spring.units.force"}) {
+    if (!has(k)) throw file_key_error(path, k, "is required");
+  }
+  const std::size_t law = static_cast<std::size_t>(
+      std::find(std::begin(kLaws), std::end(kLaws), f.law) - std::begin(kLaws));
+  for (std::size_t l = 0; l < 3; ++l) {
+    for (int k = 0; k < coefficient_count(kLaws[l]); ++k) {
+      const std::string key = "spring." + coefficient_name(kLaws[l], k);
+      if (l == law && !has(key)) throw file_key_error(path, key, "is required");
+      if (l != law && has(key)) {
+        throw file_key_error(path, key, std::string("is not a coefficient of law = \"") +
+                                            to_string(f.law) + "\"");
+      }
+    }
+  }
+  f.params.spring = spring_model_from_paper_units(f.law, f.m_mm_per_mpa, f.h_mm, f.coef[law]);
+  if (has("strain_gauge")) f.params.strain_gauge = f.gauge;
+  if (has("geometry")) f.params.geometry = f.geometry;
+  return f.params;
+}
 
-  PamParams params;
-  params.name = top.text("name", "");
-  params.source = top.text("source", "");
-  params.spring = read_spring(top.sub("spring"));
-  if (top.has("strain_gauge")) params.strain_gauge = read_strain_gauge(top.sub("strain_gauge"));
-  if (top.has("geometry")) params.geometry = read_geometry(top.sub("geometry"));
-  return params;
+std::vector<KeyDoc> pam_key_docs() {
+  PamFile f;
+  return key_table_docs(pam_key_tables(&f));
 }
 
 std::string pam_params_to_toml(const PamParams& params) {

@@ -18,7 +18,9 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "base/key_table.h"
 #include "pam_actuator/spring_model.h"
 
 namespace pamsim {
@@ -50,5 +52,9 @@ PamParams load_pam_params(const std::string& path);
 
 // The TOML text of `params` in the same format (paper units), for `fit -o`.
 std::string pam_params_to_toml(const PamParams& params);
+
+// Every key of a parameter file (its table, unit, default, range and meaning), from the rows
+// its reader reads: `pamsim keys --params`.
+std::vector<KeyDoc> pam_key_docs();
 
 }  // namespace pamsim

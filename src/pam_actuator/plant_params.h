@@ -32,9 +32,11 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <toml++/toml.h>
 
+#include "base/key_table.h"
 #include "pam_actuator/avbdl.h"
 
 namespace pamsim {
@@ -57,5 +59,9 @@ PlantParams load_plant_params(const std::string& path);
 // file as above.
 PlantParams load_plant_params(const std::string& path, const toml::table& changes,
                               const std::string& prefix);
+
+// Every key of a plant file (its table, unit, default, range and meaning), from the rows its
+// reader reads (avbdl_keys.h and the file's own): `pamsim keys --plant`.
+std::vector<KeyDoc> plant_key_docs();
 
 }  // namespace pamsim

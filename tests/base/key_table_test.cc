@@ -3,7 +3,8 @@
 // true/false key; each refused in one line naming the file and the key for a wrong type, a
 // value outside its range, an unknown key or table), ranges written as intervals, the file's
 // value given back from SI without a trailing digit, check_key_rows on the fields as they
-// are, and the reference lines in the reader's order.
+// are, and the reference lines in the reader's order; a file's top-level keys, nested
+// tables, texts and lists, and the required rows of a table it must or may give.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -61,7 +62,7 @@ TEST(KeyTableTest, ADocumentReachesItsFieldsInSi) {
 TEST(KeyTableTest, EveryBadValueIsOneLineNamingTheFileAndTheKey) {
   struct Case { const char* text; const char* key; const char* says; };
   for (const Case& c : {
-           Case{"[loop]\ndelay_ms = 1000\n", "loop.delay_ms", "out of range, allowed [0, 1000)"},
+           Case{"[loop]\ndelay_ms = 1000\n", "loop.delay_ms", "must be in [0, 1000) ms, got 1000"},
            Case{"[loop]\ndelay_ms = \"x\"\n", "loop.delay_ms", "must be a number"},
            Case{"[loop]\nmode = \"medium\"\n", "loop.mode", "unknown value \"medium\""},
            Case{"[loop]\nmode = 1\n", "loop.mode", "must be a string"},
@@ -117,6 +118,86 @@ TEST(KeyTableTest, CheckedFieldsAndReferenceLines) {
   EXPECT_EQ(docs[3].key, "loop.delay_ms");
   EXPECT_EQ(docs[3].fallback, "20.0");   // as TOML writes it
   EXPECT_EQ(docs[3].unit, "ms");
+}
+
+}  // namespace
+}  // namespace pamsim
+
+namespace pamsim {
+namespace {
+
+// A file with top-level keys (table ""), a text, a list, a nested table and tables that must
+// or may be given (the layout of a plant or muscle parameter file).
+struct Nested {
+  std::string name;
+  std::vector<double> times_s;
+  double length_m = 0.0, force_n = 0.0, gain = 1.0;
+};
+
+std::vector<KeyTable> nested_tables(Nested* n) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  KeyTable top{"", {}, {}};
+  top.texts = {{"name", "its name", &n->name}};
+  KeyTable geometry{"geometry", {}, {}};
+  geometry.numbers = {{"length_mm", "mm", 1e-3, {0.0, kInf, true}, "L", &n->length_m, nullptr,
+                       true}};
+  geometry.lists = {{"times_ms", "ms", 1e-3, {0.0, kInf, true}, 2, "the times", &n->times_s}};
+  KeyTable stroke{"geometry.stroke", {}, {}};
+  stroke.numbers = {{"F0_N", "N", 1.0, {0.0, kInf}, "F0", &n->force_n, nullptr, true}};
+  KeyTable extra{"extra", {}, {}};
+  extra.optional = true;
+  extra.numbers = {{"gain", "", 1.0, {0.0, 10.0}, "g", &n->gain, nullptr, true}};
+  return {top, geometry, stroke, extra};
+}
+
+InputErrorParts nested_refusal(const std::string& text) {
+  Nested n;
+  try {
+    read_key_tables(toml::parse(text), "f.toml", nested_tables(&n));
+  } catch (const InputError& e) {
+    return e.parts();
+  }
+  ADD_FAILURE() << "read: " << text;
+  return {};
+}
+
+TEST(KeyTableTest, TopLevelKeysNestedTablesTextsAndListsReachTheirFields) {
+  Nested n;
+  const std::vector<std::string> given = read_key_tables(
+      toml::parse("name = \"a\"\n[geometry]\nlength_mm = 180\ntimes_ms = [10, 100]\n"
+                  "stroke = { F0_N = 0.5 }\n"),
+      "f.toml", nested_tables(&n));
+  EXPECT_EQ(n.name, "a");
+  EXPECT_EQ(n.length_m, 180 * 1e-3);
+  EXPECT_EQ(n.times_s, (std::vector<double>{10 * 1e-3, 100 * 1e-3}));
+  EXPECT_EQ(n.force_n, 0.5);
+  EXPECT_EQ(n.gain, 1.0) << "an optional table left out keeps its defaults";
+  EXPECT_EQ(given, (std::vector<std::string>{"geometry", "geometry.length_mm", "geometry.stroke",
+                                             "geometry.stroke.F0_N", "geometry.times_ms",
+                                             "name"}))   // toml++ keeps a table's keys sorted
+      << "every key given, and the tables";
+}
+
+TEST(KeyTableTest, RequiredRowsOfATableThatMustBeGivenAndBadTextsAndListsAreNamed) {
+  struct Case { const char* text; const char* key; const char* says; };
+  for (const Case& c : {
+           Case{"name = \"a\"\n", "geometry.length_mm", "is required"},
+           Case{"[geometry]\nlength_mm = 1\n", "geometry.stroke.F0_N", "is required"},
+           Case{"[geometry]\nlength_mm = 1\nstroke = {F0_N = 1}\n[extra]\n", "extra.gain",
+                "is required"},
+           Case{"name = 3\n", "name", "must be a string"},
+           Case{"colour = 3\n", "colour", "unknown key (allowed: name)"},
+           Case{"[colour]\nx = 3\n", "colour", "unknown table (allowed: geometry, extra)"},
+           Case{"[geometry]\ntimes_ms = [1, 2, 3]\n", "geometry.times_ms", "at most 2 values"},
+           Case{"[geometry]\ntimes_ms = [1, -2]\n", "geometry.times_ms",
+                "[1] must be in (0, inf) ms, got -2"},
+           Case{"[geometry]\ntimes_ms = 1\n", "geometry.times_ms", "must be a list of numbers"},
+           Case{"[geometry]\nlength_mm = nan\n", "geometry.length_mm", "must be finite"},
+           Case{"[geometry]\nstroke = 1\n", "geometry.stroke", "must be a table"}}) {
+    const InputErrorParts parts = nested_refusal(c.text);
+    EXPECT_EQ(parts.key, c.key) << c.text;
+    EXPECT_NE(parts.problem.find(c.says), std::string::npos) << c.text << ": " << parts.problem;
+  }
 }
 
 }  // namespace

@@ -59,6 +59,8 @@ inline std::map<std::string, int> row_keys(const std::vector<KeyTable>& tables) 
     for (const IntRow& r : t.ints) ++rows[row_key(t, r.name)];
     for (const BoolRow& r : t.bools) ++rows[row_key(t, r.name)];
     for (const ChoiceRow& r : t.choices) ++rows[row_key(t, r.name)];
+    for (const TextRow& r : t.texts) ++rows[row_key(t, r.name)];
+    for (const ListRow& r : t.lists) ++rows[row_key(t, r.name)];
   }
   return rows;
 }

@@ -1,6 +1,6 @@
 // avbdl_test.cc: the AVBDL plant law of seeds/003 (avbdl.h): Chou-Hannaford as its special
 // case, volume and force by virtual work, the bladder's Mooney-Rivlin work, the friction
-// loop, and every bad value of validate_avbdl_params.
+// loop; its bad values are plant_keys_test.cc's.
 #include "pam_actuator/avbdl.h"
 
 #include <gtest/gtest.h>
@@ -291,59 +291,6 @@ TEST(AvbdlTest, DefaultsPresetsAndScaledGeometryValidate) {
   EXPECT_NEAR(arm.end_length_m, 0.180 * 0.16, 1e-15);
   EXPECT_THROW(avbdl_params_from_geometry(0.18, -0.016, 0.4, 0.002, kNaturalRubberTreloar),
                InputError);
-}
-
-struct BadValue {
-  const char* key;
-  std::function<void(AvbdlParams&)> set;
-};
-
-TEST(AvbdlTest, EveryBadValueNamesItsKey) {
-  const double nan = std::nan("");
-  const double inf = HUGE_VAL;
-  const std::vector<BadValue> table = {
-      {"length_m", [](AvbdlParams& p) { p.length_m = -0.2; }},
-      {"length_m", [](AvbdlParams& p) { p.length_m = 0.0; }},
-      {"length_m", [&](AvbdlParams& p) { p.length_m = nan; }},
-      {"diameter_m", [](AvbdlParams& p) { p.diameter_m = 0.0; }},
-      {"diameter_m", [&](AvbdlParams& p) { p.diameter_m = inf; }},
-      {"braid_angle_rad", [](AvbdlParams& p) { p.braid_angle_rad = 0.0; }},
-      {"braid_angle_rad", [](AvbdlParams& p) { p.braid_angle_rad = units::deg_to_rad(60); }},
-      {"braid_angle_rad", [&](AvbdlParams& p) { p.braid_angle_rad = nan; }},
-      {"wall_thickness_m", [](AvbdlParams& p) { p.wall_thickness_m = -0.001; }},
-      {"wall_thickness_m", [&](AvbdlParams& p) { p.wall_thickness_m = nan; }},
-      {"bladder.c10_pa", [&](AvbdlParams& p) { p.bladder.c10_pa = inf; }},
-      {"bladder.c10_pa", [](AvbdlParams& p) { p.bladder = {-2e5, 1e5, 0.0}; }},
-      {"bladder.c01_pa", [&](AvbdlParams& p) { p.bladder.c01_pa = nan; }},
-      {"bladder.c20_pa", [](AvbdlParams& p) { p.bladder.c20_pa = -1.0; }},
-      {"end_length_m", [](AvbdlParams& p) { p.end_length_m = -0.01; }},
-      {"end_length_m", [](AvbdlParams& p) { p.end_length_m = 0.07; }},   // 2 Ld > b/sqrt 3
-      {"end_slope", [](AvbdlParams& p) { p.end_slope = -0.1; }},
-      {"end_slope", [](AvbdlParams& p) { p.end_slope = 3.5; }},
-      {"friction.extension.force_n", [](AvbdlParams& p) { p.friction.extension.force_n = -1; }},
-      {"friction.extension.pressure_area_m2",
-       [&](AvbdlParams& p) { p.friction.extension.pressure_area_m2 = nan; }},
-      {"friction.contraction.pressure_area_m2",
-       [](AvbdlParams& p) { p.friction.contraction.pressure_area_m2 = -1e-6; }},
-      {"friction.contraction.strain_area_m2",
-       [](AvbdlParams& p) { p.friction.contraction.strain_area_m2 = -1e-6; }},
-      {"friction.velocity_scale_m_per_s",
-       [](AvbdlParams& p) { p.friction.velocity_scale_m_per_s = 0.0; }},
-  };
-  for (const BadValue& bad : table) {
-    AvbdlParams p;
-    bad.set(p);
-    try {
-      validate_avbdl_params(p, "muscles.agonist.plant.");
-      ADD_FAILURE() << bad.key << ": no exception";
-    } catch (const InputError& e) {
-      const std::string m = e.what();
-      EXPECT_EQ(m.rfind(std::string("muscles.agonist.plant.") + bad.key + " must be ", 0), 0u)
-          << m;
-      EXPECT_NE(m.find(", got "), std::string::npos) << m;
-      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
-    }
-  }
 }
 
 // A slack muscle's free length tracked over a trial's pressures (issue 29): each agrees with

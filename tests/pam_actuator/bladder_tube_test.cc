@@ -140,15 +140,15 @@ TEST(BladderTubeTest, FreeLengthFallsWithPressureAndStaysShortOfTheBladdersLimit
 
 TEST(BladderTubeTest, BadTubeValuesNameTheirKey) {
   const std::vector<std::pair<std::string, std::function<void(AvbdlParams&)>>> table = {
-      {"bladder_diameter_m", [](AvbdlParams& p) { p.bladder_diameter_m = -0.004; }},
-      {"bladder_diameter_m", [](AvbdlParams& p) { p.bladder_diameter_m = 0.001; }},  // <= 2 t
-      {"bladder_diameter_m", [](AvbdlParams& p) { p.bladder_diameter_m = 0.02; }},   // > D0
-      {"bladder_diameter_m", [](AvbdlParams& p) { p.bladder_diameter_m = std::nan(""); }},
-      {"bladder_diameter_m", [](AvbdlParams& p) { p.bladder_diameter_m = 0.0012; }},  // limit
-      {"bladder.mu_pa", [](AvbdlParams& p) { p.bladder_gent.mu_pa = 0.0; }},
-      {"bladder.c2_pa", [](AvbdlParams& p) { p.bladder_gent.c2_pa = -1.0; }},
-      {"bladder.jm", [](AvbdlParams& p) { p.bladder_gent.jm = 0.0; }},
-      {"bladder.jm", [](AvbdlParams& p) { p.bladder_gent.jm = HUGE_VAL; }},
+      {"bladder.diameter_mm", [](AvbdlParams& p) { p.bladder_diameter_m = -0.004; }},
+      {"bladder.diameter_mm", [](AvbdlParams& p) { p.bladder_diameter_m = 0.001; }},  // <= 2 t
+      {"bladder.diameter_mm", [](AvbdlParams& p) { p.bladder_diameter_m = 0.02; }},   // > D0
+      {"bladder.diameter_mm", [](AvbdlParams& p) { p.bladder_diameter_m = std::nan(""); }},
+      {"bladder.diameter_mm", [](AvbdlParams& p) { p.bladder_diameter_m = 0.0012; }},  // limit
+      {"bladder.mu_MPa", [](AvbdlParams& p) { p.bladder_gent.mu_pa = 0.0; }},
+      {"bladder.C2_MPa", [](AvbdlParams& p) { p.bladder_gent.c2_pa = -1.0; }},
+      {"bladder.Jm", [](AvbdlParams& p) { p.bladder_gent.jm = 0.0; }},
+      {"bladder.Jm", [](AvbdlParams& p) { p.bladder_gent.jm = HUGE_VAL; }},
   };
   for (const auto& [key, set] : table) {
     AvbdlParams p = table1_agonist();
@@ -192,7 +192,7 @@ TEST(BladderTubeTest, PlantFilesGiveTheTubeAndTheLawByKey) {
            {"law = \"gent_gent\"\nmu_MPa = 0.3\nC2_MPa = -1\nJm = 50\n", "bladder.C2_MPa"},
            {"law = \"gent_gent\"\nmu_MPa = 0.3\nC2_MPa = 0\nJm = -5\n", "bladder.Jm"},
            {"material = \"natural_rubber\"\nlaw = \"gent_gent\"\nC10_MPa = 1\n", "bladder.C10_MPa"},
-           {"material = \"natural_rubber\"\ndiameter_mm = 0\n", "bladder.diameter_mm"},
+           {"material = \"natural_rubber\"\ndiameter_mm = -1\n", "bladder.diameter_mm"},
            {"material = \"natural_rubber\"\ndiameter_mm = 17\n", "bladder.diameter_mm"},
            {"material = \"natural_rubber\"\ndiameter_mm = 0.8\n", "bladder.diameter_mm"}}) {
     const std::string path = write_plant(bladder);

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "base/input_error.h"
+#include "base/key_table.h"
 
 namespace pamsim {
 namespace {
@@ -108,27 +109,27 @@ TEST_F(PamParamsTest, SyntaxErrorNamesLine) {
 }
 
 TEST_F(PamParamsTest, UnknownKeys) {
-  expect_error(good_with("a3 = -0.201", "a3 = -0.201\nb4 = 1.0"), "spring.b4: unknown key");
+  expect_error(good_with("a3 = -0.201", "a3 = -0.201\nb4 = 1.0"), "spring.b4: is not a coefficient of law = \"eq3\"");
   expect_error(good_with("name = \"t\"", "name = \"t\"\ncolour = 1"), "colour: unknown key");
   expect_error(good_with("q_V_per_N", "q_V_per_N_typo = 1\nq_V_per_N"),
                "strain_gauge.q_V_per_N_typo: unknown key");
 }
 
 TEST_F(PamParamsTest, MissingCoefficientAndLaw) {
-  expect_error(good_with("a1 = 0.256\n", ""), "spring.a1: missing");
-  expect_error(good_with("m = -60.1\n", ""), "spring.m: missing");
-  expect_error(good_with("law = \"eq3\"", "law = \"eq4\""), "spring.a0: unknown key");
+  expect_error(good_with("a1 = 0.256\n", ""), "spring.a1: is required");
+  expect_error(good_with("m = -60.1\n", ""), "spring.m: is required");
+  expect_error(good_with("law = \"eq3\"", "law = \"eq4\""), "spring.a0: is not a coefficient of law = \"eq4\"");
   expect_error(good_with("law = \"eq3\"", "law = \"eq9\""), "spring.law");
   // an eq4 file without b5
   expect_error(good_with("law = \"eq3\"", "law = \"eq4\"")
                    .replace(std::string(kGood).find("a0 = 0.911"), 44,
                             "b0 = 1\nb1 = 1\nb2 = 1\nb3 = 1\nb4 = 1\n"),
-               "spring.b5: missing");
+               "spring.b5: is required");
 }
 
 TEST_F(PamParamsTest, WrongUnits) {
   expect_error(good_with("pressure = \"MPa\"", "pressure = \"bar\""),
-               "spring.units.pressure: must be \"MPa\"");
+               "spring.units.pressure: unknown value \"bar\", allowed \"MPa\"");
   expect_error(good_with("length = \"mm\"", "length = \"m\""), "spring.units.length");
   expect_error(good_with("force = \"N\"", "force = \"kN\""), "spring.units.force");
   expect_error(good_with("units = { pressure = \"MPa\", length = \"mm\", force = \"N\" }", ""),
@@ -143,7 +144,7 @@ TEST_F(PamParamsTest, NonFiniteAndNonNumeric) {
 
 TEST_F(PamParamsTest, StrainGaugeSlopeMustBePositive) {
   expect_error(good_with("q_V_per_N = 2.25e-3", "q_V_per_N = 0"), "strain_gauge.q_V_per_N");
-  expect_error(good_with("q_V_per_N = 2.25e-3", "q_V_per_N = -1e-3"), "must be > 0");
+  expect_error(good_with("q_V_per_N = 2.25e-3", "q_V_per_N = -1e-3"), "must be in (0, inf) V/N, got -0.001");
 }
 
 TEST_F(PamParamsTest, BadGeometry) {
@@ -153,10 +154,10 @@ TEST_F(PamParamsTest, BadGeometry) {
   expect_error(good_with("bladder_diameter_mm = 4.0", "bladder_diameter_mm = 0"),
                "geometry.bladder_diameter_mm");
   expect_error(good_with("braid_angle_deg = 25", "braid_angle_deg = 90"),
-               "geometry.braid_angle_deg: must be in (0, 90)");
+               "geometry.braid_angle_deg: must be in (0, 90) deg, got 90");
   expect_error(good_with("braid_angle_deg = 25", "braid_angle_deg = 0"),
                "geometry.braid_angle_deg");
-  expect_error(good_with("braid_angle_deg = 25\n", ""), "geometry.braid_angle_deg: missing");
+  expect_error(good_with("braid_angle_deg = 25\n", ""), "geometry.braid_angle_deg: is required");
 }
 
 TEST_F(PamParamsTest, WriterRoundTrips) {
@@ -186,6 +187,34 @@ TEST_F(PamParamsTest, WriterRoundTrips) {
   for (int k = 0; k < 5; ++k) {
     EXPECT_NEAR(q.spring.coef[k], p.spring.coef[k], 1e-15 * std::abs(p.spring.coef[k]));
   }
+}
+
+// Every number key of the file's reference (`pamsim keys --params`, the reader's rows)
+// refuses a string and NaN, naming the key, whichever law's key it is.
+TEST_F(PamParamsTest, EveryNumberKeyRefusesAStringAndNaN) {
+  int numbers = 0;
+  for (const KeyDoc& d : pam_key_docs()) {
+    if (d.allowed.empty() || (d.allowed[0] != '(' && d.allowed[0] != '[')) continue;
+    ++numbers;
+    const std::size_t dot = d.key.find('.');
+    const std::string table = d.key.substr(0, dot), name = d.key.substr(dot + 1);
+    for (const char* bad : {"\"x\"", "nan"}) {
+      std::string text = kGood;   // the key's line replaced, or added under its table
+      const std::size_t header = text.find("[" + table + "]\n");
+      ASSERT_NE(header, std::string::npos) << d.key;
+      const std::size_t line = text.find("\n" + name + " = ", header);
+      const std::size_t next = text.find("\n[", header + 1);
+      const std::string bad_line = name + " = " + bad;
+      if (line != std::string::npos && line < next) {
+        text.replace(line + 1, text.find('\n', line + 1) - line - 1, bad_line);
+      } else {
+        text.insert(header + table.size() + 3, bad_line + "\n");
+      }
+      expect_error(text, d.key + ": ");
+    }
+  }
+  EXPECT_EQ(numbers, 2 + 4 + 6 + 5 + 2 + 4) << "m, h, a0-a3, b0-b5, c0-c4, the gauge's two, "
+                                               "the geometry's four";
 }
 
 }  // namespace

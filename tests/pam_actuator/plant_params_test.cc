@@ -211,7 +211,7 @@ TEST(PlantParamsTest, EveryBadFileIsOneLineNamingFileAndKey) {
       {"velocity_scale_mm_s = 1.0", "model = \"stiction\"", "friction.model"},
       {"velocity_scale_mm_s = 1.0", "model = \"maxwell_slip\"", "friction.breakaway_mm"},
       {"velocity_scale_mm_s = 1.0", kSlip + "breakaway_mm = [0.1, 0]\nweights = [0.5, 0.5]",
-       "friction.breakaway_mm[1]"},
+       "friction.breakaway_mm: [1]"},
       {"velocity_scale_mm_s = 1.0", kSlip + "breakaway_mm = [0.1, nan]\nweights = [0.5, 0.5]",
        "friction.breakaway_mm"},
       {"velocity_scale_mm_s = 1.0", kSlip + "breakaway_mm = [0.1, 0.2]\nweights = [1.0]",

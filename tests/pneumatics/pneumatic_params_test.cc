@@ -129,7 +129,7 @@ TEST(PneumaticParamsTest, RegulatorLoopKeysAreChecked) {
                           "sample_period_ms"}) {
     const std::string m = load_error(std::string("[regulator]\n") + key + " = 0\n");
     EXPECT_NE(m.find(std::string("pneumatics_bad.toml: regulator.") + key +
-                     ": value 0 out of range, allowed (0, "),
+                     ": must be in (0, "),
               std::string::npos)
         << m;
   }
@@ -180,7 +180,7 @@ TEST(PneumaticParamsTest, RegulatorLoopKeysAreChecked) {
 
 TEST(PneumaticParamsTest, PolytropicIndexOutsideOneToOnePointFour) {
   const std::string m = load_error("[gas]\npolytropic_index = 1.5\n");
-  EXPECT_NE(m.find("gas.polytropic_index: value 1.5 out of range, allowed [1, 1.4]"),
+  EXPECT_NE(m.find("gas.polytropic_index: must be in [1, 1.4], got 1.5"),
             std::string::npos)
       << m;
 }

@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <toml++/toml.h>
@@ -73,6 +75,38 @@ TEST(CliKeysTest, KeysPneumaticsListsThePneumaticsFilesKeys) {
   const CliResult both = run_pamsim("keys --pneumatics scenarios/drop_mass.toml");
   EXPECT_EQ(both.exit_code, 2);
   EXPECT_EQ(line_count(both.err), 1) << both.err;
+}
+
+// Every key of every shipped plant and estimator parameter file is in the file's reference,
+// which comes from the rows its reader reads.
+TEST(CliKeysTest, KeysPlantAndParamsListEveryKeyTheShippedFilesGive) {
+  for (const auto& [flag, prefix] : std::vector<std::pair<std::string, std::string>>{
+           {"--plant", "plant_"}, {"--params", "table4_"}}) {
+    const CliResult r = run_pamsim("keys " + flag + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::map<std::string, nlohmann::json> by_key;
+    for (const auto& j : nlohmann::json::parse(r.out)) by_key[j["key"]] = j;
+    int files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator("models/pams")) {
+      if (entry.path().filename().string().rfind(prefix, 0) != 0) continue;
+      ++files;
+      std::vector<std::string> keys;   // the file's dotted keys, tables' own aside
+      std::function<void(const toml::table&, const std::string&)> collect =
+          [&](const toml::table& t, const std::string& at) {
+            for (const auto& [k, v] : t) {
+              const std::string key = at + std::string(k.str());
+              if (v.is_table()) collect(*v.as_table(), key + ".");
+              else keys.push_back(key);
+            }
+          };
+      collect(toml::parse_file(entry.path().string()), "");
+      for (const std::string& key : keys) {
+        EXPECT_EQ(by_key.count(key), 1u) << flag << ": " << entry.path() << ": " << key;
+      }
+    }
+    EXPECT_GE(files, 2) << flag;
+  }
+  EXPECT_EQ(run_pamsim("keys --plant --params").exit_code, 2);
 }
 
 TEST(CliKeysTest, AMisspelledKeyGetsTheKeyMeant) {

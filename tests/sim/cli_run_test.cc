@@ -123,7 +123,7 @@ TEST(CliRunTest, BadHardwareKeysAreOneLineExitTwoAndWriteNothing) {
       {"--set sensors.gauge.board.loss_factor=1", "sensors.gauge.board.loss_factor"},
       {"--set 'muscles.agonist.plant.bladder.relaxation_times_s=[-1]' "
        "--set 'muscles.agonist.plant.bladder.relaxation_weights=[0.07]'",
-       "muscles.agonist.plant.bladder.relaxation_times_s: [0] must be > 0 s"}});
+       "muscles.agonist.plant.bladder.relaxation_times_s: [0] must be in (0, inf) s, got -1"}});
 }
 
 // The reflex kinds of issue 27: an Ib threshold below zero, a reflex pair naming a muscle

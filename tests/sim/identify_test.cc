@@ -237,7 +237,7 @@ TEST(IdentifyTest, BadFilesAreOneLineExitTwoAndNoDatabase) {
            {with("file = \"steps.csv\"", "file = \"rad.csv\""), "channel angle_rad is not a column pamsim logs"},
            {with("file = \"steps.csv\"", "file = \"steps.csv\"\nchannels = [\"force_meas_ago_N\"]"), "names force_meas_ago_N, which"},
            {with("file = \"steps.csv\"", "file = \"steps.csv\"\nchannels = [\"angle_deg\", \"angle_deg\"]"), "names angle_deg twice"},
-           {with("from = 2.0\nto = 4.0", "from = -2.0\nto = 4.0"), "wall_thickness_mm: must be >= 0 mm"},
+           {with("from = 2.0\nto = 4.0", "from = -2.0\nto = 4.0"), "wall_thickness_mm: must be in [0, inf) mm, got -2"},
            {with("key = \"bodies.ball.mass_kg\"", "key = \"sensors.colour\""), "sensors.colour is not a known key"},
            {with("from = 0.1\nto = 0.4", "from = 0.4\nto = 0.4"), "parameter[1]"},
            {with("file = \"steps.csv\"", "file = \"steps.csv\"\nheld_out = true"), "needs at least one [[recording]] that is not held_out"},

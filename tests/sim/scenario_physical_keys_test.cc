@@ -106,12 +106,12 @@ TEST(ScenarioPlantKeysTest, TheRunFoldersScenarioKeepsTheFieldsAndThePath) {
 // Each bad field is one line naming its scenario key, as the file's own would name its key.
 TEST(ScenarioPlantKeysTest, BadFieldsNameTheirScenarioKey) {
   expect_refused({
-           {kWall + "=-1", kWall + ": must be >= 0 mm"},
+           {kWall + "=-1", kWall + ": must be in [0, inf) mm, got -1"},
            {kWall + "=\"thick\"", kWall + ": must be a number"},
            {"muscles.agonist.plant.geometry.colour=1",
             "muscles.agonist.plant.geometry.colour: unknown key"},
            {"muscles.agonist.plant.friction.extension.A0_mm2=-2",
-            "muscles.agonist.plant.friction.extension.A0_mm2: must be >= 0"},
+            "muscles.agonist.plant.friction.extension.A0_mm2: must be in [0, inf) mm^2, got -2"},
            {"muscles.agonist.plant.geometry.length_mm.x=1",
             "muscles.agonist.plant.geometry.length_mm: is a value, not a table"},
            {"muscles.agonist.plant.bladder.diameter_mm=40",

@@ -3,6 +3,8 @@
 // scenario, every key it can take (its muscles', holds' and events' keys by name) with the
 // value in effect and whether that is the default. `--pneumatics`: the pneumatics file's keys
 // instead (model.pneumatics, pneumatics.<table>.<field>), from its reader's key table;
+// `--plant`: a plant file's (muscles.<m>.plant, muscles.<m>.plant.<table>.<field>);
+// `--params`: a muscle's estimator parameter file's (muscles.<m>.params);
 // `--identify`, `--tune`, `--sweep`: an identification, tuning or sweep file's top-level keys,
 // from their rows.
 #include <CLI/CLI.hpp>
@@ -10,6 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "base/input_error.h"
+#include "pam_actuator/pam_params.h"
+#include "pam_actuator/plant_params.h"
 #include "pneumatics/pneumatic_params.h"
 #include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
@@ -27,6 +31,8 @@ struct KeysOptions {
   std::vector<std::string> overrides;
   bool json = false;
   bool pneumatics = false;
+  bool plant = false;
+  bool params = false;
   bool identify = false;
   bool tune = false;
   bool sweep = false;
@@ -53,11 +59,13 @@ void print_docs(const std::vector<KeyDoc>& docs, bool json) {
   if (json) std::cout << all.dump(2) << "\n";
 }
 
-// --pneumatics, --identify, --tune or --sweep: another file's keys, which take no scenario
+// --pneumatics, --plant, --params, --identify, --tune or --sweep: another file's keys,
+// which take no scenario
 bool print_file_keys(const KeysOptions& opt) {
-  const int files = opt.pneumatics + opt.identify + opt.tune + opt.sweep;
+  const int files =
+      opt.pneumatics + opt.plant + opt.params + opt.identify + opt.tune + opt.sweep;
   if (files == 0) return false;
-  const std::string flags = "--pneumatics, --identify, --tune and --sweep";
+  const std::string flags = "--pneumatics, --plant, --params, --identify, --tune and --sweep";
   if (files > 1) throw InputError(flags + " list different files' keys: give one");
   if (!(opt.scenario.empty() && opt.overrides.empty())) {
     throw InputError(flags + " list a file's keys: they take no scenario or --set");
@@ -66,6 +74,8 @@ bool print_file_keys(const KeysOptions& opt) {
   TuneDefinition tune;
   SweepDefinition sweep;
   print_docs(opt.pneumatics ? pneumatic_key_docs()
+             : opt.plant    ? plant_key_docs()
+             : opt.params   ? pam_key_docs()
              : opt.identify ? key_table_docs({identify_search_table(&identify)})
              : opt.tune     ? key_table_docs({tune_search_table(&tune)})
                             : key_table_docs({sweep_design_table(&sweep),
@@ -113,6 +123,12 @@ void add_keys_command(CLI::App& app) {
   cmd->add_flag("--pneumatics", opt->pneumatics,
                 "The pneumatics file's keys (tables supply, gas, valve, chamber, first_order, "
                 "regulator, solver) instead of the scenario's");
+  cmd->add_flag("--plant", opt->plant,
+                "A plant file's keys (the muscle's geometry, bladder and friction) instead of "
+                "the scenario's");
+  cmd->add_flag("--params", opt->params,
+                "A muscle's parameter file's keys (the spring law its estimator inverts, the "
+                "strain gauge, the geometry) instead of the scenario's");
   cmd->add_flag("--identify", opt->identify,
                 "An identification file's search and judgement keys (generations, "
                 "population, seed, polish_iterations, interval, explained_noise_factor) "
