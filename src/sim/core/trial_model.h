@@ -83,7 +83,9 @@ struct TrialModel {
 TrialModel load_trial_model(const Scenario& scenario);
 
 // True if two scenarios build the same TrialModel, so a sweep worker can keep its model
-// when a point changes only other keys (times, gains, noise, schedules after t = 0...).
+// when a point changes only other keys (times, gains, noise, schedules after t = 0...). It
+// compares what load_trial_model reads, listed beside it (trial_model_identity.cc); a test
+// holds the list to the built models, key by key (tests/sim/trial_model_identity_test.cc).
 bool same_trial_model(const Scenario& a, const Scenario& b);
 
 // Sets a body's mass, scaling its inertia with it, and the subtree masses above it.
