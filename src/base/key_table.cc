@@ -204,8 +204,9 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
       for (double si : *row.target) {
         values += (values.empty() ? "" : ", ") + format_number(si / row.to_si);
       }
-      docs.push_back({row_key(t, row.name), row.unit, "[" + values + "]", list_allowed(row),
-                      row.doc});
+      docs.push_back({row_key(t, row.name), row.unit,
+                      row.fallback_doc.empty() ? "[" + values + "]" : row.fallback_doc,
+                      list_allowed(row), row.doc});
     }
   }
   return docs;

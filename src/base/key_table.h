@@ -82,6 +82,7 @@ struct ListRow {
   std::size_t max_count = 0;
   std::string doc;
   std::vector<double>* target = nullptr;
+  std::string fallback_doc{};   // the default as a reference shows it ("(the model's)")
 };
 
 // A free text key (a name, a source's citation).

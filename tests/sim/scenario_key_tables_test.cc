@@ -1,4 +1,5 @@
-// scenario_key_tables_test.cc: [sim], the drop's numbers, [valve] and joints.<joint>
+// scenario_key_tables_test.cc: [sim], the drop's numbers, [valve], joints.<joint>, bodies.<body>
+// and holds.<body>
 // (scenario_key_tables.h) through the scenario reader: every key the reader asks for under sim. and drop. (the drop's names
 // aside) has exactly one row and every row is read; a bad value of every row, generated from
 // the row, is refused in one line naming the scenario file and the key; a value reaches its
@@ -9,6 +10,7 @@
 #include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "base/config_reader.h"
 #include "base/input_error.h"
@@ -195,6 +197,56 @@ TEST(JointKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
   EXPECT_EQ(refusal_parts([&] { load_scenario(landing, {"joints.trunk_z.start_deg=10"}); },
                           "a hinge's key on a slide").key,
             "joints.trunk_z");
+}
+
+// bodies.<body> and holds.<body>: every number row refuses its bad values naming the key, a
+// list of the wrong length or with a value outside its range is refused, and given values
+// reach the scenario's bodies and holds in SI.
+TEST(BodyAndHoldKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
+  BodyKeys body;
+  HoldSpec hold;
+  std::vector<double> position;
+  int refused = 0;
+  for (const auto& [table, prefix] : std::vector<std::pair<KeyTable, std::string>>{
+           {body_key_table(&body), "bodies.basket"}, {hold_key_table(&hold, &position),
+                                                      "holds.ball"}}) {
+    for (const NumberRow& row : table.numbers) {
+      const std::string key = prefix + "." + row.name;
+      for (const std::string& value : bad_number_texts(row)) {
+        const InputErrorParts parts =
+            refusal_parts([&] { load_scenario(kDropMass, {key + "=" + value}); }, key + value);
+        EXPECT_EQ(parts.key, key) << value;
+        ++refused;
+      }
+    }
+  }
+  EXPECT_EQ(refused, 5 + 5) << "a string, NaN, true and each side of the range, for both";
+  for (const auto& [set, key] : std::vector<std::pair<std::string, std::string>>{
+           {"bodies.basket.inertia_kg_m2=[1e-4, 2e-4]", "bodies.basket.inertia_kg_m2"},
+           {"bodies.basket.inertia_kg_m2=[1e-4, 2e-4, 3e-4, 4e-4]", "bodies.basket.inertia_kg_m2"},
+           {"bodies.basket.inertia_kg_m2=[1e-4, -2e-4, 2e-4]", "bodies.basket.inertia_kg_m2"},
+           {"holds.ball.position_m=[0, 0.1]", "holds.ball.position_m"},
+           {"holds.ball.above_site=3", "holds.ball.above_site"}}) {
+    EXPECT_EQ(refusal_parts([&] { load_scenario(kDropMass, {set}); }, set).key, key) << set;
+  }
+  const Scenario sc = load_scenario(kDropMass, {"bodies.basket.mass_kg=0.3",
+                                                "bodies.basket.inertia_kg_m2=[1e-4, 2e-4, 2e-4]",
+                                                "holds.box={ position_m = [0, 0.1, 0.5] }"});
+  bool basket = false, box = false;
+  for (const BodyMassSpec& b : sc.body_masses) {
+    if (b.body != "basket") continue;
+    basket = true;
+    EXPECT_EQ(b.mass_kg, 0.3);
+    EXPECT_EQ(b.inertia_kg_m2[1], 2e-4);
+  }
+  for (const HoldSpec& h : sc.holds) {
+    if (h.body != "box") continue;
+    box = true;
+    EXPECT_TRUE(h.at_position);
+    EXPECT_EQ(h.position_m[2], 0.5);
+  }
+  EXPECT_TRUE(basket);
+  EXPECT_TRUE(box) << "a hold on a body the model may lack is the binding's to refuse";
 }
 
 }  // namespace

@@ -106,61 +106,54 @@ void read_drop(ConfigReader& in, Scenario* sc, bool implied) {
   sc->events.push_back(impact);
 }
 
-// bodies.<body>.inertia_kg_m2: three principal moments, each in (0, 1e3] kg m^2, that a
-// rigid body can have (each at most the sum of the other two, as MuJoCo's compiler demands)
-std::array<double, 3> read_inertia(ConfigReader& in, const std::string& key) {
-  const std::vector<double> i = in.get_double_list(key, {});
-  in.check(i.size() == 3, key, "must be [I1, I2, I3] in kg m^2 (principal moments)");
-  for (double v : i) {
-    in.check(v > 0 && v <= 1e3, key, "must hold moments in (0, 1000] kg m^2, got " + format_value(v));
-  }
-  for (int k = 0; k < 3; ++k) {
-    in.check(i[k] <= i[(k + 1) % 3] + i[(k + 2) % 3], key,
-             "is no rigid body's: each moment must be at most the sum of the other two");
-  }
-  return {i[0], i[1], i[2]};
-}
-
+// bodies.<body>: a mass, moments of inertia, or both (the rows: scenario_key_tables.h); the
+// moments must be three that a rigid body can have (each at most the sum of the other two,
+// as MuJoCo's compiler demands)
 void read_bodies(ConfigReader& in, Scenario* sc) {
   for (const std::string& body : in.child_keys("bodies")) {
-    const std::string key = "bodies." + body + ".mass_kg";
-    const std::string inertia_key = "bodies." + body + ".inertia_kg_m2";
-    BodyMassSpec spec{key, body, 0.0, {}};
-    if (in.has(inertia_key)) spec.inertia_kg_m2 = read_inertia(in, inertia_key);
-    if (in.has(inertia_key) && !in.has(key)) {
-      spec.key = inertia_key;
-      sc->body_masses.push_back(spec);
-      continue;
+    BodyKeys keys;
+    KeyTable table = body_key_table(&keys);
+    table.name = "bodies." + body;
+    read_key_rows(in, rows_given(in, table));
+    const std::string key = table.name + ".mass_kg", inertia_key = table.name + ".inertia_kg_m2";
+    in.check(keys.mass_kg || in.has(inertia_key), key, "is required (or inertia_kg_m2)");
+    BodyMassSpec spec{keys.mass_kg ? key : inertia_key, body, keys.mass_kg.value_or(0.0), {}};
+    if (in.has(inertia_key)) {
+      const std::vector<double>& i = keys.inertia_kg_m2;
+      in.check(i.size() == 3, inertia_key, "must be [I1, I2, I3] in kg m^2 (principal moments)");
+      for (int k = 0; k < 3; ++k) {
+        in.check(i[k] <= i[(k + 1) % 3] + i[(k + 2) % 3], inertia_key,
+                 "is no rigid body's: each moment must be at most the sum of the other two");
+        spec.inertia_kg_m2[k] = i[k];
+      }
     }
-    spec.mass_kg = in.get_double(key, 0.0);
-    in.check(in.has(key) && spec.mass_kg > 0 && spec.mass_kg <= 1000, key,
-             "must be in (0, 1000] kg, got " + format_value(spec.mass_kg));
     for (const BodyMassSpec& other : sc->body_masses) {
-      in.check(other.body != body || other.mass_kg == 0, key,
+      in.check(other.body != body || other.mass_kg == 0 || spec.mass_kg == 0, key,
                "sets body '" + body + "', already set by " + other.key);
     }
     sc->body_masses.push_back(spec);
   }
 }
 
+// holds.<body>: above a site (and a height) or at a position (the rows: scenario_key_tables.h)
 void read_bodies_and_holds(ConfigReader& in, Scenario* sc) {
   read_bodies(in, sc);
   for (const std::string& body : in.child_keys("holds")) {
     HoldSpec h;
     h.key = "holds." + body;
     h.body = body;
+    std::vector<double> position;
+    KeyTable table = hold_key_table(&h, &position);
+    table.name = h.key;
+    read_key_rows(in, rows_given(in, table));
     h.at_position = in.has(h.key + ".position_m");
     if (h.at_position) {
-      const std::vector<double> p = in.get_double_list(h.key + ".position_m", {});
-      in.check(p.size() == 3, h.key + ".position_m", "must be [x, y, z] in m");
-      h.position_m = {p[0], p[1], p[2]};
-      in.check(!in.has(h.key + ".above_site"), h.key, "gives position_m and above_site; give one");
+      in.check(position.size() == 3, h.key + ".position_m", "must be [x, y, z] in m");
+      h.position_m = {position[0], position[1], position[2]};
+      in.check(!in.has(h.key + ".above_site") && !in.has(h.key + ".height_m"), h.key,
+               "gives position_m and above_site or height_m; give one");
     } else {
-      h.above_site = in.get_string(h.key + ".above_site", "");
       in.check(!h.above_site.empty(), h.key, "must give above_site (with height_m) or position_m");
-      h.height_m = in.get_double(h.key + ".height_m", 0.0);
-      in.check(h.height_m >= 0 && h.height_m <= 10, h.key + ".height_m",
-               "must be in [0, 10] m, got " + format_value(h.height_m));
     }
     for (const HoldSpec& other : sc->holds) {
       in.check(other.body != body, h.key, "holds body '" + body + "', already held by " + other.key);

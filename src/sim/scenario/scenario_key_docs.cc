@@ -78,14 +78,17 @@ std::vector<KeyDoc> model_docs() {
   };
 }
 
-// bodies, holds, events, the drop shorthand
+// bodies and holds: their rows (scenario_key_tables.h)
+std::vector<KeyDoc> body_and_hold_docs() {
+  BodyKeys body;
+  HoldSpec hold;
+  std::vector<double> position;
+  return key_table_docs({body_key_table(&body), hold_key_table(&hold, &position)});
+}
+
+// events, the drop shorthand's names
 std::vector<KeyDoc> event_docs() {
   return {
-      {"bodies.<body>.mass_kg", "kg", "(the model's)", "(0, 1000]", "a body's mass, in place of the model's (its inertia scaled with it)"},
-      {"bodies.<body>.inertia_kg_m2", "kg m^2", "(the model's)", "[I1, I2, I3], each in (0, 1000], each <= the sum of the others", "a body's principal moments of inertia about its centre of mass, in place of the model's"},
-      {"holds.<body>.above_site", "", "(none)", "a site of the model", "hold the body above this site until released"},
-      {"holds.<body>.height_m", "m", "0.0", "[0, 10]", "the held body's bottom above the site"},
-      {"holds.<body>.position_m", "m", "(none)", "[x, y, z]", "hold the body here instead (not with above_site)"},
       {"events.<event>.action", "", "\"mark\"", "\"mark\" | \"release\" | \"add_mass\" | \"controller_off\" | \"controller_on\" | \"end\"", "what happens when the event fires"},
       {"events.<event>.body", "", "(required for release, add_mass)", "a body of the model", "the body released or loaded"},
       {"events.<event>.mass_kg", "kg", "(required for add_mass)", "(0, 1000]", "the mass added"},
@@ -186,8 +189,9 @@ std::vector<KeyDoc> controller_docs() {
 
 std::vector<KeyDoc> all_docs() {
   std::vector<KeyDoc> docs;
-  for (const std::vector<KeyDoc>& part : {model_docs(), valve_docs(), joint_docs(), time_and_drop_docs(), event_docs(),
-                                          controller_docs(), sensor_docs(), instrument_docs()}) {
+  for (const std::vector<KeyDoc>& part :
+       {model_docs(), valve_docs(), joint_docs(), time_and_drop_docs(), body_and_hold_docs(),
+        event_docs(), controller_docs(), sensor_docs(), instrument_docs()}) {
     docs.insert(docs.end(), part.begin(), part.end());
   }
   return docs;

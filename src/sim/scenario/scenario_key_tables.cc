@@ -1,4 +1,5 @@
-// scenario_key_tables.cc: the rows of [sim], [drop] and [valve] (see scenario_key_tables.h).
+// scenario_key_tables.cc: the rows of [sim], [drop], [valve], bodies, holds and joints (see
+// scenario_key_tables.h).
 #include "sim/scenario/scenario_key_tables.h"
 
 #include <cassert>
@@ -54,6 +55,31 @@ std::vector<KeyTable> valve_key_tables(PneumaticParams* pneumatics) {
   KeyTable regulator = pneumatic_regulator_table(pneumatics);
   regulator.name = "valve";
   return {rig, regulator};
+}
+
+KeyTable body_key_table(BodyKeys* body) {
+  KeyTable t{"bodies.<body>", {}, {}, {}};
+  t.numbers = {{"mass_kg", "kg", 1.0, {0.0, 1000.0, true, false},
+                "a body's mass, in place of the model's (its inertia scaled with it)", nullptr,
+                &body->mass_kg, false, "(the model's)"}};
+  t.lists = {{"inertia_kg_m2", "kg m^2", 1.0, {0.0, 1000.0, true, false}, 3,
+              "a body's principal moments of inertia [I1, I2, I3] about its centre of mass, in "
+              "place of the model's; each at most the sum of the others",
+              &body->inertia_kg_m2, "(the model's)"}};
+  return t;
+}
+
+KeyTable hold_key_table(HoldSpec* hold, std::vector<double>* position_m) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  KeyTable t{"holds.<body>", {}, {}, {}};
+  t.numbers = {{"height_m", "m", 1.0, {0.0, 10.0}, "with above_site: the held body's bottom "
+                "above the site", &hold->height_m}};
+  t.texts = {{"above_site", "hold the body above this site of the model until released",
+              &hold->above_site}};
+  t.lists = {{"position_m", "m", 1.0, {-inf, inf}, 3,
+              "hold the body at [x, y, z] in the world instead (not with above_site)",
+              position_m, "(none)"}};
+  return t;
 }
 
 KeyTable hinge_key_table(JointSpec* joint) {

@@ -1,11 +1,13 @@
 // scenario_key_tables.h: the scenario's own tables as key-table rows (base/key_table.h): [sim],
 // trial's time, [drop], the falling-mass shorthand's numbers, [valve], a rig's own point of
-// the pneumatics file's supply, command range and regulator, and joints.<joint>. Each key's unit, range,
+// the pneumatics file's supply, command range and regulator, bodies.<body>, holds.<body> and
+// joints.<joint>. Each key's unit, range,
 // default and meaning is one row, which the reader (scenario_file.cc, scenario_events.cc),
 // `pamsim keys` and the tests read. What joins keys stays with the reader: a control rate
 // that divides the physics rate, the steps a trial takes, a drop before the trial's end.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +44,20 @@ KeyTable drop_key_table(DropShorthand* drop);
 // [regulator] row, which valve.model = "regulator" must accompany (another valve model would
 // ignore them).
 std::vector<KeyTable> valve_key_tables(PneumaticParams* pneumatics);
+
+// bodies.<body>: what a scenario gives of a body (BodyMassSpec): its mass, and its principal
+// moments of inertia [I1, I2, I3], each in place of the model's (unset: the model's). The
+// reader checks what joins them: three moments, each at most the sum of the others.
+struct BodyKeys {
+  std::optional<double> mass_kg;
+  std::vector<double> inertia_kg_m2;
+};
+// bodies.<body> (a placeholder the reader replaces with the body's name), bound to `body`.
+KeyTable body_key_table(BodyKeys* body);
+
+// holds.<body> (a placeholder, as above), bound to `hold`'s site and height and to
+// `position_m`, the fixed position [x, y, z] given instead (the reader: one or the other).
+KeyTable hold_key_table(HoldSpec* hold, std::vector<double>* position_m);
 
 // joints.<joint> (its table name "joints.<joint>", a placeholder a reader replaces with the
 // joint's name), bound to `joint`: a hinge's damping, friction loss and start angle, or a
