@@ -227,7 +227,8 @@ TEST(BodyAndHoldKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
            {"bodies.basket.inertia_kg_m2=[1e-4, -2e-4, 2e-4]", "bodies.basket.inertia_kg_m2"},
            {"holds.ball.position_m=[0, 0.1]", "holds.ball.position_m"},
            {"holds.ball.above_site=3", "holds.ball.above_site"}}) {
-    EXPECT_EQ(refusal_parts([&] { load_scenario(kDropMass, {set}); }, set).key, key) << set;
+    const std::string given = set;   // (a lambda captures no structured binding)
+    EXPECT_EQ(refusal_parts([&] { load_scenario(kDropMass, {given}); }, given).key, key) << set;
   }
   const Scenario sc = load_scenario(kDropMass, {"bodies.basket.mass_kg=0.3",
                                                 "bodies.basket.inertia_kg_m2=[1e-4, 2e-4, 2e-4]",
