@@ -28,6 +28,13 @@ struct KeyRange {
   std::string text() const;   // "(0, 2]", "[200, 400]", "(0, inf)"
 };
 
+// The ranges most keys have: > 0, >= 0, and any finite value.
+inline constexpr KeyRange kPositiveRange{0.0, std::numeric_limits<double>::infinity(), true,
+                                         false};
+inline constexpr KeyRange kNonNegativeRange{0.0, std::numeric_limits<double>::infinity(), false,
+                                            false};
+inline constexpr KeyRange kAnyRange{};
+
 // A number key: the file's value times to_si is written to *target (or *optional_target, a
 // field whose absence means "unset").
 struct NumberRow {

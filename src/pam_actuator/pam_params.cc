@@ -22,7 +22,6 @@
 namespace pamsim {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr SpringLaw kLaws[] = {SpringLaw::kEq3, SpringLaw::kEq4, SpringLaw::kEq5};
 
 // What a parameter file fills, in its own units where the conversion joins keys (the spring
@@ -52,13 +51,13 @@ std::vector<KeyTable> pam_key_tables(PamFile* f) {
                      "Hosoda)",
                      [f](const std::string& v) { f->law = parse_spring_law(v, "spring.law"); },
                      [f] { return std::string(to_string(f->law)); }}};
-  spring.numbers = {{"m", "mm/MPa", 1.0, {-kInf, kInf}, "Eq. (2)'s slope of the natural length",
+  spring.numbers = {{"m", "mm/MPa", 1.0, kAnyRange, "Eq. (2)'s slope of the natural length",
                      &f->m_mm_per_mpa, nullptr, true},
-                    {"h", "mm", 1.0, {0.0, kInf, true}, "Eq. (2)'s natural length at p = 0",
+                    {"h", "mm", 1.0, kPositiveRange, "Eq. (2)'s natural length at p = 0",
                      &f->h_mm, nullptr, true}};
   for (std::size_t l = 0; l < 3; ++l) {
     for (int k = 0; k < coefficient_count(kLaws[l]); ++k) {
-      spring.numbers.push_back({coefficient_name(kLaws[l], k), "", 1.0, {-kInf, kInf},
+      spring.numbers.push_back({coefficient_name(kLaws[l], k), "", 1.0, kAnyRange,
                                 std::string("law = \"") + to_string(kLaws[l]) +
                                     "\": a coefficient (f in N from p in MPa, d in mm)",
                                 &f->coef[l][static_cast<std::size_t>(k)]});
@@ -70,18 +69,17 @@ std::vector<KeyTable> pam_key_tables(PamFile* f) {
                    unit_row("force", "N", &f->force_unit)};
   KeyTable gauge{"strain_gauge", {}, {}};
   gauge.optional = true;
-  gauge.numbers = {{"q_V_per_N", "V/N", 1.0, {0.0, kInf, true}, "Eq. (8)'s slope q",
+  gauge.numbers = {{"q_V_per_N", "V/N", 1.0, kPositiveRange, "Eq. (8)'s slope q",
                     &f->gauge.q_v_per_n, nullptr, true},
-                   {"V_base_V", "V", 1.0, {-kInf, kInf}, "Eq. (8)'s offset", &f->gauge.v_base_v}};
+                   {"V_base_V", "V", 1.0, kAnyRange, "Eq. (8)'s offset", &f->gauge.v_base_v}};
   KeyTable geometry{"geometry", {}, {}};
   geometry.optional = true;
-  const KeyRange positive{0.0, kInf, true};
   geometry.numbers = {
-      {"length_mm", "mm", units::kMPerMm, positive, "L0, unpressurised (Table I)",
+      {"length_mm", "mm", units::kMPerMm, kPositiveRange, "L0, unpressurised (Table I)",
        &f->geometry.length_m, nullptr, true},
-      {"sleeve_diameter_mm", "mm", units::kMPerMm, positive, "D0, the sleeve's (Table I)",
+      {"sleeve_diameter_mm", "mm", units::kMPerMm, kPositiveRange, "D0, the sleeve's (Table I)",
        &f->geometry.sleeve_diameter_m, nullptr, true},
-      {"bladder_diameter_mm", "mm", units::kMPerMm, positive, "the tube's (Table I)",
+      {"bladder_diameter_mm", "mm", units::kMPerMm, kPositiveRange, "the tube's (Table I)",
        &f->geometry.bladder_diameter_m, nullptr, true},
       {"braid_angle_deg", "deg", units::kPi, {0.0, 90.0, true, true},
        "alpha0, the braid's angle to the axis", &f->geometry.braid_angle_rad, nullptr, true, "",

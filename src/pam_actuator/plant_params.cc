@@ -38,7 +38,6 @@ std::vector<KeyTable> plant_key_tables(PlantFile* f) {
   top.texts = {{"name", "the muscle's name", &f->plant.name},
                {"source", "where the numbers come from", &f->plant.source}};
   tables.insert(tables.begin(), top);
-  constexpr double kInf = std::numeric_limits<double>::infinity();
   const auto count = [](int n) { return static_cast<std::size_t>(n); };
   KeyTable& bladder = table_named(tables, "bladder");
   bladder.choices.push_back({"material", {"natural_rubber", "silicone"},
@@ -47,12 +46,12 @@ std::vector<KeyTable> plant_key_tables(PlantFile* f) {
                              [f](const std::string& v) { f->material = v; },
                              [f] { return f->material; }});
   bladder.lists = {
-      {"relaxation_times_s", "s", 1.0, {0.0, kInf, true}, count(kMaxRelaxationTerms),
+      {"relaxation_times_s", "s", 1.0, kPositiveRange, count(kMaxRelaxationTerms),
        "the rubber's rate term, a Prony series: its times tau_i", &f->relaxation_times_s},
-      {"relaxation_weights", "", 1.0, {0.0, kInf}, count(kMaxRelaxationTerms),
+      {"relaxation_weights", "", 1.0, kNonNegativeRange, count(kMaxRelaxationTerms),
        "the Prony series' g_i, one per relaxation_times_s", &f->relaxation_weights}};
   table_named(tables, "friction").lists = {
-      {"breakaway_mm", "mm", units::kMPerMm, {0.0, kInf, true}, count(kMaxSlipElements),
+      {"breakaway_mm", "mm", units::kMPerMm, kPositiveRange, count(kMaxSlipElements),
        "model = \"maxwell_slip\": the elements' breakaway travels", &f->breakaway_m},
       {"weights", "", 1.0, {0.0, 1.0, true}, count(kMaxSlipElements),
        "model = \"maxwell_slip\": the elements' shares of the friction, summing to 1",

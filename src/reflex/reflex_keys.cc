@@ -9,9 +9,6 @@
 namespace pamsim {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-const KeyRange kPositive{0.0, kInf, true, false};
-const KeyRange kNonNegative{0.0, kInf, false, false};
 
 // reflex.mode / reflex.ib.mode
 ChoiceRow mode_row(ReflexMode* mode, const std::string& key, const std::string& doc) {
@@ -24,11 +21,11 @@ ChoiceRow mode_row(ReflexMode* mode, const std::string& key, const std::string& 
 // checked against the control period by validate()
 std::vector<NumberRow> window_rows(double* duration_s, double* refractory_s,
                                    double* arm_after_s, const std::string& what) {
-  return {{"duration_s", "s", 1.0, kPositive, what + " window (at least one control period)",
+  return {{"duration_s", "s", 1.0, kPositiveRange, what + " window (at least one control period)",
            duration_s},
-          {"refractory_s", "s", 1.0, kNonNegative,
+          {"refractory_s", "s", 1.0, kNonNegativeRange,
            "no retrigger this long after a window ends (0: off)", refractory_s},
-          {"arm_after_s", "s", 1.0, kNonNegative, "no trigger before this time (0: off)",
+          {"arm_after_s", "s", 1.0, kNonNegativeRange, "no trigger before this time (0: off)",
            arm_after_s}};
 }
 
@@ -59,9 +56,9 @@ KeyTable stretch_reflex_key_table(ReflexConfig* reflex, double* velocity_lowpass
                "the command follows the velocity, or holds its trigger value")};
   const ReflexConfig model = table_ii_reflex_config(ReflexSensor::kModel);
   const ReflexConfig fiber = table_ii_reflex_config(ReflexSensor::kFiber);
-  NumberRow v_thr{"v_thr_mm_s", "mm/s", units::kMPerMm, kPositive,
+  NumberRow v_thr{"v_thr_mm_s", "mm/s", units::kMPerMm, kPositiveRange,
                   "the trigger threshold V_thr, Eq. (12)", &r.v_thr_m_s};
-  NumberRow k{"k_MPa_s_per_mm", "MPa s/mm", units::kPaPerMPa / units::kMPerMm, kNonNegative,
+  NumberRow k{"k_MPa_s_per_mm", "MPa s/mm", units::kPaPerMPa / units::kMPerMm, kNonNegativeRange,
               "the reflex gain k, Eq. (13)-(14)", &r.k_pa_s_per_m};
   v_thr.fallback_doc = "(Table II: " + format_number(from_si(v_thr, model.v_thr_m_s)) +
                        " model, " + format_number(from_si(v_thr, fiber.v_thr_m_s)) + " fiber)";
@@ -71,10 +68,10 @@ KeyTable stretch_reflex_key_table(ReflexConfig* reflex, double* velocity_lowpass
        window_rows(&r.duration_s, &r.refractory_s, &r.arm_after_s, "the reflex")) {
     t.numbers.push_back(row);
   }
-  t.numbers.push_back({"lowpass_hz", "Hz", 1.0, kNonNegative,
+  t.numbers.push_back({"lowpass_hz", "Hz", 1.0, kNonNegativeRange,
                        "low-pass on the estimated velocity (0: off; at most sim.control_hz / 2)",
                        velocity_lowpass_hz});
-  t.numbers.push_back({"min_tension_N", "N", 1.0, kNonNegative,
+  t.numbers.push_back({"min_tension_N", "N", 1.0, kNonNegativeRange,
                        "trigger only while the gauge reads at least this tension",
                        &r.min_tension_n});
   return t;
@@ -87,18 +84,18 @@ KeyTable tension_reflex_key_table(TensionReflexParams* ib) {
                      "the output also raises the pair partner's command", &p.excite_antagonist});
   t.choices.push_back(mode_row(&p.mode, "reflex.ib.mode",
                                "the output follows the tension, or holds its trigger value"));
-  NumberRow f_thr{"f_thr_N", "N", 1.0, kPositive,
+  NumberRow f_thr{"f_thr_N", "N", 1.0, kPositiveRange,
                   "the tension (Ib) reflex's threshold on the gauge's tension", &p.f_thr_N};
-  NumberRow k{"k_MPa_per_N", "MPa/N", units::kPaPerMPa, kNonNegative,
+  NumberRow k{"k_MPa_per_N", "MPa/N", units::kPaPerMPa, kNonNegativeRange,
               "its gain: dp = k f, off its own muscle's command", &p.k_pa_per_n};
   f_thr.required = k.required = true;
   t.numbers = {f_thr, k,
-               {"df_thr_N_s", "N/s", 1.0, kNonNegative,
+               {"df_thr_N_s", "N/s", 1.0, kNonNegativeRange,
                 "it also triggers when the tension's rate exceeds this (0: off)", &p.df_thr_N_s}};
   for (NumberRow& row : window_rows(&p.duration_s, &p.refractory_s, &p.arm_after_s, "its")) {
     t.numbers.push_back(row);
   }
-  t.numbers.push_back({"rate_lowpass_hz", "Hz", 1.0, kNonNegative,
+  t.numbers.push_back({"rate_lowpass_hz", "Hz", 1.0, kNonNegativeRange,
                        "low-pass on the tension's rate (0: off; at most sim.control_hz / 2)",
                        &p.rate_lowpass_hz});
   return t;

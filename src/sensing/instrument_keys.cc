@@ -11,9 +11,6 @@ namespace pamsim {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-const KeyRange kPositive{0.0, kInf, true, false};
-const KeyRange kNonNegative{0.0, kInf, false, false};
-const KeyRange kAny{-kInf, kInf, true, true};
 constexpr double kMm = units::kMPerMm;
 constexpr double kMPa = units::kPaPerMPa;
 
@@ -33,21 +30,21 @@ KeyTable board_table(GaugeHardwareConfig& g) {
               "the board's first bending mode rings under a sharp pull and the gauge samples it "
               "(board_vibration.h)", &v.enabled}};
   t.numbers = {
-      {"youngs_modulus_MPa", "MPa", kMPa, kPositive, "the acrylic board's modulus",
+      {"youngs_modulus_MPa", "MPa", kMPa, kPositiveRange, "the acrylic board's modulus",
        &b.youngs_modulus_pa},
-      {"width_mm", "mm", kMm, kPositive, "the board's width (ASSUMPTION: not published)",
+      {"width_mm", "mm", kMm, kPositiveRange, "the board's width (ASSUMPTION: not published)",
        &b.width_m},
-      {"thickness_mm", "mm", kMm, kPositive, "the board's thickness (ASSUMPTION)",
+      {"thickness_mm", "mm", kMm, kPositiveRange, "the board's thickness (ASSUMPTION)",
        &b.thickness_m},
-      {"gauge_position_mm", "mm", kMm, kNonNegative,
+      {"gauge_position_mm", "mm", kMm, kNonNegativeRange,
        "the gauge's distance from the clamp (ASSUMPTION)", &b.gauge_position_m},
-      {"contact_position_mm", "mm", kMm, kPositive,
+      {"contact_position_mm", "mm", kMm, kPositiveRange,
        "where the line bears on the board, beyond gauge_position_mm (ASSUMPTION)",
        &b.contact_position_m},
-      {"length_mm", "mm", kMm, kNonNegative,
+      {"length_mm", "mm", kMm, kNonNegativeRange,
        "the board's free end: 0 (it ends at contact_position_mm) or at least that "
        "(ASSUMPTION)", &b.length_m},
-      {"density_kg_m3", "kg/m^3", 1.0, kPositive, "the board's density (PMMA)",
+      {"density_kg_m3", "kg/m^3", 1.0, kPositiveRange, "the board's density (PMMA)",
        &v.density_kg_m3},
       {"loss_factor", "", 1.0, {0.0, 1.0, true, true},
        "the board's material loss factor (PMMA 0.02-0.04); damping ratio = half of it",
@@ -61,17 +58,17 @@ KeyTable contact_table(GaugeContactParams& c) {
                        "the line's contact on the board held, or sliding and sticking along its "
                        "edge and lost past its free end (gauge_contact.h)", &c.sliding)};
   t.numbers = {
-      {"misalignment_mm", "mm", kMm, kAny,
+      {"misalignment_mm", "mm", kMm, kAnyRange,
        "the arm's shaft beside the muscle's fitting, along the board's edge (ASSUMPTION)",
        &c.misalignment_m},
       {"fitting_distance_mm", "mm", kMm, {1.0, kInf, false, false},
        "from the muscle's end fitting to the board's edge at the start (ASSUMPTION)",
        &c.fitting_distance_m},
-      {"shaft_distance_mm", "mm", kMm, kPositive,
+      {"shaft_distance_mm", "mm", kMm, kPositiveRange,
        "from the board's edge on to the arm's shaft (ASSUMPTION)", &c.shaft_distance_m},
       {"wrap_deg", "deg", 1.0, {0.0, 180.0, true, true},
        "the line's bend over the board's edge (ASSUMPTION)", &c.wrap_deg},
-      {"friction_coefficient", "", 1.0, kNonNegative,
+      {"friction_coefficient", "", 1.0, kNonNegativeRange,
        "line on board (ASSUMPTION: nylon on acrylic)", &c.friction_coefficient}};
   return t;
 }
@@ -86,9 +83,9 @@ std::vector<KeyTable> gauge_hardware_key_tables(GaugeHardwareConfig* gauge) {
                             "Eq. (8) as exact, or the gauge as board, bridge and calibration",
                             &g.enabled)};
   bridge.numbers = {
-      {"excitation_V", "V", 1.0, kPositive, "the bridge's excitation", &q.excitation_v},
-      {"gauge_factor", "", 1.0, kPositive, "the foil gauge's gauge factor", &q.gauge_factor},
-      {"nominal_Ohm", "Ohm", 1.0, kPositive,
+      {"excitation_V", "V", 1.0, kPositiveRange, "the bridge's excitation", &q.excitation_v},
+      {"gauge_factor", "", 1.0, kPositiveRange, "the foil gauge's gauge factor", &q.gauge_factor},
+      {"nominal_Ohm", "Ohm", 1.0, kPositiveRange,
        "the gauge's and the completion resistors' resistance", &q.nominal_ohm},
       {"tolerance_pct", "%", 1.0, {0.0, 100.0, false, true},
        "each bridge arm within nominal +- this (paper: 0.5 Ohm of 120)", &q.tolerance_pct}};
@@ -96,7 +93,7 @@ std::vector<KeyTable> gauge_hardware_key_tables(GaugeHardwareConfig* gauge) {
   calibration.ints = {int_row("steps", "its load steps up (and as many down)", 1, 1000,
                               &g.calibration_steps)};
   calibration.numbers = {
-      {"max_N", "N", 1.0, kPositive, "the static calibration's largest load",
+      {"max_N", "N", 1.0, kPositiveRange, "the static calibration's largest load",
        &g.calibration_max_n},
       {"hold_s", "s", 1.0, {0.0, 3600.0, false, false},
        "how long each load is held before it is read", &g.calibration_hold_s}};
@@ -110,25 +107,25 @@ KeyTable pressure_hardware_key_table(PressureHardwareConfig* pressure) {
                        "the pressure sensor exact (+ noise), or the PSE540 class's offset, gain, "
                        "hysteresis, response and drift", &p.enabled)};
   t.numbers = {
-      {"bias_mean_MPa", "MPa", kMPa, kAny,
+      {"bias_mean_MPa", "MPa", kMPa, kAnyRange,
        "mean of each sensor's offset, drawn once per instrument", &p.bias_mean_pa},
-      {"bias_stddev_MPa", "MPa", kMPa, kNonNegative,
+      {"bias_stddev_MPa", "MPa", kMPa, kNonNegativeRange,
        "spread of each sensor's offset (ASSUMPTION: +-2 % F.S. as 3 sigma, half of it zero)",
        &p.bias_stddev_pa},
       {"gain_error_stddev_pct", "%", 1.0, {0.0, 50.0, false, false},
        "spread of each sensor's gain error (ASSUMPTION: the other half)",
        &p.gain_error_stddev_pct},
-      {"dynamic_bias_stddev_MPa", "MPa", kMPa, kNonNegative,
+      {"dynamic_bias_stddev_MPa", "MPa", kMPa, kNonNegativeRange,
        "stationary SD of the zero's Gauss-Markov drift, drawn per trial (ASSUMPTION)",
        &p.dynamic_bias_stddev_pa},
-      {"dynamic_bias_correlation_time_s", "s", 1.0, kPositive, "that drift's correlation time",
+      {"dynamic_bias_correlation_time_s", "s", 1.0, kPositiveRange, "that drift's correlation time",
        &p.dynamic_bias_correlation_time_s},
-      {"hysteresis_MPa", "MPa", kMPa, kNonNegative,
+      {"hysteresis_MPa", "MPa", kMPa, kNonNegativeRange,
        "full width of the rising/falling loop (ASSUMPTION: the 0.2 % F.S. repeatability)",
        &p.hysteresis_pa},
-      {"response_time_ms", "ms", 1e-3, kNonNegative,
+      {"response_time_ms", "ms", 1e-3, kNonNegativeRange,
        "0-90 % rise of the first-order response (ASSUMPTION)", &p.response_time_s},
-      {"precision_MPa", "MPa", kMPa, kNonNegative,
+      {"precision_MPa", "MPa", kMPa, kNonNegativeRange,
        "the output rounded to this step, 0: none (Gazebo's precision; the ADC quantises too)",
        &p.precision_pa}};
   return t;
@@ -143,7 +140,7 @@ KeyTable fiber_hardware_key_table(FiberHardwareConfig* fiber) {
       {"nonlinearity_pct", "%", 1.0, {-100.0, 100.0, true, true},
        "the reading's error at span_mm from the calibration length (ASSUMPTION)",
        &fiber->nonlinearity_pct},
-      {"span_mm", "mm", kMm, kPositive, "the displacement nonlinearity_pct refers to",
+      {"span_mm", "mm", kMm, kPositiveRange, "the displacement nonlinearity_pct refers to",
        &fiber->span_m}};
   return t;
 }
@@ -153,7 +150,7 @@ KeyTable encoder_key_table(EncoderConfig* encoder) {
   t.choices = {two_way("model", "ideal", "counts",
                        "the linear encoder exact, or counting resolution_mm steps",
                        &encoder->enabled)};
-  t.numbers = {{"resolution_mm", "mm", kMm, kPositive,
+  t.numbers = {{"resolution_mm", "mm", kMm, kPositiveRange,
                 "the encoder's count (ASSUMPTION: DS-025 class); used by the fiber's "
                 "calibration", &encoder->resolution_m}};
   return t;
