@@ -8,9 +8,9 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
+#include "base/double_bits.h"
 #include "sensing/sensing.h"
 #include "sensing_test_util.h"
 
@@ -45,8 +45,7 @@ std::uint64_t digest(const std::vector<std::vector<MuscleReading>>& readings) {
   for (const auto& tick : readings) {
     for (const MuscleReading& r : tick) {
       for (double x : fields(r)) {
-        std::uint64_t bits = 0;
-        std::memcpy(&bits, &x, sizeof bits);
+        const std::uint64_t bits = double_bits(x);
         for (int k = 0; k < 8; ++k) {
           h ^= (bits >> (8 * k)) & 0xffu;
           h *= 1099511628211ull;

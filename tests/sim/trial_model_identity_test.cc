@@ -10,13 +10,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <cstring>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <mujoco/mujoco.h>
 
+#include "base/double_bits.h"
 #include "base/input_error.h"
 #include "pam_actuator/avbdl_keys.h"
 #include "sim/core/muscle_binding.h"
@@ -27,11 +27,7 @@
 namespace pamsim {
 namespace {
 
-void bits(std::ostringstream& os, double v) {
-  std::uint64_t b = 0;
-  std::memcpy(&b, &v, sizeof(b));
-  os << b << ';';
-}
+void bits(std::ostringstream& os, double v) { os << double_bits(v) << ';'; }
 
 // a muscle's binding: its spring law, line and plant (every plant row, the series' terms)
 void binding_text(std::ostringstream& os, const MuscleBinding& b) {

@@ -1,20 +1,15 @@
 // trial_model_identity.cc: same_trial_model (trial_model.h): whether two scenarios build
 // the same trial model, by comparing everything load_trial_model reads, as text (doubles by
 // their bits).
-#include <cstdint>
-#include <cstring>
 #include <sstream>
 
+#include "base/double_bits.h"
 #include "sim/core/trial_model.h"
 
 namespace pamsim {
 namespace {
 
-void append_bits(std::ostringstream& os, double v) {
-  std::uint64_t bits = 0;
-  std::memcpy(&bits, &v, sizeof(bits));
-  os << bits << ';';
-}
+void append_bits(std::ostringstream& os, double v) { os << double_bits(v) << ';'; }
 
 }  // namespace
 
