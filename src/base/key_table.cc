@@ -99,8 +99,8 @@ void read_key_rows(ConfigReader& in, const KeyTable& table) {
     for (double si : *row.target) shown.push_back(si / row.to_si);
     const std::vector<double> values = in.get_double_list(k, shown);
     if (!in.has(k)) continue;
-    in.check(values.size() <= row.max_count, k, "must list at most " +
-                                                    std::to_string(row.max_count) + " values");
+    const std::string count = list_count_problem(row, values.size());
+    in.check(count.empty(), k, count);
     row.target->clear();
     for (double v : values) {
       in.check(row.range.contains(v), k, "must hold values in " + row.range.text() + ", got " +

@@ -79,7 +79,7 @@ struct BoolRow {
   bool* target = nullptr;
 };
 
-// A list of numbers (a series' terms), each in `range` in the file's unit, at most
+// A list of numbers (a series' terms), each in `range` in the file's unit, min_count to
 // max_count of them; the SI values go to *target.
 struct ListRow {
   std::string name;
@@ -90,6 +90,7 @@ struct ListRow {
   std::string doc;
   std::vector<double>* target = nullptr;
   std::string fallback_doc{};   // the default as a reference shows it ("(the model's)")
+  std::size_t min_count = 0;    // the fewest a given list may hold
 };
 
 // A free text key (a name, a source's citation).

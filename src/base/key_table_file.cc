@@ -46,10 +46,8 @@ void read_list(const std::string& path, const std::string& key, const ListRow& r
                const toml::node& node) {
   const toml::array* list = node.as_array();
   if (list == nullptr) throw file_key_error(path, key, "must be a list of numbers");
-  if (list->size() > row.max_count) {
-    throw file_key_error(path, key, "must list at most " + std::to_string(row.max_count) +
-                                        " values, got " + std::to_string(list->size()));
-  }
+  const std::string count = list_count_problem(row, list->size());
+  if (!count.empty()) throw file_key_error(path, key, count);
   std::vector<double> values;
   for (std::size_t i = 0; i < list->size(); ++i) {
     const toml::node& item = *list->get(i);

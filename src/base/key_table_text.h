@@ -1,8 +1,10 @@
 // key_table_text.h: the words a key table's messages and references share (key_table.cc
 // reads a scenario's rows and writes the reference, key_table_file.cc reads a parameter file):
-// a choice's names, an integer's range, a list's allowance, a value out of its range.
+// a choice's names, an integer's range, a list's allowance and count, a value out of its
+// range.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "base/format.h"
@@ -38,9 +40,20 @@ std::string out_of_range(const Row& row, double v) {
          ", got " + format_value(v);
 }
 
-// "up to 4 of (0, inf)"
+// "up to 4 of (0, inf)", "1 to 4 of ...", "3 of ..."
 inline std::string list_allowed(const ListRow& row) {
-  return "up to " + std::to_string(row.max_count) + " of " + row.range.text();
+  const std::string count = row.min_count == row.max_count ? std::to_string(row.max_count)
+                            : row.min_count > 0 ? std::to_string(row.min_count) + " to " +
+                                                      std::to_string(row.max_count)
+                                                : "up to " + std::to_string(row.max_count);
+  return count + " of " + row.range.text();
+}
+
+// "must list 3 values, got 2": a list's count outside [min_count, max_count], or ""
+inline std::string list_count_problem(const ListRow& row, std::size_t n) {
+  if (n >= row.min_count && n <= row.max_count) return "";
+  return "must list " + list_allowed(row).substr(0, list_allowed(row).find(" of ")) +
+         " values, got " + std::to_string(n);
 }
 
 }  // namespace pamsim::key_table_text

@@ -52,7 +52,7 @@ std::vector<KeyTable> plant_key_tables(PlantFile* f) {
        "the Prony series' g_i, one per relaxation_times_s", &f->relaxation_weights}};
   table_named(tables, "friction").lists = {
       {"breakaway_mm", "mm", units::kMPerMm, kPositiveRange, count(kMaxSlipElements),
-       "model = \"maxwell_slip\": the elements' breakaway travels", &f->breakaway_m},
+       "model = \"maxwell_slip\": the elements' breakaway travels", &f->breakaway_m, "", 1},
       {"weights", "", 1.0, {0.0, 1.0, true}, count(kMaxSlipElements),
        "model = \"maxwell_slip\": the elements' shares of the friction, summing to 1",
        &f->slip_weights}};

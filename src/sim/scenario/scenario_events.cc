@@ -119,8 +119,7 @@ void read_bodies(ConfigReader& in, Scenario* sc) {
     in.check(keys.mass_kg || in.has(inertia_key), key, "is required (or inertia_kg_m2)");
     BodyMassSpec spec{keys.mass_kg ? key : inertia_key, body, keys.mass_kg.value_or(0.0), {}};
     if (in.has(inertia_key)) {
-      const std::vector<double>& i = keys.inertia_kg_m2;
-      in.check(i.size() == 3, inertia_key, "must be [I1, I2, I3] in kg m^2 (principal moments)");
+      const std::vector<double>& i = keys.inertia_kg_m2;   // three (its row)
       for (int k = 0; k < 3; ++k) {
         in.check(i[k] <= i[(k + 1) % 3] + i[(k + 2) % 3], inertia_key,
                  "is no rigid body's: each moment must be at most the sum of the other two");
@@ -148,8 +147,7 @@ void read_bodies_and_holds(ConfigReader& in, Scenario* sc) {
     read_key_rows(in, rows_given(in, table));
     h.at_position = in.has(h.key + ".position_m");
     if (h.at_position) {
-      in.check(position.size() == 3, h.key + ".position_m", "must be [x, y, z] in m");
-      h.position_m = {position[0], position[1], position[2]};
+      h.position_m = {position[0], position[1], position[2]};   // three (its row)
       in.check(!in.has(h.key + ".above_site") && !in.has(h.key + ".height_m"), h.key,
                "gives position_m and above_site or height_m; give one");
     } else {

@@ -65,7 +65,7 @@ KeyTable body_key_table(BodyKeys* body) {
   t.lists = {{"inertia_kg_m2", "kg m^2", 1.0, {0.0, 1000.0, true, false}, 3,
               "a body's principal moments of inertia [I1, I2, I3] about its centre of mass, in "
               "place of the model's; each at most the sum of the others",
-              &body->inertia_kg_m2, "(the model's)"}};
+              &body->inertia_kg_m2, "(the model's)", 3}};
   return t;
 }
 
@@ -78,7 +78,7 @@ KeyTable hold_key_table(HoldSpec* hold, std::vector<double>* position_m) {
               &hold->above_site}};
   t.lists = {{"position_m", "m", 1.0, {-inf, inf}, 3,
               "hold the body at [x, y, z] in the world instead (not with above_site)",
-              position_m, "(none)"}};
+              position_m, "(none)", 3}};
   return t;
 }
 
