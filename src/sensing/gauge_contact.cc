@@ -26,6 +26,12 @@ GaugeContact::GaugeContact(const GaugeContactParams& c, const GaugeBoardParams& 
       y0_m_(board.contact_position_m),
       y_m_(board.contact_position_m) {}
 
+void GaugeContact::reseat(double shift_m) {
+  y0_m_ += shift_m;
+  y_m_ = std::max(y_m_ + shift_m, 0.0);
+  if (y_m_ > free_end_m_) lost_ = true;
+}
+
 void GaugeContact::follow(double length_m, double f_n) {
   if (!started_) {
     start_length_m_ = length_m;

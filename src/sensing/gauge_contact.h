@@ -42,6 +42,11 @@ struct GaugeContactParams {
   double shaft_distance_m = 0.250;     // d2, shaft_distance_mm > 0
   double wrap_deg = 30.0;              // theta, wrap_deg in (0, 180)
   double friction_coefficient = 0.3;   // mu >= 0
+  // reseat_mm: the contact's shift along the edge between the gauge's static calibration
+  // and the trial (the paper's "slight positional shifts of the fishing line", Sec. IV-B),
+  // which scales the trial's reading by the lever's change, (y0 + shift - y_g) / (y0 - y_g).
+  // A line re-laid on the board rests anywhere its stick band holds it: +-w of y*.
+  double reseat_m = 0.0;
 };
 
 // y* [m] once the muscle has shortened by s [m] from the start (negative: lengthened).
@@ -57,6 +62,9 @@ class GaugeContact {
   // fixes the start length (the contact at the board's contact position).
   void follow(double length_m, double f_n);
   double position_m() const { return y_m_; }
+  // Moves the contact, and the position it rests at, by shift_m along the edge (past the
+  // free end: lost).
+  void reseat(double shift_m);
   bool lost() const { return lost_; }
 
  private:

@@ -24,6 +24,11 @@ double nominal_volts_per_newton(const GaugeHardwareConfig& c) {
   return c.bridge.excitation_v * c.bridge.gauge_factor / 4.0 * strain_per_n;
 }
 
+// the board's creep: its Prony lists, or its Findley law as a series
+std::vector<PronyTerm> board_creep(const GaugeHardwareConfig& c) {
+  return c.creep.empty() ? findley_prony_terms(c.findley) : c.creep;
+}
+
 }  // namespace
 
 void validate(const GaugeHardwareConfig& c) {
@@ -33,6 +38,18 @@ void validate(const GaugeHardwareConfig& c) {
   validate_gauge_board(c.board, "sensors.gauge.board.");
   validate_prony(c.creep, "sensors.gauge.board.creep_weights",
                  "sensors.gauge.board.creep_times_s");
+  if (!c.creep.empty() && c.findley.creep_1000h > 0.0) {
+    checks::fail("sensors.gauge.board.creep_1000h",
+                 "0 when creep_weights give the board's creep (one law or the other)",
+                 c.findley.creep_1000h);
+  }
+  // the re-seated line bears beyond the gauge and on the board
+  const double seat = c.board.contact_position_m + c.contact.reseat_m;
+  if (!(seat > c.board.gauge_position_m && seat <= board_free_length_m(c.board))) {
+    checks::fail("sensors.gauge.contact.reseat_mm",
+                 "such that the contact stays between gauge_position_mm and the board's free end",
+                 units::m_to_mm(c.contact.reseat_m));
+  }
   const double f1 = board_first_mode_hz(c.board, c.vibration);
   if (c.vibration.enabled && !(f1 > 0.0 && std::isfinite(f1))) {
     checks::fail("sensors.gauge.board.length_mm", "short enough that the board has a first mode",
@@ -63,7 +80,7 @@ GaugeHardware::GaugeHardware(const GaugeHardwareConfig& config, const StrainGaug
       arms_(draw_bridge(config.bridge, instrument_rng)),
       gain_(nominal.q_v_per_n / nominal_volts_per_newton(config)),
       offset_v_(nominal.v_base_v),
-      creep_(config.creep, sample_period_s),
+      creep_(board_creep(config), sample_period_s),
       contact_(config.contact, config.board) {
   config_.bridge.amplifier_gain = gain_;
 }

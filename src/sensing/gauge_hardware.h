@@ -25,6 +25,7 @@
 #include "pam_actuator/pam_params.h"
 #include "sensing/board_vibration.h"
 #include "sensing/gauge_board.h"
+#include "sensing/findley_creep.h"
 #include "sensing/gauge_contact.h"
 #include "sensing/prony_creep.h"
 #include "sensing/quarter_bridge.h"
@@ -42,8 +43,10 @@ struct GaugeHardwareConfig {
   // about 0.5 % strain at 50 N), a README row. E from gauge_board.h.
   GaugeBoardParams board = {3.3e9, 0.020, 0.005, 0.010, 0.040, 0.045};
   // sensors.gauge.board.creep_weights and creep_times_s (two lists of one length): none
-  // until sized from PMMA data
+  // by default; or the board's creep as cast PMMA's Findley law (findley_creep.h),
+  // sensors.gauge.board.creep_exponent and creep_1000h, run as its Prony series
   std::vector<PronyTerm> creep;
+  FindleyCreep findley;
   BoardVibrationParams vibration;   // sensors.gauge.board.vibration, density_kg_m3, loss_factor
   GaugeContactParams contact;       // sensors.gauge.contact.*
   std::uint64_t instrument_seed = 1;   // sensors.instrument_seed: which built instruments
@@ -79,6 +82,9 @@ class GaugeHardware {
   // at length_m pulled by f_n [N].
   void follow(double length_m, double f_n);
   bool contact_lost() const { return contact_.lost(); }
+  // The line re-seated between the static calibration and use: its contact moves by
+  // sensors.gauge.contact.reseat_mm along the board's edge (a no-op at 0).
+  void reseat() { contact_.reseat(config_.contact.reseat_m); }
 
   // The amplifier's output at the end of a tick over which the line pulled f_n [N] (or, once
   // observed, as far as the ringing board is bent now).

@@ -48,7 +48,13 @@ KeyTable board_table(GaugeHardwareConfig& g) {
        &v.density_kg_m3},
       {"loss_factor", "", 1.0, {0.0, 1.0, true, true},
        "the board's material loss factor (PMMA 0.02-0.04); damping ratio = half of it",
-       &v.loss_factor}};
+       &v.loss_factor},
+      {"creep_exponent", "", 1.0, {0.0, kMaxFindleyExponent, true, false},
+       "n of the board's Findley creep A (t / 1000 h)^n (cast PMMA: 0.24; findley_creep.h)",
+       &g.findley.exponent},
+      {"creep_1000h", "", 1.0, kNonNegativeRange,
+       "A: the board's creep after 1000 h per unit strain, 0: none (cast PMMA: about 0.6)",
+       &g.findley.creep_1000h}};
   return t;
 }
 
@@ -69,7 +75,10 @@ KeyTable contact_table(GaugeContactParams& c) {
       {"wrap_deg", "deg", 1.0, {0.0, 180.0, true, true},
        "the line's bend over the board's edge (ASSUMPTION)", &c.wrap_deg},
       {"friction_coefficient", "", 1.0, kNonNegativeRange,
-       "line on board (ASSUMPTION: nylon on acrylic)", &c.friction_coefficient}};
+       "line on board (ASSUMPTION: nylon on acrylic)", &c.friction_coefficient},
+      {"reseat_mm", "mm", kMm, kAnyRange,
+       "the contact moved along the edge between the static calibration and the trial (the "
+       "line re-laid; within its stick band, gauge_contact.h)", &c.reseat_m}};
   return t;
 }
 

@@ -96,6 +96,7 @@ SensorSuite::SensorSuite(const SensingConfig& config,
     if (hardware.enabled) {
       gauge.emplace(hardware, muscle.gauge, instruments, dt_s);
       calibrated = calibrate_gauge(*gauge, hardware, dt_s, muscle.key);
+      gauge->reseat();   // the line re-laid after the calibration, as the lab's may be
     }
     channels_.push_back(Channel{
         PressureSensor(config.sensors, pressure_hardware(config.sensors, seed, index, dt_s)),

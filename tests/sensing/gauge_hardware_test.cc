@@ -2,7 +2,8 @@
 // calibration: a nominal gauge reads the published Eq. (8) slope and offset, a built one
 // reads its own (the arms' offset, calibrated away), a creeping board calibrates to the
 // compliance its hold lets it reach (1 + g for a term much faster than the hold), the
-// instrument seed fixes the arms, and every bad key is named.
+// instrument seed fixes the arms, a line re-laid after calibration reads by the lever's
+// ratio, and every bad key is named.
 #include "sensing/gauge_hardware.h"
 
 #include <gtest/gtest.h>
@@ -71,6 +72,21 @@ TEST(GaugeHardwareTest, ACreepingBoardCalibratesToItsCompliance) {
   EXPECT_LT(quick.q_v_per_n, fit.q_v_per_n);
 }
 
+TEST(GaugeHardwareTest, ALineReseatedAfterCalibrationReadsByTheLeversRatio) {
+  // calibrated with the line 30 mm beyond the gauge, then laid 3 mm further out: a pull
+  // reads 33 / 30 of what the calibration says (the bridge's own curvature aside)
+  GaugeHardwareConfig c = config(0.0);
+  c.contact.sliding = false;
+  c.contact.reseat_m = 0.003;
+  std::mt19937_64 rng(1);
+  GaugeHardware gauge(c, kPublished, rng, kControlDt);
+  const StrainGaugeParams calibrated = calibrate_gauge(gauge, c, kControlDt, "k");
+  gauge.reseat();
+  const double lever = c.board.contact_position_m - c.board.gauge_position_m;
+  const double read = (gauge.voltage(20.0) - calibrated.v_base_v) / calibrated.q_v_per_n;
+  EXPECT_NEAR(read / 20.0, (lever + 0.003) / lever, 2e-3);
+}
+
 TEST(GaugeHardwareTest, TheInstrumentSeedFixesTheArms) {
   const GaugeHardwareConfig c = config(0.4);
   std::mt19937_64 a(5), b(5), other(6);
@@ -99,6 +115,16 @@ TEST(GaugeHardwareTest, EveryBadKeyIsNamed) {
       {"sensors.gauge.board.density_kg_m3", [](GaugeHardwareConfig& c) { c.vibration.density_kg_m3 = -1; }},
       {"sensors.gauge.board.length_mm", [](GaugeHardwareConfig& c) { c.board.length_m = 0.030; }},
       {"sensors.gauge.board.length_mm", [](GaugeHardwareConfig& c) { c.board.length_m = 1e200; }},
+      {"sensors.gauge.board.creep_exponent", [](GaugeHardwareConfig& c) { c.findley.exponent = 0; }},
+      {"sensors.gauge.board.creep_exponent", [](GaugeHardwareConfig& c) { c.findley.exponent = 0.8; }},
+      {"sensors.gauge.board.creep_1000h", [](GaugeHardwareConfig& c) { c.findley.creep_1000h = -1; }},
+      {"sensors.gauge.board.creep_1000h", [](GaugeHardwareConfig& c) {
+         c.findley.creep_1000h = 0.6;   // and a Prony series: one law or the other
+         c.creep = {{0.1, 1}};
+       }},
+      // the board ends 5 mm beyond the contact, the gauge 30 mm before it
+      {"sensors.gauge.contact.reseat_mm", [](GaugeHardwareConfig& c) { c.contact.reseat_m = 0.006; }},
+      {"sensors.gauge.contact.reseat_mm", [](GaugeHardwareConfig& c) { c.contact.reseat_m = -0.031; }},
   };
   for (const Case& k : cases) {
     GaugeHardwareConfig c = config(0.4);
