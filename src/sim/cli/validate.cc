@@ -30,6 +30,7 @@
 #include "sim/io/provenance.h"
 #include "sim/io/staged_outputs.h"
 #include "sim/validate/length_estimation.h"
+#include "sim/validate/protocol_bands.h"
 #include "sim/validate/protocol_budgets.h"
 #include "sim/validate/reaching.h"
 
@@ -45,6 +46,8 @@ struct ValidateOptions {
   int threads = 0;
   bool force = false;
   bool budget = false;
+  std::optional<int> bands;    // --bands N
+  bool sensitivity = false;
   bool no_plot = false;
   bool quiet = false;
   std::string plot_format = "png";
@@ -66,6 +69,14 @@ const std::vector<std::string> kBudgetOutputs = [] {
   for (const std::string& plot : plot_file_names({"budget.png"})) names.push_back(plot);
   return names;
 }();
+
+const std::vector<std::string> kBandsOutputs = [] {
+  std::vector<std::string> names = {"bands.csv", "bands.md", "draws.csv", kProvenanceFile};
+  for (const std::string& plot : plot_file_names({"bands.png"})) names.push_back(plot);
+  return names;
+}();
+const std::vector<std::string> kSensitivityOutputs = {"sensitivity.csv", "sensitivity.md",
+                                                      kProvenanceFile};
 
 // provenance.json of a validation: its protocol file, overrides, seed and threads.
 void write_validation_provenance(const ValidateOptions& o, const ValidationOptions& v,
@@ -145,10 +156,65 @@ void run_budget_command(const ValidateOptions& o, const std::string& name,
             << (plots ? ", budget.png)\n" : ")\n");
 }
 
+// --bands N or --sensitivity: runs the protocol's `bands` (protocol_bands.h) or its
+// `sensitivity` and writes their files into --out (default renders/validate_<name>_bands or
+// _sensitivity)
+void run_bands_command(const ValidateOptions& o, const std::string& name,
+                       const std::function<Bands(const ValidationOptions&)>& bands,
+                       const std::function<Sensitivity(const ValidationOptions&)>& sensitivity) {
+  const auto started = std::chrono::steady_clock::now();
+  const std::string started_utc = utc_timestamp();
+  const bool banded = o.bands.has_value();
+  if (banded && (*o.bands < 1 || *o.bands > kMaxBandRigs)) {
+    throw InputError("--bands must be in [1, " + std::to_string(kMaxBandRigs) + "], got " +
+                     std::to_string(*o.bands));
+  }
+  const std::string what = banded ? "bands" : "sensitivity";
+  ValidationOptions v = common_options(o, "renders/validate_" + name + "_" + what);
+  const std::vector<std::string>& outputs = banded ? kBandsOutputs : kSensitivityOutputs;
+  if (!o.force) refuse_earlier_outputs(v.out_dir, outputs);
+  use_plot_formats(o.plot_format);
+  const bool plots = plots_wanted(o.no_plot);
+  require_writable(v.out_dir);
+  const std::string command = "validate " + name + (banded ? " --bands " + std::to_string(*o.bands)
+                                                           : std::string(" --sensitivity"));
+  std::shared_ptr<ProgressReporter> progress;
+  int total = 0;
+  v.started = [&](int n) {
+    total = n;
+    std::cerr << "pamsim " << command << ": " << n << " trials on " << v.threads
+              << (v.threads == 1 ? " thread" : " threads") << "\n";
+    attach_progress(&v, "pamsim " + command, n, o.quiet, &progress);
+  };
+  v.progress = [&](int done, int) {
+    if (progress) progress->update(done);
+  };
+  std::optional<Bands> b;
+  std::optional<Sensitivity> s;
+  if (banded) b = bands(v);
+  else s = sensitivity(v);
+  if (progress) progress->finish(total);
+  StagedOutputs staged(v.out_dir, outputs);
+  staged.write([&] {
+    if (b) write_bands(*b, staged.staging(), plots);
+    if (s) write_sensitivity(*s, staged.staging());
+    write_validation_provenance(o, v, command, staged.path(kProvenanceFile), started, started_utc);
+  });
+  staged.publish();
+  std::cout << (b ? bands_markdown(*b) : sensitivity_markdown(*s));
+  std::cerr << "pamsim validate: outputs in " << v.out_dir << "\n";
+}
+
 void run_length_estimation(const ValidateOptions& o) {
   const auto started = std::chrono::steady_clock::now();
   const std::string started_utc = utc_timestamp();
   const LengthValidationSpec spec = load_length_validation(o.file, o.pams);
+  if (o.bands || o.sensitivity) {
+    return run_bands_command(
+        o, "length_estimation",
+        [&](const ValidationOptions& v) { return run_length_bands(spec, v, *o.bands); },
+        [&](const ValidationOptions& v) { return run_length_sensitivity(spec, v); });
+  }
   if (o.budget) {
     return run_budget_command(o, "length_estimation", spec.budget,
                               static_cast<int>(spec.pams.size()),
@@ -187,6 +253,12 @@ void run_reaching(const ValidateOptions& o) {
   const auto started = std::chrono::steady_clock::now();
   const std::string started_utc = utc_timestamp();
   const ReachingValidationSpec spec = load_reaching_validation(o.file);
+  if (o.bands || o.sensitivity) {
+    return run_bands_command(
+        o, "reaching",
+        [&](const ValidationOptions& v) { return run_reaching_bands(spec, v, *o.bands); },
+        [&](const ValidationOptions& v) { return run_reaching_sensitivity(spec, v); });
+  }
   if (o.budget) {
     return run_budget_command(o, "reaching", spec.budget, spec.trials,
                               [&](const ValidationOptions& v) {
@@ -227,6 +299,17 @@ void add_common(CLI::App* cmd, ValidateOptions* o, const std::string& default_fi
   cmd->add_flag("--budget", o->budget,
                 "The error budget instead of the table: the protocol with each hardware error "
                 "source ([[budget_source]]) on and off (budget.csv, budget.md, budget.png)");
+  CLI::Option* bands = cmd->add_option(
+      "--bands", o->bands,
+      "Run the protocol on N rigs drawn from the file's [[bracket]] tables, every hardware "
+      "source on: each cell as median [5 %, 95 %] with the paper's value beside (bands.csv, "
+      "bands.md, draws.csv, bands.png)");
+  CLI::Option* sensitivity = cmd->add_flag(
+      "--sensitivity", o->sensitivity,
+      "Each [[bracket]] alone at its two ends: which unknown moves which cell "
+      "(sensitivity.csv, sensitivity.md)");
+  bands->excludes(sensitivity);
+  cmd->get_option("--budget")->excludes(bands)->excludes(sensitivity);
   cmd->add_flag("--no-plot", o->no_plot, "Write no figures (gnuplot not needed)");
   cmd->add_flag("--quiet", o->quiet, "No progress bar or progress lines");
   add_plot_format_option(cmd, &o->plot_format);

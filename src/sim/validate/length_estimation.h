@@ -16,6 +16,7 @@
 //                       offset_MPa (the sine's, Eq. (6)-(7)), paper = { eq3 = [max, RMSE],
 //                       ... } (Table III, % of length; optional)
 //   [[budget_source]]   the hardware's error sources for --budget (error_budget.h)
+//   [[bracket]], bracket_seed  the rig's unsized parts for --bands, --sensitivity (bands.h)
 // Each PAM's dynamic trials set muscles.pam.plant, muscles.pam.params (the fit, written as
 // a PAM file), bodies.weight.mass_kg and muscles.pam.command.offset_MPa on the rig.
 #pragma once
@@ -33,6 +34,7 @@
 #include "pam_actuator/plant_params.h"
 #include "pam_actuator/tensile_test.h"
 #include "sim/core/trial.h"
+#include "sim/validate/bands.h"
 #include "sim/validate/error_budget.h"
 #include "sim/validate/validation_options.h"
 
@@ -58,6 +60,8 @@ struct LengthValidationSpec {
   std::string gauge_file;
   std::vector<ValidationPam> pams;
   std::vector<BudgetSource> budget;  // [[budget_source]]
+  std::vector<Bracket> brackets;     // [[bracket]]: the rig's unsized parts (bands.h)
+  std::uint64_t bracket_seed = 1;
 };
 
 // Reads and validates the protocol, with `protocol_overrides` ("key=value" of the protocol

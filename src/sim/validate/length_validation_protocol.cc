@@ -165,6 +165,7 @@ LengthValidationSpec load_length_validation(const std::string& path,
   }
   spec.pams = pams_asked(std::move(pams), only);
   spec.budget = read_budget_sources(in);
+  spec.brackets = read_brackets(in, &spec.bracket_seed);
   in.reject_unknown();
   return spec;
 }

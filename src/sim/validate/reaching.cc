@@ -110,6 +110,7 @@ ReachingValidationSpec load_reaching_validation(
   }
   in.raw("paper");
   spec.budget = read_budget_sources(in);
+  spec.brackets = read_brackets(in, &spec.bracket_seed);
   in.reject_unknown();
   return spec;
 }

@@ -15,6 +15,7 @@
 //   [paper]       <method>_<muscle>[_before_slack|_after_slack] = [max, RMSE] (% of
 //                 length), method "model" or "fiber", muscle the scenario's muscle name
 //   [[budget_source]] the hardware's error sources for --budget (error_budget.h)
+//   [[bracket]], bracket_seed  the rig's unsized parts for --bands, --sensitivity (bands.h)
 // The fiber sensor reads only the rate of length change: its length is the rate integrated
 // from the encoder's length at the window's start (the paper calibrated it so).
 #pragma once
@@ -27,6 +28,7 @@
 
 #include "sim/core/scenario.h"
 #include "sim/core/trial.h"
+#include "sim/validate/bands.h"
 #include "sim/validate/error_budget.h"
 #include "sim/validate/validation_options.h"
 
@@ -40,6 +42,8 @@ struct ReachingValidationSpec {
   double min_slack_s = 0.1;
   std::map<std::string, ErrorPct> paper;  // "model_agonist", "fiber_antagonist_after_slack"
   std::vector<BudgetSource> budget;       // [[budget_source]]
+  std::vector<Bracket> brackets;     // [[bracket]]: the rig's unsized parts (bands.h)
+  std::uint64_t bracket_seed = 1;
 };
 
 // Throws InputError "<file>: <key> <problem>". `protocol_overrides` ("key=value" of the

@@ -1,0 +1,184 @@
+// bands.cc: the brackets read and checked, the drawn rigs' runs, the sensitivity runs and
+// the statistics; the tables are written in bands_tables.cc.
+#include "sim/validate/bands.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "base/format.h"
+#include "base/input_error.h"
+#include "sim/scenario/randomize.h"
+
+namespace pamsim {
+namespace {
+
+void check_bracket_name(const TableEntry& e, const std::string& name,
+                        const std::vector<Bracket>& before) {
+  e.in.check(!name.empty(), e.where + "name", "must not be empty");
+  e.in.check(name.find_first_of(",\"|\t\n\r") == std::string::npos, e.where + "name",
+             "must hold no comma, quote, bar, tab or newline, got \"" + name + "\"");
+  for (const Bracket& b : before) {
+    e.in.check(b.name != name, e.where + "name", "repeats another bracket's, \"" + name + "\"");
+    e.in.check(b.key != e.text("key", true), e.where + "key",
+               "repeats bracket \"" + b.name + "\"'s key");
+  }
+}
+
+double required_number(const TableEntry& e, const char* key) {
+  const std::optional<double> v = e.number(key);
+  e.in.check(v.has_value(), e.where + key, "is required (a number)");
+  return *v;
+}
+
+// The cells' names of a run, checked against the first run's.
+void check_same_cells(const std::vector<std::string>& names, const std::vector<BandCell>& cells) {
+  bool same = names.size() == cells.size();
+  for (std::size_t c = 0; same && c < cells.size(); ++c) same = names[c] == cells[c].name;
+  if (!same) throw std::logic_error("bands: a run gave other cells than the first");
+}
+
+double quantile(const std::vector<double>& sorted, double q) {
+  const double h = (sorted.size() - 1) * q;
+  const auto lo = static_cast<std::size_t>(std::floor(h));
+  const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
+  return sorted[lo] + (h - lo) * (sorted[hi] - sorted[lo]);
+}
+
+}  // namespace
+
+std::vector<Bracket> read_brackets(ConfigReader& in, std::uint64_t* seed) {
+  const std::int64_t s = in.get_int("bracket_seed", 1);
+  in.check(s >= 0, "bracket_seed", "must be >= 0, got " + std::to_string(s));
+  *seed = static_cast<std::uint64_t>(s);
+  std::vector<Bracket> brackets;
+  const TableArray tables(in, "bracket");
+  for (const TableEntry& e : tables.entries({"name", "key", "from", "to", "source"})) {
+    Bracket b;
+    b.name = e.text("name", true);
+    check_bracket_name(e, b.name, brackets);
+    b.key = e.text("key", true);
+    e.in.check(!b.key.empty() && b.key.find_first_of("=,\"") == std::string::npos,
+               e.where + "key", "must be a scenario key, got \"" + b.key + "\"");
+    b.from = required_number(e, "from");
+    b.to = required_number(e, "to");
+    e.in.check(b.from < b.to, e.where + "from",
+               "must be below to, got " + format_value(b.from) + " and " + format_value(b.to));
+    b.source = e.text("source", true);
+    e.in.check(!b.source.empty(), e.where + "source", "must cite where the bracket comes from");
+    brackets.push_back(std::move(b));
+  }
+  in.check(static_cast<int>(brackets.size()) <= kMaxBrackets, "bracket",
+           "may hold at most " + std::to_string(kMaxBrackets) + " brackets, got " +
+               std::to_string(brackets.size()));
+  return brackets;
+}
+
+std::vector<double> bracket_draws(const std::vector<Bracket>& brackets, std::uint64_t seed,
+                                  int rig) {
+  std::vector<Randomization> uniform;
+  for (const Bracket& b : brackets) uniform.push_back({b.key, Distribution::kUniform, b.from, b.to});
+  return draw_values(uniform, seed, rig);
+}
+
+std::vector<std::string> bracket_overrides(const std::vector<Bracket>& brackets,
+                                           const std::vector<double>& values) {
+  std::vector<std::string> out;
+  for (std::size_t b = 0; b < brackets.size(); ++b) {
+    out.push_back(brackets[b].key + "=" + format_number(values[b]));
+  }
+  return out;
+}
+
+BandStats band_stats(std::vector<double> values) {
+  values.erase(std::remove_if(values.begin(), values.end(),
+                              [](double v) { return !std::isfinite(v); }),
+               values.end());
+  BandStats s;
+  s.n = static_cast<int>(values.size());
+  if (values.empty()) return s;
+  std::sort(values.begin(), values.end());
+  s.median = quantile(values, 0.5);
+  s.p5 = quantile(values, kBandLow);
+  s.p95 = quantile(values, kBandHigh);
+  s.min = values.front();
+  s.max = values.back();
+  return s;
+}
+
+Bands run_bands(const std::vector<Bracket>& brackets, std::uint64_t seed, int rigs,
+                const std::function<std::vector<BandCell>(int rig,
+                                                          const std::vector<std::string>&)>& run) {
+  Bands bands;
+  bands.brackets = brackets;
+  bands.seed = seed;
+  for (int rig = 0; rig < rigs; ++rig) {
+    const std::vector<double> values = bracket_draws(brackets, seed, rig);
+    const std::vector<BandCell> cells = run(rig, bracket_overrides(brackets, values));
+    if (rig == 0) {
+      for (const BandCell& c : cells) {
+        bands.cells.push_back(c.name);
+        bands.paper.push_back(c.paper);
+      }
+    }
+    check_same_cells(bands.cells, cells);
+    bands.draws.push_back(values);
+    std::vector<ErrorPct> errors;
+    for (const BandCell& c : cells) errors.push_back(c.error);
+    bands.errors.push_back(errors);
+  }
+  return bands;
+}
+
+double Sensitivity::swing(std::size_t b, std::size_t c) const {
+  return std::fabs(errors[2 * b + 2][c].rmse_pct - errors[2 * b + 1][c].rmse_pct);
+}
+
+Sensitivity run_sensitivity(
+    const std::vector<Bracket>& brackets,
+    const std::function<std::vector<BandCell>(const std::vector<std::string>&)>& run) {
+  Sensitivity s;
+  s.brackets = brackets;
+  const auto add = [&](const std::vector<std::string>& overrides) {
+    const std::vector<BandCell> cells = run(overrides);
+    if (s.errors.empty()) {
+      for (const BandCell& c : cells) s.cells.push_back(c.name);
+    }
+    check_same_cells(s.cells, cells);
+    std::vector<ErrorPct> errors;
+    for (const BandCell& c : cells) errors.push_back(c.error);
+    s.errors.push_back(errors);
+  };
+  add({});
+  for (const Bracket& b : brackets) {
+    add({b.key + "=" + format_number(b.from)});
+    add({b.key + "=" + format_number(b.to)});
+  }
+  return s;
+}
+
+void check_brackets(const std::vector<Bracket>& brackets,
+                    const std::vector<std::string>& user_overrides, const std::string& what,
+                    const std::function<void(const std::vector<std::string>&)>& check) {
+  if (brackets.empty()) {
+    throw InputError(what + ": bracket: --bands and --sensitivity need at least one [[bracket]] table");
+  }
+  for (const Bracket& b : brackets) {
+    for (const std::string& o : user_overrides) {
+      if (o.rfind(b.key + "=", 0) == 0) {
+        throw InputError("--set " + o + ": " + b.key + " is drawn by " + what + "'s bracket \"" +
+                         b.name + "\"");
+      }
+    }
+    for (double end : {b.from, b.to}) {
+      try {
+        check({b.key + "=" + format_number(end)});
+      } catch (const InputError& e) {
+        throw InputError(what + ": bracket \"" + b.name + "\" (" + b.key + " = " +
+                         format_value(end) + "): " + e.what());
+      }
+    }
+  }
+}
+
+}  // namespace pamsim

@@ -1,0 +1,110 @@
+// bands.h: a validation protocol (length_estimation.h, reaching.h) reported as bands over
+// what an unsized rig may be. The paper leaves several parts of its rig unnamed (the
+// gauge's board, the fishing line, where the line bears on the board); each is a bracket
+// of published values, and `pamsim validate ... --bands N` runs the protocol on N rigs
+// drawn from the brackets, every hardware source of [[budget_source]] on (the budget's
+// "all" run), and reports each cell of the paper's table as median and 5-95 % range over
+// the rigs, with the paper's value beside, inside or outside that range. With
+// --sensitivity, each bracket is instead set alone to its ends (the others where the "all"
+// run has them), so a lab reads which part of its rig to measure first.
+//
+// The brackets are data, a protocol file's [[bracket]] tables:
+//   name     what is unknown ("board creep"), unique; no comma, quote, bar, tab or newline
+//   key      the scenario key it sets (any numeric key of the rig's scenario)
+//   from, to the bracket, from < to, in the key's unit; drawn uniformly
+//   source   where the bracket comes from (a datasheet, a material's data), required
+// and bracket_seed (>= 0, default 1) fixes the draws: rig r's values depend on it and r alone.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "base/config_reader.h"
+#include "sim/validate/validation_options.h"
+
+namespace pamsim {
+
+struct Bracket {
+  std::string name, key, source;
+  double from = 0.0, to = 0.0;
+};
+
+// Reads and checks [[bracket]] and bracket_seed; empty if the file has none.
+inline constexpr int kMaxBrackets = 32;
+std::vector<Bracket> read_brackets(ConfigReader& in, std::uint64_t* seed);
+
+// Rig r's draws, one per bracket, and as "key=value" overrides.
+std::vector<double> bracket_draws(const std::vector<Bracket>& brackets, std::uint64_t seed,
+                                  int rig);
+std::vector<std::string> bracket_overrides(const std::vector<Bracket>& brackets,
+                                           const std::vector<double>& values);
+
+// A cell of the protocol's table as one run gives it, and the paper's (where published).
+struct BandCell {
+  std::string name;   // "PAM-A eq3 5 kg", "agonist model all"
+  ErrorPct error;
+  std::optional<ErrorPct> paper;
+};
+
+// Median, quantiles (linear between order statistics, R's type 7) and extremes of the finite
+// values; n counts them (0: every value NaN).
+struct BandStats {
+  int n = 0;
+  double median = 0.0, p5 = 0.0, p95 = 0.0, min = 0.0, max = 0.0;
+};
+BandStats band_stats(std::vector<double> values);
+inline constexpr double kBandLow = 0.05, kBandHigh = 0.95;
+
+struct Bands {
+  std::string protocol;    // "length-estimation", "reaching"
+  std::string cases_are;   // what a run's cells are, for the Markdown
+  std::vector<Bracket> brackets;
+  std::uint64_t seed = 1;
+  std::vector<std::string> cells;
+  std::vector<std::optional<ErrorPct>> paper;   // per cell
+  std::vector<std::vector<double>> draws;       // [rig][bracket]
+  std::vector<std::vector<ErrorPct>> errors;    // [rig][cell]
+};
+
+// Runs `run(overrides)` (one protocol run: the cells, the same names in the same order every
+// time, else std::logic_error) for rigs 0 .. rigs - 1, each with its draws as overrides.
+Bands run_bands(const std::vector<Bracket>& brackets, std::uint64_t seed, int rigs,
+                const std::function<std::vector<BandCell>(int rig,
+                                                          const std::vector<std::string>&)>& run);
+
+// The sensitivity: run once with no bracket set ("all"), then per bracket at `from` and at
+// `to`; errors [run][cell] in that order (1 + 2 brackets).
+struct Sensitivity {
+  std::string protocol, cases_are;
+  std::vector<Bracket> brackets;
+  std::vector<std::string> cells;
+  std::vector<std::vector<ErrorPct>> errors;
+  // the RMSE's swing |at to - at from| of bracket b on cell c
+  double swing(std::size_t b, std::size_t c) const;
+};
+Sensitivity run_sensitivity(
+    const std::vector<Bracket>& brackets,
+    const std::function<std::vector<BandCell>(const std::vector<std::string>&)>& run);
+
+// Refuses (InputError "<what>: bracket "<name>" ...") a file without brackets, a bracket
+// whose key the rig refuses at either end (`check(overrides)` loads it), and a --set of a
+// bracket's key.
+void check_brackets(const std::vector<Bracket>& brackets,
+                    const std::vector<std::string>& user_overrides, const std::string& what,
+                    const std::function<void(const std::vector<std::string>&)>& check);
+
+// bands.csv, bands.md, draws.csv (bands_tables.cc); sensitivity.csv, sensitivity.md.
+std::string bands_csv(const Bands& bands);
+std::string bands_markdown(const Bands& bands);
+std::string draws_csv(const Bands& bands);
+std::string sensitivity_csv(const Sensitivity& s);
+std::string sensitivity_markdown(const Sensitivity& s);
+// out_dir/bands.csv, bands.md, draws.csv and, with `draw`, bands.png (per cell the 5-95 %
+// range of the RMSE, its median and the paper's value); each whole or not at all.
+void write_bands(const Bands& bands, const std::string& out_dir, bool draw);
+void write_sensitivity(const Sensitivity& s, const std::string& out_dir);
+
+}  // namespace pamsim

@@ -1,0 +1,186 @@
+// protocol_bands.cc: see protocol_bands.h.
+#include "sim/validate/protocol_bands.h"
+
+#include <filesystem>
+#include <functional>
+#include <system_error>
+
+#include "base/format.h"
+#include "base/input_error.h"
+#include "sim/scenario/scenario_file.h"
+
+namespace pamsim {
+namespace {
+
+// every budget source's `on`, in the sources' order (the budget's "all" run)
+std::vector<std::string> all_sources_on(const std::vector<BudgetSource>& sources) {
+  std::vector<std::string> on;
+  for (const BudgetSource& s : sources) on.insert(on.end(), s.on.begin(), s.on.end());
+  return on;
+}
+
+void check_rigs(int rigs) {
+  if (rigs < 1 || rigs > kMaxBandRigs) {
+    throw InputError("--bands must be in [1, " + std::to_string(kMaxBandRigs) + "], got " +
+                     std::to_string(rigs));
+  }
+}
+
+// A protocol run with `extra` overrides after the sources' and the user's, seeded for run
+// `index` (`per_run` seeds each), its progress counted among `total` trials.
+std::vector<BandCell> run_one(
+    const ValidationOptions& options, const std::vector<std::string>& sources_on,
+    const std::vector<std::string>& extra, int index, int per_run, int total,
+    const std::function<std::vector<BandCell>(const ValidationOptions&)>& run_protocol) {
+  ValidationOptions v = options;
+  v.started = nullptr;
+  v.overrides = sources_on;
+  v.overrides.insert(v.overrides.end(), options.overrides.begin(), options.overrides.end());
+  v.overrides.insert(v.overrides.end(), extra.begin(), extra.end());
+  v.seed = options.seed.value_or(1) + static_cast<std::uint64_t>(index) * per_run;
+  v.progress = [&options, index, per_run, total](int done, int) {
+    if (options.progress) options.progress(index * per_run + done, total);
+  };
+  return run_protocol(v);
+}
+
+std::vector<BandCell> length_cells(const LengthValidationSpec& spec, const ValidationOptions& v) {
+  const LengthValidationResult result = run_length_validation(spec, v);
+  std::error_code ec;
+  std::filesystem::remove_all(result.fits_dir, ec);   // a band keeps no fitted files
+  std::vector<BandCell> cells;
+  for (const DynamicRow& row : result.rows) {
+    cells.push_back({"PAM-" + row.pam + " " + to_string(row.law) + " " +
+                         format_value(row.weight_kg) + " kg",
+                     row.sim, row.paper});
+  }
+  return cells;
+}
+
+std::vector<BandCell> reaching_cells(const ReachingValidationSpec& spec,
+                                     const ValidationOptions& v) {
+  const ReachingValidationResult result = run_reaching_validation(spec, v);
+  std::vector<BandCell> cells;
+  for (const ReachingRow& row : result.rows) {
+    cells.push_back({row.muscle + " " + row.method + " " + row.part, row.sim, row.paper});
+  }
+  return cells;
+}
+
+void check_length_brackets(const LengthValidationSpec& spec, const ValidationOptions& options) {
+  const std::vector<std::string> on = all_sources_on(spec.budget);
+  check_brackets(spec.brackets, options.overrides, spec.file,
+                 [&](const std::vector<std::string>& end) {
+                   std::vector<std::string> all = spec.overrides;
+                   all.insert(all.end(), on.begin(), on.end());
+                   all.insert(all.end(), options.overrides.begin(), options.overrides.end());
+                   all.insert(all.end(), end.begin(), end.end());
+                   load_scenario(spec.rig_file, all);
+                 });
+}
+
+void check_reaching_brackets(const ReachingValidationSpec& spec, const ValidationOptions& options) {
+  const std::vector<std::string> on = all_sources_on(spec.budget);
+  check_brackets(spec.brackets, options.overrides, spec.file,
+                 [&](const std::vector<std::string>& end) {
+                   std::vector<std::string> all = on;
+                   all.insert(all.end(), options.overrides.begin(), options.overrides.end());
+                   all.insert(all.end(), end.begin(), end.end());
+                   load_scenario(spec.scenario_file, all);
+                 });
+}
+
+std::string length_cases(const LengthValidationSpec& spec) {
+  return "each PAM's estimate by each fitted law and weight on the pulley rig (" +
+         std::to_string(spec.pams.size()) + " PAMs)";
+}
+
+std::string reaching_cases(const ReachingValidationSpec& spec) {
+  return "each muscle's model estimate and fiber sensor over " + format_value(spec.window_start_s) +
+         "-" + format_value(spec.window_end_s) + " s and before / after its slack episode, " +
+         std::to_string(spec.trials) + " trials per rig";
+}
+
+using CellsOf = std::function<std::vector<BandCell>(const ValidationOptions&)>;
+
+// The bands of a protocol whose run is `cells` (`per_run` trials)
+Bands bands_of(const std::vector<Bracket>& brackets, std::uint64_t seed,
+               const std::vector<BudgetSource>& budget, int per_run,
+               const ValidationOptions& options, int rigs, const CellsOf& cells) {
+  const int total = per_run * rigs;
+  if (options.started) options.started(total);
+  const std::vector<std::string> on = all_sources_on(budget);
+  return run_bands(brackets, seed, rigs, [&](int rig, const std::vector<std::string>& draws) {
+    return run_one(options, on, draws, rig, per_run, total, cells);
+  });
+}
+
+// Its sensitivity: every run on the same seeds, so that the runs differ only by a bracket
+Sensitivity sensitivity_of(const std::vector<Bracket>& brackets,
+                           const std::vector<BudgetSource>& budget, int per_run,
+                           const ValidationOptions& options, const CellsOf& cells) {
+  const int total = per_run * static_cast<int>(1 + 2 * brackets.size());
+  if (options.started) options.started(total);
+  const std::vector<std::string> on = all_sources_on(budget);
+  int run = 0;
+  return run_sensitivity(brackets, [&](const std::vector<std::string>& set) {
+    ValidationOptions counted = options;
+    counted.progress = [&](int done, int) {
+      if (options.progress) options.progress(run * per_run + done, total);
+    };
+    std::vector<BandCell> result = run_one(counted, on, set, 0, per_run, total, cells);
+    ++run;
+    return result;
+  });
+}
+
+int length_trials(const LengthValidationSpec& spec) {
+  return static_cast<int>(spec.pams.size() * spec.laws.size() * spec.weights_kg.size());
+}
+
+}  // namespace
+
+Bands run_length_bands(const LengthValidationSpec& spec, const ValidationOptions& options,
+                       int rigs) {
+  check_rigs(rigs);
+  check_length_brackets(spec, options);
+  Bands bands = bands_of(spec.brackets, spec.bracket_seed, spec.budget, length_trials(spec),
+                         options, rigs,
+                         [&](const ValidationOptions& v) { return length_cells(spec, v); });
+  bands.protocol = "length-estimation";
+  bands.cases_are = length_cases(spec);
+  return bands;
+}
+
+Sensitivity run_length_sensitivity(const LengthValidationSpec& spec,
+                                   const ValidationOptions& options) {
+  check_length_brackets(spec, options);
+  Sensitivity s = sensitivity_of(spec.brackets, spec.budget, length_trials(spec), options,
+                                 [&](const ValidationOptions& v) { return length_cells(spec, v); });
+  s.protocol = "length-estimation";
+  s.cases_are = length_cases(spec);
+  return s;
+}
+
+Bands run_reaching_bands(const ReachingValidationSpec& spec, const ValidationOptions& options,
+                         int rigs) {
+  check_rigs(rigs);
+  check_reaching_brackets(spec, options);
+  Bands bands = bands_of(spec.brackets, spec.bracket_seed, spec.budget, spec.trials, options, rigs,
+                         [&](const ValidationOptions& v) { return reaching_cells(spec, v); });
+  bands.protocol = "reaching";
+  bands.cases_are = reaching_cases(spec);
+  return bands;
+}
+
+Sensitivity run_reaching_sensitivity(const ReachingValidationSpec& spec,
+                                     const ValidationOptions& options) {
+  check_reaching_brackets(spec, options);
+  Sensitivity s = sensitivity_of(spec.brackets, spec.budget, spec.trials, options,
+                                 [&](const ValidationOptions& v) { return reaching_cells(spec, v); });
+  s.protocol = "reaching";
+  s.cases_are = reaching_cases(spec);
+  return s;
+}
+
+}  // namespace pamsim
