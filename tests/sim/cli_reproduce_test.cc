@@ -30,15 +30,6 @@ const std::string kShort = " --set sim.duration_s=1.5 drop.time_s=0.3";
 
 nlohmann::json json_of(const fs::path& path) { return nlohmann::json::parse(read_file(path)); }
 
-// Every file under `dir` (relative name -> bytes).
-std::map<std::string, std::string> snapshot(const fs::path& dir) {
-  std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = read_file(e.path());
-  }
-  return files;
-}
-
 TEST(CliReproduceTest, ARunFromItsFolderWritesByteIdenticalOutputs) {
   const fs::path dir = fresh_dir("reproduce_from");
   for (const int trials : {1, 2}) {
@@ -150,12 +141,12 @@ TEST(CliReproduceTest, AnEarlierRunsOutputsAreReplacedOnlyWithForce) {
   const std::string run = "run scenarios/drop_mass.toml --no-plot --out " + (dir / "out").string() + kShort;
   ASSERT_EQ(run_pamsim(run).exit_code, 0);
   pamsim_test::write_text(dir / "out" / "notes.txt", "the user's own file");
-  const auto before = snapshot(dir);
+  const auto before = pamsim_test::folder_snapshot(dir);
   const CliResult refused = run_pamsim(run + " seed=5");
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_EQ(line_count(refused.err), 1) << refused.err;
   EXPECT_NE(refused.err.find("add --force"), std::string::npos) << refused.err;
-  EXPECT_EQ(snapshot(dir), before);
+  EXPECT_EQ(pamsim_test::folder_snapshot(dir), before);
   // a folder holding only the user's files is not an earlier run
   const CliResult beside = run_pamsim("run scenarios/drop_mass.toml --no-plot --out " +
                                       (dir / "other").string() + kShort);

@@ -134,16 +134,6 @@ TEST(CliRunTest, BadTensionReflexKeysAreOneLineExitTwoAndWriteNothing) {
       {"--set 'reflex.pairs=[[\"agonist\", \"agonist\"]]'", "reflex.pairs"}});
 }
 
-// Every regular file under `dir` with its bytes (folders as names), for before/after checks.
-std::map<std::string, std::string> snapshot(const fs::path& dir) {
-  std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    files[fs::relative(e.path(), dir).string()] =
-        e.is_regular_file() ? pamsim_test::read_file(e.path()) : "(folder)";
-  }
-  return files;
-}
-
 // A run that fails after its first output (here a full disk: a file-size limit with SIGXFSZ
 // ignored) leaves the folder of an earlier run exactly as it was, and nothing beside it; the
 // CSV and JSON used to be replaced before the failure, a mix of two runs (issue 14 item 5).
@@ -153,12 +143,12 @@ TEST(CliRunTest, ARunThatFailsHalfWayLeavesTheEarlierOutputsAsTheyWere) {
   const std::string run = "run scenarios/drop_mass.toml --set sim.duration_s=1.3 --out " +
                           out.string();
   ASSERT_EQ(run_pamsim(run).exit_code, 0);
-  const auto before = snapshot(dir);
+  const auto before = pamsim_test::folder_snapshot(dir);
   const CliResult full = run_pamsim(run + " --set seed=7 --force",
                                     "bash -c 'trap \"\" XFSZ; ulimit -f 32; exec \"$0\" \"$@\"'");
   EXPECT_NE(full.exit_code, 0);
   EXPECT_EQ(line_count(full.err), 1) << full.err;
-  EXPECT_EQ(snapshot(dir), before);
+  EXPECT_EQ(pamsim_test::folder_snapshot(dir), before);
 
   // a run of fewer trials replaces the whole set: no trial folder of the earlier run is left
   ASSERT_EQ(run_pamsim(run + " --trials 3 --force").exit_code, 0) << "3 trials";

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -45,6 +46,16 @@ inline CliResult run_pamsim(const std::string& args, const std::string& wrapper 
   std::remove((base + ".out").c_str());
   std::remove((base + ".err").c_str());
   return r;
+}
+
+// Every file under `dir` with its bytes (folders as "(folder)"), for before/after checks.
+inline std::map<std::string, std::string> folder_snapshot(const std::filesystem::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+    files[std::filesystem::relative(e.path(), dir).string()] =
+        e.is_regular_file() ? read_file(e.path()) : "(folder)";
+  }
+  return files;
 }
 
 inline int line_count(const std::string& s) {

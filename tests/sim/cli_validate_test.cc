@@ -250,4 +250,82 @@ TEST(CliValidateTest, BadBudgetIsOneLineAndLeavesNoBudget) {
   }
 }
 
+const char kBandBrackets[] =
+    "[[bracket]]\nname = \"line re-seated\"\nkey = \"sensors.gauge.contact.reseat_mm\"\n"
+    "from = -2.9\nto = 2.9\nsource = \"the stick band\"\n"
+    "[[bracket]]\nname = \"line\"\nkey = \"muscles.agonist.line_diameter_mm\"\n"
+    "from = 0.285\nto = 0.711\nsource = \"line sizes\"\n";
+
+// the line's modulus, which its drawn diameter needs (the shipped protocol's line source sets it)
+const std::string kLineModulus = "muscles.agonist.line_modulus_MPa=2000";
+
+// --bands: every cell twice (max, RMSE) over the rigs, each rig's draws in draws.csv, the
+// table printed is the file, the same bytes on one and two threads; --sensitivity: each
+// bracket's swing per cell
+TEST(CliValidateTest, BandsDrawEveryRigAndAreTheSameOnAnyThreadCount) {
+  const fs::path dir = fresh_dir("cli_validate_bands");
+  const fs::path protocol =
+      budget_protocol(dir, std::string("[paper]\nmodel_agonist = [8.82, 5.24]\n") + kBandBrackets);
+  const std::string args = "validate reaching " + protocol.string() +
+                           " --bands 3 --set sim.duration_s=5 --set " + kLineModulus + " --out ";
+  const CliResult r = run_pamsim(args + (dir / "a").string() + " --threads 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = csv_rows(read_file(dir / "a" / "bands.csv"));
+  ASSERT_EQ(rows.size(), 1u + 12 * 2);   // 2 muscles x 2 methods x 3 parts, max and RMSE
+  EXPECT_EQ(rows[2][0], "agonist model all");
+  EXPECT_EQ(rows[2][1], "rmse");
+  EXPECT_EQ(rows[2][2], "3");
+  EXPECT_EQ(rows[2][9], "outside");   // 5.24 %: far above a 2 s window's error
+  const auto draws = csv_rows(read_file(dir / "a" / "draws.csv"));
+  ASSERT_EQ(draws.size(), 4u);
+  EXPECT_EQ(draws[0][1], "sensors.gauge.contact.reseat_mm");
+  EXPECT_NE(draws[1][1], draws[2][1]);
+  EXPECT_EQ(r.out, read_file(dir / "a" / "bands.md"));
+  EXPECT_TRUE(fs::exists(dir / "a" / "bands.png"));
+  ASSERT_EQ(run_pamsim(args + (dir / "b").string() + " --threads 1 --no-plot").exit_code, 0);
+  EXPECT_EQ(read_file(dir / "a" / "bands.csv"), read_file(dir / "b" / "bands.csv"));
+  EXPECT_EQ(read_file(dir / "a" / "draws.csv"), read_file(dir / "b" / "draws.csv"));
+
+  const CliResult s = run_pamsim("validate reaching " + protocol.string() +
+                                 " --sensitivity --set sim.duration_s=5 --set " + kLineModulus +
+                                 " --no-plot --out " +
+                                 (dir / "s").string());
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const auto swings = csv_rows(read_file(dir / "s" / "sensitivity.csv"));
+  ASSERT_EQ(swings.size(), 1u + 12 * 2);   // a row per cell and bracket
+  // the re-seated line moves the agonist's model estimate; it cannot move the fiber's
+  EXPECT_GT(std::stod(swings[1][7]), 0.01) << "agonist model all, line re-seated";
+  EXPECT_EQ(std::stod(swings[7][7]), 0.0) << swings[7][0];
+}
+
+TEST(CliValidateTest, BadBandsAreOneLineAndLeaveNoBands) {
+  const fs::path dir = fresh_dir("cli_validate_bands_bad");
+  const fs::path out = dir / "out";
+  const std::string creep = std::string(kBandBrackets) +
+      "[[bracket]]\nname = \"creep\"\nkey = \"sensors.gauge.board.creep_exponent\"\n"
+      "from = 0.2\nto = 0.9\nsource = \"s\"\n";
+  struct Case {
+    std::string protocol, args, says;
+  };
+  for (const Case& c : std::vector<Case>{
+           {kBandBrackets, " --bands 0", "--bands must be in [1, 10000], got 0"},
+           {"", " --bands 2", "bracket: --bands and --sensitivity need at least one"},
+           {"[[bracket]]\nname = \"a\"\nkey = \"sim.duration_s\"\nfrom = 3\nto = 2\n"
+            "source = \"s\"\n", " --bands 2", "bracket[0].from must be below to"},
+           {creep, " --bands 2",
+            "bracket \"creep\" (sensors.gauge.board.creep_exponent = 0.9): "},
+           {kBandBrackets, " --sensitivity --set muscles.agonist.line_diameter_mm=0.3",
+            "is drawn by"}}) {
+    const fs::path protocol = budget_protocol(dir, c.protocol);
+    const CliResult r =
+        run_pamsim("validate reaching " + protocol.string() + c.args + " --set " + kLineModulus +
+                   " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << c.says;
+    EXPECT_EQ(line_count(r.err), 1) << c.says << ": " << r.err;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out / "bands.csv")) << c.says;
+    EXPECT_FALSE(fs::exists(out / "sensitivity.csv")) << c.says;
+  }
+}
+
 }  // namespace

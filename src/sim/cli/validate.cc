@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -115,6 +116,12 @@ void require_writable(const std::string& dir) {
   if (!ok) throw InputError("--out " + dir + ": cannot write there");
 }
 
+// "length_estimation" (a default folder's part) -> "length-estimation", as the user types it
+std::string subcommand(std::string name) {
+  std::replace(name.begin(), name.end(), '_', '-');
+  return name;
+}
+
 void attach_progress(ValidationOptions* v, const std::string& label, int total, bool quiet,
                      std::shared_ptr<ProgressReporter>* holder) {
   *holder = std::make_shared<ProgressReporter>(label, total, 0, std::cerr, progress_style(quiet));
@@ -135,7 +142,7 @@ void run_budget_command(const ValidateOptions& o, const std::string& name,
   use_plot_formats(o.plot_format);
   const bool plots = plots_wanted(o.no_plot);
   require_writable(v.out_dir);
-  const std::string command = "validate " + name + " --budget";
+  const std::string command = "validate " + subcommand(name) + " --budget";
   const int total = trials * static_cast<int>(budget_configs(sources).size());
   std::shared_ptr<ProgressReporter> progress;
   attach_progress(&v, "pamsim " + command, total, o.quiet, &progress);
@@ -176,8 +183,9 @@ void run_bands_command(const ValidateOptions& o, const std::string& name,
   use_plot_formats(o.plot_format);
   const bool plots = plots_wanted(o.no_plot);
   require_writable(v.out_dir);
-  const std::string command = "validate " + name + (banded ? " --bands " + std::to_string(*o.bands)
-                                                           : std::string(" --sensitivity"));
+  const std::string command =
+      "validate " + subcommand(name) +
+      (banded ? " --bands " + std::to_string(*o.bands) : std::string(" --sensitivity"));
   std::shared_ptr<ProgressReporter> progress;
   int total = 0;
   v.started = [&](int n) {

@@ -90,6 +90,12 @@ std::vector<std::string> bracket_overrides(const std::vector<Bracket>& brackets,
   return out;
 }
 
+std::vector<double> bracket_middles(const std::vector<Bracket>& brackets) {
+  std::vector<double> middles;
+  for (const Bracket& b : brackets) middles.push_back(0.5 * (b.from + b.to));
+  return middles;
+}
+
 BandStats band_stats(std::vector<double> values) {
   values.erase(std::remove_if(values.begin(), values.end(),
                               [](double v) { return !std::isfinite(v); }),
@@ -149,10 +155,13 @@ Sensitivity run_sensitivity(
     for (const BandCell& c : cells) errors.push_back(c.error);
     s.errors.push_back(errors);
   };
-  add({});
-  for (const Bracket& b : brackets) {
-    add({b.key + "=" + format_number(b.from)});
-    add({b.key + "=" + format_number(b.to)});
+  add(bracket_overrides(brackets, bracket_middles(brackets)));
+  for (std::size_t b = 0; b < brackets.size(); ++b) {
+    for (double end : {brackets[b].from, brackets[b].to}) {
+      std::vector<double> values = bracket_middles(brackets);
+      values[b] = end;
+      add(bracket_overrides(brackets, values));
+    }
   }
   return s;
 }
@@ -163,7 +172,8 @@ void check_brackets(const std::vector<Bracket>& brackets,
   if (brackets.empty()) {
     throw InputError(what + ": bracket: --bands and --sensitivity need at least one [[bracket]] table");
   }
-  for (const Bracket& b : brackets) {
+  for (std::size_t k = 0; k < brackets.size(); ++k) {
+    const Bracket& b = brackets[k];
     for (const std::string& o : user_overrides) {
       if (o.rfind(b.key + "=", 0) == 0) {
         throw InputError("--set " + o + ": " + b.key + " is drawn by " + what + "'s bracket \"" +
@@ -171,8 +181,10 @@ void check_brackets(const std::vector<Bracket>& brackets,
       }
     }
     for (double end : {b.from, b.to}) {
+      std::vector<double> values = bracket_middles(brackets);
+      values[k] = end;
       try {
-        check({b.key + "=" + format_number(end)});
+        check(bracket_overrides(brackets, values));
       } catch (const InputError& e) {
         throw InputError(what + ": bracket \"" + b.name + "\" (" + b.key + " = " +
                          format_value(end) + "): " + e.what());

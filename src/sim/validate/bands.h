@@ -5,8 +5,8 @@
 // drawn from the brackets, every hardware source of [[budget_source]] on (the budget's
 // "all" run), and reports each cell of the paper's table as median and 5-95 % range over
 // the rigs, with the paper's value beside, inside or outside that range. With
-// --sensitivity, each bracket is instead set alone to its ends (the others where the "all"
-// run has them), so a lab reads which part of its rig to measure first.
+// --sensitivity, each bracket is instead set alone to its ends (the others at their
+// brackets' middles), so a lab reads which part of its rig to measure first.
 //
 // The brackets are data, a protocol file's [[bracket]] tables:
 //   name     what is unknown ("board creep"), unique; no comma, quote, bar, tab or newline
@@ -41,6 +41,8 @@ std::vector<double> bracket_draws(const std::vector<Bracket>& brackets, std::uin
                                   int rig);
 std::vector<std::string> bracket_overrides(const std::vector<Bracket>& brackets,
                                            const std::vector<double>& values);
+// Each bracket's middle, (from + to) / 2: where the sensitivity holds the other unknowns.
+std::vector<double> bracket_middles(const std::vector<Bracket>& brackets);
 
 // A cell of the protocol's table as one run gives it, and the paper's (where published).
 struct BandCell {
@@ -75,8 +77,9 @@ Bands run_bands(const std::vector<Bracket>& brackets, std::uint64_t seed, int ri
                 const std::function<std::vector<BandCell>(int rig,
                                                           const std::vector<std::string>&)>& run);
 
-// The sensitivity: run once with no bracket set ("all"), then per bracket at `from` and at
-// `to`; errors [run][cell] in that order (1 + 2 brackets).
+// The sensitivity, one unknown at a time about the brackets' middles: run once with every
+// bracket at its middle, then per bracket at `from` and at `to`, the others at their
+// middles; errors [run][cell] in that order (1 + 2 brackets).
 struct Sensitivity {
   std::string protocol, cases_are;
   std::vector<Bracket> brackets;
@@ -90,8 +93,8 @@ Sensitivity run_sensitivity(
     const std::function<std::vector<BandCell>(const std::vector<std::string>&)>& run);
 
 // Refuses (InputError "<what>: bracket "<name>" ...") a file without brackets, a bracket
-// whose key the rig refuses at either end (`check(overrides)` loads it), and a --set of a
-// bracket's key.
+// whose key the rig refuses at either end, the others at their middles (`check(overrides)`
+// loads it), and a --set of a bracket's key.
 void check_brackets(const std::vector<Bracket>& brackets,
                     const std::vector<std::string>& user_overrides, const std::string& what,
                     const std::function<void(const std::vector<std::string>&)>& check);

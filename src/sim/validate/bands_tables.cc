@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "base/atomic_file.h"
+#include "base/format.h"
 #include "sim/io/gnuplot.h"
 #include "sim/io/outputs.h"
 #include "sim/validate/bands.h"
@@ -85,10 +87,12 @@ std::string bands_markdown(const Bands& b) {
     const std::optional<ErrorPct>& paper = b.paper[c];
     out << "| " << b.cells[c] << " | " << band_text(mx) << " | " << band_text(rm) << " | "
         << (paper ? markdown_error_pct(*paper) : "-") << " | ";
-    if (paper) {
+    if (paper && rm.n > 0) {
       out << verdict(mx, paper, false) << ", " << verdict(rm, paper, true);
       judged += 1;
       inside += verdict(rm, paper, true) == "inside";
+    } else {
+      out << "-";
     }
     out << " |\n";
   }
@@ -96,15 +100,15 @@ std::string bands_markdown(const Bands& b) {
       << "The brackets (drawn uniformly, bracket_seed " << b.seed << "):\n\n"
       << markdown_header("unknown", {"key", "from", "to", "source"});
   for (const Bracket& k : b.brackets) {
-    out << "| " << k.name << " | " << k.key << " | " << markdown_number(k.from) << " | "
-        << markdown_number(k.to) << " | " << k.source << " |\n";
+    out << "| " << k.name << " | " << k.key << " | " << format_value(k.from) << " | "
+        << format_value(k.to) << " | " << k.source << " |\n";
   }
   return out.str();
 }
 
 std::string sensitivity_csv(const Sensitivity& s) {
   std::ostringstream out;
-  out << "cell,bracket,key,from,to,rmse_at_from_pct,rmse_at_to_pct,swing_pct,rmse_all_pct\n";
+  out << "cell,bracket,key,from,to,rmse_at_from_pct,rmse_at_to_pct,swing_pct,rmse_middle_pct\n";
   for (std::size_t c = 0; c < s.cells.size(); ++c) {
     for (std::size_t b = 0; b < s.brackets.size(); ++b) {
       const Bracket& k = s.brackets[b];
@@ -121,20 +125,20 @@ std::string sensitivity_markdown(const Sensitivity& s) {
   std::ostringstream out;
   out << "# Sensitivity: pamsim validate " << s.protocol << "\n\n"
       << "Each cell: " << s.cases_are << "; the RMSE's swing [% of length] as one unknown goes "
-      << "from one end of its bracket to the other, every other where the budget's \"all\" run "
-      << "has it. The dominant unknown of each cell: the largest swing.\n\n";
+      << "from one end of its bracket to the other, every other at its bracket's middle (every "
+      << "hardware source on). The dominant unknown of each cell: the largest swing.\n\n";
   std::vector<std::string> columns;
   for (const Bracket& k : s.brackets) columns.push_back(k.name);
   columns.push_back("dominant");
-  out << markdown_header("cell (RMSE of the all run)", columns);
+  out << markdown_header("cell (RMSE at the middles)", columns);
   for (std::size_t c = 0; c < s.cells.size(); ++c) {
     out << "| " << s.cells[c] << " (" << markdown_number(s.errors[0][c].rmse_pct) << ") |";
-    std::size_t top = 0;
+    std::optional<std::size_t> top;   // the largest finite swing
     for (std::size_t b = 0; b < s.brackets.size(); ++b) {
       out << ' ' << markdown_number(s.swing(b, c)) << " |";
-      if (s.swing(b, c) > s.swing(top, c)) top = b;
+      if (std::isfinite(s.swing(b, c)) && (!top || s.swing(b, c) > s.swing(*top, c))) top = b;
     }
-    out << ' ' << s.brackets[top].name << " |\n";
+    out << ' ' << (top ? s.brackets[*top].name : "-") << " |\n";
   }
   return out.str();
 }
