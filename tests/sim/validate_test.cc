@@ -129,6 +129,49 @@ TEST(ValidateTest, LengthTablesAreTheSameOnOneAndTwoThreads) {
   EXPECT_EQ(table3_markdown(one, spec), table3_markdown(two, spec));
 }
 
+// pams.<NAME>.plant.<field> (a --set or a bracket's draw) changes that PAM's plant for its
+// tensile test and fits as for its trials; a wall too thick for the file's deformation is
+// tested as far as it stretches; a change of a PAM not asked for is dropped, and a bad one
+// names its key
+TEST(ValidateTest, APlantChangeReachesTheTensileTestAndTheTrials) {
+  const LengthValidationSpec spec =
+      load_length_validation(kScenarios + "validate_length_estimation.toml", {"B"});
+  std::vector<std::string> overrides = {"sim.duration_s=2",
+                                        "pams.B.plant.geometry.wall_thickness_mm=1.59",
+                                        "pams.A.plant.geometry.wall_thickness_mm=0.8"};
+  const LengthValidationSpec drawn = with_plant_changes(spec, &overrides);
+  EXPECT_EQ(overrides, std::vector<std::string>{"sim.duration_s=2"});
+  ASSERT_EQ(drawn.pams.size(), 1u);
+  EXPECT_EQ(drawn.pams[0].plant.avbdl.wall_thickness_m, 1.59e-3);
+  EXPECT_EQ(drawn.pams[0].plant_changes,
+            std::vector<std::string>{"geometry.wall_thickness_mm=1.59"});
+
+  ValidationOptions o;
+  o.out_dir = fresh_out("plant_change");
+  o.overrides = {"sim.duration_s=2"};
+  const LengthValidationResult plain = run_length_validation(spec, o);
+  o.overrides.push_back("pams.B.plant.geometry.wall_thickness_mm=1.59");
+  const LengthValidationResult thick = run_length_validation(spec, o);
+  // the thick wall reaches about 10.7 mm at 0.4 MPa of the file's 25: the test stops there
+  EXPECT_LT(thick.tensile[0].size(), plain.tensile[0].size());
+  EXPECT_NE(thick.fits[0].fit.model.coef, plain.fits[0].fit.model.coef);
+  EXPECT_NE(thick.rows[0].sim.rmse_pct, plain.rows[0].sim.rmse_pct);
+
+  for (const auto& [set, says] : std::vector<std::pair<std::string, std::string>>{
+           {"pams.Z.plant.geometry.wall_thickness_mm=1", "has no PAM Z"},
+           {"pams.B.plnt.geometry.wall_thickness_mm=1", "only a plant's field"},
+           {"pams.B.plant.geometry.wall_thickness_mm=-1", "pams.B.plant.geometry.wall_thickness_mm"},
+           {"muscles.pam.plant.geometry.wall_thickness_mm=1", "pams.<NAME>.plant"}}) {
+    o.overrides = {set};
+    try {
+      run_length_validation(spec, o);
+      ADD_FAILURE() << set << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  }
+}
+
 Trajectory tension_log(const std::vector<double>& force_n) {
   Trajectory tr;
   tr.columns = {"time_s", "force_m_N"};

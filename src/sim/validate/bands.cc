@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "base/format.h"
@@ -118,26 +119,15 @@ Bands run_bands(const std::vector<Bracket>& brackets, std::uint64_t seed, int ri
   Bands bands;
   bands.brackets = brackets;
   bands.seed = seed;
-  for (int rig = 0; rig < rigs; ++rig) {
-    const std::vector<double> values = bracket_draws(brackets, seed, rig);
-    const std::vector<BandCell> cells = run(rig, bracket_overrides(brackets, values));
-    if (rig == 0) {
-      for (const BandCell& c : cells) {
-        bands.cells.push_back(c.name);
-        bands.paper.push_back(c.paper);
-      }
-    }
-    check_same_cells(bands.cells, cells);
-    bands.draws.push_back(values);
-    std::vector<ErrorPct> errors;
-    for (const BandCell& c : cells) errors.push_back(c.error);
-    bands.errors.push_back(errors);
-  }
+  for (int rig = 0; rig < rigs; ++rig) bands.draws.push_back(bracket_draws(brackets, seed, rig));
+  bands.runs = gather_runs(rigs, [&](int rig) {
+    return run(rig, bracket_overrides(brackets, bands.draws[rig]));
+  });
   return bands;
 }
 
 double Sensitivity::swing(std::size_t b, std::size_t c) const {
-  return std::fabs(errors[2 * b + 2][c].rmse_pct - errors[2 * b + 1][c].rmse_pct);
+  return std::fabs(runs.errors[2 * b + 2][c].rmse_pct - runs.errors[2 * b + 1][c].rmse_pct);
 }
 
 Sensitivity run_sensitivity(
@@ -145,25 +135,50 @@ Sensitivity run_sensitivity(
     const std::function<std::vector<BandCell>(const std::vector<std::string>&)>& run) {
   Sensitivity s;
   s.brackets = brackets;
-  const auto add = [&](const std::vector<std::string>& overrides) {
-    const std::vector<BandCell> cells = run(overrides);
-    if (s.errors.empty()) {
-      for (const BandCell& c : cells) s.cells.push_back(c.name);
-    }
-    check_same_cells(s.cells, cells);
-    std::vector<ErrorPct> errors;
-    for (const BandCell& c : cells) errors.push_back(c.error);
-    s.errors.push_back(errors);
-  };
-  add(bracket_overrides(brackets, bracket_middles(brackets)));
+  std::vector<std::vector<double>> settings = {bracket_middles(brackets)};
   for (std::size_t b = 0; b < brackets.size(); ++b) {
     for (double end : {brackets[b].from, brackets[b].to}) {
-      std::vector<double> values = bracket_middles(brackets);
-      values[b] = end;
-      add(bracket_overrides(brackets, values));
+      settings.push_back(bracket_middles(brackets));
+      settings.back()[b] = end;
     }
   }
+  s.runs = gather_runs(static_cast<int>(settings.size()), [&](int k) {
+    return run(bracket_overrides(brackets, settings[k]));
+  });
   return s;
+}
+
+int RunCells::refused_count() const {
+  return static_cast<int>(
+      std::count_if(refused.begin(), refused.end(), [](const std::string& r) { return !r.empty(); }));
+}
+
+RunCells gather_runs(int runs, const std::function<std::vector<BandCell>(int)>& run) {
+  RunCells out;
+  std::vector<std::optional<std::vector<BandCell>>> ran(runs);
+  out.refused.resize(runs);
+  for (int k = 0; k < runs; ++k) {
+    try {
+      ran[k] = run(k);
+    } catch (const InputError& e) {
+      out.refused[k] = e.what();
+    }
+  }
+  const auto first = std::find_if(ran.begin(), ran.end(), [](const auto& r) { return r.has_value(); });
+  if (first == ran.end()) throw InputError(out.refused.front());
+  for (const BandCell& c : **first) {
+    out.cells.push_back(c.name);
+    out.paper.push_back(c.paper);
+  }
+  for (const auto& r : ran) {
+    std::vector<ErrorPct> errors(out.cells.size(), ErrorPct{NAN, NAN});
+    if (r) {
+      check_same_cells(out.cells, *r);
+      for (std::size_t c = 0; c < r->size(); ++c) errors[c] = (*r)[c].error;
+    }
+    out.errors.push_back(errors);
+  }
+  return out;
 }
 
 void check_brackets(const std::vector<Bracket>& brackets,

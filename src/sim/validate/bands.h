@@ -60,32 +60,46 @@ struct BandStats {
 BandStats band_stats(std::vector<double> values);
 inline constexpr double kBandLow = 0.05, kBandHigh = 0.95;
 
+// Runs' cells: the names and the paper's values from the first run that ran, errors
+// [run][cell], and per run the reason the protocol refused it ("" where it ran; its cells
+// NaN): a drawn rig may be one the protocol cannot test (a PAM whose wall is so thick that it
+// cannot reach the tensile test's deformation), which is a finding, not an input error.
+struct RunCells {
+  std::vector<std::string> cells;
+  std::vector<std::optional<ErrorPct>> paper;   // per cell
+  std::vector<std::vector<ErrorPct>> errors;    // [run][cell]
+  std::vector<std::string> refused;             // [run]
+  int refused_count() const;
+};
+
+// Runs `run(k)` for k = 0 .. runs - 1, an InputError of a run kept as its refusal. Throws
+// the first refusal when every run was refused, std::logic_error when two runs give other
+// cells.
+RunCells gather_runs(int runs, const std::function<std::vector<BandCell>(int)>& run);
+
 struct Bands {
   std::string protocol;    // "length-estimation", "reaching"
   std::string cases_are;   // what a run's cells are, for the Markdown
   std::vector<Bracket> brackets;
   std::uint64_t seed = 1;
-  std::vector<std::string> cells;
-  std::vector<std::optional<ErrorPct>> paper;   // per cell
-  std::vector<std::vector<double>> draws;       // [rig][bracket]
-  std::vector<std::vector<ErrorPct>> errors;    // [rig][cell]
+  std::vector<std::vector<double>> draws;   // [rig][bracket]
+  RunCells runs;                            // one run per rig
 };
 
-// Runs `run(overrides)` (one protocol run: the cells, the same names in the same order every
-// time, else std::logic_error) for rigs 0 .. rigs - 1, each with its draws as overrides.
+// Runs `run(rig, overrides)` (one protocol run) for rigs 0 .. rigs - 1, each with its draws
+// as overrides (gather_runs).
 Bands run_bands(const std::vector<Bracket>& brackets, std::uint64_t seed, int rigs,
                 const std::function<std::vector<BandCell>(int rig,
                                                           const std::vector<std::string>&)>& run);
 
 // The sensitivity, one unknown at a time about the brackets' middles: run once with every
 // bracket at its middle, then per bracket at `from` and at `to`, the others at their
-// middles; errors [run][cell] in that order (1 + 2 brackets).
+// middles; runs in that order (1 + 2 brackets).
 struct Sensitivity {
   std::string protocol, cases_are;
   std::vector<Bracket> brackets;
-  std::vector<std::string> cells;
-  std::vector<std::vector<ErrorPct>> errors;
-  // the RMSE's swing |at to - at from| of bracket b on cell c
+  RunCells runs;
+  // the RMSE's swing |at to - at from| of bracket b on cell c (NaN where an end was refused)
   double swing(std::size_t b, std::size_t c) const;
 };
 Sensitivity run_sensitivity(

@@ -19,7 +19,7 @@ namespace {
 // One metric of one cell over the rigs: max (false) or RMSE (true).
 BandStats cell_stats(const Bands& b, std::size_t c, bool rmse) {
   std::vector<double> values;
-  for (const std::vector<ErrorPct>& rig : b.errors) {
+  for (const std::vector<ErrorPct>& rig : b.runs.errors) {
     values.push_back(rmse ? rig[c].rmse_pct : rig[c].max_pct);
   }
   return band_stats(values);
@@ -30,6 +30,17 @@ std::string verdict(const BandStats& s, const std::optional<ErrorPct>& paper, bo
   if (!paper || s.n == 0) return "";
   const double p = rmse ? paper->rmse_pct : paper->max_pct;
   return p >= s.p5 && p <= s.p95 ? "inside" : "outside";
+}
+
+// "The protocol refused k of N <what>: <first reason>.\n\n", or "" when it ran them all
+std::string refusals(const RunCells& runs, const std::string& what) {
+  const int k = runs.refused_count();
+  if (k == 0) return "";
+  const auto first = std::find_if(runs.refused.begin(), runs.refused.end(),
+                                  [](const std::string& r) { return !r.empty(); });
+  return "The protocol could not run " + std::to_string(k) + " of " +
+         std::to_string(runs.refused.size()) + " " + what + " (their cells n/a); the first: " +
+         *first + "\n\n";
 }
 
 std::string band_text(const BandStats& s) {
@@ -43,11 +54,11 @@ std::string band_text(const BandStats& s) {
 std::string bands_csv(const Bands& b) {
   std::ostringstream out;
   out << "cell,metric,rigs,median_pct,p5_pct,p95_pct,min_pct,max_pct,paper_pct,paper_is\n";
-  for (std::size_t c = 0; c < b.cells.size(); ++c) {
+  for (std::size_t c = 0; c < b.runs.cells.size(); ++c) {
     for (bool rmse : {false, true}) {
       const BandStats s = cell_stats(b, c, rmse);
-      const std::optional<ErrorPct>& paper = b.paper[c];
-      out << b.cells[c] << ',' << (rmse ? "rmse" : "max_error") << ',' << s.n << ','
+      const std::optional<ErrorPct>& paper = b.runs.paper[c];
+      out << b.runs.cells[c] << ',' << (rmse ? "rmse" : "max_error") << ',' << s.n << ','
           << csv_number(s.n ? s.median : NAN) << ',' << csv_number(s.n ? s.p5 : NAN) << ','
           << csv_number(s.n ? s.p95 : NAN) << ',' << csv_number(s.n ? s.min : NAN) << ','
           << csv_number(s.n ? s.max : NAN) << ','
@@ -62,30 +73,30 @@ std::string draws_csv(const Bands& b) {
   std::ostringstream out;
   out << "rig";
   for (const Bracket& k : b.brackets) out << ',' << k.key;
-  for (const std::string& cell : b.cells) out << ',' << cell << " rmse_pct";
-  out << '\n';
+  for (const std::string& cell : b.runs.cells) out << ',' << cell << " rmse_pct";
+  out << ",refused\n";
   for (std::size_t r = 0; r < b.draws.size(); ++r) {
     out << r;
     for (double v : b.draws[r]) out << ',' << csv_number(v);
-    for (const ErrorPct& e : b.errors[r]) out << ',' << csv_number(e.rmse_pct);
-    out << '\n';
+    for (const ErrorPct& e : b.runs.errors[r]) out << ',' << csv_number(e.rmse_pct);
+    out << ',' << csv_text(b.runs.refused[r]) << '\n';
   }
   return out.str();
 }
 
 std::string bands_markdown(const Bands& b) {
   std::ostringstream out;
-  out << "# Bands: pamsim validate " << b.protocol << ", " << b.errors.size()
+  out << "# Bands: pamsim validate " << b.protocol << ", " << b.draws.size()
       << " rigs drawn from the brackets\n\n"
       << "Each cell: " << b.cases_are << "; error in % of length over the drawn rigs as median ["
       << kBandLow * 100 << " %, " << kBandHigh * 100 << " %], every hardware source on; the paper's "
       << "value beside, inside or outside that range.\n\n";
   out << markdown_header("cell", {"max error", "RMSE", "paper max / RMSE", "paper is (max, RMSE)"});
   int inside = 0, judged = 0;
-  for (std::size_t c = 0; c < b.cells.size(); ++c) {
+  for (std::size_t c = 0; c < b.runs.cells.size(); ++c) {
     const BandStats mx = cell_stats(b, c, false), rm = cell_stats(b, c, true);
-    const std::optional<ErrorPct>& paper = b.paper[c];
-    out << "| " << b.cells[c] << " | " << band_text(mx) << " | " << band_text(rm) << " | "
+    const std::optional<ErrorPct>& paper = b.runs.paper[c];
+    out << "| " << b.runs.cells[c] << " | " << band_text(mx) << " | " << band_text(rm) << " | "
         << (paper ? markdown_error_pct(*paper) : "-") << " | ";
     if (paper && rm.n > 0) {
       out << verdict(mx, paper, false) << ", " << verdict(rm, paper, true);
@@ -97,6 +108,7 @@ std::string bands_markdown(const Bands& b) {
     out << " |\n";
   }
   out << "\nThe paper's RMSE inside the range: " << inside << " of " << judged << " cells.\n\n"
+      << refusals(b.runs, "rigs")
       << "The brackets (drawn uniformly, bracket_seed " << b.seed << "):\n\n"
       << markdown_header("unknown", {"key", "from", "to", "source"});
   for (const Bracket& k : b.brackets) {
@@ -109,13 +121,14 @@ std::string bands_markdown(const Bands& b) {
 std::string sensitivity_csv(const Sensitivity& s) {
   std::ostringstream out;
   out << "cell,bracket,key,from,to,rmse_at_from_pct,rmse_at_to_pct,swing_pct,rmse_middle_pct\n";
-  for (std::size_t c = 0; c < s.cells.size(); ++c) {
+  const std::vector<std::vector<ErrorPct>>& e = s.runs.errors;
+  for (std::size_t c = 0; c < s.runs.cells.size(); ++c) {
     for (std::size_t b = 0; b < s.brackets.size(); ++b) {
       const Bracket& k = s.brackets[b];
-      out << s.cells[c] << ',' << k.name << ',' << k.key << ',' << csv_number(k.from) << ','
-          << csv_number(k.to) << ',' << csv_number(s.errors[2 * b + 1][c].rmse_pct) << ','
-          << csv_number(s.errors[2 * b + 2][c].rmse_pct) << ',' << csv_number(s.swing(b, c))
-          << ',' << csv_number(s.errors[0][c].rmse_pct) << '\n';
+      out << s.runs.cells[c] << ',' << k.name << ',' << k.key << ',' << csv_number(k.from) << ','
+          << csv_number(k.to) << ',' << csv_number(e[2 * b + 1][c].rmse_pct) << ','
+          << csv_number(e[2 * b + 2][c].rmse_pct) << ',' << csv_number(s.swing(b, c)) << ','
+          << csv_number(e[0][c].rmse_pct) << '\n';
     }
   }
   return out.str();
@@ -131,8 +144,8 @@ std::string sensitivity_markdown(const Sensitivity& s) {
   for (const Bracket& k : s.brackets) columns.push_back(k.name);
   columns.push_back("dominant");
   out << markdown_header("cell (RMSE at the middles)", columns);
-  for (std::size_t c = 0; c < s.cells.size(); ++c) {
-    out << "| " << s.cells[c] << " (" << markdown_number(s.errors[0][c].rmse_pct) << ") |";
+  for (std::size_t c = 0; c < s.runs.cells.size(); ++c) {
+    out << "| " << s.runs.cells[c] << " (" << markdown_number(s.runs.errors[0][c].rmse_pct) << ") |";
     std::optional<std::size_t> top;   // the largest finite swing
     for (std::size_t b = 0; b < s.brackets.size(); ++b) {
       out << ' ' << markdown_number(s.swing(b, c)) << " |";
@@ -140,6 +153,7 @@ std::string sensitivity_markdown(const Sensitivity& s) {
     }
     out << ' ' << (top ? s.brackets[*top].name : "-") << " |\n";
   }
+  out << '\n' << refusals(s.runs, "runs");
   return out.str();
 }
 
@@ -152,11 +166,11 @@ void write_bands(const Bands& b, const std::string& out_dir, bool draw) {
   if (!draw) return;
   // per cell: the 5-95 % range of the RMSE as a bar, its median, the paper's value
   std::ostringstream data;
-  for (std::size_t c = 0; c < b.cells.size(); ++c) {
+  for (std::size_t c = 0; c < b.runs.cells.size(); ++c) {
     const BandStats s = cell_stats(b, c, true);
-    data << c << "\t\"" << b.cells[c] << "\"\t" << gp_num(s.n ? s.p5 : NAN) << '\t'
+    data << c << "\t\"" << b.runs.cells[c] << "\"\t" << gp_num(s.n ? s.p5 : NAN) << '\t'
          << gp_num(s.n ? s.median : NAN) << '\t' << gp_num(s.n ? s.p95 : NAN) << '\t'
-         << gp_num(b.paper[c] ? b.paper[c]->rmse_pct : NAN) << '\n';
+         << gp_num(b.runs.paper[c] ? b.runs.paper[c]->rmse_pct : NAN) << '\n';
   }
   GnuplotJob job;
   job.width_px = 1200;
@@ -164,7 +178,7 @@ void write_bands(const Bands& b, const std::string& out_dir, bool draw) {
   job.data_files = {{"bands.dat", data.str()}};
   job.script = "set datafile separator '\\t'\n"
                "set title " + gp_quote("pamsim validate " + b.protocol + " --bands " +
-                                       std::to_string(b.errors.size())) + " noenhanced\n"
+                                       std::to_string(b.draws.size())) + " noenhanced\n"
                "set ylabel 'RMS error [% of length]'\nset grid ytics\nset yrange [0:*]\n"
                "set xtics rotate by -40 noenhanced\nset key outside right top\n"
                "set offsets 0.5, 0.5, 0, 0\n"

@@ -75,6 +75,20 @@ struct RemoveOnError {
   }
 };
 
+// A changed plant (a drawn wall, a stiffer bladder) may not stretch as far as the file's
+// max_deformation_mm at the test's lowest pressure; the lab sets that deformation "based on
+// each PAM's strength" (Sec. II-B), so the test goes as far as the plant reaches, in whole
+// steps.
+double reachable_mm(const AvbdlParams& plant, const TensileTestOptions& test) {
+  double reach = test.max_deformation_mm;
+  for (double p_mpa : test.pressures_mpa) {
+    const double room =
+        units::m_to_mm(avbdl_max_length(plant) - avbdl_free_length(plant, units::mpa_to_pa(p_mpa)));
+    reach = std::min(reach, std::floor(room / test.step_mm) * test.step_mm);
+  }
+  return reach;
+}
+
 // The static tests and their fits (seeds/000 Sec. II-B), each fit as a PAM file in fits_dir.
 void run_tensile_tests_and_fits(const LengthValidationSpec& spec,
                                 const ValidationOptions& options, const std::string& fits_dir,
@@ -82,6 +96,7 @@ void run_tensile_tests_and_fits(const LengthValidationSpec& spec,
   for (const ValidationPam& pam : spec.pams) {
     TensileTestOptions test = pam.tensile;
     if (options.seed) test.seed = *options.seed;
+    if (!pam.plant_changes.empty()) test.max_deformation_mm = reachable_mm(pam.plant.avbdl, test);
     try {
       result->tensile.push_back(run_tensile_test(pam.plant.avbdl, test));
     } catch (const InputError& e) {
@@ -107,6 +122,10 @@ void run_tensile_tests_and_fits(const LengthValidationSpec& spec,
 void check_overrides_not_per_trial(const LengthValidationSpec& spec,
                                    const ValidationOptions& options) {
   for (const std::string& o : options.overrides) {
+    if (o.rfind("muscles.pam.plant.", 0) == 0) {
+      throw InputError("--set " + o + ": a PAM's plant is changed by pams.<NAME>.plant.<table>."
+                       "<field> (its tensile test and fits see the change too)");
+    }
     for (const char* key : {"muscles.pam.plant", "muscles.pam.params", "bodies.weight.mass_kg",
                             "muscles.pam.command.offset_MPa", "seed"}) {
       if (o.rfind(std::string(key) + "=", 0) == 0) {
@@ -124,7 +143,13 @@ std::vector<std::string> trial_overrides(const LengthValidationSpec& spec,
                                          const ValidationPam& pam, const FittedLaw& f,
                                          double weight) {
   std::vector<std::string> overrides = spec.overrides;
-  overrides.push_back("muscles.pam.plant=" + quoted(fs::absolute(pam.plant_file).string()));
+  const std::string plant = quoted(fs::absolute(pam.plant_file).string());
+  if (pam.plant_changes.empty()) {
+    overrides.push_back("muscles.pam.plant=" + plant);
+  } else {   // the plant file with the PAM's changes, as the rig's table form
+    overrides.push_back("muscles.pam.plant={ file = " + plant + " }");
+    for (const std::string& c : pam.plant_changes) overrides.push_back("muscles.pam.plant." + c);
+  }
   overrides.push_back("muscles.pam.params=" + quoted(fs::absolute(f.params_file).string()));
   overrides.push_back("bodies.weight.mass_kg=" + format_shortest(weight));
   overrides.push_back("muscles.pam.command.offset_MPa=" + format_shortest(pam.offset_mpa));
@@ -188,8 +213,11 @@ void run_dynamic_trials(const std::vector<Job>& jobs, const ValidationOptions& o
 
 }  // namespace
 
-LengthValidationResult run_length_validation(const LengthValidationSpec& spec,
-                                             const ValidationOptions& options) {
+LengthValidationResult run_length_validation(const LengthValidationSpec& given,
+                                             const ValidationOptions& given_options) {
+  // a PAM's plant changed by --set or a bracket: its tensile test, fits and trials see it
+  ValidationOptions options = given_options;
+  const LengthValidationSpec spec = with_plant_changes(given, &options.overrides);
   LengthValidationResult result;
   make_directories(options.out_dir);
   // the fits go to a temp folder until the outputs are complete (see the header)

@@ -48,6 +48,9 @@ struct ValidationPam {
   TensileTestOptions tensile;             // pressures and maximum deformation set per PAM
   double offset_mpa = 0.0;                // the dynamic test's sine offset
   std::map<std::string, ErrorPct> paper;  // by law name ("eq3"); absent: not published
+  // changes of its plant's fields ("bladder.C20_MPa=0.01", the file's units) that `plant`
+  // holds, for the rig's trials as muscles.pam.plant.<table>.<field> (with_plant_changes)
+  std::vector<std::string> plant_changes;
 };
 
 struct LengthValidationSpec {
@@ -59,6 +62,7 @@ struct LengthValidationSpec {
   StrainGaugeParams gauge;  // from tensile.sensors_from
   std::string gauge_file;
   std::vector<ValidationPam> pams;
+  std::vector<std::string> pam_names;   // every PAM of the file, asked for or not
   std::vector<BudgetSource> budget;  // [[budget_source]]
   std::vector<Bracket> brackets;     // [[bracket]]: the rig's unsized parts (bands.h)
   std::uint64_t bracket_seed = 1;
@@ -70,6 +74,15 @@ struct LengthValidationSpec {
 LengthValidationSpec load_length_validation(
     const std::string& path, const std::vector<std::string>& only = {},
     const std::vector<std::string>& protocol_overrides = {});
+
+// Takes the overrides pams.<NAME>.plant.<table>.<field>=<value> out of `overrides` (a --set
+// or a [[bracket]]'s draw: a change of that PAM's plant file, in its units) and returns the
+// spec whose PAMs hold their changed plants, for the tensile test and fits and the rig's
+// trials alike: the lab fits the PAM it has. A PAM the spec does not hold (--pams) is left
+// out. Throws InputError "--set <override>: ..." for another pams.* key, a PAM not in the
+// file, or a change the plant file refuses (named "pams.<NAME>.plant.<key>").
+LengthValidationSpec with_plant_changes(const LengthValidationSpec& spec,
+                                        std::vector<std::string>* overrides);
 
 struct FittedLaw {
   std::string pam;

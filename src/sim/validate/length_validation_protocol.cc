@@ -156,6 +156,7 @@ LengthValidationSpec load_length_validation(const std::string& path,
   const std::vector<std::string> names = in.child_keys("pams");
   in.check(!names.empty(), "pams", "must hold at least one [pams.<NAME>] table");
   check_pams_asked(only, names, path);
+  spec.pam_names = names;
   std::vector<ValidationPam> pams;
   for (const std::string& name : names) {
     ValidationPam pam = read_pam(in, name, base, spec.laws);  // every PAM validated
@@ -168,6 +169,39 @@ LengthValidationSpec load_length_validation(const std::string& path,
   spec.brackets = read_brackets(in, &spec.bracket_seed);
   in.reject_unknown();
   return spec;
+}
+
+LengthValidationSpec with_plant_changes(const LengthValidationSpec& spec,
+                                        std::vector<std::string>* overrides) {
+  LengthValidationSpec drawn = spec;
+  std::vector<std::string> rest;
+  for (const std::string& o : *overrides) {
+    if (o.rfind("pams.", 0) != 0) {
+      rest.push_back(o);
+      continue;
+    }
+    const std::size_t dot = o.find('.', 5);
+    const std::string name = o.substr(5, dot == std::string::npos ? std::string::npos : dot - 5);
+    const std::string plant = "pams." + name + ".plant.";
+    if (o.rfind(plant, 0) != 0 || o.find('=') == std::string::npos) {
+      throw InputError("--set " + o + ": only a plant's field, pams.<NAME>.plant.<table>.<field>, "
+                       "may be changed");
+    }
+    if (std::find(spec.pam_names.begin(), spec.pam_names.end(), name) == spec.pam_names.end()) {
+      throw InputError("--set " + o + ": " + spec.file + " has no PAM " + name);
+    }
+    const auto pam = std::find_if(drawn.pams.begin(), drawn.pams.end(),
+                                  [&](const ValidationPam& p) { return p.name == name; });
+    if (pam != drawn.pams.end()) pam->plant_changes.push_back(o.substr(plant.size()));
+  }
+  for (ValidationPam& pam : drawn.pams) {
+    if (pam.plant_changes.empty()) continue;
+    ConfigReader changes("", "pams." + pam.name + ".plant");
+    changes.apply_overrides(pam.plant_changes);
+    pam.plant = load_plant_params(pam.plant_file, changes.document(), "pams." + pam.name + ".plant.");
+  }
+  *overrides = rest;
+  return drawn;
 }
 
 }  // namespace pamsim

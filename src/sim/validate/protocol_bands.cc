@@ -75,6 +75,7 @@ void check_length_brackets(const LengthValidationSpec& spec, const ValidationOpt
                    all.insert(all.end(), on.begin(), on.end());
                    all.insert(all.end(), options.overrides.begin(), options.overrides.end());
                    all.insert(all.end(), end.begin(), end.end());
+                   with_plant_changes(spec, &all);   // a PAM's plant: checked by its file
                    load_scenario(spec.rig_file, all);
                  });
 }

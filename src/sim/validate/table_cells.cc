@@ -29,4 +29,11 @@ std::string markdown_header(const std::string& first, const std::vector<std::str
 
 std::string csv_number(double v) { return std::isfinite(v) ? format_shortest(v) : std::string(); }
 
+std::string csv_text(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char ch : text) out += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return out + "\"";
+}
+
 }  // namespace pamsim

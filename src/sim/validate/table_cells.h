@@ -23,4 +23,8 @@ std::string markdown_header(const std::string& first, const std::vector<std::str
 // not finite.
 std::string csv_number(double v);
 
+// A CSV cell of text: as it is, or quoted with its quotes doubled where it holds a comma, a
+// quote or a line break (RFC 4180).
+std::string csv_text(const std::string& text);
+
 }  // namespace pamsim
