@@ -16,12 +16,12 @@
 #include "pneumatics/pneumatic_params.h"
 #include "sim/core/trial_model.h"
 #include "sim/scenario/scenario_file.h"
+#include "sim/test_paths.h"
 
 namespace pamsim {
 namespace {
 
-const std::string kReaching = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/reaching.toml";
-const std::string kWall = "muscles.agonist.plant.geometry.wall_thickness_mm";
+using pamsim_test::kReaching;
 const std::string kTube = "pneumatics.chamber.tube_dead_volume_cm3";
 
 const MuscleSpec& agonist(const Scenario& sc) {
@@ -50,7 +50,7 @@ void expect_refused(const std::vector<std::pair<std::string, std::string>>& case
 
 TEST(ScenarioPlantKeysTest, ASetFieldChangesThatFieldOfThePlantFileOnly) {
   const Scenario base = load_scenario(kReaching);
-  const Scenario changed = load_scenario(kReaching, {kWall + "=1.5"});
+  const Scenario changed = load_scenario(kReaching, {pamsim_test::kAgonistWall + "=1.5"});
   const AvbdlParams& a = agonist(base).plant;
   const AvbdlParams& b = agonist(changed).plant;
   EXPECT_EQ(b.wall_thickness_m, 1.5e-3);
@@ -62,14 +62,14 @@ TEST(ScenarioPlantKeysTest, ASetFieldChangesThatFieldOfThePlantFileOnly) {
   // another plant file and a field of it, in either order
   const std::string other = "muscles.agonist.plant=\"" + std::string(PAMSIM_SOURCE_DIR) +
                             "/models/pams/plant_antagonist.toml\"";
-  for (const auto& sets : {std::vector<std::string>{other, kWall + "=1.5"},
-                           std::vector<std::string>{kWall + "=1.5", other}}) {
+  for (const auto& sets : {std::vector<std::string>{other, pamsim_test::kAgonistWall + "=1.5"},
+                           std::vector<std::string>{pamsim_test::kAgonistWall + "=1.5", other}}) {
     const Scenario both = load_scenario(kReaching, sets);
     EXPECT_EQ(agonist(both).plant.wall_thickness_m, 1.5e-3);
     EXPECT_NE(agonist(both).plant_file.find("plant_antagonist.toml"), std::string::npos);
   }
   EXPECT_FALSE(same_trial_model(base, changed)) << "a sweep over the field rebuilds the model";
-  EXPECT_TRUE(same_trial_model(changed, load_scenario(kReaching, {kWall + "=1.5"})));
+  EXPECT_TRUE(same_trial_model(changed, load_scenario(kReaching, {pamsim_test::kAgonistWall + "=1.5"})));
   // the file's own reading of the same value
   EXPECT_EQ(load_plant_params(agonist(base).plant_file).avbdl.wall_thickness_m,
             a.wall_thickness_m);
@@ -92,7 +92,7 @@ TEST(ScenarioPlantKeysTest, APlantTableInTheScenarioIsTheSameAsTheSet) {
 TEST(ScenarioPlantKeysTest, TheRunFoldersScenarioKeepsTheFieldsAndThePath) {
   const auto dir = pamsim_test::fresh_dir("plant_keys_recorded");
   const RecordedScenario r = load_recorded_scenario(pamsim_test::read_file(kReaching), kReaching,
-                                                    {kWall + "=1.5"}, dir.string(), "");
+                                                    {pamsim_test::kAgonistWall + "=1.5"}, dir.string(), "");
   pamsim_test::write_text(dir / "scenario.toml", r.resolved_toml);
   const Scenario again = load_scenario((dir / "scenario.toml").string());
   EXPECT_EQ(agonist(again).plant.wall_thickness_m, 1.5e-3);
@@ -106,8 +106,8 @@ TEST(ScenarioPlantKeysTest, TheRunFoldersScenarioKeepsTheFieldsAndThePath) {
 // Each bad field is one line naming its scenario key, as the file's own would name its key.
 TEST(ScenarioPlantKeysTest, BadFieldsNameTheirScenarioKey) {
   expect_refused({
-           {kWall + "=-1", kWall + ": must be in [0, inf) mm, got -1"},
-           {kWall + "=\"thick\"", kWall + ": must be a number"},
+           {pamsim_test::kAgonistWall + "=-1", pamsim_test::kAgonistWall + ": must be in [0, inf) mm, got -1"},
+           {pamsim_test::kAgonistWall + "=\"thick\"", pamsim_test::kAgonistWall + ": must be a number"},
            {"muscles.agonist.plant.geometry.colour=1",
             "muscles.agonist.plant.geometry.colour: unknown key"},
            {"muscles.agonist.plant.friction.extension.A0_mm2=-2",
@@ -119,7 +119,7 @@ TEST(ScenarioPlantKeysTest, BadFieldsNameTheirScenarioKey) {
            {"muscles.pam.plant.geometry.wall_thickness_mm=1", "muscles.pam"},
            // no value at all (a fuzzer's finding: it threw std::out_of_range)
            {"muscles.agonist.plant=", "muscles.agonist.plant"},
-           {"muscles.agonist.plant.geometry.wall_thickness_mm=  ", kWall}});
+           {"muscles.agonist.plant.geometry.wall_thickness_mm=  ", pamsim_test::kAgonistWall}});
   // a plant table without its file
   const auto dir = pamsim_test::fresh_dir("plant_keys_nofile");
   const std::string variant = pamsim_test::scenario_variant(

@@ -28,7 +28,6 @@ namespace {
 namespace fs = std::filesystem;
 
 using pamsim_test::kDropMass;
-const std::string kWall = "muscles.agonist.plant.geometry.wall_thickness_mm";
 
 // A sweep of drop_mass.toml, 1.3 s long: `top` its top-level keys, `tables` the rest.
 SweepDefinition sweep_from(const fs::path& dir, const std::string& top, const std::string& tables) {
@@ -39,7 +38,7 @@ SweepDefinition sweep_from(const fs::path& dir, const std::string& top, const st
 }
 
 const std::string kAxis = "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 70.0]\n";
-const std::string kDraws = "[[randomize]]\nkey = \"" + kWall + "\"\ndistribution = \"normal\"\n"
+const std::string kDraws = "[[randomize]]\nkey = \"" + pamsim_test::kAgonistWall + "\"\ndistribution = \"normal\"\n"
                            "mean = 2.0\nstddev = 0.1\nmin = 1.8\nmax = 2.3\n"
                            "[[randomize]]\nkey = \"pneumatics.chamber.tube_dead_volume_cm3\"\n"
                            "distribution = \"uniform\"\nfrom = 10.0\nto = 15.0\n";
@@ -101,7 +100,7 @@ TEST(RandomizeTest, DrawsDependOnTheSeedIndexAndTheSeedAlone) {
   EXPECT_NE(other.draws(0), s.draws(0));
   EXPECT_NE(other.canonical_json(), s.canonical_json());
   const std::vector<std::string> o = s.trial_overrides(4);
-  EXPECT_EQ(o[o.size() - 2].rfind(kWall + "=", 0), 0u) << o[o.size() - 2];
+  EXPECT_EQ(o[o.size() - 2].rfind(pamsim_test::kAgonistWall + "=", 0), 0u) << o[o.size() - 2];
   EXPECT_EQ(o[o.size() - 3], "reflex.v_thr_mm_s=70.0");
   // a sweep without draws describes itself as before [[randomize]] existed
   EXPECT_EQ(sweep_from(dir, "", kAxis).canonical_json().find("randomize"), std::string::npos);
@@ -145,7 +144,7 @@ TEST(RandomizeTest, TheDrawnValuesAreStoredAndTheSameOnAnyThreadCountOrShard) {
   // the columns hold the draws
   const ResultsDb db = ResultsDb::open_existing((dir / "one.db").string());
   const std::vector<std::string> columns = db.trial_columns();
-  const auto wall = std::find(columns.begin(), columns.end(), kWall) - columns.begin();
+  const auto wall = std::find(columns.begin(), columns.end(), pamsim_test::kAgonistWall) - columns.begin();
   ASSERT_LT(static_cast<std::size_t>(wall), columns.size());
   for (std::int64_t t = 0; t < s.trials(); ++t) {
     EXPECT_EQ(db.trial_row(t)[static_cast<std::size_t>(wall)].number, s.draws(t)[0]) << t;
@@ -185,7 +184,7 @@ TEST(RandomizeTest, TheShippedRobustnessSweepDrawsInsideItsRanges) {
 
 TEST(RandomizeTest, BadTablesAreRefusedByTheirKey) {
   const fs::path dir = pamsim_test::fresh_dir("randomize_bad");
-  const std::string head = "[[randomize]]\nkey = \"" + kWall + "\"\n";
+  const std::string head = "[[randomize]]\nkey = \"" + pamsim_test::kAgonistWall + "\"\n";
   for (const auto& [body, says] : std::vector<std::pair<std::string, std::string>>{
            {head + "from = 1.0\nto = 2.0\n", "randomize[0].distribution is required"},
            {head + "distribution = \"beta\"\n", "randomize[0].distribution must be \"uniform\""},
@@ -201,11 +200,11 @@ TEST(RandomizeTest, BadTablesAreRefusedByTheirKey) {
            {"[[randomize]]\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize[0].key is required"},
            {"[[randomize]]\nkey = \"seed\"\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize[0].key cannot be \"seed\""},
            {head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n" + head +
-                "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize names " + kWall + " twice"},
+                "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize names " + pamsim_test::kAgonistWall + " twice"},
            {"[[randomize]]\nkey = \"reflex.v_thr_mm_s\"\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "draws reflex.v_thr_mm_s, which is an axis too"},
            {"randomize_seed = 3\n!", "randomize_seed is for files with [[randomize]]"},
            {"randomize_seed = -1\n!" + head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize_seed must be >= 0"},
-           {head + "distribution = \"uniform\"\nfrom = -2.0\nto = -1.0\n", "seed index 0 draws " + kWall},
+           {head + "distribution = \"uniform\"\nfrom = -2.0\nto = -1.0\n", "seed index 0 draws " + pamsim_test::kAgonistWall},
            {"[[randomize]]\nkey = \"reflex.colour\"\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "reflex.colour"}}) {
     SCOPED_TRACE(body);
     try {

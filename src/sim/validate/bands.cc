@@ -9,6 +9,7 @@
 
 #include "base/format.h"
 #include "base/input_error.h"
+#include "sim/validate/table_cells.h"
 #include "sim/scenario/randomize.h"
 
 namespace pamsim {
@@ -16,9 +17,7 @@ namespace {
 
 void check_bracket_name(const TableEntry& e, const std::string& name,
                         const std::vector<Bracket>& before) {
-  e.in.check(!name.empty(), e.where + "name", "must not be empty");
-  e.in.check(name.find_first_of(",\"|\t\n\r") == std::string::npos, e.where + "name",
-             "must hold no comma, quote, bar, tab or newline, got \"" + name + "\"");
+  check_cell_name(e, name);
   for (const Bracket& b : before) {
     e.in.check(b.name != name, e.where + "name", "repeats another bracket's, \"" + name + "\"");
     e.in.check(b.key != e.text("key", true), e.where + "key",

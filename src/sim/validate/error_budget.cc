@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "base/input_error.h"
+#include "sim/validate/table_cells.h"
 
 namespace pamsim {
 namespace {
@@ -22,9 +23,7 @@ std::string override_key(const std::string& assignment) {
 
 void check_source_name(const TableEntry& e, const std::string& name,
                        const std::vector<BudgetSource>& before) {
-  e.in.check(!name.empty(), e.where + "name", "must not be empty");
-  e.in.check(name.find_first_of(",\"|\t\n\r") == std::string::npos, e.where + "name",
-             "must hold no comma, quote, bar, tab or newline, got \"" + name + "\"");
+  check_cell_name(e, name);
   for (const BudgetSource& s : before) {
     e.in.check(s.name != name, e.where + "name", "repeats another source's, \"" + name + "\"");
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "base/config_reader.h"
 #include "base/format.h"
 
 namespace pamsim {
@@ -28,6 +29,12 @@ std::string markdown_header(const std::string& first, const std::vector<std::str
 }
 
 std::string csv_number(double v) { return std::isfinite(v) ? format_shortest(v) : std::string(); }
+
+void check_cell_name(const TableEntry& e, const std::string& name) {
+  e.in.check(!name.empty(), e.where + "name", "must not be empty");
+  e.in.check(name.find_first_of(",\"|\t\n\r") == std::string::npos, e.where + "name",
+             "must hold no comma, quote, bar, tab or newline, got \"" + name + "\"");
+}
 
 std::string csv_text(const std::string& text) {
   if (text.find_first_of(",\"\r\n") == std::string::npos) return text;

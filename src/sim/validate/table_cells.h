@@ -9,6 +9,13 @@
 
 namespace pamsim {
 
+struct TableEntry;   // base/config_reader.h
+
+// Refuses (through the entry's reader, "<where>name ...") an empty name, or one holding a
+// comma, quote, bar, tab or line break: a name that becomes a cell of the CSV, the Markdown
+// and a chart's data (a budget's source, a band's bracket).
+void check_cell_name(const TableEntry& e, const std::string& name);
+
 // A Markdown cell's number: 3 significant digits ("%.3g"); "n/a" where it is not finite
 // (a trial that diverged).
 std::string markdown_number(double v);

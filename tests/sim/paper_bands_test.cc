@@ -1,0 +1,79 @@
+// paper_bands_test.cc: Table III and Table V of the paper (seeds/000) against the bands the
+// shipped protocols give over their brackets (src/sim/validate/protocol_bands.h), each cell
+// pinned to the paper by its band, with why it lies where it does. Ten rigs each, the
+// protocols cut to the cells named (every band of the README is 50 rigs of the whole table).
+//   Table III, PAM-C, Eq. (3), 5 kg: the paper's RMSE 0.683 % lies inside the band: PAM-C's
+//     thin 4 mm tube makes its latex wall (0.79-1.59 mm, stock walls) matter.
+//   Table III, PAM-A, Eq. (3), 5 kg: the paper's 0.861 % lies above the band: its floor is
+//     the fitted law's misfit to the plant on the rig, which no bracketed part moves.
+//   Table V, model estimates: the paper's 5.24 / 5.02 % lie above the bands by a factor of
+//     2 or more: the bracketed parts (the board, the re-seated line, the lines) move them by
+//     tenths of a percent; a mechanism is missing (the agonist's line leaving the board).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "sim/test_paths.h"
+#include "sim/validate/protocol_bands.h"
+
+namespace pamsim {
+namespace {
+
+using pamsim_test::kScenarios;
+
+constexpr int kRigs = 10;
+
+// The band of cell `name`: its finite RMSEs over the rigs
+BandStats rmse_band(const Bands& bands, const std::string& name) {
+  const auto& cells = bands.runs.cells;
+  const auto at = std::find(cells.begin(), cells.end(), name);
+  EXPECT_NE(at, cells.end()) << name;
+  std::vector<double> rmse;
+  for (const auto& rig : bands.runs.errors) rmse.push_back(rig[at - cells.begin()].rmse_pct);
+  return band_stats(rmse);
+}
+
+ValidationOptions two_threads(const std::string& name) {
+  ValidationOptions o;
+  o.threads = 2;
+  o.out_dir = (std::filesystem::path(::testing::TempDir()) /
+               ("paper_bands_" + name + "_" + std::to_string(::getpid())))
+                  .string();
+  return o;
+}
+
+TEST(PaperBandsTest, TableThreeCellsSitInsideForPamCAndAboveForPamA) {
+  const LengthValidationSpec spec =
+      load_length_validation(kScenarios + "validate_length_estimation.toml", {"A", "C"},
+                             {"weights_kg=[5.0]"});
+  const Bands bands = run_length_bands(spec, two_threads("t3"), kRigs);
+  EXPECT_EQ(bands.runs.refused_count(), 0);
+  const BandStats c = rmse_band(bands, "PAM-C eq3 5 kg");
+  EXPECT_EQ(c.n, kRigs);
+  EXPECT_LE(c.min, 0.683);   // Table III, PAM-C, Eq. (3)
+  EXPECT_GE(c.max, 0.683);
+  const BandStats a = rmse_band(bands, "PAM-A eq3 5 kg");
+  EXPECT_LT(a.max, 0.861);   // Table III, PAM-A, Eq. (3): above the band
+  EXPECT_GT(a.min, 0.3);     // the misfit's floor, not a broken run
+}
+
+TEST(PaperBandsTest, TableFiveModelCellsSitFarAboveTheirBands) {
+  const ReachingValidationSpec spec =
+      load_reaching_validation(kScenarios + "validate_reaching.toml", {"trials=1"});
+  const Bands bands = run_reaching_bands(spec, two_threads("t5"), kRigs);
+  EXPECT_EQ(bands.runs.refused_count(), 0);
+  for (const auto& [cell, paper] : std::vector<std::pair<std::string, double>>{
+           {"agonist model all", 5.24}, {"antagonist model all", 5.02}}) {
+    const BandStats b = rmse_band(bands, cell);
+    EXPECT_EQ(b.n, kRigs) << cell;
+    EXPECT_LT(2.0 * b.max, paper) << cell;   // Table V: a factor of 2 at least
+    EXPECT_GT(b.max - b.min, 0.1) << cell;   // the brackets do move it
+  }
+}
+
+}  // namespace
+}  // namespace pamsim
