@@ -315,7 +315,8 @@ TEST(CliValidateTest, BadBandsAreOneLineAndLeaveNoBands) {
            {creep, " --bands 2",
             "bracket \"creep\" (sensors.gauge.board.creep_exponent = 0.9): "},
            {kBandBrackets, " --sensitivity --set muscles.agonist.line_diameter_mm=0.3",
-            "is drawn by"}}) {
+            "is drawn by"},
+           {kBandBrackets, " --bands 2 --budget", "excludes"}}) {
     const fs::path protocol = budget_protocol(dir, c.protocol);
     const CliResult r =
         run_pamsim("validate reaching " + protocol.string() + c.args + " --set " + kLineModulus +
