@@ -22,7 +22,8 @@ def make(**kwargs):
 def test_every_registered_environment_passes_the_checker():
     from gymnasium.utils.env_checker import check_env
 
-    for env_id in ("pamsim/DropMass-v0", "pamsim/DropMass-Noisy-v0"):
+    for env_id in ("pamsim/DropMass-v0", "pamsim/DropMass-Noisy-v0", "pamsim/Reaching-v0",
+                   "pamsim/Reaching-Noisy-v0"):
         env = gymnasium.make(env_id)
         check_env(env.unwrapped, skip_render_check=True)
         env.close()
@@ -146,6 +147,35 @@ def test_a_slide_joints_scenario_observes_and_rewards_in_mm():
     assert "position_mm" in o and "angle_deg" not in o
     assert obs[-2] == o["position_mm"] and obs[-1] == o["velocity_mm_s"]
     _, reward, _, _, _ = env.step(env.action_space.high)
-    moved = env.unwrapped._trial.observe()["position_mm"] - env.unwrapped._start_position
+    moved = env.unwrapped._trial.observe()["position_mm"] - env.unwrapped.start_position
     assert reward == pytest.approx(-abs(moved) * 0.01, rel=1e-9)   # 100 Hz control
+    env.close()
+
+
+def test_reaching_observes_its_target_ramp_and_rewards_the_tracking_error():
+    from pamsim.envs.reaching import RAMP_S, RAMP_START_S
+
+    env = gymnasium.make("pamsim/Reaching-v0", observation="privileged", duration_s=2.6)
+    obs, info = env.reset(seed=4)
+    assert -60.0 <= info["final_deg"] <= -20.0
+    start = env.unwrapped.start_position
+    hold = np.array([0.4, 0.4], dtype=np.float32)   # the calibrated posture's commands
+    total, n = 0.0, 0
+    while True:
+        obs, reward, terminated, truncated, _ = env.step(hold)
+        t = env.unwrapped.trial.observe()["time_s"] if not (terminated or truncated) else None
+        if t is not None:
+            u = min(max((t - RAMP_START_S) / RAMP_S, 0.0), 1.0)
+            # the target (before the privileged angle and velocity): a ramp from the start
+            assert obs[-3] == pytest.approx(start + u * (info["final_deg"] - start), abs=1e-9)
+            # the reward: the tracking error over the control period
+            assert reward == pytest.approx(-abs(obs[-2] - obs[-3]) * 0.01, rel=1e-9)
+        total += reward
+        n += 1
+        if terminated or truncated:
+            break
+    assert truncated and n == 259   # 2.6 s at 100 Hz, the reset's tick aside
+    assert total < 0.0
+    infos = [gymnasium.make("pamsim/Reaching-v0").reset(seed=s)[1]["final_deg"] for s in (1, 2)]
+    assert infos[0] != infos[1]
     env.close()

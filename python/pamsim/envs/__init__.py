@@ -6,7 +6,9 @@ gymnasium installed (``pip install gymnasium``):
 
 ``pamsim/DropMass-v0``: the falling-mass experiment of Yoshida and Hosoda's stretch reflex
 paper with the agent as the arm's controller (``drop_mass.DropMassEnv``);
-``pamsim/DropMass-Noisy-v0``: the same with twice the sensors' noise. Vectorised by
+``pamsim/DropMass-Noisy-v0``: the same with twice the sensors' noise;
+``pamsim/Reaching-v0``: the reaching task's arm tracking a target angle profile
+(``reaching.ReachingEnv``), and ``pamsim/Reaching-Noisy-v0``. Vectorised by
 gymnasium (``make_vec(..., vectorization_mode="sync" | "async")``) or on threads in one
 process (``"vector_entry_point"``: ``vector.ThreadedVectorEnv``).
 """
@@ -15,7 +17,7 @@ from __future__ import annotations
 
 from typing import Any
 
-__all__ = ["DropMassEnv", "ThreadedVectorEnv", "register_envs"]
+__all__ = ["DropMassEnv", "ReachingEnv", "ThreadedVectorEnv", "register_envs"]
 
 
 def __getattr__(name: str) -> Any:
@@ -24,6 +26,10 @@ def __getattr__(name: str) -> Any:
         from .drop_mass import DropMassEnv
 
         return DropMassEnv
+    if name == "ReachingEnv":
+        from .reaching import ReachingEnv
+
+        return ReachingEnv
     if name == "ThreadedVectorEnv":
         from .vector import ThreadedVectorEnv
 
@@ -42,3 +48,9 @@ def register_envs() -> None:
     gymnasium.register("pamsim/DropMass-v0", entry_point=entry, vector_entry_point=vector)
     gymnasium.register("pamsim/DropMass-Noisy-v0", entry_point=entry, vector_entry_point=vector,
                        kwargs={"noise_scale": 2.0})
+    reaching = "pamsim.envs.reaching:ReachingEnv"
+    reaching_vector = "pamsim.envs.vector:make_threaded_reaching"
+    gymnasium.register("pamsim/Reaching-v0", entry_point=reaching,
+                       vector_entry_point=reaching_vector)
+    gymnasium.register("pamsim/Reaching-Noisy-v0", entry_point=reaching,
+                       vector_entry_point=reaching_vector, kwargs={"noise_scale": 2.0})

@@ -92,10 +92,23 @@ class ThreadedVectorEnv(SyncVectorEnv):
         super().close_extras(**kwargs)
 
 
+def _threaded(env_class: Callable[..., gymnasium.Env[Any, Any]], num_envs: int,
+              threads: int | None, env_kwargs: dict[str, Any]) -> ThreadedVectorEnv:
+    return ThreadedVectorEnv([lambda: env_class(**env_kwargs) for _ in range(num_envs)],
+                             threads=threads)
+
+
 def make_threaded(num_envs: int = 1, threads: int | None = None,
                   **env_kwargs: Any) -> ThreadedVectorEnv:
     """gymnasium.make_vec's vector entry point: num_envs DropMassEnv on threads."""
     from .drop_mass import DropMassEnv
 
-    return ThreadedVectorEnv([lambda: DropMassEnv(**env_kwargs) for _ in range(num_envs)],
-                             threads=threads)
+    return _threaded(DropMassEnv, num_envs, threads, env_kwargs)
+
+
+def make_threaded_reaching(num_envs: int = 1, threads: int | None = None,
+                           **env_kwargs: Any) -> ThreadedVectorEnv:
+    """The same for ReachingEnv."""
+    from .reaching import ReachingEnv
+
+    return _threaded(ReachingEnv, num_envs, threads, env_kwargs)
