@@ -22,9 +22,10 @@ def make(**kwargs):
 def test_every_registered_environment_passes_the_checker():
     from gymnasium.utils.env_checker import check_env
 
-    for env_id in ("pamsim/DropMass-v0", "pamsim/DropMass-Noisy-v0", "pamsim/Reaching-v0",
-                   "pamsim/Reaching-Noisy-v0"):
-        env = gymnasium.make(env_id)
+    for env_id, kwargs in (("pamsim/DropMass-v0", {}), ("pamsim/DropMass-Noisy-v0", {}),
+                           ("pamsim/Reaching-v0", {}), ("pamsim/Reaching-Noisy-v0", {}),
+                           ("pamsim/Landing-v0", {"duration_s": 0.3})):
+        env = gymnasium.make(env_id, **kwargs)
         check_env(env.unwrapped, skip_render_check=True)
         env.close()
 
@@ -179,3 +180,31 @@ def test_reaching_observes_its_target_ramp_and_rewards_the_tracking_error():
     infos = [gymnasium.make("pamsim/Reaching-v0").reset(seed=s)[1]["final_deg"] for s in (1, 2)]
     assert infos[0] != infos[1]
     env.close()
+
+
+def test_a_scenario_env_rewards_its_summary_metrics_at_the_end():
+    from pamsim.envs.pam_trial_env import data_dir
+
+    scenario = str(data_dir() / "scenarios" / "drop_mass.toml")
+    env = gymnasium.make("pamsim/Scenario-v0", scenario=scenario, duration_s=1.5,
+                         reward={"peak_drop_deg": -1.0, "mass_retained": 2.0})
+    env.reset(seed=2)
+    rewards = []
+    while True:
+        _, reward, terminated, truncated, info = env.step(np.array([0.4, 0.4], dtype=np.float32))
+        rewards.append(reward)
+        if terminated or truncated:
+            break
+    summary = info["summary"]
+    assert all(r == 0.0 for r in rewards[:-1])
+    assert rewards[-1] == pytest.approx(-summary["peak_drop_deg"] + 2.0 * summary["mass_retained"])
+    bad = gymnasium.make("pamsim/Scenario-v0", scenario=scenario, duration_s=1.2,
+                         reward={"no_such_metric": 1.0})
+    bad.reset(seed=1)
+    with pytest.raises(ValueError, match="no_such_metric"):
+        while True:
+            *_, terminated, truncated, _ = bad.step(np.array([0.4, 0.4], dtype=np.float32))
+            if terminated or truncated:
+                break
+    with pytest.raises(ValueError, match="at least one"):
+        gymnasium.make("pamsim/Scenario-v0", scenario=scenario, reward={})

@@ -8,7 +8,9 @@ gymnasium installed (``pip install gymnasium``):
 paper with the agent as the arm's controller (``drop_mass.DropMassEnv``);
 ``pamsim/DropMass-Noisy-v0``: the same with twice the sensors' noise;
 ``pamsim/Reaching-v0``: the reaching task's arm tracking a target angle profile
-(``reaching.ReachingEnv``), and ``pamsim/Reaching-Noisy-v0``. Vectorised by
+(``reaching.ReachingEnv``), and ``pamsim/Reaching-Noisy-v0``; ``pamsim/Scenario-v0``: any
+scenario file rewarded by its summary's metrics, and ``pamsim/Landing-v0``: the PAM leg's
+landing (``scenario.ScenarioEnv``). Vectorised by
 gymnasium (``make_vec(..., vectorization_mode="sync" | "async")``) or on threads in one
 process (``"vector_entry_point"``: ``vector.ThreadedVectorEnv``).
 """
@@ -17,7 +19,7 @@ from __future__ import annotations
 
 from typing import Any
 
-__all__ = ["DropMassEnv", "ReachingEnv", "ThreadedVectorEnv", "register_envs"]
+__all__ = ["DropMassEnv", "ReachingEnv", "ScenarioEnv", "ThreadedVectorEnv", "register_envs"]
 
 
 def __getattr__(name: str) -> Any:
@@ -30,6 +32,10 @@ def __getattr__(name: str) -> Any:
         from .reaching import ReachingEnv
 
         return ReachingEnv
+    if name == "ScenarioEnv":
+        from .scenario import ScenarioEnv
+
+        return ScenarioEnv
     if name == "ThreadedVectorEnv":
         from .vector import ThreadedVectorEnv
 
@@ -54,3 +60,5 @@ def register_envs() -> None:
                        vector_entry_point=reaching_vector)
     gymnasium.register("pamsim/Reaching-Noisy-v0", entry_point=reaching,
                        vector_entry_point=reaching_vector, kwargs={"noise_scale": 2.0})
+    gymnasium.register("pamsim/Scenario-v0", entry_point="pamsim.envs.scenario:ScenarioEnv")
+    gymnasium.register("pamsim/Landing-v0", entry_point="pamsim.envs.scenario:landing")

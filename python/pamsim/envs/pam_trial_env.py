@@ -16,9 +16,9 @@ and angular velocity [deg/s] (a slide joint: its position [mm] and velocity [mm/
 
 A subclass gives the reset's draws (``draw``: scenario overrides and their info), the reward
 of a step (``step_reward``) and of the episode's end (``end_reward``). An episode lasts
-``duration_s``, then is truncated; a trial that diverges terminates it. The reset runs the
-first control tick with the scenario's own commands, so that the first observation is a real
-reading.
+``duration_s`` (None: the scenario's own), then is truncated; a trial that diverges
+terminates it. The reset runs the first control tick with the scenario's own commands, so
+that the first observation is a real reading.
 """
 
 from __future__ import annotations
@@ -58,7 +58,7 @@ class PamTrialEnv(gymnasium.Env[Obs, Act]):
     task_observation_size = 0   # entries the task adds to the observation
 
     def __init__(self, scenario: str, probe_overrides: dict[str, Any], observation: str,
-                 fiber: bool, noise_scale: float, duration_s: float,
+                 fiber: bool, noise_scale: float, duration_s: float | None,
                  p_max_MPa: float | None, render_mode: str | None) -> None:
         if observation not in ("measured", "privileged"):
             raise ValueError(f'observation must be "measured" or "privileged", got {observation!r}')
@@ -100,8 +100,10 @@ class PamTrialEnv(gymnasium.Env[Obs, Act]):
         return 0.0
 
     def scenario_overrides(self, task: dict[str, Any]) -> dict[str, Any]:
-        """Every trial's overrides: the episode's length, the noise and the task's."""
-        return {"sim.duration_s": self.duration_s, "sensors.noise_scale": self.noise_scale, **task}
+        """Every trial's overrides: the episode's length (None: the scenario's), the noise and
+        the task's."""
+        length = {} if self.duration_s is None else {"sim.duration_s": self.duration_s}
+        return {**length, "sensors.noise_scale": self.noise_scale, **task}
 
     @property
     def trial(self) -> Trial:
