@@ -1,0 +1,77 @@
+// bracket_sources_test.cc: the shipped validation brackets (scenarios/validate_*.toml) against
+// the numbers of the sources they cite, each recomputed from pamsim's own laws: PAM-D's
+// silicone band as the Yeoh law's nominal stress at stretch 4 (0.87 MPa with C20 = 0, 5.1 MPa
+// with Elastosil M4601's 0.02 MPa; Dragon Skin 30's 1.55 MPa between), the board's thickness
+// as its surface stress at the gauge under the calibration's 50 N (20 and 5 MPa), and the
+// board's creep bracket as about 0.05 within 100 s.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "base/config_reader.h"
+#include "pam_actuator/avbdl.h"
+#include "pam_actuator/plant_params.h"
+#include "sensing/findley_creep.h"
+#include "sensing/gauge_hardware.h"
+#include "sim/test_paths.h"
+#include "sim/validate/length_estimation.h"
+#include "sim/validate/reaching.h"
+
+namespace pamsim {
+namespace {
+
+using pamsim_test::kScenarios;
+
+const Bracket& bracket_named(const std::vector<Bracket>& brackets, const std::string& name) {
+  const auto at = std::find_if(brackets.begin(), brackets.end(),
+                               [&](const Bracket& b) { return b.name == name; });
+  if (at == brackets.end()) throw std::runtime_error("no bracket " + name);
+  return *at;
+}
+
+// PAM-D's bladder law with its C20 changed as the bracket changes it
+MooneyRivlinConstants pam_d_law(const LengthValidationSpec& spec, double c20_mpa) {
+  std::vector<std::string> set = {"pams.D.plant.bladder.C20_MPa=" + std::to_string(c20_mpa)};
+  return with_plant_changes(spec, &set).pams.front().plant.avbdl.bladder;
+}
+
+TEST(BracketSourcesTest, PamDsSiliconeBandSpansTheSourcesStressesAtStretchFour) {
+  const LengthValidationSpec spec =
+      load_length_validation(kScenarios + "validate_length_estimation.toml", {"D"});
+  const Bracket& b = bracket_named(spec.brackets, "PAM-D silicone");
+  EXPECT_EQ(b.key, "pams.D.plant.bladder.C20_MPa");
+  const double low = mooney_rivlin_stress(pam_d_law(spec, b.from), 4.0);
+  const double high = mooney_rivlin_stress(pam_d_law(spec, b.to), 4.0);
+  EXPECT_NEAR(low, 0.87e6, 0.01e6);    // M4601's initial modulus, neo-Hookean
+  EXPECT_NEAR(high, 5.12e6, 0.01e6);   // M4601's Yeoh law (Polygerinos et al. 2015)
+  // the shipped plant is the bracket's top: M4601 itself
+  EXPECT_EQ(mooney_rivlin_stress(spec.pams.front().plant.avbdl.bladder, 4.0), high);
+  const double dragon_skin = mooney_rivlin_stress({0.1536e6, 0.0, 0.0016e6}, 4.0);
+  EXPECT_NEAR(dragon_skin, 1.55e6, 0.01e6);
+  EXPECT_TRUE(low < dragon_skin && dragon_skin < high);
+}
+
+TEST(BracketSourcesTest, TheBoardsThicknessBracketIsItsStressAtTheGaugeFromTwentyToFiveMpa) {
+  const ReachingValidationSpec spec = load_reaching_validation(kScenarios + "validate_reaching.toml");
+  const Bracket& b = bracket_named(spec.brackets, "board thickness");
+  GaugeBoardParams board = GaugeHardwareConfig{}.board;
+  const auto stress_mpa = [&](double thickness_mm) {
+    board.thickness_m = thickness_mm * 1e-3;
+    return board.youngs_modulus_pa * gauge_board_strain(board, 50.0, board.contact_position_m) *
+           1e-6;
+  };
+  EXPECT_NEAR(stress_mpa(b.from), 20.0, 0.05);
+  EXPECT_NEAR(stress_mpa(b.to), 5.0, 0.02);
+}
+
+TEST(BracketSourcesTest, TheBoardsCreepBracketTopsAtAboutFivePercentWithinAHundredSeconds) {
+  const ReachingValidationSpec spec = load_reaching_validation(kScenarios + "validate_reaching.toml");
+  const Bracket& b = bracket_named(spec.brackets, "board creep");
+  EXPECT_EQ(b.from, 0.0);
+  EXPECT_NEAR(findley_creep({0.24, b.to}, 100.0), 0.05, 0.005);
+  EXPECT_NEAR(findley_creep({0.24, b.to}, 10.0), 0.028, 0.003);
+}
+
+}  // namespace
+}  // namespace pamsim
