@@ -78,8 +78,8 @@ def identify_text(noise_seed):
     # the model's trials without its sensors' noise: its prediction is the expected
     # trajectory (README, "The worked example": a second noise realisation inside the model
     # is a difference the covariance does not see)
-    lines += [f"{k} = {v}" for k, v in SEARCH.items()] + ["seed = 1",
-                                                          'overrides = ["sensors.noise_scale=0"]', ""]
+    lines += [f"{k} = {v}" for k, v in SEARCH.items()]
+    lines += ["seed = 1", 'overrides = ["sensors.noise_scale=0"]', ""]
     for key, (_, (lo, hi), scale) in TRUTH_RANGES.items():
         lines += ["[[parameter]]", f'key = "{key}"', f"from = {lo}", f"to = {hi}",
                   f'scale = "{scale}"', ""]
@@ -154,7 +154,8 @@ def explained(out):
 
 
 def trusted(row):
-    """The verdict "identified" (strongly correlated or not), the model explaining the recordings."""
+    """The verdict "identified" (strongly correlated or not), the model explaining the
+    recordings."""
     return row["verdict"].startswith("identified") and "not to be trusted" not in row["verdict"]
 
 
@@ -180,7 +181,8 @@ def summary(rows, arms, control, args):
           "with a noise seed and instruments of its own; seven parameters fitted per arm.", "",
           "| parameter | 95 % interval contains the truth | plain s^2 (J^T J)^-1 interval does "
           "| median width, interval / plain | largest error in standard errors where "
-          "\"identified\" | \"identified\", the recordings explained |", "| --- | --- | --- | --- | --- | --- |"]
+          "\"identified\" | \"identified\", the recordings explained |",
+          "| --- | --- | --- | --- | --- | --- |"]
     for key in keys + ["all"]:
         rs = [r for r in rows if key in ("all", r["key"])]
         ident = [r for r in rs if trusted(r)]
