@@ -187,7 +187,8 @@ TEST(DropMassTest, MaxwellSlipFrictionStopsTheArmWhereTanhFrictionCreeps) {
 
 // An extensible line (muscles.<m>.line_diameter_mm, line_modulus_MPa) keeps the calibrated
 // start (its unstretched length is the calibrated one less the start tension's stretch),
-// and, a soft spring in series with the muscle, lets the mass drop further.
+// and, a soft spring in series with the muscle, lets the mass drop further; a creeping one
+// too, and sags on after.
 TEST(DropMassTest, ExtensibleLinesKeepTheStartAndSoftenTheArm) {
   const std::vector<std::string> nylon = {
       "muscles.agonist.line_diameter_mm=0.5", "muscles.agonist.line_modulus_MPa=2500",
@@ -204,6 +205,19 @@ TEST(DropMassTest, ExtensibleLinesKeepTheStartAndSoftenTheArm) {
   const Scenario a = load_scenario(scenario_path("drop_mass_passive.toml"), {});
   const Scenario b = load_scenario(scenario_path("drop_mass_passive.toml"), nylon);
   EXPECT_FALSE(same_trial_model(a, b));
+  // a creeping line (line_creep 0.3 over 10 s) has crept under the start's tension before
+  // the trial: the start still holds; under the mass it keeps stretching, so the arm ends lower
+  std::vector<std::string> crept_lines = nylon;
+  crept_lines.push_back("muscles.agonist.line_creep=0.3");
+  crept_lines.push_back("muscles.antagonist.line_creep=0.3");
+  const TrialResult crept = run("drop_mass_passive.toml", crept_lines);
+  const Trajectory& ct = crept.trajectory;
+  for (std::size_t row = 0; row < ct.rows() && ct.at(row, t) < 0.99; ++row) {
+    ASSERT_NEAR(ct.at(row, angle), -36.0, 1e-3) << "crept, before the drop";
+  }
+  EXPECT_LT(crept.summary.metric("final_angle_deg"), soft.summary.metric("final_angle_deg") - 0.1);
+  EXPECT_FALSE(same_trial_model(b, load_scenario(scenario_path("drop_mass_passive.toml"),
+                                                 crept_lines)));
 }
 
 // joints.<joint>.*: a bearing's damping and friction loss in place of the model's; more

@@ -112,7 +112,8 @@ TEST_F(PamCallbackTest, RejectsActuatorsThatCannotBePams) {
     EXPECT_NE(std::string(e.what()).find("slider.xml: actuator 0 is not a bound PAM"),
               std::string::npos) << e.what();
   }
-  EXPECT_THROW(store_line_stiffness_in_model(unbound.get(), 0, 300.0, "slider.xml"), InputError);
+  EXPECT_THROW(store_line_in_model(unbound.get(), 0, LineBinding{300.0}, "slider.xml"),
+               InputError);
 }
 
 // The binding belongs to the model: a copy (copy_model) pulls with the same law, a rebinding
@@ -297,7 +298,7 @@ TEST(PamCallbackLineTest, AnExtensibleLineIsASpringInSeriesWithTheMuscle) {
   linear.coef = {5000.0, 0, 0, 0, 0, 0};   // k [N/m]
   const double line = 0.3, ea = 300.0, c = line / ea, k = 5000.0, p = 0.4e6;
   store_pam_in_model(m.get(), 0, linear, line, 1, "slider.xml");
-  store_line_stiffness_in_model(m.get(), 0, ea, "slider.xml");
+  store_line_in_model(m.get(), 0, LineBinding{ea}, "slider.xml");
   EXPECT_EQ(pam_line_axial_stiffness(m.get(), 0), ea);
   MjDataPtr d = make_data(m.get());
   const double l_n = natural_length(linear, p);
@@ -315,7 +316,7 @@ TEST(PamCallbackLineTest, AnExtensibleLineIsASpringInSeriesWithTheMuscle) {
   EXPECT_NEAR(pam_length(m.get(), d.get(), 0), l_n - 0.001, 1e-15);
 
   // made inextensible again: the muscle's end is the line's, tendon - L0
-  store_line_stiffness_in_model(m.get(), 0, 0.0, "slider.xml");
+  store_line_in_model(m.get(), 0, LineBinding{}, "slider.xml");
   EXPECT_EQ(pam_line_axial_stiffness(m.get(), 0), 0.0);
   d->qpos[0] = line + l_n + 0.010;
   mj_forward(m.get(), d.get());

@@ -36,7 +36,11 @@ void binding_text(std::ostringstream& os, const MuscleBinding& b) {
   bits(os, b.spring.h_m);
   for (double c : b.spring.coef) bits(os, c);
   bits(os, b.line_length_m);
-  bits(os, b.line_axial_stiffness_n);
+  for (double v : {b.line.axial_stiffness_n, b.line.creep, b.line.creep_time_s,
+                   b.line.start_tension_n}) {
+    bits(os, v);
+  }
+  os << b.line.creep_index << ';';
   os << b.pressure_index << ';' << b.has_plant << ';' << b.slip_block << ';'
      << b.relaxation_block << ';';
   AvbdlParams plant = b.plant;

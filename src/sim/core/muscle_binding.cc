@@ -147,10 +147,13 @@ void store_plant_in_model(const mjModel* m, int id, const AvbdlParams& plant,
   bind_muscle(m, id, b);
 }
 
-void store_line_stiffness_in_model(const mjModel* m, int id, double axial_stiffness_n,
-                                   const char* path) {
+void store_line_in_model(const mjModel* m, int id, const LineBinding& line, const char* path) {
   MuscleBinding b = bound(m, id, path);
-  b.line_axial_stiffness_n = axial_stiffness_n;
+  if (line.creep > 0.0) {
+    require_userdata(m, line.creep_index, line.creep_index + 1, path,
+                     "the PAMs' pressures, histories and lines' creep states");
+  }
+  b.line = line;
   bind_muscle(m, id, b);
 }
 

@@ -24,11 +24,21 @@
 
 namespace pamsim {
 
+// A muscle's line beyond its length: a spring in series with it (E A), and its creep, one
+// Kelvin-Voigt element on that spring's compliance (pam_callback.h).
+struct LineBinding {
+  double axial_stiffness_n = 0.0;   // E A [N]; 0: inextensible
+  double creep = 0.0;               // g >= 0: the long-term creep per unit elastic stretch
+  double creep_time_s = 0.0;        // tau > 0: its retardation time
+  double start_tension_n = 0.0;     // F0, held long before the trial: the creep state's start
+  int creep_index = -1;             // d->userdata index of the creep state q [N], or -1
+};
+
 struct MuscleBinding {
   SpringModel spring;                   // Eq. (1)-(5): the estimator's law; the plant's too
                                         // when has_plant is false
   double line_length_m = 0.0;           // the line's unstretched length
-  double line_axial_stiffness_n = 0.0;  // its E A [N]; 0: inextensible
+  LineBinding line;                     // its stretch and creep
   int pressure_index = -1;              // d->userdata index of the chamber gauge pressure [Pa]
   bool has_plant = false;               // else the spring law is the plant
   AvbdlParams plant;                    // the plant's law, when has_plant
@@ -72,9 +82,10 @@ void store_pam_in_model(const mjModel* m, int actuator_id, const SpringModel& sp
 // InputError if the model's nuserdata cannot hold that history, or the actuator is unbound.
 void store_plant_in_model(const mjModel* m, int actuator_id, const AvbdlParams& plant,
                           int history_index, const char* path);
-// Makes actuator `id`'s line extensible with axial stiffness E A = axial_stiffness_n > 0, or
-// inextensible for 0. Throws InputError if the actuator is unbound.
-void store_line_stiffness_in_model(const mjModel* m, int actuator_id,
-                                   double axial_stiffness_n, const char* path);
+// Makes actuator `id`'s line extensible with axial stiffness E A = line.axial_stiffness_n > 0
+// (inextensible for 0), creeping when line.creep > 0 (its state d->userdata[creep_index]).
+// Throws InputError if the actuator is unbound or the model's nuserdata cannot hold the state.
+void store_line_in_model(const mjModel* m, int actuator_id, const LineBinding& line,
+                         const char* path);
 
 }  // namespace pamsim

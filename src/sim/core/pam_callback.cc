@@ -114,15 +114,24 @@ const PamLaw& pam_law(const mjModel* m, int id) {
   return e.law;
 }
 
+// The line's creep stretch [m]: L0 / (E A) g q, q the creep state (pam_callback.h); 0 for a
+// line that does not creep.
+double creep_stretch(const PamLaw& law, const mjData* d) {
+  const LineBinding& line = law.b().line;
+  if (line.creep_index < 0) return 0.0;
+  return law.b().line_length_m / line.axial_stiffness_n * line.creep * d->userdata[line.creep_index];
+}
+
 // The line's tension [N], and in *taut the length it leaves the PAM. An inextensible line
-// leaves it at tendon - L0; an extensible one, stretched by its tension, where
-// F = pull(tendon - L0 - c F), c = L0 / (E A): solved on [0, pull(tendon - L0)] by TOMS 748.
+// leaves it at tendon - L0; an extensible one, stretched by its tension and its creep, where
+// F = pull(tendon - L0 - c g q - c F), c = L0 / (E A): solved on [0, pull(tendon - L0 - c g
+// q)] by TOMS 748.
 double line_tension(const mjModel* m, const mjData* d, int id, double* taut) {
   const PamLaw& law = pam_law(m, id);
   if (law.b().pressure_index < 0) return 0.0;   // unbound
   const double p = d->userdata[law.b().pressure_index];
-  const double unstretched = d->actuator_length[id] - law.b().line_length_m;
-  const double ea = law.b().line_axial_stiffness_n;
+  const double ea = law.b().line.axial_stiffness_n;
+  const double unstretched = d->actuator_length[id] - law.b().line_length_m - creep_stretch(law, d);
   *taut = unstretched;
   const double rigid = law.pull(m, d, id, p, unstretched);
   if (ea <= 0.0 || !(rigid > 0.0)) return rigid;   // (a NaN pull is the trial's to report)
@@ -158,7 +167,7 @@ SpringModel pam_spring_from_model(const mjModel* m, int id) { return pam_law(m, 
 double pam_line_length(const mjModel* m, int id) { return pam_law(m, id).b().line_length_m; }
 
 double pam_line_axial_stiffness(const mjModel* m, int id) {
-  return pam_law(m, id).b().line_axial_stiffness_n;
+  return pam_law(m, id).b().line.axial_stiffness_n;
 }
 
 int pam_userdata_index(const mjModel* m, int id) { return pam_law(m, id).b().pressure_index; }
@@ -166,7 +175,7 @@ int pam_userdata_index(const mjModel* m, int id) { return pam_law(m, id).b().pre
 double pam_length(const mjModel* m, const mjData* d, int id) {
   const PamLaw& law = pam_law(m, id);
   const double unstretched = d->actuator_length[id] - law.b().line_length_m;
-  if (law.b().line_axial_stiffness_n <= 0.0) return unstretched;
+  if (law.b().line.axial_stiffness_n <= 0.0) return unstretched;
   double taut = unstretched;
   line_tension(m, d, id, &taut);
   return taut;
@@ -215,6 +224,20 @@ void pam_commit_history(const mjModel* m, mjData* d, int id, double muscle_lengt
     block[1] = relaxed;
     block[0] = muscle_length_m;
   }
+}
+
+void pam_start_line_creep(const mjModel* m, mjData* d, int id) {
+  const LineBinding& line = pam_law(m, id).b().line;
+  if (line.creep_index >= 0) d->userdata[line.creep_index] = line.start_tension_n;
+}
+
+void pam_commit_line_creep(const mjModel* m, mjData* d, int id, double dt_s) {
+  const LineBinding& line = pam_law(m, id).b().line;
+  if (line.creep_index < 0) return;
+  double taut = 0.0;
+  const double f = std::max(line_tension(m, d, id, &taut), 0.0);   // a slack line recovers
+  double& q = d->userdata[line.creep_index];
+  q = f + (q - f) * std::exp(-dt_s / line.creep_time_s);
 }
 
 void install_pam_actuator_callback() { mjcb_act_bias = pam_actuator_force; }

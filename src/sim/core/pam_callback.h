@@ -16,10 +16,16 @@
 // The Maxwell-slip and relaxation states move only at pam_commit_history, once per physics
 // step; the callback evaluates them as they would be at the step's length, without storing.
 // The overstress adds to a taut muscle's pull (a slack one pulls nothing).
+//   d->userdata[line.creep_index] a creeping line's creep state q [N] (a Kelvin-Voigt
+//                                 element: dq/dt = (F - q) / tau, F the line's tension),
+//                                 set to the start's tension by pam_start_line_creep and
+//                                 moved by pam_commit_line_creep once per physics step
 // An extensible line of unstretched length L0 and axial stiffness E A, at tension F, is
-// L0 (1 + F / (E A)) long, so the PAM's length is the tendon's minus that, and F solves
-// F = pull(tendon - L0 - L0 F / (E A)); a smooth friction's rate is then still the
-// tendon's, not the muscle's (the line's stretch rate is left out of it).
+// L0 (1 + (F + g q) / (E A)) long (g: its creep, 0 for none; the same Prony form as the
+// gauge board's, prony_creep.h, on the line's compliance), so the PAM's length is the
+// tendon's minus that, and F solves F = pull(tendon - L0 - L0 (F + g q) / (E A)); a smooth
+// friction's rate is then still the tendon's, not the muscle's (the line's stretch rate is
+// left out of it).
 // PAM length l = tendon length - line length. The spring law: d = l - l_n(p), Eq. (1)-(5);
 // AVBDL: seeds/003 Eq. (25) plus friction at the tendon's velocity. The force pulls only
 // (the actuator force is -f, f >= 0) and is zero when the PAM is slack or unbound.
@@ -32,6 +38,13 @@
 #include "sim/core/muscle_binding.h"
 
 namespace pamsim {
+
+// A creeping line's state at the trial's start: the start's tension, held long before it
+// (the line's unstretched length was set so, trial_lines.h). A no-op for other lines.
+void pam_start_line_creep(const mjModel* m, mjData* d, int actuator_id);
+// One physics step of dt_s of a creeping line's state under its tension now (exact for a
+// tension held over the step). A no-op for other lines.
+void pam_commit_line_creep(const mjModel* m, mjData* d, int actuator_id, double dt_s);
 
 // E A [N] of the actuator's line; 0 for an inextensible one.
 double pam_line_axial_stiffness(const mjModel* m, int actuator_id);

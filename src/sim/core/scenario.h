@@ -47,6 +47,11 @@ struct MuscleSpec {
   // 0: inextensible. An extensible line's length above is its length at the start state,
   // under the start's tension (issue 25, item 3).
   double line_axial_stiffness_n = 0.0;
+  // Its creep (muscles.<m>.line_creep, line_creep_time_s): one Kelvin-Voigt element on its
+  // compliance, the long-term creep g per unit elastic stretch and its retardation time
+  // (pam_callback.h); 0: none.
+  double line_creep = 0.0;
+  double line_creep_time_s = 10.0;
   // muscles.<m>.spans: the joints its tendon must cross (checked when the model is bound: a
   // moment arm at each in the start state); empty: not checked
   std::vector<std::string> spans;

@@ -13,16 +13,15 @@
 #include "sim/core/metrics.h"
 #include "sim/core/muscle_law.h"
 #include "sim/core/pam_callback.h"
+#include "sim/core/trial_lines.h"
 
 namespace pamsim {
 namespace {
 
 constexpr double kMinMomentArm_m = 1e-4;   // 0.1 mm: below it a tendon does not cross a joint
 
-// "<scenario>: <key> <problem>"
-[[noreturn]] void fail(const Scenario& sc, const std::string& key, const std::string& problem) {
-  throw InputError(sc.path + ": " + key + " " + problem);
-}
+using detail::fail;
+using detail::start_state;
 
 int find_id(const mjModel* m, mjtObj type, const std::string& name) {
   return name.empty() ? -1 : mj_name2id(m, type, name.c_str());
@@ -232,18 +231,6 @@ void set_joints(const Scenario& sc, TrialModel* tm) {
 }
 
 
-// the start state: the joint at its start position, held bodies in place, at rest
-MjDataPtr start_state(const Scenario& sc, const TrialModel& tm) {
-  const mjModel* m = tm.model.get();
-  MjDataPtr data = make_data(m);
-  tm.place_at_start(sc, data.get());
-  for (std::size_t k = 0; k < tm.muscles.size(); ++k) {
-    data->userdata[k] = sc.muscles[tm.muscles[k].spec].command.at(0.0);
-  }
-  mj_forward(m, data.get());
-  return data;
-}
-
 // muscles.<m>.spans: a moment arm of the muscle's tendon at each joint it names, in the
 // start state (a biarticular tendon whose path misses a joint has none there)
 void check_spans(const Scenario& sc, const TrialModel& tm) {
@@ -265,84 +252,6 @@ void check_spans(const Scenario& sc, const TrialModel& tm) {
       }
     }
   }
-}
-
-// Extensible lines (muscles.<m>.line_diameter_mm): each line's length so far is its length
-// at the start, under the start's tension F0; its unstretched length is L / (1 + F0 / (E A)),
-// so the start state stays as calibrated.
-void make_lines_extensible(const Scenario& sc, TrialModel* tm) {
-  mjModel* m = tm->model.get();
-  const auto extensible = [&](const BoundMuscle& b) {
-    return sc.muscles[b.spec].line_axial_stiffness_n > 0.0;
-  };
-  if (std::none_of(tm->muscles.begin(), tm->muscles.end(), extensible)) return;
-  MjDataPtr data = start_state(sc, *tm);   // the inextensible lines' tensions at the start
-  for (std::size_t k = 0; k < tm->muscles.size(); ++k) {
-    BoundMuscle& b = tm->muscles[k];
-    if (!extensible(b)) continue;
-    const MuscleSpec& spec = sc.muscles[b.spec];
-    const double ea = spec.line_axial_stiffness_n;
-    const double tension = -data->actuator_force[b.actuator];
-    b.line_length_m /= 1.0 + tension / ea;
-    store_pam_in_model(m, b.actuator, spec.pam.spring, b.line_length_m, static_cast<int>(k),
-                       sc.model_file.c_str());
-    store_line_stiffness_in_model(m, b.actuator, ea, sc.model_file.c_str());
-  }
-}
-
-// the one muscle's line that holds the start state, given the others' (set_lines)
-void solve_line(const Scenario& sc, TrialModel* tm, int solved) {
-  mjModel* m = tm->model.get();
-  // the tension that balances the start state on the degree of freedom it moves most
-  BoundMuscle& b = tm->muscles[solved];
-  const MuscleSpec& spec = sc.muscles[b.spec];
-  MjDataPtr data = start_state(sc, *tm);
-  const mjData* d = data.get();
-  const mjtNum* moment = d->actuator_moment + static_cast<long>(b.actuator) * m->nv;
-  int dof = 0;
-  for (int v = 1; v < m->nv; ++v) dof = std::fabs(moment[v]) > std::fabs(moment[dof]) ? v : dof;
-  const double others = d->qfrc_actuator[dof] + d->qfrc_passive[dof];
-  const double f = m->nv > 0 && moment[dof] != 0 ? (others - d->qfrc_bias[dof]) / moment[dof] : 0.0;
-  const double p0 = spec.command.at(0.0);
-  const double pam_length = plant_length_at_force(spec, p0, f);
-  if (!(pam_length > 0)) {
-    char buf[160];
-    std::snprintf(buf, sizeof(buf), "cannot hold the start state: it needs %.4g N at %.4g MPa",
-                  f, units::pa_to_mpa(p0));
-    fail(sc, spec.key + ".line", std::string("= \"equilibrium\" ") + buf);
-  }
-  b.line_length_m = d->actuator_length[b.actuator] - pam_length;
-  if (!(b.line_length_m > 0)) {
-    fail(sc, spec.key + ".line", "= \"equilibrium\" gives a line <= 0: the tendon is shorter "
-                                 "than the PAM it holds");
-  }
-  store_pam_in_model(m, b.actuator, spec.pam.spring, b.line_length_m, solved,
-                     sc.model_file.c_str());
-}
-
-// line lengths: fixed ones first, then at most one muscle solved for a static start
-void set_lines(const Scenario& sc, TrialModel* tm) {
-  mjModel* m = tm->model.get();
-  int solved = -1;
-  int history_index = static_cast<int>(tm->muscles.size());   // after the pressures
-  for (std::size_t k = 0; k < tm->muscles.size(); ++k) {
-    BoundMuscle& b = tm->muscles[k];
-    const MuscleSpec& spec = sc.muscles[b.spec];
-    b.line_length_m = spec.line_length_m;
-    if (spec.line == LineSource::kEquilibrium) {
-      if (solved >= 0) fail(sc, spec.key + ".line", "\"equilibrium\" is allowed for one muscle only");
-      solved = static_cast<int>(k);
-      b.line_length_m = 1e3;   // slack while the others' forces are computed
-    }
-    store_pam_in_model(m, b.actuator, spec.pam.spring, b.line_length_m, static_cast<int>(k),
-                       sc.model_file.c_str());
-    if (!spec.plant_file.empty()) {
-      store_plant_in_model(m, b.actuator, spec.plant, history_index, sc.model_file.c_str());
-      history_index += pam_history_size(spec.plant);
-    }
-  }
-  if (solved >= 0) solve_line(sc, tm, solved);
-  make_lines_extensible(sc, tm);
 }
 
 }  // namespace
@@ -388,7 +297,7 @@ TrialModel load_trial_model(const Scenario& sc) {
   bind_holds(sc, &tm);
   bind_events(sc, &tm);
   bind_pairs(sc, &tm);
-  set_lines(sc, &tm);
+  detail::set_lines(sc, &tm);
   check_spans(sc, tm);
   std::vector<std::string> labels;
   for (const BoundMuscle& b : tm.muscles) labels.push_back(b.label);

@@ -25,6 +25,8 @@ bool same_trial_model(const Scenario& a, const Scenario& b) {
          << mu.plant_changes << ';' << static_cast<int>(mu.line) << ';';
       append_bits(os, mu.line_length_m);
       append_bits(os, mu.line_axial_stiffness_n);
+      append_bits(os, mu.line_creep);
+      append_bits(os, mu.line_creep_time_s);
       append_bits(os, mu.command.at(0.0));
       for (const std::string& joint : mu.spans) os << joint << ',';   // checked when bound
     }

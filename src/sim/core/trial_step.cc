@@ -205,6 +205,7 @@ bool TrialRun::physics_step(double t) {
                                   : d_->actuator_velocity[act];
       muscle_length_m_[i] = length;
       if (history_[i]) pam_commit_history(m_, d_, act, length);
+      pam_commit_line_creep(m_, d_, act, sc_.timestep_s);
       pneumatics_.set_kinematics(static_cast<int>(i), length, velocity);
     }
     pneumatics_.advance(t + sc_.timestep_s);

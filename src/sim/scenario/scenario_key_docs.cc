@@ -63,6 +63,8 @@ std::vector<KeyDoc> model_docs() {
       {"muscles.<actuator>.line_mm", "mm", "(model.calibration's)", "> 0", "the fishing line's length (at the start, under its tension)"},
       {"muscles.<actuator>.line_diameter_mm", "mm", "(none: inextensible)", "(0, 10]; with line_modulus_MPa", "the fishing line's diameter: it stretches by its tension over E A"},
       {"muscles.<actuator>.line_modulus_MPa", "MPa", "(none: inextensible)", "(0, 1e6]; with line_diameter_mm", "the line material's Young's modulus E"},
+      {"muscles.<actuator>.line_creep", "", "0.0", "[0, 10]; an extensible line", "the line's creep: its long-term stretch per unit elastic stretch, one Kelvin-Voigt element (nylon monofilament 0.05-0.3, PE braid 0-0.05)"},
+      {"muscles.<actuator>.line_creep_time_s", "s", "10.0", "(0, 1e6]; an extensible line", "that creep's retardation time"},
       {"muscles.<actuator>.command.kind", "", "\"constant\"", "\"constant\" | \"ramp\" | \"sine\" | \"steps\" | \"table\"", "the commanded pressure's schedule"},
       {"muscles.<actuator>.command.MPa", "MPa", "(required for constant, steps)", "a pressure (constant), or a list (steps)", "the commanded pressure"},
       {"muscles.<actuator>.command.from_MPa", "MPa", "(required for ramp)", "a pressure", "a ramp's start"},

@@ -168,10 +168,18 @@ void read_muscle_command(ConfigReader& in, const Scenario& sc, const std::string
   });
 }
 
-// an extensible line: its diameter and its material's modulus, both or neither
+constexpr double kMaxLineCreep = 10.0;
+
+// an extensible line: its diameter and its material's modulus, both or neither, and its creep
 void read_line_stiffness(ConfigReader& in, MuscleSpec* m) {
   const std::string d_key = m->key + ".line_diameter_mm", e_key = m->key + ".line_modulus_MPa";
-  if (!in.has(d_key) && !in.has(e_key)) return;
+  if (!in.has(d_key) && !in.has(e_key)) {
+    for (const char* creep : {".line_creep", ".line_creep_time_s"}) {
+      in.check(!in.has(m->key + creep), m->key + creep,
+               "needs an extensible line (line_diameter_mm and line_modulus_MPa)");
+    }
+    return;
+  }
   in.check(in.has(d_key) && in.has(e_key), in.has(d_key) ? e_key : d_key,
            "is required with " + (in.has(d_key) ? d_key : e_key) + " (an extensible line)");
   const double d_mm = in.require_double(d_key), e_mpa = in.require_double(e_key);
@@ -180,6 +188,14 @@ void read_line_stiffness(ConfigReader& in, MuscleSpec* m) {
            "must be in (0, 1e6] MPa, got " + format_value(e_mpa));
   const double radius_m = units::mm_to_m(d_mm) / 2.0;
   m->line_axial_stiffness_n = units::mpa_to_pa(e_mpa) * units::kPi * radius_m * radius_m;
+  // its creep: a Kelvin-Voigt element on the extensible line's compliance
+  m->line_creep = in.get_double(m->key + ".line_creep", 0.0);
+  in.check(m->line_creep >= 0.0 && m->line_creep <= kMaxLineCreep, m->key + ".line_creep",
+           "must be in [0, 10], got " + format_value(m->line_creep));
+  m->line_creep_time_s = in.get_double(m->key + ".line_creep_time_s", m->line_creep_time_s);
+  in.check(m->line_creep_time_s > 0.0 && m->line_creep_time_s <= 1e6,
+           m->key + ".line_creep_time_s",
+           "must be in (0, 1e6] s, got " + format_value(m->line_creep_time_s));
 }
 
 // the line: fixed, solved, or the calibration's
