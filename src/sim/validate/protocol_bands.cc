@@ -104,39 +104,62 @@ std::string reaching_cases(const ReachingValidationSpec& spec) {
 
 using CellsOf = std::function<std::vector<BandCell>(const ValidationOptions&)>;
 
-// The bands of a protocol whose run is `cells` (`per_run` trials)
-Bands bands_of(const std::vector<Bracket>& brackets, std::uint64_t seed,
-               const std::vector<BudgetSource>& budget, int per_run,
-               const ValidationOptions& options, int rigs, const CellsOf& cells) {
-  const int total = per_run * rigs;
+// What the bands and the sensitivity need of a protocol: its brackets and sources, its
+// trials per run, what its cells are, and a run's cells
+struct Protocol {
+  const std::vector<Bracket>& brackets;
+  std::uint64_t seed;
+  const std::vector<BudgetSource>& budget;
+  int per_run;
+  std::string name, cases_are;
+  CellsOf cells;
+};
+
+Protocol length_protocol(const LengthValidationSpec& spec) {
+  return {spec.brackets, spec.bracket_seed, spec.budget,
+          static_cast<int>(spec.pams.size() * spec.laws.size() * spec.weights_kg.size()),
+          "length-estimation", length_cases(spec),
+          [&spec](const ValidationOptions& v) { return length_cells(spec, v); }};
+}
+
+Protocol reaching_protocol(const ReachingValidationSpec& spec) {
+  return {spec.brackets, spec.bracket_seed, spec.budget, spec.trials, "reaching",
+          reaching_cases(spec),
+          [&spec](const ValidationOptions& v) { return reaching_cells(spec, v); }};
+}
+
+// The bands of a protocol over `rigs` drawn rigs
+Bands bands_of(const Protocol& p, const ValidationOptions& options, int rigs) {
+  const int total = p.per_run * rigs;
   if (options.started) options.started(total);
-  const std::vector<std::string> on = all_sources_on(budget);
-  return run_bands(brackets, seed, rigs, [&](int rig, const std::vector<std::string>& draws) {
-    return run_one(options, on, draws, rig, per_run, total, cells);
+  const std::vector<std::string> on = all_sources_on(p.budget);
+  Bands bands = run_bands(p.brackets, p.seed, rigs,
+                          [&](int rig, const std::vector<std::string>& draws) {
+    return run_one(options, on, draws, rig, p.per_run, total, p.cells);
   });
+  bands.protocol = p.name;
+  bands.cases_are = p.cases_are;
+  return bands;
 }
 
 // Its sensitivity: every run on the same seeds, so that the runs differ only by a bracket
-Sensitivity sensitivity_of(const std::vector<Bracket>& brackets,
-                           const std::vector<BudgetSource>& budget, int per_run,
-                           const ValidationOptions& options, const CellsOf& cells) {
-  const int total = per_run * static_cast<int>(1 + 2 * brackets.size());
+Sensitivity sensitivity_of(const Protocol& p, const ValidationOptions& options) {
+  const int total = p.per_run * static_cast<int>(1 + 2 * p.brackets.size());
   if (options.started) options.started(total);
-  const std::vector<std::string> on = all_sources_on(budget);
+  const std::vector<std::string> on = all_sources_on(p.budget);
   int run = 0;
-  return run_sensitivity(brackets, [&](const std::vector<std::string>& set) {
+  Sensitivity s = run_sensitivity(p.brackets, [&](const std::vector<std::string>& set) {
     ValidationOptions counted = options;
     counted.progress = [&](int done, int) {
-      if (options.progress) options.progress(run * per_run + done, total);
+      if (options.progress) options.progress(run * p.per_run + done, total);
     };
-    std::vector<BandCell> result = run_one(counted, on, set, 0, per_run, total, cells);
+    std::vector<BandCell> result = run_one(counted, on, set, 0, p.per_run, total, p.cells);
     ++run;
     return result;
   });
-}
-
-int length_trials(const LengthValidationSpec& spec) {
-  return static_cast<int>(spec.pams.size() * spec.laws.size() * spec.weights_kg.size());
+  s.protocol = p.name;
+  s.cases_are = p.cases_are;
+  return s;
 }
 
 }  // namespace
@@ -145,43 +168,26 @@ Bands run_length_bands(const LengthValidationSpec& spec, const ValidationOptions
                        int rigs) {
   check_rigs(rigs);
   check_length_brackets(spec, options);
-  Bands bands = bands_of(spec.brackets, spec.bracket_seed, spec.budget, length_trials(spec),
-                         options, rigs,
-                         [&](const ValidationOptions& v) { return length_cells(spec, v); });
-  bands.protocol = "length-estimation";
-  bands.cases_are = length_cases(spec);
-  return bands;
+  return bands_of(length_protocol(spec), options, rigs);
 }
 
 Sensitivity run_length_sensitivity(const LengthValidationSpec& spec,
                                    const ValidationOptions& options) {
   check_length_brackets(spec, options);
-  Sensitivity s = sensitivity_of(spec.brackets, spec.budget, length_trials(spec), options,
-                                 [&](const ValidationOptions& v) { return length_cells(spec, v); });
-  s.protocol = "length-estimation";
-  s.cases_are = length_cases(spec);
-  return s;
+  return sensitivity_of(length_protocol(spec), options);
 }
 
 Bands run_reaching_bands(const ReachingValidationSpec& spec, const ValidationOptions& options,
                          int rigs) {
   check_rigs(rigs);
   check_reaching_brackets(spec, options);
-  Bands bands = bands_of(spec.brackets, spec.bracket_seed, spec.budget, spec.trials, options, rigs,
-                         [&](const ValidationOptions& v) { return reaching_cells(spec, v); });
-  bands.protocol = "reaching";
-  bands.cases_are = reaching_cases(spec);
-  return bands;
+  return bands_of(reaching_protocol(spec), options, rigs);
 }
 
 Sensitivity run_reaching_sensitivity(const ReachingValidationSpec& spec,
                                      const ValidationOptions& options) {
   check_reaching_brackets(spec, options);
-  Sensitivity s = sensitivity_of(spec.brackets, spec.budget, spec.trials, options,
-                                 [&](const ValidationOptions& v) { return reaching_cells(spec, v); });
-  s.protocol = "reaching";
-  s.cases_are = reaching_cases(spec);
-  return s;
+  return sensitivity_of(reaching_protocol(spec), options);
 }
 
 }  // namespace pamsim
