@@ -40,6 +40,7 @@ using namespace pamsim;
 namespace {
 
 using pamsim_python::Array;
+using pamsim_python::FrameRenderer;
 
 // ---- trials ------------------------------------------------------------------------------
 
@@ -219,6 +220,12 @@ class PyTrial {
 
   const std::vector<std::string>& muscles() const { return labels_; }
 
+  py::array_t<std::uint8_t> render(int width, int height, const std::string& camera,
+                                   const std::string& quality, const std::string& backend) {
+    return frames_.render(*loaded_.model, loaded_.scenario, *trial_, width, height, camera,
+                          quality, backend);
+  }
+
  private:
   static Array scaled(const std::vector<double>& v, double factor) {
     Array a(static_cast<py::ssize_t>(v.size()));
@@ -236,6 +243,7 @@ class PyTrial {
   std::unique_ptr<SteppedTrial> trial_;
   std::vector<double> commands_pa_;
   std::vector<std::string> labels_;
+  FrameRenderer frames_;
 };
 
 // ---- databases ---------------------------------------------------------------------------
@@ -332,7 +340,11 @@ PYBIND11_MODULE(_pamsim, m) {
       .def_property_readonly("muscles", &PyTrial::muscles)
       .def_property_readonly("command_max_MPa", &PyTrial::command_max_mpa,
                              "The valve's largest command [MPa] (valve.command_max_MPa)")
-      .def("finish", &PyTrial::finish, "The trial's Result (ended early if not done); then reset");
+      .def("finish", &PyTrial::finish, "The trial's Result (ended early if not done); then reset")
+      .def("render", &PyTrial::render, py::arg("width") = 640, py::arg("height") = 480,
+           py::arg("camera") = "side", py::arg("quality") = "fast", py::arg("backend") = "",
+           "The state now as an RGB frame, a (height, width, 3) uint8 array (pamsim render's "
+           "scene without its overlays)");
 
   m.def("read_sweep", &read_sweep, py::arg("path"),
         "A sweep database's trials: {column: values} (numbers as float arrays)");

@@ -86,6 +86,10 @@ class Trial:
         """
     def observe(self) -> dict[str, typing.Any]:
         ...
+    def render(self, width: typing.SupportsInt | typing.SupportsIndex = 640, height: typing.SupportsInt | typing.SupportsIndex = 480, camera: str = 'side', quality: str = 'fast', backend: str = '') -> numpy.typing.NDArray[numpy.uint8]:
+        """
+        The state now as an RGB frame, a (height, width, 3) uint8 array (pamsim render's scene without its overlays)
+        """
     def reset(self, seed: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
         ...
     def step(self, pressure_commands_MPa: typing.Annotated[numpy.typing.ArrayLike, numpy.float64] | None = None) -> bool:

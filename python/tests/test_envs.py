@@ -208,3 +208,26 @@ def test_a_scenario_env_rewards_its_summary_metrics_at_the_end():
                 break
     with pytest.raises(ValueError, match="at least one"):
         gymnasium.make("pamsim/Scenario-v0", scenario=scenario, reward={})
+
+
+def test_rgb_array_frames_show_the_state_and_pass_the_checker():
+    from gymnasium.utils.env_checker import check_env
+
+    env = gymnasium.make("pamsim/DropMass-v0", render_mode="rgb_array")
+    check_env(env.unwrapped)   # the render check included
+    env.reset(seed=1)
+    first = env.render()
+    assert first.shape == (480, 640, 3) and first.dtype == np.uint8
+    assert first.min() < first.max()   # a scene, not a blank frame
+    assert np.array_equal(env.render(), first)   # the same state, the same frame
+    for _ in range(80):   # past the drop at 0.3-0.6 s: the ball has fallen
+        env.step(np.array([0.4, 0.4], dtype=np.float32))
+    assert not np.array_equal(env.render(), first)
+    assert env.unwrapped.metadata["render_fps"] == 100   # the control rate
+    plain = gymnasium.make("pamsim/DropMass-v0")
+    plain.reset(seed=1)
+    assert plain.render() is None
+    from pamsim.envs.drop_mass import DropMassEnv
+
+    with pytest.raises(ValueError, match="render_mode"):
+        DropMassEnv(render_mode="window")

@@ -19,6 +19,10 @@ of a step (``step_reward``) and of the episode's end (``end_reward``). An episod
 ``duration_s`` (None: the scenario's own), then is truncated; a trial that diverges
 terminates it. The reset runs the first control tick with the scenario's own commands, so
 that the first observation is a real reading.
+
+Rendering: ``render_mode="rgb_array"`` makes ``render()`` return the state as a 640 x 480
+RGB frame (``render_width``, ``render_height``), the scene of ``pamsim render`` without its
+overlays, drawn offscreen.
 """
 
 from __future__ import annotations
@@ -54,17 +58,18 @@ def joint_state(observation: dict[str, Any]) -> tuple[float, float]:
 
 
 class PamTrialEnv(gymnasium.Env[Obs, Act]):
-    metadata: dict[str, Any] = {"render_modes": []}
+    metadata: dict[str, Any] = {"render_modes": ["rgb_array"], "render_fps": 100}
     task_observation_size = 0   # entries the task adds to the observation
+    render_width, render_height = 640, 480   # render_mode="rgb_array"'s frame [px]
 
     def __init__(self, scenario: str, probe_overrides: dict[str, Any], observation: str,
                  fiber: bool, noise_scale: float, duration_s: float | None,
                  p_max_MPa: float | None, render_mode: str | None) -> None:
         if observation not in ("measured", "privileged"):
             raise ValueError(f'observation must be "measured" or "privileged", got {observation!r}')
-        if render_mode is not None:
-            raise ValueError(f"{type(self).__name__} renders nothing yet "
-                             "(render_mode must be None)")
+        if render_mode not in (None, "rgb_array"):
+            raise ValueError(f'render_mode must be None or "rgb_array", got {render_mode!r}')
+        self.render_mode = render_mode
         self.scenario = scenario
         self.privileged = observation == "privileged"
         self.fiber = fiber
@@ -76,6 +81,8 @@ class PamTrialEnv(gymnasium.Env[Obs, Act]):
         self.last_result: Any = None
         probe = Trial(self.scenario, self.scenario_overrides(probe_overrides))
         self.muscles: list[str] = list(probe.muscles)
+        probe.step()   # one control period: the frames' rate
+        self.metadata = {**self.metadata, "render_fps": round(1.0 / probe.observe()["time_s"])}
         # the actions' top: the scenario's valve range unless given
         self.p_max_MPa: float = probe.command_max_MPa if p_max_MPa is None else p_max_MPa
         n = len(self.muscles)
@@ -132,6 +139,13 @@ class PamTrialEnv(gymnasium.Env[Obs, Act]):
         self._time_s = self._trial.observe()["time_s"]
         self._warned = False
         return self._observe(), {**info, "sensor_seed": sensor_seed}
+
+    def render(self) -> npt.NDArray[np.uint8] | None:
+        """With render_mode="rgb_array": the state now as a (height, width, 3) uint8 frame,
+        drawn offscreen (OSMesa unless PAMSIM_GL_BACKEND or MUJOCO_GL says egl)."""
+        if self.render_mode != "rgb_array":
+            return None
+        return self.trial.render(self.render_width, self.render_height)
 
     def _checked(self, action: Act) -> npt.NDArray[np.float64]:
         a = np.asarray(action, dtype=np.float64).reshape(-1)

@@ -312,6 +312,8 @@ bool SteppedTrial::done() const { return state_->run->ended(); }
 
 TrialObservation SteppedTrial::observe() const { return state_->run->observe(); }
 
+TrialSnapshot SteppedTrial::snapshot() { return state_->run->snapshot(); }
+
 TrialResult SteppedTrial::finish() {
   TrialResult result = state_->run->end();
   state_->run.reset();

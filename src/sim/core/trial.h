@@ -130,6 +130,9 @@ class SteppedTrial {
   bool step(const std::vector<double>* commands_pa = nullptr);
   bool done() const;
   TrialObservation observe() const;
+  // The state as a TrialObserver sees it (a video's frame draws it); valid until the next
+  // step, reset() or finish().
+  TrialSnapshot snapshot();
   // The summary and the log of the trial so far (ended early if not done); reset() to run
   // another.
   TrialResult finish();

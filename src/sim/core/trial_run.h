@@ -56,6 +56,8 @@ class TrialRun {
   // controller's); the pointer must stay valid while set.
   void set_external_commands(const std::vector<double>* p_cmd_pa) { external_pa_ = p_cmd_pa; }
   TrialObservation observe() const;
+  // The state as an observer sees it (trial.h); valid until the next step.
+  TrialSnapshot snapshot();
 
  private:
   void start_state();

@@ -222,8 +222,7 @@ void TrialRun::set_status(const std::string& status, const std::string& why, dou
   result_.summary.message = why + " at t = " + std::to_string(t) + " s";
 }
 
-void TrialRun::show_observer() {
-  const auto start = std::chrono::steady_clock::now();
+TrialSnapshot TrialRun::snapshot() {
   for (std::size_t i = 0; i < n_; ++i) {
     pressure_pa_[i] = pneumatics_.pressure_pa(static_cast<int>(i));
     command_pa_[i] = pneumatics_.command_pa(static_cast<int>(i));
@@ -241,7 +240,12 @@ void TrialRun::show_observer() {
   snapshot.reflex_active = &out_.reflex_active;
   snapshot.tension_reflex_active = &out_.tension_reflex_active;
   snapshot.first_trigger_s = first_trigger_s_;
-  options_.observer->observe(snapshot);
+  return snapshot;
+}
+
+void TrialRun::show_observer() {
+  const auto start = std::chrono::steady_clock::now();
+  options_.observer->observe(snapshot());
   next_observation_s_ = options_.observer->next_observation_time_s() - kObservationToleranceS;
   observer_wall_ += std::chrono::steady_clock::now() - start;
 }

@@ -49,6 +49,12 @@ void paint_floor_plain(mjModel* model) {
 
 }  // namespace
 
+RenderQuality parse_render_quality(const std::string& name) {
+  if (name == "fast") return RenderQuality::kFast;
+  if (name == "default") return RenderQuality::kDefault;
+  throw InputError("--quality must be fast or default, got '" + name + "'");
+}
+
 void check_camera(const mjModel* model, const std::string& model_path, const std::string& camera) {
   if (mj_name2id(model, mjOBJ_CAMERA, camera.c_str()) < 0) {
     throw InputError(model_path + ": no camera named '" + camera + "' (the model's cameras: " +

@@ -26,6 +26,9 @@ enum class RenderQuality {
   kDefault,   // the model's own <visual> settings
 };
 
+// "fast" | "default". Throws InputError "--quality must be fast or default, got '<name>'".
+RenderQuality parse_render_quality(const std::string& name);
+
 struct SceneRenderOptions {
   int width_px = 1280;
   int height_px = 720;

@@ -26,8 +26,6 @@ constexpr double kTableLineSpacing = 1.25;  // the overlay table's rows, in font
 constexpr int kMinPlotHeightPx = 60;
 constexpr double kAngleTickDeg = 10.0;      // the angle plot's range: multiples of this
 constexpr double kPressureTickMpa = 0.1;    // the pressure plot's range: [0, a multiple]
-constexpr double kDefaultMuscleDiameterM = 0.016;   // a muscle without [geometry]
-constexpr double kMinMuscleDiameterM = 0.004;       // still visible fully stretched
 
 // frames at k / fps strictly before the end of the trial: duration x fps when whole
 long frames_in(double duration_s, int fps) {
@@ -127,23 +125,6 @@ std::string reflex_state(const TrialSnapshot& snap) {
   return state.empty() ? "off" : state;
 }
 
-// viridis at t in [0, 1] (clamped): dark blue (low) to yellow (high), as the heat maps
-std::array<float, 3> viridis(double t) {
-  static const std::array<float, 3> kStops[] = {{0.267f, 0.005f, 0.329f},
-                                                {0.231f, 0.322f, 0.545f},
-                                                {0.129f, 0.569f, 0.553f},
-                                                {0.369f, 0.788f, 0.384f},
-                                                {0.992f, 0.906f, 0.145f}};
-  const double x = std::clamp(t, 0.0, 1.0) * 4.0;
-  const int i = std::min(3, static_cast<int>(x));
-  const double f = x - i;
-  std::array<float, 3> c;
-  for (int k = 0; k < 3; ++k) {
-    c[k] = static_cast<float>((1.0 - f) * kStops[i][k] + f * kStops[i + 1][k]);
-  }
-  return c;
-}
-
 // muscle i's line colour in the pressure plot (the arm's agonist red, antagonist blue),
 // its command dimmer
 std::array<float, 3> muscle_rgb(std::size_t i, bool command) {
@@ -167,12 +148,6 @@ struct TrialVideo::Plots {
   double angle_max_deg = -std::numeric_limits<double>::infinity();
   double pressure_max_mpa = 0.0;
 };
-
-RenderQuality parse_render_quality(const std::string& name) {
-  if (name == "fast") return RenderQuality::kFast;
-  if (name == "default") return RenderQuality::kDefault;
-  throw InputError("--quality must be fast or default, got '" + name + "'");
-}
 
 void validate_video_options(const VideoOptions& o, const std::string& mp4_option) {
   check_frame_side(o.width_px, "--width");
@@ -207,18 +182,11 @@ TrialVideo::TrialVideo(const TrialModel& model, const Scenario& sc, const VideoO
                        std::uint64_t seed)
     : options_(options),
       title_(std::filesystem::path(sc.path).filename().string() + ", seed " + std::to_string(seed)),
-      colour_max_pa_(sc.pneumatics.command_max_gauge_pa),
       frame_count_(frames_in(sc.duration_s, options.fps)),
-      renderer_(model.model.get(), model.model_path,
-                SceneRenderOptions{options.width_px, options.height_px, options.quality,
-                                   options.camera, options.backend, options.egl_device}) {
-  for (const BoundMuscle& m : model.muscles) {
-    DrawnMuscle drawn;
-    drawn.actuator = m.actuator;
-    drawn.tendon = model.model->actuator_trnid[2 * m.actuator];
-    drawn.braid = m.braid;
-    muscles_.push_back(drawn);
-  }
+      scene_(model, sc,
+             SceneRenderOptions{options.width_px, options.height_px, options.quality,
+                                options.camera, options.backend, options.egl_device}),
+      renderer_(scene_.renderer()) {
   if (options.plot) {
     plots_ = std::make_unique<Plots>();
     // the muscles in their tendons' colours, commands dimmer
@@ -264,38 +232,8 @@ double TrialVideo::next_observation_time_s() const {
   return static_cast<double>(next_frame_) / options_.fps;
 }
 
-std::vector<SceneRenderer::Capsule> TrialVideo::muscle_capsules(const TrialSnapshot& snap) const {
-  std::vector<SceneRenderer::Capsule> capsules;
-  const mjModel* m = snap.model;
-  const mjData* d = snap.data;
-  for (std::size_t i = 0; i < muscles_.size(); ++i) {
-    const DrawnMuscle& muscle = muscles_[i];
-    if (muscle.tendon < 0 || d->ten_wrapnum[muscle.tendon] < 2) continue;
-    const mjtNum* a = d->wrap_xpos + 3 * d->ten_wrapadr[muscle.tendon];
-    const mjtNum* b = a + 3;
-    mjtNum dir[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    const mjtNum span = mju_normalize3(dir);
-    const double length = std::min<double>(pam_muscle_length(m, d, muscle.actuator), span);
-    SceneRenderer::Capsule c;
-    for (int k = 0; k < 3; ++k) {
-      c.from[k] = a[k];
-      c.to[k] = a[k] + length * dir[k];
-    }
-    const double diameter = muscle.braid.fibre_length_m > 0
-                                ? chou_hannaford_diameter(muscle.braid, length)
-                                : kDefaultMuscleDiameterM;
-    c.radius_m = 0.5 * std::max(diameter, kMinMuscleDiameterM);
-    const double pressure = i < snap.pressure_pa->size() ? (*snap.pressure_pa)[i] : 0.0;
-    const std::array<float, 3> rgb = viridis(colour_max_pa_ > 0 ? pressure / colour_max_pa_ : 0);
-    std::copy(rgb.begin(), rgb.end(), c.rgba);
-    c.rgba[3] = 1.0f;
-    capsules.push_back(c);
-  }
-  return capsules;
-}
-
 void TrialVideo::observe(const TrialSnapshot& snapshot) {
-  renderer_.draw_scene(snapshot.data, muscle_capsules(snapshot));
+  scene_.draw(snapshot);
   draw_overlays(snapshot);
   const unsigned char* rgb = renderer_.read_pixels();
 
@@ -326,7 +264,7 @@ void TrialVideo::draw_overlays(const TrialSnapshot& snap) {
   renderer_.draw_text((names + "\nreflex").c_str(), (values + "\n" + reflex).c_str());
   // the title and the keys, top right
   std::snprintf(line, sizeof(line), "%s, t = %.2f s\ndark 0 to yellow %.1f MPa",
-                title_.c_str(), snap.time_s, units::pa_to_mpa(colour_max_pa_));
+                title_.c_str(), snap.time_s, units::pa_to_mpa(scene_.colour_max_pa()));
   std::string keys = "trial\nmuscle colour";
   std::string key_values = line;
   if (plots_) {

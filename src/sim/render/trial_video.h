@@ -20,6 +20,7 @@
 #include "sim/render/mp4_writer.h"
 #include "sim/render/png_sequence_writer.h"
 #include "sim/render/scene_renderer.h"
+#include "sim/render/trial_scene.h"
 
 namespace pamsim {
 
@@ -41,9 +42,6 @@ struct VideoOptions {
   // called after each frame written with (frames written, frames in all), e.g. for progress
   std::function<void(long, long)> on_frame;
 };
-
-// "fast" | "default". Throws InputError "--quality must be fast or default, got '<name>'".
-RenderQuality parse_render_quality(const std::string& name);
 
 // libx264's presets, fastest first (what --preset accepts).
 inline constexpr const char* kX264Presets[] = {"ultrafast", "superfast", "veryfast", "faster",
@@ -76,28 +74,18 @@ class TrialVideo : public TrialObserver {
 
  private:
   struct Plots;
-  // A muscle as the video draws it: a capsule from its tendon's first point (the PAM's fixed
-  // end) along the tendon for its length, as thick as its braid at that length (Chou &
-  // Hannaford's D(L)), coloured by its chamber pressure.
-  struct DrawnMuscle {
-    int actuator = -1;
-    int tendon = -1;
-    BraidGeometry braid;   // fibre length 0: no [geometry], a fixed thickness
-  };
-  std::vector<SceneRenderer::Capsule> muscle_capsules(const TrialSnapshot& snapshot) const;
   void draw_overlays(const TrialSnapshot& snapshot);
   // each live plot's height [px] below a table of `table_rows` rows
   int plot_height_px(std::size_t table_rows) const;
 
   VideoOptions options_;
   std::string title_;                 // "drop_mass.toml, seed 1"
-  std::vector<DrawnMuscle> muscles_;
-  double colour_max_pa_ = 0.0;        // the top of the pressure colour scale
   double trigger_s_ = -1.0;           // the first reflex trigger; < 0: none yet
   std::string plot_key_;              // "red ago, blue anta": the pressure plot's lines
   long frame_count_ = 0;   // frames the whole trial makes
   long next_frame_ = 0;
-  SceneRenderer renderer_;
+  TrialScene scene_;
+  SceneRenderer& renderer_;        // scene_'s, for the overlays
   std::unique_ptr<Plots> plots_;   // with --plot
   std::unique_ptr<Mp4Writer> mp4_;
   std::unique_ptr<PngSequenceWriter> png_;
