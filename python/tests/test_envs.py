@@ -24,7 +24,10 @@ def test_every_registered_environment_passes_the_checker():
 
     for env_id, kwargs in (("pamsim/DropMass-v0", {}), ("pamsim/DropMass-Noisy-v0", {}),
                            ("pamsim/Reaching-v0", {}), ("pamsim/Reaching-Noisy-v0", {}),
-                           ("pamsim/Landing-v0", {"duration_s": 0.3})):
+                           ("pamsim/Landing-v0", {"duration_s": 0.3}),
+                           ("pamsim/Hopping-v0", {"duration_s": 0.3}),
+                           ("pamsim/DropMass-FastValve-v0", {}),
+                           ("pamsim/Reaching-FastValve-v0", {})):
         env = gymnasium.make(env_id, **kwargs)
         check_env(env.unwrapped, skip_render_check=True)
         env.close()
@@ -231,3 +234,15 @@ def test_rgb_array_frames_show_the_state_and_pass_the_checker():
 
     with pytest.raises(ValueError, match="render_mode"):
         DropMassEnv(render_mode="window")
+
+
+def test_the_fast_valve_variant_fills_the_chambers_faster():
+    def pressures(env_id):
+        env = gymnasium.make(env_id, randomize=False, noise_scale=0.0)
+        env.reset(seed=1)
+        for _ in range(5):   # a step of the agonist's command, 50 ms
+            env.step(np.array([0.7, 0.4], dtype=np.float32))
+        return env.unwrapped.trial.observe()["pressure_MPa"][0]
+
+    # the ITV2000 class (2 ms dead time, C = 1) against the shipped ITV1000 (10 ms, C = 0.35)
+    assert pressures("pamsim/DropMass-FastValve-v0") > pressures("pamsim/DropMass-v0") + 0.01

@@ -244,15 +244,18 @@ TEST(SteppedTrialTest, CommandsReplaceTheControllersAndAreChecked) {
   const Scenario sc = load_scenario(kReflex, {"sim.duration_s=0.2", "drop.time_s=0.1", "drop.enabled=false"});
   const TrialModel arm = load_trial_model(sc);
   SteppedTrial stepped(arm, sc, 1);
-  const std::vector<double> commands(arm.muscles.size(), 0.45e6);
+  const std::vector<double> commands = {0.45e6, 0.3e6};   // each muscle its own
+  ASSERT_EQ(arm.muscles.size(), commands.size());
   for (int k = 0; k < 20 && stepped.step(&commands); ++k) {
-    for (double c : stepped.observe().command_pa) EXPECT_EQ(c, 0.45e6);
+    EXPECT_EQ(stepped.observe().command_pa, commands) << "tick " << k;
   }
   const std::vector<double> too_few(arm.muscles.size() - 1, 0.4e6);
   EXPECT_THROW(stepped.step(&too_few), InputError);
   const TrialResult r = stepped.finish();
   const std::size_t p_cmd = r.trajectory.column("p_cmd_" + arm.muscles[0].label + "_MPa");
   EXPECT_EQ(r.trajectory.at(5, p_cmd), 0.45);
+  const std::size_t other = r.trajectory.column("p_cmd_" + arm.muscles[1].label + "_MPa");
+  EXPECT_EQ(r.trajectory.at(5, other), 0.3);
 }
 
 }  // namespace

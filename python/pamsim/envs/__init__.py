@@ -10,7 +10,9 @@ paper with the agent as the arm's controller (``drop_mass.DropMassEnv``);
 ``pamsim/Reaching-v0``: the reaching task's arm tracking a target angle profile
 (``reaching.ReachingEnv``), and ``pamsim/Reaching-Noisy-v0``; ``pamsim/Scenario-v0``: any
 scenario file rewarded by its summary's metrics, and ``pamsim/Landing-v0``: the PAM leg's
-landing (``scenario.ScenarioEnv``). Vectorised by
+landing, ``pamsim/Hopping-v0`` its hopping (``scenario.ScenarioEnv``);
+``-FastValve-v0`` variants of DropMass and Reaching with the regulator bracket's fast end
+(ITV2000 class; the shipped scenarios are its slow end). Vectorised by
 gymnasium (``make_vec(..., vectorization_mode="sync" | "async")``) or on threads in one
 process (``"vector_entry_point"``: ``vector.ThreadedVectorEnv``).
 """
@@ -43,6 +45,12 @@ def __getattr__(name: str) -> Any:
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
+# the regulator bracket's fast end, ITV2000 class (models/pams/pneumatics.toml)
+FAST_VALVE = {"valve.supply_sonic_conductance_dm3_per_s_bar": 1.0,
+              "valve.exhaust_sonic_conductance_dm3_per_s_bar": 1.0, "valve.dead_time_ms": 2.0,
+              "valve.valve_time_constant_ms": 5.0, "valve.proportional_band_kPa": 250.0}
+
+
 def register_envs() -> None:
     """Registers the environments with gymnasium (pamsim's import does it when it can)."""
     import gymnasium
@@ -62,3 +70,10 @@ def register_envs() -> None:
                        vector_entry_point=reaching_vector, kwargs={"noise_scale": 2.0})
     gymnasium.register("pamsim/Scenario-v0", entry_point="pamsim.envs.scenario:ScenarioEnv")
     gymnasium.register("pamsim/Landing-v0", entry_point="pamsim.envs.scenario:landing")
+    gymnasium.register("pamsim/Hopping-v0", entry_point="pamsim.envs.scenario:hopping")
+    # the regulator bracket's fast end (ITV2000 class; the shipped scenarios are its slow
+    # end, ITV1000 class: models/pams/pneumatics.toml)
+    gymnasium.register("pamsim/DropMass-FastValve-v0", entry_point=entry,
+                       vector_entry_point=vector, kwargs={"overrides": FAST_VALVE})
+    gymnasium.register("pamsim/Reaching-FastValve-v0", entry_point=reaching,
+                       vector_entry_point=reaching_vector, kwargs={"overrides": FAST_VALVE})

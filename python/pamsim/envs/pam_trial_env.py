@@ -20,6 +20,9 @@ of a step (``step_reward``) and of the episode's end (``end_reward``). An episod
 terminates it. The reset runs the first control tick with the scenario's own commands, so
 that the first observation is a real reading.
 
+``overrides``: scenario keys set in every trial ({"valve.dead_time_ms": 2.0}), as the
+registered variants set them.
+
 Rendering: ``render_mode="rgb_array"`` makes ``render()`` return the state as a 640 x 480
 RGB frame (``render_width``, ``render_height``), the scene of ``pamsim render`` without its
 overlays, drawn offscreen.
@@ -64,7 +67,8 @@ class PamTrialEnv(gymnasium.Env[Obs, Act]):
 
     def __init__(self, scenario: str, probe_overrides: dict[str, Any], observation: str,
                  fiber: bool, noise_scale: float, duration_s: float | None,
-                 p_max_MPa: float | None, render_mode: str | None) -> None:
+                 p_max_MPa: float | None, render_mode: str | None,
+                 overrides: dict[str, Any] | None = None) -> None:
         if observation not in ("measured", "privileged"):
             raise ValueError(f'observation must be "measured" or "privileged", got {observation!r}')
         if render_mode not in (None, "rgb_array"):
@@ -75,6 +79,7 @@ class PamTrialEnv(gymnasium.Env[Obs, Act]):
         self.fiber = fiber
         self.noise_scale = noise_scale
         self.duration_s = duration_s
+        self.overrides = dict(overrides or {})   # scenario keys of every trial (a variant's)
         self._trial: Trial | None = None
         self._warned = False
         self._time_s = 0.0
@@ -107,10 +112,10 @@ class PamTrialEnv(gymnasium.Env[Obs, Act]):
         return 0.0
 
     def scenario_overrides(self, task: dict[str, Any]) -> dict[str, Any]:
-        """Every trial's overrides: the episode's length (None: the scenario's), the noise and
-        the task's."""
+        """Every trial's overrides: the episode's length (None: the scenario's), the noise, the
+        variant's and the task's."""
         length = {} if self.duration_s is None else {"sim.duration_s": self.duration_s}
-        return {**length, "sensors.noise_scale": self.noise_scale, **task}
+        return {**length, "sensors.noise_scale": self.noise_scale, **self.overrides, **task}
 
     @property
     def trial(self) -> Trial:
