@@ -231,13 +231,18 @@ void pam_start_line_creep(const mjModel* m, mjData* d, int id) {
   if (line.creep_index >= 0) d->userdata[line.creep_index] = line.start_tension_n;
 }
 
-void pam_commit_line_creep(const mjModel* m, mjData* d, int id, double dt_s) {
+double pam_length_committing_creep(const mjModel* m, mjData* d, int id, double dt_s) {
   const LineBinding& line = pam_law(m, id).b().line;
-  if (line.creep_index < 0) return;
+  if (line.creep_index < 0) return pam_length(m, d, id);
   double taut = 0.0;
   const double f = std::max(line_tension(m, d, id, &taut), 0.0);   // a slack line recovers
   double& q = d->userdata[line.creep_index];
   q = f + (q - f) * std::exp(-dt_s / line.creep_time_s);
+  return taut;   // the step's length: before the state moved
+}
+
+void pam_commit_line_creep(const mjModel* m, mjData* d, int id, double dt_s) {
+  pam_length_committing_creep(m, d, id, dt_s);
 }
 
 void install_pam_actuator_callback() { mjcb_act_bias = pam_actuator_force; }

@@ -45,6 +45,9 @@ void pam_start_line_creep(const mjModel* m, mjData* d, int actuator_id);
 // One physics step of dt_s of a creeping line's state under its tension now (exact for a
 // tension held over the step). A no-op for other lines.
 void pam_commit_line_creep(const mjModel* m, mjData* d, int actuator_id, double dt_s);
+// pam_length of this state, and for a creeping line its step committed as above, with the one
+// tension solve both need (a trial's step calls this).
+double pam_length_committing_creep(const mjModel* m, mjData* d, int actuator_id, double dt_s);
 
 // E A [N] of the actuator's line; 0 for an inextensible one.
 double pam_line_axial_stiffness(const mjModel* m, int actuator_id);

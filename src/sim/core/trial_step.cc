@@ -195,7 +195,7 @@ bool TrialRun::physics_step(double t) {
   try {
     for (std::size_t i = 0; i < n_; ++i) {
       const int act = tm_.muscles[i].actuator;
-      const double taut = pam_length(m_, d_, act);
+      const double taut = pam_length_committing_creep(m_, d_, act, sc_.timestep_s);
       const double length = pam_muscle_length_at(m_, d_, act, taut, &free_length_[i]);
       // (an extensible line's stretch moves the muscle apart from the tendon: its length's
       // rate too)
@@ -205,7 +205,6 @@ bool TrialRun::physics_step(double t) {
                                   : d_->actuator_velocity[act];
       muscle_length_m_[i] = length;
       if (history_[i]) pam_commit_history(m_, d_, act, length);
-      pam_commit_line_creep(m_, d_, act, sc_.timestep_s);
       pneumatics_.set_kinematics(static_cast<int>(i), length, velocity);
     }
     pneumatics_.advance(t + sc_.timestep_s);
