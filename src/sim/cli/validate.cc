@@ -172,10 +172,7 @@ void run_bands_command(const ValidateOptions& o, const std::string& name,
   const auto started = std::chrono::steady_clock::now();
   const std::string started_utc = utc_timestamp();
   const bool banded = o.bands.has_value();
-  if (banded && (*o.bands < 1 || *o.bands > kMaxBandRigs)) {
-    throw InputError("--bands must be in [1, " + std::to_string(kMaxBandRigs) + "], got " +
-                     std::to_string(*o.bands));
-  }
+  if (banded) check_band_rigs(*o.bands);   // before any folder is made
   const std::string what = banded ? "bands" : "sensitivity";
   ValidationOptions v = common_options(o, "renders/validate_" + name + "_" + what);
   const std::vector<std::string>& outputs = banded ? kBandsOutputs : kSensitivityOutputs;

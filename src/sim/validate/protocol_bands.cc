@@ -19,13 +19,6 @@ std::vector<std::string> all_sources_on(const std::vector<BudgetSource>& sources
   return on;
 }
 
-void check_rigs(int rigs) {
-  if (rigs < 1 || rigs > kMaxBandRigs) {
-    throw InputError("--bands must be in [1, " + std::to_string(kMaxBandRigs) + "], got " +
-                     std::to_string(rigs));
-  }
-}
-
 // A protocol run with `extra` overrides after the sources' and the user's, seeded for run
 // `index` (`per_run` seeds each), its progress counted among `total` trials.
 std::vector<BandCell> run_one(
@@ -164,9 +157,16 @@ Sensitivity sensitivity_of(const Protocol& p, const ValidationOptions& options) 
 
 }  // namespace
 
+void check_band_rigs(int rigs) {
+  if (rigs < 1 || rigs > kMaxBandRigs) {
+    throw InputError("--bands must be in [1, " + std::to_string(kMaxBandRigs) + "], got " +
+                     std::to_string(rigs));
+  }
+}
+
 Bands run_length_bands(const LengthValidationSpec& spec, const ValidationOptions& options,
                        int rigs) {
-  check_rigs(rigs);
+  check_band_rigs(rigs);
   check_length_brackets(spec, options);
   return bands_of(length_protocol(spec), options, rigs);
 }
@@ -179,7 +179,7 @@ Sensitivity run_length_sensitivity(const LengthValidationSpec& spec,
 
 Bands run_reaching_bands(const ReachingValidationSpec& spec, const ValidationOptions& options,
                          int rigs) {
-  check_rigs(rigs);
+  check_band_rigs(rigs);
   check_reaching_brackets(spec, options);
   return bands_of(reaching_protocol(spec), options, rigs);
 }

@@ -26,5 +26,7 @@ Sensitivity run_reaching_sensitivity(const ReachingValidationSpec& spec,
                                      const ValidationOptions& options);
 
 inline constexpr int kMaxBandRigs = 10000;
+// Throws InputError "--bands must be in [1, 10000], got <rigs>".
+void check_band_rigs(int rigs);
 
 }  // namespace pamsim
