@@ -241,9 +241,6 @@ double pam_length_committing_creep(const mjModel* m, mjData* d, int id, double d
   return taut;   // the step's length: before the state moved
 }
 
-void pam_commit_line_creep(const mjModel* m, mjData* d, int id, double dt_s) {
-  pam_length_committing_creep(m, d, id, dt_s);
-}
 
 void install_pam_actuator_callback() { mjcb_act_bias = pam_actuator_force; }
 

@@ -19,7 +19,7 @@
 //   d->userdata[line.creep_index] a creeping line's creep state q [N] (a Kelvin-Voigt
 //                                 element: dq/dt = (F - q) / tau, F the line's tension),
 //                                 set to the start's tension by pam_start_line_creep and
-//                                 moved by pam_commit_line_creep once per physics step
+//                                 moved by pam_length_committing_creep once per physics step
 // An extensible line of unstretched length L0 and axial stiffness E A, at tension F, is
 // L0 (1 + (F + g q) / (E A)) long (g: its creep, 0 for none; the same Prony form as the
 // gauge board's, prony_creep.h, on the line's compliance), so the PAM's length is the
@@ -42,11 +42,9 @@ namespace pamsim {
 // A creeping line's state at the trial's start: the start's tension, held long before it
 // (the line's unstretched length was set so, trial_lines.h). A no-op for other lines.
 void pam_start_line_creep(const mjModel* m, mjData* d, int actuator_id);
-// One physics step of dt_s of a creeping line's state under its tension now (exact for a
-// tension held over the step). A no-op for other lines.
-void pam_commit_line_creep(const mjModel* m, mjData* d, int actuator_id, double dt_s);
-// pam_length of this state, and for a creeping line its step committed as above, with the one
-// tension solve both need (a trial's step calls this).
+// pam_length of this state; for a creeping line also one physics step of dt_s of its state
+// under its tension now (exact for a tension held over the step), from the one tension solve
+// both need. A trial's step calls it once per muscle.
 double pam_length_committing_creep(const mjModel* m, mjData* d, int actuator_id, double dt_s);
 
 // E A [N] of the actuator's line; 0 for an inextensible one.

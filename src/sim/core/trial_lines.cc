@@ -15,7 +15,7 @@ namespace {
 
 // Extensible lines (muscles.<m>.line_diameter_mm): each line's length so far is its length
 // at the start, under the start's tension F0. A creeping line (line_creep g > 0) has held F0
-// long before the trial (its creep state q = F0, gauge_line_creep in pam_callback.h), so it
+// long before the trial (its creep state q = F0, pam_start_line_creep in pam_callback.h), so it
 // stretches by (1 + g) F0 / (E A) per unit length there; its unstretched length is
 // L / (1 + (1 + g) F0 / (E A)), so the start state stays as calibrated. The creep states
 // take d->userdata from `creep_index` on, one per creeping line.
