@@ -58,7 +58,7 @@ std::string bands_csv(const Bands& b) {
     for (bool rmse : {false, true}) {
       const BandStats s = cell_stats(b, c, rmse);
       const std::optional<ErrorPct>& paper = b.runs.paper[c];
-      out << b.runs.cells[c] << ',' << (rmse ? "rmse" : "max_error") << ',' << s.n << ','
+      out << csv_text(b.runs.cells[c]) << ',' << (rmse ? "rmse" : "max_error") << ',' << s.n << ','
           << csv_number(s.n ? s.median : NAN) << ',' << csv_number(s.n ? s.p5 : NAN) << ','
           << csv_number(s.n ? s.p95 : NAN) << ',' << csv_number(s.n ? s.min : NAN) << ','
           << csv_number(s.n ? s.max : NAN) << ','
@@ -73,7 +73,7 @@ std::string draws_csv(const Bands& b) {
   std::ostringstream out;
   out << "rig";
   for (const Bracket& k : b.brackets) out << ',' << k.key;
-  for (const std::string& cell : b.runs.cells) out << ',' << cell << " rmse_pct";
+  for (const std::string& cell : b.runs.cells) out << ',' << csv_text(cell + " rmse_pct");
   out << ",refused\n";
   for (std::size_t r = 0; r < b.draws.size(); ++r) {
     out << r;
@@ -125,7 +125,7 @@ std::string sensitivity_csv(const Sensitivity& s) {
   for (std::size_t c = 0; c < s.runs.cells.size(); ++c) {
     for (std::size_t b = 0; b < s.brackets.size(); ++b) {
       const Bracket& k = s.brackets[b];
-      out << s.runs.cells[c] << ',' << k.name << ',' << k.key << ',' << csv_number(k.from) << ','
+      out << csv_text(s.runs.cells[c]) << ',' << k.name << ',' << k.key << ',' << csv_number(k.from) << ','
           << csv_number(k.to) << ',' << csv_number(e[2 * b + 1][c].rmse_pct) << ','
           << csv_number(e[2 * b + 2][c].rmse_pct) << ',' << csv_number(s.swing(b, c)) << ','
           << csv_number(e[0][c].rmse_pct) << '\n';
