@@ -16,6 +16,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import tomllib
 
 def loop(feedback, sense, dead_ms, lag_ms, band_kpa, conductance):
     """The --set overrides of one regulator: its loop, dead time, valve lag, band, and the
@@ -27,6 +28,14 @@ def loop(feedback, sense, dead_ms, lag_ms, band_kpa, conductance):
             f"valve.exhaust_sonic_conductance_dm3_per_s_bar={conductance}"]
 
 
+def bracket_end(end, feedback, sense):
+    """One end of models/pams/regulator_bracket.toml as --set overrides, its loop as given."""
+    with open("models/pams/regulator_bracket.toml", "rb") as f:
+        keys = tomllib.load(f)[end]
+    keys.update({"valve.feedback": feedback, "valve.sense": sense})
+    return [f'{k}="{v}"' if isinstance(v, str) else f"{k}={v}" for k, v in keys.items()]
+
+
 # (label, overrides); the fast / slow ends' bands are pneumatics.toml's derivation; the
 # shipped regulator (since issue 25) is the slow end with its loop delayed at the outlet
 ROWS = [
@@ -35,9 +44,10 @@ ROWS = [
     ("loop before issue 25, dead time 1000 ms", loop("instant", "chamber", 1000, 10, 20, 1.0)),
     ("old bracket fastest (2 / 5 / 10 kPa)", loop("instant", "chamber", 2, 5, 10, 1.0)),
     ("old bracket slowest (10 / 20 / 50 kPa)", loop("instant", "chamber", 10, 20, 50, 1.0)),
-    ("fast end, ITV2000 class, instant loop", loop("instant", "chamber", 2, 5, 250, 1.0)),
-    ("fast end, ITV2000 class, delayed loop at the outlet", loop("delayed", "outlet", 2, 5, 250, 1.0)),
-    ("slow end, ITV1000 class, instant loop", loop("instant", "chamber", 10, 20, 380, 0.35)),
+    ("fast end, ITV2000 class, instant loop", bracket_end("fast", "instant", "chamber")),
+    ("fast end, ITV2000 class, delayed loop at the outlet",
+     bracket_end("fast", "delayed", "outlet")),
+    ("slow end, ITV1000 class, instant loop", bracket_end("slow", "instant", "chamber")),
     ("slow end, ITV1000 class, delayed loop at the outlet (shipped)", []),
     ("delayed loop at the outlet, the old 20 kPa band", loop("delayed", "outlet", 5, 10, 20, 1.0)),
     ("delayed loop at the outlet, dead time 1000 ms, band 250 kPa",

@@ -27,7 +27,9 @@ def test_every_registered_environment_passes_the_checker():
                            ("pamsim/Landing-v0", {"duration_s": 0.3}),
                            ("pamsim/Hopping-v0", {"duration_s": 0.3}),
                            ("pamsim/DropMass-FastValve-v0", {}),
-                           ("pamsim/Reaching-FastValve-v0", {})):
+                           ("pamsim/Reaching-FastValve-v0", {}),
+                           ("pamsim/DropMass-SlowValve-v0", {}),
+                           ("pamsim/Reaching-SlowValve-v0", {})):
         env = gymnasium.make(env_id, **kwargs)
         check_env(env.unwrapped, skip_render_check=True)
         env.close()
@@ -141,7 +143,7 @@ def test_gymnasiums_sync_and_async_vector_envs_run_it_alike():
 
 
 def test_a_slide_joints_scenario_observes_and_rewards_in_mm():
-    from pamsim.envs.drop_mass import data_dir
+    from pamsim.envs.data import data_dir
 
     scenario = str(data_dir() / "scenarios" / "pulley_sine_5kg.toml")
     env = make(scenario=scenario, observation="privileged", randomize=False, duration_s=0.3)
@@ -186,7 +188,7 @@ def test_reaching_observes_its_target_ramp_and_rewards_the_tracking_error():
 
 
 def test_a_scenario_env_rewards_its_summary_metrics_at_the_end():
-    from pamsim.envs.pam_trial_env import data_dir
+    from pamsim.envs.data import data_dir
 
     scenario = str(data_dir() / "scenarios" / "drop_mass.toml")
     env = gymnasium.make("pamsim/Scenario-v0", scenario=scenario, duration_s=1.5,
@@ -246,3 +248,31 @@ def test_the_fast_valve_variant_fills_the_chambers_faster():
 
     # the ITV2000 class (2 ms dead time, C = 1) against the shipped ITV1000 (10 ms, C = 0.35)
     assert pressures("pamsim/DropMass-FastValve-v0") > pressures("pamsim/DropMass-v0") + 0.01
+
+
+def test_the_slow_valve_variant_is_the_shipped_regulator():
+    """The bracket file's slow end and pneumatics.toml's [regulator] are one regulator: the
+    same seed and actions give the same episode bytes."""
+    rng = np.random.default_rng(5)
+    actions = rng.uniform(0.0, 0.8, size=(90, 2)).astype(np.float32)
+
+    def run(env_id):
+        env = gymnasium.make(env_id, duration_s=0.9)   # the drop within it
+        obs, _ = env.reset(seed=4)
+        trace = [obs.tobytes()]
+        for action in actions:
+            obs, reward, terminated, truncated, _ = env.step(action)
+            trace.append(obs.tobytes() + np.float64(reward).tobytes())
+            if terminated or truncated:
+                break
+        return b"".join(trace)
+
+    assert run("pamsim/DropMass-SlowValve-v0") == run("pamsim/DropMass-v0")
+    assert run("pamsim/DropMass-FastValve-v0") != run("pamsim/DropMass-v0")
+
+
+def test_the_bracket_refuses_an_end_it_does_not_have():
+    from pamsim.envs.data import regulator_bracket
+
+    with pytest.raises(ValueError, match="no end 'medium'"):
+        regulator_bracket("medium")

@@ -54,7 +54,8 @@ check "$work/venv2"
 (cd "$work" && "$work/venv/bin/python" -W ignore "$source_dir/examples/learn_reflex.py" \
    --generations 1 --out "$work/learn_reflex.csv" | tail -4)
 "$work/venv/bin/ruff" check --config "$source_dir/pyproject.toml" "$source_dir/python" \
-  "$source_dir/examples/learn_reflex.py" "$source_dir/bench/env_throughput.py"
+  "$source_dir/examples/learn_reflex.py" "$source_dir/examples/drop_mass_eval.py" \
+  "$source_dir/examples/ppo_drop_mass.py" "$source_dir/bench/env_throughput.py"
 (cd "$work" && "$work/venv/bin/mypy" --config-file "$source_dir/pyproject.toml" -p pamsim &&
  "$work/venv/bin/python" -m mypy.stubtest --mypy-config-file "$source_dir/pyproject.toml" \
    --allowlist "$source_dir/python/stubtest_allowlist.txt" pamsim._pamsim)

@@ -11,8 +11,10 @@ paper with the agent as the arm's controller (``drop_mass.DropMassEnv``);
 (``reaching.ReachingEnv``), and ``pamsim/Reaching-Noisy-v0``; ``pamsim/Scenario-v0``: any
 scenario file rewarded by its summary's metrics, and ``pamsim/Landing-v0``: the PAM leg's
 landing, ``pamsim/Hopping-v0`` its hopping (``scenario.ScenarioEnv``);
-``-FastValve-v0`` variants of DropMass and Reaching with the regulator bracket's fast end
-(ITV2000 class; the shipped scenarios are its slow end). Vectorised by
+``-FastValve-v0`` and ``-SlowValve-v0`` variants of DropMass and Reaching at the pressure
+regulator bracket's ends (models/pams/regulator_bracket.toml: the ITV2000 class and the
+ITV1000 class; the shipped scenarios run the slow end, so ``-SlowValve-v0`` equals the plain
+id episode for episode and names the choice). Vectorised by
 gymnasium (``make_vec(..., vectorization_mode="sync" | "async")``) or on threads in one
 process (``"vector_entry_point"``: ``vector.ThreadedVectorEnv``).
 """
@@ -20,6 +22,8 @@ process (``"vector_entry_point"``: ``vector.ThreadedVectorEnv``).
 from __future__ import annotations
 
 from typing import Any
+
+from .data import regulator_bracket
 
 __all__ = ["DropMassEnv", "ReachingEnv", "ScenarioEnv", "ThreadedVectorEnv", "register_envs"]
 
@@ -45,12 +49,6 @@ def __getattr__(name: str) -> Any:
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-# the regulator bracket's fast end, ITV2000 class (models/pams/pneumatics.toml)
-FAST_VALVE = {"valve.supply_sonic_conductance_dm3_per_s_bar": 1.0,
-              "valve.exhaust_sonic_conductance_dm3_per_s_bar": 1.0, "valve.dead_time_ms": 2.0,
-              "valve.valve_time_constant_ms": 5.0, "valve.proportional_band_kPa": 250.0}
-
-
 def register_envs() -> None:
     """Registers the environments with gymnasium (pamsim's import does it when it can)."""
     import gymnasium
@@ -71,9 +69,10 @@ def register_envs() -> None:
     gymnasium.register("pamsim/Scenario-v0", entry_point="pamsim.envs.scenario:ScenarioEnv")
     gymnasium.register("pamsim/Landing-v0", entry_point="pamsim.envs.scenario:landing")
     gymnasium.register("pamsim/Hopping-v0", entry_point="pamsim.envs.scenario:hopping")
-    # the regulator bracket's fast end (ITV2000 class; the shipped scenarios are its slow
-    # end, ITV1000 class: models/pams/pneumatics.toml)
-    gymnasium.register("pamsim/DropMass-FastValve-v0", entry_point=entry,
-                       vector_entry_point=vector, kwargs={"overrides": FAST_VALVE})
-    gymnasium.register("pamsim/Reaching-FastValve-v0", entry_point=reaching,
-                       vector_entry_point=reaching_vector, kwargs={"overrides": FAST_VALVE})
+    # the pressure regulator bracket's ends (models/pams/regulator_bracket.toml)
+    for end, name in (("fast", "FastValve"), ("slow", "SlowValve")):
+        valve = {"overrides": regulator_bracket(end)}
+        gymnasium.register(f"pamsim/DropMass-{name}-v0", entry_point=entry,
+                           vector_entry_point=vector, kwargs=valve)
+        gymnasium.register(f"pamsim/Reaching-{name}-v0", entry_point=reaching,
+                           vector_entry_point=reaching_vector, kwargs=valve)

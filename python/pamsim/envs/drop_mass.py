@@ -30,7 +30,8 @@ from typing import Any
 
 import numpy as np
 
-from .pam_trial_env import MEASURED, PamTrialEnv, data_dir, joint_state
+from .data import data_dir
+from .pam_trial_env import MEASURED, PamTrialEnv, joint_state
 
 __all__ = ["DropMassEnv", "MEASURED"]
 

@@ -31,7 +31,6 @@ overlays, drawn offscreen.
 from __future__ import annotations
 
 import warnings
-from pathlib import Path
 from typing import Any
 
 import gymnasium
@@ -45,11 +44,6 @@ Obs = npt.NDArray[np.float64]
 Act = npt.NDArray[np.float32]
 
 MEASURED = ("p_meas_MPa", "force_meas_N", "length_est_mm", "velocity_est_mm_s")
-
-
-def data_dir() -> Path:
-    """The folder holding models/ and scenarios/ (installed with the package)."""
-    return Path(__file__).resolve().parent.parent / "data"
 
 
 def joint_state(observation: dict[str, Any]) -> tuple[float, float]:

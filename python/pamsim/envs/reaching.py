@@ -21,7 +21,8 @@ from typing import Any
 
 import numpy as np
 
-from .pam_trial_env import PamTrialEnv, data_dir, joint_state
+from .data import data_dir
+from .pam_trial_env import PamTrialEnv, joint_state
 
 __all__ = ["ReachingEnv"]
 

@@ -20,7 +20,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from .pam_trial_env import PamTrialEnv, data_dir
+from .data import data_dir
+from .pam_trial_env import PamTrialEnv
 
 __all__ = ["ScenarioEnv", "hopping", "landing"]
 
