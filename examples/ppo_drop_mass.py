@@ -10,7 +10,7 @@ sets both valve commands each control period; PPO's Gaussian actions are clipped
 valve range [0, 0.7] MPa by stable-baselines3 before the environment sees them.
 
     python3 -m venv .venv-rl && .venv-rl/bin/pip install . stable-baselines3
-    .venv-rl/bin/python examples/ppo_drop_mass.py [--timesteps 200000] [--save ppo.zip]
+    .venv-rl/bin/python examples/ppo_drop_mass.py [--timesteps 150000] [--save ppo.zip]
 """
 
 from __future__ import annotations
@@ -60,7 +60,7 @@ class TrainingSeeds(gymnasium.Wrapper):
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--timesteps", type=int, default=200_000, help="PPO's training steps")
+    parser.add_argument("--timesteps", type=int, default=150_000, help="PPO's training steps")
     parser.add_argument("--save", help="where to save the trained policy (.zip)")
     args = parser.parse_args()
     train = TrainingSeeds(ScaledObservation(gymnasium.make("pamsim/DropMass-v0")))
