@@ -1,6 +1,7 @@
 // report.cc: `pamsim report DB [--metric NAME] [--out DIR]`: reads a sweep database and
 // writes, in DIR (default: the database's folder):
 //   points.csv                per point: axis values, mean/std/min/max of every metric
+//   table.md                  the points as a Markdown table (--table: its metrics)
 //   heatmap_mistrip_rate.png, heatmap_peak_drop_deg.png, heatmap_recovery_time_s.png
 //                             (and heatmap_<NAME>.png) over the first two axes
 //   best.toml                 the best point (report.h's criterion on NAME, default
@@ -38,10 +39,11 @@ struct ReportOptions {
   bool no_plot = false;
   std::string plot_format = "png";
   bool all_columns = false;
+  std::vector<std::string> table;   // table.md's metrics (empty: default_table_metrics)
 };
 
 const std::vector<std::string> kSweepReportOutputs = [] {
-  std::vector<std::string> names = {"points.csv", "best.toml", kProvenanceFile};
+  std::vector<std::string> names = {"points.csv", "table.md", "best.toml", kProvenanceFile};
   for (const std::string& plot : plot_file_names({"heatmap_*.png"})) names.push_back(plot);
   return names;
 }();
@@ -158,10 +160,15 @@ void report(const ReportOptions& opt) {
   const std::string started_utc = utc_timestamp();
   const ResultsDb db = ResultsDb::open_existing(opt.db);
   const SweepSummary sweep = summarize_sweep(db);
+  std::string names;
+  for (const auto& n : sweep.metric_names) names += (names.empty() ? "" : ", ") + n;
   if (sweep.metric_index(opt.metric) < 0) {
-    std::string names;
-    for (const auto& n : sweep.metric_names) names += (names.empty() ? "" : ", ") + n;
     throw InputError("--metric " + opt.metric + ": not a sweep metric (one of " + names + ")");
+  }
+  for (const std::string& metric : opt.table) {
+    if (sweep.metric_index(metric) < 0) {
+      throw InputError("--table " + metric + ": not a sweep metric (one of " + names + ")");
+    }
   }
   const std::string out = report_folder(opt);
   if (!opt.force) refuse_earlier_outputs(out, kSweepReportOutputs);
@@ -176,10 +183,13 @@ void report(const ReportOptions& opt) {
               << " diverged or failed)\n";
     write_file_atomically(staged.path("points.csv"),
                           points_csv(sweep, opt.metric, opt.all_columns));
+    const std::vector<std::string> table =
+        opt.table.empty() ? default_table_metrics(sweep, opt.metric) : opt.table;
+    write_file_atomically(staged.path("table.md"), points_markdown(sweep, table));
 
     const PointSummary* best = report_best_point(opt, sweep, staged, out);
     if (!write_heat_maps(opt, sweep, best, staged, plots)) return;
-    std::cout << "outputs: " << out << "/{points.csv,heatmap_*.png" << (best ? ",best.toml" : "")
+    std::cout << "outputs: " << out << "/{points.csv,table.md,heatmap_*.png" << (best ? ",best.toml" : "")
               << "}\n";
   });
   staged.write([&] { write_report_provenance(opt, staged, started, started_utc); });
@@ -203,6 +213,10 @@ void add_report_command(CLI::App& app) {
                 "points.csv with mean, std, min, max of every metric (default: mean, SD and 95 % "
                 "CI of the headline metrics)");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no heat maps or figures (gnuplot not needed)");
+  cmd->add_option("--table", opt->table,
+                  "Metrics of table.md, comma-separated (default: the headline metrics the sweep "
+                  "has, and --metric)")
+      ->delimiter(',');
   add_plot_format_option(cmd, &opt->plot_format);
 }
 

@@ -132,7 +132,18 @@ std::string metric_label(const std::string& name) {
 std::vector<std::string> point_overrides(const SweepSummary& sweep, const PointSummary& point) {
   std::vector<std::string> overrides = sweep.fixed;
   for (std::size_t a = 0; a < sweep.axis_keys.size(); ++a) {
-    overrides.push_back(sweep.axis_keys[a] + "=" + point.axis_values[a]);
+    const std::vector<std::string>& levels = sweep.axis_levels[a];
+    const auto level = std::find(levels.begin(), levels.end(), point.axis_values[a]);
+    if (sweep.axis_cases[a].empty()) {
+      overrides.push_back(sweep.axis_keys[a] + "=" + point.axis_values[a]);
+      continue;
+    }
+    if (level == levels.end()) {
+      throw InputError(sweep.db_path + ": case " + point.axis_values[a] + " of axis " +
+                       sweep.axis_keys[a] + " is not in the sweep's definition");
+    }
+    const auto& set = sweep.axis_cases[a][static_cast<std::size_t>(level - levels.begin())];
+    overrides.insert(overrides.end(), set.begin(), set.end());
   }
   return overrides;
 }
@@ -292,4 +303,41 @@ HeatMap sweep_heat_map(const SweepSummary& sweep, const std::string& metric,
   grid_cells(sweep, metric, mark, &map);
   return map;
 }
+std::vector<std::string> default_table_metrics(const SweepSummary& sweep,
+                                               const std::string& metric) {
+  std::vector<std::string> names;
+  for (const std::string& name : kPointsCsvMetrics) {
+    if (sweep.metric_index(name) >= 0) names.push_back(name);
+  }
+  if (std::find(names.begin(), names.end(), metric) == names.end()) names.push_back(metric);
+  return names;
+}
+
+std::string points_markdown(const SweepSummary& sweep, const std::vector<std::string>& metrics) {
+  std::vector<int> shown;
+  for (const std::string& name : metrics) {
+    shown.push_back(sweep.metric_index(name));
+    if (shown.back() < 0) throw InputError("--table: the sweep has no metric " + name);
+  }
+  std::string out = "|", rule = "|";
+  for (const auto& key : sweep.axis_keys) out += " " + key + " |";
+  out += " ok / trials |";
+  for (const std::string& name : metrics) out += " " + metric_label(name) + " |";
+  for (std::size_t c = 0; c < sweep.axis_keys.size() + 1 + metrics.size(); ++c) rule += " --- |";
+  out += "\n" + rule + "\n";
+  char buf[96];
+  for (const PointSummary& p : sweep.points) {
+    out += "|";
+    for (const auto& v : p.axis_values) out += " " + unquoted(v) + " |";
+    out += " " + std::to_string(p.ok) + " / " + std::to_string(p.trials) + " |";
+    for (const int m : shown) {
+      const MetricStats& s = p.metrics[static_cast<std::size_t>(m)];
+      std::snprintf(buf, sizeof(buf), "%.4g [%.4g, %.4g]", s.mean, s.min, s.max);
+      out += s.count == 0 ? std::string(" - |") : " " + std::string(buf) + " |";
+    }
+    out += "\n";
+  }
+  return out;
+}
+
 }  // namespace pamsim

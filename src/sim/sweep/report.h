@@ -38,6 +38,8 @@ struct SweepSummary {
   std::vector<std::string> axis_keys;
   std::vector<bool> axis_log;
   std::vector<std::vector<std::string>> axis_levels;   // grid designs: each axis's values
+  // a case axis's sets ("key=value" per case, in its levels' order); empty for a key's axis
+  std::vector<std::vector<std::vector<std::string>>> axis_cases;
   std::vector<std::string> randomize_keys; // [[randomize]]: drawn per trial, a column each
   std::vector<std::string> metric_names;
   std::vector<PointSummary> points;        // stored points, in point order
@@ -77,6 +79,14 @@ inline const std::vector<std::string> kPointsCsvMetrics = {
     "retriggers_after_impact", "mass_retained", "length_est_rmse_pct"};
 std::string points_csv(const SweepSummary& sweep, const std::string& metric = "peak_drop_deg",
                        bool all_columns = false);
+
+// table.md: the points as a Markdown table a paper's table of conditions reads like: one row
+// per point (its axes' values: a case axis's case names), the seeds that ran ok of those
+// stored, and each of `metrics` as "mean [min, max]" over those seeds (4 significant
+// digits; "-" where none has it). Throws InputError naming a metric the sweep lacks.
+std::string points_markdown(const SweepSummary& sweep, const std::vector<std::string>& metrics);
+// The metrics table.md shows unless asked: kPointsCsvMetrics the sweep has, and `metric`.
+std::vector<std::string> default_table_metrics(const SweepSummary& sweep, const std::string& metric);
 
 // A heat map of `metric` (or "mistrip_rate") over the first two axes, with `best` (chosen
 // on `best_metric`) marked if not null; on a grid with more axes each cell averages the

@@ -10,6 +10,7 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 #include <toml++/toml.h>
@@ -135,9 +136,20 @@ const AxisValue& SweepDefinition::value(std::int64_t point, std::size_t axis) co
   return point_values[static_cast<std::size_t>(point) * axes.size() + axis];
 }
 
+std::vector<std::string> SweepAxis::overrides_of(const AxisValue& v) const {
+  if (!is_cases()) return {key + "=" + v.toml()};
+  for (std::size_t c = 0; c < values.size(); ++c) {
+    if (values[c].text == v.text) return case_sets[c];
+  }
+  throw std::logic_error("axis " + key + " has no case " + v.text);
+}
+
 std::vector<std::string> SweepDefinition::overrides(std::int64_t point) const {
   std::vector<std::string> out = fixed;
-  for (std::size_t a = 0; a < axes.size(); ++a) out.push_back(axes[a].key + "=" + value(point, a).toml());
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    const std::vector<std::string> set = axes[a].overrides_of(value(point, a));
+    out.insert(out.end(), set.begin(), set.end());
+  }
   return out;
 }
 
@@ -163,6 +175,7 @@ std::string SweepDefinition::canonical_json() const {
     nlohmann::json values = nlohmann::json::array();
     for (const auto& v : a.values) values.push_back(v.toml());
     j["values"] = values;
+    if (a.is_cases()) j["cases"] = a.case_sets;   // (absent on a key's axis, as before cases)
     axes_json.push_back(j);
   }
   nlohmann::json j = {{"base_scenario", base_text}, {"fixed", fixed},

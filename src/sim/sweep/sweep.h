@@ -12,6 +12,9 @@
 //   [[axis]]     key = "reflex.v_thr_mm_s", and either
 //                  values = [..]                       (grid only), or
 //                  from, to, count, scale = "linear"|"log"   (count for grid only)
+//                or a case axis (grid only): name = "regulator" (its column) and one or more
+//                  [[axis.case]] name = "ITV2000 class", set = { "valve.dead_time_ms" = 2.0 }
+//                  (named bundles of scenario keys; an empty set is the base scenario's)
 //   [[randomize]] key and a distribution drawn per trial (sim/scenario/randomize.h), e.g. a plant's field
 //   randomize_seed  seed of those draws, >= 0                                  default 1
 #pragma once
@@ -42,8 +45,14 @@ struct AxisValue {
 };
 
 struct SweepAxis {
-  std::string key;                  // scenario key, e.g. "reflex.v_thr_mm_s"
-  std::vector<AxisValue> values;    // grid levels (grid design)
+  std::string key;                  // scenario key, e.g. "reflex.v_thr_mm_s"; a case axis's name
+  std::vector<AxisValue> values;    // grid levels (grid design); a case axis's case names
+  // A case axis: case_sets[i] holds case i's "key=value" overrides in key order (values[i]
+  // its name).
+  std::vector<std::vector<std::string>> case_sets;
+  bool is_cases() const { return !case_sets.empty(); }
+  // The "key=value" overrides of the level `v`: key=v, or the case named v's set.
+  std::vector<std::string> overrides_of(const AxisValue& v) const;
   bool is_range = false;            // from/to given (random and lhs sample inside it)
   double from = 0, to = 0;
   bool log_scale = false;

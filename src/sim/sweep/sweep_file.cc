@@ -17,41 +17,13 @@
 #include "sim/core/metrics.h"
 #include "sim/core/trial_model.h"
 #include "sim/scenario/scenario_file.h"
+#include "sim/sweep/sweep_axis_file.h"
 
 namespace pamsim {
 namespace {
 
-// Where a problem is: "<file>: axis[<i>].<key>" and the like.
-struct Where {
-  const std::string& file;
-  std::string prefix;
-  [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
-    throw InputError(file + ": " + prefix + key + " " + problem);
-  }
-  void check(bool ok, const std::string& key, const std::string& problem) const {
-    if (!ok) fail(key, problem);
-  }
-};
-
-AxisValue axis_value(const toml::node& n, const Where& where, const std::string& key) {
-  AxisValue v;
-  if (n.is_integer()) {
-    v.kind = AxisValue::Kind::kInteger;
-    v.number = static_cast<double>(*n.value<std::int64_t>());
-  } else if (n.is_floating_point()) {
-    v.number = *n.value<double>();
-    where.check(std::isfinite(v.number), key, "must be finite, got " + format_value(v.number));
-  } else if (n.is_string()) {
-    v.kind = AxisValue::Kind::kString;
-    v.text = *n.value<std::string>();
-  } else if (n.is_boolean()) {
-    v.kind = AxisValue::Kind::kBool;
-    v.flag = *n.value<bool>();
-  } else {
-    where.fail(key, "must be a number, a string or a boolean");
-  }
-  return v;
-}
+using detail::axis_value;
+using detail::Where;
 
 double number_of(const toml::table& t, const char* key, const Where& where) {
   const toml::node* n = t.get(key);
@@ -107,11 +79,15 @@ void read_grid_levels(const toml::table& t, std::int64_t max_trials, const Where
 
 SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
                     std::int64_t max_trials, const std::string& file) {
+  if (t.contains("case") || t.contains("name")) {
+    return detail::read_case_axis(t, index, design, file);
+  }
   const Where where{file, "axis[" + std::to_string(index) + "]."};
   static const std::set<std::string> known = {"key", "values", "from", "to", "count", "scale"};
   for (const auto& [k, _] : t) {
     if (!known.count(std::string(k.str()))) {
-      where.fail(std::string(k.str()), "is not a sweep axis key (key, values, from, to, count, scale)");
+      where.fail(std::string(k.str()), "is not a sweep axis key (key, values, from, to, count, "
+                                        "scale; or name and [[axis.case]])");
     }
   }
   SweepAxis axis;
@@ -149,20 +125,6 @@ SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
   }
   read_grid_levels(t, max_trials, where, &axis);
   return axis;
-}
-
-// "a.b=value" for every leaf of [fixed].
-void flatten_fixed(const toml::table& t, const std::string& prefix, const std::string& file,
-                   std::vector<std::string>* out) {
-  const Where where{file, "fixed."};
-  for (const auto& [k, node] : t) {
-    const std::string key = prefix + std::string(k.str());
-    if (const toml::table* sub = node.as_table()) {
-      flatten_fixed(*sub, key + ".", file, out);
-    } else {
-      out->push_back(key + "=" + axis_value(node, where, key).toml());
-    }
-  }
 }
 
 // "point 3 (key = value, ...)", with the draws of seed index s when the sweep draws any
@@ -220,7 +182,7 @@ void read_base(ConfigReader& in, SweepDefinition* def) {
   if (const toml::node* fixed = in.raw("fixed")) {
     const toml::table* t = fixed->as_table();
     in.check(t != nullptr, "fixed", "must be a table of scenario keys");
-    flatten_fixed(*t, "", def->file, &def->fixed);
+    detail::flatten_keys(*t, "", Where{def->file, "fixed."}, &def->fixed);
   }
 }
 
@@ -242,14 +204,18 @@ void read_axes(ConfigReader& in, SweepDefinition* def) {
 // [[randomize]] and randomize_seed; a drawn key may be neither an axis nor fixed
 void read_randomize(ConfigReader& in, SweepDefinition* def) {
   read_randomizations(in, &def->randomize, &def->randomize_seed);
+  std::vector<std::string> drawn;
   for (const Randomization& r : def->randomize) {
+    drawn.push_back(r.key);
     for (const SweepAxis& a : def->axes) {
-      in.check(a.key != r.key, "randomize", "draws " + r.key + ", which is an axis too");
+      in.check(a.is_cases() || a.key != r.key, "randomize",
+               "draws " + r.key + ", which is an axis too");
     }
     for (const std::string& f : def->fixed) {
       in.check(f.rfind(r.key + "=", 0) != 0, "randomize", "draws " + r.key + ", which [fixed] sets too");
     }
   }
+  detail::check_axes_disjoint(def->axes, drawn, def->file);
 }
 
 // A grid's points x seeds within max_trials, the product checked factor by factor (it could
@@ -284,6 +250,14 @@ void check_points(SweepDefinition* def) {
     def->metric_names = names_of(bound);
   } catch (const InputError& e) {
     throw InputError(def->file + ": base scenario: " + e.what());
+  }
+  const auto& names = def->metric_names;
+  for (std::size_t a = 0; a < def->axes.size(); ++a) {
+    const std::string& key = def->axes[a].key;
+    if (def->axes[a].is_cases() && std::find(names.begin(), names.end(), key) != names.end()) {
+      throw InputError(def->file + ": axis[" + std::to_string(a) + "].name " + key +
+                       " is a metric's column");
+    }
   }
   def->base_seed = bound.seed;
   // every point with the draws of seed index 0, then point 0 with the others' draws

@@ -70,6 +70,8 @@ void read_definition(const ResultsDb& db, SweepSummary* out) {
       std::vector<std::string> levels = axis.at("values").get<std::vector<std::string>>();
       if (sweep.design == "grid") sweep.points_total *= static_cast<std::int64_t>(levels.size());
       sweep.axis_levels.push_back(std::move(levels));
+      sweep.axis_cases.push_back(
+          axis.value("cases", std::vector<std::vector<std::string>>{}));
     }
     for (const auto& r : def.value("randomize", nlohmann::json::array())) {
       sweep.randomize_keys.push_back(r.at("key").get<std::string>());

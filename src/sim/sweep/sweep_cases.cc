@@ -1,0 +1,97 @@
+// sweep_cases.cc: a sweep file's case axes (sweep.h): named bundles of scenario keys crossed
+// with the other axes, as a lab's table of conditions is ("ideal source", "ITV2000 class");
+// and the check that no two axes set one key.
+#include <cctype>
+#include <map>
+#include <set>
+
+#include "base/input_error.h"
+#include "sim/sweep/sweep_axis_file.h"
+
+namespace pamsim::detail {
+namespace {
+
+// Reserved columns of the trials table (results_db.cc) that a case axis's name would shadow.
+const std::set<std::string> kReservedNames = {"trial", "point", "status", "message", "seed"};
+
+bool plain_name(const std::string& name) {
+  if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
+  for (const char c : name) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  }
+  return true;
+}
+
+// One [[axis.case]]: its name (unique in the axis) and its set of scenario keys.
+void read_case(const toml::node& node, std::size_t c, const Where& axis, SweepAxis* out) {
+  const Where where{axis.file, axis.prefix + "case[" + std::to_string(c) + "]."};
+  const toml::table* t = node.as_table();
+  axis.check(t != nullptr, "case", "must be [[axis.case]] tables");
+  for (const auto& [k, _] : *t) {
+    const std::string key(k.str());
+    where.check(key == "name" || key == "set", key, "is not a case key (name, set)");
+  }
+  const auto name = (*t)["name"].value<std::string>();
+  where.check(name && !name->empty(), "name", "is required (a non-empty string)");
+  for (const AxisValue& v : out->values) {
+    where.check(v.text != *name, "name", "\"" + *name + "\" names another case of this axis");
+  }
+  std::vector<std::string> set;
+  if (const toml::node* s = t->get("set")) {
+    const toml::table* keys = s->as_table();
+    where.check(keys != nullptr, "set", "must be a table of scenario keys");
+    flatten_keys(*keys, "", Where{axis.file, where.prefix + "set."}, &set);
+  }
+  AxisValue v;
+  v.kind = AxisValue::Kind::kString;
+  v.text = *name;
+  out->values.push_back(v);
+  out->case_sets.push_back(std::move(set));
+}
+
+}  // namespace
+
+SweepAxis read_case_axis(const toml::table& t, std::size_t index, SweepDesign design,
+                         const std::string& file) {
+  const Where where{file, "axis[" + std::to_string(index) + "]."};
+  for (const auto& [k, _] : t) {
+    const std::string key(k.str());
+    where.check(key == "name" || key == "case", key,
+                "does not go with [[axis.case]] (a case axis has name and its cases)");
+  }
+  where.check(design == SweepDesign::kGrid, "case",
+              "is for grid designs; random and lhs sample ranges");
+  SweepAxis axis;
+  const auto name = t["name"].value<std::string>();
+  where.check(name.has_value(), "name", "is required: the case axis's column, e.g. \"regulator\"");
+  where.check(plain_name(*name), "name",
+              "must be letters, digits and _ (a column name), got \"" + *name + "\"");
+  where.check(!kReservedNames.count(*name), "name", "\"" + *name + "\" is a column pamsim keeps");
+  axis.key = *name;
+  const toml::array* cases = t["case"].as_array();
+  where.check(cases != nullptr && !cases->empty(), "case", "must be one or more [[axis.case]]");
+  for (std::size_t c = 0; c < cases->size(); ++c) read_case((*cases)[c], c, where, &axis);
+  return axis;
+}
+
+void check_axes_disjoint(const std::vector<SweepAxis>& axes, const std::vector<std::string>& drawn,
+                         const std::string& file) {
+  std::map<std::string, std::string> setter;   // scenario key -> what sets it
+  const auto claim = [&](const std::string& key, const std::string& who) {
+    const auto [at, fresh] = setter.emplace(key, who);
+    if (!fresh && at->second != who) {
+      throw InputError(file + ": " + who + " sets " + key + ", which " + at->second +
+                       " sets too");
+    }
+  };
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    const std::string who = "axis[" + std::to_string(a) + "]";
+    if (!axes[a].is_cases()) claim(axes[a].key, who);
+    for (const auto& set : axes[a].case_sets) {
+      for (const std::string& assignment : set) claim(override_key(assignment), who);
+    }
+  }
+  for (const std::string& key : drawn) claim(key, "randomize");
+}
+
+}  // namespace pamsim::detail

@@ -1,0 +1,165 @@
+// sweep_cases_test.cc: a sweep's case axes (named bundles of scenario keys): the points they
+// cross, the overrides each point gets, a case's trials equal to the same keys swept as an
+// axis (the independent truth: a case is only a name for its keys), the report's table and
+// best setting, and a bad case axis refused in one line with no database.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli_util.h"
+#include "sim/sweep/sweep.h"
+#include "sim/test_paths.h"
+#include "sweep_process.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using pamsim_test::fresh_dir;
+using pamsim_test::line_count;
+using pamsim_test::lines_of;
+using pamsim_test::read_file;
+using pamsim_test::run_pamsim;
+using pamsim_test::short_sweep;
+using pamsim_test::write_text;
+
+const std::string kGainCases =
+    "[[axis]]\nname = \"gain\"\n"
+    "[[axis.case]]\nname = \"Table II\"\n"
+    "[[axis.case]]\nname = \"high, slow\"\n"
+    "set = { \"reflex.k_MPa_s_per_mm\" = 0.004, reflex.v_thr_mm_s = 90.0 }\n";
+
+pamsim::SweepDefinition cases_sweep(const fs::path& dir, const std::string& body) {
+  const fs::path file = dir / "cases.toml";
+  write_text(file, short_sweep(body));
+  return pamsim::load_sweep(file.string());
+}
+
+TEST(SweepCasesTest, CasesCrossTheOtherAxesAndSetTheirKeys) {
+  const fs::path dir = fresh_dir("sweep_cases_unit");
+  const pamsim::SweepDefinition s = cases_sweep(
+      dir, "seeds = 2\n" + kGainCases + "[[axis]]\nkey = \"drop.mass_kg\"\nvalues = [0.1, 0.2]\n");
+  ASSERT_EQ(s.points(), 4);
+  EXPECT_EQ(s.value(0, 0).text, "Table II");
+  EXPECT_EQ(s.value(3, 0).text, "high, slow");
+  // the base's case sets nothing: the fixed keys, then the mass
+  const std::vector<std::string> base = s.overrides(1);
+  EXPECT_EQ(base.back(), "drop.mass_kg=0.2");
+  EXPECT_EQ(base.size(), s.fixed.size() + 1);
+  // the other case's keys, in key order (a quoted dotted key reads as a nested one)
+  const std::vector<std::string> high = s.overrides(2);
+  ASSERT_EQ(high.size(), s.fixed.size() + 3);
+  EXPECT_EQ(high[s.fixed.size()], "reflex.v_thr_mm_s=90.0");
+  EXPECT_EQ(high[s.fixed.size() + 1], "reflex.k_MPa_s_per_mm=0.004");
+  EXPECT_EQ(high.back(), "drop.mass_kg=0.1");
+  EXPECT_NE(s.canonical_json().find("\"cases\""), std::string::npos);
+  // a sweep with no case axis keeps the definition it had before cases existed
+  const pamsim::SweepDefinition plain =
+      cases_sweep(dir, "[[axis]]\nkey = \"drop.mass_kg\"\nvalues = [0.1]\n");
+  EXPECT_EQ(plain.canonical_json().find("cases"), std::string::npos);
+}
+
+// A case is a name for its keys: its trials are those of the same keys swept as an axis.
+TEST(SweepCasesTest, ACasesTrialsAreThoseOfItsKeysAsAnAxis) {
+  const fs::path dir = fresh_dir("sweep_cases_truth");
+  write_text(dir / "cases.toml",
+             short_sweep("seeds = 2\n[[axis]]\nname = \"threshold\"\n"
+                         "[[axis.case]]\nname = \"low\"\nset = { reflex.v_thr_mm_s = 40.0 }\n"
+                         "[[axis.case]]\nname = \"high\"\nset = { reflex.v_thr_mm_s = 100.0 }\n"));
+  write_text(dir / "axis.toml", short_sweep("seeds = 2\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\n"
+                                            "values = [40.0, 100.0]\n"));
+  for (const char* name : {"cases", "axis"}) {
+    const std::string db = (dir / (std::string(name) + ".db")).string();
+    const auto r = run_pamsim("sweep " + (dir / (std::string(name) + ".toml")).string() +
+                              " --db " + db);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    ASSERT_EQ(run_pamsim("export " + db + " -o " + (dir / name).string() + ".csv").exit_code, 0);
+  }
+  const auto cases = lines_of(read_file(dir / "cases.csv"));
+  const auto axis = lines_of(read_file(dir / "axis.csv"));
+  ASSERT_EQ(cases.size(), 5u);
+  ASSERT_EQ(axis.size(), cases.size());
+  // trial,point,seed_index,seed,<the axis's column>,status,...: equal but for that column
+  const auto without_axis = [](const std::string& line) {
+    std::size_t at = 0;
+    for (int comma = 0; comma < 4; ++comma) at = line.find(',', at) + 1;
+    return line.substr(0, at) + line.substr(line.find(',', at));
+  };
+  for (std::size_t i = 1; i < cases.size(); ++i) EXPECT_EQ(without_axis(cases[i]), without_axis(axis[i])) << i;
+  EXPECT_NE(cases[1].find("low"), std::string::npos) << cases[1];
+}
+
+TEST(SweepCasesTest, TheReportTablesTheCasesAndItsBestSettingCarriesTheirKeys) {
+  const fs::path dir = fresh_dir("sweep_cases_report");
+  write_text(dir / "s.toml", short_sweep("[[axis]]\nname = \"load\"\n[[axis.case]]\n"
+                                         "name = \"Table II\"\n[[axis.case]]\n"
+                                         "name = \"light, high gain\"\n[axis.case.set]\n"
+                                         "drop.mass_kg = 0.02\nreflex.k_MPa_s_per_mm = 0.004\n"));
+  const std::string db = (dir / "s.db").string();
+  ASSERT_EQ(run_pamsim("sweep " + (dir / "s.toml").string() + " --db " + db).exit_code, 0);
+  const fs::path out = dir / "report";
+  const auto r = run_pamsim("report " + db + " --out " + out.string() +
+                            " --table peak_drop_deg,mass_retained");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto table = lines_of(read_file(out / "table.md"));
+  ASSERT_EQ(table.size(), 4u);
+  EXPECT_EQ(table[0], "| load | ok / trials | peak drop [deg] | mass retained |");
+  EXPECT_EQ(table[3].rfind("| light, high gain | 1 / 1 | ", 0), 0u) << table[3];
+  // a tenth of the mass drops the arm less: the best point, whose scenario has the case's keys
+  const std::string best = read_file(out / "best.toml");
+  EXPECT_NE(best.find("load = 'light, high gain'"), std::string::npos) << best;
+  EXPECT_NE(best.find("mass_kg = 0.02"), std::string::npos) << best;
+  EXPECT_NE(best.find("k_MPa_s_per_mm = 0.004"), std::string::npos) << best;
+  const auto bad = run_pamsim("report " + db + " --table nope --out " + (dir / "bad").string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--table nope: not a sweep metric"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir / "bad"));
+}
+
+TEST(SweepCasesTest, BadCaseAxesFailWithOneLineAndNoDatabase) {
+  const std::string one = "[[axis.case]]\nname = \"a\"\n";
+  struct Bad {
+    const char* name;
+    std::string body;
+    const char* message;
+  };
+  const std::vector<Bad> bad = {
+      {"no_cases", "[[axis]]\nname = \"c\"\n", "axis[0].case must be one or more"},
+      {"no_name", "[[axis]]\n" + one, "axis[0].name is required"},
+      {"odd_name", "[[axis]]\nname = \"a b\"\n" + one, "must be letters, digits and _"},
+      {"reserved_name", "[[axis]]\nname = \"status\"\n" + one, "a column pamsim keeps"},
+      {"metric_name", "[[axis]]\nname = \"peak_drop_deg\"\n" + one, "is a metric's column"},
+      {"with_values", "[[axis]]\nname = \"c\"\nvalues = [1.0]\n" + one, "axis[0].values does not go"},
+      {"random", "design = \"random\"\nsamples = 2\n[[axis]]\nname = \"c\"\n" + one,
+       "is for grid designs"},
+      {"case_without_name", "[[axis]]\nname = \"c\"\n[[axis.case]]\nset = {}\n",
+       "case[0].name is required"},
+      {"same_name", "[[axis]]\nname = \"c\"\n" + one + one, "names another case"},
+      {"set_not_table", "[[axis]]\nname = \"c\"\n[[axis.case]]\nname = \"a\"\nset = 3\n",
+       "case[0].set must be a table"},
+      {"unknown_case_key", "[[axis]]\nname = \"c\"\n[[axis.case]]\nname = \"a\"\nsett = {}\n",
+       "case[0].sett is not a case key"},
+      {"bad_value", "[[axis]]\nname = \"c\"\n[[axis.case]]\nname = \"a\"\n"
+                    "set = { reflex.v_thr_mm_s = nan }\n", "must be finite"},
+      {"two_axes_one_key", "[[axis]]\nname = \"c\"\n[[axis.case]]\nname = \"a\"\n"
+                           "set = { reflex.v_thr_mm_s = 50.0 }\n"
+                           "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [60.0]\n",
+       "axis[1] sets reflex.v_thr_mm_s, which axis[0] sets too"},
+      {"unknown_scenario_key", "[[axis]]\nname = \"c\"\n[[axis.case]]\nname = \"a\"\n"
+                               "set = { reflex.v_thr = 50.0 }\n", "point 0"},
+  };
+  const fs::path dir = fresh_dir("sweep_cases_bad");
+  for (const Bad& c : bad) {
+    const fs::path file = dir / (std::string(c.name) + ".toml");
+    write_text(file, short_sweep(c.body));
+    const fs::path out = dir / (std::string(c.name) + "_out");
+    const auto r = run_pamsim("sweep " + file.string() + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << c.name << ": " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.name << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out / "sweep.db")) << c.name;
+  }
+}
+
+}  // namespace
