@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
-"""findings.py: reruns the measurements behind README's "Findings" tables (issue 12): each
-reflex of the falling-mass experiment over 20 seeds, on the physical plant across the
-regulator bracket (Fig. 9 re-examined), with each of the reflex's gates switched off, and on
-the ideal plant for comparison. Every row is one `pamsim run --trials 20` with `--set`
-overrides, so any row can be rerun by hand. Prints Markdown; writes it to OUT too.
+"""findings.py: reruns the lines behind README's "Findings" that are single runs: the
+passive arm, the length estimate's error, and the ideal plant's reflexes, each over 20 seeds
+(`pamsim run --trials 20` with `--set` overrides, so any line can be rerun by hand). Prints
+Markdown; writes it to OUT too. The tables are sweep files with case axes:
+scenarios/sweep_findings_regulator.toml (the regulator bracket x the two reflexes) and
+scenarios/sweep_findings_gates.toml (each gate off, on two regulators), tabled by
+`pamsim report DB --table peak_drop_deg,mass_retained,retriggers_after_impact,mistrips`.
 
     python3 scripts/findings.py [--pamsim build/src/sim/pamsim] [--out renders/findings]
 """
@@ -15,38 +17,6 @@ import sys
 import tempfile
 
 TRIALS = 20
-
-# (label, overrides) for the regulator bracket of models/pams/pneumatics.toml [regulator]:
-# the shipped ITV1000-class loop (issue 25), the ITV2000 class, the loop before issue 25
-LOOP_BEFORE = ['valve.feedback="instant"', 'valve.sense="chamber"', "valve.dead_time_ms=5",
-               "valve.valve_time_constant_ms=10", "valve.proportional_band_kPa=20",
-               "valve.supply_sonic_conductance_dm3_per_s_bar=1",
-               "valve.exhaust_sonic_conductance_dm3_per_s_bar=1"]
-REGULATOR_ROWS = [
-    ("ideal source (`valve.model=\"iso6358\"`)", ['valve.model="iso6358"']),
-    ("loop before issue 25: instant, on the chamber, 5 ms / 10 ms / 20 kPa, C = 1", LOOP_BEFORE),
-    ("ITV2000 class: delayed, on its outlet, 2 ms / 5 ms / 250 kPa, C = 1",
-     ["valve.dead_time_ms=2", "valve.valve_time_constant_ms=5", "valve.proportional_band_kPa=250",
-      "valve.supply_sonic_conductance_dm3_per_s_bar=1",
-      "valve.exhaust_sonic_conductance_dm3_per_s_bar=1"]),
-    ("ITV1000 class with instant feedback (the pilot diaphragm's bound)",
-     ['valve.feedback="instant"']),
-    ("ITV1000 class: delayed, on its outlet, 10 ms / 20 ms / 380 kPa, C = 0.35 (shipped)", []),
-]
-
-GATES_OFF = ["reflex.refractory_s=0", "reflex.arm_after_s=0", "reflex.min_tension_N=0",
-             "reflex.reciprocal_trigger_inhibition=false"]
-GATE_ROWS = [
-    ("all four on (shipped)", []),
-    ("refractory time off (`reflex.refractory_s=0`)", [GATES_OFF[0]]),
-    ("arming delay off (`reflex.arm_after_s=0`)", [GATES_OFF[1]]),
-    ("minimum line tension off (`reflex.min_tension_N=0`)", [GATES_OFF[2]]),
-    ("reciprocal trigger inhibition off", [GATES_OFF[3]]),
-    ("all four off (the paper's reflex)", GATES_OFF),
-]
-
-REFLEXES = [("model reflex (1/800)", "drop_mass.toml"), ("fiber reflex (1/300)", "drop_mass_fiber.toml")]
-
 
 def run(pamsim, threads, scenario, overrides):
     """One `pamsim run --trials 20`; returns its summary's metrics."""
@@ -76,17 +46,6 @@ def cell(m):
     if mistrips:
         text += f", {mistrips:.2f} mistrips"
     return text
-
-
-def table(pamsim, threads, rows, header, base_overrides=()):
-    lines = [f"| {header} | " + " | ".join(r[0] for r in REFLEXES) + " |",
-             "| --- | " + " | ".join("---" for _ in REFLEXES) + " |"]
-    for label, overrides in rows:
-        cells = [cell(run(pamsim, threads, scenario, list(base_overrides) + overrides))
-                 for _, scenario in REFLEXES]
-        lines.append(f"| {label} | " + " | ".join(cells) + " |")
-        print(lines[-1], file=sys.stderr)
-    return "\n".join(lines)
 
 
 def publish(text, out, name):
@@ -131,17 +90,6 @@ def main():
         "Ideal plant (`drop_mass_ideal.toml`): model reflex " + cell(ideal) +
         "; fiber reflex " + cell(ideal_fiber) + ".",
         "",
-        "Physical plant across the regulator bracket (feedback, sensing, dead time / valve lag / band, C):",
-        "",
-        table(pamsim, threads, REGULATOR_ROWS, "regulator"),
-        "",
-        "Physical plant, shipped regulator (ITV1000 class), each gate off:",
-        "",
-        table(pamsim, threads, GATE_ROWS, "gate"),
-        "",
-        "Physical plant, the loop before issue 25, each gate off:",
-        "",
-        table(pamsim, threads, GATE_ROWS, "gate", LOOP_BEFORE),
     ]
     publish("\n".join(parts) + "\n", out, "findings.md")
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli_util.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/sweep/sweep.h"
 #include "sim/test_paths.h"
 #include "sweep_process.h"
@@ -58,6 +59,23 @@ TEST(SweepCasesTest, CasesCrossTheOtherAxesAndSetTheirKeys) {
   const pamsim::SweepDefinition plain =
       cases_sweep(dir, "[[axis]]\nkey = \"drop.mass_kg\"\nvalues = [0.1]\n");
   EXPECT_EQ(plain.canonical_json().find("cases"), std::string::npos);
+}
+
+// A case may take its keys from a table of another file (the regulator bracket's end, kept
+// with its sources), then its own set.
+TEST(SweepCasesTest, ACaseTakesItsKeysFromAnotherFilesTable) {
+  const fs::path dir = fresh_dir("sweep_cases_from");
+  write_text(dir / "bracket.toml", "[fast]\n\"valve.dead_time_ms\" = 2.0\n"
+                                   "valve.proportional_band_kPa = 250.0\n");
+  const pamsim::SweepDefinition s = cases_sweep(
+      dir, "[[axis]]\nname = \"regulator\"\n[[axis.case]]\nname = \"fast\"\n"
+           "from = { file = \"bracket.toml\", table = \"fast\" }\n"
+           "set = { reflex.v_thr_mm_s = 60.0 }\n");
+  const std::vector<std::string> o = s.overrides(0);
+  ASSERT_EQ(o.size(), s.fixed.size() + 3);
+  EXPECT_EQ(o[s.fixed.size()], "valve.proportional_band_kPa=250.0");   // key order
+  EXPECT_EQ(o[s.fixed.size() + 1], "valve.dead_time_ms=2.0");
+  EXPECT_EQ(o.back(), "reflex.v_thr_mm_s=60.0");
 }
 
 // A case is a name for its keys: its trials are those of the same keys swept as an axis.
@@ -117,6 +135,26 @@ TEST(SweepCasesTest, TheReportTablesTheCasesAndItsBestSettingCarriesTheirKeys) {
   EXPECT_FALSE(fs::exists(dir / "bad"));
 }
 
+// The findings' sweep files name the fiber reflex by its keys: with them, drop_mass.toml is
+// drop_mass_fiber.toml (one scenario, not two copies that could drift).
+TEST(SweepCasesTest, TheFindingsFiberCaseIsTheFiberScenario) {
+  const std::string fiber = pamsim_test::kScenarios + "drop_mass_fiber.toml";
+  const std::string dir = fresh_dir("sweep_cases_fiber").string();
+  const std::string want = pamsim::resolved_scenario_toml(pamsim_test::read_file(fiber), fiber,
+                                                          {}, dir, "");
+  // (the shipped regulator, every gate on, the fiber reflex): points 9 and 1
+  for (const auto& [file, point] : {std::pair<const char*, int>{"sweep_findings_regulator", 9},
+                                    std::pair<const char*, int>{"sweep_findings_gates", 1}}) {
+    const pamsim::SweepDefinition s =
+        pamsim::load_sweep(pamsim_test::kScenarios + file + ".toml");
+    ASSERT_EQ(s.value(point, s.axes.size() - 1).text, "fiber (1/300)") << file;
+    EXPECT_EQ(pamsim::resolved_scenario_toml(s.base_text, s.base_path, s.overrides(point), dir,
+                                             ""),
+              want)
+        << file;
+  }
+}
+
 TEST(SweepCasesTest, BadCaseAxesFailWithOneLineAndNoDatabase) {
   const std::string one = "[[axis.case]]\nname = \"a\"\n";
   struct Bad {
@@ -146,6 +184,15 @@ TEST(SweepCasesTest, BadCaseAxesFailWithOneLineAndNoDatabase) {
                            "set = { reflex.v_thr_mm_s = 50.0 }\n"
                            "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [60.0]\n",
        "axis[1] sets reflex.v_thr_mm_s, which axis[0] sets too"},
+      {"from_missing_file", "[[axis]]\nname = \"c\"\n[[axis.case]]\nname = \"a\"\n"
+                            "from = { file = \"nowhere.toml\", table = \"fast\" }\n",
+       "case[0].from " },
+      {"from_missing_table", "[[axis]]\nname = \"c\"\n[[axis.case]]\nname = \"a\"\n"
+                             "from = { file = \"" + pamsim_test::kSource +
+                             "/models/pams/regulator_bracket.toml\", table = \"medium\" }\n",
+       "has no table [medium]"},
+      {"from_not_table", "[[axis]]\nname = \"c\"\n[[axis.case]]\nname = \"a\"\nfrom = 1\n",
+       "case[0].from must be { file"},
       {"unknown_scenario_key", "[[axis]]\nname = \"c\"\n[[axis.case]]\nname = \"a\"\n"
                                "set = { reflex.v_thr = 50.0 }\n", "point 0"},
   };

@@ -14,7 +14,9 @@
 //                  from, to, count, scale = "linear"|"log"   (count for grid only)
 //                or a case axis (grid only): name = "regulator" (its column) and one or more
 //                  [[axis.case]] name = "ITV2000 class", set = { "valve.dead_time_ms" = 2.0 }
-//                  (named bundles of scenario keys; an empty set is the base scenario's)
+//                  (named bundles of scenario keys; an empty set is the base scenario's);
+//                  from = { file = "f.toml", table = "t" } takes a case's keys from a table
+//                  of another file (relative to the sweep file), before its set
 //   [[randomize]] key and a distribution drawn per trial (sim/scenario/randomize.h), e.g. a plant's field
 //   randomize_seed  seed of those draws, >= 0                                  default 1
 #pragma once

@@ -2,10 +2,13 @@
 // with the other axes, as a lab's table of conditions is ("ideal source", "ITV2000 class");
 // and the check that no two axes set one key.
 #include <cctype>
+#include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "base/input_error.h"
+#include "base/toml_file.h"
 #include "sim/sweep/sweep_axis_file.h"
 
 namespace pamsim::detail {
@@ -22,14 +25,39 @@ bool plain_name(const std::string& name) {
   return true;
 }
 
-// One [[axis.case]]: its name (unique in the axis) and its set of scenario keys.
+// A case's `from = { file = "...", table = "..." }`: the keys of a table of another file (a
+// bracket's end, kept where its sources are), named as inside that table; the file's path
+// relative to the sweep file's.
+void read_case_from(const toml::node& from, const Where& where, std::vector<std::string>* set) {
+  const toml::table* t = from.as_table();
+  const auto file = t ? (*t)["file"].value<std::string>() : std::nullopt;
+  const auto table = t ? (*t)["table"].value<std::string>() : std::nullopt;
+  where.check(file && table && t->size() == 2, "from",
+              "must be { file = \"...\", table = \"...\" } (or a list of them): a table of "
+              "scenario keys in a file");
+  where.check(*file != "-", "from", "file must be a file (not standard input)");
+  const std::filesystem::path dir = std::filesystem::path(where.file).parent_path();
+  const std::string path = (dir / *file).lexically_normal().string();
+  toml::table keys;
+  try {
+    keys = parse_toml_file(path);
+  } catch (const InputError& e) {
+    where.fail("from", e.what());
+  }
+  const toml::table* chosen = keys[*table].as_table();
+  where.check(chosen != nullptr, "from", path + " has no table [" + *table + "]");
+  flatten_keys(*chosen, "", Where{where.file, where.prefix + "from."}, set);
+}
+
+// One [[axis.case]]: its name (unique in the axis) and its scenario keys (from, then set).
 void read_case(const toml::node& node, std::size_t c, const Where& axis, SweepAxis* out) {
   const Where where{axis.file, axis.prefix + "case[" + std::to_string(c) + "]."};
   const toml::table* t = node.as_table();
   axis.check(t != nullptr, "case", "must be [[axis.case]] tables");
   for (const auto& [k, _] : *t) {
     const std::string key(k.str());
-    where.check(key == "name" || key == "set", key, "is not a case key (name, set)");
+    where.check(key == "name" || key == "set" || key == "from", key,
+                "is not a case key (name, from, set)");
   }
   const auto name = (*t)["name"].value<std::string>();
   where.check(name && !name->empty(), "name", "is required (a non-empty string)");
@@ -37,6 +65,13 @@ void read_case(const toml::node& node, std::size_t c, const Where& axis, SweepAx
     where.check(v.text != *name, "name", "\"" + *name + "\" names another case of this axis");
   }
   std::vector<std::string> set;
+  if (const toml::node* from = t->get("from")) {
+    if (const toml::array* list = from->as_array()) {
+      for (const toml::node& one : *list) read_case_from(one, where, &set);
+    } else {
+      read_case_from(*from, where, &set);
+    }
+  }
   if (const toml::node* s = t->get("set")) {
     const toml::table* keys = s->as_table();
     where.check(keys != nullptr, "set", "must be a table of scenario keys");
