@@ -14,7 +14,8 @@ import numpy as np
 
 import pamsim
 from pamsim import _pamsim
-from pamsim.envs.drop_mass import DropMassEnv, data_dir
+from pamsim.envs.data import data_dir
+from pamsim.envs.drop_mass import DropMassEnv
 from pamsim.envs.vector import ThreadedVectorEnv
 
 STEPS = 300
