@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "cli_util.h"
 #include "sim/scenario/scenario_file.h"
 #include "sim/sweep/sweep.h"
@@ -152,6 +154,38 @@ TEST(SweepCasesTest, TheFindingsFiberCaseIsTheFiberScenario) {
                                              ""),
               want)
         << file;
+  }
+}
+
+// The landing and tension-reflex sweeps run one reflex scenario with a gain (or the reflex)
+// off in place of a scenario file without it: the trial is that file's, metric for metric.
+TEST(SweepCasesTest, AReflexSwitchedOffByItsKeysIsTheScenarioWithoutIt) {
+  const fs::path dir = fresh_dir("sweep_cases_off");
+  struct Pair {
+    const char* without;   // the scenario file without the reflex
+    const char* with;      // the one the sweep runs, and the keys that switch it off
+    const char* off;
+    std::vector<const char*> metrics;
+  };
+  const std::vector<Pair> pairs = {
+      {"landing.toml", "landing_reflex.toml", "reflex.enabled=false",
+       {"knee_angle_max_deg", "grf_max_N", "peak_tension_VAS_N", "trunk_z_min_mm"}},
+      {"drop_mass_heavy.toml", "drop_mass_heavy_ia_ib.toml", "reflex.ib.k_MPa_per_N=0",
+       {"peak_drop_deg", "peak_tension_ago_N", "reflex_triggers_ago", "recovery_time_s"}}};
+  for (const Pair& p : pairs) {
+    const auto summary = [&](const std::string& args, const std::string& name) {
+      const fs::path out = dir / name;
+      const auto r = run_pamsim("run " + pamsim_test::kScenarios + args + " --out " +
+                                out.string());
+      EXPECT_EQ(r.exit_code, 0) << r.err;
+      return nlohmann::json::parse(read_file(out / "summary.json"));
+    };
+    const auto a = summary(p.without, std::string(p.without) + "_a");
+    const auto b = summary(std::string(p.with) + " --set " + p.off, std::string(p.with) + "_b");
+    for (const char* m : p.metrics) {
+      ASSERT_TRUE(a.contains(m)) << p.without << " " << m;
+      EXPECT_EQ(a[m].dump(), b[m].dump()) << p.without << ": " << m;
+    }
   }
 }
 
