@@ -68,15 +68,20 @@ TEST(SweepCasesTest, CasesCrossTheOtherAxesAndSetTheirKeys) {
 TEST(SweepCasesTest, ACaseTakesItsKeysFromAnotherFilesTable) {
   const fs::path dir = fresh_dir("sweep_cases_from");
   write_text(dir / "bracket.toml", "[fast]\n\"valve.dead_time_ms\" = 2.0\n"
-                                   "valve.proportional_band_kPa = 250.0\n");
+                                   "valve.proportional_band_kPa = 250.0\n"
+                                   "\"sensors.fiber.creep_times_s\" = [10.0, 100.0]\n"
+                                   "\"sensors.fiber.creep_weights\" = [0.05, 0.01]\n");
   const pamsim::SweepDefinition s = cases_sweep(
       dir, "[[axis]]\nname = \"regulator\"\n[[axis.case]]\nname = \"fast\"\n"
            "from = { file = \"bracket.toml\", table = \"fast\" }\n"
            "set = { reflex.v_thr_mm_s = 60.0 }\n");
   const std::vector<std::string> o = s.overrides(0);
-  ASSERT_EQ(o.size(), s.fixed.size() + 3);
-  EXPECT_EQ(o[s.fixed.size()], "valve.proportional_band_kPa=250.0");   // key order
-  EXPECT_EQ(o[s.fixed.size() + 1], "valve.dead_time_ms=2.0");
+  ASSERT_EQ(o.size(), s.fixed.size() + 5);
+  const std::size_t f = s.fixed.size();   // in key order; a list as one value
+  EXPECT_EQ(o[f], "sensors.fiber.creep_times_s=[10.0, 100.0]");
+  EXPECT_EQ(o[f + 1], "sensors.fiber.creep_weights=[0.05, 0.01]");
+  EXPECT_EQ(o[f + 2], "valve.proportional_band_kPa=250.0");
+  EXPECT_EQ(o[f + 3], "valve.dead_time_ms=2.0");
   EXPECT_EQ(o.back(), "reflex.v_thr_mm_s=60.0");
 }
 
@@ -138,15 +143,17 @@ TEST(SweepCasesTest, TheReportTablesTheCasesAndItsBestSettingCarriesTheirKeys) {
 }
 
 // The findings' sweep files name the fiber reflex by its keys: with them, drop_mass.toml is
-// drop_mass_fiber.toml (one scenario, not two copies that could drift).
+// drop_mass_fiber.toml (one scenario, not two copies that could drift). Loading each file
+// also binds every one of its points (load_sweep checks them all).
 TEST(SweepCasesTest, TheFindingsFiberCaseIsTheFiberScenario) {
   const std::string fiber = pamsim_test::kScenarios + "drop_mass_fiber.toml";
   const std::string dir = fresh_dir("sweep_cases_fiber").string();
   const std::string want = pamsim::resolved_scenario_toml(pamsim_test::read_file(fiber), fiber,
                                                           {}, dir, "");
-  // (the shipped regulator, every gate on, the fiber reflex): points 9 and 1
+  // (the shipped regulator and hardware, every gate on, the fiber reflex)
   for (const auto& [file, point] : {std::pair<const char*, int>{"sweep_findings_regulator", 9},
-                                    std::pair<const char*, int>{"sweep_findings_gates", 1}}) {
+                                    std::pair<const char*, int>{"sweep_findings_gates", 1},
+                                    std::pair<const char*, int>{"sweep_hardware_losses", 1}}) {
     const pamsim::SweepDefinition s =
         pamsim::load_sweep(pamsim_test::kScenarios + file + ".toml");
     ASSERT_EQ(s.value(point, s.axes.size() - 1).text, "fiber (1/300)") << file;

@@ -26,8 +26,8 @@ struct Where {
 // A number (finite), integer, string or boolean as an axis value; fails naming `key`.
 AxisValue axis_value(const toml::node& n, const Where& where, const std::string& key);
 
-// "a.b=value" for every leaf of `t` (nested tables and quoted dotted keys alike), keys
-// prefixed with `prefix`.
+// "a.b=value" for every leaf of `t` (nested tables and quoted dotted keys alike; a list of
+// numbers, strings or booleans as one value), keys prefixed with `prefix`.
 void flatten_keys(const toml::table& t, const std::string& prefix, const Where& where,
                   std::vector<std::string>* out);
 
