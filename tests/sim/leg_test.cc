@@ -1,6 +1,6 @@
 // leg_test.cc: the PAM leg (models/leg_pam.xml, issue 27) through its scenarios, with no
 // leg-specific code: each line starts its muscle 2 mm past the plant's free length at 0.4 MPa
-// (scripts/leg_calibration.py), the leg falls 100 mm, lands (the floor's push peaks above
+// (pamsim calibrate --pose: pose_calibration_test.cc), the leg falls 100 mm, lands (the floor's push peaks above
 // its weight), bounces and stands crouched; dropped from higher it collapses further; the
 // start keys place it; it hops periodically under its feedforward pattern, with and without
 // its reflexes; each tendon crosses the joints its muscle says it spans (RF and GAS two);
