@@ -17,7 +17,7 @@ packages=(
   libegl-dev libgl1-mesa-dri                 # the EGL backend and Mesa's software driver for it
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev   # MP4 encoding
   gnuplot-nox                                # plots (pngcairo terminal)
-  python3                                    # scripts/findings.py and the demo's summary line
+  python3                                    # scripts/*.py and the demo's summary line
   pmccabe                                    # scripts/check-sizes.sh: function lengths
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev                   # make fuzz: libFuzzer and clang's sanitizer runtimes

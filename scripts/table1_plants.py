@@ -9,21 +9,43 @@ assumption). Each is tested as the lab tests (`pamsim tensile`, 2.5 mm steps to 
 back, the protocol's pressures) and fitted with Eq. (2)-(3) (`pamsim fit`); the table gives
 the free lengths, the fitted slope m of Eq. (2) and the pull at 5 mm past the free length
 beside Table IV's, for walls of 0.5 and 1.0 mm (the shipped PAM A-D files assume 1.0 mm: a
-4 or 6 mm latex tube; Table I gives no wall). The plant files are written to a temp folder.
+4 or 6 mm latex tube; Table I gives no wall). The changes are `pamsim tensile --set`s on the
+shipped plant files; the tests' data go to a temp folder.
 Prints Markdown; writes it to OUT/table1_plants.md too.
 
     python3 scripts/table1_plants.py [--pamsim build/src/sim/pamsim] [--out renders/findings]
 """
+import argparse
 import csv
 import math
 import os
-import re
 import subprocess
 import sys
 import tempfile
+import tomllib
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from findings import options, publish  # noqa: E402  (shared with findings.py)
+
+def publish(text, out, name):
+    """Prints the Markdown and writes it to OUT/NAME whole (temp file, then rename)."""
+    os.makedirs(out, exist_ok=True)
+    tmp = os.path.join(out, f".{name}.tmp")
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, os.path.join(out, name))
+    print(text)
+
+
+def options(doc):
+    """--pamsim, --out (made absolute), then cd to the repository root, where the model
+    paths are relative."""
+    ap = argparse.ArgumentParser(description=doc.splitlines()[0])
+    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+    ap.add_argument("--pamsim", default=os.path.join(root, "build/src/sim/pamsim"))
+    ap.add_argument("--out", default=os.path.join(root, "renders/findings"))
+    args = ap.parse_args()
+    os.chdir(root)
+    return os.path.abspath(args.pamsim), os.path.abspath(args.out)
+
 
 # name, shipped plant file, Table I: sleeve and bladder diameter [mm], the tensile test's
 # pressures [MPa] (seeds/000 Sec. II-B for A-D; the arm's: scripts/fit-estimators.sh), and
@@ -42,37 +64,31 @@ WALLS_MM = [0.5, 1.0]
 SHOWN_MPA = [0.2, 0.4, 0.6]   # where the free lengths and pulls are shown (A-C: 0.4-0.8)
 
 
-def table1_plant(shipped, sleeve_mm, tube_mm, wall_mm):
-    """The shipped plant file's text with Table I's diameters, a tube bladder and friction
-    areas scaled by the new pi R0^2 (the shipped files' rule: A0 = 0.030 / 0.024 pi R0^2)."""
-    with open(os.path.join("models", "pams", shipped)) as f:
-        text = f.read()
-    old_mm = float(re.search(r"^diameter_mm = ([0-9.]+)", text, re.M).group(1))
-    scale = (sleeve_mm / old_mm) ** 2
-    text = re.sub(r"^diameter_mm = [0-9.]+", f"diameter_mm = {sleeve_mm}", text, flags=re.M)
-    text = re.sub(r"^wall_thickness_mm = [0-9.]+", f"wall_thickness_mm = {wall_mm}", text,
-                  flags=re.M)
-    silicone = 'material = "silicone"' in text
-    # a plant built with its tube already (PAMs A-C): the [bladder] table's law and tube lines
-    # (and their comments' continuation lines) are written anew below
-    head, rest = text.split("\n[bladder]\n", 1)
-    end = rest.find("\n[")
-    bladder, tail = (rest, "") if end < 0 else (rest[:end + 1], rest[end + 1:])
-    bladder = re.sub(r"^(law|diameter_mm) = [^\n]*\n( +#[^\n]*\n)*", "", bladder, flags=re.M)
-    text = head + "\n[bladder]\n" + bladder + tail
-    text = re.sub(r"^material = .*$", ('material = "silicone"' if silicone else
-                                       'material = "natural_rubber"\nlaw = "gent_gent"') +
-                  f"\ndiameter_mm = {tube_mm}", text, flags=re.M)
-    text = re.sub(r"(A[01]_mm2) = ([0-9.]+)",
-                  lambda m: f"{m.group(1)} = {float(m.group(2)) * scale:.3f}", text)
-    return text
+def table1_sets(shipped, sleeve_mm, tube_mm, wall_mm):
+    """`pamsim tensile --set` changes that give the shipped plant Table I's diameters, a tube
+    bladder (a rubber plant's becomes Gent-Gent natural rubber; a silicone one keeps its Yeoh
+    constants) and friction areas scaled by the new pi R0^2 (the shipped files' rule:
+    A0 = 0.030 / 0.024 pi R0^2)."""
+    with open(os.path.join("models", "pams", shipped), "rb") as f:
+        plant = tomllib.load(f)
+    scale = (sleeve_mm / plant["geometry"]["diameter_mm"]) ** 2
+    sets = [f"geometry.diameter_mm={sleeve_mm}", f"geometry.wall_thickness_mm={wall_mm}",
+            f"bladder.diameter_mm={tube_mm}"]
+    if "C10_MPa" not in plant["bladder"]:   # not silicone's explicit Yeoh constants
+        sets += ['bladder.material="natural_rubber"', 'bladder.law="gent_gent"']
+    for direction in ("extension", "contraction"):
+        for area in ("A0_mm2", "A1_mm2"):
+            value = plant["friction"][direction][area] * scale
+            sets.append(f"friction.{direction}.{area}={value:.3f}")
+    return sets
 
 
-def tensile_and_fit(pamsim, plant, pressures, folder, name):
+def tensile_and_fit(pamsim, plant, sets, pressures, folder, name):
     """The free length per pressure and the pull 5 mm past it, and the fitted (m, h)."""
     data = os.path.join(folder, name + ".csv")
     fit = os.path.join(folder, name + "_fit.toml")
-    subprocess.run([pamsim, "tensile", "--plant", plant, "--pressures-MPa",
+    changes = [arg for change in sets for arg in ("--set", change)]
+    subprocess.run([pamsim, "tensile", "--plant", plant, *changes, "--pressures-MPa",
                     ",".join(str(p) for p in pressures), "--max-deformation-mm", "7.5",
                     "-o", data, "--force"], check=True, capture_output=True)
     subprocess.run([pamsim, "fit", "--model", "eq3", data, "-o", fit, "--force"], check=True,
@@ -87,9 +103,8 @@ def tensile_and_fit(pamsim, plant, pressures, folder, name):
                 free[p] = float(row["length_mm"])
             if d == 5.0:
                 pull[p] = float(row["force_N"])
-    with open(fit) as f:
-        text = f.read()
-    m = float(re.search(r"^m = (\S+)", text, re.M).group(1))
+    with open(fit, "rb") as f:
+        m = tomllib.load(f)["spring"]["m"]
     return free, pull, m
 
 
@@ -106,11 +121,11 @@ def rows(pamsim, folder):
     lines = []
     for name, shipped, sleeve, tube, pressures, law in PLANTS:
         for wall in WALLS_MM:
-            plant = os.path.join(folder, f"{name}_{wall}.toml")
-            with open(plant, "w") as f:
-                f.write(table1_plant(shipped, sleeve, tube, wall))
+            plant = os.path.join("models", "pams", shipped)
+            sets = table1_sets(shipped, sleeve, tube, wall)
             try:
-                free, pull, m = tensile_and_fit(pamsim, plant, pressures, folder, f"{name}_{wall}")
+                free, pull, m = tensile_and_fit(pamsim, plant, sets, pressures, folder,
+                                                f"{name}_{wall}")
             except subprocess.CalledProcessError as e:
                 why = e.stderr.decode().strip().splitlines()[-1]
                 lines.append(f"| {name} | {sleeve} / {tube} | {wall} | {why} | | | |")
@@ -127,7 +142,7 @@ def rows(pamsim, folder):
 
 
 def main():
-    pamsim, out, _ = options(__doc__)
+    pamsim, out = options(__doc__)
     lines = ["| muscle | Table I sleeve / tube [mm] | wall [mm] | free length at "
              "0.2 / 0.4 / 0.6 MPa [mm] | fitted m [mm/MPa] | pull 5 mm past it at 0.2 / 0.4 / 0.6 "
              "MPa [N] | "
