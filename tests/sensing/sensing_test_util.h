@@ -61,4 +61,20 @@ inline std::vector<double> fields(const MuscleReading& r) {
           r.force_meas_n,      r.length_est_m,     r.velocity_est_m_s};
 }
 
+// Both of Table IV's muscles, agonist first.
+inline std::vector<MuscleSensorSpec> table_iv_muscles() {
+  return {table_iv_agonist(), table_iv_antagonist()};
+}
+
+// No noise, ideal converters, no filters: the readings should equal the truth.
+inline SensingConfig noise_free() {
+  SensingConfig config;
+  config.sensors.pressure_noise_pa = 0.0;
+  config.sensors.pressure_adc_bits = 0;
+  config.sensors.gauge_noise_v = 0.0;
+  config.sensors.gauge_adc_bits = 0;
+  config.sensors.fiber_noise_m_s = 0.0;
+  return config;
+}
+
 }  // namespace pamsim::test
