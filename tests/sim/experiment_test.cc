@@ -330,62 +330,9 @@ TEST(ExperimentTest, APamsim01FileWithoutADropTableStillDrops) {
 }
 
 TEST(ExperimentTest, DropInTheLongFormIsTheShorthandsTrialBitForBit) {
-  const std::string long_form = R"(
-seed = 1
-metrics = ["drop", "reflex", "length_estimate"]
-[model]
-file = "../models/arm_2pam.xml"
-calibration = "../models/arm_2pam_plant_calibration.toml"
-pneumatics = "../models/pams/pneumatics.toml"
-[sim]
-duration_s = 2.0
-[muscles.agonist]
-label = "ago"
-params = "../models/pams/fitted_agonist.toml"
-plant = "../models/pams/plant_agonist.toml"
-command = { kind = "constant", MPa = 0.4 }
-[muscles.antagonist]
-label = "anta"
-params = "../models/pams/fitted_antagonist.toml"
-plant = "../models/pams/plant_antagonist.toml"
-command = { kind = "constant", MPa = 0.4 }
-[bodies.ball]
-mass_kg = 0.2
-[holds.ball]
-above_site = "basket_floor"
-height_m = 0.14
-[events.release]
-action = "release"
-body = "ball"
-when.at_s = 1.0
-[events.impact]
-after = "release"
-when.contact = ["ball", "basket"]
-[valve]
-model = "regulator"
-[reflex]
-enabled = true
-sensor = "model"
-v_thr_mm_s = 70.0
-k_MPa_s_per_mm = 0.00125
-duration_s = 0.2
-mode = "follow"
-lowpass_hz = 0.0
-min_tension_N = 1.0
-reciprocal_trigger_inhibition = true
-[sensors]
-pressure_noise_MPa = 0.001
-pressure_lowpass_hz = 0.0
-gauge_noise_V = 0.0005
-[sensors.pressure]
-model = "pse540"
-[sensors.gauge]
-model = "bridge"
-[sensors.fiber]
-model = "fabric"
-[sensors.encoder]
-model = "counts"
-)";
+  // drop_mass.toml written out without the shorthands (as if it lay in scenarios/)
+  const std::string long_form =
+      pamsim_test::read_file(kSource + "/tests/sim/data/drop_mass_long_form.toml");
   const TrialResult shorthand = run_file("drop_mass.toml", {"sim.duration_s=2"});
   const TrialResult longhand = run_text(long_form);
   ASSERT_EQ(longhand.summary.status, "ok") << longhand.summary.message;

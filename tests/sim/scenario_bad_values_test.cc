@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/scenario_error.h"
+#include "sim/scenario_errors.h"
 
 namespace {
 
@@ -143,7 +143,7 @@ TEST(ScenarioTest, EveryBadValueNamesItsKey) {
     cases.insert(cases.end(), more.begin(), more.end());
   }
   for (const auto& c : cases) {
-    const std::string message = pamsim_test::scenario_error({c.assignment});
+    const std::string message = pamsim_test::error_of("drop_mass.toml", {c.assignment});
     EXPECT_NE(message.find(c.key), std::string::npos) << c.assignment << " -> " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
   }

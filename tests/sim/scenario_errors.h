@@ -1,5 +1,6 @@
 // scenario_errors.h: checking that a shipped scenario refuses bad values by key (the test
-// helpers scenario_keys_test.cc, tension_reflex_scenario_test.cc and leg_test.cc share).
+// helpers scenario_test.cc, scenario_bad_values_test.cc, scenario_keys_test.cc,
+// tension_reflex_scenario_test.cc and leg_test.cc share).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -15,12 +16,13 @@
 namespace pamsim_test {
 
 
-// The message of the InputError that reading scenarios/`scenario` with `overrides` and
-// binding its model throws, or "" if none.
+// The message of the InputError that reading scenarios/`scenario` (or `scenario` itself, an
+// absolute path) with `overrides` and binding its model throws, or "" if none.
 inline std::string error_of(const std::string& scenario,
                             const std::vector<std::string>& overrides) {
+  const std::string path = scenario.rfind('/', 0) == 0 ? scenario : kScenarios + scenario;
   try {
-    const pamsim::Scenario sc = pamsim::load_scenario(kScenarios + scenario, overrides);
+    const pamsim::Scenario sc = pamsim::load_scenario(path, overrides);
     pamsim::load_trial_model(sc);
   } catch (const pamsim::InputError& e) {
     return e.what();

@@ -16,7 +16,7 @@
 #include "base/input_error.h"
 #include "reflex/stretch_reflex_controller.h"
 #include "sim/core/runner.h"
-#include "sim/scenario_error.h"
+#include "sim/scenario_errors.h"
 
 namespace pamsim {
 namespace {
@@ -26,7 +26,7 @@ const std::string kScenario = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_
 // The message of loading and binding with `overrides`, or "" if none.
 std::string error_of(const std::vector<std::string>& overrides,
                      const std::string& path = kScenario) {
-  return pamsim_test::scenario_error(overrides, path);
+  return pamsim_test::error_of(path, overrides);
 }
 
 std::string pamsim_test_read(const std::string& path) {
