@@ -26,7 +26,7 @@ using pamsim_test::line_count;
 using pamsim_test::read_file;
 using pamsim_test::run_pamsim;
 
-const std::string kShort = " --set sim.duration_s=1.5 drop.time_s=0.3";
+const std::string kShort = pamsim_test::kShortDrop;
 
 nlohmann::json json_of(const fs::path& path) { return nlohmann::json::parse(read_file(path)); }
 
@@ -66,8 +66,11 @@ TEST(CliReproduceTest, ARunFromItsFolderWritesByteIdenticalOutputs) {
                                       " --no-plot --out " + (dir / "c").string());
   ASSERT_EQ(direct.exit_code, 0) << direct.err;
   EXPECT_EQ(read_file(dir / "c" / "trajectory.csv"), read_file(dir / "a1" / "trajectory.csv"));
+}
 
-  // the inputs are fingerprinted: a file changed since the run is named when it runs again
+// The inputs are fingerprinted: a file changed since the run is named when it runs again.
+TEST(CliReproduceTest, AnInputChangedSinceTheRunIsNamedWhenItRunsAgain) {
+  const fs::path dir = fresh_dir("reproduce_changed");
   const std::string calibration =
       std::string(PAMSIM_SOURCE_DIR) + "/models/arm_2pam_plant_calibration.toml";
   fs::copy_file(calibration, dir / "cal.toml");
@@ -96,10 +99,12 @@ TEST(CliReproduceTest, ARunFromItsFolderWritesByteIdenticalOutputs) {
   EXPECT_EQ(device.exit_code, 0) << device.err;
   EXPECT_NE(device.err.find("(/dev/zero) is gone or not a readable file"), std::string::npos)
       << device.err;
+}
 
-  // bad input
+TEST(CliReproduceTest, BadFromFoldersAreRefused) {
+  const fs::path dir = fresh_dir("reproduce_bad");
   EXPECT_EQ(run_pamsim("run --from " + (dir / "nothing").string()).exit_code, 2);
-  const CliResult both = run_pamsim("run scenarios/drop_mass.toml --from " + (dir / "a1").string());
+  const CliResult both = run_pamsim("run scenarios/drop_mass.toml --from " + dir.string());
   EXPECT_EQ(both.exit_code, 2);
   EXPECT_NE(both.err.find("--from"), std::string::npos) << both.err;
   fs::create_directories(dir / "broken");
@@ -185,6 +190,24 @@ TEST(CliReproduceTest, NoPlotAndNoGnuplotStillRun) {
       << without.err;
 }
 
+// The row of `trial` in an exported sweep CSV, by column name (empty if none).
+std::map<std::string, std::string> exported_row(const std::string& csv_text,
+                                                const std::string& trial) {
+  std::istringstream csv(csv_text);
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::string> header;
+  for (std::istringstream h(line); std::getline(h, line, ',');) header.push_back(line);
+  std::map<std::string, std::string> row;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cells;
+    for (std::istringstream c(line); std::getline(c, line, ',');) cells.push_back(line);
+    if (cells[0] != trial) continue;
+    for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) row[header[i]] = cells[i];
+  }
+  return row;
+}
+
 TEST(CliReproduceTest, AReplayedSweepTrialEqualsItsStoredRow) {
   const fs::path dir = fresh_dir("reproduce_replay");
   const std::string db = (dir / "sweep.db").string();
@@ -193,18 +216,7 @@ TEST(CliReproduceTest, AReplayedSweepTrialEqualsItsStoredRow) {
   const CliResult exported = run_pamsim("export " + db + " --csv -");
   ASSERT_EQ(exported.exit_code, 0) << exported.err;
   // the stored row of trial 13 (point 6, seed 2), by column name
-  std::istringstream csv(exported.out);
-  std::string line;
-  std::getline(csv, line);
-  std::vector<std::string> header;
-  for (std::istringstream h(line); std::getline(h, line, ',');) header.push_back(line);
-  std::map<std::string, std::string> stored;
-  while (std::getline(csv, line)) {
-    std::vector<std::string> cells;
-    for (std::istringstream c(line); std::getline(c, line, ',');) cells.push_back(line);
-    if (cells[0] != "13") continue;
-    for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) stored[header[i]] = cells[i];
-  }
+  std::map<std::string, std::string> stored = exported_row(exported.out, "13");
   ASSERT_EQ(stored["trial"], "13");
   // the database records what made it
   {
@@ -247,139 +259,6 @@ TEST(CliReproduceTest, AReplayedSweepTrialEqualsItsStoredRow) {
   }
   EXPECT_EQ(run_pamsim("replay " + db + " --trial 13 --no-plot --out " + out.string()).exit_code, 2)
       << "an earlier replay's outputs, without --force";
-}
-
-}  // namespace
-
-namespace {
-
-// Every command that writes a file or a folder of its own refuses to replace an earlier one
-// without --force (one line, exit 2, the file untouched), and replaces it with --force.
-TEST(CliReproduceTest, EveryCommandReplacesAnOutputOnlyWithForce) {
-  const fs::path dir = fresh_dir("reproduce_every_force");
-  const auto existing = [&](const std::string& name) {
-    const fs::path p = dir / name;
-    fs::create_directories(p.parent_path());
-    pamsim_test::write_text(p, "an earlier output");
-    return p.string();
-  };
-  const std::string models = std::string(PAMSIM_SOURCE_DIR) + "/models/pams/";
-  const std::string db = (dir / "sweep.db").string();
-  ASSERT_EQ(run_pamsim("sweep scenarios/sweep_smoke.toml --db " + db + " --out " + dir.string())
-                .exit_code, 0);
-  ASSERT_EQ(run_pamsim("tensile --params " + models + "table4_agonist.toml -o " +
-                       (dir / "t.csv").string()).exit_code, 0);
-  // folders that hold an earlier run's file
-  existing("frames/frame_00000.png");
-  existing("val/table5.csv");
-  existing("rep/points.csv");
-  struct Case {
-    std::string args;
-    fs::path output;
-  };
-  const std::vector<Case> cases = {
-      {"tensile --params " + models + "table4_agonist.toml -o " + existing("a.csv"),
-       dir / "a.csv"},
-      {"fit --model eq3 " + (dir / "t.csv").string() + " -o " + existing("f.toml"), dir / "f.toml"},
-      {"export " + db + " -o " + existing("e.csv"), dir / "e.csv"},
-      {"export " + db + " --csv " + existing("e2.csv"), dir / "e2.csv"},
-      {"render scenarios/drop_mass.toml -o " + existing("v.mp4"), dir / "v.mp4"},
-      {"render scenarios/drop_mass.toml --png-dir " + (dir / "frames").string() + " -o " +
-           (dir / "new.mp4").string(),
-       dir / "frames/frame_00000.png"},
-      {"run scenarios/drop_mass.toml --out " + (dir / "r").string() + " --video " +
-           existing("r.mp4"), dir / "r.mp4"},
-      {"calibrate scenarios/drop_mass_passive.toml -o " + existing("c.toml"), dir / "c.toml"},
-      {"validate reaching --out " + (dir / "val").string(), dir / "val/table5.csv"},
-      {"report " + db + " --out " + (dir / "rep").string(), dir / "rep/points.csv"},
-  };
-  for (const Case& c : cases) {
-    const CliResult r = run_pamsim(c.args);
-    EXPECT_EQ(r.exit_code, 2) << c.args << ": " << r.err;
-    EXPECT_EQ(line_count(r.err), 1) << c.args << ": " << r.err;
-    EXPECT_NE(r.err.find("--force"), std::string::npos) << c.args << ": " << r.err;
-    EXPECT_EQ(read_file(c.output), "an earlier output") << c.args;
-  }
-  // with --force (the cheap ones; run, replay, validate and report are covered above and in
-  // tune_test): the file is the new output
-  for (const Case& c : {cases[0], cases[1], cases[2], cases[7]}) {
-    const CliResult r = run_pamsim(c.args + " --force");
-    EXPECT_EQ(r.exit_code, 0) << c.args << ": " << r.err;
-    EXPECT_NE(read_file(c.output), "an earlier output") << c.args;
-  }
-  // --no-plot: a report without heat maps
-  const CliResult report = run_pamsim("report " + db + " --no-plot --out " + (dir / "rep2").string());
-  ASSERT_EQ(report.exit_code, 0) << report.err;
-  EXPECT_TRUE(fs::exists(dir / "rep2" / "points.csv"));
-  EXPECT_EQ(json_of(dir / "rep2" / "provenance.json")["from"], db);
-  for (const auto& e : fs::directory_iterator(dir / "rep2")) {
-    EXPECT_NE(e.path().extension(), ".png") << e.path();
-  }
-}
-
-}  // namespace
-
-namespace {
-
-TEST(CliReproduceTest, PlotsComeAsSvgOrPdfBesideThePng) {
-  const fs::path dir = fresh_dir("reproduce_plot_format");
-  const std::string run = "run scenarios/drop_mass.toml --out " + (dir / "a").string() + kShort;
-  const CliResult both = run_pamsim(run + " --plot-format svg,pdf");
-  ASSERT_EQ(both.exit_code, 0) << both.err;
-  for (const char* f : {"angle.png", "angle.svg", "angle.pdf"}) {
-    EXPECT_TRUE(fs::exists(dir / "a" / f)) << f;
-  }
-  EXPECT_NE(read_file(dir / "a" / "angle.svg").find("</svg>"), std::string::npos);
-  EXPECT_EQ(read_file(dir / "a" / "angle.pdf").rfind("%PDF", 0), 0u);
-  // a new run replaces the whole set: no SVG of the earlier one is left beside its PNG
-  ASSERT_EQ(run_pamsim(run + " --force").exit_code, 0);
-  EXPECT_TRUE(fs::exists(dir / "a" / "angle.png"));
-  EXPECT_FALSE(fs::exists(dir / "a" / "angle.svg"));
-  EXPECT_FALSE(fs::exists(dir / "a" / "angle.pdf"));
-  // bad input: one line, exit 2, before anything runs
-  for (const char* bad : {"jpg", "", "png,gif"}) {
-    const CliResult r = run_pamsim(run + " --force --plot-format '" + bad + "'");
-    EXPECT_EQ(r.exit_code, 2) << bad;
-    EXPECT_EQ(line_count(r.err), 1) << r.err;
-    EXPECT_NE(r.err.find("--plot-format"), std::string::npos) << r.err;
-  }
-}
-
-}  // namespace
-
-namespace {
-
-// "-" is standard output for a file argument and standard input for an input file: a
-// tensile test piped into a fit gives the fit of the file; a scenario read from stdin runs
-// as the file does (its paths relative to the current folder).
-TEST(CliReproduceTest, DashIsStandardInputAndOutput) {
-  const fs::path dir = fresh_dir("reproduce_dash");
-  const std::string tensile = "tensile --params models/pams/table4_agonist.toml --seed 3 "
-                              "--noise-force-N 0.2 -o ";
-  ASSERT_EQ(run_pamsim(tensile + (dir / "t.csv").string()).exit_code, 0);
-  const CliResult piped = run_pamsim(tensile + "- | " + std::string(PAMSIM_BINARY) +
-                                     " fit --model eq3 - -o -");
-  ASSERT_EQ(piped.exit_code, 0) << piped.err;
-  const CliResult from_file = run_pamsim("fit --model eq3 " + (dir / "t.csv").string() + " -o " +
-                                         (dir / "f.toml").string());
-  ASSERT_EQ(from_file.exit_code, 0) << from_file.err;
-  // the same parameters (the source line names the input)
-  const std::string file = read_file(dir / "f.toml");
-  const auto coefficients = [](const std::string& toml) { return toml.substr(toml.find("[spring]")); };
-  EXPECT_EQ(coefficients(piped.out), coefficients(file));
-  EXPECT_NE(piped.err.find("fitted to -"), std::string::npos) << "the table goes to stderr";
-  // two things on stdout are refused
-  const CliResult both = run_pamsim("fit --model eq3 " + (dir / "t.csv").string() + " -o - --json");
-  EXPECT_EQ(both.exit_code, 2);
-  EXPECT_EQ(line_count(both.err), 1) << both.err;
-
-  const CliResult stdin_run = run_pamsim("run - --no-plot --out " + (dir / "s").string() + kShort +
-                                         " < drop_mass.toml", "cd scenarios &&");
-  ASSERT_EQ(stdin_run.exit_code, 0) << stdin_run.err;
-  const CliResult file_run = run_pamsim("run scenarios/drop_mass.toml --no-plot --out " +
-                                        (dir / "f").string() + kShort);
-  ASSERT_EQ(file_run.exit_code, 0) << file_run.err;
-  EXPECT_EQ(read_file(dir / "s" / "trajectory.csv"), read_file(dir / "f" / "trajectory.csv"));
 }
 
 }  // namespace

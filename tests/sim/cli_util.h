@@ -17,6 +17,9 @@
 
 namespace pamsim_test {
 
+// --set overrides that make the drop_mass trial short: 1.5 s, the mass dropped at 0.3 s
+inline const std::string kShortDrop = " --set sim.duration_s=1.5 drop.time_s=0.3";
+
 struct CliResult {
   int exit_code = -1;
   std::string out;
