@@ -188,11 +188,13 @@ TEST(PlantParamsTest, TheBladdersRelaxationIsRead) {
   EXPECT_EQ(load_plant_params(write_temp(kValid)).avbdl.relaxation.count, 0) << "none given";
 }
 
-TEST(PlantParamsTest, EveryBadFileIsOneLineNamingFileAndKey) {
-  struct Case {
-    std::string from, to, key;
-  };
-  const std::vector<Case> cases = {
+// A bad plant file: kValid with `from` replaced by `to`; the message starts with `key`.
+struct BadPlantFile {
+  std::string from, to, key;
+};
+
+std::vector<BadPlantFile> bad_plant_files() {
+  return {
       {"law = \"avbdl\"", "law = \"mckibben\"", "law"},
       {"braid_angle_deg = 25", "braid_angle_deg = 60", "geometry.braid_angle_deg"},
       {"braid_angle_deg = 25", "braid_angle_deg = 0", "geometry.braid_angle_deg"},
@@ -235,7 +237,10 @@ TEST(PlantParamsTest, EveryBadFileIsOneLineNamingFileAndKey) {
        "C20_MPa = 0.0035\nrelaxation_times_s = [0.01, 0]\nrelaxation_weights = [0.1, 0.1]",
        "bladder.relaxation_times_s: [1]"},
   };
-  for (const Case& c : cases) {
+}
+
+TEST(PlantParamsTest, EveryBadFileIsOneLineNamingFileAndKey) {
+  for (const BadPlantFile& c : bad_plant_files()) {
     std::string text = kValid;
     const auto at = text.find(c.from);
     ASSERT_NE(at, std::string::npos) << c.from;
