@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Holds src/ to the size rule of issue 30 ("rooms of human size"): no file (*.cc, *.h) over
+# Holds src/ to the size rule of issue 30 ("rooms of human size"): no file (*.cc, *.h, *.py) over
 # 400 lines, no function over 60 lines. Prints every file and function over its limit and
 # exits 1; else prints one summary line and exits 0. File lengths by wc -l, function lengths
 # by pmccabe (Debian package pmccabe; its 5th column is a function's lines, its last
-# "file(line): name"). Run from anywhere; the optional argument is the folder to check, and
+# "file(line): name"), a Python function's by Python's ast. Run from anywhere; the optional argument is the folder to check, and
 # `--except FOLDER` leaves out a folder inside it (the check's own too-long fixture in tests/).
 # A CTest test (SizesTest) runs it, so `make test` and CI hold every change to it.
 set -euo pipefail
@@ -31,9 +31,14 @@ if [ ${#files[@]} -eq 0 ]; then
   exit 2
 fi
 
+# Python files are measured too: their functions by Python's own parser (ast)
+mapfile -t py_files < <(find "$src" -type f -name '*.py' -not -path '*/__pycache__/*' |
+  { if [ -n "$except" ]; then grep -v "^$except/"; else cat; fi; } | sort)
+py_files=("${py_files[@]#"$root"/}")
+
 # files: "lines<TAB>path", longest first
-file_lines="$(for f in "${files[@]}"; do printf '%s\t%s\n' "$(awk 'END { print NR }' "$f")" "$f"; done |
-  sort -t$'\t' -k1,1nr)"
+file_lines="$(for f in "${files[@]}" "${py_files[@]}"; do
+  printf '%s\t%s\n' "$(awk 'END { print NR }' "$f")" "$f"; done | sort -t$'\t' -k1,1nr)"
 
 # functions: "lines<TAB>file(line): name", longest first. pmccabe parses C, not C++17: it
 # loses its way at `noexcept` and `override`, so it reads copies without those words (the
@@ -52,6 +57,17 @@ if [ -s "$work/.errors" ]; then
   exit 1
 fi
 
+if [ ${#py_files[@]} -gt 0 ]; then
+  function_lines="$(printf '%s\n' "$function_lines" "$(python3 - "${py_files[@]}" <<'PY'
+import ast, sys
+for path in sys.argv[1:]:
+    for node in ast.walk(ast.parse(open(path).read(), path)):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            print(f"{node.end_lineno - node.lineno + 1}\t{path}({node.lineno}): {node.name}")
+PY
+)" | grep . | sort -t$'\t' -k1,1nr)"
+fi
+
 over_files="$(awk -F'\t' -v max="$MAX_FILE_LINES" '$1 > max' <<<"$file_lines")"
 over_functions="$(awk -F'\t' -v max="$MAX_FUNCTION_LINES" '$1 > max' <<<"$function_lines")"
 
@@ -63,7 +79,7 @@ if [ -n "$over_files" ] || [ -n "$over_functions" ]; then
   exit 1
 fi
 
-n_files=${#files[@]}
+n_files=$((${#files[@]} + ${#py_files[@]}))
 n_functions="$(grep -c . <<<"$function_lines" || true)"
 IFS=$'\t' read -r largest_lines largest_file <<<"$(head -n 1 <<<"$file_lines")"
 IFS=$'\t' read -r longest_lines longest_function <<<"$(head -n 1 <<<"$function_lines")"
