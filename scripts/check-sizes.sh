@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# Holds src/ to the size rule of issue 30 ("rooms of human size"): no file (*.cc, *.h, *.py) over
-# 400 lines, no function over 60 lines. Prints every file and function over its limit and
+# Holds src/ to the size rule of issue 30 ("rooms of human size"): no file (*.cc, *.h, *.py)
+# over 400 lines, no function over 60 lines. Prints every file and function over its limit and
 # exits 1; else prints one summary line and exits 0. File lengths by wc -l, function lengths
 # by pmccabe (Debian package pmccabe; its 5th column is a function's lines, its last
-# "file(line): name"), a Python function's by Python's ast. Run from anywhere; the optional argument is the folder to check, and
-# `--except FOLDER` leaves out a folder inside it (the check's own too-long fixture in tests/).
+# "file(line): name"), a Python function's by Python's ast. Run from anywhere; the optional
+# argument is the folder to check, and `--except FOLDER` leaves out a folder inside it (the
+# check's own too-long fixture in tests/).
 # A CTest test (SizesTest) runs it, so `make test` and CI hold every change to it.
 set -euo pipefail
 
