@@ -42,7 +42,9 @@ configure: deps
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
-demo: build
+# the demo builds the one program it runs (make test builds the rest)
+demo: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target pamsim
 	bash scripts/demo.sh $(PAMSIM)
 
 test: build

@@ -70,7 +70,7 @@ TEST(CliReproduceTest, ARunFromItsFolderWritesByteIdenticalOutputs) {
 
 // The inputs are fingerprinted: a file changed since the run is named when it runs again.
 TEST(CliReproduceTest, AnInputChangedSinceTheRunIsNamedWhenItRunsAgain) {
-  const fs::path dir = fresh_dir("reproduce_changed");
+  const fs::path dir = fresh_dir("reproduce_inputs");
   const std::string calibration =
       std::string(PAMSIM_SOURCE_DIR) + "/models/arm_2pam_plant_calibration.toml";
   fs::copy_file(calibration, dir / "cal.toml");

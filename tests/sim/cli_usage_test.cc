@@ -19,12 +19,16 @@ TEST(CliUsageTest, UsageErrorsExitTwoInOneLineWithTheCommandsThereAre) {
   };
   for (const Case& c : std::vector<Case>{
            {"", "commands: fit, estimate, tensile"},
-           {"rnu scenarios/drop_mass.toml", "did you mean run?"},
+           {"rnu scenarios/drop_mass.toml", "unknown command 'rnu'; commands: fit"},
+           {"runn scenarios/drop_mass.toml", "did you mean run?"},
            {"validate", "commands: length-estimation, reaching"},
-           {"validate reachin", "did you mean reaching?"},
+           {"validate reachin", "unknown command 'reachin'; commands: length-estimation, "
+                                "reaching; did you mean reaching?"},
            {"run", "run needs a scenario file, or --from DIR"},
            {"sweep scenarios/sweep_smoke.toml --bogus", "--bogus"},
            {"run scenarios/drop_mass.toml --trials x", "--trials"},
+           {"run scenarios/drop_mass.toml --trials 2.5", "--trials must be a whole number"},
+           {"sweep scenarios/sweep_smoke.toml --threads two", "--threads must be a whole number"},
            // thread counts are bounded (issue 14 item 3): 0 means all cores
            {"run scenarios/drop_mass.toml --threads 100000", "--threads must be 1 to 1024"},
            {"sweep scenarios/sweep_smoke.toml --threads 5000 --out /tmp/pamsim_no_sweep",

@@ -155,6 +155,19 @@ TEST_F(SweepReportTest, PointsCsvGivesTheHeadlineMetricsAndAnIncompleteSweepSays
             std::string::npos);
 }
 
+// A best point on a grid's first or last level is named: a better one may lie beyond.
+TEST_F(SweepReportTest, APointOnTheGridsEdgeIsNamed) {
+  const pamsim::SweepSummary sweep = synthetic_summary(dir_);
+  // point 1: v = 50 (the lowest of 50, 60), k = 0.002 (inside 0.001-0.003)
+  EXPECT_EQ(pamsim::grid_edges_of(sweep, sweep.points[1]),
+            (std::vector<std::string>{"reflex.v_thr_mm_s = 50.0 (the grid's lowest level)"}));
+  // point 3: v = 60 (the highest), k = 0.001 (the lowest)
+  EXPECT_EQ(pamsim::grid_edges_of(sweep, sweep.points[3]).size(), 2u);
+  pamsim::SweepSummary random = sweep;
+  random.design = "random";
+  EXPECT_TRUE(pamsim::grid_edges_of(random, sweep.points[3]).empty());
+}
+
 TEST_F(SweepReportTest, BestScenarioKeepsTheBaseAndSetsThePoint) {
   const pamsim::SweepSummary sweep = synthetic_summary(dir_);
   const pamsim::PointSummary* best = pamsim::best_point(sweep, "peak_drop_deg");

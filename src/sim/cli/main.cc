@@ -16,9 +16,14 @@
 
 namespace {
 
-// "; commands: a, b, c" (and "; did you mean b?") for the deepest command given whose
-// subcommand is missing or unknown; "" otherwise.
-std::string subcommand_hint(const CLI::App& app, int argc, char** argv) {
+// A missing or unknown subcommand of the deepest command given: the word given (empty when
+// none was) and "; commands: a, b, c" (and "; did you mean b?"); both empty otherwise.
+struct SubcommandProblem {
+  std::string unknown;
+  std::string hint;
+};
+
+SubcommandProblem subcommand_problem(const CLI::App& app, int argc, char** argv) {
   const CLI::App* at = &app;
   int next = 1;
   // walk the subcommands the arguments name
@@ -33,20 +38,47 @@ std::string subcommand_hint(const CLI::App& app, int argc, char** argv) {
   }
   const std::vector<const CLI::App*> subs =
       at->get_subcommands(std::function<bool(const CLI::App*)>{});
-  if (subs.empty()) return "";
+  if (subs.empty()) return {};
   const bool missing = next >= argc;
   const bool unknown = !missing && argv[next][0] != '-';
-  if (!missing && !unknown) return "";
+  if (!missing && !unknown) return {};
   std::string list;
   std::vector<std::string> names;
   for (const CLI::App* s : subs) {
     list += (list.empty() ? "" : ", ") + s->get_name();
     names.push_back(s->get_name());
   }
-  std::string hint = "; commands: " + list;
+  SubcommandProblem problem{unknown ? argv[next] : "", "; commands: " + list};
   const std::string nearest = unknown ? pamsim::nearest_name(argv[next], names) : "";
-  if (!nearest.empty()) hint += "; did you mean " + nearest + "?";
-  return hint;
+  if (!nearest.empty()) problem.hint += "; did you mean " + nearest + "?";
+  return problem;
+}
+
+// "--trials must be a whole number >= 0, got 2.5" for CLI11's "Could not convert: --trials =
+// 2.5", from the option's type; CLI11's own text for anything else.
+std::string conversion_message(const CLI::App& app, const std::string& what) {
+  const std::string head = "Could not convert: ";
+  const std::size_t eq = what.find(" = ");
+  if (what.rfind(head, 0) != 0 || eq == std::string::npos) return what;
+  const std::string name = what.substr(head.size(), eq - head.size());
+  const std::string value = what.substr(eq + 3);
+  const CLI::App* at = &app;
+  for (const CLI::App* sub : app.get_subcommands()) at = sub;   // the command given
+  const CLI::Option* opt = at->get_option_no_throw(name);
+  const std::string type = opt ? opt->get_type_name() : "";
+  const std::string wanted = type == "UINT"    ? "a whole number >= 0"
+                             : type == "INT"   ? "a whole number"
+                             : type == "FLOAT" ? "a number"
+                                               : "a value of type " + type;
+  return type.empty() ? what : name + " must be " + wanted + ", got " + value;
+}
+
+// The one line a usage error is told in: an unknown command by name (CLI11 says "A
+// subcommand is required" for it), a value by its option's type.
+std::string usage_message(const CLI::App& app, const CLI::ParseError& e, int argc, char** argv) {
+  const SubcommandProblem problem = subcommand_problem(app, argc, argv);
+  if (!problem.unknown.empty()) return "unknown command '" + problem.unknown + "'" + problem.hint;
+  return conversion_message(app, e.what()) + problem.hint;
 }
 
 }  // namespace
@@ -83,8 +115,8 @@ int main(int argc, char** argv) {
     // one line, like every other input error (CLI11's own exit adds a second one), exit 2
     // (CLI11's own codes, 104-109, are not pamsim's); a missing or unknown subcommand is
     // answered with the ones there are, and the nearest name
-    std::cerr << "pamsim: "
-              << pamsim::printable_message(e.what() + subcommand_hint(app, argc, argv)) << "\n";
+    std::cerr << "pamsim: " << pamsim::printable_message(usage_message(app, e, argc, argv))
+              << "\n";
     return 2;
   } catch (const pamsim::CommandExit& e) {
     return e.code;

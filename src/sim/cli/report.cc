@@ -111,6 +111,10 @@ const PointSummary* report_best_point(const ReportOptions& opt, const SweepSumma
     setting += (a ? ", " : "") + sweep.axis_keys[a] + " = " + best->axis_values[a];
   }
   std::cout << "best: point " << best->point << ": " << setting << "\n";
+  for (const std::string& edge : grid_edges_of(sweep, *best)) {
+    std::cout << "  warning: the best point lies on the grid's edge, " << edge
+              << ": a better one may lie beyond it (widen that axis's range)\n";
+  }
   for (const std::string& name :
        {opt.metric, std::string("recovery_time_s"), std::string("first_trigger_time_s"),
         std::string("impact_time_s")}) {

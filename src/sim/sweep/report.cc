@@ -340,4 +340,21 @@ std::string points_markdown(const SweepSummary& sweep, const std::vector<std::st
   return out;
 }
 
+std::vector<std::string> grid_edges_of(const SweepSummary& sweep, const PointSummary& point) {
+  std::vector<std::string> edges;
+  if (sweep.design != "grid") return edges;
+  for (std::size_t a = 0; a < sweep.axis_keys.size(); ++a) {
+    const std::vector<std::string>& levels = sweep.axis_levels[a];
+    double v = 0;
+    const std::string& text = point.axis_values[a];
+    const auto parsed = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (!sweep.axis_cases[a].empty() || levels.size() < 2 || parsed.ec != std::errc()) continue;
+    if (text == levels.front() || text == levels.back()) {
+      edges.push_back(sweep.axis_keys[a] + " = " + text + " (the grid's " +
+                      (text == levels.front() ? "lowest" : "highest") + " level)");
+    }
+  }
+  return edges;
+}
+
 }  // namespace pamsim

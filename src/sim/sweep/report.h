@@ -80,6 +80,11 @@ inline const std::vector<std::string> kPointsCsvMetrics = {
 std::string points_csv(const SweepSummary& sweep, const std::string& metric = "peak_drop_deg",
                        bool all_columns = false);
 
+// The numeric grid axes on whose first or last level `point` lies, each as "key = value (the
+// grid's lowest|highest level)": a best point there may have a better one beyond the grid.
+// Empty for a random or lhs design and for case or text axes.
+std::vector<std::string> grid_edges_of(const SweepSummary& sweep, const PointSummary& point);
+
 // table.md: the points as a Markdown table a paper's table of conditions reads like: one row
 // per point (its axes' values: a case axis's case names), the seeds that ran ok of those
 // stored, and each of `metrics` as "mean [min, max]" over those seeds (4 significant
