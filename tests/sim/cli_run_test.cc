@@ -188,3 +188,26 @@ TEST(CliRunTest, CalibrateReproducesTheShippedCalibration) {
 }
 
 }  // namespace
+
+namespace {
+
+// A plant changed after the lines were calibrated moves the start (a 1.5 mm wall: -36 to
+// -32.9 deg); the run says so in one line and names the way to keep the start, which holds.
+TEST(CliRunTest, AStartTheCalibrationNoLongerHoldsIsNamed) {
+  const fs::path dir = fresh_dir("run_start_moved");
+  const std::string run = "run scenarios/drop_mass.toml --no-plot --out ";
+  const std::string wall = " --set muscles.agonist.plant.geometry.wall_thickness_mm=1.5";
+  const CliResult moved = run_pamsim(run + (dir / "a").string() + pamsim_test::kShortDrop + wall);
+  ASSERT_EQ(moved.exit_code, 0) << moved.err;
+  EXPECT_NE(moved.err.find("warning: the arm starts at -3"), std::string::npos) << moved.err;
+  EXPECT_NE(moved.err.find("not the -36.0 deg"), std::string::npos) << moved.err;
+  EXPECT_NE(moved.err.find("line = \"equilibrium\""), std::string::npos) << moved.err;
+  const CliResult held = run_pamsim(run + (dir / "b").string() + pamsim_test::kShortDrop + wall +
+                                    " muscles.agonist.line=\\\"equilibrium\\\"");
+  ASSERT_EQ(held.exit_code, 0) << held.err;
+  EXPECT_EQ(held.err.find("warning"), std::string::npos) << held.err;
+  const CliResult shipped = run_pamsim(run + (dir / "c").string() + pamsim_test::kShortDrop);
+  EXPECT_EQ(shipped.err.find("warning"), std::string::npos) << shipped.err;
+}
+
+}  // namespace
