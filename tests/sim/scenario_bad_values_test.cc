@@ -123,6 +123,8 @@ std::vector<BadOverride> bad_file_overrides() {
       // a plant that is not the muscle its estimator describes (216 mm against 180 mm)
       {"muscles.agonist.plant=\"../models/pams/plant_pam_a.toml\"",
        "muscles.agonist.plant has a length of 216 mm, but its estimator's file"},
+      // and how to change both, for the braid angle
+      {"muscles.agonist.plant.geometry.braid_angle_deg=30", "describes 25 deg: change both"},
       {"muscles.agonist.plant=\"../models/pams/missing.toml\"", "missing.toml"},
       {"valve.tube_critical_pressure_ratio=0.9995", "tube critical pressure ratio must be in [0, laminar ratio)"},
       {"sensors.noise_scale=1e4", "sensors.noise_scale"},

@@ -140,7 +140,9 @@ void read_muscle_plant(ConfigReader& in, MuscleSpec* muscle) {
   const auto mismatch = [&](const char* what, double plant, double estimator, const char* unit) {
     return std::string("has a ") + what + " of " + format_value(plant) + " " + unit +
            ", but its estimator's file (" + m.params_file + ", [geometry]) describes " +
-           format_value(estimator) + " " + unit;
+           format_value(estimator) + " " + unit + ": change both, fitting an estimator to the "
+           "changed plant (pamsim tensile --plant FILE --set ..., then pamsim fit) and giving "
+           "it as its params file";
   };
   in.check(std::abs(m.plant.length_m - g.length_m) <= kPlantLengthTolerance_m, m.key + ".plant",
            mismatch("length", units::m_to_mm(m.plant.length_m), units::m_to_mm(g.length_m), "mm"));
