@@ -250,3 +250,28 @@ TEST_F(PlotTest, MissingGnuplotSaysSo) {
 
 }  // namespace
 }  // namespace pamsim
+
+namespace pamsim {
+namespace {
+
+// The legend lists only what is drawn: a run of one trial has no band (it would be invisible)
+// and its line is named as the run, not as a mean.
+TEST(BandPlotItemsTest, ASingleTrialHasNoBandAndItsLineIsTheRun) {
+  BandSeries one, three;
+  one.label = "passive";
+  one.trials = 1;
+  three.label = "reflex";
+  three.trials = 3;
+  const std::vector<std::string> items = band_plot_items({three, one});
+  ASSERT_EQ(items.size(), 3u);   // the reflex's band, then both lines
+  EXPECT_NE(items[0].find("filledcurves"), std::string::npos);
+  EXPECT_NE(items[0].find("'reflex min-max over 3 trials'"), std::string::npos) << items[0];
+  EXPECT_NE(items[1].find("title 'reflex mean'"), std::string::npos) << items[1];
+  EXPECT_NE(items[2].find("title 'passive'"), std::string::npos) << items[2];
+  for (const std::string& item : items) {
+    EXPECT_EQ(item.find("passive min-max"), std::string::npos) << item;
+  }
+}
+
+}  // namespace
+}  // namespace pamsim

@@ -67,27 +67,35 @@ GnuplotJob band_job(const std::vector<BandSeries>& runs, const std::string& titl
     extra_keys = ", keyentry with lines dt 2 lw 1.5 lc rgb 'black' title 'drop (release)'";
   }
 
-  // bands first (semi-transparent), then the mean lines on top
+  const std::vector<std::string> items = band_plot_items(runs);
   s << "plot ";
-  const std::size_t n_colours = sizeof(kBandColours) / sizeof(kBandColours[0]);
-  for (std::size_t k = 0; k < runs.size(); ++k) {
-    const std::string colour = kBandColours[k % n_colours];
-    const std::string label =
-        runs[k].label + " min-max over " + std::to_string(runs[k].trials) + " trials";
-    s << (k ? ", " : "") << "'band_" << k << ".dat' using 1:3:4 with filledcurves fc rgb '"
-      << colour << "' fs transparent solid 0.25 noborder title " << gp_quote(label);
-  }
-  for (std::size_t k = 0; k < runs.size(); ++k) {
-    const std::string colour = kBandColours[k % n_colours];
-    s << ", 'band_" << k << ".dat' using 1:2 with lines lw 2 lc rgb '" << colour << "' title "
-      << gp_quote(runs[k].label + " mean");
-  }
+  for (std::size_t i = 0; i < items.size(); ++i) s << (i ? ", " : "") << items[i];
   s << extra_keys << "\n";
   job.script = s.str();
   return job;
 }
 
 }  // namespace
+
+// bands first (semi-transparent), then the lines on top
+std::vector<std::string> band_plot_items(const std::vector<BandSeries>& runs) {
+  std::vector<std::string> items;
+  const std::size_t n_colours = sizeof(kBandColours) / sizeof(kBandColours[0]);
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    if (runs[k].trials < 2) continue;
+    const std::string label =
+        runs[k].label + " min-max over " + std::to_string(runs[k].trials) + " trials";
+    items.push_back("'band_" + std::to_string(k) + ".dat' using 1:3:4 with filledcurves fc rgb '" +
+                    kBandColours[k % n_colours] + "' fs transparent solid 0.25 noborder title " +
+                    gp_quote(label));
+  }
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const std::string label = runs[k].trials < 2 ? runs[k].label : runs[k].label + " mean";
+    items.push_back("'band_" + std::to_string(k) + ".dat' using 1:2 with lines lw 2 lc rgb '" +
+                    kBandColours[k % n_colours] + "' title " + gp_quote(label));
+  }
+  return items;
+}
 
 BandSeries angle_band(const std::vector<const Trajectory*>& trials, std::string label) {
   if (trials.empty()) throw std::invalid_argument("angle_band: no trajectories");
@@ -227,7 +235,9 @@ void write_compare_plot(const std::string& png_path, const std::vector<BandSerie
     if (b.time_s.empty()) throw std::runtime_error(png_path + ": band '" + b.label + "' is empty");
     title += (k ? " vs " : "") + b.label;
   }
-  run_gnuplot(png_path, band_job(runs, title + " (mean and range)", kNaN));
+  const bool bands = std::any_of(runs.begin(), runs.end(),
+                                 [](const BandSeries& b) { return b.trials > 1; });
+  run_gnuplot(png_path, band_job(runs, bands ? title + " (mean and range)" : title, kNaN));
 }
 
 }  // namespace pamsim

@@ -100,6 +100,10 @@ void write_angle_band_plot(const std::string& png_path,
                            const Scenario& scenario);
 // Two (or more) runs' bands on one axis, one colour each, with a legend.
 void write_compare_plot(const std::string& png_path, const std::vector<BandSeries>& runs);
+// The gnuplot plot items of bands (band_<k>.dat): each band of two or more trials as its
+// min-max area, then each run's line (its mean, or a single trial as itself), titled as the
+// legend shows them: a run of one trial has no band, so its legend lists only its line.
+std::vector<std::string> band_plot_items(const std::vector<BandSeries>& runs);
 // Throws std::invalid_argument if the cells or points do not match the levels or each other.
 // Without cell_texts, a grid cell prints its value with cell_format.
 void write_heatmap(const std::string& png_path, const HeatMap& map);
