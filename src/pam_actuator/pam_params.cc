@@ -124,6 +124,24 @@ PamParams load_pam_params(const std::string& path) {
   return f.params;
 }
 
+void validate_pam_params(const SpringModel& spring, const StrainGaugeParams& gauge,
+                         const std::string& key_prefix) {
+  PamFile f;
+  f.law = spring.law;
+  const std::size_t law = static_cast<std::size_t>(
+      std::find(std::begin(kLaws), std::end(kLaws), f.law) - std::begin(kLaws));
+  spring_model_to_paper_units(spring, &f.m_mm_per_mpa, &f.h_mm, &f.coef[law]);
+  f.gauge = gauge;
+  const std::vector<KeyTable> tables = pam_key_tables(&f);
+  for (const char* name : {"strain_gauge", "spring"}) {   // the gauge first, as a reader meets it
+    for (KeyTable table : tables) {
+      if (table.name != name) continue;
+      table.name = key_prefix + "." + table.name;
+      check_key_rows(table);
+    }
+  }
+}
+
 std::vector<KeyDoc> pam_key_docs() {
   PamFile f;
   return key_table_docs(pam_key_tables(&f));

@@ -50,6 +50,12 @@ struct PamParams {
 // or a non-finite / out-of-range value.
 PamParams load_pam_params(const std::string& path);
 
+// Checks a spring law and gauge given in code (not read from a file) against the parameter
+// file's own rows, in the paper's units: the law's coefficients finite, h > 0, q > 0. Throws
+// InputError "<key_prefix>.spring.h must be in (0, inf) mm, got -1" and the like.
+void validate_pam_params(const SpringModel& spring, const StrainGaugeParams& gauge,
+                         const std::string& key_prefix);
+
 // The TOML text of `params` in the same format (paper units), for `fit -o`.
 std::string pam_params_to_toml(const PamParams& params);
 

@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include "pam_actuator/pam_params.h"
 #include "sensing/checks.h"
 #include "sensing/instrument_keys.h"
 #include "sensing/sensor_keys.h"
@@ -63,19 +64,8 @@ void validate(const SensingConfig& config) {
 }
 
 void validate(const MuscleSensorSpec& muscle) {
-  // the gauge's slope and offset, and a finite estimator law
-  const std::string& key = muscle.key;
-  require_positive(key + ".strain_gauge.q_V_per_N", muscle.gauge.q_v_per_n);
-  require_finite(key + ".strain_gauge.V_base_V", muscle.gauge.v_base_v);
-  double m_mm_per_mpa = 0.0;
-  double h_mm = 0.0;
-  std::array<double, 6> coef{};
-  spring_model_to_paper_units(muscle.estimator, &m_mm_per_mpa, &h_mm, &coef);
-  require_finite(key + ".spring.m", m_mm_per_mpa);
-  require_positive(key + ".spring.h", h_mm);
-  for (int k = 0; k < coefficient_count(muscle.estimator.law); ++k) {
-    require_finite(key + ".spring." + coefficient_name(muscle.estimator.law, k), coef[k]);
-  }
+  // the gauge's slope and offset and a finite estimator law: the parameter file's own rows
+  validate_pam_params(muscle.estimator, muscle.gauge, muscle.key);
 }
 
 SensorSuite::SensorSuite(const SensingConfig& config,

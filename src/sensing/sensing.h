@@ -52,7 +52,8 @@ struct SensingConfig {
 
 // Throw InputError "<key> must be ..., got <value>" naming the scenario key:
 // sim.control_hz, sensors.*, reflex.lowpass_hz; and for a muscle
-// <key>.strain_gauge.q_V_per_N (> 0), .V_base_V and .spring.* (finite, h > 0).
+// <key>.strain_gauge.q_V_per_N (> 0), .V_base_V and .spring.* (finite, h > 0), by the
+// parameter file's own rows (validate_pam_params).
 void validate(const SensingConfig& config);
 void validate(const MuscleSensorSpec& muscle);
 
