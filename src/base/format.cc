@@ -2,6 +2,7 @@
 #include "base/format.h"
 
 #include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +19,18 @@ std::string format_shortest(double v) {
   if (std::isnan(v)) return "nan";
   char buf[40];
   return std::string(buf, std::to_chars(buf, buf + sizeof(buf), v).ptr);   // shortest exact
+}
+
+std::string format_with_error(double value, double error) {
+  if (!(std::isfinite(value) && std::isfinite(error) && error > 0 && error < 1e9 &&
+        error >= 1e-12)) {
+    return format_value(value) + " +- " + format_value(error);
+  }
+  // the decimals that leave two significant digits of the error
+  const int decimals = std::max(0, 1 - static_cast<int>(std::floor(std::log10(error))));
+  char buf[96];
+  std::snprintf(buf, sizeof(buf), "%.*f +- %.*f", decimals, value, decimals, error);
+  return buf;
 }
 
 std::string format_number(double v) {

@@ -14,6 +14,11 @@ std::string format_value(double v);
 std::string format_shortest(double v);
 // format_shortest with ".0" appended to an integer-looking result, so TOML reads a float.
 std::string format_number(double v);
+// A value and its uncertainty as a reader writes them: the uncertainty to two significant
+// digits and the value to the same decimal place ("2.7006 +- 0.0053", "123 +- 13"); each
+// as format_value when the uncertainty is not finite and positive, or too small or large
+// for fixed decimals.
+std::string format_with_error(double value, double error);
 
 // A message as one line a terminal shows as it is: a value echoed from the input may be
 // megabytes long (a word over 512 bytes, longer than any sensible path, is cut to its two

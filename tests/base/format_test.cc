@@ -109,3 +109,20 @@ TEST(FormatTest, TomlTextRoundTripsAndWritesFloatsShortest) {
 
 }  // namespace
 }  // namespace pamsim
+
+namespace pamsim {
+namespace {
+
+// A value to its uncertainty's two significant digits, as a reader writes it.
+TEST(FormatWithErrorTest, TheValueHasTheUncertaintysDecimals) {
+  EXPECT_EQ(format_with_error(2.700591, 0.005312), "2.7006 +- 0.0053");
+  EXPECT_EQ(format_with_error(123.4, 13.2), "123 +- 13");
+  EXPECT_EQ(format_with_error(0.15104, 0.0013), "0.1510 +- 0.0013");
+  EXPECT_EQ(format_with_error(-36.04, 0.5), "-36.04 +- 0.50");
+  // no fixed decimals for a non-finite or non-positive uncertainty
+  EXPECT_EQ(format_with_error(1.5, 0.0), "1.5 +- 0");
+  EXPECT_EQ(format_with_error(1.5, std::nan("")), "1.5 +- nan");
+}
+
+}  // namespace
+}  // namespace pamsim

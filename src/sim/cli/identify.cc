@@ -42,13 +42,15 @@ void print_result(const IdentifyResult& r, const std::optional<IdentifyPlan>& pl
   std::cout << "identified (cost " << format_value(r.cost_global) << " after CMA-ES, "
             << format_value(r.cost_final) << " after the polish):\n";
   for (const IdentifiedParameter& p : r.parameters) {
-    std::cout << "  " << p.parameter.key << " = " << format_value(p.value);
-    if (!p.identifiable) std::cout << "  (not determined by the recordings)";
-    else std::cout << " +- " << format_value(p.std_error) << ", "
-                   << format_value(100.0 * r.interval_level) << " % in ["
-                   << format_value(p.interval_lo) << ", " << format_value(p.interval_hi) << "]"
-                   << (p.at_bound ? "  (at a bound)" : "");
-    std::cout << "\n";
+    std::cout << "  " << p.parameter.key << " = ";
+    if (!p.identifiable) {
+      std::cout << format_value(p.value) << "  (not determined by the recordings)\n";
+      continue;
+    }
+    std::cout << format_with_error(p.value, p.std_error) << ", "
+              << format_value(100.0 * r.interval_level) << " % in [" << format_value(p.interval_lo)
+              << ", " << format_value(p.interval_hi) << "]" << (p.at_bound ? "  (at a bound)" : "")
+              << "\n";
   }
   for (const ChannelFit& f : r.fits) {
     std::cout << "  " << f.recording << " " << f.channel << (f.held_out ? " (held out)" : "")
@@ -96,7 +98,8 @@ void identify(const IdentifyOptions& opt) {
   std::cerr << "pamsim identify: " << def.parameters.size() << " parameters, "
             << def.recordings.size() << " recordings; CMA-ES " << def.generations
             << " generations of " << def.population << ", then up to " << def.polish_iterations
-            << " Levenberg-Marquardt iterations, on " << threads << " threads into " << where.path
+            << " Levenberg-Marquardt iterations, on " << threads
+            << (threads == 1 ? " thread" : " threads") << " into " << where.path
             << " (" << db.size() << " points stored)\n";
   StopOnSignal stop_on_signal;
   IdentifyRunOptions run;

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -75,9 +76,11 @@ void render(RenderCommandOptions opt) {
 
   const std::string where = video.mp4_path.empty() ? video.png_dir + "/" : video.mp4_path;
   std::cerr << "pamsim: GL: " << r.gl << "\n";
+  char took[64];   // to sensible digits: "8.94 s, 5.37 frames/s"
+  std::snprintf(took, sizeof(took), "%.3g s, %.3g frames/s", wall_s, r.frames / wall_s);
   std::cerr << "pamsim: " << where << ": " << r.frames << " frames of " << video.width_px << "x"
-            << video.height_px << " at " << video.fps << " fps (" << r.encoder << ") in " << wall_s << " s: " << r.frames / wall_s
-            << " frames/s\n";
+            << video.height_px << " at " << video.fps << " fps (" << r.encoder << ") in " << took
+            << "\n";
   const TrialSummary& s = r.trial.summary;
   if (s.status != "ok") {
     std::cerr << "pamsim: " << sc.path << ": trial with seed " << s.seed << " " << s.status
