@@ -189,7 +189,7 @@ TrialSummary TrialRun::finish(long steps, std::chrono::steady_clock::duration wa
   record.tension_trigger_times_s = controller_->tension_trigger_times_s();
   record.peak_tension_n = peak_tension_n_;
   record.steps = steps;
-  record.sim_time_s = steps * sc_.timestep_s;
+  record.sim_time_s = time_at(steps);
   record.wall_time_s = std::chrono::duration<double>(wall - observer_wall_).count();
   record.cvode_steps = pneumatics_.steps();
   record.cvode_rhs_evals = pneumatics_.rhs_evals();
@@ -210,6 +210,10 @@ void TrialRun::begin() {
   start_state();
   n_steps_ = std::lround(sc_.duration_s / sc_.timestep_s);
   control_every_ = std::lround(1.0 / (sc_.control_hz * sc_.timestep_s));
+  const double per_second = 1.0 / sc_.timestep_s;
+  if (std::fabs(per_second - std::round(per_second)) < 1e-9 * per_second) {
+    steps_per_second_ = std::lround(per_second);
+  }
   result_.trajectory.values.reserve((n_steps_ / control_every_ + 1) * layout_.columns.size());
 
   wall_start_ = std::chrono::steady_clock::now();
@@ -221,6 +225,8 @@ void TrialRun::begin() {
 
 bool TrialRun::step() {
   if (ended()) return false;
+  // the controller's and the events' clock, as it always was (the schedules' edges fall
+  // where they fell); what is recorded reads time_at(step_)
   const double t = step_ * sc_.timestep_s;
   // an event or the controller can end the trial before the step counts; a step that
   // diverges or fires an ending event counts
@@ -237,6 +243,13 @@ bool TrialRun::step() {
   return going;
 }
 
+double TrialRun::time_at(long steps) const {
+  if (steps_per_second_ > 0) {
+    return static_cast<double>(steps) / static_cast<double>(steps_per_second_);
+  }
+  return static_cast<double>(steps) * sc_.timestep_s;
+}
+
 TrialResult TrialRun::end() {
   const auto wall = std::chrono::steady_clock::now() - wall_start_;
   finish(step_, wall);
@@ -246,7 +259,7 @@ TrialResult TrialRun::end() {
 
 TrialObservation TrialRun::observe() const {
   TrialObservation o;
-  o.time_s = d_->time;
+  o.time_s = time_at(step_);
   o.steps = step_;
   o.joint_position = joint_position();
   o.joint_velocity = d_->qvel[tm_.joint.dof];

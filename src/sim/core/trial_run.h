@@ -119,6 +119,12 @@ class TrialRun {
   long step_ = 0;
   long n_steps_ = 0;
   long control_every_ = 1;
+  // The time after `steps` steps, as the log and the metrics give it: steps / (steps per
+  // second) when a second is a whole number of steps (1150 steps of 1 ms are 1.15 s, not
+  // 1.1500000000000001), else steps x timestep. MuJoCo's own clock (d->time) adds the step
+  // up and drifts (1.168999999999982); the physics does not read these times.
+  double time_at(long steps) const;
+  long steps_per_second_ = 0;   // 0: a second is no whole number of steps
   bool ended_ = false;
   std::chrono::steady_clock::time_point wall_start_;
   const std::vector<double>* external_pa_ = nullptr;

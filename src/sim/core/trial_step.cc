@@ -63,7 +63,7 @@ bool TrialRun::before_step(double t) {
     const BoundEvent& b = tm_.events[k];
     if (fired_[k] || sc_.events[k].when.kind != ConditionKind::kTime) continue;
     if (b.after >= 0 && !fired_[b.after]) continue;
-    if (t >= sc_.events[k].when.at_s - kTimeToleranceS) fire(k, t);
+    if (t >= sc_.events[k].when.at_s - kTimeToleranceS) fire(k, time_at(step_));
   }
   hold_bodies();
   return end_message_.empty();
@@ -93,10 +93,10 @@ bool TrialRun::after_step() {
   for (std::size_t k = 0; k < sc_.events.size(); ++k) {
     const int after = tm_.events[k].after;
     if (fired_[k] || (after >= 0 && !fired_[after])) continue;
-    if (condition_holds(k)) fire(k, d_->time);
+    if (condition_holds(k)) fire(k, time_at(step_));
   }
   for (MetricSet* set : step_metrics_) {
-    set->on_step(d_->time, joint_position(), event_time_s_);
+    set->on_step(time_at(step_), joint_position(), event_time_s_);
     set->on_state(d_);
   }
   if (d_->time >= next_observation_s_) show_observer();
@@ -124,7 +124,7 @@ bool TrialRun::control_tick(double t) {
     controller_->update(in, &out_);
     if (std::isnan(first_trigger_s_) &&
         std::any_of(out_.reflex_active.begin(), out_.reflex_active.end(), [](char a) { return a; })) {
-      first_trigger_s_ = t;
+      first_trigger_s_ = time_at(step_);   // recorded: the exact decimal time
     }
     const std::vector<double>& p_cmd = external_pa_ ? *external_pa_ : out_.p_cmd_pa;
     for (std::size_t i = 0; i < n_; ++i) pneumatics_.set_command(static_cast<int>(i), p_cmd[i]);
@@ -132,7 +132,7 @@ bool TrialRun::control_tick(double t) {
     set_status("diverged", std::string("controller: ") + e.what(), t);
     return false;
   }
-  log_row(t);
+  log_row(time_at(step_));
   return true;
 }
 
@@ -229,7 +229,7 @@ TrialSnapshot TrialRun::snapshot() {
   TrialSnapshot snapshot;
   snapshot.model = m_;
   snapshot.data = d_;
-  snapshot.time_s = d_->time;
+  snapshot.time_s = time_at(step_);
   snapshot.hinge = tm_.joint.hinge;
   snapshot.joint_position = tm_.joint.hinge ? units::rad_to_deg(joint_position())
                                             : units::m_to_mm(joint_position());
