@@ -2,9 +2,11 @@
 // frame is not empty, a falling ball moves down in it, drawing never writes to the caller's
 // mjData, and an unknown camera or a bad size is refused with a clear message.
 #include "sim/render/scene_renderer.h"
+#include "sim/render/trial_video.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -167,6 +169,30 @@ TEST(SceneRendererTest, SizeOutsideTheLimitsIsRefused) {
     options.width_px = w;
     options.height_px = h;
     EXPECT_THROW(SceneRenderer(model.get(), "ball.xml", options), InputError) << w << "x" << h;
+  }
+}
+
+}  // namespace
+}  // namespace pamsim
+
+namespace pamsim {
+namespace {
+
+// A live plot's four time labels are told apart with the fewest decimals: no "0 0.1 0.1 0.2".
+TEST(FigureTimeFormatTest, LabelsAreDistinctWithTheFewestDecimals) {
+  EXPECT_EQ(figure_time_format(3.0, 4), "%.0f");    // 0 1 2 3
+  EXPECT_EQ(figure_time_format(1.2, 4), "%.1f");    // 0 0.4 0.8 1.2
+  EXPECT_EQ(figure_time_format(0.15, 4), "%.2f");   // 0 0.05 0.10 0.15
+  EXPECT_EQ(figure_time_format(0.1, 4), "%.3f");    // 0.033..., as close as three digits go
+  for (const double duration : {0.15, 0.3, 0.6, 1.5, 4.5}) {
+    const std::string format = figure_time_format(duration, 4);
+    std::vector<std::string> labels;
+    for (int k = 0; k < 4; ++k) {
+      char label[32];
+      std::snprintf(label, sizeof(label), format.c_str(), duration * k / 3);
+      labels.push_back(label);
+    }
+    for (int k = 1; k < 4; ++k) EXPECT_NE(labels[k], labels[k - 1]) << duration << " " << format;
   }
 }
 

@@ -82,6 +82,22 @@ void append_point(mjvFigure* figure, int line, double x, double y) {
   ++n;
 }
 
+}  // namespace
+
+std::string figure_time_format(double duration_s, int grid_lines) {
+  // the labels' step, and the fewest decimals that write it exactly
+  const double step = duration_s / std::max(1, grid_lines - 1);
+  for (int decimals = 0; decimals < 3; ++decimals) {
+    const double scaled = step * std::pow(10.0, decimals);
+    if (std::abs(scaled - std::round(scaled)) < 1e-6 * std::max(1.0, scaled)) {
+      return "%." + std::to_string(decimals) + "f";
+    }
+  }
+  return "%.3f";
+}
+
+namespace {
+
 // A translucent figure over [0, duration] s with lines of the given colours; the title says
 // which line is which (a legend does not fit a plot this small).
 void init_figure(mjvFigure* figure, const char* title, const char* y_format, double duration_s,
@@ -95,11 +111,8 @@ void init_figure(mjvFigure* figure, const char* title, const char* y_format, dou
   figure->figurergba[3] = 0.6f;
   figure->panergba[3] = 0.6f;
   figure->gridsize[0] = 4;
-  // time labels at the 4 grid lines: whole seconds only when they fall on whole seconds (a
-  // 1.2 s trial would read "0 0 1 1")
-  const double x_step = duration_s / (figure->gridsize[0] - 1);
-  const bool whole = std::abs(x_step - std::round(x_step)) < 1e-9;
-  std::snprintf(figure->xformat, sizeof(figure->xformat), "%s", whole ? "%.0f" : "%.1f");
+  std::snprintf(figure->xformat, sizeof(figure->xformat), "%s",
+                figure_time_format(duration_s, figure->gridsize[0]).c_str());
   figure->gridsize[1] = 3;
   int i = 0;
   for (const auto& rgb : line_rgb) std::copy(rgb.begin(), rgb.end(), figure->linergb[i++]);

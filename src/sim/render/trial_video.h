@@ -43,6 +43,11 @@ struct VideoOptions {
   std::function<void(long, long)> on_frame;
 };
 
+// The printf format of a live plot's time labels at `grid_lines` lines over [0, duration_s]:
+// the fewest decimals (0-3) that tell the labels apart ("%.0f" for 3 s, "%.1f" for 1.2 s,
+// "%.2f" for 0.15 s, whose "%.1f" would read 0 0.1 0.1 0.2).
+std::string figure_time_format(double duration_s, int grid_lines);
+
 // libx264's presets, fastest first (what --preset accepts).
 inline constexpr const char* kX264Presets[] = {"ultrafast", "superfast", "veryfast", "faster",
                                                "fast",      "medium",    "slow",     "slower",
