@@ -140,10 +140,16 @@ std::string reflex_state(const TrialSnapshot& snap) {
 
 // muscle i's line colour in the pressure plot (the arm's agonist red, antagonist blue),
 // its command dimmer
+// Each muscle's own colour in the live plot, up to eight (a leg's), and its name in the key.
+constexpr std::size_t kMuscleColours = 8;
+constexpr std::array<float, 3> kMuscleRgb[kMuscleColours] = {
+    {0.95f, 0.3f, 0.3f},  {0.35f, 0.45f, 1.0f}, {0.3f, 0.8f, 0.35f}, {0.75f, 0.4f, 0.9f},
+    {1.0f, 0.6f, 0.15f},  {0.2f, 0.85f, 0.9f},  {1.0f, 0.5f, 0.8f},  {0.65f, 0.5f, 0.3f}};
+constexpr const char* kMuscleColourNames[kMuscleColours] = {
+    "red", "blue", "green", "purple", "orange", "cyan", "pink", "brown"};
+
 std::array<float, 3> muscle_rgb(std::size_t i, bool command) {
-  static const std::array<float, 3> kRgb[] = {
-      {0.95f, 0.3f, 0.3f}, {0.35f, 0.45f, 1.0f}, {0.3f, 0.8f, 0.35f}, {0.75f, 0.4f, 0.9f}};
-  std::array<float, 3> c = kRgb[i % 4];
+  std::array<float, 3> c = kMuscleRgb[i % kMuscleColours];
   if (command) {
     for (float& v : c) v *= 0.55f;
   }
@@ -203,19 +209,25 @@ TrialVideo::TrialVideo(const TrialModel& model, const Scenario& sc, const VideoO
   if (options.plot) {
     plots_ = std::make_unique<Plots>();
     // the muscles in their tendons' colours, commands dimmer
-    init_figure(&plots_->angle, model.joint.hinge ? "angle [deg]" : "position [mm]", "%.0f",
-                sc.duration_s, {{0.9f, 0.75f, 0.1f}});   // yellow
+    // the measured joint by name ("knee angle [deg]"): a leg has several
+    const std::string joint = model.joint.name + (model.joint.hinge ? " angle [deg]" : " position [mm]");
+    init_figure(&plots_->angle, joint.c_str(), "%.0f", sc.duration_s,
+                {{0.9f, 0.75f, 0.1f}});   // yellow
     std::vector<std::array<float, 3>> lines;
     const std::size_t n = std::min<std::size_t>(model.muscles.size(), mjMAXLINE / 2);
     for (std::size_t i = 0; i < n; ++i) lines.push_back(muscle_rgb(i, false));
     for (std::size_t i = 0; i < n; ++i) lines.push_back(muscle_rgb(i, true));
     lines.push_back({1.0f, 1.0f, 1.0f});   // the reflex trigger, white
     init_figure(&plots_->pressure, "pressure [MPa] (dim: command)", "%.1f", sc.duration_s, lines);
-    // one entry per colour, its muscles joined ("red IL/BFS"): short for a leg's eight
-    static const char* kColourNames[] = {"red", "blue", "green", "purple"};
-    for (std::size_t c = 0; c < std::min<std::size_t>(n, 4); ++c) {
-      plot_key_ += (c ? ", " : "") + std::string(kColourNames[c]) + " ";
-      for (std::size_t i = c; i < n; i += 4) plot_key_ += (i > c ? "/" : "") + model.muscles[i].label;
+    // one entry per colour: each muscle its own up to eight, more joined ("red IL/X"); four
+    // entries a line, so that the key stays clear of the numbers' box
+    constexpr std::size_t kPerLine = 4;
+    for (std::size_t c = 0; c < std::min(n, kMuscleColours); ++c) {
+      plot_key_ += std::string(c == 0 ? "" : c % kPerLine == 0 ? "\n" : ", ") +
+                   kMuscleColourNames[c] + " ";
+      for (std::size_t i = c; i < n; i += kMuscleColours) {
+        plot_key_ += (i > c ? "/" : "") + model.muscles[i].label;
+      }
     }
     plots_->angle.linergb[1][0] = plots_->angle.linergb[1][1] = plots_->angle.linergb[1][2] = 1.0f;
   }
@@ -282,6 +294,7 @@ void TrialVideo::draw_overlays(const TrialSnapshot& snap) {
   std::string key_values = line;
   if (plots_) {
     keys += "\nplot lines";
+    for (char c : plot_key_) keys += c == '\n' ? "\n" : "";   // a continued key's rows
     key_values += "\n" + plot_key_ + "; white: trigger";
   }
   renderer_.draw_text(keys.c_str(), key_values.c_str(), mjGRID_TOPRIGHT);
