@@ -171,6 +171,24 @@ void SceneRenderer::draw_figure(const mjrRect& viewport, mjvFigure* figure) {
   mjr_figure(viewport, figure, context_.get());
 }
 
+void SceneRenderer::draw_colour_bar(const mjrRect& bar,
+                                    const std::vector<std::array<float, 3>>& colours,
+                                    const char* low, const char* high) {
+  const int n = static_cast<int>(colours.size());
+  for (int k = 0; k < n; ++k) {
+    const int left = bar.left + bar.width * k / n;
+    const mjrRect cell{left, bar.bottom, bar.left + bar.width * (k + 1) / n - left, bar.height};
+    const std::array<float, 3>& c = colours[static_cast<std::size_t>(k)];
+    mjr_rectangle(cell, c[0], c[1], c[2], 1.0f);
+  }
+  // the labels in boxes of their own beside the bar, on its bottom line
+  const mjrRect before{0, bar.bottom, bar.left, viewport_.height - bar.bottom};
+  const mjrRect after{bar.left + bar.width, bar.bottom, viewport_.width - bar.left - bar.width,
+                      viewport_.height - bar.bottom};
+  mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMRIGHT, before, low, nullptr, context_.get());
+  mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, after, high, nullptr, context_.get());
+}
+
 const unsigned char* SceneRenderer::read_pixels() {
   mjr_readPixels(rgb_.data(), nullptr, viewport_, context_.get());
   return rgb_.data();

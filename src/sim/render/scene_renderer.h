@@ -7,6 +7,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -82,6 +83,11 @@ class SceneRenderer {
 
   // A figure (e.g. a live plot) in `viewport`, pixels from the bottom-left corner.
   void draw_figure(const mjrRect& viewport, mjvFigure* figure);
+
+  // A colour key in `bar` (pixels from the bottom-left corner): `colours` drawn left to right
+  // in equal cells, `low` written left of it and `high` right of it.
+  void draw_colour_bar(const mjrRect& bar, const std::vector<std::array<float, 3>>& colours,
+                       const char* low, const char* high);
 
   // The frame drawn so far: width * height RGB triplets, rows bottom-up (OpenGL's order).
   // Valid until the next call; the buffer is reused from frame to frame.

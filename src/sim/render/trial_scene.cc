@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 
+#include "base/units.h"
 #include "sim/core/pam_callback.h"
 
 namespace pamsim {
@@ -46,6 +48,18 @@ TrialScene::TrialScene(const TrialModel& model, const Scenario& scenario,
 
 void TrialScene::draw(const TrialSnapshot& snapshot) {
   renderer_.draw_scene(snapshot.data, muscle_capsules(snapshot));
+}
+
+void TrialScene::draw_colour_key() {
+  std::vector<std::array<float, 3>> colours;
+  constexpr int kCells = 48;
+  for (int k = 0; k < kCells; ++k) colours.push_back(viridis((k + 0.5) / kCells));
+  const int line = renderer_.line_height_px();
+  const int width = 12 * line;   // the bar beside its labels, clear of the bottom-left plots
+  const mjrRect bar{renderer_.width_px() - width - 6 * line, line, width, line};
+  char high[32];
+  std::snprintf(high, sizeof(high), "%.1f MPa", units::pa_to_mpa(colour_max_pa_));
+  renderer_.draw_colour_bar(bar, colours, "0", high);
 }
 
 std::vector<SceneRenderer::Capsule> TrialScene::muscle_capsules(const TrialSnapshot& snap) const {

@@ -24,6 +24,8 @@ class TrialScene {
   void draw(const TrialSnapshot& snapshot);
   SceneRenderer& renderer() { return renderer_; }
   double colour_max_pa() const { return colour_max_pa_; }   // the colour scale's top [Pa]
+  // The muscles' colour scale as a bar with its ends' pressures, in the bottom-right corner.
+  void draw_colour_key();
 
  private:
   struct DrawnMuscle {

@@ -298,6 +298,7 @@ void TrialVideo::draw_overlays(const TrialSnapshot& snap) {
     key_values += "\n" + plot_key_ + "; white: trigger";
   }
   renderer_.draw_text(keys.c_str(), key_values.c_str(), mjGRID_TOPRIGHT);
+  scene_.draw_colour_key();   // the muscles' colour scale, drawn
   if (!plots_) return;
 
   // the live plots, bottom left: pressures at the bottom, the joint above
