@@ -30,7 +30,7 @@ TSAN_SKIP := ADatabaseThatCannotBeMadeLeavesNoFolder
 # (7.5 s in the release run), whose code paths the band and validation tests cover already
 ASAN_SKIP := ^PaperBandsTest\.
 
-.PHONY: deps configure build demo test bench clean sanitize fuzz
+.PHONY: deps configure build demo test docs bench clean sanitize fuzz
 
 deps:
 	bash scripts/install-deps.sh
@@ -46,6 +46,12 @@ build: configure
 demo: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target pamsim
 	bash scripts/demo.sh $(PAMSIM)
+
+# the documentation site (docs/, Sphinx and MyST): its reference pages written from pamsim
+# itself, warnings as errors, into $(BUILD_DIR)/docs
+docs: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target pamsim
+	bash scripts/docs.sh $(PAMSIM) $(BUILD_DIR)/docs
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)

@@ -27,6 +27,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest   # the Python module and its tests
   python3-pandas python3-matplotlib          # DataFrames in the module; the example script
   python3-venv python3-pip                   # pip install . into a fresh virtual environment
+  python3-sphinx python3-myst-parser python3-yaml   # make docs: the site and its generated pages
 )
 
 missing=()

@@ -1,0 +1,14 @@
+# conf.py: the pamsim documentation site, built by `make docs` (scripts/docs.sh) with Sphinx
+# and MyST (Debian's python3-sphinx and python3-myst-parser), warnings as errors. Sphinx
+# because MuJoCo and Drake document with it; MyST so the pages are Markdown. The reference
+# pages under _generated/ are written by scripts/docs_generate.py from the program itself
+# (`pamsim keys --json`, `pamsim <command> --help`) before each build.
+project = "pamsim"
+author = "the pamsim authors"
+extensions = ["myst_parser"]
+source_suffix = {".md": "markdown"}
+exclude_patterns = ["_build", "_generated", "README.md"]
+myst_heading_anchors = 3
+html_theme = "alabaster"
+html_theme_options = {"description": "simulating PAM-driven arms and legs with a stretch reflex"}
+nitpicky = True

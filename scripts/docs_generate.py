@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""docs_generate.py PAMSIM OUT: the documentation's reference pages, written from the program
+itself so that they cannot go stale: every key of a scenario and of the other files
+(`pamsim keys --json`, one table per kind), every command's options (`pamsim <command>
+--help`), and the references (CITATION.cff). scripts/docs.sh runs it before Sphinx.
+"""
+import json
+import os
+import subprocess
+import sys
+
+import yaml
+
+KINDS = [("scenario", [], "A scenario file"),
+         ("params", ["--params"], "A muscle's parameter file (the estimator's spring law)"),
+         ("plant", ["--plant"], "A plant file (the physical muscle)"),
+         ("pneumatics", ["--pneumatics"], "The pneumatics file (valve, chamber, regulator)"),
+         ("sweep", ["--sweep"], "A sweep file's design keys"),
+         ("tune", ["--tune"], "A tuning file's search keys"),
+         ("identify", ["--identify"], "An identification file's search and judgement keys")]
+
+
+def cell(text):
+    return str(text).replace("|", "\\|").replace("\n", " ")
+
+
+def key_table(pamsim, flags):
+    rows = json.loads(subprocess.run([pamsim, "keys", "--json", *flags], check=True,
+                                     capture_output=True, text=True).stdout)
+    lines = ["| key | unit | allowed | default | meaning |", "| --- | --- | --- | --- | --- |"]
+    for r in rows:
+        lines.append("| `" + cell(r["key"]) + "` | " + " | ".join(
+            cell(r[f]) for f in ("unit", "allowed", "default", "meaning")) + " |")
+    return "\n".join(lines) + "\n", len(rows)
+
+
+def commands(pamsim):
+    """Each command's --help, in the order `pamsim --help` lists them."""
+    top = subprocess.run([pamsim, "--help"], capture_output=True, text=True).stdout
+    names = []
+    in_list = False
+    for line in top.splitlines():
+        if line.strip().lower().startswith("subcommands"):
+            in_list = True
+        elif in_list and line.startswith("  ") and line.split():
+            names.append(line.split()[0])
+    out = []
+    for name in names:
+        text = subprocess.run([pamsim, name, "--help"], capture_output=True, text=True).stdout
+        out += [f"## `pamsim {name}`", "", "```text", text.replace(pamsim, "pamsim").rstrip(),
+                "```", ""]
+    return "\n".join(out)
+
+
+def references(citation):
+    with open(citation) as f:
+        cff = yaml.safe_load(f)
+    out = []
+    for ref in cff.get("references", []):
+        names = ", ".join(a.get("family-names", a.get("name", "")) +
+                          (", " + a["given-names"] if "given-names" in a else "")
+                          for a in ref.get("authors", []))
+        where = ref.get("journal") or ref.get("collection-title") or ""
+        parts = [names, f"\"{' '.join(ref['title'].split())}\""]
+        if where:
+            parts.append(f"*{' '.join(where.split())}*")
+        for field, fmt in (("volume", "vol. {}"), ("issue", "no. {}"), ("start", "p. {}"),
+                           ("year", "{}"), ("doi", "doi:{}")):
+            if field in ref:
+                parts.append(fmt.format(ref[field]))
+        out.append("- " + ", ".join(parts) + ".")
+        if "notes" in ref:
+            out.append("  " + " ".join(ref["notes"].split()))
+    return "\n".join(out) + "\n"
+
+
+def write(path, text):
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, path)
+
+
+def main():
+    pamsim, out = os.path.abspath(sys.argv[1]), sys.argv[2]
+    os.makedirs(out, exist_ok=True)
+    for name, flags, what in KINDS:
+        table, n = key_table(pamsim, flags)
+        command = " ".join(["pamsim keys", *flags])
+        write(os.path.join(out, f"keys_{name}.md"),
+              f"{what}: {n} keys, as `{command}` lists them.\n\n{table}")
+    write(os.path.join(out, "commands.md"), commands(pamsim))
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    write(os.path.join(out, "references.md"), references(os.path.join(root, "CITATION.cff")))
+
+
+if __name__ == "__main__":
+    main()
