@@ -33,7 +33,8 @@ void read_number_row(ConfigReader& in, const std::string& key, const NumberRow& 
   }
   const double v = in.get_double(key, 0.0);
   in.check(row.range.contains(v), key,
-           "must be in " + row.range.text() + ", got " + format_value(v));
+           "must be in " + row.range.text() + (row.unit.empty() ? "" : " " + row.unit) +
+               ", got " + format_value(v));
   in.check(std::isfinite(row.si(v)), key,
            "is " + format_value(v) + ", beyond what a double holds in SI units");
   if (row.optional_target != nullptr) {

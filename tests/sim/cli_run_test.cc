@@ -130,7 +130,7 @@ TEST(CliRunTest, BadHardwareKeysAreOneLineExitTwoAndWriteNothing) {
 // twice.
 TEST(CliRunTest, BadTensionReflexKeysAreOneLineExitTwoAndWriteNothing) {
   expect_refused_writing_nothing("drop_mass_heavy_ia_ib.toml", "run_bad_tension_reflex", {
-      {"--set reflex.ib.f_thr_N=-1", "reflex.ib.f_thr_N must be in (0, inf), got -1"},
+      {"--set reflex.ib.f_thr_N=-1", "reflex.ib.f_thr_N must be in (0, inf) N, got -1"},
       {"--set 'reflex.pairs=[[\"agonist\", \"agonist\"]]'", "reflex.pairs"}});
 }
 

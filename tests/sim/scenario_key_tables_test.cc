@@ -1,5 +1,5 @@
-// scenario_key_tables_test.cc: [sim], the drop's numbers, [valve], joints.<joint>, bodies.<body>
-// and holds.<body>
+// scenario_key_tables_test.cc: [sim], the drop's numbers, [valve], joints.<joint>, bodies.<body>,
+// holds.<body> and muscles.<actuator>'s line keys
 // (scenario_key_tables.h) through the scenario reader: every key the reader asks for under sim. and drop. (the drop's names
 // aside) has exactly one row and every row is read; a bad value of every row, generated from
 // the row, is refused in one line naming the scenario file and the key; a value reaches its
@@ -248,6 +248,36 @@ TEST(BodyAndHoldKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
   }
   EXPECT_TRUE(basket);
   EXPECT_TRUE(box) << "a hold on a body the model may lack is the binding's to refuse";
+}
+
+
+// muscles.<actuator>'s line keys: every number row refuses its bad values naming the key, and
+// given values reach the muscle in SI (the line's E A from its diameter and modulus).
+TEST(MuscleLineKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
+  MuscleLineKeys keys;
+  int refused = 0;
+  for (const NumberRow& row : muscle_line_key_table(&keys).numbers) {
+    const std::string key = "muscles.agonist." + row.name;
+    for (const std::string& value : bad_number_texts(row)) {
+      const InputErrorParts parts =
+          refusal_parts([&] { load_scenario(kDropMass, {key + "=" + value}); }, key + value);
+      EXPECT_EQ(parts.key, key) << value;
+      ++refused;
+    }
+  }
+  EXPECT_GE(refused, 6 * 4) << "a string, NaN, true and a side of the range, each row";
+  const Scenario sc = load_scenario(
+      kDropMass, {"muscles.agonist.line_mm=300", "muscles.agonist.line_diameter_mm=0.5",
+                  "muscles.agonist.line_modulus_MPa=2500", "muscles.agonist.line_creep=0.1",
+                  "muscles.agonist.line_creep_time_s=20", "muscles.agonist.line_limit_N=100",
+                  "metrics=[\"drop\", \"reflex\", \"tension\"]"});   // the limit's readers
+  const MuscleSpec& m = sc.muscles.front();
+  ASSERT_EQ(m.key, "muscles.agonist");
+  EXPECT_DOUBLE_EQ(m.line_length_m, 0.3);
+  EXPECT_DOUBLE_EQ(m.line_axial_stiffness_n, 2500e6 * units::kPi * 0.25e-3 * 0.25e-3);
+  EXPECT_EQ(m.line_creep, 0.1);
+  EXPECT_EQ(m.line_creep_time_s, 20.0);
+  EXPECT_EQ(m.line_limit_n, 100.0);
 }
 
 }  // namespace

@@ -104,7 +104,7 @@ TEST(ScenarioKeysTest, BodyHoldAndEventKeysNameTheirKey) {
       {{"joints.shoulder.frictionloss_N=1", "joints.shoulder.frictionloss_N_m=1"},
        "joints.shoulder mixes"},
       {{"joints.shoulder.stiffness=1"}, "joints.shoulder gives none"},
-      {{"joints.shoulder.start_deg=400"}, "joints.shoulder.start_deg must be in [-360, 360], got 400"},
+      {{"joints.shoulder.start_deg=400"}, "joints.shoulder.start_deg must be in [-360, 360] deg, got 400"},
       {{"joints.shoulder.start_deg=nan"}, "joints.shoulder.start_deg"},
       {{"joints.shoulder.start_deg=-30"}, "joints.shoulder.start_deg would move the start"},
       {{"joints.shoulder.start_mm=10"}, "joints.shoulder gives a slide's keys"},

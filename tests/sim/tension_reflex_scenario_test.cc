@@ -136,10 +136,10 @@ TEST(TensionReflexScenarioTest, TheGainSweepIsAGridOfValidScenarios) {
 
 TEST(TensionReflexScenarioTest, EachKindReadsItsOwnKeysAndNamesABadOne) {
   pamsim_test::expect_each_named("drop_mass_heavy_ia_ib.toml", {
-      {{"reflex.ib.f_thr_N=-5"}, "reflex.ib.f_thr_N must be in (0, inf), got -5"},
+      {{"reflex.ib.f_thr_N=-5"}, "reflex.ib.f_thr_N must be in (0, inf) N, got -5"},
       {{"reflex.ib.mode=\"hold\""}, "reflex.ib.mode"},
       {{"reflex.pairs=[[\"agonist\", \"agonist\"]]"}, "reflex.pairs"},
-      {{"muscles.agonist.line_limit_N=0"}, "muscles.agonist.line_limit_N must be in (0, 1e5] N"},
+      {{"muscles.agonist.line_limit_N=0"}, "muscles.agonist.line_limit_N must be in (0, 100000] N"},
       {{"muscles.agonist.line_limit_N=nan"}, "muscles.agonist.line_limit_N"}});
   pamsim_test::expect_each_named("drop_mass.toml", {
       {{"controller.kind=\"stretch_tension_reflex\"", "reflex.ib.k_MPa_per_N=0.004"},

@@ -58,13 +58,7 @@ std::vector<KeyDoc> model_docs() {
       {"muscles.<actuator>.plant.<table>.<stroke>.<field>", "(the file's)", "(the plant file's)", "as in the plant file (pam_actuator/plant_params.h)", "a field of the plant file's friction strokes, e.g. friction.extension.A0_mm2"},
       {"muscles.<actuator>.label", "", "(the actuator's name)", "no spaces, commas or quotes; unique", "the muscle's name in columns and metrics"},
       {"muscles.<actuator>.line", "", "(none)", "\"equilibrium\"", "solve the line length so the start is static"},
-      {"muscles.<actuator>.line_limit_N", "N", "(none)", "(0, 1e5]", "the line's working load: the tension metrics give the peak pull in per cent of it"},
       {"muscles.<actuator>.spans", "", "(not checked)", "list of joints of the model", "the joints its tendon must cross: refused if its path misses one (no moment arm at the start)"},
-      {"muscles.<actuator>.line_mm", "mm", "(model.calibration's)", "> 0", "the fishing line's length (at the start, under its tension)"},
-      {"muscles.<actuator>.line_diameter_mm", "mm", "(none: inextensible)", "(0, 10]; with line_modulus_MPa", "the fishing line's diameter: it stretches by its tension over E A"},
-      {"muscles.<actuator>.line_modulus_MPa", "MPa", "(none: inextensible)", "(0, 1e6]; with line_diameter_mm", "the line material's Young's modulus E"},
-      {"muscles.<actuator>.line_creep", "", "0.0", "[0, 10]; an extensible line", "the line's creep: its long-term stretch per unit elastic stretch, one Kelvin-Voigt element (nylon monofilament 0.05-0.3, PE braid 0-0.05)"},
-      {"muscles.<actuator>.line_creep_time_s", "s", "10.0", "(0, 1e6]; an extensible line", "that creep's retardation time"},
       {"muscles.<actuator>.command.kind", "", "\"constant\"", "\"constant\" | \"ramp\" | \"sine\" | \"steps\" | \"table\"", "the commanded pressure's schedule"},
       {"muscles.<actuator>.command.MPa", "MPa", "(required for constant, steps)", "a pressure (constant), or a list (steps)", "the commanded pressure"},
       {"muscles.<actuator>.command.from_MPa", "MPa", "(required for ramp)", "a pressure", "a ramp's start"},
@@ -80,12 +74,14 @@ std::vector<KeyDoc> model_docs() {
   };
 }
 
-// bodies and holds: their rows (scenario_key_tables.h)
+// bodies, holds and the muscles' lines: their rows (scenario_key_tables.h)
 std::vector<KeyDoc> body_and_hold_docs() {
   BodyKeys body;
   HoldSpec hold;
   std::vector<double> position;
-  return key_table_docs({body_key_table(&body), hold_key_table(&hold, &position)});
+  MuscleLineKeys line;
+  return key_table_docs({muscle_line_key_table(&line), body_key_table(&body),
+                         hold_key_table(&hold, &position)});
 }
 
 // events, the drop shorthand's names

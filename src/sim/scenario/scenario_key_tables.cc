@@ -69,6 +69,29 @@ KeyTable body_key_table(BodyKeys* body) {
   return t;
 }
 
+KeyTable muscle_line_key_table(MuscleLineKeys* line) {
+  KeyTable t{"muscles.<actuator>", {}, {}, {}};
+  t.numbers = {
+      {"line_mm", "mm", units::kMPerMm, kPositiveRange,
+       "the fishing line's length (at the start, under its tension)", nullptr, &line->line_m,
+       false, "(model.calibration's)"},
+      {"line_diameter_mm", "mm", units::kMPerMm, {0.0, 10.0, true, false},
+       "the fishing line's diameter, with line_modulus_MPa: it stretches by its tension over "
+       "E A", nullptr, &line->diameter_m, false, "(none: inextensible)"},
+      {"line_modulus_MPa", "MPa", units::kPaPerMPa, {0.0, 1e6, true, false},
+       "the line material's Young's modulus E, with line_diameter_mm", nullptr,
+       &line->modulus_pa, false, "(none: inextensible)"},
+      {"line_creep", "", 1.0, {0.0, 10.0, false, false},
+       "an extensible line's creep: its long-term stretch per unit elastic stretch, one "
+       "Kelvin-Voigt element (nylon monofilament 0.05-0.3, PE braid 0-0.05)", &line->creep},
+      {"line_creep_time_s", "s", 1.0, {0.0, 1e6, true, false},
+       "that creep's retardation time (an extensible line)", &line->creep_time_s},
+      {"line_limit_N", "N", 1.0, {0.0, 1e5, true, false},
+       "the line's working load: the tension metrics give the peak pull in per cent of it",
+       nullptr, &line->limit_n, false, "(none)"}};
+  return t;
+}
+
 KeyTable hold_key_table(HoldSpec* hold, std::vector<double>* position_m) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   KeyTable t{"holds.<body>", {}, {}, {}};

@@ -55,6 +55,19 @@ struct BodyKeys {
 // bodies.<body> (a placeholder the reader replaces with the body's name), bound to `body`.
 KeyTable body_key_table(BodyKeys* body);
 
+// A muscle's line keys (muscles.<actuator>.*), SI inside: its length, and for an extensible
+// line its diameter, its material's modulus and its creep; its working load. The reader
+// checks what joins them (line or line_mm; diameter and modulus both or neither; a creep
+// only on an extensible line; the load only with the tension metrics).
+struct MuscleLineKeys {
+  std::optional<double> line_m, diameter_m, modulus_pa, limit_n;
+  double creep = 0.0;            // its long-term stretch per unit elastic stretch
+  double creep_time_s = 10.0;    // its retardation time
+};
+// muscles.<actuator> (a placeholder the reader replaces with the muscle's name), bound to
+// `line`.
+KeyTable muscle_line_key_table(MuscleLineKeys* line);
+
 // holds.<body> (a placeholder, as above), bound to `hold`'s site and height and to
 // `position_m`, the fixed position [x, y, z] given instead (the reader: one or the other).
 KeyTable hold_key_table(HoldSpec* hold, std::vector<double>* position_m);

@@ -9,6 +9,7 @@
 #include "pam_actuator/plant_params.h"
 #include "base/units.h"
 #include "sim/scenario/calibration_file.h"
+#include "sim/scenario/scenario_key_tables.h"
 #include "sim/scenario/scenario_reading.h"
 
 namespace pamsim {
@@ -170,48 +171,40 @@ void read_muscle_command(ConfigReader& in, const Scenario& sc, const std::string
   });
 }
 
-constexpr double kMaxLineCreep = 10.0;
-
 // an extensible line: its diameter and its material's modulus, both or neither, and its creep
-void read_line_stiffness(ConfigReader& in, MuscleSpec* m) {
+// (the rows' values, each in its range: scenario_key_tables.h)
+void set_line_stiffness(ConfigReader& in, const MuscleLineKeys& keys, MuscleSpec* m) {
   const std::string d_key = m->key + ".line_diameter_mm", e_key = m->key + ".line_modulus_MPa";
-  if (!in.has(d_key) && !in.has(e_key)) {
+  if (!keys.diameter_m && !keys.modulus_pa) {
     for (const char* creep : {".line_creep", ".line_creep_time_s"}) {
       in.check(!in.has(m->key + creep), m->key + creep,
                "needs an extensible line (line_diameter_mm and line_modulus_MPa)");
     }
     return;
   }
-  in.check(in.has(d_key) && in.has(e_key), in.has(d_key) ? e_key : d_key,
-           "is required with " + (in.has(d_key) ? d_key : e_key) + " (an extensible line)");
-  const double d_mm = in.require_double(d_key), e_mpa = in.require_double(e_key);
-  in.check(d_mm > 0.0 && d_mm <= 10.0, d_key, "must be in (0, 10] mm, got " + format_value(d_mm));
-  in.check(e_mpa > 0.0 && e_mpa <= 1e6, e_key,
-           "must be in (0, 1e6] MPa, got " + format_value(e_mpa));
-  const double radius_m = units::mm_to_m(d_mm) / 2.0;
-  m->line_axial_stiffness_n = units::mpa_to_pa(e_mpa) * units::kPi * radius_m * radius_m;
+  in.check(keys.diameter_m && keys.modulus_pa, keys.diameter_m ? e_key : d_key,
+           "is required with " + (keys.diameter_m ? d_key : e_key) + " (an extensible line)");
+  const double radius_m = *keys.diameter_m / 2.0;
+  m->line_axial_stiffness_n = *keys.modulus_pa * units::kPi * radius_m * radius_m;
   // its creep: a Kelvin-Voigt element on the extensible line's compliance
-  m->line_creep = in.get_double(m->key + ".line_creep", 0.0);
-  in.check(m->line_creep >= 0.0 && m->line_creep <= kMaxLineCreep, m->key + ".line_creep",
-           "must be in [0, 10], got " + format_value(m->line_creep));
-  m->line_creep_time_s = in.get_double(m->key + ".line_creep_time_s", m->line_creep_time_s);
-  in.check(m->line_creep_time_s > 0.0 && m->line_creep_time_s <= 1e6,
-           m->key + ".line_creep_time_s",
-           "must be in (0, 1e6] s, got " + format_value(m->line_creep_time_s));
+  m->line_creep = keys.creep;
+  m->line_creep_time_s = keys.creep_time_s;
 }
 
-// the line: fixed, solved, or the calibration's
+// the line: fixed, solved, or the calibration's; then its stiffness and working load
 void read_muscle_line(ConfigReader& in, const std::string& name,
                       const ArmCalibration* calibration, bool lines_needed, MuscleSpec* muscle) {
   MuscleSpec& m = *muscle;
+  MuscleLineKeys keys;
+  KeyTable table = muscle_line_key_table(&keys);
+  table.name = m.key;
+  read_key_rows(in, rows_given(in, table));
   const std::string line = in.get_string(m.key + ".line", "");
-  const bool fixed = in.has(m.key + ".line_mm");
   in.check(line.empty() || line == "equilibrium", m.key + ".line",
            "must be \"equilibrium\", got \"" + line + "\"");
-  in.check(!(fixed && !line.empty()), m.key + ".line", "and line_mm may not both be given");
-  if (fixed) {
-    m.line_length_m = units::mm_to_m(in.get_double(m.key + ".line_mm", 0.0));
-    in.check(m.line_length_m > 0, m.key + ".line_mm", "must be > 0");
+  in.check(!(keys.line_m && !line.empty()), m.key + ".line", "and line_mm may not both be given");
+  if (keys.line_m) {
+    m.line_length_m = *keys.line_m;
   } else if (!line.empty()) {
     m.line = LineSource::kEquilibrium;
   } else if (!lines_needed) {
@@ -222,7 +215,8 @@ void read_muscle_line(ConfigReader& in, const std::string& name,
              "is required (or .line = \"equilibrium\", or model.calibration with " + name + "_line_mm)");
     m.line_length_m = c->line_length_m;
   }
-  read_line_stiffness(in, &m);
+  set_line_stiffness(in, keys, &m);
+  if (keys.limit_n) m.line_limit_n = *keys.limit_n;
 }
 
 MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& name,
@@ -248,11 +242,6 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
   read_muscle_command(in, sc, name, &m);
   read_muscle_line(in, name, calibration, lines_needed, &m);
   m.spans = in.get_string_list(m.key + ".spans", {});
-  if (in.has(m.key + ".line_limit_N")) {
-    m.line_limit_n = in.require_double(m.key + ".line_limit_N");
-    in.check(m.line_limit_n > 0.0 && m.line_limit_n <= 1e5, m.key + ".line_limit_N",
-             "must be in (0, 1e5] N, got " + format_value(m.line_limit_n));
-  }
   return m;
 }
 
