@@ -20,18 +20,23 @@ KINDS = [("scenario", [], "A scenario file"),
          ("identify", ["--identify"], "An identification file's search and judgement keys")]
 
 
-def cell(text):
-    return str(text).replace("|", "\\|").replace("\n", " ")
+def prose(text):
+    """Text a page shows as written: no HTML tags read into it ("<m>"), no Markdown markup."""
+    return (str(text).replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+            .replace("*", "\\*").replace("_", "\\_").replace("\n", " "))
 
 
-def key_table(pamsim, flags):
+def key_list(pamsim, flags):
+    """Each key as a definition: its name and unit, then its meaning, values and default."""
     rows = json.loads(subprocess.run([pamsim, "keys", "--json", *flags], check=True,
                                      capture_output=True, text=True).stdout)
-    lines = ["| key | unit | allowed | default | meaning |", "| --- | --- | --- | --- | --- |"]
+    lines = []
     for r in rows:
-        lines.append("| `" + cell(r["key"]) + "` | " + " | ".join(
-            cell(r[f]) for f in ("unit", "allowed", "default", "meaning")) + " |")
-    return "\n".join(lines) + "\n", len(rows)
+        unit = f" [{r['unit']}]" if r["unit"] else ""
+        lines += [f"`{r['key']}`{prose(unit)}",
+                  f": {prose(r['meaning'])}; allowed: {prose(r['allowed'])}; "
+                  f"default: {prose(r['default'])}", ""]
+    return "\n".join(lines), len(rows)
 
 
 def commands(pamsim):
@@ -85,7 +90,7 @@ def main():
     pamsim, out = os.path.abspath(sys.argv[1]), sys.argv[2]
     os.makedirs(out, exist_ok=True)
     for name, flags, what in KINDS:
-        table, n = key_table(pamsim, flags)
+        table, n = key_list(pamsim, flags)
         command = " ".join(["pamsim keys", *flags])
         write(os.path.join(out, f"keys_{name}.md"),
               f"{what}: {n} keys, as `{command}` lists them.\n\n{table}")
