@@ -1,5 +1,5 @@
 // scenario_key_tables_test.cc: [sim], the drop's numbers, [valve], joints.<joint>, bodies.<body>,
-// holds.<body> and muscles.<actuator>'s line keys
+// holds.<body>, muscles.<actuator>'s line keys and events.<event>
 // (scenario_key_tables.h) through the scenario reader: every key the reader asks for under sim. and drop. (the drop's names
 // aside) has exactly one row and every row is read; a bad value of every row, generated from
 // the row, is refused in one line naming the scenario file and the key; a value reaches its
@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -278,6 +279,45 @@ TEST(MuscleLineKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
   EXPECT_EQ(m.line_creep, 0.1);
   EXPECT_EQ(m.line_creep_time_s, 20.0);
   EXPECT_EQ(m.line_limit_n, 100.0);
+}
+
+
+// events.<event> and its when.*: every number row refuses its bad values naming the key (with
+// the keys its action or condition needs beside it), and a key beside the wrong action is
+// refused as unknown.
+TEST(EventKeysTest, EveryNumberRowRefusesABadValueNamingTheKey) {
+  EventSpec event;
+  EventThresholds thresholds;
+  const std::vector<std::pair<KeyTable, std::vector<std::string>>> tables = {
+      {event_key_table(&event),
+       {"events.e.action=\"add_mass\"", "events.e.body=\"basket\"", "events.e.when.at_s=0.5"}},
+      {event_when_key_table(&event, &thresholds), {}}};
+  const std::map<std::string, std::string> beside = {   // what each condition row goes with
+      {"below_deg", "events.e.when.joint=\"shoulder\""},
+      {"above_deg", "events.e.when.joint=\"shoulder\""},
+      {"below_mm", "events.e.when.joint=\"shoulder\""},
+      {"above_mm", "events.e.when.joint=\"shoulder\""},
+      {"below_z_m", "events.e.when.body=\"ball\""}};
+  int refused = 0;
+  for (const auto& [table, context] : tables) {
+    const std::string prefix = table.name == "events.<event>" ? "events.e." : "events.e.when.";
+    for (const NumberRow& row : table.numbers) {
+      const std::string key = prefix + row.name;
+      for (const std::string& value : bad_number_texts(row)) {
+        std::vector<std::string> set = context;
+        if (beside.count(row.name)) set.push_back(beside.at(row.name));
+        set.push_back(key + "=" + value);
+        const InputErrorParts parts =
+            refusal_parts([&] { load_scenario(kDropMass, set); }, key + value);
+        EXPECT_EQ(parts.key, key) << value;
+        ++refused;
+      }
+    }
+  }
+  EXPECT_GE(refused, 7 * 3) << "a string, NaN and true for each of the seven numbers";
+  const std::vector<std::string> mark = {"events.e.when.at_s=0.5", "events.e.mass_kg=0.1"};
+  EXPECT_EQ(refusal_parts([&] { load_scenario(kDropMass, mark); }, "mass_kg beside mark").key,
+            "events.e.mass_kg");
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 // scenario_events.cc: what happens when: bodies.<body>.mass_kg, holds.<body>, events.<name>,
 // and the pamsim 0.1 drop.* shorthand that expands into them.
+#include <algorithm>
 #include <cmath>
+#include <set>
+#include <utility>
 
 #include "base/units.h"
 #include "sim/scenario/scenario_reading.h"
@@ -9,32 +12,65 @@
 namespace pamsim {
 namespace {
 
-EventAction parse_action(ConfigReader& in, const std::string& key) {
-  const std::string name = in.get_string(key, "mark");
-  const std::pair<const char*, EventAction> actions[] = {
-      {"mark", EventAction::kMark},
-      {"release", EventAction::kRelease},
-      {"add_mass", EventAction::kAddMass},
-      {"controller_off", EventAction::kControllerOff},
-      {"controller_on", EventAction::kControllerOn},
-      {"end", EventAction::kEnd}};
-  for (const auto& [text, action] : actions) {
-    if (name == text) return action;
+// `table` with only the rows named: a reader reads the rows that apply, and a key given
+// beside the wrong ones stays unread, refused as unknown
+KeyTable with_rows(KeyTable table, const std::set<std::string>& names) {
+  const auto keep = [&](auto& rows) {
+    rows.erase(std::remove_if(rows.begin(), rows.end(),
+                              [&](const auto& row) { return !names.count(row.name); }),
+               rows.end());
+  };
+  keep(table.numbers);
+  keep(table.choices);
+  keep(table.bools);
+  keep(table.ints);
+  keep(table.texts);
+  keep(table.lists);
+  return table;
+}
+
+// action and after; body with release and add_mass; mass_kg with add_mass (the rows:
+// scenario_key_tables.h)
+void read_event_keys(ConfigReader& in, EventSpec* e) {
+  KeyTable table = event_key_table(e);
+  table.name = e->key;
+  read_key_rows(in, with_rows(table, {"action", "after"}));
+  if (e->action == EventAction::kRelease || e->action == EventAction::kAddMass) {
+    read_key_rows(in, with_rows(table, {"body"}));
+    in.check(!e->body.empty(), e->key + ".body", "is required for this action");
   }
-  in.fail(key, "must be \"mark\", \"release\", \"add_mass\", \"controller_off\", "
-               "\"controller_on\" or \"end\", got \"" + name + "\"");
+  if (e->action == EventAction::kAddMass) read_key_rows(in, with_rows(table, {"mass_kg"}));
+}
+
+// when.joint with exactly one threshold: the condition's kind and its threshold in SI
+void set_joint_threshold(ConfigReader& in, const std::string& key, const EventThresholds& t,
+                         ConditionSpec* c) {
+  const std::pair<const std::optional<double>*, ConditionKind> given[] = {
+      {&t.below_rad, ConditionKind::kJointBelow}, {&t.above_rad, ConditionKind::kJointAbove},
+      {&t.below_m, ConditionKind::kJointBelow}, {&t.above_m, ConditionKind::kJointAbove}};
+  int n = 0;
+  for (const auto& [value, kind] : given) {
+    if (!value->has_value()) continue;
+    ++n;
+    c->threshold = **value;
+    c->kind = kind;
+  }
+  in.check(n == 1, key, "with joint must give one of below_deg, above_deg, below_mm, above_mm");
 }
 
 // when.*: exactly one of at_s, contact, joint (with a threshold), body (with below_z_m)
-ConditionSpec read_condition(ConfigReader& in, const std::string& key, const Scenario& sc) {
-  ConditionSpec c;
+void read_condition(ConfigReader& in, const Scenario& sc, EventSpec* e) {
+  const std::string key = e->key + ".when";
+  ConditionSpec& c = e->when;
   const int given = in.has(key + ".at_s") + in.has(key + ".contact") + in.has(key + ".joint") +
                     in.has(key + ".body");
   in.check(given == 1, key, "must give one of at_s, contact, joint or body");
+  EventThresholds thresholds;
+  KeyTable table = event_when_key_table(e, &thresholds);
+  table.name = key;
   if (in.has(key + ".at_s")) {
     c.kind = ConditionKind::kTime;
-    c.at_s = in.get_double(key + ".at_s", 0.0);
-    in.check(c.at_s >= 0, key + ".at_s", "must be >= 0, got " + format_value(c.at_s));
+    read_key_rows(in, with_rows(table, {"at_s"}));
     in.check(c.at_s < sc.duration_s, key + ".at_s",
              "must be before the end of the trial (" +
                  in.described("sim.duration_s", sc.duration_s) + " s), got " +
@@ -46,25 +82,14 @@ ConditionSpec read_condition(ConfigReader& in, const std::string& key, const Sce
     c.body_a = bodies[0];
     c.body_b = bodies[1];
   } else if (in.has(key + ".joint")) {
-    c.joint = in.get_string(key + ".joint", "");
-    const std::pair<const char*, double> thresholds[] = {
-        {"below_deg", units::deg_to_rad(1.0)}, {"above_deg", units::deg_to_rad(1.0)},
-        {"below_mm", units::mm_to_m(1.0)}, {"above_mm", units::mm_to_m(1.0)}};
-    int n = 0;
-    for (const auto& [field, to_si] : thresholds) {
-      if (!in.has(key + "." + field)) continue;
-      ++n;
-      c.threshold = in.get_double(key + "." + field, 0.0) * to_si;
-      c.kind = field[0] == 'b' ? ConditionKind::kJointBelow : ConditionKind::kJointAbove;
-    }
-    in.check(n == 1, key, "with joint must give one of below_deg, above_deg, below_mm, above_mm");
+    read_key_rows(in, rows_given(in, with_rows(table, {"joint", "below_deg", "above_deg",
+                                                       "below_mm", "above_mm"})));
+    set_joint_threshold(in, key, thresholds, &c);
   } else {
     c.kind = ConditionKind::kBodyBelow;
-    c.body_a = in.get_string(key + ".body", "");
-    in.check(in.has(key + ".below_z_m"), key + ".below_z_m", "is required with body");
-    c.threshold = in.get_double(key + ".below_z_m", 0.0);
+    read_key_rows(in, with_rows(table, {"body", "below_z_m"}));
+    c.threshold = *thresholds.below_z_m;
   }
-  return c;
 }
 
 }  // namespace
@@ -166,18 +191,8 @@ void read_events(ConfigReader& in, Scenario* sc) {
     e.key = "events." + name;
     e.name = name;
     in.check(sc->event(name) == nullptr, e.key, "repeats the name of an event the [drop] table makes");
-    e.action = parse_action(in, e.key + ".action");
-    if (e.action == EventAction::kRelease || e.action == EventAction::kAddMass) {
-      e.body = in.get_string(e.key + ".body", "");
-      in.check(!e.body.empty(), e.key + ".body", "is required for this action");
-    }
-    if (e.action == EventAction::kAddMass) {
-      e.mass_kg = in.get_double(e.key + ".mass_kg", 0.0);
-      in.check(e.mass_kg > 0 && e.mass_kg <= 1000, e.key + ".mass_kg",
-               "must be in (0, 1000] kg, got " + format_value(e.mass_kg));
-    }
-    e.when = read_condition(in, e.key + ".when", *sc);
-    e.when.after = in.get_string(e.key + ".after", "");
+    read_event_keys(in, &e);
+    read_condition(in, *sc, &e);
     sc->events.push_back(e);
   }
   // `after` names another event

@@ -86,24 +86,18 @@ std::vector<KeyDoc> body_and_hold_docs() {
 
 // events, the drop shorthand's names
 std::vector<KeyDoc> event_docs() {
-  return {
-      {"events.<event>.action", "", "\"mark\"", "\"mark\" | \"release\" | \"add_mass\" | \"controller_off\" | \"controller_on\" | \"end\"", "what happens when the event fires"},
-      {"events.<event>.body", "", "(required for release, add_mass)", "a body of the model", "the body released or loaded"},
-      {"events.<event>.mass_kg", "kg", "(required for add_mass)", "(0, 1000]", "the mass added"},
-      {"events.<event>.after", "", "(none)", "another event's name", "fire only after that event"},
-      {"events.<event>.when.at_s", "s", "(one when.* is required)", "[0, sim.duration_s)", "fire at this time"},
+  EventSpec event;
+  EventThresholds thresholds;
+  std::vector<KeyDoc> docs =
+      key_table_docs({event_key_table(&event), event_when_key_table(&event, &thresholds)});
+  const std::vector<KeyDoc> by_hand = {
       {"events.<event>.when.contact", "", "(one when.* is required)", "[body_a, body_b]", "fire when the two bodies touch"},
-      {"events.<event>.when.joint", "", "(one when.* is required)", "a joint of the model", "fire on this joint's position"},
-      {"events.<event>.when.below_deg", "deg", "(none)", "a hinge's angle", "with when.joint: fire below it"},
-      {"events.<event>.when.above_deg", "deg", "(none)", "a hinge's angle", "with when.joint: fire above it"},
-      {"events.<event>.when.below_mm", "mm", "(none)", "a slide's position", "with when.joint: fire below it"},
-      {"events.<event>.when.above_mm", "mm", "(none)", "a slide's position", "with when.joint: fire above it"},
-      {"events.<event>.when.body", "", "(one when.* is required)", "a body of the model", "fire on this body's height"},
-      {"events.<event>.when.below_z_m", "m", "(required with when.body)", "a height", "with when.body: fire below it"},
       {"drop.body", "", "\"ball\"", "a free body of the model", "shorthand: the falling body"},
       {"drop.basket", "", "\"basket\"", "a body of the model", "shorthand: the body it lands in (the impact event)"},
       {"drop.site", "", "\"basket_floor\"", "a site of the model", "shorthand: the site it is held above"},
   };
+  docs.insert(docs.end(), by_hand.begin(), by_hand.end());
+  return docs;
 }
 
 // valve.*'s numbers and choices: the pneumatics file's rows (scenario_key_tables.h), each

@@ -4,6 +4,7 @@
 
 #include <cassert>
 #include <limits>
+#include <utility>
 
 #include "base/units.h"
 #include "pneumatics/pneumatic_params.h"
@@ -89,6 +90,58 @@ KeyTable muscle_line_key_table(MuscleLineKeys* line) {
       {"line_limit_N", "N", 1.0, {0.0, 1e5, true, false},
        "the line's working load: the tension metrics give the peak pull in per cent of it",
        nullptr, &line->limit_n, false, "(none)"}};
+  return t;
+}
+
+KeyTable event_key_table(EventSpec* event) {
+  static const std::vector<std::pair<std::string, EventAction>> kActions = {
+      {"mark", EventAction::kMark},
+      {"release", EventAction::kRelease},
+      {"add_mass", EventAction::kAddMass},
+      {"controller_off", EventAction::kControllerOff},
+      {"controller_on", EventAction::kControllerOn},
+      {"end", EventAction::kEnd}};
+  std::vector<std::string> names;
+  for (const auto& [name, action] : kActions) names.push_back(name);
+  KeyTable t{"events.<event>", {}, {}, {}};
+  t.choices = {{"action", names, "what happens when the event fires",
+                [event](const std::string& v) {
+                  for (const auto& [name, action] : kActions) {
+                    if (name == v) event->action = action;
+                  }
+                },
+                [event] {
+                  for (const auto& [name, action] : kActions) {
+                    if (action == event->action) return name;
+                  }
+                  return std::string("?");
+                }}};
+  t.numbers = {{"mass_kg", "kg", 1.0, {0.0, 1000.0, true, false},
+                "with add_mass: the mass added", &event->mass_kg, nullptr, true}};
+  t.texts = {{"body", "with release or add_mass: the body released or loaded", &event->body},
+             {"after", "fire only after this other event", &event->when.after}};
+  return t;
+}
+
+KeyTable event_when_key_table(EventSpec* event, EventThresholds* thresholds) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const double per_deg = units::deg_to_rad(1.0);   // rad per degree, as the reader converts
+  KeyTable t{"events.<event>.when", {}, {}, {}};
+  t.numbers = {
+      {"at_s", "s", 1.0, {0.0, inf, false, true}, "fire at this time (before sim.duration_s)",
+       &event->when.at_s},
+      {"below_deg", "deg", per_deg, kAnyRange, "with when.joint, a hinge: fire below this angle",
+       nullptr, &thresholds->below_rad},
+      {"above_deg", "deg", per_deg, kAnyRange, "with when.joint, a hinge: fire above this angle",
+       nullptr, &thresholds->above_rad},
+      {"below_mm", "mm", units::kMPerMm, kAnyRange,
+       "with when.joint, a slide: fire below this position", nullptr, &thresholds->below_m},
+      {"above_mm", "mm", units::kMPerMm, kAnyRange,
+       "with when.joint, a slide: fire above this position", nullptr, &thresholds->above_m},
+      {"below_z_m", "m", 1.0, kAnyRange, "with when.body: fire when its origin is below this height",
+       nullptr, &thresholds->below_z_m, true}};
+  t.texts = {{"joint", "fire on this joint's position (with one threshold)", &event->when.joint},
+             {"body", "fire on this body's height (with below_z_m)", &event->when.body_a}};
   return t;
 }
 

@@ -68,6 +68,18 @@ struct MuscleLineKeys {
 // `line`.
 KeyTable muscle_line_key_table(MuscleLineKeys* line);
 
+// events.<event> and events.<event>.when (placeholders a reader replaces with the event's
+// key), bound to `event`; `thresholds` holds the when.* numbers that set its condition's kind
+// and threshold (below_deg, above_deg, below_mm, above_mm, below_z_m, SI). A reader reads
+// only the rows its action and its condition use (mass_kg with add_mass, a threshold with
+// when.joint), so a key given beside the wrong ones is refused as unknown; when.contact (two
+// names) is read by hand.
+struct EventThresholds {
+  std::optional<double> below_rad, above_rad, below_m, above_m, below_z_m;
+};
+KeyTable event_key_table(EventSpec* event);
+KeyTable event_when_key_table(EventSpec* event, EventThresholds* thresholds);
+
 // holds.<body> (a placeholder, as above), bound to `hold`'s site and height and to
 // `position_m`, the fixed position [x, y, z] given instead (the reader: one or the other).
 KeyTable hold_key_table(HoldSpec* hold, std::vector<double>* position_m);
