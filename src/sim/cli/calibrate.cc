@@ -122,7 +122,7 @@ void add_calibrate_command(CLI::App& app) {
                   "With --pose: each muscle this far past its free length [mm] (default 2)");
   cmd->add_option("--pressure-MPa", opt->pressure_mpa,
                   "With --pose: every muscle at this pressure [MPa] (default: its start command)")
-      ->each([opt](const std::string&) { opt->pressure_mpa_given = true; });
+      ->each([given = &opt->pressure_mpa_given](const std::string&) { *given = true; });
   cmd->add_flag("--balance", opt->balance,
                 "With --pose: the deformations nearest --deformation-mm that hold the pose");
 }
