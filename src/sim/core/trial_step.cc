@@ -89,14 +89,15 @@ bool TrialRun::condition_holds(std::size_t k) const {
 }
 
 bool TrialRun::after_step() {
-  // events whose condition now holds; step-wise metrics
+  // events whose condition now holds; step-wise metrics (the time once per step)
+  const double now = time_at(step_);
   for (std::size_t k = 0; k < sc_.events.size(); ++k) {
     const int after = tm_.events[k].after;
     if (fired_[k] || (after >= 0 && !fired_[after])) continue;
-    if (condition_holds(k)) fire(k, time_at(step_));
+    if (condition_holds(k)) fire(k, now);
   }
   for (MetricSet* set : step_metrics_) {
-    set->on_step(time_at(step_), joint_position(), event_time_s_);
+    set->on_step(now, joint_position(), event_time_s_);
     set->on_state(d_);
   }
   if (d_->time >= next_observation_s_) show_observer();
