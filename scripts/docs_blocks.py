@@ -1,0 +1,427 @@
+#!/usr/bin/env python3
+"""docs_blocks.py: the documentation's computed numbers and figures, each made by the command
+written beside it, so that a page cannot say what the program no longer does.
+
+A page holds a generated block as an HTML comment (invisible on the site and on GitHub) that
+names the commands and what of their output to show, then the output itself, then a closing
+comment with the stamp the block was made under:
+
+    <!-- pamsim-block
+    id: table5-bands                 # unique in the docs; its outputs go to renders/docs/<id>
+    class: slow                      # cheap | slow | timing (below)
+    run: pamsim validate reaching --bands 50 --out {out}   # or a list of commands
+    show: [stdout, bands.md, bands.png]   # what of the outputs the page shows
+    -->
+    ...written by `update`...
+    <!-- /pamsim-block {"spec": ..., "version": ..., "digest": ..., ...} -->
+
+Shown outputs: `stdout` (the last command's console output, as a text block; `stdout -N`, its
+last N lines), a `.md` file as it is, a `.csv` file as a Markdown table, a `.json`, `.txt` or
+`.toml` file as a code block, a `.png` or `.svg` file copied to docs/generated/<id>/ and shown
+as a figure.
+
+The three classes, and what `check` (CI) holds each to:
+  cheap   rerun, and its text compared with the page's: the words exactly, every number
+          within the block's `tolerance` (relative, default 1e-9);
+  slow    too slow for CI: its stamp's physics digest and version must be the build's (the
+          digest hashes the outputs of a few short reference runs, so any change of the
+          physics, the sensors or the estimator changes it);
+  timing  wall-clock figures: stamped with the machine and the date, never compared.
+Every class: the block's spec must be the one it was made from (an edited command without
+a rerun is stale).
+
+    docs_blocks.py update [--class cheap|slow|timing|all] [--id ID] [PAGE...]
+    docs_blocks.py check [PAGE...]
+    docs_blocks.py lint [PAGE...]
+    docs_blocks.py digest
+PAMSIM (environment) is the binary `pamsim` in a command stands for (default
+build/src/sim/pamsim). `make docs` updates the cheap blocks, then builds the site.
+"""
+import argparse
+import glob
+import hashlib
+import json
+import os
+import platform
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+import yaml
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+OPEN = "<!-- pamsim-block"
+CLOSE = "<!-- /pamsim-block"
+BLOCK = re.compile(r"<!-- pamsim-block\n(?P<spec>.*?)-->\n(?P<body>.*?)"
+                   r"<!-- /pamsim-block(?P<stamp>[^\n]*?)-->", re.S)
+NUMBER = re.compile(r"[-+]?(?:\d+\.\d*|\.\d+|\d+)(?:[eE][-+]?\d+)?")
+CLASSES = ("cheap", "slow", "timing")
+DEFAULT_TOLERANCE = 1e-9
+# the short runs the physics digest hashes: a reflex trial, the leg landing, a tensile test
+DIGEST_RUNS = [
+    ("pamsim run scenarios/drop_mass.toml --no-plot --out {out}/drop", "drop"),
+    ("pamsim run scenarios/landing.toml --no-plot --set sim.duration_s=0.6 --out {out}/leg",
+     "leg"),
+    ("pamsim tensile --plant models/pams/plant_agonist.toml -o {out}/tensile.csv",
+     "tensile.csv"),
+]
+
+
+class Stale(Exception):
+    """A page that disagrees with the program: one line naming the page, the block and why."""
+
+
+def pamsim_binary():
+    return os.path.abspath(os.environ.get("PAMSIM", os.path.join(ROOT, "build/src/sim/pamsim")))
+
+
+def pages(given):
+    if given:
+        return [os.path.abspath(p) for p in given]
+    found = glob.glob(os.path.join(ROOT, "docs", "**", "*.md"), recursive=True)
+    found = [p for p in found if "/_generated/" not in p]
+    return sorted(found + [os.path.join(ROOT, "README.md")])
+
+
+def parse_spec(text, where):
+    spec = yaml.safe_load(text) or {}
+    for key in ("id", "class", "run", "show"):
+        if key not in spec:
+            raise Stale(f"{where}: a pamsim-block without `{key}`")
+    if spec["class"] not in CLASSES:
+        raise Stale(f"{where}: block {spec['id']}: class must be one of {CLASSES}")
+    for key in ("run", "show"):
+        if isinstance(spec[key], str):
+            spec[key] = [spec[key]]
+    spec.setdefault("tolerance", DEFAULT_TOLERANCE)
+    return spec
+
+
+def spec_hash(spec_text):
+    return hashlib.sha256(" ".join(spec_text.split()).encode()).hexdigest()[:16]
+
+
+def shown_command(command, block_id):
+    return command.replace("{out}", f"renders/docs/{block_id}")
+
+
+def run_commands(spec, out):
+    """Runs the block's commands from the repository root; returns the last one's stdout."""
+    if os.path.isdir(out):
+        shutil.rmtree(out)
+    os.makedirs(out)
+    stdout = ""
+    for command in spec["run"]:
+        line = command.replace("{out}", out)
+        line = re.sub(r"(^|[\s;&|(])pamsim\b", lambda m: m.group(1) + pamsim_binary(), line)
+        done = subprocess.run(line, shell=True, cwd=ROOT, capture_output=True, text=True)
+        if done.returncode != 0:
+            raise Stale(f"block {spec['id']}: `{command}` failed ({done.returncode}): "
+                        f"{(done.stderr or done.stdout).strip().splitlines()[-1:]}")
+        stdout = done.stdout.replace(pamsim_binary(), "pamsim").replace(out, f"renders/docs/"
+                                                                           f"{spec['id']}")
+    return stdout
+
+
+def csv_table(path):
+    import csv
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    lines = ["| " + " | ".join(rows[0]) + " |", "|" + " --- |" * len(rows[0])]
+    lines += ["| " + " | ".join(r) + " |" for r in rows[1:]]
+    return "\n".join(lines)
+
+
+def render_show(item, spec, out, stdout, check=False):
+    """One shown output as Markdown; a figure is copied into docs/generated/<id>/, or with
+    `check` compared with the copy there."""
+    item = str(item)
+    if item.startswith("stdout"):
+        lines = stdout.rstrip("\n").splitlines()
+        parts = item.split()
+        if len(parts) == 2:
+            lines = lines[int(parts[1]):]
+        return "```text\n" + "\n".join(lines) + "\n```"
+    path = os.path.join(out, item)
+    if not os.path.isfile(path):
+        raise Stale(f"block {spec['id']}: its command wrote no {item}")
+    if item.endswith(".md"):
+        with open(path) as f:
+            return f.read().strip()
+    if item.endswith(".csv"):
+        return csv_table(path)
+    if item.endswith((".json", ".txt", ".toml")):
+        with open(path) as f:
+            return f"```{os.path.splitext(item)[1][1:]}\n{f.read().rstrip()}\n```"
+    if item.endswith((".png", ".svg")):
+        target = os.path.join(ROOT, "docs", "generated", spec["id"], os.path.basename(item))
+        if check:
+            if not same_file(path, target):
+                raise Stale(f"block {spec['id']}: the figure {item} is not the page's "
+                            f"(docs/generated/{spec['id']}/)")
+        else:
+            os.makedirs(os.path.dirname(target), exist_ok=True)
+            shutil.copyfile(path, target)
+        return f"![{spec['id']}: {item}](/generated/{spec['id']}/{os.path.basename(item)})"
+    raise Stale(f"block {spec['id']}: cannot show {item} (stdout, .md, .csv, .json, .txt, .toml, .png, .svg)")
+
+
+def same_file(a, b):
+    if not os.path.isfile(b):
+        return False
+    with open(a, "rb") as fa, open(b, "rb") as fb:
+        return fa.read() == fb.read()
+
+
+def body_of(spec, out, stdout, check=False):
+    commands = "\n".join(shown_command(c, spec["id"]) for c in spec["run"])
+    parts = ["```sh\n" + commands + "\n```"]
+    parts += [render_show(item, spec, out, stdout, check) for item in spec["show"]]
+    return "\n\n".join(parts) + "\n"
+
+
+def version():
+    return subprocess.run([pamsim_binary(), "--version"], capture_output=True, text=True,
+                          check=True).stdout.split()[-1]
+
+
+_DIGEST = []
+
+
+def physics_digest():
+    """A hash of the reference runs' outputs (their CSV files, byte for byte)."""
+    if _DIGEST:
+        return _DIGEST[0]
+    h = hashlib.sha256()
+    with tempfile.TemporaryDirectory() as tmp:
+        for command, output in DIGEST_RUNS:
+            run_commands({"id": "digest", "run": [command]}, os.path.join(tmp, "run"))
+            path = os.path.join(tmp, "run", output)
+            files = ([path] if os.path.isfile(path) else
+                     sorted(glob.glob(os.path.join(path, "*.csv"))))
+            for name in files:
+                with open(name, "rb") as f:
+                    h.update(f.read())
+    _DIGEST.append(h.hexdigest()[:12])
+    return _DIGEST[0]
+
+
+def machine():
+    cpu = platform.processor() or platform.machine()
+    try:
+        with open("/proc/cpuinfo") as f:
+            cpu = next(l.split(":", 1)[1].strip() for l in f if l.startswith("model name"))
+    except (OSError, StopIteration):
+        pass
+    return f"{cpu}, {os.cpu_count()} cores"
+
+
+def stamp_of(spec, spec_text):
+    stamp = {"spec": spec_hash(spec_text), "version": version(), "class": spec["class"],
+             "date": time.strftime("%Y-%m-%d")}
+    if spec["class"] == "slow":
+        stamp["digest"] = physics_digest()
+    if spec["class"] == "timing":
+        stamp["machine"] = machine()
+    return stamp
+
+
+def stamp_line(stamp):
+    """What the reader sees of the stamp."""
+    made = f"Made by pamsim {stamp['version']} on {stamp['date']}"
+    if stamp["class"] == "cheap":
+        return f"<sub>{made}; rerun and compared at every CI run.</sub>"
+    if stamp["class"] == "slow":
+        return f"<sub>{made}, physics digest {stamp['digest']}.</sub>"
+    return f"<sub>{made}, measured on {stamp['machine']}.</sub>"
+
+
+def make_block(spec_text, spec, tmp):
+    out = os.path.join(tmp, spec["id"])
+    stdout = run_commands(spec, out)
+    stamp = stamp_of(spec, spec_text)
+    body = body_of(spec, out, stdout) + "\n" + stamp_line(stamp) + "\n"
+    return (f"{OPEN}\n{spec_text}-->\n{body}{CLOSE} {json.dumps(stamp, sort_keys=True)} -->",
+            body)
+
+
+def blocks(text, path):
+    for m in BLOCK.finditer(text):
+        spec = parse_spec(m.group("spec"), os.path.relpath(path, ROOT))
+        stamp = json.loads(m.group("stamp").strip() or "{}")
+        yield m, spec, stamp
+
+
+def update(paths, classes, only):
+    seen = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        for path in paths:
+            with open(path) as f:
+                text = f.read()
+            pieces, last, changed = [], 0, False
+            for m, spec, _ in blocks(text, path):
+                if spec["id"] in seen:
+                    raise Stale(f"{os.path.relpath(path, ROOT)}: block id {spec['id']} is also "
+                                f"in {seen[spec['id']]}")
+                seen[spec["id"]] = os.path.relpath(path, ROOT)
+                pieces.append(text[last:m.start()])
+                if spec["class"] in classes and (not only or spec["id"] in only):
+                    started = time.time()
+                    block, _ = make_block(m.group("spec"), spec, tmp)
+                    print(f"{seen[spec['id']]}: {spec['id']} ({time.time() - started:.1f} s)")
+                    pieces.append(block)
+                    changed = True
+                else:
+                    pieces.append(m.group(0))
+                last = m.end()
+            pieces.append(text[last:])
+            if changed:
+                atomic_write(path, "".join(pieces))
+
+
+def atomic_write(path, text):
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, path)
+
+
+def first_difference(page, program, tolerance):
+    """The first line where the page's text and the program's differ in a word, or in a
+    number by more than `tolerance` (relative); None if none does."""
+    a, b = page.splitlines(), program.splitlines()
+    for i in range(max(len(a), len(b))):
+        x = a[i] if i < len(a) else ""
+        y = b[i] if i < len(b) else ""
+        if NUMBER.split(x) != NUMBER.split(y):
+            return f"line {i + 1}: the page has {x.strip()!r}, the program {y.strip()!r}"
+        for u, v in zip(NUMBER.findall(x), NUMBER.findall(y)):
+            fu, fv = float(u), float(v)
+            if abs(fu - fv) > tolerance * max(abs(fu), abs(fv)):
+                return (f"line {i + 1}: the page has {u}, the program {v} (tolerance "
+                        f"{tolerance:g})")
+    return None
+
+
+def check_block(m, spec, stamp, tmp, where):
+    name = f"{where}: block {spec['id']}"
+    if not stamp:
+        raise Stale(f"{name} was never made: run `make docs`")
+    if stamp.get("spec") != spec_hash(m.group("spec")):
+        raise Stale(f"{name}: its commands changed since it was made: run `make docs`")
+    if spec["class"] == "slow":
+        for key, now in (("version", version()), ("digest", physics_digest())):
+            if stamp.get(key) != now:
+                raise Stale(f"{name} was made under {key} {stamp.get(key)}, the build is {now}: "
+                            f"rerun it (docs_blocks.py update --id {spec['id']} --class slow)")
+    elif spec["class"] == "timing":
+        if not stamp.get("machine") or not stamp.get("date"):
+            raise Stale(f"{name}: a timing without its machine and date")
+    else:
+        out = os.path.join(tmp, spec["id"])
+        program = body_of(spec, out, run_commands(spec, out), check=True)
+        page = m.group("body")
+        page = page[:page.rfind("<sub>")].rstrip("\n") + "\n" if "<sub>" in page else page
+        problem = first_difference(page, program, float(spec["tolerance"]))
+        if problem:
+            raise Stale(f"{name} disagrees with the program, {problem}: run `make docs`")
+
+
+def check(paths):
+    problems, count = [], 0
+    with tempfile.TemporaryDirectory() as tmp:
+        for path in paths:
+            with open(path) as f:
+                text = f.read()
+            where = os.path.relpath(path, ROOT)
+            for m, spec, stamp in blocks(text, path):
+                count += 1
+                try:
+                    check_block(m, spec, stamp, tmp, where)
+                except Stale as e:
+                    problems.append(str(e))
+    for p in problems:
+        print(p, file=sys.stderr)
+    print(f"docs_blocks: {count} blocks, {len(problems)} stale")
+    return 1 if problems else 0
+
+
+# Lint: a computed number in prose outside a generated block. A number counts when it has a
+# decimal point, or a unit after it; prose may still give, as they are, equation, table,
+# figure and section numbers, list numbers, years, software versions, and a paper's or an
+# input's values marked {paper}`5.24 %` or {input}`0.2 kg` (roles the site shows as text).
+UNIT = (r"(?:%|deg|mm|cm|m|s|ms|us|ns|N|MPa|kPa|Pa|Hz|kHz|kg|g|V|mV|GPa|Ohm|J|W|x|"
+        r"frames/s|fps|steps/s|trials/s|points|trials|rigs|arms|standard errors|se)(?![\w/])")
+COMPUTED = re.compile(r"(?<![\w.\-/])(?:\d+\.\d+(?:[eE][-+]?\d+)?|\d+(?=\s?" + UNIT + r"))")
+SOFTWARE = re.compile(r"\b(?:pamsim|MuJoCo|SUNDIALS|Python|Debian|Sphinx|CMake|NumPy|numpy|"
+                      r"gymnasium|Gymnasium|pybind11|Eigen|Ceres|PyTorch|C\+\+|bookworm|"
+                      r"toml\+\+|version|v)\s?\d+(?:\.\d+)+\b")
+HIDDEN = [re.compile(p, re.S | re.M) for p in (
+    r"<!-- pamsim-block.*?<!-- /pamsim-block[^\n]*?-->",   # generated blocks
+    r"<!--.*?-->",                                          # comments
+    r"^(```|~~~).*?^\1",                                    # fenced code
+    r"\{(?:input|paper)\}`[^`]*`",                          # marked inputs and paper values
+    r"`[^`\n]*`",                                           # inline code
+    r"\]\([^)]*\)",                                         # link targets
+    r"\b(?:Eq|Eqs|Table|Tables|Fig|Figs|Sec|Section|Ch)\.?\s?\(?[\dIVX][\w.\-,()]*",
+)]
+LINT_SKIP = ("docs/references.md",)
+
+
+def lint_text(text):
+    """Each computed number in prose: (line number, the numbers)."""
+    blank = lambda m: re.sub(r"[^\n]", " ", m.group(0))   # keeps the lines where they were
+    for pattern in HIDDEN:
+        text = pattern.sub(blank, text)
+    text = SOFTWARE.sub(blank, text)
+    for i, line in enumerate(text.splitlines(), 1):
+        found = COMPUTED.findall(line)
+        if found:
+            yield i, found
+
+
+def lint(paths):
+    problems = 0
+    for path in paths:
+        where = os.path.relpath(path, ROOT)
+        if where in LINT_SKIP:
+            continue
+        with open(path) as f:
+            text = f.read()
+        for line, numbers in lint_text(text):
+            problems += 1
+            print(f"{where}:{line}: {', '.join(numbers)} in prose: a computed number belongs in "
+                  f"a generated block; an input or a paper's value is marked {{input}}`...` or "
+                  f"{{paper}}`...`", file=sys.stderr)
+    print(f"docs_blocks lint: {len(paths)} pages, {problems} lines with computed numbers")
+    return 1 if problems else 0
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("action", choices=["update", "check", "lint", "digest"])
+    parser.add_argument("pages", nargs="*")
+    parser.add_argument("--class", dest="cls", default="cheap", choices=[*CLASSES, "all"])
+    parser.add_argument("--id", action="append", default=[])
+    args = parser.parse_args()
+    paths = pages(args.pages)
+    try:
+        if args.action == "update":
+            update(paths, CLASSES if args.cls == "all" else (args.cls,), args.id)
+            return 0
+        if args.action == "check":
+            return check(paths)
+        if args.action == "lint":
+            return lint(paths)
+        print(physics_digest())
+        return 0
+    except Stale as e:
+        print(f"docs_blocks: {e}", file=sys.stderr)
+        return 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
