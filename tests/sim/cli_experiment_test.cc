@@ -191,7 +191,7 @@ TEST(CliExperimentTest, BadExperimentInputIsOneLineNonZeroAndWritesNothing) {
 
   const std::vector<BadCase> cases = {
       {"an unknown schedule kind", (dir / "square.toml").string(),
-       "muscles.pam.command.kind must be one of"},
+       "muscles.pam.command.kind is \"square\", allowed"},
       {"a CSV with non-increasing time", (dir / "table.toml").string(),
        "muscles.pam.command.file: " + (dir / "back_in_time.csv").string() +
            ": line 4: time must increase strictly, got 1.5 s after 2 s"},

@@ -110,7 +110,8 @@ PressureSchedule table_schedule(std::vector<double> times_s, std::vector<double>
 
 void validate(const PressureSchedule& s, const std::string& key, double max_pa) {
   auto fail = [&](const std::string& field, const std::string& problem) {
-    throw InputError(key + (field.empty() ? "" : "." + field) + " " + problem);
+    const std::string where = key + (field.empty() ? "" : "." + field);
+    throw InputError(where + " " + problem, {"", where, problem});
   };
   for (double v : {s.p0_pa, s.p1_pa, s.amplitude_pa, s.period_s, s.phase_rad, s.start_s,
                    s.duration_s}) {

@@ -4,6 +4,7 @@
 // scenario_events.cc): keep those together when one changes.
 #include "sim/scenario/scenario_key_docs.h"
 #include "sim/scenario/scenario_key_tables.h"
+#include "sim/scenario/schedule_key_tables.h"
 
 #include <algorithm>
 #include <set>
@@ -59,19 +60,30 @@ std::vector<KeyDoc> model_docs() {
       {"muscles.<actuator>.label", "", "(the actuator's name)", "no spaces, commas or quotes; unique", "the muscle's name in columns and metrics"},
       {"muscles.<actuator>.line", "", "(none)", "\"equilibrium\"", "solve the line length so the start is static"},
       {"muscles.<actuator>.spans", "", "(not checked)", "list of joints of the model", "the joints its tendon must cross: refused if its path misses one (no moment arm at the start)"},
-      {"muscles.<actuator>.command.kind", "", "\"constant\"", "\"constant\" | \"ramp\" | \"sine\" | \"steps\" | \"table\"", "the commanded pressure's schedule"},
-      {"muscles.<actuator>.command.MPa", "MPa", "(required for constant, steps)", "a pressure (constant), or a list (steps)", "the commanded pressure"},
-      {"muscles.<actuator>.command.from_MPa", "MPa", "(required for ramp)", "a pressure", "a ramp's start"},
-      {"muscles.<actuator>.command.to_MPa", "MPa", "(required for ramp)", "a pressure", "a ramp's end"},
-      {"muscles.<actuator>.command.duration_s", "s", "0.0", ">= 0", "a ramp's duration"},
-      {"muscles.<actuator>.command.start_s", "s", "0.0", ">= 0", "when a ramp or sine starts"},
-      {"muscles.<actuator>.command.offset_MPa", "MPa", "(required for sine)", "a pressure", "a sine's mean"},
-      {"muscles.<actuator>.command.amplitude_MPa", "MPa", "(required for sine)", ">= 0", "a sine's amplitude"},
-      {"muscles.<actuator>.command.period_s", "s", "0.0", "> 0 for a sine", "a sine's period"},
-      {"muscles.<actuator>.command.phase_deg", "deg", "0.0", "finite", "a sine's phase"},
-      {"muscles.<actuator>.command.times_s", "s", "(required for steps)", "increasing times, one per MPa", "the steps' times"},
-      {"muscles.<actuator>.command.file", "", "(required for table)", "path to a CSV \"time_s,MPa\"", "a piecewise linear schedule"},
   };
+}
+
+// muscles.<actuator>.command: its kind's row, then each kind's rows (schedule_key_tables.h)
+std::vector<KeyDoc> schedule_docs() {
+  PressureSchedule defaults;
+  std::vector<KeyDoc> docs = key_table_docs({schedule_kind_key_table(&defaults)});
+  for (ScheduleKind kind : schedule_kinds()) {
+    const std::string with_kind = std::string("kind = \"") + to_string(kind) + "\": ";
+    for (const KeyDoc& d : key_table_docs({schedule_key_table(kind, &defaults)})) {
+      const auto same = std::find_if(docs.begin(), docs.end(),
+                                     [&](const KeyDoc& e) { return e.key == d.key; });
+      if (same == docs.end()) {   // a key of one kind, or the first kind that has it
+        docs.push_back({d.key, d.unit, d.fallback, with_kind + d.allowed,
+                        with_kind + d.meaning});
+      } else {                    // one key, several kinds (start_s, MPa): one line
+        same->allowed += "; " + with_kind + d.allowed;
+        same->meaning += "; " + with_kind + d.meaning;
+        if (same->fallback != d.fallback) same->fallback = "(by kind)";
+      }
+    }
+  }
+  docs.push_back({"muscles.<actuator>.command.file", "", "(required)", "path to a CSV \"time_s,MPa\"; kind = \"table\"", "a piecewise linear schedule through its rows (scenario/schedule_csv.h)"});
+  return docs;
 }
 
 // bodies, holds and the muscles' lines: their rows (scenario_key_tables.h)
@@ -182,8 +194,9 @@ std::vector<KeyDoc> controller_docs() {
 std::vector<KeyDoc> all_docs() {
   std::vector<KeyDoc> docs;
   for (const std::vector<KeyDoc>& part :
-       {model_docs(), valve_docs(), joint_docs(), time_and_drop_docs(), body_and_hold_docs(),
-        event_docs(), controller_docs(), sensor_docs(), instrument_docs()}) {
+       {model_docs(), schedule_docs(), valve_docs(), joint_docs(), time_and_drop_docs(),
+        body_and_hold_docs(), event_docs(), controller_docs(), sensor_docs(),
+        instrument_docs()}) {
     docs.insert(docs.end(), part.begin(), part.end());
   }
   return docs;

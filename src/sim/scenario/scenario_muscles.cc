@@ -11,6 +11,7 @@
 #include "sim/scenario/calibration_file.h"
 #include "sim/scenario/scenario_key_tables.h"
 #include "sim/scenario/scenario_reading.h"
+#include "sim/scenario/schedule_key_tables.h"
 
 namespace pamsim {
 namespace {
@@ -49,48 +50,25 @@ PressureSchedule read_command(ConfigReader& in, const std::string& key) {
   in.check(in.is_table(key), key, "must be a table: { kind = \"constant\", MPa = ... } or another "
                                   "schedule (core/schedule.h)");
   PressureSchedule s;
-  const std::string kind = in.get_string(key + ".kind", "constant");
-  s.kind = in_file(in, [&] { return parse_schedule_kind(kind, key + ".kind"); });
-  auto mpa = [&](const std::string& field) {
-    if (!in.has(key + "." + field)) in.fail(key + "." + field, "is required for kind \"" + kind + "\"");
-    return units::mpa_to_pa(in.get_double(key + "." + field, 0.0));
-  };
-  switch (s.kind) {
-    case ScheduleKind::kConstant:
-      s.p0_pa = mpa("MPa");
-      break;
-    case ScheduleKind::kRamp:
-      s.p0_pa = mpa("from_MPa");
-      s.p1_pa = mpa("to_MPa");
-      s.start_s = in.get_double(key + ".start_s", 0.0);
-      s.duration_s = in.get_double(key + ".duration_s", 0.0);
-      break;
-    case ScheduleKind::kSine:
-      s.p0_pa = mpa("offset_MPa");
-      s.amplitude_pa = mpa("amplitude_MPa");
-      s.period_s = in.get_double(key + ".period_s", 0.0);
-      s.phase_rad = units::deg_to_rad(in.get_double(key + ".phase_deg", 0.0));
-      s.start_s = in.get_double(key + ".start_s", 0.0);
-      break;
-    case ScheduleKind::kSteps: {
-      s.times_s = in.get_double_list(key + ".times_s", {});
-      for (double p : in.get_double_list(key + ".MPa", {})) s.values_pa.push_back(units::mpa_to_pa(p));
-      in.check(!s.times_s.empty() && s.times_s.size() == s.values_pa.size(), key + ".MPa",
-               "must give one pressure per time in times_s, at least one");
-      break;
-    }
-    case ScheduleKind::kTable: {
-      const std::string file = in.get_input_path(key + ".file", "");
-      in.check(!file.empty(), key + ".file", "is required for kind \"table\"");
-      s = in_file(in, [&] {
-        try {
-          return read_schedule_csv(file);
-        } catch (const InputError& e) {
-          throw InputError(key + ".file: " + e.what());   // the key, then the CSV's own line
-        }
-      });
-      break;
-    }
+  KeyTable kind = schedule_kind_key_table(&s);
+  kind.name = key;
+  read_key_rows(in, kind);
+  KeyTable rows = schedule_key_table(s.kind, &s);
+  rows.name = key;
+  read_key_rows(in, rows);
+  if (s.kind == ScheduleKind::kSteps) {
+    in.check(!s.times_s.empty() && s.times_s.size() == s.values_pa.size(), key + ".MPa",
+             "must give one pressure per time in times_s, at least one");
+  } else if (s.kind == ScheduleKind::kTable) {
+    const std::string file = in.get_input_path(key + ".file", "");
+    in.check(!file.empty(), key + ".file", "is required for kind \"table\"");
+    s = in_file(in, [&] {
+      try {
+        return read_schedule_csv(file);
+      } catch (const InputError& e) {
+        throw InputError(key + ".file: " + e.what());   // the key, then the CSV's own line
+      }
+    });
   }
   return s;
 }
