@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <iterator>
+#include <set>
 #include <limits>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +15,7 @@
 
 #include <toml++/toml.h>
 
+#include "base/format.h"
 #include "base/input_error.h"
 #include "base/toml_file.h"
 #include "base/key_table.h"
@@ -93,6 +95,30 @@ std::string quoted(const std::string& s) {
   return out.str();
 }
 
+// the index of `law` in kLaws
+std::size_t law_index(SpringLaw law) {
+  return static_cast<std::size_t>(std::find(std::begin(kLaws), std::end(kLaws), law) -
+                                  std::begin(kLaws));
+}
+
+// a table of choices as a TOML inline table: { pressure = "MPa", ... }
+std::string inline_choices(const KeyTable& table) {
+  std::string text = "{ ";
+  for (const ChoiceRow& row : table.choices) {
+    text += (text.size() > 2 ? ", " : "") + row.name + " = \"" + row.get() + "\"";
+  }
+  return text + " }";
+}
+
+// whether a row's key names its unit ("length_mm"), or the unit is none
+bool unit_in_name(const NumberRow& row) {
+  std::string suffix = "_" + row.unit;   // "V/N" as "_V_per_N"
+  for (std::size_t at; (at = suffix.find('/')) != std::string::npos;) suffix.replace(at, 1, "_per_");
+  return row.unit.empty() ||
+         (row.name.size() > suffix.size() &&
+          row.name.compare(row.name.size() - suffix.size(), suffix.size(), suffix) == 0);
+}
+
 }  // namespace
 
 PamParams load_pam_params(const std::string& path) {
@@ -106,8 +132,7 @@ PamParams load_pam_params(const std::string& path) {
                         "spring.units.force"}) {
     if (!has(k)) throw file_key_error(path, k, "is required");
   }
-  const std::size_t law = static_cast<std::size_t>(
-      std::find(std::begin(kLaws), std::end(kLaws), f.law) - std::begin(kLaws));
+  const std::size_t law = law_index(f.law);
   for (std::size_t l = 0; l < 3; ++l) {
     for (int k = 0; k < coefficient_count(kLaws[l]); ++k) {
       const std::string key = "spring." + coefficient_name(kLaws[l], k);
@@ -128,9 +153,7 @@ void validate_pam_params(const SpringModel& spring, const StrainGaugeParams& gau
                          const std::string& key_prefix) {
   PamFile f;
   f.law = spring.law;
-  const std::size_t law = static_cast<std::size_t>(
-      std::find(std::begin(kLaws), std::end(kLaws), f.law) - std::begin(kLaws));
-  spring_model_to_paper_units(spring, &f.m_mm_per_mpa, &f.h_mm, &f.coef[law]);
+  spring_model_to_paper_units(spring, &f.m_mm_per_mpa, &f.h_mm, &f.coef[law_index(f.law)]);
   f.gauge = gauge;
   const std::vector<KeyTable> tables = pam_key_tables(&f);
   for (const char* name : {"strain_gauge", "spring"}) {   // the gauge first, as a reader meets it
@@ -148,39 +171,40 @@ std::vector<KeyDoc> pam_key_docs() {
 }
 
 std::string pam_params_to_toml(const PamParams& params) {
+  PamFile f;
+  f.params = params;
+  f.law = params.spring.law;
+  spring_model_to_paper_units(params.spring, &f.m_mm_per_mpa, &f.h_mm,
+                              &f.coef[law_index(f.law)]);
+  if (params.strain_gauge) f.gauge = *params.strain_gauge;
+  if (params.geometry) f.geometry = *params.geometry;
+  // the law's own coefficients, and the optional tables the parameters have
+  std::set<std::string> written = {"", "spring", "spring.units"};
+  if (params.strain_gauge) written.insert("strain_gauge");
+  if (params.geometry) written.insert("geometry");
+  std::set<std::string> other_laws;
+  for (SpringLaw law : kLaws) {
+    for (int k = 0; k < coefficient_count(law); ++k) {
+      if (law != f.law) other_laws.insert(coefficient_name(law, k));
+    }
+  }
+  for (int k = 0; k < coefficient_count(f.law); ++k) other_laws.erase(coefficient_name(f.law, k));
+
   std::ostringstream out;
-  out << "# PAM parameter file (pamsim); units are the paper's (seeds/000): p MPa, d mm, f N\n";
-  out << "name = " << quoted(params.name) << "\n";
-  out << "source = " << quoted(params.source) << "\n";
-
-  // spring model, Eq. (2)-(5)
-  double m = 0.0, h = 0.0;
-  std::array<double, 6> coef{};
-  spring_model_to_paper_units(params.spring, &m, &h, &coef);
-  out << "\n[spring]\n";
-  out << "law = \"" << to_string(params.spring.law) << "\"\n";
-  out << "units = { pressure = \"MPa\", length = \"mm\", force = \"N\" }\n";
-  out << "m = " << format_number(m) << "   # Eq. (2) slope [mm/MPa]\n";
-  out << "h = " << format_number(h) << "   # Eq. (2) intercept [mm]\n";
-  for (int k = 0; k < coefficient_count(params.spring.law); ++k) {
-    out << coefficient_name(params.spring.law, k) << " = " << format_number(coef[k]) << "\n";
-  }
-
-  // optional sections
-  if (params.strain_gauge) {
-    out << "\n[strain_gauge]   # Eq. (8)\n";
-    out << "q_V_per_N = " << format_number(params.strain_gauge->q_v_per_n) << "\n";
-    out << "V_base_V = " << format_number(params.strain_gauge->v_base_v) << "\n";
-  }
-  if (params.geometry) {
-    const PamGeometry& g = *params.geometry;
-    out << "\n[geometry]\n";
-    out << "length_mm = " << format_number(units::m_to_mm(g.length_m)) << "\n";
-    out << "sleeve_diameter_mm = " << format_number(units::m_to_mm(g.sleeve_diameter_m))
-        << "\n";
-    out << "bladder_diameter_mm = " << format_number(units::m_to_mm(g.bladder_diameter_m))
-        << "\n";
-    out << "braid_angle_deg = " << format_number(units::rad_to_deg(g.braid_angle_rad)) << "\n";
+  out << "# PAM parameter file (pamsim), every key from its row; units are the paper's: p MPa, "
+         "d mm, f N\n";
+  for (const KeyTable& t : pam_key_tables(&f)) {
+    if (!written.count(t.name) || t.name == "spring.units") continue;
+    if (!t.name.empty()) out << "\n[" << t.name << "]\n";
+    for (const TextRow& row : t.texts) out << row.name << " = " << quoted(*row.target) << "\n";
+    for (const ChoiceRow& row : t.choices) out << row.name << " = \"" << row.get() << "\"\n";
+    if (t.name == "spring") out << "units = " << inline_choices(pam_key_tables(&f).at(2)) << "\n";
+    for (const NumberRow& row : t.numbers) {
+      if (other_laws.count(row.name)) continue;
+      out << row.name << " = " << format_number(from_si(row, *row.target));
+      if (!unit_in_name(row)) out << "   # " << row.unit;
+      out << "\n";
+    }
   }
   return out.str();
 }
