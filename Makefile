@@ -47,10 +47,14 @@ demo: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target pamsim
 	bash scripts/demo.sh $(PAMSIM)
 
-# the documentation site (docs/, Sphinx and MyST): its reference pages written from pamsim
-# itself, warnings as errors, into $(BUILD_DIR)/docs
+# the documentation site (docs/, Sphinx and MyST): its cheap generated blocks made again by
+# this build (scripts/docs_blocks.py; `make docs DOCS_BLOCKS=all` also the slow ones and the
+# timings), its reference pages written from pamsim itself, warnings as errors, into
+# $(BUILD_DIR)/docs
+DOCS_BLOCKS ?= cheap
 docs: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target pamsim
+	PAMSIM=$(PAMSIM) $(PYTHON) scripts/docs_blocks.py update --class $(DOCS_BLOCKS)
 	bash scripts/docs.sh $(PAMSIM) $(BUILD_DIR)/docs
 
 test: build

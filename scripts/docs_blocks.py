@@ -289,19 +289,21 @@ def atomic_write(path, text):
     os.replace(tmp, path)
 
 
-def first_difference(page, program, tolerance):
+def first_difference(page, program, tolerance, first_line=1):
     """The first line where the page's text and the program's differ in a word, or in a
-    number by more than `tolerance` (relative); None if none does."""
+    number by more than `tolerance` (relative), numbered from `first_line`; None if none
+    does."""
     a, b = page.splitlines(), program.splitlines()
     for i in range(max(len(a), len(b))):
         x = a[i] if i < len(a) else ""
         y = b[i] if i < len(b) else ""
         if NUMBER.split(x) != NUMBER.split(y):
-            return f"line {i + 1}: the page has {x.strip()!r}, the program {y.strip()!r}"
+            return (f"line {first_line + i}: the page has {x.strip()!r}, the program "
+                    f"{y.strip()!r}")
         for u, v in zip(NUMBER.findall(x), NUMBER.findall(y)):
             fu, fv = float(u), float(v)
             if abs(fu - fv) > tolerance * max(abs(fu), abs(fv)):
-                return (f"line {i + 1}: the page has {u}, the program {v} (tolerance "
+                return (f"line {first_line + i}: the page has {u}, the program {v} (tolerance "
                         f"{tolerance:g})")
     return None
 
@@ -325,7 +327,8 @@ def check_block(m, spec, stamp, tmp, where):
         program = body_of(spec, out, run_commands(spec, out), check=True)
         page = m.group("body")
         page = page[:page.rfind("<sub>")].rstrip("\n") + "\n" if "<sub>" in page else page
-        problem = first_difference(page, program, float(spec["tolerance"]))
+        first_line = m.string.count("\n", 0, m.start("body")) + 1
+        problem = first_difference(page, program, float(spec["tolerance"]), first_line)
         if problem:
             raise Stale(f"{name} disagrees with the program, {problem}: run `make docs`")
 
