@@ -22,7 +22,8 @@ as a figure.
 
 The three classes, and what `check` (CI) holds each to:
   cheap   rerun, and its text compared with the page's: the words exactly, every number
-          within the block's `tolerance` (relative, default 1e-9);
+          within the block's `tolerance` (relative, default 1e-9); a figure must be there
+          (its data are the text's numbers; its pixels depend on the machine's fonts);
   slow    too slow for CI: its stamp's physics digest and version must be the build's (the
           digest hashes the outputs of a few short reference runs, so any change of the
           physics, the sensors or the estimator changes it);
@@ -158,22 +159,16 @@ def render_show(item, spec, out, stdout, check=False):
             return f"```{os.path.splitext(item)[1][1:]}\n{f.read().rstrip()}\n```"
     if item.endswith((".png", ".svg")):
         target = os.path.join(ROOT, "docs", "generated", spec["id"], os.path.basename(item))
-        if check:
-            if not same_file(path, target):
-                raise Stale(f"block {spec['id']}: the figure {item} is not the page's "
-                            f"(docs/generated/{spec['id']}/)")
+        if check:   # its data are the block's numbers; its pixels depend on the fonts
+            if not os.path.isfile(target):
+                raise Stale(f"block {spec['id']}: the figure {item} is not in "
+                            f"docs/generated/{spec['id']}/")
         else:
             os.makedirs(os.path.dirname(target), exist_ok=True)
             shutil.copyfile(path, target)
-        return f"![{spec['id']}: {item}](/generated/{spec['id']}/{os.path.basename(item)})"
+        shown = os.path.relpath(target, os.path.dirname(spec["page"]))   # GitHub's and Sphinx's
+        return f"![{spec['id']}: {item}]({shown})"
     raise Stale(f"block {spec['id']}: cannot show {item} (stdout, .md, .csv, .json, .txt, .toml, .png, .svg)")
-
-
-def same_file(a, b):
-    if not os.path.isfile(b):
-        return False
-    with open(a, "rb") as fa, open(b, "rb") as fb:
-        return fa.read() == fb.read()
 
 
 def body_of(spec, out, stdout, check=False):
@@ -251,6 +246,7 @@ def make_block(spec_text, spec, tmp):
 def blocks(text, path):
     for m in BLOCK.finditer(text):
         spec = parse_spec(m.group("spec"), os.path.relpath(path, ROOT))
+        spec["page"] = path
         stamp = json.loads(m.group("stamp").strip() or "{}")
         yield m, spec, stamp
 
@@ -369,6 +365,7 @@ HIDDEN = [re.compile(p, re.S | re.M) for p in (
     r"\{(?:input|paper)\}`[^`]*`",                          # marked inputs and paper values
     r"`[^`\n]*`",                                           # inline code
     r"\]\([^)]*\)",                                         # link targets
+    r"\b(?:doi:|https?://)\S+",                             # DOIs and addresses
     r"\b(?:Eq|Eqs|Table|Tables|Fig|Figs|Sec|Section|Ch)\.?\s?\(?[\dIVX][\w.\-,()]*",
 )]
 LINT_SKIP = ("docs/references.md",)
