@@ -181,7 +181,7 @@ void bind_muscle(py::module_& m) {
         },
         py::arg("law"), py::arg("pressure_MPa"), py::arg("deformation_mm"), py::arg("force_N"),
         py::arg("length_mm") = py::none(),
-        "Least-squares fit of Eq. (2) and the law (seeds/000 Sec. II-B): {model, rmse_N, r2, points}");
+        "Least-squares fit of Eq. (2) and the law (Yoshida and Hosoda, Sec. II-B): {model, rmse_N, r2, points}");
   m.def("fit_csv",
         [](const std::string& law, const std::string& path) {
           return fit_to_dict(fit_spring_model(parse_spring_law(law, "law"), read_tensile_csv(path), path));

@@ -113,7 +113,7 @@ def _cxx_step_s(scenario: str, overrides: typing.Any, periods: typing.SupportsIn
     ...
 def fit(law: str, pressure_MPa: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], deformation_mm: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], force_N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], length_mm: typing.Annotated[numpy.typing.ArrayLike, numpy.float64] | None = None) -> dict[str, typing.Any]:
     """
-    Least-squares fit of Eq. (2) and the law (seeds/000 Sec. II-B): {model, rmse_N, r2, points}
+    Least-squares fit of Eq. (2) and the law (Yoshida and Hosoda, Sec. II-B): {model, rmse_N, r2, points}
     """
 def fit_csv(law: str, path: str) -> dict[str, typing.Any]:
     """

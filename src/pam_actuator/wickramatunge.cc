@@ -64,7 +64,7 @@ void check_units(const std::string& path, const toml::table& root) {
     const std::string got = u[k].value_or(std::string());
     if (got != unit) {
       fail(path, std::string("units.") + k,
-           "must be \"" + std::string(unit) + "\" (Table 1 of seeds/002), got \"" + got + "\"");
+           "must be \"" + std::string(unit) + "\" (Table 1 of Wickramatunge and Leephakpreeda), got \"" + got + "\"");
     }
   }
 }

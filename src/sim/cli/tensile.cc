@@ -88,7 +88,7 @@ void run_tensile(const TensileCommand& c) {
 
 void add_tensile_command(CLI::App& app) {
   const auto [cmd, c] = add_command<TensileCommand>(
-      app, "tensile", "virtual static tensile test (seeds/000 Sec. II-B), written as CSV",
+      app, "tensile", "virtual static tensile test (Yoshida and Hosoda, Sec. II-B), written as CSV",
       run_tensile);
   TensileTestOptions& t = c->test;
   cmd->add_option("--params", c->params_path, "PAM parameter file (TOML): test its spring law");

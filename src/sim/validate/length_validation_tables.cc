@@ -58,8 +58,8 @@ std::string table3_markdown(const LengthValidationResult& result,
                             const LengthValidationSpec& spec) {
   std::ostringstream out;
   out << "# Table III in simulation: dynamic length estimation, error in % of length\n\n"
-      << "Each cell: simulation max / RMSE (paper max / RMSE, seeds/000 Table III; the paper "
-         "does not split by weight).\n";
+      << "Each cell: simulation max / RMSE (paper max / RMSE, Yoshida and Hosoda's Table III; "
+         "the paper does not split by weight).\n";
   for (double weight : spec.weights_kg) {
     out << "\n## " << format_shortest(weight) << " kg\n\n";
     pam_columns(out, spec);

@@ -276,7 +276,8 @@ std::string table5_markdown(const ReachingValidationResult& result,
   out << "# Table V in simulation: length estimation in the reaching task, error in % of length\n\n"
       << "Each cell: simulation max / RMSE over " << spec.trials << " trials, "
       << format_value(spec.window_start_s) << "-" << format_value(spec.window_end_s)
-      << " s (paper max / RMSE, seeds/000 Table V and Sec. IV-B; - where it gives none).\n\n";
+      << " s (paper max / RMSE, Yoshida and Hosoda's Table V and Sec. IV-B; - where it gives "
+         "none).\n\n";
   out << "| method | part |";
   for (const MuscleSpec& m : result.scenario.muscles) out << ' ' << m.actuator << " |";
   out << "\n| --- | --- |";
