@@ -97,6 +97,11 @@ def parse_spec(text, where):
     for key in ("run", "show"):
         if isinstance(spec[key], str):
             spec[key] = [spec[key]]
+        for item in spec[key]:
+            if not isinstance(item, (str, int)):
+                raise Stale(f"{where}: block {spec['id']}: a {key} item that YAML reads as "
+                            f"{type(item).__name__} (a ': ' inside it?); write it as `- |` and "
+                            f"the command on the next line")
     spec.setdefault("tolerance", DEFAULT_TOLERANCE)
     return spec
 
@@ -115,16 +120,21 @@ def run_commands(spec, out):
         shutil.rmtree(out)
     os.makedirs(out)
     stdout = ""
+    shown_out = os.path.relpath(out, ROOT) if out.startswith(ROOT + os.sep) else out
     for command in spec["run"]:
-        line = command.replace("{out}", out)
+        line = command.replace("{out}", shown_out)
         line = re.sub(r"(^|[\s;&|(])pamsim\b", lambda m: m.group(1) + pamsim_binary(), line)
         done = subprocess.run(line, shell=True, cwd=ROOT, capture_output=True, text=True)
         if done.returncode != 0:
             raise Stale(f"block {spec['id']}: `{command}` failed ({done.returncode}): "
                         f"{(done.stderr or done.stdout).strip().splitlines()[-1:]}")
-        stdout = done.stdout.replace(pamsim_binary(), "pamsim").replace(out, f"renders/docs/"
-                                                                           f"{spec['id']}")
+        stdout = as_shown(done.stdout)
     return stdout
+
+
+def as_shown(text):
+    """Text as the reader's own run prints it: `pamsim`, and paths from the repository."""
+    return text.replace(pamsim_binary(), "pamsim").replace(ROOT + os.sep, "")
 
 
 def csv_table(path):
@@ -151,12 +161,13 @@ def render_show(item, spec, out, stdout, check=False):
         raise Stale(f"block {spec['id']}: its command wrote no {item}")
     if item.endswith(".md"):
         with open(path) as f:
-            return f.read().strip()
+            return as_shown(f.read()).strip()
     if item.endswith(".csv"):
         return csv_table(path)
     if item.endswith((".json", ".txt", ".toml")):
+        lexer = {".json": "json", ".txt": "text", ".toml": "toml"}[os.path.splitext(item)[1]]
         with open(path) as f:
-            return f"```{os.path.splitext(item)[1][1:]}\n{f.read().rstrip()}\n```"
+            return f"```{lexer}\n{as_shown(f.read()).rstrip()}\n```"
     if item.endswith((".png", ".svg")):
         target = os.path.join(ROOT, "docs", "generated", spec["id"], os.path.basename(item))
         if check:   # its data are the block's numbers; its pixels depend on the fonts
@@ -234,8 +245,13 @@ def stamp_line(stamp):
     return f"<sub>{made}, measured on {stamp['machine']}.</sub>"
 
 
-def make_block(spec_text, spec, tmp):
-    out = os.path.join(tmp, spec["id"])
+def block_out(spec):
+    """Where a block's commands write: renders/docs/<id>, as the reader's run would."""
+    return os.path.join(ROOT, "renders", "docs", spec["id"])
+
+
+def make_block(spec_text, spec):
+    out = block_out(spec)
     stdout = run_commands(spec, out)
     stamp = stamp_of(spec, spec_text)
     body = body_of(spec, out, stdout) + "\n" + stamp_line(stamp) + "\n"
@@ -251,31 +267,40 @@ def blocks(text, path):
         yield m, spec, stamp
 
 
+def update_page(path, classes, only, seen):
+    """Makes `path`'s blocks of `classes` (or of the ids in `only`) again; returns the wall
+    time its cheap blocks took."""
+    with open(path) as f:
+        text = f.read()
+    where = os.path.relpath(path, ROOT)
+    pieces, last, cheap_s = [], 0, 0.0
+    for m, spec, _ in blocks(text, path):
+        if spec["id"] in seen:
+            raise Stale(f"{where}: block id {spec['id']} is also in {seen[spec['id']]}")
+        seen[spec["id"]] = where
+        pieces.append(text[last:m.start()])
+        last = m.end()
+        if spec["class"] not in classes or (only and spec["id"] not in only):
+            pieces.append(m.group(0))
+            continue
+        started = time.time()
+        pieces.append(make_block(m.group("spec"), spec)[0])
+        took = time.time() - started
+        cheap_s += took if spec["class"] == "cheap" else 0.0
+        print(f"{where}: {spec['id']} ({spec['class']}, {took:.1f} s)")
+    pieces.append(text[last:])
+    if "".join(pieces) != text:
+        atomic_write(path, "".join(pieces))
+    return cheap_s
+
+
 def update(paths, classes, only):
     seen = {}
-    with tempfile.TemporaryDirectory() as tmp:
-        for path in paths:
-            with open(path) as f:
-                text = f.read()
-            pieces, last, changed = [], 0, False
-            for m, spec, _ in blocks(text, path):
-                if spec["id"] in seen:
-                    raise Stale(f"{os.path.relpath(path, ROOT)}: block id {spec['id']} is also "
-                                f"in {seen[spec['id']]}")
-                seen[spec["id"]] = os.path.relpath(path, ROOT)
-                pieces.append(text[last:m.start()])
-                if spec["class"] in classes and (not only or spec["id"] in only):
-                    started = time.time()
-                    block, _ = make_block(m.group("spec"), spec, tmp)
-                    print(f"{seen[spec['id']]}: {spec['id']} ({time.time() - started:.1f} s)")
-                    pieces.append(block)
-                    changed = True
-                else:
-                    pieces.append(m.group(0))
-                last = m.end()
-            pieces.append(text[last:])
-            if changed:
-                atomic_write(path, "".join(pieces))
+    for path in paths:
+        cheap_s = update_page(path, classes, only, seen)
+        if cheap_s:
+            print(f"{os.path.relpath(path, ROOT)}: its cheap blocks took {cheap_s:.1f} s "
+                  f"(CI reruns them all)")
 
 
 def atomic_write(path, text):
@@ -304,7 +329,7 @@ def first_difference(page, program, tolerance, first_line=1):
     return None
 
 
-def check_block(m, spec, stamp, tmp, where):
+def check_block(m, spec, stamp, where):
     name = f"{where}: block {spec['id']}"
     if not stamp:
         raise Stale(f"{name} was never made: run `make docs`")
@@ -319,7 +344,7 @@ def check_block(m, spec, stamp, tmp, where):
         if not stamp.get("machine") or not stamp.get("date"):
             raise Stale(f"{name}: a timing without its machine and date")
     else:
-        out = os.path.join(tmp, spec["id"])
+        out = block_out(spec)
         program = body_of(spec, out, run_commands(spec, out), check=True)
         page = m.group("body")
         page = page[:page.rfind("<sub>")].rstrip("\n") + "\n" if "<sub>" in page else page
@@ -331,17 +356,16 @@ def check_block(m, spec, stamp, tmp, where):
 
 def check(paths):
     problems, count = [], 0
-    with tempfile.TemporaryDirectory() as tmp:
-        for path in paths:
-            with open(path) as f:
-                text = f.read()
-            where = os.path.relpath(path, ROOT)
-            for m, spec, stamp in blocks(text, path):
-                count += 1
-                try:
-                    check_block(m, spec, stamp, tmp, where)
-                except Stale as e:
-                    problems.append(str(e))
+    for path in paths:
+        with open(path) as f:
+            text = f.read()
+        where = os.path.relpath(path, ROOT)
+        for m, spec, stamp in blocks(text, path):
+            count += 1
+            try:
+                check_block(m, spec, stamp, where)
+            except Stale as e:
+                problems.append(str(e))
     for p in problems:
         print(p, file=sys.stderr)
     print(f"docs_blocks: {count} blocks, {len(problems)} stale")
