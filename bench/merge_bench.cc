@@ -104,7 +104,7 @@ BENCHMARK(BM_Merge1M)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 // What one writer (an MPI sweep's rank 0, or a threaded sweep) can store: 20000 synthetic
 // trials of the smoke sweep's columns inserted in transactions of `batch` trials each
 // (ResultsDb::insert: WAL, synchronous=FULL, so each commit waits for the disk). Counter
-// trials_per_s: the storage rate the README's cluster estimate uses.
+// trials_per_s: the storage rate docs/cluster.md's estimate uses.
 void BM_StoreTrials(benchmark::State& state) {
   const fs::path dir = fs::temp_directory_path() / ("pamsim_store_bench_" + std::to_string(::getpid()));
   fs::remove_all(dir);

@@ -76,7 +76,7 @@ def toml_list(items):
 def identify_text(noise_seed):
     lines = [f'base = "{os.path.join(ROOT, "examples", "identify", "arm.toml")}"']
     # the model's trials without its sensors' noise: its prediction is the expected
-    # trajectory (README, "The worked example": a second noise realisation inside the model
+    # trajectory (docs/identification.md, "The worked example": a second noise realisation inside the model
     # is a difference the covariance does not see)
     lines += [f"{k} = {v}" for k, v in SEARCH.items()]
     lines += ["seed = 1", 'overrides = ["sensors.noise_scale=0"]', ""]

@@ -37,7 +37,7 @@ def test_law_and_its_inversion_round_trip_over_arrays():
     np.testing.assert_allclose(back[ok], d[ok], rtol=0, atol=1e-9)
     # vectorised values are the scalar ones, bit for bit
     assert law.force_N(float(p[3, 7]), float(d[3, 7])) == f[3, 7]
-    # Table IV agonist at 0.4 MPa and 10 mm (the README's estimate example)
+    # Table IV agonist at 0.4 MPa and 10 mm (the estimate example of docs/command-line.md)
     assert law.force_N(0.4, 10.0) == pytest.approx(54.67, abs=1e-9)
     assert law.force_N(0.4, -1.0) == 0.0  # slack
     assert law.natural_length_mm(0.0) == pytest.approx(170.1)

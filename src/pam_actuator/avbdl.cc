@@ -71,7 +71,7 @@ double integrate_unit_interval(const F& f) {
 // reference (unstrained) bladder volume per unit length: an annulus from R0 out to R0 + t.
 // A reading of Eq. (24), which multiplies by "the bladder volume" without placing the wall;
 // a bladder inside the braid (R0 - t to R0) would hold (2 R0 - t) / (2 R0 + t) of this
-// rubber, two thirds for plant_agonist.toml (README, departures)
+// rubber, two thirds for plant_agonist.toml (docs/physics.md, departures)
 // With a tube (bladder_diameter_m > 0): the annulus Db / 2 - t to Db / 2, 2 pi rb t.
 double bladder_area(const AvbdlParams& p) {
   if (p.bladder_diameter_m > 0.0) {

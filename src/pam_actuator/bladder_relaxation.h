@@ -24,7 +24,7 @@
 // h = 2 tan(delta) / pi; one term per decade of tau across the band stands in for it with
 // g_i = h ln(10) (Tschoegl, The Phenomenological Theory of Linear Viscoelastic Behavior,
 // Springer 1989, Ch. 4: G'' = (pi / 2) H for a slowly varying spectrum). The shipped plant
-// files do not use it (README, departures: no checked source for the tube's loss
+// files do not use it (docs/physics.md, departures: no checked source for the tube's loss
 // tangent, and with 0.05 it moves the drop by at most 0.1 deg, the bladder carrying about 4 %
 // of the muscle's stiffness). It acts in the co-simulation (sim/core/pam_callback.h keeps
 // its state per trial); the tensile test's points are read at rest, relaxed.

@@ -51,7 +51,7 @@ struct StretchReflexParams {
   // fiber reflex (25 mm/s) re-fired on them; 0.5 s after the 0.2 s window covers the first
   // three rebounds. The physical plant (drop_mass.toml) swings at ~1.9 Hz and its braid
   // friction damps the swing within a cycle: there this gate alone changes nothing
-  // measurable (README, the gates table). A pamsim addition: 0 switches it off.
+  // measurable (docs/findings.md, the gates table). A pamsim addition: 0 switches it off.
   double refractory_s = 0.5;
   // reflex.arm_after_s >= 0. Default 0.1 s: three time constants (tau = 32 ms) of a 5 Hz
   // (cut-off) pressure low-pass when one is on (sensors.pressure_lowpass_hz), and still

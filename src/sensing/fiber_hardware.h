@@ -18,7 +18,7 @@
 // noise of sensors.fiber_noise_mm_s, as before).
 //
 // Figures: Hitzmann et al.'s own calibration curves and drift figures could not be retrieved
-// in this session, so both are ASSUMPTIONS (README row), sized from knitted and stitched
+// in this session, so both are ASSUMPTIONS (docs/physics.md, departures), sized from knitted and stitched
 // conductive strain sensors in the literature: a linear fit of R^2 = 0.984 with 6.25 %
 // hysteresis (Tangsirinaruenart & Stylios, "A novel textile stitch-based strain sensor for
 // wearable end users", 2019, art. 1469), 0.3 % nonlinearity but 12.5 % hysteresis and large

@@ -20,12 +20,12 @@
 // is unloaded from then on, whatever the line pulls (the paper's "failure to send voltage
 // signals"). The reading follows the pull times the lever y - y_g (gauge_board.h).
 //
-// The figures (each a key, sensors.gauge.contact.*) are an ASSUMPTION, a README row: the
+// The figures (each a key, sensors.gauge.contact.*) are an ASSUMPTION, a row of docs/physics.md's departures: the
 // paper gives no geometry of its gauges. D = 2 mm (an assembly's lateral tolerance), d1 = 20
 // mm (the board at the fitting), d2 = 250 mm (the MJCF's 0.4 m from anchor to shaft less the
 // muscle), theta = 30 deg, mu = 0.3 (nylon on acrylic, the usual 0.2-0.4 of polymer pairs),
 // and the board 5 mm longer than the contact position. With them the contact sticks over
-// the arm's whole stroke (w about 2.9 mm, y* moving about 0.2 mm): README says what it would
+// the arm's whole stroke (w about 2.9 mm, y* moving about 0.2 mm): docs/physics.md says what it would
 // take to lose it.
 #pragma once
 

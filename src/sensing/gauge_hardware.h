@@ -40,7 +40,7 @@ struct GaugeHardwareConfig {
   QuarterBridgeParams bridge;
   // sensors.gauge.board.*: the paper gives no board dimensions; these are an ASSUMPTION (a
   // 20 x 5 mm acrylic strip, the gauge 10 mm from the clamp, the line 30 mm beyond it:
-  // about 0.5 % strain at 50 N), a README row. E from gauge_board.h.
+  // about 0.5 % strain at 50 N), a row of docs/physics.md's departures. E from gauge_board.h.
   GaugeBoardParams board = {3.3e9, 0.020, 0.005, 0.010, 0.040, 0.045};
   // sensors.gauge.board.creep_weights and creep_times_s (two lists of one length): none
   // by default; or the board's creep as cast PMMA's Findley law (findley_creep.h),

@@ -19,7 +19,7 @@
 //
 // Figures (the PSE540 datasheet itself could not be retrieved in this session; these are the
 // class figures the project quotes for it in sensors.h and issue 25, and assumptions where
-// stated, each a README row):
+// stated, each a row of docs/physics.md's departures):
 //  - accuracy +-2 % F.S. (+-20 kPa): read as a 3-sigma bound on an instrument's static error
 //    at full scale, shared equally by zero and span: bias_stddev = 2 % / (3 sqrt 2) F.S.
 //    ~ 4.7 kPa, gain_error_stddev ~ 0.47 % (ASSUMPTION: the split and the 3 sigma);

@@ -52,7 +52,7 @@ namespace pamsim {
 // it reads round(l / resolution) resolution (sensor_noise.h's quantise). Keys
 // sensors.encoder.model ("ideal" | "counts") and sensors.encoder.resolution_mm (> 0). The
 // DS-025's resolution could not be retrieved in this session: 0.01 mm is an ASSUMPTION, the
-// usual count of digital-scale linear encoders of its class (README row). Where pamsim uses
+// usual count of digital-scale linear encoders of its class (docs/physics.md, departures). Where pamsim uses
 // the encoder's reading: the fiber sensor's calibration at its first sample (FiberSensor);
 // the logged length_<m>_mm stays the plant's true length.
 struct EncoderConfig {
@@ -78,7 +78,7 @@ struct SensorConfig {
   // arm's ~5 Hz mode until the mass was thrown out. At the default noise (0.001 MPa) the
   // unfiltered velocity noise is ~9 mm/s, 7 sigma below the 70 mm/s threshold: no mistrips
   // without the filter (on the physical plant they begin at twice the default noise,
-  // sensors.noise_scale = 2; README, the noise sweep).
+  // sensors.noise_scale = 2; docs/findings.md, sensor noise).
   double pressure_lowpass_hz = 0.0;
   double gauge_noise_v = 0.5e-3;       // sensors.gauge_noise_V, std dev, >= 0
   int gauge_adc_bits = 16;             // sensors.gauge_adc_bits, 0 (ideal) or 4..24

@@ -246,7 +246,7 @@ TEST(DropMassTest, JointKeysSetTheModelsDampingAndFrictionLoss) {
 // windows the log shows, the length errors in % with the logged lengths.
 TEST(DropMassTest, OutcomeMetricsAgreeWithTheTrajectory) {
   // the shipped scenarios keep the mass without retriggers; the fiber reflex on the ideal
-  // plant loses it and retriggers (README, Findings), so both branches are checked
+  // plant loses it and retriggers (docs/findings.md), so both branches are checked
   const std::vector<std::string> ideal_fiber = {
       "reflex.sensor=\"fiber\"", "reflex.v_thr_mm_s=25",
       "reflex.k_MPa_s_per_mm=0.0033333333333333335"};

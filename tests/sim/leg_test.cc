@@ -145,8 +145,8 @@ TEST(LegTest, BehindTheShippedRegulatorTheReflexesActOnlyAfterTheImpact) {
 // Behind a direct valve, with the gains scenarios/sweep_landing_gains.toml finds (Ia 0.00094,
 // Ib 0.0034), Ia + Ib collapses the knee less than no reflex on the 100 mm landing (29.45 deg
 // against 30.7 over seeds 1-20, every one below; on seeds 1001-1020 two of 20 collapse more,
-// README), where the Ia reflex alone collapses it more (37.4): the Ib reflex takes back the Ia reflex's push on the rebound. Behind the shipped
-// regulator no reflex changes the collapse (README, "The leg").
+// docs/tension-reflex.md), where the Ia reflex alone collapses it more (37.4): the Ib reflex takes back the Ia reflex's push on the rebound. Behind the shipped
+// regulator no reflex changes the collapse (docs/leg.md).
 TEST(LegTest, BehindADirectValveIaAndIbCollapseTheKneeLessThanNoReflex) {
   const auto collapse = [](const std::vector<std::string>& sets) {
     std::vector<std::string> all = {"valve.model=\"iso6358\""};
