@@ -16,7 +16,8 @@ comment with the stamp the block was made under:
     <!-- /pamsim-block {"spec": ..., "version": ..., "digest": ..., ...} -->
 
 Shown outputs: `stdout` (the last command's console output, as a text block; `stdout -N`, its
-last N lines), a `.md` file as it is, a `.csv` file as a Markdown table, a `.json`, `.txt` or
+last N lines; an earlier command's output goes to a file under {out} to be shown), a `.md`
+file as it is but for its headings, shown as bold lines (a block adds no section to a page), a `.csv` file as a Markdown table, a `.json`, `.txt` or
 `.toml` file as a code block, a `.png` or `.svg` file copied to docs/generated/<id>/ and shown
 as a figure.
 
@@ -124,12 +125,21 @@ def run_commands(spec, out):
     for command in spec["run"]:
         line = command.replace("{out}", shown_out)
         line = re.sub(r"(^|[\s;&|(])pamsim\b", lambda m: m.group(1) + pamsim_binary(), line)
-        done = subprocess.run(line, shell=True, cwd=ROOT, capture_output=True, text=True)
+        done = subprocess.run(line, shell=True, cwd=ROOT, capture_output=True, text=True,
+                              env=command_env())
         if done.returncode != 0:
             raise Stale(f"block {spec['id']}: `{command}` failed ({done.returncode}): "
                         f"{(done.stderr or done.stdout).strip().splitlines()[-1:]}")
         stdout = as_shown(done.stdout)
     return stdout
+
+
+def command_env():
+    """The commands' environment: the binary's folder first on PATH, as getting-started has
+    the reader put build/src/sim, so a script's `--pamsim "$(command -v pamsim)"` finds it."""
+    env = dict(os.environ)
+    env["PATH"] = os.path.dirname(pamsim_binary()) + os.pathsep + env.get("PATH", "")
+    return env
 
 
 def as_shown(text):
@@ -159,9 +169,10 @@ def render_show(item, spec, out, stdout, check=False):
     path = os.path.join(out, item)
     if not os.path.isfile(path):
         raise Stale(f"block {spec['id']}: its command wrote no {item}")
-    if item.endswith(".md"):
+    if item.endswith(".md"):   # its headings as bold lines: a block adds none to the page's
         with open(path) as f:
-            return as_shown(f.read()).strip()
+            text = as_shown(f.read()).strip()
+        return re.sub(r"^#{1,6}\s+(.*?)\s*#*$", r"**\1**", text, flags=re.M)
     if item.endswith(".csv"):
         return csv_table(path)
     if item.endswith((".json", ".txt", ".toml")):
@@ -268,29 +279,34 @@ def blocks(text, path):
 
 
 def update_page(path, classes, only, seen):
-    """Makes `path`'s blocks of `classes` (or of the ids in `only`) again; returns the wall
-    time its cheap blocks took."""
+    """Makes `path`'s blocks of `classes` (or of the ids in `only`) again, writing the page
+    after each one (a long run interrupted keeps the blocks it made); returns the wall time its
+    cheap blocks took."""
     with open(path) as f:
         text = f.read()
     where = os.path.relpath(path, ROOT)
-    pieces, last, cheap_s = [], 0, 0.0
-    for m, spec, _ in blocks(text, path):
+    todo = []
+    for _, spec, _ in blocks(text, path):
         if spec["id"] in seen:
             raise Stale(f"{where}: block id {spec['id']} is also in {seen[spec['id']]}")
         seen[spec["id"]] = where
-        pieces.append(text[last:m.start()])
-        last = m.end()
-        if spec["class"] not in classes or (only and spec["id"] not in only):
-            pieces.append(m.group(0))
-            continue
+        if spec["class"] in classes and (not only or spec["id"] in only):
+            todo.append(spec["id"])
+    cheap_s = 0.0
+    for block_id in todo:
+        with open(path) as f:   # as it is now: the page may have been edited meanwhile
+            text = f.read()
+        m, spec = next((m, spec) for m, spec, _ in blocks(text, path) if spec["id"] == block_id)
         started = time.time()
-        pieces.append(make_block(m.group("spec"), spec)[0])
+        made = make_block(m.group("spec"), spec)[0]
         took = time.time() - started
         cheap_s += took if spec["class"] == "cheap" else 0.0
         print(f"{where}: {spec['id']} ({spec['class']}, {took:.1f} s)")
-    pieces.append(text[last:])
-    if "".join(pieces) != text:
-        atomic_write(path, "".join(pieces))
+        with open(path) as f:
+            text = f.read()
+        m = next(m for m, spec, _ in blocks(text, path) if spec["id"] == block_id)
+        if text[m.start():m.end()] != made:
+            atomic_write(path, text[:m.start()] + made + text[m.end():])
     return cheap_s
 
 

@@ -39,9 +39,9 @@ def bracket_end(end, feedback, sense):
 # (label, overrides); the fast / slow ends' bands are pneumatics.toml's derivation; the
 # shipped regulator (since issue 25) is the slow end with its loop delayed at the outlet
 ROWS = [
-    ("loop before issue 25 (instant, chamber; 5 ms / 10 ms / 20 kPa, C = 1)",
+    ("the earlier loop (instant, chamber; 5 ms / 10 ms / 20 kPa, C = 1)",
      bracket_end("earlier_loop", "instant", "chamber")),
-    ("loop before issue 25, dead time 1000 ms", loop("instant", "chamber", 1000, 10, 20, 1.0)),
+    ("the earlier loop, dead time 1000 ms", loop("instant", "chamber", 1000, 10, 20, 1.0)),
     ("old bracket fastest (2 / 5 / 10 kPa)", loop("instant", "chamber", 2, 5, 10, 1.0)),
     ("old bracket slowest (10 / 20 / 50 kPa)", loop("instant", "chamber", 10, 20, 50, 1.0)),
     ("fast end, ITV2000 class, instant loop", bracket_end("fast", "instant", "chamber")),
