@@ -6,6 +6,7 @@
 #include <string>
 
 #include "base/units.h"
+#include "sensing/instrument_kinds.h"
 
 namespace pamsim {
 namespace {
@@ -166,10 +167,10 @@ KeyTable encoder_key_table(EncoderConfig* encoder) {
 }
 
 std::vector<KeyTable> instrument_key_tables(SensorConfig* sensors) {
-  std::vector<KeyTable> tables = gauge_hardware_key_tables(&sensors->gauge_hardware);
-  tables.push_back(pressure_hardware_key_table(&sensors->pressure_hardware));
-  tables.push_back(fiber_hardware_key_table(&sensors->fiber_hardware));
-  tables.push_back(encoder_key_table(&sensors->encoder));
+  std::vector<KeyTable> tables;
+  for (const InstrumentKind& kind : instrument_kinds()) {
+    for (KeyTable& t : kind.key_tables(sensors)) tables.push_back(std::move(t));
+  }
   return tables;
 }
 

@@ -33,8 +33,9 @@ KeyTable fiber_hardware_key_table(FiberHardwareConfig* fiber);
 // sensors.encoder, bound to `encoder`.
 KeyTable encoder_key_table(EncoderConfig* encoder);
 
-// Every instrument's tables, bound to `sensors`' instruments, in the order above: the
-// reference's list and the tests' (one row a key, a bad value per row).
+// Every instrument's tables, bound to `sensors`' instruments, in the registry's order
+// (instrument_kinds.h): the reference's list and the tests' (one row a key, a bad value per
+// row).
 std::vector<KeyTable> instrument_key_tables(SensorConfig* sensors);
 
 }  // namespace pamsim

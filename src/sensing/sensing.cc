@@ -8,7 +8,7 @@
 
 #include "pam_actuator/pam_params.h"
 #include "sensing/checks.h"
-#include "sensing/instrument_keys.h"
+#include "sensing/instrument_kinds.h"
 #include "sensing/sensor_keys.h"
 
 namespace pamsim {
@@ -55,12 +55,8 @@ void validate(const SensingConfig& config) {
   require_cutoff("sensors.pressure_lowpass_hz", s.pressure_lowpass_hz, config.control_hz);
   require_adc("sensors.gauge_adc", s.gauge_adc_bits, s.gauge_adc_min_v, s.gauge_adc_max_v);
   require_cutoff("reflex.lowpass_hz", config.velocity_lowpass_hz, config.control_hz);
-  validate(s.gauge_hardware);
+  for (const InstrumentKind& kind : instrument_kinds()) kind.validate(s);
   validate_calibration_length(s.gauge_hardware, config.control_hz);
-  validate(s.pressure_hardware);
-  validate(s.fiber_hardware);
-  EncoderConfig encoder = s.encoder;
-  check_key_rows(encoder_key_table(&encoder));
 }
 
 void validate(const MuscleSensorSpec& muscle) {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "base/key_table.h"
-#include "sensing/instrument_keys.h"
+#include "sensing/instrument_kinds.h"
 #include "sensing/sensor_keys.h"
 #include "sim/scenario/scenario_reading.h"
 
@@ -51,18 +51,16 @@ void read_instrument(ConfigReader& in, const std::vector<KeyTable>& tables) {
   for (const KeyTable& table : tables) read_key_rows(in, table);
 }
 
-// the instruments as hardware: their rows, the creep series and the instruments' seed
+// the instruments as hardware, in the registry's order (instrument_kinds.h): their rows and
+// creep series, then the instruments' seed
 void read_instruments(ConfigReader& in, SensorConfig* s) {
-  GaugeHardwareConfig& g = s->gauge_hardware;
-  read_instrument(in, gauge_hardware_key_tables(&g));
-  g.creep = read_creep(in, "sensors.gauge.board.", g.creep);
+  for (const InstrumentKind& kind : instrument_kinds()) {
+    read_instrument(in, kind.key_tables(s));
+    if (kind.creep) *kind.creep(s) = read_creep(in, kind.creep_table + ".", *kind.creep(s));
+  }
   const std::int64_t seed = in.get_int("sensors.instrument_seed", 1);
   in.check(seed >= 0, "sensors.instrument_seed", "must be >= 0, got " + std::to_string(seed));
-  g.instrument_seed = static_cast<std::uint64_t>(seed);
-  read_instrument(in, {pressure_hardware_key_table(&s->pressure_hardware)});
-  read_instrument(in, {fiber_hardware_key_table(&s->fiber_hardware)});
-  s->fiber_hardware.creep = read_creep(in, "sensors.fiber.", s->fiber_hardware.creep);
-  read_instrument(in, {encoder_key_table(&s->encoder)});
+  s->gauge_hardware.instrument_seed = static_cast<std::uint64_t>(seed);
 }
 
 }  // namespace
