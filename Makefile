@@ -28,7 +28,9 @@ TSAN_TESTS := sweep_test|cli_sweep_test|tune_test|trial_test
 TSAN_SKIP := ADatabaseThatCannotBeMadeLeavesNoFolder
 # the paper's tables against their bands: ten drawn rigs of whole protocols, 44 s under ASan
 # (7.5 s in the release run), whose code paths the band and validation tests cover already
-ASAN_SKIP := ^PaperBandsTest\.
+# and the docs' pages against the program (their cheap blocks' runs; the release run checks
+# them, and their code paths are the commands' own, tested here)
+ASAN_SKIP := ^PaperBandsTest\.|^DocsTest\.EveryPageAgreesWithTheProgram$$
 
 .PHONY: deps configure build demo test docs bench clean sanitize fuzz
 
@@ -37,13 +39,19 @@ deps:
 
 configure: deps
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DPAMSIM_MPI=ON $(UNITY) \
+	  -DPAMSIM_BUILD_TESTS=ON -DPAMSIM_BUILD_BENCHMARKS=ON -DPAMSIM_PYTHON=ON \
 	  -DPython3_EXECUTABLE=$(PYTHON)
 
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# the demo builds the one program it runs (make test builds the rest)
-demo: configure
+# the demo: only the packages and the one program it runs; a build folder it configures
+# itself leaves out the tests, benchmarks, MPI and the Python module (make test configures
+# them in and builds the rest)
+demo:
+	bash scripts/install-deps.sh --demo
+	test -f $(BUILD_DIR)/CMakeCache.txt || cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release \
+	  $(UNITY) -DPAMSIM_BUILD_TESTS=OFF -DPAMSIM_BUILD_BENCHMARKS=OFF -DPAMSIM_PYTHON=OFF
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target pamsim
 	bash scripts/demo.sh $(PAMSIM)
 

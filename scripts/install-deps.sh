@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# Installs every Debian package pamsim needs to build, test, plot and render.
+# install-deps.sh [--demo]: installs every Debian package pamsim needs to build, test, plot
+# and render; with --demo only what building pamsim and running the demo need (make demo:
+# no test, sanitizer, fuzz, MPI, Slurm, Python-module or docs packages).
 # Idempotent: when all are present it only asks dpkg, which takes well under a second.
 set -euo pipefail
 
+# pamsim itself: build it, run a scenario, plot and render it
 packages=(
   build-essential cmake pkg-config
   libmujoco-dev libqhull-dev libgl-dev      # MuJoCo 2.2.2; its CMake config needs qhull and OpenGL
@@ -18,6 +21,9 @@ packages=(
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev   # MP4 encoding
   gnuplot-nox                                # plots (pngcairo terminal)
   python3                                    # scripts/*.py and the demo's summary line
+)
+# the rest: the tests, the sanitizer and fuzz builds, MPI, Slurm, the Python module, the docs
+[ "${1:-}" = "--demo" ] || packages+=(
   pmccabe                                    # scripts/check-sizes.sh: function lengths
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev                   # make fuzz: libFuzzer and clang's sanitizer runtimes
@@ -28,6 +34,7 @@ packages=(
   python3-pandas python3-matplotlib          # DataFrames in the module; the example script
   python3-venv python3-pip                   # pip install . into a fresh virtual environment
   python3-sphinx python3-myst-parser python3-yaml   # make docs: the site and its generated pages
+  jq                                         # the docs' generated blocks pick numbers from JSON
 )
 
 missing=()
