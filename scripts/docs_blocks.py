@@ -112,7 +112,7 @@ def spec_hash(spec_text):
 
 
 def shown_command(command, block_id):
-    return command.replace("{out}", f"renders/docs/{block_id}")
+    return command.rstrip().replace("{out}", f"renders/docs/{block_id}")
 
 
 def run_commands(spec, out):
