@@ -310,10 +310,10 @@ std::vector<std::string> ConfigReader::asked_keys() const {
   return {all.begin(), all.end()};
 }
 
-void TableEntry::allow(std::initializer_list<const char*> keys) const {
+void TableEntry::allow(const std::vector<EntryKey>& keys) const {
   for (const auto& [k, v] : table) {
     const std::string key(k.str());
-    if (std::none_of(keys.begin(), keys.end(), [&](const char* a) { return key == a; })) {
+    if (std::none_of(keys.begin(), keys.end(), [&](const EntryKey& a) { return key == a.name; })) {
       in.fail(where + key, "is not a key of this table");
     }
   }
@@ -373,7 +373,7 @@ TableEntry TableArray::operator[](std::size_t i) const {
   return TableEntry{in_, *t, at + "."};
 }
 
-std::vector<TableEntry> TableArray::entries(std::initializer_list<const char*> keys) const {
+std::vector<TableEntry> TableArray::entries(const std::vector<EntryKey>& keys) const {
   std::vector<TableEntry> out;
   for (std::size_t i = 0; i < size(); ++i) {
     out.push_back((*this)[i]);

@@ -17,6 +17,7 @@
 
 #include "base/format.h"   // format_value, for the messages
 #include "base/input_error.h"
+#include "base/key_table.h"   // EntryKey
 
 namespace pamsim {
 
@@ -116,7 +117,7 @@ struct TableEntry {
   std::string where;   // "parameter[0]."
 
   // Refuses a key not in `keys`: "<where><key> is not a key of this table".
-  void allow(std::initializer_list<const char*> keys) const;
+  void allow(const std::vector<EntryKey>& keys) const;
   // A string ("... must be a string"); a missing one is refused if `required`, else `fallback`.
   std::string text(const char* key, bool required, const std::string& fallback = "") const;
   // A finite number, or nothing if the key is absent.
@@ -135,7 +136,7 @@ class TableArray {
   std::size_t size() const { return array_ ? array_->size() : 0; }
   TableEntry operator[](std::size_t i) const;
   // Every entry, in order, each refusing a key not in `keys` (TableEntry::allow).
-  std::vector<TableEntry> entries(std::initializer_list<const char*> keys) const;
+  std::vector<TableEntry> entries(const std::vector<EntryKey>& keys) const;
 
  private:
   ConfigReader& in_;

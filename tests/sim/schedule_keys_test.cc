@@ -101,7 +101,7 @@ TEST(ScheduleKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {
       }
     }
     for (const ListRow& row : rows.lists) {
-      for (const std::string& value : {"[-1.0, 2.0]", "\"x\"", "[]"}) {
+      for (const char* value : {"[-1.0, 2.0]", "\"x\"", "[]"}) {
         expect_refused(kind, row.name, value);
       }
     }

@@ -6,7 +6,8 @@
 // `--plant`: a plant file's (muscles.<m>.plant, muscles.<m>.plant.<table>.<field>);
 // `--params`: a muscle's estimator parameter file's (muscles.<m>.params);
 // `--identify`, `--tune`, `--sweep`: an identification, tuning or sweep file's top-level keys,
-// from their rows.
+// from their rows, then the keys of its tables' entries ([[parameter]], [[recording]],
+// [[axis]]...: "parameter[].from"), from their readers' lists.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -18,7 +19,10 @@
 #include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
 #include "sim/optimize/identify_file.h"
+#include "sim/optimize/identify_file_recordings.h"
+#include "sim/optimize/search_space.h"
 #include "sim/optimize/tuning_file.h"
+#include "sim/scenario/randomize.h"
 #include "sim/sweep/sweep.h"
 #include "sim/scenario/scenario_file.h"
 #include "sim/scenario/scenario_key_docs.h"
@@ -59,6 +63,43 @@ void print_docs(const std::vector<KeyDoc>& docs, bool json) {
   if (json) std::cout << all.dump(2) << "\n";
 }
 
+// `docs`, then each array of tables' entry keys ("parameter[].from")
+std::vector<KeyDoc> with_entries(
+    std::vector<KeyDoc> docs,
+    const std::vector<std::pair<const char*, const std::vector<EntryKey>*>>& arrays) {
+  for (const auto& [array, keys] : arrays) {
+    for (const KeyDoc& d : entry_key_docs(array, *keys)) docs.push_back(d);
+  }
+  return docs;
+}
+
+// an identification, tuning or sweep file's keys: its top-level rows, then its tables'
+std::vector<KeyDoc> search_file_docs(const KeysOptions& opt) {
+  IdentifyDefinition identify;   // the rows' defaults are the structs' own
+  TuneDefinition tune;
+  SweepDefinition sweep;
+  if (opt.identify) {
+    return with_entries(key_table_docs({identify_search_table(&identify)}),
+                        {{"parameter", &parameter_entry_keys()},
+                         {"recording", &recording_entry_keys()},
+                         {"tensile", &tensile_entry_keys()},
+                         {"candidate", &candidate_entry_keys()}});
+  }
+  if (opt.tune) {
+    return with_entries(key_table_docs({tune_search_table(&tune)}),
+                        {{"parameter", &parameter_entry_keys()},
+                         {"objective", &objective_entry_keys()},
+                         {"constraint", &constraint_entry_keys()},
+                         {"reference", &reference_entry_keys()},
+                         {"randomize", &randomize_entry_keys()}});
+  }
+  return with_entries(key_table_docs({sweep_design_table(&sweep), sweep_sampling_table(&sweep)}),
+                      {{"axis", &axis_entry_keys()},
+                       {"axis", &case_axis_entry_keys()},
+                       {"axis[].case", &case_entry_keys()},
+                       {"randomize", &randomize_entry_keys()}});
+}
+
 // --pneumatics, --plant, --params, --identify, --tune or --sweep: another file's keys,
 // which take no scenario
 bool print_file_keys(const KeysOptions& opt) {
@@ -70,16 +111,10 @@ bool print_file_keys(const KeysOptions& opt) {
   if (!(opt.scenario.empty() && opt.overrides.empty())) {
     throw InputError(flags + " list a file's keys: they take no scenario or --set");
   }
-  IdentifyDefinition identify;   // the rows' defaults are the structs' own
-  TuneDefinition tune;
-  SweepDefinition sweep;
   print_docs(opt.pneumatics ? pneumatic_key_docs()
              : opt.plant    ? plant_key_docs()
              : opt.params   ? pam_key_docs()
-             : opt.identify ? key_table_docs({identify_search_table(&identify)})
-             : opt.tune     ? key_table_docs({tune_search_table(&tune)})
-                            : key_table_docs({sweep_design_table(&sweep),
-                                              sweep_sampling_table(&sweep)}),
+                            : search_file_docs(opt),
              opt.json);
   return true;
 }
@@ -130,15 +165,16 @@ void add_keys_command(CLI::App& app) {
                 "A muscle's parameter file's keys (the spring law its estimator inverts, the "
                 "strain gauge, the geometry) instead of the scenario's");
   cmd->add_flag("--identify", opt->identify,
-                "An identification file's search and judgement keys (generations, "
-                "population, seed, polish_iterations, interval, explained_noise_factor) "
-                "instead of the scenario's");
+                "An identification file's keys (its search and judgement keys, then those of "
+                "[[parameter]], [[recording]], [[tensile]], [[candidate]]) instead of the "
+                "scenario's");
   cmd->add_flag("--tune", opt->tune,
-                "A tuning file's search keys (algorithm, generations, population, seed, seeds, "
-                "held_out_seeds) instead of the scenario's");
+                "A tuning file's keys (its search keys, then those of [[parameter]], "
+                "[[objective]], [[constraint]], [[reference]], [[randomize]]) instead of the "
+                "scenario's");
   cmd->add_flag("--sweep", opt->sweep,
-                "A sweep file's design keys (design, seeds, max_trials, samples, design_seed) "
-                "instead of the scenario's");
+                "A sweep file's keys (its design keys, then those of [[axis]], [[axis.case]], "
+                "[[randomize]]) instead of the scenario's");
 }
 
 }  // namespace pamsim

@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 
 void read_tensile(ConfigReader& in, IdentifyDefinition* def) {
   const TableArray tables(in, "tensile");
-  for (const TableEntry& e : tables.entries({"muscle", "file", "weight"})) {
+  for (const TableEntry& e : tables.entries(tensile_entry_keys())) {
     IdentifyTensile t;
     t.muscle = e.text("muscle", true);
     const std::string file = e.text("file", true);

@@ -166,11 +166,55 @@ IdentifyRecording read_candidate(ConfigReader& in, const TableEntry& e,
 
 }  // namespace
 
+const std::vector<EntryKey>& tensile_entry_keys() {
+  static const std::vector<EntryKey> keys = {
+      {"muscle", "", "a muscle of the base scenario", "(required)",
+       "the muscle whose plant the tensile test measured"},
+      {"file", "", "a tensile CSV (pamsim tensile's columns), relative to this file",
+       "(required)", "the static test's rows, fitted with the recordings"},
+      {"weight", "", "> 0", "1.0", "its share of the cost"}};
+  return keys;
+}
+
+const std::vector<EntryKey>& recording_entry_keys() {
+  static const std::vector<EntryKey> keys = {
+      {"file", "", "a recording CSV (time_s and trajectory.csv's columns), relative to this file",
+       "(required)", "the lab's recording"},
+      {"name", "", "letters, digits, '_' or '-'; unique", "(the file's stem)",
+       "its name in the outputs"},
+      {"set", "", "list of \"key=value\" scenario overrides", "[]",
+       "what made this recording: a command schedule, an event, a mass"},
+      {"channels", "", "list of the file's columns", "(every column)",
+       "the channels the fit matches"},
+      {"weight", "", "> 0", "1.0", "its share of the cost"},
+      {"held_out", "", "true | false", "false",
+       "kept out of the fit, used for the held-out check"},
+      {"noise", "(each channel's)", "{ <channel> = floor > 0 }",
+       "(estimated from the recording)", "each channel's noise floor, in its unit"}};
+  return keys;
+}
+
+const std::vector<EntryKey>& candidate_entry_keys() {
+  static const std::vector<EntryKey> keys = {
+      {"name", "", "letters, digits, '_' or '-'; unique", "(required)",
+       "an experiment a lab could run, for --plan"},
+      {"set", "", "list of \"key=value\" scenario overrides", "[]",
+       "what it would do: a command schedule, an event, a mass"},
+      {"channels", "", "list of trajectory.csv's columns, at least one", "(required)",
+       "the channels it would log"},
+      {"rate_hz", "Hz", "(0, 10000]", "100.0", "their sampling rate"},
+      {"duration_s", "s", "(0, its scenario's sim.duration_s]", "(sim.duration_s)",
+       "how long it would log"},
+      {"noise", "(each channel's)", "{ <channel> = floor > 0 }",
+       "(a fitted recording's floor)", "each channel's noise floor, in its unit"}};
+  return keys;
+}
+
 void read_recordings(ConfigReader& in, IdentifyDefinition* def) {
   const TableArray tables(in, "recording");
   std::set<std::string> names;
   for (const TableEntry& e :
-       tables.entries({"file", "name", "set", "channels", "weight", "held_out", "noise"})) {
+       tables.entries(recording_entry_keys())) {
     def->recordings.push_back(read_recording(in, e));
     const IdentifyRecording& r = def->recordings.back();
     in.check(names.insert(r.name).second, e.where + "name", "\"" + r.name + "\" is taken");
@@ -181,7 +225,7 @@ void read_candidates(ConfigReader& in, IdentifyDefinition* def) {
   const TableArray tables(in, "candidate");
   std::set<std::string> names;
   for (const TableEntry& e :
-       tables.entries({"name", "set", "channels", "rate_hz", "duration_s", "noise"})) {
+       tables.entries(candidate_entry_keys())) {
     def->candidates.push_back(read_candidate(in, e, *def));
     const IdentifyRecording& c = def->candidates.back();
     in.check(names.insert(c.name).second, e.where + "name", "\"" + c.name + "\" is taken");

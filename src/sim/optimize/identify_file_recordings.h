@@ -8,6 +8,12 @@
 
 namespace pamsim {
 
+// The keys of a [[tensile]], a [[recording]] and a [[candidate]] table, as the readers take
+// them and the key reference lists them.
+const std::vector<EntryKey>& tensile_entry_keys();
+const std::vector<EntryKey>& recording_entry_keys();
+const std::vector<EntryKey>& candidate_entry_keys();
+
 // Every [[recording]] into def->recordings (names unique).
 void read_recordings(ConfigReader& in, IdentifyDefinition* def);
 

@@ -88,11 +88,23 @@ std::vector<SearchParameter> read_search_parameters(ConfigReader& in,
                                                     const std::vector<std::string>& reserved,
                                                     const std::string& reserved_hint) {
   std::vector<SearchParameter> out;
-  for (const TableEntry& e : TableArray(in, "parameter").entries({"key", "from", "to", "scale"})) {
+  for (const TableEntry& e : TableArray(in, "parameter").entries(parameter_entry_keys())) {
     out.push_back(read_parameter(in, e, out, reserved, reserved_hint));
   }
   in.check(!out.empty(), "parameter", "needs at least one [[parameter]]");
   return out;
+}
+
+const std::vector<EntryKey>& parameter_entry_keys() {
+  static const std::vector<EntryKey> keys = {
+      {"key", "", "a numeric scenario key", "(required)", "the scenario key searched"},
+      {"from", "(the key's)", "a number, within the key's range", "(required)",
+       "the search box's lower end, in the key's own unit"},
+      {"to", "(the key's)", "a number above from, within the key's range", "(required)",
+       "the search box's upper end"},
+      {"scale", "", "\"linear\" | \"log\" (from > 0)", "\"linear\"",
+       "how the search spaces the box"}};
+  return keys;
 }
 
 nlohmann::json search_parameters_json(const std::vector<SearchParameter>& parameters) {

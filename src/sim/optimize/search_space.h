@@ -10,6 +10,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "base/key_table.h"   // EntryKey
+
 namespace pamsim {
 
 class ConfigReader;
@@ -43,6 +45,10 @@ double slope_at(const SearchParameter& p, double u);
 std::vector<std::string> parameter_overrides(const std::vector<std::string>& base,
                                              const std::vector<SearchParameter>& parameters,
                                              const std::vector<double>& values);
+
+// A [[parameter]] table's keys (key, from, to, scale), as the reader takes them and the key
+// reference lists them.
+const std::vector<EntryKey>& parameter_entry_keys();
 
 // The [[parameter]] tables (key, from, to, scale = "linear" | "log") of `in`'s document;
 // keys in `reserved` are refused with `reserved_hint` ("use the tuning file's seeds ..."). At

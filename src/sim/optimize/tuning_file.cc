@@ -65,7 +65,7 @@ void check_metric(ConfigReader& in, const std::vector<std::string>& metrics,
 
 void read_objectives(ConfigReader& in, const std::vector<std::string>& metrics,
                      TuneDefinition* def) {
-  for (const TableEntry& e : TableArray(in, "objective").entries({"metric", "maximize"})) {
+  for (const TableEntry& e : TableArray(in, "objective").entries(objective_entry_keys())) {
     TuneObjective o;
     o.metric = e.text("metric", true);
     check_metric(in, metrics, e.where + "metric", o.metric);
@@ -83,7 +83,7 @@ void read_objectives(ConfigReader& in, const std::vector<std::string>& metrics,
 
 void read_constraints(ConfigReader& in, const std::vector<std::string>& metrics,
                       TuneDefinition* def) {
-  for (const TableEntry& e : TableArray(in, "constraint").entries({"metric", "min", "max"})) {
+  for (const TableEntry& e : TableArray(in, "constraint").entries(constraint_entry_keys())) {
     TuneConstraint c;
     c.metric = e.text("metric", true);
     check_metric(in, metrics, e.where + "metric", c.metric);
@@ -96,7 +96,7 @@ void read_constraints(ConfigReader& in, const std::vector<std::string>& metrics,
 }
 
 void read_references(ConfigReader& in, TuneDefinition* def) {
-  for (const TableEntry& e : TableArray(in, "reference").entries({"name", "values"})) {
+  for (const TableEntry& e : TableArray(in, "reference").entries(reference_entry_keys())) {
     TuneReference r;
     r.name = e.text("name", true);
     const toml::array* values = e.table.get("values") ? e.table.get("values")->as_array() : nullptr;
@@ -168,6 +168,31 @@ void check_settings(const TuneDefinition& def) {
 }
 
 }  // namespace
+
+const std::vector<EntryKey>& objective_entry_keys() {
+  static const std::vector<EntryKey> keys = {
+      {"metric", "", "a summary metric of the base scenario", "(required)",
+       "the metric the search minimises (its mean over the seeds)"},
+      {"maximize", "", "true | false", "false", "maximise the metric instead"}};
+  return keys;
+}
+
+const std::vector<EntryKey>& constraint_entry_keys() {
+  static const std::vector<EntryKey> keys = {
+      {"metric", "", "a summary metric of the base scenario", "(required)",
+       "the metric a point must keep within [min, max] (its mean over the seeds)"},
+      {"min", "(the metric's)", "a number, at most max", "(none)", "its lowest allowed mean"},
+      {"max", "(the metric's)", "a number", "(none)", "its highest allowed mean; min or max"}};
+  return keys;
+}
+
+const std::vector<EntryKey>& reference_entry_keys() {
+  static const std::vector<EntryKey> keys = {
+      {"name", "", "a name", "(required)", "a setting evaluated beside the search's best"},
+      {"values", "(the parameters')", "one number per [[parameter]], in their order",
+       "(required)", "the setting's parameter values"}};
+  return keys;
+}
 
 KeyTable tune_search_table(TuneDefinition* def) {
   KeyTable t{"", {}, {}, {}};

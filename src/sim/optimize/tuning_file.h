@@ -84,6 +84,12 @@ struct TuneDefinition {
 // tests read them.
 KeyTable tune_search_table(TuneDefinition* def);
 
+// The keys of an [[objective]], a [[constraint]] and a [[reference]] table, as the reader
+// takes them and the key reference lists them.
+const std::vector<EntryKey>& objective_entry_keys();
+const std::vector<EntryKey>& constraint_entry_keys();
+const std::vector<EntryKey>& reference_entry_keys();
+
 // Reads and validates the file, the base scenario (with the overrides, and with each
 // parameter at both bounds) and the metric names. Throws InputError "<file>: <key> <problem>".
 TuneDefinition load_tune_definition(const std::string& path);

@@ -103,6 +103,23 @@ double Randomization::kept_share() const {
   return normal_cdf(z(max)) - normal_cdf(z(min));
 }
 
+const std::vector<EntryKey>& randomize_entry_keys() {
+  static const std::vector<EntryKey> keys = {
+      {"key", "", "a numeric scenario key, not seed", "(required)", "the scenario key drawn"},
+      {"distribution", "", "\"uniform\" | \"normal\" | \"lognormal\"", "(required)",
+       "how it is drawn, once per seed"},
+      {"from", "(the key's)", "uniform: below to", "(required)", "a uniform draw's lower end"},
+      {"to", "(the key's)", "uniform", "(required)", "a uniform draw's upper end"},
+      {"mean", "(the key's)", "normal", "(required)", "a normal draw's mean"},
+      {"stddev", "(the key's)", "normal: > 0", "(required)", "a normal draw's standard deviation"},
+      {"median", "(the key's)", "lognormal: > 0", "(required)", "a lognormal draw's median"},
+      {"sigma", "", "lognormal: > 0", "(required)", "a lognormal draw's log standard deviation"},
+      {"min", "(the key's)", "normal, lognormal: below max, keeping at least 1 %", "(none)",
+       "truncation: draws below are drawn again"},
+      {"max", "(the key's)", "normal, lognormal", "(none)", "truncation: draws above are drawn again"}};
+  return keys;
+}
+
 void read_randomizations(ConfigReader& in, std::vector<Randomization>* randomize,
                          std::uint64_t* randomize_seed) {
   std::set<std::string> keys;

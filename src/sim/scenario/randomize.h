@@ -24,6 +24,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/key_table.h"   // EntryKey
+
 namespace pamsim {
 
 class ConfigReader;   // base/config_reader.h
@@ -43,6 +45,11 @@ struct Randomization {
   // The share of the untruncated distribution inside [min, max].
   double kept_share() const;
 };
+
+// A [[randomize]] table's keys, as the key reference lists them (which a distribution takes
+// is the reader's: from and to for uniform, mean and stddev for normal, median and sigma for
+// lognormal, min and max for the last two).
+const std::vector<EntryKey>& randomize_entry_keys();
 
 // The [[randomize]] tables (none: empty) and randomize_seed of `in`'s document. Throws
 // InputError "<file>: randomize[<i>].<key> <problem>" and the like.

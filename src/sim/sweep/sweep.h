@@ -136,6 +136,14 @@ inline constexpr std::int64_t kMaxCount = 1000000000000;
 KeyTable sweep_design_table(SweepDefinition* def);
 KeyTable sweep_sampling_table(SweepDefinition* def);
 
+// The keys of an [[axis]] over a scenario key, of an [[axis]] of named cases, and of one of
+// its [[axis.case]] tables, as the reader takes them and the key reference lists them.
+const std::vector<EntryKey>& axis_entry_keys();
+const std::vector<EntryKey>& case_axis_entry_keys();
+const std::vector<EntryKey>& case_entry_keys();
+// Whether `key` is one of `keys`' names.
+bool is_entry_key(const std::vector<EntryKey>& keys, const std::string& key);
+
 // Reads and validates a sweep file (sweep_file.cc), including every point's scenario. Throws InputError
 // "<file>: <key> <problem>" for the first problem found.
 SweepDefinition load_sweep(const std::string& path);

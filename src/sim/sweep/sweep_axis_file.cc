@@ -10,7 +10,7 @@
 namespace pamsim::detail {
 
 void Where::fail(const std::string& key, const std::string& problem) const {
-  throw InputError(file + ": " + prefix + key + " " + problem);
+  throw InputError(file + ": " + prefix + key + " " + problem, {file, prefix + key, problem});
 }
 
 AxisValue axis_value(const toml::node& n, const Where& where, const std::string& key) {

@@ -56,8 +56,7 @@ void read_case(const toml::node& node, std::size_t c, const Where& axis, SweepAx
   axis.check(t != nullptr, "case", "must be [[axis.case]] tables");
   for (const auto& [k, _] : *t) {
     const std::string key(k.str());
-    where.check(key == "name" || key == "set" || key == "from", key,
-                "is not a case key (name, from, set)");
+    where.check(is_entry_key(case_entry_keys(), key), key, "is not a case key (name, from, set)");
   }
   const auto name = (*t)["name"].value<std::string>();
   where.check(name && !name->empty(), "name", "is required (a non-empty string)");
@@ -91,7 +90,7 @@ SweepAxis read_case_axis(const toml::table& t, std::size_t index, SweepDesign de
   const Where where{file, "axis[" + std::to_string(index) + "]."};
   for (const auto& [k, _] : t) {
     const std::string key(k.str());
-    where.check(key == "name" || key == "case", key,
+    where.check(is_entry_key(case_axis_entry_keys(), key), key,
                 "does not go with [[axis.case]] (a case axis has name and its cases)");
   }
   where.check(design == SweepDesign::kGrid, "case",

@@ -77,15 +77,54 @@ void read_grid_levels(const toml::table& t, std::int64_t max_trials, const Where
   }
 }
 
+}  // namespace
+
+const std::vector<EntryKey>& axis_entry_keys() {
+  static const std::vector<EntryKey> keys = {
+      {"key", "", "a scenario key, not seed", "(required)", "the scenario key the axis varies"},
+      {"values", "(the key's)", "a list (grid designs)", "(values or from/to)",
+       "the values, in the key's own unit or type"},
+      {"from", "(the key's)", "a number (> 0 on a log scale)", "(values or from/to)",
+       "a range's first value"},
+      {"to", "(the key's)", "a number", "(values or from/to)", "a range's last value"},
+      {"count", "", "an integer >= 1 (grid designs)", "(required with from/to)",
+       "how many values the range takes"},
+      {"scale", "", "\"linear\" | \"log\"", "\"linear\"", "how a range spaces its values"}};
+  return keys;
+}
+
+const std::vector<EntryKey>& case_axis_entry_keys() {
+  static const std::vector<EntryKey> keys = {
+      {"name", "", "a plain name, unique among the axes", "(required)",
+       "the axis's column in the outputs"},
+      {"case", "", "[[axis.case]] tables", "(required)", "the axis's named cases"}};
+  return keys;
+}
+
+const std::vector<EntryKey>& case_entry_keys() {
+  static const std::vector<EntryKey> keys = {
+      {"name", "", "a name, unique in its axis", "(required)", "the case's value in its column"},
+      {"from", "", "{ file = \"...\", table = \"...\" }, or a list of them", "(none)",
+       "the scenario keys of a table of another file, relative to the sweep file"},
+      {"set", "", "a table of scenario keys (lists allowed)", "(none)",
+       "the scenario keys the case sets, after from's"}};
+  return keys;
+}
+
+bool is_entry_key(const std::vector<EntryKey>& keys, const std::string& key) {
+  return std::any_of(keys.begin(), keys.end(), [&](const EntryKey& k) { return key == k.name; });
+}
+
+namespace {
+
 SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
                     std::int64_t max_trials, const std::string& file) {
   if (t.contains("case") || t.contains("name")) {
     return detail::read_case_axis(t, index, design, file);
   }
   const Where where{file, "axis[" + std::to_string(index) + "]."};
-  static const std::set<std::string> known = {"key", "values", "from", "to", "count", "scale"};
   for (const auto& [k, _] : t) {
-    if (!known.count(std::string(k.str()))) {
+    if (!is_entry_key(axis_entry_keys(), std::string(k.str()))) {
       where.fail(std::string(k.str()), "is not a sweep axis key (key, values, from, to, count, "
                                         "scale; or name and [[axis.case]])");
     }

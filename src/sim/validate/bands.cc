@@ -47,13 +47,23 @@ double quantile(const std::vector<double>& sorted, double q) {
 
 }  // namespace
 
+const std::vector<EntryKey>& bracket_entry_keys() {
+  static const std::vector<EntryKey> keys = {
+      {"name", "", "a plain name, unique", "(required)", "the unknown, as the outputs name it"},
+      {"key", "", "a numeric scenario key, unique", "(required)", "the key a rig's draw sets"},
+      {"from", "(the key's)", "below to", "(required)", "the bracket's lower end"},
+      {"to", "(the key's)", "a number", "(required)", "the bracket's upper end"},
+      {"source", "", "a citation", "(required)", "where the bracket comes from"}};
+  return keys;
+}
+
 std::vector<Bracket> read_brackets(ConfigReader& in, std::uint64_t* seed) {
   const std::int64_t s = in.get_int("bracket_seed", 1);
   in.check(s >= 0, "bracket_seed", "must be >= 0, got " + std::to_string(s));
   *seed = static_cast<std::uint64_t>(s);
   std::vector<Bracket> brackets;
   const TableArray tables(in, "bracket");
-  for (const TableEntry& e : tables.entries({"name", "key", "from", "to", "source"})) {
+  for (const TableEntry& e : tables.entries(bracket_entry_keys())) {
     Bracket b;
     b.name = e.text("name", true);
     check_bracket_name(e, b.name, brackets);

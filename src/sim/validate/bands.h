@@ -32,6 +32,9 @@ struct Bracket {
   double from = 0.0, to = 0.0;
 };
 
+// A [[bracket]] table's keys, as the reader takes them and the key reference lists them.
+const std::vector<EntryKey>& bracket_entry_keys();
+
 // Reads and checks [[bracket]] and bracket_seed; empty if the file has none.
 inline constexpr int kMaxBrackets = 32;
 std::vector<Bracket> read_brackets(ConfigReader& in, std::uint64_t* seed);

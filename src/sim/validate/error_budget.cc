@@ -45,10 +45,20 @@ void check_source_overrides(const TableEntry& e, const char* field,
 
 }  // namespace
 
+const std::vector<EntryKey>& budget_source_entry_keys() {
+  static const std::vector<EntryKey> keys = {
+      {"name", "", "a plain name, unique", "(required)", "the error source"},
+      {"on", "", "list of \"key=value\" scenario overrides, at least one", "(required)",
+       "the source switched on"},
+      {"off", "", "list of \"key=value\" scenario overrides", "[]",
+       "the source switched off, where the protocol's own scenario has it on"}};
+  return keys;
+}
+
 std::vector<BudgetSource> read_budget_sources(ConfigReader& in) {
   std::vector<BudgetSource> sources;
   const TableArray tables(in, "budget_source");
-  for (const TableEntry& e : tables.entries({"name", "on", "off"})) {
+  for (const TableEntry& e : tables.entries(budget_source_entry_keys())) {
     BudgetSource s;
     s.name = e.text("name", true);
     check_source_name(e, s.name, sources);

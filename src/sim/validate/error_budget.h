@@ -32,6 +32,9 @@ struct BudgetSource {
   std::vector<std::string> on, off;
 };
 
+// A [[budget_source]] table's keys, as the reader takes them and the key reference lists them.
+const std::vector<EntryKey>& budget_source_entry_keys();
+
 // Reads and checks [[budget_source]]; empty if the file has none. At most kMaxBudgetSources.
 inline constexpr int kMaxBudgetSources = 16;
 std::vector<BudgetSource> read_budget_sources(ConfigReader& in);
