@@ -219,9 +219,10 @@ TrialVideo::TrialVideo(const TrialModel& model, const Scenario& sc, const VideoO
     for (std::size_t i = 0; i < n; ++i) lines.push_back(muscle_rgb(i, true));
     lines.push_back({1.0f, 1.0f, 1.0f});   // the reflex trigger, white
     init_figure(&plots_->pressure, "pressure [MPa] (dim: command)", "%.1f", sc.duration_s, lines);
-    // one entry per colour: each muscle its own up to eight, more joined ("red IL/X"); four
-    // entries a line, so that the key stays clear of the numbers' box
-    constexpr std::size_t kPerLine = 4;
+    // one entry per colour: each muscle its own up to eight, more joined ("red IL/X"); three
+    // entries a line, so that the key box stays narrow, clear of the numbers' box and of a
+    // leg framed in the middle
+    constexpr std::size_t kPerLine = 3;
     for (std::size_t c = 0; c < std::min(n, kMuscleColours); ++c) {
       plot_key_ += std::string(c == 0 ? "" : c % kPerLine == 0 ? "\n" : ", ") +
                    kMuscleColourNames[c] + " ";
