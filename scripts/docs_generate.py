@@ -2,10 +2,13 @@
 """docs_generate.py PAMSIM OUT: the documentation's reference pages, written from the program
 itself so that they cannot go stale: every key of a scenario and of the other files
 (`pamsim keys --json`, one table per kind), every command's options (`pamsim <command>
---help`), and the references (CITATION.cff). scripts/docs.sh runs it before Sphinx.
+--help`), the references (CITATION.cff), and the C++ library's public headers with their
+opening comments (CMakeLists.txt's PAMSIM_PUBLIC_HEADERS). scripts/docs.sh runs it before
+Sphinx.
 """
 import json
 import os
+import re
 import subprocess
 import sys
 
@@ -79,6 +82,49 @@ def references(citation):
     return "\n".join(out) + "\n"
 
 
+def public_headers(root):
+    """The installed headers, as CMakeLists.txt's PAMSIM_PUBLIC_HEADERS lists them."""
+    with open(os.path.join(root, "CMakeLists.txt")) as f:
+        text = f.read()
+    block = text[text.index("set(PAMSIM_PUBLIC_HEADERS"):]
+    block = block[len("set(PAMSIM_PUBLIC_HEADERS"):block.index(")")]
+    return block.split()
+
+
+# the papers as the code's comments name them, and as a reader of the site knows them
+PAPERS = [(r"seeds/000", "Yoshida and Hosoda [1]"), (r"seeds/001", "Yoshida and Hosoda [2]"),
+          (r"seeds/002", "Wickramatunge and Leephakpreeda [3]"), (r"seeds/003", "Pipan et al. [4]")]
+
+
+def first_comment(path):
+    """A header's opening paragraph (to its first empty comment line): what the file is for,
+    its papers named as the references page numbers them, its project history left out."""
+    lines = []
+    with open(path) as f:
+        for line in f:
+            if not line.startswith("//") or not line[2:].strip():
+                break
+            lines.append(line[2:].strip())
+    text = " ".join(lines)
+    for code, name in PAPERS:
+        text = re.sub(code, name, text)
+    return re.sub(r"[;,]?\s*\(?issue \d+(, item \d+)?\)?", "", text)
+
+
+def cpp_api(root):
+    """The C++ library's public headers by room, each with its opening comment."""
+    out, room = [], None
+    for header in public_headers(root):
+        folder = os.path.dirname(header)
+        if folder != room:
+            room = folder
+            out += ["", f"## `{folder}/`", ""]
+        about = first_comment(os.path.join(root, "src", header))
+        about = about.split(": ", 1)[1] if about.startswith(os.path.basename(header)) else about
+        out += [f"`pamsim/{header}`", f": {prose(about)}", ""]
+    return "\n".join(out).lstrip("\n") + "\n"
+
+
 def write(path, text):
     tmp = path + ".tmp"
     with open(tmp, "w") as f:
@@ -97,6 +143,7 @@ def main():
     write(os.path.join(out, "commands.md"), commands(pamsim))
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     write(os.path.join(out, "references.md"), references(os.path.join(root, "CITATION.cff")))
+    write(os.path.join(out, "cpp_api.md"), cpp_api(root))
 
 
 if __name__ == "__main__":
