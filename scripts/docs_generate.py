@@ -113,15 +113,17 @@ def first_comment(path):
 
 def cpp_api(root):
     """The C++ library's public headers by room, each with its opening comment."""
-    out, room = [], None
+    rooms = {}   # each folder's headers, the folders in the order the list first names them
     for header in public_headers(root):
-        folder = os.path.dirname(header)
-        if folder != room:
-            room = folder
-            out += ["", f"## `{folder}/`", ""]
-        about = first_comment(os.path.join(root, "src", header))
-        about = about.split(": ", 1)[1] if about.startswith(os.path.basename(header)) else about
-        out += [f"`pamsim/{header}`", f": {prose(about)}", ""]
+        rooms.setdefault(os.path.dirname(header), []).append(header)
+    out = []
+    for folder, headers in rooms.items():
+        out += ["", f"## `{folder}/`", ""]
+        for header in headers:
+            about = first_comment(os.path.join(root, "src", header))
+            name = os.path.basename(header)
+            about = about.split(": ", 1)[1] if about.startswith(name) else about
+            out += [f"`pamsim/{header}`", f": {prose(about)}", ""]
     return "\n".join(out).lstrip("\n") + "\n"
 
 
