@@ -1,8 +1,8 @@
-"""docs_blocks_test.py PAMSIM: scripts/docs_blocks.py against what it is for: a number in a
-block compared within its tolerance and a word exactly; the lint finding a computed number in
-prose and passing what prose may give; and a page made stale by hand (a changed number, an
-edited command, a slow block made under another physics) failing `check` until `update`
-makes it again.
+"""docs_blocks_test.py PAMSIM: scripts/docs_blocks.py and its lint (docs_lint.py) against
+what they are for: a number in a block compared within its tolerance and a word exactly; the
+lint finding a computed number in prose and passing what prose may give; and a page made
+stale by hand (a changed number, an edited command, a slow block made under another physics)
+failing `check` until `update` makes it again.
 """
 import os
 import shutil
@@ -13,6 +13,7 @@ import unittest
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import docs_blocks  # noqa: E402
+import docs_lint  # noqa: E402
 
 # a cheap block: a trial cut short (0.2 s of wall time)
 PAGE = """# A page
@@ -46,7 +47,7 @@ class FirstDifferenceTest(unittest.TestCase):
 
 class LintTest(unittest.TestCase):
     def flagged(self, text):
-        return [n for _, numbers in docs_blocks.lint_text(text) for n in numbers]
+        return [n for _, numbers in docs_lint.lint_text(text) for n in numbers]
 
     def test_a_computed_number_in_prose_is_found(self):
         self.assertEqual(self.flagged("The arm drops 12.4 deg."), ["12.4"])
@@ -64,7 +65,7 @@ class LintTest(unittest.TestCase):
         self.assertEqual(self.flagged(block), [])
 
     def test_lines_keep_their_numbers(self):
-        found = list(docs_blocks.lint_text("```\n1.5\n```\nok\n2.5 deg\n"))
+        found = list(docs_lint.lint_text("```\n1.5\n```\nok\n2.5 deg\n"))
         self.assertEqual(found, [(5, ["2.5"])])
 
 
