@@ -6,7 +6,7 @@
 // name with its unit, factor to SI, range, default (the struct's own) and meaning is one row,
 // which the scenario reader, the structs' validate(), `pamsim keys` and the tests read.
 // Outside the rows: the creep series (two lists, creep_weights and creep_times_s, read and
-// checked by prony_creep.h's rules) and sensors.instrument_seed (a 64-bit seed).
+// checked by prony_creep.h's rules); sensors.instrument_seed is a row of sensors.* (sensor_keys.h).
 //
 // Each instrument's first table has its "model" choice first: its ideal name, then its
 // hardware name; with the ideal model the instrument's other keys are refused (the reader).

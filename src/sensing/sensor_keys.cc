@@ -1,6 +1,7 @@
 // sensor_keys.cc: the rows of sensors.* (see sensor_keys.h).
 #include "sensing/sensor_keys.h"
 
+#include <cstdint>
 #include <limits>
 
 #include "base/units.h"
@@ -17,7 +18,12 @@ KeyTable sensor_key_table(SensorConfig* sensors) {
   t.ints = {int_row("pressure_adc_bits", "the pressure ADC's resolution (0: ideal, else 4 to 24)",
                     0, 64, &s.pressure_adc_bits),
             int_row("gauge_adc_bits", "the gauge ADC's resolution (0: ideal, else 4 to 24)", 0,
-                    64, &s.gauge_adc_bits)};
+                    64, &s.gauge_adc_bits),
+            int_row("instrument_seed",
+                    "which built instruments (bridge arms, pressure sensors' offsets and gains): "
+                    "fixed across trials",
+                    0, std::numeric_limits<std::int64_t>::max(),
+                    &s.gauge_hardware.instrument_seed)};
   t.numbers = {
       {"pressure_noise_MPa", "MPa", units::kPaPerMPa, non_negative, "pressure sensor noise SD",
        &s.pressure_noise_pa},

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -34,8 +36,11 @@ inline std::vector<std::string> bad_number_texts(const NumberRow& row) {
 }
 
 // an integer row's bad values as TOML text: a fraction, a string, and each side just outside
+// (none above a row that takes every integer up to TOML's largest)
 inline std::vector<std::string> bad_int_texts(const IntRow& row) {
-  return {"1.5", "\"x\"", std::to_string(row.lo - 1), std::to_string(row.hi + 1)};
+  std::vector<std::string> bad = {"1.5", "\"x\"", std::to_string(row.lo - 1)};
+  if (row.hi < std::numeric_limits<std::int64_t>::max()) bad.push_back(std::to_string(row.hi + 1));
+  return bad;
 }
 
 // The parts of the InputError that `read` throws, which must be one line; a test failure

@@ -1,6 +1,6 @@
 // sensor_keys_test.cc: the sensors' keys (sensing/sensor_keys.h) through the scenario reader:
-// every key the reader asks for directly under sensors. (the instruments' own tables and
-// sensors.instrument_seed aside) has exactly one row and every row is read; a bad value of
+// every key the reader asks for directly under sensors. (the instruments' own tables aside)
+// has exactly one row and every row is read; a bad value of
 // every row, generated from the row (each side of its range, another type, NaN, an integer
 // row's fraction), is refused in one line naming the scenario file and the key; and a value
 // in the file's unit reaches its SI field, bit for bit as the sensors convert it.
@@ -36,12 +36,12 @@ TEST(SensorKeysTest, EveryKeyTheReaderAsksForHasExactlyOneRow) {
   std::set<std::string> asked;
   for (const ScenarioKeyValue& kv : scenario_key_values(kDropMass, {})) {
     const std::vector<std::string> parts = split_key(kv.key);
-    if (parts.size() == 2 && parts[0] == "sensors" && parts[1] != "instrument_seed") {
+    if (parts.size() == 2 && parts[0] == "sensors") {
       asked.insert(kv.key);
     }
   }
   expect_rows_are_the_asked_keys(rows, asked);
-  EXPECT_EQ(rows.size(), 12u);
+  EXPECT_EQ(rows.size(), 13u);
 }
 
 TEST(SensorKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {

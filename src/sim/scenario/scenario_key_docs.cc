@@ -166,7 +166,6 @@ std::vector<KeyDoc> instrument_docs() {
       {"sensors.gauge.board.creep_times_s", "s", "(none)", "each > 0, one per weight", "the board's Prony retardation times"},
       {"sensors.fiber.creep_weights", "", "[0.05]", "each >= 0", "the fabric's Prony creep weights (ASSUMPTION)"},
       {"sensors.fiber.creep_times_s", "s", "[10.0]", "each > 0, one per weight", "the fabric's Prony retardation times"},
-      {"sensors.instrument_seed", "", "1", ">= 0", "which built instruments (bridge arms, pressure sensors' offsets and gains): fixed across trials"},
   };
   docs.insert(docs.end(), lists.begin(), lists.end());
   return docs;

@@ -1,6 +1,6 @@
 // scenario_sensors.cc: sensors.* (noise, ADCs, low-pass: the rows of sensing/sensor_keys.h)
 // and the sensors as hardware, sensors.gauge.*, .pressure.*, .fiber.*, .encoder.* (the rows
-// of sensing/instrument_keys.h), with the creep series and sensors.instrument_seed.
+// of sensing/instrument_keys.h), with the creep series; sensors.instrument_seed is a row.
 // Validated with the sensing (sensing/sensing.h).
 #include <cstdint>
 #include <string>
@@ -52,15 +52,12 @@ void read_instrument(ConfigReader& in, const std::vector<KeyTable>& tables) {
 }
 
 // the instruments as hardware, in the registry's order (instrument_kinds.h): their rows and
-// creep series, then the instruments' seed
+// creep series (their seed is a row of sensors.*)
 void read_instruments(ConfigReader& in, SensorConfig* s) {
   for (const InstrumentKind& kind : instrument_kinds()) {
     read_instrument(in, kind.key_tables(s));
     if (kind.creep) *kind.creep(s) = read_creep(in, kind.creep_table + ".", *kind.creep(s));
   }
-  const std::int64_t seed = in.get_int("sensors.instrument_seed", 1);
-  in.check(seed >= 0, "sensors.instrument_seed", "must be >= 0, got " + std::to_string(seed));
-  s->gauge_hardware.instrument_seed = static_cast<std::uint64_t>(seed);
 }
 
 }  // namespace
