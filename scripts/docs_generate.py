@@ -52,6 +52,9 @@ def commands(pamsim):
             in_list = True
         elif in_list and line.startswith("  ") and line.split():
             names.append(line.split()[0])
+    if len(names) < 10:   # the help's layout changed: a page without the commands must not build
+        sys.exit(f"docs_generate: found {len(names)} commands in `pamsim --help`'s Subcommands "
+                 f"list, expected every command (run, sweep, identify, ...)")
     out = []
     for name in names:
         text = subprocess.run([pamsim, name, "--help"], capture_output=True, text=True).stdout
