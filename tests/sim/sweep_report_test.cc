@@ -187,4 +187,11 @@ TEST_F(SweepReportTest, BestScenarioKeepsTheBaseAndSetsThePoint) {
   EXPECT_EQ(text.rfind("# header\n", 0), 0u);
 }
 
+// a case's name is any string: in table.md it stays one cell (a '|' would end the cell, a
+// backslash escape the next character, a line break end the row)
+TEST(MarkdownCellTest, APipeABackslashAndALineBreakStayInOneCell) {
+  EXPECT_EQ(pamsim::markdown_cell("light, high gain"), "light, high gain");
+  EXPECT_EQ(pamsim::markdown_cell("a|b\\c\nd"), "a\\|b\\\\c d");
+}
+
 }  // namespace

@@ -313,6 +313,15 @@ std::vector<std::string> default_table_metrics(const SweepSummary& sweep,
   return names;
 }
 
+std::string markdown_cell(const std::string& text) {
+  std::string cell;
+  for (const char c : text) {
+    if (c == '|' || c == '\\') cell += '\\';
+    cell += c == '\n' ? ' ' : c;
+  }
+  return cell;
+}
+
 std::string points_markdown(const SweepSummary& sweep, const std::vector<std::string>& metrics) {
   std::vector<int> shown;
   for (const std::string& name : metrics) {
@@ -320,7 +329,7 @@ std::string points_markdown(const SweepSummary& sweep, const std::vector<std::st
     if (shown.back() < 0) throw InputError("--table: the sweep has no metric " + name);
   }
   std::string out = "|", rule = "|";
-  for (const auto& key : sweep.axis_keys) out += " " + key + " |";
+  for (const auto& key : sweep.axis_keys) out += " " + markdown_cell(key) + " |";
   out += " ok / trials |";
   for (const std::string& name : metrics) out += " " + metric_label(name) + " |";
   for (std::size_t c = 0; c < sweep.axis_keys.size() + 1 + metrics.size(); ++c) rule += " --- |";
@@ -328,7 +337,7 @@ std::string points_markdown(const SweepSummary& sweep, const std::vector<std::st
   char buf[96];
   for (const PointSummary& p : sweep.points) {
     out += "|";
-    for (const auto& v : p.axis_values) out += " " + unquoted(v) + " |";
+    for (const auto& v : p.axis_values) out += " " + markdown_cell(unquoted(v)) + " |";
     out += " " + std::to_string(p.ok) + " / " + std::to_string(p.trials) + " |";
     for (const int m : shown) {
       const MetricStats& s = p.metrics[static_cast<std::size_t>(m)];

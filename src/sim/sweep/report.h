@@ -90,6 +90,9 @@ std::vector<std::string> grid_edges_of(const SweepSummary& sweep, const PointSum
 // stored, and each of `metrics` as "mean [min, max]" over those seeds (4 significant
 // digits; "-" where none has it). Throws InputError naming a metric the sweep lacks.
 std::string points_markdown(const SweepSummary& sweep, const std::vector<std::string>& metrics);
+// `text` as one cell of a Markdown table: '|' and '\\' escaped, a line break as a space
+// (a case's name may hold any of them).
+std::string markdown_cell(const std::string& text);
 // The metrics table.md shows unless asked: kPointsCsvMetrics the sweep has, and `metric`.
 std::vector<std::string> default_table_metrics(const SweepSummary& sweep, const std::string& metric);
 
