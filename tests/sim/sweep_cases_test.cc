@@ -225,6 +225,9 @@ TEST(SweepCasesTest, BadCaseAxesFailWithOneLineAndNoDatabase) {
                            "set = { reflex.v_thr_mm_s = 50.0 }\n"
                            "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [60.0]\n",
        "axis[1] sets reflex.v_thr_mm_s, which axis[0] sets too"},
+      {"case_and_fixed", "[[axis]]\nname = \"c\"\n[[axis.case]]\nname = \"a\"\n"
+                         "set = { sim.duration_s = 0.9 }\n",   // short_sweep's [fixed] sets it
+       "axis[0] sets sim.duration_s, which [fixed] sets too"},
       {"from_missing_file", "[[axis]]\nname = \"c\"\n[[axis.case]]\nname = \"a\"\n"
                             "from = { file = \"nowhere.toml\", table = \"fast\" }\n",
        "case[0].from " },

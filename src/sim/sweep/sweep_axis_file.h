@@ -38,9 +38,11 @@ std::string override_key(const std::string& assignment);
 SweepAxis read_case_axis(const toml::table& t, std::size_t index, SweepDesign design,
                          const std::string& file);
 
-// Refuses two axes (or an axis and a [[randomize]] draw) that set the same scenario key: the
-// later would silently win. `drawn` are the randomized keys.
+// Refuses two axes (or an axis and a [[randomize]] draw, or either and [fixed]) that set the
+// same scenario key: the later would silently win. `drawn` are the randomized keys, `fixed`
+// [fixed]'s "key=value" overrides.
 void check_axes_disjoint(const std::vector<SweepAxis>& axes, const std::vector<std::string>& drawn,
+                         const std::vector<std::string>& fixed,
                          const std::string& file);
 
 }  // namespace pamsim::detail

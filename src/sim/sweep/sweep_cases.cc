@@ -109,7 +109,7 @@ SweepAxis read_case_axis(const toml::table& t, std::size_t index, SweepDesign de
 }
 
 void check_axes_disjoint(const std::vector<SweepAxis>& axes, const std::vector<std::string>& drawn,
-                         const std::string& file) {
+                         const std::vector<std::string>& fixed, const std::string& file) {
   std::map<std::string, std::string> setter;   // scenario key -> what sets it
   const auto claim = [&](const std::string& key, const std::string& who) {
     const auto [at, fresh] = setter.emplace(key, who);
@@ -118,6 +118,7 @@ void check_axes_disjoint(const std::vector<SweepAxis>& axes, const std::vector<s
                        " sets too");
     }
   };
+  for (const std::string& assignment : fixed) claim(override_key(assignment), "[fixed]");
   for (std::size_t a = 0; a < axes.size(); ++a) {
     const std::string who = "axis[" + std::to_string(a) + "]";
     if (!axes[a].is_cases()) claim(axes[a].key, who);

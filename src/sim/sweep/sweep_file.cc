@@ -254,7 +254,7 @@ void read_randomize(ConfigReader& in, SweepDefinition* def) {
       in.check(f.rfind(r.key + "=", 0) != 0, "randomize", "draws " + r.key + ", which [fixed] sets too");
     }
   }
-  detail::check_axes_disjoint(def->axes, drawn, def->file);
+  detail::check_axes_disjoint(def->axes, drawn, def->fixed, def->file);
 }
 
 // A grid's points x seeds within max_trials, the product checked factor by factor (it could
