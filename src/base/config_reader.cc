@@ -313,9 +313,7 @@ std::vector<std::string> ConfigReader::asked_keys() const {
 void TableEntry::allow(const std::vector<EntryKey>& keys) const {
   for (const auto& [k, v] : table) {
     const std::string key(k.str());
-    if (std::none_of(keys.begin(), keys.end(), [&](const EntryKey& a) { return key == a.name; })) {
-      in.fail(where + key, "is not a key of this table");
-    }
+    if (!is_entry_key(keys, key)) in.fail(where + key, "is not a key of this table");
   }
 }
 

@@ -165,6 +165,10 @@ double from_si(const NumberRow& row, double si) {
   return si * row.divisor / row.to_si;
 }
 
+bool is_entry_key(const std::vector<EntryKey>& keys, const std::string& key) {
+  return std::any_of(keys.begin(), keys.end(), [&](const EntryKey& k) { return key == k.name; });
+}
+
 std::vector<KeyDoc> entry_key_docs(const std::string& array, const std::vector<EntryKey>& keys) {
   std::vector<KeyDoc> docs;
   for (const EntryKey& k : keys) {

@@ -192,6 +192,9 @@ struct EntryKey {
   const char* meaning;
 };
 
+// Whether `key` is one of `keys`' names.
+bool is_entry_key(const std::vector<EntryKey>& keys, const std::string& key);
+
 // The reference lines of array `array`'s entry keys: "<array>[].<name>".
 std::vector<KeyDoc> entry_key_docs(const std::string& array, const std::vector<EntryKey>& keys);
 

@@ -56,9 +56,4 @@ const InstrumentKind* find_instrument_kind(const std::string& name) {
   return nullptr;
 }
 
-std::string instrument_model(const InstrumentKind& kind, const SensorConfig& sensors) {
-  SensorConfig fields = sensors;   // the rows bind to a config they may write; this one is read
-  return kind.key_tables(&fields).front().choices.front().get();
-}
-
 }  // namespace pamsim

@@ -41,7 +41,5 @@ struct InstrumentKind {
 const std::vector<InstrumentKind>& instrument_kinds();
 // The kind of this name ("gauge", "pressure", "fiber", "encoder"), or nullptr.
 const InstrumentKind* find_instrument_kind(const std::string& name);
-// The model `sensors` holds for `kind`: its first table's first choice ("bridge", "ideal"...).
-std::string instrument_model(const InstrumentKind& kind, const SensorConfig& sensors);
 
 }  // namespace pamsim

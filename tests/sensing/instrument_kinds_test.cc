@@ -35,9 +35,13 @@ TEST(InstrumentKindsTest, EachKindsModelIsItsFirstChoiceAndReachesTheConfig) {
     const ChoiceRow& model = tables.front().choices.at(0);
     EXPECT_EQ(model.name, "model");
     ASSERT_EQ(model.allowed.size(), 2u);
-    EXPECT_EQ(instrument_model(kind, config), model.allowed.front());
-    model.set(model.allowed.back());   // the hardware model
-    EXPECT_EQ(instrument_model(kind, config), model.allowed.back());
+    EXPECT_EQ(model.get(), model.allowed.front());
+    SensorConfig ideal = config;
+    model.set(model.allowed.back());   // the hardware model, set in the config
+    EXPECT_EQ(model.get(), model.allowed.back());
+    EXPECT_EQ(kind.key_tables(&config).front().choices.at(0).get(), model.allowed.back());
+    EXPECT_NE(kind.key_tables(&ideal).front().choices.at(0).get(),
+              model.allowed.back()) << "the copy taken before stays ideal";
     EXPECT_NO_THROW(kind.validate(config));
   }
 }

@@ -141,8 +141,6 @@ KeyTable sweep_sampling_table(SweepDefinition* def);
 const std::vector<EntryKey>& axis_entry_keys();
 const std::vector<EntryKey>& case_axis_entry_keys();
 const std::vector<EntryKey>& case_entry_keys();
-// Whether `key` is one of `keys`' names.
-bool is_entry_key(const std::vector<EntryKey>& keys, const std::string& key);
 
 // Reads and validates a sweep file (sweep_file.cc), including every point's scenario. Throws InputError
 // "<file>: <key> <problem>" for the first problem found.

@@ -111,10 +111,6 @@ const std::vector<EntryKey>& case_entry_keys() {
   return keys;
 }
 
-bool is_entry_key(const std::vector<EntryKey>& keys, const std::string& key) {
-  return std::any_of(keys.begin(), keys.end(), [&](const EntryKey& k) { return key == k.name; });
-}
-
 namespace {
 
 SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
