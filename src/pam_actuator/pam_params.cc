@@ -178,27 +178,32 @@ std::string pam_params_to_toml(const PamParams& params) {
                               &f.coef[law_index(f.law)]);
   if (params.strain_gauge) f.gauge = *params.strain_gauge;
   if (params.geometry) f.geometry = *params.geometry;
-  // the law's own coefficients, and the optional tables the parameters have
-  std::set<std::string> written = {"", "spring", "spring.units"};
+  // the tables the parameters have ([spring.units] is written inline in [spring]), and the
+  // other laws' coefficients, which are not written
+  std::set<std::string> written = {"", "spring"};
   if (params.strain_gauge) written.insert("strain_gauge");
   if (params.geometry) written.insert("geometry");
   std::set<std::string> other_laws;
   for (SpringLaw law : kLaws) {
-    for (int k = 0; k < coefficient_count(law); ++k) {
-      if (law != f.law) other_laws.insert(coefficient_name(law, k));
+    for (int k = 0; law != f.law && k < coefficient_count(law); ++k) {
+      other_laws.insert(coefficient_name(law, k));
     }
   }
-  for (int k = 0; k < coefficient_count(f.law); ++k) other_laws.erase(coefficient_name(f.law, k));
+  const std::vector<KeyTable> tables = pam_key_tables(&f);
+  const auto table = [&](const std::string& name) {
+    return *std::find_if(tables.begin(), tables.end(),
+                         [&](const KeyTable& t) { return t.name == name; });
+  };
 
   std::ostringstream out;
   out << "# PAM parameter file (pamsim), every key from its row; units are the paper's: p MPa, "
          "d mm, f N\n";
-  for (const KeyTable& t : pam_key_tables(&f)) {
-    if (!written.count(t.name) || t.name == "spring.units") continue;
+  for (const KeyTable& t : tables) {
+    if (!written.count(t.name)) continue;
     if (!t.name.empty()) out << "\n[" << t.name << "]\n";
     for (const TextRow& row : t.texts) out << row.name << " = " << quoted(*row.target) << "\n";
     for (const ChoiceRow& row : t.choices) out << row.name << " = \"" << row.get() << "\"\n";
-    if (t.name == "spring") out << "units = " << inline_choices(pam_key_tables(&f).at(2)) << "\n";
+    if (t.name == "spring") out << "units = " << inline_choices(table("spring.units")) << "\n";
     for (const NumberRow& row : t.numbers) {
       if (other_laws.count(row.name)) continue;
       out << row.name << " = " << format_number(from_si(row, *row.target));

@@ -40,9 +40,15 @@ const char* to_string(ScheduleKind kind) {
   return "?";
 }
 
+const std::vector<ScheduleKind>& schedule_kinds() {
+  static const std::vector<ScheduleKind> kinds = {ScheduleKind::kConstant, ScheduleKind::kRamp,
+                                                  ScheduleKind::kSine, ScheduleKind::kSteps,
+                                                  ScheduleKind::kTable};
+  return kinds;
+}
+
 ScheduleKind parse_schedule_kind(const std::string& name, const std::string& key) {
-  for (ScheduleKind k : {ScheduleKind::kConstant, ScheduleKind::kRamp, ScheduleKind::kSine,
-                         ScheduleKind::kSteps, ScheduleKind::kTable}) {
+  for (ScheduleKind k : schedule_kinds()) {
     if (name == to_string(k)) return k;
   }
   throw InputError(key + " must be one of \"constant\", \"ramp\", \"sine\", \"steps\", "

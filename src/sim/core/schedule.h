@@ -19,6 +19,8 @@ namespace pamsim {
 
 enum class ScheduleKind { kConstant, kRamp, kSine, kSteps, kTable };
 
+// Every kind, in the order of ScheduleKind.
+const std::vector<ScheduleKind>& schedule_kinds();
 // "constant" | "ramp" | "sine" | "steps" | "table"
 const char* to_string(ScheduleKind kind);
 // Throws InputError "<key> must be one of ..., got "<name>"" on anything else.

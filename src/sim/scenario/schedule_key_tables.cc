@@ -25,11 +25,6 @@ NumberRow start_row(PressureSchedule& s) {
 
 }  // namespace
 
-std::vector<ScheduleKind> schedule_kinds() {
-  return {ScheduleKind::kConstant, ScheduleKind::kRamp, ScheduleKind::kSine,
-          ScheduleKind::kSteps, ScheduleKind::kTable};
-}
-
 KeyTable schedule_kind_key_table(PressureSchedule* schedule) {
   KeyTable t{kTable, {}, {}, {}};
   std::vector<std::string> names;

@@ -23,7 +23,4 @@ KeyTable schedule_kind_key_table(PressureSchedule* schedule);
 // times_s and MPa lists; table: none, its file is a path the reader resolves).
 KeyTable schedule_key_table(ScheduleKind kind, PressureSchedule* schedule);
 
-// Every kind, in the order of ScheduleKind.
-std::vector<ScheduleKind> schedule_kinds();
-
 }  // namespace pamsim
