@@ -134,16 +134,11 @@ class UnitBoxCost : public ceres::CostFunction {
   // d r / d u_j into `column` (num_residuals values)
   bool column(const std::vector<double>& unit, std::size_t j, const std::vector<double>& r0,
               double* column) const {
-    const double h = kDifferenceStep;
-    const bool up = unit[j] + h <= 1.0, down = unit[j] - h >= 0.0;
-    std::vector<double> plus = unit, minus = unit;
-    plus[j] += up ? h : 0.0;
-    minus[j] -= down ? h : 0.0;
-    const std::vector<double> rp = up ? residuals_.at(plus, "polish") : r0;
-    const std::vector<double> rm = down ? residuals_.at(minus, "polish") : r0;
+    const DifferenceSides s = difference_sides(unit, j, kDifferenceStep);
+    const std::vector<double> rp = s.plus[j] != unit[j] ? residuals_.at(s.plus, "polish") : r0;
+    const std::vector<double> rm = s.minus[j] != unit[j] ? residuals_.at(s.minus, "polish") : r0;
     if (rp.empty() || rm.empty()) return false;
-    const double width = plus[j] - minus[j];
-    for (std::size_t i = 0; i < r0.size(); ++i) column[i] = (rp[i] - rm[i]) / width;
+    for (std::size_t i = 0; i < r0.size(); ++i) column[i] = (rp[i] - rm[i]) / s.width;
     return true;
   }
 
@@ -355,6 +350,12 @@ IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
   Eigen::VectorXd at_result;
   evaluate_dense(*problem, &jacobian, &at_result);
   fill_uncertainty(jacobian, at_result, residuals.segments(), result.unit, def.interval, &result);
+  const ResidualsAt residuals_at = [&](const std::vector<double>& unit) {
+    return residuals.at(unit, "interval");
+  };
+  fill_roughness(residuals_at, result.unit, &result);
+  fill_interval_uncertainty(residuals_at, jacobian, at_result, residuals.segments(),
+                            result.unit, def.interval, &result);
   result.fits = channel_fits(def, values, options.threads);
   result.check_s = seconds_since(t0);
   result.simulated = residuals.simulated;

@@ -42,6 +42,10 @@ struct IdentifiedParameter {
   bool at_bound = false;        // within 0.1 % of the box's edge
   bool identifiable = true;     // false: the recordings do not determine it
   std::vector<std::pair<std::string, double>> correlated;   // |correlation| > 0.9
+  // the model's numerical roughness along the parameter at the result: its residuals' second
+  // difference over their first (identify_uncertainty.h); above kRoughnessLimit its standard
+  // error is not to be trusted. NaN: not measured (one-sided, or the differences vanish)
+  double roughness = std::numeric_limits<double>::quiet_NaN();
 };
 
 // A recording's channel before (the base scenario as it stands) and after identification.

@@ -35,6 +35,7 @@ std::string verdict(const IdentifiedParameter& p, bool explained) {
   std::string v = p.at_bound ? "at a bound of its range" : "identified";
   if (!p.correlated.empty()) v += ", strongly correlated";
   if (!explained) v += "; not to be trusted: the model does not explain the recordings";
+  if (p.roughness > kRoughnessLimit) v += "; not to be trusted: the model's numerical error";
   return v;
 }
 
@@ -228,6 +229,15 @@ std::vector<std::string> identify_warnings(const IdentifyDefinition& def,
                   std::to_string(def.polish_iterations) + "): the point may not be the minimum");
   }
   for (const IdentifiedParameter& p : r.parameters) {
+    if (!(p.roughness > kRoughnessLimit) || !p.identifiable) continue;
+    out.push_back(p.parameter.key + ": the model's prediction is rough along it (second "
+                  "differences " + format_value(std::round(p.roughness * 100) / 100) +
+                  " x the first at the difference step): numerical error, such as the chamber "
+                  "solver's (pneumatics.solver.relative_tolerance) or an instrument's quantiser "
+                  "(sensors.*_adc_bits), makes its standard error too small; tighten the "
+                  "tolerance or make the instruments ideal in `overrides`");
+  }
+  for (const IdentifiedParameter& p : r.parameters) {
     if (!p.at_bound || !p.identifiable) continue;   // (undetermined: said so, wherever it sits)
     out.push_back(p.parameter.key + " = " + format_value(p.value) + " sits at a bound of its " +
                   "range [" + format_value(p.parameter.from) + ", " +
@@ -238,7 +248,8 @@ std::vector<std::string> identify_warnings(const IdentifyDefinition& def,
 
 std::string identify_parameters_csv(const IdentifyResult& r) {
   std::string out = "key,from,to,scale,start,identified,std_error,at_bound,identifiable,"
-                    "correlated_with,std_error_plain,interval_lo,interval_hi,verdict\n";
+                    "correlated_with,std_error_plain,interval_lo,interval_hi,verdict,"
+                    "difference_roughness\n";
   const bool explained = unexplained_channels(r).empty();
   for (const IdentifiedParameter& p : r.parameters) {
     out += p.parameter.key + "," + cell(p.parameter.from) + "," + cell(p.parameter.to) + "," +
@@ -246,7 +257,8 @@ std::string identify_parameters_csv(const IdentifyResult& r) {
            cell(p.std_error) +
            "," + (p.at_bound ? "1" : "0") + "," + (p.identifiable ? "1" : "0") + "," +
            correlated_text(p) + "," + cell(p.std_error_plain) + "," + cell(p.interval_lo) + "," +
-           cell(p.interval_hi) + ",\"" + verdict(p, explained) + "\"\n";
+           cell(p.interval_hi) + ",\"" + verdict(p, explained) + "\"," + cell(p.roughness) +
+           "\n";
   }
   return out;
 }

@@ -15,20 +15,6 @@
 namespace pamsim {
 namespace {
 
-// The points a parameter's central difference steps to: its two sides of `unit` (one of them
-// `unit` itself within kDifferenceStep of a bound) and their distance.
-struct Sides {
-  std::vector<double> plus, minus;
-  double width = 0.0;
-};
-Sides sides_of(const std::vector<double>& unit, std::size_t j) {
-  Sides s{unit, unit, 0.0};
-  if (unit[j] + kDifferenceStep <= 1.0) s.plus[j] += kDifferenceStep;
-  if (unit[j] - kDifferenceStep >= 0.0) s.minus[j] -= kDifferenceStep;
-  s.width = s.plus[j] - s.minus[j];
-  return s;
-}
-
 // A recording's or candidate's sensitivities, one row per sample of a channel with a floor,
 // each divided by the floor (`noise`, per chosen channel; NaN or <= 0: the channel left out);
 // empty with *failure set if a trial failed.
@@ -40,7 +26,7 @@ Eigen::MatrixXd sensitivity(const IdentifyDefinition& def, const IdentifyRecordi
   std::vector<std::pair<std::size_t, std::size_t>> trial_of(n, {0, 0});   // plus, minus
   for (std::size_t j = 0; j < n; ++j) {
     if (def.channel_parameters[j].kind != ChannelParameter::Kind::kNone) continue;
-    const Sides s = sides_of(unit, j);
+    const DifferenceSides s = difference_sides(unit, j, kDifferenceStep);
     trial_of[j] = {points.size(), points.size() + 1};
     points.push_back(s.plus);
     points.push_back(s.minus);
@@ -64,7 +50,7 @@ Eigen::MatrixXd sensitivity(const IdentifyDefinition& def, const IdentifyRecordi
   }
   Eigen::MatrixXd s = Eigen::MatrixXd::Zero(rows, static_cast<Eigen::Index>(n));
   for (std::size_t j = 0; j < n; ++j) {
-    const Sides side = sides_of(unit, j);
+    const DifferenceSides side = difference_sides(unit, j, kDifferenceStep);
     const auto plus =
         sample_channels(def, r, trials[trial_of[j].first], parameter_values(def, side.plus));
     const auto minus =
@@ -92,7 +78,7 @@ Eigen::MatrixXd tensile_sensitivity(const IdentifyDefinition& def, const Identif
                                             static_cast<Eigen::Index>(n));
   for (std::size_t j = 0; j < n && floor > 0.0; ++j) {
     if (def.channel_parameters[j].kind != ChannelParameter::Kind::kNone) continue;
-    const Sides side = sides_of(unit, j);
+    const DifferenceSides side = difference_sides(unit, j, kDifferenceStep);
     const auto forces_at = [&](const std::vector<double>& u) {
       return tensile_forces(def, t, def.overrides_at(parameter_values(def, u)), failure);
     };

@@ -251,4 +251,12 @@ double sum_of_squares(const std::vector<double>& residuals) {
   return s;
 }
 
+DifferenceSides difference_sides(const std::vector<double>& unit, std::size_t j, double step) {
+  DifferenceSides s{unit, unit, 0.0};
+  if (unit[j] + step <= 1.0) s.plus[j] += step;
+  if (unit[j] - step >= 0.0) s.minus[j] -= step;
+  s.width = s.plus[j] - s.minus[j];
+  return s;
+}
+
 }  // namespace pamsim

@@ -30,6 +30,15 @@ namespace pamsim {
 // 0.1 % of a parameter's range.
 inline constexpr double kDifferenceStep = 1e-3;
 
+// The points parameter j's central difference of `step` steps to: its two sides of `unit`
+// (one of them `unit` itself within `step` of a bound, never a point outside the box, which
+// the parameters' ranges may not allow) and their distance.
+struct DifferenceSides {
+  std::vector<double> plus, minus;
+  double width = 0.0;
+};
+DifferenceSides difference_sides(const std::vector<double>& unit, std::size_t j, double step);
+
 // A recording's trial: its log's time and the chosen channels' columns, or the reason it did
 // not run to the end (a divergence, or a value the scenario refuses: InputError; other
 // errors propagate, and nothing is stored for the point).

@@ -76,6 +76,73 @@ void fill_uncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
   }
 }
 
+double difference_roughness(const std::vector<double>& minus, const std::vector<double>& at,
+                            const std::vector<double>& plus) {
+  double first = 0.0, second = 0.0;
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    first += (plus[i] - minus[i]) * (plus[i] - minus[i]);
+    second += (plus[i] - 2.0 * at[i] + minus[i]) * (plus[i] - 2.0 * at[i] + minus[i]);
+  }
+  return first > 0.0 ? std::sqrt(second / first) : kNaN;
+}
+
+void fill_roughness(const ResidualsAt& residuals_at, const std::vector<double>& unit,
+                    IdentifyResult* result) {
+  const std::vector<double> at = residuals_at(unit);
+  for (std::size_t j = 0; j < unit.size() && j < result->parameters.size(); ++j) {
+    const DifferenceSides s = difference_sides(unit, j, kDifferenceStep);
+    if (at.empty() || s.plus[j] == unit[j] || s.minus[j] == unit[j]) continue;
+    const std::vector<double> plus = residuals_at(s.plus), minus = residuals_at(s.minus);
+    if (plus.size() != at.size() || minus.size() != at.size()) continue;
+    result->parameters[j].roughness = difference_roughness(minus, at, plus);
+  }
+}
+
+namespace {
+
+// parameter j's secant of `step` into column j of `jacobian`; false if a trial failed
+bool set_secant(const ResidualsAt& residuals_at, const std::vector<double>& unit, std::size_t j,
+                double step, Eigen::MatrixXd* jacobian) {
+  const DifferenceSides s = difference_sides(unit, j, step);
+  const std::vector<double> plus = residuals_at(s.plus), minus = residuals_at(s.minus);
+  if (plus.size() != static_cast<std::size_t>(jacobian->rows()) || minus.size() != plus.size()) {
+    return false;
+  }
+  for (Eigen::Index i = 0; i < jacobian->rows(); ++i) {
+    (*jacobian)(i, static_cast<Eigen::Index>(j)) = (plus[i] - minus[i]) / s.width;
+  }
+  return true;
+}
+
+// parameter j's half interval in the unit box (z standard errors)
+double half_interval(const IdentifiedParameter& p, double u, double z) {
+  return z * p.std_error / std::abs(slope_at(p.parameter, u));
+}
+
+}  // namespace
+
+void fill_interval_uncertainty(const ResidualsAt& residuals_at, Eigen::MatrixXd jacobian,
+                               const Eigen::VectorXd& r, const std::vector<std::size_t>& segments,
+                               const std::vector<double>& unit, double level,
+                               IdentifyResult* result) {
+  std::vector<double> plain;   // the derivative's, kept for comparison
+  for (const IdentifiedParameter& p : result->parameters) plain.push_back(p.std_error_plain);
+  const double z = boost::math::quantile(boost::math::normal(), 0.5 + 0.5 * level);
+  for (std::size_t j = 0; j < unit.size() && j < result->parameters.size(); ++j) {
+    if (!result->parameters[j].identifiable) continue;
+    double step = std::clamp(half_interval(result->parameters[j], unit[j], z), kDifferenceStep,
+                             kLargestSecant);
+    for (;;) {
+      if (!set_secant(residuals_at, unit, j, step, &jacobian)) break;   // the last errors stand
+      fill_uncertainty(jacobian, r, segments, unit, level, result);
+      const double half = half_interval(result->parameters[j], unit[j], z);
+      if (!(half > step * (1.0 + kIntervalSettled)) || step >= kLargestSecant) break;
+      step = std::min(kLargestSecant, std::max(2.0 * step, half));
+    }
+  }
+  for (std::size_t j = 0; j < plain.size(); ++j) result->parameters[j].std_error_plain = plain[j];
+}
+
 void judge_channel(const std::vector<double>& recorded, double given, double explained_factor,
                    ChannelFit* fit) {
   if (std::isfinite(given)) {

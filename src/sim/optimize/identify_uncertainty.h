@@ -16,9 +16,19 @@
 //    quantisation). Where a fitted channel
 //    is not explained, no standard error is to be trusted. A channel with too few samples
 //    to estimate its floor, and none given, is not judged (ChannelFit::judged): unknown.
+//  - each parameter's Jacobian column checked for numerical noise (Moré and Wild's test of a
+//    simulation's computational noise, SIAM J. Sci. Comput. 33(3), 2011): a chamber solver's
+//    error control or an instrument's quantiser makes the model's prediction a rough function
+//    of its parameters at the difference step's scale. Such a column measures the roughness as
+//    much as the parameter's effect, overstates the information and so understates the
+//    standard error (the worked example's dead time at the shipped solver tolerance: 2.4
+//    standard errors off the truth's 6 ms). So the errors are then taken again from each
+//    parameter's secant over its own interval (fill_interval_uncertainty), the roughness
+//    reported beside them.
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -36,6 +46,46 @@ namespace pamsim {
 void fill_uncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
                       const std::vector<std::size_t>& segments, const std::vector<double>& unit,
                       double level, IdentifyResult* result);
+
+// Above this roughness (the RMS of r(u + h) - 2 r(u) + r(u - h) over that of
+// r(u + h) - r(u - h)) a parameter's standard error is not to be trusted. Independent
+// numerical noise of SD e on each trial, over a column h |J| long, gives
+// sqrt(6 e^2 / (4 h^2 |J|^2 + 2 e^2)): 1 where the noise makes a third of the column's squared
+// length (the standard error about a fifth too small), sqrt(3) where it makes all of it; a
+// model smooth at the step's scale gives h |r''| / (2 |r'|), near 0.
+inline constexpr double kRoughnessLimit = 1.0;
+
+// The roughness of a model's residuals along one parameter from its central difference:
+// RMS(plus - 2 at + minus) / RMS(plus - minus); NaN if the first difference vanishes.
+double difference_roughness(const std::vector<double>& minus, const std::vector<double>& at,
+                            const std::vector<double>& plus);
+
+// The residuals at a point of the unit box (empty: its trial failed).
+using ResidualsAt = std::function<std::vector<double>(const std::vector<double>& unit)>;
+
+// Each parameter's roughness at `unit` (IdentifiedParameter::roughness) from its central
+// difference of kDifferenceStep (the polish's Jacobian asked for the same points); parameters
+// with a one-sided difference are left NaN.
+void fill_roughness(const ResidualsAt& residuals_at, const std::vector<double>& unit,
+                    IdentifyResult* result);
+
+// The standard errors and intervals again (fill_uncertainty), each determined parameter's
+// column of `jacobian` (the derivative's) replaced in turn by its secant over its own interval,
+// r(u + s) - r(u - s) over 2 s in the unit box: s starts at z standard errors (at least
+// kDifferenceStep) and doubles (at most to kLargestSecant) while the interval it gives is
+// wider than s by more than kIntervalSettled. An interval from a derivative assumes the model
+// linear over the interval; the secant holds it to that: for a model that is, it is the
+// derivative; for one whose prediction is rough at the difference step's scale (a solver's
+// error control, a sampled-data loop's kinks, above), it measures the parameter's effect
+// where the derivative also measured the roughness, information the recordings do not hold.
+// std_error_plain stays the derivative's, the plain s^2 (J^T J)^-1 it is compared with. A
+// failed trial leaves the errors of the last secants that ran.
+inline constexpr double kIntervalSettled = 0.05;
+inline constexpr double kLargestSecant = 0.25;
+void fill_interval_uncertainty(const ResidualsAt& residuals_at, Eigen::MatrixXd jacobian,
+                               const Eigen::VectorXd& r, const std::vector<std::size_t>& segments,
+                               const std::vector<double>& unit, double level,
+                               IdentifyResult* result);
 
 // A channel's noise floor (`given`, or NaN: estimated), RMS in floors, residual whiteness and
 // verdict, from its recorded samples (NaN: a gap) and the fit's `after` at the same times.
