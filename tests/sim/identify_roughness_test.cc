@@ -84,9 +84,11 @@ std::pair<double, double> errors(const LineModel& model) {
 
 TEST(IdentifyRoughnessTest, AQuadraticsRoughnessIsItsClosedForm) {
   const double b = 2.0, c = -3.0, u = 0.3, h = 1e-3;
-  auto r = [&](double x) { return std::vector<double>{b * x + c * x * x, 0.5 * (b * x + c * x * x)}; };
-  EXPECT_NEAR(difference_roughness(r(u - h), r(u), r(u + h)), std::abs(c) * h / std::abs(b + 2 * c * u),
-              1e-6);
+  auto r = [&](double x) {
+    return std::vector<double>{b * x + c * x * x, 0.5 * (b * x + c * x * x)};
+  };
+  EXPECT_NEAR(difference_roughness(r(u - h), r(u), r(u + h)),
+              std::abs(c) * h / std::abs(b + 2 * c * u), 1e-6);
   EXPECT_TRUE(std::isnan(difference_roughness({1.0, 2.0}, {1.0, 2.0}, {1.0, 2.0})));
 }
 
