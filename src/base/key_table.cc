@@ -111,19 +111,36 @@ void read_key_rows(ConfigReader& in, const KeyTable& table) {
   }
 }
 
-KeyTable rows_given(const ConfigReader& in, KeyTable table) {
-  const auto drop_absent = [&](auto* rows) {
+namespace {
+
+// `table` with only the rows whose names `keep` accepts
+KeyTable rows_where(KeyTable table, const std::function<bool(const std::string&)>& keep) {
+  const auto filter = [&](auto* rows) {
     rows->erase(std::remove_if(rows->begin(), rows->end(),
-                               [&](const auto& row) { return !in.has(row_key(table, row.name)); }),
+                               [&](const auto& row) { return !keep(row.name); }),
                 rows->end());
   };
-  drop_absent(&table.numbers);
-  drop_absent(&table.choices);
-  drop_absent(&table.bools);
-  drop_absent(&table.ints);
-  drop_absent(&table.texts);
-  drop_absent(&table.lists);
+  filter(&table.numbers);
+  filter(&table.choices);
+  filter(&table.bools);
+  filter(&table.ints);
+  filter(&table.texts);
+  filter(&table.lists);
   return table;
+}
+
+}  // namespace
+
+KeyTable rows_given(const ConfigReader& in, KeyTable table) {
+  const KeyTable names{table.name, {}, {}};
+  return rows_where(std::move(table),
+                    [&](const std::string& row) { return in.has(row_key(names, row)); });
+}
+
+KeyTable rows_named(KeyTable table, const std::vector<std::string>& names) {
+  return rows_where(std::move(table), [&](const std::string& row) {
+    return std::find(names.begin(), names.end(), row) != names.end();
+  });
 }
 
 void check_key_rows(const KeyTable& table) {

@@ -156,6 +156,11 @@ void read_key_rows(ConfigReader& in, const KeyTable& table);
 // sets nor lists among its defaults.
 KeyTable rows_given(const ConfigReader& in, KeyTable table);
 
+// `table` with only the rows named: a reader reads the rows that apply (an event's action
+// decides which of its keys it has), and a key given beside the wrong ones stays unread,
+// refused as unknown.
+KeyTable rows_named(KeyTable table, const std::vector<std::string>& names);
+
 // The rows' fields as they are now, checked against the rows' ranges and choices: a
 // validate() of a struct its table is bound to. Throws InputError
 // "<table>.<key> must be in <range>, got <value>" (require_value).

@@ -2,7 +2,6 @@
 // and the pamsim 0.1 drop.* shorthand that expands into them.
 #include <algorithm>
 #include <cmath>
-#include <set>
 #include <utility>
 
 #include "base/units.h"
@@ -12,34 +11,17 @@
 namespace pamsim {
 namespace {
 
-// `table` with only the rows named: a reader reads the rows that apply, and a key given
-// beside the wrong ones stays unread, refused as unknown
-KeyTable with_rows(KeyTable table, const std::set<std::string>& names) {
-  const auto keep = [&](auto& rows) {
-    rows.erase(std::remove_if(rows.begin(), rows.end(),
-                              [&](const auto& row) { return !names.count(row.name); }),
-               rows.end());
-  };
-  keep(table.numbers);
-  keep(table.choices);
-  keep(table.bools);
-  keep(table.ints);
-  keep(table.texts);
-  keep(table.lists);
-  return table;
-}
-
 // action and after; body with release and add_mass; mass_kg with add_mass (the rows:
 // scenario_key_tables.h)
 void read_event_keys(ConfigReader& in, EventSpec* e) {
   KeyTable table = event_key_table(e);
   table.name = e->key;
-  read_key_rows(in, with_rows(table, {"action", "after"}));
+  read_key_rows(in, rows_named(table, {"action", "after"}));
   if (e->action == EventAction::kRelease || e->action == EventAction::kAddMass) {
-    read_key_rows(in, with_rows(table, {"body"}));
+    read_key_rows(in, rows_named(table, {"body"}));
     in.check(!e->body.empty(), e->key + ".body", "is required for this action");
   }
-  if (e->action == EventAction::kAddMass) read_key_rows(in, with_rows(table, {"mass_kg"}));
+  if (e->action == EventAction::kAddMass) read_key_rows(in, rows_named(table, {"mass_kg"}));
 }
 
 // when.joint with exactly one threshold: the condition's kind and its threshold in SI
@@ -70,7 +52,7 @@ void read_condition(ConfigReader& in, const Scenario& sc, EventSpec* e) {
   table.name = key;
   if (in.has(key + ".at_s")) {
     c.kind = ConditionKind::kTime;
-    read_key_rows(in, with_rows(table, {"at_s"}));
+    read_key_rows(in, rows_named(table, {"at_s"}));
     in.check(c.at_s < sc.duration_s, key + ".at_s",
              "must be before the end of the trial (" +
                  in.described("sim.duration_s", sc.duration_s) + " s), got " +
@@ -82,12 +64,12 @@ void read_condition(ConfigReader& in, const Scenario& sc, EventSpec* e) {
     c.body_a = bodies[0];
     c.body_b = bodies[1];
   } else if (in.has(key + ".joint")) {
-    read_key_rows(in, rows_given(in, with_rows(table, {"joint", "below_deg", "above_deg",
+    read_key_rows(in, rows_given(in, rows_named(table, {"joint", "below_deg", "above_deg",
                                                        "below_mm", "above_mm"})));
     set_joint_threshold(in, key, thresholds, &c);
   } else {
     c.kind = ConditionKind::kBodyBelow;
-    read_key_rows(in, with_rows(table, {"body", "below_z_m"}));
+    read_key_rows(in, rows_named(table, {"body", "below_z_m"}));
     c.threshold = *thresholds.below_z_m;
   }
 }
