@@ -58,13 +58,10 @@ import time
 
 import yaml
 
+from docs_files import BLOCK, CLOSE, OPEN, atomic_write
 from docs_lint import lint
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-OPEN = "<!-- pamsim-block"
-CLOSE = "<!-- /pamsim-block"
-BLOCK = re.compile(r"<!-- pamsim-block\n(?P<spec>.*?)-->\n(?P<body>.*?)"
-                   r"<!-- /pamsim-block(?P<stamp>[^\n]*?)-->", re.S)
 NUMBER = re.compile(r"[-+]?(?:\d+\.\d*|\.\d+|\d+)(?:[eE][-+]?\d+)?")
 CLASSES = ("cheap", "slow", "timing")
 COMMAND_TIMEOUT_S = 1800   # a block's command that hangs ends the run with one line
@@ -374,13 +371,6 @@ def update(paths, classes, only):
         if cheap_s:
             print(f"{os.path.relpath(path, ROOT)}: its cheap blocks took {cheap_s:.1f} s "
                   f"(CI reruns them all)")
-
-
-def atomic_write(path, text):
-    tmp = path + ".tmp"
-    with open(tmp, "w") as f:
-        f.write(text)
-    os.replace(tmp, path)
 
 
 def first_difference(page, program, tolerance, first_line=1):

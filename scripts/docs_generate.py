@@ -14,6 +14,8 @@ import sys
 
 import yaml
 
+from docs_files import atomic_write
+
 KINDS = [("scenario", [], "A scenario file"),
          ("params", ["--params"], "A muscle's parameter file (the estimator's spring law)"),
          ("plant", ["--plant"], "A plant file (the physical muscle)"),
@@ -130,25 +132,18 @@ def cpp_api(root):
     return "\n".join(out).lstrip("\n") + "\n"
 
 
-def write(path, text):
-    tmp = path + ".tmp"
-    with open(tmp, "w") as f:
-        f.write(text)
-    os.replace(tmp, path)
-
-
 def main():
     pamsim, out = os.path.abspath(sys.argv[1]), sys.argv[2]
     os.makedirs(out, exist_ok=True)
     for name, flags, what in KINDS:
         table, n = key_list(pamsim, flags)
         command = " ".join(["pamsim keys", *flags])
-        write(os.path.join(out, f"keys_{name}.md"),
+        atomic_write(os.path.join(out, f"keys_{name}.md"),
               f"{what}: {n} keys, as `{command}` lists them.\n\n{table}")
-    write(os.path.join(out, "commands.md"), commands(pamsim))
+    atomic_write(os.path.join(out, "commands.md"), commands(pamsim))
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    write(os.path.join(out, "references.md"), references(os.path.join(root, "CITATION.cff")))
-    write(os.path.join(out, "cpp_api.md"), cpp_api(root))
+    atomic_write(os.path.join(out, "references.md"), references(os.path.join(root, "CITATION.cff")))
+    atomic_write(os.path.join(out, "cpp_api.md"), cpp_api(root))
 
 
 if __name__ == "__main__":

@@ -10,6 +10,8 @@ import os
 import re
 import sys
 
+from docs_files import BLOCK
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 UNIT = (r"(?:%|deg|mm|cm|m|s|ms|us|ns|N|MPa|kPa|Pa|Hz|kHz|kg|g|V|mV|GPa|Ohm|J|W|x|"
@@ -19,7 +21,7 @@ SOFTWARE = re.compile(r"\b(?:pamsim|MuJoCo|SUNDIALS|Python|Debian|Sphinx|CMake|N
                       r"gymnasium|Gymnasium|pybind11|Eigen|Ceres|PyTorch|C\+\+|bookworm|"
                       r"toml\+\+|version|v)\s?\d+(?:\.\d+)+\b")
 HIDDEN = [re.compile(p, re.S | re.M) for p in (
-    r"<!-- pamsim-block.*?<!-- /pamsim-block[^\n]*?-->",   # generated blocks
+    BLOCK.pattern,                                          # generated blocks
     r"<!--.*?-->",                                          # comments
     r"^(```|~~~).*?^\1",                                    # fenced code
     r"\{(?:input|paper)\}`[^`]*`",                          # marked inputs and paper values

@@ -126,5 +126,39 @@ TEST(IdentifyRoughnessTest, SecantsUndoTheInformationAJitterPretends) {
   EXPECT_NEAR(secant / truth, 1.0, 0.15);
 }
 
+TEST(IdentifyRoughnessTest, TheSecantsListEachCorrelationOnce) {
+  // two parameters whose columns nearly coincide: correlated beyond 0.9, named once each
+  const LineModel line;
+  const ResidualsAt model = [&](const std::vector<double>& unit) {
+    std::vector<double> r = line({unit[0]});
+    for (std::size_t i = 0; i < kSamples; ++i) {
+      r[i] += (1.0 + 0.01 * std::cos(0.3 * static_cast<double>(i))) * (unit[1] - 0.5);
+    }
+    return r;
+  };
+  IdentifyResult result = one_parameter();
+  result.parameters.push_back(result.parameters[0]);
+  result.parameters[1].parameter.key = "y";
+  const std::vector<double> at = model({0.5, 0.5});
+  const Eigen::VectorXd r = Eigen::Map<const Eigen::VectorXd>(at.data(), kSamples);
+  Eigen::MatrixXd jacobian(kSamples, 2);
+  for (std::size_t j = 0; j < 2; ++j) {
+    std::vector<double> plus = {0.5, 0.5}, minus = {0.5, 0.5};
+    plus[j] += kDifferenceStep;
+    minus[j] -= kDifferenceStep;
+    const std::vector<double> rp = model(plus), rm = model(minus);
+    for (std::size_t i = 0; i < kSamples; ++i) {
+      jacobian(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
+          (rp[i] - rm[i]) / (2.0 * kDifferenceStep);
+    }
+  }
+  fill_uncertainty(jacobian, r, {kSamples}, {0.5, 0.5}, 0.95, &result);
+  fill_interval_uncertainty(model, jacobian, r, {kSamples}, {0.5, 0.5}, 0.95, &result);
+  ASSERT_EQ(result.parameters[0].correlated.size(), 1u);
+  EXPECT_EQ(result.parameters[0].correlated[0].first, "y");
+  ASSERT_EQ(result.parameters[1].correlated.size(), 1u);
+  EXPECT_EQ(result.parameters[1].correlated[0].first, "x");
+}
+
 }  // namespace
 }  // namespace pamsim

@@ -37,6 +37,7 @@ void fill_uncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
   for (IdentifiedParameter& p : params) {
     p.identifiable = false;
     p.std_error = p.std_error_plain = p.interval_lo = p.interval_hi = kNaN;
+    p.correlated.clear();
   }
   if (jacobian.rows() != r.size() || jacobian.cols() != static_cast<Eigen::Index>(params.size())) {
     return;   // the Jacobian could not be evaluated
