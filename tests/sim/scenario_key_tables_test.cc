@@ -256,8 +256,9 @@ TEST(BodyAndHoldKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
 // given values reach the muscle in SI (the line's E A from its diameter and modulus).
 TEST(MuscleLineKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
   MuscleLineKeys keys;
+  MuscleSpec muscle;
   int refused = 0;
-  for (const NumberRow& row : muscle_line_key_table(&keys).numbers) {
+  for (const NumberRow& row : muscle_line_key_table(&keys, &muscle).numbers) {
     const std::string key = "muscles.agonist." + row.name;
     for (const std::string& value : bad_number_texts(row)) {
       const InputErrorParts parts =

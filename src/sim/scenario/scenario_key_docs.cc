@@ -92,7 +92,8 @@ std::vector<KeyDoc> body_and_hold_docs() {
   HoldSpec hold;
   std::vector<double> position;
   MuscleLineKeys line;
-  return key_table_docs({muscle_line_key_table(&line), body_key_table(&body),
+  MuscleSpec muscle;
+  return key_table_docs({muscle_line_key_table(&line, &muscle), body_key_table(&body),
                          hold_key_table(&hold, &position)});
 }
 

@@ -70,7 +70,7 @@ KeyTable body_key_table(BodyKeys* body) {
   return t;
 }
 
-KeyTable muscle_line_key_table(MuscleLineKeys* line) {
+KeyTable muscle_line_key_table(MuscleLineKeys* line, MuscleSpec* muscle) {
   KeyTable t{"muscles.<actuator>", {}, {}, {}};
   t.numbers = {
       {"line_mm", "mm", units::kMPerMm, kPositiveRange,
@@ -84,9 +84,9 @@ KeyTable muscle_line_key_table(MuscleLineKeys* line) {
        &line->modulus_pa, false, "(none: inextensible)"},
       {"line_creep", "", 1.0, {0.0, 10.0, false, false},
        "an extensible line's creep: its long-term stretch per unit elastic stretch, one "
-       "Kelvin-Voigt element (nylon monofilament 0.05-0.3, PE braid 0-0.05)", &line->creep},
+       "Kelvin-Voigt element (nylon monofilament 0.05-0.3, PE braid 0-0.05)", &muscle->line_creep},
       {"line_creep_time_s", "s", 1.0, {0.0, 1e6, true, false},
-       "that creep's retardation time (an extensible line)", &line->creep_time_s},
+       "that creep's retardation time (an extensible line)", &muscle->line_creep_time_s},
       {"line_limit_N", "N", 1.0, {0.0, 1e5, true, false},
        "the line's working load: the tension metrics give the peak pull in per cent of it",
        nullptr, &line->limit_n, false, "(none)"}};

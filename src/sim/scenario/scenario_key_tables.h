@@ -61,12 +61,10 @@ KeyTable body_key_table(BodyKeys* body);
 // only on an extensible line; the load only with the tension metrics).
 struct MuscleLineKeys {
   std::optional<double> line_m, diameter_m, modulus_pa, limit_n;
-  double creep = 0.0;            // its long-term stretch per unit elastic stretch
-  double creep_time_s = 10.0;    // its retardation time
 };
 // muscles.<actuator> (a placeholder the reader replaces with the muscle's name), bound to
-// `line`.
-KeyTable muscle_line_key_table(MuscleLineKeys* line);
+// `line`, and the line's creep straight to `muscle`'s fields (their defaults are its own).
+KeyTable muscle_line_key_table(MuscleLineKeys* line, MuscleSpec* muscle);
 
 // events.<event> and events.<event>.when (placeholders a reader replaces with the event's
 // key), bound to `event`; `thresholds` holds the when.* numbers that set its condition's kind

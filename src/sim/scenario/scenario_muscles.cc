@@ -164,9 +164,7 @@ void set_line_stiffness(ConfigReader& in, const MuscleLineKeys& keys, MuscleSpec
            "is required with " + (keys.diameter_m ? d_key : e_key) + " (an extensible line)");
   const double radius_m = *keys.diameter_m / 2.0;
   m->line_axial_stiffness_n = *keys.modulus_pa * units::kPi * radius_m * radius_m;
-  // its creep: a Kelvin-Voigt element on the extensible line's compliance
-  m->line_creep = keys.creep;
-  m->line_creep_time_s = keys.creep_time_s;
+  // (its creep, a Kelvin-Voigt element on the line's compliance: read into m by its rows)
 }
 
 // the line: fixed, solved, or the calibration's; then its stiffness and working load
@@ -174,7 +172,7 @@ void read_muscle_line(ConfigReader& in, const std::string& name,
                       const ArmCalibration* calibration, bool lines_needed, MuscleSpec* muscle) {
   MuscleSpec& m = *muscle;
   MuscleLineKeys keys;
-  KeyTable table = muscle_line_key_table(&keys);
+  KeyTable table = muscle_line_key_table(&keys, &m);
   table.name = m.key;
   read_key_rows(in, rows_given(in, table));
   const std::string line = in.get_string(m.key + ".line", "");
