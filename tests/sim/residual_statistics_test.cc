@@ -92,6 +92,46 @@ TEST(ResidualStatisticsTest, ForIndependentResidualsTheSandwichIsThePlainCovaria
             0);
 }
 
+TEST(ResidualStatisticsTest, EachSeriesKeepsItsOwnBandwidth) {
+  // two series of one fit: a white one of unit noise that carries the first parameter (its
+  // mean) and an AR(1) one, phi = 0.8, of innovations 0.03, that carries the second. Their
+  // lag-1 autocorrelation pooled is near 0, often a bandwidth of 0, which leaves the second
+  // parameter's variance about (1 + phi) / (1 - phi) = 9 times too small (about half of it on
+  // average over these draws); each series' own bandwidth keeps it.
+  const int n = kSamples;
+  Eigen::MatrixXd x = Eigen::MatrixXd::Zero(2 * n, 2);
+  x.topRows(n).col(0).setOnes();
+  x.bottomRows(n).col(1).setOnes();
+  const std::vector<std::size_t> series(2, static_cast<std::size_t>(n));
+  // the second mean's true variance: the AR(1)'s long-run variance over n, about
+  // 0.03^2 / (1 - phi)^2 / n
+  double truth = 0.0;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      truth += 0.03 * 0.03 * std::pow(kPhi, std::abs(i - j)) / (1 - kPhi * kPhi);
+    }
+  }
+  truth /= static_cast<double>(n) * n;
+  std::mt19937_64 rng(5);
+  const int trials = 300;
+  double own = 0.0, pooled = 0.0;
+  for (int k = 0; k < trials; ++k) {
+    Eigen::VectorXd e(2 * n);
+    for (int t = 0; t < n; ++t) e[t] = portable_standard_normal(rng);
+    e.tail(n) = 0.03 * ar1(rng, kPhi, n);
+    const Eigen::VectorXd r = e - x * ((x.transpose() * x).inverse() * x.transpose() * e);
+    const std::vector<double> rv(r.data(), r.data() + r.size());
+    own += hac_covariance(x, r, series, segment_bandwidths(rv, series))(1, 1) / trials;
+    const int lags = bartlett_bandwidth(pooled_lag1_autocorrelation(rv, series), rv.size());
+    pooled += hac_covariance(x, r, series, lags)(1, 1) / trials;
+  }
+  RecordProperty("own_over_true_variance", std::to_string(own / truth));
+  RecordProperty("pooled_over_true_variance", std::to_string(pooled / truth));
+  EXPECT_GT(own / truth, 0.8);
+  EXPECT_LT(own / truth, 1.2);
+  EXPECT_LT(pooled / truth, 0.7);
+}
+
 TEST(ResidualStatisticsTest, LjungBoxFalseAlarmRateIsItsLevelAndItSeesAr1) {
   std::mt19937_64 rng(11);
   int false_alarms = 0, detected = 0;

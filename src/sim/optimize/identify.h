@@ -84,7 +84,7 @@ struct IdentifyResult {
   std::int64_t simulated = 0, cached = 0;       // points simulated, points answered stored
   double global_s = 0.0, polish_s = 0.0, check_s = 0.0;   // wall time of each phase
   double interval_level = 0.95;                 // the parameters' intervals' level
-  int hac_lags = 0;                             // the HAC covariance's Bartlett bandwidth
+  int hac_lags = 0;   // the HAC covariance's largest Bartlett bandwidth (each series has its own)
   double residual_lag1 = 0.0;                   // the residuals' pooled lag-1 autocorrelation
   std::string polish_summary;                   // Ceres's brief report
   bool polish_failed = false;                   // Ceres ended in FAILURE: the global result stands

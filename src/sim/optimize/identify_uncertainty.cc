@@ -49,9 +49,10 @@ void fill_uncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
   }
   const std::vector<double> rv(r.data(), r.data() + r.size());
   result->residual_lag1 = pooled_lag1_autocorrelation(rv, segments);
-  result->hac_lags = bartlett_bandwidth(result->residual_lag1, rv.size());
+  const std::vector<int> bandwidths = segment_bandwidths(rv, segments);
+  result->hac_lags = *std::max_element(bandwidths.begin(), bandwidths.end());
   const Eigen::MatrixXd cov = free.empty() ? Eigen::MatrixXd()
-                                           : hac_covariance(j, r, segments, result->hac_lags);
+                                           : hac_covariance(j, r, segments, bandwidths);
   const Eigen::MatrixXd plain = free.empty() ? Eigen::MatrixXd() : plain_covariance(j, r);
   if (cov.size() == 0 || plain.size() == 0) return;   // none, or jointly undetermined
   for (std::size_t a = 0; a < free.size(); ++a) {

@@ -85,6 +85,19 @@ double pooled_lag1_autocorrelation(const std::vector<double>& r,
   return den > 0.0 ? num / den : 0.0;
 }
 
+std::vector<int> segment_bandwidths(const std::vector<double>& r,
+                                    const std::vector<std::size_t>& segments) {
+  std::vector<int> lags;
+  std::size_t start = 0;
+  for (std::size_t length : segments) {
+    const std::vector<double> one(r.begin() + static_cast<std::ptrdiff_t>(start),
+                                  r.begin() + static_cast<std::ptrdiff_t>(start + length));
+    lags.push_back(bartlett_bandwidth(pooled_lag1_autocorrelation(one, {length}), length));
+    start += length;
+  }
+  return lags;
+}
+
 int bartlett_bandwidth(double rho, std::size_t n) {
   if (!(rho > 0.0)) return 0;
   rho = std::min(rho, 0.97);   // a random walk has no finite long-run variance
@@ -118,13 +131,15 @@ Eigen::MatrixXd score_ar1(const Eigen::MatrixXd& g, const std::vector<std::size_
   return a;
 }
 
-// Bartlett-weighted sum of the autocovariances of `v`'s rows over lags 0..lags in segments
+// Bartlett-weighted sum of the autocovariances of `v`'s rows in each segment over lags
+// 0..its own bandwidth
 Eigen::MatrixXd long_run(const Eigen::MatrixXd& v, const std::vector<std::size_t>& segments,
-                         int lags) {
+                         const std::vector<int>& bandwidths) {
   Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(v.cols(), v.cols());
   Eigen::Index start = 0;
-  for (std::size_t length : segments) {
-    const auto len = static_cast<Eigen::Index>(length);
+  for (std::size_t k = 0; k < segments.size(); ++k) {
+    const auto len = static_cast<Eigen::Index>(segments[k]);
+    const int lags = bandwidths[k];
     const auto seg = v.middleRows(start, len);
     sum += seg.transpose() * seg;
     for (Eigen::Index l = 1; l <= lags && l < len; ++l) {
@@ -141,6 +156,13 @@ Eigen::MatrixXd long_run(const Eigen::MatrixXd& v, const std::vector<std::size_t
 
 Eigen::MatrixXd hac_covariance(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
                                const std::vector<std::size_t>& segments, int lags) {
+  return hac_covariance(jacobian, r, segments, std::vector<int>(segments.size(), lags));
+}
+
+Eigen::MatrixXd hac_covariance(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
+                               const std::vector<std::size_t>& segments,
+                               const std::vector<int>& bandwidths) {
+  const int lags = *std::max_element(bandwidths.begin(), bandwidths.end());
   const Eigen::Index n = jacobian.rows(), p = jacobian.cols();
   const Eigen::FullPivLU<Eigen::MatrixXd> lu(jacobian.transpose() * jacobian);
   if (n <= p || !lu.isInvertible()) return {};
@@ -159,7 +181,7 @@ Eigen::MatrixXd hac_covariance(const Eigen::MatrixXd& jacobian, const Eigen::Vec
     start += len;
   }
   const Eigen::MatrixXd recolour = (Eigen::MatrixXd::Identity(p, p) - a).inverse();
-  const Eigen::MatrixXd meat = recolour * long_run(v, segments, lags) * recolour.transpose();
+  const Eigen::MatrixXd meat = recolour * long_run(v, segments, bandwidths) * recolour.transpose();
   // the small-sample factor n / (n - p), as the plain estimate's s^2 has
   return bread * meat * bread * (static_cast<double>(n) / static_cast<double>(n - p));
 }

@@ -54,10 +54,22 @@ double pooled_lag1_autocorrelation(const std::vector<double>& r,
 // at most n / 4.
 int bartlett_bandwidth(double rho, std::size_t n);
 
+// Each segment's own bandwidth: bartlett_bandwidth of its residuals' lag-1 autocorrelation
+// and length. Pooled over segments, a recording's few strongly correlated channels (an angle
+// whose residual is its logger's rounding, constant while the arm rests) vanish among white
+// ones of larger residuals, and their parameters' variance with them.
+std::vector<int> segment_bandwidths(const std::vector<double>& r,
+                                    const std::vector<std::size_t>& segments);
+
 // The sandwich covariance above for residuals r (n) and their Jacobian J (n x p) over
-// `segments`, with bandwidth `lags` (L). Returns an empty matrix if J^T J is singular.
+// `segments`, with bandwidth `lags` (L) in every segment, or each segment's own
+// (`bandwidths`, prewhitened when any is above 0). Returns an empty matrix if J^T J is
+// singular.
 Eigen::MatrixXd hac_covariance(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
                                const std::vector<std::size_t>& segments, int lags);
+Eigen::MatrixXd hac_covariance(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
+                               const std::vector<std::size_t>& segments,
+                               const std::vector<int>& bandwidths);
 
 // The plain covariance s^2 (J^T J)^-1, s^2 = r^T r / (n - p); empty if singular or n <= p.
 Eigen::MatrixXd plain_covariance(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r);
