@@ -9,13 +9,15 @@ its own, and instruments of its own: a zero error of the encoder, of the agonist
 sensor and of the antagonist's force gauge (OFFSET_RANGES), added to what the lab's logger
 keeps. Its recordings are what make_recordings.py keeps (an agonist step schedule and an
 antagonist sine, fitted; the reaching ramps, held out). The identification fits all seven
-(four physical parameters, three offsets) from the model's values, and each arm's
+(four physical parameters, three offsets) from the model's values (the model's trials
+without noise and with ideal ADCs, MODEL_OVERRIDES; the recordings' and the model's chamber
+solver at arm.toml's tight tolerance), and each arm's
 identify.csv gives its value, standard error (HAC), plain standard error, interval and
 verdict. A control arm whose encoder is read 60 ms late (a delay the model lacks) must come
 out "does not explain".
 
     python3 scripts/identify_coverage.py [--arms 20] [--seed 1] [--threads 2] [--starts 1]
-        [--pamsim build/src/sim/pamsim] [--out renders/identify_coverage]
+        [--only 6,8] [--pamsim build/src/sim/pamsim] [--out renders/identify_coverage]
 
 writes OUT/coverage.csv (one row per arm and parameter) and OUT/coverage.md (the summary the
 docs show); an interrupted run started again skips the arms it finished and resumes the one
@@ -56,6 +58,10 @@ RECORDINGS = {
     "ramps": (RAMPS, ["angle_deg"], 25.0, True),
 }
 SEARCH = {"generations": 8, "population": 12, "polish_iterations": 30}
+# the model predicts the expected reading, as the worked example's does (its identify.toml
+# says why): no noise of its own, ideal ADCs; its solver's tolerance is arm.toml's
+MODEL_OVERRIDES = ["sensors.noise_scale=0", "sensors.pressure_adc_bits=0",
+                   "sensors.gauge_adc_bits=0"]
 CONTROL_DELAY_S = 0.06
 
 
@@ -75,11 +81,8 @@ def toml_list(items):
 
 def identify_text(noise_seed):
     lines = [f'base = "{os.path.join(ROOT, "examples", "identify", "arm.toml")}"']
-    # the model's trials without its sensors' noise: its prediction is the expected
-    # trajectory (docs/identification.md, "The worked example": a second noise realisation inside the model
-    # is a difference the covariance does not see)
     lines += [f"{k} = {v}" for k, v in SEARCH.items()]
-    lines += ["seed = 1", 'overrides = ["sensors.noise_scale=0"]', ""]
+    lines += ["seed = 1", "overrides = " + toml_list(MODEL_OVERRIDES), ""]
     for key, (_, (lo, hi), scale) in TRUTH_RANGES.items():
         lines += ["[[parameter]]", f'key = "{key}"', f"from = {lo}", f"to = {hi}",
                   f'scale = "{scale}"', ""]
@@ -174,9 +177,10 @@ def pct(n, d):
 def summary(rows, arms, control, args):
     """coverage.md: per parameter and in all, against the claims the docs make."""
     keys = list(dict.fromkeys(r["key"] for r in rows))
-    md = [f"# `pamsim identify`: coverage over {args.arms} synthetic arms", "",
+    md = [f"# `pamsim identify`: coverage over {len(arms)} synthetic arms", "",
           f"`python3 scripts/identify_coverage.py --arms {args.arms} --seed {args.seed}"
-          f"{'' if args.starts == 1 else f' --starts {args.starts}'}`: "
+          f"{'' if args.starts == 1 else f' --starts {args.starts}'}"
+          f"{f' --only {args.only}' if args.only else ''}`: "
           "each arm's truth drawn from the script's ranges, its recordings made by pamsim "
           "with a noise seed and instruments of its own; seven parameters fitted per arm.", "",
           "| parameter | 95 % interval contains the truth | plain s^2 (J^T J)^-1 interval does "
@@ -233,15 +237,25 @@ def main():
     ap.add_argument("--no-control", action="store_true", help="skip the misspecified arm")
     ap.add_argument("--starts", type=int, default=1,
                     help="the polish's starts per arm (identify's `starts`, 1 to 20)")
+    ap.add_argument("--only", default="",
+                    help="identify only these of the --arms arms, e.g. 6,8 (each drawn as in "
+                         "the full run)")
     args = ap.parse_args()
-    if args.arms < 1 or args.threads < 1 or not 1 <= args.starts <= 20:
+    try:
+        only = {int(a) for a in args.only.split(",") if a.strip()}
+    except ValueError:
+        sys.exit(f"identify_coverage.py: --only must list arm numbers, got {args.only!r}")
+    if args.arms < 1 or args.threads < 1 or not 1 <= args.starts <= 20 or \
+            any(not 0 <= a < args.arms for a in only):
         sys.exit("identify_coverage.py: --arms and --threads must be at least 1, --starts "
-                 "within [1, 20]")
+                 "within [1, 20], --only's arms below --arms")
     SEARCH["starts"] = args.starts
     rng = random.Random(args.seed)
     rows, arms = [], []
     for i in range(args.arms):
         truth, offsets = draw_arm(rng)
+        if only and i not in only:
+            continue
         folder = os.path.join(args.out, f"arm_{i:02d}")
         out = identify(args.pamsim, make_arm(args.pamsim, folder, truth, offsets, 100 + i),
                        args.threads)

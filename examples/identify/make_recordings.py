@@ -2,7 +2,8 @@
 """make_recordings.py: the identification example's "lab recordings", made by pamsim itself
 from an arm whose parameters differ from the model's (the truth identify.toml must recover):
 the antagonist's bladder wall 2.7 mm (model: 3.0), the agonist's 2.2 mm (model: 2.0), the
-shoulder's damping 0.16 N m s/rad (model: 0.1), the regulator's dead time 6 ms (model: 10).
+shoulder's damping 0.16 N m s/rad (model: 0.1), the regulator's dead time 6.3 ms (model: 10; off the
+regulator's 1 ms sample grid, as a real one is: on it the response has a kink).
 Each recording is one `pamsim run` of
 arm.toml with its commands, under another noise seed than the model's (a lab's noise is not
 the model's), cut down the way a lab's logger would give it: some channels only, its own
@@ -10,9 +11,11 @@ sampling rate, 5 significant digits, and one with a gap; and a static tensile te
 true agonist (`pamsim tensile` on its plant file with the wall changed, 0.2-0.6 MPa, with the
 noise scripts/fit-estimators.sh gives the lab's sensors).
 
-    python3 examples/identify/make_recordings.py [PAMSIM]   (about 2 s; default build/src/sim/pamsim)
+    python3 examples/identify/make_recordings.py [PAMSIM [FOLDER]]   (about 2 s; default
+        build/src/sim/pamsim and examples/identify/recordings)
 
-writes examples/identify/recordings/{steps,sine,ramps,tensile_agonist}.csv.
+writes FOLDER/{steps,sine,ramps,tensile_agonist}.csv. A test makes them into another folder
+and compares them with the committed ones, so that these are what this build makes.
 """
 import csv
 import os
@@ -25,7 +28,7 @@ TRUTH = [
     "muscles.antagonist.plant.geometry.wall_thickness_mm=2.7",
     "muscles.agonist.plant.geometry.wall_thickness_mm=2.2",
     "joints.shoulder.damping_N_m_s_per_rad=0.16",
-    "valve.dead_time_ms=6",
+    "valve.dead_time_ms=6.3",
     "seed=7",
 ]
 # name: (commands as --set, channels, sampling rate [Hz], gap [s] or None)
@@ -90,7 +93,7 @@ def tensile(pamsim, out_dir):
 
 def main():
     pamsim = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "..", "build", "src", "sim", "pamsim")
-    out_dir = os.path.join(HERE, "recordings")
+    out_dir = sys.argv[2] if len(sys.argv) > 2 else os.path.join(HERE, "recordings")
     os.makedirs(out_dir, exist_ok=True)
     for name, (sets, channels, rate, gap) in RECORDINGS.items():
         print(record(pamsim, name, sets, channels, rate, gap, out_dir))
