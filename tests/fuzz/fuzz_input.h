@@ -13,6 +13,8 @@
 #include <fstream>
 #include <string>
 
+#include "../source_mirror.h"
+
 namespace pamsim_fuzz {
 
 // Removes a file or folder when the process exits (libFuzzer ends with exit()).
@@ -43,21 +45,9 @@ inline void write_input(const std::string& path, const std::uint8_t* data, std::
 }
 
 // A folder (returned; the caller removes it at exit) that looks like the source tree for a
-// file in `dir` ("scenarios", "examples/identify"): `dir` holds links to the source's files
-// there and models/ is a link, so that a reader's relative paths ("../models/...") resolve as
-// in the source tree, and nothing is written there. `tag` names the folder.
+// file in `dir` (../source_mirror.h); `tag` names it.
 inline std::string source_mirror(const std::string& tag, const std::string& dir) {
-  namespace fs = std::filesystem;
-  const fs::path root =
-      fs::temp_directory_path() / ("pamsim_fuzz_" + tag + "_" + std::to_string(::getpid()));
-  const fs::path source = PAMSIM_SOURCE_DIR;
-  fs::remove_all(root);
-  fs::create_directories(root / dir);
-  fs::create_directory_symlink(source / "models", root / "models");
-  for (const auto& e : fs::directory_iterator(source / dir)) {
-    fs::create_symlink(e.path(), root / dir / e.path().filename());
-  }
-  return root.string();
+  return pamsim_test::source_mirror(PAMSIM_SOURCE_DIR, "fuzz_" + tag, dir).string();
 }
 
 }  // namespace pamsim_fuzz

@@ -11,7 +11,6 @@
 #include <set>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "base/input_error.h"
@@ -24,6 +23,7 @@
 #include "sim/scenario/randomize.h"
 #include "sim/sweep/sweep.h"
 #include "sim/test_paths.h"
+#include "source_mirror.h"
 
 namespace pamsim {
 namespace {
@@ -68,16 +68,17 @@ TEST(EntryKeysTest, EveryShippedTableRefusesAKeyOutsideItsList) {
     const std::string text = read_text(shipped);
     const std::size_t at = text.find(c.header + "\n");
     ASSERT_NE(at, std::string::npos);
-    // beside the shipped file, so that its relative paths still resolve
-    const fs::path copy = shipped.parent_path() / ("entry_keys_test_" +
-                                                   std::to_string(getpid()) + ".toml");
+    // beside links to the shipped file's neighbours, so that its relative paths still resolve
+    const fs::path dir = fs::path(c.file).parent_path();
+    const fs::path root = pamsim_test::source_mirror(pamsim_test::kSource, "entry_keys", dir);
+    const fs::path copy = root / dir / "entry_keys_test.toml";
     std::string bad = text;
     bad.insert(at + c.header.size() + 1, "no_such_key = 1\n");
     std::ofstream(copy) << bad;
     const InputErrorParts parts = refusal_parts([&] { c.load(copy.string()); }, c.array);
     std::ofstream(copy) << text;   // and without it, read as shipped
     EXPECT_NO_THROW(c.load(copy.string()));
-    fs::remove(copy);
+    fs::remove_all(root);
     EXPECT_EQ(parts.key, c.array + "[0].no_such_key");
   }
 }
