@@ -10,7 +10,7 @@ sensor and of the antagonist's force gauge (OFFSET_RANGES), added to what the la
 keeps. Its recordings are what make_recordings.py keeps (an agonist step schedule and an
 antagonist sine, fitted; the reaching ramps, held out). The identification fits all seven
 (four physical parameters, three offsets) from the model's values (the model's trials
-without noise and with ideal ADCs, MODEL_OVERRIDES; the recordings' and the model's chamber
+without noise and with ideal ADCs, the worked example's overrides; the recordings' and the model's chamber
 solver at arm.toml's tight tolerance), and each arm's
 identify.csv gives its value, standard error (HAC), plain standard error, interval and
 verdict. A control arm whose encoder is read 60 ms late (a delay the model lacks) must come
@@ -30,6 +30,7 @@ import os
 import random
 import subprocess
 import sys
+import tomllib
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "examples", "identify"))
@@ -58,10 +59,11 @@ RECORDINGS = {
     "ramps": (RAMPS, ["angle_deg"], 25.0, True),
 }
 SEARCH = {"generations": 8, "population": 12, "polish_iterations": 30}
-# the model predicts the expected reading, as the worked example's does (its identify.toml
-# says why): no noise of its own, ideal ADCs; its solver's tolerance is arm.toml's
-MODEL_OVERRIDES = ["sensors.noise_scale=0", "sensors.pressure_adc_bits=0",
-                   "sensors.gauge_adc_bits=0"]
+# the model predicts the expected reading as the worked example's does, with its overrides
+# (no noise of its own, ideal ADCs: its identify.toml says why); its solver's tolerance is
+# arm.toml's
+with open(os.path.join(ROOT, "examples", "identify", "identify.toml"), "rb") as _f:
+    MODEL_OVERRIDES = tomllib.load(_f)["overrides"]
 CONTROL_DELAY_S = 0.06
 
 
