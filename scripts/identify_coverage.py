@@ -10,11 +10,10 @@ sensor and of the antagonist's force gauge (OFFSET_RANGES), added to what the la
 keeps. Its recordings are what make_recordings.py keeps (an agonist step schedule and an
 antagonist sine, fitted; the reaching ramps, held out). The identification fits all seven
 (four physical parameters, three offsets) from the model's values (the model's trials
-without noise and with ideal ADCs, the worked example's overrides; the recordings' and the model's chamber
-solver at arm.toml's tight tolerance), and each arm's
-identify.csv gives its value, standard error (HAC), plain standard error, interval and
-verdict. A control arm whose encoder is read 60 ms late (a delay the model lacks) must come
-out "does not explain".
+without noise and with ideal ADCs, the worked example's overrides; the recordings' and the
+model's chamber solver at arm.toml's tight tolerance), and each arm's identify.csv gives its
+value, standard error (HAC), plain standard error, interval and verdict. A control arm whose
+encoder is read 60 ms late (a delay the model lacks) must come out "does not explain".
 
     python3 scripts/identify_coverage.py [--arms 20] [--seed 1] [--threads 2] [--starts 1]
         [--only 6,8] [--pamsim build/src/sim/pamsim] [--out renders/identify_coverage]
