@@ -130,6 +130,8 @@ TEST(ResidualStatisticsTest, EachSeriesKeepsItsOwnBandwidth) {
   EXPECT_GT(own / truth, 0.8);
   EXPECT_LT(own / truth, 1.2);
   EXPECT_LT(pooled / truth, 0.7);
+  EXPECT_EQ(hac_covariance(x, Eigen::VectorXd::Ones(2 * n), {}, std::vector<int>{}).size(), 0)
+      << "no series: no covariance, and no read past an empty list of bandwidths";
 }
 
 TEST(ResidualStatisticsTest, LjungBoxFalseAlarmRateIsItsLevelAndItSeesAr1) {

@@ -50,7 +50,8 @@ void fill_uncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
   const std::vector<double> rv(r.data(), r.data() + r.size());
   result->residual_lag1 = pooled_lag1_autocorrelation(rv, segments);
   const std::vector<int> bandwidths = segment_bandwidths(rv, segments);
-  result->hac_lags = *std::max_element(bandwidths.begin(), bandwidths.end());
+  result->hac_lags =
+      bandwidths.empty() ? 0 : *std::max_element(bandwidths.begin(), bandwidths.end());
   const Eigen::MatrixXd cov = free.empty() ? Eigen::MatrixXd()
                                            : hac_covariance(j, r, segments, bandwidths);
   const Eigen::MatrixXd plain = free.empty() ? Eigen::MatrixXd() : plain_covariance(j, r);

@@ -162,6 +162,7 @@ Eigen::MatrixXd hac_covariance(const Eigen::MatrixXd& jacobian, const Eigen::Vec
 Eigen::MatrixXd hac_covariance(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
                                const std::vector<std::size_t>& segments,
                                const std::vector<int>& bandwidths) {
+  if (bandwidths.size() != segments.size() || segments.empty()) return {};
   const int lags = *std::max_element(bandwidths.begin(), bandwidths.end());
   const Eigen::Index n = jacobian.rows(), p = jacobian.cols();
   const Eigen::FullPivLU<Eigen::MatrixXd> lu(jacobian.transpose() * jacobian);

@@ -64,7 +64,7 @@ std::vector<int> segment_bandwidths(const std::vector<double>& r,
 // The sandwich covariance above for residuals r (n) and their Jacobian J (n x p) over
 // `segments`, with bandwidth `lags` (L) in every segment, or each segment's own
 // (`bandwidths`, prewhitened when any is above 0). Returns an empty matrix if J^T J is
-// singular.
+// singular, or there are no segments or not one bandwidth for each.
 Eigen::MatrixXd hac_covariance(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
                                const std::vector<std::size_t>& segments, int lags);
 Eigen::MatrixXd hac_covariance(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
