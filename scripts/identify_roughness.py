@@ -11,12 +11,9 @@ dead time's effect (the roughness `pamsim identify` reports, docs/identification
     python3 scripts/identify_roughness.py [--pamsim build/src/sim/pamsim]
 """
 import argparse
-import csv
 import math
 import os
-import subprocess
 import sys
-import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "examples", "identify"))
@@ -34,20 +31,8 @@ TOLERANCES = {   # name: the solver's keys as --set
 
 def angle(pamsim, dead_time_ms, solver):
     """The trial's angle column [deg] with the steps recording's commands."""
-    with tempfile.TemporaryDirectory() as tmp:
-        args = [pamsim, "run", os.path.join(ROOT, "examples", "identify", "arm.toml"), "--out", tmp,
-                "--no-plot", "--set", f"valve.dead_time_ms={dead_time_ms!r}"]
-        for s in make_recordings.RECORDINGS["steps"][0] + solver:
-            args += ["--set", s]
-        try:
-            done = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                                  text=True)
-        except OSError as e:
-            sys.exit(f"identify_roughness.py: cannot run {pamsim}: {e.strerror}")
-        if done.returncode != 0:   # pamsim's own line says why
-            sys.exit(done.stderr.strip() or f"{pamsim} exited {done.returncode}")
-        with open(os.path.join(tmp, "trajectory.csv")) as f:
-            return [float(r["angle_deg"]) for r in csv.DictReader(f)]
+    sets = [f"valve.dead_time_ms={dead_time_ms!r}"] + make_recordings.RECORDINGS["steps"][0]
+    return [float(r["angle_deg"]) for r in make_recordings.trajectory(pamsim, sets + solver)]
 
 
 def rms(values):

@@ -44,6 +44,24 @@ RECORDINGS = {
 }
 
 
+def trajectory(pamsim, sets):
+    """The rows of trajectory.csv of arm.toml run with `sets` (each a --set); pamsim's own
+    line, and the exit, if it refuses them."""
+    with tempfile.TemporaryDirectory() as tmp:
+        args = [pamsim, "run", os.path.join(HERE, "arm.toml"), "--out", tmp, "--no-plot"]
+        for s in sets:
+            args += ["--set", s]
+        try:
+            done = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                                  text=True)
+        except OSError as e:
+            sys.exit(f"cannot run {pamsim}: {e.strerror}")
+        if done.returncode != 0:
+            sys.exit(done.stderr.strip() or f"{pamsim} exited {done.returncode}")
+        with open(os.path.join(tmp, "trajectory.csv")) as f:
+            return list(csv.DictReader(f))
+
+
 def record(pamsim, name, sets, channels, rate_hz, gap, out_dir, truth=TRUTH, offsets=None,
            delays=None):
     """One recording: arm.toml run with `truth` and `sets`, `channels` kept at `rate_hz` (without
@@ -51,13 +69,7 @@ def record(pamsim, name, sets, channels, rate_hz, gap, out_dir, truth=TRUTH, off
     zero error, in the column's unit) and read late by its entry in `delays` [s] (an unmodelled
     delay); scripts/identify_coverage.py draws them."""
     offsets, delays = offsets or {}, delays or {}
-    with tempfile.TemporaryDirectory() as tmp:
-        args = [pamsim, "run", os.path.join(HERE, "arm.toml"), "--out", tmp, "--no-plot"]
-        for s in truth + sets:
-            args += ["--set", s]
-        subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
-        with open(os.path.join(tmp, "trajectory.csv")) as f:
-            rows = list(csv.DictReader(f))
+    rows = trajectory(pamsim, truth + sets)
     step = round(100.0 / rate_hz)   # the log is at 100 Hz
     out = os.path.join(out_dir, name + ".csv")
     with open(out + ".tmp", "w", newline="") as f:
