@@ -20,6 +20,7 @@
 #include <cstring>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "base/input_error.h"
@@ -213,8 +214,11 @@ EglSetup open_egl(const EglApi& egl, const EglDeviceChoice& choice) {
   };
   if (choice.index >= 0) {
     if (static_cast<std::size_t>(choice.index) >= devices.size()) {
-      throw InputError(choice.source + " " + std::to_string(choice.index) +
-                       ": no such EGL device; the devices here: " + device_list(devices));
+      throw InputError(
+          choice.source + " " + std::to_string(choice.index) +
+          ": no such EGL device; the devices here: " + device_list(devices) +
+          (devices.empty() ? " (without a device number, egl takes the surfaceless platform, "
+                             "which can still reach a GPU)" : ""));
     }
     EglSetup setup = on_device(static_cast<std::size_t>(choice.index));
     if (!setup.error.empty()) {
@@ -232,16 +236,23 @@ EglSetup open_egl(const EglApi& egl, const EglDeviceChoice& choice) {
     if (setup.error.empty()) return setup;
     tried(setup);
   }
+  // a platform without devices says why no GPU device was used: the GL string names the vendor
+  const std::string no_device =
+      " (no GPU device: " + (errors.empty() ? "EGL lists " + device_list(devices) : errors) + ")";
+  const auto without_device = [&no_device](EglSetup setup) {
+    setup.description += no_device;
+    return setup;
+  };
   const char* client = egl.QueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   if (egl.GetPlatformDisplay && has_extension(client, "EGL_MESA_platform_surfaceless")) {
     EglSetup setup = make_context(
         egl, egl.GetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr),
-        "egl surfaceless (Mesa)");
-    if (setup.error.empty()) return setup;
+        "egl surfaceless");
+    if (setup.error.empty()) return without_device(std::move(setup));
     tried(setup);
   }
   EglSetup setup = make_context(egl, egl.GetDisplay(EGL_DEFAULT_DISPLAY), "egl default display");
-  if (setup.error.empty()) return setup;
+  if (setup.error.empty()) return without_device(std::move(setup));
   tried(setup);
   throw InputError("--backend egl: no context (" + errors + ")");
 }
