@@ -2,11 +2,12 @@
 """env_throughput.py: the Gymnasium environment's cost, measured in one run:
   env step    one DropMassEnv.step (observation, reward, action checks) / one control period
               of SteppedTrial::step in a C++ loop (pamsim._cxx_step_s) on the same scenario
-  threaded    ThreadedVectorEnv steps per second (environment steps, all envs) for 1, 2 and
-              16 environments, and the speed-up over one
+  threaded    ThreadedVectorEnv steps per second (environment steps, all envs) for 1, 4 and
+              16 environments (or the counts given), and the speed-up over one
 Run in an environment with gymnasium (best of 3 each):
-  .venv/bin/python bench/env_throughput.py        (or PYTHONPATH=build/python)
+  .venv/bin/python bench/env_throughput.py [N...]   (or PYTHONPATH=build/python)
 """
+import sys
 import time
 
 import gymnasium
@@ -49,6 +50,6 @@ cxx = min(_pamsim._cxx_step_s(scenario, {"sim.duration_s": 3.0}, STEPS) for _ in
 print(f"pamsim {pamsim.__version__}, gymnasium {gymnasium.__version__}")
 print(f"env step {py * 1e6:.0f} us, C++ control period {cxx * 1e6:.0f} us, ratio {py / cxx:.2f}")
 one = max(vector_steps_per_s(1) for _ in range(3))
-for n in (1, 2, 16):
+for n in [int(a) for a in sys.argv[1:]] or [1, 4, 16]:
     rate = one if n == 1 else max(vector_steps_per_s(n) for _ in range(3))
     print(f"ThreadedVectorEnv {n:2d} envs: {rate:7.0f} env steps/s, speed-up {rate / one:.2f}")
