@@ -201,7 +201,9 @@ TEST(RandomizeTest, BadTablesAreRefusedByTheirKey) {
            {"[[randomize]]\nkey = \"seed\"\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize[0].key cannot be \"seed\""},
            {head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n" + head +
                 "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize names " + pamsim_test::kAgonistWall + " twice"},
-           {"[[randomize]]\nkey = \"reflex.v_thr_mm_s\"\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "draws reflex.v_thr_mm_s, which is an axis too"},
+           {"[[randomize]]\nkey = \"reflex.v_thr_mm_s\"\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize sets reflex.v_thr_mm_s, which axis[0] sets too"},
+           {"[[randomize]]\nkey = \"drop.time_s\"\ndistribution = \"uniform\"\nfrom = 0.1\nto = 0.2\n",
+            "randomize sets drop.time_s, which [fixed] sets too"},   // sweep_from's [fixed.drop]
            {"randomize_seed = 3\n!", "randomize_seed is for files with [[randomize]]"},
            {"randomize_seed = -1\n!" + head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize_seed must be >= 0"},
            {head + "distribution = \"uniform\"\nfrom = -2.0\nto = -1.0\n", "seed index 0 draws " + pamsim_test::kAgonistWall},

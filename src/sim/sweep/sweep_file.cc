@@ -236,20 +236,12 @@ void read_axes(ConfigReader& in, SweepDefinition* def) {
   }
 }
 
-// [[randomize]] and randomize_seed; a drawn key may be neither an axis nor fixed
+// [[randomize]] and randomize_seed; a drawn key may be neither an axis, a case's nor fixed
+// (check_axes_disjoint, the one check of what sets each key)
 void read_randomize(ConfigReader& in, SweepDefinition* def) {
   read_randomizations(in, &def->randomize, &def->randomize_seed);
   std::vector<std::string> drawn;
-  for (const Randomization& r : def->randomize) {
-    drawn.push_back(r.key);
-    for (const SweepAxis& a : def->axes) {
-      in.check(a.is_cases() || a.key != r.key, "randomize",
-               "draws " + r.key + ", which is an axis too");
-    }
-    for (const std::string& f : def->fixed) {
-      in.check(f.rfind(r.key + "=", 0) != 0, "randomize", "draws " + r.key + ", which [fixed] sets too");
-    }
-  }
+  for (const Randomization& r : def->randomize) drawn.push_back(r.key);
   detail::check_axes_disjoint(def->axes, drawn, def->fixed, def->file);
 }
 
