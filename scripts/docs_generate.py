@@ -20,6 +20,7 @@ KINDS = [("scenario", [], "A scenario file"),
          ("params", ["--params"], "A muscle's parameter file (the estimator's spring law)"),
          ("plant", ["--plant"], "A plant file (the physical muscle)"),
          ("pneumatics", ["--pneumatics"], "The pneumatics file (valve, chamber, regulator)"),
+         ("calibration", ["--calibration"], "A calibration file (pamsim calibrate's)"),
          ("sweep", ["--sweep"], "A sweep file's design keys"),
          ("tune", ["--tune"], "A tuning file's search keys"),
          ("identify", ["--identify"], "An identification file's search and judgement keys")]

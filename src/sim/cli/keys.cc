@@ -5,6 +5,7 @@
 // instead (model.pneumatics, pneumatics.<table>.<field>), from its reader's key table;
 // `--plant`: a plant file's (muscles.<m>.plant, muscles.<m>.plant.<table>.<field>);
 // `--params`: a muscle's estimator parameter file's (muscles.<m>.params);
+// `--calibration`: a calibration file's (model.calibration, as `pamsim calibrate` writes it);
 // `--identify`, `--tune`, `--sweep`: an identification, tuning or sweep file's top-level keys,
 // from their rows, then the keys of its tables' entries ([[parameter]], [[recording]],
 // [[axis]]...: "parameter[].from"), from their readers' lists.
@@ -22,6 +23,7 @@
 #include "sim/optimize/identify_file_recordings.h"
 #include "sim/optimize/search_space.h"
 #include "sim/optimize/tuning_file.h"
+#include "sim/scenario/calibration_file.h"
 #include "sim/scenario/randomize.h"
 #include "sim/sweep/sweep.h"
 #include "sim/scenario/scenario_file.h"
@@ -37,6 +39,7 @@ struct KeysOptions {
   bool pneumatics = false;
   bool plant = false;
   bool params = false;
+  bool calibration = false;
   bool identify = false;
   bool tune = false;
   bool sweep = false;
@@ -100,13 +103,14 @@ std::vector<KeyDoc> search_file_docs(const KeysOptions& opt) {
                        {"randomize", &randomize_entry_keys()}});
 }
 
-// --pneumatics, --plant, --params, --identify, --tune or --sweep: another file's keys,
-// which take no scenario
+// --pneumatics, --plant, --params, --calibration, --identify, --tune or --sweep: another
+// file's keys, which take no scenario
 bool print_file_keys(const KeysOptions& opt) {
-  const int files =
-      opt.pneumatics + opt.plant + opt.params + opt.identify + opt.tune + opt.sweep;
+  const int files = opt.pneumatics + opt.plant + opt.params + opt.calibration + opt.identify +
+                    opt.tune + opt.sweep;
   if (files == 0) return false;
-  const std::string flags = "--pneumatics, --plant, --params, --identify, --tune and --sweep";
+  const std::string flags =
+      "--pneumatics, --plant, --params, --calibration, --identify, --tune and --sweep";
   if (files > 1) throw InputError(flags + " list different files' keys: give one");
   if (!(opt.scenario.empty() && opt.overrides.empty())) {
     throw InputError(flags + " list a file's keys: they take no scenario or --set");
@@ -114,6 +118,7 @@ bool print_file_keys(const KeysOptions& opt) {
   print_docs(opt.pneumatics ? pneumatic_key_docs()
              : opt.plant    ? plant_key_docs()
              : opt.params   ? pam_key_docs()
+             : opt.calibration ? calibration_key_docs()
                             : search_file_docs(opt),
              opt.json);
   return true;
@@ -164,6 +169,9 @@ void add_keys_command(CLI::App& app) {
   cmd->add_flag("--params", opt->params,
                 "A muscle's parameter file's keys (the spring law its estimator inverts, the "
                 "strain gauge, the geometry) instead of the scenario's");
+  cmd->add_flag("--calibration", opt->calibration,
+                "A calibration file's keys (the start angle, each muscle's line length and "
+                "pressure, as `pamsim calibrate` writes them) instead of the scenario's");
   cmd->add_flag("--identify", opt->identify,
                 "An identification file's keys (its search and judgement keys, then those of "
                 "[[parameter]], [[recording]], [[tensile]], [[candidate]]) instead of the "

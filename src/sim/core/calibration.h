@@ -33,6 +33,7 @@ struct ArmCalibration {
   std::vector<CalibratedLine> lines;
   double antagonist_deformation_m = 0.0;   // the chosen pre-deformation
   double gravity_torque_nm = 0.0;          // what the PAMs hold at the start
+  std::string written_by;                  // the file's record of what wrote it
   // The line of an actuator, or nullptr.
   const CalibratedLine* line(const std::string& actuator) const;
 };
