@@ -84,16 +84,14 @@ void read_drop(ConfigReader& in, Scenario* sc, bool implied) {
            "must be in [0, sim.duration_s): " + in.described("drop.time_s", drop.time_s) +
                " with " + in.described("sim.duration_s", sc->duration_s) +
                "; set the other too (--set drop.time_s=...)");
-  const std::string body = in.get_string("drop.body", "ball");
-  const std::string basket = in.get_string("drop.basket", "basket");
-  const std::string site = in.get_string("drop.site", "basket_floor");
+  const std::string& body = drop.body;
 
   // the mass, held above the basket floor, released at time_s; the impact marked
   sc->body_masses.push_back({"drop.mass_kg", body, drop.mass_kg});
   HoldSpec hold;
   hold.key = "drop";
   hold.body = body;
-  hold.above_site = site;
+  hold.above_site = drop.site;
   hold.height_m = drop.height_m;
   sc->holds.push_back(hold);
   EventSpec release;
@@ -108,7 +106,7 @@ void read_drop(ConfigReader& in, Scenario* sc, bool implied) {
   impact.name = "impact";
   impact.when.kind = ConditionKind::kContact;
   impact.when.body_a = body;
-  impact.when.body_b = basket;
+  impact.when.body_b = drop.basket;
   impact.when.after = "release";
   sc->events.push_back(impact);
 }

@@ -97,7 +97,7 @@ std::vector<KeyDoc> body_and_hold_docs() {
                          hold_key_table(&hold, &position)});
 }
 
-// events, the drop shorthand's names
+// events
 std::vector<KeyDoc> event_docs() {
   EventSpec event;
   EventThresholds thresholds;
@@ -105,9 +105,6 @@ std::vector<KeyDoc> event_docs() {
       key_table_docs({event_key_table(&event), event_when_key_table(&event, &thresholds)});
   const std::vector<KeyDoc> by_hand = {
       {"events.<event>.when.contact", "", "(one when.* is required)", "[body_a, body_b]", "fire when the two bodies touch"},
-      {"drop.body", "", "\"ball\"", "a free body of the model", "shorthand: the falling body"},
-      {"drop.basket", "", "\"basket\"", "a body of the model", "shorthand: the body it lands in (the impact event)"},
-      {"drop.site", "", "\"basket_floor\"", "a site of the model", "shorthand: the site it is held above"},
   };
   docs.insert(docs.end(), by_hand.begin(), by_hand.end());
   return docs;

@@ -37,6 +37,10 @@ KeyTable drop_key_table(DropShorthand* drop) {
        "shorthand: its fall height above the basket floor", &drop->height_m},
       {"time_s", "s", 1.0, {0.0, 3600.0, false, true},
        "shorthand: when it is released, before sim.duration_s", &drop->time_s}};
+  t.texts = {{"body", "shorthand: the falling body, a free body of the model", &drop->body},
+             {"basket", "shorthand: the body it lands in (the impact event), a body of the model",
+              &drop->basket},
+             {"site", "shorthand: the site it is held above, a site of the model", &drop->site}};
   return t;
 }
 

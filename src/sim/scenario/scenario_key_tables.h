@@ -32,6 +32,9 @@ struct DropShorthand {
   double mass_kg = 0.2;
   double height_m = 0.14;
   double time_s = 1.0;
+  std::string body = "ball";            // the model's names it uses (checked when bound)
+  std::string basket = "basket";
+  std::string site = "basket_floor";
 };
 
 // [drop], bound to `drop`.
