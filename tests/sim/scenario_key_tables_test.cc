@@ -71,6 +71,19 @@ TEST(TimeAndDropKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {
   EXPECT_GE(refused, 41);
 }
 
+TEST(TopLevelScenarioKeysTest, TheSeedIsARowThatRefusesItsBadValuesAndReachesTheScenario) {
+  Scenario sc;
+  const KeyTable table = top_level_key_table(&sc);
+  ASSERT_EQ(table.ints.size(), 1u);
+  for (const std::string& value : bad_int_texts(table.ints[0])) {
+    const InputErrorParts parts = refusal_parts(
+        [&] { load_scenario(kDropMass, {"seed=" + value}); }, "seed = " + value);
+    EXPECT_EQ(parts.key, "seed") << value;
+    EXPECT_EQ(parts.file, kDropMass) << value;
+  }
+  EXPECT_EQ(load_scenario(kDropMass, {"seed=7"}).seed, 7u);
+}
+
 TEST(TimeAndDropKeysTest, AValueReachesItsFieldAndWhatJoinsKeysIsStillChecked) {
   const Scenario sc = load_scenario(
       kDropMass, {"sim.timestep_s=0.0005", "sim.control_hz=200", "drop.mass_kg=0.3",

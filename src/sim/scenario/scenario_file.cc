@@ -158,9 +158,7 @@ Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrid
   apply_scenario_overrides(in, overrides);
   Scenario sc;
   sc.path = in.name();
-  const std::int64_t seed = in.get_int("seed", 1);
-  in.check(seed >= 0, "seed", "must be >= 0, got " + std::to_string(seed));
-  sc.seed = static_cast<std::uint64_t>(seed);
+  read_key_rows(in, top_level_key_table(&sc));
 
   read_time(in, &sc);
   read_model(in, &sc);

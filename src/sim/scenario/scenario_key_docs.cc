@@ -40,8 +40,9 @@ bool matches(const std::string& pattern, const std::string& key) {
 
 // seed, metrics, model, sim, valve, muscles
 std::vector<KeyDoc> model_docs() {
-  return {
-      {"seed", "", "1", "integer >= 0", "the trial's random seed (sensor noise); trial k of --trials uses seed + k"},
+  Scenario scenario;   // the rows' defaults are the struct's own
+  std::vector<KeyDoc> docs = key_table_docs({top_level_key_table(&scenario)});
+  const std::vector<KeyDoc> by_hand = {
       {"metrics", "", "(drop: [\"drop\", \"reflex\", \"length_estimate\"]; else tracking, length_estimate, reflex)",
        "list of \"drop\", \"reflex\", \"length_estimate\", \"tracking\", \"tension\", \"sensors\", \"events\"", "the metric sets in summary.json"},
       {"model.file", "", "(required)", "path to an MJCF file", "the arm's MuJoCo model, relative to the scenario file"},
@@ -61,6 +62,8 @@ std::vector<KeyDoc> model_docs() {
       {"muscles.<actuator>.line", "", "(none)", "\"equilibrium\"", "solve the line length so the start is static"},
       {"muscles.<actuator>.spans", "", "(not checked)", "list of joints of the model", "the joints its tendon must cross: refused if its path misses one (no moment arm at the start)"},
   };
+  docs.insert(docs.end(), by_hand.begin(), by_hand.end());
+  return docs;
 }
 
 // muscles.<actuator>.command: its kind's row, then each kind's rows (schedule_key_tables.h)

@@ -11,6 +11,13 @@
 
 namespace pamsim {
 
+KeyTable top_level_key_table(Scenario* scenario) {
+  KeyTable t{"", {}, {}, {}};
+  t.ints = {int_row("seed", "the trial's random seed (sensor noise); trial k of --trials uses seed + k",
+                    0, std::numeric_limits<std::int64_t>::max(), &scenario->seed)};
+  return t;
+}
+
 KeyTable sim_key_table(Scenario* scenario, double* max_steps) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   KeyTable t{"sim", {}, {}, {}};

@@ -21,6 +21,9 @@ namespace pamsim {
 // uncountable number of steps.
 inline constexpr double kDefaultMaxSteps = 1e7;
 
+// The scenario's own top-level keys that are values (seed), bound to `scenario`.
+KeyTable top_level_key_table(Scenario* scenario);
+
 // [sim], bound to `scenario`'s time step, duration and control rate and to `max_steps` (read
 // to check the trial's length, not kept).
 KeyTable sim_key_table(Scenario* scenario, double* max_steps);
