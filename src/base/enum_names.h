@@ -8,8 +8,11 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "base/input_error.h"
+#include "base/key_table.h"
 
 namespace pamsim {
 
@@ -47,6 +50,18 @@ Enum parse_name(const EnumName<Enum> (&names)[N], const std::string& name,
     if (name == n.name) return n.value;
   }
   throw InputError(context + " must be " + quoted_choices(names) + ", got \"" + name + "\"");
+}
+
+// A key whose value names one of an enum's values: a ChoiceRow bound to `field`, its allowed
+// names the enum's one table's.
+template <typename Enum, std::size_t N>
+ChoiceRow enum_choice_row(std::string key, const EnumName<Enum> (&names)[N], std::string doc,
+                          Enum* field) {
+  std::vector<std::string> allowed;
+  for (const EnumName<Enum>& n : names) allowed.emplace_back(n.name);
+  return {std::move(key), std::move(allowed), std::move(doc),
+          [&names, field](const std::string& v) { *field = parse_name(names, v, "choice"); },
+          [&names, field] { return std::string(name_of(names, *field)); }};
 }
 
 }  // namespace pamsim

@@ -24,6 +24,13 @@ ValveModel parse_valve_model(const std::string& name, const std::string& context
 
 const char* valve_model_name(ValveModel model) { return name_of(kValveNames, model); }
 
+ChoiceRow valve_model_row(std::string name, ValveModel* model) {
+  return enum_choice_row(std::move(name), kValveNames,
+                         "the valve and chamber model: ISO 6358 orifices, a first-order lag, "
+                         "or the proportional pressure regulator's loop",
+                         model);
+}
+
 double iso6358_flow_function(double r, double b, double r_lam) {
   // choked (sonic) flow
   if (r <= b) return 1.0;

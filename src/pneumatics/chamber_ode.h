@@ -60,6 +60,8 @@ enum class ValveModel { kIso6358, kFirstOrder, kRegulator };
 // \"x\"".
 ValveModel parse_valve_model(const std::string& name, const std::string& context);
 const char* valve_model_name(ValveModel model);
+// A scenario's valve.model (the key `name` of its table), bound to `model`.
+ChoiceRow valve_model_row(std::string name, ValveModel* model);
 
 // ISO 6358 flow function psi(r) with the laminar linearisation above r_lam (see above);
 // r = p_down / p_up in [0, 1]. b in [0, 1), r_lam in (b, 1).

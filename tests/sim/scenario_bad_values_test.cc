@@ -41,6 +41,7 @@ std::vector<BadOverride> bad_core_overrides() {
       {"pressure.antagonist_MPa=nan", "pressure.antagonist_MPa"},
       {"pressure.antagonist_MPa=\"high\"", "pressure.antagonist_MPa"},
       {"valve.model=\"bang_bang\"", "valve.model"},
+      {"valve.model=3", "valve.model"},
       {"reflex.enabled=\"yes\"", "reflex.enabled"},
       {"reflex.sensor=\"laser\"", "reflex.sensor"},
       {"reflex.v_thr_mm_s=0", "reflex.v_thr_mm_s"},

@@ -83,10 +83,8 @@ void read_model(ConfigReader& in, Scenario* sc) {
   sc->pneumatics_file = in.get_input_path("model.pneumatics", "");
   in.check(!sc->pneumatics_file.empty(), "model.pneumatics", "is required");
   read_pneumatics(in, sc);
-  const std::string valve = in.get_string("valve.model", valve_model_name(sc->valve_model));
-  sc->valve_model = parse_valve_model(valve, in.name() + ": valve.model");
-
-  read_valve(in, valve, sc);
+  read_key_rows(in, valve_model_key_table(sc));
+  read_valve(in, valve_model_name(sc->valve_model), sc);
 }
 
 // controller.kind, then the kind's own keys (reflex/controller_registry.h)

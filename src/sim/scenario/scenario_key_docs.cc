@@ -52,7 +52,6 @@ std::vector<KeyDoc> model_docs() {
       {"pneumatics.<table>.<field>", "(the file's)", "(model.pneumatics')", "as in the pneumatics file (pamsim keys --pneumatics)", "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index"},
       {"model.<actuator>_params", "", "(none)", "path", "shorthand of muscles.<actuator>.params (pamsim 0.1 files)"},
       {"pressure.<actuator>_MPa", "MPa", "(none)", "[0, controller.p_max_MPa]", "shorthand of a constant muscles.<actuator>.command"},
-      {"valve.model", "", "\"iso6358\"", "\"iso6358\" | \"first_order\" | \"regulator\"", "the valve and chamber model (pneumatics.h)"},
       {"muscles.<actuator>.params", "", "(required)", "path to a PAM parameter file", "the estimator's spring model (models/pams/...)"},
       {"muscles.<actuator>.plant", "", "(the params file's law)", "path to a plant file; or a table: file and any of that file's fields in its units (muscles.<m>.plant.geometry.wall_thickness_mm = 1.5), each validated as the file's own", "the physical muscle (AVBDL law with friction)"},
       {"muscles.<actuator>.plant.file", "", "(required in the table form)", "path to a plant file", "the plant file whose fields muscles.<actuator>.plant.<table>.<field> change"},
@@ -120,6 +119,9 @@ std::vector<KeyDoc> valve_docs() {
   const std::vector<KeyTable> tables = valve_key_tables(&defaults);
   std::vector<KeyDoc> docs = key_table_docs({tables.at(0)});
   for (KeyDoc& d : docs) d.fallback = "(model.pneumatics')";
+  Scenario scenario;   // the row's default is the struct's own
+  const std::vector<KeyDoc> model = key_table_docs({valve_model_key_table(&scenario)});
+  docs.insert(docs.begin(), model.begin(), model.end());
   for (KeyDoc d : key_table_docs({tables.at(1)})) {
     d.fallback = "(model.pneumatics' [regulator])";
     d.allowed += "; valve.model = \"regulator\"";

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "base/units.h"
+#include "pneumatics/chamber_ode.h"
 #include "pneumatics/pneumatic_params.h"
 
 namespace pamsim {
@@ -49,6 +50,10 @@ KeyTable drop_key_table(DropShorthand* drop) {
               &drop->basket},
              {"site", "shorthand: the site it is held above, a site of the model", &drop->site}};
   return t;
+}
+
+KeyTable valve_model_key_table(Scenario* scenario) {
+  return KeyTable{"valve", {}, {valve_model_row("model", &scenario->valve_model)}};
 }
 
 std::vector<KeyTable> valve_key_tables(PneumaticParams* pneumatics) {

@@ -43,6 +43,10 @@ struct DropShorthand {
 // [drop], bound to `drop`.
 KeyTable drop_key_table(DropShorthand* drop);
 
+// valve.model, bound to `scenario`'s valve model: read first, as it decides which of [valve]'s
+// other keys a scenario may give.
+KeyTable valve_model_key_table(Scenario* scenario);
+
 // [valve]'s numbers and choices (valve.model, a name of the reader's, aside): the pneumatics
 // file's own rows (pneumatic_params.h), bound to `pneumatics`, so that a scenario or a sweep
 // axis picks a point of the file's bracket by the file's rows. Two tables, both "valve": a
