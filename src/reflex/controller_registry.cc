@@ -32,16 +32,6 @@ const ControllerKind* find_controller_kind(const std::string& name) {
   return nullptr;
 }
 
-std::string controller_kind_choices() {
-  const std::vector<ControllerKind>& list = kinds();
-  std::string text;
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    if (i > 0) text += i + 1 == list.size() ? " or " : ", ";
-    text += "\"" + list[i].name + "\"";
-  }
-  return text;
-}
-
 const char* default_controller_kind() { return "stretch_reflex"; }
 
 void register_controller_kind(ControllerKind kind) {

@@ -24,8 +24,6 @@ namespace pamsim {
 const std::vector<ControllerKind>& controller_kinds();
 // The kind of this name, or nullptr.
 const ControllerKind* find_controller_kind(const std::string& name);
-// The names for a message: "\"a\"", "\"a\" or \"b\"", "\"a\", \"b\" or \"c\"".
-std::string controller_kind_choices();
 // controller.kind when a scenario does not say.
 const char* default_controller_kind();
 

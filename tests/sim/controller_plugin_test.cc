@@ -110,13 +110,12 @@ std::string error_of(const std::string& kind, const std::string& extra = "") {
 
 TEST(ControllerPlugin, RegisteredAfterTheBuiltInKinds) {
   ASSERT_NE(find_controller_kind("constant_command"), nullptr);
-  EXPECT_EQ(controller_kind_choices(),
-            "\"none\", \"stretch_reflex\", \"tension_reflex\", \"stretch_tension_reflex\" or "
-            "\"constant_command\"");
+  ASSERT_EQ(controller_kinds().back().name, "constant_command");
+  // a plug-in's kind is one of controller.kind's allowed names, as the built-in ones are
   EXPECT_EQ(error_of("bang_bang"),
-            kReaching + ": controller.kind must be \"none\", \"stretch_reflex\", "
-                        "\"tension_reflex\", \"stretch_tension_reflex\" or "
-                        "\"constant_command\", got \"bang_bang\"");
+            kReaching + ": controller.kind is \"bang_bang\", allowed \"none\" | "
+                        "\"stretch_reflex\" | \"tension_reflex\" | \"stretch_tension_reflex\" | "
+                        "\"constant_command\"");
 }
 
 TEST(ControllerPlugin, AScenarioChoosesItAndItsCommandsDriveTheValves) {

@@ -89,11 +89,9 @@ void read_model(ConfigReader& in, Scenario* sc) {
 
 // controller.kind, then the kind's own keys (reflex/controller_registry.h)
 void read_controller(ConfigReader& in, Scenario* sc) {
-  const std::string kind = in.get_string("controller.kind", default_controller_kind());
-  const ControllerKind* chosen = find_controller_kind(kind);
-  if (!chosen) {
-    in.fail("controller.kind", "must be " + controller_kind_choices() + ", got \"" + kind + "\"");
-  }
+  std::string kind = default_controller_kind();
+  read_key_rows(in, controller_kind_key_table(&kind));
+  const ControllerKind* chosen = find_controller_kind(kind);   // one of them: the row's choices
   // another kind's section would be ignored: refused (kinds may share one: the reflex kinds
   // all read [reflex], each its own keys of it, and reject_unknown names the rest)
   for (const ControllerKind& other : controller_kinds()) {

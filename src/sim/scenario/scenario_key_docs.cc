@@ -178,12 +178,8 @@ std::vector<KeyDoc> instrument_docs() {
 // key that several kinds read (the reflex kinds share reflex.*) is listed once, as the first
 // kind documents it
 std::vector<KeyDoc> controller_docs() {
-  std::string kinds;
-  for (const ControllerKind& kind : controller_kinds()) {
-    kinds += (kinds.empty() ? "\"" : " | \"") + kind.name + "\"";
-  }
-  std::vector<KeyDoc> docs = {{"controller.kind", "", std::string("\"") +
-                               default_controller_kind() + "\"", kinds, "the controller"}};
+  std::string kind = default_controller_kind();
+  std::vector<KeyDoc> docs = key_table_docs({controller_kind_key_table(&kind)});
   std::set<std::string> listed;
   for (const ControllerKind& kind : controller_kinds()) {
     for (const KeyDoc& d : kind.docs) {

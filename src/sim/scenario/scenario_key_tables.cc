@@ -8,6 +8,7 @@
 
 #include "base/units.h"
 #include "pneumatics/chamber_ode.h"
+#include "reflex/controller_registry.h"
 #include "pneumatics/pneumatic_params.h"
 
 namespace pamsim {
@@ -50,6 +51,15 @@ KeyTable drop_key_table(DropShorthand* drop) {
               &drop->basket},
              {"site", "shorthand: the site it is held above, a site of the model", &drop->site}};
   return t;
+}
+
+KeyTable controller_kind_key_table(std::string* kind) {
+  std::vector<std::string> names;
+  for (const ControllerKind& k : controller_kinds()) names.push_back(k.name);
+  return KeyTable{"controller",
+                  {},
+                  {{"kind", names, "the controller", [kind](const std::string& v) { *kind = v; },
+                    [kind] { return *kind; }}}};
 }
 
 KeyTable valve_model_key_table(Scenario* scenario) {

@@ -43,6 +43,10 @@ struct DropShorthand {
 // [drop], bound to `drop`.
 KeyTable drop_key_table(DropShorthand* drop);
 
+// controller.kind, bound to `kind`: one of the registered kinds' names
+// (reflex/controller_registry.h).
+KeyTable controller_kind_key_table(std::string* kind);
+
 // valve.model, bound to `scenario`'s valve model: read first, as it decides which of [valve]'s
 // other keys a scenario may give.
 KeyTable valve_model_key_table(Scenario* scenario);
