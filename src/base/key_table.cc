@@ -227,7 +227,9 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
       docs.push_back({row_key(t, row.name), row.unit, fallback, row.range.text(), row.doc});
     }
     for (const TextRow& row : t.texts) {
-      docs.push_back({row_key(t, row.name), "", "\"" + *row.target + "\"", "a string", row.doc});
+      const std::string fallback =
+          row.fallback_doc.empty() ? "\"" + *row.target + "\"" : row.fallback_doc;
+      docs.push_back({row_key(t, row.name), "", fallback, "a string", row.doc});
     }
     for (const ListRow& row : t.lists) {
       std::string values;

@@ -98,6 +98,8 @@ struct TextRow {
   std::string name;
   std::string doc;
   std::string* target = nullptr;
+  std::string fallback_doc{};   // the default as a reference shows it, where the field's
+                                // empty value stands for another ("(the model's first joint)")
 };
 
 // A key whose value is one of a few names.

@@ -42,6 +42,7 @@ std::vector<BadOverride> bad_core_overrides() {
       {"pressure.antagonist_MPa=\"high\"", "pressure.antagonist_MPa"},
       {"valve.model=\"bang_bang\"", "valve.model"},
       {"valve.model=3", "valve.model"},
+      {"model.joint=3", "model.joint"},
       {"reflex.enabled=\"yes\"", "reflex.enabled"},
       {"reflex.sensor=\"laser\"", "reflex.sensor"},
       {"reflex.v_thr_mm_s=0", "reflex.v_thr_mm_s"},

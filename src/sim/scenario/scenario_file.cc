@@ -78,7 +78,7 @@ void read_pneumatics(ConfigReader& in, Scenario* sc) {
 void read_model(ConfigReader& in, Scenario* sc) {
   sc->model_file = in.get_input_path("model.file", "");
   in.check(!sc->model_file.empty(), "model.file", "is required");
-  sc->joint = in.get_string("model.joint", "");
+  read_key_rows(in, model_key_table(sc));
   sc->calibration_file = in.get_input_path("model.calibration", "");
   sc->pneumatics_file = in.get_input_path("model.pneumatics", "");
   in.check(!sc->pneumatics_file.empty(), "model.pneumatics", "is required");

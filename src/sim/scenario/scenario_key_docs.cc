@@ -41,12 +41,12 @@ bool matches(const std::string& pattern, const std::string& key) {
 // seed, metrics, model, sim, valve, muscles
 std::vector<KeyDoc> model_docs() {
   Scenario scenario;   // the rows' defaults are the struct's own
-  std::vector<KeyDoc> docs = key_table_docs({top_level_key_table(&scenario)});
+  std::vector<KeyDoc> docs =
+      key_table_docs({top_level_key_table(&scenario), model_key_table(&scenario)});
   const std::vector<KeyDoc> by_hand = {
       {"metrics", "", "(drop: [\"drop\", \"reflex\", \"length_estimate\"]; else tracking, length_estimate, reflex)",
        "list of \"drop\", \"reflex\", \"length_estimate\", \"tracking\", \"tension\", \"sensors\", \"events\"", "the metric sets in summary.json"},
       {"model.file", "", "(required)", "path to an MJCF file", "the arm's MuJoCo model, relative to the scenario file"},
-      {"model.joint", "", "(the model's first hinge or slide joint)", "a joint of the model", "the joint logged and measured"},
       {"model.calibration", "", "(none)", "path", "start_angle_deg and <actuator>_line_mm (pamsim calibrate)"},
       {"model.pneumatics", "", "(required)", "path", "valve and chamber parameters (models/pams/pneumatics.toml)"},
       {"pneumatics.<table>.<field>", "(the file's)", "(model.pneumatics')", "as in the pneumatics file (pamsim keys --pneumatics)", "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index"},

@@ -53,6 +53,13 @@ KeyTable drop_key_table(DropShorthand* drop) {
   return t;
 }
 
+KeyTable model_key_table(Scenario* scenario) {
+  KeyTable t{"model", {}, {}, {}};
+  t.texts = {{"joint", "the joint logged and measured, a hinge or slide joint of the model",
+              &scenario->joint, "(the model's first hinge or slide joint)"}};
+  return t;
+}
+
 KeyTable controller_kind_key_table(std::string* kind) {
   std::vector<std::string> names;
   for (const ControllerKind& k : controller_kinds()) names.push_back(k.name);

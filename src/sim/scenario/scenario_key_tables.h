@@ -43,6 +43,10 @@ struct DropShorthand {
 // [drop], bound to `drop`.
 KeyTable drop_key_table(DropShorthand* drop);
 
+// model.joint, bound to `scenario`'s joint (the model's file and the other files are paths,
+// read by the reader, which resolves them against the scenario's folder).
+KeyTable model_key_table(Scenario* scenario);
+
 // controller.kind, bound to `kind`: one of the registered kinds' names
 // (reflex/controller_registry.h).
 KeyTable controller_kind_key_table(std::string* kind);
