@@ -8,8 +8,8 @@
 
 #include "base/units.h"
 #include "pneumatics/chamber_ode.h"
-#include "reflex/controller_registry.h"
 #include "pneumatics/pneumatic_params.h"
+#include "reflex/controller_registry.h"
 
 namespace pamsim {
 
