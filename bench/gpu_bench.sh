@@ -20,12 +20,16 @@ pamsim=${PAMSIM:-build/src/sim/pamsim}
 bench=${PAMSIM_BENCH:-build/bench/pamsim_bench}
 python=${PYTHON:-python3}
 sections=${SECTIONS:-video sweep envs}
+for s in $sections; do
+  case $s in
+    video | sweep | envs) ;;
+    *) echo "gpu_bench.sh: SECTIONS: unknown section \"$s\" (video, sweep, envs)" >&2; exit 2 ;;
+  esac
+done
 mkdir -p "$out"
 summary=$out/summary.md
 
 now() { date +%s.%N; }
-seconds() { python3 -c "print(f'{$2 - $1:.2f}')"; }
-
 machine() {
   local cpu gpu
   cpu=$(grep -m1 "model name" /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')
