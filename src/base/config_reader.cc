@@ -170,26 +170,19 @@ std::string ConfigReader::require_string(const std::string& key) {
   return get_string(key, "");
 }
 
-std::string ConfigReader::directory() const {
-  const auto slash = name_.find_last_of('/');
-  return slash == std::string::npos ? "." : name_.substr(0, slash);
-}
-
 std::string ConfigReader::get_input_path(const std::string& key, const std::string& fallback) {
   const std::string path = get_path(key, fallback);
   if (path.empty()) return path;
   try {
     require_input_file(path);
   } catch (const InputError& e) {
-    throw InputError(where(key) + ": " + e.what());
+    throw InputError(where(key) + ": " + e.what(), {name_, key, e.what()});
   }
   return path;
 }
 
 std::string ConfigReader::get_path(const std::string& key, const std::string& fallback) {
-  const std::string value = get_string(key, fallback);
-  if (value.empty() || value[0] == '/') return value;
-  return directory() + "/" + value;
+  return path_beside(name_, get_string(key, fallback));
 }
 
 std::string ConfigReader::require_path(const std::string& key, const std::string& what) {

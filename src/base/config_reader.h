@@ -89,7 +89,6 @@ class ConfigReader {
   // override of the other says so.
   std::string described(const std::string& key, double value) const;
   const std::string& name() const { return name_; }
-  std::string directory() const;
 
   // Convenience checks that throw through fail().
   void check(bool ok, const std::string& key, const std::string& problem) const {

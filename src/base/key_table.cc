@@ -93,7 +93,12 @@ void read_key_rows(ConfigReader& in, const KeyTable& table) {
     row.set(v);
   }
   for (const NumberRow& row : table.numbers) read_number_row(in, key(row.name), row);
-  for (const TextRow& row : table.texts) *row.target = in.get_string(key(row.name), *row.target);
+  for (const TextRow& row : table.texts) {
+    const std::string k = key(row.name);
+    *row.target = row.input_file ? in.get_input_path(k, *row.target)
+                                 : in.get_string(k, *row.target);
+    in.check(!row.required || !row.target->empty(), k, "is required");
+  }
   for (const ListRow& row : table.lists) {
     const std::string k = key(row.name);
     std::vector<double> shown;   // the default in the file's unit
@@ -227,9 +232,15 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
       docs.push_back({row_key(t, row.name), row.unit, fallback, row.range.text(), row.doc});
     }
     for (const TextRow& row : t.texts) {
-      const std::string fallback =
-          row.fallback_doc.empty() ? "\"" + *row.target + "\"" : row.fallback_doc;
-      docs.push_back({row_key(t, row.name), "", fallback, "a string", row.doc});
+      std::string fallback = row.required                ? "(required)"
+                             : !row.fallback_doc.empty() ? row.fallback_doc
+                             : row.input_file && row.target->empty()
+                                 ? "(none)"
+                                 : "\"" + *row.target + "\"";
+      docs.push_back({row_key(t, row.name), "", fallback,
+                      row.input_file ? "a path to a file, relative to the file that gives it"
+                                     : "a string",
+                      row.doc});
     }
     for (const ListRow& row : t.lists) {
       std::string values;

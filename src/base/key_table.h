@@ -93,13 +93,17 @@ struct ListRow {
   std::size_t min_count = 0;    // the fewest a given list may hold
 };
 
-// A free text key (a name, a source's citation).
+// A free text key (a name, a source's citation), or a path to a file to read: given
+// relative to the folder of the file that gives it, stored resolved, and refused unless it is
+// a regular file of bounded size (toml_file.h: require_input_file).
 struct TextRow {
   std::string name;
   std::string doc;
   std::string* target = nullptr;
   std::string fallback_doc{};   // the default as a reference shows it, where the field's
                                 // empty value stands for another ("(the model's first joint)")
+  bool input_file = false;      // a path to a file to read (above)
+  bool required = false;        // a file must give it
 };
 
 // A key whose value is one of a few names.

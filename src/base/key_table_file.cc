@@ -10,9 +10,23 @@
 #include "base/input_error.h"
 #include "base/key_table.h"
 #include "base/key_table_text.h"
+#include "base/toml_file.h"
 
 namespace pamsim {
 namespace {
+
+// `value`, a path given by the file at `path`, resolved against that file's folder; refused
+// unless it is a file to read (require_input_file)
+std::string input_file_beside(const std::string& path, const std::string& key,
+                              const std::string& value) {
+  const std::string resolved = path_beside(path, value);
+  try {
+    require_input_file(resolved);
+  } catch (const InputError& e) {
+    throw file_key_error(path, key, e.what());
+  }
+  return resolved;
+}
 
 using namespace key_table_text;
 
@@ -91,6 +105,7 @@ void read_key(const std::string& path, const KeyTable& table, const std::string&
     if (row.name != name) continue;
     if (!node.is_string()) throw file_key_error(path, key, "must be a string");
     *row.target = *node.value<std::string>();
+    if (row.input_file) *row.target = input_file_beside(path, key, *row.target);
     return;
   }
   for (const ListRow& row : table.lists) {
@@ -157,6 +172,10 @@ void check_required(const std::string& path, const std::vector<KeyTable>& tables
     const bool parent = dot == std::string::npos || is_given(t.name.substr(0, dot));
     if (!(t.name.empty() || is_given(t.name)) && (t.optional || !parent)) continue;
     for (const NumberRow& row : t.numbers) {
+      const std::string key = row_key(t, row.name);
+      if (row.required && !is_given(key)) throw file_key_error(path, key, "is required");
+    }
+    for (const TextRow& row : t.texts) {
       const std::string key = row_key(t, row.name);
       if (row.required && !is_given(key)) throw file_key_error(path, key, "is required");
     }

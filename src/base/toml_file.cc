@@ -15,6 +15,12 @@
 
 namespace pamsim {
 
+std::string path_beside(const std::string& file, const std::string& path) {
+  if (path.empty() || path[0] == '/') return path;
+  const std::size_t slash = file.find_last_of('/');
+  return (slash == std::string::npos ? "." : file.substr(0, slash)) + "/" + path;
+}
+
 toml::table parse_toml_text(const std::string& text, const std::string& name) {
   try {
     return toml::parse(text, name);

@@ -19,6 +19,11 @@ toml::table parse_toml_text(const std::string& text, const std::string& name);
 inline constexpr std::uintmax_t kMaxTextInputBytes = 64u << 20;   // 64 MiB
 void require_input_file(const std::string& path, std::uintmax_t max_bytes = kMaxTextInputBytes);
 
+// `path` as a file at `file` gives it: as it is when absolute (or empty), else relative to
+// that file's folder ("." for a bare name): "scenarios/a.toml" gives "../models/m.xml" as
+// "scenarios/../models/m.xml".
+std::string path_beside(const std::string& file, const std::string& path);
+
 // The whole file at `path` (require_input_file first), or standard input for "-" (read
 // once: it is empty the second time). Throws InputError "<path>: cannot open file" and the
 // like.

@@ -76,12 +76,7 @@ void read_pneumatics(ConfigReader& in, Scenario* sc) {
 }
 
 void read_model(ConfigReader& in, Scenario* sc) {
-  sc->model_file = in.get_input_path("model.file", "");
-  in.check(!sc->model_file.empty(), "model.file", "is required");
   read_key_rows(in, model_key_table(sc));
-  sc->calibration_file = in.get_input_path("model.calibration", "");
-  sc->pneumatics_file = in.get_input_path("model.pneumatics", "");
-  in.check(!sc->pneumatics_file.empty(), "model.pneumatics", "is required");
   read_pneumatics(in, sc);
   read_key_rows(in, valve_model_key_table(sc));
   read_valve(in, valve_model_name(sc->valve_model), sc);

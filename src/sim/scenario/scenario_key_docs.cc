@@ -46,9 +46,6 @@ std::vector<KeyDoc> model_docs() {
   const std::vector<KeyDoc> by_hand = {
       {"metrics", "", "(drop: [\"drop\", \"reflex\", \"length_estimate\"]; else tracking, length_estimate, reflex)",
        "list of \"drop\", \"reflex\", \"length_estimate\", \"tracking\", \"tension\", \"sensors\", \"events\"", "the metric sets in summary.json"},
-      {"model.file", "", "(required)", "path to an MJCF file", "the arm's MuJoCo model, relative to the scenario file"},
-      {"model.calibration", "", "(none)", "path", "start_angle_deg and <actuator>_line_mm (pamsim calibrate)"},
-      {"model.pneumatics", "", "(required)", "path", "valve and chamber parameters (models/pams/pneumatics.toml)"},
       {"pneumatics.<table>.<field>", "(the file's)", "(model.pneumatics')", "as in the pneumatics file (pamsim keys --pneumatics)", "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index"},
       {"model.<actuator>_params", "", "(none)", "path", "shorthand of muscles.<actuator>.params (pamsim 0.1 files)"},
       {"pressure.<actuator>_MPa", "MPa", "(none)", "[0, controller.p_max_MPa]", "shorthand of a constant muscles.<actuator>.command"},

@@ -55,8 +55,21 @@ KeyTable drop_key_table(DropShorthand* drop) {
 
 KeyTable model_key_table(Scenario* scenario) {
   KeyTable t{"model", {}, {}, {}};
-  t.texts = {{"joint", "the joint logged and measured, a hinge or slide joint of the model",
-              &scenario->joint, "(the model's first hinge or slide joint)"}};
+  TextRow file{"file", "the arm's MuJoCo model (MJCF)", &scenario->model_file};
+  TextRow calibration{"calibration",
+                      "start_angle_deg and <actuator>_line_mm (pamsim calibrate; pamsim keys "
+                      "--calibration)",
+                      &scenario->calibration_file};
+  TextRow pneumatics{"pneumatics",
+                     "valve and chamber parameters (models/pams/pneumatics.toml; pamsim keys "
+                     "--pneumatics)",
+                     &scenario->pneumatics_file};
+  file.input_file = calibration.input_file = pneumatics.input_file = true;
+  file.required = pneumatics.required = true;
+  t.texts = {file,
+             {"joint", "the joint logged and measured, a hinge or slide joint of the model",
+              &scenario->joint, "(the model's first hinge or slide joint)"},
+             calibration, pneumatics};
   return t;
 }
 

@@ -43,8 +43,8 @@ struct DropShorthand {
 // [drop], bound to `drop`.
 KeyTable drop_key_table(DropShorthand* drop);
 
-// model.joint, bound to `scenario`'s joint (the model's file and the other files are paths,
-// read by the reader, which resolves them against the scenario's folder).
+// [model]: the model file, the joint, the calibration and pneumatics files (paths relative to
+// the scenario's folder), bound to `scenario`.
 KeyTable model_key_table(Scenario* scenario);
 
 // controller.kind, bound to `kind`: one of the registered kinds' names
