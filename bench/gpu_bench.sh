@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # gpu_bench.sh: pamsim's speed on a GPU machine, measured in one run, for a lab to repeat on
-# its own machine (about 4 minutes on 16 cores):
+# its own machine (about 5 minutes on 16 cores):
 #   video   the drop-mass trial rendered at 1280x720 (the model's own look) and 640x480
 #           (--quality fast) on EGL (the GPU) against OSMesa (llvmpipe, on the CPU), end to end
 #           (`pamsim render`, the whole command) and by pamsim_bench (BM_RenderTrial end to end,
