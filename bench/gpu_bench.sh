@@ -30,6 +30,13 @@ mkdir -p "$out"
 summary=$out/summary.md
 
 now() { date +%s.%N; }
+# seconds from $1 to $2 (now's stamps)
+elapsed() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.6f\n", b - a }'; }
+# $1 / $2 times $4 (default 1) to $3 decimals; "-" where either is not a number (a failed run)
+quotient() {
+  python3 -c "import sys; a, b, d, k = sys.argv[1:]; print(f'{float(k) * float(a) / float(b):.{d}f}')" \
+    "$1" "$2" "$3" "${4:-1}" 2>/dev/null || echo "-"
+}
 machine() {
   local cpu gpu
   cpu=$(grep -m1 "model name" /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')
@@ -53,7 +60,7 @@ render_row() {
     echo "| $1 | $2x$3 $4 | failed: $(tail -1 "$log") | | |"; return
   fi
   local rate
-  rate=$(python3 -c "print(f'{$frames / ($t1 - $t0):.1f}')")
+  rate=$(quotient "$frames" "$(elapsed "$t0" "$t1")" 1)
   echo "$1 $2x$3 $frames $rate" >>"$out/render-rates.txt"
   echo "| $1 | $2x$3 $4, $frames frames | $rate" \
     "| $(sed -n 's/.* s, \([0-9.]*\) frames\/s$/\1/p' "$log") | $gl |"
@@ -104,7 +111,7 @@ sweep_rate() {
     >/dev/null 2>"$out/sweep-t$1.log" || { echo failed; return; }
   t1=$(now)
   "$pamsim" export "$out/sweep-t$1/sweep.db" -o "$out/sweep-t$1/trials.csv" 2>/dev/null
-  python3 -c "print(f'{2000 / ($t1 - $t0):.1f}')"
+  quotient 2000 "$(elapsed "$t0" "$t1")" 1
 }
 
 sweep() {
@@ -117,7 +124,7 @@ sweep() {
     rate=$(sweep_rate $t)
     [ "$t" = 1 ] && one=$rate
     [ "$t" = 16 ] && threads16=$rate
-    echo "| --threads $t | $rate | $(python3 -c "print(f'{$rate / $one:.2f}')" 2>/dev/null)" \
+    echo "| --threads $t | $rate | $(quotient "$rate" "$one" 2)" \
       "| $(cmp -s "$out/sweep-t1/trials.csv" "$out/sweep-t$t/trials.csv" && echo yes || echo NO) |"
   done
   mkdir -p "$dir"
@@ -130,11 +137,11 @@ sweep() {
   t1=$(now)
   "$pamsim" merge "$dir/sweep.db" "$dir"/sweep.shard-*-of-16.db >/dev/null 2>&1
   "$pamsim" export "$dir/sweep.db" -o "$dir/trials.csv" 2>/dev/null
-  rate=$(python3 -c "print(f'{2000 / ($t1 - $t0):.1f}')")
-  echo "| 16 single-thread processes | $rate | $(python3 -c "print(f'{$rate / $one:.2f}')")" \
+  rate=$(quotient 2000 "$(elapsed "$t0" "$t1")" 1)
+  echo "| 16 single-thread processes | $rate | $(quotient "$rate" "$one" 2)" \
     "| $(cmp -s "$out/sweep-t1/trials.csv" "$dir/trials.csv" && echo yes || echo NO) |"
   echo
-  echo "16 threads reach $(python3 -c "print(f'{100 * $threads16 / $rate:.0f}')") %" \
+  echo "16 threads reach $(quotient "$threads16" "$rate" 0 100) %" \
     "of the 16 processes' rate."
 }
 
