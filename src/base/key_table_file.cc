@@ -171,14 +171,14 @@ void check_required(const std::string& path, const std::vector<KeyTable>& tables
     const std::size_t dot = t.name.rfind('.');
     const bool parent = dot == std::string::npos || is_given(t.name.substr(0, dot));
     if (!(t.name.empty() || is_given(t.name)) && (t.optional || !parent)) continue;
-    for (const NumberRow& row : t.numbers) {
-      const std::string key = row_key(t, row.name);
-      if (row.required && !is_given(key)) throw file_key_error(path, key, "is required");
-    }
-    for (const TextRow& row : t.texts) {
-      const std::string key = row_key(t, row.name);
-      if (row.required && !is_given(key)) throw file_key_error(path, key, "is required");
-    }
+    const auto require = [&](const auto& rows) {
+      for (const auto& row : rows) {
+        const std::string key = row_key(t, row.name);
+        if (row.required && !is_given(key)) throw file_key_error(path, key, "is required");
+      }
+    };
+    require(t.numbers);
+    require(t.texts);
   }
 }
 
