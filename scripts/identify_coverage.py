@@ -16,7 +16,8 @@ value, standard error (HAC), plain standard error, interval and verdict. A contr
 encoder is read 60 ms late (a delay the model lacks) must come out "does not explain".
 
     python3 scripts/identify_coverage.py [--arms 20] [--seed 1] [--threads 2] [--starts 1]
-        [--only 6,8] [--pamsim build/src/sim/pamsim] [--out renders/identify_coverage]
+        [--searched-offsets] [--only 6,8] [--pamsim build/src/sim/pamsim]
+        [--out renders/identify_coverage]
 
 writes OUT/coverage.csv (one row per arm and parameter) and OUT/coverage.md (the summary the
 docs show); an interrupted run started again skips the arms it finished and resumes the one
@@ -27,6 +28,7 @@ import csv
 import math
 import os
 import random
+import shutil
 import subprocess
 import sys
 import tomllib
@@ -57,7 +59,7 @@ RECORDINGS = {
     "sine": (SINE, ["angle_deg", "force_meas_anta_N"], 40.0, False),
     "ramps": (RAMPS, ["angle_deg"], 25.0, True),
 }
-SEARCH = {"generations": 8, "population": 12, "polish_iterations": 30}
+SEARCH = {"generations": 8, "population": 12, "polish_iterations": 30, "profile_offsets": "true"}
 # the model predicts the expected reading as the worked example's does, with its overrides
 # (no noise of its own, ideal ADCs: its identify.toml says why); its solver's tolerance is
 # arm.toml's
@@ -112,10 +114,18 @@ def make_arm(pamsim, folder, truth, offsets, noise_seed, delays=None):
 
 
 def identify(pamsim, path, threads):
-    """Runs (or resumes) the identification; its output folder."""
+    """Runs (or resumes) the identification; its output folder. A result or database of
+    another identification file (other settings: --starts, --searched-offsets) is removed."""
     out = os.path.join(os.path.dirname(path), "result")
+    made_from = os.path.join(out, "identify.toml")
+    with open(path) as f:
+        text = f.read()
+    if os.path.exists(made_from) and open(made_from).read() != text:
+        shutil.rmtree(out)
     if os.path.exists(os.path.join(out, "identify.csv")):
         return out
+    os.makedirs(out, exist_ok=True)
+    write_atomically(made_from, text)
     args = [pamsim, "identify", path, "--out", out, "--threads", str(threads), "--no-plot",
             "--quiet"]
     if os.path.exists(os.path.join(out, "identify.db")):
@@ -181,6 +191,7 @@ def summary(rows, arms, control, args):
     md = [f"# `pamsim identify`: coverage over {len(arms)} synthetic arms", "",
           f"`python3 scripts/identify_coverage.py --arms {args.arms} --seed {args.seed}"
           f"{'' if args.starts == 1 else f' --starts {args.starts}'}"
+          f"{' --searched-offsets' if args.searched_offsets else ''}"
           f"{f' --only {args.only}' if args.only else ''}`: "
           "each arm's truth drawn from the script's ranges, its recordings made by pamsim "
           "with a noise seed and instruments of its own; seven parameters fitted per arm.", "",
@@ -238,6 +249,9 @@ def main():
     ap.add_argument("--no-control", action="store_true", help="skip the misspecified arm")
     ap.add_argument("--starts", type=int, default=1,
                     help="the polish's starts per arm (identify's `starts`, 1 to 20)")
+    ap.add_argument("--searched-offsets", action="store_true",
+                    help="CMA-ES searches the offsets like the other parameters (identify's "
+                         "profile_offsets = false) instead of setting them at their best")
     ap.add_argument("--only", default="",
                     help="identify only these of the --arms arms, e.g. 6,8 (each drawn as in "
                          "the full run)")
@@ -251,6 +265,7 @@ def main():
         sys.exit("identify_coverage.py: --arms and --threads must be at least 1, --starts "
                  "within [1, 20], --only's arms below --arms")
     SEARCH["starts"] = args.starts
+    SEARCH["profile_offsets"] = "false" if args.searched_offsets else "true"
     rng = random.Random(args.seed)
     rows, arms = [], []
     for i in range(args.arms):

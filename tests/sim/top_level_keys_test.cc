@@ -63,6 +63,9 @@ int expect_every_row_refused(const KeyTable& table,
   for (const ChoiceRow& row : table.choices) {
     for (const char* value : {"\"neither\"", "1"}) expect_refused(row.name, value);
   }
+  for (const BoolRow& row : table.bools) {
+    for (const char* value : {"1", "\"true\""}) expect_refused(row.name, value);
+  }
   return refused;
 }
 
@@ -73,7 +76,7 @@ TEST(IdentifyKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {
       identify_search_table(&defaults),
       [&](const std::string& line) { return search_keys_file(dir, line); },
       [](const std::string& path) { load_identify_definition(path); });
-  EXPECT_EQ(refused, 2 * 5 + 5 * 4);
+  EXPECT_EQ(refused, 2 * 5 + 5 * 4 + 2 * 1);
 }
 
 // A one-parameter tuning of the reflex threshold, with `top` first.
@@ -116,11 +119,12 @@ TEST(IdentifyKeysTest, AValueReachesItsFieldAndKeysListsEveryRowOnce) {
   const fs::path dir = pamsim_test::fresh_dir("identify_keys_read");
   const IdentifyDefinition def = load_identify_definition(search_keys_file(
       dir, "seed = 4294967295\npolish_iterations = 0\nexplained_noise_factor = 2.5\n"
-           "interval = 0.9"));
+           "interval = 0.9\nprofile_offsets = false"));
   EXPECT_EQ(def.seed, 4294967295u);
   EXPECT_EQ(def.polish_iterations, 0);
   EXPECT_EQ(def.explained_noise_factor, 2.5);
   EXPECT_EQ(def.interval, 0.9);
+  EXPECT_FALSE(def.profile_offsets);
   EXPECT_EQ(def.generations, 6u) << "a key not given keeps the struct's default";
   const pamsim_test::CliResult r = pamsim_test::run_pamsim("keys --identify --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -11,6 +11,7 @@
 #include "base/input_error.h"
 #include "base/no_value.h"
 #include "sim/core/runner.h"
+#include "sim/optimize/identify_offsets.h"
 #include "sim/optimize/identify_outputs.h"
 #include "sim/optimize/identify_residuals.h"
 #include "sim/optimize/identify_uncertainty.h"
@@ -27,18 +28,26 @@ double seconds_since(Clock::time_point t0) {
 // A failed point's fitness for CMA-ES: worse than any point whose trials ran.
 constexpr double kFailedCost = 1e300;
 
-// The global phase's objective: a point's cost (sum of squares).
+// The global phase's objective: a point's cost (sum of squares), CMA-ES moving only the
+// parameters the projection leaves to it, each point's offsets at their best
+// (identify_offsets.h); the evaluation's unit is the whole projected point.
 class IdentifyObjective : public Objective {
  public:
-  IdentifyObjective(IdentifyResiduals& residuals, std::size_t n) : residuals_(residuals), n_(n) {}
-  std::size_t dimension() const override { return n_; }
+  IdentifyObjective(IdentifyResiduals& residuals, const OffsetProjection& projection)
+      : residuals_(residuals), projection_(projection) {}
+  std::size_t dimension() const override { return projection_.searched().size(); }
   std::size_t objective_count() const override { return 1; }
-  Evaluation evaluate(std::int64_t index, const std::vector<double>& unit) override {
+  Evaluation evaluate(std::int64_t index, const std::vector<double>& searched) override {
     Evaluation e;
     e.index = index;
-    e.unit = unit;
-    e.values = residuals_.values_at(unit);
-    const double cost = sum_of_squares(residuals_.at(unit, "global"));
+    e.unit = projection_.embed(searched);
+    std::vector<double> r = residuals_.at(e.unit, "global");
+    if (projection_.projects() && !r.empty()) {
+      e.unit = projection_.project(e.unit, r);
+      r = residuals_.at(e.unit, "global");   // the same trials, other offsets
+    }
+    e.values = residuals_.values_at(e.unit);
+    const double cost = sum_of_squares(r);
     e.objectives = {cost};
     e.fitness = {std::isfinite(cost) ? cost : kFailedCost};
     e.trials = 1;
@@ -48,7 +57,7 @@ class IdentifyObjective : public Objective {
 
  private:
   IdentifyResiduals& residuals_;
-  std::size_t n_;
+  const OffsetProjection& projection_;
 };
 
 // The polish's starts from CMA-ES's points: the best, then the next best that lie at least
@@ -72,14 +81,17 @@ std::vector<std::vector<double>> distinct_starts(const IdentifyDefinition& def,
   return starts;
 }
 
-// CMA-ES over the box; the polish's starts (distinct_starts).
+// CMA-ES over the box, the offsets projected out; the polish's starts (distinct_starts).
+// With every parameter an offset there is nothing to search: the middle, projected.
 std::vector<std::vector<double>> global_search(const IdentifyDefinition& def,
                                                IdentifyResiduals& residuals,
                                                const IdentifyRunOptions& options,
                                                bool* interrupted) {
   const std::size_t n = def.parameters.size();
   if (def.generations == 0) return {std::vector<double>(n, 0.5)};
-  IdentifyObjective objective(residuals, n);
+  const OffsetProjection projection(def, residuals, def.profile_offsets);
+  IdentifyObjective objective(residuals, projection);
+  if (projection.searched().empty()) return {objective.evaluate(0, {}).unit};
   std::vector<Evaluation> history;
   struct Recorder : Objective {   // keeps every evaluation for the best one
     IdentifyObjective& inner;

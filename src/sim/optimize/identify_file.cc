@@ -184,6 +184,11 @@ KeyTable identify_search_table(IdentifyDefinition* def) {
               "least 0.1 of the box from every start before (the lowest end is the result; "
               "one that ends higher is reported as a local minimum)",
               1, 20, &def->starts)};
+  t.bools = {{"profile_offsets",
+              "the global search leaves each channel's offset (on a linear scale) to its "
+              "least-squares value at every point, searching only the other parameters "
+              "(variable projection); the polish fits all together",
+              &def->profile_offsets}};
   t.numbers = {
       {"interval", "", 1.0, {0.0, 1.0, true, true},
        "the level of the parameters' reported intervals", &def->interval},
@@ -261,12 +266,17 @@ std::string IdentifyDefinition::canonical_json() const {
                             // residuals over the channels' noise floors (pamsim 0.4): a
                             // database of an earlier scale does not resume
                             {"residual_scale", "noise_floor"}};
-  // each added only where given, so that an older database (no tensile tests, one start)
-  // resumes as it did
-  if (tensile.empty() && starts == 1) return j.dump();
+  // each added only where given, so that an older database (no tensile tests, one start, no
+  // offset the search could project) resumes as it did
+  const bool offsets = std::any_of(channel_parameters.begin(), channel_parameters.end(),
+                                   [](const ChannelParameter& c) {
+                                     return c.kind == ChannelParameter::Kind::kOffset;
+                                   });
+  if (tensile.empty() && starts == 1 && !offsets) return j.dump();
   nlohmann::json with = j;
   if (!tensile.empty()) with["tensile"] = tensile_json;
   if (starts > 1) with["starts"] = starts;
+  if (offsets) with["profile_offsets"] = profile_offsets;
   return with.dump();
 }
 

@@ -5,8 +5,9 @@
 // Identification file keys (paths relative to the file):
 //   base                scenario file, required
 //   overrides           scenario overrides at every simulation ("key=value" strings)
-//   generations, population, seed, polish_iterations, interval, explained_noise_factor: how
-//                       to search and how to judge, rows of identify_search_table below
+//   generations, population, seed, polish_iterations, starts, profile_offsets, interval,
+//                       explained_noise_factor: how to search and how to judge, rows of
+//                       identify_search_table below
 //   [[parameter]]       key (a scenario key), from < to, scale = "linear" | "log" (from > 0);
 //                       or a recorded channel's sensor, key = "channel.<column>.offset" (in
 //                       the column's unit), ".gain" (> 0) or ".delay_ms" (>= 0, <= 1000):
@@ -85,6 +86,7 @@ struct IdentifyDefinition {
   std::uint64_t seed = 1;
   int polish_iterations = 30;
   int starts = 1;   // Levenberg-Marquardt starts (identify.h: IdentifyResult::starts)
+  bool profile_offsets = true;   // the global search projects the offsets out (identify_offsets.h)
   // the reported intervals' level, and the RMS in noise floors within which a fitted channel
   // is explained (identify_uncertainty.h); neither in canonical_json: neither changes the search
   double interval = 0.95;

@@ -220,6 +220,22 @@ bool IdentifyResiduals::append_recordings(const std::vector<double>& values, std
   return true;
 }
 
+std::vector<double> IdentifyResiduals::offset_slope(const std::string& column) const {
+  std::vector<double> out;
+  for (std::size_t k = 0; k < fitted_.size(); ++k) {   // append_recordings' order
+    const IdentifyRecording& r = def_.recordings[fitted_[k]];
+    const double w = std::sqrt(r.weight);
+    for (std::size_t i = 0; i < r.channels.size(); ++i) {
+      const double slope = r.data.channels[r.channels[i]] == column ? w / scale_[fitted_[k]][i] : 0.0;
+      for (double v : r.data.samples[r.channels[i]]) {
+        if (!std::isnan(v)) out.push_back(slope);
+      }
+    }
+  }
+  out.resize(count_, 0.0);   // the tensile tests' residuals
+  return out;
+}
+
 double judged_floor(const std::vector<double>& samples) {
   return std::max(noise_floor(samples), kResolvedFraction * channel_scale(samples));
 }

@@ -83,6 +83,9 @@ class IdentifyResiduals {
   std::vector<double> at(const std::vector<double>& unit, const char* phase);
   // The parameters' values at `unit`.
   std::vector<double> values_at(const std::vector<double>& unit) const;
+  // d residual / d offset of `column`'s sensor, per residual: sqrt(weight) / floor on the
+  // fitted recordings' samples of `column` (the offset adds to each), 0 elsewhere.
+  std::vector<double> offset_slope(const std::string& column) const;
 
   std::int64_t simulated = 0, cached = 0;   // points simulated, points answered from the db
   // Why the first point that failed failed ("" if none did, or it was stored before).
