@@ -207,7 +207,7 @@ TEST(IdentifyTest, TheShippedExampleLoads) {
   const IdentifyDefinition def = load_identify_definition(
       std::string(PAMSIM_SOURCE_DIR) + "/examples/identify/identify.toml");
   EXPECT_EQ(def.parameters.size(), 5u);
-  EXPECT_EQ(def.candidates.size(), 3u);
+  EXPECT_EQ(def.candidates.size(), 4u) << "ball_drop, reflex_drop, slow_ramp, fast_steps";
   ASSERT_EQ(def.recordings.size(), 3u);
   EXPECT_TRUE(def.recordings[2].held_out);
   EXPECT_EQ(def.recordings[0].data.channels.size(), 5u);
