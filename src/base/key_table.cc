@@ -58,6 +58,7 @@ std::vector<std::string> key_names(const KeyTable& table) {
   for (const NumberRow& row : table.numbers) keys.push_back(row_key(table, row.name));
   for (const TextRow& row : table.texts) keys.push_back(row_key(table, row.name));
   for (const ListRow& row : table.lists) keys.push_back(row_key(table, row.name));
+  for (const NameListRow& row : table.name_lists) keys.push_back(row_key(table, row.name));
   return keys;
 }
 
@@ -114,6 +115,14 @@ void read_key_rows(ConfigReader& in, const KeyTable& table) {
       row.target->push_back(v * row.to_si);
     }
   }
+  for (const NameListRow& row : table.name_lists) {
+    const std::string k = key(row.name);
+    const std::vector<std::string> names = in.get_string_list(k, *row.target);
+    if (!in.has(k)) continue;
+    const std::string problem = name_list_problem(row, names);
+    in.check(problem.empty(), k, problem);
+    *row.target = names;
+  }
 }
 
 namespace {
@@ -131,6 +140,7 @@ KeyTable rows_where(KeyTable table, const std::function<bool(const std::string&)
   filter(&table.ints);
   filter(&table.texts);
   filter(&table.lists);
+  filter(&table.name_lists);
   return table;
 }
 
@@ -173,6 +183,11 @@ void check_key_rows(const KeyTable& table) {
       const std::string problem = "must be " + choices_text(row) + ", got \"" + value + "\"";
       throw InputError(key + " " + problem, {"", key, problem});
     }
+  }
+  for (const NameListRow& row : table.name_lists) {
+    const std::string key = row_key(table, row.name);
+    const std::string problem = name_list_problem(row, *row.target);
+    if (!problem.empty()) throw InputError(key + " " + problem, {"", key, problem});
   }
 }
 
@@ -250,6 +265,13 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
       docs.push_back({row_key(t, row.name), row.unit,
                       row.fallback_doc.empty() ? "[" + values + "]" : row.fallback_doc,
                       list_allowed(row), row.doc});
+    }
+    for (const NameListRow& row : t.name_lists) {
+      std::string names;
+      for (const std::string& n : *row.target) names += (names.empty() ? "\"" : ", \"") + n + "\"";
+      docs.push_back({row_key(t, row.name), "",
+                      row.fallback_doc.empty() ? "[" + names + "]" : row.fallback_doc,
+                      name_list_allowed(row), row.doc});
     }
   }
   return docs;

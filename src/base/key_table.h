@@ -115,6 +115,17 @@ struct ChoiceRow {
   std::function<std::string()> get;              // the name the field holds now
 };
 
+// A list of names (metric sets, bodies), each one of `allowed` (empty: any string), the
+// file's order kept; *target holds the default until the file gives the list.
+struct NameListRow {
+  std::string name;
+  std::vector<std::string> allowed;
+  std::string doc;
+  std::vector<std::string>* target = nullptr;
+  std::string fallback_doc{};   // the default as a reference shows it, where it is not the
+                                // field's one value ("(drop: [...]; else ...)")
+};
+
 // One TOML table of the file.
 struct KeyTable {
   std::string name;   // "regulator"; "" for the file's top-level keys
@@ -125,6 +136,7 @@ struct KeyTable {
   std::vector<TextRow> texts{};
   std::vector<ListRow> lists{};
   bool optional = false;   // the file may leave the whole table out (its required rows with it)
+  std::vector<NameListRow> name_lists{};
 };
 
 class ConfigReader;
@@ -175,7 +187,7 @@ void check_key_rows(const KeyTable& table);
 // A row's key as a file writes it: "<table>.<name>", or "<name>" in the top-level table "".
 std::string row_key(const KeyTable& table, const std::string& name);
 // Every row's key, in the reader's order (choices, true/false keys, integers, numbers, texts,
-// lists).
+// lists, name lists).
 std::vector<std::string> key_names(const KeyTable& table);
 
 // A field's SI value in its row's unit: the shortest decimal of 15 to 17 significant digits

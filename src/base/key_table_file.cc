@@ -74,6 +74,21 @@ void read_list(const std::string& path, const std::string& key, const ListRow& r
   *row.target = std::move(values);
 }
 
+void read_name_list(const std::string& path, const std::string& key, const NameListRow& row,
+                    const toml::node& node) {
+  const toml::array* list = node.as_array();
+  if (list == nullptr) throw file_key_error(path, key, "must be " + name_list_allowed(row));
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const toml::node& item = *list->get(i);
+    if (!item.is_string()) throw file_key_error(path, key, "[" + std::to_string(i) + "] must be a string");
+    names.push_back(*item.value<std::string>());
+  }
+  const std::string problem = name_list_problem(row, names);
+  if (!problem.empty()) throw file_key_error(path, key, problem);
+  *row.target = std::move(names);
+}
+
 // One key of a table: read by its row, or refused with the keys the table has.
 void read_key(const std::string& path, const KeyTable& table, const std::string& name,
               const toml::node& node) {
@@ -111,6 +126,9 @@ void read_key(const std::string& path, const KeyTable& table, const std::string&
   for (const ListRow& row : table.lists) {
     if (row.name == name) return read_list(path, key, row, node);
   }
+  for (const NameListRow& row : table.name_lists) {
+    if (row.name == name) return read_name_list(path, key, row, node);
+  }
   std::string allowed;
   const auto list = [&](const auto& rows) {
     for (const auto& row : rows) allowed += (allowed.empty() ? "" : ", ") + row.name;
@@ -121,6 +139,7 @@ void read_key(const std::string& path, const KeyTable& table, const std::string&
   list(table.ints);
   list(table.texts);
   list(table.lists);
+  list(table.name_lists);
   throw file_key_error(path, key, "unknown key (allowed: " + allowed + ")");
 }
 

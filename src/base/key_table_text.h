@@ -6,14 +6,16 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "base/format.h"
 #include "base/key_table.h"
 
 namespace pamsim::key_table_text {
 
-// "\"a\" | \"b\"": the names a choice allows, as TOML strings
-inline std::string choices_text(const ChoiceRow& row) {
+// "\"a\" | \"b\"": the names a choice (or a name list) allows, as TOML strings
+template <typename Row>
+std::string choices_text(const Row& row) {
   std::string allowed;
   for (const std::string& a : row.allowed) {
     allowed += (allowed.empty() ? "\"" : " | \"") + a + "\"";
@@ -31,6 +33,28 @@ inline bool allows(const ChoiceRow& row, const std::string& value) {
     if (value == a) return true;
   }
   return false;
+}
+
+// A name list's item: one of its allowed names, or any where it lists none.
+inline bool allows(const NameListRow& row, const std::string& value) {
+  for (const std::string& a : row.allowed) {
+    if (value == a) return true;
+  }
+  return row.allowed.empty();
+}
+
+// "\"drop\" is not allowed (allowed: ...)" for an item a name list does not allow, or ""
+inline std::string name_list_problem(const NameListRow& row,
+                                     const std::vector<std::string>& names) {
+  for (const std::string& n : names) {
+    if (!allows(row, n)) return "holds \"" + n + "\", allowed " + choices_text(row);
+  }
+  return "";
+}
+
+// "a list of \"a\" | \"b\"" or "a list of strings"
+inline std::string name_list_allowed(const NameListRow& row) {
+  return "a list of " + (row.allowed.empty() ? std::string("strings") : choices_text(row));
 }
 
 // "must be in (0, inf) mm, got -1"

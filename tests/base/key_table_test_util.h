@@ -66,6 +66,7 @@ inline std::map<std::string, int> row_keys(const std::vector<KeyTable>& tables) 
     for (const ChoiceRow& r : t.choices) ++rows[row_key(t, r.name)];
     for (const TextRow& r : t.texts) ++rows[row_key(t, r.name)];
     for (const ListRow& r : t.lists) ++rows[row_key(t, r.name)];
+    for (const NameListRow& r : t.name_lists) ++rows[row_key(t, r.name)];
   }
   return rows;
 }

@@ -59,7 +59,8 @@ void read_condition(ConfigReader& in, const Scenario& sc, EventSpec* e) {
                  format_value(c.at_s));
   } else if (in.has(key + ".contact")) {
     c.kind = ConditionKind::kContact;
-    const std::vector<std::string> bodies = in.get_string_list(key + ".contact", {});
+    read_key_rows(in, rows_named(table, {"contact"}));
+    const std::vector<std::string>& bodies = thresholds.contact;
     in.check(bodies.size() == 2, key + ".contact", "must name two bodies");
     c.body_a = bodies[0];
     c.body_b = bodies[1];

@@ -115,8 +115,9 @@ void read_metrics(ConfigReader& in, Scenario* sc, bool has_drop) {
     defaults = {"tracking", "length_estimate"};
     if (sc->controller_has_reflexes()) defaults.push_back("reflex");
   }
-  sc->metrics = in.get_string_list("metrics", defaults);
-  make_metric_sets(*sc);   // throws "<file>: metrics ..." for an unknown set or missing events
+  sc->metrics = defaults;
+  read_key_rows(in, metrics_key_table(sc));
+  make_metric_sets(*sc);   // throws "<file>: metrics ..." for a set whose events are missing
   // a line's working load is read only by the tension set: refused where it would be ignored
   const bool tension = std::count(sc->metrics.begin(), sc->metrics.end(), "tension") > 0;
   for (const MuscleSpec& m : sc->muscles) {

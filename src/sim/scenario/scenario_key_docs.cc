@@ -42,10 +42,9 @@ bool matches(const std::string& pattern, const std::string& key) {
 std::vector<KeyDoc> model_docs() {
   Scenario scenario;   // the rows' defaults are the struct's own
   std::vector<KeyDoc> docs =
-      key_table_docs({top_level_key_table(&scenario), model_key_table(&scenario)});
+      key_table_docs({top_level_key_table(&scenario), metrics_key_table(&scenario),
+                      model_key_table(&scenario)});
   const std::vector<KeyDoc> by_hand = {
-      {"metrics", "", "(drop: [\"drop\", \"reflex\", \"length_estimate\"]; else tracking, length_estimate, reflex)",
-       "list of \"drop\", \"reflex\", \"length_estimate\", \"tracking\", \"tension\", \"sensors\", \"events\"", "the metric sets in summary.json"},
       {"pneumatics.<table>.<field>", "(the file's)", "(model.pneumatics')", "as in the pneumatics file (pamsim keys --pneumatics)", "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index"},
       {"model.<actuator>_params", "", "(none)", "path", "shorthand of muscles.<actuator>.params (pamsim 0.1 files)"},
       {"pressure.<actuator>_MPa", "MPa", "(none)", "[0, controller.p_max_MPa]", "shorthand of a constant muscles.<actuator>.command"},
@@ -100,13 +99,7 @@ std::vector<KeyDoc> body_and_hold_docs() {
 std::vector<KeyDoc> event_docs() {
   EventSpec event;
   EventThresholds thresholds;
-  std::vector<KeyDoc> docs =
-      key_table_docs({event_key_table(&event), event_when_key_table(&event, &thresholds)});
-  const std::vector<KeyDoc> by_hand = {
-      {"events.<event>.when.contact", "", "(one when.* is required)", "[body_a, body_b]", "fire when the two bodies touch"},
-  };
-  docs.insert(docs.end(), by_hand.begin(), by_hand.end());
-  return docs;
+  return key_table_docs({event_key_table(&event), event_when_key_table(&event, &thresholds)});
 }
 
 // valve.*'s numbers and choices: the pneumatics file's rows (scenario_key_tables.h), each

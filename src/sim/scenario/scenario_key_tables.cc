@@ -10,6 +10,7 @@
 #include "pneumatics/chamber_ode.h"
 #include "pneumatics/pneumatic_params.h"
 #include "reflex/controller_registry.h"
+#include "sim/core/metrics.h"
 
 namespace pamsim {
 
@@ -17,6 +18,15 @@ KeyTable top_level_key_table(Scenario* scenario) {
   KeyTable t{"", {}, {}, {}};
   t.ints = {int_row("seed", "the trial's random seed (sensor noise); trial k of --trials uses seed + k",
                     0, std::numeric_limits<std::int64_t>::max(), &scenario->seed)};
+  return t;
+}
+
+KeyTable metrics_key_table(Scenario* scenario) {
+  KeyTable t{"", {}, {}, {}};
+  t.name_lists = {{"metrics", metric_set_names(), "the metric sets in summary.json",
+                   &scenario->metrics,
+                   "(drop: [\"drop\", \"reflex\", \"length_estimate\"]; else [\"tracking\", "
+                   "\"length_estimate\"], and \"reflex\" with a reflex controller)"}};
   return t;
 }
 
@@ -188,6 +198,8 @@ KeyTable event_when_key_table(EventSpec* event, EventThresholds* thresholds) {
        nullptr, &thresholds->below_z_m, true}};
   t.texts = {{"joint", "fire on this joint's position (with one threshold)", &event->when.joint},
              {"body", "fire on this body's height (with below_z_m)", &event->when.body_a}};
+  t.name_lists = {{"contact", {}, "fire when the two bodies touch: [body_a, body_b]",
+                   &thresholds->contact, "(one when.* is required)"}};
   return t;
 }
 

@@ -24,6 +24,11 @@ inline constexpr double kDefaultMaxSteps = 1e7;
 // The scenario's own top-level keys that are values (seed), bound to `scenario`.
 KeyTable top_level_key_table(Scenario* scenario);
 
+// `metrics`, the metric sets of a trial's summary (sim/core/metrics.h: metric_set_names),
+// bound to `scenario`'s list; its default depends on the experiment, so the reader sets it
+// after the drop and the controller are read.
+KeyTable metrics_key_table(Scenario* scenario);
+
 // [sim], bound to `scenario`'s time step, duration and control rate and to `max_steps` (read
 // to check the trial's length, not kept).
 KeyTable sim_key_table(Scenario* scenario, double* max_steps);
@@ -86,12 +91,13 @@ KeyTable muscle_line_key_table(MuscleLineKeys* line, MuscleSpec* muscle);
 
 // events.<event> and events.<event>.when (placeholders a reader replaces with the event's
 // key), bound to `event`; `thresholds` holds the when.* numbers that set its condition's kind
-// and threshold (below_deg, above_deg, below_mm, above_mm, below_z_m, SI). A reader reads
-// only the rows its action and its condition use (mass_kg with add_mass, a threshold with
-// when.joint), so a key given beside the wrong ones is refused as unknown; when.contact (two
-// names) is read by hand.
+// and threshold (below_deg, above_deg, below_mm, above_mm, below_z_m, SI) and when.contact's
+// bodies. A reader reads only the rows its action and its condition use (mass_kg with
+// add_mass, a threshold with when.joint), so a key given beside the wrong ones is refused as
+// unknown.
 struct EventThresholds {
   std::optional<double> below_rad, above_rad, below_m, above_m, below_z_m;
+  std::vector<std::string> contact;   // when.contact's two bodies
 };
 KeyTable event_key_table(EventSpec* event);
 KeyTable event_when_key_table(EventSpec* event, EventThresholds* thresholds);
