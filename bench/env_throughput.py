@@ -44,12 +44,25 @@ def vector_steps_per_s(n: int) -> float:
     return rate
 
 
+def env_counts(args) -> list:
+    """The environment counts asked for (default 1, 4, 16), or exit with one line."""
+    try:
+        counts = [int(a) for a in args] or [1, 4, 16]
+    except ValueError:
+        counts = []
+    if not counts or min(counts) < 1:
+        sys.exit(f"env_throughput.py: the environment counts must be whole numbers >= 1, got "
+                 f"{' '.join(args)}")
+    return counts
+
+
+counts = env_counts(sys.argv[1:])
 scenario = str(data_dir() / "scenarios" / "drop_mass.toml")
 py = min(env_step_s() for _ in range(3))
 cxx = min(_pamsim._cxx_step_s(scenario, {"sim.duration_s": 3.0}, STEPS) for _ in range(3))
 print(f"pamsim {pamsim.__version__}, gymnasium {gymnasium.__version__}")
 print(f"env step {py * 1e6:.0f} us, C++ control period {cxx * 1e6:.0f} us, ratio {py / cxx:.2f}")
 one = max(vector_steps_per_s(1) for _ in range(3))
-for n in [int(a) for a in sys.argv[1:]] or [1, 4, 16]:
+for n in counts:
     rate = one if n == 1 else max(vector_steps_per_s(n) for _ in range(3))
     print(f"ThreadedVectorEnv {n:2d} envs: {rate:7.0f} env steps/s, speed-up {rate / one:.2f}")
