@@ -236,8 +236,9 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
                       "true | false", row.doc});
     }
     for (const IntRow& row : t.ints) {
-      docs.push_back({row_key(t, row.name), "", std::to_string(row.get()), int_range(row),
-                      row.doc});
+      docs.push_back({row_key(t, row.name), "",
+                      row.fallback_doc.empty() ? std::to_string(row.get()) : row.fallback_doc,
+                      int_range(row), row.doc});
     }
     for (const NumberRow& row : t.numbers) {
       const double* si = field(row);

@@ -62,6 +62,8 @@ struct IntRow {
   std::int64_t hi = 0;
   std::function<void(std::int64_t)> set;   // sets the field
   std::function<std::int64_t()> get;       // the field's value now
+  std::string fallback_doc{};   // the default as a reference shows it, where it is not the
+                                // field's one value ("(8, more for many parameters)")
 };
 
 // An IntRow bound to an integer field of any type whose range holds [lo, hi].

@@ -3,7 +3,8 @@
 // the model's reading plus a constant is the mean of recorded minus simulated (the least-
 // squares constant), clamped to its range; and on an arm whose encoder reads 1.2 deg high, a
 // short CMA-ES ends more than 10x lower with the offset projected than searching it, the
-// offset at its least-squares value; a stopped run resumed is the uninterrupted one.
+// offset at its least-squares value; a stopped run resumed is the uninterrupted one; and the
+// default population counts the parameters CMA-ES moves.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -72,7 +73,7 @@ TEST(IdentifyOffsetsTest, TheProjectedOffsetIsTheMeanDifferenceWithinItsRange) {
     fs::remove(dir / "id.db");
     IdentifyDb db = IdentifyDb::create((dir / "id.db").string(), def);
     IdentifyResiduals residuals(def, db, 2);
-    const OffsetProjection projection(def, residuals, true);
+    const OffsetProjection projection(def, residuals);
     ASSERT_EQ(projection.searched(), std::vector<std::size_t>{0}) << "the wall alone is searched";
     const std::vector<double> unit = projection.embed({0.4});   // a wall of 2.8 mm
     EXPECT_EQ(unit, (std::vector<double>{0.4, 0.5}));
@@ -85,7 +86,9 @@ TEST(IdentifyOffsetsTest, TheProjectedOffsetIsTheMeanDifferenceWithinItsRange) {
       EXPECT_EQ(projected[1], 1.0) << "clamped to its bound";
     }
     // off: the offset is searched like any parameter
-    EXPECT_EQ(OffsetProjection(def, residuals, false).searched().size(), 2u);
+    IdentifyDefinition off = def;
+    off.profile_offsets = false;
+    EXPECT_EQ(OffsetProjection(off, residuals).searched().size(), 2u);
   }
 }
 
@@ -105,6 +108,28 @@ TEST(IdentifyOffsetsTest, AShortGlobalSearchEndsLowerWithTheOffsetProjected) {
       << projected.cost_global << " against " << searched.cost_global;
   const std::vector<double> values = parameter_values(on, projected.unit);
   EXPECT_NEAR(values[1], mean_difference(on, values), 1e-9) << "the least-squares offset";
+}
+
+// CMA-ES's population where the file gives none: the larger of 8 and Hansen's
+// 4 + floor(3 ln m), m the parameters it moves (the projected offsets not counted).
+TEST(IdentifyOffsetsTest, TheDefaultPopulationGrowsWithTheParametersSearched) {
+  const auto with = [](int scenario_keys, int offsets, bool profile) {
+    IdentifyDefinition def;
+    def.profile_offsets = profile;
+    for (int i = 0; i < scenario_keys + offsets; ++i) {
+      def.parameters.push_back({"k" + std::to_string(i), 0.0, 1.0, false});
+      ChannelParameter c;
+      if (i >= scenario_keys) c = {ChannelParameter::Kind::kOffset, "angle_deg"};
+      def.channel_parameters.push_back(c);
+    }
+    return default_population(def);
+  };
+  EXPECT_EQ(with(5, 0, true), 8u) << "4 + floor(3 ln 5) = 8";
+  EXPECT_EQ(with(1, 3, true), 8u) << "never below 8";
+  EXPECT_EQ(with(7, 3, true), 9u) << "4 + floor(5.84)";
+  EXPECT_EQ(with(10, 10, true), 10u) << "the ten offsets set aside: 4 + floor(6.91)";
+  EXPECT_EQ(with(10, 10, false), 12u) << "searched too: 4 + floor(3 ln 20) = 4 + 8";
+  EXPECT_EQ(with(0, 3, true), 8u) << "nothing to search";
 }
 
 // Each search point is two stored residual vectors (the search's, the projected): a run

@@ -89,7 +89,7 @@ std::vector<std::vector<double>> global_search(const IdentifyDefinition& def,
                                                bool* interrupted) {
   const std::size_t n = def.parameters.size();
   if (def.generations == 0) return {std::vector<double>(n, 0.5)};
-  const OffsetProjection projection(def, residuals, def.profile_offsets);
+  const OffsetProjection projection(def, residuals);
   IdentifyObjective objective(residuals, projection);
   if (projection.searched().empty()) return {objective.evaluate(0, {}).unit};
   std::vector<Evaluation> history;

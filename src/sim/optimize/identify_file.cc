@@ -184,6 +184,9 @@ KeyTable identify_search_table(IdentifyDefinition* def) {
               "least 0.1 of the box from every start before (the lowest end is the result; "
               "one that ends higher is reported as a local minimum)",
               1, 20, &def->starts)};
+  t.ints[1].fallback_doc =
+      "(the larger of 8 and 4 + floor(3 ln m), m the parameters CMA-ES moves: the offsets "
+      "it sets aside not counted)";
   t.bools = {{"profile_offsets",
               "the global search leaves each channel's offset (on a linear scale) to its "
               "least-squares value at every point, searching only the other parameters "
@@ -197,6 +200,19 @@ KeyTable identify_search_table(IdentifyDefinition* def) {
        "floors (the model's own noise and the recording's make sqrt(2))",
        &def->explained_noise_factor}};
   return t;
+}
+
+unsigned default_population(const IdentifyDefinition& def) {
+  std::size_t searched = 0;
+  for (std::size_t k = 0; k < def.parameters.size(); ++k) searched += !def.offset_projected(k);
+  if (searched == 0) return 8;
+  const double hansen = 4.0 + std::floor(3.0 * std::log(static_cast<double>(searched)));
+  return std::max(8u, static_cast<unsigned>(hansen));
+}
+
+bool IdentifyDefinition::offset_projected(std::size_t k) const {
+  return profile_offsets && channel_parameters[k].kind == ChannelParameter::Kind::kOffset &&
+         !parameters[k].log;
 }
 
 std::vector<std::string> IdentifyDefinition::overrides_at(const std::vector<double>& values) const {
@@ -307,11 +323,13 @@ IdentifyDefinition load_identify_definition(const std::string& path) {
   def.base_path = std::move(base.path);
   def.base_text = std::move(base.text);
   def.overrides = std::move(base.overrides);
+  const bool population_given = in.has("population");
   read_key_rows(in, identify_search_table(&def));
   def.parameters = read_search_parameters(in, {"seed"}, "a recording's noise is its own");
   read_recordings(in, &def);
   read_tensile(in, &def);
   read_channel_parameters(in, &def);
+  if (!population_given) def.population = default_population(def);
   read_candidates(in, &def);
   const bool fitted = std::any_of(def.recordings.begin(), def.recordings.end(),
                                   [](const IdentifyRecording& r) { return !r.held_out; });

@@ -111,6 +111,9 @@ struct IdentifyDefinition {
                                 const std::vector<double>& values) const;
   // The parameters' values that change the trials (the channel parameters' left out).
   std::vector<double> scenario_values(const std::vector<double>& values) const;
+  // Whether the global search sets parameter `k` aside, at its least-squares value at each
+  // point (identify_offsets.h): with profile_offsets, a channel's offset on a linear scale.
+  bool offset_projected(std::size_t k) const;
   // Everything that decides the result, as canonical JSON (stored; a resume must match):
   // the settings, parameters and every recording's name, set, channels, weight, role and
   // samples.
@@ -126,6 +129,12 @@ std::vector<std::pair<std::string, std::string>> identify_input_paths(const Iden
 // default (the struct's own) and meaning; the reader, `pamsim keys --identify` and the tests
 // read them.
 KeyTable identify_search_table(IdentifyDefinition* def);
+
+// The CMA-ES population where the file gives none: the larger of 8 and CMA-ES's default
+// 4 + floor(3 ln m) (Hansen, "The CMA Evolution Strategy: A Tutorial", 2016), m the
+// parameters the global search moves (the projected offsets aside), so that a search of many
+// parameters draws more points per generation.
+unsigned default_population(const IdentifyDefinition& def);
 
 // Reads and validates the file and its recordings. Throws InputError "<file>: <key> <problem>"
 // or the recording's own "<recording>: line <n>: <problem>".

@@ -6,15 +6,14 @@
 namespace pamsim {
 
 OffsetProjection::OffsetProjection(const IdentifyDefinition& def,
-                                   const IdentifyResiduals& residuals, bool enabled)
+                                   const IdentifyResiduals& residuals)
     : def_(def) {
   for (std::size_t k = 0; k < def.parameters.size(); ++k) {
-    const ChannelParameter& c = def.channel_parameters[k];
-    if (!enabled || c.kind != ChannelParameter::Kind::kOffset || def.parameters[k].log) {
+    if (!def.offset_projected(k)) {
       searched_.push_back(k);
       continue;
     }
-    Projected p{k, residuals.offset_slope(c.column), 0.0};
+    Projected p{k, residuals.offset_slope(def.channel_parameters[k].column), 0.0};
     for (double s : p.slope) p.slope_squares += s * s;
     if (p.slope_squares > 0.0) {
       projected_.push_back(std::move(p));

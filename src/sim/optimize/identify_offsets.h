@@ -20,8 +20,8 @@ namespace pamsim {
 
 class OffsetProjection {
  public:
-  // With `enabled` false (the file's profile_offsets), nothing is projected.
-  OffsetProjection(const IdentifyDefinition& def, const IdentifyResiduals& residuals, bool enabled);
+  // The offsets def.offset_projected names (none without the file's profile_offsets).
+  OffsetProjection(const IdentifyDefinition& def, const IdentifyResiduals& residuals);
 
   // The parameters the global search moves (their indices, in order): every one but the
   // projected offsets.
