@@ -6,7 +6,6 @@
 // field; and what joins keys (the steps a trial takes, a drop before the end) is still refused.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -335,51 +334,6 @@ TEST(EventKeysTest, EveryNumberRowRefusesABadValueNamingTheKey) {
   const std::vector<std::string> mark = {"events.e.when.at_s=0.5", "events.e.mass_kg=0.1"};
   EXPECT_EQ(refusal_parts([&] { load_scenario(kDropMass, mark); }, "mass_kg beside mark").key,
             "events.e.mass_kg");
-}
-
-// The scenario's name lists (metrics, events.<event>.when.contact): a name the row does not
-// allow, an item that is no string and a value that is no list are refused naming the file
-// and the key; the names reach the scenario; the reference lists each row once.
-TEST(NameListKeysTest, MetricsAndContactRefuseTheirBadValuesAndReachTheScenario) {
-  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
-      {"metrics", {}},
-      {"events.e.when.contact", {"events.e.action=\"mark\""}}};
-  for (const auto& [key, context] : cases) {
-    for (const char* bad : {"[\"drop\", 3]", "\"drop\"", "7"}) {
-      std::vector<std::string> set = context;
-      set.push_back(key + "=" + bad);
-      const InputErrorParts parts = refusal_parts([&] { load_scenario(kDropMass, set); }, key + bad);
-      EXPECT_EQ(parts.key, key) << bad;
-      EXPECT_EQ(parts.file, kDropMass) << bad;
-    }
-  }
-  const InputErrorParts unknown = refusal_parts(
-      [&] { load_scenario(kDropMass, {"metrics=[\"drop\", \"speed\"]"}); }, "metrics speed");
-  EXPECT_EQ(unknown.key, "metrics");
-  EXPECT_NE(unknown.problem.find("holds \"speed\", allowed \"drop\""), std::string::npos)
-      << unknown.problem;
-  EXPECT_EQ(load_scenario(kDropMass, {"metrics=[\"tracking\", \"drop\"]"}).metrics,
-            (std::vector<std::string>{"tracking", "drop"}));
-  const Scenario touch = load_scenario(
-      kDropMass, {"events.e.action=\"mark\"", "events.e.when.contact=[\"ball\", \"basket\"]"});
-  const auto e = std::find_if(touch.events.begin(), touch.events.end(),
-                              [](const EventSpec& x) { return x.key == "events.e"; });
-  ASSERT_NE(e, touch.events.end());
-  EXPECT_EQ(e->when.kind, ConditionKind::kContact);
-  EXPECT_EQ(e->when.body_a, "ball");
-  EXPECT_EQ(e->when.body_b, "basket");
-  EXPECT_EQ(refusal_parts([&] {
-              load_scenario(kDropMass, {"events.e.action=\"mark\"",
-                                        "events.e.when.contact=[\"ball\"]"});
-            }, "one body").key,
-            "events.e.when.contact");
-  Scenario sc;
-  EventSpec event;
-  EventThresholds thresholds;
-  const std::map<std::string, int> rows =
-      row_keys({metrics_key_table(&sc), event_when_key_table(&event, &thresholds)});
-  EXPECT_EQ(rows.at("metrics"), 1);
-  EXPECT_EQ(rows.at("events.<event>.when.contact"), 1);
 }
 
 }  // namespace

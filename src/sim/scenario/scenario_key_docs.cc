@@ -53,9 +53,7 @@ std::vector<KeyDoc> model_docs() {
       {"muscles.<actuator>.plant.file", "", "(required in the table form)", "path to a plant file", "the plant file whose fields muscles.<actuator>.plant.<table>.<field> change"},
       {"muscles.<actuator>.plant.<table>.<field>", "(the file's)", "(the plant file's)", "as in the plant file (pam_actuator/plant_params.h)", "a field of the plant file, e.g. geometry.wall_thickness_mm, bladder.diameter_mm"},
       {"muscles.<actuator>.plant.<table>.<stroke>.<field>", "(the file's)", "(the plant file's)", "as in the plant file (pam_actuator/plant_params.h)", "a field of the plant file's friction strokes, e.g. friction.extension.A0_mm2"},
-      {"muscles.<actuator>.label", "", "(the actuator's name)", "no spaces, commas or quotes; unique", "the muscle's name in columns and metrics"},
       {"muscles.<actuator>.line", "", "(none)", "\"equilibrium\"", "solve the line length so the start is static"},
-      {"muscles.<actuator>.spans", "", "(not checked)", "list of joints of the model", "the joints its tendon must cross: refused if its path misses one (no moment arm at the start)"},
   };
   docs.insert(docs.end(), by_hand.begin(), by_hand.end());
   return docs;
@@ -84,15 +82,15 @@ std::vector<KeyDoc> schedule_docs() {
   return docs;
 }
 
-// bodies, holds and the muscles' lines: their rows (scenario_key_tables.h)
+// the muscles' names and lines, bodies and holds: their rows (scenario_key_tables.h)
 std::vector<KeyDoc> body_and_hold_docs() {
   BodyKeys body;
   HoldSpec hold;
   std::vector<double> position;
   MuscleLineKeys line;
   MuscleSpec muscle;
-  return key_table_docs({muscle_line_key_table(&line, &muscle), body_key_table(&body),
-                         hold_key_table(&hold, &position)});
+  return key_table_docs({muscle_name_key_table(&muscle), muscle_line_key_table(&line, &muscle),
+                         body_key_table(&body), hold_key_table(&hold, &position)});
 }
 
 // events

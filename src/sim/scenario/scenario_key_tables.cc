@@ -149,6 +149,18 @@ KeyTable muscle_line_key_table(MuscleLineKeys* line, MuscleSpec* muscle) {
   return t;
 }
 
+KeyTable muscle_name_key_table(MuscleSpec* muscle) {
+  KeyTable t{"muscles.<actuator>", {}, {}, {}};
+  t.texts = {{"label",
+              "the muscle's name in columns and metrics: no spaces, commas or quotes; unique",
+              &muscle->label, "(the actuator's name)"}};
+  t.name_lists = {{"spans", {},
+                   "the joints of the model its tendon must cross: refused if its path misses "
+                   "one (no moment arm at the start)",
+                   &muscle->spans, "(not checked)"}};
+  return t;
+}
+
 KeyTable event_key_table(EventSpec* event) {
   static const std::vector<std::pair<std::string, EventAction>> kActions = {
       {"mark", EventAction::kMark},

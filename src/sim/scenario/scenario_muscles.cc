@@ -211,13 +211,16 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
   // the physical plant, when it is not the estimator's law
   if (in.has(m.key + ".plant")) read_muscle_plant(in, &m);
   const bool legacy = params_key != m.key + ".params";
-  m.label = in.get_string(m.key + ".label", legacy ? legacy_label(name) : name);
+  m.label = legacy ? legacy_label(name) : name;
+  KeyTable names = muscle_name_key_table(&m);
+  names.name = m.key;
+  read_key_rows(in, rows_named(names, {"label"}));
   in.check(!m.label.empty() && m.label.find_first_of(" ,\"") == std::string::npos, m.key + ".label",
            "must be a non-empty name without spaces, commas or quotes");
 
   read_muscle_command(in, sc, name, &m);
   read_muscle_line(in, name, calibration, lines_needed, &m);
-  m.spans = in.get_string_list(m.key + ".spans", {});
+  read_key_rows(in, rows_named(names, {"spans"}));
   return m;
 }
 
