@@ -53,7 +53,8 @@ Enum parse_name(const EnumName<Enum> (&names)[N], const std::string& name,
 }
 
 // A key whose value names one of an enum's values: a ChoiceRow bound to `field`, its allowed
-// names the enum's one table's.
+// names the enum's one table's. The row keeps a reference to `names`, which must therefore
+// have static storage (a constexpr table at namespace scope, as every enum's is).
 template <typename Enum, std::size_t N>
 ChoiceRow enum_choice_row(std::string key, const EnumName<Enum> (&names)[N], std::string doc,
                           Enum* field) {
