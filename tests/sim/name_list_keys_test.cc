@@ -73,8 +73,8 @@ TEST(MuscleNameKeysTest, LabelAndSpansRefuseTheirBadValuesAndReachTheMuscle) {
            {"muscles.agonist.label", "1"}, {"muscles.agonist.label", "true"},
            {"muscles.agonist.spans", "\"shoulder\""}, {"muscles.agonist.spans", "[\"shoulder\", 2]"},
            {"muscles.agonist.label", "\"a b\""}}) {
-    const InputErrorParts parts =
-        refusal_parts([&] { load_scenario(kDropMass, {key + "=" + bad}); }, key + bad);
+    const std::string set = key + "=" + bad;   // a structured binding is no lambda capture in C++17
+    const InputErrorParts parts = refusal_parts([&] { load_scenario(kDropMass, {set}); }, set);
     EXPECT_EQ(parts.key, key) << bad;
     EXPECT_EQ(parts.file, kDropMass) << bad;
   }
