@@ -4,6 +4,7 @@
 // range.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -29,21 +30,16 @@ inline std::string int_range(const IntRow& row) {
 }
 
 inline bool allows(const ChoiceRow& row, const std::string& value) {
-  for (const std::string& a : row.allowed) {
-    if (value == a) return true;
-  }
-  return false;
+  return std::find(row.allowed.begin(), row.allowed.end(), value) != row.allowed.end();
 }
 
 // A name list's item: one of its allowed names, or any where it lists none.
 inline bool allows(const NameListRow& row, const std::string& value) {
-  for (const std::string& a : row.allowed) {
-    if (value == a) return true;
-  }
-  return row.allowed.empty();
+  return row.allowed.empty() ||
+         std::find(row.allowed.begin(), row.allowed.end(), value) != row.allowed.end();
 }
 
-// "\"drop\" is not allowed (allowed: ...)" for an item a name list does not allow, or ""
+// "holds \"x\", allowed \"a\" | \"b\"" for the first item a name list does not allow, or ""
 inline std::string name_list_problem(const NameListRow& row,
                                      const std::vector<std::string>& names) {
   for (const std::string& n : names) {
