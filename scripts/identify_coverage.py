@@ -120,8 +120,10 @@ def identify(pamsim, path, threads):
     made_from = os.path.join(out, "identify.toml")
     with open(path) as f:
         text = f.read()
-    if os.path.exists(made_from) and open(made_from).read() != text:
-        shutil.rmtree(out)
+    if os.path.exists(made_from):
+        with open(made_from) as f:
+            if f.read() != text:
+                shutil.rmtree(out)
     if os.path.exists(os.path.join(out, "identify.csv")):
         return out
     os.makedirs(out, exist_ok=True)
