@@ -3,17 +3,21 @@
 // silicone band as the Yeoh law's nominal stress at stretch 4 (0.87 MPa with C20 = 0, 5.1 MPa
 // with Elastosil M4601's 0.02 MPa; Dragon Skin 30's 1.55 MPa between), the board's thickness
 // as its surface stress at the gauge under the calibration's 50 N (20 and 5 MPa), and the
-// board's creep bracket as about 0.05 within 100 s.
+// board's creep bracket as about 0.05 within 100 s, and the lines' pre-tension up to the
+// break load of the strongest line bracketed (50 lb) at the reaching task's peak pull.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <string>
 
 #include "base/config_reader.h"
+#include "base/format.h"
 #include "pam_actuator/avbdl.h"
 #include "pam_actuator/plant_params.h"
 #include "sensing/findley_creep.h"
 #include "sensing/gauge_hardware.h"
+#include "sim/core/trial.h"
+#include "sim/scenario/scenario_file.h"
 #include "sim/test_paths.h"
 #include "sim/validate/length_estimation.h"
 #include "sim/validate/reaching.h"
@@ -71,6 +75,22 @@ TEST(BracketSourcesTest, TheBoardsCreepBracketTopsAtAboutFivePercentWithinAHundr
   EXPECT_EQ(b.from, 0.0);
   EXPECT_NEAR(findley_creep({0.24, b.to}, 100.0), 0.05, 0.005);
   EXPECT_NEAR(findley_creep({0.24, b.to}, 10.0), 0.028, 0.003);
+}
+
+TEST(BracketSourcesTest, TheLinesPretensionTopsWhereTheStrongestLineBreaks) {
+  const ReachingValidationSpec spec = load_reaching_validation(kScenarios + "validate_reaching.toml");
+  const Bracket& b = bracket_named(spec.brackets, "lines' pre-tension");
+  const Scenario sc = load_scenario(
+      spec.scenario_file, {"model.antagonist_deformation_mm=" + format_shortest(b.to)});
+  const TrialResult r = run_trial(load_trial_model(sc), sc, 1);
+  const std::size_t force = r.trajectory.column("force_anta_N");
+  double peak = 0.0;
+  for (std::size_t i = 0; i < r.trajectory.rows(); ++i) {
+    peak = std::max(peak, r.trajectory.at(i, force));
+  }
+  const double fifty_lb_n = 50 * 0.45359237 * 9.80665;   // 222.4 N
+  EXPECT_NEAR(peak, fifty_lb_n, 0.01 * fifty_lb_n);
+  EXPECT_LE(b.to, 20.0) << "within the tensile test's 20 mm, over which the estimator is fitted";
 }
 
 }  // namespace

@@ -15,17 +15,17 @@ namespace {
 // pre-deformation <= 0, or a joint that is not a hinge.
 void check_calibration_request(const TrialModel& tm, const CalibrationRequest& req) {
   if (!(std::fabs(req.start_angle_rad) < units::kPi / 2)) {
-    throw InputError("calibrate: --angle-deg must be within (-90, 90), got " +
+    throw InputError(req.where + ": --angle-deg must be within (-90, 90), got " +
                      format_value(units::rad_to_deg(req.start_angle_rad)));
   }
   if (!(req.pressure_agonist_pa >= 0 && req.pressure_antagonist_pa >= 0)) {
-    throw InputError("calibrate: pressures must be >= 0 MPa");
+    throw InputError(req.where + ": pressures must be >= 0 MPa");
   }
   if (!(req.antagonist_deformation_m > 0)) {
-    throw InputError("calibrate: --antagonist-deformation-mm must be > 0, got " +
+    throw InputError(req.where + ": --antagonist-deformation-mm must be > 0, got " +
                      format_value(units::m_to_mm(req.antagonist_deformation_m)));
   }
-  if (!tm.joint.hinge) throw InputError("calibrate: joint '" + tm.joint.name + "' is not a hinge");
+  if (!tm.joint.hinge) throw InputError(req.where + ": joint '" + tm.joint.name + "' is not a hinge");
 }
 
 }  // namespace
@@ -65,12 +65,18 @@ ArmCalibration solve_calibration(const TrialModel& tm, const Scenario& sc, const
   const double p_anta = req.pressure_antagonist_pa;
   const double l_anta = plant_free_length(m_anta, p_anta) + req.antagonist_deformation_m;
   const double f_anta = plant_static_force(m_anta, p_anta, l_anta);
+  if (!std::isfinite(f_anta)) {
+    throw InputError(req.where + ": the antagonist's plant has no force " +
+                     format_value(units::m_to_mm(req.antagonist_deformation_m)) +
+                     " mm past its free length at " + format_value(units::pa_to_mpa(p_anta)) +
+                     " MPa");
+  }
 
   // agonist: the force that balances gravity, r_ago (-f_ago) + r_anta (-f_anta) = tau_g
   const double f_ago = -(gravity_torque + r_anta * f_anta) / r_ago;
   const double l_ago = plant_length_at_force(m_ago, p_ago, f_ago);
   if (!(l_ago > 0)) {
-    throw InputError("calibrate: the agonist cannot hold the arm at " +
+    throw InputError(req.where + ": the agonist cannot hold the arm at " +
                      format_value(units::rad_to_deg(req.start_angle_rad)) + " deg: it needs " +
                      format_value(f_ago) + " N at " + format_value(units::pa_to_mpa(p_ago)) +
                      " MPa");

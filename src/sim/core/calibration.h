@@ -43,6 +43,7 @@ struct CalibrationRequest {
   double pressure_agonist_pa = 0.4e6;
   double pressure_antagonist_pa = 0.4e6;
   double antagonist_deformation_m = 1.0e-3;
+  std::string where = "calibrate";   // what its errors name first: the command, or a key
 };
 
 // Solves the line lengths of `pair` (muscle indices of `model`, whose current line lengths

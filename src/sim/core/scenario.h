@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,10 @@ struct MuscleSpec {
   // muscles.<m>.line_limit_N: the line's working load [N] (NaN: none); the metric set
   // "tension" gives the peak pull in per cent of it
   double line_limit_n = std::numeric_limits<double>::quiet_NaN();
+  // muscles.<m>.line_strength_MPa times its line's cross-section: the tension at which the
+  // line breaks [N] (NaN: none given); a validation protocol refuses a rig whose line would
+  // break (reaching.cc)
+  double line_break_n = std::numeric_limits<double>::quiet_NaN();
 };
 
 // A free body held kinematically (at rest, upright) until an event releases it.
@@ -132,6 +137,12 @@ struct Scenario {
   std::string pneumatics_file;    // model.pneumatics
   bool has_start_position = false;   // the joint's start [rad or m] (from the calibration);
   double start_position = 0.0;       // otherwise the model's qpos0
+  // model.antagonist_deformation_mm: the calibration's two lines solved again at its start
+  // angle and pressures with this pre-stretch of its antagonist, as `pamsim calibrate
+  // --antagonist-deformation-mm` solves them (calibration.h); unset: the file's lines
+  std::optional<double> antagonist_deformation_m;
+  std::array<std::string, 2> calibrated_pair;        // the file's (agonist, antagonist)
+  std::array<double, 2> calibrated_pressure_pa{};    // the pressures it was solved for
 
   std::uint64_t seed = 1;
   double timestep_s = 0.001;

@@ -7,6 +7,7 @@
 
 #include "base/input_error.h"
 #include "base/units.h"
+#include "sim/core/calibration.h"
 #include "sim/core/muscle_law.h"
 #include "sim/core/pam_callback.h"
 
@@ -73,6 +74,34 @@ void solve_line(const Scenario& sc, TrialModel* tm, int solved) {
                      sc.model_file.c_str());
 }
 
+// model.antagonist_deformation_mm: the calibration's two lines solved again at its start
+// angle and pressures with this pre-stretch (calibration.h), in place of the file's
+void recalibrate_lines(const Scenario& sc, TrialModel* tm) {
+  const std::string key = "model.antagonist_deformation_mm";
+  ReflexPair pair;
+  int* slot[2] = {&pair.agonist, &pair.antagonist};
+  for (int k = 0; k < 2; ++k) {
+    *slot[k] = tm->muscle_index(sc, sc.calibrated_pair[k]);
+    if (*slot[k] < 0) {
+      fail(sc, key, "solves the line of '" + sc.calibrated_pair[k] +
+                        "' (model.calibration), which is not a muscle of the scenario");
+    }
+  }
+  CalibrationRequest req;
+  req.start_angle_rad = sc.start_position;
+  req.pressure_agonist_pa = sc.calibrated_pressure_pa[0];
+  req.pressure_antagonist_pa = sc.calibrated_pressure_pa[1];
+  req.antagonist_deformation_m = *sc.antagonist_deformation_m;
+  req.where = sc.path + ": " + key;
+  const ArmCalibration c = solve_calibration(*tm, sc, pair, req);
+  for (int k = 0; k < 2; ++k) {
+    BoundMuscle& b = tm->muscles[*slot[k]];
+    b.line_length_m = c.lines[k].line_length_m;
+    store_pam_in_model(tm->model.get(), b.actuator, sc.muscles[b.spec].pam.spring,
+                       b.line_length_m, *slot[k], sc.model_file.c_str());
+  }
+}
+
 }  // namespace
 
 void fail(const Scenario& sc, const std::string& key, const std::string& problem) {
@@ -112,6 +141,7 @@ void set_lines(const Scenario& sc, TrialModel* tm) {
     }
   }
   if (solved >= 0) solve_line(sc, tm, solved);
+  if (sc.antagonist_deformation_m) recalibrate_lines(sc, tm);
   make_lines_extensible(sc, tm, history_index);
 }
 

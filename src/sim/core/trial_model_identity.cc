@@ -20,6 +20,11 @@ bool same_trial_model(const Scenario& a, const Scenario& b) {
     os << sc.model_file << ';' << sc.joint << ';' << sc.has_start_position << ';';
     append_bits(os, sc.start_position);
     append_bits(os, sc.timestep_s);
+    append_bits(os, sc.antagonist_deformation_m.value_or(0.0));   // re-solves two lines
+    for (int k = 0; k < 2; ++k) {
+      os << sc.calibrated_pair[k] << ';';
+      append_bits(os, sc.calibrated_pressure_pa[k]);
+    }
     for (const MuscleSpec& mu : sc.muscles) {
       os << mu.actuator << ';' << mu.label << ';' << mu.params_file << ';' << mu.plant_file << ';'
          << mu.plant_changes << ';' << static_cast<int>(mu.line) << ';';

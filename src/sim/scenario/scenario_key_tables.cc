@@ -76,6 +76,12 @@ KeyTable model_key_table(Scenario* scenario) {
                      &scenario->pneumatics_file};
   file.input_file = calibration.input_file = pneumatics.input_file = true;
   file.required = pneumatics.required = true;
+  t.numbers = {{"antagonist_deformation_mm", "mm", units::kMPerMm, {0.0, 100.0, true, false},
+                "the lines' pre-tension: model.calibration's two lines solved again at its "
+                "start angle and pressures with its antagonist this far past its free length "
+                "(as pamsim calibrate --antagonist-deformation-mm)",
+                nullptr, &scenario->antagonist_deformation_m, false,
+                "(model.calibration's lines as written)"}};
   t.texts = {file,
              {"joint", "the joint logged and measured, a hinge or slide joint of the model",
               &scenario->joint, "(the model's first hinge or slide joint)"},
@@ -145,7 +151,11 @@ KeyTable muscle_line_key_table(MuscleLineKeys* line, MuscleSpec* muscle) {
        "that creep's retardation time (an extensible line)", &muscle->line_creep_time_s},
       {"line_limit_N", "N", 1.0, {0.0, 1e5, true, false},
        "the line's working load: the tension metrics give the peak pull in per cent of it",
-       nullptr, &line->limit_n, false, "(none)"}};
+       nullptr, &line->limit_n, false, "(none)"},
+      {"line_strength_MPa", "MPa", units::kPaPerMPa, {0.0, 1e5, true, false},
+       "the line material's tensile strength, with line_diameter_mm: its break load; a "
+       "validation rig whose line would pull past it is refused (nylon monofilament 560-920)",
+       nullptr, &line->strength_pa, false, "(none: it does not break)"}};
   return t;
 }
 

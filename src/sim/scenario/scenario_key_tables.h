@@ -83,7 +83,7 @@ KeyTable body_key_table(BodyKeys* body);
 // checks what joins them (line or line_mm; diameter and modulus both or neither; a creep
 // only on an extensible line; the load only with the tension metrics).
 struct MuscleLineKeys {
-  std::optional<double> line_m, diameter_m, modulus_pa, limit_n;
+  std::optional<double> line_m, diameter_m, modulus_pa, limit_n, strength_pa;
 };
 // muscles.<actuator> (a placeholder the reader replaces with the muscle's name), bound to
 // `line`, and the line's creep straight to `muscle`'s fields (their defaults are its own).

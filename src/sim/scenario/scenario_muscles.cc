@@ -154,7 +154,7 @@ void read_muscle_command(ConfigReader& in, const Scenario& sc, const std::string
 void set_line_stiffness(ConfigReader& in, const MuscleLineKeys& keys, MuscleSpec* m) {
   const std::string d_key = m->key + ".line_diameter_mm", e_key = m->key + ".line_modulus_MPa";
   if (!keys.diameter_m && !keys.modulus_pa) {
-    for (const char* creep : {".line_creep", ".line_creep_time_s"}) {
+    for (const char* creep : {".line_creep", ".line_creep_time_s", ".line_strength_MPa"}) {
       in.check(!in.has(m->key + creep), m->key + creep,
                "needs an extensible line (line_diameter_mm and line_modulus_MPa)");
     }
@@ -164,6 +164,7 @@ void set_line_stiffness(ConfigReader& in, const MuscleLineKeys& keys, MuscleSpec
            "is required with " + (keys.diameter_m ? d_key : e_key) + " (an extensible line)");
   const double radius_m = *keys.diameter_m / 2.0;
   m->line_axial_stiffness_n = *keys.modulus_pa * units::kPi * radius_m * radius_m;
+  if (keys.strength_pa) m->line_break_n = *keys.strength_pa * units::kPi * radius_m * radius_m;
   // (its creep, a Kelvin-Voigt element on the line's compliance: read into m by its rows)
 }
 
@@ -224,6 +225,25 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
   return m;
 }
 
+// model.antagonist_deformation_mm: the calibration's pair and pressures, which the trial
+// model solves again (trial_lines.cc); their muscles take no line of their own
+void read_recalibration(ConfigReader& in, const std::optional<ArmCalibration>& calibration,
+                        Scenario* sc) {
+  const std::string key = "model.antagonist_deformation_mm";
+  in.check(calibration.has_value(), key, "needs model.calibration: the lines it solves again");
+  in.check(calibration->lines.size() == 2, key,
+           "needs a calibration of two lines (agonist, antagonist); " + sc->calibration_file +
+               " has " + std::to_string(calibration->lines.size()));
+  for (int k = 0; k < 2; ++k) {
+    const CalibratedLine& line = calibration->lines[k];
+    const std::string muscle = "muscles." + line.actuator;
+    in.check(!in.has(muscle + ".line_mm") && !in.has(muscle + ".line"), key,
+             "solves " + muscle + "'s line: it may not give line_mm or line as well");
+    sc->calibrated_pair[k] = line.actuator;
+    sc->calibrated_pressure_pa[k] = line.pressure_pa;
+  }
+}
+
 }  // namespace
 
 void read_muscles(ConfigReader& in, Scenario* sc, bool lines_needed) {
@@ -233,6 +253,7 @@ void read_muscles(ConfigReader& in, Scenario* sc, bool lines_needed) {
     sc->has_start_position = true;
     sc->start_position = calibration->start_angle_rad;
   }
+  if (sc->antagonist_deformation_m && lines_needed) read_recalibration(in, calibration, sc);
   for (const std::string& name : muscle_names(in)) {
     sc->muscles.push_back(
         read_muscle(in, *sc, name, calibration ? &*calibration : nullptr, lines_needed));

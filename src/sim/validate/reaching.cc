@@ -76,6 +76,27 @@ double first_taut_s(const Trajectory& tr, const std::string& label, double start
   return std::numeric_limits<double>::infinity();
 }
 
+// Refuses a rig whose line would break: a muscle with a break load (its
+// line_strength_MPa) whose logged tension passes it in any trial, the settling included.
+void check_line_breaks(const Scenario& sc, const std::vector<TrialResult>& trials) {
+  for (const MuscleSpec& m : sc.muscles) {
+    if (std::isnan(m.line_break_n)) continue;
+    double peak = 0.0;
+    for (const TrialResult& r : trials) {
+      const std::size_t force = r.trajectory.column("force_" + m.label + "_N");
+      for (std::size_t i = 0; i < r.trajectory.rows(); ++i) {
+        peak = std::max(peak, r.trajectory.at(i, force));
+      }
+    }
+    if (peak > m.line_break_n) {
+      throw file_key_error(sc.path, m.key + ".line_strength_MPa",
+                           "its line breaks: it pulls " + format_value(peak) +
+                               " N, past its break load of " + format_value(m.line_break_n) +
+                               " N");
+    }
+  }
+}
+
 }  // namespace
 
 ReachingValidationSpec load_reaching_validation(
@@ -245,6 +266,7 @@ ReachingValidationResult run_reaching_validation(const ReachingValidationSpec& s
     result.episode_cause.push_back(causes);
     add_muscle_rows(spec, m, pools, &result.rows);
   }
+  check_line_breaks(sc, result.trials);
   return result;
 }
 
