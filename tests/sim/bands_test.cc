@@ -198,5 +198,34 @@ TEST(BandsTest, SensitivitySetsEachBracketAloneAtItsEnds) {
   EXPECT_NE(sensitivity_markdown(s).find("| creep |"), std::string::npos);
 }
 
+// The swing is the cell's range over the bracket's two ends and middle: a cell whose middle
+// is its extreme swings by that range, not by |to - from| (0 for an even function); an end
+// whose rig the protocol refuses (a line that would break) is left out, and under two runs
+// give no swing
+TEST(BandsTest, ASwingIsTheRangeOverTheEndsAndMiddleThatRan) {
+  std::uint64_t seed = 0;
+  const std::vector<Bracket> b = read_bracket_text(kTwoBrackets, &seed);
+  const auto value_of = [](const std::vector<std::string>& o, const std::string& key) {
+    for (const std::string& s : o) {
+      if (s.rfind(key + "=", 0) == 0) return std::stod(s.substr(key.size() + 1));
+    }
+    return std::nan("");
+  };
+  // the cell is (c.d)^2 (c.d in [-2, 2], middle 0), and a.b's rig is refused above 0.5
+  const Sensitivity s = run_sensitivity(b, [&](const std::vector<std::string>& o) {
+    if (value_of(o, "a.b") > 0.5) throw InputError("a.b: its line breaks");
+    const double cd = value_of(o, "c.d");
+    return std::vector<BandCell>{{"x", {cd * cd, cd * cd + value_of(o, "a.b")}, std::nullopt}};
+  });
+  EXPECT_DOUBLE_EQ(s.swing(1, 0), 4.0) << "0 at the middle to 4 at either end";
+  EXPECT_DOUBLE_EQ(s.swing(0, 0), 0.3) << "from 0 to the middle 0.3; the end at 0.6 refused";
+  EXPECT_EQ(s.runs.refused_count(), 1);
+  const Sensitivity none = run_sensitivity(b, [&](const std::vector<std::string>& o) {
+    if (value_of(o, "a.b") != 0.0) throw InputError("refused");
+    return std::vector<BandCell>{{"x", {1, 1}, std::nullopt}};
+  });
+  EXPECT_TRUE(std::isnan(none.swing(0, 0))) << "only a.b's `from` ran";
+}
+
 }  // namespace
 }  // namespace pamsim

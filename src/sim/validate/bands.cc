@@ -136,7 +136,16 @@ Bands run_bands(const std::vector<Bracket>& brackets, std::uint64_t seed, int ri
 }
 
 double Sensitivity::swing(std::size_t b, std::size_t c) const {
-  return std::fabs(runs.errors[2 * b + 2][c].rmse_pct - runs.errors[2 * b + 1][c].rmse_pct);
+  double lo = INFINITY, hi = -INFINITY;
+  int ran = 0;
+  for (std::size_t run : {std::size_t{0}, 2 * b + 1, 2 * b + 2}) {   // middle, from, to
+    const double rmse = runs.errors[run][c].rmse_pct;
+    if (!std::isfinite(rmse)) continue;
+    lo = std::min(lo, rmse);
+    hi = std::max(hi, rmse);
+    ++ran;
+  }
+  return ran >= 2 ? hi - lo : NAN;
 }
 
 Sensitivity run_sensitivity(

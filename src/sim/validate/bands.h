@@ -102,7 +102,8 @@ struct Sensitivity {
   std::string protocol, cases_are;
   std::vector<Bracket> brackets;
   RunCells runs;
-  // the RMSE's swing |at to - at from| of bracket b on cell c (NaN where an end was refused)
+  // the RMSE's swing of bracket b on cell c: its range over the runs at from, the middle and
+  // to, a refused run left out (a rig whose line breaks at one end); NaN where under two ran
   double swing(std::size_t b, std::size_t c) const;
 };
 Sensitivity run_sensitivity(

@@ -138,8 +138,9 @@ std::string sensitivity_markdown(const Sensitivity& s) {
   std::ostringstream out;
   out << "# Sensitivity: pamsim validate " << s.protocol << "\n\n"
       << "Each cell: " << s.cases_are << "; the RMSE's swing [% of length] as one unknown goes "
-      << "from one end of its bracket to the other, every other at its bracket's middle (every "
-      << "hardware source on). The dominant unknown of each cell: the largest swing.\n\n";
+      << "across its bracket (its range over the bracket's two ends and middle, a rig the "
+      << "protocol refused left out), every other at its bracket's middle (every hardware "
+      << "source on). The dominant unknown of each cell: the largest swing.\n\n";
   std::vector<std::string> columns;
   for (const Bracket& k : s.brackets) columns.push_back(k.name);
   columns.push_back("dominant");
