@@ -99,43 +99,6 @@ void check_line_breaks(const Scenario& sc, const std::vector<TrialResult>& trial
 
 }  // namespace
 
-ReachingValidationSpec load_reaching_validation(
-    const std::string& path, const std::vector<std::string>& protocol_overrides) {
-  ConfigReader in(path);
-  in.apply_overrides(protocol_overrides);
-  ReachingValidationSpec spec;
-  spec.file = path;
-  spec.scenario_file = in.require_path("scenario", "the reaching scenario");
-  const std::int64_t trials = in.get_int("trials", spec.trials);
-  in.check(trials >= 1 && trials <= 1000, "trials",
-           "must be in [1, 1000], got " + std::to_string(trials));
-  spec.trials = static_cast<int>(trials);
-  const std::vector<double> window = in.get_double_list("window_s", {});
-  std::string got;
-  for (double w : window) got += (got.empty() ? "" : ", ") + format_value(w);
-  in.check(window.size() == 2 && window[0] >= 0.0 && window[1] > window[0], "window_s",
-           "must be [start, end] with 0 <= start < end, got [" + got + "]");
-  spec.window_start_s = window[0];
-  spec.window_end_s = window[1];
-  spec.min_slack_s = in.get_double("min_slack_s", spec.min_slack_s);
-  in.check(spec.min_slack_s > 0.0, "min_slack_s",
-           "must be > 0 s, got " + format_value(spec.min_slack_s));
-  for (const std::string& name : in.child_keys("paper")) {
-    const std::string key = "paper." + name;
-    const std::vector<double> v = in.get_double_list(key, {});
-    in.check(v.size() == 2 && v[0] >= 0.0 && v[1] >= 0.0, key,
-             "must be [max, RMSE] in % of length, both >= 0");
-    in.check(name.rfind("model_", 0) == 0 || name.rfind("fiber_", 0) == 0, key,
-             "must start with model_ or fiber_");
-    spec.paper[name] = {v[0], v[1]};
-  }
-  in.raw("paper");
-  spec.budget = read_budget_sources(in);
-  spec.brackets = read_brackets(in, &spec.bracket_seed);
-  in.reject_unknown();
-  return spec;
-}
-
 SlackEpisode first_slack_episode(const Trajectory& tr, const std::string& label, double start_s,
                                  double end_s, double min_slack_s) {
   const std::size_t t = tr.column("time_s"), force = tr.column("force_" + label + "_N");

@@ -16,6 +16,9 @@
 //                 length), method "model" or "fiber", muscle the scenario's muscle name
 //   [[budget_source]] the hardware's error sources for --budget (error_budget.h)
 //   [[bracket]], bracket_seed  the rig's unsized parts for --bands, --sensitivity (bands.h)
+//   base          another protocol file this one changes (reaching_protocol.cc): every key
+//                 from it, this file's replacing them, a [[budget_source]] or [[bracket]] of
+//                 the same name in place; then scenario is optional
 // The fiber sensor reads only the rate of length change: its length is the rate integrated
 // from the encoder's length at the window's start (the paper calibrated it so).
 #pragma once
