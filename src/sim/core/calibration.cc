@@ -28,6 +28,16 @@ void check_calibration_request(const TrialModel& tm, const CalibrationRequest& r
   if (!tm.joint.hinge) throw InputError(req.where + ": joint '" + tm.joint.name + "' is not a hinge");
 }
 
+// Throws InputError where a solved line is not longer than 0 (a tendon shorter than its PAM).
+void check_line_lengths(const TrialModel& tm, const ArmCalibration& c) {
+  for (const CalibratedLine& line : c.lines) {
+    if (!(line.line_length_m > 0)) {
+      throw InputError(tm.model_path + ": the tendon is shorter than the PAM it holds; "
+                       "move the PAM anchors further from the shaft");
+    }
+  }
+}
+
 }  // namespace
 
 const CalibratedLine* ArmCalibration::line(const std::string& actuator) const {
@@ -89,12 +99,7 @@ ArmCalibration solve_calibration(const TrialModel& tm, const Scenario& sc, const
   c.gravity_torque_nm = gravity_torque;
   c.lines.push_back({m_ago.actuator, d->actuator_length[ago.actuator] - l_ago, p_ago});
   c.lines.push_back({m_anta.actuator, d->actuator_length[anta.actuator] - l_anta, p_anta});
-  for (const CalibratedLine& line : c.lines) {
-    if (!(line.line_length_m > 0)) {
-      throw InputError(tm.model_path + ": the tendon is shorter than the PAM it holds; "
-                       "move the PAM anchors further from the shaft");
-    }
-  }
+  check_line_lengths(tm, c);
   return c;
 }
 
