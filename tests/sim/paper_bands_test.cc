@@ -5,7 +5,8 @@
 //   Table III, PAM-C, Eq. (3), 5 kg: the paper's RMSE 0.683 % lies inside the band: PAM-C's
 //     thin 4 mm tube makes its latex wall (0.79-1.59 mm, stock walls) matter.
 //   Table III, PAM-A, Eq. (3), 5 kg: the paper's 0.861 % lies above the band: its floor is
-//     the fitted law's misfit to the plant on the rig, which no bracketed part moves.
+//     the fitted law's misfit to the plant on the rig, which no bracketed part moves; more
+//     braid friction (an assumption of the plant file) moves it towards the paper.
 //   Table V, model estimates: the paper's 5.24 / 5.02 % lie above the bands by a factor of
 //     2 or more, with nylon lines and with PE braid: the bracketed parts (the board, the
 //     re-seated line, the lines and their pre-tension) move them by tenths of a percent. The
@@ -118,6 +119,29 @@ TEST(PaperBandsTest, TheMissingMechanismsMoveTableFiveTowardsThePaper) {
       model_cell({"muscles.antagonist.plant.geometry.wall_thickness_mm=2.6"}, "antagonist", "all");
   EXPECT_GT(softer.rmse_pct, 1.5 * antagonist.rmse_pct);
   EXPECT_GT(softer.rmse_pct / softer.max_pct, 0.7);
+}
+
+// PAM-A's Eq. (3) RMSE at 5 kg on the pulley rig, its plant changed by `set`
+double pam_a_eq3_rmse(std::vector<std::string> set) {
+  LengthValidationSpec spec = with_plant_changes(
+      load_length_validation(kScenarios + "validate_length_estimation.toml", {"A"},
+                             {"weights_kg=[5.0]"}),
+      &set);
+  const LengthValidationResult r = run_length_validation(spec, two_threads("t3_mechanism"));
+  for (const DynamicRow& row : r.rows) {
+    if (row.law == SpringLaw::kEq3) return row.sim.rmse_pct;
+  }
+  ADD_FAILURE() << "no Eq. (3) row";
+  return 0.0;
+}
+
+TEST(PaperBandsTest, MoreBraidFrictionMovesPamATowardsThePaper) {
+  // Table III, PAM-A, Eq. (3): 0.861 % in the paper, above the band; the braid's friction is
+  // an assumption of the plant file
+  const double shipped = pam_a_eq3_rmse({});
+  const double rougher = pam_a_eq3_rmse({"pams.A.plant.friction.extension.A0_mm2=30"});
+  EXPECT_GT(rougher, 1.2 * shipped);
+  EXPECT_LT(rougher, 0.861);
 }
 
 }  // namespace
