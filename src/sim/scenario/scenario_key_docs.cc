@@ -53,7 +53,6 @@ std::vector<KeyDoc> model_docs() {
       {"muscles.<actuator>.plant.file", "", "(required in the table form)", "path to a plant file", "the plant file whose fields muscles.<actuator>.plant.<table>.<field> change"},
       {"muscles.<actuator>.plant.<table>.<field>", "(the file's)", "(the plant file's)", "as in the plant file (pam_actuator/plant_params.h)", "a field of the plant file, e.g. geometry.wall_thickness_mm, bladder.diameter_mm"},
       {"muscles.<actuator>.plant.<table>.<stroke>.<field>", "(the file's)", "(the plant file's)", "as in the plant file (pam_actuator/plant_params.h)", "a field of the plant file's friction strokes, e.g. friction.extension.A0_mm2"},
-      {"muscles.<actuator>.line", "", "(none)", "\"equilibrium\"", "solve the line length so the start is static"},
   };
   docs.insert(docs.end(), by_hand.begin(), by_hand.end());
   return docs;

@@ -156,6 +156,17 @@ KeyTable muscle_line_key_table(MuscleLineKeys* line, MuscleSpec* muscle) {
        "the line material's tensile strength, with line_diameter_mm: its break load; a "
        "validation rig whose line would pull past it is refused (nylon monofilament 560-920)",
        nullptr, &line->strength_pa, false, "(none: it does not break)"}};
+  t.choices = {{"line",
+                {"fixed", "equilibrium"},
+                "where the line's length comes from: fixed (line_mm, or model.calibration's) or "
+                "solved so that the start is static (equilibrium, one muscle at most)",
+                [muscle](const std::string& v) {
+                  muscle->line = v == "equilibrium" ? LineSource::kEquilibrium : LineSource::kFixed;
+                },
+                [muscle] {
+                  return std::string(muscle->line == LineSource::kEquilibrium ? "equilibrium"
+                                                                               : "fixed");
+                }}};
   return t;
 }
 

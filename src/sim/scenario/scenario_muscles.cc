@@ -175,15 +175,13 @@ void read_muscle_line(ConfigReader& in, const std::string& name,
   MuscleLineKeys keys;
   KeyTable table = muscle_line_key_table(&keys, &m);
   table.name = m.key;
-  read_key_rows(in, rows_given(in, table));
-  const std::string line = in.get_string(m.key + ".line", "");
-  in.check(line.empty() || line == "equilibrium", m.key + ".line",
-           "must be \"equilibrium\", got \"" + line + "\"");
-  in.check(!(keys.line_m && !line.empty()), m.key + ".line", "and line_mm may not both be given");
+  read_key_rows(in, rows_given(in, table));   // .line sets m.line
+  const bool solved = m.line == LineSource::kEquilibrium;
+  in.check(!(keys.line_m && solved), m.key + ".line", "and line_mm may not both be given");
   if (keys.line_m) {
     m.line_length_m = *keys.line_m;
-  } else if (!line.empty()) {
-    m.line = LineSource::kEquilibrium;
+  } else if (solved) {
+    // its length is solved when the model is bound (trial_lines.cc)
   } else if (!lines_needed) {
     m.line_length_m = 1.0;   // a placeholder: `pamsim calibrate` solves it
   } else {
