@@ -1,8 +1,9 @@
 // line_pretension_test.cc: the lines' pre-tension as a scenario key
 // (model.antagonist_deformation_mm: the calibration solved again when the model is bound) and
 // a line's break load (muscles.<m>.line_strength_MPa). Against the calibration file that
-// `pamsim calibrate` wrote, the closed form of a line's section, and the balance of the arm's
-// torques at rest as MuJoCo and the muscles' force law compute them.
+// `pamsim calibrate` wrote, the closed form of a line's section, the balance of the arm's
+// torques at rest as MuJoCo and the muscles' force law compute them, and both validation
+// protocols refusing a rig whose line would break.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,7 +14,9 @@
 #include "scenario_errors.h"
 #include "sim/core/muscle_law.h"
 #include "sim/core/trial_lines.h"
+#include "sim/validate/length_estimation.h"
 #include "sim/validate/reaching.h"
+#include "cli_util.h"
 
 namespace pamsim {
 namespace {
@@ -116,6 +119,28 @@ TEST(LinePretensionTest, TheReachingProtocolRefusesARigWhoseLineBreaks) {
   }
   options.overrides.front() = "muscles.antagonist.line_diameter_mm=0.5";
   EXPECT_EQ(run_reaching_validation(spec, options).trials.size(), 1u);
+}
+
+TEST(LinePretensionTest, TheLengthProtocolRefusesARigWhoseLineTheWeightBreaks) {
+  // 10 kg (98 N) on a 0.3 mm nylon line (65 N at 920 MPa); 5 kg (49 N) it holds
+  const std::vector<std::string> thin = {"muscles.pam.line_diameter_mm=0.3",
+                                         "muscles.pam.line_modulus_MPa=2000",
+                                         "muscles.pam.line_strength_MPa=920"};
+  ValidationOptions options;
+  options.threads = 2;
+  options.overrides = thin;
+  options.out_dir = pamsim_test::fresh_dir("line_breaks_length").string();
+  const std::string file = kScenarios + "validate_length_estimation.toml";
+  try {
+    run_length_validation(load_length_validation(file, {"A"}, {"weights_kg=[10.0]"}), options);
+    ADD_FAILURE() << "the line held 10 kg";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.parts().key, "muscles.pam.line_strength_MPa") << e.what();
+  }
+  EXPECT_EQ(run_length_validation(load_length_validation(file, {"A"}, {"weights_kg=[5.0]"}),
+                                  options)
+                .rows.size(),
+            3u);
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include "sim/core/trial_model.h"
 #include "sim/io/outputs.h"
 #include "sim/scenario/scenario_file.h"
+#include "sim/validate/line_breaks.h"
 
 namespace pamsim {
 namespace {
@@ -232,6 +233,7 @@ LengthValidationResult run_length_validation(const LengthValidationSpec& given,
   const std::vector<Job> jobs = dynamic_jobs(spec, options, &result);
   if (options.started) options.started(static_cast<int>(jobs.size()));
   run_dynamic_trials(jobs, options, &result);
+  for (const Job& job : jobs) check_line_breaks(job.scenario, {&result.rows[job.row].trajectory});
 
   guard.keep = true;  // write_length_validation moves it into place
   result.fits_dir = fits_tmp.string();

@@ -18,6 +18,7 @@
 #include "sim/io/gnuplot.h"
 #include "sim/io/outputs.h"
 #include "sim/scenario/scenario_file.h"
+#include "sim/validate/line_breaks.h"
 #include "sim/validate/table_cells.h"
 
 namespace pamsim {
@@ -74,27 +75,6 @@ double first_taut_s(const Trajectory& tr, const std::string& label, double start
     if (tr.at(i, t) >= start_s - 1e-9 && tr.at(i, force) > 0.0) return tr.at(i, t);
   }
   return std::numeric_limits<double>::infinity();
-}
-
-// Refuses a rig whose line would break: a muscle with a break load (its
-// line_strength_MPa) whose logged tension passes it in any trial, the settling included.
-void check_line_breaks(const Scenario& sc, const std::vector<TrialResult>& trials) {
-  for (const MuscleSpec& m : sc.muscles) {
-    if (std::isnan(m.line_break_n)) continue;
-    double peak = 0.0;
-    for (const TrialResult& r : trials) {
-      const std::size_t force = r.trajectory.column("force_" + m.label + "_N");
-      for (std::size_t i = 0; i < r.trajectory.rows(); ++i) {
-        peak = std::max(peak, r.trajectory.at(i, force));
-      }
-    }
-    if (peak > m.line_break_n) {
-      throw file_key_error(sc.path, m.key + ".line_strength_MPa",
-                           "its line breaks: it pulls " + format_value(peak) +
-                               " N, past its break load of " + format_value(m.line_break_n) +
-                               " N");
-    }
-  }
 }
 
 }  // namespace
@@ -229,7 +209,9 @@ ReachingValidationResult run_reaching_validation(const ReachingValidationSpec& s
     result.episode_cause.push_back(causes);
     add_muscle_rows(spec, m, pools, &result.rows);
   }
-  check_line_breaks(sc, result.trials);
+  std::vector<const Trajectory*> logs;
+  for (const TrialResult& r : result.trials) logs.push_back(&r.trajectory);
+  check_line_breaks(sc, logs);
   return result;
 }
 
