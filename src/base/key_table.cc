@@ -109,10 +109,12 @@ void read_key_rows(ConfigReader& in, const KeyTable& table) {
     const std::string count = list_count_problem(row, values.size());
     in.check(count.empty(), k, count);
     row.target->clear();
-    for (double v : values) {
-      in.check(row.range.contains(v), k, "must hold values in " + row.range.text() + ", got " +
-                                             format_value(v));
-      row.target->push_back(v * row.to_si);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (!row.range.contains(values[i])) {   // "<file>: <key>[i] must be in ..., got v"
+        const std::string problem = "[" + std::to_string(i) + "] " + out_of_range(row, values[i]);
+        throw InputError(in.where(k) + problem, {in.name(), k, problem});
+      }
+      row.target->push_back(values[i] * row.to_si);
     }
   }
   for (const NameListRow& row : table.name_lists) {

@@ -16,7 +16,8 @@ std::vector<InstrumentKind> make_kinds() {
                        [](SensorConfig* s) { return gauge_hardware_key_tables(&s->gauge_hardware); },
                        "sensors.gauge.board",
                        [](SensorConfig* s) { return &s->gauge_hardware.creep; },
-                       [](const SensorConfig& s) { validate(s.gauge_hardware); }};
+                       [](const SensorConfig& s) { validate(s.gauge_hardware); },
+                       "the board's"};
   InstrumentKind pressure{
       "pressure", "the PSE540-class pressure sensor (pressure_hardware.h)",
       [](SensorConfig* s) {
@@ -29,7 +30,8 @@ std::vector<InstrumentKind> make_kinds() {
         return std::vector<KeyTable>{fiber_hardware_key_table(&s->fiber_hardware)};
       },
       "sensors.fiber", [](SensorConfig* s) { return &s->fiber_hardware.creep; },
-      [](const SensorConfig& s) { validate(s.fiber_hardware); }};
+      [](const SensorConfig& s) { validate(s.fiber_hardware); },
+      "the fabric's (ASSUMPTION)"};
   InstrumentKind encoder{"encoder", "the linear encoder, read in counts (sensors.h)",
                          [](SensorConfig* s) {
                            return std::vector<KeyTable>{encoder_key_table(&s->encoder)};
@@ -43,6 +45,17 @@ std::vector<InstrumentKind> make_kinds() {
 }
 
 }  // namespace
+
+KeyTable creep_key_table(const InstrumentKind& kind, std::vector<double>* weights,
+                         std::vector<double>* times) {
+  KeyTable t{kind.creep_table, {}, {}};
+  const std::string none = weights->empty() ? "(none)" : "";
+  t.lists = {{"creep_weights", "", 1.0, kNonNegativeRange, kMaxCreepTerms,
+              kind.creep_whose + " Prony creep weights", weights, none},
+             {"creep_times_s", "s", 1.0, kPositiveRange, kMaxCreepTerms,
+              kind.creep_whose + " Prony retardation times, one per weight", times, none}};
+  return t;
+}
 
 const std::vector<InstrumentKind>& instrument_kinds() {
   static const std::vector<InstrumentKind> kinds = make_kinds();

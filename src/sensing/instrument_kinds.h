@@ -35,7 +35,18 @@ struct InstrumentKind {
   // its fields checked, each against its row's range, then what joins them; throws
   // InputError naming the key
   std::function<void(const SensorConfig&)> validate;
+  // whose creep series it is, for its rows' docs ("the board's"); "" without one
+  std::string creep_whose{};
 };
+
+// The most terms a creep series' lists may hold.
+inline constexpr std::size_t kMaxCreepTerms = 64;
+
+// <kind.creep_table>.creep_weights (each >= 0) and .creep_times_s (each > 0 s): a kind's
+// creep series as two list rows bound to `weights` and `times`; the reader checks that they
+// list one time per weight, and the sensing's validate() the series (prony_creep.h).
+KeyTable creep_key_table(const InstrumentKind& kind, std::vector<double>* weights,
+                         std::vector<double>* times);
 
 // Every kind, in reading order: gauge, pressure, fiber, encoder.
 const std::vector<InstrumentKind>& instrument_kinds();

@@ -9,6 +9,14 @@
 
 namespace pamsim {
 
+void prony_lists(const std::vector<PronyTerm>& terms, std::vector<double>* weights,
+                 std::vector<double>* times) {
+  for (const PronyTerm& t : terms) {
+    weights->push_back(t.weight);
+    times->push_back(t.time_s);
+  }
+}
+
 void validate_prony(const std::vector<PronyTerm>& terms, const std::string& weights_key,
                     const std::string& times_key) {
   for (std::size_t i = 0; i < terms.size(); ++i) {

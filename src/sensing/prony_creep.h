@@ -25,6 +25,10 @@ struct PronyTerm {
 void validate_prony(const std::vector<PronyTerm>& terms, const std::string& weights_key,
                     const std::string& times_key);
 
+// The series as the two lists a file gives it in: its weights and its times.
+void prony_lists(const std::vector<PronyTerm>& terms, std::vector<double>* weights,
+                 std::vector<double>* times);
+
 class PronyCreep {
  public:
   // Terms must have passed validate_prony (asserted). Starts unloaded (all q_i = 0).

@@ -16,7 +16,9 @@
 #include "base/input_error.h"
 #include "base/key_table_test_util.h"
 #include "base/units.h"
+#include "base/format.h"
 #include "sensing/instrument_keys.h"
+#include "sensing/instrument_kinds.h"
 #include "sim/scenario/scenario_file.h"
 #include "sim/test_paths.h"
 
@@ -35,22 +37,34 @@ InputErrorParts refusal_of(const std::string& key, const std::string& value) {
 bool is_instrument_key(const std::string& key) {
   for (const char* prefix : {"sensors.gauge.", "sensors.pressure.", "sensors.fiber.",
                              "sensors.encoder."}) {
-    if (key.rfind(prefix, 0) != 0) continue;   // the creep lists are no rows
-    return key.find("creep_weights") == std::string::npos &&
-           key.find("creep_times_s") == std::string::npos;
+    if (key.rfind(prefix, 0) == 0) return true;
   }
   return false;
 }
 
+// Every instrument's tables and its creep series' rows (instrument_kinds.h), bound to `s` and
+// to `lists`, which must outlive them
+std::vector<KeyTable> all_instrument_tables(SensorConfig* s,
+                                            std::vector<std::vector<double>>* lists) {
+  std::vector<KeyTable> tables = instrument_key_tables(s);
+  lists->resize(2 * instrument_kinds().size());
+  for (std::size_t k = 0; k < instrument_kinds().size(); ++k) {
+    const InstrumentKind& kind = instrument_kinds()[k];
+    if (kind.creep) tables.push_back(creep_key_table(kind, &(*lists)[2 * k], &(*lists)[2 * k + 1]));
+  }
+  return tables;
+}
+
 TEST(InstrumentKeysTest, EveryKeyTheReaderAsksForHasExactlyOneRow) {
   SensorConfig s;
-  const std::map<std::string, int> rows = row_keys(instrument_key_tables(&s));
+  std::vector<std::vector<double>> lists;
+  const std::map<std::string, int> rows = row_keys(all_instrument_tables(&s, &lists));
   std::set<std::string> asked;
   for (const ScenarioKeyValue& kv : scenario_key_values(kDropMass, {})) {
     if (is_instrument_key(kv.key)) asked.insert(kv.key);
   }
   expect_rows_are_the_asked_keys(rows, asked);
-  EXPECT_EQ(rows.size(), 40u);
+  EXPECT_EQ(rows.size(), 44u) << "40 rows and two creep series of two lists";
 }
 
 TEST(InstrumentKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {
@@ -62,7 +76,13 @@ TEST(InstrumentKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {
     EXPECT_EQ(parts.file, kDropMass) << key;
     ++refused;
   };
-  for (const KeyTable& t : instrument_key_tables(&s)) {
+  std::vector<std::vector<double>> lists;
+  for (const KeyTable& t : all_instrument_tables(&s, &lists)) {
+    for (const ListRow& row : t.lists) {   // a value out of range, a list of text
+      const double bad = row.range.lo_open ? row.range.lo : row.range.lo - 1;
+      expect_refused(t.name + "." + row.name, "[" + format_value(bad) + "]");
+      expect_refused(t.name + "." + row.name, "[\"x\"]");
+    }
     for (const NumberRow& row : t.numbers) {
       for (const std::string& value : bad_number_texts(row)) {
         expect_refused(t.name + "." + row.name, value);

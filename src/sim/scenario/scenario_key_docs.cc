@@ -13,6 +13,7 @@
 #include "base/config_reader.h"   // split_key
 #include "reflex/controller_registry.h"
 #include "sensing/instrument_keys.h"
+#include "sensing/instrument_kinds.h"
 #include "sensing/sensor_keys.h"
 
 namespace pamsim {
@@ -151,13 +152,14 @@ std::vector<KeyDoc> sensor_docs() {
 std::vector<KeyDoc> instrument_docs() {
   SensorConfig defaults;   // the rows' defaults are the structs' own
   std::vector<KeyDoc> docs = key_table_docs(instrument_key_tables(&defaults));
-  const std::vector<KeyDoc> lists = {
-      {"sensors.gauge.board.creep_weights", "", "(none)", "each >= 0", "the board's Prony creep weights"},
-      {"sensors.gauge.board.creep_times_s", "s", "(none)", "each > 0, one per weight", "the board's Prony retardation times"},
-      {"sensors.fiber.creep_weights", "", "[0.05]", "each >= 0", "the fabric's Prony creep weights (ASSUMPTION)"},
-      {"sensors.fiber.creep_times_s", "s", "[10.0]", "each > 0, one per weight", "the fabric's Prony retardation times"},
-  };
-  docs.insert(docs.end(), lists.begin(), lists.end());
+  for (const InstrumentKind& kind : instrument_kinds()) {   // the creep series' rows
+    if (!kind.creep) continue;
+    std::vector<double> weights, times;
+    prony_lists(*kind.creep(&defaults), &weights, &times);
+    for (const KeyDoc& d : key_table_docs({creep_key_table(kind, &weights, &times)})) {
+      docs.push_back(d);
+    }
+  }
   return docs;
 }
 

@@ -14,17 +14,13 @@
 namespace pamsim {
 namespace {
 
-// a Prony series as two lists of one length: <prefix>creep_weights and creep_times_s
-std::vector<PronyTerm> read_creep(ConfigReader& in, const std::string& prefix,
+// a kind's Prony series from its two list rows (instrument_kinds.h), one time per weight
+std::vector<PronyTerm> read_creep(ConfigReader& in, const InstrumentKind& kind,
                                   const std::vector<PronyTerm>& fallback) {
-  std::vector<double> weights_fallback, times_fallback;
-  for (const PronyTerm& t : fallback) {
-    weights_fallback.push_back(t.weight);
-    times_fallback.push_back(t.time_s);
-  }
-  const std::vector<double> weights = in.get_double_list(prefix + "creep_weights", weights_fallback);
-  const std::vector<double> times = in.get_double_list(prefix + "creep_times_s", times_fallback);
-  in.check(weights.size() == times.size(), prefix + "creep_times_s",
+  std::vector<double> weights, times;
+  prony_lists(fallback, &weights, &times);
+  read_key_rows(in, creep_key_table(kind, &weights, &times));
+  in.check(weights.size() == times.size(), kind.creep_table + ".creep_times_s",
            "must list one time per weight (" + std::to_string(weights.size()) + "), got " +
                std::to_string(times.size()));
   std::vector<PronyTerm> creep;
@@ -56,7 +52,7 @@ void read_instrument(ConfigReader& in, const std::vector<KeyTable>& tables) {
 void read_instruments(ConfigReader& in, SensorConfig* s) {
   for (const InstrumentKind& kind : instrument_kinds()) {
     read_instrument(in, kind.key_tables(s));
-    if (kind.creep) *kind.creep(s) = read_creep(in, kind.creep_table + ".", *kind.creep(s));
+    if (kind.creep) *kind.creep(s) = read_creep(in, kind, *kind.creep(s));
   }
 }
 
