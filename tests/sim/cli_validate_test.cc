@@ -331,3 +331,21 @@ TEST(CliValidateTest, BadBandsAreOneLineAndLeaveNoBands) {
 }
 
 }  // namespace
+
+// A rig whose line would break is refused (line_breaks.h): one line naming the key, exit 2,
+// and not even the output folder the run had made is left
+TEST(CliValidateTest, ARigWhoseLineBreaksIsOneLineAndLeavesNoFolder) {
+  const fs::path out = fresh_dir("cli_validate_line_breaks") / "out";
+  const CliResult r = run_pamsim(
+      "validate reaching scenarios/validate_reaching.toml --no-plot --quiet"
+      " --set muscles.antagonist.line_diameter_mm=0.285"
+      " --set muscles.antagonist.line_modulus_MPa=2000"
+      " --set muscles.antagonist.line_strength_MPa=920 --out " +
+      out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("muscles.antagonist.line_strength_MPa: its line breaks"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -18,6 +19,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "base/atomic_file.h"
@@ -103,10 +105,29 @@ ValidationOptions common_options(const ValidateOptions& o, const std::string& de
   return v;
 }
 
+// A folder this command made for its outputs: removed again if the command is refused
+// before it writes there (the folder is still empty), so that bad input leaves nothing behind.
+class MadeFolder {
+ public:
+  MadeFolder(std::string dir, bool made) : dir_(std::move(dir)), made_(made) {}
+  MadeFolder(const MadeFolder&) = delete;
+  MadeFolder& operator=(const MadeFolder&) = delete;
+  ~MadeFolder() {
+    std::error_code ec;   // (a folder that holds anything is not removed)
+    if (made_ && std::uncaught_exceptions() > 0) std::filesystem::remove(dir_, ec);
+  }
+
+ private:
+  std::string dir_;
+  bool made_;
+};
+
 // An output folder that exists and takes a file, checked before any trial runs (a read-only
-// folder would otherwise fail only at the end).
-void require_writable(const std::string& dir) {
+// folder would otherwise fail only at the end); made here if missing.
+[[nodiscard]] std::unique_ptr<MadeFolder> require_writable(const std::string& dir) {
+  const bool existed = std::filesystem::exists(dir);
   make_directories(dir);
+  auto made = std::make_unique<MadeFolder>(dir, !existed);
   const std::filesystem::path probe =
       std::filesystem::path(dir) / (".pamsim_write_test." + std::to_string(::getpid()));
   std::ofstream out(probe);
@@ -114,6 +135,7 @@ void require_writable(const std::string& dir) {
   std::error_code ec;
   std::filesystem::remove(probe, ec);
   if (!ok) throw InputError("--out " + dir + ": cannot write there");
+  return made;
 }
 
 // "length_estimation" (a default folder's part) -> "length-estimation", as the user types it
@@ -141,7 +163,7 @@ void run_budget_command(const ValidateOptions& o, const std::string& name,
   if (!o.force) refuse_earlier_outputs(v.out_dir, kBudgetOutputs);
   use_plot_formats(o.plot_format);
   const bool plots = plots_wanted(o.no_plot);
-  require_writable(v.out_dir);
+  const auto folder = require_writable(v.out_dir);
   const std::string command = "validate " + subcommand(name) + " --budget";
   const int total = trials * static_cast<int>(budget_configs(sources).size());
   std::shared_ptr<ProgressReporter> progress;
@@ -179,7 +201,7 @@ void run_bands_command(const ValidateOptions& o, const std::string& name,
   if (!o.force) refuse_earlier_outputs(v.out_dir, outputs);
   use_plot_formats(o.plot_format);
   const bool plots = plots_wanted(o.no_plot);
-  require_writable(v.out_dir);
+  const auto folder = require_writable(v.out_dir);
   const std::string command =
       "validate " + subcommand(name) +
       (banded ? " --bands " + std::to_string(*o.bands) : std::string(" --sensitivity"));
@@ -229,7 +251,7 @@ void run_length_estimation(const ValidateOptions& o) {
   if (!o.force) refuse_earlier_outputs(v.out_dir, kLengthOutputs);
   use_plot_formats(o.plot_format);
   const bool plots = plots_wanted(o.no_plot);
-  require_writable(v.out_dir);  // an unwritable --out fails here, before any work
+  const auto folder = require_writable(v.out_dir);   // unwritable: fails before any work
   const int total = static_cast<int>(spec.pams.size() * spec.laws.size() * spec.weights_kg.size());
   std::shared_ptr<ProgressReporter> progress;
   attach_progress(&v, "pamsim validate length-estimation", total, o.quiet, &progress);
@@ -274,7 +296,7 @@ void run_reaching(const ValidateOptions& o) {
   if (!o.force) refuse_earlier_outputs(v.out_dir, kReachingOutputs);
   use_plot_formats(o.plot_format);
   const bool plots = plots_wanted(o.no_plot);
-  require_writable(v.out_dir);
+  const auto folder = require_writable(v.out_dir);
   std::shared_ptr<ProgressReporter> progress;
   attach_progress(&v, "pamsim validate reaching", spec.trials, o.quiet, &progress);
   const ReachingValidationResult result = run_reaching_validation(spec, v);
