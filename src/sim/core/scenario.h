@@ -61,7 +61,7 @@ struct MuscleSpec {
   double line_limit_n = std::numeric_limits<double>::quiet_NaN();
   // muscles.<m>.line_strength_MPa times its line's cross-section: the tension at which the
   // line breaks [N] (NaN: none given); a validation protocol refuses a rig whose line would
-  // break (reaching.cc)
+  // break (sim/validate/line_breaks.h)
   double line_break_n = std::numeric_limits<double>::quiet_NaN();
 };
 
