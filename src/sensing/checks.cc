@@ -9,7 +9,8 @@
 namespace pamsim::checks {
 
 void fail(const std::string& key, const std::string& allowed, double value) {
-  throw InputError(key + " must be " + allowed + ", got " + format_value(value));
+  const std::string problem = "must be " + allowed + ", got " + format_value(value);
+  throw InputError(key + " " + problem, {"", key, problem});   // (its parts: a reader renames)
 }
 
 void require_finite(const std::string& key, double value) {

@@ -59,7 +59,7 @@ KeyTable board_table(GaugeHardwareConfig& g) {
   return t;
 }
 
-KeyTable contact_table(GaugeContactParams& c) {
+KeyTable contact_rows(GaugeContactParams& c) {
   KeyTable t{"sensors.gauge.contact", {}, {}, {}};
   t.choices = {two_way("model", "fixed", "sliding",
                        "the line's contact on the board held, or sliding and sticking along its "
@@ -85,6 +85,8 @@ KeyTable contact_table(GaugeContactParams& c) {
 
 }  // namespace
 
+KeyTable gauge_contact_key_table(GaugeContactParams* contact) { return contact_rows(*contact); }
+
 std::vector<KeyTable> gauge_hardware_key_tables(GaugeHardwareConfig* gauge) {
   GaugeHardwareConfig& g = *gauge;
   QuarterBridgeParams& q = g.bridge;
@@ -107,7 +109,7 @@ std::vector<KeyTable> gauge_hardware_key_tables(GaugeHardwareConfig* gauge) {
        &g.calibration_max_n},
       {"hold_s", "s", 1.0, {0.0, 3600.0, false, false},
        "how long each load is held before it is read", &g.calibration_hold_s}};
-  return {bridge, board_table(g), contact_table(g.contact), calibration};
+  return {bridge, board_table(g), contact_rows(g.contact), calibration};
 }
 
 KeyTable pressure_hardware_key_table(PressureHardwareConfig* pressure) {

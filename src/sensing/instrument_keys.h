@@ -23,6 +23,9 @@ namespace pamsim {
 // sensors.gauge.calibration, bound to `gauge`. validate(GaugeHardwareConfig) adds what joins
 // keys (the contact beyond the gauge, the board's end, its strain at the calibration's load).
 std::vector<KeyTable> gauge_hardware_key_tables(GaugeHardwareConfig* gauge);
+// sensors.gauge.contact.* alone (one of the tables above), bound to `contact`: a muscle's own
+// contact reads it under muscles.<actuator>.gauge.contact (the scenario's reader renames it).
+KeyTable gauge_contact_key_table(GaugeContactParams* contact);
 
 // sensors.pressure, bound to `pressure`.
 KeyTable pressure_hardware_key_table(PressureHardwareConfig* pressure);

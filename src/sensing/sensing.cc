@@ -80,8 +80,10 @@ SensorSuite::SensorSuite(const SensingConfig& config,
     std::optional<GaugeHardware> gauge;
     StrainGaugeParams calibrated = muscle.gauge;
     if (hardware.enabled) {
-      gauge.emplace(hardware, muscle.gauge, instruments, dt_s);
-      calibrated = calibrate_gauge(*gauge, hardware, dt_s, muscle.key);
+      GaugeHardwareConfig own = hardware;   // with this muscle's contact, where it has one
+      if (muscle.contact) own.contact = *muscle.contact;
+      gauge.emplace(own, muscle.gauge, instruments, dt_s);
+      calibrated = calibrate_gauge(*gauge, own, dt_s, muscle.key);
       gauge->reseat();   // the line re-laid after the calibration, as the lab's may be
     }
     channels_.push_back(Channel{

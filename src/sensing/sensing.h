@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -33,6 +34,9 @@ struct MuscleSensorSpec {
   std::string key;
   SpringModel estimator;
   StrainGaugeParams gauge;
+  // this muscle's gauge contact (muscles.<m>.gauge.contact.*), in place of the shared
+  // sensors.gauge.contact; none: the shared one
+  std::optional<GaugeContactParams> contact{};
 };
 
 struct SensingConfig {

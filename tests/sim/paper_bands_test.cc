@@ -105,9 +105,11 @@ TEST(PaperBandsTest, TheMissingMechanismsMoveTableFiveTowardsThePaper) {
   // the agonist's line leaving the board (a knife-edge contact), the lines tied 5 mm tight:
   // its error after the loss within a factor 1.5 of the paper's 5.94 %
   const ErrorPct after = model_cell(
-      {"sensors.gauge.contact.misalignment_mm=5", "sensors.gauge.contact.fitting_distance_mm=10",
-       "sensors.gauge.contact.shaft_distance_mm=100", "sensors.gauge.contact.wrap_deg=5",
-       "sensors.gauge.contact.friction_coefficient=0.2", "sensors.gauge.board.length_mm=0",
+      {"muscles.agonist.gauge.contact.misalignment_mm=5",
+       "muscles.agonist.gauge.contact.fitting_distance_mm=10",
+       "muscles.agonist.gauge.contact.shaft_distance_mm=100",
+       "muscles.agonist.gauge.contact.wrap_deg=5",
+       "muscles.agonist.gauge.contact.friction_coefficient=0.2", "sensors.gauge.board.length_mm=0",
        "model.antagonist_deformation_mm=5"},
       "agonist", "after_slack");
   EXPECT_GT(after.rmse_pct, 5.94 / 1.5);

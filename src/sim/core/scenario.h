@@ -63,6 +63,9 @@ struct MuscleSpec {
   // line breaks [N] (NaN: none given); a validation protocol refuses a rig whose line would
   // break (sim/validate/line_breaks.h)
   double line_break_n = std::numeric_limits<double>::quiet_NaN();
+  // muscles.<m>.gauge.contact.*: this muscle's gauge contact, in place of the shared
+  // sensors.gauge.contact (its keys the defaults); none: the shared one
+  std::optional<GaugeContactParams> gauge_contact;
 };
 
 // A free body held kinematically (at rest, upright) until an event releases it.

@@ -34,7 +34,7 @@ std::vector<MuscleSensorSpec> sensor_specs(const TrialModel& tm, const Scenario&
   std::vector<MuscleSensorSpec> specs;
   for (const BoundMuscle& b : tm.muscles) {
     const MuscleSpec& spec = sc.muscles[b.spec];
-    specs.push_back({spec.key, spec.pam.spring, *spec.pam.strain_gauge});
+    specs.push_back({spec.key, spec.pam.spring, *spec.pam.strain_gauge, spec.gauge_contact});
   }
   return specs;
 }

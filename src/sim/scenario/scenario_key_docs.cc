@@ -152,6 +152,10 @@ std::vector<KeyDoc> sensor_docs() {
 std::vector<KeyDoc> instrument_docs() {
   SensorConfig defaults;   // the rows' defaults are the structs' own
   std::vector<KeyDoc> docs = key_table_docs(instrument_key_tables(&defaults));
+  KeyTable own = gauge_contact_key_table(&defaults.gauge_hardware.contact);   // a muscle's
+  own.name = "muscles.<actuator>.gauge.contact";
+  for (NumberRow& row : own.numbers) row.fallback_doc = "(sensors.gauge.contact's)";
+  for (const KeyDoc& d : key_table_docs({own})) docs.push_back(d);
   for (const InstrumentKind& kind : instrument_kinds()) {   // the creep series' rows
     if (!kind.creep) continue;
     std::vector<double> weights, times;

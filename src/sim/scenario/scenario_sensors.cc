@@ -1,12 +1,16 @@
 // scenario_sensors.cc: sensors.* (noise, ADCs, low-pass: the rows of sensing/sensor_keys.h)
 // and the sensors as hardware, sensors.gauge.*, .pressure.*, .fiber.*, .encoder.* (the rows
-// of sensing/instrument_keys.h), with the creep series; sensors.instrument_seed is a row.
+// of sensing/instrument_keys.h), with the creep series; sensors.instrument_seed is a row; a
+// muscle's own gauge contact, muscles.<m>.gauge.contact.* (the contact's rows renamed).
 // Validated with the sensing (sensing/sensing.h).
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "base/input_error.h"
 #include "base/key_table.h"
+#include "sensing/instrument_keys.h"
 #include "sensing/instrument_kinds.h"
 #include "sensing/sensor_keys.h"
 #include "sim/scenario/scenario_reading.h"
@@ -56,12 +60,47 @@ void read_instruments(ConfigReader& in, SensorConfig* s) {
   }
 }
 
+// The gauge's checks of a muscle's own contact (gauge_hardware.h: the re-seated line on the
+// board), a refusal of a sensors.gauge.contact key renamed to the muscle's
+void validate_own_contact(ConfigReader& in, const GaugeHardwareConfig& own,
+                          const std::string& prefix) {
+  const std::string shared = "sensors.gauge.contact.";
+  try {
+    validate(own);
+  } catch (const InputError& e) {
+    if (e.parts().key.rfind(shared, 0) != 0) throw;
+    in.fail(prefix + "." + e.parts().key.substr(shared.size()), e.parts().problem);
+  }
+}
+
+// muscles.<m>.gauge.contact.*: a muscle's own gauge contact (one gauge's line laid otherwise
+// than the other's), the shared sensors.gauge.contact its defaults; a bridge gauge's only
+void read_muscle_contacts(ConfigReader& in, Scenario* sc) {
+  const GaugeHardwareConfig& shared = sc->sensing.sensors.gauge_hardware;
+  const std::vector<std::string> leaves = in.leaf_keys();
+  for (MuscleSpec& m : sc->muscles) {
+    const std::string prefix = m.key + ".gauge.contact";
+    const auto given = std::find_if(leaves.begin(), leaves.end(), [&](const std::string& k) {
+      return k.rfind(prefix + ".", 0) == 0;
+    });
+    if (given == leaves.end()) continue;
+    in.check(shared.enabled, *given, "is used only by sensors.gauge.model = \"bridge\"");
+    GaugeHardwareConfig own = shared;
+    KeyTable rows = gauge_contact_key_table(&own.contact);
+    rows.name = prefix;
+    read_key_rows(in, rows);
+    validate_own_contact(in, own, prefix);
+    m.gauge_contact = own.contact;
+  }
+}
+
 }  // namespace
 
 void read_sensors(ConfigReader& in, Scenario* sc) {
   SensorConfig& s = sc->sensing.sensors;
   read_key_rows(in, sensor_key_table(&s));   // sensors.*: noise, ADCs, the pressure low-pass
   read_instruments(in, &s);
+  read_muscle_contacts(in, sc);
   sc->sensing.control_hz = sc->control_hz;   // velocity_lowpass_hz: the controller's config
   sc->sensing.physics_dt_s = sc->timestep_s;
   in_file(in, [&] {
