@@ -7,6 +7,9 @@
 //   Table III, PAM-A, Eq. (3), 5 kg: the paper's 0.861 % lies above the band: its floor is
 //     the fitted law's misfit to the plant on the rig, which no bracketed part moves; more
 //     braid friction (an assumption of the plant file) moves it towards the paper.
+//   Table III's other cells outside at 5 kg (50 rigs): PAM-A Eq. (4) and (5), PAM-D Eq. (3)
+//     above, PAM-B Eq. (4) and PAM-D Eq. (5) below: the braid's friction and angle, the
+//     plant files' assumptions, move each (docs/validation.md runs every one).
 //   Table V, model estimates: the paper's 5.24 / 5.02 % lie above the bands by a factor of
 //     2 or more, with nylon lines and with PE braid: the bracketed parts (the board, the
 //     re-seated line, the lines and their pre-tension) move them by tenths of a percent. The
