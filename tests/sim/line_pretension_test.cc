@@ -73,6 +73,12 @@ TEST(LinePretensionTest, BadValuesAndMissingCalibrationsAreRefusedByKey) {
             std::string::npos);
   EXPECT_NE(error_of(kPassive, {kKey + "=3", "muscles.agonist.line_mm=300"}).find(kKey),
             std::string::npos);
+  try {   // calibrate solves the lines by its own options: the key would be ignored
+    load_scenario_for_calibration(kPassive, {kKey + "=3"});
+    ADD_FAILURE() << "calibrate took " << kKey;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("give --antagonist-deformation-mm"), std::string::npos);
+  }
   const std::string too_far = error_of(kPassive, {kKey + "=90"});
   EXPECT_NE(too_far.find(kKey), std::string::npos) << too_far;
   EXPECT_EQ(too_far.find("nan"), std::string::npos) << too_far;

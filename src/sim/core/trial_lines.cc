@@ -78,15 +78,7 @@ void solve_line(const Scenario& sc, TrialModel* tm, int solved) {
 // angle and pressures with this pre-stretch (calibration.h), in place of the file's
 void recalibrate_lines(const Scenario& sc, TrialModel* tm) {
   const std::string key = "model.antagonist_deformation_mm";
-  ReflexPair pair;
-  int* slot[2] = {&pair.agonist, &pair.antagonist};
-  for (int k = 0; k < 2; ++k) {
-    *slot[k] = tm->muscle_index(sc, sc.calibrated_pair[k]);
-    if (*slot[k] < 0) {
-      fail(sc, key, "solves the line of '" + sc.calibrated_pair[k] +
-                        "' (model.calibration), which is not a muscle of the scenario");
-    }
-  }
+  const ReflexPair pair = tm->pair_of(sc, sc.calibrated_pair, key);   // model.calibration's
   CalibrationRequest req;
   req.start_angle_rad = sc.start_position;
   req.pressure_agonist_pa = sc.calibrated_pressure_pa[0];
@@ -94,11 +86,11 @@ void recalibrate_lines(const Scenario& sc, TrialModel* tm) {
   req.antagonist_deformation_m = *sc.antagonist_deformation_m;
   req.where = sc.path + ": " + key;
   const ArmCalibration c = solve_calibration(*tm, sc, pair, req);
-  for (int k = 0; k < 2; ++k) {
-    BoundMuscle& b = tm->muscles[*slot[k]];
-    b.line_length_m = c.lines[k].line_length_m;
+  for (int k : {pair.agonist, pair.antagonist}) {
+    BoundMuscle& b = tm->muscles[k];
+    b.line_length_m = c.lines[k == pair.agonist ? 0 : 1].line_length_m;
     store_pam_in_model(tm->model.get(), b.actuator, sc.muscles[b.spec].pam.spring,
-                       b.line_length_m, *slot[k], sc.model_file.c_str());
+                       b.line_length_m, k, sc.model_file.c_str());
   }
 }
 

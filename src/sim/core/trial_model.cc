@@ -183,16 +183,7 @@ void bind_events(const Scenario& sc, TrialModel* tm) {
 
 void bind_pairs(const Scenario& sc, TrialModel* tm) {
   for (const std::array<std::string, 2>& names : sc.controller_pairs()) {
-    ReflexPair pair;
-    int* slot[2] = {&pair.agonist, &pair.antagonist};
-    for (int r = 0; r < 2; ++r) {
-      *slot[r] = tm->muscle_index(sc, names[r]);
-      if (*slot[r] < 0) {
-        fail(sc, "reflex.pairs", "names muscle '" + names[r] +
-                                     "', which is not a muscle of the scenario");
-      }
-    }
-    tm->pairs.push_back(pair);
+    tm->pairs.push_back(tm->pair_of(sc, names, "reflex.pairs"));
   }
 }
 
@@ -261,6 +252,19 @@ int TrialModel::muscle_index(const Scenario& sc, const std::string& actuator) co
     if (sc.muscles[muscles[k].spec].actuator == actuator) return static_cast<int>(k);
   }
   return -1;
+}
+
+ReflexPair TrialModel::pair_of(const Scenario& sc, const std::array<std::string, 2>& names,
+                               const std::string& key) const {
+  ReflexPair pair;
+  int* slot[2] = {&pair.agonist, &pair.antagonist};
+  for (int r = 0; r < 2; ++r) {
+    *slot[r] = muscle_index(sc, names[r]);
+    if (*slot[r] < 0) {
+      fail(sc, key, "names muscle '" + names[r] + "', which is not a muscle of the scenario");
+    }
+  }
+  return pair;
 }
 
 void set_body_mass(mjModel* m, int body, double mass_kg) {

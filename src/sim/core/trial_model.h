@@ -10,6 +10,7 @@
 // indexed in the model's actuator order (log columns, noise stream, controller).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -68,6 +69,10 @@ struct TrialModel {
 
   // The muscle index of an actuator name, or -1.
   int muscle_index(const Scenario& scenario, const std::string& actuator) const;
+  // The pair of two muscles by actuator name (agonist, antagonist); throws InputError
+  // "<scenario>: <key> names muscle '<name>', which is not a muscle of the scenario".
+  ReflexPair pair_of(const Scenario& scenario, const std::array<std::string, 2>& names,
+                     const std::string& key) const;
   // Puts the joints of `d` at their start: each joints.<joint>.start_* key's, then the
   // calibrated joint at the scenario's start angle (when it has one).
   void place_at_start(const Scenario& scenario, mjData* d) const {

@@ -251,7 +251,11 @@ void read_muscles(ConfigReader& in, Scenario* sc, bool lines_needed) {
     sc->has_start_position = true;
     sc->start_position = calibration->start_angle_rad;
   }
-  if (sc->antagonist_deformation_m && lines_needed) read_recalibration(in, calibration, sc);
+  if (sc->antagonist_deformation_m) {   // (calibrate solves the lines by its own options)
+    in.check(lines_needed, "model.antagonist_deformation_mm",
+             "is not read by pamsim calibrate: give --antagonist-deformation-mm");
+    read_recalibration(in, calibration, sc);
+  }
   for (const std::string& name : muscle_names(in)) {
     sc->muscles.push_back(
         read_muscle(in, *sc, name, calibration ? &*calibration : nullptr, lines_needed));
