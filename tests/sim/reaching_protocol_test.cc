@@ -75,6 +75,15 @@ TEST(ReachingProtocolTest, ALayersOwnKeysWinAndBadLayersAreRefusedByKey) {
   EXPECT_NE(again.find("board creep"), std::string::npos) << again;
   const std::string unknown = refused_key("d.toml", base + "trails = 3\n");
   EXPECT_NE(unknown.find("trails"), std::string::npos) << unknown;
+  std::string many = base;   // 20 new brackets beside the base's 13: over the 32 allowed
+  for (int k = 0; k < 20; ++k) {
+    many += "[[bracket]]\nname = \"b" + std::to_string(k) + "\"\nkey = \"a.k" +
+            std::to_string(k) + "\"\nfrom = 0.0\nto = 1.0\nsource = \"s\"\n";
+  }
+  const std::string over = refused_key("f.toml", many);
+  EXPECT_NE(over.find("f.toml: bracket may hold at most 32 brackets with the base's"),
+            std::string::npos)
+      << over;
   const std::string missing = refused_key("e.toml", "base = \"nowhere.toml\"\n");
   EXPECT_NE(missing.find("base"), std::string::npos) << missing;
 }

@@ -60,6 +60,9 @@ void read_layered_brackets(ConfigReader& in, bool layered, ReachingValidationSpe
   const std::vector<Bracket> own = read_brackets(in, &seed);
   if (!layered || in.has("bracket_seed")) spec->bracket_seed = seed;
   spec->brackets = layered_by_name(spec->brackets, own);
+  in.check(static_cast<int>(spec->brackets.size()) <= kMaxBrackets, "bracket",
+           "may hold at most " + std::to_string(kMaxBrackets) + " brackets with the base's, got " +
+               std::to_string(spec->brackets.size()));
   for (std::size_t i = 0; i < spec->brackets.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
       in.check(spec->brackets[i].key != spec->brackets[j].key, "bracket",
@@ -92,6 +95,9 @@ ReachingValidationSpec read_protocol(const std::string& path,
            "must be > 0 s, got " + format_value(spec.min_slack_s));
   read_paper(in, &spec);
   spec.budget = layered_by_name(spec.budget, read_budget_sources(in));
+  in.check(static_cast<int>(spec.budget.size()) <= kMaxBudgetSources, "budget_source",
+           "may hold at most " + std::to_string(kMaxBudgetSources) +
+               " sources with the base's, got " + std::to_string(spec.budget.size()));
   read_layered_brackets(in, layered, &spec);
   in.reject_unknown();
   return spec;
