@@ -306,7 +306,8 @@ std::vector<std::string> ConfigReader::asked_keys() const {
 void TableEntry::allow(const std::vector<EntryKey>& keys) const {
   for (const auto& [k, v] : table) {
     const std::string key(k.str());
-    if (!is_entry_key(keys, key)) in.fail(where + key, "is not a key of this table");
+    const std::string problem = entry_value_problem(keys, key, v);
+    if (!problem.empty()) in.fail(where + key, problem);
   }
 }
 

@@ -17,7 +17,7 @@
 
 #include "base/format.h"   // format_value, for the messages
 #include "base/input_error.h"
-#include "base/key_table.h"   // EntryKey
+#include "base/entry_keys.h"
 
 namespace pamsim {
 
@@ -115,7 +115,8 @@ struct TableEntry {
   const toml::table& table;
   std::string where;   // "parameter[0]."
 
-  // Refuses a key not in `keys`: "<where><key> is not a key of this table".
+  // Refuses a key not in `keys` ("<where><key> is not a key of this table (...)") and a value
+  // its row's type, range or names exclude (entry_value_problem).
   void allow(const std::vector<EntryKey>& keys) const;
   // A string ("... must be a string"); a missing one is refused if `required`, else `fallback`.
   std::string text(const char* key, bool required, const std::string& fallback = "") const;

@@ -52,15 +52,21 @@ Enum parse_name(const EnumName<Enum> (&names)[N], const std::string& name,
   throw InputError(context + " must be " + quoted_choices(names) + ", got \"" + name + "\"");
 }
 
+// The names of an enum's values, in its table's order.
+template <typename Enum, std::size_t N>
+std::vector<std::string> enum_name_list(const EnumName<Enum> (&names)[N]) {
+  std::vector<std::string> list;
+  for (const EnumName<Enum>& n : names) list.emplace_back(n.name);
+  return list;
+}
+
 // A key whose value names one of an enum's values: a ChoiceRow bound to `field`, its allowed
 // names the enum's one table's. The row keeps a reference to `names`, which must therefore
 // have static storage (a constexpr table at namespace scope, as every enum's is).
 template <typename Enum, std::size_t N>
 ChoiceRow enum_choice_row(std::string key, const EnumName<Enum> (&names)[N], std::string doc,
                           Enum* field) {
-  std::vector<std::string> allowed;
-  for (const EnumName<Enum>& n : names) allowed.emplace_back(n.name);
-  return {std::move(key), std::move(allowed), std::move(doc),
+  return {std::move(key), enum_name_list(names), std::move(doc),
           [&names, field](const std::string& v) { *field = parse_name(names, v, "choice"); },
           [&names, field] { return std::string(name_of(names, *field)); }};
 }

@@ -204,18 +204,6 @@ double from_si(const NumberRow& row, double si) {
   return si * row.divisor / row.to_si;
 }
 
-bool is_entry_key(const std::vector<EntryKey>& keys, const std::string& key) {
-  return std::any_of(keys.begin(), keys.end(), [&](const EntryKey& k) { return key == k.name; });
-}
-
-std::vector<KeyDoc> entry_key_docs(const std::string& array, const std::vector<EntryKey>& keys) {
-  std::vector<KeyDoc> docs;
-  for (const EntryKey& k : keys) {
-    docs.push_back({array + "[]." + k.name, k.unit, k.fallback, k.allowed, k.meaning});
-  }
-  return docs;
-}
-
 double file_value(const KeyTable& table, const std::string& name) {
   for (const NumberRow& row : table.numbers) {
     if (row.name != name) continue;

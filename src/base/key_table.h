@@ -205,22 +205,4 @@ double file_value(const KeyTable& table, const std::string& name);
 // the order the reader reads them: choices, true/false keys, integers, numbers.
 std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables);
 
-// One key of an array of tables' entries ([[parameter]]'s "from"): its name, unit, what it
-// allows, its default and its meaning, as the key reference shows it. A reader's list of these
-// is the one place its entries' keys are named and described: TableArray::entries refuses any
-// other key (config_reader.h), and `pamsim keys` lists them (entry_key_docs).
-struct EntryKey {
-  const char* name;
-  const char* unit;
-  const char* allowed;
-  const char* fallback;   // "(required)", "1.0", ...
-  const char* meaning;
-};
-
-// Whether `key` is one of `keys`' names.
-bool is_entry_key(const std::vector<EntryKey>& keys, const std::string& key);
-
-// The reference lines of array `array`'s entry keys: "<array>[].<name>".
-std::vector<KeyDoc> entry_key_docs(const std::string& array, const std::vector<EntryKey>& keys);
-
 }  // namespace pamsim

@@ -14,14 +14,17 @@
 
 namespace pamsim::key_table_text {
 
-// "\"a\" | \"b\"": the names a choice (or a name list) allows, as TOML strings
+// "\"a\" | \"b\"": names as TOML strings
+inline std::string names_text(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& a : names) text += (text.empty() ? "\"" : " | \"") + a + "\"";
+  return text;
+}
+
+// the names a choice (or a name list) allows, as names_text writes them
 template <typename Row>
 std::string choices_text(const Row& row) {
-  std::string allowed;
-  for (const std::string& a : row.allowed) {
-    allowed += (allowed.empty() ? "\"" : " | \"") + a + "\"";
-  }
-  return allowed;
+  return names_text(row.allowed);
 }
 
 // "[0, 64]"

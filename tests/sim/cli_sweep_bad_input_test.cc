@@ -48,7 +48,7 @@ std::vector<BadSweepFile> bad_sweep_files() {
       {"empty_axis", short_sweep("[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = []\n"),
        "axis[0].values is empty"},
       {"zero_count", short_sweep("[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nfrom = 1.0\nto = 2.0\n"
-                                 "count = 0\n"), "count must be >= 1"},
+                                 "count = 0\n"), "axis[0].count must be in [1, inf), got 0"},
       {"negative_seeds", short_sweep("seeds = -1\n" + axis), "seeds must be in [1, "},
       {"no_axis", short_sweep(""), "axis is required"},
       {"nan_value", short_sweep("[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [nan]\n"),

@@ -187,16 +187,16 @@ TEST(RandomizeTest, BadTablesAreRefusedByTheirKey) {
   const std::string head = "[[randomize]]\nkey = \"" + pamsim_test::kAgonistWall + "\"\n";
   for (const auto& [body, says] : std::vector<std::pair<std::string, std::string>>{
            {head + "from = 1.0\nto = 2.0\n", "randomize[0].distribution is required"},
-           {head + "distribution = \"beta\"\n", "randomize[0].distribution must be \"uniform\""},
+           {head + "distribution = \"beta\"\n", "randomize[0].distribution is \"beta\", allowed \"uniform\" | \"normal\""},
            {head + "distribution = \"uniform\"\nfrom = 2.0\n", "randomize[0].to is required"},
            {head + "distribution = \"uniform\"\nfrom = 2.0\nto = 2.0\n", "randomize[0].from must be below to"},
            {head + "distribution = \"uniform\"\nfrom = 1.0\nto = nan\n", "randomize[0].to must be finite"},
            {head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\nmin = 1.0\n", "randomize[0].min is not a key of a uniform draw"},
-           {head + "distribution = \"normal\"\nmean = 2.0\nstddev = 0.0\n", "randomize[0].stddev must be > 0"},
-           {head + "distribution = \"normal\"\nmean = 2.0\nsd = 0.1\n", "randomize[0].sd is not a key of a normal draw"},
+           {head + "distribution = \"normal\"\nmean = 2.0\nstddev = 0.0\n", "randomize[0].stddev must be in (0, inf), got 0"},
+           {head + "distribution = \"normal\"\nmean = 2.0\nsd = 0.1\n", "randomize[0].sd is not a key of this table (key, distribution, from"},
            {head + "distribution = \"normal\"\nmean = 2.0\nstddev = 0.1\nmin = 2.5\nmax = 2.4\n", "randomize[0].min must be below max"},
            {head + "distribution = \"normal\"\nmean = 2.0\nstddev = 0.1\nmin = 2.4\n", "keep 0.003"},
-           {head + "distribution = \"lognormal\"\nmedian = -1.0\nsigma = 0.1\n", "randomize[0].median must be > 0"},
+           {head + "distribution = \"lognormal\"\nmedian = -1.0\nsigma = 0.1\n", "randomize[0].median must be in (0, inf), got -1"},
            {"[[randomize]]\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize[0].key is required"},
            {"[[randomize]]\nkey = \"seed\"\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize[0].key cannot be \"seed\""},
            {head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n" + head +

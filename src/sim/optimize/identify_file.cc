@@ -37,8 +37,7 @@ void read_tensile(ConfigReader& in, IdentifyDefinition* def) {
     } catch (const InputError& err) {
       in.fail(e.where + "file", std::string("(") + err.what() + ")");
     }
-    t.weight = e.number("weight").value_or(1.0);
-    if (!(t.weight > 0)) in.fail(e.where + "weight", "must be > 0, got " + format_value(t.weight));
+    t.weight = e.number("weight").value_or(1.0);   // > 0, by its row
     def->tensile.push_back(std::move(t));
   }
 }

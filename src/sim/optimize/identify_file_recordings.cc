@@ -84,12 +84,8 @@ IdentifyRecording read_recording(ConfigReader& in, const TableEntry& e) {
   r.set = e.texts("set", false);
   r.channels = read_channels(e, r.data);
   r.noise = read_noise(e, r.data, r.channels);
-  r.weight = e.number("weight").value_or(1.0);
-  if (!(r.weight > 0)) in.fail(e.where + "weight", "must be > 0, got " + format_value(r.weight));
-  if (const toml::node* h = e.table.get("held_out")) {
-    if (!h->is_boolean()) in.fail(e.where + "held_out", "must be true or false");
-    r.held_out = *h->value<bool>();
-  }
+  r.weight = e.number("weight").value_or(1.0);   // > 0, by its row
+  r.held_out = e.table["held_out"].value_or(false);   // true or false, by its row
   return r;
 }
 
@@ -109,9 +105,7 @@ bool fitted_channel(const IdentifyDefinition& def, const std::string& name) {
 // sim.duration_s unless it says).
 std::vector<double> candidate_times(ConfigReader& in, const TableEntry& e,
                                     const IdentifyDefinition& def, const IdentifyRecording& c) {
-  const double rate = e.number("rate_hz").value_or(100.0);
-  in.check(rate > 0.0 && rate <= 10000.0, e.where + "rate_hz",
-           "must be within (0, 10000] Hz, got " + format_value(rate));
+  const double rate = e.number("rate_hz").value_or(100.0);   // in (0, 10000], by its row
   std::vector<std::string> overrides = def.overrides;
   overrides.insert(overrides.end(), c.set.begin(), c.set.end());
   double duration = 0.0;
@@ -121,9 +115,9 @@ std::vector<double> candidate_times(ConfigReader& in, const TableEntry& e,
     in.fail(e.where + "set", std::string("(") + err.what() + ")");
   }
   const double given = e.number("duration_s").value_or(duration);
-  in.check(given > 0.0 && given <= duration, e.where + "duration_s",
-           "must be within (0, " + format_value(duration) + "] s (its scenario's sim.duration_s), got " +
-               format_value(given));
+  in.check(given <= duration, e.where + "duration_s",
+           "must be at most its scenario's sim.duration_s, " + format_value(duration) +
+               " s, got " + format_value(given));
   // (a bound on what a candidate holds: a 6 s trial at 100 Hz is 600 samples)
   constexpr double kMaxSamples = 1e6;
   in.check(rate * given <= kMaxSamples, e.where + "rate_hz",
@@ -169,44 +163,47 @@ IdentifyRecording read_candidate(ConfigReader& in, const TableEntry& e,
 const std::vector<EntryKey>& tensile_entry_keys() {
   static const std::vector<EntryKey> keys = {
       {"muscle", "", "a muscle of the base scenario", "(required)",
-       "the muscle whose plant the tensile test measured"},
+       "the muscle whose plant the tensile test measured", EntryType::kText},
       {"file", "", "a tensile CSV (pamsim tensile's columns), relative to this file",
-       "(required)", "the static test's rows, fitted with the recordings"},
-      {"weight", "", "> 0", "1.0", "its share of the cost"}};
+       "(required)", "the static test's rows, fitted with the recordings", EntryType::kText},
+      {"weight", "", "", "1.0", "its share of the cost", EntryType::kNumber, kPositiveRange}};
   return keys;
 }
 
 const std::vector<EntryKey>& recording_entry_keys() {
   static const std::vector<EntryKey> keys = {
       {"file", "", "a recording CSV (time_s and trajectory.csv's columns), relative to this file",
-       "(required)", "the lab's recording"},
+       "(required)", "the lab's recording", EntryType::kText},
       {"name", "", "letters, digits, '_' or '-'; unique", "(the file's stem)",
-       "its name in the outputs"},
+       "its name in the outputs", EntryType::kText},
       {"set", "", "list of \"key=value\" scenario overrides", "[]",
-       "what made this recording: a command schedule, an event, a mass"},
+       "what made this recording: a command schedule, an event, a mass", EntryType::kTexts},
       {"channels", "", "list of the file's columns", "(every column)",
-       "the channels the fit matches"},
-      {"weight", "", "> 0", "1.0", "its share of the cost"},
-      {"held_out", "", "true | false", "false",
-       "kept out of the fit, used for the held-out check"},
+       "the channels the fit matches", EntryType::kTexts},
+      {"weight", "", "", "1.0", "its share of the cost", EntryType::kNumber, kPositiveRange},
+      {"held_out", "", "", "false", "kept out of the fit, used for the held-out check",
+       EntryType::kBool},
       {"noise", "(each channel's)", "{ <channel> = floor > 0 }",
-       "(estimated from the recording)", "each channel's noise floor, in its unit"}};
+       "(estimated from the recording)", "each channel's noise floor, in its unit",
+       EntryType::kTable}};
   return keys;
 }
 
 const std::vector<EntryKey>& candidate_entry_keys() {
   static const std::vector<EntryKey> keys = {
       {"name", "", "letters, digits, '_' or '-'; unique", "(required)",
-       "an experiment a lab could run, for --plan"},
+       "an experiment a lab could run, for --plan", EntryType::kText},
       {"set", "", "list of \"key=value\" scenario overrides", "[]",
-       "what it would do: a command schedule, an event, a mass"},
+       "what it would do: a command schedule, an event, a mass", EntryType::kTexts},
       {"channels", "", "list of trajectory.csv's columns, at least one", "(required)",
-       "the channels it would log"},
-      {"rate_hz", "Hz", "(0, 10000]", "100.0", "their sampling rate"},
-      {"duration_s", "s", "(0, its scenario's sim.duration_s]", "(sim.duration_s)",
-       "how long it would log"},
+       "the channels it would log", EntryType::kTexts},
+      {"rate_hz", "Hz", "", "100.0", "their sampling rate", EntryType::kNumber,
+       {0.0, 10000.0, true, false}},
+      {"duration_s", "s", "at most its scenario's sim.duration_s", "(sim.duration_s)",
+       "how long it would log", EntryType::kNumber, kPositiveRange},
       {"noise", "(each channel's)", "{ <channel> = floor > 0 }",
-       "(a fitted recording's floor)", "each channel's noise floor, in its unit"}};
+       "(a fitted recording's floor)", "each channel's noise floor, in its unit",
+       EntryType::kTable}};
   return keys;
 }
 

@@ -73,10 +73,7 @@ SearchParameter read_parameter(ConfigReader& in, const TableEntry& e,
   p.to = *to;
   in.check(p.from < p.to, e.where + "from",
            "must be below to (" + format_value(p.from) + " >= " + format_value(p.to) + ")");
-  const std::string scale = e.text("scale", false, "linear");
-  in.check(scale == "linear" || scale == "log", e.where + "scale",
-           "must be \"linear\" or \"log\", got \"" + scale + "\"");
-  p.log = scale == "log";
+  p.log = e.text("scale", false, "linear") == "log";   // one of its row's names
   in.check(!p.log || p.from > 0.0, e.where + "from",
            "must be > 0 on a log scale, got " + format_value(p.from));
   return p;
@@ -97,13 +94,14 @@ std::vector<SearchParameter> read_search_parameters(ConfigReader& in,
 
 const std::vector<EntryKey>& parameter_entry_keys() {
   static const std::vector<EntryKey> keys = {
-      {"key", "", "a numeric scenario key", "(required)", "the scenario key searched"},
-      {"from", "(the key's)", "a number, within the key's range", "(required)",
-       "the search box's lower end, in the key's own unit"},
-      {"to", "(the key's)", "a number above from, within the key's range", "(required)",
-       "the search box's upper end"},
-      {"scale", "", "\"linear\" | \"log\" (from > 0)", "\"linear\"",
-       "how the search spaces the box"}};
+      {"key", "", "a numeric scenario key", "(required)", "the scenario key searched",
+       EntryType::kText},
+      {"from", "(the key's)", "within the key's range", "(required)",
+       "the search box's lower end, in the key's own unit", EntryType::kNumber},
+      {"to", "(the key's)", "above from, within the key's range", "(required)",
+       "the search box's upper end", EntryType::kNumber},
+      {"scale", "", "log: from > 0", "\"linear\"", "how the search spaces the box",
+       EntryType::kChoice, {}, {"linear", "log"}}};
   return keys;
 }
 

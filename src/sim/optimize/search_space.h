@@ -10,7 +10,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "base/key_table.h"   // EntryKey
+#include "base/entry_keys.h"
 
 namespace pamsim {
 

@@ -69,10 +69,7 @@ void read_objectives(ConfigReader& in, const std::vector<std::string>& metrics,
     TuneObjective o;
     o.metric = e.text("metric", true);
     check_metric(in, metrics, e.where + "metric", o.metric);
-    if (const toml::node* n = e.table.get("maximize")) {
-      if (!n->is_boolean()) in.fail(e.where + "maximize", "must be true or false");
-      o.maximize = *n->value<bool>();
-    }
+    o.maximize = e.table["maximize"].value_or(false);   // true or false, by its row
     def->objectives.push_back(o);
   }
   in.check(!def->objectives.empty(), "objective", "needs at least one [[objective]]");
@@ -172,23 +169,27 @@ void check_settings(const TuneDefinition& def) {
 const std::vector<EntryKey>& objective_entry_keys() {
   static const std::vector<EntryKey> keys = {
       {"metric", "", "a summary metric of the base scenario", "(required)",
-       "the metric the search minimises (its mean over the seeds)"},
-      {"maximize", "", "true | false", "false", "maximise the metric instead"}};
+       "the metric the search minimises (its mean over the seeds)", EntryType::kText},
+      {"maximize", "", "", "false", "maximise the metric instead", EntryType::kBool}};
   return keys;
 }
 
 const std::vector<EntryKey>& constraint_entry_keys() {
   static const std::vector<EntryKey> keys = {
       {"metric", "", "a summary metric of the base scenario", "(required)",
-       "the metric a point must keep within [min, max] (its mean over the seeds)"},
-      {"min", "(the metric's)", "a number, at most max", "(none)", "its lowest allowed mean"},
-      {"max", "(the metric's)", "a number", "(none)", "its highest allowed mean; min or max"}};
+       "the metric a point must keep within [min, max] (its mean over the seeds)",
+       EntryType::kText},
+      {"min", "(the metric's)", "at most max", "(none)", "its lowest allowed mean",
+       EntryType::kNumber},
+      {"max", "(the metric's)", "", "(none)", "its highest allowed mean; min or max",
+       EntryType::kNumber}};
   return keys;
 }
 
 const std::vector<EntryKey>& reference_entry_keys() {
   static const std::vector<EntryKey> keys = {
-      {"name", "", "a name", "(required)", "a setting evaluated beside the search's best"},
+      {"name", "", "", "(required)", "a setting evaluated beside the search's best",
+       EntryType::kText},
       {"values", "(the parameters')", "one number per [[parameter]], in their order",
        "(required)", "the setting's parameter values"}};
   return keys;

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "base/key_table.h"
+#include "base/entry_keys.h"
 #include "sim/scenario/randomize.h"
 #include "sim/optimize/optimizer.h"
 #include "sim/optimize/search_space.h"

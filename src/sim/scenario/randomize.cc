@@ -52,10 +52,7 @@ void read_parameters(const TableEntry& t, Randomization* r) {
     if (!(r->a < r->b)) fail("from", "must be below to, got " + format_value(r->a) + " and " + format_value(r->b));
     return;
   }
-  if (!(r->b > 0)) fail(second, "must be > 0, got " + format_value(r->b));
-  if (r->distribution == Distribution::kLogNormal && !(r->a > 0)) {
-    fail(first, "must be > 0, got " + format_value(r->a));
-  }
+  // stddev, median and sigma are > 0 by their rows
   r->min = t.number("min").value_or(r->min);
   r->max = t.number("max").value_or(r->max);
   if (!(r->min < r->max)) fail("min", "must be below max");
@@ -105,18 +102,25 @@ double Randomization::kept_share() const {
 
 const std::vector<EntryKey>& randomize_entry_keys() {
   static const std::vector<EntryKey> keys = {
-      {"key", "", "a numeric scenario key, not seed", "(required)", "the scenario key drawn"},
-      {"distribution", "", "\"uniform\" | \"normal\" | \"lognormal\"", "(required)",
-       "how it is drawn, once per seed"},
-      {"from", "(the key's)", "uniform: below to", "(required)", "a uniform draw's lower end"},
-      {"to", "(the key's)", "uniform", "(required)", "a uniform draw's upper end"},
-      {"mean", "(the key's)", "normal", "(required)", "a normal draw's mean"},
-      {"stddev", "(the key's)", "normal: > 0", "(required)", "a normal draw's standard deviation"},
-      {"median", "(the key's)", "lognormal: > 0", "(required)", "a lognormal draw's median"},
-      {"sigma", "", "lognormal: > 0", "(required)", "a lognormal draw's log standard deviation"},
+      {"key", "", "a numeric scenario key, not seed", "(required)", "the scenario key drawn",
+       EntryType::kText},
+      {"distribution", "", "", "(required)", "how it is drawn, once per seed",
+       EntryType::kChoice, {}, enum_name_list(kDistributions)},
+      {"from", "(the key's)", "uniform: below to", "(required)", "a uniform draw's lower end",
+       EntryType::kNumber},
+      {"to", "(the key's)", "uniform", "(required)", "a uniform draw's upper end",
+       EntryType::kNumber},
+      {"mean", "(the key's)", "normal", "(required)", "a normal draw's mean", EntryType::kNumber},
+      {"stddev", "(the key's)", "normal", "(required)", "a normal draw's standard deviation",
+       EntryType::kNumber, kPositiveRange},
+      {"median", "(the key's)", "lognormal", "(required)", "a lognormal draw's median",
+       EntryType::kNumber, kPositiveRange},
+      {"sigma", "", "lognormal", "(required)", "a lognormal draw's log standard deviation",
+       EntryType::kNumber, kPositiveRange},
       {"min", "(the key's)", "normal, lognormal: below max, keeping at least 1 %", "(none)",
-       "truncation: draws below are drawn again"},
-      {"max", "(the key's)", "normal, lognormal", "(none)", "truncation: draws above are drawn again"}};
+       "truncation: draws below are drawn again", EntryType::kNumber},
+      {"max", "(the key's)", "normal, lognormal", "(none)",
+       "truncation: draws above are drawn again", EntryType::kNumber}};
   return keys;
 }
 
@@ -124,8 +128,8 @@ void read_randomizations(ConfigReader& in, std::vector<Randomization>* randomize
                          std::uint64_t* randomize_seed) {
   std::set<std::string> keys;
   const TableArray tables(in, "randomize");
-  for (std::size_t i = 0; i < tables.size(); ++i) {
-    randomize->push_back(read_one(tables[i]));
+  for (const TableEntry& entry : tables.entries(randomize_entry_keys())) {
+    randomize->push_back(read_one(entry));
     if (!keys.insert(randomize->back().key).second) {
       in.fail("randomize", "names " + randomize->back().key + " twice");
     }

@@ -24,7 +24,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "base/key_table.h"   // EntryKey
+#include "base/entry_keys.h"
 
 namespace pamsim {
 

@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "base/key_table.h"
+#include "base/entry_keys.h"
 #include "sim/scenario/randomize.h"
 
 namespace pamsim {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
@@ -62,8 +63,7 @@ void read_grid_levels(const toml::table& t, std::int64_t max_trials, const Where
   SweepAxis& axis = *axis_out;
   const toml::node* count_node = t.get("count");
   where.check(count_node && count_node->is_integer(), "count", "is required (an integer >= 1)");
-  const std::int64_t count = *count_node->value<std::int64_t>();
-  where.check(count >= 1, "count", "must be >= 1, got " + std::to_string(count));
+  const std::int64_t count = *count_node->value<std::int64_t>();   // >= 1, by its row
   where.check(count > 1 || axis.from == axis.to, "count", "must be >= 2 for a range from != to");
   where.check(count <= max_trials, "count",
               "is " + std::to_string(count) + ", more than max_trials = " +
@@ -81,33 +81,38 @@ void read_grid_levels(const toml::table& t, std::int64_t max_trials, const Where
 
 const std::vector<EntryKey>& axis_entry_keys() {
   static const std::vector<EntryKey> keys = {
-      {"key", "", "a scenario key, not seed", "(required)", "the scenario key the axis varies"},
+      {"key", "", "a scenario key, not seed", "(required)", "the scenario key the axis varies",
+       EntryType::kText},
       {"values", "(the key's)", "a list (grid designs)", "(values or from/to)",
        "the values, in the key's own unit or type"},
-      {"from", "(the key's)", "a number (> 0 on a log scale)", "(values or from/to)",
-       "a range's first value"},
-      {"to", "(the key's)", "a number", "(values or from/to)", "a range's last value"},
-      {"count", "", "an integer >= 1 (grid designs)", "(required with from/to)",
-       "how many values the range takes"},
-      {"scale", "", "\"linear\" | \"log\"", "\"linear\"", "how a range spaces its values"}};
+      {"from", "(the key's)", "> 0 on a log scale", "(values or from/to)",
+       "a range's first value", EntryType::kNumber},
+      {"to", "(the key's)", "", "(values or from/to)", "a range's last value",
+       EntryType::kNumber},
+      {"count", "", "grid designs", "(required with from/to)",
+       "how many values the range takes", EntryType::kInteger,
+       {1.0, std::numeric_limits<double>::infinity()}},
+      {"scale", "", "", "\"linear\"", "how a range spaces its values", EntryType::kChoice, {},
+       {"linear", "log"}}};
   return keys;
 }
 
 const std::vector<EntryKey>& case_axis_entry_keys() {
   static const std::vector<EntryKey> keys = {
       {"name", "", "a plain name, unique among the axes", "(required)",
-       "the axis's column in the outputs"},
+       "the axis's column in the outputs", EntryType::kText},
       {"case", "", "[[axis.case]] tables", "(required)", "the axis's named cases"}};
   return keys;
 }
 
 const std::vector<EntryKey>& case_entry_keys() {
   static const std::vector<EntryKey> keys = {
-      {"name", "", "a name, unique in its axis", "(required)", "the case's value in its column"},
+      {"name", "", "a name, unique in its axis", "(required)", "the case's value in its column",
+       EntryType::kText},
       {"from", "", "{ file = \"...\", table = \"...\" }, or a list of them", "(none)",
        "the scenario keys of a table of another file, relative to the sweep file"},
       {"set", "", "a table of scenario keys (lists allowed)", "(none)",
-       "the scenario keys the case sets, after from's"}};
+       "the scenario keys the case sets, after from's", EntryType::kTable}};
   return keys;
 }
 
@@ -119,11 +124,14 @@ SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
     return detail::read_case_axis(t, index, design, file);
   }
   const Where where{file, "axis[" + std::to_string(index) + "]."};
-  for (const auto& [k, _] : t) {
-    if (!is_entry_key(axis_entry_keys(), std::string(k.str()))) {
-      where.fail(std::string(k.str()), "is not a sweep axis key (key, values, from, to, count, "
-                                        "scale; or name and [[axis.case]])");
+  for (const auto& [k, v] : t) {
+    const std::string key(k.str());
+    if (!is_entry_key(axis_entry_keys(), key)) {
+      where.fail(key, "is not a sweep axis key (key, values, from, to, count, scale; or name and "
+                      "[[axis.case]])");
     }
+    const std::string problem = entry_value_problem(axis_entry_keys(), key, v);
+    where.check(problem.empty(), key, problem);
   }
   SweepAxis axis;
   const auto key = t["key"].value<std::string>();
@@ -145,10 +153,7 @@ SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
   where.check(t.contains("from") && t.contains("to"), "from", "and to are both required");
   axis.from = number_of(t, "from", where);
   axis.to = number_of(t, "to", where);
-  const std::string scale = t["scale"].value_or(std::string("linear"));
-  where.check(scale == "linear" || scale == "log", "scale",
-              "must be \"linear\" or \"log\", got \"" + scale + "\"");
-  axis.log_scale = scale == "log";
+  axis.log_scale = t["scale"].value_or(std::string("linear")) == "log";   // a row's name
   if (axis.log_scale) {
     where.check(axis.from > 0 && axis.to > 0, "from",
                 "and to must be > 0 on a log scale, got " + format_value(axis.from) + " and " +

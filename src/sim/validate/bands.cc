@@ -49,11 +49,15 @@ double quantile(const std::vector<double>& sorted, double q) {
 
 const std::vector<EntryKey>& bracket_entry_keys() {
   static const std::vector<EntryKey> keys = {
-      {"name", "", "a plain name, unique", "(required)", "the unknown, as the outputs name it"},
-      {"key", "", "a numeric scenario key, unique", "(required)", "the key a rig's draw sets"},
-      {"from", "(the key's)", "below to", "(required)", "the bracket's lower end"},
-      {"to", "(the key's)", "a number", "(required)", "the bracket's upper end"},
-      {"source", "", "a citation", "(required)", "where the bracket comes from"}};
+      {"name", "", "a plain name, unique", "(required)", "the unknown, as the outputs name it",
+       EntryType::kText},
+      {"key", "", "a numeric scenario key, unique", "(required)", "the key a rig's draw sets",
+       EntryType::kText},
+      {"from", "(the key's)", "below to", "(required)", "the bracket's lower end",
+       EntryType::kNumber},
+      {"to", "(the key's)", "", "(required)", "the bracket's upper end", EntryType::kNumber},
+      {"source", "", "a citation", "(required)", "where the bracket comes from",
+       EntryType::kText}};
   return keys;
 }
 

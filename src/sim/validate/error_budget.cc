@@ -47,11 +47,12 @@ void check_source_overrides(const TableEntry& e, const char* field,
 
 const std::vector<EntryKey>& budget_source_entry_keys() {
   static const std::vector<EntryKey> keys = {
-      {"name", "", "a plain name, unique", "(required)", "the error source"},
+      {"name", "", "a plain name, unique", "(required)", "the error source", EntryType::kText},
       {"on", "", "list of \"key=value\" scenario overrides, at least one", "(required)",
-       "the source switched on"},
+       "the source switched on", EntryType::kTexts},
       {"off", "", "list of \"key=value\" scenario overrides", "[]",
-       "the source switched off, where the protocol's own scenario has it on"}};
+       "the source switched off, where the protocol's own scenario has it on",
+       EntryType::kTexts}};
   return keys;
 }
 
