@@ -87,6 +87,7 @@ TEST(MuscleNameKeysTest, LabelAndSpansRefuseTheirBadValuesAndReachTheMuscle) {
   MuscleSpec muscle;
   EXPECT_EQ(row_keys({muscle_name_key_table(&muscle)}),
             (std::map<std::string, int>{{"muscles.<actuator>.label", 1},
+                                        {"muscles.<actuator>.params", 1},
                                         {"muscles.<actuator>.spans", 1}}));
 }
 

@@ -49,7 +49,6 @@ std::vector<KeyDoc> model_docs() {
       {"pneumatics.<table>.<field>", "(the file's)", "(model.pneumatics')", "as in the pneumatics file (pamsim keys --pneumatics)", "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index"},
       {"model.<actuator>_params", "", "(none)", "path", "shorthand of muscles.<actuator>.params (pamsim 0.1 files)"},
       {"pressure.<actuator>_MPa", "MPa", "(none)", "[0, controller.p_max_MPa]", "shorthand of a constant muscles.<actuator>.command"},
-      {"muscles.<actuator>.params", "", "(required)", "path to a PAM parameter file", "the estimator's spring model (models/pams/...)"},
       {"muscles.<actuator>.plant", "", "(the params file's law)", "path to a plant file; or a table: file and any of that file's fields in its units (muscles.<m>.plant.geometry.wall_thickness_mm = 1.5), each validated as the file's own", "the physical muscle (AVBDL law with friction)"},
       {"muscles.<actuator>.plant.file", "", "(required in the table form)", "path to a plant file", "the plant file whose fields muscles.<actuator>.plant.<table>.<field> change"},
       {"muscles.<actuator>.plant.<table>.<field>", "(the file's)", "(the plant file's)", "as in the plant file (pam_actuator/plant_params.h)", "a field of the plant file, e.g. geometry.wall_thickness_mm, bladder.diameter_mm"},
@@ -78,7 +77,6 @@ std::vector<KeyDoc> schedule_docs() {
       }
     }
   }
-  docs.push_back({"muscles.<actuator>.command.file", "", "(required)", "path to a CSV \"time_s,MPa\"; kind = \"table\"", "a piecewise linear schedule through its rows (scenario/schedule_csv.h)"});
   return docs;
 }
 

@@ -174,7 +174,9 @@ KeyTable muscle_name_key_table(MuscleSpec* muscle) {
   KeyTable t{"muscles.<actuator>", {}, {}, {}};
   t.texts = {{"label",
               "the muscle's name in columns and metrics: no spaces, commas or quotes; unique",
-              &muscle->label, "(the actuator's name)"}};
+              &muscle->label, "(the actuator's name)"},
+             {"params", "the estimator's spring model: a PAM parameter file (models/pams/...)",
+              &muscle->params_file, "(required)", true, true}};
   t.name_lists = {{"spans", {},
                    "the joints of the model its tendon must cross: refused if its path misses "
                    "one (no moment arm at the start)",

@@ -89,8 +89,9 @@ struct MuscleLineKeys {
 // `line`, and the line's creep straight to `muscle`'s fields (their defaults are its own).
 KeyTable muscle_line_key_table(MuscleLineKeys* line, MuscleSpec* muscle);
 
-// muscles.<actuator>'s name in columns (label) and the joints its tendon must cross (spans),
-// bound to `muscle`; the reader sets the label's default (the actuator's name) first.
+// muscles.<actuator>'s parameter file (params; the reader renames the row for the shorthand
+// model.<actuator>_params), its name in columns (label) and the joints its tendon must cross
+// (spans), bound to `muscle`; the reader sets the label's default (the actuator's name) first.
 KeyTable muscle_name_key_table(MuscleSpec* muscle);
 
 // events.<event> and events.<event>.when (placeholders a reader replaces with the event's

@@ -60,8 +60,7 @@ PressureSchedule read_command(ConfigReader& in, const std::string& key) {
     in.check(!s.times_s.empty() && s.times_s.size() == s.values_pa.size(), key + ".MPa",
              "must give one pressure per time in times_s, at least one");
   } else if (s.kind == ScheduleKind::kTable) {
-    const std::string file = in.get_input_path(key + ".file", "");
-    in.check(!file.empty(), key + ".file", "is required for kind \"table\"");
+    const std::string file = s.source;   // its row's, resolved
     s = in_file(in, [&] {
       try {
         return read_schedule_csv(file);
@@ -200,10 +199,16 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
   m.key = "muscles." + name;
   m.actuator = name;
 
-  // parameter file (and the legacy label of the shorthand's arm)
+  // parameter file, by its row or the shorthand's (and the legacy label of the shorthand's arm)
+  KeyTable names = muscle_name_key_table(&m);
+  names.name = m.key;
   const std::string params_key = long_or_short(in, m.key + ".params", "model." + name + "_params");
-  in.check(!params_key.empty(), m.key + ".params", "is required");
-  m.params_file = in.get_input_path(params_key, "");
+  KeyTable params = rows_named(names, {"params"});
+  if (params_key == "model." + name + "_params") {
+    params.name = "model";
+    params.texts.at(0).name = name + "_params";
+  }
+  read_key_rows(in, params);
   m.pam = in_file(in, [&] { return load_pam_params(m.params_file); });
   in.check(m.pam.strain_gauge.has_value(), params_key,
            "(" + m.params_file + ") needs a [strain_gauge] table (Eq. (8)): the sensing reads it");
@@ -211,8 +216,6 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
   if (in.has(m.key + ".plant")) read_muscle_plant(in, &m);
   const bool legacy = params_key != m.key + ".params";
   m.label = legacy ? legacy_label(name) : name;
-  KeyTable names = muscle_name_key_table(&m);
-  names.name = m.key;
   read_key_rows(in, rows_named(names, {"label"}));
   in.check(!m.label.empty() && m.label.find_first_of(" ,\"") == std::string::npos, m.key + ".label",
            "must be a non-empty name without spaces, commas or quotes");

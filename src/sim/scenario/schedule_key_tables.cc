@@ -72,6 +72,10 @@ KeyTable schedule_key_table(ScheduleKind kind, PressureSchedule* schedule) {
                   &s.values_pa, "(required)", 1}};
       break;
     case ScheduleKind::kTable:
+      t.texts = {{"file",
+                   "a CSV \"time_s,MPa\": a piecewise linear schedule through its rows "
+                   "(scenario/schedule_csv.h)",
+                   &s.source, "(required)", true, true}};
       break;
   }
   return t;
