@@ -1,15 +1,17 @@
 // trial_model_identity_test.cc: same_trial_model (trial_model.h) against what it stands for.
-// It compares what load_trial_model reads, kept beside it by hand; this test holds that list
-// to the built models: for every key of the shipped arm, rig and leg scenarios changed in
-// turn, whenever same_trial_model says the changed scenario builds the same trial model, the
-// two models built are the same (MuJoCo's model bytes, every muscle's binding, the bound ids
-// and start state). A key that load_trial_model reads and the list misses fails here, naming
-// the key; the counts show the test is not empty either way.
+// It calls two scenarios the same where they differ only in keys trial_only_key names; this
+// test holds that list to the built models: for every key of the shipped arm, rig and leg
+// scenarios changed in turn (a number, a boolean, a choice), whenever same_trial_model says
+// the changed scenario builds the same trial model, the two models built are the same
+// (MuJoCo's model bytes, every muscle's binding, the bound ids and start state). A key the
+// list names that load_trial_model reads fails here, naming the key; the counts show the test
+// is not empty either way, and the sweeps' usual axes keep their model.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -22,6 +24,7 @@
 #include "sim/core/muscle_binding.h"
 #include "sim/core/trial_model.h"
 #include "sim/scenario/scenario_file.h"
+#include "sim/scenario/scenario_key_docs.h"
 #include "test_paths.h"
 
 namespace pamsim {
@@ -85,10 +88,24 @@ std::string built_text(const TrialModel& tm) {
   return os.str();
 }
 
-// `value` changed: a number by about a tenth (an integer by one), a boolean flipped; "" for
-// a value of another kind (a name, a path, a list), which is left alone
-std::string changed(const std::string& value) {
+// another of the names "a" | "b" a choice key allows (its reference line's), or ""
+std::string other_choice(const std::string& key, const std::string& value) {
+  const KeyDoc* doc = scenario_key_doc(key);
+  if (doc == nullptr) return "";
+  const std::regex quoted("\"([A-Za-z0-9_]+)\"");
+  for (std::sregex_iterator m(doc->allowed.begin(), doc->allowed.end(), quoted), end; m != end;
+       ++m) {
+    if (m->str(0) != value) return m->str(0);
+  }
+  return "";
+}
+
+// `value` changed: a number by about a tenth (an integer by one), a boolean flipped, a
+// choice to another of its names; "" for a value of another kind (a free name, a path, a
+// list), which is left alone
+std::string changed(const std::string& key, const std::string& value) {
   if (value == "true" || value == "false") return value == "true" ? "false" : "true";
+  if (!value.empty() && value[0] == '"') return other_choice(key, value);
   char* end = nullptr;
   const double v = std::strtod(value.c_str(), &end);
   if (value.empty() || *end != '\0' || !std::isfinite(v)) return "";
@@ -108,7 +125,7 @@ Counts check_every_key(const std::string& scenario, const std::vector<std::strin
   const std::string base_text = built_text(load_trial_model(base));
   Counts counts;
   for (const ScenarioKeyValue& kv : scenario_key_values(scenario, given)) {
-    const std::string value = changed(kv.value);
+    const std::string value = changed(kv.key, kv.value);
     if (value.empty()) continue;
     std::vector<std::string> sets = given;
     sets.push_back(kv.key + "=" + value);
@@ -121,8 +138,8 @@ Counts check_every_key(const std::string& scenario, const std::vector<std::strin
       ++counts.same;
       EXPECT_EQ(built_text(load_trial_model(other)), base_text)
           << scenario << ": --set " << sets.back() << " builds another model, but "
-          << "same_trial_model says it is the same (a key load_trial_model reads is missing "
-          << "from its list)";
+          << "same_trial_model says it is the same (trial_only_key names a key "
+          << "load_trial_model reads)";
     } catch (const InputError&) {
       // a value the scenario refuses, or a model it cannot bind: nothing to compare
     }
@@ -142,6 +159,25 @@ TEST(TrialModelIdentityTest, WhatSameTrialModelCallsTheSameIsBuiltTheSame) {
     EXPECT_GE(counts.same, 40) << file << ": keys that keep the model";
     EXPECT_GE(counts.rebuilt, 3) << file << ": keys that rebuild it";
   }
+}
+
+// The shipped sweeps' and tunings' axes: the reflex's gains, the noise and the valve keep the
+// model; a plant field, a mass and a joint's damping load it again; a scenario not read from
+// a document shares none.
+TEST(TrialModelIdentityTest, TheShippedAxesOfTheControllerSensorsAndValveKeepTheModel) {
+  const std::string drop = pamsim_test::kScenarios + "drop_mass.toml";
+  const Scenario base = load_scenario(drop);
+  for (const char* set : {"reflex.v_thr_mm_s=60", "reflex.k_MPa_s_per_mm=0.002",
+                          "reflex.lowpass_hz=20", "sensors.noise_scale=2", "valve.dead_time_ms=20",
+                          "sim.duration_s=2", "seed=7", "sensors.gauge.board.length_mm=50"}) {
+    EXPECT_TRUE(same_trial_model(base, load_scenario(drop, {set}))) << set;
+  }
+  for (const char* set : {"muscles.agonist.plant.geometry.wall_thickness_mm=1.5",
+                          "drop.mass_kg=0.3", "joints.shoulder.damping_N_m_s_per_rad=0.2",
+                          "reflex.pairs=[[\"antagonist\", \"agonist\"]]"}) {
+    EXPECT_FALSE(same_trial_model(base, load_scenario(drop, {set}))) << set;
+  }
+  EXPECT_FALSE(same_trial_model(Scenario{}, Scenario{}));
 }
 
 }  // namespace

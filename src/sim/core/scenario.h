@@ -170,6 +170,12 @@ struct Scenario {
 
   std::vector<std::string> metrics;       // metric sets (metrics.h), in output order
 
+  // The keys that may change its trial model, as its reader read them: the file's path, then
+  // the document with its overrides, less the keys trial_only_key (trial_model.h) names, as
+  // TOML text (scenario_file.cc). same_trial_model compares these; "" where the scenario was
+  // not read from a document (it then shares no model).
+  std::string model_keys;
+
   // The muscle with this actuator name, or nullptr.
   const MuscleSpec* muscle(const std::string& actuator) const;
   // The event with this name, or nullptr.

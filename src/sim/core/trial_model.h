@@ -88,10 +88,18 @@ struct TrialModel {
 TrialModel load_trial_model(const Scenario& scenario);
 
 // True if two scenarios build the same TrialModel, so a sweep worker can keep its model
-// when a point changes only other keys (times, gains, noise, schedules after t = 0...). It
-// compares what load_trial_model reads, listed beside it (trial_model_identity.cc); a test
-// holds the list to the built models, key by key (tests/sim/trial_model_identity_test.cc).
+// when a point changes only trial-only keys (gains, noise, the valve, the run's length...):
+// their model_keys are equal, and not empty. A test holds this to the built models, key by
+// key (tests/sim/trial_model_identity_test.cc).
 bool same_trial_model(const Scenario& a, const Scenario& b);
+
+// Whether a scenario key (dotted, as a file writes it; a table's name stands for its keys)
+// is one load_trial_model never reads: the run's own keys (seed, sim.duration_s,
+// sim.control_hz, sim.max_steps), the controller's gains and the sensors (controller.p_max_MPa,
+// reflex.* but reflex.pairs, sensors.*, muscles.<m>.gauge.*), the pneumatics (valve.*,
+// pneumatics.*, model.pneumatics) and the drop's time and height. Every other key counts as
+// the model's: a key this list misses costs a sweep a model load, never a wrong model.
+bool trial_only_key(const std::string& key);
 
 // Sets a body's mass, scaling its inertia with it, and the subtree masses above it.
 void set_body_mass(mjModel* m, int body, double mass_kg);

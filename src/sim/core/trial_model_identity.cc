@@ -1,62 +1,37 @@
-// trial_model_identity.cc: same_trial_model (trial_model.h): whether two scenarios build
-// the same trial model, by comparing everything load_trial_model reads, as text (doubles by
-// their bits).
-#include <sstream>
+// trial_model_identity.cc: same_trial_model and trial_only_key (trial_model.h): which
+// scenarios share a trial model, by the keys that may change it. The list here names what
+// load_trial_model never reads; everything else is compared, so that a key added to the
+// scenario, or a new use of one when the model is bound, can only cost a model load.
+#include <algorithm>
+#include <string>
+#include <vector>
 
-#include "base/double_bits.h"
+#include "base/config_reader.h"   // split_key
 #include "sim/core/trial_model.h"
 
 namespace pamsim {
-namespace {
-
-void append_bits(std::ostringstream& os, double v) { os << double_bits(v) << ';'; }
-
-}  // namespace
 
 bool same_trial_model(const Scenario& a, const Scenario& b) {
-  // everything load_trial_model reads, as text
-  auto fingerprint = [](const Scenario& sc) {
-    std::ostringstream os;
-    os << sc.model_file << ';' << sc.joint << ';' << sc.has_start_position << ';';
-    append_bits(os, sc.start_position);
-    append_bits(os, sc.timestep_s);
-    append_bits(os, sc.antagonist_deformation_m.value_or(0.0));   // re-solves two lines
-    for (int k = 0; k < 2; ++k) {
-      os << sc.calibrated_pair[k] << ';';
-      append_bits(os, sc.calibrated_pressure_pa[k]);
+  return !a.model_keys.empty() && a.model_keys == b.model_keys;
+}
+
+bool trial_only_key(const std::string& key) {
+  // whole tables, then single keys ("*": any one part)
+  static const std::vector<std::vector<std::string>> kTables = {
+      {"reflex"}, {"sensors"}, {"valve"}, {"pneumatics"}, {"muscles", "*", "gauge"}};
+  static const std::vector<std::string> kKeys = {
+      "seed", "sim.duration_s", "sim.control_hz", "sim.max_steps", "model.pneumatics",
+      "controller.p_max_MPa", "drop.time_s", "drop.height_m"};
+  if (key == "reflex.pairs") return false;   // the pairs bound to muscle indices
+  if (std::find(kKeys.begin(), kKeys.end(), key) != kKeys.end()) return true;
+  const std::vector<std::string> parts = split_key(key);
+  return std::any_of(kTables.begin(), kTables.end(), [&](const std::vector<std::string>& t) {
+    if (parts.size() < t.size()) return false;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (t[i] != "*" && t[i] != parts[i]) return false;
     }
-    for (const MuscleSpec& mu : sc.muscles) {
-      os << mu.actuator << ';' << mu.label << ';' << mu.params_file << ';' << mu.plant_file << ';'
-         << mu.plant_changes << ';' << static_cast<int>(mu.line) << ';';
-      append_bits(os, mu.line_length_m);
-      append_bits(os, mu.line_axial_stiffness_n);
-      append_bits(os, mu.line_creep);
-      append_bits(os, mu.line_creep_time_s);
-      append_bits(os, mu.command.at(0.0));
-      for (const std::string& joint : mu.spans) os << joint << ',';   // checked when bound
-    }
-    for (const std::string& set : sc.metrics) os << set << ',';   // names checked when bound
-    for (const BodyMassSpec& bm : sc.body_masses) {
-      os << bm.body << ';';
-      append_bits(os, bm.mass_kg);
-      for (double i : bm.inertia_kg_m2) append_bits(os, i);
-    }
-    for (const JointSpec& j : sc.joints) {
-      os << j.joint << ';';
-      append_bits(os, j.damping);
-      append_bits(os, j.frictionloss);
-      append_bits(os, j.start);
-    }
-    for (const HoldSpec& h : sc.holds) os << h.body << ';' << h.above_site << ';';
-    for (const EventSpec& e : sc.events) {
-      os << e.name << ';' << static_cast<int>(e.action) << ';' << e.body << ';'
-         << static_cast<int>(e.when.kind) << ';' << e.when.body_a << ';' << e.when.body_b << ';'
-         << e.when.joint << ';' << e.when.after << ';';
-    }
-    for (const auto& pair : sc.controller_pairs()) os << pair[0] << ',' << pair[1] << ';';
-    return os.str();
-  };
-  return fingerprint(a) == fingerprint(b);
+    return true;
+  });
 }
 
 }  // namespace pamsim

@@ -11,6 +11,7 @@
 #include "base/toml_file.h"
 #include "reflex/controller_registry.h"
 #include "sim/core/metrics.h"
+#include "sim/core/trial_model.h"   // trial_only_key
 #include "sim/scenario/scenario_key_docs.h"
 #include "sim/scenario/scenario_reading.h"
 #include "sim/scenario/scenario_key_tables.h"
@@ -145,6 +146,28 @@ void apply_scenario_overrides(ConfigReader& in, const std::vector<std::string>& 
   }
 }
 
+// `t` less its trial-only keys (trial_only_key, trial_model.h), each table walked to its
+// leaves; a table left empty goes too where it is a trial-only table itself ([sensors], which
+// an override makes), and stays where its presence is read ([drop], [holds])
+void drop_trial_only(toml::table* t, const std::string& prefix) {
+  for (auto it = t->begin(); it != t->end();) {
+    const std::string key = prefix + std::string(it->first.str());
+    if (toml::table* sub = it->second.as_table()) {
+      drop_trial_only(sub, key + ".");
+      it = sub->empty() && trial_only_key(key) ? t->erase(it) : std::next(it);
+    } else {
+      it = trial_only_key(key) ? t->erase(it) : std::next(it);
+    }
+  }
+}
+
+// Scenario::model_keys: the file's path, then the document as read less its trial-only keys
+std::string model_keys(const ConfigReader& in) {
+  toml::table doc = in.document();
+  drop_trial_only(&doc, "");
+  return in.name() + "\n" + toml_text(doc);
+}
+
 Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrides,
                        bool lines_needed = true) {
   apply_scenario_overrides(in, overrides);
@@ -170,6 +193,7 @@ Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrid
   read_sensors(in, &sc);
   read_metrics(in, &sc, has_drop);
   in.reject_unknown();
+  sc.model_keys = model_keys(in);
   return sc;
 }
 
