@@ -18,10 +18,6 @@ constexpr EnumName<ValveModel> kValveNames[] = {{ValveModel::kIso6358, "iso6358"
                                                 {ValveModel::kRegulator, "regulator"}};
 }  // namespace
 
-ValveModel parse_valve_model(const std::string& name, const std::string& context) {
-  return parse_name(kValveNames, name, context);
-}
-
 const char* valve_model_name(ValveModel model) { return name_of(kValveNames, model); }
 
 ChoiceRow valve_model_row(std::string name, ValveModel* model) {

@@ -55,12 +55,10 @@ namespace pamsim {
 
 enum class ValveModel { kIso6358, kFirstOrder, kRegulator };
 
-// "iso6358" -> kIso6358, "first_order" -> kFirstOrder, "regulator" -> kRegulator; otherwise
-// throws InputError "<context> must be \"iso6358\", \"first_order\" or \"regulator\", got
-// \"x\"".
-ValveModel parse_valve_model(const std::string& name, const std::string& context);
+// The name a file gives `model`: "iso6358", "first_order" or "regulator".
 const char* valve_model_name(ValveModel model);
-// A scenario's valve.model (the key `name` of its table), bound to `model`.
+// A scenario's valve.model (the key `name` of its table), bound to `model`: its names are
+// valve_model_name's, read back to the model they name.
 ChoiceRow valve_model_row(std::string name, ValveModel* model);
 
 // ISO 6358 flow function psi(r) with the laminar linearisation above r_lam (see above);

@@ -20,20 +20,16 @@ namespace {
 
 using pamsim_test::table_one_braid;
 
-TEST(ChamberOdeTest, ParsesValveModelNames) {
-  EXPECT_EQ(parse_valve_model("iso6358", "x"), ValveModel::kIso6358);
-  EXPECT_EQ(parse_valve_model("first_order", "x"), ValveModel::kFirstOrder);
-  EXPECT_EQ(parse_valve_model("regulator", "x"), ValveModel::kRegulator);
+// The valve.model row names the three models as files write them, and reads each name back
+// to its model (round trips through the row's setter and getter).
+TEST(ChamberOdeTest, TheValveModelRowNamesEachModelAndReadsItBack) {
+  ValveModel model = ValveModel::kIso6358;
+  const ChoiceRow row = valve_model_row("model", &model);
+  EXPECT_EQ(row.allowed, (std::vector<std::string>{"iso6358", "first_order", "regulator"}));
   for (ValveModel m : {ValveModel::kIso6358, ValveModel::kFirstOrder, ValveModel::kRegulator}) {
-    EXPECT_EQ(parse_valve_model(valve_model_name(m), "x"), m);
-  }
-  try {
-    parse_valve_model("linear", "scenario.toml: valve.model");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "scenario.toml: valve.model must be \"iso6358\", \"first_order\" or "
-              "\"regulator\", got \"linear\"");
+    row.set(valve_model_name(m));
+    EXPECT_EQ(model, m);
+    EXPECT_EQ(row.get(), valve_model_name(m));
   }
 }
 
