@@ -28,6 +28,7 @@
 #include "sim/io/staged_outputs.h"
 #include "sim/render/scene_renderer.h"
 #include "sim/render/trial_video.h"
+#include "sim/validate/line_breaks.h"
 
 namespace pamsim {
 namespace {
@@ -104,6 +105,18 @@ void warn_if_the_start_moved(const Scenario& sc, const std::vector<TrialResult>&
             << "a muscle or its plant changed since; muscles.<m>.line = \"equilibrium\" solves "
                "a muscle's line to hold the calibrated start, or pamsim calibrate writes new "
                "lines\n";
+}
+
+// A line that breaks (muscles.<m>.line_strength_MPa): the trial ran on as if it held, which
+// no rig could. One line, not an error (validation refuses such a rig, line_breaks.h).
+void warn_if_a_line_breaks(const Scenario& sc, const std::vector<TrialResult>& results) {
+  std::vector<const Trajectory*> logs;
+  for (const TrialResult& r : results) logs.push_back(&r.trajectory);
+  try {
+    check_line_breaks(sc, logs);
+  } catch (const InputError& e) {
+    std::cerr << "pamsim: warning: " << e.what() << " (the trial ran on as if it held)\n";
+  }
 }
 
 // --from DIR: the earlier run's scenario.toml with its overrides, then this run's; warns
@@ -248,6 +261,7 @@ void run(RunOptions opt) {
   std::cout << printed.dump(2) << "\n";
   std::cerr << "pamsim: outputs in " << out << "\n";
   warn_if_the_start_moved(sc, results);
+  warn_if_a_line_breaks(sc, results);
   if (report_diverged(sc, results) > 0) throw SimulationFailed();
 }
 

@@ -152,12 +152,15 @@ class EventMetrics final : public MetricSet {
   std::vector<std::string> names_;
 };
 
-// tension: the lines' peak pulls (and in per cent of a line's working limit, where the
-// scenario gives one) and the tension reflexes' triggers
+// tension: the lines' peak pulls (and in per cent of a line's working limit and of its break
+// load, where the scenario gives them) and the tension reflexes' triggers
 class TensionMetrics final : public MetricSet {
  public:
   explicit TensionMetrics(const Scenario& sc) {
-    for (const MuscleSpec& m : sc.muscles) limit_n_[m.label] = m.line_limit_n;
+    for (const MuscleSpec& m : sc.muscles) {
+      limit_n_[m.label] = m.line_limit_n;
+      break_n_[m.label] = m.line_break_n;
+    }
   }
   void finish(const FinishedTrial& r, std::vector<Metric>* out) const override {
     const auto* triggers = r.tension_trigger_times_s;
@@ -165,9 +168,11 @@ class TensionMetrics final : public MetricSet {
     for (std::size_t j = 0; j < r.labels.size(); ++j) {
       const double peak = j < r.peak_tension_n.size() ? r.peak_tension_n[j] : kNaN;
       out->push_back({"peak_tension_" + r.labels[j] + "_N", peak});
-      const auto limit = limit_n_.find(r.labels[j]);
-      if (limit != limit_n_.end() && !std::isnan(limit->second)) {
-        out->push_back({"line_load_" + r.labels[j] + "_pct", 100.0 * peak / limit->second});
+      for (const auto& [loads, name] : {std::pair{&limit_n_, "line_load_"},
+                                        std::pair{&break_n_, "line_break_load_"}}) {
+        const auto load = loads->find(r.labels[j]);
+        if (load == loads->end() || std::isnan(load->second)) continue;
+        out->push_back({name + r.labels[j] + "_pct", 100.0 * peak / load->second});
       }
       const std::size_t n = triggers ? (*triggers)[j].size() : 0;
       out->push_back({"tension_triggers_" + r.labels[j], static_cast<double>(n), true});
@@ -178,6 +183,7 @@ class TensionMetrics final : public MetricSet {
 
  private:
   std::map<std::string, double> limit_n_;   // by label
+  std::map<std::string, double> break_n_;   // by label
 };
 
 // length_estimate: the estimate against the encoder, all muscles pooled [mm]

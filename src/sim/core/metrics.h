@@ -24,7 +24,9 @@
 //   events            event_<name>_time_s: when each scenario event fired, NaN if never
 //   tension           per muscle: peak_tension_<m>_N (the line's largest pull over every
 //                     physics step), line_load_<m>_pct (that in per cent of its
-//                     muscles.<m>.line_limit_N, where given) and tension_triggers_<m> (its
+//                     muscles.<m>.line_limit_N, where given), line_break_load_<m>_pct (in per
+//                     cent of its break load, where muscles.<m>.line_strength_MPa is given:
+//                     over 100 the line breaks) and tension_triggers_<m> (its
 //                     tension (Ib) reflex's triggers; 0 without one);
 //                     first_tension_trigger_time_s
 //   (always) trial    steps, sim_time_s, wall_time_s, realtime_factor
