@@ -1,10 +1,11 @@
 // scenario_file.h: reads a scenario (core/scenario.h) from a TOML file plus `--set key=value`
 // overrides and validates every key once, before anything runs. Units are in the keys' names
 // (the papers' MPa and mm at the file, SI inside). Each key's unit, range, default and
-// meaning is written once: as a row of its table (base/key_table.h: [sim], [drop] and
-// [valve] in scenario_key_tables.h, the sensors' and instruments' in sensing/, a controller
-// kind's in its own file) or, for the keys without a table yet (model, muscles, bodies,
-// joints, holds, events), in scenario_key_docs.cc beside the reader that checks it.
+// meaning is written once: as a row of its table (base/key_table.h: the model's, muscles',
+// bodies', holds', joints', events', [sim], [drop] and [valve] in scenario_key_tables.h, the
+// schedules' in schedule_key_tables.h, the sensors' and instruments' in sensing/, a controller
+// kind's in its own file); only the keys that hand a value on to another file (a plant as a
+// table of its fields, pneumatics.*) are described in scenario_key_docs.cc.
 // `pamsim keys` prints them all.
 // Shorthands kept from pamsim 0.1 (their keys keep their meaning):
 //   drop.{enabled, mass_kg, height_m, time_s} (and body = "ball", basket = "basket",

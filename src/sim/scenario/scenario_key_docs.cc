@@ -1,7 +1,7 @@
-// scenario_key_docs.cc: see scenario_key_docs.h. The keys with rows (base/key_table.h: [sim],
-// [drop], [valve], the sensors', the instruments', a controller kind's) are documented by their rows; the rest
-// here, with the ranges their readers check (scenario_file.cc, scenario_muscles.cc,
-// scenario_events.cc): keep those together when one changes.
+// scenario_key_docs.cc: see scenario_key_docs.h. Every key is documented by its row
+// (base/key_table.h; the shorthands by their long forms' rows, renamed) but those that hand a
+// value on to another file's rows: pneumatics.<table>.<field> and a muscle's plant given as a
+// table of the plant file's fields (muscles.<actuator>.plant.*), whose lines are here.
 #include "sim/scenario/scenario_key_docs.h"
 #include "sim/scenario/scenario_key_tables.h"
 #include "sim/scenario/schedule_key_tables.h"
@@ -47,14 +47,18 @@ std::vector<KeyDoc> model_docs() {
                       model_key_table(&scenario)});
   const std::vector<KeyDoc> by_hand = {
       {"pneumatics.<table>.<field>", "(the file's)", "(model.pneumatics')", "as in the pneumatics file (pamsim keys --pneumatics)", "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index"},
-      {"model.<actuator>_params", "", "(none)", "path", "shorthand of muscles.<actuator>.params (pamsim 0.1 files)"},
-      {"pressure.<actuator>_MPa", "MPa", "(none)", "[0, controller.p_max_MPa]", "shorthand of a constant muscles.<actuator>.command"},
       {"muscles.<actuator>.plant", "", "(the params file's law)", "path to a plant file; or a table: file and any of that file's fields in its units (muscles.<m>.plant.geometry.wall_thickness_mm = 1.5), each validated as the file's own", "the physical muscle (AVBDL law with friction)"},
       {"muscles.<actuator>.plant.file", "", "(required in the table form)", "path to a plant file", "the plant file whose fields muscles.<actuator>.plant.<table>.<field> change"},
       {"muscles.<actuator>.plant.<table>.<field>", "(the file's)", "(the plant file's)", "as in the plant file (pam_actuator/plant_params.h)", "a field of the plant file, e.g. geometry.wall_thickness_mm, bladder.diameter_mm"},
       {"muscles.<actuator>.plant.<table>.<stroke>.<field>", "(the file's)", "(the plant file's)", "as in the plant file (pam_actuator/plant_params.h)", "a field of the plant file's friction strokes, e.g. friction.extension.A0_mm2"},
   };
   docs.insert(docs.end(), by_hand.begin(), by_hand.end());
+  MuscleSpec muscle;   // the shorthands: their long forms' rows, renamed
+  for (const KeyDoc& d :
+       key_table_docs({params_shorthand_key_table(&muscle, "<actuator>"),
+                       pressure_shorthand_key_table(&muscle.command, "<actuator>")})) {
+    docs.push_back(d);
+  }
   return docs;
 }
 

@@ -184,6 +184,17 @@ KeyTable muscle_name_key_table(MuscleSpec* muscle) {
   return t;
 }
 
+KeyTable params_shorthand_key_table(MuscleSpec* muscle, const std::string& actuator) {
+  KeyTable t = rows_named(muscle_name_key_table(muscle), {"params"});
+  t.name = "model";
+  TextRow& row = t.texts.at(0);
+  row.name = actuator + "_params";
+  row.doc = "shorthand of muscles.<actuator>.params (pamsim 0.1 files): " + row.doc;
+  row.fallback_doc = "(none)";
+  row.required = false;   // read only where it is given
+  return t;
+}
+
 KeyTable event_key_table(EventSpec* event) {
   static const std::vector<std::pair<std::string, EventAction>> kActions = {
       {"mark", EventAction::kMark},

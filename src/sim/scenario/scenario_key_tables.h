@@ -93,6 +93,9 @@ KeyTable muscle_line_key_table(MuscleLineKeys* line, MuscleSpec* muscle);
 // model.<actuator>_params), its name in columns (label) and the joints its tendon must cross
 // (spans), bound to `muscle`; the reader sets the label's default (the actuator's name) first.
 KeyTable muscle_name_key_table(MuscleSpec* muscle);
+// The shorthand model.<actuator>_params (pamsim 0.1 files): muscle_name_key_table's params
+// row, renamed (`actuator` may be the placeholder "<actuator>").
+KeyTable params_shorthand_key_table(MuscleSpec* muscle, const std::string& actuator);
 
 // events.<event> and events.<event>.when (placeholders a reader replaces with the event's
 // key), bound to `event`; `thresholds` holds the when.* numbers that set its condition's kind

@@ -140,7 +140,7 @@ void read_muscle_command(ConfigReader& in, const Scenario& sc, const std::string
   if (command_key == m.key + ".command") {
     m.command = read_command(in, command_key);
   } else {
-    m.command.p0_pa = units::mpa_to_pa(in.get_double(command_key, 0.0));
+    read_key_rows(in, pressure_shorthand_key_table(&m.command, name));
   }
   in_file(in, [&] {
     validate(m.command, command_key, sc.pneumatics.command_max_gauge_pa);
@@ -203,18 +203,14 @@ MuscleSpec read_muscle(ConfigReader& in, const Scenario& sc, const std::string& 
   KeyTable names = muscle_name_key_table(&m);
   names.name = m.key;
   const std::string params_key = long_or_short(in, m.key + ".params", "model." + name + "_params");
-  KeyTable params = rows_named(names, {"params"});
-  if (params_key == "model." + name + "_params") {
-    params.name = "model";
-    params.texts.at(0).name = name + "_params";
-  }
+  const bool legacy = params_key == "model." + name + "_params";
+  KeyTable params = legacy ? params_shorthand_key_table(&m, name) : rows_named(names, {"params"});
   read_key_rows(in, params);
   m.pam = in_file(in, [&] { return load_pam_params(m.params_file); });
   in.check(m.pam.strain_gauge.has_value(), params_key,
            "(" + m.params_file + ") needs a [strain_gauge] table (Eq. (8)): the sensing reads it");
   // the physical plant, when it is not the estimator's law
   if (in.has(m.key + ".plant")) read_muscle_plant(in, &m);
-  const bool legacy = params_key != m.key + ".params";
   m.label = legacy ? legacy_label(name) : name;
   read_key_rows(in, rows_named(names, {"label"}));
   in.check(!m.label.empty() && m.label.find_first_of(" ,\"") == std::string::npos, m.key + ".label",

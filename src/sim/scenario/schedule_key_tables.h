@@ -20,7 +20,11 @@ KeyTable schedule_kind_key_table(PressureSchedule* schedule);
 
 // The keys of `kind`'s schedule, bound to `schedule` (constant: MPa; ramp: from_MPa, to_MPa,
 // start_s, duration_s; sine: offset_MPa, amplitude_MPa, period_s, phase_deg, start_s; steps:
-// times_s and MPa lists; table: none, its file is a path the reader resolves).
+// times_s and MPa lists; table: file, the CSV's path).
 KeyTable schedule_key_table(ScheduleKind kind, PressureSchedule* schedule);
+
+// The shorthand pressure.<actuator>_MPa (pamsim 0.1 files): the constant schedule's MPa row,
+// renamed, bound to `schedule` (`actuator` may be the placeholder "<actuator>").
+KeyTable pressure_shorthand_key_table(PressureSchedule* schedule, const std::string& actuator);
 
 }  // namespace pamsim
