@@ -135,7 +135,8 @@ class TableArray {
   TableArray(ConfigReader& in, const std::string& name);
   std::size_t size() const { return array_ ? array_->size() : 0; }
   TableEntry operator[](std::size_t i) const;
-  // Every entry, in order, each refusing a key not in `keys` (TableEntry::allow).
+  // Every entry, in order, each refusing a key not in `keys` and a value its row's type,
+  // range or names exclude (TableEntry::allow).
   std::vector<TableEntry> entries(const std::vector<EntryKey>& keys) const;
 
  private:

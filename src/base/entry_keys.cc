@@ -93,7 +93,8 @@ std::string entry_value_problem(const std::vector<EntryKey>& keys, const std::st
     case EntryType::kTexts: return texts_problem(value);
     case EntryType::kBool: return value.is_boolean() ? "" : "must be true or false";
     case EntryType::kChoice: return choice_problem(*row, value);
-    case EntryType::kTable: return value.is_table() ? "" : "must be a table";
+    case EntryType::kTable:
+      return value.is_table() ? "" : "must be " + (row->allowed.empty() ? "a table" : row->allowed);
     case EntryType::kAny: break;
   }
   return "";

@@ -84,7 +84,7 @@ std::vector<BadValue> bad_values(const EntryKey& k) {
     case EntryType::kText: return {{"1", "must be a string"}};
     case EntryType::kTexts: return {{"1", "list of strings"}, {"[1]", "list of strings"}};
     case EntryType::kBool: return {{"1", "true or false"}, {"\"yes\"", "true or false"}};
-    case EntryType::kTable: return {{"1", "must be a table"}};
+    case EntryType::kTable: return {{"1", "must be "}};
     case EntryType::kChoice: return {{"\"no_such_name\"", "allowed"}, {"1", "allowed"}};
     case EntryType::kNumber: {
       std::vector<BadValue> bad = {{"\"x\"", "must be a number"}, {"true", "must be a number"},

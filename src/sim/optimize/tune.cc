@@ -33,7 +33,7 @@ std::vector<TrialModel> shared_models(const std::vector<Scenario>& scenarios,
   model_of->assign(scenarios.size(), 0);
   for (std::size_t i = 0; i < scenarios.size(); ++i) {
     std::size_t m = 0;
-    while (m < i && !same_trial_model(scenarios[i], scenarios[(*model_of)[m]])) ++m;
+    while (m < i && !same_trial_model(scenarios[i], scenarios[m])) ++m;
     if (m == i) {
       (*model_of)[i] = models.size();
       models.push_back(load_trial_model(scenarios[i]));

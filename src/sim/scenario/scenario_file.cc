@@ -193,7 +193,8 @@ Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrid
   read_sensors(in, &sc);
   read_metrics(in, &sc, has_drop);
   in.reject_unknown();
-  sc.model_keys = model_keys(in);
+  // (pamsim calibrate's reading has placeholder lines: it shares no model with the others)
+  if (lines_needed) sc.model_keys = model_keys(in);
   return sc;
 }
 

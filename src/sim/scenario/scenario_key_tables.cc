@@ -153,8 +153,9 @@ KeyTable muscle_line_key_table(MuscleLineKeys* line, MuscleSpec* muscle) {
        "the line's working load: the tension metrics give the peak pull in per cent of it",
        nullptr, &line->limit_n, false, "(none)"},
       {"line_strength_MPa", "MPa", units::kPaPerMPa, {0.0, 1e5, true, false},
-       "the line material's tensile strength, with line_diameter_mm: its break load; a "
-       "validation rig whose line would pull past it is refused (nylon monofilament 560-920)",
+       "the line material's tensile strength, with line_diameter_mm: its break load (the "
+       "tension metrics' line_break_load_<m>_pct; pamsim run warns where the pull passes it, "
+       "and a validation rig whose line would is refused); nylon monofilament 560-920",
        nullptr, &line->strength_pa, false, "(none: it does not break)"}};
   t.choices = {{"line",
                 {"fixed", "equilibrium"},
