@@ -180,5 +180,21 @@ TEST(TrialModelIdentityTest, TheShippedAxesOfTheControllerSensorsAndValveKeepThe
   EXPECT_FALSE(same_trial_model(Scenario{}, Scenario{}));
 }
 
+// Scenarios A A B C B (two masses and a gain): three models, each scenario bound to its own
+// (the last B to B's, not to the model at its first match's index)
+TEST(TrialModelIdentityTest, SharedModelsBindEachScenarioToItsOwn) {
+  const std::string drop = pamsim_test::kScenarios + "drop_mass.toml";
+  const Scenario a = load_scenario(drop);
+  const Scenario a_gain = load_scenario(drop, {"reflex.v_thr_mm_s=60"});
+  const Scenario b = load_scenario(drop, {"drop.mass_kg=0.3"});
+  const Scenario c = load_scenario(drop, {"drop.mass_kg=0.4"});
+  std::vector<std::size_t> model_of;
+  const std::vector<TrialModel> models = shared_trial_models({a, a_gain, b, c, b}, &model_of);
+  ASSERT_EQ(models.size(), 3u);
+  EXPECT_EQ(model_of, (std::vector<std::size_t>{0, 0, 1, 2, 1}));
+  const int ball = mj_name2id(models[1].model.get(), mjOBJ_BODY, "ball");
+  EXPECT_DOUBLE_EQ(models[model_of[4]].model->body_mass[ball], 0.3);
+}
+
 }  // namespace
 }  // namespace pamsim

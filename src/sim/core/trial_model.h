@@ -93,6 +93,12 @@ TrialModel load_trial_model(const Scenario& scenario);
 // key (tests/sim/trial_model_identity_test.cc).
 bool same_trial_model(const Scenario& a, const Scenario& b);
 
+// One bound model per distinct model among `scenarios` (same_trial_model), in order of first
+// use; `model_of[i]` is the index of scenario i's (a tuning setting's noise levels differ only
+// in the sensors, and compiling the MJCF again per level would double its set-up).
+std::vector<TrialModel> shared_trial_models(const std::vector<Scenario>& scenarios,
+                                            std::vector<std::size_t>* model_of);
+
 // Whether a scenario key (dotted, as a file writes it; a table's name stands for its keys)
 // is one load_trial_model never reads: the run's own keys (seed, sim.duration_s,
 // sim.control_hz, sim.max_steps), the controller's gains and the sensors (controller.p_max_MPa,

@@ -15,6 +15,23 @@ bool same_trial_model(const Scenario& a, const Scenario& b) {
   return !a.model_keys.empty() && a.model_keys == b.model_keys;
 }
 
+std::vector<TrialModel> shared_trial_models(const std::vector<Scenario>& scenarios,
+                                            std::vector<std::size_t>* model_of) {
+  std::vector<TrialModel> models;
+  model_of->assign(scenarios.size(), 0);
+  for (std::size_t i = 0; i < scenarios.size(); ++i) {
+    std::size_t m = 0;   // the first earlier scenario of the same model
+    while (m < i && !same_trial_model(scenarios[i], scenarios[m])) ++m;
+    if (m == i) {
+      (*model_of)[i] = models.size();
+      models.push_back(load_trial_model(scenarios[i]));
+    } else {
+      (*model_of)[i] = (*model_of)[m];
+    }
+  }
+  return models;
+}
+
 bool trial_only_key(const std::string& key) {
   // whole tables, then single keys ("*": any one part)
   static const std::vector<std::vector<std::string>> kTables = {

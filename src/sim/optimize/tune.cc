@@ -24,26 +24,6 @@ struct TrialOutcome {
   TrialSummary summary;
 };
 
-// One bound model per distinct model among `scenarios` (the noise levels differ only in the
-// sensors, and compiling the MJCF again per level would double an evaluation's set-up);
-// `model_of[i]` is scenario i's.
-std::vector<TrialModel> shared_models(const std::vector<Scenario>& scenarios,
-                                      std::vector<std::size_t>* model_of) {
-  std::vector<TrialModel> models;
-  model_of->assign(scenarios.size(), 0);
-  for (std::size_t i = 0; i < scenarios.size(); ++i) {
-    std::size_t m = 0;
-    while (m < i && !same_trial_model(scenarios[i], scenarios[m])) ++m;
-    if (m == i) {
-      (*model_of)[i] = models.size();
-      models.push_back(load_trial_model(scenarios[i]));
-    } else {
-      (*model_of)[i] = (*model_of)[m];
-    }
-  }
-  return models;
-}
-
 // The scenarios of a setting's trials: one per noise level, or with [[randomize]] one per
 // trial (level-major), its seed index first_seed_offset + k % seeds drawing its arm.
 std::vector<Scenario> setting_scenarios(const TuneDefinition& def, const std::vector<double>& values,
@@ -67,7 +47,7 @@ std::vector<TrialOutcome> run_setting(const TuneDefinition& def, const std::vect
                                       std::uint64_t first_seed_offset, int seeds, int threads) {
   const std::vector<Scenario> scenarios = setting_scenarios(def, values, first_seed_offset, seeds);
   std::vector<std::size_t> model_of;
-  const std::vector<TrialModel> models = shared_models(scenarios, &model_of);
+  const std::vector<TrialModel> models = shared_trial_models(scenarios, &model_of);
   const int per_level = seeds;
   const bool per_trial = !def.randomize.empty();
   std::vector<TrialOutcome> out(def.noise_scales.size() * static_cast<std::size_t>(per_level));
