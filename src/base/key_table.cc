@@ -160,6 +160,23 @@ KeyTable rows_named(KeyTable table, const std::vector<std::string>& names) {
   });
 }
 
+KeyTable as_shorthand(KeyTable table, const std::string& table_name, const std::string& row_name,
+                      const std::string& long_form) {
+  assert(table.numbers.size() + table.texts.size() == 1 && "as_shorthand: one row");
+  table.name = table_name;
+  const auto rename = [&](auto* rows) {
+    for (auto& row : *rows) {
+      row.name = row_name;
+      row.doc = "shorthand of " + long_form + ": " + row.doc;
+      row.fallback_doc = "(none)";
+      row.required = false;
+    }
+  };
+  rename(&table.numbers);
+  rename(&table.texts);
+  return table;
+}
+
 void check_key_rows(const KeyTable& table) {
   for (const NumberRow& row : table.numbers) {
     const double* si = field(row);

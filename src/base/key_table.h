@@ -181,6 +181,13 @@ KeyTable rows_given(const ConfigReader& in, KeyTable table);
 // refused as unknown.
 KeyTable rows_named(KeyTable table, const std::vector<std::string>& names);
 
+// `table`, whose one row (a number or a text) is a long form's, as its shorthand: the table
+// named `table_name`, the row `row_name`, its doc prefixed "shorthand of <long_form>: ",
+// optional (a reader reads a shorthand only where it is given), its default shown as
+// "(none)". The shorthand keeps its long form's unit, range and meaning, written once.
+KeyTable as_shorthand(KeyTable table, const std::string& table_name, const std::string& row_name,
+                      const std::string& long_form);
+
 // The rows' fields as they are now, checked against the rows' ranges and choices: a
 // validate() of a struct its table is bound to. Throws InputError
 // "<table>.<key> must be in <range>, got <value>" (require_value).

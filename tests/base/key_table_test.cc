@@ -13,6 +13,7 @@
 
 #include <toml++/toml.h>
 
+#include "base/config_reader.h"
 #include "base/input_error.h"
 #include "base/key_table.h"
 
@@ -199,6 +200,26 @@ TEST(KeyTableTest, RequiredRowsOfATableThatMustBeGivenAndBadTextsAndListsAreName
     EXPECT_EQ(parts.key, c.key) << c.text;
     EXPECT_NE(parts.problem.find(c.says), std::string::npos) << c.text << ": " << parts.problem;
   }
+}
+
+// A shorthand is its long form's row renamed: the same unit, factor and range, read into the
+// same field, its doc saying what it shortens, optional where the long form was required.
+TEST(KeyTableTest, AShorthandIsTheLongFormsRowRenamed) {
+  double pressure_pa = 0.0;
+  NumberRow row{"MPa", "MPa", 1e6, kNonNegativeRange, "the commanded pressure", &pressure_pa};
+  row.required = true;
+  const KeyTable shorthand =
+      as_shorthand(KeyTable{"muscles.agonist.command", {row}, {}}, "pressure", "agonist_MPa",
+                   "a constant command");
+  ASSERT_EQ(shorthand.numbers.size(), 1u);
+  EXPECT_EQ(row_key(shorthand, shorthand.numbers[0].name), "pressure.agonist_MPa");
+  EXPECT_EQ(shorthand.numbers[0].doc, "shorthand of a constant command: the commanded pressure");
+  EXPECT_FALSE(shorthand.numbers[0].required);
+  ConfigReader in("pressure = { agonist_MPa = 0.25 }", "s.toml");
+  read_key_rows(in, shorthand);
+  EXPECT_DOUBLE_EQ(pressure_pa, 0.25e6);
+  ConfigReader bad("pressure = { agonist_MPa = -1 }", "s.toml");
+  EXPECT_THROW(read_key_rows(bad, shorthand), InputError) << "the long form's range";
 }
 
 }  // namespace

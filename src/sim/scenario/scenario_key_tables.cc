@@ -186,14 +186,8 @@ KeyTable muscle_name_key_table(MuscleSpec* muscle) {
 }
 
 KeyTable params_shorthand_key_table(MuscleSpec* muscle, const std::string& actuator) {
-  KeyTable t = rows_named(muscle_name_key_table(muscle), {"params"});
-  t.name = "model";
-  TextRow& row = t.texts.at(0);
-  row.name = actuator + "_params";
-  row.doc = "shorthand of muscles.<actuator>.params (pamsim 0.1 files): " + row.doc;
-  row.fallback_doc = "(none)";
-  row.required = false;   // read only where it is given
-  return t;
+  return as_shorthand(rows_named(muscle_name_key_table(muscle), {"params"}), "model",
+                      actuator + "_params", "muscles.<actuator>.params (pamsim 0.1 files)");
 }
 
 KeyTable event_key_table(EventSpec* event) {

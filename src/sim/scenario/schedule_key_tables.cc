@@ -82,14 +82,8 @@ KeyTable schedule_key_table(ScheduleKind kind, PressureSchedule* schedule) {
 }
 
 KeyTable pressure_shorthand_key_table(PressureSchedule* schedule, const std::string& actuator) {
-  KeyTable t = schedule_key_table(ScheduleKind::kConstant, schedule);
-  t.name = "pressure";
-  NumberRow& row = t.numbers.at(0);
-  row.name = actuator + "_MPa";
-  row.doc = "shorthand of a constant muscles.<actuator>.command: " + row.doc;
-  row.fallback_doc = "(none)";
-  row.required = false;   // read only where it is given
-  return t;
+  return as_shorthand(schedule_key_table(ScheduleKind::kConstant, schedule), "pressure",
+                      actuator + "_MPa", "a constant muscles.<actuator>.command");
 }
 
 }  // namespace pamsim
