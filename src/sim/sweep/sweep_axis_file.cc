@@ -13,6 +13,16 @@ void Where::fail(const std::string& key, const std::string& problem) const {
   throw InputError(file + ": " + prefix + key + " " + problem, {file, prefix + key, problem});
 }
 
+void check_entry(const toml::table& t, const std::vector<EntryKey>& keys, const Where& where,
+                 const std::string& unknown) {
+  for (const auto& [k, v] : t) {
+    const std::string key(k.str());
+    where.check(is_entry_key(keys, key), key, unknown);
+    const std::string problem = entry_value_problem(keys, key, v);
+    where.check(problem.empty(), key, problem);
+  }
+}
+
 AxisValue axis_value(const toml::node& n, const Where& where, const std::string& key) {
   AxisValue v;
   if (n.is_integer()) {

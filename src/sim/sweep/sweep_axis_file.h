@@ -23,6 +23,12 @@ struct Where {
   }
 };
 
+// Refuses a key of `t` that `keys` lacks ("<key> " + `unknown`, which names the table's keys
+// as this reader words them) and a value its row's type, range or names exclude
+// (entry_value_problem, base/entry_keys.h), before the table is read.
+void check_entry(const toml::table& t, const std::vector<EntryKey>& keys, const Where& where,
+                 const std::string& unknown);
+
 // A number (finite), integer, string or boolean as an axis value; fails naming `key`.
 AxisValue axis_value(const toml::node& n, const Where& where, const std::string& key);
 

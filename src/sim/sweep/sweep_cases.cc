@@ -54,12 +54,7 @@ void read_case(const toml::node& node, std::size_t c, const Where& axis, SweepAx
   const Where where{axis.file, axis.prefix + "case[" + std::to_string(c) + "]."};
   const toml::table* t = node.as_table();
   axis.check(t != nullptr, "case", "must be [[axis.case]] tables");
-  for (const auto& [k, v] : *t) {
-    const std::string key(k.str());
-    where.check(is_entry_key(case_entry_keys(), key), key, "is not a case key (name, from, set)");
-    const std::string problem = entry_value_problem(case_entry_keys(), key, v);
-    where.check(problem.empty(), key, problem);
-  }
+  check_entry(*t, case_entry_keys(), where, "is not a case key (name, from, set)");
   const auto name = (*t)["name"].value<std::string>();
   where.check(name && !name->empty(), "name", "is required (a non-empty string)");
   for (const AxisValue& v : out->values) {
@@ -88,13 +83,8 @@ void read_case(const toml::node& node, std::size_t c, const Where& axis, SweepAx
 SweepAxis read_case_axis(const toml::table& t, std::size_t index, SweepDesign design,
                          const std::string& file) {
   const Where where{file, "axis[" + std::to_string(index) + "]."};
-  for (const auto& [k, v] : t) {
-    const std::string key(k.str());
-    where.check(is_entry_key(case_axis_entry_keys(), key), key,
-                "does not go with [[axis.case]] (a case axis has name and its cases)");
-    const std::string problem = entry_value_problem(case_axis_entry_keys(), key, v);
-    where.check(problem.empty(), key, problem);
-  }
+  check_entry(t, case_axis_entry_keys(), where,
+              "does not go with [[axis.case]] (a case axis has name and its cases)");
   where.check(design == SweepDesign::kGrid, "case",
               "is for grid designs; random and lhs sample ranges");
   SweepAxis axis;

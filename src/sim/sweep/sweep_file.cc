@@ -8,7 +8,6 @@
 #include <limits>
 #include <cstdio>
 #include <cstdlib>
-#include <optional>
 #include <set>
 
 #include "base/config_reader.h"
@@ -25,17 +24,6 @@ namespace {
 
 using detail::axis_value;
 using detail::Where;
-
-double number_of(const toml::table& t, const char* key, const Where& where) {
-  const toml::node* n = t.get(key);
-  // (an integer beyond 2^53 has no exact double: toml++ gives none)
-  const bool numeric = n && (n->is_integer() || n->is_floating_point());
-  const std::optional<double> value = numeric ? n->value<double>() : std::nullopt;
-  if (!value) where.fail(key, "must be a number");
-  const double v = *value;
-  where.check(std::isfinite(v), key, "must be finite, got " + format_value(v));
-  return v;
-}
 
 // A grid level to 12 significant digits, so a log range lists 0.001, not 0.0010000000000000002.
 double tidy(double v) {
@@ -124,15 +112,9 @@ SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
     return detail::read_case_axis(t, index, design, file);
   }
   const Where where{file, "axis[" + std::to_string(index) + "]."};
-  for (const auto& [k, v] : t) {
-    const std::string key(k.str());
-    if (!is_entry_key(axis_entry_keys(), key)) {
-      where.fail(key, "is not a sweep axis key (key, values, from, to, count, scale; or name and "
-                      "[[axis.case]])");
-    }
-    const std::string problem = entry_value_problem(axis_entry_keys(), key, v);
-    where.check(problem.empty(), key, problem);
-  }
+  detail::check_entry(t, axis_entry_keys(), where,
+                      "is not a sweep axis key (key, values, from, to, count, scale; or name "
+                      "and [[axis.case]])");
   SweepAxis axis;
   const auto key = t["key"].value<std::string>();
   where.check(key.has_value() && !key->empty(), "key", "is required (a scenario key, e.g. "
@@ -151,8 +133,8 @@ SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
 
   axis.is_range = true;
   where.check(t.contains("from") && t.contains("to"), "from", "and to are both required");
-  axis.from = number_of(t, "from", where);
-  axis.to = number_of(t, "to", where);
+  axis.from = *t["from"].value<double>();   // finite numbers, by their rows (check_entry)
+  axis.to = *t["to"].value<double>();
   axis.log_scale = t["scale"].value_or(std::string("linear")) == "log";   // a row's name
   if (axis.log_scale) {
     where.check(axis.from > 0 && axis.to > 0, "from",
