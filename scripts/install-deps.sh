@@ -35,6 +35,8 @@ packages=(
   python3-venv python3-pip                   # pip install . into a fresh virtual environment
   python3-sphinx python3-myst-parser python3-yaml   # make docs: the site and its generated pages
   jq                                         # the docs' generated blocks pick numbers from JSON
+  gcc-arm-none-eabi libnewlib-arm-none-eabi  # the embedded controller for Cortex-M (make embedded)
+  gcc-arm-linux-gnueabihf libc6-dev-armhf-cross qemu-user   # ... for 32-bit ARM Linux, run by qemu-arm
 )
 
 missing=()

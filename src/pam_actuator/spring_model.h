@@ -14,6 +14,8 @@
 #include <array>
 #include <string>
 
+#include "embedded/pamctl.h"
+
 namespace pamsim {
 
 enum class SpringLaw { kEq3, kEq4, kEq5 };
@@ -49,6 +51,9 @@ void spring_model_to_paper_units(const SpringModel& model, double* m_mm_per_mpa,
 // Eq. (2): natural length l_n = m p + h [m], p gauge [Pa].
 double natural_length(const SpringModel& model, double p_pa);
 
+// The model as the embedded controller holds it (src/embedded/pamctl.h), the same SI values.
+pamctl_spring embedded_spring(const SpringModel& model);
+
 // Polynomial coefficients in d at pressure p: f = A[0] d + A[1] d^2 + A[2] d^3.
 std::array<double, 3> deformation_polynomial(const SpringModel& model, double p_pa);
 
@@ -65,6 +70,9 @@ enum class InversionStatus {
   kNoPhysicalRoot,   // no non-negative root: f is beyond what the law can produce at p
 };
 const char* to_string(InversionStatus status);
+
+// The embedded controller's inversion status as pamsim names it.
+InversionStatus inversion_status(pamctl_inversion status);
 
 struct DeformationEstimate {
   double d_m = 0.0;   // always finite; 0 unless status == kOk

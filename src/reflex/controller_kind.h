@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "base/key_table.h"
+#include "embedded/pamctl.h"
 #include "reflex/controller.h"
 #include "sensing/sensing.h"
 
@@ -67,6 +68,10 @@ class ControllerConfig {
   virtual std::vector<SummaryField> summary_fields() const { return {}; }
   // A new controller for one trial.
   virtual std::unique_ptr<Controller> make_controller(const ControllerSetup& setup) const = 0;
+  // Its part of the embedded controller's configuration (src/embedded/pamctl.h: kind,
+  // settings, pairs) into `config`, whose estimator part the sensing fills; "" when done,
+  // else the one-line reason this kind has no embedded form.
+  virtual std::string embedded(const ControllerSetup& setup, pamctl_config* config) const;
 };
 
 // One key of a kind for `pamsim keys`: the key reference's own row (base/key_table.h).

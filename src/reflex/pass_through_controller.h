@@ -10,10 +10,23 @@
 
 namespace pamsim {
 
+// The embedded controller's pass-through (PAMCTL_KIND_PASS_THROUGH): its commands are the
+// schedule's, unclamped (a non-finite one vents).
 class PassThroughController final : public Controller {
  public:
+  // muscle_count in [0, PAMCTL_MAX_MUSCLES], else InputError
+  explicit PassThroughController(int muscle_count);
   void update(const ControlInput& in, ControlOutput* out) override;
+
+ private:
+  pamctl_config embedded_{};
+  pamctl_state state_{};
+  pamctl_output out_{};
 };
+
+// The embedded controller's configuration of a pass-through for the setup's muscles (their
+// count in [0, PAMCTL_MAX_MUSCLES], else InputError); the estimator's part is left as it is.
+void embed_pass_through(const ControllerSetup& setup, pamctl_config* config);
 
 // The kind "none" (listed in controller_registry.cc).
 ControllerKind pass_through_controller_kind();

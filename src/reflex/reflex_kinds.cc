@@ -153,6 +153,14 @@ std::unique_ptr<Controller> StretchReflexScenarioConfig::make_controller(
   return std::make_unique<StretchReflexController>(bound(setup));
 }
 
+std::string StretchReflexScenarioConfig::embedded(const ControllerSetup& setup,
+                                                  pamctl_config* config) const {
+  const StretchReflexControllerConfig bound_config = bound(setup);
+  validate(bound_config);
+  embed_controller(bound_config, config);
+  return "";
+}
+
 ControllerKind stretch_reflex_controller_kind() {
   const auto read = [](ConfigReader& in, const ControllerScenario& sc) {
     return read_reflexes(in, sc, true, false);

@@ -29,6 +29,8 @@
 #include <string>
 #include <vector>
 
+#include "embedded/pamctl.h"
+
 namespace pamsim {
 
 enum class ReflexMode { kFollow, kLatch };
@@ -62,7 +64,11 @@ struct StretchReflexParams {
 // The timing every reflex shares (the stretch reflex here, the tension reflex of
 // tension_reflex.h): a trigger opens a window of round(duration_s / dt) ticks (>= 1), the
 // trigger tick its first; a window is never extended or restarted while it runs; after it,
-// round(refractory_s / dt) ticks refractory; no trigger while t < arm_after_s.
+// round(refractory_s / dt) ticks refractory; no trigger while t < arm_after_s. The ticks are
+// counted by the embedded controller's code (pamctl_window_update, src/embedded/pamctl.h);
+// embedded_window computes its tick counts, once.
+pamctl_window_config embedded_window(double duration_s, double refractory_s, double arm_after_s,
+                                     double control_period_s);
 class ReflexWindow {
  public:
   // refractory_s, arm_after_s >= 0 and control_period_s > 0 (asserted); a window lasts at
@@ -74,20 +80,18 @@ class ReflexWindow {
   // and not refractory. Returns true while a window is open (this tick included).
   bool update(double time_s, bool trigger);
 
-  bool active() const { return active_; }
+  bool active() const { return window_.active; }
   // True if the last update() opened a window.
-  bool triggered() const { return triggered_; }
+  bool triggered() const { return window_.triggered; }
 
  private:
-  double arm_after_s_;
-  int window_ticks_;
-  int refractory_ticks_;
-  double arm_tolerance_s_;
-  int window_left_ = 0;
-  int refractory_left_ = 0;
-  bool active_ = false;
-  bool triggered_ = false;
+  pamctl_window_config config_;
+  pamctl_window window_{};
 };
+
+// The stretch reflex as the embedded controller holds it (SI, its window in ticks).
+pamctl_stretch_config embedded_stretch(const StretchReflexParams& params,
+                                       double control_period_s);
 
 class StretchReflex {
  public:
@@ -100,16 +104,13 @@ class StretchReflex {
   // trigger at this tick (a running window goes on): the controller's gates.
   double update(double time_s, double velocity_m_s, bool may_trigger = true);
 
-  bool active() const { return window_.active(); }
+  bool active() const { return state_.window.active; }
   // True if the last update() opened a window (the controller keeps the trigger times).
-  bool triggered() const { return window_.triggered(); }
+  bool triggered() const { return state_.window.triggered; }
 
  private:
-  double v_thr_m_s_;
-  double k_pa_s_per_m_;
-  ReflexMode mode_;
-  ReflexWindow window_;
-  double v_latched_m_s_ = 0.0;
+  pamctl_stretch_config config_;
+  pamctl_stretch_state state_{};
 };
 
 // The two muscles of an antagonistic pair, in the order of Eq. (12)-(13).

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <set>
 
@@ -63,7 +64,11 @@ void validate(const StretchReflexControllerConfig& config) {
   require_positive("controller.p_max_MPa", units::pa_to_mpa(config.p_max_pa));
 
   // pairs: two distinct muscles in range, each muscle in one pair at most
-  if (config.muscle_count < 0) fail("the muscle count", ">= 0", config.muscle_count);
+  if (config.muscle_count < 0 || config.muscle_count > PAMCTL_MAX_MUSCLES) {
+    fail("the muscle count",
+         "in [0, " + std::to_string(PAMCTL_MAX_MUSCLES) + "] (the embedded controller's most)",
+         config.muscle_count);
+  }
   std::vector<char> paired(config.muscle_count, 0);
   for (std::size_t k = 0; k < config.pairs.size(); ++k) {
     const std::string key = "reflex.pairs[" + std::to_string(k) + "]";
@@ -81,97 +86,76 @@ void validate(const StretchReflexControllerConfig& config) {
   }
 }
 
+void embed_controller(const StretchReflexControllerConfig& config, pamctl_config* embedded) {
+  const double dt = 1.0 / config.control_hz;
+  embedded->muscle_count = config.muscle_count;
+  embedded->kind = PAMCTL_KIND_REFLEX;
+  embedded->control_period_s = dt;
+  embedded->p_max_pa = config.p_max_pa;
+  pamctl_reflex_config& rc = embedded->reflex;
+  rc.enabled = config.reflex.enabled;
+  rc.stretch = config.stretch;
+  rc.tension = config.tension;
+  rc.sensor = config.reflex.sensor == ReflexSensor::kFiber ? PAMCTL_SENSOR_FIBER
+                                                           : PAMCTL_SENSOR_MODEL;
+  rc.min_tension_n = config.reflex.min_tension_n;
+  rc.reciprocal_trigger_inhibition = config.reflex.reciprocal_trigger_inhibition;
+  rc.excite_antagonist = config.ib.excite_antagonist;
+  rc.ia = embedded_stretch(config.reflex, dt);
+  rc.ib = embedded_tension(config.ib, dt);
+  for (int j = 0; j < PAMCTL_MAX_MUSCLES; ++j) embedded->partner[j] = -1;
+  for (const ReflexPair& pair : config.pairs) {
+    embedded->partner[pair.agonist] = pair.antagonist;
+    embedded->partner[pair.antagonist] = pair.agonist;
+  }
+}
+
 StretchReflexController::StretchReflexController(const StretchReflexControllerConfig& config)
     : config_(validated(config)),
-      partner_(config.muscle_count, -1),
-      reflexes_(config.muscle_count, StretchReflex(config.reflex, 1.0 / config.control_hz)),
-      tension_reflexes_(config.muscle_count, TensionReflex(config.ib, 1.0 / config.control_hz)),
-      dp_pa_(config.muscle_count, 0.0),
-      dp_ib_pa_(config.muscle_count, 0.0),
-      was_active_(config.muscle_count, 0),
       trigger_times_s_(config.muscle_count),
       tension_trigger_times_s_(config.muscle_count) {
-  for (const ReflexPair& pair : config.pairs) {
-    partner_[pair.agonist] = pair.antagonist;
-    partner_[pair.antagonist] = pair.agonist;
-  }
+  embed_controller(config_, &embedded_);
+  pamctl_reset(&embedded_, &state_);
 }
 
 void StretchReflexController::update(const ControlInput& in, ControlOutput* out) {
-  assert(in.readings && in.p_tp_pa && in.readings->size() == reflexes_.size() &&
-         in.p_tp_pa->size() == reflexes_.size() && out->p_cmd_pa.size() == reflexes_.size());
-  const std::vector<MuscleReading>& readings = *in.readings;
-  const std::vector<double>& p_tp = *in.p_tp_pa;
-  const ReflexConfig& rc = config_.reflex;
-  for (std::size_t j = 0; j < reflexes_.size(); ++j) was_active_[j] = reflexes_[j].active();
-
-  for (std::size_t j = 0; j < reflexes_.size(); ++j) {
-    // the velocity the reflex sees
-    const MuscleReading& r = readings[j];
-    const double v = rc.sensor == ReflexSensor::kFiber ? r.fiber_velocity_m_s : r.velocity_est_m_s;
-    out->velocity_m_s[j] = v;
-    dp_pa_[j] = 0.0;
-    dp_ib_pa_[j] = 0.0;
-    out->reflex_active[j] = 0;
-    out->tension_reflex_active[j] = 0;
-    // while the controller is switched off its windows and refractory times run out
-    // without acting
-    if (!rc.enabled || partner_[j] < 0) continue;
-    if (config_.stretch) run_stretch_reflex(j, in, v, out);
-    if (config_.tension) run_tension_reflex(j, in, out);
+  const std::size_t n = trigger_times_s_.size();
+  assert(in.readings && in.p_tp_pa && in.readings->size() == n && in.p_tp_pa->size() == n &&
+         out->p_cmd_pa.size() == n);
+  // the estimates the sensing made (the embedded estimator's), then the embedded controller
+  for (std::size_t j = 0; j < n; ++j) {
+    const MuscleReading& r = (*in.readings)[j];
+    pamctl_estimate& est = out_.estimates[j];
+    est.force_n = r.force_meas_n;
+    est.velocity_m_s = r.velocity_est_m_s;
+    est.fiber_velocity_m_s = r.fiber_velocity_m_s;
+    est.flags = 0;
   }
-
-  // Eq. (12)-(13) per pair, clamped to the valve's range; unpaired muscles get p_tp
-  for (std::size_t j = 0; j < reflexes_.size(); ++j) {
-    if (partner_[j] < 0) out->p_cmd_pa[j] = std::clamp(p_tp[j], 0.0, config_.p_max_pa);
+  pamctl_control(&embedded_, &state_, in.time_s, in.enabled, in.p_tp_pa->data(), &out_);
+  for (std::size_t j = 0; j < n; ++j) {
+    out->p_cmd_pa[j] = out_.p_cmd_pa[j];
+    out->velocity_m_s[j] = out_.velocity_m_s[j];
+    out->reflex_active[j] = out_.ia_active[j] ? 1 : 0;
+    out->tension_reflex_active[j] = out_.ib_active[j] ? 1 : 0;
+    if (out_.ia_triggered[j]) trigger_times_s_[j].push_back(in.time_s);
+    if (out_.ib_triggered[j]) tension_trigger_times_s_[j].push_back(in.time_s);
   }
-  for (const ReflexPair& pair : config_.pairs) {
-    const PairValues p_tp_pair = {p_tp[pair.agonist], p_tp[pair.antagonist]};
-    const PairValues dp = {dp_pa_[pair.agonist], dp_pa_[pair.antagonist]};
-    const PairValues p =
-        config_.tension
-            ? reflex_commands(p_tp_pair, dp, {dp_ib_pa_[pair.agonist], dp_ib_pa_[pair.antagonist]},
-                              config_.ib.excite_antagonist, config_.p_max_pa)
-            : reflex_commands(p_tp_pair, dp, config_.p_max_pa);
-    out->p_cmd_pa[pair.agonist] = p[kAgonist];
-    out->p_cmd_pa[pair.antagonist] = p[kAntagonist];
-  }
-}
-
-void StretchReflexController::run_stretch_reflex(std::size_t j, const ControlInput& in, double v,
-                                                 ControlOutput* out) {
-  // this muscle's reflex, Eq. (14), behind the tension and reciprocal gates
-  const ReflexConfig& rc = config_.reflex;
-  const bool loaded = rc.min_tension_n <= 0.0 || (*in.readings)[j].force_meas_n >= rc.min_tension_n;
-  const bool other_quiet = !(rc.reciprocal_trigger_inhibition && was_active_[partner_[j]]);
-  const double dp = reflexes_[j].update(in.time_s, v, in.enabled && loaded && other_quiet);
-  if (!in.enabled) return;
-  dp_pa_[j] = dp;
-  out->reflex_active[j] = reflexes_[j].active() ? 1 : 0;
-  if (reflexes_[j].triggered()) trigger_times_s_[j].push_back(in.time_s);
-}
-
-void StretchReflexController::run_tension_reflex(std::size_t j, const ControlInput& in,
-                                                 ControlOutput* out) {
-  // the muscle's tension reflex on its gauge's tension, Eq. (8)-(9)
-  const double dp = tension_reflexes_[j].update(in.time_s, (*in.readings)[j].force_meas_n,
-                                                in.enabled);
-  if (!in.enabled) return;
-  dp_ib_pa_[j] = dp;
-  out->tension_reflex_active[j] = tension_reflexes_[j].active() ? 1 : 0;
-  if (tension_reflexes_[j].triggered()) tension_trigger_times_s_[j].push_back(in.time_s);
 }
 
 PairValues reflex_commands(const PairValues& p_tp_pa, const PairValues& dp_ia_pa,
                            const PairValues& dp_ib_pa, bool excite_antagonist,
                            double p_max_pa) {
-  const double e = excite_antagonist ? 1.0 : 0.0;
+  // the embedded controller's rule (pamctl_pair_command), clamped to the valve's range
+  pamctl_reflex_config rc{};
+  rc.tension = true;
+  rc.excite_antagonist = excite_antagonist;
   PairValues p;
-  p[kAgonist] = p_tp_pa[kAgonist] + dp_ia_pa[kAgonist] - dp_ia_pa[kAntagonist] -
-                dp_ib_pa[kAgonist] + e * dp_ib_pa[kAntagonist];
-  p[kAntagonist] = p_tp_pa[kAntagonist] + dp_ia_pa[kAntagonist] - dp_ia_pa[kAgonist] -
-                   dp_ib_pa[kAntagonist] + e * dp_ib_pa[kAgonist];
-  for (double& pj : p) pj = std::clamp(pj, 0.0, p_max_pa);
+  std::uint32_t flags = 0;
+  for (int j : {kAgonist, kAntagonist}) {
+    const double pj =
+        pamctl_pair_command(&rc, p_tp_pa.data(), dp_ia_pa.data(), dp_ib_pa.data(), j, 1 - j);
+    p[j] = pamctl_valve_command(pj, p_max_pa, &flags);
+  }
   return p;
 }
 

@@ -16,7 +16,8 @@
 //      tension, with no gate of its own (its windows are not the log's reflex_<m> flag,
 //      which is the stretch reflex's; the metric set "tension" counts its triggers);
 // then command each pair, clamped to [0, p_max]: by Eq. (12)-(13) with the Ia reflexes
-// alone, and with the Ib reflexes by the rule of reflex_commands (below).
+// alone, and with the Ib reflexes by the rule of reflex_commands (below). All of it is the
+// embedded controller's code (pamctl_control, src/embedded/pamctl.h), which the robot runs.
 #pragma once
 
 #include <string>
@@ -73,6 +74,11 @@ struct StretchReflexControllerConfig {
   std::vector<ReflexPair> pairs{ReflexPair{}};                 // reflex.pairs
 };
 
+// The controller's part of the embedded controller's configuration (kind, reflexes, pairs,
+// valve range, control period); the estimator's part is the sensing's
+// (SensorSuite::embedded_config).
+void embed_controller(const StretchReflexControllerConfig& config, pamctl_config* embedded);
+
 // Checks every field once, throwing InputError "<key> must be ..., got <value>" naming the
 // scenario key: reflex.* and, with the tension reflex, reflex.ib.* as documented on the
 // structs, sim.control_hz, controller.p_max_MPa, and reflex.pairs (indices in range, no
@@ -109,6 +115,7 @@ class StretchReflexScenarioConfig final : public ControllerConfig {
   // ib_f_thr_N, ib_df_thr_N_s, ib_k_MPa_per_N
   std::vector<SummaryField> summary_fields() const override;
   std::unique_ptr<Controller> make_controller(const ControllerSetup& setup) const override;
+  std::string embedded(const ControllerSetup& setup, pamctl_config* config) const override;
 };
 
 // The kind "stretch_reflex" (listed in controller_registry.cc): its reader checks the keys
@@ -140,17 +147,10 @@ class StretchReflexController final : public Controller {
   double first_trigger_time_s() const;
 
  private:
-  // muscle j's reflexes at this tick (j in a pair, the reflexes enabled)
-  void run_stretch_reflex(std::size_t j, const ControlInput& in, double v, ControlOutput* out);
-  void run_tension_reflex(std::size_t j, const ControlInput& in, ControlOutput* out);
-
   StretchReflexControllerConfig config_;
-  std::vector<int> partner_;            // pair partner of each muscle, -1 if unpaired
-  std::vector<StretchReflex> reflexes_;
-  std::vector<TensionReflex> tension_reflexes_;
-  std::vector<double> dp_pa_;           // this tick's reflex outputs: Ia
-  std::vector<double> dp_ib_pa_;        // and Ib
-  std::vector<char> was_active_;        // whose window was open at the previous tick
+  pamctl_config embedded_{};            // its settings as the embedded controller holds them
+  pamctl_state state_{};
+  pamctl_output out_{};
   std::vector<std::vector<double>> trigger_times_s_;
   std::vector<std::vector<double>> tension_trigger_times_s_;
 };

@@ -44,6 +44,11 @@ struct TensionReflexParams {
 // Checks every field, throwing InputError "reflex.ib.<key> must be ..., got <value>".
 void validate(const TensionReflexParams& params, double control_hz);
 
+// The tension reflex as the embedded controller holds it (SI, its window in ticks, its rate
+// filter's factor).
+pamctl_tension_config embedded_tension(const TensionReflexParams& params,
+                                       double control_period_s);
+
 class TensionReflex {
  public:
   // Parameters must have passed validate() (asserted where cheap).
@@ -54,23 +59,15 @@ class TensionReflex {
   // suppresses a new trigger at this tick.
   double update(double time_s, double tension_n, bool may_trigger = true);
 
-  bool active() const { return window_.active(); }
-  bool triggered() const { return window_.triggered(); }
+  bool active() const { return state_.window.active; }
+  bool triggered() const { return state_.window.triggered; }
   // The low-passed tension rate of the last update [N/s] (0 at the first).
-  double rate_n_s() const { return rate_n_s_; }
+  double rate_n_s() const { return state_.rate_n_s; }
 
  private:
-  double f_thr_n_;
-  double df_thr_n_s_;
-  double k_pa_per_n_;
-  ReflexMode mode_;
+  pamctl_tension_config config_;
   double period_s_;
-  ReflexWindow window_;
-  LowpassFilter rate_filter_;
-  double last_tension_n_ = 0.0;
-  bool has_last_ = false;
-  double rate_n_s_ = 0.0;
-  double f_latched_n_ = 0.0;
+  pamctl_tension_state state_{};
 };
 
 }  // namespace pamsim

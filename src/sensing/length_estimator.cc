@@ -5,47 +5,33 @@
 
 namespace pamsim {
 
+pamctl_muscle_config embedded_muscle(const SpringModel& spring, const StrainGaugeParams& gauge) {
+  pamctl_muscle_config muscle{};
+  muscle.spring = embedded_spring(spring);
+  muscle.gauge_v_base_v = gauge.v_base_v;
+  muscle.gauge_q_v_per_n = gauge.q_v_per_n;
+  return muscle;
+}
+
 LengthEstimator::LengthEstimator(const SpringModel& spring, const StrainGaugeParams& gauge,
                                  const LengthEstimatorParams& params, double sample_period_s)
-    : spring_(spring),
-      gauge_(gauge),
-      dt_s_(sample_period_s),
-      pressure_filter_(params.pressure_lowpass_hz, sample_period_s),
-      velocity_filter_(params.velocity_lowpass_hz, sample_period_s) {
+    : muscle_(embedded_muscle(spring, gauge)), dt_s_(sample_period_s) {
   assert(gauge.q_v_per_n > 0.0);
+  pamctl_muscle_init(&state_, lowpass_alpha(params.pressure_lowpass_hz, sample_period_s),
+                     lowpass_alpha(params.velocity_lowpass_hz, sample_period_s));
 }
 
 LengthEstimate LengthEstimator::update(double pressure_meas_pa, double gauge_v) {
+  // Eq. (9)-(11): the embedded controller's estimator
+  pamctl_estimate e{};
+  pamctl_estimate_length(&muscle_, dt_s_, &state_, pressure_meas_pa, gauge_v, &e);
   LengthEstimate est;
-  // pressure, optionally low-passed, and force from the gauge, Eq. (9)
-  est.pressure_pa = pressure_filter_.step(pressure_meas_pa);
-  est.force_n = (gauge_v - gauge_.v_base_v) / gauge_.q_v_per_n;
-
-  // deformation by inverting the spring law, Eq. (10); slack gives d = 0
-  const DeformationEstimate inv = invert_spring_model(spring_, est.pressure_pa, est.force_n);
-  est.status = inv.status;
-  switch (inv.status) {
-    case InversionStatus::kOk:
-      est.d_m = inv.d_m;
-      last_valid_d_m_ = inv.d_m;
-      break;
-    case InversionStatus::kSlack:
-      est.d_m = 0.0;
-      last_valid_d_m_ = 0.0;
-      break;
-    case InversionStatus::kNoPhysicalRoot:
-      est.d_m = last_valid_d_m_;
-      break;
-  }
-
-  // length, Eq. (1)-(2)
-  est.length_m = natural_length(spring_, est.pressure_pa) + est.d_m;
-
-  // velocity by backward difference, Eq. (11), then the optional low-pass
-  const double v_raw = started_ ? (est.length_m - last_length_m_) / dt_s_ : 0.0;
-  started_ = true;
-  last_length_m_ = est.length_m;
-  est.velocity_m_s = velocity_filter_.step(v_raw);
+  est.pressure_pa = e.pressure_pa;
+  est.force_n = e.force_n;
+  est.d_m = e.d_m;
+  est.status = inversion_status(static_cast<pamctl_inversion>(e.inversion));
+  est.length_m = e.length_m;
+  est.velocity_m_s = e.velocity_m_s;
   return est;
 }
 

@@ -13,14 +13,20 @@
 // holds the last valid d (0 before any) instead of jumping to d = 0, which would read as a
 // large false velocity; the status reports it.
 // Low-pass filters are first order, exact for dt (lowpass_filter.h), initialised to the
-// first sample.
+// first sample. The arithmetic is the embedded controller's (pamctl_estimate_length,
+// src/embedded/pamctl.h), which the robot runs.
 #pragma once
 
 #include "pam_actuator/pam_params.h"
 #include "pam_actuator/spring_model.h"
+#include "embedded/pamctl.h"
 #include "sensing/lowpass_filter.h"
 
 namespace pamsim {
+
+// A muscle's estimator law and gauge as the embedded controller holds them; the pressure
+// sensor's line and the sensors' ranges are left 0 for the caller (SensorSuite) to fill.
+pamctl_muscle_config embedded_muscle(const SpringModel& spring, const StrainGaugeParams& gauge);
 
 struct LengthEstimatorParams {
   double pressure_lowpass_hz = 0.0;   // sensors.pressure_lowpass_hz [Hz], 0 = off
@@ -47,14 +53,9 @@ class LengthEstimator {
   LengthEstimate update(double pressure_meas_pa, double gauge_v);
 
  private:
-  SpringModel spring_;
-  StrainGaugeParams gauge_;
+  pamctl_muscle_config muscle_;
   double dt_s_;
-  LowpassFilter pressure_filter_;
-  LowpassFilter velocity_filter_;
-  bool started_ = false;
-  double last_length_m_ = 0.0;
-  double last_valid_d_m_ = 0.0;
+  pamctl_muscle_state state_{};
 };
 
 }  // namespace pamsim

@@ -15,19 +15,10 @@ double lowpass_alpha(double cutoff_hz, double sample_period_s) {
   return -std::expm1(-2.0 * units::kPi * cutoff_hz * sample_period_s);
 }
 
-LowpassFilter::LowpassFilter(double cutoff_hz, double sample_period_s)
-    : alpha_(lowpass_alpha(cutoff_hz, sample_period_s)) {}
-
-double LowpassFilter::step(double x) {
-  // first sample: start at the input, no transient
-  if (!initialised_) {
-    y_ = x;
-    initialised_ = true;
-    return y_;
-  }
-  // exact ZOH update of tau dy/dt = x - y
-  y_ += alpha_ * (x - y_);
-  return y_;
+LowpassFilter::LowpassFilter(double cutoff_hz, double sample_period_s) {
+  pamctl_lowpass_init(&filter_, lowpass_alpha(cutoff_hz, sample_period_s));
 }
+
+double LowpassFilter::step(double x) { return pamctl_lowpass_step(&filter_, x); }
 
 }  // namespace pamsim

@@ -12,8 +12,11 @@
 // with it.
 //
 // The filter is initialised to its first input (no start-up transient). A cutoff of 0
-// turns it off: the output is the input.
+// turns it off: the output is the input. The update is the embedded controller's
+// (pamctl_lowpass_step, src/embedded/pamctl.h).
 #pragma once
+
+#include "embedded/pamctl.h"
 
 namespace pamsim {
 
@@ -27,15 +30,13 @@ class LowpassFilter {
   double step(double x);
 
   // Forget the state: the next step() initialises again.
-  void reset() { initialised_ = false; }
+  void reset() { filter_.started = false; }
 
-  double alpha() const { return alpha_; }   // 1 when off
-  double output() const { return y_; }
+  double alpha() const { return filter_.alpha; }   // 1 when off
+  double output() const { return filter_.y; }
 
  private:
-  double alpha_ = 1.0;
-  double y_ = 0.0;
-  bool initialised_ = false;
+  pamctl_lowpass filter_{};
 };
 
 // alpha = 1 - exp(-2 pi fc dt); 1 for fc = 0 (pass-through).

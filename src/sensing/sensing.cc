@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include "base/input_error.h"
 #include "pam_actuator/pam_params.h"
 #include "sensing/checks.h"
 #include "sensing/instrument_kinds.h"
@@ -16,11 +17,18 @@ namespace {
 
 using namespace checks;
 
-LengthEstimatorParams estimator_params(const SensingConfig& config) {
-  LengthEstimatorParams params;
-  params.pressure_lowpass_hz = config.sensors.pressure_lowpass_hz;
-  params.velocity_lowpass_hz = config.velocity_lowpass_hz;
-  return params;
+// a muscle's estimator as the embedded controller holds it: its law, its gauge's Eq. (8)
+// (calibrated), the PSE540's line, and the ADCs' ranges as the sensors' output ranges
+pamctl_muscle_config embedded_estimator(const MuscleSensorSpec& muscle,
+                                        const StrainGaugeParams& gauge, const SensorConfig& s) {
+  pamctl_muscle_config estimator = embedded_muscle(muscle.estimator, gauge);
+  estimator.pressure_zero_v = kPse540ZeroV;
+  estimator.pressure_v_per_mpa = kPse540VoltPerMPa;
+  estimator.pressure_min_v = s.pressure_adc_min_v;
+  estimator.pressure_max_v = s.pressure_adc_max_v;
+  estimator.gauge_min_v = s.gauge_adc_min_v;
+  estimator.gauge_max_v = s.gauge_adc_max_v;
+  return estimator;
 }
 
 // the generators' tags (sensor_noise.h): one per source, never reused
@@ -69,6 +77,9 @@ SensorSuite::SensorSuite(const SensingConfig& config,
     : rng_(seed) {
   validate(config);
   const double dt_s = 1.0 / config.control_hz;
+  dt_s_ = dt_s;
+  pressure_alpha_ = lowpass_alpha(config.sensors.pressure_lowpass_hz, dt_s);
+  velocity_alpha_ = lowpass_alpha(config.velocity_lowpass_hz, dt_s);
   const GaugeHardwareConfig& hardware = config.sensors.gauge_hardware;
   // the built instruments: the same for every trial of a scenario, whatever its seed
   std::mt19937_64 instruments(hardware.instrument_seed);
@@ -90,11 +101,29 @@ SensorSuite::SensorSuite(const SensingConfig& config,
         PressureSensor(config.sensors, pressure_hardware(config.sensors, seed, index, dt_s)),
         StrainGauge(muscle.gauge, config.sensors, std::move(gauge)),
         FiberSensor(config.sensors, dt_s, fiber_hardware(config.sensors, dt_s)),
-        LengthEstimator(muscle.estimator, calibrated, estimator_params(config), dt_s),
-        LowpassFilter(config.velocity_lowpass_hz, dt_s)});
+        embedded_estimator(muscle, calibrated, config.sensors), pamctl_muscle_state{}});
+    pamctl_muscle_init(&channels_.back().state, pressure_alpha_, velocity_alpha_);
     channels_.back().gauge.enable_vibration(config.physics_dt_s);
     observes_forces_ = observes_forces_ || channels_.back().gauge.vibrates();
   }
+}
+
+pamctl_config SensorSuite::embedded_config() const {
+  if (channels_.size() > PAMCTL_MAX_MUSCLES) {
+    throw InputError("the embedded controller holds at most " +
+                     std::to_string(PAMCTL_MAX_MUSCLES) + " muscles, the model has " +
+                     std::to_string(channels_.size()));
+  }
+  pamctl_config config{};
+  config.muscle_count = static_cast<std::int32_t>(channels_.size());
+  config.control_period_s = dt_s_;
+  config.pressure_alpha = pressure_alpha_;
+  config.velocity_alpha = velocity_alpha_;
+  for (std::size_t j = 0; j < channels_.size(); ++j) {
+    config.muscles[j] = channels_[j].estimator;
+    config.partner[j] = -1;
+  }
+  return config;
 }
 
 void SensorSuite::observe(const std::vector<double>& force_n) {
@@ -115,13 +144,16 @@ void SensorSuite::sample(const std::vector<MuscleTruth>& truth,
     r.pressure_sensor_v = pressure.voltage_v;
     r.fiber_length_m = ch.fiber.length_m();
 
-    // model-based estimate, Eq. (9)-(11), and the fiber's low-passed rate
-    const LengthEstimate est = ch.estimator.update(pressure.pressure_pa, r.gauge_v);
+    // the embedded controller's estimate from the raw readings, Eq. (9)-(11), and the
+    // fiber's low-passed rate
+    pamctl_estimate est{};
+    pamctl_estimate_muscle(&ch.estimator, dt_s_, &ch.state, r.pressure_sensor_v, r.gauge_v,
+                           r.fiber_rate_m_s, &est);
     r.pressure_meas_pa = est.pressure_pa;
     r.force_meas_n = est.force_n;
     r.length_est_m = est.length_m;
     r.velocity_est_m_s = est.velocity_m_s;
-    r.fiber_velocity_m_s = ch.fiber_velocity_filter.step(r.fiber_rate_m_s);
+    r.fiber_velocity_m_s = est.fiber_velocity_m_s;
   }
 }
 

@@ -6,9 +6,10 @@
 //   1. sample the PSE540 pressure sensor, the strain gauge and the fiber sensor (sensors.h),
 //      in that order, each drawing one normal from the suite's std::mt19937_64 (sensors built
 //      as hardware draw their own errors from generators of their own, sensor_noise.h);
-//   2. estimate length and velocity from pressure and force, Eq. (9)-(11)
-//      (length_estimator.h), with the muscle's estimator law;
-//   3. low-pass the fiber rate at reflex.lowpass_hz (the velocity a fiber reflex uses).
+//   2. estimate length and velocity from pressure and force, Eq. (9)-(11), with the muscle's
+//      estimator law, and low-pass the fiber rate at reflex.lowpass_hz (the velocity a fiber
+//      reflex uses): the embedded controller's estimator (pamctl_estimate_muscle,
+//      src/embedded/pamctl.h), fed the readings a board would read.
 // All sensors are sampled whatever the controller uses, so a model-based and a fiber-based
 // trial with the same seed see the same noise.
 #pragma once
@@ -21,6 +22,7 @@
 
 #include "pam_actuator/pam_params.h"
 #include "pam_actuator/spring_model.h"
+#include "embedded/pamctl.h"
 #include "sensing/length_estimator.h"
 #include "sensing/muscle_reading.h"
 #include "sensing/lowpass_filter.h"
@@ -74,15 +76,23 @@ class SensorSuite {
   // gauge_hardware.h); if so, observe() at every physics step with each muscle's pull [N].
   bool observes_forces() const { return observes_forces_; }
   void observe(const std::vector<double>& force_n);
+  // The estimator as the embedded controller holds it: the control period, the low-passes'
+  // factors and each muscle's law, gauge calibration (the calibrated one where the gauge is
+  // hardware), pressure line and sensor ranges. The controller's part is left for the
+  // controller (ControllerConfig::embedded).
+  pamctl_config embedded_config() const;
 
  private:
   struct Channel {
     PressureSensor pressure;
     StrainGauge gauge;
     FiberSensor fiber;
-    LengthEstimator estimator;
-    LowpassFilter fiber_velocity_filter;
+    pamctl_muscle_config estimator;
+    pamctl_muscle_state state;
   };
+  double dt_s_ = 0.0;
+  double pressure_alpha_ = 1.0;
+  double velocity_alpha_ = 1.0;
   std::mt19937_64 rng_;
   std::vector<Channel> channels_;
   bool observes_forces_ = false;

@@ -10,14 +10,6 @@
 
 namespace pamsim {
 
-namespace {
-
-// PSE540: 1-5 V over 0-1 MPa
-constexpr double kPse540ZeroV = 1.0;
-constexpr double kPse540VoltPerMPa = 4.0;
-
-}  // namespace
-
 double encoder_read_m(const EncoderConfig& encoder, double length_m) {
   return encoder.enabled ? quantise(length_m, encoder.resolution_m) : length_m;
 }

@@ -110,6 +110,8 @@ double adc_step_v(const AdcParams& adc);   // 0 for an ideal converter
 double adc_read(const AdcParams& adc, double v);
 
 // PSE540 transfer: 1 V at 0 MPa to 5 V at 1 MPa (gauge), linear: V = 1 + 4 p / (1 MPa).
+inline constexpr double kPse540ZeroV = 1.0;
+inline constexpr double kPse540VoltPerMPa = 4.0;
 double pse540_voltage(double p_pa);
 // Its inverse, as the controller converts a reading: p = (V - 1) / 4 MPa.
 double pse540_pressure_pa(double v);

@@ -167,7 +167,7 @@ TEST(StretchReflexController, DisabledReflexMatchesPassThrough) {
   rig.p_tp_pa = {0.45e6, 0.35e6};
   Harness h(rig);
   run_ramp(&h);
-  PassThroughController none;
+  PassThroughController none(2);
   EXPECT_EQ(none.trigger_times_s(), nullptr);
   for (std::size_t tick = 0; tick < h.outputs.size(); ++tick) {
     ControlInput in;

@@ -41,10 +41,15 @@ std::vector<MuscleSensorSpec> sensor_specs(const TrialModel& tm, const Scenario&
 
 // the scenario's controller for the bound model: its muscles, pairs and control rate are
 // given here, and only here
+ControllerSetup controller_setup(const TrialModel& tm, const Scenario& sc) {
+  return ControllerSetup{static_cast<int>(tm.muscles.size()), sc.control_hz, tm.pairs};
+}
+
 std::unique_ptr<Controller> make_controller(const TrialModel& tm, const Scenario& sc) {
-  if (!sc.controller) return std::make_unique<PassThroughController>();
-  return sc.controller->make_controller(
-      ControllerSetup{static_cast<int>(tm.muscles.size()), sc.control_hz, tm.pairs});
+  if (!sc.controller) {
+    return std::make_unique<PassThroughController>(static_cast<int>(tm.muscles.size()));
+  }
+  return sc.controller->make_controller(controller_setup(tm, sc));
 }
 
 std::vector<std::string> held_bodies(const TrialModel& tm) {
@@ -95,6 +100,18 @@ TrialData::TrialData(const TrialModel& model, const mjModel* m, bool stays_on_th
 
 TrialData::~TrialData() {
   if (borrowed_) t_trial_data.lent = false;
+}
+
+std::string embedded_controller_config(const TrialModel& tm, const Scenario& sc,
+                                       pamctl_config* config) {
+  // the estimators as the sensing builds them (the gauges calibrated), then the controller
+  const SensorSuite sensors(sc.sensing, sensor_specs(tm, sc), 0);
+  *config = sensors.embedded_config();
+  if (!sc.controller) {
+    embed_pass_through(controller_setup(tm, sc), config);
+    return "";
+  }
+  return sc.controller->embedded(controller_setup(tm, sc), config);
 }
 
 TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,

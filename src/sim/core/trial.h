@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "embedded/pamctl.h"
 #include "sensing/muscle_reading.h"
 #include "sim/core/metrics.h"
 #include "sim/core/scenario.h"
@@ -65,10 +66,31 @@ class TrialObserver {
   virtual void observe(const TrialSnapshot& snapshot) = 0;
 };
 
+// Every control tick as the controller was handed it: the embedded controller's inputs
+// (src/embedded/pamctl.h) exactly, and the commands the controller returned. Flat, per tick:
+// time_s, enabled (0 or 1), then per muscle pressure_V, gauge_V, fiber_rate_m_s, p_tp_Pa,
+// p_cmd_Pa (kPerMuscle values). `pamsim run --readings` writes it losslessly (readings.csv).
+struct ControlLog {
+  static constexpr int kPerTick = 2;
+  static constexpr int kPerMuscle = 5;
+  int muscle_count = 0;
+  std::vector<double> values;
+  std::size_t ticks() const {
+    return values.size() / (kPerTick + kPerMuscle * static_cast<std::size_t>(muscle_count));
+  }
+};
+
 struct TrialOptions {
   bool keep_trajectory = true;
   TrialObserver* observer = nullptr;   // not owned; none by default (nothing to pay for)
+  ControlLog* control_log = nullptr;   // not owned; filled at every control tick when given
 };
+
+// The controller `scenario` runs on `model` as the embedded controller holds it (its
+// estimators, calibrated gauges, filters, reflexes, pairs and valve range): "" when done, else
+// the one-line reason it cannot run there (a controller kind without an embedded form).
+std::string embedded_controller_config(const TrialModel& model, const Scenario& scenario,
+                                       pamctl_config* config);
 
 // The columns of the log a trial of `scenario` on `model` writes (trial_log.h), without
 // running it.

@@ -68,6 +68,7 @@ class TrialRun {
   void fire(std::size_t k, double t);
   bool condition_holds(std::size_t k) const;
   void hold_bodies();
+  void log_control(double t);   // one tick into options_.control_log
   void log_row(double t);
   void show_observer();
   double joint_position() const { return d_->qpos[tm_.joint.qpos]; }

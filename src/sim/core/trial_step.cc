@@ -129,12 +129,26 @@ bool TrialRun::control_tick(double t) {
     }
     const std::vector<double>& p_cmd = external_pa_ ? *external_pa_ : out_.p_cmd_pa;
     for (std::size_t i = 0; i < n_; ++i) pneumatics_.set_command(static_cast<int>(i), p_cmd[i]);
+    if (options_.control_log) log_control(t);
   } catch (const std::exception& e) {
     set_status("diverged", std::string("controller: ") + e.what(), t);
     return false;
   }
   log_row(time_at(step_));
   return true;
+}
+
+void TrialRun::log_control(double t) {
+  // the embedded controller's inputs as the controller was handed them, and its commands
+  ControlLog& log = *options_.control_log;
+  log.muscle_count = static_cast<int>(n_);
+  log.values.push_back(t);
+  log.values.push_back(controller_enabled_ ? 1.0 : 0.0);
+  for (std::size_t i = 0; i < n_; ++i) {
+    const MuscleReading& r = readings_[i];
+    log.values.insert(log.values.end(), {r.pressure_sensor_v, r.gauge_v, r.fiber_rate_m_s,
+                                         p_tp_pa_[i], out_.p_cmd_pa[i]});
+  }
 }
 
 void TrialRun::log_row(double t) {
