@@ -75,7 +75,7 @@ test: build
 ASAN_CONFIG := $(SANITIZE_TYPE) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
                -DPAMSIM_SANITIZE=address,undefined -DPAMSIM_FUZZ=ON
 FUZZ_TARGETS := fuzz_scenario fuzz_override fuzz_sweep fuzz_tensile_csv fuzz_identify \
-                fuzz_recording_csv
+                fuzz_recording_csv fuzz_readings_csv
 
 sanitize: deps
 	cmake -S . -B $(BUILD_DIR)-asan $(ASAN_CONFIG)

@@ -11,7 +11,7 @@ build=${1:?usage: fuzz.sh BUILD_DIR [SECONDS]}
 seconds=${2:-60}
 mkdir -p "$build/findings"
 status=0
-for name in scenario override sweep tensile_csv identify recording_csv; do
+for name in scenario override sweep tensile_csv identify recording_csv readings_csv; do
   work="$build/corpus/$name"
   log="$build/fuzz_$name.log"
   mkdir -p "$work"

@@ -24,6 +24,7 @@
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
 #include "sim/io/provenance.h"
+#include "sim/io/readings_csv.h"
 #include "sim/scenario/scenario_file.h"
 #include "sim/io/staged_outputs.h"
 #include "sim/render/scene_renderer.h"
@@ -47,13 +48,22 @@ struct RunOptions {
   bool force = false;
   bool no_plot = false;
   bool quiet = false;
+  bool readings = false;   // --trials N (>= 1), and --readings of one trial without a video
+void check_trial_count(const RunOptions& opt) {
+  if (opt.trials < 1) throw InputError("--trials must be >= 1, got " + std::to_string(opt.trials));
+  if (opt.readings && (opt.trials != 1 || !opt.video.empty())) {
+    throw InputError("--readings writes one trial's readings: drop --trials and --video");
+  }
+}
+
+// readings.csv: the controller's inputs, lossless
   std::string plot_format = "png";
 };
 
 // What a run writes in its folder (StagedOutputs replaces exactly these).
 const std::vector<std::string> kRunOutputs = [] {
   std::vector<std::string> names = {"trajectory.csv", "summary.json", "trial_[0-9][0-9][0-9][0-9]",
-                                    kResolvedScenarioFile, kProvenanceFile};
+                                    "readings.csv", kResolvedScenarioFile, kProvenanceFile};
   for (const std::string& plot : plot_file_names({"angle.png", "position.png", "angle_band.png"})) {
     names.push_back(plot);
   }
@@ -176,7 +186,14 @@ VideoOptions video_options_of(const RunOptions& opt) {
 }
 
 std::vector<TrialResult> run_trials_of(const RunOptions& opt, const TrialModel& model,
-                                       const Scenario& sc, int threads, const VideoOptions& video) {
+                                       const Scenario& sc, int threads, const VideoOptions& video,
+                                       ControlLog* control_log) {
+  if (opt.readings) {
+    // the one trial, its controller's inputs logged at every tick
+    TrialOptions options;
+    options.control_log = control_log;
+    return {run_trial(model, sc, sc.seed, options)};
+  }
   if (!opt.video.empty()) {
     // the same trial as run_trials' first, watched by the renderer
     return {run_rendered_trial(model, sc, sc.seed, video, true).trial};
@@ -214,6 +231,21 @@ nlohmann::json write_run_outputs(const StagedOutputs& staged, const std::vector<
   return printed;
 }
 
+// --trials N (>= 1), and --readings of one trial without a video
+void check_trial_count(const RunOptions& opt) {
+  if (opt.trials < 1) throw InputError("--trials must be >= 1, got " + std::to_string(opt.trials));
+  if (opt.readings && (opt.trials != 1 || !opt.video.empty())) {
+    throw InputError("--readings writes one trial's readings: drop --trials and --video");
+  }
+}
+
+// readings.csv: the controller's inputs at every tick, with the model's muscle labels
+void write_readings(const StagedOutputs& staged, const TrialModel& model, const ControlLog& log) {
+  std::vector<std::string> labels;
+  for (const BoundMuscle& m : model.muscles) labels.push_back(m.label);
+  write_readings_csv(staged.path("readings.csv"), labels, log);
+}
+
 void run(RunOptions opt) {
   const auto started = std::chrono::steady_clock::now();
   Provenance provenance;
@@ -227,7 +259,7 @@ void run(RunOptions opt) {
     if (opt.scenario.empty()) throw InputError("run needs a scenario file, or --from DIR");
     provenance.scenario_file = opt.scenario;
   }
-  if (opt.trials < 1) throw InputError("--trials must be >= 1, got " + std::to_string(opt.trials));
+  check_trial_count(opt);
   const int threads = resolve_thread_count(opt.threads);
   provenance.threads = opt.video.empty() ? std::min(threads, opt.trials) : 1;
   const VideoOptions video = video_options_of(opt);
@@ -253,7 +285,9 @@ void run(RunOptions opt) {
   // every output is written into a staging folder and published together at the end: a
   // failure half way leaves the folder as it was (made only once every input is good)
   StagedOutputs staged(out, kRunOutputs);
-  const std::vector<TrialResult> results = run_trials_of(opt, model, sc, threads, video);
+  ControlLog control_log;
+  const std::vector<TrialResult> results =
+      run_trials_of(opt, model, sc, threads, video, &control_log);
   for (const TrialResult& r : results) {
     provenance.seeds.push_back(r.summary.seed);
     provenance.trials.push_back(timing_of(r.summary));
@@ -261,6 +295,7 @@ void run(RunOptions opt) {
   nlohmann::json printed;
   staged.write([&] {
     printed = write_run_outputs(staged, results, sc, plots);
+    if (opt.readings) write_readings(staged, model, control_log);
     write_file_atomically(staged.path(kResolvedScenarioFile), recorded.resolved_toml);
     write_provenance(staged.path(kProvenanceFile), provenance, started);
   });
@@ -293,6 +328,9 @@ void add_run_command(CLI::App& app) {
   cmd->add_flag("--force", opt->force, "Replace the outputs of an earlier run in the folder");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no plots (gnuplot not needed)");
   cmd->add_flag("--quiet", opt->quiet, "No progress bar or progress lines (--trials N)");
+  cmd->add_flag("--readings", opt->readings,
+                "Also write readings.csv: the controller's inputs at every tick, lossless "
+                "(pamsim controller replay)");
   add_plot_format_option(cmd, &opt->plot_format);
   cmd->callback([opt, trials] {
     RunOptions o = *opt;
