@@ -32,7 +32,7 @@ TSAN_SKIP := ADatabaseThatCannotBeMadeLeavesNoFolder
 # them, and their code paths are the commands' own, tested here)
 ASAN_SKIP := ^PaperBandsTest\.|^DocsTest\.EveryPageAgreesWithTheProgram$$
 
-.PHONY: deps configure build demo test docs bench clean sanitize fuzz
+.PHONY: deps configure build demo test docs bench clean sanitize fuzz embedded
 
 deps:
 	bash scripts/install-deps.sh
@@ -94,6 +94,13 @@ fuzz: deps
 	cmake -S . -B $(BUILD_DIR)-asan $(ASAN_CONFIG)
 	cmake --build $(BUILD_DIR)-asan -j $(JOBS) --target $(FUZZ_TARGETS)
 	bash scripts/fuzz.sh $(BUILD_DIR)-asan $(FUZZ_SECONDS)
+
+# the exported C controller built outside pamsim (gcc, clang, float, a user's make and CMake,
+# Cortex-M4/M7 with arm-none-eabi-gcc, ARM Linux under qemu-arm), each replaying pamsim's
+# readings: $(BUILD_DIR)/embedded/embedded.md; fails when a double build's commands are not
+# pamsim's bit for bit (scripts/embedded_check.py, docs/embedded.md)
+embedded: build
+	$(PYTHON) scripts/embedded_check.py --pamsim $(PAMSIM) --out $(BUILD_DIR)/embedded
 
 bench: build
 	$(BUILD_DIR)/bench/pamsim_bench

@@ -26,7 +26,8 @@
  *    and reports PAMCTL_STATUS_UNCONFIGURED;
  *  - a non-finite pressure or gauge reading: that muscle's estimate holds its last length
  *    (velocity 0, so no stretch reflex triggers on it), its tension is NaN (no tension
- *    reflex triggers on it) and PAMCTL_FLAG_NONFINITE_READING is set;
+ *    reflex triggers on it) and PAMCTL_FLAG_NONFINITE_READING is set; the next valid tick's
+ *    Eq. (11) spans the whole gap (its length change over the ticks since the last valid one);
  *  - a non-finite fiber rate: the filter keeps its state, the rate reads 0, the same flag;
  *  - a reading outside its sensor's configured output range: used as read, with
  *    PAMCTL_FLAG_READING_OUT_OF_RANGE;
@@ -122,6 +123,7 @@ typedef struct {
   bool started;
   pamctl_real last_length_m;
   pamctl_real last_valid_d_m;
+  int32_t missed_ticks;             /* ticks held since the last valid reading */
 } pamctl_muscle_state;
 
 typedef struct {

@@ -36,6 +36,7 @@ void pamctl_muscle_init(pamctl_muscle_state* state, pamctl_real pressure_alpha,
   state->started = false;
   state->last_length_m = PAMCTL_R(0.0);
   state->last_valid_d_m = PAMCTL_R(0.0);
+  state->missed_ticks = 0;
 }
 
 void pamctl_estimate_length(const pamctl_muscle_config* muscle, pamctl_real dt_s,
@@ -58,10 +59,14 @@ void pamctl_estimate_length(const pamctl_muscle_config* muscle, pamctl_real dt_s
   /* length, Eq. (1)-(2) */
   out->length_m = muscle->spring.m_m_per_pa * out->pressure_pa + muscle->spring.h_m + d;
 
-  /* velocity by backward difference, Eq. (11), then the optional low-pass */
+  /* velocity by backward difference, Eq. (11), over the ticks since the last valid one,
+   * then the optional low-pass */
+  const pamctl_real span_s =
+      state->missed_ticks == 0 ? dt_s : dt_s * (pamctl_real)(state->missed_ticks + 1);
   const pamctl_real v_raw =
-      state->started ? (out->length_m - state->last_length_m) / dt_s : PAMCTL_R(0.0);
+      state->started ? (out->length_m - state->last_length_m) / span_s : PAMCTL_R(0.0);
   state->started = true;
+  state->missed_ticks = 0;
   state->last_length_m = out->length_m;
   out->velocity_m_s = pamctl_lowpass_step(&state->velocity_filter, v_raw);
 }
@@ -97,6 +102,7 @@ void pamctl_estimate_muscle(const pamctl_muscle_config* muscle, pamctl_real dt_s
   } else {
     out->flags |= PAMCTL_FLAG_NONFINITE_READING;
     hold_estimate(muscle, state, gauge_v, out);
+    if (state->missed_ticks < INT32_MAX - 1) ++state->missed_ticks;
   }
   /* the fiber's low-passed rate; a missing one reads 0 and leaves the filter as it was */
   if (pamctl_isfinite(fiber_rate_m_s)) {

@@ -161,6 +161,19 @@ TEST(Pamctl, MissingReadingsHoldTheEstimateAndAreFlagged) {
   EXPECT_TRUE(std::isfinite(tick_with(&s, c, 2.6, 0.1, 0.01, 0.4e6).estimates[0].fiber_velocity_m_s));
 }
 
+TEST(Pamctl, AfterAGapTheVelocitySpansTheWholeGap) {
+  // the length change over the missing ticks is one rate over their span, not a jump in one
+  const pamctl_config c = valid_config();
+  pamctl_state s{};
+  ASSERT_EQ(pamctl_init(&c, &s), 0);
+  const double before = tick_with(&s, c, 2.6, 0.1, 0.0, 0.4e6).estimates[0].length_m;
+  tick_with(&s, c, kNaN, 0.1, 0.0, 0.4e6);
+  tick_with(&s, c, kNaN, 0.1, 0.0, 0.4e6);
+  const pamctl_estimate after = tick_with(&s, c, 2.6, 0.3, 0.0, 0.4e6).estimates[0];
+  EXPECT_NEAR(after.velocity_m_s, (after.length_m - before) / (3 * 0.01), 1e-12);
+  EXPECT_EQ(after.flags, 0u);
+}
+
 TEST(Pamctl, OutOfRangeReadingsAreUsedAndFlagged) {
   const pamctl_config c = valid_config();
   pamctl_state s{};

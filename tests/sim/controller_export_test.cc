@@ -88,7 +88,7 @@ TEST(ControllerExportTest, Eq4AndEq5EstimatorsRunTheRootSolveBitForBit) {
 TEST(ControllerExportTest, PamsimsReplayOfAnExportEqualsTheSimulatorAndNamesItsTriggers) {
   const fs::path dir = fresh_dir("export_replay");
   export_trial(dir, "scenarios/drop_mass.toml", kShortDrop);
-  for (const std::string from : {"--export " + (dir / "export").string(),
+  for (const std::string& from : {"--export " + (dir / "export").string(),
                                  "--scenario scenarios/drop_mass.toml" + kShortDrop}) {
     SCOPED_TRACE(from);
     fs::remove_all(dir / "replay");
