@@ -232,7 +232,8 @@ def short_tuning(pamsim, work):
 
 
 def users_build(pamsim, work, quick):
-    """The export of a tuned scenario built as its user would: `make` in the folder, and CMake."""
+    """The export of a tuned scenario built as its user would: `make` in the folder (gcc and
+    clang), and CMake."""
     where = os.path.join(work, "user")
     if quick:
         scenario, tuned = os.path.join(ROOT, "scenarios", "drop_mass.toml"), {}
@@ -243,12 +244,15 @@ def users_build(pamsim, work, quick):
     run([pamsim, "run", scenario, "--readings", "--no-plot", "--out", os.path.join(where, "run")])
     readings = os.path.join(where, "run", "readings.csv")
     run(["make", "-C", export])
+    run(["make", "-C", export, "BUILD=build-clang", "CC=clang"])
     run(["cmake", "-S", export, "-B", os.path.join(export, "cmake-build")])
     run(["cmake", "--build", os.path.join(export, "cmake-build")])
     return {"scenario": "drop_mass.toml" if quick else "best.toml of a short tune",
             "tuned": tuned,
             "make": replay([os.path.join(export, "build", "pamctl_replay")], readings,
                            os.path.join(where, "make.csv")),
+            "make_clang": replay([os.path.join(export, "build-clang", "pamctl_replay")], readings,
+                                 os.path.join(where, "make_clang.csv")),
             "cmake": replay([os.path.join(export, "cmake-build", "pamctl_replay")], readings,
                             os.path.join(where, "cmake.csv"))}
 

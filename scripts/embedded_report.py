@@ -66,8 +66,8 @@ def write_report(path, trials, user, boards, qemu, versions, arm_flags):
     """Writes embedded.md (its section titles as bold lines, as a docs block shows them);
     returns whether every double build's commands equal pamsim's and
     every build ran."""
-    doubles = [t[b] for t in trials for b in ("gcc", "clang")] + [user["make"], user["cmake"],
-                                                                  qemu]
+    doubles = [t[b] for t in trials for b in ("gcc", "clang")]
+    doubles += [user["make"], user["make_clang"], user["cmake"], qemu]
     passed = all(r["equal"] for r in doubles) and not any("error" in b for b in boards)
     tuned = ", ".join(f"reflex.{k} = {v:.6g}" for k, v in user["tuned"].items())
     first = qemu.get("first_column")
@@ -91,11 +91,12 @@ trial, which rounding would have to cross to move a trigger.
 **A user's build**
 
 The export of {user["scenario"]}{f" ({tuned})" if tuned else ""}, built in its
-folder with `make` and with `cmake -S . -B cmake-build`:
+folder with `make` (gcc, and `CC=clang`) and with `cmake -S . -B cmake-build`:
 
 | build | commands against pamsim's |
 | --- | --- |
-| make | {compared(user["make"])} |
+| make (gcc) | {compared(user["make"])} |
+| make CC=clang | {compared(user["make_clang"])} |
 | CMake | {compared(user["cmake"])} |
 
 **Microcontrollers**

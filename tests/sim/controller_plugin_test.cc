@@ -138,6 +138,18 @@ TEST(ControllerPlugin, AScenarioChoosesItAndItsCommandsDriveTheValves) {
   EXPECT_FALSE(b.has_column("reflex_ago"));
 }
 
+TEST(ControllerPlugin, WithoutAnEmbeddedFormItIsNotExportedAndSaysSoInOneLine) {
+  // the built-in kinds have one (pamsim controller export); this kind has none
+  const Scenario none = load("none");
+  const Scenario plugin = load("constant_command", "[constant_command]\nMPa = 0.0\n");
+  pamctl_config config{};
+  EXPECT_EQ(embedded_controller_config(load_trial_model(none), none, &config), "");
+  EXPECT_EQ(config.kind, PAMCTL_KIND_PASS_THROUGH);
+  const std::string why = embedded_controller_config(load_trial_model(plugin), plugin, &config);
+  EXPECT_NE(why.find("no embedded form"), std::string::npos) << why;
+  EXPECT_EQ(why.find('\n'), std::string::npos);
+}
+
 TEST(ControllerPlugin, ItsSummaryFieldAndNameGoToSummaryJson) {
   const Scenario sc = load("constant_command", "[constant_command]\nMPa = 0.25\n");
   TrialSummary summary;
