@@ -1,5 +1,5 @@
-// avbdl_bench.cc: nanoseconds per call of the physical plant law (seeds/003's AVBDL with
-// braid friction, avbdl.h) against the spring law it replaced as the plant (Eq. (3),
+// avbdl_bench.cc: nanoseconds per call of the physical plant law (Pipan et al.'s AVBDL with
+// braid friction, avbdl.h) against the spring law of an ideal plant (Eq. (3),
 // spring_model.h): what a physical plant costs the co-simulation per force evaluation.
 #include <benchmark/benchmark.h>
 

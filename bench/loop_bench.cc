@@ -9,11 +9,11 @@
 //   BM_TrialLoop/passive    run_trial: + CVODE pneumatics, sensors, controller and logging
 //   BM_TrialLoop/reflex     the same with the stretch reflex on (/reflex_ideal on the
 //                           ideal plant; /reflex_maxwell_slip and /reflex_nylon_lines with
-//                           the hardware models of issue 25 on)
+//                           Maxwell-slip braid friction or nylon lines, Hardware below)
 //   BM_TwentyTrials         run_trials(20) wall time on 1 and 2 threads (CPU column: all
 //                           threads of the process, so CPU / (threads * Time) is the
 //                           share of the cores the workers got)
-// and the same for the PAM leg's 1.5 s landing (issue 27; eight muscles, 1500 steps):
+// and the same for the PAM leg's 1.5 s landing (eight muscles, 1500 steps):
 //   BM_LegBareMjStep, BM_TrialLoop/landing (no reflex), BM_TrialLoop/landing_reflex,
 //   BM_TwentyLandings
 // Counters: s_per_step (seconds per physics step, SI-prefixed: "4.1u" = 4.1 us) and
@@ -180,7 +180,7 @@ void BM_PamForceCallback(benchmark::State& state) {
 }
 BENCHMARK(BM_PamForceCallback)->Unit(benchmark::kNanosecond);
 
-// Variants of a scenario's hardware (issue 25): none, the plants' braid friction as
+// Variants of a scenario's hardware: none, the plants' braid friction as
 // Maxwell-slip elements (travels 0.1 and 0.5 mm), 0.5 mm nylon lines (E 2.5 GPa), the
 // gauge board held still, or every instrument ideal (the shipped ones are hardware).
 enum class Hardware { kShipped, kMaxwellSlip, kNylonLines, kStillBoard, kIdealInstruments };

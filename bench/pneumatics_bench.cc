@@ -6,7 +6,7 @@
 // -log10(rtol). BM_RegulatorLoopStep: the "regulator" valve model at the shipped rtol 1e-4,
 // args feedback (0 instant, 1 delayed: a sample every 1 ms acting 5 ms later), sense
 // (0 chamber, 1 outlet: a third state per muscle) and command policy (0 warm, 1 reinit);
-// (0, 0, 1) is the regulator model as it was before issue 25's item 5.
+// (0, 0, 1) is the regulator without its loop's delay or outlet sensing.
 #include <benchmark/benchmark.h>
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // bind_muscle.cc: the muscle half of the Python module: spring laws Eq. (2)-(5) and their
 // inversion Eq. (10), vectorised over numpy arrays (SpringModel), their least-squares fit
-// (seeds/000 Sec. II-B: fit, fit_csv) and the virtual tensile test (tensile_test,
+// (Yoshida and Hosoda, Sec. II-B: fit, fit_csv) and the virtual tensile test (tensile_test,
 // read_tensile_csv). Paper units (MPa, mm, N) at this boundary, SI inside.
 #include "bindings.h"
 

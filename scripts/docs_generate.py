@@ -8,7 +8,6 @@ Sphinx.
 """
 import json
 import os
-import re
 import subprocess
 import sys
 
@@ -97,24 +96,16 @@ def public_headers(root):
     return block.split()
 
 
-# the papers as the code's comments name them, and as a reader of the site knows them
-PAPERS = [(r"seeds/000", "Yoshida and Hosoda [1]"), (r"seeds/001", "Yoshida and Hosoda [2]"),
-          (r"seeds/002", "Wickramatunge and Leephakpreeda [3]"), (r"seeds/003", "Pipan et al. [4]")]
-
-
 def first_comment(path):
     """A header's opening paragraph (to its first empty comment line): what the file is for,
-    its papers named as the references page numbers them, its project history left out."""
+    its papers named as the headers name them (as docs/references.md does)."""
     lines = []
     with open(path) as f:
         for line in f:
             if not line.startswith("//") or not line[2:].strip():
                 break
             lines.append(line[2:].strip())
-    text = " ".join(lines)
-    for code, name in PAPERS:
-        text = re.sub(code, name, text)
-    return re.sub(r"[;,]?\s*\(?issue \d+(, item \d+)?\)?", "", text)
+    return " ".join(lines)
 
 
 def cpp_api(root):

@@ -1,19 +1,19 @@
 #!/usr/bin/env bash
 # fit-estimators.sh: the lab's pipeline for the arm's two muscles and the leg's eight
-# (seeds/000 Sec. II-A):
+# (Yoshida and Hosoda, Sec. II-A):
 # a static tensile test on each physical plant (models/pams/plant_<m>.toml), then the
 # Eq. (2)-(3) least-squares fit, written as the estimator's parameter file
 # models/pams/fitted_<m>.toml (strain gauge q and geometry copied from Table IV's file).
 # The drop-mass scenarios invert these fits; the leg's (models/pams/leg/plant_<m>.toml ->
 # models/pams/leg/fitted_<m>.toml) carry the arm agonist's gauge (Table IV's q) and their
-# plant's own geometry; the arm's muscles as Table I builds them (models/pams/table1/plant_<m>.toml
-# -> models/pams/table1/fitted_<m>.toml, issue 25) Table IV's gauge and their plant's
-# identified braid angle. Rerun after changing a plant file;
+# plant's own geometry; the arm's muscles as Table I builds them
+# (models/pams/table1/plant_<m>.toml -> models/pams/table1/fitted_<m>.toml) Table IV's gauge
+# and their plant's identified braid angle. Rerun after changing a plant file;
 # tests/sim/cli_plant_test.cc checks that the committed files are what this script writes.
 #
 # Protocol: the arm's pressure range, 0.2-0.7 MPa in 0.1 MPa steps (the reaching task's
 # 0.2-0.6 MPa and the valve's 0.7 MPa top); 2.5 mm steps from the free length to 15 mm
-# and back (seeds/000); instrument noise of the paper's sensors: PSE540 pressure 1 kPa,
+# and back (Yoshida and Hosoda); instrument noise of the paper's sensors: PSE540 pressure 1 kPa,
 # FGP-5 force gauge 0.05 N, DS-025 encoder 0.01 mm (standard deviations, assumptions of
 # their repeatability class), seed 1.
 set -euo pipefail
@@ -42,7 +42,7 @@ for m in agonist antagonist; do
   fit_plant "models/pams/plant_$m.toml" "$csv_dir/plant_$m.csv" "models/pams/table4_$m.toml" \
     "$out/fitted_$m.toml"
 done
-# the leg's muscles (issue 27): the same protocol on each plant; the strain gauge is the arm
+# the leg's muscles: the same protocol on each plant; the strain gauge is the arm
 # agonist's (Table IV q), the geometry the plant's own length and sleeve
 for m in IL GM RF VAS BFS GAS SOL TA; do
   length=$(sed -n 's/^length_mm = \([0-9.]*\).*/\1/p' "models/pams/leg/plant_$m.toml")
@@ -52,7 +52,7 @@ for m in IL GM RF VAS BFS GAS SOL TA; do
   fit_plant "models/pams/leg/plant_$m.toml" "$csv_dir/leg_$m.csv" "$sensors" "$out/leg/fitted_$m.toml" \
     "models/pams/table4_agonist.toml (q, with the plant geometry)"
 done
-# the arm's muscles as Table I builds them (issue 25; models/pams/table1/, identified by
+# the arm's muscles as Table I builds them (models/pams/table1/, identified by
 # examples/table1): the arm's protocol; the strain gauge is Table IV's, the geometry the
 # plant's (its identified braid angle, not Table IV's assumed 25 deg)
 for m in agonist antagonist; do

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """hop_patterns.py: the grid of feedforward pressure patterns from which
-scenarios/hopping.toml's was chosen (issue 27). Each pattern repeats a crouch phase (the
+scenarios/hopping.toml's was chosen. Each pattern repeats a crouch phase (the
 extensors GM, VAS, SOL at LOW, the mono-articular flexors IL, BFS, TA at FLEX) and a push-off
 (extensors at 0.7 MPa, flexors at 0) for 5 s; the biarticular RF and GAS follow the
 extensors or hold 0.4 MPa. Runs hopping.toml without reflexes (reflex.enabled=false) with

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """regulator_loop.py: the passive drop's chamber pressure rise at impact across the regulator
-bracket (issue 25, item 5; models/pams/pneumatics.toml [regulator]). Each row is one
+bracket (models/pams/pneumatics.toml [regulator]). Each row is one
 `pamsim run scenarios/drop_mass_passive.toml` with `--set` overrides, so any row can be rerun
 by hand. The rise is the agonist's largest chamber pressure (trajectory.csv, logged at the
 control rate) within 0.3 s after the impact less its pressure at the impact; the swing is
@@ -37,7 +37,7 @@ def bracket_end(end, feedback, sense):
 
 
 # (label, overrides); the fast / slow ends' bands are pneumatics.toml's derivation; the
-# shipped regulator (since issue 25) is the slow end with its loop delayed at the outlet
+# shipped regulator is the slow end with its loop delayed at the outlet
 ROWS = [
     ("the earlier loop (instant, chamber; 5 ms / 10 ms / 20 kPa, C = 1)",
      bracket_end("earlier_loop", "instant", "chamber")),

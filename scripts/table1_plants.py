@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""table1_plants.py: every shipped plant rebuilt with seeds/000 Table I's own diameters (issue
-25, item 1): the sleeve's diameter, the bladder a rubber tube of Table I's diameter inside it
+"""table1_plants.py: every shipped plant rebuilt with the diameters of Yoshida and Hosoda's
+Table I: the sleeve's diameter, the bladder a rubber tube of Table I's diameter inside it
 (`bladder.diameter_mm`, the Gent-Gent law for natural rubber: src/pam_actuator/avbdl.h),
 end regions 3.2 R0 long (the plant file's default for a tube: the DMSP-20's 32 mm at R0 =
 10 mm, scaled with the radius),
@@ -48,8 +48,8 @@ def options(doc):
 
 
 # name, shipped plant file, Table I: sleeve and bladder diameter [mm], the tensile test's
-# pressures [MPa] (seeds/000 Sec. II-B for A-D; the arm's: scripts/fit-estimators.sh), and
-# Table IV's Eq. (2)-(3) where it has one (m, h, a0..a3)
+# pressures [MPa] (Yoshida and Hosoda, Sec. II-B, for A-D; the arm's:
+# scripts/fit-estimators.sh), and Table IV's Eq. (2)-(3) where it has one (m, h, a0..a3)
 PLANTS = [
     ("agonist", "plant_agonist.toml", 16.0, 4.0, [0.2, 0.3, 0.4, 0.5, 0.6, 0.7],
      (-60.1, 170.1, 0.911, 0.256, 7.00, -0.201)),

@@ -1,7 +1,7 @@
 // file_changes.h: a parameter file read with some of its fields replaced, the way scenario
-// keys change them (muscles.<m>.plant.<table>.<field>, pneumatics.<table>.<field>; issue 26,
-// item 1). The changes are written over the parsed file, table by table, and the file's own
-// reader validates the result, so a changed field obeys exactly the file's rules; a value it
+// keys change them (muscles.<m>.plant.<table>.<field>, pneumatics.<table>.<field>). The
+// changes are written over the parsed file, table by table, and the file's own reader
+// validates the result, so a changed field obeys exactly the file's rules; a value it
 // refuses that came from a change is named by the change's key ("<prefix><table>.<field>:
 // <problem>"), one that came from the file by the file ("<path>: <table>.<field>: ...").
 #pragma once

@@ -1,4 +1,4 @@
-// avbdl.cc: the AVBDL plant force law of seeds/003, see avbdl.h: the volume, the bladder's
+// avbdl.cc: the AVBDL plant force law of Pipan et al., see avbdl.h: the volume, the bladder's
 // work and their slopes (Eq. (9)-(25)); its checks are in avbdl_validation.cc, its friction
 // term in avbdl_friction.cc.
 #include "pam_actuator/avbdl.h"

@@ -1,8 +1,8 @@
-// avbdl.h: the AVBDL static PAM model of Pipan et al. (Actuators 2025, 14, 560; seeds/003),
+// avbdl.h: the AVBDL static PAM model of Pipan et al. (Actuators 14(11), 560, 2025),
 // "Accurate Volume and Bladder Deformation Loss", as a plant force law, plus the fibre
 // friction that the paper names as what it leaves out. Pure functions, SI
 // (Pa, m, N, J); p is gauge pressure, L the muscle length between the end fittings, and
-// tension (pull) is positive. Equation numbers are seeds/003's.
+// tension (pull) is positive. Equation numbers are Pipan et al.'s.
 //
 // Map from the paper to this file:
 //   Eq. (3), (18)  F = P dV/dDL = -p dV/dL            avbdl_dvolume_dlength (dDL = -dL)
@@ -19,10 +19,10 @@
 //   Eq. (26)       D_max = D0 L0 / L_min (as read)     replaced by the braid (avbdl_middle_radius)
 //   Eq. (27)-(29)  profile scaled to any D, L          avbdl_end_radius, avbdl_params_from_geometry
 //
-// The bladder's reference (issue 25, item 1). Seeds/003's DMSP-20 has a bladder as wide as
-// its braid, and by default so does this file's: the wall spans R0 to R0 + t and its hoop
-// stretch is R / R0. The papers' own muscles (seeds/000 Table I) are a rubber tube a third
-// to a quarter of the sleeve's diameter (the arm's: 4 mm inside 16 mm): with
+// The bladder's reference. Pipan et al.'s DMSP-20 has a bladder as wide as its braid, and by
+// default so does this file's: the wall spans R0 to R0 + t and its hoop stretch is R / R0.
+// The papers' own muscles (Yoshida and Hosoda, Table I) are a rubber tube a third to a
+// quarter of the sleeve's diameter (the arm's: 4 mm inside 16 mm): with
 // bladder_diameter_m > 0 the wall is that tube, Db / 2 - t to Db / 2, its stretch is
 // R / rb with rb = Db / 2 - t / 2 (the wall's mid-surface; thin once inflated), so at L0 it
 // is already stretched R0 / rb (about 5): the tube inflates freely until it meets the braid,
@@ -49,10 +49,10 @@
 //   applied directly with the muscle's own R0 and R(L).
 // - With Ld = 0 (no end regions) and t = 0 (no bladder) the model is Chou-Hannaford exactly.
 //
-// Friction (pamsim's addition; seeds/003 Sec. 3 asks for "a pressure- and strain-dependent
+// Friction (pamsim's addition; Pipan et al. Sec. 3 ask for "a pressure- and strain-dependent
 // friction term"): dry friction between braid and bladder, proportional to the normal load,
 // i.e. to p times a contact area that changes with contraction strain eps = (L0 - L) / L0,
-// in the spirit of Tondu & Lopez (2000, seeds/003 ref. [4]):
+// in the spirit of Tondu & Lopez (2000, ref. [4] of Pipan et al.):
 //   F_f = F0 + max(p, 0) max(A0 + A1 eps, 0) >= 0,
 // with its own (F0, A0, A1) for lengthening (StretchDirection::kExtension) and shortening
 // (kContraction). It opposes motion: +F_f while lengthening, -F_f while shortening, so the
@@ -62,7 +62,7 @@
 // tanh(v / v_s) F_f(direction of v): continuous in v (zero at rest, no jump at reversal) for
 // ODE solvers and MuJoCo steps; v_s sets how fast it saturates. Its price: no stiction, a
 // muscle at rest carries no friction, so it creeps to the friction-free equilibrium. The
-// Maxwell-slip form (FrictionModel::kMaxwellSlip, maxwell_slip.h, issue 25 item 2) sticks
+// Maxwell-slip form (FrictionModel::kMaxwellSlip, maxwell_slip.h) sticks
 // instead: its elements hold their shares of F_f,ext (stretched side) and F_f,con
 // (shortened side) as the braid's contacts deflect, slip beyond their breakaway travel,
 // and keep what they hold when the muscle stops; their state is the trial's. Friction
@@ -141,7 +141,7 @@ struct AvbdlFriction {
   MaxwellSlipParams slip;                  // the elements, for kMaxwellSlip
 };
 
-// Defaults: the Festo DMSP-20 as seeds/003 Sec. 2.6 prints it (D 20 mm, L 200 mm, fibre
+// Defaults: the Festo DMSP-20 as Pipan et al. Sec. 2.6 print it (D 20 mm, L 200 mm, fibre
 // 221 mm, n 1.5, braid 25 deg; b and n follow from L0, D0, alpha0: 220.7 mm, 1.49) and its
 // 32 mm end regions (Sec. 2.2). Its wall thickness and fitted Mooney-Rivlin constants are not
 // in the text (Table 3 and Fig. 7 are lost): 2 mm is pamsim's assumption and the bladder
@@ -214,19 +214,18 @@ AvbdlShape avbdl_shape(const AvbdlParams& params);
 // The lengths the law holds for [m]: from the braid's full contraction b / sqrt(3) (or,
 // for a Gent-Gent bladder that reaches 0.999 of its limit first, from that length: no
 // pressure contracts the muscle past it) to kAvbdlMaxStretch b, just short of the fibre
-// length b at which the muscle would have to break (a pamsim cap: seeds/003 does not model
+// length b at which the muscle would have to break (a pamsim cap: Pipan et al. do not model
 // a muscle stretched that far).
 inline constexpr double kAvbdlMaxStretch = 0.999;
 double avbdl_min_length(const AvbdlParams& params);
 double avbdl_max_length(const AvbdlParams& params);
 
-// The DMSP-20's end regions relative to its length (32 of 200 mm, seeds/003 Sec. 2.2), the
+// The DMSP-20's end regions relative to its length (32 of 200 mm, Pipan et al. Sec. 2.2), the
 // default Ld = kAvbdlEndFraction L0 of any muscle (avbdl_params_from_geometry, plant files).
 inline constexpr double kAvbdlEndFraction = 0.032 / 0.200;
 // The same end regions relative to the muscle's radius (32 mm at R0 = 10 mm): the default of
 // a plant file with Table I's tube (bladder.diameter_mm), whose end regions are where the
-// braid flares from the fitting's radius, so they scale with the radius, not the length
-// (issue 25, item 1).
+// braid flares from the fitting's radius, so they scale with the radius, not the length.
 inline constexpr double kAvbdlEndPerRadius = 0.032 / 0.010;
 
 // Radius of the straight middle part [m]: the braid's sqrt(b^2 - L^2) / (2 pi n).
@@ -331,7 +330,7 @@ double avbdl_line_muscle_length(const AvbdlParams& params, double p_pa, double t
 double avbdl_line_muscle_length(const AvbdlParams& params, const AvbdlShape& shape,
                                 double p_pa, double taut_length_m);
 
-// A trial's last free length of one muscle and the pressure it was solved at (issue 29).
+// A trial's last free length of one muscle and the pressure it was solved at.
 // Given to the length below, a slack muscle's root is searched from the last one (a
 // pressure that moved little in a step moved the root little: a few evaluations of Eq. (25)
 // where a bracket over the whole stroke takes a dozen), and the same pressure again returns

@@ -1,5 +1,5 @@
 // avbdl_friction.cc: the fibre friction term of the AVBDL plant (pamsim's addition to
-// seeds/003), see avbdl.h: its magnitude, the rate-independent force, the smooth one
+// Pipan et al.'s law), see avbdl.h: its magnitude, the rate-independent force, the smooth one
 // avbdl_force adds to Eq. (25), and the Maxwell-slip one.
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// avbdl_keys.cc: the AVBDL plant's key rows (avbdl_keys.h). Equation numbers are seeds/003's.
+// avbdl_keys.cc: the AVBDL plant's key rows (avbdl_keys.h). Equation numbers are Pipan et al.'s.
 #include "pam_actuator/avbdl_keys.h"
 
 #include <cmath>

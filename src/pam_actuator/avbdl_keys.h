@@ -1,4 +1,4 @@
-// avbdl_keys.h: an AVBDL plant's parameters (avbdl.h, seeds/003) as key rows
+// avbdl_keys.h: an AVBDL plant's parameters (avbdl.h, Pipan et al.) as key rows
 // (base/key_table.h), in the plant file's units and layout: [geometry], [bladder], [friction]
 // with its [friction.extension] and [friction.contraction]. Each parameter's key with its
 // unit, factor to the SI field, range, default and meaning is one row, which the plant file's

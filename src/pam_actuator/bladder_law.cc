@@ -1,6 +1,6 @@
-// bladder_law.cc: the bladder's material laws (avbdl.h): seeds/003's Mooney-Rivlin stress
+// bladder_law.cc: the bladder's material laws (avbdl.h): Pipan et al.'s Mooney-Rivlin stress
 // and work, Eq. (20)-(22), the Gent-Gent law for a tube inflated far past Eq. (20)'s range,
-// and the free tube's inflation pressure (issue 25, item 1).
+// and the free tube's inflation pressure.
 #include <cmath>
 
 #include "pam_actuator/avbdl.h"

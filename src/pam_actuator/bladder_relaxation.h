@@ -1,12 +1,12 @@
 // bladder_relaxation.h: the bladder rubber's viscoelasticity, as a rate term on the AVBDL
-// bladder force (issue 25, item 2: "a viscoelastic bladder term for rate"). The hyperelastic
-// laws of avbdl.h are fitted to Treloar's quasi-static data, so they give the rubber's
-// relaxed (long-term) response; a rubber deformed quickly pulls more, and the extra relaxes.
+// bladder force. The hyperelastic laws of avbdl.h are fitted to Treloar's quasi-static data,
+// so they give the rubber's relaxed (long-term) response; a rubber deformed quickly pulls
+// more, and the extra relaxes.
 // Fung's quasi-linear viscoelasticity (Y. C. Fung, Biomechanics, Springer 1981, Ch. 7) puts
 // that on the elastic response: the bladder's contribution to the pull is
 //   F_b(t) = F_e(L(t)) + sum_i h_i(t),   dh_i/dt = g_i dF_e/dt - h_i / tau_i,
 // a generalized Maxwell (Prony) series with relaxation G(t) = 1 + sum g_i exp(-t / tau_i)
-// relative to the relaxed response F_e = dW/dL (seeds/003 Eq. (23)-(25)). A step of F_e
+// relative to the relaxed response F_e = dW/dL (Pipan et al., Eq. (23)-(25)). A step of F_e
 // is answered by (1 + sum g_i) of it at once, relaxing to 1.
 //
 // Update over a step dt with F_e linear in time (the exact solution of the ODE above for a

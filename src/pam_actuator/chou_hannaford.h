@@ -1,5 +1,5 @@
 // chou_hannaford.h: the geometric (virtual work) McKibben model of Chou & Hannaford
-// (1996; used as the reference "Chou's model" in seeds/003, Eq. (3)-(4) there).
+// (1996; used as the reference "Chou's model" by Pipan et al., Eq. (3)-(4) there).
 // With inextensible braid fibres of length b wound n turns:
 //   volume  V(L) = L (b^2 - L^2) / (4 pi n^2)
 //   diameter D(L) = sqrt(b^2 - L^2) / (pi n)   (b sin(alpha) around n turns)

@@ -1,4 +1,4 @@
-// identification.h: the least-squares identification of seeds/000, Sec. II-B: fit
+// identification.h: the least-squares identification of Yoshida and Hosoda, Sec. II-B: fit
 // m, h of Eq. (2) and the coefficients of Eq. (3), (4) or (5) to static tensile data.
 #pragma once
 

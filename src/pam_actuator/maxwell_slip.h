@@ -6,7 +6,7 @@
 // spring in series with a Coulomb block that slips once its spring holds its slip force. The
 // model sticks (a small reversal is elastic, no energy lost), slips beyond the band, and
 // remembers where in the loop it rests: what the smooth tanh(v / v_s) friction of
-// avbdl_friction.cc cannot do (issue 25, item 2).
+// avbdl_friction.cc cannot do.
 //
 // Element i is given by its share w_i of the total slip force (sum w_i = 1) and its
 // breakaway travel delta_i, the travel over which its spring takes up its share. Its state

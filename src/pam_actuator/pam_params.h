@@ -2,7 +2,7 @@
 // read once, validated, converted to SI. Shipped files live in models/pams/.
 //
 //   name = "agonist"
-//   source = "Yoshida & Hosoda (seeds/000), Table IV"
+//   source = "Yoshida & Hosoda, Table IV"
 //   [spring]
 //   law = "eq3"                                   # eq3 | eq4 | eq5
 //   units = { pressure = "MPa", length = "mm", force = "N" }

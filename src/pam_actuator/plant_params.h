@@ -1,6 +1,6 @@
 // plant_params.h: a muscle's physical plant, read from its own file (models/pams/plant_*.toml),
 // apart from the spring law its estimator inverts (pam_params.h): the simulated muscle is
-// physics, the estimator a fit to it. Today one law, AVBDL (avbdl.h, seeds/003). The file,
+// physics, the estimator a fit to it. Today one law, AVBDL (avbdl.h, Pipan et al.). The file,
 // in the papers' units:
 //   name = "agonist"
 //   source = "..."                      # where the numbers come from
@@ -54,7 +54,7 @@ PlantParams load_plant_params(const std::string& path);
 
 // The same with `changes` (tables and values of the file's own layout, in its units: e.g.
 // geometry.wall_thickness_mm) written over the file's, each validated as the file's own: a
-// scenario's muscles.<m>.plant.<table>.<field> keys (issue 26, item 1). A refused change is
+// scenario's muscles.<m>.plant.<table>.<field> keys. A refused change is
 // named "<prefix><key>: <problem>" (prefix "muscles.agonist.plant."), a refused value of the
 // file as above.
 PlantParams load_plant_params(const std::string& path, const toml::table& changes,

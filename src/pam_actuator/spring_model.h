@@ -1,5 +1,5 @@
-// spring_model.h: the nonlinear spring model of a PAM from Yoshida & Hosoda
-// (seeds/000), Eq. (1)-(5): natural length, the three force laws, their stiffness, and
+// spring_model.h: the nonlinear spring model of a PAM from Yoshida and Hosoda,
+// Eq. (1)-(5): natural length, the three force laws, their stiffness, and
 // the inversion from measured (p, f) to deformation d used for length estimation.
 //
 // Every law has the form f = d * sum_k c_k p^i_k d^j_k, i.e. a polynomial in d:

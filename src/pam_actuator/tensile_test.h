@@ -1,4 +1,4 @@
-// tensile_test.h: a virtual static tensile test following the protocol of seeds/000,
+// tensile_test.h: a virtual static tensile test following the protocol of Yoshida and Hosoda,
 // Sec. II-B: at each constant pressure the PAM is stretched from its natural length in
 // 2.5 mm steps up to a maximum deformation, then relaxed in 2.5 mm steps back to 0;
 // pressure, deformation, force and length are recorded at every point. Optional

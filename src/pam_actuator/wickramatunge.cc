@@ -1,4 +1,5 @@
-// wickramatunge.cc: Eq. (1)-(2) of seeds/002 and its loader, see wickramatunge.h.
+// wickramatunge.cc: Eq. (1)-(2) of Wickramatunge and Leephakpreeda and its loader, see
+// wickramatunge.h.
 #include "pam_actuator/wickramatunge.h"
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // wickramatunge.h: the empirical spring model of Wickramatunge & Leephakpreeda
-// (IMECS 2009, seeds/002), Eq. (1)-(2):
+// (IMECS 2009), Eq. (1)-(2):
 //   F = K(P, Ls) Ls,   K = a0 P^2 + a1 P Ls + a2 Ls^2 + a3                      (1), (2)
 // Ls is the stretched length beyond the unstretched length Lu(P), with separate
 // coefficient sets for extension (their "extraction", Ls increasing) and contraction

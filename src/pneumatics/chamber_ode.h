@@ -105,9 +105,9 @@ class PneumaticOde : public OdeSystem {
     input_[muscle].p_sensed_abs = p_sensed_abs_pa;
   }
   void set_kinematics(int muscle, double t0_s, double length_m, double velocity_m_s);
-  // a physical muscle's chamber: V(l) from the AVBDL shape (avbdl.h, seeds/003 Eq. (9)-(17))
-  // in place of Chou-Hannaford's cylinder; the plant (validated, InputError) also gives the
-  // muscle's braid. Throws std::out_of_range for a bad muscle index.
+  // a physical muscle's chamber: V(l) from the AVBDL shape (avbdl.h, Pipan et al.,
+  // Eq. (9)-(17)) in place of Chou-Hannaford's cylinder; the plant (validated, InputError)
+  // also gives the muscle's braid. Throws std::out_of_range for a bad muscle index.
   void set_plant_volume(int muscle, const AvbdlParams& plant);
   // total gas volume V = V(l(t)) + V_dead [m^3] and its rate [m^3/s] at time t
   double volume_m3(int muscle, double t) const;

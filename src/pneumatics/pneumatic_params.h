@@ -99,7 +99,7 @@ inline constexpr double kIso6358ReferenceTemperatureK = 293.15;
 PneumaticParams load_pneumatic_params(const std::string& path);
 // The same with `changes` (tables and values of the file's own layout and units, e.g.
 // chamber.tube_dead_volume_cm3) written over the file's, each validated as the file's own: a
-// scenario's pneumatics.<table>.<field> keys (issue 26, item 1). A refused change is named
+// scenario's pneumatics.<table>.<field> keys. A refused change is named
 // "<prefix><table>.<field>: <problem>" (prefix "pneumatics."); base/file_changes.h.
 PneumaticParams load_pneumatic_params(const std::string& path, const toml::table& changes,
                                       const std::string& prefix);

@@ -13,10 +13,10 @@
 // inhibition), clamped to the valve's range [0, p_max].
 //
 // Mode (the paper does not say which): "follow" uses the current v during the window,
-// clamped >= 0; "latch" holds the v that triggered. Default: follow. DESIGN.md's prototype
-// found following gives the full drop reduction (~3.6 deg with the ISO 6358 chamber) and
-// lets the command fall back within ~50 ms once the stretch stops, while latching the peak
-// for the whole 200 ms overshoots the arm to about -11 deg with the fiber sensor; follow is
+// clamped >= 0; "latch" holds the v that triggered. Default: follow. A prototype of the
+// falling-mass arm found that following gives the full drop reduction (~3.6 deg with the
+// ISO 6358 chamber) and lets the command fall back within ~50 ms once the stretch stops,
+// while latching the peak for the whole 200 ms overshoots the arm to about -11 deg with the fiber sensor; follow is
 // also the closer analogue of a spindle whose discharge tracks the stretch rate.
 //
 // Timing, all in whole control ticks of dt: the trigger tick is the first of the window's

@@ -1,6 +1,6 @@
 // tension_reflex.h: the Ib reflex of one muscle, autogenic inhibition from its force sensor
-// alone (issue 27, item 1): the Golgi tendon organ's analogue, the step the paper names
-// after the Ia stretch reflex (seeds/000, Sec. V: "the Ia reflex and the Ib reflex
+// alone: the Golgi tendon organ's analogue, the step Yoshida and Hosoda name after the Ia
+// stretch reflex (Sec. V: "the Ia reflex and the Ib reflex
 // coexist ... using only pressure and force sensors").
 //
 // A tendon organ fires with the tension of its muscle and inhibits that muscle's motor

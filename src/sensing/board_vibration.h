@@ -1,7 +1,7 @@
 // board_vibration.h: the gauge board's first bending mode, so that a sharp change of the
 // line's pull (the mass landing in the basket) rings the acrylic board and the gauge samples
-// the ringing (issue 25, item 3: "impact-excited vibration of line and board"; the paper's
-// mistrips and self-retriggering came from a noisy velocity estimate, seeds/000 Sec. IV).
+// the ringing (an impact-excited vibration of line and board; the paper's mistrips and
+// self-retriggering came from a noisy velocity estimate, Yoshida and Hosoda, Sec. IV).
 //
 // The board is the cantilever of gauge_board.h, clamped at x = 0, free at L_b and pulled at
 // the contact point x_c (the mode's shape taken as the static one's). Its first mode (Euler-

@@ -1,9 +1,10 @@
 // fiber_hardware.h: the conductive-fiber sensor as hardware (sensors.fiber.model = "fabric")
 // instead of a rate read exactly plus white noise. The sensor of Hitzmann et al. (Advanced
-// Robotics 2021, seeds/000 ref. [17]) is a conductive fabric wrapped round the PAM: its
-// resistance follows the muscle's diameter, and the lab converts that linearly into a rate of
-// length change, calibrated to the linear encoder at the start (seeds/000 Sec. IV-C). Two
-// errors of such a fabric make the integrated length drift for a reason:
+// Robotics 2021; ref. [17] of Yoshida and Hosoda) is a conductive fabric wrapped round the
+// PAM: its resistance follows the muscle's diameter, and the lab converts that linearly into
+// a rate of length change, calibrated to the linear encoder at the start (Yoshida and
+// Hosoda, Sec. IV-C). Two errors of such a fabric make the integrated length drift for a
+// reason:
 //   1. nonlinearity: the resistance is not linear in the strain it is calibrated on, so the
 //      linear conversion reads a displacement u = l - l_0 from the calibration length as
 //        u_nl = u (1 + (N / 100) u / S),
@@ -17,9 +18,9 @@
 // The rate the sensor reports is the change of that reading over the tick (then the white
 // noise of sensors.fiber_noise_mm_s, as before).
 //
-// Figures: Hitzmann et al.'s own calibration curves and drift figures could not be retrieved
-// in this session, so both are ASSUMPTIONS (docs/physics.md, departures), sized from knitted and stitched
-// conductive strain sensors in the literature: a linear fit of R^2 = 0.984 with 6.25 %
+// Figures: Hitzmann et al.'s own calibration curves and drift figures could not be
+// retrieved, so both are ASSUMPTIONS (docs/physics.md, departures), sized from knitted and
+// stitched conductive strain sensors in the literature: a linear fit of R^2 = 0.984 with 6.25 %
 // hysteresis (Tangsirinaruenart & Stylios, "A novel textile stitch-based strain sensor for
 // wearable end users", 2019, art. 1469), 0.3 % nonlinearity but 12.5 % hysteresis and large
 // drift in weft knits (preprints.org 202308.0816, "Advancing smart textiles: structural

@@ -1,13 +1,13 @@
 // gauge_board.h: the board a strain gauge is bonded to, as the paper builds its force
-// sensors (seeds/000 Sec. IV-B: foil gauges on acrylic boards, the line pulling on the
+// sensors (Yoshida and Hosoda, Sec. IV-B: foil gauges on acrylic boards, the line pulling on the
 // board; "the gauge voltage fluctuates with slight positional shifts of the line"). The
 // board is a cantilever of rectangular section clamped at x = 0; the line pulls across it
 // at the contact point x_c; the gauge sits on its surface at x_g < x_c. Euler-Bernoulli
 // bending gives the surface strain under the gauge
 //   eps = M c / (E I) = 6 F (x_c - x_g) / (E w t^2),
 // so the reading follows the force times the lever x_c - x_g: a contact point that shifts
-// by dx changes the reading as a force change of F dx / (x_c - x_g) would (issue 25, item 3;
-// the gauge hardware holds the contact fixed for now: its movement is not modelled yet).
+// by dx changes the reading as a force change of F dx / (x_c - x_g) would (where the contact
+// sits and how it moves: gauge_contact.h).
 #pragma once
 
 #include <string>

@@ -1,8 +1,8 @@
 // gauge_contact.h: where the fishing line bears on the gauge's board, and whether it still
-// does (issue 25, item 3: "a contact point that moves and sticks, ... the line able to lose
-// that contact by geometry"; seeds/000 Sec. IV-B: "the voltage values fluctuated
-// significantly due to slight positional shifts of the fishing line", and the agonist's
-// signal was lost as its muscle contracted).
+// does: a contact point that moves and sticks, and a line able to lose that contact by
+// geometry (Yoshida and Hosoda, Sec. IV-B: "the voltage values fluctuated significantly due
+// to slight positional shifts of the fishing line", and the agonist's signal was lost as its
+// muscle contracted).
 //
 // The line runs from the muscle's end fitting over the board's edge (the cantilever of
 // gauge_board.h, clamped at y = 0, free at y = L_b) on to the arm's shaft. Along the edge,

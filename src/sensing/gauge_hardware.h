@@ -2,10 +2,10 @@
 // Eq. (8) taken as exact: the line's pull bends the acrylic board (gauge_board.h), the
 // board creeps (prony_creep.h), the foil gauge on it sits in a quarter bridge whose arms
 // differ within their tolerance (quarter_bridge.h), and an amplifier brings the bridge to
-// volts. The estimator is not told this gauge's slope: like the lab (seeds/000 Sec. IV-B,
+// volts. The estimator is not told this gauge's slope: like the lab (Yoshida and Hosoda, Sec. IV-B,
 // "q was obtained by measuring voltage and force while statically loading the strain
 // gauge"), pamsim loads the simulated gauge in steps, reads it, and fits Eq. (8)'s q and
-// V_base by least squares (calibrate_gauge). Issue 25, item 3.
+// V_base by least squares (calibrate_gauge).
 //
 // The amplifier's gain is the one unknown the paper pins: it is set so that a nominal gauge
 // (equal arms, no creep, small strain) has the muscle's published slope q (Table IV), and

@@ -8,8 +8,8 @@
 // so a unit step applied at sample 0 reads y_n = 1 - exp(-n dt / tau) at sample n, and the
 // DC gain is exactly 1. First order rather than Butterworth: one state, no overshoot (a
 // 2nd-order Butterworth rings by 4 %, which a threshold detector would see as velocity),
-// and the DESIGN.md prototype figures (5 Hz on pressure, 10 Hz on velocity) were measured
-// with it.
+// and a prototype's figures for it (5 Hz on pressure, 10 Hz on velocity: sensing.h,
+// sensors.h) were measured with it.
 //
 // The filter is initialised to its first input (no start-up transient). A cutoff of 0
 // turns it off: the output is the input. The update is the embedded controller's

@@ -1,7 +1,7 @@
 // pressure_hardware.h: the pressure sensor as hardware (sensors.pressure.model = "pse540")
 // instead of an exact transducer with white noise: the static and dynamic errors of the SMC
-// PSE540 class (0-1 MPa gauge, 1-5 V out; seeds/000 Sec. III-A names the PSE540), in
-// Gazebo's noise parameters (sensor_noise.h). Issue 25, item 4. Per tick, in order:
+// PSE540 class (0-1 MPa gauge, 1-5 V out; Yoshida and Hosoda, Sec. III-A, name the PSE540),
+// in Gazebo's noise parameters (sensor_noise.h). Per tick, in order:
 //   1. response: the sensing element lags the chamber, a first order with the catalogue's
 //      response time read as its 0-90 % rise, tau = t_r / ln 10 (lowpass_filter.h; the
 //      chamber pressure held over the control tick, so exact for that input);
@@ -17,9 +17,9 @@
 // pressure_noise_MPa, in sensors.h), then `precision` (Gazebo's rounding of the output),
 // then the 1-5 V transfer and the ADC.
 //
-// Figures (the PSE540 datasheet itself could not be retrieved in this session; these are the
-// class figures the project quotes for it in sensors.h and issue 25, and assumptions where
-// stated, each a row of docs/physics.md's departures):
+// Figures (the PSE540 datasheet itself could not be retrieved; these are the class figures
+// sensors.h quotes for it, and assumptions where stated, each a row of docs/physics.md's
+// departures):
 //  - accuracy +-2 % F.S. (+-20 kPa): read as a 3-sigma bound on an instrument's static error
 //    at full scale, shared equally by zero and span: bias_stddev = 2 % / (3 sqrt 2) F.S.
 //    ~ 4.7 kPa, gain_error_stddev ~ 0.47 % (ASSUMPTION: the split and the 3 sigma);

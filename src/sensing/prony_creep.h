@@ -5,8 +5,9 @@
 // response x(t) = J0 sigma(t), the element states obey dq_i/dt = (x - q_i) / tau_i and the
 // output is x + sum g_i q_i. With x held over each step (the control tick), the update
 // q_i <- x + (q_i - x) exp(-dt / tau_i) is exact, so a load step gives the closed form at
-// every tick. Used for the PMMA board under the gauge (the fishing line's creep is not wired
-// yet; issue 25, item 3); the weights and times are each material's, cited where given.
+// every tick. Used for the PMMA board under the gauge and the fiber sensor's drift (the
+// fishing line's creep is one such element, kept by the force callback,
+// sim/core/pam_callback.h); the weights and times are each material's, cited where given.
 #pragma once
 
 #include <string>

@@ -1,11 +1,11 @@
 // quarter_bridge.h: a foil strain gauge in a quarter Wheatstone bridge, as the paper's
-// gauges are wired (seeds/000 Sec. IV-B: foil gauges on acrylic boards, a quarter bridge
+// gauges are wired (Yoshida and Hosoda, Sec. IV-B: foil gauges on acrylic boards, a quarter bridge
 // completed by 120 +- 0.5 Ohm resistors). The output is the bridge formula
 //   V_out = G V_ex ( R_g / (R_g + R_3) - R_2 / (R_1 + R_2) ),  R_g = R_g0 (1 + GF eps),
 // which for four equal arms is G V_ex GF eps / (4 + 2 GF eps): V_base is not zero once the
 // arms differ within their tolerance, and the output bends away from linear with strain.
 // A built bridge's four resistances are drawn once per instrument (uniform within the
-// tolerance), so an instrument keeps its offset from trial to trial (issue 25, item 3).
+// tolerance), so an instrument keeps its offset from trial to trial.
 #pragma once
 
 #include <random>

@@ -46,11 +46,12 @@ struct SensingConfig {
   // reflex.lowpass_hz (the controller's, ControllerConfig::velocity_lowpass_hz, handed over
   // by the scenario; its default is this one):
   // first-order low-pass on Eq. (11)'s v and the fiber rate, 0 (off) or (0, control_hz / 2].
-  // Default off: DESIGN.md measured that 10 Hz delays the trigger by ~30 ms and halves the
-  // gain and 5 Hz never triggers. On the physical plant (docs/findings.md, sensor noise) 10 Hz
-  // costs the model reflex 0.9 deg of drop at the default noise and moves the onset of
-  // noise mistrips from 2x to 6x the default noise (sensors.noise_scale). A low-pass on the
-  // pressure (sensors.pressure_lowpass_hz) is no substitute (see its caveat in sensors.h).
+  // Default off: a prototype of the falling-mass arm measured that 10 Hz delays the trigger
+  // by ~30 ms and halves the gain and 5 Hz never triggers. On the physical plant
+  // (docs/findings.md, sensor noise) 10 Hz costs the model reflex 0.9 deg of drop at the
+  // default noise and moves the onset of noise mistrips from 2x to 6x the default noise
+  // (sensors.noise_scale). A low-pass on the pressure (sensors.pressure_lowpass_hz) is no
+  // substitute (see its caveat in sensors.h).
   double velocity_lowpass_hz = 0.0;
   double control_hz = 100.0;         // sim.control_hz
   double physics_dt_s = 0.001;       // sim.timestep_s: a ringing gauge board's step

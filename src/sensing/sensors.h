@@ -25,7 +25,7 @@
 //  - pressure ADC: 12 bit over 0-5 V (a microcontroller or DAQ input): 1.22 mV = 0.31 kPa
 //    per step, well below the noise.
 //  - gauge_noise_v = 0.5 mV: 0.22 N on the agonist (q = 2.25e-3 V/N) and 0.12 N on the
-//    antagonist (q = 4.33e-3 V/N), the 0.2 N level of DESIGN.md's prototype.
+//    antagonist (q = 4.33e-3 V/N), the 0.2 N level of the prototype below.
 //  - gauge ADC: 16 bit over -5..+5 V (a bridge amplifier into a bipolar DAQ input, so noise
 //    around V_base is not clipped): 0.15 mV = 0.07 N per step on the agonist.
 //  - sensors.fiber_noise_mm_s = 2 on the rate: the fiber reflex threshold of Table II (25 mm/s)
@@ -33,8 +33,8 @@
 // With these defaults (no pressure low-pass), the velocity estimate at 100 Hz has a standard
 // deviation of about 9 mm/s (drop_mass.toml's quiet second: 9.6 mm/s agonist, 8.4 mm/s
 // antagonist, largest 32 mm/s), 7 sigma below the model reflex threshold (70 mm/s): no
-// mistrip (DESIGN.md measured ~1.5 % mistrips per quiet second at 0.002 MPa / 0.2 N, whose
-// velocity noise is ~19 mm/s).
+// mistrip (a prototype of the falling-mass arm measured ~1.5 % mistrips per quiet second at
+// 0.002 MPa / 0.2 N, whose velocity noise is ~19 mm/s).
 #pragma once
 
 #include <optional>
@@ -48,11 +48,11 @@
 
 namespace pamsim {
 
-// The linear encoder (seeds/000 Sec. III-A: a MUTOH DS-025) as counts of `resolution_m`:
-// it reads round(l / resolution) resolution (sensor_noise.h's quantise). Keys
+// The linear encoder (Yoshida and Hosoda, Sec. III-A: a MUTOH DS-025) as counts of
+// `resolution_m`: it reads round(l / resolution) resolution (sensor_noise.h's quantise). Keys
 // sensors.encoder.model ("ideal" | "counts") and sensors.encoder.resolution_mm (> 0). The
-// DS-025's resolution could not be retrieved in this session: 0.01 mm is an ASSUMPTION, the
-// usual count of digital-scale linear encoders of its class (docs/physics.md, departures). Where pamsim uses
+// DS-025's resolution could not be retrieved: 0.01 mm is an ASSUMPTION, the usual count of
+// digital-scale linear encoders of its class (docs/physics.md, departures). Where pamsim uses
 // the encoder's reading: the fiber sensor's calibration at its first sample (FiberSensor);
 // the logged length_<m>_mm stays the plant's true length.
 struct EncoderConfig {
@@ -70,7 +70,8 @@ struct SensorConfig {
   double pressure_adc_min_v = 0.0;     // sensors.pressure_adc_min_V
   double pressure_adc_max_v = 5.0;     // sensors.pressure_adc_max_V, > min
   // sensors.pressure_lowpass_hz, 0 (off) or (0, Nyquist]. Default off. A low-pass on the
-  // measured pressure removes noise mistrips (DESIGN.md) but, in the closed loop, its lag
+  // measured pressure removes noise mistrips (a prototype: 5 Hz removed all of them at
+  // 0.003 MPa / 0.5 N of noise without delaying the trigger) but, in the closed loop, its lag
   // turns the reflex's own pressure rise into estimated stretch: the real force rises with
   // the real pressure while the estimate still inverts Eq. (3) at the older, lower one, so d
   // is overestimated; on the ideal plant (drop_mass_ideal.toml) a 5 Hz filter made the

@@ -92,8 +92,8 @@ TEST_F(AtomicFileTest, TargetIsADirectoryThrowsAndCleansUp) {
   EXPECT_EQ(count_entries(dir_), 1);   // only the directory itself
 }
 
-// A symlink planted where the old code put its temp file (`<out>.tmp.<pid>`) must not be
-// written through: the target keeps its content (issue 14 item 7).
+// A symlink planted at a guessable temp file name (`<out>.tmp.<pid>`) must not be written
+// through: the target keeps its content.
 TEST_F(AtomicFileTest, APlantedSymlinkIsNotWrittenThrough) {
   const std::string victim = dir_ + "/victim.txt";
   std::ofstream(victim) << "precious\n";
@@ -122,7 +122,7 @@ TEST_F(AtomicFileTest, PermissionsAreAPlainCreates) {
 }
 
 // A full disk, emulated by a file-size limit (a write past it fails with EFBIG): the error
-// names the path and nothing is left, neither temp file nor half a file (issue 14 item 1).
+// names the path and nothing is left, neither temp file nor half a file.
 TEST_F(AtomicFileTest, AFullDiskIsAnErrorAndLeavesNothing) {
   struct rlimit old {};
   ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old), 0);

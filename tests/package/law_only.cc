@@ -1,4 +1,4 @@
-// law_only.cc: Eq. (3) of seeds/000 evaluated and inverted through pamsim::pam_actuator.
+// law_only.cc: Eq. (3) of Yoshida and Hosoda evaluated and inverted through pamsim::pam_actuator.
 // Prints the force at 0.4 MPa, 10 mm and the deformation recovered from it; exit 0 when the
 // inversion returns the deformation to 1e-9 mm.
 #include <cmath>

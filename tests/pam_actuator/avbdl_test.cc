@@ -1,4 +1,4 @@
-// avbdl_test.cc: the AVBDL plant law of seeds/003 (avbdl.h): Chou-Hannaford as its special
+// avbdl_test.cc: the AVBDL plant law of Pipan et al. (avbdl.h): Chou-Hannaford as its special
 // case, volume and force by virtual work, the bladder's Mooney-Rivlin work, the friction
 // loop; its bad values are plant_keys_test.cc's.
 #include "pam_actuator/avbdl.h"
@@ -199,7 +199,7 @@ TEST(AvbdlTest, BladderLossLowersThePullAndGrowsWithWallThickness) {
 }
 
 TEST(AvbdlTest, Dmsp20PullsLessThanChouAsThePaperMeasured) {
-  // seeds/003 Fig. 11: Chou's model overestimates the DMSP-20 at every p and contraction
+  // Pipan et al., Fig. 11: Chou's model overestimates the DMSP-20 at every p and contraction
   const AvbdlParams p;
   const BraidGeometry g = avbdl_braid(p);
   for (double p_bar : {2.0, 4.0, 6.0}) {
@@ -293,7 +293,7 @@ TEST(AvbdlTest, DefaultsPresetsAndScaledGeometryValidate) {
                InputError);
 }
 
-// A slack muscle's free length tracked over a trial's pressures (issue 29): each agrees with
+// A slack muscle's free length tracked over a trial's pressures: each agrees with
 // the search over the whole stroke to the solvers' tolerance, whether the pressure crept (a
 // step's change) or jumped, for the law's bladder and for a tube (whose low pressures put
 // the root past L0); the same pressure again answers the same length; a taut muscle is its

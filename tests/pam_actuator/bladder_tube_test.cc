@@ -1,4 +1,4 @@
-// bladder_tube_test.cc: the bladder as Table I builds it (avbdl.h, issue 25 item 1): a rubber
+// bladder_tube_test.cc: the bladder as Table I builds it (avbdl.h): a rubber
 // tube narrower than the sleeve, and the Gent-Gent law fitted to Treloar's data. Checked
 // against what does not come from the code under test: Treloar's own data points, the
 // neo-Hookean limit of the law, the thin tube's inflation pressure as the slope of its

@@ -13,7 +13,7 @@
 namespace pamsim {
 namespace {
 
-// true laws, one per family, with the agonist's Eq. (2) (Table IV of seeds/000)
+// true laws, one per family, with the agonist's Eq. (2) (Table IV of Yoshida and Hosoda)
 SpringModel truth(SpringLaw law) {
   switch (law) {
     case SpringLaw::kEq3:   // Table IV agonist

@@ -1,6 +1,6 @@
-// input_file_test.cc: pamsim reads only regular files of a bounded size (issue 14 item 8):
-// a folder or /dev/null as a parameter file used to give the defaults silently, /dev/zero
-// was read without end. Each is one error naming the path, through every reader.
+// input_file_test.cc: pamsim reads only regular files of a bounded size: a folder or
+// /dev/null as a parameter file must not give the defaults silently, nor /dev/zero be read
+// without end. Each is one error naming the path, through every reader.
 #include "base/toml_file.h"
 
 #include <gtest/gtest.h>

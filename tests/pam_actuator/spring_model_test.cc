@@ -1,4 +1,4 @@
-// spring_model_test.cc: Eq. (1)-(5) of seeds/000, unit conversion and inversion.
+// spring_model_test.cc: Eq. (1)-(5) of Yoshida and Hosoda, unit conversion and inversion.
 #include "pam_actuator/spring_model.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
-// table4_springs.h: the fitted Eq. (3) springs of Table IV (seeds/000, "Implementing Stretch
-// Reflex in Musculoskeletal Robots Driven by PAMs Using Nonlinear Spring Model"), paper units,
-// which several spring-model tests start from.
+// table4_springs.h: the fitted Eq. (3) springs of Table IV (Yoshida and Hosoda, "Implementing
+// Stretch Reflex in Musculoskeletal Robots Driven by PAMs Using Nonlinear Spring Model"),
+// paper units, which several spring-model tests start from.
 #pragma once
 
 #include "pam_actuator/spring_model.h"

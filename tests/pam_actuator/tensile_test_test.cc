@@ -1,4 +1,5 @@
-// tensile_test_test.cc: the virtual tensile protocol (seeds/000 Sec. II-B) and its CSV.
+// tensile_test_test.cc: the virtual tensile protocol (Yoshida and Hosoda, Sec. II-B) and its
+// CSV.
 #include "pam_actuator/tensile_test.h"
 
 #include <gtest/gtest.h>
@@ -227,7 +228,7 @@ TEST_F(TensileCsvTest, BadInputs) {
   expect_error(h + "0.4,1,nan,150\n", "row 2, column force_N: \"nan\" is not a decimal number");
   expect_error(h + "0.4,1,5,inf\n", "column length_mm");
   expect_error(h + "0.4,1,5,1e999\n", "row 2, column length_mm: \"1e999\" is not finite");
-  // hexadecimal floats are refused (issue 14 item 10)
+  // hexadecimal floats are refused
   expect_error(h + "0.4,1,0x1p3,150\n", "row 2, column force_N: \"0x1p3\" is not a decimal");
   // a column named twice is refused, not silently the last one
   expect_error("pressure_MPa,deformation_mm,force_N,length_mm,force_N\n0.4,1,5,150,6\n",

@@ -1,5 +1,5 @@
-// wickramatunge_test.cc: Eq. (1)-(2) of seeds/002 with their Table 1, branch and range
-// selection, inversion, and the parameter file.
+// wickramatunge_test.cc: Eq. (1)-(2) of Wickramatunge and Leephakpreeda with their Table 1,
+// branch and range selection, inversion, and the parameter file.
 #include "pam_actuator/wickramatunge.h"
 
 #include <gtest/gtest.h>

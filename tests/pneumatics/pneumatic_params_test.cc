@@ -120,8 +120,9 @@ TEST(PneumaticParamsTest, EveryNumericKeyRejectsBadValues) {
   }
 }
 
-// The regulator loop's keys (issue 25, item 5): a conductance must pass air, a ratio stay
-// below the laminar ratio, the names be known; the shipped file keeps the model before.
+// The regulator loop's keys: a conductance must pass air, a ratio stay below the laminar
+// ratio, the names be known; the shipped file's loop is delayed and closed on its outlet,
+// and a file that leaves the keys out gets the instant loop on the chamber.
 TEST(PneumaticParamsTest, RegulatorLoopKeysAreChecked) {
   for (const char* key : {"supply_sonic_conductance_dm3_per_s_bar",
                           "exhaust_sonic_conductance_dm3_per_s_bar",
@@ -149,12 +150,13 @@ TEST(PneumaticParamsTest, RegulatorLoopKeysAreChecked) {
 
   const PneumaticParams shipped =
       load_pneumatic_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/pneumatics.toml");
-  // shipped: the ITV1000 class, its loop delayed and closed on its outlet (issue 25)
+  // shipped: the ITV1000 class, its loop delayed and closed on its outlet
   EXPECT_EQ(shipped.regulator_feedback, RegulatorFeedback::kDelayed);
   EXPECT_EQ(shipped.regulator_sense, RegulatorSense::kOutlet);
   EXPECT_NEAR(regulator_supply_conductance(shipped), 0.35e-8, 1e-22);
   EXPECT_NEAR(regulator_exhaust_conductance(shipped), 0.35e-8, 1e-22);
-  // a file that leaves them out: the loop before, both paths following [valve]
+  // a file that leaves them out: the instant loop on the chamber, both paths following
+  // [valve]
   const PneumaticParams plain = load_pneumatic_params(write_temp("plain.toml", "[regulator]\n"));
   EXPECT_EQ(plain.regulator_feedback, RegulatorFeedback::kInstant);
   EXPECT_EQ(plain.regulator_sense, RegulatorSense::kChamber);

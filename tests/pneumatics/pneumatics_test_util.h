@@ -1,5 +1,5 @@
 // pneumatics_test_util.h: the muscle the chamber and regulator tests share, Table I of
-// seeds/000 (180 mm long, 16 mm sleeve; the braid angle, which the paper does not give,
+// Yoshida and Hosoda (180 mm long, 16 mm sleeve; the braid angle, which the paper does not give,
 // assumed 25 deg), and their physics step.
 #pragma once
 

@@ -1,5 +1,5 @@
-// regulator_loop_test.cc: the "regulator" valve model's loop (issue 25, item 5; chamber_ode.h,
-// pneumatics.h, sampled_delay_line.h): with feedback "delayed" a stretch is answered only
+// regulator_loop_test.cc: the "regulator" valve model's loop (chamber_ode.h, pneumatics.h,
+// sampled_delay_line.h): with feedback "delayed" a stretch is answered only
 // after the dead time (until then the chamber is the closed chamber of p V^n = const); the
 // delayed loop without dead time tends to the instant loop as its sample period shrinks;
 // sensing at the outlet tends to sensing in the chamber as the tube stiffens; every

@@ -84,8 +84,9 @@ TEST(StretchReflexController, QuietNoisySamplesNeverTripAtDefaults) {
 }
 
 TEST(StretchReflexController, PressureLowpassRemovesMistripsAtHighNoise) {
-  // DESIGN.md: at 0.003 MPa / 0.5 N the unfiltered model-based velocity mistrips the 70 mm/s
-  // threshold most quiet seconds; a 5 Hz low-pass on the measured pressure removes it
+  // as a prototype of the falling-mass arm measured: at 0.003 MPa / 0.5 N of noise the
+  // unfiltered model-based velocity mistrips the 70 mm/s threshold most quiet seconds; a 5 Hz
+  // low-pass on the measured pressure removes it
   auto trips = [](double pressure_lowpass_hz) {
     int count = 0;
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {

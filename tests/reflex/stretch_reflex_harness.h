@@ -32,9 +32,10 @@ using test::table_iv_agonist;
 using test::table_iv_antagonist;
 constexpr double kRampV_m_s = 0.150;   // the stretch of the ramps below
 
-// Everything a harness is built from. Defaults: the falling-mass operating point (DESIGN.md),
-// both muscles at 0.4 MPa and scheduled at 0.4 MPa, agonist d = 6.66 mm, antagonist
-// d = 1.0 mm; one pair {0, 1}; default sensors and Table II's model-based reflex.
+// Everything a harness is built from. Defaults: the falling-mass operating point (the arm at
+// -36 deg on the Table IV laws, as a prototype calibrated it), both muscles at 0.4 MPa and
+// scheduled at 0.4 MPa, agonist d = 6.66 mm, antagonist d = 1.0 mm; one pair {0, 1}; default
+// sensors and Table II's model-based reflex.
 struct Rig {
   std::vector<MuscleSensorSpec> muscles = {table_iv_agonist(), table_iv_antagonist()};
   std::vector<double> d_m = {6.66e-3, 1.0e-3};

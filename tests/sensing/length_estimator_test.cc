@@ -11,7 +11,7 @@
 namespace pamsim {
 namespace {
 
-// Table IV of seeds/000
+// Table IV of Yoshida and Hosoda
 SpringModel agonist_spring() {
   return spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,
                                        {0.911, 0.256, 7.00, -0.201, 0, 0});

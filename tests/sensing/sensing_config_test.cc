@@ -65,7 +65,7 @@ std::vector<BadSensing> bad_sensing_values() {
       {"sensors.noise_scale", "-1", [](C c) { c.sensors.noise_scale = -1.0; }},
       {"sensors.noise_scale", "1001", [](C c) { c.sensors.noise_scale = 1001.0; }},
       {"sensors.noise_scale", "nan", [](C c) { c.sensors.noise_scale = kNaN; }},
-      // the sensors as hardware (issue 25, item 4): one per file, the rest in their own tests
+      // the sensors as hardware: one per file, the rest in their own tests
       {"sensors.encoder.resolution_mm", "0", [](C c) { c.sensors.encoder.resolution_m = 0.0; }},
       {"sensors.encoder.resolution_mm", "nan", [](C c) { c.sensors.encoder.resolution_m = kNaN; }},
       {"sensors.pressure.dynamic_bias_correlation_time_s", "0",

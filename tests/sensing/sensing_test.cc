@@ -38,9 +38,9 @@ using test::fields;
 using test::noise_free;
 using test::table_iv_muscles;
 
-// The arm at the falling-mass operating point (DESIGN.md): both muscles at 0.4 MPa, agonist
-// d = 6.66 mm, antagonist d = 1.0 mm. The truth follows the same spring laws the
-// estimators invert.
+// The arm at the falling-mass operating point (at -36 deg on the Table IV laws, as a
+// prototype calibrated it): both muscles at 0.4 MPa, agonist d = 6.66 mm, antagonist
+// d = 1.0 mm. The truth follows the same spring laws the estimators invert.
 struct Plant {
   std::vector<MuscleSensorSpec> muscles = table_iv_muscles();
   std::vector<double> d_m = {6.66e-3, 1.0e-3};

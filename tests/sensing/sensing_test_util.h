@@ -15,7 +15,7 @@
 
 namespace pamsim::test {
 
-// the Table IV arm (seeds/000): spring laws and strain gauges of both muscles
+// the Table IV arm (Yoshida and Hosoda): spring laws and strain gauges of both muscles
 inline MuscleSensorSpec table_iv_agonist(const std::string& key = "muscles.agonist") {
   return {key,
           spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,

@@ -97,7 +97,7 @@ TEST(CliPlantTest, TensileTestThenFitGivesTheEstimatorItsTableIIIAccuracy) {
   const double fit = estimate_rmse_pct(dir / "fit");
   EXPECT_GT(table4, 1.7) << "Table IV's law is not this plant's";
   EXPECT_GT(fit, 0.1) << "a fit of Eq. (3) is not the AVBDL law either";
-  EXPECT_LT(fit, 1.7) << "seeds/000 Table III: 0.35-1.7 %";
+  EXPECT_LT(fit, 1.7) << "Yoshida and Hosoda, Table III: 0.35-1.7 %";
   EXPECT_LT(fit, 0.5 * table4);
 }
 

@@ -58,7 +58,7 @@ TEST_F(CliRenderTest, DropMassVideoDecodesWithDurationTimesFpsFrames) {
   expect_exactly(dir, {"v.mp4"});
 }
 
-// The PAM leg (issue 27, item 5) renders with no code of its own: its eight muscles drawn
+// The PAM leg renders with no code of its own: its eight muscles drawn
 // as the arm's two, its own camera
 TEST_F(CliRenderTest, TheLegsLandingRendersFromItsOwnCamera) {
   const fs::path dir = fresh_dir("render_leg");

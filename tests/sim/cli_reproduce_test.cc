@@ -1,5 +1,5 @@
 // cli_reproduce_test.cc: outputs that can be traced and reproduced, and a command line that
-// can be scripted (issue 15): a run's folder records what made it and `run --from` rebuilds
+// can be scripted: a run's folder records what made it and `run --from` rebuilds
 // it byte for byte; `replay` runs a sweep's trial again and equals its stored row; an earlier
 // run's outputs are not replaced without --force; the default folder names the overrides;
 // --no-plot, and a run without gnuplot on PATH, still succeed.

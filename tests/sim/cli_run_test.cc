@@ -108,7 +108,7 @@ void expect_refused_writing_nothing(const std::string& scenario, const std::stri
   }
 }
 
-// The hardware's error sources (issue 25): a negative creep constant, a tolerance over 100 %,
+// The hardware's error sources: a negative creep constant, a tolerance over 100 %,
 // a line diameter of zero, a loss factor of 1, a bladder relaxing in negative time.
 TEST(CliRunTest, BadHardwareKeysAreOneLineExitTwoAndWriteNothing) {
   expect_refused_writing_nothing("drop_mass.toml", "run_bad_hardware", {
@@ -126,8 +126,8 @@ TEST(CliRunTest, BadHardwareKeysAreOneLineExitTwoAndWriteNothing) {
        "muscles.agonist.plant.bladder.relaxation_times_s: [0] must be in (0, inf) s, got -1"}});
 }
 
-// The reflex kinds of issue 27: an Ib threshold below zero, a reflex pair naming a muscle
-// twice.
+// The tension (Ib) reflex and reflex pairs: an Ib threshold below zero, a reflex pair naming
+// a muscle twice.
 TEST(CliRunTest, BadTensionReflexKeysAreOneLineExitTwoAndWriteNothing) {
   expect_refused_writing_nothing("drop_mass_heavy_ia_ib.toml", "run_bad_tension_reflex", {
       {"--set reflex.ib.f_thr_N=-1", "reflex.ib.f_thr_N must be in (0, inf) N, got -1"},
@@ -135,8 +135,8 @@ TEST(CliRunTest, BadTensionReflexKeysAreOneLineExitTwoAndWriteNothing) {
 }
 
 // A run that fails after its first output (here a full disk: a file-size limit with SIGXFSZ
-// ignored) leaves the folder of an earlier run exactly as it was, and nothing beside it; the
-// CSV and JSON used to be replaced before the failure, a mix of two runs (issue 14 item 5).
+// ignored) leaves the folder of an earlier run exactly as it was, and nothing beside it: its
+// CSV and JSON are not replaced before the failure, which would leave a mix of two runs.
 TEST(CliRunTest, ARunThatFailsHalfWayLeavesTheEarlierOutputsAsTheyWere) {
   const fs::path dir = fresh_dir("run_staged");
   const fs::path out = dir / "out";

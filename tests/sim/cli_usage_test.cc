@@ -29,13 +29,13 @@ TEST(CliUsageTest, UsageErrorsExitTwoInOneLineWithTheCommandsThereAre) {
            {"run scenarios/drop_mass.toml --trials x", "--trials"},
            {"run scenarios/drop_mass.toml --trials 2.5", "--trials must be a whole number"},
            {"sweep scenarios/sweep_smoke.toml --threads two", "--threads must be a whole number"},
-           // thread counts are bounded (issue 14 item 3): 0 means all cores
+           // thread counts are bounded: 0 means all cores
            {"run scenarios/drop_mass.toml --threads 100000", "--threads must be 1 to 1024"},
            {"sweep scenarios/sweep_smoke.toml --threads 5000 --out /tmp/pamsim_no_sweep",
             "--threads must be 1 to 1024"},
            {"tune scenarios/tune_reflex.toml --threads -3", "--threads must be 1 to 1024"},
            {"validate reaching --threads 2000", "--threads must be 1 to 1024"},
-           // a negative seed is refused, not wrapped to 2^64 - 1 (issue 14 item 11)
+           // a negative seed is refused, not wrapped to 2^64 - 1
            {"tensile --params models/pams/table4_agonist.toml --seed -1 -o /tmp/pamsim_no.csv",
             "--seed"},
            {"validate reaching --seed -5", "--seed"}}) {
@@ -70,9 +70,9 @@ TEST(CliUsageTest, TheVersionIsTheSameInTheProgramTheCitationAndTheChangelog) {
   EXPECT_NE(pamsim_test::read_file(source + "/LICENSE").find("MIT License"), std::string::npos);
 }
 
-// Values echoed in messages are printed as read but shortened and escaped (a NUL used to end
-// the message, a multi-megabyte value was printed whole), and a missing file names the key
-// that points at it (issue 14 item 11).
+// Values echoed in messages are printed as read but shortened and escaped (a NUL must not end
+// the message, nor a multi-megabyte value be printed whole), and a missing file names the key
+// that points at it.
 TEST(CliUsageTest, MessagesEscapeAndShortenEchoedValuesAndNameTheKeyOfAMissingFile) {
   const auto dir = pamsim_test::fresh_dir("usage_echo");
   const std::string base = "base = \"" + std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml\"\n";

@@ -57,7 +57,7 @@ TEST(CliValidateTest, LengthEstimationWritesEveryPamLawAndWeight) {
     EXPECT_TRUE(fs::exists(out / "fits" / ("pam_" + std::string(pam) + "_eq4.toml"))) << pam;
   }
   // docs/validation.md's Table III, Eq. (3) at 5 kg, to its digits: a change to the PAMs'
-  // physics (PAMs A-C as Table I builds them, issue 25) shows here, and the page's block is
+  // physics (PAMs A-C as Table I builds them) shows here, and the page's block is
   // made again with it
   const std::map<std::string, double> readme_rmse = {{"A", 0.438}, {"B", 0.459}, {"C", 0.458},
                                                      {"D", 0.475}};

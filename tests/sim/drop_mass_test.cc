@@ -162,7 +162,7 @@ std::vector<std::string> edited_plants(const std::string& tag,
 // After the drop the passive arm comes to rest. With the shipped tanh friction it creeps to
 // the friction-free equilibrium (the plants without their [friction] tables); with
 // Maxwell-slip braid friction (travels 0.1 and 0.5 mm) it stops within the friction band,
-// 0.2 deg short of it (issue 25, item 2). The drop itself, gross sliding over the same
+// 0.2 deg short of it. The drop itself, gross sliding over the same
 // loop, hardly changes.
 TEST(DropMassTest, MaxwellSlipFrictionStopsTheArmWhereTanhFrictionCreeps) {
   const std::vector<std::string> slip_plants = edited_plants("slip", [](std::string* plant) {

@@ -129,7 +129,7 @@ TEST(ExperimentTest, PulleyTrialsAreTheSameOnOneAndTwoThreads) {
 
 // --- a physical plant ------------------------------------------------------------------
 
-// The pulley's PAM as the AVBDL law of seeds/003 (models/pams/plant_agonist.toml) while the
+// The pulley's PAM as the AVBDL law of Pipan et al. (models/pams/plant_agonist.toml) while the
 // estimator still inverts Table IV's spring law: the line solved for the plant holds the
 // weight at rest, and the estimator is now wrong by what separates the two laws.
 TEST(ExperimentTest, PulleyWithAPhysicalPlantHoldsItsWeightAndShowsTheEstimatorsError) {

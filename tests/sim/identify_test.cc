@@ -1,9 +1,9 @@
-// identify_test.cc: `pamsim identify` (issue 26) on a recording made by pamsim from an arm
-// whose antagonist's wall is 2.7 mm where the model says 3.0: the wall is recovered within
-// its standard error (and the agonist's from a tensile test alone), a parameter the recording cannot see (the held ball's mass) is reported
-// as not determined, the held-out recording is predicted, a stopped run resumed gives the
-// uninterrupted run's result bit for bit, and every bad identification file is one line,
-// exit 2, no database.
+// identify_test.cc: `pamsim identify` on a recording made by pamsim from an arm whose
+// antagonist's wall is 2.7 mm where the model says 3.0: the wall is recovered within its
+// standard error (and the agonist's from a tensile test alone), a parameter the recording
+// cannot see (the held ball's mass) is reported as not determined, the held-out recording is
+// predicted, a stopped run resumed gives the uninterrupted run's result bit for bit, and
+// every bad identification file is one line, exit 2, no database.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,10 +1,10 @@
-// leg_test.cc: the PAM leg (models/leg_pam.xml, issue 27) through its scenarios, with no
-// leg-specific code: each line starts its muscle 2 mm past the plant's free length at 0.4 MPa
-// (pamsim calibrate --pose: pose_calibration_test.cc), the leg falls 100 mm, lands (the floor's push peaks above
-// its weight), bounces and stands crouched; dropped from higher it collapses further; the
-// start keys place it; it hops periodically under its feedforward pattern, with and without
-// its reflexes; each tendon crosses the joints its muscle says it spans (RF and GAS two);
-// and its scenarios refuse bad input by key.
+// leg_test.cc: the PAM leg (models/leg_pam.xml) through its scenarios, with no leg-specific
+// code: each line starts its muscle 2 mm past the plant's free length at 0.4 MPa (`pamsim
+// calibrate --pose`: pose_calibration_test.cc), the leg falls 100 mm, lands (the floor's push
+// peaks above its weight), bounces and stands crouched; dropped from higher it collapses
+// further; the start keys place it; it hops periodically under its feedforward pattern, with
+// and without its reflexes; each tendon crosses the joints its muscle says it spans (RF and
+// GAS two); and its scenarios refuse bad input by key.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -116,7 +116,7 @@ TEST(LegTest, CalibrationPlacesTheOtherJointsAtTheirStartKeys) {
   EXPECT_NE(crouched, straight);
 }
 
-// Issue 27 asks that Ia + Ib collapse the knee less than no reflex at the shipped height.
+// Ia + Ib might be expected to collapse the knee less than no reflex at the shipped height.
 // Behind the shipped ITV1000-class regulator (Mowgli 2's kind of valve: proportional
 // pressure-control valves on the robot) that is physically false: the impact is over about
 // 25 ms after touchdown, inside the regulator's 10 ms dead time and 20 ms lag, so on every

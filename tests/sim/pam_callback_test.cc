@@ -239,7 +239,7 @@ struct LoadedSlider {
 // The arm's braid friction as Maxwell-slip sticks: approached from a longer and from a
 // shorter length, the muscle stops on either side of the friction-free equilibrium, the
 // friction band over the law's stiffness apart; the smooth tanh(v / v_s) form creeps to the
-// same length from both sides (issue 25, item 2).
+// same length from both sides.
 TEST(PamCallbackSlipTest, MaxwellSlipStopsWithinTheFrictionBandAndSmoothFrictionCreeps) {
   install_pam_actuator_callback();
   LoadedSlider slip(FrictionModel::kMaxwellSlip), smooth(FrictionModel::kSmooth);
@@ -287,7 +287,7 @@ TEST(PamCallbackSlipTest, AMaxwellSlipPlantNeedsRoomForItsState) {
 
 // An extensible line in series with a linear spring law (Eq. (3) with a0 only): two springs in
 // series, F = k (x0 - l_n) / (1 + k c) with c = L0 / (E A), and the PAM's end where the
-// stretched line leaves it, x0 - c F (issue 25, item 3).
+// stretched line leaves it, x0 - c F.
 TEST(PamCallbackLineTest, AnExtensibleLineIsASpringInSeriesWithTheMuscle) {
   MjModelPtr m = load_inline(kSliderXml, "slider.xml");
   ASSERT_TRUE(m);

@@ -58,7 +58,7 @@ double pull_and_commit(const mjModel* m, mjData* d, double length) {
 
 // Held at L1, then stepped to L2 and held: the pull is the static law at L2 plus
 // sum g_i ((1 - e_i) tau_i / dt) dF_e e_i^n after n further steps, dF_e the bladder's
-// relaxed force change dW/dL(L2) - dW/dL(L1) (seeds/003 Eq. (23)-(25)).
+// relaxed force change dW/dL(L2) - dW/dL(L1) (Pipan et al., Eq. (23)-(25)).
 TEST(PamRelaxationTest, ALengthStepRelaxesAsThePronySeriesSays) {
   install_pam_actuator_callback();
   const AvbdlParams plant = relaxing_plant();

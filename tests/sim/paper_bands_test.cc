@@ -1,7 +1,8 @@
-// paper_bands_test.cc: Table III and Table V of the paper (seeds/000) against the bands the
-// shipped protocols give over their brackets (src/sim/validate/protocol_bands.h), each cell
-// pinned to the paper by its band, with why it lies where it does. Ten rigs each, the
-// protocols cut to the cells named (every band of docs/validation.md is 50 rigs of the whole table).
+// paper_bands_test.cc: Table III and Table V of the paper (Yoshida and Hosoda) against the
+// bands the shipped protocols give over their brackets (src/sim/validate/protocol_bands.h),
+// each cell pinned to the paper by its band, with why it lies where it does. Ten rigs each,
+// the protocols cut to the cells named (every band of docs/validation.md is 50 rigs of the
+// whole table).
 //   Table III, PAM-C, Eq. (3), 5 kg: the paper's RMSE 0.683 % lies inside the band: PAM-C's
 //     thin 4 mm tube makes its latex wall (0.79-1.59 mm, stock walls) matter.
 //   Table III, PAM-A, Eq. (3), 5 kg: the paper's 0.861 % lies above the band: its floor is

@@ -211,7 +211,7 @@ TEST_F(PlotTest, UnwritableFolderThrowsAndLeavesNothing) {
 
 // A disk that fills while gnuplot writes the PNG, emulated by a file-size limit that gnuplot
 // inherits (SIGXFSZ ignored, so its writes fail with EFBIG): gnuplot exits 0 with half an
-// image, which used to be renamed into place as the plot (issue 14 item 1).
+// image, which must not be renamed into place as the plot.
 TEST_F(PlotTest, APngCutShortByAFullDiskIsAnErrorAndLeavesNothing) {
   const std::string png = path("angle.png");
   struct rlimit old {};

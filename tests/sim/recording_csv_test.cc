@@ -1,4 +1,4 @@
-// recording_csv_test.cc: a lab's recording as `pamsim identify` reads it (issue 26): any
+// recording_csv_test.cc: a lab's recording as `pamsim identify` reads it: any
 // sampling rate, empty cells as gaps, comments; and every malformed file refused in one line
 // naming the file (and the line).
 #include <gtest/gtest.h>

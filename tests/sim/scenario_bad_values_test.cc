@@ -73,7 +73,7 @@ std::vector<BadOverride> bad_core_overrides() {
 // the instruments as hardware
 std::vector<BadOverride> bad_instrument_overrides() {
   return {
-      // the gauge as hardware (issue 25): one key each
+      // the gauge as hardware: one key each
       {"sensors.gauge.model=\"strain\"", "sensors.gauge.model is \"strain\", allowed \"linear\" | \"bridge\""},
       {"sensors.gauge.tolerance_pct=101", "sensors.gauge.tolerance_pct must be"},
       {"sensors.gauge.excitation_V=0", "sensors.gauge.excitation_V must be"},
@@ -90,7 +90,7 @@ std::vector<BadOverride> bad_instrument_overrides() {
       {"sensors.gauge.calibration.max_N=0", "sensors.gauge.calibration.max_N must be"},
       {"sensors.gauge.calibration.steps=0", "sensors.gauge.calibration.steps must be"},
       {"sensors.gauge.calibration.hold_s=-2", "sensors.gauge.calibration.hold_s must be"},
-      // the pressure sensor, fiber sensor and encoder as hardware (issue 25, item 4)
+      // the pressure sensor, fiber sensor and encoder as hardware
       {"sensors.pressure.model=\"pse530\"", "sensors.pressure.model is \"pse530\", allowed \"ideal\" | \"pse540\""},
       {"sensors.pressure.bias_mean_MPa=nan", "sensors.pressure.bias_mean_MPa must be"},
       {"sensors.pressure.bias_stddev_MPa=-0.001", "sensors.pressure.bias_stddev_MPa must be"},
@@ -118,7 +118,7 @@ std::vector<BadOverride> bad_instrument_overrides() {
 // the time step's limits, the plant, the model files, misspelt keys
 std::vector<BadOverride> bad_file_overrides() {
   return {
-      // a time step that makes an uncountable or endless trial (issue 14)
+      // a time step that makes an uncountable or endless trial
       {"sim.timestep_s=1e-308", "sim.timestep_s of 1e-308 s makes"},
       {"sim.timestep_s=1e-9", "more than sim.max_steps = 10000000"},
       {"sim.max_steps=0", "sim.max_steps"},

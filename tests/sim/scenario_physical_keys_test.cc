@@ -1,5 +1,5 @@
-// scenario_physical_keys_test.cc: the plant and pneumatics files' fields as scenario keys
-// (issue 26, item 1): muscles.<m>.plant.<table>.<field> and pneumatics.<table>.<field>, from
+// scenario_physical_keys_test.cc: the plant and pneumatics files' fields as scenario keys:
+// muscles.<m>.plant.<table>.<field> and pneumatics.<table>.<field>, from
 // --set or from a table in the scenario, change that field of the file and nothing else, are
 // validated as the file's own field (refused by their scenario key), a plant's field makes
 // another trial model, and both survive the run folder's resolved scenario.toml.

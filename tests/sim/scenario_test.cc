@@ -99,7 +99,7 @@ TEST(ScenarioTest, RegulatorKeysOverrideThePneumaticsFile) {
   EXPECT_EQ(error_of({"valve.dead_time_ms=5", "valve.model=\"regulator\""}, ideal), "");
 }
 
-// The loop's feedback path and restrictions (issue 25, item 5) as scenario keys: a point of
+// The loop's feedback path and restrictions as scenario keys: a point of
 // the bracket over the pneumatics file's [regulator]; absent, the file's model stands.
 TEST(ScenarioTest, RegulatorLoopKeysOverrideThePneumaticsFile) {
   const Scenario base = load_scenario(kScenario);

@@ -1,4 +1,4 @@
-// sweep_randomize_test.cc: [[randomize]] in sweep files (issue 26, item 2): the three
+// sweep_randomize_test.cc: [[randomize]] in sweep files: the three
 // distributions against their moments (the truncated normal against its closed-form mean),
 // draws that depend on the seed index and randomize_seed alone (the same arms at every point,
 // bit-identical on 1 or 2 threads and in two shards), the drawn values stored with each trial

@@ -1,7 +1,7 @@
-// table1_plants_test.cc: the arm's muscles as seeds/000 Table I builds them (issue 25, item
-// 1; models/pams/table1/): the shipped wall and braid angle are what `pamsim identify
-// examples/table1/identify_table1.toml` gives from Table IV's laws, the example's tensile rows are
-// Table IV's law (its refit gives Table IV back), and the committed calibration is what
+// table1_plants_test.cc: the arm's muscles as Yoshida and Hosoda's Table I builds them
+// (models/pams/table1/): the shipped wall and braid angle are what `pamsim identify
+// examples/table1/identify_table1.toml` gives from Table IV's laws, the example's tensile
+// rows are Table IV's law (its refit gives Table IV back), and the committed calibration is what
 // `pamsim calibrate` writes for these plants. The estimators' fits are checked with the other
 // plants' (cli_plant_test.cc). The identification starts from the example's own 0.5 mm and
 // 25 deg (its scenario's change of the plant file), not the file's identified values.

@@ -1,5 +1,5 @@
-// tension_reflex_scenario_test.cc: the tension (Ib) reflex through scenarios (issue 27,
-// item 1): on the paper's drop an Ib reflex sized above its tension never fires and the
+// tension_reflex_scenario_test.cc: the tension (Ib) reflex through scenarios: on the paper's
+// drop an Ib reflex sized above its tension never fires and the
 // trial is bit for bit the Ia trial; on the heavier drop Ia + Ib keeps the agonist's peak
 // pull below Ia alone's and keeps the mass, Ib alone unloads it further and drops further;
 // the peak-tension metric bounds every logged pull; the kinds' keys are their own (an Ia

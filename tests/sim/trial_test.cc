@@ -80,7 +80,7 @@ TEST(TrialTest, PassiveDropLandsDropsAndSettlesHoldingTheMass) {
 // Why that tolerance: Euler in MuJoCo and the zero-order hold of the PAM length in the
 // pressure ODE are first order in dt, so the 1 ms error is about the 1 ms - 0.5 ms
 // difference; 0.25 deg is 3 % of the ~9 deg drop and a tenth of the reflex effects the
-// scenario is used to compare (1-4 deg, DESIGN.md).
+// scenario is used to compare (1-4 deg in a prototype of the arm).
 TEST(TrialTest, ConvergesAsTheTimestepHalves) {
   const TrialResult coarse = run_passive({"sim.duration_s=2.0"});
   const TrialResult fine = run_passive({"sim.duration_s=2.0", "sim.timestep_s=0.0005"});

@@ -1,4 +1,4 @@
-// tune_randomize_test.cc: robust tuning (issue 26, item 2): a tuning file's [[randomize]]
+// tune_randomize_test.cc: robust tuning: a tuning file's [[randomize]]
 // tables give each evaluation's k-th seed its own drawn arm, the same arm at every point the
 // optimiser tries (so points differ by their parameters, not by their draws); the draws are
 // part of the stored definition and read back from it; a drawn key that is also a parameter,

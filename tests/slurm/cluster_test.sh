@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# cluster_test.sh PAMSIM: the cluster path against a real Slurm (issue 29, item 3). Starts a
+# cluster_test.sh PAMSIM: the cluster path against a real Slurm. Starts a
 # one-node cluster of its own under a temp folder (munged, slurmctld, slurmd from Debian's
 # munge and slurm-wlm, on free loopback ports, with a config that touches nothing of the
 # machine's), then as a cluster user would:

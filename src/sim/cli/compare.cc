@@ -153,8 +153,8 @@ std::string folder_name(const std::string& dir) {
   return p.filename().string();
 }
 
-// renders/compare_<A>_vs_<B>.png, like every command's default output under renders/ (it
-// used to be compare.png in DIR_A's parent folder, which a second comparison overwrote)
+// renders/compare_<A>_vs_<B>.png, like every command's default output under renders/ (named
+// by both folders, so that a second comparison does not overwrite the first)
 std::string default_out(const std::string& dir_a, const std::string& dir_b) {
   return "renders/compare_" + folder_name(dir_a) + "_vs_" + folder_name(dir_b) + ".png";
 }

@@ -1,6 +1,6 @@
 // estimate.cc: `pamsim estimate --params FILE --pressure-MPa P --force-N F [--json]`,
 // length estimation from pressure and force: d by inverting Eq. (3)-(5), l = l_n + d
-// with l_n from Eq. (2) (Eq. (1) of seeds/000).
+// with l_n from Eq. (2) (Eq. (1) of Yoshida and Hosoda).
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 

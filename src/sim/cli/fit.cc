@@ -1,8 +1,8 @@
 // fit.cc: `pamsim fit --model eq3|eq4|eq5 TENSILE.csv [--json] [-o PARAMS.toml]
-// [--sensors-from PARAMS.toml]`, the least-squares identification of seeds/000 Sec. II-B on
-// a tensile CSV file. --sensors-from carries a muscle's strain-gauge calibration (Eq. (8))
-// and geometry, measured apart from the tensile test, into the written file, so that it is
-// an estimator a scenario can use.
+// [--sensors-from PARAMS.toml]`, the least-squares identification of Yoshida and Hosoda,
+// Sec. II-B, on a tensile CSV file. --sensors-from carries a muscle's strain-gauge
+// calibration (Eq. (8)) and geometry, measured apart from the tensile test, into the written
+// file, so that it is an estimator a scenario can use.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 

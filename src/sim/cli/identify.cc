@@ -1,5 +1,5 @@
-// identify.cc: `pamsim identify FILE.toml [--db FILE] [--out DIR] [--threads N] [--resume]`
-// (issue 26): fits an identification file's parameters to its recordings
+// identify.cc: `pamsim identify FILE.toml [--db FILE] [--out DIR] [--threads N] [--resume]`:
+// fits an identification file's parameters to its recordings
 // (src/sim/optimize/identify.h), every simulated point stored in SQLite as it is computed,
 // then writes identified.toml, identify.csv, identify_fits.csv and identify.md. Everything is
 // validated before the database is created; a killed run keeps every point; --resume replays

@@ -1,8 +1,9 @@
 // tensile.cc: `pamsim tensile --params FILE | --plant FILE [--set table.field=value ...] ...
-// -o FILE.csv`, the virtual static tensile test of seeds/000 Sec. II-B on a PAM parameter
-// file's spring law or on a physical plant (the lab's way to the estimator: test the muscle,
-// then `pamsim fit`). --set changes a plant file's fields in its own units, each validated as
-// the file's own (the scenario's muscles.<m>.plant.<table>.<field> does the same).
+// -o FILE.csv`, the virtual static tensile test of Yoshida and Hosoda, Sec. II-B, on a PAM
+// parameter file's spring law or on a physical plant (the lab's way to the estimator: test
+// the muscle, then `pamsim fit`). --set changes a plant file's fields in its own units, each
+// validated as the file's own (the scenario's muscles.<m>.plant.<table>.<field> does the
+// same).
 #include <CLI/CLI.hpp>
 
 #include <cmath>

@@ -1,9 +1,10 @@
 // validate.cc: `pamsim validate length-estimation [FILE] [--out DIR] [--pams A,B]` and
 // `pamsim validate reaching [FILE] [--out DIR]`, both with `--set key=value`, `--seed N`
-// and `--threads N`: the papers' validation experiments (seeds/000 Table III and Table V) as
-// protocols over data files (scenarios/validate_*.toml; src/sim/validate/). Inputs are all
-// read and checked before any trial runs; the tables are written last, each atomically.
-// With `--budget`, each the protocol's error budget instead (validate/protocol_budgets.h).
+// and `--threads N`: the papers' validation experiments (Yoshida and Hosoda, Table III and
+// Table V) as protocols over data files (scenarios/validate_*.toml; src/sim/validate/).
+// Inputs are all read and checked before any trial runs; the tables are written last, each
+// atomically. With `--budget`, each the protocol's error budget instead
+// (validate/protocol_budgets.h).
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>

@@ -1,7 +1,7 @@
 // muscle_binding.h: each PAM actuator's law and the place of its state, bound to its model
 // once and read by the force callback (pam_callback.h). The one table that says what a
 // muscle is to the physics: the spring law of Eq. (1)-(5) that its estimator inverts, the
-// plant's AVBDL law (seeds/003 Eq. (25) with friction, its bladder and relaxation: avbdl.h)
+// plant's AVBDL law (Pipan et al., Eq. (25), with friction, its bladder and relaxation: avbdl.h)
 // with its shape derived once here, the line, and where in d->userdata the trial keeps the
 // muscle's chamber pressure and history. A plant feature is a field of AvbdlParams and is
 // bound with it; nothing is packed into the model's actuator_user slots.

@@ -21,7 +21,7 @@ namespace {
 constexpr int kLineSolveBits = 40;          // the line's tension to ~1e-12 relative
 constexpr int kLineSolveIterations = 50;
 
-// The PAM's law as bound (muscle_binding.h): the plant's (seeds/003 Eq. (25) with friction;
+// The PAM's law as bound (muscle_binding.h): the plant's (Pipan et al., Eq. (25), with friction;
 // the slip state moved to the length asked for) or the spring law's (Eq. (1)-(5)); pull()
 // is the line's pull [N] >= 0 at pressure p with the line leaving the PAM at `taut` [m],
 // zero when slack, and grows with `taut`. A thread's own copy: its shape's memo and the

@@ -1,4 +1,4 @@
-// pam_callback.h: the MuJoCo binding of the PAM force law (Eq. (1)-(5); seeds/003 Eq. (25)).
+// pam_callback.h: the MuJoCo binding of the PAM force law (Eq. (1)-(5); Pipan et al., Eq. (25)).
 //
 // MuJoCo 2.2.2 has no plugins: each PAM is a `general` actuator on its tendon with
 // biastype="user"; the process-global mjcb_act_bias calls pam_actuator_force, a pure
@@ -27,7 +27,7 @@
 // friction's rate is then still the tendon's, not the muscle's (the line's stretch rate is
 // left out of it).
 // PAM length l = tendon length - line length. The spring law: d = l - l_n(p), Eq. (1)-(5);
-// AVBDL: seeds/003 Eq. (25) plus friction at the tendon's velocity. The force pulls only
+// AVBDL: Pipan et al.'s Eq. (25) plus friction at the tendon's velocity. The force pulls only
 // (the actuator force is -f, f >= 0) and is zero when the PAM is slack or unbound.
 #pragma once
 

@@ -39,14 +39,14 @@ struct MuscleSpec {
   std::string params_file;     // muscles.<name>.params
   PamParams pam;               // the law its estimator inverts, its gauge and geometry
   std::string plant_file;      // muscles.<name>.plant, or empty: the plant is pam's law
-  AvbdlParams plant;           // the physical muscle (seeds/003), when plant_file is set
+  AvbdlParams plant;           // the physical muscle (Pipan et al.), when plant_file is set
   std::string plant_changes;   // muscles.<name>.plant.<table>.<field> as TOML text, if any
   PressureSchedule command;    // muscles.<name>.command
   LineSource line = LineSource::kFixed;
   double line_length_m = 0.0;  // kFixed
   // The line's axial stiffness E A [N] (muscles.<m>.line_diameter_mm, line_modulus_MPa);
   // 0: inextensible. An extensible line's length above is its length at the start state,
-  // under the start's tension (issue 25, item 3).
+  // under the start's tension.
   double line_axial_stiffness_n = 0.0;
   // Its creep (muscles.<m>.line_creep, line_creep_time_s): one Kelvin-Voigt element on its
   // compliance, the long-term creep g per unit elastic stretch and its retardation time
@@ -88,7 +88,7 @@ struct BodyMassSpec {
 };
 
 // joints.<joint>.*: a joint's viscous damping and dry friction (MuJoCo's damping and
-// frictionloss) in place of the model's, e.g. a bearing's (issue 25, item 2). A hinge's
+// frictionloss) in place of the model's, e.g. a bearing's. A hinge's
 // keys are in N m s/rad and N m, a slide's in N s/m and N; `rotational` says which were
 // given. A value not given (NaN) keeps the model's.
 struct JointSpec {

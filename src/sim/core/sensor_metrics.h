@@ -1,7 +1,7 @@
 // sensor_metrics.h: the metric set "sensors": the extremes of every sensor the MJCF model
 // declares, over every physics step, so that an experiment measures what its model defines
 // (a touch sensor under a foot for the ground reaction force, a jointpos sensor for a knee's
-// collapse, a framepos sensor for a hop's height) without code of its own (issue 27).
+// collapse, a framepos sensor for a hop's height) without code of its own.
 //
 // For each named sensor (unnamed ones are skipped) and each of its components, in the
 // model's order: <name>[_<axis>]_min_<unit> and _max_<unit>, in the papers' units by the

@@ -242,8 +242,8 @@ void TrialRun::begin() {
 
 bool TrialRun::step() {
   if (ended()) return false;
-  // the controller's and the events' clock, as it always was (the schedules' edges fall
-  // where they fell); what is recorded reads time_at(step_)
+  // the controller's and the events' clock, step times the timestep (the schedules' edges
+  // fall on it); what is recorded reads time_at(step_), the exact decimal time
   const double t = step_ * sc_.timestep_s;
   // an event or the controller can end the trial before the step counts; a step that
   // diverges or fires an ending event counts

@@ -1,4 +1,4 @@
-// trial.h: one trial of any scenario, the co-simulation loop of DESIGN.md "One trial":
+// trial.h: one trial of any scenario, the co-simulation loop (docs/ARCHITECTURE.md, "One trial"):
 //   before each physics step: events due at this time fire (release a held body, add a
 //     payload, switch the controller, end the trial); held bodies are put back in place;
 //   mj_step1; at sim.control_hz: every muscle's sensors are sampled (sensing/sensing.h), the

@@ -1,13 +1,13 @@
-// recording_csv.h: a lab's recording of a trial, as `pamsim identify` reads it (issue 26):
-// a CSV file whose header names `time_s` and any of the columns `pamsim run` writes to
-// trajectory.csv (angle_deg, p_meas_<label>_MPa, force_meas_<label>_N, gauge_<label>_V, ...;
-// trial_log.h lists them), in that file's units. Any sampling rate, also uneven; an empty
-// cell is a sample that channel lacks (a gap, or a channel that started late). Lines starting
-// with '#' and blank lines are skipped.
-// Refused, naming the file and line: no `time_s` column, no other column, a column named twice, a row with
-// another number of cells than the header, a cell that is not a finite number ("nan", "inf",
-// text), a time that does not increase strictly, a time before 0, a channel with no samples,
-// fewer than two rows.
+// recording_csv.h: a lab's recording of a trial, as `pamsim identify` reads it: a CSV file
+// whose header names `time_s` and any of the columns `pamsim run` writes to trajectory.csv
+// (angle_deg, p_meas_<label>_MPa, force_meas_<label>_N, gauge_<label>_V, ...; trial_log.h
+// lists them), in that file's units. Any sampling rate, also uneven; an empty cell is a
+// sample that channel lacks (a gap, or a channel that started late). Lines starting with
+// '#' and blank lines are skipped.
+// Refused, naming the file and line: no `time_s` column, no other column, a column named
+// twice, a row with another number of cells than the header, a cell that is not a finite
+// number ("nan", "inf", text), a time that does not increase strictly, a time before 0, a
+// channel with no samples, fewer than two rows.
 #pragma once
 
 #include <string>

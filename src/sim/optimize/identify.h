@@ -1,4 +1,4 @@
-// identify.h: `pamsim identify` (issue 26): the parameters of an identification file fitted
+// identify.h: `pamsim identify`: the parameters of an identification file fitted
 // to its recordings, in two phases over the parameters' unit box: a global search by pagmo2's
 // CMA-ES (optimizer.h; `generations` of `population`), then a local least-squares polish from
 // its best point by Ceres Solver's Levenberg-Marquardt (bounds [0, 1], central-difference

@@ -1,4 +1,4 @@
-// identify_file.h: an identification file (`pamsim identify`, issue 26) as data: the base
+// identify_file.h: an identification file (`pamsim identify`) as data: the base
 // scenario, the parameters to identify (search_space.h: any scenario key, e.g. a plant's
 // field), the lab's recordings and how to search.
 //

@@ -1,6 +1,5 @@
-// identify_plan.h: `pamsim identify --plan` (issue 42, item 5): which of the file's
-// [[candidate]] experiments would most shrink the parameters' uncertainty, at the identified
-// point.
+// identify_plan.h: `pamsim identify --plan`: which of the file's [[candidate]] experiments
+// would most shrink the parameters' uncertainty, at the identified point.
 //
 // Each recording's (and candidate's) sensitivities dy/du, its channels' samples against the
 // parameters in the unit box, come from central differences of kDifferenceStep (one-sided at

@@ -1,5 +1,5 @@
-// identify_uncertainty.h: how sure `pamsim identify` is of its result (issue 42, items 1 and
-// 2), from the residuals and their Jacobian at the identified point (residual_statistics.h):
+// identify_uncertainty.h: how sure `pamsim identify` is of its result, from the residuals
+// and their Jacobian at the identified point (residual_statistics.h):
 //  - each parameter's standard error from the prewhitened HAC (sandwich) covariance, which
 //    holds for residuals correlated in time as a recording's are, its interval at the file's
 //    level (95 %: value(u +- 1.96 se_u)) through the parameter's scale (a log parameter's is

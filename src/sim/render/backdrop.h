@@ -1,12 +1,12 @@
 // backdrop.h: the video's plain backdrop (MuJoCo 2.2 has no background colour; without a
 // skybox it is black), a white wall square to the camera's view about kBackdropDistanceM
-// in front of it, hiding what lies beyond. Two forms that draw the same frames, but for the geom's own
-// shadow (a strip a few pixels high where a floor meets it; the quad casts none):
+// in front of it, hiding what lies beyond. Two forms that draw the same frames, but for the
+// geom's own shadow (a strip a few pixels high where a floor meets it; the quad casts none):
 //   quad  one flat, unlit quad drawn after mjr_render, depth-tested against the scene: one
 //         cheap pass over the pixels it covers
 //   geom  a box added to the scene before mjr_render: shaded like every geom, in the lit
 //         pass and again in each shadow-casting light's pass (with shadows on llvmpipe,
-//         about a fifth of the drop-mass video's time at 720p: issue 46)
+//         about a fifth of the drop-mass video's time at 720p)
 // The quad is used where it pays (shadows on: without them the geom costs one flat pass
 // too, and the quad's extra GL state costs llvmpipe shader compiles) and draws what the
 // geom would; the geom elsewhere: no shadows, a transparent geom blended over it, a mirror

@@ -26,7 +26,7 @@ class OsMesaGlContext : public GlContext {
       : width_(width),
         height_(height),
         color_buffer_(4 * static_cast<std::size_t>(width) * height) {
-    // RGBA, 24-bit depth, 8-bit stencil, 8-bit accumulation (DESIGN.md)
+    // RGBA, 24-bit depth, 8-bit stencil, 8-bit accumulation
     context_.reset(OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 8, nullptr));
     if (!context_) throw InputError("--backend osmesa: OSMesaCreateContextExt failed");
     make_current();

@@ -1,5 +1,5 @@
-// randomize.h: parameters drawn per trial, the [[randomize]] tables of a sweep or tuning file
-// (issue 26, item 2): "does the tuned reflex keep the mass if the braid's friction is 30 %
+// randomize.h: parameters drawn per trial, the [[randomize]] tables of a sweep or tuning file,
+// for questions such as "does the tuned reflex keep the mass if the braid's friction is 30 %
 // higher and the wall 10 % thinner?". Each table names a scenario key (any numeric key: a
 // plant's or the pneumatics file's field, a body's mass, a joint's loss, ...) and how it is
 // drawn:

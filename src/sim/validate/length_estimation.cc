@@ -90,7 +90,8 @@ double reachable_mm(const AvbdlParams& plant, const TensileTestOptions& test) {
   return reach;
 }
 
-// The static tests and their fits (seeds/000 Sec. II-B), each fit as a PAM file in fits_dir.
+// The static tests and their fits (Yoshida and Hosoda, Sec. II-B), each fit as a PAM file in
+// fits_dir.
 void run_tensile_tests_and_fits(const LengthValidationSpec& spec,
                                 const ValidationOptions& options, const std::string& fits_dir,
                                 LengthValidationResult* result) {

@@ -1,9 +1,10 @@
-// length_estimation.h: the papers' length-estimation validation (seeds/000 Sec. II-B, III-B,
-// Table III) as a protocol over data. For each virtual PAM: the static tensile test on its
-// plant (pam_actuator/tensile_test.h), the least-squares fits of Eq. (3), (4) and (5)
-// (identification.h), then the dynamic test on the pulley rig, one trial per fitted law and
-// weight, the length estimated by that law against the rig's true length. The protocol is
-// a file (scenarios/validate_length_estimation.toml); its keys, paths relative to it:
+// length_estimation.h: the papers' length-estimation validation (Yoshida and Hosoda,
+// Sec. II-B, III-B, Table III) as a protocol over data. For each virtual PAM: the static
+// tensile test on its plant (pam_actuator/tensile_test.h), the least-squares fits of Eq. (3),
+// (4) and (5) (identification.h), then the dynamic test on the pulley rig, one trial per
+// fitted law and weight, the length estimated by that law against the rig's true length.
+// The protocol is a file (scenarios/validate_length_estimation.toml); its keys, paths
+// relative to it:
 //   rig                 the dynamic test's scenario (the pulley rig), required
 //   overrides           scenario overrides for every dynamic trial ("key=value" strings)
 //   laws                ["eq3", "eq4", "eq5"] or a subset

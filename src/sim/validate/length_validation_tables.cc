@@ -23,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// "3" for eq3: the law's equation number in seeds/000
+// "3" for eq3: the law's equation number in Yoshida and Hosoda
 std::string equation_number(SpringLaw law) { return std::string(to_string(law)).substr(2); }
 
 // a Markdown table's header: the model column, then one per PAM

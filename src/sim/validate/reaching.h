@@ -1,7 +1,7 @@
-// reaching.h: the papers' reaching-task validation (seeds/000 Sec. II-C, III-C, IV-B, Table V,
-// Fig. 7): the arm's reaching scenario repeated over seeds; the model-based length estimate
-// (Eq. (9)-(10)) and the fiber sensor against the encoder, per muscle, over a window (the
-// ramps) and before / after the muscle's slack episode. The protocol is a file
+// reaching.h: the papers' reaching-task validation (Yoshida and Hosoda, Sec. II-C, III-C,
+// IV-B, Table V, Fig. 7): the arm's reaching scenario repeated over seeds; the model-based
+// length estimate (Eq. (9)-(10)) and the fiber sensor against the encoder, per muscle, over
+// a window (the ramps) and before / after the muscle's slack episode. The protocol is a file
 // (scenarios/validate_reaching.toml); its keys, paths relative to it:
 //   scenario      the reaching scenario, required (per muscle: length_<m>_mm, the encoder;
 //                 length_est_<m>_mm; fiber_rate_<m>_mm_s; force_<m>_N, the line's tension)
