@@ -180,8 +180,7 @@ class PyTrial {
     out["force_N"] = scaled(o.force_n, 1.0);
     out["length_mm"] = scaled(o.length_m, 1e3);
     out["length_est_mm"] = scaled(o.length_est_m, 1e3);
-    std::vector<bool> active(o.reflex_active.begin(), o.reflex_active.end());
-    out["reflex_active"] = active;
+    out["reflex_active"] = windows_open(o, "reflex_");
     out["measured"] = measured(o);
     return out;
   }
@@ -227,6 +226,17 @@ class PyTrial {
   }
 
  private:
+  // whether each muscle's window in the controller's channel `name` is open (all closed
+  // when its kind has no such channel): a reflex's "reflex_", its stretch (Ia) windows
+  static std::vector<bool> windows_open(const TrialObservation& o, const std::string& name) {
+    std::vector<bool> open(o.pressure_pa.size(), false);
+    for (std::size_t k = 0; k < o.channel_names.size(); ++k) {
+      if (o.channel_names[k] != name) continue;
+      for (std::size_t i = 0; i < open.size(); ++i) open[i] = o.channels[k][i] != 0.0;
+    }
+    return open;
+  }
+
   static Array scaled(const std::vector<double>& v, double factor) {
     Array a(static_cast<py::ssize_t>(v.size()));
     for (std::size_t i = 0; i < v.size(); ++i) a.mutable_at(static_cast<py::ssize_t>(i)) = v[i] * factor;

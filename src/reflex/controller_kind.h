@@ -59,11 +59,11 @@ class ControllerConfig {
   // none. The sensing applies it (SensingConfig::velocity_lowpass_hz): the scenario hands
   // it over, and validates it with the sensing.
   double velocity_lowpass_hz = SensingConfig{}.velocity_lowpass_hz;
-  // True: the log has the reflex_<m> columns, and a scenario without a drop lists the
-  // "reflex" metric set by default.
-  virtual bool has_reflexes() const { return false; }
-  // True: the log also has the tension_reflex_<m> columns (the Ib windows).
-  virtual bool has_tension_reflexes() const { return false; }
+  // What its controllers log per muscle at every tick beyond the commands (the log's columns,
+  // ControlOutput::channels in this order), and the events they record
+  // (Controller::event_times_s in this order).
+  virtual std::vector<ControllerChannel> channels() const { return {}; }
+  virtual std::vector<ControllerEvent> events() const { return {}; }
   // Appended to summary.json's "scenario" object, in this order.
   virtual std::vector<SummaryField> summary_fields() const { return {}; }
   // A new controller for one trial.

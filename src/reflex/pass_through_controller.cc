@@ -52,8 +52,6 @@ void PassThroughController::update(const ControlInput& in, ControlOutput* out) {
   for (std::size_t j = 0; j < readings.size(); ++j) {
     out->p_cmd_pa[j] = out_.p_cmd_pa[j];
     out->velocity_m_s[j] = out_.velocity_m_s[j];
-    out->reflex_active[j] = 0;
-    out->tension_reflex_active[j] = 0;
   }
 }
 

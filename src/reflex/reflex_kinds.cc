@@ -153,6 +153,14 @@ std::unique_ptr<Controller> StretchReflexScenarioConfig::make_controller(
   return std::make_unique<StretchReflexController>(bound(setup));
 }
 
+std::vector<ControllerChannel> StretchReflexScenarioConfig::channels() const {
+  return reflex_channels(tension);
+}
+
+std::vector<ControllerEvent> StretchReflexScenarioConfig::events() const {
+  return reflex_events(tension);
+}
+
 std::string StretchReflexScenarioConfig::embedded(const ControllerSetup& setup,
                                                   pamctl_config* config) const {
   const StretchReflexControllerConfig bound_config = bound(setup);

@@ -110,18 +110,34 @@ void embed_controller(const StretchReflexControllerConfig& config, pamctl_config
   }
 }
 
+std::vector<ControllerChannel> reflex_channels(bool tension) {
+  std::vector<ControllerChannel> channels = {
+      {"reflex_", "", "1 while the muscle's stretch (Ia) reflex window is open", true, ""}};
+  if (tension) {
+    channels.push_back({"tension_reflex_", "",
+                        "1 while the muscle's tension (Ib) reflex window is open", true, " Ib"});
+  }
+  return channels;
+}
+
+std::vector<ControllerEvent> reflex_events(bool tension) {
+  std::vector<ControllerEvent> events = {{"stretch_trigger", "a stretch (Ia) window opens"}};
+  if (tension) events.push_back({"tension_trigger", "a tension (Ib) window opens"});
+  return events;
+}
+
 StretchReflexController::StretchReflexController(const StretchReflexControllerConfig& config)
     : config_(validated(config)),
-      trigger_times_s_(config.muscle_count),
-      tension_trigger_times_s_(config.muscle_count) {
+      event_times_s_(reflex_events(config.tension).size(),
+                     std::vector<std::vector<double>>(config.muscle_count)) {
   embed_controller(config_, &embedded_);
   pamctl_reset(&embedded_, &state_);
 }
 
 void StretchReflexController::update(const ControlInput& in, ControlOutput* out) {
-  const std::size_t n = trigger_times_s_.size();
+  const std::size_t n = event_times_s_[kStretchTrigger].size();
   assert(in.readings && in.p_tp_pa && in.readings->size() == n && in.p_tp_pa->size() == n &&
-         out->p_cmd_pa.size() == n);
+         out->p_cmd_pa.size() == n && out->channels.size() == event_times_s_.size());
   // the estimates the sensing made (the embedded estimator's), then the embedded controller
   for (std::size_t j = 0; j < n; ++j) {
     const MuscleReading& r = (*in.readings)[j];
@@ -135,10 +151,11 @@ void StretchReflexController::update(const ControlInput& in, ControlOutput* out)
   for (std::size_t j = 0; j < n; ++j) {
     out->p_cmd_pa[j] = out_.p_cmd_pa[j];
     out->velocity_m_s[j] = out_.velocity_m_s[j];
-    out->reflex_active[j] = out_.ia_active[j] ? 1 : 0;
-    out->tension_reflex_active[j] = out_.ib_active[j] ? 1 : 0;
-    if (out_.ia_triggered[j]) trigger_times_s_[j].push_back(in.time_s);
-    if (out_.ib_triggered[j]) tension_trigger_times_s_[j].push_back(in.time_s);
+    out->channels[kStretchWindow][j] = out_.ia_active[j] ? 1.0 : 0.0;
+    if (out_.ia_triggered[j]) event_times_s_[kStretchTrigger][j].push_back(in.time_s);
+    if (!config_.tension) continue;
+    out->channels[kTensionWindow][j] = out_.ib_active[j] ? 1.0 : 0.0;
+    if (out_.ib_triggered[j]) event_times_s_[kTensionTrigger][j].push_back(in.time_s);
   }
 }
 
@@ -160,12 +177,12 @@ PairValues reflex_commands(const PairValues& p_tp_pa, const PairValues& dp_ia_pa
 }
 
 int StretchReflexController::trigger_count(int muscle) const {
-  return static_cast<int>(trigger_times_s_[muscle].size());
+  return static_cast<int>(event_times_s_[kStretchTrigger][muscle].size());
 }
 
 double StretchReflexController::first_trigger_time_s() const {
   double first = std::numeric_limits<double>::quiet_NaN();
-  for (const std::vector<double>& times : trigger_times_s_) {
+  for (const std::vector<double>& times : event_times_s_[kStretchTrigger]) {
     if (!times.empty() && !(times.front() >= first)) first = times.front();
   }
   return first;

@@ -109,8 +109,10 @@ class StretchReflexScenarioConfig final : public ControllerConfig {
 
   // The controller's configuration for a trial's muscles, pairs and control rate.
   StretchReflexControllerConfig bound(const ControllerSetup& setup) const;
-  bool has_reflexes() const override { return true; }
-  bool has_tension_reflexes() const override { return tension; }
+  // the windows: reflex_<m> (Ia; every reflex kind logs it), tension_reflex_<m> (Ib, with
+  // the tension reflexes); the triggers: stretch_trigger, and tension_trigger likewise
+  std::vector<ControllerChannel> channels() const override;
+  std::vector<ControllerEvent> events() const override;
   // reflex_enabled; with Ia reflex_sensor, v_thr_mm_s, k_MPa_s_per_mm; with Ib
   // ib_f_thr_N, ib_df_thr_N_s, ib_k_MPa_per_N
   std::vector<SummaryField> summary_fields() const override;
@@ -133,12 +135,23 @@ class StretchReflexController final : public Controller {
   // Validates the configuration (throws InputError).
   explicit StretchReflexController(const StretchReflexControllerConfig& config);
 
+  // the channels and events of reflex_channels() and reflex_events() for config.tension
+  static constexpr int kStretchWindow = 0;    // ControlOutput::channels: reflex_<m>
+  static constexpr int kTensionWindow = 1;    // tension_reflex_<m>, with the Ib reflexes
+  static constexpr int kStretchTrigger = 0;   // event_times_s()
+  static constexpr int kTensionTrigger = 1;
+
   void update(const ControlInput& in, ControlOutput* out) override;
-  const std::vector<std::vector<double>>* trigger_times_s() const override {
-    return &trigger_times_s_;
+  const std::vector<std::vector<std::vector<double>>>& event_times_s() const override {
+    return event_times_s_;
   }
-  const std::vector<std::vector<double>>* tension_trigger_times_s() const override {
-    return config_.tension ? &tension_trigger_times_s_ : nullptr;
+  // The stretch (Ia) reflexes' trigger times per muscle, and the tension (Ib) reflexes'
+  // (nullptr without them).
+  const std::vector<std::vector<double>>* trigger_times_s() const {
+    return &event_times_s_[kStretchTrigger];
+  }
+  const std::vector<std::vector<double>>* tension_trigger_times_s() const {
+    return config_.tension ? &event_times_s_[kTensionTrigger] : nullptr;
   }
 
   const StretchReflexControllerConfig& config() const { return config_; }
@@ -151,8 +164,13 @@ class StretchReflexController final : public Controller {
   pamctl_config embedded_{};            // its settings as the embedded controller holds them
   pamctl_state state_{};
   pamctl_output out_{};
-  std::vector<std::vector<double>> trigger_times_s_;
-  std::vector<std::vector<double>> tension_trigger_times_s_;
+  std::vector<std::vector<std::vector<double>>> event_times_s_;   // [event][muscle][k]
 };
+
+// What a reflex controller logs: its windows (reflex_<m>, and tension_reflex_<m> with
+// `tension`) and its triggers (stretch_trigger, tension_trigger), in the order of the
+// StretchReflexController's constants.
+std::vector<ControllerChannel> reflex_channels(bool tension);
+std::vector<ControllerEvent> reflex_events(bool tension);
 
 }  // namespace pamsim

@@ -31,6 +31,8 @@ using pamsim_test::kControlDt;
 using test::table_iv_agonist;
 using test::table_iv_antagonist;
 constexpr double kRampV_m_s = 0.150;   // the stretch of the ramps below
+// the log's channel of the stretch (Ia) windows in a reflex controller's output
+constexpr int kWindow = StretchReflexController::kStretchWindow;
 
 // Everything a harness is built from. Defaults: the falling-mass operating point (the arm at
 // -36 deg on the Table IV laws, as a prototype calibrated it), both muscles at 0.4 MPa and
@@ -115,10 +117,10 @@ struct Harness {
     std::vector<MuscleReading> readings(muscle_count());
     sensing.sample(truth(), &readings);
     ControlOutput out;
-    out.resize(muscle_count());
+    out.resize(muscle_count(), controller.config().tension ? 2 : 1);
     std::fill(out.p_cmd_pa.begin(), out.p_cmd_pa.end(), kNaN);
     std::fill(out.velocity_m_s.begin(), out.velocity_m_s.end(), kNaN);
-    std::fill(out.reflex_active.begin(), out.reflex_active.end(), 2);
+    for (std::vector<double>& channel : out.channels) std::fill(channel.begin(), channel.end(), 2.0);
     ControlInput in;
     in.time_s = time_s;
     in.enabled = enabled;
@@ -159,7 +161,7 @@ inline void run_ramp(Harness* h, bool enabled = true) {
 
 inline int active_ticks(const Harness& h, int muscle) {
   int n = 0;
-  for (const ControlOutput& o : h.outputs) n += o.reflex_active[muscle];
+  for (const ControlOutput& o : h.outputs) n += static_cast<int>(o.channels[kWindow][muscle]);
   return n;
 }
 

@@ -61,7 +61,7 @@ TEST(StretchReflexController, UnpairedMuscleGetsItsClampedScheduleAndNeverTrigge
     stretch_at(&h, j, 101, 2);
     const ControlOutput& out = h.tick();
     EXPECT_EQ(out.p_cmd_pa[2], std::clamp(h.rig.p_tp_pa[2], 0.0, 0.8e6)) << j;
-    EXPECT_EQ(out.reflex_active[2], 0) << j;
+    EXPECT_EQ(out.channels[kWindow][2], 0) << j;
   }
   EXPECT_EQ(h.controller.trigger_count(2), 0);
   EXPECT_TRUE((*h.controller.trigger_times_s())[2].empty());
@@ -90,7 +90,7 @@ TEST(StretchReflexController, TwoPairsAreIndependent) {
   for (const ControlOutput& o : h.outputs) {
     EXPECT_EQ(o.p_cmd_pa[1], 0.4e6);
     EXPECT_EQ(o.p_cmd_pa[3], 0.4e6);
-    EXPECT_EQ(o.reflex_active[1] + o.reflex_active[2] + o.reflex_active[3], 0);
+    EXPECT_EQ(o.channels[kWindow][1] + o.channels[kWindow][2] + o.channels[kWindow][3], 0);
   }
 }
 
@@ -129,7 +129,7 @@ TEST(StretchReflexController, AWindowRunsOutWhileTheControllerIsOff) {
   ASSERT_EQ(h.controller.trigger_count(0), 1);
   for (int j = 101; j < 140; ++j) {
     const int expected = (j < 105 || (j >= 110 && j <= 120)) ? 1 : 0;
-    EXPECT_EQ(h.outputs[j].reflex_active[0], expected) << "tick " << j;
+    EXPECT_EQ(h.outputs[j].channels[kWindow][0], expected) << "tick " << j;
   }
   EXPECT_EQ(h.outputs[107].p_cmd_pa[0], 0.4e6) << "off: the schedule";
 }
@@ -151,7 +151,7 @@ TEST(StretchReflexController, ZeroMinimumTensionLetsASlackLineTrigger) {
     in.readings = &readings;
     in.p_tp_pa = &p_tp;
     ControlOutput out;
-    out.resize(2);
+    out.resize(2, 1);
     controller.update(in, &out);
     EXPECT_EQ(controller.trigger_count(0), min_tension == 0.0 ? 1 : 0) << min_tension;
   }
@@ -162,7 +162,7 @@ TEST(StretchReflexController, TriggerTimesPerMuscleAndTheEarliest) {
   // 1.81 s (after its 0.2 s window and 0.5 s refractory period)
   Harness h(two_pairs());
   const Controller& as_controller = h.controller;
-  ASSERT_NE(as_controller.trigger_times_s(), nullptr);
+  ASSERT_EQ(as_controller.event_times_s().size(), 1u);   // stretch_trigger
   for (int j = 0; j < 200; ++j) {
     stretch_at(&h, j, 51, 1);
     stretch_at(&h, j, 101, 0);
@@ -172,7 +172,8 @@ TEST(StretchReflexController, TriggerTimesPerMuscleAndTheEarliest) {
       EXPECT_TRUE(std::isnan(h.controller.first_trigger_time_s()));
     }
   }
-  const std::vector<std::vector<double>>& times = *as_controller.trigger_times_s();
+  const std::vector<std::vector<double>>& times =
+      as_controller.event_times_s()[StretchReflexController::kStretchTrigger];
   ASSERT_EQ(times.size(), 4u);
   ASSERT_EQ(times[0].size(), 2u);
   EXPECT_NEAR(times[0][0], 1.01, 1e-9);

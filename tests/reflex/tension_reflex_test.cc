@@ -135,8 +135,8 @@ TEST(TensionReflexTest, ASilentTensionReflexLeavesTheStretchReflexsCommands) {
   std::vector<MuscleReading> readings(2);
   const std::vector<double> p_tp = {0.4e6, 0.4e6};
   ControlOutput out_a, out_b;
-  out_a.resize(2);
-  out_b.resize(2);
+  out_a.resize(2, 1);
+  out_b.resize(2, 2);
   for (int k = 0; k < 60; ++k) {
     readings[0].velocity_est_m_s = 0.15 * std::sin(0.3 * k);   // stretches past 70 mm/s
     readings[1].velocity_est_m_s = -0.1 * std::sin(0.3 * k);

@@ -35,7 +35,8 @@ class ConstantCommandController final : public Controller {
     for (std::size_t j = 0; j < in.readings->size(); ++j) {
       out->p_cmd_pa[j] = in.enabled ? pressure_pa_ : (*in.p_tp_pa)[j];
       out->velocity_m_s[j] = (*in.readings)[j].velocity_est_m_s;
-      out->reflex_active[j] = 0;
+      // its own channel: how far its command is above the schedule's [MPa]
+      out->channels[0][j] = units::pa_to_mpa(out->p_cmd_pa[j] - (*in.p_tp_pa)[j]);
     }
   }
 
@@ -51,6 +52,10 @@ class ConstantCommandConfig final : public ControllerConfig {
   }
   std::unique_ptr<Controller> make_controller(const ControllerSetup&) const override {
     return std::make_unique<ConstantCommandController>(pressure_pa);
+  }
+  // the log's column above_schedule_<m>_MPa, declared here and nowhere else
+  std::vector<ControllerChannel> channels() const override {
+    return {{"above_schedule_", "_MPa", "its command less the schedule's", false, ""}};
   }
 };
 
@@ -134,8 +139,11 @@ TEST(ControllerPlugin, AScenarioChoosesItAndItsCommandsDriveTheValves) {
   EXPECT_LT(b.at(last, b.column("p_anta_MPa")), 0.05);
   EXPECT_GT(a.at(last, a.column("p_anta_MPa")), 0.55);
   EXPECT_GT(std::fabs(b.at(last, b.column("angle_deg")) - a.at(last, a.column("angle_deg"))), 1.0);
-  // no reflex, no reflex columns
+  // no reflex, no reflex columns; its own channel, logged as it declares it
   EXPECT_FALSE(b.has_column("reflex_ago"));
+  EXPECT_FALSE(a.has_column("above_schedule_anta_MPa"));
+  EXPECT_NEAR(b.at(last, b.column("above_schedule_anta_MPa")), -0.6, 1e-9);
+  EXPECT_NEAR(b.at(0, b.column("above_schedule_ago_MPa")), -0.2, 1e-9);
 }
 
 TEST(ControllerPlugin, WithoutAnEmbeddedFormItIsNotExportedAndSaysSoInOneLine) {

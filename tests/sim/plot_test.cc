@@ -106,7 +106,7 @@ TEST_F(PlotTest, AngleBandIgnoresMissingValuesOfSomeTrials) {
 // A slide joint's log (the pulley rig): position_mm where a hinge logs angle_deg.
 Trajectory slide_trajectory(double offset_mm, std::size_t rows = 100) {
   Trajectory tr;
-  tr.columns = make_log_layout(false, {}, {"pam"}, false).columns;
+  tr.columns = make_log_layout(false, {}, {"pam"}).columns;
   tr.values.assign(rows * tr.columns.size(), 0.0);
   for (std::size_t r = 0; r < rows; ++r) {
     tr.values[r * tr.columns.size() + tr.column("time_s")] = 0.01 * static_cast<double>(r);

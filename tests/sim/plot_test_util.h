@@ -12,6 +12,7 @@
 #include <limits>
 #include <string>
 
+#include "reflex/stretch_reflex_controller.h"
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
 #include "sim/io/trajectory_csv.h"
@@ -23,7 +24,7 @@ namespace fs = std::filesystem;
 // a falling-mass trial shape: rest at -36 deg, impact at 1 s, damped swing, reflex windows
 inline Trajectory synthetic_trajectory(double offset_deg, std::size_t rows = 301) {
   Trajectory tr;
-  tr.columns = make_log_layout(true, {"ball"}, {"ago", "anta"}, true).columns;
+  tr.columns = make_log_layout(true, {"ball"}, {"ago", "anta"}, reflex_channels(false)).columns;
   tr.values.assign(rows * tr.columns.size(), 0.0);
   auto set = [&](std::size_t r, const char* name, double v) {
     tr.values[r * tr.columns.size() + tr.column(name)] = v;

@@ -29,7 +29,8 @@ TEST(ScenarioKeysTest, ShippedExperimentsLoad) {
   EXPECT_EQ(pulley.muscles[0].command.kind, ScheduleKind::kSine);
   EXPECT_DOUBLE_EQ(pulley.muscles[0].command.at(1.25), 0.8e6);
   EXPECT_EQ(pulley.controller_kind, "none");
-  EXPECT_FALSE(pulley.controller_has_reflexes());
+  EXPECT_TRUE(pulley.controller_channels().empty());
+  EXPECT_FALSE(pulley.controller_records("stretch_trigger"));
   const Scenario reaching = load_scenario(kScenarios + "reaching.toml");
   EXPECT_EQ(reaching.muscle("agonist")->label, "ago");
   EXPECT_DOUBLE_EQ(reaching.muscle("antagonist")->command.at(14.0), 0.2e6);

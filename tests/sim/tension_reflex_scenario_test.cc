@@ -110,7 +110,11 @@ class IbWatcher : public TrialObserver {
   double next_observation_time_s() const override { return 0.01 * shown; }
   void observe(const TrialSnapshot& snapshot) override {
     ++shown;
-    if (snapshot.tension_reflex_active && (*snapshot.tension_reflex_active)[0]) ++ib_open;
+    // the controller's channels: reflex_ (Ia windows), then tension_reflex_ (Ib windows)
+    if (snapshot.channel_values && snapshot.channel_values->size() == 2 &&
+        (*snapshot.channel_values)[1][0] != 0.0) {
+      ++ib_open;
+    }
   }
   int shown = 0, ib_open = 0;
 };

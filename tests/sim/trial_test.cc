@@ -130,7 +130,7 @@ class RecordingObserver : public TrialObserver {
   void observe(const TrialSnapshot& snapshot) override {
     times_s.push_back(snapshot.time_s);
     angles_deg.push_back(snapshot.joint_position);
-    any_reflex = any_reflex || (*snapshot.reflex_active)[0];
+    any_reflex = any_reflex || (*snapshot.channel_values)[0][0] != 0.0;   // reflex_ (Ia)
     first_trigger_s = snapshot.first_trigger_s;
   }
   std::vector<double> times_s;

@@ -109,7 +109,7 @@ class ReflexMetrics final : public MetricSet {
  public:
   explicit ReflexMetrics(const Scenario& sc) : impact_(event_index(sc, "impact")) {}
   void finish(const FinishedTrial& r, std::vector<Metric>* out) const override {
-    const auto* triggers = r.trigger_times_s;
+    const auto* triggers = r.controller_event("stretch_trigger");
     double first = kNaN;
     int mistrips = 0, after_impact = 0;
     const double impact = event_time(r, impact_);
@@ -163,7 +163,7 @@ class TensionMetrics final : public MetricSet {
     }
   }
   void finish(const FinishedTrial& r, std::vector<Metric>* out) const override {
-    const auto* triggers = r.tension_trigger_times_s;
+    const auto* triggers = r.controller_event("tension_trigger");
     double first = kNaN;
     for (std::size_t j = 0; j < r.labels.size(); ++j) {
       const double peak = j < r.peak_tension_n.size() ? r.peak_tension_n[j] : kNaN;
@@ -268,6 +268,14 @@ double TrialSummary::metric(const std::string& name) const {
   return kNaN;
 }
 
+const std::vector<std::vector<double>>* FinishedTrial::controller_event(
+    const std::string& name) const {
+  for (std::size_t k = 0; events && event_times_s && k < events->size(); ++k) {
+    if ((*events)[k].name == name && k < event_times_s->size()) return &(*event_times_s)[k];
+  }
+  return nullptr;
+}
+
 bool is_timing_metric(const std::string& name) {
   return name == "wall_time_s" || name == "realtime_factor";
 }
@@ -319,7 +327,7 @@ void require_unique_metric_names(const Scenario& sc, std::vector<std::string> na
 std::vector<std::string> metric_names(const Scenario& sc, const std::vector<std::string>& labels,
                                       bool hinge, const mjModel* model) {
   // every set writes the same names whatever the data: finish a trial with no rows
-  const LogLayout layout = make_log_layout(hinge, {}, labels, false);
+  const LogLayout layout = make_log_layout(hinge, {}, labels);
   Trajectory log;
   log.columns = layout.columns;
   FinishedTrial record;

@@ -76,15 +76,17 @@ struct FinishedTrial {
   std::vector<double> event_time_s;       // per Scenario::events, NaN if it never fired
   std::vector<double> event_position;     // the joint's position when it fired [rad or m]
   std::vector<char> event_holds_at_end;   // per event: its condition holds in the final state
-  const std::vector<std::vector<double>>* trigger_times_s = nullptr;   // per muscle, or none
-  // the tension (Ib) reflexes' trigger times, per muscle, or none
-  const std::vector<std::vector<double>>* tension_trigger_times_s = nullptr;
+  // the events the controller recorded: their kinds, and their times [event][muscle][k]
+  const std::vector<ControllerEvent>* events = nullptr;
+  const std::vector<std::vector<std::vector<double>>>* event_times_s = nullptr;
   std::vector<double> peak_tension_n;     // per muscle, the largest pull of a physics step
   long steps = 0;
   double sim_time_s = 0.0;
   double wall_time_s = 0.0;
   long cvode_steps = 0;
   long cvode_rhs_evals = 0;
+  // The times per muscle of the controller's event `name`, nullptr if it records none.
+  const std::vector<std::vector<double>>* controller_event(const std::string& name) const;
 };
 
 class MetricSet {

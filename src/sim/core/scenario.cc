@@ -17,6 +17,13 @@ const EventSpec* Scenario::event(const std::string& name) const {
   return nullptr;
 }
 
+bool Scenario::controller_records(const std::string& name) const {
+  for (const ControllerEvent& e : controller_events()) {
+    if (e.name == name) return true;
+  }
+  return false;
+}
+
 const std::vector<std::array<std::string, 2>>& Scenario::controller_pairs() const {
   static const std::vector<std::array<std::string, 2>> none;
   return controller ? controller->pairs : none;

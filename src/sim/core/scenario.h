@@ -187,12 +187,15 @@ struct Scenario {
   }
   // The muscle pairs the controller names (by actuator), none without a controller.
   const std::vector<std::array<std::string, 2>>& controller_pairs() const;
-  // The log has reflex_<m> columns (ControllerConfig::has_reflexes), and tension_reflex_<m>
-  // columns (has_tension_reflexes).
-  bool controller_has_reflexes() const { return controller && controller->has_reflexes(); }
-  bool controller_has_tension_reflexes() const {
-    return controller && controller->has_tension_reflexes();
+  // What the controller logs per muscle and the events it records (ControllerConfig), none
+  // without a controller; whether it records the event `name`.
+  std::vector<ControllerChannel> controller_channels() const {
+    return controller ? controller->channels() : std::vector<ControllerChannel>{};
   }
+  std::vector<ControllerEvent> controller_events() const {
+    return controller ? controller->events() : std::vector<ControllerEvent>{};
+  }
+  bool controller_records(const std::string& name) const;
 };
 
 }  // namespace pamsim

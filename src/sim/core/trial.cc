@@ -76,7 +76,7 @@ thread_local ThreadTrialData t_trial_data;
 
 LogLayout trial_log_layout(const TrialModel& tm, const Scenario& sc) {
   return make_log_layout(tm.joint.hinge, held_bodies(tm), labels_of(tm),
-                         sc.controller_has_reflexes(), sc.controller_has_tension_reflexes());
+                         sc.controller_channels());
 }
 
 TrialData::TrialData(const TrialModel& model, const mjModel* m, bool stays_on_thread) {
@@ -131,7 +131,9 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
       sensors_(sc.sensing, sensor_specs(tm, sc), seed),
       controller_(make_controller(tm, sc)),
       metrics_(make_metric_sets(sc, m_)),
-      layout_(trial_log_layout(tm, sc)) {
+      layout_(trial_log_layout(tm, sc)),
+      channels_(sc.controller_channels()),
+      events_(sc.controller_events()) {
   if (m_->opt.timestep != sc.timestep_s) {
     throw std::logic_error("run_trial: the model's timestep differs from sim.timestep_s "
                            "(load it with load_trial_model)");
@@ -144,7 +146,7 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
   truth_.resize(n_);
   readings_.resize(n_);
   p_tp_pa_.resize(n_);
-  out_.resize(static_cast<int>(n_));
+  out_.resize(static_cast<int>(n_), static_cast<int>(channels_.size()));
   row_.resize(layout_.columns.size());
   pressure_pa_.resize(n_);
   command_pa_.resize(n_);
@@ -202,8 +204,8 @@ TrialSummary TrialRun::finish(long steps, std::chrono::steady_clock::duration wa
   for (std::size_t k = 0; k < sc_.events.size(); ++k) {
     record.event_holds_at_end.push_back(condition_holds(k) ? 1 : 0);
   }
-  record.trigger_times_s = controller_->trigger_times_s();
-  record.tension_trigger_times_s = controller_->tension_trigger_times_s();
+  record.events = &events_;
+  record.event_times_s = &controller_->event_times_s();
   record.peak_tension_n = peak_tension_n_;
   record.steps = steps;
   record.sim_time_s = time_at(steps);
@@ -288,10 +290,11 @@ TrialObservation TrialRun::observe() const {
     FreeLengthTrack track = free_length_[i];   // a look changes nothing in the trial
     o.length_m.push_back(pam_muscle_length(m_, d_, act, &track));
     o.length_est_m.push_back(readings_[i].length_est_m);
-    o.reflex_active.push_back(i < out_.reflex_active.size() ? out_.reflex_active[i] : 0);
     o.velocity_est_m_s.push_back(i < out_.velocity_m_s.size() ? out_.velocity_m_s[i] : 0.0);
   }
   o.readings = readings_;
+  for (const ControllerChannel& c : channels_) o.channel_names.push_back(c.prefix + c.suffix);
+  o.channels = out_.channels;
   return o;
 }
 

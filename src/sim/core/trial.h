@@ -44,9 +44,12 @@ struct TrialSnapshot {
   const std::vector<std::string>* labels = nullptr;
   const std::vector<double>* pressure_pa = nullptr;   // chamber pressures
   const std::vector<double>* command_pa = nullptr;    // valve commands
-  const std::vector<char>* reflex_active = nullptr;   // as of the last control tick
-  const std::vector<char>* tension_reflex_active = nullptr;   // the Ib windows, likewise
-  // the control tick at which a reflex window first opened, NaN before (first_trigger_time_s)
+  // what the controller logs per muscle (its channels) and their values as of the last
+  // control tick, [channel][muscle]
+  const std::vector<ControllerChannel>* channels = nullptr;
+  const std::vector<std::vector<double>>* channel_values = nullptr;
+  // the control tick at which a window of the first window channel (a reflex's Ia) first
+  // opened, NaN before (first_trigger_time_s)
   double first_trigger_s = std::numeric_limits<double>::quiet_NaN();
 };
 
@@ -121,7 +124,10 @@ struct TrialObservation {
   std::vector<double> force_n;         // tension in each PAM
   std::vector<double> length_m;        // each PAM's length
   std::vector<double> length_est_m;    // the estimator's length, as of the last control tick
-  std::vector<char> reflex_active;     // as of the last control tick (stretch reflex only)
+  // what the controller logs per muscle (its channels: the log's <prefix><m><suffix> column
+  // names without the muscle, "reflex_"), and their values as of the last control tick
+  std::vector<std::string> channel_names;
+  std::vector<std::vector<double>> channels;   // [channel][muscle]
   // What the controller saw at the last control tick, as the log's row of that tick has it:
   // the instruments' readings and estimates (sensing/muscle_reading.h), and the velocity
   // each muscle's control acted on (the log's velocity_est_<m>_mm_s).

@@ -17,8 +17,8 @@ bool Trajectory::has_column(const std::string& name) const {
 }
 
 LogLayout make_log_layout(bool hinge, const std::vector<std::string>& bodies,
-                          const std::vector<std::string>& labels, bool reflex_columns,
-                          bool tension_reflex_columns) {
+                          const std::vector<std::string>& labels,
+                          const std::vector<ControllerChannel>& channels) {
   LogLayout layout;
   std::vector<std::string>& c = layout.columns;
   auto add = [&c](const std::string& name) {
@@ -48,8 +48,11 @@ LogLayout make_log_layout(bool hinge, const std::vector<std::string>& bodies,
   per_muscle(&MuscleColumns::length, "length_", "_mm");
   per_muscle(&MuscleColumns::length_est, "length_est_", "_mm");
   per_muscle(&MuscleColumns::velocity_est, "velocity_est_", "_mm_s");
-  if (reflex_columns) per_muscle(&MuscleColumns::reflex, "reflex_", "");
-  if (tension_reflex_columns) per_muscle(&MuscleColumns::tension_reflex, "tension_reflex_", "");
+  for (const ControllerChannel& channel : channels) {
+    for (std::size_t j = 0; j < labels.size(); ++j) {
+      layout.muscle[j].channels.push_back(add(channel.prefix + labels[j] + channel.suffix));
+    }
+  }
   per_muscle(&MuscleColumns::pressure_sensor, "pressure_sensor_", "_V");
   per_muscle(&MuscleColumns::gauge, "gauge_", "_V");
   per_muscle(&MuscleColumns::fiber_rate, "fiber_rate_", "_mm_s");

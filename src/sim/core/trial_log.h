@@ -9,9 +9,9 @@
 //   force_<m>_N, length_<m>_mm      true line tension and PAM length (the encoder)
 //   length_est_<m>_mm               model-based estimate, Eq. (9)-(10)
 //   velocity_est_<m>_mm_s           the velocity the controller acted on, Eq. (11) or fiber
-//   reflex_<m>                      1 while the stretch (Ia) reflex window is open (reflex kinds)
-//   tension_reflex_<m>              1 while the tension (Ib) reflex window is open (the kinds
-//                                   tension_reflex and stretch_tension_reflex)
+//   <prefix><m><suffix>             each channel the controller's kind declares (a reflex
+//                                   kind: reflex_<m>, 1 while its stretch (Ia) window is
+//                                   open; with Ib, tension_reflex_<m>; ControllerChannel)
 //   pressure_sensor_<m>_V, gauge_<m>_V, fiber_rate_<m>_mm_s   raw sensor readings
 //   p_meas_<m>_MPa, force_meas_<m>_N                          what the controller believes
 // The falling-mass scenarios' columns (the Ia reflex's) are exactly those of pamsim 0.1 (a
@@ -21,6 +21,8 @@
 #include <cstddef>
 #include <string>
 #include <vector>
+
+#include "reflex/controller.h"
 
 namespace pamsim {
 
@@ -38,7 +40,7 @@ inline constexpr std::size_t kNoColumn = static_cast<std::size_t>(-1);
 
 struct MuscleColumns {
   std::size_t p_cmd, p, force, length, length_est, velocity_est;
-  std::size_t reflex = kNoColumn, tension_reflex = kNoColumn;
+  std::vector<std::size_t> channels;   // per declared controller channel
   std::size_t pressure_sensor, gauge, fiber_rate, p_meas, force_meas;
 };
 
@@ -50,9 +52,9 @@ struct LogLayout {
 };
 
 // `hinge`: the joint's kind; `bodies`: the held bodies' names; `labels`: the muscles';
-// `reflex_columns`, `tension_reflex_columns`: the controller has Ia, Ib reflexes.
+// `channels`: what the controller's kind logs per muscle.
 LogLayout make_log_layout(bool hinge, const std::vector<std::string>& bodies,
-                          const std::vector<std::string>& labels, bool reflex_columns,
-                          bool tension_reflex_columns = false);
+                          const std::vector<std::string>& labels,
+                          const std::vector<ControllerChannel>& channels = {});
 
 }  // namespace pamsim

@@ -68,6 +68,7 @@ class TrialRun {
   void fire(std::size_t k, double t);
   bool condition_holds(std::size_t k) const;
   void hold_bodies();
+  bool first_window_open() const;   // a window of the first window channel is open
   void log_control(double t);   // one tick into options_.control_log
   void log_row(double t);
   void show_observer();
@@ -92,6 +93,8 @@ class TrialRun {
   std::vector<std::unique_ptr<MetricSet>> metrics_;
   std::vector<MetricSet*> step_metrics_;
   LogLayout layout_;
+  std::vector<ControllerChannel> channels_;   // what the controller logs per muscle
+  std::vector<ControllerEvent> events_;       // and the events it records
   TrialResult result_;
 
   // per tick and per step state, allocated once

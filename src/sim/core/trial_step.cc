@@ -123,8 +123,7 @@ bool TrialRun::control_tick(double t) {
   in.p_tp_pa = &p_tp_pa_;
   try {
     controller_->update(in, &out_);
-    if (std::isnan(first_trigger_s_) &&
-        std::any_of(out_.reflex_active.begin(), out_.reflex_active.end(), [](char a) { return a; })) {
+    if (std::isnan(first_trigger_s_) && first_window_open()) {
       first_trigger_s_ = time_at(step_);   // recorded: the exact decimal time
     }
     const std::vector<double>& p_cmd = external_pa_ ? *external_pa_ : out_.p_cmd_pa;
@@ -136,6 +135,16 @@ bool TrialRun::control_tick(double t) {
   }
   log_row(time_at(step_));
   return true;
+}
+
+bool TrialRun::first_window_open() const {
+  // the controller's first window channel (a reflex's Ia windows), any muscle
+  for (std::size_t k = 0; k < channels_.size(); ++k) {
+    if (!channels_[k].window) continue;
+    const std::vector<double>& open = out_.channels[k];
+    return std::any_of(open.begin(), open.end(), [](double v) { return v != 0.0; });
+  }
+  return false;
 }
 
 void TrialRun::log_control(double t) {
@@ -169,9 +178,8 @@ void TrialRun::log_row(double t) {
     row_[c.length] = units::m_to_mm(truth_[i].length_m);
     row_[c.length_est] = units::m_to_mm(r.length_est_m);
     row_[c.velocity_est] = units::m_to_mm(out_.velocity_m_s[i]);
-    if (c.reflex != kNoColumn) row_[c.reflex] = out_.reflex_active[i] ? 1.0 : 0.0;
-    if (c.tension_reflex != kNoColumn) {
-      row_[c.tension_reflex] = out_.tension_reflex_active[i] ? 1.0 : 0.0;
+    for (std::size_t k = 0; k < c.channels.size(); ++k) {
+      row_[c.channels[k]] = out_.channels[k][i];   // what the controller declares it logs
     }
     row_[c.pressure_sensor] = r.pressure_sensor_v;
     row_[c.gauge] = r.gauge_v;
@@ -251,8 +259,8 @@ TrialSnapshot TrialRun::snapshot() {
   snapshot.labels = &labels_;
   snapshot.pressure_pa = &pressure_pa_;
   snapshot.command_pa = &command_pa_;
-  snapshot.reflex_active = &out_.reflex_active;
-  snapshot.tension_reflex_active = &out_.tension_reflex_active;
+  snapshot.channels = &channels_;
+  snapshot.channel_values = &out_.channels;
   snapshot.first_trigger_s = first_trigger_s_;
   return snapshot;
 }

@@ -125,16 +125,17 @@ void set_y_range(mjvFigure* figure, double min, double max, double tick) {
   if (figure->range[1][1] <= figure->range[1][0]) figure->range[1][1] += static_cast<float>(tick);
 }
 
-// the muscles whose stretch (Ia) or tension (Ib) window is open ("VAS + SOL Ib"), or "off"
+// the muscles whose windows are open, each with its channel's tag ("VAS + SOL Ib"), or "off"
 std::string reflex_state(const TrialSnapshot& snap) {
   std::string state;
-  const auto add = [&](const std::vector<char>* open, const char* suffix) {
-    for (std::size_t i = 0; open != nullptr && i < open->size(); ++i) {
-      if ((*open)[i]) state += (state.empty() ? "" : " + ") + (*snap.labels)[i] + suffix;
+  for (std::size_t k = 0; snap.channels && k < snap.channels->size(); ++k) {
+    const ControllerChannel& channel = (*snap.channels)[k];
+    const std::vector<double>& open = (*snap.channel_values)[k];
+    for (std::size_t i = 0; channel.window && i < open.size(); ++i) {
+      if (open[i] == 0.0) continue;
+      state += (state.empty() ? "" : " + ") + (*snap.labels)[i] + channel.window_tag;
     }
-  };
-  add(snap.reflex_active, "");
-  add(snap.tension_reflex_active, " Ib");
+  }
   return state.empty() ? "off" : state;
 }
 

@@ -114,7 +114,7 @@ void read_metrics(ConfigReader& in, Scenario* sc, bool has_drop) {
   std::vector<std::string> defaults = {"drop", "reflex", "length_estimate"};
   if (!has_drop) {
     defaults = {"tracking", "length_estimate"};
-    if (sc->controller_has_reflexes()) defaults.push_back("reflex");
+    if (sc->controller_records("stretch_trigger")) defaults.push_back("reflex");
   }
   sc->metrics = defaults;
   read_key_rows(in, metrics_key_table(sc));
