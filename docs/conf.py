@@ -18,6 +18,19 @@ exclude_patterns = ["_build", "_generated", "README.md"]
 myst_heading_anchors = 3
 myst_enable_extensions = ["deflist"]   # the key references: a key, then what it is
 smartquotes = False                    # options are written as typed: --pneumatics
-html_theme = "alabaster"
-html_theme_options = {"description": "simulating PAM-driven arms and legs with a stretch reflex"}
+# furo (Debian's furo package): a content column wider than alabaster's, and a sidebar that
+# folds into a menu on narrow windows; _static/pamsim.css widens the column further and wraps
+# long code lines, so that no command is cut at 1280 px (scripts/docs_screenshot.py checks it)
+html_theme = "furo"
+html_title = "pamsim"
+html_static_path = ["_static"]
+html_css_files = ["pamsim.css"]
+# Debian's furo.css imports normalize.css from /javascript/normalize.css/, a path that only
+# a web server with Debian's javascript-common alias has (not file://, not a plain host):
+# the site carries the copy of node-normalize.css (a dependency of furo) instead, ahead of
+# furo.css (priority 200), as the import would have put it
+_normalize = "/usr/share/javascript/normalize.css/normalize.css"
+if os.path.exists(_normalize):
+    html_static_path.append(_normalize)
+    html_css_files.insert(0, ("normalize.css", {"priority": 100}))
 nitpicky = True

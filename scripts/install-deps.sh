@@ -34,6 +34,8 @@ packages=(
   python3-pandas python3-matplotlib          # DataFrames in the module; the example script
   python3-venv python3-pip                   # pip install . into a fresh virtual environment
   python3-sphinx python3-myst-parser python3-yaml   # make docs: the site and its generated pages
+  furo                                       # the docs' theme: a wide column, a sidebar that folds
+  chromium                                   # scripts/docs_screenshot.py: the site in a 1280 px window
   jq                                         # the docs' generated blocks pick numbers from JSON
   gcc-arm-none-eabi libnewlib-arm-none-eabi  # the embedded controller for Cortex-M (make embedded)
   gcc-arm-linux-gnueabihf libc6-dev-armhf-cross qemu-user   # ... for 32-bit ARM Linux, run by qemu-arm
