@@ -48,15 +48,7 @@ struct RunOptions {
   bool force = false;
   bool no_plot = false;
   bool quiet = false;
-  bool readings = false;   // --trials N (>= 1), and --readings of one trial without a video
-void check_trial_count(const RunOptions& opt) {
-  if (opt.trials < 1) throw InputError("--trials must be >= 1, got " + std::to_string(opt.trials));
-  if (opt.readings && (opt.trials != 1 || !opt.video.empty())) {
-    throw InputError("--readings writes one trial's readings: drop --trials and --video");
-  }
-}
-
-// readings.csv: the controller's inputs, lossless
+  bool readings = false;   // readings.csv: the controller's inputs, lossless
   std::string plot_format = "png";
 };
 
