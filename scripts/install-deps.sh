@@ -37,6 +37,7 @@ packages=(
   furo                                       # the docs' theme: a wide column, a sidebar that folds
   chromium                                   # scripts/docs_screenshot.py: the site in a 1280 px window
   jq                                         # the docs' generated blocks pick numbers from JSON
+  clang-format-14                            # scripts/format.sh: the C and C++ as .clang-format says
   gcc-arm-none-eabi libnewlib-arm-none-eabi  # the embedded controller for Cortex-M (make embedded)
   gcc-arm-linux-gnueabihf libc6-dev-armhf-cross qemu-user   # ... for 32-bit ARM Linux, run by qemu-arm
 )
@@ -46,16 +47,24 @@ for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 
-if [ ${#missing[@]} -eq 0 ]; then
-  exit 0
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "install-deps: installing ${missing[*]}"
+  if [ "$(id -u)" -ne 0 ]; then
+    SUDO=sudo
+  else
+    SUDO=
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-echo "install-deps: installing ${missing[*]}"
-if [ "$(id -u)" -ne 0 ]; then
-  SUDO=sudo
-else
-  SUDO=
+# ruff from the Python registry, pinned, in the checkout's own .tools/ (scripts/format.sh
+# formats and lints the Python with it); not for the demo
+readonly RUFF_VERSION=0.17.6
+tools="$(cd "$(dirname "$0")/.." && pwd)/.tools"
+if [ "${1:-}" != "--demo" ] && ! "$tools/bin/ruff" --version 2>/dev/null | grep -qx "ruff $RUFF_VERSION"; then
+  echo "install-deps: installing ruff $RUFF_VERSION into $tools"
+  python3 -m venv "$tools"
+  "$tools/bin/pip" install --quiet "ruff==$RUFF_VERSION"
 fi
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
