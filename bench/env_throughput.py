@@ -7,6 +7,7 @@
 Run in an environment with gymnasium (best of 3 each):
   .venv/bin/python bench/env_throughput.py [N...]   (or PYTHONPATH=build/python)
 """
+
 import sys
 import time
 
@@ -51,8 +52,10 @@ def env_counts(args) -> list:
     except ValueError:
         counts = []
     if not counts or min(counts) < 1:
-        sys.exit(f"env_throughput.py: the environment counts must be whole numbers >= 1, got "
-                 f"{' '.join(args)}")
+        sys.exit(
+            f"env_throughput.py: the environment counts must be whole numbers >= 1, got "
+            f"{' '.join(args)}"
+        )
     return counts
 
 

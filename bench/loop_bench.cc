@@ -49,7 +49,6 @@ void report_steps(benchmark::State& state, long steps_per_iteration) {
   state.SetItemsProcessed(state.iterations() * steps_per_iteration);
 }
 
-
 // the ball held at rest at `pos`, as the trial's hold does it (trial.cc)
 void hold_at(const BoundHold& hold, mjData* d, const double pos[3]) {
   double* q = d->qpos + hold.qpos;
@@ -72,8 +71,12 @@ bool bodies_touch(const mjModel* m, const mjData* d, int a, int b) {
 // A scenario's trial model with data of its own, for mj_step alone over its duration
 struct BareLoop {
   explicit BareLoop(const char* file)
-      : sc(scenario_named(file)), tm(load_trial_model(sc)), m(tm.model.get()),
-        data(make_data(m)), d(data.get()), n_steps(std::lround(sc.duration_s / sc.timestep_s)) {}
+      : sc(scenario_named(file)),
+        tm(load_trial_model(sc)),
+        m(tm.model.get()),
+        data(make_data(m)),
+        d(data.get()),
+        n_steps(std::lround(sc.duration_s / sc.timestep_s)) {}
   Scenario sc;
   TrialModel tm;
   const mjModel* m;
@@ -264,12 +267,8 @@ void run_batch(benchmark::State& state, const char* scenario_file) {
 
 // a batch on 1 and 2 threads, timed by the wall clock with every thread's CPU time
 void batch_settings(benchmark::internal::Benchmark* b) {
-  b->ArgName("threads")
-      ->Arg(1)
-      ->Arg(2)
-      ->MeasureProcessCPUTime()
-      ->UseRealTime()
-      ->Unit(benchmark::kMillisecond);
+  b->ArgName("threads")->Arg(1)->Arg(2)->MeasureProcessCPUTime()->UseRealTime()->Unit(
+      benchmark::kMillisecond);
 }
 
 void BM_TwentyTrials(benchmark::State& state) { run_batch(state, "drop_mass.toml"); }

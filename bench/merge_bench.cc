@@ -75,7 +75,8 @@ void write_shard(const SweepDefinition& def, const SweepShard& shard, const std:
 }
 
 void BM_Merge1M(benchmark::State& state) {
-  const fs::path dir = fs::temp_directory_path() / ("pamsim_merge_bench_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("pamsim_merge_bench_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const SweepDefinition def = million_trial_sweep();
@@ -106,7 +107,8 @@ BENCHMARK(BM_Merge1M)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 // (ResultsDb::insert: WAL, synchronous=FULL, so each commit waits for the disk). Counter
 // trials_per_s: the storage rate docs/cluster.md's estimate uses.
 void BM_StoreTrials(benchmark::State& state) {
-  const fs::path dir = fs::temp_directory_path() / ("pamsim_store_bench_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("pamsim_store_bench_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const SweepDefinition def = million_trial_sweep();
@@ -123,12 +125,18 @@ void BM_StoreTrials(benchmark::State& state) {
     ResultsDb db = ResultsDb::create((dir / ("store" + std::to_string(n++) + ".db")).string(), def);
     for (const std::vector<TrialRecord>& b : batches) db.insert(def, b);
   }
-  state.counters["trials_per_s"] = benchmark::Counter(
-      static_cast<double>(total), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["trials_per_s"] =
+      benchmark::Counter(static_cast<double>(total), benchmark::Counter::kIsIterationInvariantRate);
   fs::remove_all(dir);
 }
-BENCHMARK(BM_StoreTrials)->ArgName("batch")->Arg(1)->Arg(16)->Arg(256)->Unit(benchmark::kSecond)
-    ->UseRealTime()->Iterations(1);
+BENCHMARK(BM_StoreTrials)
+    ->ArgName("batch")
+    ->Arg(1)
+    ->Arg(16)
+    ->Arg(256)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 }  // namespace
 }  // namespace pamsim

@@ -65,8 +65,8 @@ pamsim::CommandChangePolicy policy(long arg) {
 
 void BM_PneumaticsStep(benchmark::State& state) {
   PneumaticParams params;
-  const auto model = state.range(0) == 0 ? pamsim::ValveModel::kIso6358
-                                         : pamsim::ValveModel::kFirstOrder;
+  const auto model =
+      state.range(0) == 0 ? pamsim::ValveModel::kIso6358 : pamsim::ValveModel::kFirstOrder;
   params.solver.on_command_change = policy(state.range(1));
   params.solver.relative_tolerance = std::pow(10.0, -static_cast<double>(state.range(2)));
   auto sys = two_muscles(params, model);
@@ -77,7 +77,7 @@ void BM_RegulatorLoopStep(benchmark::State& state) {
   PneumaticParams params;
   if (state.range(0) == 1) {
     params.regulator_feedback = pamsim::RegulatorFeedback::kDelayed;
-    params.regulator_proportional_band_pa = 300e3;   // stable with the delay (pneumatics.toml)
+    params.regulator_proportional_band_pa = 300e3;  // stable with the delay (pneumatics.toml)
   }
   if (state.range(1) == 1) params.regulator_sense = pamsim::RegulatorSense::kOutlet;
   params.solver.on_command_change = policy(state.range(2));

@@ -6,6 +6,7 @@ measured in one run (the issue-18 figures):
           SteppedTrial::step in a C++ loop
 Run: PYTHONPATH=build/python python3 bench/python_overhead.py (best of 5 each).
 """
+
 import os
 import time
 
@@ -32,8 +33,10 @@ def best(fn, n=5):
 
 py_law = best(lambda: law.force_N(p, d))
 cxx_law = min(_pamsim._cxx_force_loop_s(law, p, d) for _ in range(5))
-print(f"law over 1e6 points: python {py_law * 1e3:.2f} ms, C++ loop {cxx_law * 1e3:.2f} ms, "
-      f"ratio {py_law / cxx_law:.2f}")
+print(
+    f"law over 1e6 points: python {py_law * 1e3:.2f} ms, C++ loop {cxx_law * 1e3:.2f} ms, "
+    f"ratio {py_law / cxx_law:.2f}"
+)
 
 drop = os.path.join(root, "scenarios/drop_mass.toml")
 periods = 1500
@@ -50,5 +53,7 @@ def python_steps():
 
 py_step = min(python_steps() for _ in range(5))
 cxx_step = min(_pamsim._cxx_step_s(drop, None, periods) for _ in range(5))
-print(f"Trial.step: python {py_step * 1e6:.1f} us, C++ loop {cxx_step * 1e6:.1f} us per control "
-      f"period, ratio {py_step / cxx_step:.2f}")
+print(
+    f"Trial.step: python {py_step * 1e6:.1f} us, C++ loop {cxx_step * 1e6:.1f} us per control "
+    f"period, ratio {py_step / cxx_step:.2f}"
+)

@@ -46,9 +46,7 @@ Scenario drop_mass() {
   return load_scenario(std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml");
 }
 
-std::string temp_mp4() {
-  return "/tmp/pamsim_render_bench_" + std::to_string(::getpid()) + ".mp4";
-}
+std::string temp_mp4() { return "/tmp/pamsim_render_bench_" + std::to_string(::getpid()) + ".mp4"; }
 
 void BM_RenderTrial(benchmark::State& state, int width, int height, RenderQuality quality) {
   const Scenario sc = drop_mass();
@@ -73,11 +71,11 @@ void BM_RenderTrial(benchmark::State& state, int width, int height, RenderQualit
   state.counters["frames_per_s"] = benchmark::Counter(
       static_cast<double>(frames), benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK_CAPTURE(BM_RenderTrial, 640x480/fast, 640, 480, RenderQuality::kFast)
+BENCHMARK_CAPTURE(BM_RenderTrial, 640x480 / fast, 640, 480, RenderQuality::kFast)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(3.0);
-BENCHMARK_CAPTURE(BM_RenderTrial, 1280x720/default, 1280, 720, RenderQuality::kDefault)
+BENCHMARK_CAPTURE(BM_RenderTrial, 1280x720 / default, 1280, 720, RenderQuality::kDefault)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(10.0);
@@ -105,10 +103,10 @@ void BM_DrawFrame(benchmark::State& state, int width, int height, RenderQuality 
   state.counters["frames_per_s"] =
       benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK_CAPTURE(BM_DrawFrame, 640x480/fast, 640, 480, RenderQuality::kFast)
+BENCHMARK_CAPTURE(BM_DrawFrame, 640x480 / fast, 640, 480, RenderQuality::kFast)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK_CAPTURE(BM_DrawFrame, 1280x720/default, 1280, 720, RenderQuality::kDefault)
+BENCHMARK_CAPTURE(BM_DrawFrame, 1280x720 / default, 1280, 720, RenderQuality::kDefault)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
@@ -119,10 +117,10 @@ void BM_EncodeFrame(benchmark::State& state, int width, int height, const char* 
   const MjDataPtr data = start_state(arm, sc);
   std::vector<unsigned char> rgb;
   {
-    SceneRenderer renderer(arm.model.get(), arm.model_path,
-                           SceneRenderOptions{width, height, RenderQuality::kFast, "side",
-                                              choose_gl_backend(""),
-                                              egl_device_for(choose_gl_backend(""))});
+    SceneRenderer renderer(
+        arm.model.get(), arm.model_path,
+        SceneRenderOptions{width, height, RenderQuality::kFast, "side", choose_gl_backend(""),
+                           egl_device_for(choose_gl_backend(""))});
     renderer.draw_scene(data.get());
     const unsigned char* pixels = renderer.read_pixels();
     rgb.assign(pixels, pixels + 3 * static_cast<std::size_t>(width) * height);
@@ -142,10 +140,10 @@ void BM_EncodeFrame(benchmark::State& state, int width, int height, const char* 
   state.counters["frames_per_s"] =
       benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK_CAPTURE(BM_EncodeFrame, 640x480/ultrafast, 640, 480, "ultrafast")
+BENCHMARK_CAPTURE(BM_EncodeFrame, 640x480 / ultrafast, 640, 480, "ultrafast")
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK_CAPTURE(BM_EncodeFrame, 1280x720/veryfast, 1280, 720, "veryfast")
+BENCHMARK_CAPTURE(BM_EncodeFrame, 1280x720 / veryfast, 1280, 720, "veryfast")
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
@@ -182,8 +180,8 @@ class BareMujocoFrame {
   }
   void draw(const mjData* data) {
     gl_->make_current();
-    mjv_updateScene(model_.get(), const_cast<mjData*>(data), &option_, nullptr, &camera_,
-                    mjCAT_ALL, &scene_);
+    mjv_updateScene(model_.get(), const_cast<mjData*>(data), &option_, nullptr, &camera_, mjCAT_ALL,
+                    &scene_);
     mjr_render(viewport_, &scene_, &context_);
     mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport_, "Time = 1.200", nullptr, &context_);
     mjr_readPixels(rgb_.data(), nullptr, viewport_, &context_);
@@ -226,8 +224,8 @@ void BM_FrameVsMujoco(benchmark::State& state, int width, int height, RenderQual
   const Scenario sc = drop_mass();
   const TrialModel arm = load_trial_model(sc);
   const MjDataPtr data = start_state(arm, sc);
-  SceneRenderOptions options{width, height, quality, "side", choose_gl_backend(""),
-                             egl_device_for(choose_gl_backend(""))};
+  SceneRenderOptions options{
+      width, height, quality, "side", choose_gl_backend(""), egl_device_for(choose_gl_backend(""))};
   options.backdrop_geom = backdrop_geom;
   SceneRenderer renderer(arm.model.get(), arm.model_path, options);
   BareMujocoFrame mujoco(arm.model.get(), options);
@@ -256,16 +254,16 @@ void BM_FrameVsMujoco(benchmark::State& state, int width, int height, RenderQual
   state.counters["mujoco_frames_per_s"] = frames / mujoco_s;
   state.counters["pamsim_over_mujoco"] = mujoco_s / pamsim_s;
 }
-BENCHMARK_CAPTURE(BM_FrameVsMujoco, 1280x720/default, 1280, 720, RenderQuality::kDefault, false)
+BENCHMARK_CAPTURE(BM_FrameVsMujoco, 1280x720 / default, 1280, 720, RenderQuality::kDefault, false)
     ->Unit(benchmark::kMillisecond)
     ->UseManualTime()
     ->MinTime(3.0);
-BENCHMARK_CAPTURE(BM_FrameVsMujoco, 1280x720/default/geom_backdrop, 1280, 720,
+BENCHMARK_CAPTURE(BM_FrameVsMujoco, 1280x720 / default / geom_backdrop, 1280, 720,
                   RenderQuality::kDefault, true)
     ->Unit(benchmark::kMillisecond)
     ->UseManualTime()
     ->MinTime(3.0);
-BENCHMARK_CAPTURE(BM_FrameVsMujoco, 640x480/fast, 640, 480, RenderQuality::kFast, false)
+BENCHMARK_CAPTURE(BM_FrameVsMujoco, 640x480 / fast, 640, 480, RenderQuality::kFast, false)
     ->Unit(benchmark::kMillisecond)
     ->UseManualTime()
     ->MinTime(2.0);

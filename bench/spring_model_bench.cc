@@ -20,8 +20,8 @@ struct Inputs {
 Inputs make_inputs(const SpringModel& model) {
   Inputs in;
   for (int k = 0; k < kInputs; ++k) {
-    const double p = 1e5 + 7e5 * ((k * 37) % kInputs) / kInputs;   // 0.1-0.8 MPa
-    const double d = 0.5e-3 + 29.5e-3 * ((k * 101) % kInputs) / kInputs;   // 0.5-30 mm
+    const double p = 1e5 + 7e5 * ((k * 37) % kInputs) / kInputs;          // 0.1-0.8 MPa
+    const double d = 0.5e-3 + 29.5e-3 * ((k * 101) % kInputs) / kInputs;  // 0.5-30 mm
     in.p_pa.push_back(p);
     in.f_n.push_back(spring_force(model, p, d));
   }

@@ -22,16 +22,19 @@ namespace fs = std::filesystem;
 
 SweepDefinition bench_sweep(const fs::path& dir) {
   const fs::path file = dir / "bench_sweep.toml";
-  std::ofstream(file) << "base = \"" PAMSIM_SOURCE_DIR "/scenarios/drop_mass.toml\"\n"
-                         "seeds = 5\n"
-                         "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nfrom = 40.0\nto = 100.0\ncount = 4\n"
-                         "[[axis]]\nkey = \"reflex.k_MPa_s_per_mm\"\nfrom = 0.0005\nto = 0.004\n"
-                         "count = 4\nscale = \"log\"\n";
+  std::ofstream(file)
+      << "base = \"" PAMSIM_SOURCE_DIR
+         "/scenarios/drop_mass.toml\"\n"
+         "seeds = 5\n"
+         "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nfrom = 40.0\nto = 100.0\ncount = 4\n"
+         "[[axis]]\nkey = \"reflex.k_MPa_s_per_mm\"\nfrom = 0.0005\nto = 0.004\n"
+         "count = 4\nscale = \"log\"\n";
   return load_sweep(file.string());
 }
 
 void BM_Sweep(benchmark::State& state) {
-  const fs::path dir = fs::temp_directory_path() / ("pamsim_sweep_bench_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("pamsim_sweep_bench_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const SweepDefinition sweep = bench_sweep(dir);
   SweepRunOptions options;
@@ -47,8 +50,13 @@ void BM_Sweep(benchmark::State& state) {
       static_cast<double>(sweep.trials()), benchmark::Counter::kIsIterationInvariantRate);
   fs::remove_all(dir);
 }
-BENCHMARK(BM_Sweep)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)
-    ->UseRealTime()->MinTime(3.0);
+BENCHMARK(BM_Sweep)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(3.0);
 
 }  // namespace
 }  // namespace pamsim

@@ -15,7 +15,7 @@ from pamsim.envs.drop_mass import DropMassEnv
 
 TRAIN_SEEDS = list(range(6))
 HELD_OUT_SEEDS = list(range(1000, 1020))
-CENTER = np.array([0.4, 15.0, 145.0, 0.0])   # MPa, N, mm, mm/s: a muscle's measured channels
+CENTER = np.array([0.4, 15.0, 145.0, 0.0])  # MPa, N, mm, mm/s: a muscle's measured channels
 SCALE = np.array([0.1, 10.0, 5.0, 100.0])
 
 
@@ -24,8 +24,9 @@ def scaled(obs: np.ndarray) -> np.ndarray:
     return ((obs.reshape(-1, 4) - CENTER) / SCALE).reshape(-1)
 
 
-def policy_episode(env: DropMassEnv, seed: int,
-                   act: Callable[[np.ndarray], np.ndarray]) -> tuple[float, dict]:
+def policy_episode(
+    env: DropMassEnv, seed: int, act: Callable[[np.ndarray], np.ndarray]
+) -> tuple[float, dict]:
     """One episode of a policy (observation -> valve commands): its return and summary."""
     obs, _ = env.reset(seed=seed)
     total = 0.0
@@ -39,8 +40,12 @@ def policy_episode(env: DropMassEnv, seed: int,
 def reflex_episode(env: DropMassEnv, seed: int, scenario: str) -> tuple[float, dict]:
     """A scenario's own controller (a stretch reflex) on the same draws as env's reset."""
     _, info = env.reset(seed=seed)
-    overrides = {"sim.duration_s": env.duration_s, "drop.time_s": info["drop_time_s"],
-                 "drop.mass_kg": info["mass_kg"], "drop.height_m": info["height_m"]}
+    overrides = {
+        "sim.duration_s": env.duration_s,
+        "drop.time_s": info["drop_time_s"],
+        "drop.mass_kg": info["mass_kg"],
+        "drop.height_m": info["height_m"],
+    }
     result = pamsim.run(scenario, overrides, seed=info["sensor_seed"])
     log = pamsim.trajectory(result)
     angle, time_s = log["angle_deg"], log["time_s"]
@@ -63,19 +68,24 @@ def evaluate(env: DropMassEnv, run, seeds: list[int], reflex: bool) -> dict[str,
         drops.append(summary["peak_drop_deg"])
         kept.append(summary.get("mass_retained", 1))
         mistrips.append(summary.get("mistrips", 0) if reflex else math.nan)
-    return {"return": float(np.mean(returns)), "peak_drop_deg": float(np.mean(drops)),
-            "peak_drop_sd": float(np.std(drops, ddof=1)), "mass_kept": float(np.mean(kept)),
-            "mistrips": float(np.mean(mistrips))}
+    return {
+        "return": float(np.mean(returns)),
+        "peak_drop_deg": float(np.mean(drops)),
+        "peak_drop_sd": float(np.std(drops, ddof=1)),
+        "mass_kept": float(np.mean(kept)),
+        "mistrips": float(np.mean(mistrips)),
+    }
 
 
 def print_table(env: DropMassEnv, rows: dict, seeds: list[int]) -> None:
     """The held-out comparison; `rows` maps a name to (episode function, is a reflex)."""
     print(f"\nheld-out seeds {seeds[0]}-{seeds[-1]} ({len(seeds)} drops):")
-    print(f"{'controller':34s} {'return [deg s]':>15s} {'peak drop [deg]':>18s} "
-          f"{'mass kept':>10s} {'mistrips':>9s}")
+    print(
+        f"{'controller':34s} {'return [deg s]':>15s} {'peak drop [deg]':>18s} "
+        f"{'mass kept':>10s} {'mistrips':>9s}"
+    )
     for name, (run, reflex) in rows.items():
         r = evaluate(env, run, seeds, reflex)
         drop = f"{r['peak_drop_deg']:.2f} +- {r['peak_drop_sd']:.2f}"
         mistrips = "-" if math.isnan(r["mistrips"]) else f"{r['mistrips']:.2f}"
-        print(f"{name:34s} {r['return']:15.3f} {drop:>18s} {r['mass_kept']:10.2f} "
-              f"{mistrips:>9s}")
+        print(f"{name:34s} {r['return']:15.3f} {drop:>18s} {r['mass_kept']:10.2f} {mistrips:>9s}")

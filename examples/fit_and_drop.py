@@ -8,6 +8,7 @@ reflex and plot the angle with matplotlib.
 (after `make build`; with an installed pamsim, plain `python3` finds it). Writes OUT.png
 (default renders/python_example/drop.png) and prints what it found.
 """
+
 import os
 import sys
 
@@ -23,17 +24,22 @@ root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "renders/python_example/drop.png")
 
 # 1. the lab's fit: a tensile test of PAM A's plant (AVBDL with friction), Eq. (3) fitted
-data = pamsim.tensile_test(os.path.join(root, "models/pams/plant_pam_a.toml"),
-                           pressures_MPa=[0.4, 0.5, 0.6, 0.7, 0.8], noise_force_N=0.2, seed=1)
-fit = pamsim.fit("eq3", data["pressure_MPa"], data["deformation_mm"], data["force_N"],
-                 data["length_mm"])
+data = pamsim.tensile_test(
+    os.path.join(root, "models/pams/plant_pam_a.toml"),
+    pressures_MPa=[0.4, 0.5, 0.6, 0.7, 0.8],
+    noise_force_N=0.2,
+    seed=1,
+)
+fit = pamsim.fit(
+    "eq3", data["pressure_MPa"], data["deformation_mm"], data["force_N"], data["length_mm"]
+)
 law = fit["model"]
 print(f"fit: {law}  rmse {fit['rmse_N']:.3f} N, R^2 {fit['r2']:.5f} over {fit['points']} points")
 
 # 2. length from (p, f): invert the fitted law over the measured points, vectorised
 d_est = law.deformation_mm(data["pressure_MPa"], data["force_N"])
 err = d_est - data["deformation_mm"]
-print(f"deformation from (p, f): RMS error {np.sqrt(np.mean(err ** 2)):.3f} mm")
+print(f"deformation from (p, f): RMS error {np.sqrt(np.mean(err**2)):.3f} mm")
 
 # 3. the drop-mass experiment with and without the reflex
 drop = os.path.join(root, "scenarios/drop_mass.toml")

@@ -68,16 +68,23 @@ def main() -> None:
         curve.writerow(["generation", "best_return", "mean_return", "elapsed_s"])
         for generation in range(args.generations):
             candidates = es.ask()
-            returns = [np.mean([episode(env, s, np.asarray(c))[0] for s in TRAIN_SEEDS])
-                       for c in candidates]
+            returns = [
+                np.mean([episode(env, s, np.asarray(c))[0] for s in TRAIN_SEEDS])
+                for c in candidates
+            ]
             es.tell(candidates, [-r for r in returns])
             elapsed = time.perf_counter() - start
             curve.writerow([generation, max(returns), np.mean(returns), round(elapsed, 1)])
-            print(f"generation {generation:3d}: best return {max(returns):8.3f} deg s, "
-                  f"mean {np.mean(returns):8.3f} ({elapsed:.0f} s)", flush=True)
+            print(
+                f"generation {generation:3d}: best return {max(returns):8.3f} deg s, "
+                f"mean {np.mean(returns):8.3f} ({elapsed:.0f} s)",
+                flush=True,
+            )
     learned = np.asarray(es.result.xbest)
-    rows = {"passive arm (0.4 / 0.4 MPa)": (lambda e, s: episode(e, s, np.zeros(18)), False),
-            "stretch reflex, Table II": (lambda e, s: reflex_episode(e, s, e.scenario), True)}
+    rows = {
+        "passive arm (0.4 / 0.4 MPa)": (lambda e, s: episode(e, s, np.zeros(18)), False),
+        "stretch reflex, Table II": (lambda e, s: reflex_episode(e, s, e.scenario), True),
+    }
     if args.tuned:
         rows["tuned stretch reflex"] = (lambda e, s: reflex_episode(e, s, args.tuned), True)
     rows["learned linear policy"] = (lambda e, s: episode(e, s, learned), False)

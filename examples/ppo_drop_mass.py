@@ -54,8 +54,7 @@ class TrainingSeeds(gymnasium.Wrapper):
 
     def reset(self, *, seed=None, options=None):
         self.episodes += 1
-        return self.env.reset(seed=TRAIN_SEEDS[self.episodes % len(TRAIN_SEEDS)],
-                              options=options)
+        return self.env.reset(seed=TRAIN_SEEDS[self.episodes % len(TRAIN_SEEDS)], options=options)
 
 
 def main() -> None:
@@ -76,10 +75,14 @@ def main() -> None:
         action, _ = model.predict(scaled(obs).astype(np.float32), deterministic=True)
         return np.clip(action, 0.0, env.p_max_MPa).astype(np.float32)
 
-    rows = {"passive arm (0.4 / 0.4 MPa)":
-            (lambda e, s: policy_episode(e, s, lambda obs: np.full(2, 0.4, np.float32)), False),
-            "stretch reflex, Table II": (lambda e, s: reflex_episode(e, s, e.scenario), True),
-            "PPO (stable-baselines3)": (lambda e, s: policy_episode(e, s, act), False)}
+    rows = {
+        "passive arm (0.4 / 0.4 MPa)": (
+            lambda e, s: policy_episode(e, s, lambda obs: np.full(2, 0.4, np.float32)),
+            False,
+        ),
+        "stretch reflex, Table II": (lambda e, s: reflex_episode(e, s, e.scenario), True),
+        "PPO (stable-baselines3)": (lambda e, s: policy_episode(e, s, act), False),
+    }
     print_table(env, rows, HELD_OUT_SEEDS)
 
 

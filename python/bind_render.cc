@@ -24,8 +24,8 @@ FrameRenderer::~FrameRenderer() = default;
 
 py::array_t<std::uint8_t> FrameRenderer::render(const pamsim::TrialModel& model,
                                                 const pamsim::Scenario& scenario,
-                                                pamsim::SteppedTrial& trial, int width,
-                                                int height, const std::string& camera,
+                                                pamsim::SteppedTrial& trial, int width, int height,
+                                                const std::string& camera,
                                                 const std::string& quality,
                                                 const std::string& backend) {
   Scene& s = *scene_;
@@ -38,7 +38,7 @@ py::array_t<std::uint8_t> FrameRenderer::render(const pamsim::TrialModel& model,
     o.quality = pamsim::parse_render_quality(quality);
     o.backend = backend.empty() ? pamsim::choose_gl_backend("")
                                 : pamsim::parse_gl_backend(backend, "backend");
-    s.scene.reset();   // one GL context at a time
+    s.scene.reset();  // one GL context at a time
     s.scene = std::make_unique<pamsim::TrialScene>(model, scenario, o);
     s.width = width;
     s.height = height;
@@ -50,7 +50,7 @@ py::array_t<std::uint8_t> FrameRenderer::render(const pamsim::TrialModel& model,
   {
     py::gil_scoped_release release;
     s.scene->draw(trial.snapshot());
-    const unsigned char* rgb = s.scene->renderer().read_pixels();   // rows bottom-up
+    const unsigned char* rgb = s.scene->renderer().read_pixels();  // rows bottom-up
     std::uint8_t* out = frame.mutable_data();
     const std::size_t row = static_cast<std::size_t>(width) * 3;
     for (int y = 0; y < height; ++y) {

@@ -54,9 +54,9 @@ std::vector<std::string> overrides_of(const py::object& given) {
       if (py::isinstance<py::bool_>(value)) {
         text = value.cast<bool>() ? "true" : "false";
       } else if (py::isinstance<py::str>(value)) {
-        text = py::repr(value).cast<std::string>();   // a TOML string ('...' is literal)
+        text = py::repr(value).cast<std::string>();  // a TOML string ('...' is literal)
       } else if (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value)) {
-        text = py::repr(value).cast<std::string>();   // shortest round trip
+        text = py::repr(value).cast<std::string>();  // shortest round trip
       } else {
         throw InputError("overrides: " + key.cast<std::string>() +
                          ": give a number, a string or a bool");
@@ -87,8 +87,8 @@ struct PyResult {
   std::vector<std::string> columns() const { return result.trajectory.columns; }
   py::array_t<double> values() const {
     const Trajectory& t = result.trajectory;
-    py::array_t<double> a({static_cast<py::ssize_t>(t.rows()),
-                           static_cast<py::ssize_t>(t.columns.size())});
+    py::array_t<double> a(
+        {static_cast<py::ssize_t>(t.rows()), static_cast<py::ssize_t>(t.columns.size())});
     if (!t.values.empty()) {
       std::memcpy(a.mutable_data(), t.values.data(), t.values.size() * sizeof(double));
     }
@@ -96,7 +96,9 @@ struct PyResult {
   }
   py::dict summary() const { return summary_to_dict(result.summary, summary_json()); }
   std::string csv() const { return trajectory_to_csv(result.trajectory); }
-  std::string summary_json() const { return summary_to_json(result.summary, scenario, false).dump(2) + "\n"; }
+  std::string summary_json() const {
+    return summary_to_json(result.summary, scenario, false).dump(2) + "\n";
+  }
 };
 
 struct LoadedScenario {
@@ -123,8 +125,7 @@ PyResult run_scenario(const std::string& path, const py::object& overrides,
 // or with pressure commands [MPa] from the caller.
 class PyTrial {
  public:
-  PyTrial(const std::string& path, const py::object& overrides,
-          std::optional<std::uint64_t> seed)
+  PyTrial(const std::string& path, const py::object& overrides, std::optional<std::uint64_t> seed)
       : loaded_(path, overrides),
         seed_(seed.value_or(loaded_.scenario.seed)),
         trial_(std::make_unique<SteppedTrial>(*loaded_.model, loaded_.scenario, seed_)),
@@ -213,7 +214,7 @@ class PyTrial {
     PyResult r;
     r.result = trial_->finish();
     r.scenario = loaded_.scenario;
-    trial_->reset(seed_);   // ready to run again
+    trial_->reset(seed_);  // ready to run again
     return r;
   }
 
@@ -221,8 +222,8 @@ class PyTrial {
 
   py::array_t<std::uint8_t> render(int width, int height, const std::string& camera,
                                    const std::string& quality, const std::string& backend) {
-    return frames_.render(*loaded_.model, loaded_.scenario, *trial_, width, height, camera,
-                          quality, backend);
+    return frames_.render(*loaded_.model, loaded_.scenario, *trial_, width, height, camera, quality,
+                          backend);
   }
 
  private:
@@ -239,7 +240,8 @@ class PyTrial {
 
   static Array scaled(const std::vector<double>& v, double factor) {
     Array a(static_cast<py::ssize_t>(v.size()));
-    for (std::size_t i = 0; i < v.size(); ++i) a.mutable_at(static_cast<py::ssize_t>(i)) = v[i] * factor;
+    for (std::size_t i = 0; i < v.size(); ++i)
+      a.mutable_at(static_cast<py::ssize_t>(i)) = v[i] * factor;
     return a;
   }
   std::string join_labels() const {
@@ -274,8 +276,10 @@ py::dict read_sweep(const std::string& path) {
     if (text) {
       py::list values;
       for (const DbValue& v : cells[c]) {
-        if (v.kind == DbValue::Kind::kText) values.append(v.text);
-        else values.append(py::none());
+        if (v.kind == DbValue::Kind::kText)
+          values.append(v.text);
+        else
+          values.append(py::none());
       }
       out[py::str(columns[c])] = values;
     } else {
@@ -301,7 +305,7 @@ double cxx_force_loop_s(const SpringModel& model, const Array& p_mpa, const Arra
   for (py::ssize_t i = 0; i < p_mpa.size(); ++i) {
     sum += spring_force(model, units::mpa_to_pa(p_mpa.data()[i]), units::mm_to_m(d_mm.data()[i]));
   }
-  volatile double sink = sum;   // the loop's result is used, so it is not optimised away
+  volatile double sink = sum;  // the loop's result is used, so it is not optimised away
   (void)sink;
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -320,6 +324,7 @@ double cxx_step_s(const std::string& path, const py::object& overrides, int peri
 
 }  // namespace
 
+// clang-format off
 PYBIND11_MODULE(_pamsim, m) {
   m.doc() = "pamsim: PAM-driven arms with a stretch reflex (the compiled half)";
   m.attr("__version__") = PAMSIM_VERSION;
@@ -380,3 +385,4 @@ PYBIND11_MODULE(_pamsim, m) {
   m.def("_cxx_force_loop_s", &cxx_force_loop_s);
   m.def("_cxx_step_s", &cxx_step_s, py::arg("scenario"), py::arg("overrides"), py::arg("periods"));
 }
+// clang-format on

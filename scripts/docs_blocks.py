@@ -17,7 +17,8 @@ comment with the stamp the block was made under:
 
 Shown outputs: `stdout` (the last command's console output, as a text block; `stdout -N`, its
 last N lines; an earlier command's output goes to a file under {out} to be shown), a `.md`
-file as it is but for its headings, shown as bold lines (a block adds no section to a page), a `.csv` file as a Markdown table, a `.json`, `.txt` or
+file as it is but for its headings, shown as bold lines (a block adds no section to a page),
+a `.csv` file as a Markdown table, a `.json`, `.txt` or
 `.toml` file as a code block, a `.png` or `.svg` file copied to docs/generated/<id>/ and shown
 as a figure.
 
@@ -41,6 +42,7 @@ a rerun is stale).
 PAMSIM (environment) is the binary `pamsim` in a command stands for (default
 build/src/sim/pamsim). `make docs` updates the cheap blocks, then builds the site.
 """
+
 import argparse
 import csv
 import functools
@@ -57,22 +59,19 @@ import tempfile
 import time
 
 import yaml
-
 from docs_files import BLOCK, CLOSE, OPEN, atomic_write
 from docs_lint import lint
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 NUMBER = re.compile(r"[-+]?(?:\d+\.\d*|\.\d+|\d+)(?:[eE][-+]?\d+)?")
 CLASSES = ("cheap", "slow", "timing")
-COMMAND_TIMEOUT_S = 1800   # a block's command that hangs ends the run with one line
-DEFAULT_TOLERANCE = 1e-6   # a machine's last bits, as for the physics digest
+COMMAND_TIMEOUT_S = 1800  # a block's command that hangs ends the run with one line
+DEFAULT_TOLERANCE = 1e-6  # a machine's last bits, as for the physics digest
 # the short runs the physics digest hashes: a reflex trial, the leg landing, a tensile test
 DIGEST_RUNS = [
     ("pamsim run scenarios/drop_mass.toml --no-plot --out {out}/drop", "drop"),
-    ("pamsim run scenarios/landing.toml --no-plot --set sim.duration_s=0.6 --out {out}/leg",
-     "leg"),
-    ("pamsim tensile --plant models/pams/plant_agonist.toml -o {out}/tensile.csv",
-     "tensile.csv"),
+    ("pamsim run scenarios/landing.toml --no-plot --set sim.duration_s=0.6 --out {out}/leg", "leg"),
+    ("pamsim tensile --plant models/pams/plant_agonist.toml -o {out}/tensile.csv", "tensile.csv"),
 ]
 
 
@@ -96,7 +95,9 @@ def parse_spec(text, where):
     try:
         spec = yaml.safe_load(text) or {}
     except yaml.YAMLError as e:
-        raise Stale(f"{where}: a pamsim-block whose spec is not YAML ({' '.join(str(e).split())})")
+        raise Stale(
+            f"{where}: a pamsim-block whose spec is not YAML ({' '.join(str(e).split())})"
+        ) from e
     if not isinstance(spec, dict):
         raise Stale(f"{where}: a pamsim-block whose spec is not a mapping of id, class, run, show")
     for key in ("id", "class", "run", "show"):
@@ -109,9 +110,11 @@ def parse_spec(text, where):
             spec[key] = [spec[key]]
         for item in spec[key]:
             if not isinstance(item, (str, int)):
-                raise Stale(f"{where}: block {spec['id']}: a {key} item that YAML reads as "
-                            f"{type(item).__name__} (a ': ' inside it?); write it as `- |` and "
-                            f"the command on the next line")
+                raise Stale(
+                    f"{where}: block {spec['id']}: a {key} item that YAML reads as "
+                    f"{type(item).__name__} (a ': ' inside it?); write it as `- |` and "
+                    f"the command on the next line"
+                )
     spec.setdefault("tolerance", DEFAULT_TOLERANCE)
     return spec
 
@@ -135,14 +138,23 @@ def run_commands(spec, out):
         line = command.replace("{out}", shown_out)
         line = re.sub(r"(^|[\s;&|(])pamsim\b", lambda m: m.group(1) + pamsim_binary(), line)
         try:
-            done = subprocess.run(line, shell=True, cwd=ROOT, capture_output=True, text=True,
-                                  env=command_env(), stdin=subprocess.DEVNULL,
-                                  timeout=COMMAND_TIMEOUT_S)
+            done = subprocess.run(
+                line,
+                shell=True,
+                cwd=ROOT,
+                capture_output=True,
+                text=True,
+                env=command_env(),
+                stdin=subprocess.DEVNULL,
+                timeout=COMMAND_TIMEOUT_S,
+            )
         except subprocess.TimeoutExpired:
-            raise Stale(f"block {spec['id']}: `{command}` ran over {COMMAND_TIMEOUT_S} s")
+            raise Stale(f"block {spec['id']}: `{command}` ran over {COMMAND_TIMEOUT_S} s") from None
         if done.returncode != 0:
-            raise Stale(f"block {spec['id']}: `{command}` failed ({done.returncode}): "
-                        f"{(done.stderr or done.stdout).strip().splitlines()[-1:]}")
+            raise Stale(
+                f"block {spec['id']}: `{command}` failed ({done.returncode}): "
+                f"{(done.stderr or done.stdout).strip().splitlines()[-1:]}"
+            )
         stdout = as_shown(done.stdout)
     return stdout
 
@@ -176,12 +188,12 @@ def render_show(item, spec, out, stdout, check=False):
         lines = stdout.rstrip("\n").splitlines()
         parts = item.split()
         if len(parts) == 2:
-            lines = lines[int(parts[1]):]
+            lines = lines[int(parts[1]) :]
         return "```text\n" + "\n".join(lines) + "\n```"
     path = os.path.join(out, item)
     if not os.path.isfile(path):
         raise Stale(f"block {spec['id']}: its command wrote no {item}")
-    if item.endswith(".md"):   # its headings as bold lines: a block adds none to the page's
+    if item.endswith(".md"):  # its headings as bold lines: a block adds none to the page's
         with open(path) as f:
             text = as_shown(f.read()).strip()
         return re.sub(r"^#{1,6}\s+(.*?)\s*#*$", r"**\1**", text, flags=re.M)
@@ -193,16 +205,20 @@ def render_show(item, spec, out, stdout, check=False):
             return f"```{lexer}\n{as_shown(f.read()).rstrip()}\n```"
     if item.endswith((".png", ".svg")):
         target = os.path.join(ROOT, "docs", "generated", spec["id"], os.path.basename(item))
-        if check:   # its data are the block's numbers; its pixels depend on the fonts
+        if check:  # its data are the block's numbers; its pixels depend on the fonts
             if not os.path.isfile(target):
-                raise Stale(f"block {spec['id']}: the figure {item} is not in "
-                            f"docs/generated/{spec['id']}/")
+                raise Stale(
+                    f"block {spec['id']}: the figure {item} is not in docs/generated/{spec['id']}/"
+                )
         else:
             os.makedirs(os.path.dirname(target), exist_ok=True)
             shutil.copyfile(path, target)
-        shown = os.path.relpath(target, os.path.dirname(spec["page"]))   # GitHub's and Sphinx's
+        shown = os.path.relpath(target, os.path.dirname(spec["page"]))  # GitHub's and Sphinx's
         return f"![{spec['id']}: {item}]({shown})"
-    raise Stale(f"block {spec['id']}: cannot show {item} (stdout, .md, .csv, .json, .txt, .toml, .png, .svg)")
+    raise Stale(
+        f"block {spec['id']}: cannot show {item} "
+        "(stdout, .md, .csv, .json, .txt, .toml, .png, .svg)"
+    )
 
 
 def body_of(spec, out, stdout, check=False):
@@ -214,10 +230,13 @@ def body_of(spec, out, stdout, check=False):
 
 def version():
     try:
-        return subprocess.run([pamsim_binary(), "--version"], capture_output=True, text=True,
-                              check=True).stdout.split()[-1]
+        return subprocess.run(
+            [pamsim_binary(), "--version"], capture_output=True, text=True, check=True
+        ).stdout.split()[-1]
     except (OSError, subprocess.CalledProcessError) as e:
-        raise Stale(f"cannot run {pamsim_binary()} --version ({e}): build pamsim, or set PAMSIM")
+        raise Stale(
+            f"cannot run {pamsim_binary()} --version ({e}): build pamsim, or set PAMSIM"
+        ) from e
 
 
 # the physics digest's record: the reference numbers and the id the slow blocks carry
@@ -234,25 +253,28 @@ def reference_numbers():
         for command, output in DIGEST_RUNS:
             run_commands({"id": "digest", "run": [command]}, os.path.join(tmp, "run"))
             path = os.path.join(tmp, "run", output)
-            files = ([path] if os.path.isfile(path) else
-                     sorted(glob.glob(os.path.join(path, "*.csv"))))
+            files = (
+                [path] if os.path.isfile(path) else sorted(glob.glob(os.path.join(path, "*.csv")))
+            )
             for name in files:
                 with open(name, newline="") as f:
                     rows = list(csv.reader(f))
                 for c in range(len(rows[0])):
                     try:
                         numbers.append(sum(float(r[c]) for r in rows[1:]))
-                    except ValueError:   # a text column
+                    except ValueError:  # a text column
                         continue
     return numbers
 
 
 def same_numbers(a, b):
     return len(a) == len(b) and all(
-        abs(x - y) <= DIGEST_TOLERANCE * max(abs(x), abs(y), 1.0) for x, y in zip(a, b))
+        abs(x - y) <= DIGEST_TOLERANCE * max(abs(x), abs(y), 1.0)
+        for x, y in zip(a, b, strict=False)
+    )
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def physics_digest():
     """The physics' id: the recorded one (DIGEST_FILE) while this build reproduces the
     recorded reference numbers within DIGEST_TOLERANCE (another machine's last bits aside),
@@ -281,15 +303,19 @@ def machine():
     cpu = platform.processor() or platform.machine()
     try:
         with open("/proc/cpuinfo") as f:
-            cpu = next(l.split(":", 1)[1].strip() for l in f if l.startswith("model name"))
+            cpu = next(line.split(":", 1)[1].strip() for line in f if line.startswith("model name"))
     except (OSError, StopIteration):
         pass
     return f"{cpu}, {os.cpu_count()} cores"
 
 
 def stamp_of(spec, spec_text):
-    stamp = {"spec": spec_hash(spec_text), "version": version(), "class": spec["class"],
-             "date": time.strftime("%Y-%m-%d")}
+    stamp = {
+        "spec": spec_hash(spec_text),
+        "version": version(),
+        "class": spec["class"],
+        "date": time.strftime("%Y-%m-%d"),
+    }
     if spec["class"] == "slow":
         record_digest()
         stamp["digest"] = physics_digest()
@@ -328,7 +354,7 @@ def blocks(text, path):
         try:
             stamp = json.loads(m.group("stamp").strip() or "{}")
         except json.JSONDecodeError:
-            stamp = {}   # a stamp edited by hand: the block counts as never made
+            stamp = {}  # a stamp edited by hand: the block counts as never made
         yield m, spec, stamp
 
 
@@ -348,7 +374,7 @@ def update_page(path, classes, only, seen):
             todo.append(spec["id"])
     cheap_s = 0.0
     for block_id in todo:
-        with open(path) as f:   # as it is now: the page may have been edited meanwhile
+        with open(path) as f:  # as it is now: the page may have been edited meanwhile
             text = f.read()
         m, spec = next((m, spec) for m, spec, _ in blocks(text, path) if spec["id"] == block_id)
         started = time.time()
@@ -359,8 +385,8 @@ def update_page(path, classes, only, seen):
         with open(path) as f:
             text = f.read()
         m = next(m for m, spec, _ in blocks(text, path) if spec["id"] == block_id)
-        if text[m.start():m.end()] != made:
-            atomic_write(path, text[:m.start()] + made + text[m.end():])
+        if text[m.start() : m.end()] != made:
+            atomic_write(path, text[: m.start()] + made + text[m.end() :])
     return cheap_s
 
 
@@ -369,8 +395,10 @@ def update(paths, classes, only):
     for path in paths:
         cheap_s = update_page(path, classes, only, seen)
         if cheap_s:
-            print(f"{os.path.relpath(path, ROOT)}: its cheap blocks took {cheap_s:.1f} s "
-                  f"(CI reruns them all)")
+            print(
+                f"{os.path.relpath(path, ROOT)}: its cheap blocks took {cheap_s:.1f} s "
+                f"(CI reruns them all)"
+            )
 
 
 def first_difference(page, program, tolerance, first_line=1):
@@ -382,13 +410,14 @@ def first_difference(page, program, tolerance, first_line=1):
         x = a[i] if i < len(a) else ""
         y = b[i] if i < len(b) else ""
         if NUMBER.split(x) != NUMBER.split(y):
-            return (f"line {first_line + i}: the page has {x.strip()!r}, the program "
-                    f"{y.strip()!r}")
-        for u, v in zip(NUMBER.findall(x), NUMBER.findall(y)):
+            return f"line {first_line + i}: the page has {x.strip()!r}, the program {y.strip()!r}"
+        for u, v in zip(NUMBER.findall(x), NUMBER.findall(y), strict=False):
             fu, fv = float(u), float(v)
             if abs(fu - fv) > tolerance * max(abs(fu), abs(fv)):
-                return (f"line {first_line + i}: the page has {u}, the program {v} (tolerance "
-                        f"{tolerance:g})")
+                return (
+                    f"line {first_line + i}: the page has {u}, the program {v} (tolerance "
+                    f"{tolerance:g})"
+                )
     return None
 
 
@@ -401,8 +430,10 @@ def check_block(m, spec, stamp, where):
     if spec["class"] == "slow":
         for key, now in (("version", version()), ("digest", physics_digest())):
             if stamp.get(key) != now:
-                raise Stale(f"{name} was made under {key} {stamp.get(key)}, the build is {now}: "
-                            f"rerun it (docs_blocks.py update --id {spec['id']} --class slow)")
+                raise Stale(
+                    f"{name} was made under {key} {stamp.get(key)}, the build is {now}: "
+                    f"rerun it (docs_blocks.py update --id {spec['id']} --class slow)"
+                )
     elif spec["class"] == "timing":
         if not stamp.get("machine") or not stamp.get("date"):
             raise Stale(f"{name}: a timing without its machine and date")
@@ -410,7 +441,7 @@ def check_block(m, spec, stamp, where):
         out = block_out(spec)
         program = body_of(spec, out, run_commands(spec, out), check=True)
         page = m.group("body")
-        page = page[:page.rfind("<sub>")].rstrip("\n") + "\n" if "<sub>" in page else page
+        page = page[: page.rfind("<sub>")].rstrip("\n") + "\n" if "<sub>" in page else page
         first_line = m.string.count("\n", 0, m.start("body")) + 1
         problem = first_difference(page, program, float(spec["tolerance"]), first_line)
         if problem:

@@ -1,13 +1,19 @@
 """docs_files.py: what the docs scripts (docs_blocks.py, docs_lint.py, docs_generate.py) share:
 a generated block's syntax in a page, and writing a file whole or not at all."""
+
 import os
 import re
 
 OPEN = "<!-- pamsim-block"
 CLOSE = "<!-- /pamsim-block"
 # a block: its spec (YAML inside the opening comment), its body, and the closing stamp
-BLOCK = re.compile(re.escape(OPEN) + r"\n(?P<spec>.*?)-->\n(?P<body>.*?)" + re.escape(CLOSE) +
-                   r"(?P<stamp>[^\n]*?)-->", re.S)
+BLOCK = re.compile(
+    re.escape(OPEN)
+    + r"\n(?P<spec>.*?)-->\n(?P<body>.*?)"
+    + re.escape(CLOSE)
+    + r"(?P<stamp>[^\n]*?)-->",
+    re.S,
+)
 
 
 def atomic_write(path, text):

@@ -6,41 +6,56 @@ itself so that they cannot go stale: every key of a scenario and of the other fi
 opening comments (CMakeLists.txt's PAMSIM_PUBLIC_HEADERS). scripts/docs.sh runs it before
 Sphinx.
 """
+
 import json
 import os
 import subprocess
 import sys
 
 import yaml
-
 from docs_files import atomic_write
 
-KINDS = [("scenario", [], "A scenario file"),
-         ("params", ["--params"], "A muscle's parameter file (the estimator's spring law)"),
-         ("plant", ["--plant"], "A plant file (the physical muscle)"),
-         ("pneumatics", ["--pneumatics"], "The pneumatics file (valve, chamber, regulator)"),
-         ("calibration", ["--calibration"], "A calibration file (pamsim calibrate's)"),
-         ("sweep", ["--sweep"], "A sweep file's design keys"),
-         ("tune", ["--tune"], "A tuning file's search keys"),
-         ("identify", ["--identify"], "An identification file's search and judgement keys")]
+KINDS = [
+    ("scenario", [], "A scenario file"),
+    ("params", ["--params"], "A muscle's parameter file (the estimator's spring law)"),
+    ("plant", ["--plant"], "A plant file (the physical muscle)"),
+    ("pneumatics", ["--pneumatics"], "The pneumatics file (valve, chamber, regulator)"),
+    ("calibration", ["--calibration"], "A calibration file (pamsim calibrate's)"),
+    ("sweep", ["--sweep"], "A sweep file's design keys"),
+    ("tune", ["--tune"], "A tuning file's search keys"),
+    ("identify", ["--identify"], "An identification file's search and judgement keys"),
+]
 
 
 def prose(text):
     """Text a page shows as written: no HTML tags read into it ("<m>"), no Markdown markup."""
-    return (str(text).replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
-            .replace("*", "\\*").replace("_", "\\_").replace("\n", " "))
+    return (
+        str(text)
+        .replace("&", "&amp;")
+        .replace("<", "&lt;")
+        .replace(">", "&gt;")
+        .replace("*", "\\*")
+        .replace("_", "\\_")
+        .replace("\n", " ")
+    )
 
 
 def key_list(pamsim, flags):
     """Each key as a definition: its name and unit, then its meaning, values and default."""
-    rows = json.loads(subprocess.run([pamsim, "keys", "--json", *flags], check=True,
-                                     capture_output=True, text=True).stdout)
+    rows = json.loads(
+        subprocess.run(
+            [pamsim, "keys", "--json", *flags], check=True, capture_output=True, text=True
+        ).stdout
+    )
     lines = []
     for r in rows:
         unit = f" [{r['unit']}]" if r["unit"] else ""
-        lines += [f"`{r['key']}`{prose(unit)}",
-                  f": {prose(r['meaning'])}; allowed: {prose(r['allowed'])}; "
-                  f"default: {prose(r['default'])}", ""]
+        lines += [
+            f"`{r['key']}`{prose(unit)}",
+            f": {prose(r['meaning'])}; allowed: {prose(r['allowed'])}; "
+            f"default: {prose(r['default'])}",
+            "",
+        ]
     return "\n".join(lines), len(rows)
 
 
@@ -54,14 +69,22 @@ def commands(pamsim):
             in_list = True
         elif in_list and line.startswith("  ") and line.split():
             names.append(line.split()[0])
-    if len(names) < 10:   # the help's layout changed: a page without the commands must not build
-        sys.exit(f"docs_generate: found {len(names)} commands in `pamsim --help`'s Subcommands "
-                 f"list, expected every command (run, sweep, identify, ...)")
+    if len(names) < 10:  # the help's layout changed: a page without the commands must not build
+        sys.exit(
+            f"docs_generate: found {len(names)} commands in `pamsim --help`'s Subcommands "
+            f"list, expected every command (run, sweep, identify, ...)"
+        )
     out = []
     for name in names:
         text = subprocess.run([pamsim, name, "--help"], capture_output=True, text=True).stdout
-        out += [f"## `pamsim {name}`", "", "```text", text.replace(pamsim, "pamsim").rstrip(),
-                "```", ""]
+        out += [
+            f"## `pamsim {name}`",
+            "",
+            "```text",
+            text.replace(pamsim, "pamsim").rstrip(),
+            "```",
+            "",
+        ]
     return "\n".join(out)
 
 
@@ -70,15 +93,22 @@ def references(citation):
         cff = yaml.safe_load(f)
     out = []
     for ref in cff.get("references", []):
-        names = ", ".join(a.get("family-names", a.get("name", "")) +
-                          (", " + a["given-names"] if "given-names" in a else "")
-                          for a in ref.get("authors", []))
+        names = ", ".join(
+            a.get("family-names", a.get("name", ""))
+            + (", " + a["given-names"] if "given-names" in a else "")
+            for a in ref.get("authors", [])
+        )
         where = ref.get("journal") or ref.get("collection-title") or ""
-        parts = [names, f"\"{' '.join(ref['title'].split())}\""]
+        parts = [names, f'"{" ".join(ref["title"].split())}"']
         if where:
             parts.append(f"*{' '.join(where.split())}*")
-        for field, fmt in (("volume", "vol. {}"), ("issue", "no. {}"), ("start", "p. {}"),
-                           ("year", "{}"), ("doi", "doi:{}")):
+        for field, fmt in (
+            ("volume", "vol. {}"),
+            ("issue", "no. {}"),
+            ("start", "p. {}"),
+            ("year", "{}"),
+            ("doi", "doi:{}"),
+        ):
             if field in ref:
                 parts.append(fmt.format(ref[field]))
         out.append("- " + ", ".join(parts) + ".")
@@ -91,8 +121,8 @@ def public_headers(root):
     """The installed headers, as CMakeLists.txt's PAMSIM_PUBLIC_HEADERS lists them."""
     with open(os.path.join(root, "CMakeLists.txt")) as f:
         text = f.read()
-    block = text[text.index("set(PAMSIM_PUBLIC_HEADERS"):]
-    block = block[len("set(PAMSIM_PUBLIC_HEADERS"):block.index(")")]
+    block = text[text.index("set(PAMSIM_PUBLIC_HEADERS") :]
+    block = block[len("set(PAMSIM_PUBLIC_HEADERS") : block.index(")")]
     return block.split()
 
 
@@ -110,7 +140,7 @@ def first_comment(path):
 
 def cpp_api(root):
     """The C++ library's public headers by room, each with its opening comment."""
-    rooms = {}   # each folder's headers, the folders in the order the list first names them
+    rooms = {}  # each folder's headers, the folders in the order the list first names them
     for header in public_headers(root):
         rooms.setdefault(os.path.dirname(header), []).append(header)
     out = []
@@ -130,8 +160,10 @@ def main():
     for name, flags, what in KINDS:
         table, n = key_list(pamsim, flags)
         command = " ".join(["pamsim keys", *flags])
-        atomic_write(os.path.join(out, f"keys_{name}.md"),
-              f"{what}: {n} keys, as `{command}` lists them.\n\n{table}")
+        atomic_write(
+            os.path.join(out, f"keys_{name}.md"),
+            f"{what}: {n} keys, as `{command}` lists them.\n\n{table}",
+        )
     atomic_write(os.path.join(out, "commands.md"), commands(pamsim))
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     atomic_write(os.path.join(out, "references.md"), references(os.path.join(root, "CITATION.cff")))

@@ -20,6 +20,7 @@ It prints one line per page and exits 1 when any block is cut, 2 when there is n
 Chromium fails.
 OUT defaults to SITE/../docs-screenshots (build/docs-screenshots).
 """
+
 import argparse
 import html
 import json
@@ -35,16 +36,16 @@ REPORT_ID = "pamsim-overflow-report"
 
 # Runs in the page once it has loaded: the window's width, the content column's box, and
 # each visible <pre> against them (1 px of slack for subpixel rounding).
-MEASURE = r"""
+MEASURE = rf"""
 <script>
-window.addEventListener("load", function () {
+window.addEventListener("load", function () {{
   var root = document.documentElement;
   var view = root.clientWidth;
   var column = document.querySelector("article[role=main]") ||
                document.querySelector(".body") || document.body;
   var col = column.getBoundingClientRect();
   var cut = [], count = 0;
-  document.querySelectorAll("pre").forEach(function (pre) {
+  document.querySelectorAll("pre").forEach(function (pre) {{
     if (!pre.offsetParent) return;                     // not shown (display: none)
     count++;
     var box = pre.getBoundingClientRect();
@@ -52,41 +53,48 @@ window.addEventListener("load", function () {
     if (pre.scrollWidth > pre.clientWidth + 1)
       why.push("text " + pre.scrollWidth + " px wide in a " + pre.clientWidth + " px box");
     if (box.right > col.right + 1)
-      why.push("box ends at " + Math.round(box.right) + " px, the column at " + Math.round(col.right));
+      why.push("box ends at " + Math.round(box.right) + " px, the column at " +
+               Math.round(col.right));
     if (box.right > view + 1)
       why.push("box ends at " + Math.round(box.right) + " px, past the window's " + view);
     if (why.length)
-      cut.push({text: pre.textContent.trim().slice(0, 100), why: why});
-  });
+      cut.push({{text: pre.textContent.trim().slice(0, 100), why: why}});
+  }});
   var tables = 0;                                      // furo frames tables: they scroll
-  document.querySelectorAll(".table-wrapper").forEach(function (w) {
+  document.querySelectorAll(".table-wrapper").forEach(function (w) {{
     if (w.offsetParent && w.scrollWidth > w.clientWidth + 1) tables++;
-  });
+  }});
   var out = document.createElement("div");
-  out.id = "%s";
-  out.textContent = JSON.stringify({
+  out.id = "{REPORT_ID}";
+  out.textContent = JSON.stringify({{
     window: view, column_left: Math.round(col.left), column_right: Math.round(col.right),
     page_scroll_width: root.scrollWidth, page_height: root.scrollHeight, pre: count,
-    cut: cut, scrolling_tables: tables});
+    cut: cut, scrolling_tables: tables}});
   document.body.appendChild(out);
-});
+}});
 </script>
-""" % REPORT_ID
+"""
 
 
 def chromium(binary, args, timeout=120):
-    cmd = [binary, "--headless", "--disable-gpu", "--no-sandbox", "--no-first-run",
-           "--disable-extensions", "--mute-audio"] + args
+    cmd = [
+        binary,
+        "--headless",
+        "--disable-gpu",
+        "--no-sandbox",
+        "--no-first-run",
+        "--disable-extensions",
+        "--mute-audio",
+    ] + args
     r = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
     if r.returncode != 0:
         sys.stderr.write(r.stderr)
-        raise RuntimeError("chromium failed (%d): %s" % (r.returncode, " ".join(cmd)))
+        raise RuntimeError(f"chromium failed ({r.returncode}): {' '.join(cmd)}")
     return r.stdout
 
 
 def screenshot(binary, url, png, width, height):
-    chromium(binary, ["--screenshot=" + png,
-                      "--window-size=%d,%d" % (width, height), url])
+    chromium(binary, ["--screenshot=" + png, f"--window-size={width},{height}", url])
     if not os.path.isfile(png):
         raise RuntimeError("chromium wrote no " + png)
 
@@ -95,7 +103,7 @@ def measure(binary, site, page, width, height, tmp):
     """The report MEASURE writes into a copy of SITE/page.html, loaded at width x height."""
     with open(os.path.join(site, page + ".html"), encoding="utf-8") as f:
         text = f.read()
-    base = '<base href="file://%s/">' % os.path.abspath(site)
+    base = f'<base href="file://{os.path.abspath(site)}/">'
     text, n = re.subn(r"(<head[^>]*>)", lambda m: m.group(1) + base, text, count=1)
     if n != 1:
         raise RuntimeError(page + ".html has no <head>")
@@ -103,9 +111,16 @@ def measure(binary, site, page, width, height, tmp):
     copy = os.path.join(tmp, page + ".html")
     with open(copy, "w", encoding="utf-8") as f:
         f.write(text)
-    dom = chromium(binary, ["--window-size=%d,%d" % (width, height),
-                            "--virtual-time-budget=5000", "--dump-dom", "file://" + copy])
-    m = re.search(r'<div id="%s">(.*?)</div>' % REPORT_ID, dom, re.S)
+    dom = chromium(
+        binary,
+        [
+            f"--window-size={width},{height}",
+            "--virtual-time-budget=5000",
+            "--dump-dom",
+            "file://" + copy,
+        ],
+    )
+    m = re.search(rf'<div id="{REPORT_ID}">(.*?)</div>', dom, re.S)
     if not m:
         raise RuntimeError("the measuring script left no report in " + page + ".html")
     return json.loads(html.unescape(m.group(1)))
@@ -124,15 +139,16 @@ def main():
     site = os.path.abspath(a.site)
     out = os.path.abspath(a.out or os.path.join(site, "..", "docs-screenshots"))
     if not os.path.isfile(os.path.join(site, "index.html")):
-        print("docs_screenshot: no site at %s (make docs, or scripts/docs.sh)" % site,
-              file=sys.stderr)
+        print(
+            f"docs_screenshot: no site at {site} (make docs, or scripts/docs.sh)", file=sys.stderr
+        )
         return 2
     os.makedirs(out, exist_ok=True)
     failed = False
     try:
         with tempfile.TemporaryDirectory(prefix="docs_screenshot.") as tmp:
             for page in a.pages:
-                url = "file://%s/%s.html" % (site, page)
+                url = f"file://{site}/{page}.html"
                 r = measure(a.chromium, site, page, a.width, a.height, tmp)
                 png = os.path.join(out, page + ".png")
                 screenshot(a.chromium, url, png, a.width, a.height)
@@ -141,18 +157,21 @@ def main():
                 tall = min(16384, max(a.height, r["page_height"]))
                 screenshot(a.chromium, url, full, a.width, tall)
                 wide = r["page_scroll_width"] > r["window"] + 1
-                print("%s.html: %d <pre> blocks, %s; column %d-%d px of the window's %d%s%s; %s"
-                      % (page, r["pre"], "%d cut" % len(r["cut"]) if r["cut"] else "none cut",
-                         r["column_left"], r["column_right"], r["window"],
-                         ", the page scrolls sideways (%d px)" % r["page_scroll_width"]
-                         if wide else "",
-                         "; %d wide tables scroll in their frames" % r["scrolling_tables"]
-                         if r["scrolling_tables"] else "", png))
+                cut = f"{len(r['cut'])} cut" if r["cut"] else "none cut"
+                sideways = (
+                    f", the page scrolls sideways ({r['page_scroll_width']} px)" if wide else ""
+                )
+                tables = r["scrolling_tables"]
+                frames = f"; {tables} wide tables scroll in their frames" if tables else ""
+                print(
+                    f"{page}.html: {r['pre']} <pre> blocks, {cut}; column {r['column_left']}-"
+                    f"{r['column_right']} px of the window's {r['window']}{sideways}{frames}; {png}"
+                )
                 for c in r["cut"]:
-                    print("  cut: %r: %s" % (c["text"], "; ".join(c["why"])))
+                    print("  cut: {!r}: {}".format(c["text"], "; ".join(c["why"])))
                 failed |= bool(r["cut"]) or wide
     except (RuntimeError, OSError, subprocess.TimeoutExpired) as e:
-        print("docs_screenshot: %s" % e, file=sys.stderr)
+        print(f"docs_screenshot: {e}", file=sys.stderr)
         return 2
     return 1 if failed else 0
 

@@ -21,6 +21,7 @@ gcc-arm-linux-gnueabihf and qemu-user; runs one compile at a time.
     python3 scripts/embedded_check.py --pamsim build/src/sim/pamsim --out DIR --quick
 (--quick: drop_mass and landing_reflex only, and the user's build of drop_mass.toml, no tune)
 """
+
 import argparse
 import csv
 import json
@@ -48,15 +49,33 @@ TRIALS = [
     ("drop_mass_eq5", "Eq. (5) estimator", "drop_mass.toml", "eq5"),
 ]
 QUICK = ("drop_mass", "landing_reflex")
-ARM_FLAGS = {"Cortex-M4": "-mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard",
-             "Cortex-M7": "-mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard"}
+ARM_FLAGS = {
+    "Cortex-M4": "-mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard",
+    "Cortex-M7": "-mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard",
+}
 # (processor, float build, MAX_MUSCLES, the trial whose export it builds)
-BOARDS = [("Cortex-M4", True, 2, "drop_mass"), ("Cortex-M4", True, 8, "landing_reflex"),
-          ("Cortex-M7", False, 2, "drop_mass"), ("Cortex-M7", False, 8, "landing_reflex")]
-TOOLS = ("make", "cmake", "gcc", "clang", "arm-none-eabi-gcc", "arm-none-eabi-ar",
-         "arm-none-eabi-size", "arm-linux-gnueabihf-gcc", "arm-linux-gnueabihf-ar", "qemu-arm")
-REPLAY_LINE = re.compile(r"ticks (\d+), (?:(commands equal)|first differing tick (\d+), "
-                         r"largest difference (\S+) Pa)")
+BOARDS = [
+    ("Cortex-M4", True, 2, "drop_mass"),
+    ("Cortex-M4", True, 8, "landing_reflex"),
+    ("Cortex-M7", False, 2, "drop_mass"),
+    ("Cortex-M7", False, 8, "landing_reflex"),
+]
+TOOLS = (
+    "make",
+    "cmake",
+    "gcc",
+    "clang",
+    "arm-none-eabi-gcc",
+    "arm-none-eabi-ar",
+    "arm-none-eabi-size",
+    "arm-linux-gnueabihf-gcc",
+    "arm-linux-gnueabihf-ar",
+    "qemu-arm",
+)
+REPLAY_LINE = re.compile(
+    r"ticks (\d+), (?:(commands equal)|first differing tick (\d+), "
+    r"largest difference (\S+) Pa)"
+)
 
 
 class Failed(Exception):
@@ -64,10 +83,9 @@ class Failed(Exception):
 
 
 def run(cmd, cwd=ROOT, ok=(0,)):
-    done = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True,
-                          stdin=subprocess.DEVNULL)
+    done = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, stdin=subprocess.DEVNULL)
     if done.returncode not in ok:
-        errors = [l for l in (done.stderr + done.stdout).splitlines() if "error" in l]
+        errors = [line for line in (done.stderr + done.stdout).splitlines() if "error" in line]
         tail = errors or (done.stderr or done.stdout).strip().splitlines()[-3:]
         raise Failed(f"`{' '.join(cmd)}` failed ({done.returncode}): " + " | ".join(tail))
     return done
@@ -75,8 +93,9 @@ def run(cmd, cwd=ROOT, ok=(0,)):
 
 def make(export, build, *variables, target=None):
     """The export's Makefile with make variables `variables` ("CC=clang"), into `build`."""
-    return run(["make", "-C", export, f"BUILD={build}"] + ([target] if target else [])
-               + list(variables))
+    return run(
+        ["make", "-C", export, f"BUILD={build}"] + ([target] if target else []) + list(variables)
+    )
 
 
 def replay(command, readings, out_csv):
@@ -88,8 +107,12 @@ def replay(command, readings, out_csv):
         raise Failed(f"`{' '.join(command)}`: no comparison line ({done.stderr.strip()})")
     if m.group(2):
         return {"equal": True, "ticks": int(m.group(1)), "tick": None, "largest_pa": 0.0}
-    return {"equal": False, "ticks": int(m.group(1)), "tick": int(m.group(3)),
-            "largest_pa": float(m.group(4))}
+    return {
+        "equal": False,
+        "ticks": int(m.group(1)),
+        "tick": int(m.group(3)),
+        "largest_pa": float(m.group(4)),
+    }
 
 
 def read_columns(path):
@@ -105,13 +128,44 @@ def fit_estimators(pamsim, work, law):
     for side in SIDES:
         data = os.path.join(work, f"tensile_{side}.csv")
         if not os.path.isfile(data):
-            run([pamsim, "tensile", "--plant", f"models/pams/plant_{side}.toml",
-                 "--pressures-MPa", "0.2,0.3,0.4,0.5,0.6,0.7", "--max-deformation-mm", "15",
-                 "--noise-pressure-MPa", "0.001", "--noise-force-N", "0.05",
-                 "--noise-length-mm", "0.01", "--seed", "1", "-o", data, "--force"])
+            run(
+                [
+                    pamsim,
+                    "tensile",
+                    "--plant",
+                    f"models/pams/plant_{side}.toml",
+                    "--pressures-MPa",
+                    "0.2,0.3,0.4,0.5,0.6,0.7",
+                    "--max-deformation-mm",
+                    "15",
+                    "--noise-pressure-MPa",
+                    "0.001",
+                    "--noise-force-N",
+                    "0.05",
+                    "--noise-length-mm",
+                    "0.01",
+                    "--seed",
+                    "1",
+                    "-o",
+                    data,
+                    "--force",
+                ]
+            )
         fitted = os.path.join(work, f"{side}_{law}.toml")
-        run([pamsim, "fit", "--model", law, data, "--sensors-from",
-             f"models/pams/table4_{side}.toml", "-o", fitted, "--force"])
+        run(
+            [
+                pamsim,
+                "fit",
+                "--model",
+                law,
+                data,
+                "--sensors-from",
+                f"models/pams/table4_{side}.toml",
+                "-o",
+                fitted,
+                "--force",
+            ]
+        )
         sets += ["--set", f"model.{side}_params={fitted}"]
     return sets
 
@@ -141,19 +195,36 @@ def float_against_double(double_csv, float_csv, readings_csv, config):
     double, single = read_columns(double_csv), read_columns(float_csv)
     readings = read_columns(readings_csv)
     names = config["muscle_names"]
-    largest = max(abs(float(a) - float(b)) for m in names
-                  for a, b in zip(double[f"p_cmd_{m}_Pa"], single[f"p_cmd_{m}_Pa"]))
-    moved = max(abs(float(a) - float(b)) for m in names
-                for a, b in zip(double[f"velocity_{m}_m_s"], single[f"velocity_{m}_m_s"])
-                if math.isfinite(float(a) - float(b)))
+    largest = max(
+        abs(float(a) - float(b))
+        for m in names
+        for a, b in zip(double[f"p_cmd_{m}_Pa"], single[f"p_cmd_{m}_Pa"], strict=False)
+    )
+    moved = max(
+        abs(float(a) - float(b))
+        for m in names
+        for a, b in zip(double[f"velocity_{m}_m_s"], single[f"velocity_{m}_m_s"], strict=False)
+        if math.isfinite(float(a) - float(b))
+    )
     in_double, in_float = triggers(double, names), triggers(single, names)
-    differing = [{"muscle": m, "kind": k, "tick": t, "time_s": float(double["time_s"][t]),
-                  "in": "double" if (m, k, t) in in_double else "float",
-                  "margin": margin(k, m, t, config, double, readings)}
-                 for m, k, t in sorted(in_double ^ in_float, key=lambda x: (x[2], x[0]))]
-    return {"largest_kpa": largest / 1e3, "velocity_mm_s": moved * 1e3,
-            "double_triggers": len(in_double),
-            "differing": differing, "closest": closest(config, double, readings)}
+    differing = [
+        {
+            "muscle": m,
+            "kind": k,
+            "tick": t,
+            "time_s": float(double["time_s"][t]),
+            "in": "double" if (m, k, t) in in_double else "float",
+            "margin": margin(k, m, t, config, double, readings),
+        }
+        for m, k, t in sorted(in_double ^ in_float, key=lambda x: (x[2], x[0]))
+    ]
+    return {
+        "largest_kpa": largest / 1e3,
+        "velocity_mm_s": moved * 1e3,
+        "double_triggers": len(in_double),
+        "differing": differing,
+        "closest": closest(config, double, readings),
+    }
 
 
 def closest(config, double, readings):
@@ -161,11 +232,17 @@ def closest(config, double, readings):
     min |v - v_thr| [mm/s] and min |f - f_thr| [N] (Eq. (9)), for the reflexes it runs."""
     reflex, names, found = config["reflex"], config["muscle_names"], {}
     if reflex["stretch"]:
-        found["Ia"] = finite_min(abs(float(v) - reflex["ia"]["v_thr_m_s"]) * 1e3
-                                 for m in names for v in double[f"velocity_{m}_m_s"])
+        found["Ia"] = finite_min(
+            abs(float(v) - reflex["ia"]["v_thr_m_s"]) * 1e3
+            for m in names
+            for v in double[f"velocity_{m}_m_s"]
+        )
     if reflex["tension"]:
-        found["Ib"] = finite_min(abs(eq9_force(config, m, g) - reflex["ib"]["f_thr_n"])
-                                 for m in names for g in readings[f"gauge_{m}_V"])
+        found["Ib"] = finite_min(
+            abs(eq9_force(config, m, g) - reflex["ib"]["f_thr_n"])
+            for m in names
+            for g in readings[f"gauge_{m}_V"]
+        )
     return found
 
 
@@ -181,7 +258,7 @@ def eq9_force(config, muscle, gauge_v):
 def reflexes(config):
     """The reflexes an export runs, in words."""
     r = config["reflex"]
-    parts = (["Ia (" + ("fiber" if r["sensor"] == 1 else "model") + ")"] if r["stretch"] else [])
+    parts = ["Ia (" + ("fiber" if r["sensor"] == 1 else "model") + ")"] if r["stretch"] else []
     return " + ".join(parts + (["Ib"] if r["tension"] else [])) or "none"
 
 
@@ -189,25 +266,49 @@ def check_trial(pamsim, work, trial):
     name, what, scenario, law = trial
     where = os.path.join(work, name)
     sets = fit_estimators(pamsim, work, law) if law else []
-    run([pamsim, "run", f"scenarios/{scenario}", "--readings", "--no-plot", "--out",
-         os.path.join(where, "run")] + sets)
+    run(
+        [
+            pamsim,
+            "run",
+            f"scenarios/{scenario}",
+            "--readings",
+            "--no-plot",
+            "--out",
+            os.path.join(where, "run"),
+        ]
+        + sets
+    )
     export = os.path.join(where, "export")
     run([pamsim, "controller", "export", f"scenarios/{scenario}", "-o", export] + sets)
     readings = os.path.join(where, "run", "readings.csv")
     with open(os.path.join(export, "pamctl_config.json")) as f:
         config = json.load(f)
-    result = {"name": name, "what": what, "scenario": scenario, "law": law, "export": export,
-              "readings": readings, "muscles": config["muscle_count"],
-              "reflexes": reflexes(config)}
-    for build, variables in (("gcc", ["CC=gcc"]), ("clang", ["CC=clang"]),
-                             ("float", ["CC=gcc", "FLOAT=1"])):
+    result = {
+        "name": name,
+        "what": what,
+        "scenario": scenario,
+        "law": law,
+        "export": export,
+        "readings": readings,
+        "muscles": config["muscle_count"],
+        "reflexes": reflexes(config),
+    }
+    for build, variables in (
+        ("gcc", ["CC=gcc"]),
+        ("clang", ["CC=clang"]),
+        ("float", ["CC=gcc", "FLOAT=1"]),
+    ):
         make(export, os.path.join(where, build), *variables)
-        result[build] = replay([os.path.join(where, build, "pamctl_replay")], readings,
-                               os.path.join(where, f"{build}.csv"))
+        result[build] = replay(
+            [os.path.join(where, build, "pamctl_replay")],
+            readings,
+            os.path.join(where, f"{build}.csv"),
+        )
     with open(os.path.join(where, "gcc.csv")) as a, open(os.path.join(where, "clang.csv")) as b:
         result["gcc_is_clang"] = a.read() == b.read()
     result["float_vs_double"] = float_against_double(
-        os.path.join(where, "gcc.csv"), os.path.join(where, "float.csv"), readings, config)
+        os.path.join(where, "gcc.csv"), os.path.join(where, "float.csv"), readings, config
+    )
     return result
 
 
@@ -218,8 +319,11 @@ def short_tuning(pamsim, work):
         text = f.read()
     text = re.sub(r"(?m)^generations *=.*", "generations = 2", text)
     text = re.sub(r"(?m)^held_out_seeds *=.*", "held_out_seeds = 2", text)
-    text = re.sub(r'(?m)^base *= *"(.*)"',
-                  lambda m: f'base = "{os.path.join(ROOT, "scenarios", m.group(1))}"', text)
+    text = re.sub(
+        r'(?m)^base *= *"(.*)"',
+        lambda m: f'base = "{os.path.join(ROOT, "scenarios", m.group(1))}"',
+        text,
+    )
     tune = os.path.join(work, "tune_short.toml")
     with open(tune, "w") as f:
         f.write(text)
@@ -247,22 +351,35 @@ def users_build(pamsim, work, quick):
     run(["make", "-C", export, "BUILD=build-clang", "CC=clang"])
     run(["cmake", "-S", export, "-B", os.path.join(export, "cmake-build")])
     run(["cmake", "--build", os.path.join(export, "cmake-build")])
-    return {"scenario": "drop_mass.toml" if quick else "best.toml of a short tune",
-            "tuned": tuned,
-            "make": replay([os.path.join(export, "build", "pamctl_replay")], readings,
-                           os.path.join(where, "make.csv")),
-            "make_clang": replay([os.path.join(export, "build-clang", "pamctl_replay")], readings,
-                                 os.path.join(where, "make_clang.csv")),
-            "cmake": replay([os.path.join(export, "cmake-build", "pamctl_replay")], readings,
-                            os.path.join(where, "cmake.csv"))}
+    return {
+        "scenario": "drop_mass.toml" if quick else "best.toml of a short tune",
+        "tuned": tuned,
+        "make": replay(
+            [os.path.join(export, "build", "pamctl_replay")],
+            readings,
+            os.path.join(where, "make.csv"),
+        ),
+        "make_clang": replay(
+            [os.path.join(export, "build-clang", "pamctl_replay")],
+            readings,
+            os.path.join(where, "make_clang.csv"),
+        ),
+        "cmake": replay(
+            [os.path.join(export, "cmake-build", "pamctl_replay")],
+            readings,
+            os.path.join(where, "cmake.csv"),
+        ),
+    }
 
 
 def call_graph(build):
     """{title: (name, stack bytes or None for a function defined elsewhere, qualifier)} and
     {title: [callee titles]} of the .ci files (VCG) in `build`."""
     nodes, edges = {}, {}
-    node = re.compile(r'node: \{ title: "([^"]+)" label: "([^"\\]+)(?:\\n[^"]*?)?'
-                      r'(?:\\n(\d+) bytes \(([\w,]+)\))?"')
+    node = re.compile(
+        r'node: \{ title: "([^"]+)" label: "([^"\\]+)(?:\\n[^"]*?)?'
+        r'(?:\\n(\d+) bytes \(([\w,]+)\))?"'
+    )
     edge = re.compile(r'edge: \{ sourcename: "([^"]+)" targetname: "([^"]+)"')
     for name in sorted(os.listdir(build)):
         if not name.endswith(".ci"):
@@ -271,8 +388,7 @@ def call_graph(build):
             for line in f:
                 if m := node.match(line):
                     if m.group(3) is not None or m.group(1) not in nodes:
-                        nodes[m.group(1)] = (m.group(2), m.group(3) and int(m.group(3)),
-                                             m.group(4))
+                        nodes[m.group(1)] = (m.group(2), m.group(3) and int(m.group(3)), m.group(4))
                 elif m := edge.match(line):
                     edges.setdefault(m.group(1), [])
                     if m.group(2) not in edges[m.group(1)]:
@@ -288,8 +404,11 @@ def deepest(title, nodes, edges, seen=()):
     best = (0, [])
     for callee in edges.get(title, []):
         if callee not in seen:
-            best = max(best, deepest(callee, nodes, edges, seen + (title,)),
-                       key=lambda b: (b[0], len(b[1])))
+            best = max(
+                best,
+                deepest(callee, nodes, edges, seen + (title,)),
+                key=lambda b: (b[0], len(b[1])),
+            )
     return (size or 0) + best[0], [(name, size)] + best[1]
 
 
@@ -298,21 +417,35 @@ def arm_size(archive_or_object, total=True):
     if total:
         text, data, bss = (int(x) for x in out.strip().splitlines()[-1].split()[:3])
         return {"text": text, "data": data, "bss": bss}
-    return {s[0]: int(s[1]) for s in (l.split() for l in out.splitlines()) if len(s) >= 2
-            and s[0].startswith(".") and s[1].isdigit()}
+    return {
+        s[0]: int(s[1])
+        for s in (line.split() for line in out.splitlines())
+        if len(s) >= 2 and s[0].startswith(".") and s[1].isdigit()
+    }
 
 
 def board_build(work, trials, board):
     processor, single, muscles, trial = board
     export = trials[trial]["export"]
     build = os.path.join(work, "boards", f"{processor}_{muscles}")
-    result = {"processor": processor, "precision": "float" if single else "double",
-              "max_muscles": muscles, "trial": trial}
+    result = {
+        "processor": processor,
+        "precision": "float" if single else "double",
+        "max_muscles": muscles,
+        "trial": trial,
+    }
     try:
-        make(export, build, "CC=arm-none-eabi-gcc", "AR=arm-none-eabi-ar",
-             f"MAX_MUSCLES={muscles}", f"TARGET_FLAGS={ARM_FLAGS[processor]}",
-             "EXTRA_CFLAGS=-fstack-usage -fcallgraph-info=su", *(["FLOAT=1"] if single else []),
-             target="lib")
+        make(
+            export,
+            build,
+            "CC=arm-none-eabi-gcc",
+            "AR=arm-none-eabi-ar",
+            f"MAX_MUSCLES={muscles}",
+            f"TARGET_FLAGS={ARM_FLAGS[processor]}",
+            "EXTRA_CFLAGS=-fstack-usage -fcallgraph-info=su",
+            *(["FLOAT=1"] if single else []),
+            target="lib",
+        )
     except Failed as e:
         return {**result, "error": str(e).replace(work, "TMP")}
     lib = arm_size(os.path.join(build, "libpamctl.a"))
@@ -320,23 +453,39 @@ def board_build(work, trials, board):
     nodes, edges = call_graph(build)
     stack, path = deepest("pamctl_tick", nodes, edges)
     dynamic = sorted({q for _, _, q in nodes.values() if q and "dynamic" in q})
-    return {**result, "flash": lib["text"] + lib["data"], "lib_ram": lib["data"] + lib["bss"],
-            "state_ram": loop.get(".bss", 0) + loop.get(".data", 0), "stack": stack,
-            "path": path, "dynamic": dynamic}
+    return {
+        **result,
+        "flash": lib["text"] + lib["data"],
+        "lib_ram": lib["data"] + lib["bss"],
+        "state_ram": loop.get(".bss", 0) + loop.get(".data", 0),
+        "stack": stack,
+        "path": path,
+        "dynamic": dynamic,
+    }
 
 
 def qemu_replay(work, trial):
     """drop_mass's export built for ARMv7-A Linux (static) and replayed under qemu-arm."""
     build = os.path.join(work, "qemu")
-    make(trial["export"], build, "CC=arm-linux-gnueabihf-gcc", "AR=arm-linux-gnueabihf-ar",
-         "LDFLAGS=-static")
+    make(
+        trial["export"],
+        build,
+        "CC=arm-linux-gnueabihf-gcc",
+        "AR=arm-linux-gnueabihf-ar",
+        "LDFLAGS=-static",
+    )
     out = os.path.join(work, "qemu.csv")
-    result = replay(["qemu-arm", "-L", "/usr/arm-linux-gnueabihf",
-                     os.path.join(build, "pamctl_replay")], trial["readings"], out)
-    if not result["equal"]:   # where it first moved: an estimate or only a command
+    result = replay(
+        ["qemu-arm", "-L", "/usr/arm-linux-gnueabihf", os.path.join(build, "pamctl_replay")],
+        trial["readings"],
+        out,
+    )
+    if not result["equal"]:  # where it first moved: an estimate or only a command
         host, arm = read_columns(os.path.join(work, trial["name"], "gcc.csv")), read_columns(out)
-        result["first_column"] = next(((t, c) for t in range(len(host["tick"])) for c in host
-                                       if host[c][t] != arm[c][t]), None)
+        result["first_column"] = next(
+            ((t, c) for t in range(len(host["tick"])) for c in host if host[c][t] != arm[c][t]),
+            None,
+        )
     return result
 
 
@@ -360,8 +509,10 @@ def main():
     os.chdir(ROOT)
     missing = [t for t in TOOLS if not shutil.which(t)]
     if missing or not os.access(pamsim, os.X_OK):
-        sys.exit(f"embedded_check: not found: {', '.join(missing or [pamsim])} "
-                 f"(scripts/install-deps.sh installs the compilers and qemu-user)")
+        sys.exit(
+            f"embedded_check: not found: {', '.join(missing or [pamsim])} "
+            f"(scripts/install-deps.sh installs the compilers and qemu-user)"
+        )
     started = time.time()
     work = tempfile.mkdtemp(prefix="embedded_check_")
     try:
@@ -374,16 +525,27 @@ def main():
         boards = [board_build(work, trials, b) for b in BOARDS]
         qemu = qemu_replay(work, trials["drop_mass"])
     except Failed as e:
-        sys.exit(f"embedded_check: {e}" + (f" (in {work})" if args.keep else " (--keep keeps "
-                                            "the temporary folder)"))
+        sys.exit(
+            f"embedded_check: {e}"
+            + (f" (in {work})" if args.keep else " (--keep keeps the temporary folder)")
+        )
     finally:
         if not args.keep:
             shutil.rmtree(work, ignore_errors=True)
-    passed = write_report(os.path.join(out, "embedded.md"), list(trials.values()), user, boards,
-                          qemu, versions(), ARM_FLAGS)
-    print(f"embedded_check: wrote {os.path.join(out, 'embedded.md')} in "
-          f"{time.time() - started:.0f} s; " + ("every double build equal" if passed else
-                                                "FAILED: see the report"))
+    passed = write_report(
+        os.path.join(out, "embedded.md"),
+        list(trials.values()),
+        user,
+        boards,
+        qemu,
+        versions(),
+        ARM_FLAGS,
+    )
+    print(
+        f"embedded_check: wrote {os.path.join(out, 'embedded.md')} in "
+        f"{time.time() - started:.0f} s; "
+        + ("every double build equal" if passed else "FAILED: see the report")
+    )
     return 0 if passed else 1
 
 

@@ -10,6 +10,7 @@ after the first (max - min over max), the lowest of them [mm], the pattern.
 
     python3 scripts/hop_patterns.py [--pamsim build/src/sim/pamsim]
 """
+
 import argparse
 import csv
 import itertools
@@ -22,7 +23,7 @@ DURATION_S = 5.0
 
 
 def steps(times, values):
-    return "{ kind = \"steps\", times_s = %s, MPa = %s }" % (times, values)
+    return f'{{ kind = "steps", times_s = {times}, MPa = {values} }}'
 
 
 def overrides(low, crouch_s, push_s, flex, biarticular):
@@ -39,18 +40,25 @@ def overrides(low, crouch_s, push_s, flex, biarticular):
     for m in ("IL", "BFS", "TA"):
         sets.append(f"muscles.{m}.command={steps(times, flx)}")
     if not biarticular:
-        sets += [f"muscles.{m}.command={{ kind = \"constant\", MPa = 0.4 }}" for m in ("RF", "GAS")]
+        sets += [f'muscles.{m}.command={{ kind = "constant", MPa = 0.4 }}' for m in ("RF", "GAS")]
     return sets
 
 
 def apexes(pamsim, sets):
     with tempfile.TemporaryDirectory() as tmp:
-        cmd = [pamsim, "run", os.path.join(ROOT, "scenarios", "hopping.toml"), "--out",
-               os.path.join(tmp, "run"), "--quiet"]
+        cmd = [
+            pamsim,
+            "run",
+            os.path.join(ROOT, "scenarios", "hopping.toml"),
+            "--out",
+            os.path.join(tmp, "run"),
+            "--quiet",
+        ]
         for s in sets:
             cmd += ["--set", s]
-        if subprocess.run(cmd, stdout=subprocess.DEVNULL,
-                          stderr=subprocess.DEVNULL).returncode not in (0, 4):
+        if subprocess.run(
+            cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
+        ).returncode not in (0, 4):
             return []
         with open(os.path.join(tmp, "run", "trajectory.csv")) as f:
             z = [float(r["position_mm"]) for r in csv.DictReader(f)]
@@ -63,15 +71,18 @@ def main():
     pamsim = os.path.abspath(parser.parse_args().pamsim)
     found = []
     for low, crouch, push, flex, biart in itertools.product(
-            [0.25, 0.35], [0.25, 0.35, 0.45], [0.1, 0.15, 0.2, 0.3], [0.3, 0.5], [False, True]):
+        [0.25, 0.35], [0.25, 0.35, 0.45], [0.1, 0.15, 0.2, 0.3], [0.3, 0.5], [False, True]
+    ):
         hops = apexes(pamsim, overrides(low, crouch, push, flex, biart))
         if len(hops) >= 5:
             later = hops[1:]
             spread = (max(later) - min(later)) / max(later)
             found.append((spread, len(hops), min(later), (low, crouch, push, flex, biart)))
     found.sort()
-    print("| hops | spread after the first | lowest [mm] | pattern: extensors low [MPa], crouch [s], "
-          "push [s], flexors [MPa], biarticular with extensors |")
+    print(
+        "| hops | spread after the first | lowest [mm] | pattern: extensors low [MPa], crouch [s], "
+        "push [s], flexors [MPa], biarticular with extensors |"
+    )
     print("| --- | --- | --- | --- |")
     for spread, n, lowest, pattern in found:
         print(f"| {n} | {100 * spread:.1f} % | {lowest:.1f} | {pattern} |")

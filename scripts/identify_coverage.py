@@ -23,6 +23,7 @@ writes OUT/coverage.csv (one row per arm and parameter) and OUT/coverage.md (the
 docs show); an interrupted run started again skips the arms it finished and resumes the one
 it was in (each arm's identify.db). About a minute per arm on 2 cores.
 """
+
 import argparse
 import csv
 import math
@@ -87,14 +88,30 @@ def identify_text(noise_seed):
     lines += [f"{k} = {v}" for k, v in SEARCH.items()]
     lines += ["seed = 1", "overrides = " + toml_list(MODEL_OVERRIDES), ""]
     for key, (_, (lo, hi), scale) in TRUTH_RANGES.items():
-        lines += ["[[parameter]]", f'key = "{key}"', f"from = {lo}", f"to = {hi}",
-                  f'scale = "{scale}"', ""]
+        lines += [
+            "[[parameter]]",
+            f'key = "{key}"',
+            f"from = {lo}",
+            f"to = {hi}",
+            f'scale = "{scale}"',
+            "",
+        ]
     for channel, (_, (lo, hi)) in OFFSET_RANGES.items():
-        lines += ["[[parameter]]", f'key = "channel.{channel}.offset"', f"from = {lo}",
-                  f"to = {hi}", ""]
+        lines += [
+            "[[parameter]]",
+            f'key = "channel.{channel}.offset"',
+            f"from = {lo}",
+            f"to = {hi}",
+            "",
+        ]
     for name, (sets, _, _, held_out) in RECORDINGS.items():
-        lines += ["[[recording]]", f'file = "{name}.csv"', f"set = {toml_list(sets)}",
-                  f"held_out = {'true' if held_out else 'false'}", ""]
+        lines += [
+            "[[recording]]",
+            f'file = "{name}.csv"',
+            f"set = {toml_list(sets)}",
+            f"held_out = {'true' if held_out else 'false'}",
+            "",
+        ]
     return "\n".join(lines)
 
 
@@ -104,8 +121,18 @@ def make_arm(pamsim, folder, truth, offsets, noise_seed, delays=None):
     sets = [f"{k}={v!r}" for k, v in truth.items()] + [f"seed={noise_seed}"]
     for name, (commands, channels, rate, _) in RECORDINGS.items():
         if not os.path.exists(os.path.join(folder, name + ".csv")):
-            make_recordings.record(pamsim, name, commands, channels, rate, None, folder,
-                                   truth=sets, offsets=offsets, delays=delays)
+            make_recordings.record(
+                pamsim,
+                name,
+                commands,
+                channels,
+                rate,
+                None,
+                folder,
+                truth=sets,
+                offsets=offsets,
+                delays=delays,
+            )
     path = os.path.join(folder, "identify.toml")
     with open(path + ".tmp", "w") as f:
         f.write(identify_text(noise_seed))
@@ -128,14 +155,25 @@ def identify(pamsim, path, threads):
         return out
     os.makedirs(out, exist_ok=True)
     write_atomically(made_from, text)
-    args = [pamsim, "identify", path, "--out", out, "--threads", str(threads), "--no-plot",
-            "--quiet"]
+    args = [
+        pamsim,
+        "identify",
+        path,
+        "--out",
+        out,
+        "--threads",
+        str(threads),
+        "--no-plot",
+        "--quiet",
+    ]
     if os.path.exists(os.path.join(out, "identify.db")):
         args.append("--resume")
     done = subprocess.run(args, stdout=subprocess.DEVNULL)
-    if done.returncode != 0:   # pamsim said why on stderr; the arm's database is kept
-        sys.exit(f"identify_coverage.py: pamsim identify {path} exited {done.returncode}; "
-                 "run the script again to resume")
+    if done.returncode != 0:  # pamsim said why on stderr; the arm's database is kept
+        sys.exit(
+            f"identify_coverage.py: pamsim identify {path} exited {done.returncode}; "
+            "run the script again to resume"
+        )
     return out
 
 
@@ -153,11 +191,22 @@ def arm_rows(arm, out, truth, offsets, level_z):
         t, v = known[p["key"]], float(p["identified"])
         se, plain = float(p["std_error"] or "nan"), float(p["std_error_plain"] or "nan")
         lo, hi = float(p["interval_lo"] or "nan"), float(p["interval_hi"] or "nan")
-        rows.append({"arm": arm, "key": p["key"], "truth": t, "identified": v, "std_error": se,
-                     "std_error_plain": plain, "interval_lo": lo, "interval_hi": hi,
-                     "inside": int(lo <= t <= hi),
-                     "inside_plain": int(abs(v - t) <= level_z * plain),
-                     "z": abs(v - t) / se if se > 0 else math.nan, "verdict": p["verdict"]})
+        rows.append(
+            {
+                "arm": arm,
+                "key": p["key"],
+                "truth": t,
+                "identified": v,
+                "std_error": se,
+                "std_error_plain": plain,
+                "interval_lo": lo,
+                "interval_hi": hi,
+                "inside": int(lo <= t <= hi),
+                "inside_plain": int(abs(v - t) <= level_z * plain),
+                "z": abs(v - t) / se if se > 0 else math.nan,
+                "verdict": p["verdict"],
+            }
+        )
     return rows
 
 
@@ -190,38 +239,49 @@ def pct(n, d):
 def summary(rows, arms, control, args):
     """coverage.md: per parameter and in all, against the claims the docs make."""
     keys = list(dict.fromkeys(r["key"] for r in rows))
-    md = [f"# `pamsim identify`: coverage over {len(arms)} synthetic arms", "",
-          f"`python3 scripts/identify_coverage.py --arms {args.arms} --seed {args.seed}"
-          f"{'' if args.starts == 1 else f' --starts {args.starts}'}"
-          f"{' --searched-offsets' if args.searched_offsets else ''}"
-          f"{f' --only {args.only}' if args.only else ''}`: "
-          "each arm's truth drawn from the script's ranges, its recordings made by pamsim "
-          "with a noise seed and instruments of its own; seven parameters fitted per arm.", "",
-          "| parameter | 95 % interval contains the truth | plain s^2 (J^T J)^-1 interval does "
-          "| median width, interval / plain | largest error in standard errors where "
-          "\"identified\" | \"identified\", the recordings explained |",
-          "| --- | --- | --- | --- | --- | --- |"]
+    md = [
+        f"# `pamsim identify`: coverage over {len(arms)} synthetic arms",
+        "",
+        f"`python3 scripts/identify_coverage.py --arms {args.arms} --seed {args.seed}"
+        f"{'' if args.starts == 1 else f' --starts {args.starts}'}"
+        f"{' --searched-offsets' if args.searched_offsets else ''}"
+        f"{f' --only {args.only}' if args.only else ''}`: "
+        "each arm's truth drawn from the script's ranges, its recordings made by pamsim "
+        "with a noise seed and instruments of its own; seven parameters fitted per arm.",
+        "",
+        "| parameter | 95 % interval contains the truth | plain s^2 (J^T J)^-1 interval does "
+        "| median width, interval / plain | largest error in standard errors where "
+        '"identified" | "identified", the recordings explained |',
+        "| --- | --- | --- | --- | --- | --- |",
+    ]
     for key in keys + ["all"]:
         rs = [r for r in rows if key in ("all", r["key"])]
         ident = [r for r in rs if trusted(r)]
-        md.append(f"| `{key}` | {pct(sum(r['inside'] for r in rs), len(rs))} | "
-                  f"{pct(sum(r['inside_plain'] for r in rs), len(rs))} | "
-                  f"{median([r['std_error'] / r['std_error_plain'] for r in rs]):.2f} | "
-                  f"{max([r['z'] for r in ident], default=math.nan):.1f} | "
-                  f"{pct(len(ident), len(rs))} |")
+        md.append(
+            f"| `{key}` | {pct(sum(r['inside'] for r in rs), len(rs))} | "
+            f"{pct(sum(r['inside_plain'] for r in rs), len(rs))} | "
+            f"{median([r['std_error'] / r['std_error_plain'] for r in rs]):.2f} | "
+            f"{max([r['z'] for r in ident], default=math.nan):.1f} | "
+            f"{pct(len(ident), len(rs))} |"
+        )
     far = sum(1 for r in rows if trusted(r) and r["z"] > 5)
     good = sum(1 for a in arms if a["explained"] and a["identified"])
-    md += ["", f"- Parameter-arm pairs whose interval contains the truth: "
-               f"{pct(sum(r['inside'] for r in rows), len(rows))} (claim: at least 90 %).",
-           f"- \"identified\" but more than 5 standard errors from the truth: {far} (claim: none).",
-           f"- Arms \"explained\" with every parameter \"identified\": {pct(good, len(arms))} "
-           "(claim: at least 80 %).",
-           f"- Held-out angle RMSE, median over the arms: "
-           f"{median([a['before'] for a in arms]):.3g} deg before, "
-           f"{median([a['after'] for a in arms]):.3g} deg after."]
+    md += [
+        "",
+        f"- Parameter-arm pairs whose interval contains the truth: "
+        f"{pct(sum(r['inside'] for r in rows), len(rows))} (claim: at least 90 %).",
+        f'- "identified" but more than 5 standard errors from the truth: {far} (claim: none).',
+        f'- Arms "explained" with every parameter "identified": {pct(good, len(arms))} '
+        "(claim: at least 80 %).",
+        f"- Held-out angle RMSE, median over the arms: "
+        f"{median([a['before'] for a in arms]):.3g} deg before, "
+        f"{median([a['after'] for a in arms]):.3g} deg after.",
+    ]
     if control is not None:
-        md.append(f"- The control arm (encoder read {CONTROL_DELAY_S * 1000:.0f} ms late, a delay "
-                  f"the model lacks): {'explained (a miss)' if control else 'does not explain'}.")
+        md.append(
+            f"- The control arm (encoder read {CONTROL_DELAY_S * 1000:.0f} ms late, a delay "
+            f"the model lacks): {'explained (a miss)' if control else 'does not explain'}."
+        )
     return "\n".join(md) + "\n"
 
 
@@ -235,9 +295,14 @@ def rows_csv(rows):
     fields = list(rows[0].keys())
     lines = [",".join(fields)]
     for r in rows:
-        lines.append(",".join(f'"{r[f]}"' if f == "verdict" else
-                              (f"{r[f]:.6g}" if isinstance(r[f], float) else str(r[f]))
-                              for f in fields))
+        lines.append(
+            ",".join(
+                f'"{r[f]}"'
+                if f == "verdict"
+                else (f"{r[f]:.6g}" if isinstance(r[f], float) else str(r[f]))
+                for f in fields
+            )
+        )
     return "\n".join(lines) + "\n"
 
 
@@ -249,23 +314,38 @@ def main():
     ap.add_argument("--pamsim", default=os.path.join(ROOT, "build", "src", "sim", "pamsim"))
     ap.add_argument("--out", default=os.path.join(ROOT, "renders", "identify_coverage"))
     ap.add_argument("--no-control", action="store_true", help="skip the misspecified arm")
-    ap.add_argument("--starts", type=int, default=1,
-                    help="the polish's starts per arm (identify's `starts`, 1 to 20)")
-    ap.add_argument("--searched-offsets", action="store_true",
-                    help="CMA-ES searches the offsets like the other parameters (identify's "
-                         "profile_offsets = false) instead of setting them at their best")
-    ap.add_argument("--only", default="",
-                    help="identify only these of the --arms arms, e.g. 6,8 (each drawn as in "
-                         "the full run)")
+    ap.add_argument(
+        "--starts",
+        type=int,
+        default=1,
+        help="the polish's starts per arm (identify's `starts`, 1 to 20)",
+    )
+    ap.add_argument(
+        "--searched-offsets",
+        action="store_true",
+        help="CMA-ES searches the offsets like the other parameters (identify's "
+        "profile_offsets = false) instead of setting them at their best",
+    )
+    ap.add_argument(
+        "--only",
+        default="",
+        help="identify only these of the --arms arms, e.g. 6,8 (each drawn as in the full run)",
+    )
     args = ap.parse_args()
     try:
         only = {int(a) for a in args.only.split(",") if a.strip()}
     except ValueError:
         sys.exit(f"identify_coverage.py: --only must list arm numbers, got {args.only!r}")
-    if args.arms < 1 or args.threads < 1 or not 1 <= args.starts <= 20 or \
-            any(not 0 <= a < args.arms for a in only):
-        sys.exit("identify_coverage.py: --arms and --threads must be at least 1, --starts "
-                 "within [1, 20], --only's arms below --arms")
+    if (
+        args.arms < 1
+        or args.threads < 1
+        or not 1 <= args.starts <= 20
+        or any(not 0 <= a < args.arms for a in only)
+    ):
+        sys.exit(
+            "identify_coverage.py: --arms and --threads must be at least 1, --starts "
+            "within [1, 20], --only's arms below --arms"
+        )
     SEARCH["starts"] = args.starts
     SEARCH["profile_offsets"] = "false" if args.searched_offsets else "true"
     rng = random.Random(args.seed)
@@ -275,21 +355,34 @@ def main():
         if only and i not in only:
             continue
         folder = os.path.join(args.out, f"arm_{i:02d}")
-        out = identify(args.pamsim, make_arm(args.pamsim, folder, truth, offsets, 100 + i),
-                       args.threads)
+        out = identify(
+            args.pamsim, make_arm(args.pamsim, folder, truth, offsets, 100 + i), args.threads
+        )
         r = arm_rows(i, out, truth, offsets, 1.959963984540054)
         fitted, before, after = explained(out)
-        arms.append({"explained": fitted, "before": before, "after": after,
-                     "identified": all(trusted(x) for x in r)})
+        arms.append(
+            {
+                "explained": fitted,
+                "before": before,
+                "after": after,
+                "identified": all(trusted(x) for x in r),
+            }
+        )
         rows += r
-        print(f"arm {i:02d}: {sum(x['inside'] for x in r)}/{len(r)} inside, "
-              f"{'explained' if fitted else 'NOT explained'}", flush=True)
+        print(
+            f"arm {i:02d}: {sum(x['inside'] for x in r)}/{len(r)} inside, "
+            f"{'explained' if fitted else 'NOT explained'}",
+            flush=True,
+        )
     control = None
     if not args.no_control:
         truth, offsets = draw_arm(random.Random(args.seed + 10**6))
         folder = os.path.join(args.out, "control_delayed_encoder")
-        out = identify(args.pamsim, make_arm(args.pamsim, folder, truth, offsets, 99,
-                                             {"angle_deg": CONTROL_DELAY_S}), args.threads)
+        out = identify(
+            args.pamsim,
+            make_arm(args.pamsim, folder, truth, offsets, 99, {"angle_deg": CONTROL_DELAY_S}),
+            args.threads,
+        )
         control = explained(out)[0]
     write_atomically(os.path.join(args.out, "coverage.csv"), rows_csv(rows))
     write_atomically(os.path.join(args.out, "coverage.md"), summary(rows, arms, control, args))

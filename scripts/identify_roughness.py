@@ -10,6 +10,7 @@ dead time's effect (the roughness `pamsim identify` reports, docs/identification
 
     python3 scripts/identify_roughness.py [--pamsim build/src/sim/pamsim]
 """
+
 import argparse
 import math
 import os
@@ -20,12 +21,15 @@ sys.path.insert(0, os.path.join(ROOT, "examples", "identify"))
 import make_recordings  # noqa: E402  (the example's commands)
 
 STEP_MS = 0.01
-TOLERANCES = {   # name: the solver's keys as --set
-    "the pneumatics file's (relative 1e-4, absolute 1 Pa)":
-        ["pneumatics.solver.relative_tolerance=1e-4", "pneumatics.solver.absolute_tolerance_Pa=1"],
-    "the example arm's (relative 1e-8, absolute 0.001 Pa)":
-        ["pneumatics.solver.relative_tolerance=1e-8",
-         "pneumatics.solver.absolute_tolerance_Pa=0.001"],
+TOLERANCES = {  # name: the solver's keys as --set
+    "the pneumatics file's (relative 1e-4, absolute 1 Pa)": [
+        "pneumatics.solver.relative_tolerance=1e-4",
+        "pneumatics.solver.absolute_tolerance_Pa=1",
+    ],
+    "the example arm's (relative 1e-8, absolute 0.001 Pa)": [
+        "pneumatics.solver.relative_tolerance=1e-8",
+        "pneumatics.solver.absolute_tolerance_Pa=0.001",
+    ],
 }
 
 
@@ -43,16 +47,24 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--pamsim", default=os.path.join(ROOT, "build", "src", "sim", "pamsim"))
     args = ap.parse_args()
-    print(f"| solver tolerance | angle's first differences, RMS [deg] per {STEP_MS} ms "
-          "| second differences, RMS [deg] |")
+    print(
+        f"| solver tolerance | angle's first differences, RMS [deg] per {STEP_MS} ms "
+        "| second differences, RMS [deg] |"
+    )
     print("| --- | --- | --- |")
     for name, solver in TOLERANCES.items():
         ys = [angle(args.pamsim, round(6.0 + k * STEP_MS, 6), solver) for k in range(-4, 5)]
-        first = [rms([b - a for a, b in zip(ys[k], ys[k + 1])]) for k in range(len(ys) - 1)]
-        second = [rms([a - 2 * b + c for a, b, c in zip(ys[k - 1], ys[k], ys[k + 1])])
-                  for k in range(1, len(ys) - 1)]
-        print(f"| {name} | {' '.join(f'{v:.2g}' for v in first)} "
-              f"| {' '.join(f'{v:.2g}' for v in second)} |")
+        first = [
+            rms([b - a for a, b in zip(ys[k], ys[k + 1], strict=False)]) for k in range(len(ys) - 1)
+        ]
+        second = [
+            rms([a - 2 * b + c for a, b, c in zip(ys[k - 1], ys[k], ys[k + 1], strict=False)])
+            for k in range(1, len(ys) - 1)
+        ]
+        print(
+            f"| {name} | {' '.join(f'{v:.2g}' for v in first)} "
+            f"| {' '.join(f'{v:.2g}' for v in second)} |"
+        )
 
 
 if __name__ == "__main__":

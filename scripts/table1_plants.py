@@ -15,9 +15,9 @@ Prints Markdown; writes it to OUT/table1_plants.md too.
 
     python3 scripts/table1_plants.py [--pamsim build/src/sim/pamsim] [--out renders/findings]
 """
+
 import argparse
 import csv
-import math
 import os
 import subprocess
 import sys
@@ -51,17 +51,29 @@ def options(doc):
 # pressures [MPa] (Yoshida and Hosoda, Sec. II-B, for A-D; the arm's:
 # scripts/fit-estimators.sh), and Table IV's Eq. (2)-(3) where it has one (m, h, a0..a3)
 PLANTS = [
-    ("agonist", "plant_agonist.toml", 16.0, 4.0, [0.2, 0.3, 0.4, 0.5, 0.6, 0.7],
-     (-60.1, 170.1, 0.911, 0.256, 7.00, -0.201)),
-    ("antagonist", "plant_antagonist.toml", 16.1, 4.0, [0.2, 0.3, 0.4, 0.5, 0.6, 0.7],
-     (-70.3, 178.5, 22.4, -0.129, 1.24, 0.871)),
+    (
+        "agonist",
+        "plant_agonist.toml",
+        16.0,
+        4.0,
+        [0.2, 0.3, 0.4, 0.5, 0.6, 0.7],
+        (-60.1, 170.1, 0.911, 0.256, 7.00, -0.201),
+    ),
+    (
+        "antagonist",
+        "plant_antagonist.toml",
+        16.1,
+        4.0,
+        [0.2, 0.3, 0.4, 0.5, 0.6, 0.7],
+        (-70.3, 178.5, 22.4, -0.129, 1.24, 0.871),
+    ),
     ("PAM-A", "plant_pam_a.toml", 19.9, 6.0, [0.4, 0.5, 0.6, 0.7, 0.8], None),
     ("PAM-B", "plant_pam_b.toml", 13.4, 4.0, [0.4, 0.5, 0.6, 0.7, 0.8], None),
     ("PAM-C", "plant_pam_c.toml", 13.4, 4.0, [0.4, 0.5, 0.6, 0.7, 0.8], None),
     ("PAM-D (silicone)", "plant_pam_d.toml", 19.0, 6.0, [0.2, 0.3, 0.4, 0.5, 0.6], None),
 ]
 WALLS_MM = [0.5, 1.0]
-SHOWN_MPA = [0.2, 0.4, 0.6]   # where the free lengths and pulls are shown (A-C: 0.4-0.8)
+SHOWN_MPA = [0.2, 0.4, 0.6]  # where the free lengths and pulls are shown (A-C: 0.4-0.8)
 
 
 def table1_sets(shipped, sleeve_mm, tube_mm, wall_mm):
@@ -72,9 +84,12 @@ def table1_sets(shipped, sleeve_mm, tube_mm, wall_mm):
     with open(os.path.join("models", "pams", shipped), "rb") as f:
         plant = tomllib.load(f)
     scale = (sleeve_mm / plant["geometry"]["diameter_mm"]) ** 2
-    sets = [f"geometry.diameter_mm={sleeve_mm}", f"geometry.wall_thickness_mm={wall_mm}",
-            f"bladder.diameter_mm={tube_mm}"]
-    if "C10_MPa" not in plant["bladder"]:   # not silicone's explicit Yeoh constants
+    sets = [
+        f"geometry.diameter_mm={sleeve_mm}",
+        f"geometry.wall_thickness_mm={wall_mm}",
+        f"bladder.diameter_mm={tube_mm}",
+    ]
+    if "C10_MPa" not in plant["bladder"]:  # not silicone's explicit Yeoh constants
         sets += ['bladder.material="natural_rubber"', 'bladder.law="gent_gent"']
     for direction in ("extension", "contraction"):
         for area in ("A0_mm2", "A1_mm2"):
@@ -88,11 +103,29 @@ def tensile_and_fit(pamsim, plant, sets, pressures, folder, name):
     data = os.path.join(folder, name + ".csv")
     fit = os.path.join(folder, name + "_fit.toml")
     changes = [arg for change in sets for arg in ("--set", change)]
-    subprocess.run([pamsim, "tensile", "--plant", plant, *changes, "--pressures-MPa",
-                    ",".join(str(p) for p in pressures), "--max-deformation-mm", "7.5",
-                    "-o", data, "--force"], check=True, capture_output=True)
-    subprocess.run([pamsim, "fit", "--model", "eq3", data, "-o", fit, "--force"], check=True,
-                   capture_output=True)
+    subprocess.run(
+        [
+            pamsim,
+            "tensile",
+            "--plant",
+            plant,
+            *changes,
+            "--pressures-MPa",
+            ",".join(str(p) for p in pressures),
+            "--max-deformation-mm",
+            "7.5",
+            "-o",
+            data,
+            "--force",
+        ],
+        check=True,
+        capture_output=True,
+    )
+    subprocess.run(
+        [pamsim, "fit", "--model", "eq3", data, "-o", fit, "--force"],
+        check=True,
+        capture_output=True,
+    )
     free, pull = {}, {}
     with open(data) as f:
         for row in csv.DictReader(f):
@@ -124,8 +157,9 @@ def rows(pamsim, folder):
             plant = os.path.join("models", "pams", shipped)
             sets = table1_sets(shipped, sleeve, tube, wall)
             try:
-                free, pull, m = tensile_and_fit(pamsim, plant, sets, pressures, folder,
-                                                f"{name}_{wall}")
+                free, pull, m = tensile_and_fit(
+                    pamsim, plant, sets, pressures, folder, f"{name}_{wall}"
+                )
             except subprocess.CalledProcessError as e:
                 why = e.stderr.decode().strip().splitlines()[-1]
                 lines.append(f"| {name} | {sleeve} / {tube} | {wall} | {why} | | | |")
@@ -135,19 +169,23 @@ def rows(pamsim, folder):
                 ln = {p: table_iv(law, p)[0] for p in SHOWN_MPA}
                 f5 = {p: table_iv(law, p)[1] for p in SHOWN_MPA}
                 paper = f"{shown(ln, '{:.1f}')}; {law[0]}; {shown(f5, '{:.0f}')}"
-            lines.append(f"| {name} | {sleeve} / {tube} | {wall} | {shown(free, '{:.1f}')} | "
-                         f"{m:.1f} | {shown(pull, '{:.0f}')} |" + (f" {paper} |" if paper else " |"))
+            lines.append(
+                f"| {name} | {sleeve} / {tube} | {wall} | {shown(free, '{:.1f}')} | "
+                f"{m:.1f} | {shown(pull, '{:.0f}')} |" + (f" {paper} |" if paper else " |")
+            )
             print(lines[-1], file=sys.stderr)
     return lines
 
 
 def main():
     pamsim, out = options(__doc__)
-    lines = ["| muscle | Table I sleeve / tube [mm] | wall [mm] | free length at "
-             "0.2 / 0.4 / 0.6 MPa [mm] | fitted m [mm/MPa] | pull 5 mm past it at 0.2 / 0.4 / 0.6 "
-             "MPa [N] | "
-             "Table IV: l_n; m; pull |",
-             "| --- | --- | --- | --- | --- | --- | --- |"]
+    lines = [
+        "| muscle | Table I sleeve / tube [mm] | wall [mm] | free length at "
+        "0.2 / 0.4 / 0.6 MPa [mm] | fitted m [mm/MPa] | pull 5 mm past it at 0.2 / 0.4 / 0.6 "
+        "MPa [N] | "
+        "Table IV: l_n; m; pull |",
+        "| --- | --- | --- | --- | --- | --- | --- |",
+    ]
     with tempfile.TemporaryDirectory() as folder:
         lines += rows(pamsim, folder)
     publish("\n".join(lines) + "\n", out, "table1_plants.md")

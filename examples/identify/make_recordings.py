@@ -17,6 +17,7 @@ noise scripts/fit-estimators.sh gives the lab's sensors).
 writes FOLDER/{steps,sine,ramps,tensile_agonist}.csv. A test makes them into another folder
 and compares them with the committed ones, so that these are what this build makes.
 """
+
 import csv
 import os
 import subprocess
@@ -33,14 +34,32 @@ TRUTH = [
 ]
 # name: (commands as --set, channels, sampling rate [Hz], gap [s] or None)
 RECORDINGS = {
-    "steps": (['muscles.agonist.command={kind="steps", times_s=[0.0, 1.5, 3.5], MPa=[0.3, 0.5, 0.35]}'],
-              ["angle_deg", "p_meas_ago_MPa", "p_meas_anta_MPa", "force_meas_ago_N", "force_meas_anta_N"],
-              50.0, (2.0, 2.4)),
-    "sine": (['muscles.antagonist.command={kind="sine", offset_MPa=0.4, amplitude_MPa=0.15, period_s=3.0}'],
-             ["angle_deg", "force_meas_anta_N"], 40.0, None),
-    "ramps": (['muscles.agonist.command={kind="ramp", from_MPa=0.25, to_MPa=0.55, start_s=0.5, duration_s=5.0}',
-               'muscles.antagonist.command={kind="ramp", from_MPa=0.55, to_MPa=0.25, start_s=0.5, duration_s=5.0}'],
-              ["angle_deg"], 25.0, None),
+    "steps": (
+        ['muscles.agonist.command={kind="steps", times_s=[0.0, 1.5, 3.5], MPa=[0.3, 0.5, 0.35]}'],
+        ["angle_deg", "p_meas_ago_MPa", "p_meas_anta_MPa", "force_meas_ago_N", "force_meas_anta_N"],
+        50.0,
+        (2.0, 2.4),
+    ),
+    "sine": (
+        [
+            'muscles.antagonist.command={kind="sine", offset_MPa=0.4, amplitude_MPa=0.15, '
+            "period_s=3.0}"
+        ],
+        ["angle_deg", "force_meas_anta_N"],
+        40.0,
+        None,
+    ),
+    "ramps": (
+        [
+            'muscles.agonist.command={kind="ramp", from_MPa=0.25, to_MPa=0.55, start_s=0.5, '
+            "duration_s=5.0}",
+            'muscles.antagonist.command={kind="ramp", from_MPa=0.55, to_MPa=0.25, start_s=0.5, '
+            "duration_s=5.0}",
+        ],
+        ["angle_deg"],
+        25.0,
+        None,
+    ),
 }
 
 
@@ -52,8 +71,9 @@ def trajectory(pamsim, sets):
         for s in sets:
             args += ["--set", s]
         try:
-            done = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                                  text=True)
+            done = subprocess.run(
+                args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True
+            )
         except OSError as e:
             sys.exit(f"cannot run {pamsim}: {e.strerror}")
         if done.returncode != 0:
@@ -62,15 +82,16 @@ def trajectory(pamsim, sets):
             return list(csv.DictReader(f))
 
 
-def record(pamsim, name, sets, channels, rate_hz, gap, out_dir, truth=TRUTH, offsets=None,
-           delays=None):
+def record(
+    pamsim, name, sets, channels, rate_hz, gap, out_dir, truth=TRUTH, offsets=None, delays=None
+):
     """One recording: arm.toml run with `truth` and `sets`, `channels` kept at `rate_hz` (without
     the samples in `gap`), each channel shifted by its entry in `offsets` (an instrument's
     zero error, in the column's unit) and read late by its entry in `delays` [s] (an unmodelled
     delay); scripts/identify_coverage.py draws them."""
     offsets, delays = offsets or {}, delays or {}
     rows = trajectory(pamsim, truth + sets)
-    step = round(100.0 / rate_hz)   # the log is at 100 Hz
+    step = round(100.0 / rate_hz)  # the log is at 100 Hz
     out = os.path.join(out_dir, name + ".csv")
     with open(out + ".tmp", "w", newline="") as f:
         w = csv.writer(f)
@@ -80,7 +101,9 @@ def record(pamsim, name, sets, channels, rate_hz, gap, out_dir, truth=TRUTH, off
             if gap and gap[0] <= t < gap[1]:
                 continue
             seen = {c: rows[max(0, i - round(100.0 * delays.get(c, 0.0)))][c] for c in channels}
-            w.writerow([f"{t:.3f}"] + [f"{float(seen[c]) + offsets.get(c, 0.0):.5g}" for c in channels])
+            w.writerow(
+                [f"{t:.3f}"] + [f"{float(seen[c]) + offsets.get(c, 0.0):.5g}" for c in channels]
+            )
     os.replace(out + ".tmp", out)
     return out
 
@@ -96,15 +119,40 @@ def tensile(pamsim, out_dir):
         plant = os.path.join(tmp, "plant_agonist_true.toml")
         with open(plant, "w") as f:
             f.write(text)
-        subprocess.run([pamsim, "tensile", "--plant", plant, "-o", out, "--force", "--seed", "7",
-                        "--pressures-MPa", "0.2,0.3,0.4,0.5,0.6", "--max-deformation-mm", "15",
-                        "--noise-pressure-MPa", "0.001", "--noise-force-N", "0.5",
-                        "--noise-length-mm", "0.01"], check=True, stdout=subprocess.DEVNULL)
+        subprocess.run(
+            [
+                pamsim,
+                "tensile",
+                "--plant",
+                plant,
+                "-o",
+                out,
+                "--force",
+                "--seed",
+                "7",
+                "--pressures-MPa",
+                "0.2,0.3,0.4,0.5,0.6",
+                "--max-deformation-mm",
+                "15",
+                "--noise-pressure-MPa",
+                "0.001",
+                "--noise-force-N",
+                "0.5",
+                "--noise-length-mm",
+                "0.01",
+            ],
+            check=True,
+            stdout=subprocess.DEVNULL,
+        )
     return out
 
 
 def main():
-    pamsim = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "..", "build", "src", "sim", "pamsim")
+    pamsim = (
+        sys.argv[1]
+        if len(sys.argv) > 1
+        else os.path.join(HERE, "..", "..", "build", "src", "sim", "pamsim")
+    )
     out_dir = sys.argv[2] if len(sys.argv) > 2 else os.path.join(HERE, "recordings")
     os.makedirs(out_dir, exist_ok=True)
     for name, (sets, channels, rate, gap) in RECORDINGS.items():

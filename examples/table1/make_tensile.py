@@ -17,6 +17,7 @@ gauge's q is Table IV's).
 writes examples/table1/recordings/tensile_{agonist,antagonist}.csv and
 examples/table1/recordings/table4_{agonist,antagonist}_refit.toml.
 """
+
 import os
 import re
 import subprocess
@@ -27,7 +28,7 @@ import tomllib
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 PRESSURES_MPA = [0.2, 0.3, 0.4, 0.5, 0.6, 0.7]
-DEFORMATIONS_MM = [2.5 * k for k in range(7)]   # 0 .. 15 mm
+DEFORMATIONS_MM = [2.5 * k for k in range(7)]  # 0 .. 15 mm
 
 
 def table4_law(muscle):
@@ -41,7 +42,7 @@ def rows(law):
     """pamsim tensile's CSV rows: loading up to 15 mm, then unloading back to 0."""
     out = []
     for p in PRESSURES_MPA:
-        natural = law["h"] + law["m"] * p   # Eq. (2)
+        natural = law["h"] + law["m"] * p  # Eq. (2)
         back = DEFORMATIONS_MM[-2::-1]
         for direction, steps in (("loading", DEFORMATIONS_MM), ("unloading", back)):
             for d in steps:
@@ -66,18 +67,33 @@ def main():
     os.makedirs(folder, exist_ok=True)
     for muscle in ("agonist", "antagonist"):
         csv_path = os.path.join(folder, f"tensile_{muscle}.csv")
-        write_atomically(csv_path, "pressure_MPa,deformation_mm,force_N,length_mm,direction\n" +
-                         "\n".join(rows(table4_law(muscle))) + "\n")
+        write_atomically(
+            csv_path,
+            "pressure_MPa,deformation_mm,force_N,length_mm,direction\n"
+            + "\n".join(rows(table4_law(muscle)))
+            + "\n",
+        )
         with tempfile.TemporaryDirectory() as tmp:
             fitted = os.path.join(tmp, "refit.toml")
             # from the repository's root: the provenance names the files as the repository does
-            done = subprocess.run([os.path.abspath(pamsim), "fit", "--model", "eq3",
-                                   os.path.relpath(csv_path, ROOT), "--sensors-from",
-                                   f"models/pams/table4_{muscle}.toml", "-o", fitted],
-                                  stdout=subprocess.DEVNULL, cwd=ROOT)
-            if done.returncode != 0:   # pamsim fit has said why, in one line
+            done = subprocess.run(
+                [
+                    os.path.abspath(pamsim),
+                    "fit",
+                    "--model",
+                    "eq3",
+                    os.path.relpath(csv_path, ROOT),
+                    "--sensors-from",
+                    f"models/pams/table4_{muscle}.toml",
+                    "-o",
+                    fitted,
+                ],
+                stdout=subprocess.DEVNULL,
+                cwd=ROOT,
+            )
+            if done.returncode != 0:  # pamsim fit has said why, in one line
                 sys.exit(f"make_tensile.py: pamsim fit exited {done.returncode}")
-            with open(fitted) as f:   # the gauge's q stays; the geometry (its braid) goes
+            with open(fitted) as f:  # the gauge's q stays; the geometry (its braid) goes
                 text = re.sub(r"\n\[geometry\][^\[]*", "\n", f.read())
         write_atomically(os.path.join(folder, f"table4_{muscle}_refit.toml"), text)
         print(f"wrote {csv_path}")

@@ -13,6 +13,7 @@ Errors in input raise pamsim.InputError, a ValueError with pamsim's one-line mes
 With gymnasium installed, importing pamsim registers its environments (pamsim.envs):
 gymnasium.make("pamsim/DropMass-v0").
 """
+
 from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
@@ -32,7 +33,7 @@ from ._pamsim import (  # noqa: F401
     tensile_test,
 )
 
-if TYPE_CHECKING:   # numpy is imported when a value needs it; pandas only by frame()
+if TYPE_CHECKING:  # numpy is imported when a value needs it; pandas only by frame()
     import numpy as np
     import numpy.typing as npt
     import pandas

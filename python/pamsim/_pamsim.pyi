@@ -4,14 +4,15 @@
 """
 pamsim: PAM-driven arms with a stretch reflex (the compiled half)
 """
+
 import collections.abc
 import typing
 
 import numpy
 import numpy.typing
 
-class InputError(ValueError):
-    ...
+class InputError(ValueError): ...
+
 class SpringModel:
     """
     A fitted spring law, Eq. (2) with Eq. (3), (4) or (5) (paper units)
@@ -21,36 +22,52 @@ class SpringModel:
         """
         The [spring] of a PAM parameter file (models/pams/*.toml)
         """
-    def __init__(self, law: str, m_mm_per_MPa: typing.SupportsFloat | typing.SupportsIndex, h_mm: typing.SupportsFloat | typing.SupportsIndex, coefficients: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> None:
-        ...
-    def deformation_mm(self, pressure_MPa: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], force_N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
+    def __init__(
+        self,
+        law: str,
+        m_mm_per_MPa: typing.SupportsFloat | typing.SupportsIndex,
+        h_mm: typing.SupportsFloat | typing.SupportsIndex,
+        coefficients: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex],
+    ) -> None: ...
+    def deformation_mm(
+        self,
+        pressure_MPa: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
+        force_N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
+    ) -> typing.Any:
         """
         The law inverted for d [mm] (Eq. (10)); 0 where the line is slack or no root
         """
-    def force_N(self, pressure_MPa: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], deformation_mm: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
+    def force_N(
+        self,
+        pressure_MPa: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
+        deformation_mm: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
+    ) -> typing.Any:
         """
         Eq. (3)-(5): force [N]; d <= 0 is a slack line (0 N)
         """
-    def inversion_status(self, pressure_MPa: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], force_N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
+    def inversion_status(
+        self,
+        pressure_MPa: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
+        force_N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
+    ) -> typing.Any:
         """
         0 ok, 1 slack (f <= 0), 2 no physical root
         """
-    def natural_length_mm(self, pressure_MPa: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
+    def natural_length_mm(
+        self, pressure_MPa: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]
+    ) -> typing.Any:
         """
         Eq. (2): natural length [mm]
         """
     @property
-    def coefficients(self) -> list[float]:
-        ...
+    def coefficients(self) -> list[float]: ...
     @property
-    def h_mm(self) -> float:
-        ...
+    def h_mm(self) -> float: ...
     @property
-    def law(self) -> str:
-        ...
+    def law(self) -> str: ...
     @property
-    def m_mm_per_MPa(self) -> float:
-        ...
+    def m_mm_per_MPa(self) -> float: ...
+
 class Result:
     """
     A finished trial
@@ -64,77 +81,122 @@ class Result:
         trajectory.csv as `pamsim run` writes it
         """
     @property
-    def columns(self) -> list[str]:
-        ...
+    def columns(self) -> list[str]: ...
     @property
-    def summary(self) -> dict[str, typing.Any]:
-        ...
+    def summary(self) -> dict[str, typing.Any]: ...
     @property
     def values(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         rows x columns, one row per control tick
         """
+
 class Trial:
     """
     A trial stepped one control period at a time
     """
-    def __init__(self, scenario: str, overrides: typing.Any = None, seed: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
-        ...
+    def __init__(
+        self,
+        scenario: str,
+        overrides: typing.Any = None,
+        seed: typing.SupportsInt | typing.SupportsIndex | None = None,
+    ) -> None: ...
     def finish(self) -> Result:
         """
         The trial's Result (ended early if not done); then reset
         """
-    def observe(self) -> dict[str, typing.Any]:
-        ...
-    def render(self, width: typing.SupportsInt | typing.SupportsIndex = 640, height: typing.SupportsInt | typing.SupportsIndex = 480, camera: str = 'side', quality: str = 'fast', backend: str = '') -> numpy.typing.NDArray[numpy.uint8]:
+    def observe(self) -> dict[str, typing.Any]: ...
+    def render(
+        self,
+        width: typing.SupportsInt | typing.SupportsIndex = 640,
+        height: typing.SupportsInt | typing.SupportsIndex = 480,
+        camera: str = "side",
+        quality: str = "fast",
+        backend: str = "",
+    ) -> numpy.typing.NDArray[numpy.uint8]:
         """
         The state now as an RGB frame, a (height, width, 3) uint8 array (pamsim render's scene without its overlays)
         """
-    def reset(self, seed: typing.SupportsInt | typing.SupportsIndex | None = None) -> None:
-        ...
-    def step(self, pressure_commands_MPa: typing.Annotated[numpy.typing.ArrayLike, numpy.float64] | None = None) -> bool:
+    def reset(self, seed: typing.SupportsInt | typing.SupportsIndex | None = None) -> None: ...
+    def step(
+        self,
+        pressure_commands_MPa: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]
+        | None = None,
+    ) -> bool:
         """
         One control period; commands (one per muscle) replace the scenario's controller. False once the trial has ended
         """
     @property
-    def done(self) -> bool:
-        ...
+    def done(self) -> bool: ...
     @property
-    def muscles(self) -> list[str]:
-        ...
+    def muscles(self) -> list[str]: ...
     @property
     def command_max_MPa(self) -> float:
         """
         The valve's largest command [MPa] (valve.command_max_MPa)
         """
-def _cxx_force_loop_s(arg0: SpringModel, arg1: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg2: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> float:
-    ...
-def _cxx_step_s(scenario: str, overrides: typing.Any, periods: typing.SupportsInt | typing.SupportsIndex) -> float:
-    ...
-def fit(law: str, pressure_MPa: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], deformation_mm: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], force_N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], length_mm: typing.Annotated[numpy.typing.ArrayLike, numpy.float64] | None = None) -> dict[str, typing.Any]:
+
+def _cxx_force_loop_s(
+    arg0: SpringModel,
+    arg1: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
+    arg2: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
+) -> float: ...
+def _cxx_step_s(
+    scenario: str, overrides: typing.Any, periods: typing.SupportsInt | typing.SupportsIndex
+) -> float: ...
+def fit(
+    law: str,
+    pressure_MPa: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
+    deformation_mm: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
+    force_N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
+    length_mm: typing.Annotated[numpy.typing.ArrayLike, numpy.float64] | None = None,
+) -> dict[str, typing.Any]:
     """
     Least-squares fit of Eq. (2) and the law (Yoshida and Hosoda, Sec. II-B): {model, rmse_N, r2, points}
     """
+
 def fit_csv(law: str, path: str) -> dict[str, typing.Any]:
     """
     The same fit from a tensile CSV (pamsim tensile's format)
     """
+
 def read_sweep(path: str) -> dict[str, typing.Any]:
     """
     A sweep database's trials: {column: values} (numbers as float arrays)
     """
-def read_tensile_csv(path: str) -> dict[str, typing.Any]:
-    ...
+
+def read_tensile_csv(path: str) -> dict[str, typing.Any]: ...
 def read_tune(path: str) -> list[dict[str, typing.Any]]:
     """
     A tuning database's evaluations, in order
     """
-def run(scenario: str, overrides: typing.Any = None, seed: typing.SupportsInt | typing.SupportsIndex | None = None) -> Result:
+
+def run(
+    scenario: str,
+    overrides: typing.Any = None,
+    seed: typing.SupportsInt | typing.SupportsIndex | None = None,
+) -> Result:
     """
     Runs a scenario file's trial (overrides: ['key=value', ...] or {key: value}); the GIL is released while it runs
     """
-def tensile_test(law_or_plant: typing.Any, pressures_MPa: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex] = [0.4, 0.5, 0.6, 0.7, 0.8], step_mm: typing.SupportsFloat | typing.SupportsIndex = 2.5, max_deformation_mm: typing.SupportsFloat | typing.SupportsIndex = 20.0, noise_pressure_MPa: typing.SupportsFloat | typing.SupportsIndex = 0.0, noise_force_N: typing.SupportsFloat | typing.SupportsIndex = 0.0, noise_length_mm: typing.SupportsFloat | typing.SupportsIndex = 0.0, seed: typing.SupportsInt | typing.SupportsIndex = 1) -> dict[str, typing.Any]:
+
+def tensile_test(
+    law_or_plant: typing.Any,
+    pressures_MPa: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex] = [
+        0.4,
+        0.5,
+        0.6,
+        0.7,
+        0.8,
+    ],
+    step_mm: typing.SupportsFloat | typing.SupportsIndex = 2.5,
+    max_deformation_mm: typing.SupportsFloat | typing.SupportsIndex = 20.0,
+    noise_pressure_MPa: typing.SupportsFloat | typing.SupportsIndex = 0.0,
+    noise_force_N: typing.SupportsFloat | typing.SupportsIndex = 0.0,
+    noise_length_mm: typing.SupportsFloat | typing.SupportsIndex = 0.0,
+    seed: typing.SupportsInt | typing.SupportsIndex = 1,
+) -> dict[str, typing.Any]:
     """
     The virtual static tensile test on a SpringModel or a plant file (models/pams/plant_*.toml)
     """
+
 __version__: str

@@ -22,14 +22,18 @@ def make(**kwargs):
 def test_every_registered_environment_passes_the_checker():
     from gymnasium.utils.env_checker import check_env
 
-    for env_id, kwargs in (("pamsim/DropMass-v0", {}), ("pamsim/DropMass-Noisy-v0", {}),
-                           ("pamsim/Reaching-v0", {}), ("pamsim/Reaching-Noisy-v0", {}),
-                           ("pamsim/Landing-v0", {"duration_s": 0.3}),
-                           ("pamsim/Hopping-v0", {"duration_s": 0.3}),
-                           ("pamsim/DropMass-FastValve-v0", {}),
-                           ("pamsim/Reaching-FastValve-v0", {}),
-                           ("pamsim/DropMass-SlowValve-v0", {}),
-                           ("pamsim/Reaching-SlowValve-v0", {})):
+    for env_id, kwargs in (
+        ("pamsim/DropMass-v0", {}),
+        ("pamsim/DropMass-Noisy-v0", {}),
+        ("pamsim/Reaching-v0", {}),
+        ("pamsim/Reaching-Noisy-v0", {}),
+        ("pamsim/Landing-v0", {"duration_s": 0.3}),
+        ("pamsim/Hopping-v0", {"duration_s": 0.3}),
+        ("pamsim/DropMass-FastValve-v0", {}),
+        ("pamsim/Reaching-FastValve-v0", {}),
+        ("pamsim/DropMass-SlowValve-v0", {}),
+        ("pamsim/Reaching-SlowValve-v0", {}),
+    ):
         env = gymnasium.make(env_id, **kwargs)
         check_env(env.unwrapped, skip_render_check=True)
         env.close()
@@ -51,17 +55,20 @@ def test_the_observation_is_the_logs_measured_columns_at_the_same_tick():
     observations, _, _, _ = episode(env, 3, np.array([0.4, 0.4], dtype=np.float32))
     result = env.unwrapped.last_result
     log = pamsim.trajectory(result)
-    labels = env.unwrapped.muscles   # the log's muscle labels ("ago", "anta")
-    for k, obs in enumerate(observations[:-1]):   # the last step ends the trial
+    labels = env.unwrapped.muscles  # the log's muscle labels ("ago", "anta")
+    for k, obs in enumerate(observations[:-1]):  # the last step ends the trial
         expected = [_column(log, c, m)[k] for m in labels for c in MEASURED]
         np.testing.assert_array_equal(obs, np.array(expected), err_msg=f"tick {k}")
 
 
 def _column(log, measured, label):
     # "p_meas_MPa" -> "p_meas_ago_MPa": the muscle's label before the unit
-    stem, unit = {"p_meas_MPa": ("p_meas", "MPa"), "force_meas_N": ("force_meas", "N"),
-                  "length_est_mm": ("length_est", "mm"),
-                  "velocity_est_mm_s": ("velocity_est", "mm_s")}[measured]
+    stem, unit = {
+        "p_meas_MPa": ("p_meas", "MPa"),
+        "force_meas_N": ("force_meas", "N"),
+        "length_est_mm": ("length_est", "mm"),
+        "velocity_est_mm_s": ("velocity_est", "mm_s"),
+    }[measured]
     return log[f"{stem}_{label}_{unit}"]
 
 
@@ -125,11 +132,12 @@ def test_threaded_and_sync_vector_envs_give_the_same_episode_bytes():
 
     sync = gymnasium.vector.SyncVectorEnv(fns())
     threaded = ThreadedVectorEnv(fns(), threads=2)
-    steps = 150   # past the 70-step episodes: the autoresets are compared too
+    steps = 150  # past the 70-step episodes: the autoresets are compared too
     a, b = vector_episode(sync, steps), vector_episode(threaded, steps)
     assert a == b
-    made = gymnasium.make_vec("pamsim/DropMass-v0", num_envs=2,
-                              vectorization_mode="vector_entry_point", duration_s=0.7)
+    made = gymnasium.make_vec(
+        "pamsim/DropMass-v0", num_envs=2, vectorization_mode="vector_entry_point", duration_s=0.7
+    )
     assert isinstance(made, ThreadedVectorEnv) and made.num_envs == 2
     made.close()
 
@@ -137,8 +145,7 @@ def test_threaded_and_sync_vector_envs_give_the_same_episode_bytes():
 def test_gymnasiums_sync_and_async_vector_envs_run_it_alike():
     kwargs = {"num_envs": 2, "duration_s": 0.7}
     sync = gymnasium.make_vec("pamsim/DropMass-v0", vectorization_mode="sync", **kwargs)
-    asynchronous = gymnasium.make_vec("pamsim/DropMass-v0", vectorization_mode="async",
-                                      **kwargs)
+    asynchronous = gymnasium.make_vec("pamsim/DropMass-v0", vectorization_mode="async", **kwargs)
     assert vector_episode(sync, 20) == vector_episode(asynchronous, 20)
 
 
@@ -154,7 +161,7 @@ def test_a_slide_joints_scenario_observes_and_rewards_in_mm():
     assert obs[-2] == o["position_mm"] and obs[-1] == o["velocity_mm_s"]
     _, reward, _, _, _ = env.step(env.action_space.high)
     moved = env.unwrapped._trial.observe()["position_mm"] - env.unwrapped.start_position
-    assert reward == pytest.approx(-abs(moved) * 0.01, rel=1e-9)   # 100 Hz control
+    assert reward == pytest.approx(-abs(moved) * 0.01, rel=1e-9)  # 100 Hz control
     env.close()
 
 
@@ -165,7 +172,7 @@ def test_reaching_observes_its_target_ramp_and_rewards_the_tracking_error():
     obs, info = env.reset(seed=4)
     assert -60.0 <= info["final_deg"] <= -20.0
     start = env.unwrapped.start_position
-    hold = np.array([0.4, 0.4], dtype=np.float32)   # the calibrated posture's commands
+    hold = np.array([0.4, 0.4], dtype=np.float32)  # the calibrated posture's commands
     total, n = 0.0, 0
     while True:
         obs, reward, terminated, truncated, _ = env.step(hold)
@@ -180,7 +187,7 @@ def test_reaching_observes_its_target_ramp_and_rewards_the_tracking_error():
         n += 1
         if terminated or truncated:
             break
-    assert truncated and n == 259   # 2.6 s at 100 Hz, the reset's tick aside
+    assert truncated and n == 259  # 2.6 s at 100 Hz, the reset's tick aside
     assert total < 0.0
     infos = [gymnasium.make("pamsim/Reaching-v0").reset(seed=s)[1]["final_deg"] for s in (1, 2)]
     assert infos[0] != infos[1]
@@ -191,8 +198,12 @@ def test_a_scenario_env_rewards_its_summary_metrics_at_the_end():
     from pamsim.envs.data import data_dir
 
     scenario = str(data_dir() / "scenarios" / "drop_mass.toml")
-    env = gymnasium.make("pamsim/Scenario-v0", scenario=scenario, duration_s=1.5,
-                         reward={"peak_drop_deg": -1.0, "mass_retained": 2.0})
+    env = gymnasium.make(
+        "pamsim/Scenario-v0",
+        scenario=scenario,
+        duration_s=1.5,
+        reward={"peak_drop_deg": -1.0, "mass_retained": 2.0},
+    )
     env.reset(seed=2)
     rewards = []
     while True:
@@ -203,8 +214,9 @@ def test_a_scenario_env_rewards_its_summary_metrics_at_the_end():
     summary = info["summary"]
     assert all(r == 0.0 for r in rewards[:-1])
     assert rewards[-1] == pytest.approx(-summary["peak_drop_deg"] + 2.0 * summary["mass_retained"])
-    bad = gymnasium.make("pamsim/Scenario-v0", scenario=scenario, duration_s=1.2,
-                         reward={"no_such_metric": 1.0})
+    bad = gymnasium.make(
+        "pamsim/Scenario-v0", scenario=scenario, duration_s=1.2, reward={"no_such_metric": 1.0}
+    )
     bad.reset(seed=1)
     with pytest.raises(ValueError, match="no_such_metric"):
         while True:
@@ -219,16 +231,16 @@ def test_rgb_array_frames_show_the_state_and_pass_the_checker():
     from gymnasium.utils.env_checker import check_env
 
     env = gymnasium.make("pamsim/DropMass-v0", render_mode="rgb_array")
-    check_env(env.unwrapped)   # the render check included
+    check_env(env.unwrapped)  # the render check included
     env.reset(seed=1)
     first = env.render()
     assert first.shape == (480, 640, 3) and first.dtype == np.uint8
-    assert first.min() < first.max()   # a scene, not a blank frame
-    assert np.array_equal(env.render(), first)   # the same state, the same frame
-    for _ in range(80):   # past the drop at 0.3-0.6 s: the ball has fallen
+    assert first.min() < first.max()  # a scene, not a blank frame
+    assert np.array_equal(env.render(), first)  # the same state, the same frame
+    for _ in range(80):  # past the drop at 0.3-0.6 s: the ball has fallen
         env.step(np.array([0.4, 0.4], dtype=np.float32))
     assert not np.array_equal(env.render(), first)
-    assert env.unwrapped.metadata["render_fps"] == 100   # the control rate
+    assert env.unwrapped.metadata["render_fps"] == 100  # the control rate
     plain = gymnasium.make("pamsim/DropMass-v0")
     plain.reset(seed=1)
     assert plain.render() is None
@@ -242,7 +254,7 @@ def test_the_fast_valve_variant_fills_the_chambers_faster():
     def pressures(env_id):
         env = gymnasium.make(env_id, randomize=False, noise_scale=0.0)
         env.reset(seed=1)
-        for _ in range(5):   # a step of the agonist's command, 50 ms
+        for _ in range(5):  # a step of the agonist's command, 50 ms
             env.step(np.array([0.7, 0.4], dtype=np.float32))
         return env.unwrapped.trial.observe()["pressure_MPa"][0]
 
@@ -257,7 +269,7 @@ def test_the_slow_valve_variant_is_the_shipped_regulator():
     actions = rng.uniform(0.0, 0.8, size=(90, 2)).astype(np.float32)
 
     def run(env_id):
-        env = gymnasium.make(env_id, duration_s=0.9)   # the drop within it
+        env = gymnasium.make(env_id, duration_s=0.9)  # the drop within it
         obs, _ = env.reset(seed=4)
         trace = [obs.tobytes()]
         for action in actions:

@@ -4,6 +4,7 @@ sweep databases, and bad input raising ValueError with pamsim's message.
 
 Run by CTest (make test) with PYTHONPATH=<build>/python, PAMSIM_BINARY and PAMSIM_SOURCE_DIR.
 """
+
 import json
 import os
 import subprocess
@@ -46,8 +47,9 @@ def test_law_and_its_inversion_round_trip_over_arrays():
 def test_a_noise_free_tensile_test_fits_back_to_its_law():
     law = pamsim.SpringModel.from_file(AGONIST)
     data = pamsim.tensile_test(law, pressures_MPa=[0.3, 0.5, 0.7], step_mm=1.0)
-    fit = pamsim.fit("eq3", data["pressure_MPa"], data["deformation_mm"], data["force_N"],
-                     data["length_mm"])
+    fit = pamsim.fit(
+        "eq3", data["pressure_MPa"], data["deformation_mm"], data["force_N"], data["length_mm"]
+    )
     assert fit["r2"] == pytest.approx(1.0, abs=1e-12)
     np.testing.assert_allclose(fit["model"].coefficients, law.coefficients, rtol=1e-9)
     assert fit["model"].m_mm_per_MPa == pytest.approx(law.m_mm_per_MPa, rel=1e-9)
@@ -102,13 +104,22 @@ def test_a_python_controller_drives_the_valves():
     trial = pamsim.Trial(DROP, ["sim.duration_s=0.3", "drop.time_s=0.1"])
     assert len(trial.muscles) == 2
     obs = trial.observe()
-    assert set(obs) >= {"time_s", "angle_deg", "pressure_MPa", "command_MPa", "force_N",
-                        "length_mm", "length_est_mm", "reflex_active"}
+    assert set(obs) >= {
+        "time_s",
+        "angle_deg",
+        "pressure_MPa",
+        "command_MPa",
+        "force_N",
+        "length_mm",
+        "length_est_mm",
+        "reflex_active",
+    }
     # a proportional controller on the angle, in Python
     while trial.step(np.array([0.45, 0.45]) + 0.001 * np.array([1, -1]) * obs["angle_deg"]):
         obs = trial.observe()
         assert obs["command_MPa"] == pytest.approx(
-            np.array([0.45, 0.45]) + 0.001 * np.array([1, -1]) * obs["angle_deg"], abs=0.01)
+            np.array([0.45, 0.45]) + 0.001 * np.array([1, -1]) * obs["angle_deg"], abs=0.01
+        )
     result = trial.finish()
     assert result.summary["status"] == "ok"
 
@@ -185,9 +196,10 @@ def test_tuning_databases_read_evaluation_by_evaluation(tmp_path):
         'overrides = ["sim.duration_s=0.6", "drop.time_s=0.3", "drop.enabled=false", '
         '"reflex.enabled=false"]\n'
         'algorithm = "cmaes"\ngenerations = 2\npopulation = 5\nseed = 3\nseeds = 1\n'
-        'noise_scales = [0.0]\nheld_out_seeds = 0\n'
+        "noise_scales = [0.0]\nheld_out_seeds = 0\n"
         '[[parameter]]\nkey = "sensors.pressure_bias_MPa"\nfrom = -0.05\nto = 0.03\n'
-        '[[objective]]\nmetric = "length_est_rmse_pct"\n')
+        '[[objective]]\nmetric = "length_est_rmse_pct"\n'
+    )
     cli("tune", str(tune), "--out", str(tmp_path / "out"), "--db", str(tmp_path / "tune.db"))
     evaluations = pamsim.read_tune(str(tmp_path / "tune.db"))
     assert [e["evaluation"] for e in evaluations] == list(range(len(evaluations)))

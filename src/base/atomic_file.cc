@@ -69,7 +69,7 @@ std::string make_temp_beside(const std::string& path, TempKind kind, int* fd_out
 bool is_stream_output(const std::string& path) {
   if (path == "-") return true;
   struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) return false;   // (a new file)
+  if (::stat(path.c_str(), &st) != 0) return false;  // (a new file)
   return !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
 }
 

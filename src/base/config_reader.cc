@@ -20,9 +20,7 @@ std::vector<std::string> split_key(const std::string& key) {
   return parts;
 }
 
-ConfigReader::ConfigReader(const std::string& path) : name_(path) {
-  doc_ = parse_toml_file(path);
-}
+ConfigReader::ConfigReader(const std::string& path) : name_(path) { doc_ = parse_toml_file(path); }
 
 ConfigReader::ConfigReader(const std::string& text, const std::string& name) : name_(name) {
   doc_ = parse_toml_text(text, name);
@@ -41,7 +39,8 @@ void ConfigReader::apply_override(const std::string& assignment) {
   const std::string value = assignment.substr(eq + 1);
   const auto parts = split_key(key);
   for (const auto& p : parts) {
-    if (p.empty()) throw InputError(name_ + ": --set " + assignment + ": malformed key '" + key + "'");
+    if (p.empty())
+      throw InputError(name_ + ": --set " + assignment + ": malformed key '" + key + "'");
   }
 
   // parse the value as TOML; a bare word is taken as a string
@@ -192,7 +191,7 @@ std::string ConfigReader::require_path(const std::string& key, const std::string
 }
 
 std::vector<std::string> ConfigReader::get_string_list(const std::string& key,
-                                                     const std::vector<std::string>& fallback) {
+                                                       const std::vector<std::string>& fallback) {
   read_.insert(key);
   const toml::node* n = find(key);
   if (!n) {

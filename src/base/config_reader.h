@@ -15,7 +15,7 @@
 
 #include <toml++/toml.h>
 
-#include "base/format.h"   // format_value, for the messages
+#include "base/format.h"  // format_value, for the messages
 #include "base/input_error.h"
 #include "base/entry_keys.h"
 
@@ -103,7 +103,7 @@ class ConfigReader {
   toml::table doc_;
   std::string name_;
   std::set<std::string> read_;
-  mutable std::set<std::string> asked_;   // has() and is_table() queries
+  mutable std::set<std::string> asked_;  // has() and is_table() queries
   std::map<std::string, std::string> defaults_;
   std::set<std::string> overridden_;
 };
@@ -113,7 +113,7 @@ class ConfigReader {
 struct TableEntry {
   ConfigReader& in;
   const toml::table& table;
-  std::string where;   // "parameter[0]."
+  std::string where;  // "parameter[0]."
 
   // Refuses a key not in `keys` ("<where><key> is not a key of this table (...)") and a value
   // its row's type, range or names exclude (entry_value_problem).
@@ -150,9 +150,9 @@ std::vector<std::string> split_key(const std::string& key);
 
 // True if `s` is longer than `suffix` and ends with it (a key with a name before its suffix).
 inline bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() > suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
-
 
 // Runs `parse` (a parser of one value, which knows nothing of files), prefixing any
 // InputError it throws with the document's name: "<file>: <key>: <problem>".
@@ -161,7 +161,7 @@ auto in_file(const ConfigReader& in, F&& parse) -> decltype(parse()) {
   try {
     return parse();
   } catch (const InputError& e) {
-    InputErrorParts parts = e.parts();   // a key's error found in this file
+    InputErrorParts parts = e.parts();  // a key's error found in this file
     if (!parts.key.empty() && parts.file.empty()) parts.file = in.name();
     throw InputError(in.name() + ": " + e.what(), std::move(parts));
   }

@@ -60,13 +60,20 @@ std::string typed_allowed(const EntryKey& k) {
   switch (k.type) {
     case EntryType::kNumber:
       return std::isinf(k.range.lo) && std::isinf(k.range.hi) ? "a number" : k.range.text();
-    case EntryType::kInteger: return "an integer in " + k.range.text();
-    case EntryType::kBool: return "true | false";
-    case EntryType::kChoice: return names_text(k.choices);
-    case EntryType::kTexts: return k.allowed.empty() ? "a list of strings" : "";
-    case EntryType::kTable: return k.allowed.empty() ? "a table" : "";
-    case EntryType::kText: return k.allowed.empty() ? "a string" : "";
-    case EntryType::kAny: break;
+    case EntryType::kInteger:
+      return "an integer in " + k.range.text();
+    case EntryType::kBool:
+      return "true | false";
+    case EntryType::kChoice:
+      return names_text(k.choices);
+    case EntryType::kTexts:
+      return k.allowed.empty() ? "a list of strings" : "";
+    case EntryType::kTable:
+      return k.allowed.empty() ? "a table" : "";
+    case EntryType::kText:
+      return k.allowed.empty() ? "a string" : "";
+    case EntryType::kAny:
+      break;
   }
   return "";
 }
@@ -79,23 +86,30 @@ bool is_entry_key(const std::vector<EntryKey>& keys, const std::string& key) {
 
 std::string entry_value_problem(const std::vector<EntryKey>& keys, const std::string& key,
                                 const toml::node& value) {
-  const auto row = std::find_if(keys.begin(), keys.end(),
-                                [&](const EntryKey& k) { return key == k.name; });
+  const auto row =
+      std::find_if(keys.begin(), keys.end(), [&](const EntryKey& k) { return key == k.name; });
   if (row == keys.end()) {
     std::string names;
     for (const EntryKey& k : keys) names += (names.empty() ? "" : ", ") + k.name;
     return "is not a key of this table (" + names + ")";
   }
   switch (row->type) {
-    case EntryType::kNumber: return number_problem(*row, value);
-    case EntryType::kInteger: return integer_problem(*row, value);
-    case EntryType::kText: return value.is_string() ? "" : "must be a string";
-    case EntryType::kTexts: return texts_problem(value);
-    case EntryType::kBool: return value.is_boolean() ? "" : "must be true or false";
-    case EntryType::kChoice: return choice_problem(*row, value);
+    case EntryType::kNumber:
+      return number_problem(*row, value);
+    case EntryType::kInteger:
+      return integer_problem(*row, value);
+    case EntryType::kText:
+      return value.is_string() ? "" : "must be a string";
+    case EntryType::kTexts:
+      return texts_problem(value);
+    case EntryType::kBool:
+      return value.is_boolean() ? "" : "must be true or false";
+    case EntryType::kChoice:
+      return choice_problem(*row, value);
     case EntryType::kTable:
       return value.is_table() ? "" : "must be " + (row->allowed.empty() ? "a table" : row->allowed);
-    case EntryType::kAny: break;
+    case EntryType::kAny:
+      break;
   }
   return "";
 }
@@ -104,7 +118,7 @@ std::vector<KeyDoc> entry_key_docs(const std::string& array, const std::vector<E
   std::vector<KeyDoc> docs;
   for (const EntryKey& k : keys) {
     const std::string typed = typed_allowed(k);
-    const std::string allowed = typed.empty()      ? k.allowed
+    const std::string allowed = typed.empty()       ? k.allowed
                                 : k.allowed.empty() ? typed
                                                     : typed + "; " + k.allowed;
     docs.push_back({array + "[]." + k.name, k.unit, k.fallback, allowed, k.meaning});

@@ -13,7 +13,7 @@
 
 #include <toml++/toml.h>
 
-#include "base/key_table.h"   // KeyRange, KeyDoc
+#include "base/key_table.h"  // KeyRange, KeyDoc
 
 namespace pamsim {
 
@@ -23,13 +23,13 @@ enum class EntryType { kAny, kText, kTexts, kNumber, kInteger, kBool, kChoice, k
 
 struct EntryKey {
   std::string name;
-  std::string unit;       // "Hz"; "" for none; "(the key's)" where it is another key's
-  std::string allowed;    // what the type, range and names do not say ("below to"); may be ""
-  std::string fallback;   // "(required)", "1.0", ...
+  std::string unit;      // "Hz"; "" for none; "(the key's)" where it is another key's
+  std::string allowed;   // what the type, range and names do not say ("below to"); may be ""
+  std::string fallback;  // "(required)", "1.0", ...
   std::string meaning;
   EntryType type = EntryType::kAny;
-  KeyRange range{};                      // kNumber, kInteger: in `unit`
-  std::vector<std::string> choices{};    // kChoice
+  KeyRange range{};                    // kNumber, kInteger: in `unit`
+  std::vector<std::string> choices{};  // kChoice
 };
 
 // Whether `key` is one of `keys`' names.

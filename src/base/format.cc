@@ -18,7 +18,7 @@ std::string format_value(double v) {
 std::string format_shortest(double v) {
   if (std::isnan(v)) return "nan";
   char buf[40];
-  return std::string(buf, std::to_chars(buf, buf + sizeof(buf), v).ptr);   // shortest exact
+  return std::string(buf, std::to_chars(buf, buf + sizeof(buf), v).ptr);  // shortest exact
 }
 
 std::string format_with_error(double value, double error) {

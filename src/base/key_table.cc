@@ -28,13 +28,13 @@ const double* field(const NumberRow& row) {
 void read_number_row(ConfigReader& in, const std::string& key, const NumberRow& row) {
   if (!in.has(key)) {
     in.check(!row.required, key, "is required");
-    if (const double* si = field(row)) in.get_double(key, from_si(row, *si));   // the default
+    if (const double* si = field(row)) in.get_double(key, from_si(row, *si));  // the default
     return;
   }
   const double v = in.get_double(key, 0.0);
   in.check(row.range.contains(v), key,
-           "must be in " + row.range.text() + (row.unit.empty() ? "" : " " + row.unit) +
-               ", got " + format_value(v));
+           "must be in " + row.range.text() + (row.unit.empty() ? "" : " " + row.unit) + ", got " +
+               format_value(v));
   in.check(std::isfinite(row.si(v)), key,
            "is " + format_value(v) + ", beyond what a double holds in SI units");
   if (row.optional_target != nullptr) {
@@ -81,28 +81,27 @@ void read_key_rows(ConfigReader& in, const KeyTable& table) {
     const std::string k = key(row.name);
     const std::string value = in.get_string(k, row.get());
     if (!in.has(k)) continue;
-    in.check(allows(row, value), k,
-             "is \"" + value + "\", allowed " + choices_text(row));
+    in.check(allows(row, value), k, "is \"" + value + "\", allowed " + choices_text(row));
     row.set(value);
   }
   for (const BoolRow& row : table.bools) *row.target = in.get_bool(key(row.name), *row.target);
   for (const IntRow& row : table.ints) {
     const std::string k = key(row.name);
     const std::int64_t v = in.get_int(k, row.get());
-    in.check(v >= row.lo && v <= row.hi, k, "must be in " + int_range(row) + ", got " +
-                                                std::to_string(v));
+    in.check(v >= row.lo && v <= row.hi, k,
+             "must be in " + int_range(row) + ", got " + std::to_string(v));
     row.set(v);
   }
   for (const NumberRow& row : table.numbers) read_number_row(in, key(row.name), row);
   for (const TextRow& row : table.texts) {
     const std::string k = key(row.name);
-    *row.target = row.input_file ? in.get_input_path(k, *row.target)
-                                 : in.get_string(k, *row.target);
+    *row.target =
+        row.input_file ? in.get_input_path(k, *row.target) : in.get_string(k, *row.target);
     in.check(!row.required || !row.target->empty(), k, "is required");
   }
   for (const ListRow& row : table.lists) {
     const std::string k = key(row.name);
-    std::vector<double> shown;   // the default in the file's unit
+    std::vector<double> shown;  // the default in the file's unit
     for (double si : *row.target) shown.push_back(si / row.to_si);
     const std::vector<double> values = in.get_double_list(k, shown);
     if (!in.has(k)) continue;
@@ -110,7 +109,7 @@ void read_key_rows(ConfigReader& in, const KeyTable& table) {
     in.check(count.empty(), k, count);
     row.target->clear();
     for (std::size_t i = 0; i < values.size(); ++i) {
-      if (!row.range.contains(values[i])) {   // "<file>: <key>[i] must be in ..., got v"
+      if (!row.range.contains(values[i])) {  // "<file>: <key>[i] must be in ..., got v"
         const std::string problem = "[" + std::to_string(i) + "] " + out_of_range(row, values[i]);
         throw InputError(in.where(k) + problem, {in.name(), k, problem});
       }
@@ -191,8 +190,8 @@ void check_key_rows(const KeyTable& table) {
   }
   for (const ListRow& row : table.lists) {
     for (double si : *row.target) {
-      require_value(row.range.contains(si / row.to_si), row_key(table, row.name),
-                    list_allowed(row), si / row.to_si);
+      require_value(row.range.contains(si / row.to_si), row_key(table, row.name), list_allowed(row),
+                    si / row.to_si);
     }
   }
   for (const ChoiceRow& row : table.choices) {
@@ -235,12 +234,12 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
   std::vector<KeyDoc> docs;
   for (const KeyTable& t : tables) {
     for (const ChoiceRow& row : t.choices) {
-      docs.push_back({row_key(t, row.name), "", "\"" + row.get() + "\"", choices_text(row),
-                      row.doc});
+      docs.push_back(
+          {row_key(t, row.name), "", "\"" + row.get() + "\"", choices_text(row), row.doc});
     }
     for (const BoolRow& row : t.bools) {
-      docs.push_back({row_key(t, row.name), "", *row.target ? "true" : "false",
-                      "true | false", row.doc});
+      docs.push_back(
+          {row_key(t, row.name), "", *row.target ? "true" : "false", "true | false", row.doc});
     }
     for (const IntRow& row : t.ints) {
       docs.push_back({row_key(t, row.name), "",
@@ -255,15 +254,14 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
       docs.push_back({row_key(t, row.name), row.unit, fallback, row.range.text(), row.doc});
     }
     for (const TextRow& row : t.texts) {
-      std::string fallback = row.required                ? "(required)"
-                             : !row.fallback_doc.empty() ? row.fallback_doc
-                             : row.input_file && row.target->empty()
-                                 ? "(none)"
-                                 : "\"" + *row.target + "\"";
-      docs.push_back({row_key(t, row.name), "", fallback,
-                      row.input_file ? "a path to a file, relative to the file that gives it"
-                                     : "a string",
-                      row.doc});
+      std::string fallback = row.required                            ? "(required)"
+                             : !row.fallback_doc.empty()             ? row.fallback_doc
+                             : row.input_file && row.target->empty() ? "(none)"
+                                                                     : "\"" + *row.target + "\"";
+      docs.push_back(
+          {row_key(t, row.name), "", fallback,
+           row.input_file ? "a path to a file, relative to the file that gives it" : "a string",
+           row.doc});
     }
     for (const ListRow& row : t.lists) {
       std::string values;

@@ -25,12 +25,11 @@ struct KeyRange {
   bool lo_open = false;
   bool hi_open = false;
   bool contains(double v) const;
-  std::string text() const;   // "(0, 2]", "[200, 400]", "(0, inf)"
+  std::string text() const;  // "(0, 2]", "[200, 400]", "(0, inf)"
 };
 
 // The ranges most keys have: > 0, >= 0, and any finite value.
-inline constexpr KeyRange kPositiveRange{0.0, std::numeric_limits<double>::infinity(), true,
-                                         false};
+inline constexpr KeyRange kPositiveRange{0.0, std::numeric_limits<double>::infinity(), true, false};
 inline constexpr KeyRange kNonNegativeRange{0.0, std::numeric_limits<double>::infinity(), false,
                                             false};
 inline constexpr KeyRange kAnyRange{};
@@ -38,18 +37,18 @@ inline constexpr KeyRange kAnyRange{};
 // A number key: the file's value times to_si is written to *target (or *optional_target, a
 // field whose absence means "unset").
 struct NumberRow {
-  std::string name;   // "dead_time_ms"
-  std::string unit;   // "ms"; "" for a pure number
+  std::string name;  // "dead_time_ms"
+  std::string unit;  // "ms"; "" for a pure number
   double to_si = 1.0;
   KeyRange range;
   std::string doc;
   double* target = nullptr;
   std::optional<double>* optional_target = nullptr;
-  bool required = false;      // a file must give it (the field's value is no default)
-  std::string fallback_doc{};   // the default as a reference shows it, where it is not the
-                                // field's one value ("(Table II: 70 model, 25 fiber)")
-  double divisor = 1.0;   // SI = value * to_si / divisor: degrees as units::deg_to_rad
-                          // rounds them (to_si = pi, divisor = 180)
+  bool required = false;       // a file must give it (the field's value is no default)
+  std::string fallback_doc{};  // the default as a reference shows it, where it is not the
+                               // field's one value ("(Table II: 70 model, 25 fiber)")
+  double divisor = 1.0;        // SI = value * to_si / divisor: degrees as units::deg_to_rad
+                               // rounds them (to_si = pi, divisor = 180)
 
   double si(double value) const { return value * to_si / divisor; }
 };
@@ -60,16 +59,19 @@ struct IntRow {
   std::string doc;
   std::int64_t lo = 0;
   std::int64_t hi = 0;
-  std::function<void(std::int64_t)> set;   // sets the field
-  std::function<std::int64_t()> get;       // the field's value now
-  std::string fallback_doc{};   // the default as a reference shows it, where it is not the
-                                // field's one value ("(8, more for many parameters)")
+  std::function<void(std::int64_t)> set;  // sets the field
+  std::function<std::int64_t()> get;      // the field's value now
+  std::string fallback_doc{};  // the default as a reference shows it, where it is not the
+                               // field's one value ("(8, more for many parameters)")
 };
 
 // An IntRow bound to an integer field of any type whose range holds [lo, hi].
 template <typename Int>
 IntRow int_row(std::string name, std::string doc, std::int64_t lo, std::int64_t hi, Int* field) {
-  return {std::move(name), std::move(doc), lo, hi,
+  return {std::move(name),
+          std::move(doc),
+          lo,
+          hi,
           [field](std::int64_t v) { *field = static_cast<Int>(v); },
           [field] { return static_cast<std::int64_t>(*field); }};
 }
@@ -91,8 +93,8 @@ struct ListRow {
   std::size_t max_count = 0;
   std::string doc;
   std::vector<double>* target = nullptr;
-  std::string fallback_doc{};   // the default as a reference shows it ("(the model's)")
-  std::size_t min_count = 0;    // the fewest a given list may hold
+  std::string fallback_doc{};  // the default as a reference shows it ("(the model's)")
+  std::size_t min_count = 0;   // the fewest a given list may hold
 };
 
 // A free text key (a name, a source's citation), or a path to a file to read: given
@@ -102,10 +104,10 @@ struct TextRow {
   std::string name;
   std::string doc;
   std::string* target = nullptr;
-  std::string fallback_doc{};   // the default as a reference shows it, where the field's
-                                // empty value stands for another ("(the model's first joint)")
-  bool input_file = false;      // a path to a file to read (above)
-  bool required = false;        // a file must give it
+  std::string fallback_doc{};  // the default as a reference shows it, where the field's
+                               // empty value stands for another ("(the model's first joint)")
+  bool input_file = false;     // a path to a file to read (above)
+  bool required = false;       // a file must give it
 };
 
 // A key whose value is one of a few names.
@@ -113,8 +115,8 @@ struct ChoiceRow {
   std::string name;
   std::vector<std::string> allowed;
   std::string doc;
-  std::function<void(const std::string&)> set;   // sets the field from an allowed name
-  std::function<std::string()> get;              // the name the field holds now
+  std::function<void(const std::string&)> set;  // sets the field from an allowed name
+  std::function<std::string()> get;             // the name the field holds now
 };
 
 // A list of names (metric sets, bodies), each one of `allowed` (empty: any string), the
@@ -124,20 +126,20 @@ struct NameListRow {
   std::vector<std::string> allowed;
   std::string doc;
   std::vector<std::string>* target = nullptr;
-  std::string fallback_doc{};   // the default as a reference shows it, where it is not the
-                                // field's one value ("(drop: [...]; else ...)")
+  std::string fallback_doc{};  // the default as a reference shows it, where it is not the
+                               // field's one value ("(drop: [...]; else ...)")
 };
 
 // One TOML table of the file.
 struct KeyTable {
-  std::string name;   // "regulator"; "" for the file's top-level keys
+  std::string name;  // "regulator"; "" for the file's top-level keys
   std::vector<NumberRow> numbers;
   std::vector<ChoiceRow> choices;
   std::vector<BoolRow> bools{};
   std::vector<IntRow> ints{};
   std::vector<TextRow> texts{};
   std::vector<ListRow> lists{};
-  bool optional = false;   // the file may leave the whole table out (its required rows with it)
+  bool optional = false;  // the file may leave the whole table out (its required rows with it)
   std::vector<NameListRow> name_lists{};
 };
 
@@ -157,17 +159,17 @@ struct KeyDoc {
 // number must be a finite number within its range, a choice one of its names; each value
 // goes to its field. The top-level keys are table ""'s, a table inside table "a" is table
 // "a.b". A required row must be given when its table is in the file, and when the table's
-// parent is (the top level always is) unless the table is optional. Throws InputError "<path>: <table>.<key>: <problem>" (file_key_error) for an
-// unknown table or key, a wrong type, a value out of range or a required key missing.
-// Returns the keys given, dotted ("geometry.length_mm").
+// parent is (the top level always is) unless the table is optional. Throws InputError "<path>:
+// <table>.<key>: <problem>" (file_key_error) for an unknown table or key, a wrong type, a value out
+// of range or a required key missing. Returns the keys given, dotted ("geometry.length_mm").
 std::vector<std::string> read_key_tables(const toml::table& doc, const std::string& path,
                                          const std::vector<KeyTable>& tables);
 
 // One table of a larger document (a scenario's "reflex"), read by `in` (ConfigReader, which
 // marks the keys read and refuses the keys nobody reads): the choices first (a choice may set
 // other fields' defaults, as reflex.sensor sets Table II's), then the true/false keys, then
-// the integers, then the numbers. A key the document does not give leaves its field as it is (and is listed
-// among the reader's defaults); a given one must have its row's type and range. Throws
+// the integers, then the numbers. A key the document does not give leaves its field as it is (and
+// is listed among the reader's defaults); a given one must have its row's type and range. Throws
 // InputError "<file>: <table>.<key> <problem>" through ConfigReader::fail.
 void read_key_rows(ConfigReader& in, const KeyTable& table);
 

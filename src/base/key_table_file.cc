@@ -52,8 +52,7 @@ void read_choice(const std::string& path, const std::string& key, const ChoiceRo
   const auto value = node.value<std::string>();
   if (!value) throw file_key_error(path, key, "must be a string, allowed " + choices_text(row));
   if (allows(row, *value)) return row.set(*value);
-  throw file_key_error(path, key,
-                       "unknown value \"" + *value + "\", allowed " + choices_text(row));
+  throw file_key_error(path, key, "unknown value \"" + *value + "\", allowed " + choices_text(row));
 }
 
 void read_list(const std::string& path, const std::string& key, const ListRow& row,
@@ -81,7 +80,8 @@ void read_name_list(const std::string& path, const std::string& key, const NameL
   std::vector<std::string> names;
   for (std::size_t i = 0; i < list->size(); ++i) {
     const toml::node& item = *list->get(i);
-    if (!item.is_string()) throw file_key_error(path, key, "[" + std::to_string(i) + "] must be a string");
+    if (!item.is_string())
+      throw file_key_error(path, key, "[" + std::to_string(i) + "] must be a string");
     names.push_back(*item.value<std::string>());
   }
   const std::string problem = name_list_problem(row, names);
@@ -104,8 +104,8 @@ void read_key(const std::string& path, const KeyTable& table, const std::string&
     const auto v = node.value<std::int64_t>();
     if (!node.is_integer() || !v) throw file_key_error(path, key, "must be an integer");
     if (*v < row.lo || *v > row.hi) {
-      throw file_key_error(path, key, "value " + std::to_string(*v) +
-                                          " out of range, allowed " + int_range(row));
+      throw file_key_error(
+          path, key, "value " + std::to_string(*v) + " out of range, allowed " + int_range(row));
     }
     row.set(*v);
     return;
@@ -166,7 +166,7 @@ void read_entries(const std::string& path, const std::vector<KeyTable>& tables,
       continue;
     }
     if (table == nullptr || (sub != nullptr && name.empty())) {
-      std::string names;   // the tables this level holds
+      std::string names;  // the tables this level holds
       for (const KeyTable& t : tables) {
         const bool here = name.empty() ? !t.name.empty() && t.name.find('.') == std::string::npos
                                        : t.name.rfind(name + ".", 0) == 0;

@@ -59,16 +59,16 @@ inline std::string name_list_allowed(const NameListRow& row) {
 // "must be in (0, inf) mm, got -1"
 template <typename Row>
 std::string out_of_range(const Row& row, double v) {
-  return "must be in " + row.range.text() + (row.unit.empty() ? "" : " " + row.unit) +
-         ", got " + format_value(v);
+  return "must be in " + row.range.text() + (row.unit.empty() ? "" : " " + row.unit) + ", got " +
+         format_value(v);
 }
 
 // "up to 4 of (0, inf)", "1 to 4 of ...", "3 of ..."
 inline std::string list_allowed(const ListRow& row) {
-  const std::string count = row.min_count == row.max_count ? std::to_string(row.max_count)
-                            : row.min_count > 0 ? std::to_string(row.min_count) + " to " +
-                                                      std::to_string(row.max_count)
-                                                : "up to " + std::to_string(row.max_count);
+  const std::string count =
+      row.min_count == row.max_count ? std::to_string(row.max_count)
+      : row.min_count > 0 ? std::to_string(row.min_count) + " to " + std::to_string(row.max_count)
+                          : "up to " + std::to_string(row.max_count);
   return count + " of " + row.range.text();
 }
 

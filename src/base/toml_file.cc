@@ -26,9 +26,8 @@ toml::table parse_toml_text(const std::string& text, const std::string& name) {
     return toml::parse(text, name);
   } catch (const toml::parse_error& e) {
     const auto& where = e.source().begin;
-    throw InputError(name + ":" + std::to_string(where.line) + ":" +
-                     std::to_string(where.column) + ": TOML syntax error: " +
-                     std::string(e.description()));
+    throw InputError(name + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
+                     ": TOML syntax error: " + std::string(e.description()));
   }
 }
 
@@ -39,7 +38,7 @@ void require_input_file(const std::string& path, std::uintmax_t max_bytes) {
   }
   if (!S_ISREG(st.st_mode)) {
     throw InputError(path + (S_ISDIR(st.st_mode) ? ": is a folder, not a file"
-                                                  : ": not a regular file (a device or pipe)"));
+                                                 : ": not a regular file (a device or pipe)"));
   }
   if (static_cast<std::uintmax_t>(st.st_size) > max_bytes) {
     throw InputError(path + ": larger than " + std::to_string(max_bytes >> 20) +
@@ -48,14 +47,15 @@ void require_input_file(const std::string& path, std::uintmax_t max_bytes) {
 }
 
 std::string read_text_file(const std::string& path) {
-  if (path == "-") {   // standard input, as much as a file may hold
+  if (path == "-") {  // standard input, as much as a file may hold
     std::string text;
     char buffer[1 << 16];
     while (std::cin.read(buffer, sizeof(buffer)) || std::cin.gcount() > 0) {
       text.append(buffer, static_cast<std::size_t>(std::cin.gcount()));
       if (text.size() > kMaxTextInputBytes) {
         throw InputError("-: standard input is larger than " +
-                         std::to_string(kMaxTextInputBytes >> 20) + " MiB, not an input pamsim reads");
+                         std::to_string(kMaxTextInputBytes >> 20) +
+                         " MiB, not an input pamsim reads");
       }
     }
     return text;
@@ -71,7 +71,6 @@ std::string read_text_file(const std::string& path) {
 toml::table parse_toml_file(const std::string& path) {
   return parse_toml_text(read_text_file(path), path);
 }
-
 
 namespace {
 
@@ -90,7 +89,7 @@ bool is_bare_key(std::string_view key) {
 std::string key_text(std::string_view key) {
   if (is_bare_key(key)) return std::string(key);
   std::ostringstream out;
-  out << toml::toml_formatter{toml::value<std::string>(std::string(key)), kFormat};   // escaped
+  out << toml::toml_formatter{toml::value<std::string>(std::string(key)), kFormat};  // escaped
   return out.str();
 }
 
@@ -105,7 +104,8 @@ std::string toml_value_text(const toml::node& node) {
   if (const auto* f = node.as_floating_point()) return format_number(f->get());
   if (const toml::array* a = node.as_array()) {
     std::string out = "[";
-    for (std::size_t i = 0; i < a->size(); ++i) out += (i ? ", " : "") + toml_value_text(*a->get(i));
+    for (std::size_t i = 0; i < a->size(); ++i)
+      out += (i ? ", " : "") + toml_value_text(*a->get(i));
     return out + "]";
   }
   if (const toml::table* t = node.as_table()) {

@@ -16,7 +16,7 @@ toml::table parse_toml_text(const std::string& text, const std::string& name);
 // Inputs are regular files of a bounded size: a directory or a device (/dev/null would read
 // as an empty file and give the defaults silently, /dev/zero would be read without end) is
 // refused, and so is a file larger than `max_bytes`. Throws InputError "<path>: <problem>".
-inline constexpr std::uintmax_t kMaxTextInputBytes = 64u << 20;   // 64 MiB
+inline constexpr std::uintmax_t kMaxTextInputBytes = 64u << 20;  // 64 MiB
 void require_input_file(const std::string& path, std::uintmax_t max_bytes = kMaxTextInputBytes);
 
 // `path` as a file at `file` gives it: as it is when absolute (or empty), else relative to

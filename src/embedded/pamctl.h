@@ -76,10 +76,10 @@ pamctl_real pamctl_lowpass_step(pamctl_lowpass* filter, pamctl_real x);
  * and Eq. (2)'s natural length l_n = m p + h. */
 typedef enum { PAMCTL_LAW_EQ3 = 3, PAMCTL_LAW_EQ4 = 4, PAMCTL_LAW_EQ5 = 5 } pamctl_law;
 typedef struct {
-  int32_t law;                /* a pamctl_law */
-  pamctl_real m_m_per_pa;     /* Eq. (2) slope [m/Pa] */
-  pamctl_real h_m;            /* Eq. (2) intercept [m] */
-  pamctl_real coef[6];        /* paper order, unused entries 0 */
+  int32_t law;            /* a pamctl_law */
+  pamctl_real m_m_per_pa; /* Eq. (2) slope [m/Pa] */
+  pamctl_real h_m;        /* Eq. (2) intercept [m] */
+  pamctl_real coef[6];    /* paper order, unused entries 0 */
 } pamctl_spring;
 
 /* The law's number of coefficients (4, 6, 5; 0 for no law), and the exponents of p and d
@@ -94,9 +94,9 @@ pamctl_real pamctl_smallest_positive_root(pamctl_real a3, pamctl_real a2, pamctl
                                           pamctl_real f);
 
 typedef enum {
-  PAMCTL_INVERSION_OK = 0,        /* d > 0 solves f(p, d) = f */
-  PAMCTL_INVERSION_SLACK = 1,     /* f <= 0: a slack line, d = 0 (Fig. 7) */
-  PAMCTL_INVERSION_NO_ROOT = 2    /* f beyond what the law gives at p, or not finite */
+  PAMCTL_INVERSION_OK = 0,     /* d > 0 solves f(p, d) = f */
+  PAMCTL_INVERSION_SLACK = 1,  /* f <= 0: a slack line, d = 0 (Fig. 7) */
+  PAMCTL_INVERSION_NO_ROOT = 2 /* f beyond what the law gives at p, or not finite */
 } pamctl_inversion;
 /* Eq. (10): d from (p, f); *d_m is finite, 0 unless PAMCTL_INVERSION_OK. */
 pamctl_inversion pamctl_invert_spring(const pamctl_spring* spring, pamctl_real p_pa,
@@ -105,36 +105,36 @@ pamctl_inversion pamctl_invert_spring(const pamctl_spring* spring, pamctl_real p
 /* ---- one muscle's estimator --------------------------------------------------------- */
 
 typedef struct {
-  pamctl_spring spring;             /* the law the estimator inverts */
-  pamctl_real gauge_v_base_v;       /* Eq. (8)-(9) offset [V] */
-  pamctl_real gauge_q_v_per_n;      /* Eq. (8)-(9) slope [V/N], > 0 */
-  pamctl_real pressure_zero_v;      /* the pressure sensor's output at 0 Pa gauge [V] */
-  pamctl_real pressure_v_per_mpa;   /* its slope [V/MPa], > 0 */
-  pamctl_real pressure_min_v;       /* its output range [V]: outside, a flag */
+  pamctl_spring spring;           /* the law the estimator inverts */
+  pamctl_real gauge_v_base_v;     /* Eq. (8)-(9) offset [V] */
+  pamctl_real gauge_q_v_per_n;    /* Eq. (8)-(9) slope [V/N], > 0 */
+  pamctl_real pressure_zero_v;    /* the pressure sensor's output at 0 Pa gauge [V] */
+  pamctl_real pressure_v_per_mpa; /* its slope [V/MPa], > 0 */
+  pamctl_real pressure_min_v;     /* its output range [V]: outside, a flag */
   pamctl_real pressure_max_v;
-  pamctl_real gauge_min_v;          /* the gauge amplifier's output range [V] */
+  pamctl_real gauge_min_v; /* the gauge amplifier's output range [V] */
   pamctl_real gauge_max_v;
 } pamctl_muscle_config;
 
 typedef struct {
-  pamctl_lowpass pressure_filter;   /* on p, sensors.pressure_lowpass_hz */
-  pamctl_lowpass velocity_filter;   /* on Eq. (11)'s v, reflex.lowpass_hz */
-  pamctl_lowpass fiber_filter;      /* on the fiber rate, reflex.lowpass_hz */
+  pamctl_lowpass pressure_filter; /* on p, sensors.pressure_lowpass_hz */
+  pamctl_lowpass velocity_filter; /* on Eq. (11)'s v, reflex.lowpass_hz */
+  pamctl_lowpass fiber_filter;    /* on the fiber rate, reflex.lowpass_hz */
   bool started;
   pamctl_real last_length_m;
   pamctl_real last_valid_d_m;
-  int32_t missed_ticks;             /* ticks held since the last valid reading */
+  int32_t missed_ticks; /* ticks held since the last valid reading */
 } pamctl_muscle_state;
 
 typedef struct {
-  pamctl_real pressure_pa;          /* p as the estimate uses it (filtered if configured) */
-  pamctl_real force_n;              /* Eq. (9); negative with noise (then slack); NaN: none */
-  pamctl_real d_m;                  /* Eq. (10), >= 0 */
-  pamctl_real length_m;             /* Eq. (1) */
-  pamctl_real velocity_m_s;         /* Eq. (11), filtered if configured */
-  pamctl_real fiber_velocity_m_s;   /* the fiber rate, filtered like v */
-  int32_t inversion;                /* a pamctl_inversion */
-  uint32_t flags;                   /* PAMCTL_FLAG_* of this muscle at this tick */
+  pamctl_real pressure_pa;        /* p as the estimate uses it (filtered if configured) */
+  pamctl_real force_n;            /* Eq. (9); negative with noise (then slack); NaN: none */
+  pamctl_real d_m;                /* Eq. (10), >= 0 */
+  pamctl_real length_m;           /* Eq. (1) */
+  pamctl_real velocity_m_s;       /* Eq. (11), filtered if configured */
+  pamctl_real fiber_velocity_m_s; /* the fiber rate, filtered like v */
+  int32_t inversion;              /* a pamctl_inversion */
+  uint32_t flags;                 /* PAMCTL_FLAG_* of this muscle at this tick */
 } pamctl_estimate;
 
 /* The pressure sensor's line: (V - V_0) / s [MPa], in Pa. */
@@ -147,9 +147,8 @@ void pamctl_estimate_length(const pamctl_muscle_config* muscle, pamctl_real dt_s
                             pamctl_real gauge_v, pamctl_estimate* out);
 /* One muscle's tick from its raw readings, with the bad-input rules above. */
 void pamctl_estimate_muscle(const pamctl_muscle_config* muscle, pamctl_real dt_s,
-                            pamctl_muscle_state* state, pamctl_real pressure_v,
-                            pamctl_real gauge_v, pamctl_real fiber_rate_m_s,
-                            pamctl_estimate* out);
+                            pamctl_muscle_state* state, pamctl_real pressure_v, pamctl_real gauge_v,
+                            pamctl_real fiber_rate_m_s, pamctl_estimate* out);
 
 /* ---- the reflexes --------------------------------------------------------------------- */
 
@@ -177,28 +176,27 @@ typedef enum { PAMCTL_MODE_FOLLOW = 0, PAMCTL_MODE_LATCH = 1 } pamctl_mode;
 /* The stretch (Ia) reflex, Eq. (14): dp = k v while its window is open, v > v_thr triggers;
  * v followed (>= 0) or latched at the trigger. */
 typedef struct {
-  pamctl_real v_thr_m_s;       /* > 0 */
-  pamctl_real k_pa_s_per_m;    /* >= 0 */
-  int32_t mode;                /* a pamctl_mode */
+  pamctl_real v_thr_m_s;    /* > 0 */
+  pamctl_real k_pa_s_per_m; /* >= 0 */
+  int32_t mode;             /* a pamctl_mode */
   pamctl_window_config window;
 } pamctl_stretch_config;
 typedef struct {
   pamctl_window window;
   pamctl_real v_latched_m_s;
 } pamctl_stretch_state;
-pamctl_real pamctl_stretch_update(const pamctl_stretch_config* config,
-                                  pamctl_stretch_state* state, pamctl_real time_s,
-                                  pamctl_real velocity_m_s, bool may_trigger);
+pamctl_real pamctl_stretch_update(const pamctl_stretch_config* config, pamctl_stretch_state* state,
+                                  pamctl_real time_s, pamctl_real velocity_m_s, bool may_trigger);
 
 /* The tension (Ib) reflex: dp = k f while its window is open; f > f_thr, or its low-passed
  * backward-difference rate > df_thr (when df_thr > 0), triggers. A NaN tension triggers
  * nothing and leaves the rate as it was. */
 typedef struct {
-  pamctl_real f_thr_n;         /* > 0 */
-  pamctl_real df_thr_n_s;      /* >= 0, 0: off */
-  pamctl_real k_pa_per_n;      /* >= 0 */
-  int32_t mode;                /* a pamctl_mode */
-  pamctl_real rate_alpha;      /* the rate's low-pass, (0, 1] */
+  pamctl_real f_thr_n;    /* > 0 */
+  pamctl_real df_thr_n_s; /* >= 0, 0: off */
+  pamctl_real k_pa_per_n; /* >= 0 */
+  int32_t mode;           /* a pamctl_mode */
+  pamctl_real rate_alpha; /* the rate's low-pass, (0, 1] */
   pamctl_window_config window;
 } pamctl_tension_config;
 typedef struct {
@@ -210,9 +208,9 @@ typedef struct {
   pamctl_real f_latched_n;
 } pamctl_tension_state;
 void pamctl_tension_init(const pamctl_tension_config* config, pamctl_tension_state* state);
-pamctl_real pamctl_tension_update(const pamctl_tension_config* config,
-                                  pamctl_tension_state* state, pamctl_real period_s,
-                                  pamctl_real time_s, pamctl_real tension_n, bool may_trigger);
+pamctl_real pamctl_tension_update(const pamctl_tension_config* config, pamctl_tension_state* state,
+                                  pamctl_real period_s, pamctl_real time_s, pamctl_real tension_n,
+                                  bool may_trigger);
 
 /* ---- the controller ------------------------------------------------------------------- */
 
@@ -222,13 +220,13 @@ typedef enum { PAMCTL_SENSOR_MODEL = 0, PAMCTL_SENSOR_FIBER = 1 } pamctl_sensor;
 /* The reflex controller's settings (pamsim's controller kinds stretch_reflex,
  * tension_reflex and stretch_tension_reflex). */
 typedef struct {
-  bool enabled;                          /* reflex.enabled */
-  bool stretch;                          /* the Ia reflexes run */
-  bool tension;                          /* the Ib reflexes run */
-  int32_t sensor;                        /* a pamctl_sensor: v for the Ia reflex */
-  pamctl_real min_tension_n;             /* Ia trigger gate on the gauge (<= 0: off) */
-  bool reciprocal_trigger_inhibition;    /* no Ia trigger while the partner's window was open */
-  bool excite_antagonist;                /* Ib output also excites the partner */
+  bool enabled;                       /* reflex.enabled */
+  bool stretch;                       /* the Ia reflexes run */
+  bool tension;                       /* the Ib reflexes run */
+  int32_t sensor;                     /* a pamctl_sensor: v for the Ia reflex */
+  pamctl_real min_tension_n;          /* Ia trigger gate on the gauge (<= 0: off) */
+  bool reciprocal_trigger_inhibition; /* no Ia trigger while the partner's window was open */
+  bool excite_antagonist;             /* Ib output also excites the partner */
   pamctl_stretch_config ia;
   pamctl_tension_config ib;
 } pamctl_reflex_config;
@@ -239,21 +237,21 @@ typedef struct {
  * pamsim's rule for the Ib outputs (the paper gives none): every reflex reaches its own
  * muscle and the partner's, summed; e = 1 with excite_antagonist. */
 pamctl_real pamctl_pair_command(const pamctl_reflex_config* rc, const pamctl_real* p_tp_pa,
-                                const pamctl_real* dp_ia_pa, const pamctl_real* dp_ib_pa,
-                                int32_t j, int32_t o);
+                                const pamctl_real* dp_ia_pa, const pamctl_real* dp_ib_pa, int32_t j,
+                                int32_t o);
 /* A command clamped to the valve's range [0, p_max]; a non-finite one vents (0) and sets
  * PAMCTL_FLAG_COMMAND_VENTED in *flags. */
 pamctl_real pamctl_valve_command(pamctl_real p_pa, pamctl_real p_max_pa, uint32_t* flags);
 
 typedef struct {
-  int32_t muscle_count;                  /* [0, PAMCTL_MAX_MUSCLES] */
-  int32_t kind;                          /* a pamctl_kind */
-  pamctl_real control_period_s;          /* dt of Eq. (11), > 0 */
-  pamctl_real pressure_alpha;            /* the pressure low-pass, (0, 1] */
-  pamctl_real velocity_alpha;            /* the velocity and fiber low-pass, (0, 1] */
-  pamctl_real p_max_pa;                  /* the valve's range [0, p_max] (reflex kind) */
+  int32_t muscle_count;         /* [0, PAMCTL_MAX_MUSCLES] */
+  int32_t kind;                 /* a pamctl_kind */
+  pamctl_real control_period_s; /* dt of Eq. (11), > 0 */
+  pamctl_real pressure_alpha;   /* the pressure low-pass, (0, 1] */
+  pamctl_real velocity_alpha;   /* the velocity and fiber low-pass, (0, 1] */
+  pamctl_real p_max_pa;         /* the valve's range [0, p_max] (reflex kind) */
   pamctl_reflex_config reflex;
-  int32_t partner[PAMCTL_MAX_MUSCLES];   /* pair partner, -1: unpaired; symmetric */
+  int32_t partner[PAMCTL_MAX_MUSCLES]; /* pair partner, -1: unpaired; symmetric */
   pamctl_muscle_config muscles[PAMCTL_MAX_MUSCLES];
 } pamctl_config;
 
@@ -265,12 +263,12 @@ typedef struct {
 } pamctl_state;
 
 typedef struct {
-  pamctl_real time_s;                    /* since the start, >= 0 */
-  bool enabled;                          /* false: events switched the reflexes off */
+  pamctl_real time_s; /* since the start, >= 0 */
+  bool enabled;       /* false: events switched the reflexes off */
   pamctl_real pressure_v[PAMCTL_MAX_MUSCLES];
   pamctl_real gauge_v[PAMCTL_MAX_MUSCLES];
-  pamctl_real fiber_rate_m_s[PAMCTL_MAX_MUSCLES];   /* 0 where no fiber sensor is fitted */
-  pamctl_real p_tp_pa[PAMCTL_MAX_MUSCLES];          /* the scheduled goal pressures [Pa] */
+  pamctl_real fiber_rate_m_s[PAMCTL_MAX_MUSCLES]; /* 0 where no fiber sensor is fitted */
+  pamctl_real p_tp_pa[PAMCTL_MAX_MUSCLES];        /* the scheduled goal pressures [Pa] */
 } pamctl_input;
 
 /* flags per muscle (pamctl_estimate.flags) and their union (pamctl_output.status) */
@@ -280,8 +278,8 @@ typedef struct {
 #define PAMCTL_STATUS_UNCONFIGURED 0x100u
 
 typedef struct {
-  pamctl_real p_cmd_pa[PAMCTL_MAX_MUSCLES];       /* the valve commands [Pa] gauge */
-  pamctl_real velocity_m_s[PAMCTL_MAX_MUSCLES];   /* the v each muscle's control acted on */
+  pamctl_real p_cmd_pa[PAMCTL_MAX_MUSCLES];     /* the valve commands [Pa] gauge */
+  pamctl_real velocity_m_s[PAMCTL_MAX_MUSCLES]; /* the v each muscle's control acted on */
   bool ia_active[PAMCTL_MAX_MUSCLES];
   bool ia_triggered[PAMCTL_MAX_MUSCLES];
   bool ib_active[PAMCTL_MAX_MUSCLES];

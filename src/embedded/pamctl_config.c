@@ -63,9 +63,7 @@ const char* pamctl_config_error(int32_t code) {
 }
 
 static bool finite_positive(pamctl_real x) { return pamctl_isfinite(x) && x > PAMCTL_R(0.0); }
-static bool finite_nonnegative(pamctl_real x) {
-  return pamctl_isfinite(x) && x >= PAMCTL_R(0.0);
-}
+static bool finite_nonnegative(pamctl_real x) { return pamctl_isfinite(x) && x >= PAMCTL_R(0.0); }
 static bool unit_alpha(pamctl_real a) { return a > PAMCTL_R(0.0) && a <= PAMCTL_R(1.0); }
 static bool mode_ok(int32_t mode) {
   return mode == PAMCTL_MODE_FOLLOW || mode == PAMCTL_MODE_LATCH;

@@ -21,11 +21,9 @@ static void run_reflexes(const pamctl_config* config, pamctl_state* state, int j
   if (rc->stretch) {
     /* the stretch reflex, Eq. (14), behind the tension and reciprocal gates */
     const bool loaded = rc->min_tension_n <= PAMCTL_R(0.0) || force_n >= rc->min_tension_n;
-    const bool other_quiet =
-        !(rc->reciprocal_trigger_inhibition && was_active[config->partner[j]]);
-    const pamctl_real dp = pamctl_stretch_update(&rc->ia, &state->ia[j], time_s,
-                                                 out->velocity_m_s[j],
-                                                 enabled && loaded && other_quiet);
+    const bool other_quiet = !(rc->reciprocal_trigger_inhibition && was_active[config->partner[j]]);
+    const pamctl_real dp = pamctl_stretch_update(
+        &rc->ia, &state->ia[j], time_s, out->velocity_m_s[j], enabled && loaded && other_quiet);
     if (enabled) {
       dp_ia[j] = dp;
       out->ia_active[j] = state->ia[j].window.active;
@@ -34,9 +32,8 @@ static void run_reflexes(const pamctl_config* config, pamctl_state* state, int j
   }
   if (rc->tension) {
     /* the tension reflex on the gauge's tension, Eq. (8)-(9) */
-    const pamctl_real dp = pamctl_tension_update(&rc->ib, &state->ib[j],
-                                                 config->control_period_s, time_s, force_n,
-                                                 enabled);
+    const pamctl_real dp = pamctl_tension_update(&rc->ib, &state->ib[j], config->control_period_s,
+                                                 time_s, force_n, enabled);
     if (enabled) {
       dp_ib[j] = dp;
       out->ib_active[j] = state->ib[j].window.active;
@@ -56,9 +53,8 @@ pamctl_real pamctl_pair_command(const pamctl_reflex_config* rc, const pamctl_rea
 }
 
 /* the reflex kind: reflexes per paired muscle, then the commands */
-static void reflex_control(const pamctl_config* config, pamctl_state* state,
-                           pamctl_real time_s, bool enabled, const pamctl_real* p_tp_pa,
-                           pamctl_output* out) {
+static void reflex_control(const pamctl_config* config, pamctl_state* state, pamctl_real time_s,
+                           bool enabled, const pamctl_real* p_tp_pa, pamctl_output* out) {
   const int n = config->muscle_count;
   const pamctl_reflex_config* rc = &config->reflex;
   bool was_active[PAMCTL_MAX_MUSCLES];
@@ -79,8 +75,7 @@ static void reflex_control(const pamctl_config* config, pamctl_state* state,
   /* each pair's commands, unpaired muscles their schedule; all within the valve's range */
   for (int j = 0; j < n; ++j) {
     const int o = config->partner[j];
-    const pamctl_real p =
-        o < 0 ? p_tp_pa[j] : pamctl_pair_command(rc, p_tp_pa, dp_ia, dp_ib, j, o);
+    const pamctl_real p = o < 0 ? p_tp_pa[j] : pamctl_pair_command(rc, p_tp_pa, dp_ia, dp_ib, j, o);
     out->p_cmd_pa[j] = pamctl_valve_command(p, config->p_max_pa, &out->estimates[j].flags);
   }
 }

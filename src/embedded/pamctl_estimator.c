@@ -86,9 +86,8 @@ static void hold_estimate(const pamctl_muscle_config* muscle, const pamctl_muscl
 }
 
 void pamctl_estimate_muscle(const pamctl_muscle_config* muscle, pamctl_real dt_s,
-                            pamctl_muscle_state* state, pamctl_real pressure_v,
-                            pamctl_real gauge_v, pamctl_real fiber_rate_m_s,
-                            pamctl_estimate* out) {
+                            pamctl_muscle_state* state, pamctl_real pressure_v, pamctl_real gauge_v,
+                            pamctl_real fiber_rate_m_s, pamctl_estimate* out) {
   out->flags = 0u;
   /* readings outside their sensor's range are used, and flagged */
   if (outside(pressure_v, muscle->pressure_min_v, muscle->pressure_max_v) ||
@@ -97,8 +96,8 @@ void pamctl_estimate_muscle(const pamctl_muscle_config* muscle, pamctl_real dt_s
   }
   /* Eq. (9)-(11), or the last length held when a reading is missing */
   if (pamctl_isfinite(pressure_v) && pamctl_isfinite(gauge_v)) {
-    pamctl_estimate_length(muscle, dt_s, state, pamctl_pressure_pa(muscle, pressure_v),
-                           gauge_v, out);
+    pamctl_estimate_length(muscle, dt_s, state, pamctl_pressure_pa(muscle, pressure_v), gauge_v,
+                           out);
   } else {
     out->flags |= PAMCTL_FLAG_NONFINITE_READING;
     hold_estimate(muscle, state, gauge_v, out);

@@ -15,10 +15,18 @@ static const pamctl_term kEq5Terms[5] = {{0, 0}, {0, 2}, {1, 2}, {2, 1}, {3, 0}}
 /* the law's terms, Eq. (3), (4) or (5), and their count */
 static const pamctl_term* law_terms(int32_t law, int32_t* count) {
   switch (law) {
-    case PAMCTL_LAW_EQ3: *count = 4; return kEq3Terms;
-    case PAMCTL_LAW_EQ4: *count = 6; return kEq4Terms;
-    case PAMCTL_LAW_EQ5: *count = 5; return kEq5Terms;
-    default: *count = 0; return kEq3Terms;
+    case PAMCTL_LAW_EQ3:
+      *count = 4;
+      return kEq3Terms;
+    case PAMCTL_LAW_EQ4:
+      *count = 6;
+      return kEq4Terms;
+    case PAMCTL_LAW_EQ5:
+      *count = 5;
+      return kEq5Terms;
+    default:
+      *count = 0;
+      return kEq3Terms;
   }
 }
 
@@ -81,7 +89,10 @@ static pamctl_real bracketed_newton(const pamctl_cubic* g, pamctl_real lo, pamct
   for (int it = 0; it < 100; ++it) {
     const pamctl_real gx = cubic_value(g, x);
     if (gx == PAMCTL_R(0.0)) return x;
-    if (gx < PAMCTL_R(0.0)) lo = x; else hi = x;
+    if (gx < PAMCTL_R(0.0))
+      lo = x;
+    else
+      hi = x;
     pamctl_real next = x - gx / cubic_slope(g, x);
     if (!(next > lo && next < hi)) next = PAMCTL_R(0.5) * (lo + hi);
     if (pamctl_fabs(next - x) <= PAMCTL_R(4.0) * PAMCTL_EPSILON * pamctl_fabs(next)) return next;
@@ -151,7 +162,8 @@ static pamctl_real cubic_root(pamctl_real a3, pamctl_real a2, pamctl_real a1, pa
   for (int k = 0; k < n_crit; ++k) {
     const pamctl_real gk = cubic_value(&g, crit[k]);
     if (gk == PAMCTL_R(0.0)) return crit[k];
-    if (gk > PAMCTL_R(0.0)) return bracketed_newton(&g, lo, crit[k], initial_guess(&g, lo, crit[k]));
+    if (gk > PAMCTL_R(0.0))
+      return bracketed_newton(&g, lo, crit[k], initial_guess(&g, lo, crit[k]));
     lo = crit[k];
   }
 
@@ -164,8 +176,8 @@ static pamctl_real cubic_root(pamctl_real a3, pamctl_real a2, pamctl_real a1, pa
 
 pamctl_real pamctl_smallest_positive_root(pamctl_real a3, pamctl_real a2, pamctl_real a1,
                                           pamctl_real f) {
-  if (!(f > PAMCTL_R(0.0)) || !pamctl_isfinite(f) || !pamctl_isfinite(a1) ||
-      !pamctl_isfinite(a2) || !pamctl_isfinite(a3)) {
+  if (!(f > PAMCTL_R(0.0)) || !pamctl_isfinite(f) || !pamctl_isfinite(a1) || !pamctl_isfinite(a2) ||
+      !pamctl_isfinite(a3)) {
     return PAMCTL_R(-1.0);
   }
   if (a3 == PAMCTL_R(0.0)) return quadratic_root(a2, a1, f);

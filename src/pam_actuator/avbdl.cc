@@ -17,7 +17,6 @@ namespace {
 
 constexpr double kPi = units::kPi;
 
-
 // 8-point Gauss-Legendre rule on [-1, 1] (Abramowitz & Stegun, Table 25.4): positive nodes
 // and their weights; the rule is symmetric
 constexpr std::array<double, 4> kGaussNodes = {0.1834346424956498, 0.5255324099163290,
@@ -26,9 +25,7 @@ constexpr std::array<double, 4> kGaussWeights = {0.3626837833783620, 0.313706645
                                                  0.2223810344533745, 0.1012285362903763};
 
 // coefficients of eta(s) = sum c[i] s^i, the normalised end profile (avbdl.h)
-std::array<double, 4> profile_coefficients(double a) {
-  return {0.0, a, 3.0 - 2.0 * a, a - 2.0};
-}
+std::array<double, 4> profile_coefficients(double a) { return {0.0, a, 3.0 - 2.0 * a, a - 2.0}; }
 
 double profile(const std::array<double, 4>& c, double s) {
   return ((c[3] * s + c[2]) * s + c[1]) * s;
@@ -93,9 +90,9 @@ double bladder_limit_length(const AvbdlParams& p, const BraidGeometry& g, double
   const double target = 0.999 * p.bladder_gent.jm + 3.0;
   double l = std::sqrt(target);
   for (int i = 0; i < 8; ++i) l -= (l * l + 2.0 / l - target) / (2.0 * l - 2.0 / (l * l));
-  const double k = 2.0 * kPi * g.turns * l * rb;   // 2 pi n R at that stretch
+  const double k = 2.0 * kPi * g.turns * l * rb;  // 2 pi n R at that stretch
   const double b = g.fibre_length_m;
-  return k < b ? std::sqrt(b * b - k * k) : 0.0;   // k >= b: wider than the braid ever is
+  return k < b ? std::sqrt(b * b - k * k) : 0.0;  // k >= b: wider than the braid ever is
 }
 
 }  // namespace
@@ -108,8 +105,8 @@ AvbdlShape avbdl_shape(const AvbdlParams& p) {
   s.profile = profile_coefficients(p.end_slope);
   s.moments = profile_moments(p.end_slope);
   s.bladder_area = bladder_area(p);
-  s.min_length = std::max(s.braid.fibre_length_m / std::sqrt(3.0),
-                          bladder_limit_length(p, s.braid, s.rb));
+  s.min_length =
+      std::max(s.braid.fibre_length_m / std::sqrt(3.0), bladder_limit_length(p, s.braid, s.rb));
   return s;
 }
 
@@ -149,8 +146,7 @@ double dbladder_energy_dlength(const AvbdlParams& p, const Shape& shape, double 
   const double dr = dradius_squared_dlength(shape.braid, length_m) / (2.0 * r);
 
   // Eq. (21): dW/dlambda = sigma; the middle's stretch R / rb moves with dR/dL
-  const double dw_mid = area * (p.length_m - 2.0 * p.end_length_m) *
-                        bladder_stress(p, r / rb) / rb;
+  const double dw_mid = area * (p.length_m - 2.0 * p.end_length_m) * bladder_stress(p, r / rb) / rb;
   // at s the end radius moves by eta(s) dR/dL
   const double per_end = integrate_unit_interval([&](double s) {
     const double eta = profile(c, s);
@@ -165,8 +161,8 @@ double static_force(const AvbdlParams& p, const Shape& shape, double p_pa, doubl
   // Eq. (19): F dDL = p dV - dW_def with dDL = -dL, so Eq. (25) reads
   // F = -p dV/dL + dW_def/dL; the text lost (25)'s fraction bars and sign, this is the
   // sign for which the bladder's work lowers the pull of a contracted muscle
-  const double f = -p_pa * dvolume_dlength(p, shape, length_m) +
-                   dbladder_energy_dlength(p, shape, length_m);
+  const double f =
+      -p_pa * dvolume_dlength(p, shape, length_m) + dbladder_energy_dlength(p, shape, length_m);
   shape.memo_pressure_pa = p_pa;
   shape.memo_length_m = length_m;
   shape.memo_force_n = f;
@@ -179,11 +175,11 @@ constexpr double kFreeLengthFirstStep_m = 1e-6;
 constexpr int kFreeLengthWidenings = 16;
 
 double free_length(const AvbdlParams& p, const Shape& shape, double p_pa) {
-  if (std::isnan(p_pa)) return p_pa;   // no length for no pressure: the trial diverges
+  if (std::isnan(p_pa)) return p_pa;  // no length for no pressure: the trial diverges
   if (!(p_pa > 0.0)) return p.length_m;
   double lo = min_length(shape);
   const auto force = [&](double l) { return static_force(p, shape, p_pa, l); };
-  if (force(lo) >= 0.0) return lo;              // still pulling at the braid's limit
+  if (force(lo) >= 0.0) return lo;  // still pulling at the braid's limit
   double hi = p.length_m;
   if (force(hi) <= 0.0) {
     // a tube bladder below the pressure at which it meets the braid at L0: the braid must
@@ -208,7 +204,7 @@ double free_length_near(const AvbdlParams& p, const Shape& shape, double p_pa, d
   if (!(p_pa > 0.0) || !(near > lo && near < hi)) return free_length(p, shape, p_pa);
   const auto force = [&](double l) { return static_force(p, shape, p_pa, l); };
   double a = near, fa = force(a);
-  const double direction = fa > 0.0 ? -1.0 : 1.0;   // a pull: the root is shorter
+  const double direction = fa > 0.0 ? -1.0 : 1.0;  // a pull: the root is shorter
   double step = kFreeLengthFirstStep_m;
   for (int k = 0; k < kFreeLengthWidenings && fa != 0.0; ++k, step *= 8.0) {
     const double b = a + direction * step;
@@ -221,11 +217,10 @@ double free_length_near(const AvbdlParams& p, const Shape& shape, double p_pa, d
     }
     std::uintmax_t iterations = 100;
     const boost::math::tools::eps_tolerance<double> tolerance(kFreeLengthBits);
-    const auto [x, y] = direction < 0.0
-                            ? boost::math::tools::toms748_solve(force, b, a, fb, fa, tolerance,
-                                                                iterations)
-                            : boost::math::tools::toms748_solve(force, a, b, fa, fb, tolerance,
-                                                                iterations);
+    const auto [x, y] =
+        direction < 0.0
+            ? boost::math::tools::toms748_solve(force, b, a, fb, fa, tolerance, iterations)
+            : boost::math::tools::toms748_solve(force, a, b, fa, fb, tolerance, iterations);
     return 0.5 * (x + y);
   }
   return fa == 0.0 ? a : free_length(p, shape, p_pa);
@@ -300,12 +295,11 @@ double avbdl_bladder_energy(const AvbdlParams& p, double length_m) {
   // volume of the straight part, so that W depends on L only through the stretch (a tube
   // is stretched at L0 already: W is then counted from its unstretched state, which moves
   // no force, only the energy's zero)
-  const double w_mid = area * (p.length_m - 2.0 * p.end_length_m) *
-                       bladder_energy_density(p, r / rb);
+  const double w_mid =
+      area * (p.length_m - 2.0 * p.end_length_m) * bladder_energy_density(p, r / rb);
   // Eq. (24), ends: the paper's sum over x slices, as a Gauss rule over s = x / Ld
-  const double per_end = integrate_unit_interval([&](double s) {
-    return bladder_energy_density(p, (r0 + (r - r0) * profile(c, s)) / rb);
-  });
+  const double per_end = integrate_unit_interval(
+      [&](double s) { return bladder_energy_density(p, (r0 + (r - r0) * profile(c, s)) / rb); });
   return w_mid + 2.0 * area * p.end_length_m * per_end;
 }
 
@@ -339,8 +333,7 @@ double avbdl_length_at_force(const AvbdlParams& p, double p_pa, double f_n) {
   return 0.5 * (a + b);
 }
 
-double avbdl_force(const AvbdlParams& p, double p_pa, double length_m,
-                   double length_rate_m_per_s) {
+double avbdl_force(const AvbdlParams& p, double p_pa, double length_m, double length_rate_m_per_s) {
   return static_force(p, shape_of(p), p_pa, length_m) +
          avbdl_smooth_friction_force(p, p_pa, length_m, length_rate_m_per_s);
 }
@@ -366,7 +359,7 @@ double avbdl_line_muscle_length(const AvbdlParams& p, double p_pa, double taut_l
 
 double avbdl_line_muscle_length(const AvbdlParams& p, const AvbdlShape& shape, double p_pa,
                                 double taut_length_m) {
-  FreeLengthTrack none;   // no last root: the search over the whole stroke
+  FreeLengthTrack none;  // no last root: the search over the whole stroke
   return avbdl_line_muscle_length(p, shape, p_pa, taut_length_m, &none);
 }
 

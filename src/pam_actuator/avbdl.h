@@ -81,7 +81,7 @@
 #include "pam_actuator/chou_hannaford.h"
 #include "pam_actuator/maxwell_slip.h"
 #include "base/units.h"
-#include "pam_actuator/wickramatunge.h"   // StretchDirection
+#include "pam_actuator/wickramatunge.h"  // StretchDirection
 
 namespace pamsim {
 
@@ -105,8 +105,8 @@ inline constexpr MooneyRivlinConstants kSiliconeElastosilM4601{0.11e6, 0.0, 0.02
 
 // The Gent-Gent law, W = -(mu Jm / 2) ln(1 - (I1 - 3) / Jm) + C2 ln(I2 / 3) [Pa] (E. Pucci
 // and G. Saccomandi, "A note on the Gent model for rubber-like materials", Rubber Chem.
-// Technol. 75, 839 (2002)): Gent's finite extensibility Jm on I1 and a logarithmic I2 term for the small-strain
-// softening Gent lacks. mu, C2 >= 0, Jm > 0; defined while I1 - 3 < Jm.
+// Technol. 75, 839 (2002)): Gent's finite extensibility Jm on I1 and a logarithmic I2 term for the
+// small-strain softening Gent lacks. mu, C2 >= 0, Jm > 0; defined while I1 - 3 < Jm.
 struct GentGentConstants {
   double mu_pa = 0.0;
   double c2_pa = 0.0;
@@ -124,9 +124,9 @@ enum class BladderLaw { kMooneyRivlin, kGentGent };
 
 // One stroke direction's friction coefficients, all >= 0.
 struct AvbdlFrictionCoefficients {
-  double force_n = 0.0;            // F0: friction at p = 0 [N]
-  double pressure_area_m2 = 0.0;   // A0: per Pa of gauge pressure at eps = 0 [N/Pa = m^2]
-  double strain_area_m2 = 0.0;     // A1: growth of A0 per unit contraction strain [m^2]
+  double force_n = 0.0;           // F0: friction at p = 0 [N]
+  double pressure_area_m2 = 0.0;  // A0: per Pa of gauge pressure at eps = 0 [N/Pa = m^2]
+  double strain_area_m2 = 0.0;    // A1: growth of A0 per unit contraction strain [m^2]
 };
 
 // How the friction depends on motion: the smooth tanh(v / v_s) of the rate, or Maxwell-slip
@@ -134,11 +134,11 @@ struct AvbdlFrictionCoefficients {
 enum class FrictionModel { kSmooth, kMaxwellSlip };
 
 struct AvbdlFriction {
-  AvbdlFrictionCoefficients extension;     // while lengthening
-  AvbdlFrictionCoefficients contraction;   // while shortening
-  double velocity_scale_m_per_s = 1e-3;    // v_s of the tanh, > 0
+  AvbdlFrictionCoefficients extension;    // while lengthening
+  AvbdlFrictionCoefficients contraction;  // while shortening
+  double velocity_scale_m_per_s = 1e-3;   // v_s of the tanh, > 0
   FrictionModel model = FrictionModel::kSmooth;
-  MaxwellSlipParams slip;                  // the elements, for kMaxwellSlip
+  MaxwellSlipParams slip;  // the elements, for kMaxwellSlip
 };
 
 // Defaults: the Festo DMSP-20 as Pipan et al. Sec. 2.6 print it (D 20 mm, L 200 mm, fibre
@@ -147,17 +147,17 @@ struct AvbdlFriction {
 // in the text (Table 3 and Fig. 7 are lost): 2 mm is pamsim's assumption and the bladder
 // stands in with natural rubber.
 struct AvbdlParams {
-  double length_m = 0.200;                              // L0 at p = 0, > 0
-  double diameter_m = 0.020;                            // D0 = 2 R0, > 0
-  double braid_angle_rad = units::deg_to_rad(25.0);     // alpha0, in (0, 54.74 deg)
-  double wall_thickness_m = 0.002;                      // t >= 0 (R0 to R0 + t); 0: no loss
+  double length_m = 0.200;                           // L0 at p = 0, > 0
+  double diameter_m = 0.020;                         // D0 = 2 R0, > 0
+  double braid_angle_rad = units::deg_to_rad(25.0);  // alpha0, in (0, 54.74 deg)
+  double wall_thickness_m = 0.002;                   // t >= 0 (R0 to R0 + t); 0: no loss
   MooneyRivlinConstants bladder = kNaturalRubberTreloar;
-  BladderLaw bladder_law = BladderLaw::kMooneyRivlin;   // kGentGent: bladder_gent instead
+  BladderLaw bladder_law = BladderLaw::kMooneyRivlin;  // kGentGent: bladder_gent instead
   GentGentConstants bladder_gent = kNaturalRubberTreloarGentGent;
-  double bladder_diameter_m = 0.0;   // Db, the tube's outer diameter; 0: the braid's (above)
-  BladderRelaxation relaxation;      // the rubber's rate term (bladder_relaxation.h); none
-  double end_length_m = 0.032;                          // Ld >= 0; 0: no end regions
-  double end_slope = 2.0;                               // a in [0, 3]; 2: parabolic shoulder
+  double bladder_diameter_m = 0.0;  // Db, the tube's outer diameter; 0: the braid's (above)
+  BladderRelaxation relaxation;     // the rubber's rate term (bladder_relaxation.h); none
+  double end_length_m = 0.032;      // Ld >= 0; 0: no end regions
+  double end_slope = 2.0;           // a in [0, 3]; 2: parabolic shoulder
   AvbdlFriction friction;
 };
 
@@ -168,17 +168,17 @@ struct AvbdlParams {
 // parameters. A shape also remembers the last static force it computed (the force callback
 // and the step's muscle length ask for the same one): use a shape from one thread at a time.
 struct AvbdlProfileMoments {
-  double i1 = 0.0;   // integral of eta over [0, 1]
-  double i2 = 0.0;   // integral of eta^2
+  double i1 = 0.0;  // integral of eta over [0, 1]
+  double i2 = 0.0;  // integral of eta^2
 };
 struct AvbdlShape {
   BraidGeometry braid;
-  double r0 = 0.0;                    // fitting radius D0 / 2
-  double rb = 0.0;                    // the bladder's reference radius (its stretch R / rb)
-  std::array<double, 4> profile{};    // eta(s) coefficients
+  double r0 = 0.0;                  // fitting radius D0 / 2
+  double rb = 0.0;                  // the bladder's reference radius (its stretch R / rb)
+  std::array<double, 4> profile{};  // eta(s) coefficients
   AvbdlProfileMoments moments;
-  double bladder_area = 0.0;          // reference wall area per unit length
-  double min_length = 0.0;            // avbdl_min_length
+  double bladder_area = 0.0;  // reference wall area per unit length
+  double min_length = 0.0;    // avbdl_min_length
   // the memo: static force [N] at (p, L) last computed with this shape (NaN: none)
   mutable double memo_pressure_pa = std::numeric_limits<double>::quiet_NaN();
   mutable double memo_length_m = std::numeric_limits<double>::quiet_NaN();
@@ -200,8 +200,8 @@ void validate_avbdl_params(const AvbdlParams& params, const std::string& key_pre
 // Eq. (27)-(29) for any muscle: the given geometry and bladder, end regions as long as the
 // DMSP-20's relative to its length (Ld = 32/200 L0; Fig. 9 normalises x by the length),
 // a = 2, no friction. Validates with `key_prefix` (throws InputError as above).
-AvbdlParams avbdl_params_from_geometry(double length_m, double diameter_m,
-                                       double braid_angle_rad, double wall_thickness_m,
+AvbdlParams avbdl_params_from_geometry(double length_m, double diameter_m, double braid_angle_rad,
+                                       double wall_thickness_m,
                                        const MooneyRivlinConstants& bladder,
                                        const std::string& key_prefix = "");
 
@@ -239,8 +239,7 @@ double avbdl_volume(const AvbdlParams& params, double length_m);
 double avbdl_volume(const AvbdlParams& params, const AvbdlShape& shape, double length_m);
 // dV/dL [m^2], analytic.
 double avbdl_dvolume_dlength(const AvbdlParams& params, double length_m);
-double avbdl_dvolume_dlength(const AvbdlParams& params, const AvbdlShape& shape,
-                             double length_m);
+double avbdl_dvolume_dlength(const AvbdlParams& params, const AvbdlShape& shape, double length_m);
 
 // Eq. (20): nominal uniaxial stress [Pa] at stretch lambda > 0.
 double mooney_rivlin_stress(const MooneyRivlinConstants& c, double stretch);
@@ -276,8 +275,8 @@ double avbdl_static_force(const AvbdlParams& params, double p_pa, double length_
 // The free length [m] at gauge pressure p: where avbdl_static_force is zero, in
 // [avbdl_min_length, L0] (L0 for p <= 0; the minimum if the pull is still positive there;
 // NaN for a NaN pressure); for a tube bladder below the pressure at which it meets the
-// braid at L0, past L0, where the stretched braid has narrowed onto it. A slack muscle rests there. Solved by Boost.Math's TOMS 748 to
-// ~1e-13 relative.
+// braid at L0, past L0, where the stretched braid has narrowed onto it. A slack muscle rests there.
+// Solved by Boost.Math's TOMS 748 to ~1e-13 relative.
 double avbdl_free_length(const AvbdlParams& params, double p_pa);
 
 // The length [m] at which the muscle pulls f > 0 [N] at rest at gauge pressure p, between
@@ -327,8 +326,8 @@ double avbdl_line_pull(const AvbdlParams& params, double p_pa, double taut_lengt
 double avbdl_line_pull(const AvbdlParams& params, const AvbdlShape& shape, double p_pa,
                        double taut_length_m, const FrictionInput& friction);
 double avbdl_line_muscle_length(const AvbdlParams& params, double p_pa, double taut_length_m);
-double avbdl_line_muscle_length(const AvbdlParams& params, const AvbdlShape& shape,
-                                double p_pa, double taut_length_m);
+double avbdl_line_muscle_length(const AvbdlParams& params, const AvbdlShape& shape, double p_pa,
+                                double taut_length_m);
 
 // A trial's last free length of one muscle and the pressure it was solved at.
 // Given to the length below, a slack muscle's root is searched from the last one (a
@@ -340,7 +339,7 @@ struct FreeLengthTrack {
   double pressure_pa = std::numeric_limits<double>::quiet_NaN();
   double length_m = std::numeric_limits<double>::quiet_NaN();
 };
-double avbdl_line_muscle_length(const AvbdlParams& params, const AvbdlShape& shape,
-                                double p_pa, double taut_length_m, FreeLengthTrack* track);
+double avbdl_line_muscle_length(const AvbdlParams& params, const AvbdlShape& shape, double p_pa,
+                                double taut_length_m, FreeLengthTrack* track);
 
 }  // namespace pamsim

@@ -10,9 +10,8 @@ namespace pamsim {
 
 double avbdl_friction_magnitude(const AvbdlParams& p, double p_pa, double length_m,
                                 StretchDirection direction) {
-  const AvbdlFrictionCoefficients& c = direction == StretchDirection::kExtension
-                                           ? p.friction.extension
-                                           : p.friction.contraction;
+  const AvbdlFrictionCoefficients& c =
+      direction == StretchDirection::kExtension ? p.friction.extension : p.friction.contraction;
   // F_f = F0 + p (A0 + A1 eps): normal load from pressure on a strain-dependent contact
   const double strain = (p.length_m - length_m) / p.length_m;
   const double area = std::max(c.pressure_area_m2 + c.strain_area_m2 * strain, 0.0);
@@ -27,8 +26,8 @@ double avbdl_friction_force(const AvbdlParams& p, double p_pa, double length_m,
 
 double avbdl_smooth_friction_force(const AvbdlParams& p, double p_pa, double length_m,
                                    double length_rate_m_per_s) {
-  const StretchDirection direction = length_rate_m_per_s > 0.0 ? StretchDirection::kExtension
-                                                               : StretchDirection::kContraction;
+  const StretchDirection direction =
+      length_rate_m_per_s > 0.0 ? StretchDirection::kExtension : StretchDirection::kContraction;
   return std::tanh(length_rate_m_per_s / p.friction.velocity_scale_m_per_s) *
          avbdl_friction_magnitude(p, p_pa, length_m, direction);
 }
@@ -45,7 +44,7 @@ double avbdl_friction(const AvbdlParams& p, double p_pa, double length_m,
   if (p.friction.model == FrictionModel::kSmooth) {
     return avbdl_smooth_friction_force(p, p_pa, length_m, input.length_rate_m_per_s);
   }
-  if (input.slip_state == nullptr) return 0.0;   // unloaded elements hold nothing
+  if (input.slip_state == nullptr) return 0.0;  // unloaded elements hold nothing
   return avbdl_slip_friction_force(p, p_pa, length_m, input.slip_state);
 }
 

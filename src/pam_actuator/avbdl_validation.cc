@@ -24,13 +24,13 @@ void validate_bladder(const AvbdlParams& p, const std::string& prefix) {
                     " MPa (a positive initial shear modulus 2 (C10 + C01))",
                 units::pa_to_mpa(p.bladder.c10_pa));
   const std::string diameter = prefix + "bladder.diameter_mm";
-  require_value(p.bladder_diameter_m == 0.0 || (p.bladder_diameter_m > 2.0 * p.wall_thickness_m &&
-                                                p.bladder_diameter_m <= p.diameter_m),
-                diameter,
-                "0 (the sleeve's) or in (2 wall = " +
-                    format_value(units::m_to_mm(2.0 * p.wall_thickness_m)) + ", diameter = " +
-                    format_value(units::m_to_mm(p.diameter_m)) + "] mm",
-                units::m_to_mm(p.bladder_diameter_m));
+  require_value(
+      p.bladder_diameter_m == 0.0 ||
+          (p.bladder_diameter_m > 2.0 * p.wall_thickness_m && p.bladder_diameter_m <= p.diameter_m),
+      diameter,
+      "0 (the sleeve's) or in (2 wall = " + format_value(units::m_to_mm(2.0 * p.wall_thickness_m)) +
+          ", diameter = " + format_value(units::m_to_mm(p.diameter_m)) + "] mm",
+      units::m_to_mm(p.bladder_diameter_m));
   validate_bladder_relaxation(p.relaxation, prefix + "bladder.");
   if (p.bladder_law != BladderLaw::kGentGent) return;
   // the tube must reach the braid at L0 short of its limit (R0 / rb is its least stretch)
@@ -38,7 +38,8 @@ void validate_bladder(const AvbdlParams& p, const std::string& prefix) {
   const double i1_minus_3 = stretch * stretch + 2.0 / stretch - 3.0;
   require_value(i1_minus_3 < 0.999 * p.bladder_gent.jm, diameter,
                 "large enough that the sleeve stretches it short of the Gent-Gent limit (I1 - 3 "
-                "= " + format_value(i1_minus_3) + " at stretch " + format_value(stretch) +
+                "= " +
+                    format_value(i1_minus_3) + " at stretch " + format_value(stretch) +
                     ", 0.999 Jm = " + format_value(0.999 * p.bladder_gent.jm) + ")",
                 units::m_to_mm(p.bladder_diameter_m));
 }
@@ -46,7 +47,7 @@ void validate_bladder(const AvbdlParams& p, const std::string& prefix) {
 }  // namespace
 
 void validate_avbdl_params(const AvbdlParams& p, const std::string& key_prefix) {
-  AvbdlParams read = p;   // the rows bind a struct they could write; here they only read it
+  AvbdlParams read = p;  // the rows bind a struct they could write; here they only read it
   for (const KeyTable& table : avbdl_key_tables(&read)) {
     try {
       check_key_rows(table);
@@ -67,8 +68,8 @@ void validate_avbdl_params(const AvbdlParams& p, const std::string& key_prefix) 
   }
 }
 
-AvbdlParams avbdl_params_from_geometry(double length_m, double diameter_m,
-                                       double braid_angle_rad, double wall_thickness_m,
+AvbdlParams avbdl_params_from_geometry(double length_m, double diameter_m, double braid_angle_rad,
+                                       double wall_thickness_m,
                                        const MooneyRivlinConstants& bladder,
                                        const std::string& key_prefix) {
   AvbdlParams p;
@@ -77,7 +78,7 @@ AvbdlParams avbdl_params_from_geometry(double length_m, double diameter_m,
   p.braid_angle_rad = braid_angle_rad;
   p.wall_thickness_m = wall_thickness_m;
   p.bladder = bladder;
-  p.end_length_m = kAvbdlEndFraction * length_m;   // end slope and friction: the defaults
+  p.end_length_m = kAvbdlEndFraction * length_m;  // end slope and friction: the defaults
   validate_avbdl_params(p, key_prefix);
   return p;
 }

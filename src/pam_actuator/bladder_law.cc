@@ -50,9 +50,8 @@ double bladder_stress(const AvbdlParams& p, double stretch) {
 }
 
 double bladder_energy_density(const AvbdlParams& p, double stretch) {
-  return p.bladder_law == BladderLaw::kGentGent
-             ? gent_gent_energy_density(p.bladder_gent, stretch)
-             : mooney_rivlin_energy_density(p.bladder, stretch);
+  return p.bladder_law == BladderLaw::kGentGent ? gent_gent_energy_density(p.bladder_gent, stretch)
+                                                : mooney_rivlin_energy_density(p.bladder, stretch);
 }
 
 double avbdl_bladder_reference_radius(const AvbdlParams& p) {

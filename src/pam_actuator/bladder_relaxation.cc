@@ -27,7 +27,7 @@ RelaxationStep relaxation_step(const BladderRelaxation& params, double step_s) {
   for (int i = 0; i < params.count; ++i) {
     const double x = step_s / params.time_s[i];
     step.decay[i] = std::exp(-x);
-    step.ramp_gain[i] = -std::expm1(-x) / x;   // (1 - e) tau / dt, accurate for small x
+    step.ramp_gain[i] = -std::expm1(-x) / x;  // (1 - e) tau / dt, accurate for small x
   }
   return step;
 }

@@ -38,9 +38,9 @@ namespace pamsim {
 inline constexpr int kMaxRelaxationTerms = 4;
 
 struct BladderRelaxation {
-  int count = 0;                                        // 0: elastic (no rate term)
-  std::array<double, kMaxRelaxationTerms> weight{};     // g_i >= 0
-  std::array<double, kMaxRelaxationTerms> time_s{};     // tau_i > 0 [s]
+  int count = 0;                                     // 0: elastic (no rate term)
+  std::array<double, kMaxRelaxationTerms> weight{};  // g_i >= 0
+  std::array<double, kMaxRelaxationTerms> time_s{};  // tau_i > 0 [s]
 };
 
 // Throws InputError "<prefix><key> must be ..., got <value>" (keys in the plant file's

@@ -9,14 +9,12 @@
 
 namespace pamsim {
 
-BraidGeometry braid_from_initial_shape(double length_m, double diameter_m,
-                                       double braid_angle_rad) {
+BraidGeometry braid_from_initial_shape(double length_m, double diameter_m, double braid_angle_rad) {
   if (!(length_m > 0.0)) {
     throw InputError("braid geometry: length must be > 0 m, got " + std::to_string(length_m));
   }
   if (!(diameter_m > 0.0)) {
-    throw InputError("braid geometry: diameter must be > 0 m, got " +
-                     std::to_string(diameter_m));
+    throw InputError("braid geometry: diameter must be > 0 m, got " + std::to_string(diameter_m));
   }
   if (!(braid_angle_rad > 0.0 && braid_angle_rad < 0.5 * units::kPi)) {
     throw InputError("braid geometry: braid angle must be in (0, 90) deg, got " +

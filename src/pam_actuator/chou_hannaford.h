@@ -13,13 +13,12 @@
 namespace pamsim {
 
 struct BraidGeometry {
-  double fibre_length_m = 0.0;   // b
-  double turns = 0.0;            // n
+  double fibre_length_m = 0.0;  // b
+  double turns = 0.0;           // n
 };
 
 // Throws InputError unless L0 > 0, D0 > 0 and 0 < alpha0 < 90 deg (radians here).
-BraidGeometry braid_from_initial_shape(double length_m, double diameter_m,
-                                       double braid_angle_rad);
+BraidGeometry braid_from_initial_shape(double length_m, double diameter_m, double braid_angle_rad);
 
 double chou_hannaford_volume(const BraidGeometry& g, double length_m);
 // The braid's diameter at length L (0 at the fully stretched L = b); for drawing the muscle.

@@ -52,7 +52,8 @@ NaturalLengthFit fit_natural_length(const std::vector<TensileRow>& rows,
   NaturalLengthFit fit;
   fit.pressure_levels = count_pressure_levels(rows);
   if (fit.pressure_levels < 2) {
-    throw InputError(context + ": a single pressure level: m and h of Eq. (2) need at least "
+    throw InputError(context +
+                     ": a single pressure level: m and h of Eq. (2) need at least "
                      "two distinct pressures (levels closer than 0.01 MPa count as one)");
   }
 
@@ -86,8 +87,8 @@ SpringFit fit_spring_model(SpringLaw law, const std::vector<TensileRow>& rows,
   for (int r = 0; r < points; ++r) {
     const double p = rows[r].pressure_mpa, d = rows[r].deformation_mm;
     for (int k = 0; k < n; ++k) {
-      a(r, k) = std::pow(p, pressure_exponent(law, k)) *
-                std::pow(d, deformation_exponent(law, k) + 1);
+      a(r, k) =
+          std::pow(p, pressure_exponent(law, k)) * std::pow(d, deformation_exponent(law, k) + 1);
     }
     f[r] = rows[r].force_n;
   }

@@ -14,7 +14,7 @@ namespace pamsim {
 struct NaturalLengthFit {
   double m_mm_per_mpa = 0.0;
   double h_mm = 0.0;
-  int pressure_levels = 0;   // distinct pressures (levels closer than 0.01 MPa merge)
+  int pressure_levels = 0;  // distinct pressures (levels closer than 0.01 MPa merge)
 };
 
 // Throws InputError (message starts with `context`, e.g. the file name) when fewer than
@@ -23,9 +23,9 @@ NaturalLengthFit fit_natural_length(const std::vector<TensileRow>& rows,
                                     const std::string& context);
 
 struct SpringFit {
-  SpringModel model;        // SI, Eq. (2) and the chosen law
-  double rmse_n = 0.0;      // root mean square force residual [N]
-  double r2 = 0.0;          // coefficient of determination of force
+  SpringModel model;    // SI, Eq. (2) and the chosen law
+  double rmse_n = 0.0;  // root mean square force residual [N]
+  double r2 = 0.0;      // coefficient of determination of force
   int points = 0;
 };
 

@@ -33,14 +33,17 @@ struct PamFile {
   SpringLaw law = SpringLaw::kEq3;
   std::string pressure_unit = "MPa", length_unit = "mm", force_unit = "N";
   double m_mm_per_mpa = 0.0, h_mm = 0.0;
-  std::array<std::array<double, 6>, 3> coef{};   // each law's, paper order
+  std::array<std::array<double, 6>, 3> coef{};  // each law's, paper order
   StrainGaugeParams gauge;
   PamGeometry geometry;
 };
 
 ChoiceRow unit_row(const char* name, const char* unit, std::string* field) {
-  return {name, {unit}, "the file's " + std::string(name) + " unit: the paper's",
-          [field](const std::string& v) { *field = v; }, [field] { return *field; }};
+  return {name,
+          {unit},
+          "the file's " + std::string(name) + " unit: the paper's",
+          [field](const std::string& v) { *field = v; },
+          [field] { return *field; }};
 }
 
 std::vector<KeyTable> pam_key_tables(PamFile* f) {
@@ -48,15 +51,16 @@ std::vector<KeyTable> pam_key_tables(PamFile* f) {
   top.texts = {{"name", "the muscle's name", &f->params.name},
                {"source", "where the numbers come from", &f->params.source}};
   KeyTable spring{"spring", {}, {}};
-  spring.choices = {{"law", {"eq3", "eq4", "eq5"},
+  spring.choices = {{"law",
+                     {"eq3", "eq4", "eq5"},
                      "the spring law the estimator inverts: Eq. (3), (4) or (5) (Yoshida and "
                      "Hosoda)",
                      [f](const std::string& v) { f->law = parse_spring_law(v, "spring.law"); },
                      [f] { return std::string(to_string(f->law)); }}};
   spring.numbers = {{"m", "mm/MPa", 1.0, kAnyRange, "Eq. (2)'s slope of the natural length",
                      &f->m_mm_per_mpa, nullptr, true},
-                    {"h", "mm", 1.0, kPositiveRange, "Eq. (2)'s natural length at p = 0",
-                     &f->h_mm, nullptr, true}};
+                    {"h", "mm", 1.0, kPositiveRange, "Eq. (2)'s natural length at p = 0", &f->h_mm,
+                     nullptr, true}};
   for (std::size_t l = 0; l < 3; ++l) {
     for (int k = 0; k < coefficient_count(kLaws[l]); ++k) {
       spring.numbers.push_back({coefficient_name(kLaws[l], k), "", 1.0, kAnyRange,
@@ -76,16 +80,22 @@ std::vector<KeyTable> pam_key_tables(PamFile* f) {
                    {"V_base_V", "V", 1.0, kAnyRange, "Eq. (8)'s offset", &f->gauge.v_base_v}};
   KeyTable geometry{"geometry", {}, {}};
   geometry.optional = true;
-  geometry.numbers = {
-      {"length_mm", "mm", units::kMPerMm, kPositiveRange, "L0, unpressurised (Table I)",
-       &f->geometry.length_m, nullptr, true},
-      {"sleeve_diameter_mm", "mm", units::kMPerMm, kPositiveRange, "D0, the sleeve's (Table I)",
-       &f->geometry.sleeve_diameter_m, nullptr, true},
-      {"bladder_diameter_mm", "mm", units::kMPerMm, kPositiveRange, "the tube's (Table I)",
-       &f->geometry.bladder_diameter_m, nullptr, true},
-      {"braid_angle_deg", "deg", units::kPi, {0.0, 90.0, true, true},
-       "alpha0, the braid's angle to the axis", &f->geometry.braid_angle_rad, nullptr, true, "",
-       180.0}};
+  geometry.numbers = {{"length_mm", "mm", units::kMPerMm, kPositiveRange,
+                       "L0, unpressurised (Table I)", &f->geometry.length_m, nullptr, true},
+                      {"sleeve_diameter_mm", "mm", units::kMPerMm, kPositiveRange,
+                       "D0, the sleeve's (Table I)", &f->geometry.sleeve_diameter_m, nullptr, true},
+                      {"bladder_diameter_mm", "mm", units::kMPerMm, kPositiveRange,
+                       "the tube's (Table I)", &f->geometry.bladder_diameter_m, nullptr, true},
+                      {"braid_angle_deg",
+                       "deg",
+                       units::kPi,
+                       {0.0, 90.0, true, true},
+                       "alpha0, the braid's angle to the axis",
+                       &f->geometry.braid_angle_rad,
+                       nullptr,
+                       true,
+                       "",
+                       180.0}};
   return {top, spring, units, gauge, geometry};
 }
 
@@ -112,8 +122,9 @@ std::string inline_choices(const KeyTable& table) {
 
 // whether a row's key names its unit ("length_mm"), or the unit is none
 bool unit_in_name(const NumberRow& row) {
-  std::string suffix = "_" + row.unit;   // "V/N" as "_V_per_N"
-  for (std::size_t at; (at = suffix.find('/')) != std::string::npos;) suffix.replace(at, 1, "_per_");
+  std::string suffix = "_" + row.unit;  // "V/N" as "_V_per_N"
+  for (std::size_t at; (at = suffix.find('/')) != std::string::npos;)
+    suffix.replace(at, 1, "_per_");
   return row.unit.empty() ||
          (row.name.size() > suffix.size() &&
           row.name.compare(row.name.size() - suffix.size(), suffix.size(), suffix) == 0);
@@ -123,13 +134,13 @@ bool unit_in_name(const NumberRow& row) {
 
 PamParams load_pam_params(const std::string& path) {
   PamFile f;
-  const std::vector<std::string> given = read_key_tables(parse_toml_file(path), path,
-                                                         pam_key_tables(&f));
+  const std::vector<std::string> given =
+      read_key_tables(parse_toml_file(path), path, pam_key_tables(&f));
   const auto has = [&](const std::string& key) {
     return std::find(given.begin(), given.end(), key) != given.end();
   };
-  for (const char* k : {"spring.law", "spring.units.pressure", "spring.units.length",
-                        "spring.units.force"}) {
+  for (const char* k :
+       {"spring.law", "spring.units.pressure", "spring.units.length", "spring.units.force"}) {
     if (!has(k)) throw file_key_error(path, k, "is required");
   }
   const std::size_t law = law_index(f.law);
@@ -138,8 +149,8 @@ PamParams load_pam_params(const std::string& path) {
       const std::string key = "spring." + coefficient_name(kLaws[l], k);
       if (l == law && !has(key)) throw file_key_error(path, key, "is required");
       if (l != law && has(key)) {
-        throw file_key_error(path, key, std::string("is not a coefficient of law = \"") +
-                                            to_string(f.law) + "\"");
+        throw file_key_error(
+            path, key, std::string("is not a coefficient of law = \"") + to_string(f.law) + "\"");
       }
     }
   }
@@ -156,7 +167,7 @@ void validate_pam_params(const SpringModel& spring, const StrainGaugeParams& gau
   spring_model_to_paper_units(spring, &f.m_mm_per_mpa, &f.h_mm, &f.coef[law_index(f.law)]);
   f.gauge = gauge;
   const std::vector<KeyTable> tables = pam_key_tables(&f);
-  for (const char* name : {"strain_gauge", "spring"}) {   // the gauge first, as a reader meets it
+  for (const char* name : {"strain_gauge", "spring"}) {  // the gauge first, as a reader meets it
     for (KeyTable table : tables) {
       if (table.name != name) continue;
       table.name = key_prefix + "." + table.name;
@@ -174,8 +185,7 @@ std::string pam_params_to_toml(const PamParams& params) {
   PamFile f;
   f.params = params;
   f.law = params.spring.law;
-  spring_model_to_paper_units(params.spring, &f.m_mm_per_mpa, &f.h_mm,
-                              &f.coef[law_index(f.law)]);
+  spring_model_to_paper_units(params.spring, &f.m_mm_per_mpa, &f.h_mm, &f.coef[law_index(f.law)]);
   if (params.strain_gauge) f.gauge = *params.strain_gauge;
   if (params.geometry) f.geometry = *params.geometry;
   // the tables the parameters have ([spring.units] is written inline in [spring]), and the

@@ -26,20 +26,20 @@
 namespace pamsim {
 
 struct StrainGaugeParams {
-  double q_v_per_n = 0.0;   // Eq. (8) slope [V/N], > 0
-  double v_base_v = 0.0;    // Eq. (8) offset [V]
+  double q_v_per_n = 0.0;  // Eq. (8) slope [V/N], > 0
+  double v_base_v = 0.0;   // Eq. (8) offset [V]
 };
 
 struct PamGeometry {
-  double length_m = 0.0;             // unpressurised braided length L0
-  double sleeve_diameter_m = 0.0;    // D0
+  double length_m = 0.0;           // unpressurised braided length L0
+  double sleeve_diameter_m = 0.0;  // D0
   double bladder_diameter_m = 0.0;
-  double braid_angle_rad = 0.0;      // alpha0, to the muscle axis
+  double braid_angle_rad = 0.0;  // alpha0, to the muscle axis
 };
 
 struct PamParams {
   std::string name;
-  std::string source;                // where the numbers come from
+  std::string source;  // where the numbers come from
   SpringModel spring;
   std::optional<StrainGaugeParams> strain_gauge;
   std::optional<PamGeometry> geometry;

@@ -21,7 +21,7 @@ namespace {
 // What a plant file fills: the plant, and the keys that only mean something with others.
 struct PlantFile {
   PlantParams plant;
-  std::string material;   // bladder.material: "" for the law's constants given
+  std::string material;  // bladder.material: "" for the law's constants given
   std::vector<double> relaxation_times_s, relaxation_weights, breakaway_m, slip_weights;
 };
 
@@ -33,14 +33,18 @@ KeyTable& table_named(std::vector<KeyTable>& tables, const std::string& name) {
 std::vector<KeyTable> plant_key_tables(PlantFile* f) {
   std::vector<KeyTable> tables = avbdl_key_tables(&f->plant.avbdl);
   KeyTable top{"", {}, {}};
-  top.choices = {{"law", {"avbdl"}, "the plant's force law: AVBDL (Pipan et al. 2025)",
-                  [](const std::string&) {}, [] { return std::string("avbdl"); }}};
+  top.choices = {{"law",
+                  {"avbdl"},
+                  "the plant's force law: AVBDL (Pipan et al. 2025)",
+                  [](const std::string&) {},
+                  [] { return std::string("avbdl"); }}};
   top.texts = {{"name", "the muscle's name", &f->plant.name},
                {"source", "where the numbers come from", &f->plant.source}};
   tables.insert(tables.begin(), top);
   const auto count = [](int n) { return static_cast<std::size_t>(n); };
   KeyTable& bladder = table_named(tables, "bladder");
-  bladder.choices.push_back({"material", {"natural_rubber", "silicone"},
+  bladder.choices.push_back({"material",
+                             {"natural_rubber", "silicone"},
                              "a material whose constants the law takes (silicone: Mooney-Rivlin "
                              "only), or give the law's constants",
                              [f](const std::string& v) { f->material = v; },
@@ -53,7 +57,11 @@ std::vector<KeyTable> plant_key_tables(PlantFile* f) {
   table_named(tables, "friction").lists = {
       {"breakaway_mm", "mm", units::kMPerMm, kPositiveRange, count(kMaxSlipElements),
        "model = \"maxwell_slip\": the elements' breakaway travels", &f->breakaway_m, "", 1},
-      {"weights", "", 1.0, {0.0, 1.0, true}, count(kMaxSlipElements),
+      {"weights",
+       "",
+       1.0,
+       {0.0, 1.0, true},
+       count(kMaxSlipElements),
        "model = \"maxwell_slip\": the elements' shares of the friction, summing to 1",
        &f->slip_weights}};
   return tables;
@@ -64,23 +72,26 @@ template <typename Has, typename Fail>
 void apply_bladder(PlantFile* f, const Has& has, const Fail& fail) {
   AvbdlParams& a = f->plant.avbdl;
   const bool gent = a.bladder_law == BladderLaw::kGentGent;
-  const std::vector<std::string> own = gent ? std::vector<std::string>{"mu_MPa", "C2_MPa", "Jm"}
-                                            : std::vector<std::string>{"C10_MPa", "C01_MPa",
-                                                                       "C20_MPa"};
-  const std::vector<std::string> other = gent ? std::vector<std::string>{"C10_MPa", "C01_MPa",
-                                                                         "C20_MPa"}
-                                              : std::vector<std::string>{"mu_MPa", "C2_MPa", "Jm"};
+  const std::vector<std::string> own =
+      gent ? std::vector<std::string>{"mu_MPa", "C2_MPa", "Jm"}
+           : std::vector<std::string>{"C10_MPa", "C01_MPa", "C20_MPa"};
+  const std::vector<std::string> other =
+      gent ? std::vector<std::string>{"C10_MPa", "C01_MPa", "C20_MPa"}
+           : std::vector<std::string>{"mu_MPa", "C2_MPa", "Jm"};
   const std::string law = gent ? "\"gent_gent\"" : "\"mooney_rivlin\"";
   for (const std::string& k : other) {
     if (has("bladder." + k)) fail("bladder." + k, "is not a constant of law = " + law);
   }
   if (!f->material.empty()) {
     for (const std::string& k : own) {
-      if (has("bladder." + k)) fail("bladder.material", "and the law's constants are given both: give one");
+      if (has("bladder." + k))
+        fail("bladder.material", "and the law's constants are given both: give one");
     }
     if (gent && f->material != "natural_rubber") {
-      fail("bladder.material", "has no Gent-Gent fit but \"natural_rubber\" (or give mu_MPa, "
-                               "C2_MPa, Jm), got \"" + f->material + "\"");
+      fail("bladder.material",
+           "has no Gent-Gent fit but \"natural_rubber\" (or give mu_MPa, "
+           "C2_MPa, Jm), got \"" +
+               f->material + "\"");
     }
     a.bladder = f->material == "silicone" ? kSiliconeElastosilM4601 : kNaturalRubberTreloar;
     a.bladder_gent = kNaturalRubberTreloarGentGent;
@@ -96,8 +107,10 @@ void apply_bladder(PlantFile* f, const Has& has, const Fail& fail) {
                                            std::to_string(f->relaxation_weights.size()));
   }
   a.relaxation.count = static_cast<int>(f->relaxation_times_s.size());
-  std::copy(f->relaxation_times_s.begin(), f->relaxation_times_s.end(), a.relaxation.time_s.begin());
-  std::copy(f->relaxation_weights.begin(), f->relaxation_weights.end(), a.relaxation.weight.begin());
+  std::copy(f->relaxation_times_s.begin(), f->relaxation_times_s.end(),
+            a.relaxation.time_s.begin());
+  std::copy(f->relaxation_weights.begin(), f->relaxation_weights.end(),
+            a.relaxation.weight.begin());
 }
 
 template <typename Has, typename Fail>
@@ -146,7 +159,7 @@ PlantParams read_plant(const toml::table& root, const std::string& path) {
     a.end_length_m = a.bladder_diameter_m > 0.0 ? kAvbdlEndPerRadius * 0.5 * a.diameter_m
                                                 : kAvbdlEndFraction * a.length_m;
   }
-  try {   // the law's checks that join keys, named by the same keys
+  try {  // the law's checks that join keys, named by the same keys
     validate_avbdl_params(a, "");
   } catch (const InputError& e) {
     throw file_key_error(path, e.parts().key, e.parts().problem);

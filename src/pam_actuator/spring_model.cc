@@ -31,9 +31,12 @@ struct Term {
 
 int32_t embedded_law(SpringLaw law) {
   switch (law) {
-    case SpringLaw::kEq3: return PAMCTL_LAW_EQ3;
-    case SpringLaw::kEq4: return PAMCTL_LAW_EQ4;
-    case SpringLaw::kEq5: return PAMCTL_LAW_EQ5;
+    case SpringLaw::kEq3:
+      return PAMCTL_LAW_EQ3;
+    case SpringLaw::kEq4:
+      return PAMCTL_LAW_EQ4;
+    case SpringLaw::kEq5:
+      return PAMCTL_LAW_EQ5;
   }
   return PAMCTL_LAW_EQ3;
 }
@@ -144,9 +147,12 @@ DeformationEstimate invert_spring_model(const SpringModel& model, double p_pa, d
 
 InversionStatus inversion_status(pamctl_inversion status) {
   switch (status) {
-    case PAMCTL_INVERSION_OK: return InversionStatus::kOk;
-    case PAMCTL_INVERSION_SLACK: return InversionStatus::kSlack;
-    case PAMCTL_INVERSION_NO_ROOT: break;
+    case PAMCTL_INVERSION_OK:
+      return InversionStatus::kOk;
+    case PAMCTL_INVERSION_SLACK:
+      return InversionStatus::kSlack;
+    case PAMCTL_INVERSION_NO_ROOT:
+      break;
   }
   return InversionStatus::kNoPhysicalRoot;
 }

@@ -35,9 +35,9 @@ int deformation_exponent(SpringLaw law, int k);
 
 struct SpringModel {
   SpringLaw law = SpringLaw::kEq3;
-  double m_m_per_pa = 0.0;        // Eq. (2) slope [m/Pa]
-  double h_m = 0.0;               // Eq. (2) intercept [m]
-  std::array<double, 6> coef{};   // SI coefficients, paper order, unused entries 0
+  double m_m_per_pa = 0.0;       // Eq. (2) slope [m/Pa]
+  double h_m = 0.0;              // Eq. (2) intercept [m]
+  std::array<double, 6> coef{};  // SI coefficients, paper order, unused entries 0
 };
 
 // Paper units: m [mm/MPa], h [mm], coefficients giving f [N] from p [MPa], d [mm].
@@ -65,9 +65,9 @@ double spring_force(const SpringModel& model, double p_pa, double d_m);
 double spring_stiffness(const SpringModel& model, double p_pa, double d_m);
 
 enum class InversionStatus {
-  kOk,               // d > 0 solves f(p, d) = f
-  kSlack,            // f <= 0: the line is slack, d = 0 (the paper's Fig. 7 behaviour)
-  kNoPhysicalRoot,   // no non-negative root: f is beyond what the law can produce at p
+  kOk,              // d > 0 solves f(p, d) = f
+  kSlack,           // f <= 0: the line is slack, d = 0 (the paper's Fig. 7 behaviour)
+  kNoPhysicalRoot,  // no non-negative root: f is beyond what the law can produce at p
 };
 const char* to_string(InversionStatus status);
 
@@ -75,7 +75,7 @@ const char* to_string(InversionStatus status);
 InversionStatus inversion_status(pamctl_inversion status);
 
 struct DeformationEstimate {
-  double d_m = 0.0;   // always finite; 0 unless status == kOk
+  double d_m = 0.0;  // always finite; 0 unless status == kOk
   InversionStatus status = InversionStatus::kSlack;
 };
 

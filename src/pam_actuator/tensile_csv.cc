@@ -96,7 +96,7 @@ std::string tensile_rows_to_csv(const std::vector<TensileRow>& rows) {
 }
 
 std::vector<TensileRow> read_tensile_csv(const std::string& path) {
-  std::istringstream in(read_text_file(path));   // "-": standard input
+  std::istringstream in(read_text_file(path));  // "-": standard input
 
   // header: locate the required columns and the optional direction
   std::string line;

@@ -41,15 +41,15 @@ const char* to_string(StrokeDirection direction) {
 void validate_tensile_options(const TensileTestOptions& o) {
   require(!o.pressures_mpa.empty(), "tensile test: pressures_MPa: the list is empty");
   for (double p : o.pressures_mpa) {
-    require(std::isfinite(p) && p > 0.0,
-            "tensile test: pressures_MPa: every pressure must be > 0 MPa, got " +
-                std::to_string(p));
+    require(
+        std::isfinite(p) && p > 0.0,
+        "tensile test: pressures_MPa: every pressure must be > 0 MPa, got " + std::to_string(p));
   }
   require(std::isfinite(o.step_mm) && o.step_mm > 0.0,
           "tensile test: step_mm must be > 0, got " + std::to_string(o.step_mm));
   require(std::isfinite(o.max_deformation_mm) && o.max_deformation_mm >= o.step_mm,
-          "tensile test: max_deformation_mm must be >= the step (" +
-              std::to_string(o.step_mm) + " mm), got " + std::to_string(o.max_deformation_mm));
+          "tensile test: max_deformation_mm must be >= the step (" + std::to_string(o.step_mm) +
+              " mm), got " + std::to_string(o.max_deformation_mm));
   require(std::isfinite(o.hysteresis) && o.hysteresis >= 0.0 && o.hysteresis < 0.5,
           "tensile test: hysteresis must be in [0, 0.5), got " + std::to_string(o.hysteresis));
   const std::pair<const char*, double> noises[] = {{"noise_pressure_MPa", o.noise_pressure_mpa},
@@ -58,14 +58,15 @@ void validate_tensile_options(const TensileTestOptions& o) {
   for (const auto& [name, sd] : noises) {
     require(std::isfinite(sd) && sd >= 0.0, std::string("tensile test: ") + name +
                                                 " must be a finite standard deviation >= 0, "
-                                                "got " + std::to_string(sd));
+                                                "got " +
+                                                std::to_string(sd));
   }
 }
 
 std::vector<TensileRow> run_tensile_test(const ForceLaw& force, const NaturalLengthLaw& l_n,
                                          const TensileTestOptions& options) {
-  return run_tensile_test(
-      [&force](double p, double d, StrokeDirection) { return force(p, d); }, l_n, options);
+  return run_tensile_test([&force](double p, double d, StrokeDirection) { return force(p, d); },
+                          l_n, options);
 }
 
 std::vector<TensileRow> run_tensile_test(const AvbdlParams& plant,
@@ -76,8 +77,8 @@ std::vector<TensileRow> run_tensile_test(const AvbdlParams& plant,
     const double free_m = avbdl_free_length(plant, units::mpa_to_pa(p_mpa));
     const double room_mm = units::m_to_mm(avbdl_max_length(plant) - free_m);
     require(options.max_deformation_mm <= room_mm,
-            "tensile test: max_deformation_mm must be <= " + format_value(room_mm) +
-                " mm (at " + format_value(p_mpa) + " MPa the plant reaches its fibre length), got " +
+            "tensile test: max_deformation_mm must be <= " + format_value(room_mm) + " mm (at " +
+                format_value(p_mpa) + " MPa the plant reaches its fibre length), got " +
                 format_value(options.max_deformation_mm));
   }
   const auto l_n = [&plant](double p) { return avbdl_free_length(plant, p); };
@@ -122,8 +123,7 @@ std::vector<double> plant_forces_along(const AvbdlParams& plant,
   return forces;
 }
 
-std::vector<TensileRow> run_tensile_test(const StrokeForceLaw& force,
-                                         const NaturalLengthLaw& l_n,
+std::vector<TensileRow> run_tensile_test(const StrokeForceLaw& force, const NaturalLengthLaw& l_n,
                                          const TensileTestOptions& options) {
   validate_tensile_options(options);
   std::mt19937_64 rng(options.seed);
@@ -147,7 +147,7 @@ std::vector<TensileRow> run_tensile_test(const StrokeForceLaw& force,
       row.force_n = f + noise(options.noise_force_n);
       const double e_l = noise(options.noise_length_mm);
       row.deformation_mm = d_mm + e_l;
-      row.length_mm = l_n_mm + d_mm + e_l;   // Eq. (1)
+      row.length_mm = l_n_mm + d_mm + e_l;  // Eq. (1)
       rows.push_back(row);
     }
   }

@@ -22,22 +22,22 @@ const char* to_string(StrokeDirection direction);
 
 // One measured point in the paper's units.
 struct TensileRow {
-  double pressure_mpa = 0.0;     // measured gauge pressure p [MPa]
-  double deformation_mm = 0.0;   // measured deformation d from l_n [mm]
-  double force_n = 0.0;          // measured force f [N]
-  double length_mm = 0.0;        // measured length l = l_n + d [mm], Eq. (1)
+  double pressure_mpa = 0.0;    // measured gauge pressure p [MPa]
+  double deformation_mm = 0.0;  // measured deformation d from l_n [mm]
+  double force_n = 0.0;         // measured force f [N]
+  double length_mm = 0.0;       // measured length l = l_n + d [mm], Eq. (1)
   StrokeDirection direction = StrokeDirection::kLoading;
 };
 
 struct TensileTestOptions {
-  std::vector<double> pressures_mpa{0.4, 0.5, 0.6, 0.7, 0.8};   // the paper's PAM A-C set
-  double step_mm = 2.5;                  // > 0
-  double max_deformation_mm = 20.0;      // >= step_mm
-  double hysteresis = 0.0;               // in [0, 0.5): loading f (1+h), unloading f (1-h)
-  double noise_pressure_mpa = 0.0;       // standard deviations, >= 0
+  std::vector<double> pressures_mpa{0.4, 0.5, 0.6, 0.7, 0.8};  // the paper's PAM A-C set
+  double step_mm = 2.5;                                        // > 0
+  double max_deformation_mm = 20.0;                            // >= step_mm
+  double hysteresis = 0.0;          // in [0, 0.5): loading f (1+h), unloading f (1-h)
+  double noise_pressure_mpa = 0.0;  // standard deviations, >= 0
   double noise_force_n = 0.0;
   double noise_length_mm = 0.0;
-  std::uint64_t seed = 1;                // std::mt19937_64 seed: same seed, same data
+  std::uint64_t seed = 1;  // std::mt19937_64 seed: same seed, same data
 };
 
 // Throws InputError naming the option for an empty or non-positive pressure list, a
@@ -59,8 +59,7 @@ using NaturalLengthLaw = std::function<double(double p_pa)>;
 std::vector<TensileRow> run_tensile_test(const ForceLaw& force, const NaturalLengthLaw& l_n,
                                          const TensileTestOptions& options);
 
-std::vector<TensileRow> run_tensile_test(const StrokeForceLaw& force,
-                                         const NaturalLengthLaw& l_n,
+std::vector<TensileRow> run_tensile_test(const StrokeForceLaw& force, const NaturalLengthLaw& l_n,
                                          const TensileTestOptions& options);
 
 // The lab's test on a physical plant (avbdl.h): l_n is the plant's free length, the force

@@ -29,8 +29,8 @@ double stiffness_paper(const WickramatungeCoefficients& c, double p_bar, double 
 }
 
 // every key of `table` must be one of `allowed`
-void reject_unknown(const std::string& file, const std::string& prefix,
-                    const toml::table& table, const std::string& allowed) {
+void reject_unknown(const std::string& file, const std::string& prefix, const toml::table& table,
+                    const std::string& allowed) {
   for (const auto& [k, v] : table) {
     const std::string name(k.str());
     if (("," + allowed + ",").find("," + name + ",") == std::string::npos) {
@@ -49,8 +49,8 @@ double read_number(const std::string& file, const std::string& key, const toml::
   return *v;
 }
 
-const toml::table& read_table(const std::string& file, const std::string& key,
-                              const toml::table& t, const std::string& name) {
+const toml::table& read_table(const std::string& file, const std::string& key, const toml::table& t,
+                              const std::string& name) {
   const toml::node* n = t.get(name);
   if (n == nullptr || !n->is_table()) fail(file, key, "missing table");
   return *n->as_table();
@@ -65,7 +65,8 @@ void check_units(const std::string& path, const toml::table& root) {
     const std::string got = u[k].value_or(std::string());
     if (got != unit) {
       fail(path, std::string("units.") + k,
-           "must be \"" + std::string(unit) + "\" (Table 1 of Wickramatunge and Leephakpreeda), got \"" + got + "\"");
+           "must be \"" + std::string(unit) +
+               "\" (Table 1 of Wickramatunge and Leephakpreeda), got \"" + got + "\"");
     }
   }
 }
@@ -94,14 +95,14 @@ double wickramatunge_force(const WickramatungeModel& model, double p_pa, double 
   return stiffness_paper(c, p_bar, ls_cm) * ls_cm;
 }
 
-DeformationEstimate invert_wickramatunge(const WickramatungeModel& model, double p_pa,
-                                         double f_n, StretchDirection direction) {
+DeformationEstimate invert_wickramatunge(const WickramatungeModel& model, double p_pa, double f_n,
+                                         StretchDirection direction) {
   DeformationEstimate out;
   if (!std::isfinite(p_pa) || !std::isfinite(f_n)) {
     out.status = InversionStatus::kNoPhysicalRoot;
     return out;
   }
-  if (f_n <= 0.0) return out;   // slack: Ls = 0
+  if (f_n <= 0.0) return out;  // slack: Ls = 0
 
   // Eq. (1)-(2) as a cubic in Ls [cm]: a2 Ls^3 + a1 P Ls^2 + (a0 P^2 + a3) Ls = F
   const WickramatungeCoefficients& c = model.coefficients(direction, model.range(p_pa));

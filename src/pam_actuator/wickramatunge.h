@@ -28,16 +28,16 @@ StretchDirection stretch_direction(double ls_dot_m_per_s, StretchDirection previ
 
 // Coefficients of Eq. (2) in the paper's units (bar, cm, N/cm).
 struct WickramatungeCoefficients {
-  double a0 = 0.0;   // [N/(cm bar^2)]
-  double a1 = 0.0;   // [N/(cm^2 bar)]
-  double a2 = 0.0;   // [N/cm^3]
-  double a3 = 0.0;   // [N/cm]
+  double a0 = 0.0;  // [N/(cm bar^2)]
+  double a1 = 0.0;  // [N/(cm^2 bar)]
+  double a2 = 0.0;  // [N/cm^3]
+  double a3 = 0.0;  // [N/cm]
 };
 
 struct WickramatungeModel {
   // indexed [direction][range]
   std::array<std::array<WickramatungeCoefficients, 2>, 2> sets{};
-  double pressure_split_pa = 2.5e5;   // below: low range, else high (2.5 bar)
+  double pressure_split_pa = 2.5e5;  // below: low range, else high (2.5 bar)
 
   const WickramatungeCoefficients& coefficients(StretchDirection direction,
                                                 PressureRange range) const {
@@ -58,8 +58,8 @@ double wickramatunge_force(const WickramatungeModel& model, double p_pa, double 
 
 // Ls [m] from (p, F): the smallest positive root of the cubic
 // a2 Ls^3 + a1 P Ls^2 + (a0 P^2 + a3) Ls - F = 0, same statuses as invert_spring_model.
-DeformationEstimate invert_wickramatunge(const WickramatungeModel& model, double p_pa,
-                                         double f_n, StretchDirection direction);
+DeformationEstimate invert_wickramatunge(const WickramatungeModel& model, double p_pa, double f_n,
+                                         StretchDirection direction);
 
 // Reads models/pams/wickramatunge_table1.toml-style files:
 //   units = { pressure = "bar", length = "cm", stiffness = "N/cm" }

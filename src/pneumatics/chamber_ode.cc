@@ -79,8 +79,8 @@ PneumaticOde::PneumaticOde(const PneumaticParams& params, ValveModel model,
 
 int PneumaticOde::states_per_muscle() const {
   if (model_ == ValveModel::kFirstOrder) return 1;
-  const bool outlet = model_ == ValveModel::kRegulator &&
-                      params_.regulator_sense == RegulatorSense::kOutlet;
+  const bool outlet =
+      model_ == ValveModel::kRegulator && params_.regulator_sense == RegulatorSense::kOutlet;
   return outlet ? 3 : 2;
 }
 
@@ -151,13 +151,11 @@ void PneumaticOde::regulator_rhs(double t, const double* y, double* ydot) {
     // polytropic chamber with moving wall
     const double volume = volume_m3(i, t);
     if (!(volume > 0.0)) throw RecoverableRhsError("non-positive chamber volume");
-    ydot[k + 1] =
-        (n_r_t_ * qm_in - params_.polytropic_index * p * volume_rate_m3_s(i, t)) / volume;
+    ydot[k + 1] = (n_r_t_ * qm_in - params_.polytropic_index * p * volume_rate_m3_s(i, t)) / volume;
   }
 }
 
-void PneumaticOde::set_kinematics(int muscle, double t0_s, double length_m,
-                                  double velocity_m_s) {
+void PneumaticOde::set_kinematics(int muscle, double t0_s, double length_m, double velocity_m_s) {
   Input& in = input_[muscle];
   in.t0 = t0_s;
   in.l0 = length_m;
@@ -168,7 +166,7 @@ void PneumaticOde::set_plant_volume(int muscle, const AvbdlParams& plant) {
   validate_avbdl_params(plant, "plant.");
   plant_.at(static_cast<std::size_t>(muscle)) = plant;
   shape_[static_cast<std::size_t>(muscle)] = avbdl_shape(plant);
-  braid_[static_cast<std::size_t>(muscle)] = avbdl_braid(plant);   // its length limits
+  braid_[static_cast<std::size_t>(muscle)] = avbdl_braid(plant);  // its length limits
 }
 
 double PneumaticOde::volume_m3(int muscle, double t) const {

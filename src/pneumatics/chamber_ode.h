@@ -73,8 +73,7 @@ class PneumaticOde : public OdeSystem {
  public:
   // One muscle per braid entry. Throws InputError if params fail validation or braid is
   // empty / has non-positive fibre length or turns.
-  PneumaticOde(const PneumaticParams& params, ValveModel model,
-               std::vector<BraidGeometry> braid);
+  PneumaticOde(const PneumaticParams& params, ValveModel model, std::vector<BraidGeometry> braid);
 
   int size() const override { return states_per_muscle() * muscle_count(); }
   void rhs(double t, const double* y, double* ydot) override;
@@ -124,8 +123,8 @@ class PneumaticOde : public OdeSystem {
   PneumaticParams params_;
   ValveModel model_;
   std::vector<BraidGeometry> braid_;
-  std::vector<std::optional<AvbdlParams>> plant_;   // per muscle, when set_plant_volume
-  std::vector<AvbdlShape> shape_;                   // the plant's shape, derived once
+  std::vector<std::optional<AvbdlParams>> plant_;  // per muscle, when set_plant_volume
+  std::vector<AvbdlShape> shape_;                  // the plant's shape, derived once
   std::vector<Input> input_;
   // an ISO 6358 restriction: C rho0 sqrt(T0/T) [kg/(s Pa)] and b
   struct Restriction {
@@ -137,11 +136,11 @@ class PneumaticOde : public OdeSystem {
   // restriction r opened to `opening` in [0, 1]
   double restriction_flow(const Restriction& r, double opening, double p_a, double p_b) const;
 
-  Restriction path_;      // iso6358: regulator -> tube -> chamber ([valve])
-  Restriction supply_;    // regulator: supply -> outlet (or chamber)
-  Restriction exhaust_;   // regulator: outlet (or chamber) -> atmosphere
-  Restriction tube_;      // regulator sensing its outlet: outlet -> chamber
-  double n_r_t_ = 0.0;             // n R T
+  Restriction path_;     // iso6358: regulator -> tube -> chamber ([valve])
+  Restriction supply_;   // regulator: supply -> outlet (or chamber)
+  Restriction exhaust_;  // regulator: outlet (or chamber) -> atmosphere
+  Restriction tube_;     // regulator sensing its outlet: outlet -> chamber
+  double n_r_t_ = 0.0;   // n R T
 };
 
 }  // namespace pamsim

@@ -106,8 +106,8 @@ void CvodeIntegrator::check(int flag, const char* function) const {
   throw IntegrationError(message);
 }
 
-void CvodeIntegrator::error_handler(int code, const char* module, const char* function,
-                                    char* msg, void* user_data) {
+void CvodeIntegrator::error_handler(int code, const char* module, const char* function, char* msg,
+                                    void* user_data) {
   // keep CVODE's own explanation for the exception message instead of printing it
   auto* self = static_cast<CvodeIntegrator*>(user_data);
   if (code < 0) {
@@ -157,8 +157,8 @@ void CvodeIntegrator::advance_to(double t_end) {
   sunrealtype t_reached = t_;
   const int flag = CVode(cvode_, t_end, y_, &t_reached, CV_NORMAL);
   if (flag < 0) {
-    std::string message = "CVode failed at t = " + std::to_string(t_reached) +
-                          " s: " + flag_name(flag);
+    std::string message =
+        "CVode failed at t = " + std::to_string(t_reached) + " s: " + flag_name(flag);
     if (rhs_exception_) {
       std::exception_ptr e = rhs_exception_;
       rhs_exception_ = nullptr;

@@ -65,16 +65,16 @@ class CvodeIntegrator {
   const double* state() const;
   int size() const { return size_; }
 
-  // cumulative since construction (across reset()): internal steps, right-hand-side evaluations (including
-  // the ones for difference-quotient Jacobians), error-test failures, Jacobian evaluations
+  // cumulative since construction (across reset()): internal steps, right-hand-side evaluations
+  // (including the ones for difference-quotient Jacobians), error-test failures, Jacobian
+  // evaluations
   long steps() const;
   long rhs_evals() const;
   long error_test_failures() const;
   long jacobian_evals() const;
 
  private:
-  static int rhs_callback(double t, _generic_N_Vector* y, _generic_N_Vector* ydot,
-                          void* user_data);
+  static int rhs_callback(double t, _generic_N_Vector* y, _generic_N_Vector* ydot, void* user_data);
   static void error_handler(int code, const char* module, const char* function, char* msg,
                             void* user_data);
   void check(int flag, const char* function) const;

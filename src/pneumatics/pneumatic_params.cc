@@ -44,16 +44,16 @@ void validate_regulator_loop(const PneumaticParams& p, const Require& require) {
                 regulator_exhaust_critical_ratio(p));
   }
   restriction("tube", p.tube_conductance_m3_per_s_pa, p.tube_critical_ratio);
-  require(finite(p.regulator_outlet_volume_m3) && p.regulator_outlet_volume_m3 > 0.0,
-          "regulator outlet volume must be > 0 m^3, got " +
-              format_value(p.regulator_outlet_volume_m3));
+  require(
+      finite(p.regulator_outlet_volume_m3) && p.regulator_outlet_volume_m3 > 0.0,
+      "regulator outlet volume must be > 0 m^3, got " + format_value(p.regulator_outlet_volume_m3));
 }
 
 }  // namespace
 
 namespace {
-constexpr EnumName<RegulatorFeedback> kFeedbackNames[] = {
-    {RegulatorFeedback::kInstant, "instant"}, {RegulatorFeedback::kDelayed, "delayed"}};
+constexpr EnumName<RegulatorFeedback> kFeedbackNames[] = {{RegulatorFeedback::kInstant, "instant"},
+                                                          {RegulatorFeedback::kDelayed, "delayed"}};
 constexpr EnumName<RegulatorSense> kSenseNames[] = {{RegulatorSense::kChamber, "chamber"},
                                                     {RegulatorSense::kOutlet, "outlet"}};
 }  // namespace
@@ -98,16 +98,15 @@ void validate_pneumatic_params(const PneumaticParams& p, const std::string& cont
   require(p.polytropic_index >= 1.0 && p.polytropic_index <= 1.4,
           "polytropic index must be in [1, 1.4], got " + format_value(p.polytropic_index));
   require(finite(p.sonic_conductance_m3_per_s_pa) && p.sonic_conductance_m3_per_s_pa >= 0.0,
-          "sonic conductance must be >= 0, got " +
-              format_value(p.sonic_conductance_m3_per_s_pa));
-  require(p.critical_pressure_ratio >= 0.0 && p.critical_pressure_ratio < 1.0,
-          "critical pressure ratio must be in [0, 1), got " +
-              format_value(p.critical_pressure_ratio));
+          "sonic conductance must be >= 0, got " + format_value(p.sonic_conductance_m3_per_s_pa));
+  require(
+      p.critical_pressure_ratio >= 0.0 && p.critical_pressure_ratio < 1.0,
+      "critical pressure ratio must be in [0, 1), got " + format_value(p.critical_pressure_ratio));
   require(p.laminar_ratio > p.critical_pressure_ratio && p.laminar_ratio < 1.0,
           "laminar ratio must be in (critical ratio, 1), got " + format_value(p.laminar_ratio));
-  require(finite(p.regulator_time_constant_s) && p.regulator_time_constant_s > 0.0,
-          "regulator time constant must be > 0 s, got " +
-              format_value(p.regulator_time_constant_s));
+  require(
+      finite(p.regulator_time_constant_s) && p.regulator_time_constant_s > 0.0,
+      "regulator time constant must be > 0 s, got " + format_value(p.regulator_time_constant_s));
   require(p.command_min_gauge_pa >= 0.0 && p.command_min_gauge_pa < p.command_max_gauge_pa &&
               p.command_max_gauge_pa <= p.supply_gauge_pa,
           "command range must satisfy 0 <= min < max <= supply, got [" +
@@ -138,22 +137,24 @@ void validate_pneumatic_params(const PneumaticParams& p, const std::string& cont
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kDm3PerSBar = 1e-3 / units::kPaPerBar;   // dm^3/(s bar) -> m^3/(s Pa)
+constexpr double kDm3PerSBar = 1e-3 / units::kPaPerBar;  // dm^3/(s bar) -> m^3/(s Pa)
 const char* const kDm3PerSBarUnit = "dm^3/(s bar)";
 
 // a choice between two policies of the solver at a discontinuity
 ChoiceRow policy_row(const char* name, const char* doc, CommandChangePolicy* field) {
-  return {name, {"warm", "reinit"}, doc,
-          [field](const std::string& v) {
-            *field = v == "warm" ? CommandChangePolicy::kWarm : CommandChangePolicy::kReinit;
-          },
-          [field] {
-            return std::string(*field == CommandChangePolicy::kWarm ? "warm" : "reinit");
-          }};
+  return {
+      name,
+      {"warm", "reinit"},
+      doc,
+      [field](const std::string& v) {
+        *field = v == "warm" ? CommandChangePolicy::kWarm : CommandChangePolicy::kReinit;
+      },
+      [field] { return std::string(*field == CommandChangePolicy::kWarm ? "warm" : "reinit"); }};
 }
 
 }  // namespace
 
+// clang-format off
 KeyTable pneumatic_regulator_table(PneumaticParams* params) {
   PneumaticParams& p = *params;
   return {"regulator",
@@ -202,32 +203,43 @@ KeyTable pneumatic_regulator_table(PneumaticParams* params) {
             },
             [params] { return std::string(regulator_sense_name(params->regulator_sense)); }}}};
 }
+// clang-format on
 
 namespace {
 
 // [solver]: CVODE's settings
 KeyTable solver_table(PneumaticSolverParams* solver) {
-  return {"solver",
-          {{"relative_tolerance", "", 1.0, {0.0, 1e-2, true, false},
-            "CVODE's relative tolerance", &solver->relative_tolerance},
-           {"absolute_tolerance_Pa", "Pa", 1.0, {0.0, 1e4, true, false},
-            "CVODE's absolute tolerance on the pressures", &solver->absolute_tolerance_pa}},
-          {{"method", {"bdf", "adams"}, "CVODE's linear multistep method",
-            [solver](const std::string& v) {
-              solver->method = v == "bdf" ? CvodeMethod::kBdf : CvodeMethod::kAdams;
-            },
-            [solver] {
-              return std::string(solver->method == CvodeMethod::kBdf ? "bdf" : "adams");
-            }},
-           policy_row("on_command_change",
-                      "at a change of valve command, keep CVODE's history or restart it",
-                      &solver->on_command_change),
-           policy_row("on_loop_action", "the same at each action of a delayed regulator loop",
-                      &solver->on_loop_action)}};
+  return {
+      "solver",
+      {{"relative_tolerance",
+        "",
+        1.0,
+        {0.0, 1e-2, true, false},
+        "CVODE's relative tolerance",
+        &solver->relative_tolerance},
+       {"absolute_tolerance_Pa",
+        "Pa",
+        1.0,
+        {0.0, 1e4, true, false},
+        "CVODE's absolute tolerance on the pressures",
+        &solver->absolute_tolerance_pa}},
+      {{"method",
+        {"bdf", "adams"},
+        "CVODE's linear multistep method",
+        [solver](const std::string& v) {
+          solver->method = v == "bdf" ? CvodeMethod::kBdf : CvodeMethod::kAdams;
+        },
+        [solver] { return std::string(solver->method == CvodeMethod::kBdf ? "bdf" : "adams"); }},
+       policy_row("on_command_change",
+                  "at a change of valve command, keep CVODE's history or restart it",
+                  &solver->on_command_change),
+       policy_row("on_loop_action", "the same at each action of a delayed regulator loop",
+                  &solver->on_loop_action)}};
 }
 
 }  // namespace
 
+// clang-format off
 std::vector<KeyTable> pneumatic_key_table(PneumaticParams* params) {
   PneumaticParams& p = *params;
   const double mpa = units::kPaPerMPa;
@@ -279,6 +291,7 @@ std::vector<KeyTable> pneumatic_key_table(PneumaticParams* params) {
       solver_table(&p.solver),
   };
 }
+// clang-format on
 
 namespace {
 

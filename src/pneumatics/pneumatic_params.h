@@ -30,7 +30,7 @@ enum class RegulatorSense { kChamber, kOutlet };
 
 struct PneumaticSolverParams {
   CvodeMethod method = CvodeMethod::kBdf;
-  double relative_tolerance = 1e-4;   // [-], (0, 1e-2]
+  double relative_tolerance = 1e-4;    // [-], (0, 1e-2]
   double absolute_tolerance_pa = 1.0;  // [Pa], > 0
   CommandChangePolicy on_command_change = CommandChangePolicy::kReinit;
   // The same for an action of the delayed regulator loop (the held sensed pressure steps
@@ -41,8 +41,8 @@ struct PneumaticSolverParams {
 
 struct PneumaticParams {
   // supply and ambient
-  double supply_gauge_pa = 0.7e6;        // regulator inlet, gauge [Pa], > 0
-  double atmospheric_pa = 101325.0;      // absolute [Pa], > 0
+  double supply_gauge_pa = 0.7e6;    // regulator inlet, gauge [Pa], > 0
+  double atmospheric_pa = 101325.0;  // absolute [Pa], > 0
   // gas
   double gas_constant_j_per_kg_k = 287.0;  // air [J/(kg K)]
   double temperature_k = 293.15;           // supply and chamber gas [K]
@@ -56,21 +56,21 @@ struct PneumaticParams {
   double command_min_gauge_pa = 0.0;        // commands are clamped to [min, max]
   double command_max_gauge_pa = 0.7e6;      // <= supply
   // chamber: tube between valve and muscle
-  double tube_dead_volume_m3 = 12.566e-6;   // >= 0
+  double tube_dead_volume_m3 = 12.566e-6;  // >= 0
   // first-order valve option: dp/dt = (p_cmd - p) / tau
   double first_order_time_constant_s = 0.1;  // > 0
   // closed-loop regulator option (valve.model = "regulator", chamber_ode.h): the command
   // reaches the regulator after a dead time; its main valve opens toward
   // (p_cmd - p_sensed) / proportional band with a first-order lag, filling from the supply
   // or venting to the atmosphere through its supply or exhaust restriction
-  double regulator_dead_time_s = 0.005;              // >= 0
-  double regulator_valve_time_constant_s = 0.010;    // > 0
-  double regulator_proportional_band_pa = 20.0e3;    // > 0
+  double regulator_dead_time_s = 0.005;            // >= 0
+  double regulator_valve_time_constant_s = 0.010;  // > 0
+  double regulator_proportional_band_pa = 20.0e3;  // > 0
   RegulatorFeedback regulator_feedback = RegulatorFeedback::kInstant;
   RegulatorSense regulator_sense = RegulatorSense::kChamber;
   // kDelayed: the loop samples its sensed pressure every sample period and acts on each
   // sample one dead time later (the dead time above, which also delays the command)
-  double regulator_sample_period_s = 1e-3;           // (0, 0.1]
+  double regulator_sample_period_s = 1e-3;  // (0, 0.1]
   // ISO 6358 C [m^3/(s Pa)] and b of the regulator's supply (filling) and exhaust (venting)
   // paths; unset: the [valve] restriction's C and b for both (the model before they were
   // separate). Given: C > 0, b in [0, laminar ratio).

@@ -18,17 +18,15 @@ PneumaticSystem::PneumaticSystem(const PneumaticParams& params, ValveModel model
     : params_(params) {
   // validate sizes and initial pressures
   if (initial_gauge_pa.size() != braid.size()) {
-    throw InputError("pneumatic system: " + std::to_string(braid.size()) +
-                     " muscles but " + std::to_string(initial_gauge_pa.size()) +
-                     " initial pressures");
+    throw InputError("pneumatic system: " + std::to_string(braid.size()) + " muscles but " +
+                     std::to_string(initial_gauge_pa.size()) + " initial pressures");
   }
   for (std::size_t i = 0; i < initial_gauge_pa.size(); ++i) {
     const double p = initial_gauge_pa[i];
     if (!(p >= 0.0 && p <= params_.supply_gauge_pa)) {
       throw InputError("pneumatic system: muscle " + std::to_string(i) +
                        ": initial pressure must be in [0, " +
-                       std::to_string(params_.supply_gauge_pa) + "] Pa, got " +
-                       std::to_string(p));
+                       std::to_string(params_.supply_gauge_pa) + "] Pa, got " + std::to_string(p));
     }
   }
   ode_ = std::make_unique<PneumaticOde>(params_, model, std::move(braid));
@@ -52,7 +50,7 @@ PneumaticSystem::PneumaticSystem(const PneumaticParams& params, ValveModel model
     const double p_abs = initial_gauge_pa[i] + params_.atmospheric_pa;
     y0[ode_->chamber_index(i)] = p_abs;
     if (ode_->regulator_index(i) >= 0) y0[ode_->regulator_index(i)] = p_abs;
-    if (ode_->valve_opening_index(i) >= 0) y0[ode_->valve_opening_index(i)] = 0.0;   // at rest
+    if (ode_->valve_opening_index(i) >= 0) y0[ode_->valve_opening_index(i)] = 0.0;  // at rest
     if (ode_->outlet_index(i) >= 0) y0[ode_->outlet_index(i)] = p_abs;
     sensed[i] = p_abs;
     ode_->set_sensed_abs(i, p_abs);
@@ -88,8 +86,8 @@ void PneumaticSystem::set_command(int muscle, double p_cmd_gauge_pa) {
                                 ": non-finite valve command");
   }
   // the regulator accepts only its command range
-  const double p = std::clamp(p_cmd_gauge_pa, params_.command_min_gauge_pa,
-                              params_.command_max_gauge_pa);
+  const double p =
+      std::clamp(p_cmd_gauge_pa, params_.command_min_gauge_pa, params_.command_max_gauge_pa);
   if (p == command_gauge_pa_[muscle]) return;
   command_gauge_pa_[muscle] = p;
   if (dead_time_s_ > 0.0) {
@@ -119,8 +117,8 @@ void PneumaticSystem::set_kinematics(int muscle, double length_m, double velocit
   const double b = ode_->braid(muscle).fibre_length_m;
   if (!(length_m > 0.0 && length_m < b)) {
     throw std::invalid_argument("pneumatic system: muscle " + std::to_string(muscle) +
-                                ": length must be in (0, " + std::to_string(b) +
-                                ") m, got " + std::to_string(length_m));
+                                ": length must be in (0, " + std::to_string(b) + ") m, got " +
+                                std::to_string(length_m));
   }
   ode_->set_kinematics(muscle, integrator_->time(), length_m, velocity_m_s);
   kinematics_set_[muscle] = true;

@@ -65,9 +65,8 @@ class PneumaticSystem {
   // initial_gauge_pa[i] in [0, supply] is muscle i's chamber (and regulator) pressure and
   // its initial command. Throws InputError for invalid params, sizes or pressures, and
   // IntegrationError if SUNDIALS cannot be set up.
-  PneumaticSystem(const PneumaticParams& params, ValveModel model,
-                  std::vector<BraidGeometry> braid, std::vector<double> initial_gauge_pa,
-                  double t0_s = 0.0);
+  PneumaticSystem(const PneumaticParams& params, ValveModel model, std::vector<BraidGeometry> braid,
+                  std::vector<double> initial_gauge_pa, double t0_s = 0.0);
   ~PneumaticSystem();
   PneumaticSystem(const PneumaticSystem&) = delete;
   PneumaticSystem& operator=(const PneumaticSystem&) = delete;
@@ -103,7 +102,7 @@ class PneumaticSystem {
  private:
   void check_muscle(int muscle) const;
   std::vector<double> current_state() const;
-  void integrate_to(double t_s);               // restarting first if a command changed
+  void integrate_to(double t_s);  // restarting first if a command changed
   void apply_command(int muscle, double p_cmd_abs_pa);
   // the next delayed command, loop sample or loop action (+inf if none)
   double next_event_s() const;

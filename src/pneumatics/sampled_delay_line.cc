@@ -23,9 +23,7 @@ double SampledDelayLine::next_action_s() const {
   return pending_.empty() ? std::numeric_limits<double>::infinity() : pending_.front().act_s;
 }
 
-double SampledDelayLine::next_event_s() const {
-  return std::min(next_sample_s(), next_action_s());
-}
+double SampledDelayLine::next_event_s() const { return std::min(next_sample_s(), next_action_s()); }
 
 void SampledDelayLine::take_sample(std::vector<double> values) {
   assert(values.size() == held_.size());

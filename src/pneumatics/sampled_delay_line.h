@@ -10,9 +10,10 @@
 // time. A continuous delay p(t - D) would need the past solution's interpolant, kept by
 // us (CVodeGetDky reaches only the last internal step), and a delay shorter than a step
 // makes the step's right-hand side depend on its own unknown solution: a method-of-steps
-// scheme whose interpolation error CVODE's error test never sees. It is also the hardware: an ITV-class regulator's control circuit
-// reads its pressure sensor and drives its pilot solenoid valves digitally (SMC ITV manual,
-// working principle); as T -> 0 and D -> 0 the line becomes the instant loop (tested).
+// scheme whose interpolation error CVODE's error test never sees. It is also the hardware: an
+// ITV-class regulator's control circuit reads its pressure sensor and drives its pilot solenoid
+// valves digitally (SMC ITV manual, working principle); as T -> 0 and D -> 0 the line becomes the
+// instant loop (tested).
 #pragma once
 
 #include <deque>
@@ -26,9 +27,9 @@ class SampledDelayLine {
   // period_s > 0, delay_s >= 0 (asserted; PneumaticParams validates the keys).
   SampledDelayLine(double t0_s, double period_s, double delay_s, std::vector<double> initial);
 
-  double next_sample_s() const;   // when the next sample is due
-  double next_action_s() const;   // when the oldest pending sample acts; +inf if none
-  double next_event_s() const;    // the earlier of the two
+  double next_sample_s() const;  // when the next sample is due
+  double next_action_s() const;  // when the oldest pending sample acts; +inf if none
+  double next_event_s() const;   // the earlier of the two
 
   // the sample due at next_sample_s(), one value per channel; it acts `delay` later
   void take_sample(std::vector<double> values);
@@ -45,7 +46,7 @@ class SampledDelayLine {
   double t0_s_;
   double period_s_;
   double delay_s_;
-  long next_k_ = 0;   // index of the next sample (t_k = t0 + k T, not accumulated)
+  long next_k_ = 0;  // index of the next sample (t_k = t0 + k T, not accumulated)
   std::deque<Sample> pending_;
   std::vector<double> held_;
 };

@@ -27,8 +27,8 @@ struct ControlInput {
   double time_s = 0.0;
   // false while an event has switched the controller off: it then passes p_tp through
   bool enabled = true;
-  const std::vector<MuscleReading>* readings = nullptr;   // one per muscle
-  const std::vector<double>* p_tp_pa = nullptr;           // scheduled commands, gauge [Pa]
+  const std::vector<MuscleReading>* readings = nullptr;  // one per muscle
+  const std::vector<double>* p_tp_pa = nullptr;          // scheduled commands, gauge [Pa]
 };
 
 // A per-muscle quantity a controller logs at every control tick: the log's column
@@ -36,7 +36,7 @@ struct ControlInput {
 struct ControllerChannel {
   std::string prefix;
   std::string suffix;
-  std::string meaning;          // for the log's reference
+  std::string meaning;  // for the log's reference
   // a window (0 or 1: the video names the muscles whose window is open, each followed by
   // window_tag, "" or " Ib"); false: a value
   bool window = false;
@@ -45,13 +45,13 @@ struct ControllerChannel {
 
 // A kind of event a controller records per muscle, with its times (a reflex's triggers).
 struct ControllerEvent {
-  std::string name;             // "stretch_trigger"; the metric sets name what they read
+  std::string name;  // "stretch_trigger"; the metric sets name what they read
   std::string meaning;
 };
 
 struct ControlOutput {
-  std::vector<double> p_cmd_pa;       // valve commands, gauge [Pa]
-  std::vector<double> velocity_m_s;   // the velocity each muscle's control acted on (logged)
+  std::vector<double> p_cmd_pa;      // valve commands, gauge [Pa]
+  std::vector<double> velocity_m_s;  // the velocity each muscle's control acted on (logged)
   // each declared channel's value per muscle ([channel][muscle], the kind's order)
   std::vector<std::vector<double>> channels;
   void resize(int muscle_count, int channel_count = 0) {

@@ -30,16 +30,16 @@ struct ControllerScenario {
     std::string key;              // its scenario key, e.g. "muscles.agonist"
     double command_max_pa = 0.0;  // the highest pressure its schedule commands [Pa]
   };
-  double control_hz = 100.0;           // sim.control_hz
-  double command_max_pa = 0.0;         // the regulator's command maximum [Pa]
-  std::vector<Muscle> muscles;         // scenario order
+  double control_hz = 100.0;    // sim.control_hz
+  double command_max_pa = 0.0;  // the regulator's command maximum [Pa]
+  std::vector<Muscle> muscles;  // scenario order
 };
 
 // What a trial gives a kind's factory once the model is bound.
 struct ControllerSetup {
-  int muscle_count = 0;            // the model's PAM actuators
-  double control_hz = 100.0;       // sim.control_hz
-  std::vector<ReflexPair> pairs;   // ControllerConfig::pairs, by muscle index (model order)
+  int muscle_count = 0;           // the model's PAM actuators
+  double control_hz = 100.0;      // sim.control_hz
+  std::vector<ReflexPair> pairs;  // ControllerConfig::pairs, by muscle index (model order)
 };
 
 // One field of summary.json's "scenario" object.
@@ -78,7 +78,7 @@ class ControllerConfig {
 using ControllerKeyDoc = KeyDoc;
 
 struct ControllerKind {
-  std::string name;                    // controller.kind
+  std::string name;  // controller.kind
   // tables of its own ("reflex"): a scenario that chooses another kind may not give them
   std::vector<std::string> sections;
   // Reads and validates the kind's keys. Throws InputError "<file>: <key> <problem>".

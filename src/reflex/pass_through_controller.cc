@@ -9,9 +9,8 @@ namespace pamsim {
 
 void embed_pass_through(const ControllerSetup& setup, pamctl_config* config) {
   if (setup.muscle_count < 0 || setup.muscle_count > PAMCTL_MAX_MUSCLES) {
-    throw InputError("the embedded controller holds at most " +
-                     std::to_string(PAMCTL_MAX_MUSCLES) + " muscles, the model has " +
-                     std::to_string(setup.muscle_count));
+    throw InputError("the embedded controller holds at most " + std::to_string(PAMCTL_MAX_MUSCLES) +
+                     " muscles, the model has " + std::to_string(setup.muscle_count));
   }
   config->muscle_count = setup.muscle_count;
   config->kind = PAMCTL_KIND_PASS_THROUGH;

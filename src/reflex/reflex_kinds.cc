@@ -31,7 +31,7 @@ double read_p_max(ConfigReader& in, const ControllerScenario& sc) {
            "must be <= the regulator's command maximum (" +
                format_value(units::pa_to_mpa(sc.command_max_pa)) + " MPa), got " +
                format_value(units::pa_to_mpa(p_max_pa)));
-  for (const ControllerScenario::Muscle& m : sc.muscles) {   // they would be clamped silently
+  for (const ControllerScenario::Muscle& m : sc.muscles) {  // they would be clamped silently
     in.check(!(m.command_max_pa > p_max_pa), m.key + ".command",
              "goes up to " + format_value(units::pa_to_mpa(m.command_max_pa)) +
                  " MPa, above controller.p_max_MPa = " + format_value(units::pa_to_mpa(p_max_pa)));
@@ -76,13 +76,13 @@ NamePairs read_pairs(ConfigReader& in, const ControllerScenario& sc) {
 
 // a kind with the stretch reflexes, the tension reflexes or both
 std::shared_ptr<const ControllerConfig> read_reflexes(ConfigReader& in,
-                                                      const ControllerScenario& sc,
-                                                      bool stretch, bool tension) {
+                                                      const ControllerScenario& sc, bool stretch,
+                                                      bool tension) {
   auto config = std::make_shared<StretchReflexScenarioConfig>();
   config->stretch = stretch;
   config->tension = tension;
-  read_key_rows(in, stretch_reflex_key_table(&config->reflex, &config->velocity_lowpass_hz,
-                                             stretch));
+  read_key_rows(in,
+                stretch_reflex_key_table(&config->reflex, &config->velocity_lowpass_hz, stretch));
   if (tension) read_key_rows(in, tension_reflex_key_table(&config->ib));
   config->p_max_pa = read_p_max(in, sc);
   config->pairs = read_pairs(in, sc);
@@ -131,7 +131,7 @@ std::vector<SummaryField> StretchReflexScenarioConfig::summary_fields() const {
   std::vector<SummaryField> fields = {{"reflex_enabled", reflex.enabled}};
   if (stretch) {
     fields.push_back({"reflex_sensor", std::string(to_string(reflex.sensor))});
-    ReflexConfig fields_of = reflex;   // the values in the file's units, by their rows
+    ReflexConfig fields_of = reflex;  // the values in the file's units, by their rows
     double lowpass_hz = velocity_lowpass_hz;
     const KeyTable rows = stretch_reflex_key_table(&fields_of, &lowpass_hz);
     fields.push_back({"v_thr_mm_s", file_value(rows, "v_thr_mm_s")});

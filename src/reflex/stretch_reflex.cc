@@ -44,14 +44,13 @@ bool ReflexWindow::update(double time_s, bool trigger) {
   return pamctl_window_update(&config_, &window_, time_s, trigger);
 }
 
-pamctl_stretch_config embedded_stretch(const StretchReflexParams& params,
-                                       double control_period_s) {
+pamctl_stretch_config embedded_stretch(const StretchReflexParams& params, double control_period_s) {
   pamctl_stretch_config config{};
   config.v_thr_m_s = params.v_thr_m_s;
   config.k_pa_s_per_m = params.k_pa_s_per_m;
   config.mode = params.mode == ReflexMode::kLatch ? PAMCTL_MODE_LATCH : PAMCTL_MODE_FOLLOW;
-  config.window = embedded_window(params.duration_s, params.refractory_s, params.arm_after_s,
-                                  control_period_s);
+  config.window =
+      embedded_window(params.duration_s, params.refractory_s, params.arm_after_s, control_period_s);
   return config;
 }
 

@@ -16,8 +16,8 @@
 // clamped >= 0; "latch" holds the v that triggered. Default: follow. A prototype of the
 // falling-mass arm found that following gives the full drop reduction (~3.6 deg with the
 // ISO 6358 chamber) and lets the command fall back within ~50 ms once the stretch stops,
-// while latching the peak for the whole 200 ms overshoots the arm to about -11 deg with the fiber sensor; follow is
-// also the closer analogue of a spindle whose discharge tracks the stretch rate.
+// while latching the peak for the whole 200 ms overshoots the arm to about -11 deg with the fiber
+// sensor; follow is also the closer analogue of a spindle whose discharge tracks the stretch rate.
 //
 // Timing, all in whole control ticks of dt: the trigger tick is the first of the window's
 // n = round(duration_s / dt) ticks (>= 1); a window is never extended or restarted while it
@@ -43,11 +43,11 @@ ReflexMode parse_reflex_mode(const std::string& name, const std::string& key = "
 // The stretch reflex's parameters, SI; their scenario keys reflex.* (paper units, named) are
 // rows of reflex_keys.h. Defaults: Table II's model-based reflex.
 struct StretchReflexParams {
-  double v_thr_m_s = 0.070;              // V_thr > 0 [m/s], reflex.v_thr_mm_s = 70 (fiber 25)
+  double v_thr_m_s = 0.070;  // V_thr > 0 [m/s], reflex.v_thr_mm_s = 70 (fiber 25)
   // k >= 0 [Pa/(m/s)], reflex.k_MPa_s_per_mm = 1/800 (fiber 1/300): 1/800 MPa per mm/s
   double k_pa_s_per_m = 1e9 / 800.0;
-  double duration_s = 0.2;               // reflex.duration_s, >= one control period
-  ReflexMode mode = ReflexMode::kFollow; // reflex.mode
+  double duration_s = 0.2;                // reflex.duration_s, >= one control period
+  ReflexMode mode = ReflexMode::kFollow;  // reflex.mode
   // reflex.refractory_s >= 0. Default 0.5 s: on the ideal plant (drop_mass_ideal.toml) the
   // arm rings at ~5 Hz after the impact, so the rebound stretches come ~200 ms apart and the
   // fiber reflex (25 mm/s) re-fired on them; 0.5 s after the 0.2 s window covers the first
@@ -73,8 +73,7 @@ class ReflexWindow {
  public:
   // refractory_s, arm_after_s >= 0 and control_period_s > 0 (asserted); a window lasts at
   // least one tick whatever duration_s.
-  ReflexWindow(double duration_s, double refractory_s, double arm_after_s,
-               double control_period_s);
+  ReflexWindow(double duration_s, double refractory_s, double arm_after_s, double control_period_s);
 
   // One control tick at time_s: opens a window if `trigger` and the reflex is idle, armed
   // and not refractory. Returns true while a window is open (this tick included).
@@ -90,8 +89,7 @@ class ReflexWindow {
 };
 
 // The stretch reflex as the embedded controller holds it (SI, its window in ticks).
-pamctl_stretch_config embedded_stretch(const StretchReflexParams& params,
-                                       double control_period_s);
+pamctl_stretch_config embedded_stretch(const StretchReflexParams& params, double control_period_s);
 
 class StretchReflex {
  public:
@@ -115,7 +113,7 @@ class StretchReflex {
 
 // The two muscles of an antagonistic pair, in the order of Eq. (12)-(13).
 enum PairRole : int { kAgonist = 0, kAntagonist = 1 };
-using PairValues = std::array<double, 2>;   // indexed by PairRole
+using PairValues = std::array<double, 2>;  // indexed by PairRole
 
 // Eq. (12)-(13): a pair's commands [Pa] from its goal pressures and the two reflexes' dp
 // [Pa], each clamped to [0, p_max_pa].

@@ -38,11 +38,11 @@ ReflexSensor parse_reflex_sensor(const std::string& name) {
 }
 
 ReflexConfig table_ii_reflex_config(ReflexSensor sensor) {
-  ReflexConfig reflex;   // the model-based reflex's values are StretchReflexParams' defaults
+  ReflexConfig reflex;  // the model-based reflex's values are StretchReflexParams' defaults
   reflex.sensor = sensor;
   if (sensor == ReflexSensor::kFiber) {
     reflex.v_thr_m_s = 0.025;
-    reflex.k_pa_s_per_m = 1e9 / 300.0;   // 1/300 MPa per mm/s
+    reflex.k_pa_s_per_m = 1e9 / 300.0;  // 1/300 MPa per mm/s
   }
   return reflex;
 }
@@ -54,7 +54,7 @@ void validate(const StretchReflexControllerConfig& config) {
 
   // reflex.*
   const ReflexConfig& reflex = config.reflex;
-  ReflexConfig fields = reflex;   // the rows' ranges and choices (the low-pass is the sensing's)
+  ReflexConfig fields = reflex;  // the rows' ranges and choices (the low-pass is the sensing's)
   double lowpass_hz = 0.0;
   check_key_rows(stretch_reflex_key_table(&fields, &lowpass_hz));
   require_window("reflex", reflex.duration_s, reflex.refractory_s, reflex.arm_after_s, dt);
@@ -96,8 +96,8 @@ void embed_controller(const StretchReflexControllerConfig& config, pamctl_config
   rc.enabled = config.reflex.enabled;
   rc.stretch = config.stretch;
   rc.tension = config.tension;
-  rc.sensor = config.reflex.sensor == ReflexSensor::kFiber ? PAMCTL_SENSOR_FIBER
-                                                           : PAMCTL_SENSOR_MODEL;
+  rc.sensor =
+      config.reflex.sensor == ReflexSensor::kFiber ? PAMCTL_SENSOR_FIBER : PAMCTL_SENSOR_MODEL;
   rc.min_tension_n = config.reflex.min_tension_n;
   rc.reciprocal_trigger_inhibition = config.reflex.reciprocal_trigger_inhibition;
   rc.excite_antagonist = config.ib.excite_antagonist;
@@ -160,8 +160,7 @@ void StretchReflexController::update(const ControlInput& in, ControlOutput* out)
 }
 
 PairValues reflex_commands(const PairValues& p_tp_pa, const PairValues& dp_ia_pa,
-                           const PairValues& dp_ib_pa, bool excite_antagonist,
-                           double p_max_pa) {
+                           const PairValues& dp_ib_pa, bool excite_antagonist, double p_max_pa) {
   // the embedded controller's rule (pamctl_pair_command), clamped to the valve's range
   pamctl_reflex_config rc{};
   rc.tension = true;

@@ -64,14 +64,14 @@ ReflexConfig table_ii_reflex_config(ReflexSensor sensor);
 
 struct StretchReflexControllerConfig {
   ReflexConfig reflex;
-  bool stretch = true;                     // the Ia reflexes run
-  bool tension = false;                    // the Ib reflexes run (reflex.ib.*)
+  bool stretch = true;   // the Ia reflexes run
+  bool tension = false;  // the Ib reflexes run (reflex.ib.*)
   TensionReflexParams ib;
   // valve range [Pa]: the commands are clamped to [0, p_max]     controller.p_max_MPa
   double p_max_pa = 0.8e6;
-  double control_hz = 100.0;                                   // sim.control_hz
+  double control_hz = 100.0;  // sim.control_hz
   int muscle_count = 2;
-  std::vector<ReflexPair> pairs{ReflexPair{}};                 // reflex.pairs
+  std::vector<ReflexPair> pairs{ReflexPair{}};  // reflex.pairs
 };
 
 // The controller's part of the embedded controller's configuration (kind, reflexes, pairs,
@@ -94,15 +94,14 @@ void validate(const StretchReflexControllerConfig& config);
 // with e = 1 if reflex.ib.excite_antagonist, else 0; each clamped to [0, p_max_pa]. So a
 // tension reflex can cancel its own muscle's stretch reflex, as autogenic inhibition does.
 PairValues reflex_commands(const PairValues& p_tp_pa, const PairValues& dp_ia_pa,
-                           const PairValues& dp_ib_pa, bool excite_antagonist,
-                           double p_max_pa);
+                           const PairValues& dp_ib_pa, bool excite_antagonist, double p_max_pa);
 
 // A reflex kind as a scenario configures it (controller_kind.h): the keys reflex.*,
 // reflex.ib.* and controller.p_max_MPa, read by the kinds' readers.
 class StretchReflexScenarioConfig final : public ControllerConfig {
  public:
-  ReflexConfig reflex;     // reflex.*
-  bool stretch = true;     // the kind's reflexes: Ia, Ib
+  ReflexConfig reflex;  // reflex.*
+  bool stretch = true;  // the kind's reflexes: Ia, Ib
   bool tension = false;
   TensionReflexParams ib;  // reflex.ib.*
   double p_max_pa = 0.0;   // controller.p_max_MPa, or the regulator's command maximum
@@ -136,9 +135,9 @@ class StretchReflexController final : public Controller {
   explicit StretchReflexController(const StretchReflexControllerConfig& config);
 
   // the channels and events of reflex_channels() and reflex_events() for config.tension
-  static constexpr int kStretchWindow = 0;    // ControlOutput::channels: reflex_<m>
-  static constexpr int kTensionWindow = 1;    // tension_reflex_<m>, with the Ib reflexes
-  static constexpr int kStretchTrigger = 0;   // event_times_s()
+  static constexpr int kStretchWindow = 0;   // ControlOutput::channels: reflex_<m>
+  static constexpr int kTensionWindow = 1;   // tension_reflex_<m>, with the Ib reflexes
+  static constexpr int kStretchTrigger = 0;  // event_times_s()
   static constexpr int kTensionTrigger = 1;
 
   void update(const ControlInput& in, ControlOutput* out) override;
@@ -161,10 +160,10 @@ class StretchReflexController final : public Controller {
 
  private:
   StretchReflexControllerConfig config_;
-  pamctl_config embedded_{};            // its settings as the embedded controller holds them
+  pamctl_config embedded_{};  // its settings as the embedded controller holds them
   pamctl_state state_{};
   pamctl_output out_{};
-  std::vector<std::vector<std::vector<double>>> event_times_s_;   // [event][muscle][k]
+  std::vector<std::vector<std::vector<double>>> event_times_s_;  // [event][muscle][k]
 };
 
 // What a reflex controller logs: its windows (reflex_<m>, and tension_reflex_<m> with

@@ -30,15 +30,15 @@ namespace pamsim {
 // the Ib reflex must give f_thr_N and k_MPa_per_N (the values here are placeholders for
 // tests).
 struct TensionReflexParams {
-  double f_thr_N = 60.0;              // reflex.ib.f_thr_N > 0, the tension threshold
-  double df_thr_N_s = 0.0;            // reflex.ib.df_thr_N_s >= 0, rate threshold (0: off)
-  double k_pa_per_n = 2000.0;         // reflex.ib.k_MPa_per_N >= 0, the gain [Pa/N]
-  double duration_s = 0.2;            // reflex.ib.duration_s, >= one control period
-  ReflexMode mode = ReflexMode::kFollow;   // reflex.ib.mode
-  double refractory_s = 0.0;          // reflex.ib.refractory_s >= 0
-  double arm_after_s = 0.1;           // reflex.ib.arm_after_s >= 0
-  double rate_lowpass_hz = 10.0;      // reflex.ib.rate_lowpass_hz: 0 or up to Nyquist
-  bool excite_antagonist = false;     // reflex.ib.excite_antagonist
+  double f_thr_N = 60.0;                  // reflex.ib.f_thr_N > 0, the tension threshold
+  double df_thr_N_s = 0.0;                // reflex.ib.df_thr_N_s >= 0, rate threshold (0: off)
+  double k_pa_per_n = 2000.0;             // reflex.ib.k_MPa_per_N >= 0, the gain [Pa/N]
+  double duration_s = 0.2;                // reflex.ib.duration_s, >= one control period
+  ReflexMode mode = ReflexMode::kFollow;  // reflex.ib.mode
+  double refractory_s = 0.0;              // reflex.ib.refractory_s >= 0
+  double arm_after_s = 0.1;               // reflex.ib.arm_after_s >= 0
+  double rate_lowpass_hz = 10.0;          // reflex.ib.rate_lowpass_hz: 0 or up to Nyquist
+  bool excite_antagonist = false;         // reflex.ib.excite_antagonist
 };
 
 // Checks every field, throwing InputError "reflex.ib.<key> must be ..., got <value>".
@@ -46,8 +46,7 @@ void validate(const TensionReflexParams& params, double control_hz);
 
 // The tension reflex as the embedded controller holds it (SI, its window in ticks, its rate
 // filter's factor).
-pamctl_tension_config embedded_tension(const TensionReflexParams& params,
-                                       double control_period_s);
+pamctl_tension_config embedded_tension(const TensionReflexParams& params, double control_period_s);
 
 class TensionReflex {
  public:

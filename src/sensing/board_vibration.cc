@@ -4,12 +4,11 @@
 #include <cmath>
 #include <stdexcept>
 
-
 namespace pamsim {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kLambda1 = 1.8751040687119611;   // first root of 1 + cos x cosh x = 0
+constexpr double kLambda1 = 1.8751040687119611;  // first root of 1 + cos x cosh x = 0
 
 }  // namespace
 
@@ -21,8 +20,7 @@ double board_first_mode_hz(const GaugeBoardParams& board, const BoardVibrationPa
          std::sqrt(board.youngs_modulus_pa * second_moment / (v.density_kg_m3 * area));
 }
 
-BoardVibration::BoardVibration(double natural_hz, double damping_ratio, double dt_s)
-    : dt_s_(dt_s) {
+BoardVibration::BoardVibration(double natural_hz, double damping_ratio, double dt_s) : dt_s_(dt_s) {
   if (!(natural_hz > 0.0 && std::isfinite(natural_hz) && damping_ratio > 0.0 &&
         damping_ratio < 1.0 && dt_s > 0.0)) {
     throw std::invalid_argument("BoardVibration: needs a finite f > 0, 0 < zeta < 1, dt > 0");

@@ -34,9 +34,9 @@
 namespace pamsim {
 
 struct BoardVibrationParams {
-  bool enabled = true;              // sensors.gauge.board.vibration
-  double density_kg_m3 = 1190.0;    // sensors.gauge.board.density_kg_m3, > 0
-  double loss_factor = 0.03;        // sensors.gauge.board.loss_factor, (0, 1)
+  bool enabled = true;            // sensors.gauge.board.vibration
+  double density_kg_m3 = 1190.0;  // sensors.gauge.board.density_kg_m3, > 0
+  double loss_factor = 0.03;      // sensors.gauge.board.loss_factor, (0, 1)
 };
 
 // f1 [Hz] of the board clamped at 0 and free at L_b (formula above).

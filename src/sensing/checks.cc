@@ -10,7 +10,7 @@ namespace pamsim::checks {
 
 void fail(const std::string& key, const std::string& allowed, double value) {
   const std::string problem = "must be " + allowed + ", got " + format_value(value);
-  throw InputError(key + " " + problem, {"", key, problem});   // (its parts: a reader renames)
+  throw InputError(key + " " + problem, {"", key, problem});  // (its parts: a reader renames)
 }
 
 void require_finite(const std::string& key, double value) {
@@ -28,21 +28,19 @@ void require_non_negative(const std::string& key, double value) {
 void require_cutoff(const std::string& key, double value, double control_hz) {
   const double nyquist = 0.5 * control_hz;
   if (!(std::isfinite(value) && value >= 0.0 && value <= nyquist)) {
-    fail(key, "0 (off) or in (0, " + format_value(nyquist) + "] Hz (sim.control_hz / 2)",
-         value);
+    fail(key, "0 (off) or in (0, " + format_value(nyquist) + "] Hz (sim.control_hz / 2)", value);
   }
 }
 
 void require_window(const std::string& prefix, double duration_s, double refractory_s,
                     double arm_after_s, double dt) {
   if (!(std::isfinite(duration_s) && duration_s >= dt * (1.0 - 1e-9))) {
-    fail(prefix + ".duration_s", ">= one control period (" + format_value(dt) + " s)",
-         duration_s);
+    fail(prefix + ".duration_s", ">= one control period (" + format_value(dt) + " s)", duration_s);
   }
   require_non_negative(prefix + ".refractory_s", refractory_s);
   const double max_ticks_s = 1e9 * dt;
-  for (const auto& [key, value] : {std::pair{".duration_s", duration_s},
-                                   std::pair{".refractory_s", refractory_s}}) {
+  for (const auto& [key, value] :
+       {std::pair{".duration_s", duration_s}, std::pair{".refractory_s", refractory_s}}) {
     if (!(value <= max_ticks_s)) {
       fail(prefix + key, "at most " + format_value(max_ticks_s) + " s (1e9 control periods)",
            value);

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "base/format.h"   // format_value: the numbers in the messages
+#include "base/format.h"  // format_value: the numbers in the messages
 
 namespace pamsim::checks {
 

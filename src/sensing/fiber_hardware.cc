@@ -9,7 +9,7 @@
 namespace pamsim {
 
 void validate(const FiberHardwareConfig& c) {
-  FiberHardwareConfig fields = c;   // each key's own range (instrument_keys.h), then the creep
+  FiberHardwareConfig fields = c;  // each key's own range (instrument_keys.h), then the creep
   check_key_rows(fiber_hardware_key_table(&fields));
   validate_prony(c.creep, "sensors.fiber.creep_weights", "sensors.fiber.creep_times_s");
 }

@@ -41,9 +41,9 @@ namespace pamsim {
 
 // Keys sensors.fiber.* (read in sim/io; SI inside).
 struct FiberHardwareConfig {
-  bool enabled = false;            // sensors.fiber.model: "ideal" | "fabric"
-  double nonlinearity_pct = 5.0;   // sensors.fiber.nonlinearity_pct, within (-100, 100)
-  double span_m = 0.020;           // sensors.fiber.span_mm, > 0
+  bool enabled = false;           // sensors.fiber.model: "ideal" | "fabric"
+  double nonlinearity_pct = 5.0;  // sensors.fiber.nonlinearity_pct, within (-100, 100)
+  double span_m = 0.020;          // sensors.fiber.span_mm, > 0
   // sensors.fiber.creep_weights, creep_times_s (two lists of one length)
   // (one term, built without an initializer list: GCC 12 warns on one in a member default)
   std::vector<PronyTerm> creep = std::vector<PronyTerm>(1, PronyTerm{0.05, 10.0});
@@ -62,7 +62,7 @@ class FiberHardware {
   double reading_m(double u_m);
 
  private:
-  double quadratic_per_m_ = 0.0;   // N / (100 S)
+  double quadratic_per_m_ = 0.0;  // N / (100 S)
   PronyCreep creep_;
 };
 

@@ -7,8 +7,8 @@
 namespace pamsim {
 namespace {
 
-constexpr int kFirstDecade = -2;   // tau = 0.01 s
-constexpr int kLastDecade = 9;     // tau = 1e9 s
+constexpr int kFirstDecade = -2;  // tau = 0.01 s
+constexpr int kLastDecade = 9;    // tau = 1e9 s
 
 }  // namespace
 
@@ -21,7 +21,7 @@ std::vector<PronyTerm> findley_prony_terms(const FindleyCreep& law) {
   assert(n > 0.0 && n <= kMaxFindleyExponent && law.creep_1000h >= 0.0);
   std::vector<PronyTerm> terms;
   if (law.creep_1000h == 0.0) return terms;
-  const double a = law.creep_1000h / std::pow(kFindleyReferenceS, n);   // c(t) = a t^n
+  const double a = law.creep_1000h / std::pow(kFindleyReferenceS, n);  // c(t) = a t^n
   const double gamma = std::tgamma(1.0 - n);
   for (int k = kFirstDecade; k <= kLastDecade; ++k) {
     const double tau = std::pow(10.0, k);

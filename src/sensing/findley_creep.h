@@ -21,8 +21,8 @@
 namespace pamsim {
 
 struct FindleyCreep {
-  double exponent = 0.24;       // n, in (0, kMaxFindleyExponent]
-  double creep_1000h = 0.0;     // A >= 0: the creep after 1000 h per unit elastic strain
+  double exponent = 0.24;    // n, in (0, kMaxFindleyExponent]
+  double creep_1000h = 0.0;  // A >= 0: the creep after 1000 h per unit elastic strain
 };
 inline constexpr double kMaxFindleyExponent = 0.7;
 inline constexpr double kFindleyReferenceS = 1000.0 * 3600.0;

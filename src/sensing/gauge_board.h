@@ -18,11 +18,11 @@ struct GaugeBoardParams {
   // E > 0 [Pa]. PMMA (cast acrylic sheet): about 3.3 GPa in short-term tension (Evonik
   // PLEXIGLAS GS technical data, ISO 527); the board's creep is a separate term.
   double youngs_modulus_pa = 3.3e9;
-  double width_m = 0.0;          // w > 0
-  double thickness_m = 0.0;      // t > 0
-  double gauge_position_m = 0.0; // x_g >= 0, from the clamp to the gauge's centre
+  double width_m = 0.0;             // w > 0
+  double thickness_m = 0.0;         // t > 0
+  double gauge_position_m = 0.0;    // x_g >= 0, from the clamp to the gauge's centre
   double contact_position_m = 0.0;  // x_c > x_g, from the clamp to where the line bears
-  double length_m = 0.0;         // L_b >= x_c, the free end; 0: the board ends at x_c
+  double length_m = 0.0;            // L_b >= x_c, the free end; 0: the board ends at x_c
 };
 
 // L_b, or x_c where the board ends at its contact.

@@ -20,13 +20,13 @@
 // is unloaded from then on, whatever the line pulls (the paper's "failure to send voltage
 // signals"). The reading follows the pull times the lever y - y_g (gauge_board.h).
 //
-// The figures (each a key, sensors.gauge.contact.*) are an ASSUMPTION, a row of docs/physics.md's departures: the
-// paper gives no geometry of its gauges. D = 2 mm (an assembly's lateral tolerance), d1 = 20
-// mm (the board at the fitting), d2 = 250 mm (the MJCF's 0.4 m from anchor to shaft less the
-// muscle), theta = 30 deg, mu = 0.3 (nylon on acrylic, the usual 0.2-0.4 of polymer pairs),
-// and the board 5 mm longer than the contact position. With them the contact sticks over
-// the arm's whole stroke (w about 2.9 mm, y* moving about 0.2 mm): docs/physics.md says what it would
-// take to lose it.
+// The figures (each a key, sensors.gauge.contact.*) are an ASSUMPTION, a row of docs/physics.md's
+// departures: the paper gives no geometry of its gauges. D = 2 mm (an assembly's lateral
+// tolerance), d1 = 20 mm (the board at the fitting), d2 = 250 mm (the MJCF's 0.4 m from anchor to
+// shaft less the muscle), theta = 30 deg, mu = 0.3 (nylon on acrylic, the usual 0.2-0.4 of polymer
+// pairs), and the board 5 mm longer than the contact position. With them the contact sticks over
+// the arm's whole stroke (w about 2.9 mm, y* moving about 0.2 mm): docs/physics.md says what it
+// would take to lose it.
 #pragma once
 
 #include <string>
@@ -36,12 +36,12 @@
 namespace pamsim {
 
 struct GaugeContactParams {
-  bool sliding = true;                 // sensors.gauge.contact.model: "fixed" | "sliding"
-  double misalignment_m = 0.002;       // D, misalignment_mm (either sign)
-  double fitting_distance_m = 0.020;   // d1, fitting_distance_mm >= 1
-  double shaft_distance_m = 0.250;     // d2, shaft_distance_mm > 0
-  double wrap_deg = 30.0;              // theta, wrap_deg in (0, 180)
-  double friction_coefficient = 0.3;   // mu >= 0
+  bool sliding = true;                // sensors.gauge.contact.model: "fixed" | "sliding"
+  double misalignment_m = 0.002;      // D, misalignment_mm (either sign)
+  double fitting_distance_m = 0.020;  // d1, fitting_distance_mm >= 1
+  double shaft_distance_m = 0.250;    // d2, shaft_distance_mm > 0
+  double wrap_deg = 30.0;             // theta, wrap_deg in (0, 180)
+  double friction_coefficient = 0.3;  // mu >= 0
   // reseat_mm: the contact's shift along the edge between the gauge's static calibration
   // and the trial (the paper's "slight positional shifts of the fishing line", Sec. IV-B),
   // which scales the trial's reading by the lever's change, (y0 + shift - y_g) / (y0 - y_g).
@@ -69,7 +69,7 @@ class GaugeContact {
 
  private:
   GaugeContactParams params_;
-  double free_end_m_ = 0.0;   // L_b
+  double free_end_m_ = 0.0;  // L_b
   double y0_m_ = 0.0;
   double y_m_ = 0.0;
   double start_length_m_ = 0.0;

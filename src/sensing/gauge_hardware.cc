@@ -36,8 +36,7 @@ void validate(const GaugeHardwareConfig& c) {
   GaugeHardwareConfig fields = c;
   for (const KeyTable& table : gauge_hardware_key_tables(&fields)) check_key_rows(table);
   validate_gauge_board(c.board, "sensors.gauge.board.");
-  validate_prony(c.creep, "sensors.gauge.board.creep_weights",
-                 "sensors.gauge.board.creep_times_s");
+  validate_prony(c.creep, "sensors.gauge.board.creep_weights", "sensors.gauge.board.creep_times_s");
   if (!c.creep.empty() && c.findley.creep_1000h > 0.0) {
     checks::fail("sensors.gauge.board.creep_1000h",
                  "0 when creep_weights give the board's creep (one law or the other)",
@@ -56,7 +55,8 @@ void validate(const GaugeHardwareConfig& c) {
                  units::m_to_mm(c.board.length_m));
   }
   // PMMA breaks at a few percent of strain: a board bent further is no gauge
-  const double strain = gauge_board_strain(c.board, c.calibration_max_n, c.board.contact_position_m);
+  const double strain =
+      gauge_board_strain(c.board, c.calibration_max_n, c.board.contact_position_m);
   if (!(strain <= kMaxBoardStrain)) {
     checks::fail("sensors.gauge.board.thickness_mm",
                  "thick enough that calibration.max_N strains the board at most 3 %",
@@ -103,8 +103,8 @@ double GaugeHardware::voltage(double f_n) {
   // board); a ringing board bends either way, its strain linear in the equivalent pull
   const double per_newton =
       contact_.lost() ? 0.0 : gauge_board_strain(config_.board, 1.0, contact_.position_m());
-  const double pull = vibration_ && vibration_->started() ? vibration_->equivalent_force_n()
-                                                           : std::max(f_n, 0.0);
+  const double pull =
+      vibration_ && vibration_->started() ? vibration_->equivalent_force_n() : std::max(f_n, 0.0);
   const double elastic = per_newton * pull;
   const double strain = creep_.step(elastic);
   return quarter_bridge_output_v(config_.bridge, arms_, strain) + offset_v_;
@@ -114,8 +114,8 @@ StrainGaugeParams calibrate_gauge(GaugeHardware gauge, const GaugeHardwareConfig
                                   double sample_period_s, const std::string& key) {
   // the staircase: 0, 1, ..., steps, steps - 1, ..., 0 load steps, each held, then read
   const int n = config.calibration_steps;
-  const std::int64_t ticks = std::max<std::int64_t>(
-      1, std::llround(config.calibration_hold_s / sample_period_s));
+  const std::int64_t ticks =
+      std::max<std::int64_t>(1, std::llround(config.calibration_hold_s / sample_period_s));
   Eigen::MatrixXd a(2 * n + 1, 2);
   Eigen::VectorXd v(2 * n + 1);
   for (int row = 0; row <= 2 * n; ++row) {

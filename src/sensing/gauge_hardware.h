@@ -34,7 +34,7 @@ namespace pamsim {
 
 // Keys sensors.gauge.* (read in sim/io; SI inside).
 struct GaugeHardwareConfig {
-  bool enabled = false;            // sensors.gauge.model: "linear" (Eq. (8) exact) | "bridge"
+  bool enabled = false;  // sensors.gauge.model: "linear" (Eq. (8) exact) | "bridge"
   // sensors.gauge.excitation_V, gauge_factor, nominal_Ohm, tolerance_pct (the amplifier's
   // gain is derived, see above)
   QuarterBridgeParams bridge;
@@ -47,9 +47,9 @@ struct GaugeHardwareConfig {
   // sensors.gauge.board.creep_exponent and creep_1000h, run as its Prony series
   std::vector<PronyTerm> creep;
   FindleyCreep findley;
-  BoardVibrationParams vibration;   // sensors.gauge.board.vibration, density_kg_m3, loss_factor
-  GaugeContactParams contact;       // sensors.gauge.contact.*
-  std::uint64_t instrument_seed = 1;   // sensors.instrument_seed: which built instruments
+  BoardVibrationParams vibration;     // sensors.gauge.board.vibration, density_kg_m3, loss_factor
+  GaugeContactParams contact;         // sensors.gauge.contact.*
+  std::uint64_t instrument_seed = 1;  // sensors.instrument_seed: which built instruments
   // the static calibration (sensors.gauge.calibration.*): loads 0 .. max_n in `steps`
   // equal steps up and back down, each held hold_s before it is read
   double calibration_max_n = 50.0;

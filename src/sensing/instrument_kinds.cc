@@ -10,37 +10,43 @@ namespace pamsim {
 namespace {
 
 std::vector<InstrumentKind> make_kinds() {
-  InstrumentKind gauge{"gauge",
-                       "the strain gauge on its acrylic board in a quarter bridge, calibrated "
-                       "statically (gauge_hardware.h)",
-                       [](SensorConfig* s) { return gauge_hardware_key_tables(&s->gauge_hardware); },
-                       "sensors.gauge.board",
-                       [](SensorConfig* s) { return &s->gauge_hardware.creep; },
-                       [](const SensorConfig& s) { validate(s.gauge_hardware); },
-                       "the board's"};
+  InstrumentKind gauge{
+      "gauge",
+      "the strain gauge on its acrylic board in a quarter bridge, calibrated "
+      "statically (gauge_hardware.h)",
+      [](SensorConfig* s) { return gauge_hardware_key_tables(&s->gauge_hardware); },
+      "sensors.gauge.board",
+      [](SensorConfig* s) { return &s->gauge_hardware.creep; },
+      [](const SensorConfig& s) { validate(s.gauge_hardware); },
+      "the board's"};
   InstrumentKind pressure{
-      "pressure", "the PSE540-class pressure sensor (pressure_hardware.h)",
+      "pressure",
+      "the PSE540-class pressure sensor (pressure_hardware.h)",
       [](SensorConfig* s) {
         return std::vector<KeyTable>{pressure_hardware_key_table(&s->pressure_hardware)};
       },
-      "", nullptr, [](const SensorConfig& s) { validate(s.pressure_hardware); }};
-  InstrumentKind fiber{
-      "fiber", "the conductive-fabric fiber sensor (fiber_hardware.h)",
-      [](SensorConfig* s) {
-        return std::vector<KeyTable>{fiber_hardware_key_table(&s->fiber_hardware)};
-      },
-      "sensors.fiber", [](SensorConfig* s) { return &s->fiber_hardware.creep; },
-      [](const SensorConfig& s) { validate(s.fiber_hardware); },
-      "the fabric's (ASSUMPTION)"};
-  InstrumentKind encoder{"encoder", "the linear encoder, read in counts (sensors.h)",
-                         [](SensorConfig* s) {
-                           return std::vector<KeyTable>{encoder_key_table(&s->encoder)};
-                         },
-                         "", nullptr,
-                         [](const SensorConfig& s) {
-                           EncoderConfig fields = s.encoder;
-                           check_key_rows(encoder_key_table(&fields));
-                         }};
+      "",
+      nullptr,
+      [](const SensorConfig& s) { validate(s.pressure_hardware); }};
+  InstrumentKind fiber{"fiber",
+                       "the conductive-fabric fiber sensor (fiber_hardware.h)",
+                       [](SensorConfig* s) {
+                         return std::vector<KeyTable>{fiber_hardware_key_table(&s->fiber_hardware)};
+                       },
+                       "sensors.fiber",
+                       [](SensorConfig* s) { return &s->fiber_hardware.creep; },
+                       [](const SensorConfig& s) { validate(s.fiber_hardware); },
+                       "the fabric's (ASSUMPTION)"};
+  InstrumentKind encoder{
+      "encoder",
+      "the linear encoder, read in counts (sensors.h)",
+      [](SensorConfig* s) { return std::vector<KeyTable>{encoder_key_table(&s->encoder)}; },
+      "",
+      nullptr,
+      [](const SensorConfig& s) {
+        EncoderConfig fields = s.encoder;
+        check_key_rows(encoder_key_table(&fields));
+      }};
   return {gauge, pressure, fiber, encoder};
 }
 

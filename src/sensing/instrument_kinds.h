@@ -24,8 +24,8 @@
 namespace pamsim {
 
 struct InstrumentKind {
-  std::string name;   // "pressure": its keys sensors.pressure.*
-  std::string doc;    // what it is, and the file its hardware model lives in
+  std::string name;  // "pressure": its keys sensors.pressure.*
+  std::string doc;   // what it is, and the file its hardware model lives in
   // its tables bound to `sensors`' fields; the first table's first choice is the model
   std::function<std::vector<KeyTable>(SensorConfig*)> key_tables;
   // its creep series (two lists, <creep_table>.creep_weights and .creep_times_s, checked by

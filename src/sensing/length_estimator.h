@@ -29,14 +29,14 @@ namespace pamsim {
 pamctl_muscle_config embedded_muscle(const SpringModel& spring, const StrainGaugeParams& gauge);
 
 struct LengthEstimatorParams {
-  double pressure_lowpass_hz = 0.0;   // sensors.pressure_lowpass_hz [Hz], 0 = off
-  double velocity_lowpass_hz = 0.0;   // reflex.lowpass_hz [Hz], 0 = off
+  double pressure_lowpass_hz = 0.0;  // sensors.pressure_lowpass_hz [Hz], 0 = off
+  double velocity_lowpass_hz = 0.0;  // reflex.lowpass_hz [Hz], 0 = off
 };
 
 struct LengthEstimate {
-  double pressure_pa = 0.0;   // pressure used in the inversion (filtered if configured)
-  double force_n = 0.0;       // Eq. (9), may be negative with noise (then slack)
-  double d_m = 0.0;           // deformation, >= 0
+  double pressure_pa = 0.0;  // pressure used in the inversion (filtered if configured)
+  double force_n = 0.0;      // Eq. (9), may be negative with noise (then slack)
+  double d_m = 0.0;          // deformation, >= 0
   InversionStatus status = InversionStatus::kSlack;
   double length_m = 0.0;      // Eq. (1)
   double velocity_m_s = 0.0;  // Eq. (11), filtered if configured

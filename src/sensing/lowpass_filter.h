@@ -32,7 +32,7 @@ class LowpassFilter {
   // Forget the state: the next step() initialises again.
   void reset() { filter_.started = false; }
 
-  double alpha() const { return filter_.alpha; }   // 1 when off
+  double alpha() const { return filter_.alpha; }  // 1 when off
   double output() const { return filter_.y; }
 
  private:

@@ -10,7 +10,7 @@
 namespace pamsim {
 
 void validate(const PressureHardwareConfig& c) {
-  PressureHardwareConfig fields = c;   // each key's own range (instrument_keys.h)
+  PressureHardwareConfig fields = c;  // each key's own range (instrument_keys.h)
   check_key_rows(pressure_hardware_key_table(&fields));
 }
 
@@ -33,7 +33,7 @@ PressureHardware::PressureHardware(const PressureHardwareConfig& config,
   if (half_width_pa_ > 0.0) {
     play_.count = 1;
     play_.weight[0] = 1.0;
-    play_.breakaway_m[0] = half_width_pa_;   // a travel in pascals here
+    play_.breakaway_m[0] = half_width_pa_;  // a travel in pascals here
   }
 }
 

@@ -52,10 +52,10 @@ struct PressureHardwareConfig {
   double bias_stddev_pa = 4700.0;         // sensors.pressure.bias_stddev_MPa, >= 0
   double gain_error_stddev_pct = 0.47;    // sensors.pressure.gain_error_stddev_pct, [0, 50]
   double dynamic_bias_stddev_pa = 400.0;  // sensors.pressure.dynamic_bias_stddev_MPa, >= 0
-  double dynamic_bias_correlation_time_s = 3600.0;   // ..._correlation_time_s, > 0
-  double hysteresis_pa = 2000.0;          // sensors.pressure.hysteresis_MPa, >= 0
-  double response_time_s = 1e-3;          // sensors.pressure.response_time_ms, >= 0
-  double precision_pa = 0.0;              // sensors.pressure.precision_MPa, >= 0 (0: none)
+  double dynamic_bias_correlation_time_s = 3600.0;  // ..._correlation_time_s, > 0
+  double hysteresis_pa = 2000.0;                    // sensors.pressure.hysteresis_MPa, >= 0
+  double response_time_s = 1e-3;                    // sensors.pressure.response_time_ms, >= 0
+  double precision_pa = 0.0;  // sensors.pressure.precision_MPa, >= 0 (0: none)
 };
 
 // Throws InputError "<key> must be ..., got <value>" naming the sensors.pressure.* key.
@@ -79,9 +79,9 @@ class PressureHardware {
 
  private:
   LowpassFilter response_;
-  MaxwellSlipParams play_;        // one element, breakaway h / 2 (none for h = 0)
+  MaxwellSlipParams play_;  // one element, breakaway h / 2 (none for h = 0)
   double play_state_ = 0.0;
-  double half_width_pa_ = 0.0;    // h / 2, the element's slip force
+  double half_width_pa_ = 0.0;  // h / 2, the element's slip force
   double last_felt_pa_ = std::numeric_limits<double>::quiet_NaN();
   double bias_pa_ = 0.0;
   double gain_error_ = 0.0;

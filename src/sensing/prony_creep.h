@@ -16,8 +16,8 @@
 namespace pamsim {
 
 struct PronyTerm {
-  double weight = 0.0;   // g_i >= 0: the element's share of the long-term compliance
-  double time_s = 0.0;   // tau_i > 0: its retardation time
+  double weight = 0.0;  // g_i >= 0: the element's share of the long-term compliance
+  double time_s = 0.0;  // tau_i > 0: its retardation time
 };
 
 // Throws InputError "<weights_key>[i] must be ..., got <value>" for a negative or non-finite
@@ -42,8 +42,8 @@ class PronyCreep {
 
  private:
   std::vector<PronyTerm> terms_;
-  std::vector<double> decay_;   // exp(-dt / tau_i)
-  std::vector<double> state_;   // q_i
+  std::vector<double> decay_;  // exp(-dt / tau_i)
+  std::vector<double> state_;  // q_i
 };
 
 }  // namespace pamsim

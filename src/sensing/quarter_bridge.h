@@ -14,15 +14,15 @@
 namespace pamsim {
 
 struct QuarterBridgeParams {
-  double excitation_v = 5.0;          // V_ex > 0
+  double excitation_v = 5.0;  // V_ex > 0
   // GF > 0. Cu-Ni (constantan) foil gauges such as the paper's Kyowa KFP-5-120-C1-65: about
   // 2.0-2.1, the exact factor printed on each package.
   double gauge_factor = 2.0;
-  double nominal_ohm = 120.0;         // R > 0: the gauge and the completion resistors
+  double nominal_ohm = 120.0;  // R > 0: the gauge and the completion resistors
   // each arm within R (1 +- tolerance): 0.5 Ohm of 120, the paper's for the three completion
   // resistors; the gauge's own spread is taken the same (an assumption); in [0, 100) percent
   double tolerance_pct = 100.0 * 0.5 / 120.0;
-  double amplifier_gain = 1.0;        // G > 0 (an instrumentation amplifier after the bridge)
+  double amplifier_gain = 1.0;  // G > 0 (an instrumentation amplifier after the bridge)
 };
 
 // One built bridge: the gauge's unstrained resistance and the three completion resistors.

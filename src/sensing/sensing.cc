@@ -39,8 +39,8 @@ enum Stream : std::uint32_t { kPressureInstrument = 1, kPressureTrial = 2 };
 std::optional<PressureHardware> pressure_hardware(const SensorConfig& s, std::uint64_t seed,
                                                   std::uint32_t index, double dt_s) {
   if (!s.pressure_hardware.enabled) return std::nullopt;
-  std::mt19937_64 instrument = derived_generator(s.gauge_hardware.instrument_seed,
-                                                 kPressureInstrument, index);
+  std::mt19937_64 instrument =
+      derived_generator(s.gauge_hardware.instrument_seed, kPressureInstrument, index);
   return PressureHardware(s.pressure_hardware, instrument,
                           derived_generator(seed, kPressureTrial, index), dt_s);
 }
@@ -56,7 +56,7 @@ void validate(const SensingConfig& config) {
   // control rate first: the cutoffs are checked against it
   require_positive("sim.control_hz", config.control_hz);
   const SensorConfig& s = config.sensors;
-  SensorConfig fields = s;   // each key's own range (sensor_keys.h), then what joins keys
+  SensorConfig fields = s;  // each key's own range (sensor_keys.h), then what joins keys
   check_key_rows(sensor_key_table(&fields));
   require_adc("sensors.pressure_adc", s.pressure_adc_bits, s.pressure_adc_min_v,
               s.pressure_adc_max_v);
@@ -72,8 +72,8 @@ void validate(const MuscleSensorSpec& muscle) {
   validate_pam_params(muscle.estimator, muscle.gauge, muscle.key);
 }
 
-SensorSuite::SensorSuite(const SensingConfig& config,
-                         const std::vector<MuscleSensorSpec>& muscles, std::uint64_t seed)
+SensorSuite::SensorSuite(const SensingConfig& config, const std::vector<MuscleSensorSpec>& muscles,
+                         std::uint64_t seed)
     : rng_(seed) {
   validate(config);
   const double dt_s = 1.0 / config.control_hz;
@@ -91,11 +91,11 @@ SensorSuite::SensorSuite(const SensingConfig& config,
     std::optional<GaugeHardware> gauge;
     StrainGaugeParams calibrated = muscle.gauge;
     if (hardware.enabled) {
-      GaugeHardwareConfig own = hardware;   // with this muscle's contact, where it has one
+      GaugeHardwareConfig own = hardware;  // with this muscle's contact, where it has one
       if (muscle.contact) own.contact = *muscle.contact;
       gauge.emplace(own, muscle.gauge, instruments, dt_s);
       calibrated = calibrate_gauge(*gauge, own, dt_s, muscle.key);
-      gauge->reseat();   // the line re-laid after the calibration, as the lab's may be
+      gauge->reseat();  // the line re-laid after the calibration, as the lab's may be
     }
     channels_.push_back(Channel{
         PressureSensor(config.sensors, pressure_hardware(config.sensors, seed, index, dt_s)),
@@ -110,9 +110,8 @@ SensorSuite::SensorSuite(const SensingConfig& config,
 
 pamctl_config SensorSuite::embedded_config() const {
   if (channels_.size() > PAMCTL_MAX_MUSCLES) {
-    throw InputError("the embedded controller holds at most " +
-                     std::to_string(PAMCTL_MAX_MUSCLES) + " muscles, the model has " +
-                     std::to_string(channels_.size()));
+    throw InputError("the embedded controller holds at most " + std::to_string(PAMCTL_MAX_MUSCLES) +
+                     " muscles, the model has " + std::to_string(channels_.size()));
   }
   pamctl_config config{};
   config.muscle_count = static_cast<std::int32_t>(channels_.size());

@@ -42,7 +42,7 @@ struct MuscleSensorSpec {
 };
 
 struct SensingConfig {
-  SensorConfig sensors;              // sensors.*
+  SensorConfig sensors;  // sensors.*
   // reflex.lowpass_hz (the controller's, ControllerConfig::velocity_lowpass_hz, handed over
   // by the scenario; its default is this one):
   // first-order low-pass on Eq. (11)'s v and the fiber rate, 0 (off) or (0, control_hz / 2].
@@ -53,8 +53,8 @@ struct SensingConfig {
   // (sensors.noise_scale). A low-pass on the pressure (sensors.pressure_lowpass_hz) is no
   // substitute (see its caveat in sensors.h).
   double velocity_lowpass_hz = 0.0;
-  double control_hz = 100.0;         // sim.control_hz
-  double physics_dt_s = 0.001;       // sim.timestep_s: a ringing gauge board's step
+  double control_hz = 100.0;    // sim.control_hz
+  double physics_dt_s = 0.001;  // sim.timestep_s: a ringing gauge board's step
 };
 
 // Throw InputError "<key> must be ..., got <value>" naming the scenario key:

@@ -47,7 +47,7 @@ class GaussMarkov {
 
  private:
   double phi_ = 0.0;
-  double drive_ = 0.0;   // sigma sqrt(1 - phi^2)
+  double drive_ = 0.0;  // sigma sqrt(1 - phi^2)
   double b_ = 0.0;
 };
 

@@ -38,8 +38,7 @@ double pse540_pressure_pa(double v) {
   return units::mpa_to_pa((v - kPse540ZeroV) / kPse540VoltPerMPa);
 }
 
-PressureSensor::PressureSensor(const SensorConfig& config,
-                               std::optional<PressureHardware> hardware)
+PressureSensor::PressureSensor(const SensorConfig& config, std::optional<PressureHardware> hardware)
     : noise_pa_(config.noise_scale * config.pressure_noise_pa),
       bias_pa_(config.pressure_bias_pa),
       adc_{config.pressure_adc_bits, config.pressure_adc_min_v, config.pressure_adc_max_v},
@@ -96,8 +95,8 @@ double FiberSensor::sample(double encoder_length_m, std::mt19937_64& rng) {
   const double noise = noise_m_s_ * standard_normal(rng);
   if (!started_) start_m_ = encoder_length_m;
   // the length the fabric reads: the truth, or its reading of the displacement since start
-  const double read_m = hardware_ ? start_m_ + hardware_->reading_m(encoder_length_m - start_m_)
-                                  : encoder_length_m;
+  const double read_m =
+      hardware_ ? start_m_ + hardware_->reading_m(encoder_length_m - start_m_) : encoder_length_m;
   // first sample: calibrate the absolute length to the encoder
   if (!started_) {
     started_ = true;

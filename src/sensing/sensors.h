@@ -64,11 +64,11 @@ double encoder_read_m(const EncoderConfig& encoder, double length_m);
 // The sensors' parameters, SI; their scenario keys sensors.* (paper units, named) are rows
 // of sensor_keys.h. Checked by validate() in sensing.h.
 struct SensorConfig {
-  double pressure_noise_pa = 1000.0;   // std dev >= 0 [Pa], sensors.pressure_noise_MPa = 0.001
-  double pressure_bias_pa = 0.0;       // constant offset [Pa], sensors.pressure_bias_MPa in (-1, 1)
-  int pressure_adc_bits = 12;          // sensors.pressure_adc_bits, 0 (ideal) or 4..24
-  double pressure_adc_min_v = 0.0;     // sensors.pressure_adc_min_V
-  double pressure_adc_max_v = 5.0;     // sensors.pressure_adc_max_V, > min
+  double pressure_noise_pa = 1000.0;  // std dev >= 0 [Pa], sensors.pressure_noise_MPa = 0.001
+  double pressure_bias_pa = 0.0;      // constant offset [Pa], sensors.pressure_bias_MPa in (-1, 1)
+  int pressure_adc_bits = 12;         // sensors.pressure_adc_bits, 0 (ideal) or 4..24
+  double pressure_adc_min_v = 0.0;    // sensors.pressure_adc_min_V
+  double pressure_adc_max_v = 5.0;    // sensors.pressure_adc_max_V, > min
   // sensors.pressure_lowpass_hz, 0 (off) or (0, Nyquist]. Default off. A low-pass on the
   // measured pressure removes noise mistrips (a prototype: 5 Hz removed all of them at
   // 0.003 MPa / 0.5 N of noise without delaying the trigger) but, in the closed loop, its lag
@@ -81,11 +81,11 @@ struct SensorConfig {
   // without the filter (on the physical plant they begin at twice the default noise,
   // sensors.noise_scale = 2; docs/findings.md, sensor noise).
   double pressure_lowpass_hz = 0.0;
-  double gauge_noise_v = 0.5e-3;       // sensors.gauge_noise_V, std dev, >= 0
-  int gauge_adc_bits = 16;             // sensors.gauge_adc_bits, 0 (ideal) or 4..24
-  double gauge_adc_min_v = -5.0;       // sensors.gauge_adc_min_V
-  double gauge_adc_max_v = 5.0;        // sensors.gauge_adc_max_V, > min
-  double fiber_noise_m_s = 0.002;      // std dev >= 0 [m/s], sensors.fiber_noise_mm_s = 2
+  double gauge_noise_v = 0.5e-3;   // sensors.gauge_noise_V, std dev, >= 0
+  int gauge_adc_bits = 16;         // sensors.gauge_adc_bits, 0 (ideal) or 4..24
+  double gauge_adc_min_v = -5.0;   // sensors.gauge_adc_min_V
+  double gauge_adc_max_v = 5.0;    // sensors.gauge_adc_max_V, > min
+  double fiber_noise_m_s = 0.002;  // std dev >= 0 [m/s], sensors.fiber_noise_mm_s = 2
   // sensors.noise_scale, in [0, 1000]: multiplies the three noise standard deviations above
   // (not the bias), one knob for a sweep over sensor noise; 1 leaves them as given.
   double noise_scale = 1.0;
@@ -107,7 +107,7 @@ struct AdcParams {
   double v_min_v = 0.0;
   double v_max_v = 5.0;
 };
-double adc_step_v(const AdcParams& adc);   // 0 for an ideal converter
+double adc_step_v(const AdcParams& adc);  // 0 for an ideal converter
 double adc_read(const AdcParams& adc, double v);
 
 // PSE540 transfer: 1 V at 0 MPa to 5 V at 1 MPa (gauge), linear: V = 1 + 4 p / (1 MPa).
@@ -145,7 +145,7 @@ class StrainGauge {
  public:
   StrainGauge(const StrainGaugeParams& gauge, const SensorConfig& config,
               std::optional<GaugeHardware> hardware = std::nullopt);
-  double sample(double f_true_n, std::mt19937_64& rng);   // [V]
+  double sample(double f_true_n, std::mt19937_64& rng);  // [V]
   // The board's ringing (gauge_hardware.h): on, then fed the pull at every physics step.
   void enable_vibration(double physics_dt_s);
   bool vibrates() const { return hardware_ && hardware_->vibrates(); }
@@ -173,8 +173,8 @@ class FiberSensor {
   FiberSensor(const SensorConfig& config, double sample_period_s,
               std::optional<FiberHardware> hardware = std::nullopt);
   // One sample; encoder_length_m is the true length at this tick.
-  double sample(double encoder_length_m, std::mt19937_64& rng);   // rate [m/s]
-  double length_m() const { return length_m_; }                   // integrated [m]
+  double sample(double encoder_length_m, std::mt19937_64& rng);  // rate [m/s]
+  double length_m() const { return length_m_; }                  // integrated [m]
 
  private:
   double noise_m_s_;
@@ -182,8 +182,8 @@ class FiberSensor {
   EncoderConfig encoder_;
   std::optional<FiberHardware> hardware_;
   bool started_ = false;
-  double start_m_ = 0.0;          // the true length at the first sample
-  double last_read_m_ = 0.0;   // the length the fabric read at the last sample
+  double start_m_ = 0.0;      // the true length at the first sample
+  double last_read_m_ = 0.0;  // the length the fabric read at the last sample
   double length_m_ = 0.0;
 };
 

@@ -89,7 +89,7 @@ TEST_F(AtomicFileTest, TargetIsADirectoryThrowsAndCleansUp) {
   std::ofstream(sub + "/keep") << "k";
   EXPECT_THROW(write_file_atomically(sub, "x"), InputError);
   std::remove((sub + "/keep").c_str());
-  EXPECT_EQ(count_entries(dir_), 1);   // only the directory itself
+  EXPECT_EQ(count_entries(dir_), 1);  // only the directory itself
 }
 
 // A symlink planted at a guessable temp file name (`<out>.tmp.<pid>`) must not be written
@@ -128,7 +128,7 @@ TEST_F(AtomicFileTest, AFullDiskIsAnErrorAndLeavesNothing) {
   ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old), 0);
   struct rlimit small = old;
   small.rlim_cur = 1024;
-  ::signal(SIGXFSZ, SIG_IGN);   // a write past the limit then fails with EFBIG
+  ::signal(SIGXFSZ, SIG_IGN);  // a write past the limit then fails with EFBIG
   ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
   const std::string path = dir_ + "/out.txt";
   bool threw = false;

@@ -4,6 +4,6 @@
 
 namespace pamsim_test {
 
-inline constexpr double kControlDt = 0.01;   // [s]
+inline constexpr double kControlDt = 0.01;  // [s]
 
 }  // namespace pamsim_test

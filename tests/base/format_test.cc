@@ -75,11 +75,11 @@ namespace pamsim {
 namespace {
 
 TEST(FormatTest, NumbersInFilesAreTheShortestTextThatReadsBack) {
-  EXPECT_EQ(format_shortest(0.14), "0.14");   // printf("%.17g") would say 0.14000000000000001
+  EXPECT_EQ(format_shortest(0.14), "0.14");  // printf("%.17g") would say 0.14000000000000001
   EXPECT_EQ(format_shortest(0.1 + 0.2), "0.30000000000000004");
   EXPECT_EQ(format_shortest(5e-324), "5e-324");
   EXPECT_EQ(format_shortest(-36.0), "-36");
-  EXPECT_EQ(format_number(-36.0), "-36.0");   // a float to TOML
+  EXPECT_EQ(format_number(-36.0), "-36.0");  // a float to TOML
   EXPECT_EQ(format_shortest(std::nan("")), "nan");
   // every double reads back exactly, over a spread of magnitudes
   std::mt19937_64 rng(7);
@@ -103,7 +103,7 @@ TEST(FormatTest, TomlTextRoundTripsAndWritesFloatsShortest) {
   EXPECT_EQ(parse_toml_text(text, "again"), table) << text;
   EXPECT_NE(text.find("duration_s = 0.14\n"), std::string::npos) << text;
   EXPECT_NE(text.find("list = [0.1, 2.0, 1e-300]"), std::string::npos) << text;
-  EXPECT_EQ(toml_value_text(toml::value<double>(3.0)), "3.0");   // still a float
+  EXPECT_EQ(toml_value_text(toml::value<double>(3.0)), "3.0");  // still a float
   EXPECT_EQ(toml_value_text(toml::value<std::string>("a\"b")), "\"a\\\"b\"");
 }
 

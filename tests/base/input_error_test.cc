@@ -63,12 +63,12 @@ TEST(InputErrorTest, AChangedFieldsErrorIsRenamedFromItsPartsNotItsText) {
     EXPECT_STREQ(e.what(), "muscles.agonist.plant.geometry.length_mm: must be > 0, got -1");
     EXPECT_EQ(e.parts().key, "muscles.agonist.plant.geometry.length_mm");
   }
-  EXPECT_NO_THROW(rethrow_as_change(InputError("p.toml: geometry.length_mm: must be > 0"),
-                                    "p.toml", changed, prefix));
-  EXPECT_NO_THROW(rethrow_as_change(file_key_error("q.toml", "geometry.length_mm", "x"),
-                                    "p.toml", changed, prefix));
-  EXPECT_NO_THROW(rethrow_as_change(file_key_error("p.toml", "geometry.diameter_mm", "x"),
-                                    "p.toml", changed, prefix));
+  EXPECT_NO_THROW(rethrow_as_change(InputError("p.toml: geometry.length_mm: must be > 0"), "p.toml",
+                                    changed, prefix));
+  EXPECT_NO_THROW(rethrow_as_change(file_key_error("q.toml", "geometry.length_mm", "x"), "p.toml",
+                                    changed, prefix));
+  EXPECT_NO_THROW(rethrow_as_change(file_key_error("p.toml", "geometry.diameter_mm", "x"), "p.toml",
+                                    changed, prefix));
 }
 
 TEST(InputErrorTest, InFileAddsTheDocumentToAKeysErrorAndKeepsItsParts) {

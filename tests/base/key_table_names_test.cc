@@ -64,7 +64,8 @@ TEST(KeyTableNamesTest, ABadNameAnItemOrAValueIsOneLineNamingTheFileAndTheKey) {
   ConfigReader in("sets = [\"nope\"]", "s.toml");
   const InputErrorParts nope = parts_of([&] { read_key_rows(in, sets_table(&sets)); });
   EXPECT_NE(nope.problem.find("holds \"nope\", allowed \"drop\" | \"reflex\" | \"tracking\""),
-            std::string::npos) << nope.problem;
+            std::string::npos)
+      << nope.problem;
 }
 
 TEST(KeyTableNamesTest, CheckedFieldsAndTheReferenceLine) {

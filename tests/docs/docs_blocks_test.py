@@ -4,6 +4,7 @@ lint finding a computed number in prose and passing what prose may give; and a p
 stale by hand (a changed number, an edited command, a slow block made under another physics)
 failing `check` until `update` makes it again.
 """
+
 import os
 import shutil
 import sys
@@ -30,8 +31,9 @@ show: [stdout -1, summary.json]
 
 class FirstDifferenceTest(unittest.TestCase):
     def test_numbers_within_the_tolerance_are_the_same(self):
-        self.assertIsNone(docs_blocks.first_difference("peak 12.3850 deg", "peak 12.3851 deg",
-                                                       1e-4))
+        self.assertIsNone(
+            docs_blocks.first_difference("peak 12.3850 deg", "peak 12.3851 deg", 1e-4)
+        )
 
     def test_a_number_beyond_it_is_named_with_its_line(self):
         found = docs_blocks.first_difference("a\npeak 12.38 deg", "a\npeak 12.48 deg", 1e-4)
@@ -54,10 +56,12 @@ class LintTest(unittest.TestCase):
         self.assertEqual(self.flagged("It errs 5 % on 20 trials"), ["5", "20"])
 
     def test_what_prose_may_give_passes(self):
-        text = ("Eq. (3) and Table III of [1] (2021), Fig. 8, Sec. II-B; pamsim 0.3.0 and "
-                "MuJoCo 2.2.2; a {input}`0.2 kg` mass, the paper's {paper}`5.24 %`; `--set "
-                "sim.duration_s=1.5`; [a link](page.md#table-3-1)\n1. a list item\n"
-                "```sh\npamsim run x --set a=1.5\n```\n<!-- 2.5 deg in a comment -->\n")
+        text = (
+            "Eq. (3) and Table III of [1] (2021), Fig. 8, Sec. II-B; pamsim 0.3.0 and "
+            "MuJoCo 2.2.2; a {input}`0.2 kg` mass, the paper's {paper}`5.24 %`; `--set "
+            "sim.duration_s=1.5`; [a link](page.md#table-3-1)\n1. a list item\n"
+            "```sh\npamsim run x --set a=1.5\n```\n<!-- 2.5 deg in a comment -->\n"
+        )
         self.assertEqual(self.flagged(text), [])
 
     def test_a_generated_block_is_not_prose(self):
@@ -78,8 +82,7 @@ class StalePageTest(unittest.TestCase):
 
     def tearDown(self):
         shutil.rmtree(self.dir)
-        shutil.rmtree(os.path.join(ROOT, "renders", "docs", "test-short-drop"),
-                      ignore_errors=True)
+        shutil.rmtree(os.path.join(ROOT, "renders", "docs", "test-short-drop"), ignore_errors=True)
 
     def text(self):
         with open(self.page) as f:

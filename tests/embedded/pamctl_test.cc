@@ -23,7 +23,7 @@ pamctl_spring eq3_spring() {
   s.law = PAMCTL_LAW_EQ3;
   s.m_m_per_pa = 68.0e-3 / 1e6;
   s.h_m = 0.178;
-  const double a[4] = {-0.91, 0.0053, 4.9, 0.071};   // N/mm, N/mm^2, N/(MPa mm), ...
+  const double a[4] = {-0.91, 0.0053, 4.9, 0.071};  // N/mm, N/mm^2, N/(MPa mm), ...
   s.coef[0] = a[0] * 1e3;
   s.coef[1] = a[1] * 1e6;
   s.coef[2] = a[2] * 1e3 / 1e6;
@@ -85,7 +85,7 @@ TEST(Pamctl, Eq3InversionIsTheQuadraticFormulasPositiveRoot) {
 TEST(Pamctl, CubicRootsOfAKnownPolynomial) {
   // (x - 1)(x - 2)(x - 3) = x^3 - 6 x^2 + 11 x - 6: the smallest positive root is 1
   EXPECT_NEAR(pamctl_smallest_positive_root(1.0, -6.0, 11.0, 6.0), 1.0, 1e-14);
-  EXPECT_LT(pamctl_smallest_positive_root(-1.0, 0.0, -1.0, 1.0), 0.0);   // none
+  EXPECT_LT(pamctl_smallest_positive_root(-1.0, 0.0, -1.0, 1.0), 0.0);  // none
   EXPECT_LT(pamctl_smallest_positive_root(1.0, 0.0, 0.0, kInf), 0.0);
 }
 
@@ -93,7 +93,7 @@ TEST(Pamctl, LowpassStepResponseIsTheExactFirstOrderOne) {
   const double alpha = 1.0 - std::exp(-2.0 * M_PI * 5.0 * 0.01);
   pamctl_lowpass f;
   pamctl_lowpass_init(&f, alpha);
-  EXPECT_EQ(pamctl_lowpass_step(&f, 0.0), 0.0);   // starts at its first input
+  EXPECT_EQ(pamctl_lowpass_step(&f, 0.0), 0.0);  // starts at its first input
   double y = 0.0;
   for (int n = 1; n <= 10; ++n) y = pamctl_lowpass_step(&f, 1.0);
   EXPECT_NEAR(y, 1.0 - std::pow(1.0 - alpha, 10), 1e-15);
@@ -118,7 +118,7 @@ TEST(Pamctl, PairCommandsAreEq12And13ByHandAndClamped) {
   EXPECT_EQ(pamctl_valve_command(0.9e6, 0.8e6, &flags), 0.8e6);
   EXPECT_EQ(pamctl_valve_command(-1.0, 0.8e6, &flags), 0.0);
   EXPECT_EQ(flags, 0u);
-  EXPECT_EQ(pamctl_valve_command(kNaN, 0.8e6, &flags), 0.0);   // std::clamp passed it through
+  EXPECT_EQ(pamctl_valve_command(kNaN, 0.8e6, &flags), 0.0);  // std::clamp passed it through
   EXPECT_EQ(flags, PAMCTL_FLAG_COMMAND_VENTED);
 }
 
@@ -149,16 +149,18 @@ TEST(Pamctl, MissingReadingsHoldTheEstimateAndAreFlagged) {
     EXPECT_EQ(held.estimates[0].length_m, first.estimates[0].length_m);
     EXPECT_EQ(held.estimates[0].velocity_m_s, 0.0);
     EXPECT_TRUE(held.status & PAMCTL_FLAG_NONFINITE_READING);
-    EXPECT_EQ(held.p_cmd_pa[0], 0.4e6);   // the schedule, no reflex
+    EXPECT_EQ(held.p_cmd_pa[0], 0.4e6);  // the schedule, no reflex
     const pamctl_output no_gauge = tick_with(&s, c, 2.6, bad, 0.0, 0.4e6);
-    EXPECT_TRUE(std::isnan(no_gauge.estimates[0].force_n) || std::isinf(no_gauge.estimates[0].force_n));
+    EXPECT_TRUE(std::isnan(no_gauge.estimates[0].force_n) ||
+                std::isinf(no_gauge.estimates[0].force_n));
     EXPECT_TRUE(no_gauge.status & PAMCTL_FLAG_NONFINITE_READING);
     const pamctl_output no_fiber = tick_with(&s, c, 2.6, 0.1, bad, 0.4e6);
     EXPECT_EQ(no_fiber.estimates[0].fiber_velocity_m_s, 0.0);
     EXPECT_TRUE(no_fiber.status & PAMCTL_FLAG_NONFINITE_READING);
   }
   // a fiber filter that was fed no NaN still reads finite afterwards
-  EXPECT_TRUE(std::isfinite(tick_with(&s, c, 2.6, 0.1, 0.01, 0.4e6).estimates[0].fiber_velocity_m_s));
+  EXPECT_TRUE(
+      std::isfinite(tick_with(&s, c, 2.6, 0.1, 0.01, 0.4e6).estimates[0].fiber_velocity_m_s));
 }
 
 TEST(Pamctl, AfterAGapTheVelocitySpansTheWholeGap) {

@@ -18,5 +18,6 @@ int main() {
   std::printf("f(0.4 MPa, 10 mm) = %.6f N; inverted: d = %.9f mm (%s)\n", f_n,
               units::m_to_mm(back.d_m), to_string(back.status));
   return back.status == InversionStatus::kOk && std::abs(units::m_to_mm(back.d_m) - 10.0) < 1e-9
-             ? 0 : 1;
+             ? 0
+             : 1;
 }

@@ -47,8 +47,7 @@ TEST(AvbdlTest, LossesAndEndsOffIsChouHannaford) {
   steep.braid_angle_rad = units::deg_to_rad(35.0);
   for (const AvbdlParams& base : {AvbdlParams{}, arm_pam(), steep}) {
     const AvbdlParams p = losses_and_ends_off(base);
-    const BraidGeometry g = braid_from_initial_shape(p.length_m, p.diameter_m,
-                                                     p.braid_angle_rad);
+    const BraidGeometry g = braid_from_initial_shape(p.length_m, p.diameter_m, p.braid_angle_rad);
     for (double p_bar : {0.5, 1.0, 3.0, 6.0}) {
       for (double ratio : {0.72, 0.8, 0.9, 1.0, 1.05}) {
         const double l = ratio * p.length_m;
@@ -70,14 +69,13 @@ TEST(AvbdlTest, EndProfileJoinsTheFittingAndTheStraightPart) {
     const double l = 0.85 * p.length_m;
     const double r0 = 0.5 * p.diameter_m;
     const double r = avbdl_middle_radius(p, l);
-    ASSERT_GT(r, r0);   // contracted: the middle is wider than the fitting
+    ASSERT_GT(r, r0);  // contracted: the middle is wider than the fitting
     EXPECT_NEAR(avbdl_end_radius(p, 0.0, l), r0, 1e-15);
     EXPECT_NEAR(avbdl_end_radius(p, p.end_length_m, l), r, 1e-15);
     // tangent to the straight part, and monotone in between
     const double h = 1e-7;
     const double slope_end =
-        (avbdl_end_radius(p, p.end_length_m, l) - avbdl_end_radius(p, p.end_length_m - h, l)) /
-        h;
+        (avbdl_end_radius(p, p.end_length_m, l) - avbdl_end_radius(p, p.end_length_m - h, l)) / h;
     EXPECT_NEAR(slope_end, 0.0, 1e-5);
     for (int i = 1; i <= 100; ++i) {
       const double x0 = (i - 1) * p.end_length_m / 100, x1 = i * p.end_length_m / 100;
@@ -136,7 +134,7 @@ TEST(AvbdlTest, MooneyRivlinStressIsTheSlopeOfItsWork) {
     for (double stretch : {0.7, 1.3, 2.0, 2.4}) {
       const double dw = central_difference(w, stretch, 1e-6);
       EXPECT_NEAR(mooney_rivlin_stress(c, stretch), dw, 1e-6 * std::abs(dw));
-      EXPECT_GT(w(stretch), 0.0);   // stored work either way from the rest state
+      EXPECT_GT(w(stretch), 0.0);  // stored work either way from the rest state
     }
   }
   // neo-Hookean limit by hand: sigma = 2 C10 (lambda - 1/lambda^2)
@@ -164,7 +162,7 @@ TEST(AvbdlTest, BladderWorkIsTheSliceSumOfEq24) {
   const double l = 0.82 * p.length_m;
   const double r0 = 0.5 * p.diameter_m;
   const double t = p.wall_thickness_m;
-  const double area = units::kPi * t * (2 * r0 + t);   // annulus, per unit length
+  const double area = units::kPi * t * (2 * r0 + t);  // annulus, per unit length
   // middle: reference volume of the straight part times W_def(R / R0)
   double w = area * (p.length_m - 2 * p.end_length_m) *
              mooney_rivlin_energy_density(p.bladder, avbdl_middle_radius(p, l) / r0);
@@ -205,8 +203,7 @@ TEST(AvbdlTest, Dmsp20PullsLessThanChouAsThePaperMeasured) {
   for (double p_bar : {2.0, 4.0, 6.0}) {
     for (double dl_mm : {5.0, 10.0, 20.0, 30.0}) {
       const double l = p.length_m - units::mm_to_m(dl_mm);
-      EXPECT_LT(avbdl_static_force(p, p_bar * kBar, l),
-                chou_hannaford_force(g, p_bar * kBar, l));
+      EXPECT_LT(avbdl_static_force(p, p_bar * kBar, l), chou_hannaford_force(g, p_bar * kBar, l));
     }
   }
 }
@@ -233,20 +230,20 @@ TEST(AvbdlTest, FrictionOpposesMotionAndGrowsWithPressureAndStrain) {
   };
   EXPECT_GT(mag(5 * kBar, l), mag(2 * kBar, l));
   EXPECT_GT(mag(4 * kBar, 0.8 * p.length_m), mag(4 * kBar, 0.9 * p.length_m));
-  EXPECT_EQ(mag(-0.2 * kBar, l), 1.0);   // below ambient only F0 remains
+  EXPECT_EQ(mag(-0.2 * kBar, l), 1.0);  // below ambient only F0 remains
 }
 
 // the closed work integral of F dL over a lengthen-then-shorten cycle at fixed p
 double loop_work(const AvbdlParams& p, double p_pa, double l_short, double l_long) {
   const int n = 2000;
-  const double speed = 0.02;   // 20 mm/s, 20 v_s: friction saturated
+  const double speed = 0.02;  // 20 mm/s, 20 v_s: friction saturated
   const double dl = (l_long - l_short) / n;
   double work = 0.0;
-  for (int i = 0; i < n; ++i) {   // lengthening
+  for (int i = 0; i < n; ++i) {  // lengthening
     const double l0 = l_short + i * dl, l1 = l0 + dl;
     work += 0.5 * (avbdl_force(p, p_pa, l0, speed) + avbdl_force(p, p_pa, l1, speed)) * dl;
   }
-  for (int i = 0; i < n; ++i) {   // shortening back along the same points
+  for (int i = 0; i < n; ++i) {  // shortening back along the same points
     const double l0 = l_long - i * dl, l1 = l0 - dl;
     work -= 0.5 * (avbdl_force(p, p_pa, l0, -speed) + avbdl_force(p, p_pa, l1, -speed)) * dl;
   }
@@ -260,10 +257,9 @@ TEST(AvbdlTest, HysteresisLoopEnclosesWorkOnlyWithFriction) {
   const double p_pa = 3 * kBar;
 
   // friction off: the static force is conservative, the loop closes on itself
-  const double stroke_work = std::abs(avbdl_bladder_energy(plain, l_long) -
-                                      avbdl_bladder_energy(plain, l_short)) +
-                             p_pa * std::abs(avbdl_volume(plain, l_long) -
-                                             avbdl_volume(plain, l_short));
+  const double stroke_work =
+      std::abs(avbdl_bladder_energy(plain, l_long) - avbdl_bladder_energy(plain, l_short)) +
+      p_pa * std::abs(avbdl_volume(plain, l_long) - avbdl_volume(plain, l_short));
   EXPECT_NEAR(loop_work(plain, p_pa, l_short, l_long), 0.0, 1e-12 * stroke_work);
 
   // friction on: pulls harder lengthening than shortening, and the loop's area is the
@@ -271,8 +267,8 @@ TEST(AvbdlTest, HysteresisLoopEnclosesWorkOnlyWithFriction) {
   EXPECT_GT(avbdl_force(rough, p_pa, 0.9 * rough.length_m, 0.02),
             avbdl_force(rough, p_pa, 0.9 * rough.length_m, -0.02));
   const double span = l_long - l_short;
-  const double eps_integral = (rough.length_m * span -
-                               0.5 * (l_long * l_long - l_short * l_short)) / rough.length_m;
+  const double eps_integral =
+      (rough.length_m * span - 0.5 * (l_long * l_long - l_short * l_short)) / rough.length_m;
   const double expected = 3.0 * span + p_pa * 6e-5 * span + p_pa * 1.5e-4 * eps_integral;
   const double area = loop_work(rough, p_pa, l_short, l_long);
   EXPECT_GT(area, 0.0);
@@ -300,7 +296,7 @@ TEST(AvbdlTest, DefaultsPresetsAndScaledGeometryValidate) {
 // line's length and leaves the track alone; after no pressure (NaN) the track starts over
 void expect_tracked_as_whole(const AvbdlParams& p, const std::vector<double>& pressures) {
   const AvbdlShape shape = avbdl_shape(p);
-  const double slack = shape.min_length;   // the line's ends closer than any free length
+  const double slack = shape.min_length;  // the line's ends closer than any free length
   FreeLengthTrack track;
   for (double pa : pressures) {
     const double whole = avbdl_line_muscle_length(p, shape, pa, slack);
@@ -311,7 +307,7 @@ void expect_tracked_as_whole(const AvbdlParams& p, const std::vector<double>& pr
     ASSERT_EQ(track.pressure_pa, pa);
   }
   const FreeLengthTrack before = track;
-  const double taut = avbdl_max_length(p);   // pulled to the law's end: the line is taut
+  const double taut = avbdl_max_length(p);  // pulled to the law's end: the line is taut
   EXPECT_EQ(avbdl_line_muscle_length(p, shape, 0.25 * kBar, taut, &track), taut);
   EXPECT_EQ(track.length_m, before.length_m);
   avbdl_line_muscle_length(p, shape, kNaN, slack, &track);
@@ -322,13 +318,13 @@ void expect_tracked_as_whole(const AvbdlParams& p, const std::vector<double>& pr
 
 TEST(AvbdlTest, ATrackedFreeLengthAgreesWithTheWholeSearch) {
   std::vector<double> pressures;
-  for (int k = 0; k <= 500; ++k) pressures.push_back((1.0 + 0.01 * k) * kBar);   // 1 -> 6 bar
+  for (int k = 0; k <= 500; ++k) pressures.push_back((1.0 + 0.01 * k) * kBar);  // 1 -> 6 bar
   pressures.insert(pressures.end(), {1.5 * kBar, 6.5 * kBar, 0.2 * kBar});      // jumps
   expect_tracked_as_whole(with_friction(arm_pam()), pressures);
   AvbdlParams tube = with_friction(arm_pam());
   tube.bladder_diameter_m = 0.6 * tube.diameter_m;
   std::vector<double> low;
-  for (int k = 1; k <= 300; ++k) low.push_back(0.01 * k * kBar);   // 0.01 -> 3 bar
+  for (int k = 1; k <= 300; ++k) low.push_back(0.01 * k * kBar);  // 0.01 -> 3 bar
   low.insert(low.end(), {0.02 * kBar, 2.0 * kBar});
   ASSERT_GT(avbdl_free_length(tube, 0.05 * kBar), tube.length_m) << "a root past L0";
   expect_tracked_as_whole(tube, low);

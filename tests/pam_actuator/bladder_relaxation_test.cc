@@ -31,7 +31,7 @@ TEST(BladderRelaxationTest, ARampAndHoldFollowTheClosedFormAtEveryStep) {
   for (double dt : {1e-3, 7e-3}) {
     SCOPED_TRACE(dt);
     const RelaxationStep step = relaxation_step(r, dt);
-    const double q = 250.0, ramp_s = 0.3;   // [N/s], [s]
+    const double q = 250.0, ramp_s = 0.3;  // [N/s], [s]
     double h[kMaxRelaxationTerms] = {};
     const int ramp_steps = static_cast<int>(std::lround(ramp_s / dt));
     for (int k = 1; k <= 2 * ramp_steps; ++k) {
@@ -61,7 +61,7 @@ TEST(BladderRelaxationTest, AFastStepIsAnsweredWithTheInstantaneousModulus) {
 // F_e + sum h_i encloses pi A^2 G''(w) / k per cycle once the start has died away.
 TEST(BladderRelaxationTest, ASinusoidDissipatesTheLossModulusPerCycle) {
   const BladderRelaxation r = two_terms();
-  const double amplitude = 5.0, k = 2000.0;   // [N], [N/m]
+  const double amplitude = 5.0, k = 2000.0;  // [N], [N/m]
   for (double hz : {0.5, 3.0, 12.0}) {
     SCOPED_TRACE(hz);
     const double omega = 2.0 * kPi * hz;
@@ -70,11 +70,11 @@ TEST(BladderRelaxationTest, ASinusoidDissipatesTheLossModulusPerCycle) {
     const RelaxationStep step = relaxation_step(r, dt);
     double h[kMaxRelaxationTerms] = {}, previous_fe = 0.0, previous_force = 0.0;
     double work = 0.0;
-    const int cycles = 12;   // tau_max = 0.5 s: 12 cycles at 0.5 Hz leave e^-48 of the start
+    const int cycles = 12;  // tau_max = 0.5 s: 12 cycles at 0.5 Hz leave e^-48 of the start
     for (int n = 1; n <= cycles * per_cycle; ++n) {
       const double fe = amplitude * std::sin(omega * n * dt);
       const double force = fe + relaxation_advance(r, step, h, fe - previous_fe, h);
-      if (n > (cycles - 1) * per_cycle) {   // the last cycle: trapezoidal force dx
+      if (n > (cycles - 1) * per_cycle) {  // the last cycle: trapezoidal force dx
         work += 0.5 * (force + previous_force) * (fe - previous_fe) / k;
       }
       previous_fe = fe;
@@ -94,21 +94,25 @@ TEST(BladderRelaxationTest, OneTermPerDecadeHoldsAConstantLossTangentInItsBand) 
   const double g = 2.0 * tan_delta / kPi * std::log(10.0);
   r.weight = {g, g, g, g};
   r.time_s = {0.001, 0.01, 0.1, 1.0};
-  for (double hz : {0.5, 1.0, 3.0, 10.0, 30.0}) {   // the terms span 0.16-160 Hz
+  for (double hz : {0.5, 1.0, 3.0, 10.0, 30.0}) {  // the terms span 0.16-160 Hz
     const double omega = 2.0 * kPi * hz;
-    const double tangent =
-        relaxation_loss_modulus(r, omega) / relaxation_storage_modulus(r, omega);
+    const double tangent = relaxation_loss_modulus(r, omega) / relaxation_storage_modulus(r, omega);
     EXPECT_NEAR(tangent, tan_delta, 0.25 * tan_delta) << hz << " Hz";
   }
 }
 
 TEST(BladderRelaxationTest, BadTermsAreNamedByTheirKeys) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  struct Case { int term; double weight, time_s; const char* message; };
-  for (const Case& c : {Case{0, -0.1, 0.1, "bladder.relaxation_weights[0] must be >= 0, got -0.1"},
-                        Case{1, 0.1, 0.0, "bladder.relaxation_times_s[1] must be > 0 s, got 0"},
-                        Case{1, nan, 0.1, "bladder.relaxation_weights[1] must be >= 0, got nan"},
-                        Case{0, 0.1, -2.0, "bladder.relaxation_times_s[0] must be > 0 s, got -2"}}) {
+  struct Case {
+    int term;
+    double weight, time_s;
+    const char* message;
+  };
+  for (const Case& c :
+       {Case{0, -0.1, 0.1, "bladder.relaxation_weights[0] must be >= 0, got -0.1"},
+        Case{1, 0.1, 0.0, "bladder.relaxation_times_s[1] must be > 0 s, got 0"},
+        Case{1, nan, 0.1, "bladder.relaxation_weights[1] must be >= 0, got nan"},
+        Case{0, 0.1, -2.0, "bladder.relaxation_times_s[0] must be > 0 s, got -2"}}) {
     BladderRelaxation r = two_terms();
     r.weight[c.term] = c.weight;
     r.time_s[c.term] = c.time_s;

@@ -173,8 +173,8 @@ std::string write_plant(const std::string& bladder) {
 }
 
 TEST(BladderTubeTest, PlantFilesGiveTheTubeAndTheLawByKey) {
-  const PlantParams p = load_plant_params(write_plant(
-      "material = \"natural_rubber\"\nlaw = \"gent_gent\"\ndiameter_mm = 4.0\n"));
+  const PlantParams p = load_plant_params(
+      write_plant("material = \"natural_rubber\"\nlaw = \"gent_gent\"\ndiameter_mm = 4.0\n"));
   EXPECT_EQ(p.avbdl.bladder_law, BladderLaw::kGentGent);
   EXPECT_DOUBLE_EQ(p.avbdl.bladder_diameter_m, 0.004);
   EXPECT_EQ(p.avbdl.bladder_gent.jm, kNaturalRubberTreloarGentGent.jm);

@@ -46,7 +46,7 @@ TEST(ChouHannafordTest, DiameterIsD0AtL0AndGrowsAsTheMuscleContracts) {
     const double d = chou_hannaford_diameter(g, l);
     EXPECT_NEAR(chou_hannaford_volume(g, l), units::kPi * d * d / 4 * l, 1e-15);
   }
-  EXPECT_EQ(chou_hannaford_diameter(g, g.fibre_length_m * 1.01), 0.0);   // past full stretch
+  EXPECT_EQ(chou_hannaford_diameter(g, g.fibre_length_m * 1.01), 0.0);  // past full stretch
 }
 
 TEST(ChouHannafordTest, ForceSignAndZero) {

@@ -16,19 +16,19 @@ namespace {
 // true laws, one per family, with the agonist's Eq. (2) (Table IV of Yoshida and Hosoda)
 SpringModel truth(SpringLaw law) {
   switch (law) {
-    case SpringLaw::kEq3:   // Table IV agonist
+    case SpringLaw::kEq3:  // Table IV agonist
       return spring_model_from_paper_units(law, -60.1, 170.1, {0.911, 0.256, 7.00, -0.201});
-    case SpringLaw::kEq4:   // Table IV agonist plus p^2 and d^2 terms
+    case SpringLaw::kEq4:  // Table IV agonist plus p^2 and d^2 terms
       return spring_model_from_paper_units(law, -60.1, 170.1,
                                            {0.911, 0.256, 7.00, 0.002, -0.201, 1.5});
-    case SpringLaw::kEq5:   // hand-made set of similar magnitude (55 N at 0.4 MPa, 10 mm)
+    case SpringLaw::kEq5:  // hand-made set of similar magnitude (55 N at 0.4 MPa, 10 mm)
       return spring_model_from_paper_units(law, -60.1, 170.1, {3.0, 0.005, 0.01, 0.5, 10.0});
   }
   return {};
 }
 
 TensileTestOptions noisy_hysteretic() {
-  TensileTestOptions o;   // the paper's protocol: 0.4-0.8 MPa, 2.5 mm steps to 20 mm
+  TensileTestOptions o;  // the paper's protocol: 0.4-0.8 MPa, 2.5 mm steps to 20 mm
   o.hysteresis = 0.02;
   o.noise_pressure_mpa = 0.002;
   o.noise_force_n = 0.2;
@@ -44,8 +44,8 @@ class IdentificationTest : public ::testing::TestWithParam<SpringLaw> {};
 TEST_P(IdentificationTest, RecoversKnownLawWithin2Percent) {
   const SpringLaw law = GetParam();
   const SpringModel true_model = truth(law);
-  const SpringFit fit = fit_spring_model(law, run_tensile_test(true_model, noisy_hysteretic()),
-                                         "virtual");
+  const SpringFit fit =
+      fit_spring_model(law, run_tensile_test(true_model, noisy_hysteretic()), "virtual");
   EXPECT_EQ(fit.model.law, law);
   EXPECT_EQ(fit.points, 5 * 18);
   EXPECT_GT(fit.r2, 0.99);
@@ -65,8 +65,8 @@ TEST_P(IdentificationTest, RecoversKnownLawWithin2Percent) {
   EXPECT_GT(checked, 600);
 
   // Eq. (2): the natural length line, from l - d
-  EXPECT_NEAR(fit.model.m_m_per_pa * 1e9, -60.1, 1.0);    // mm/MPa
-  EXPECT_NEAR(fit.model.h_m * 1e3, 170.1, 0.5);           // mm
+  EXPECT_NEAR(fit.model.m_m_per_pa * 1e9, -60.1, 1.0);  // mm/MPa
+  EXPECT_NEAR(fit.model.h_m * 1e3, 170.1, 0.5);         // mm
 }
 
 TEST_P(IdentificationTest, NoiseFreeDataGiveExactCoefficients) {

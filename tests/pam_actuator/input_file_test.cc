@@ -33,17 +33,16 @@ TEST(InputFileTest, FoldersDevicesAndHugeFilesAreRefusedByEveryReader) {
   const std::string huge = dir + "input_file_test_huge_" + std::to_string(::getpid()) + ".toml";
   {
     std::ofstream out(huge);
-    out.seekp((64 << 20) + 10);   // sparse: 64 MiB + 10 bytes, nothing written
+    out.seekp((64 << 20) + 10);  // sparse: 64 MiB + 10 bytes, nothing written
     out << 'x';
   }
   struct Case {
     std::string path, says;
   };
-  for (const Case& c : {Case{dir, "is a folder, not a file"},
-                        Case{"/dev/null", "not a regular file"},
-                        Case{"/dev/zero", "not a regular file"},
-                        Case{huge, "larger than 64 MiB"},
-                        Case{dir + "no_such_input.toml", "cannot open file"}}) {
+  for (const Case& c :
+       {Case{dir, "is a folder, not a file"}, Case{"/dev/null", "not a regular file"},
+        Case{"/dev/zero", "not a regular file"}, Case{huge, "larger than 64 MiB"},
+        Case{dir + "no_such_input.toml", "cannot open file"}}) {
     SCOPED_TRACE(c.path);
     for (const auto& read : std::vector<std::function<void()>>{
              [&] { read_text_file(c.path); }, [&] { load_pam_params(c.path); },

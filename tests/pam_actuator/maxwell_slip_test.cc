@@ -17,7 +17,7 @@
 namespace pamsim {
 namespace {
 
-constexpr double kStep = 1e-7;   // [m] input increment of the sweeps below
+constexpr double kStep = 1e-7;  // [m] input increment of the sweeps below
 
 MaxwellSlipParams two_elements() {
   MaxwellSlipParams p;
@@ -31,7 +31,7 @@ struct Slip {
   MaxwellSlipParams params = two_elements();
   std::array<double, kMaxSlipElements> state{};
   double x = 0.0;
-  double up = 4.0, down = 4.0;   // [N]
+  double up = 4.0, down = 4.0;  // [N]
 
   double force() const { return maxwell_slip_force(params, state.data(), up, down); }
   // Drives the input to `to` in kStep increments; returns the work done on it (trapezoids).
@@ -67,7 +67,7 @@ TEST(MaxwellSlipTest, ALoopHasItsAnalyticWidthAndArea) {
   Slip s;
   s.up = 5.0;
   s.down = 3.0;
-  s.sweep(amplitude);   // the virgin branch, then one full cycle
+  s.sweep(amplitude);  // the virgin branch, then one full cycle
   const double falling_half = s.sweep(0.0);
   const double falling_at_zero = s.force();
   const double middle = s.sweep(-amplitude) + s.sweep(0.0);
@@ -83,7 +83,7 @@ TEST(MaxwellSlipTest, AReversalInsideTheStickBandIsElastic) {
   s.params.count = 1;
   s.params.weight = {1.0};
   s.params.breakaway_m = {1.5e-4};
-  s.sweep(1e-3);   // slipping, at +F
+  s.sweep(1e-3);  // slipping, at +F
   const double before = s.force();
   // back by less than 2 delta = 0.3 mm and forth again: the spring alone moves
   const double work = s.sweep(0.8e-3) + s.sweep(1e-3);
@@ -108,23 +108,24 @@ TEST(MaxwellSlipTest, TheHeldForceFollowsTheSlipForceAtOnce) {
   Slip s;
   s.sweep(1e-3);
   EXPECT_NEAR(s.force(), 4.0, 1e-12);
-  s.up = 1.4;   // the pressure falls: the contact load, and the force held, with it
+  s.up = 1.4;  // the pressure falls: the contact load, and the force held, with it
   EXPECT_NEAR(s.force(), 1.4, 1e-12);
-  s.up = 6.0;   // and rises: a stuck element holds its share of the new limit
+  s.up = 6.0;  // and rises: a stuck element holds its share of the new limit
   EXPECT_NEAR(s.force(), 6.0, 1e-12);
 }
 
 TEST(MaxwellSlipTest, EveryBadValueNamesItsKey) {
   const double nan = std::nan("");
-  struct Case { int count; double weight1, breakaway1; const char* key; };
-  for (const Case& c : {Case{0, 0.25, 2e-4, "breakaway_mm"},
-                        Case{5, 0.25, 2e-4, "breakaway_mm"},
-                        Case{2, 0.25, 0.0, "breakaway_mm[1]"},
-                        Case{2, 0.25, -1e-4, "breakaway_mm[1]"},
-                        Case{2, 0.25, nan, "breakaway_mm[1]"},
-                        Case{2, 0.0, 2e-4, "weights[1]"},
-                        Case{2, nan, 2e-4, "weights[1]"},
-                        Case{2, 0.2, 2e-4, "weights"}}) {
+  struct Case {
+    int count;
+    double weight1, breakaway1;
+    const char* key;
+  };
+  for (const Case& c :
+       {Case{0, 0.25, 2e-4, "breakaway_mm"}, Case{5, 0.25, 2e-4, "breakaway_mm"},
+        Case{2, 0.25, 0.0, "breakaway_mm[1]"}, Case{2, 0.25, -1e-4, "breakaway_mm[1]"},
+        Case{2, 0.25, nan, "breakaway_mm[1]"}, Case{2, 0.0, 2e-4, "weights[1]"},
+        Case{2, nan, 2e-4, "weights[1]"}, Case{2, 0.2, 2e-4, "weights"}}) {
     MaxwellSlipParams p = two_elements();
     p.count = c.count;
     p.weight[1] = c.weight1;

@@ -109,7 +109,8 @@ TEST_F(PamParamsTest, SyntaxErrorNamesLine) {
 }
 
 TEST_F(PamParamsTest, UnknownKeys) {
-  expect_error(good_with("a3 = -0.201", "a3 = -0.201\nb4 = 1.0"), "spring.b4: is not a coefficient of law = \"eq3\"");
+  expect_error(good_with("a3 = -0.201", "a3 = -0.201\nb4 = 1.0"),
+               "spring.b4: is not a coefficient of law = \"eq3\"");
   expect_error(good_with("name = \"t\"", "name = \"t\"\ncolour = 1"), "colour: unknown key");
   expect_error(good_with("q_V_per_N", "q_V_per_N_typo = 1\nq_V_per_N"),
                "strain_gauge.q_V_per_N_typo: unknown key");
@@ -118,7 +119,8 @@ TEST_F(PamParamsTest, UnknownKeys) {
 TEST_F(PamParamsTest, MissingCoefficientAndLaw) {
   expect_error(good_with("a1 = 0.256\n", ""), "spring.a1: is required");
   expect_error(good_with("m = -60.1\n", ""), "spring.m: is required");
-  expect_error(good_with("law = \"eq3\"", "law = \"eq4\""), "spring.a0: is not a coefficient of law = \"eq4\"");
+  expect_error(good_with("law = \"eq3\"", "law = \"eq4\""),
+               "spring.a0: is not a coefficient of law = \"eq4\"");
   expect_error(good_with("law = \"eq3\"", "law = \"eq9\""), "spring.law");
   // an eq4 file without b5
   expect_error(good_with("law = \"eq3\"", "law = \"eq4\"")
@@ -144,7 +146,8 @@ TEST_F(PamParamsTest, NonFiniteAndNonNumeric) {
 
 TEST_F(PamParamsTest, StrainGaugeSlopeMustBePositive) {
   expect_error(good_with("q_V_per_N = 2.25e-3", "q_V_per_N = 0"), "strain_gauge.q_V_per_N");
-  expect_error(good_with("q_V_per_N = 2.25e-3", "q_V_per_N = -1e-3"), "must be in (0, inf) V/N, got -0.001");
+  expect_error(good_with("q_V_per_N = 2.25e-3", "q_V_per_N = -1e-3"),
+               "must be in (0, inf) V/N, got -0.001");
 }
 
 TEST_F(PamParamsTest, BadGeometry) {
@@ -199,7 +202,7 @@ TEST_F(PamParamsTest, EveryNumberKeyRefusesAStringAndNaN) {
     const std::size_t dot = d.key.find('.');
     const std::string table = d.key.substr(0, dot), name = d.key.substr(dot + 1);
     for (const char* bad : {"\"x\"", "nan"}) {
-      std::string text = kGood;   // the key's line replaced, or added under its table
+      std::string text = kGood;  // the key's line replaced, or added under its table
       const std::size_t header = text.find("[" + table + "]\n");
       ASSERT_NE(header, std::string::npos) << d.key;
       const std::size_t line = text.find("\n" + name + " = ", header);

@@ -19,7 +19,8 @@
 namespace pamsim {
 namespace {
 
-const std::string kAgonistPlant = std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_agonist.toml";
+const std::string kAgonistPlant =
+    std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_agonist.toml";
 const std::string kChangePrefix = "muscles.agonist.plant.";
 
 TEST(PlantKeysTest, EachKeyHasOneRowAndTheReferenceListsThemAll) {
@@ -30,8 +31,8 @@ TEST(PlantKeysTest, EachKeyHasOneRowAndTheReferenceListsThemAll) {
   for (const KeyDoc& d : plant_key_docs()) ++listed[d.key];
   for (const auto& [key, count] : listed) EXPECT_EQ(count, 1) << key;
   for (const auto& [key, count] : rows) EXPECT_EQ(listed.count(key), 1u) << key;
-  for (const char* own : {"name", "source", "law", "bladder.material",
-                          "bladder.relaxation_times_s", "friction.breakaway_mm"}) {
+  for (const char* own : {"name", "source", "law", "bladder.material", "bladder.relaxation_times_s",
+                          "friction.breakaway_mm"}) {
     EXPECT_EQ(listed.count(own), 1u) << own;
   }
   EXPECT_EQ(listed.size(), rows.size() + 8) << "the file's own: name, source, law, material "
@@ -63,9 +64,9 @@ TEST(PlantKeysTest, ValidateNamesEachBadFieldByItsFileKey) {
       bad.push_back(std::nan(""));
       for (double v : bad) {
         AvbdlParams p;
-        *avbdl_key_tables(&p)[t].numbers[r].target = row.si(v);   // the same row of p
-        const InputErrorParts parts = refusal_parts(
-            [&] { validate_avbdl_params(p, "plant."); }, row.name);
+        *avbdl_key_tables(&p)[t].numbers[r].target = row.si(v);  // the same row of p
+        const InputErrorParts parts =
+            refusal_parts([&] { validate_avbdl_params(p, "plant."); }, row.name);
         EXPECT_EQ(parts.key, "plant." + row_key(tables[t], row.name)) << v;
       }
     }
@@ -79,7 +80,10 @@ TEST(PlantKeysTest, ChecksThatJoinKeysNameTheFileKeyInItsUnit) {
     const char* problem;
   };
   const Case cases[] = {
-      {"bladder.C10_MPa", [](AvbdlParams& p) { p.bladder = {-2e5, 1e5, 0.0}; },
+      {"bladder.C10_MPa",
+       [](AvbdlParams& p) {
+         p.bladder = {-2e5, 1e5, 0.0};
+       },
        "must be > -bladder.C01_MPa = -0.1 MPa (a positive initial shear modulus 2 (C10 + "
        "C01)), got -0.2"},
       {"geometry.end_length_mm", [](AvbdlParams& p) { p.end_length_m = 0.07; }, nullptr},
@@ -96,10 +100,11 @@ TEST(PlantKeysTest, ChecksThatJoinKeysNameTheFileKeyInItsUnit) {
     }
   }
   AvbdlParams p;
-  p.end_length_m = 0.07;   // 2 Ld above b / sqrt 3 = 127.4 mm: in mm, as the file gives it
+  p.end_length_m = 0.07;  // 2 Ld above b / sqrt 3 = 127.4 mm: in mm, as the file gives it
   const InputErrorParts parts = refusal_parts([&] { validate_avbdl_params(p, ""); }, "Ld");
   EXPECT_NE(parts.problem.find(") mm (half the fully contracted length), got 70"),
-            std::string::npos) << parts.problem;
+            std::string::npos)
+      << parts.problem;
 }
 
 }  // namespace

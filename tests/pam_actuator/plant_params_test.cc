@@ -30,8 +30,9 @@ std::string write_temp(const std::string& text) {
 
 const std::string kSlip = "model = \"maxwell_slip\"\n";
 // a [bladder]'s relaxation with two terms, its weights to follow
-const std::string kRelaxing = "C20_MPa = 0.0035\nrelaxation_times_s = [0.01, 0.1]\n"
-                              "relaxation_weights = ";
+const std::string kRelaxing =
+    "C20_MPa = 0.0035\nrelaxation_times_s = [0.01, 0.1]\n"
+    "relaxation_weights = ";
 
 const char* kValid = R"(law = "avbdl"
 [geometry]
@@ -73,7 +74,11 @@ TEST(PlantParamsTest, ShippedAgonistPlantLoads) {
 // bladder's reference) and the friction rule of plant_agonist.toml: A0 = 0.030 pi R0^2
 // lengthening, 0.024 pi R0^2 shortening, A1 = 2.4 A0 (to the file's rounding in mm^2).
 TEST(PlantParamsTest, ShippedPlantsHaveTheirStatedDimensionsAndFrictionRule) {
-  struct Shipped { const char* file; double length_mm, diameter_mm, tube_mm; bool silicone; };
+  struct Shipped {
+    const char* file;
+    double length_mm, diameter_mm, tube_mm;
+    bool silicone;
+  };
   for (const Shipped& s : {Shipped{"plant_agonist.toml", 180, 10.0, 0.0, false},
                            Shipped{"plant_antagonist.toml", 180, 16.1, 0.0, false},
                            Shipped{"plant_pam_a.toml", 216, 19.9, 6.0, false},
@@ -81,8 +86,7 @@ TEST(PlantParamsTest, ShippedPlantsHaveTheirStatedDimensionsAndFrictionRule) {
                            Shipped{"plant_pam_c.toml", 141, 13.4, 4.0, false},
                            Shipped{"plant_pam_d.toml", 212, 19.0, 0.0, true},
                            Shipped{"table1/plant_agonist.toml", 180, 16.0, 4.0, false},
-                           Shipped{"table1/plant_antagonist.toml", 180, 16.1, 4.0,
-                                   false}}) {
+                           Shipped{"table1/plant_antagonist.toml", 180, 16.1, 4.0, false}}) {
     SCOPED_TRACE(s.file);
     const PlantParams plant =
         load_plant_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/" + s.file);
@@ -102,7 +106,8 @@ TEST(PlantParamsTest, ShippedPlantsHaveTheirStatedDimensionsAndFrictionRule) {
   // regression pin: the antagonist's source line states free lengths 155 / 139 / 134 mm at
   // 0.2 / 0.4 / 0.6 MPa (computed when the file was written; a drift guard, as above)
   const AvbdlParams anta =
-      load_plant_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_antagonist.toml").avbdl;
+      load_plant_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_antagonist.toml")
+          .avbdl;
   EXPECT_NEAR(avbdl_free_length(anta, 0.2e6), 0.155, 0.001);
   EXPECT_NEAR(avbdl_free_length(anta, 0.4e6), 0.139, 0.001);
   EXPECT_NEAR(avbdl_free_length(anta, 0.6e6), 0.134, 0.001);
@@ -175,7 +180,7 @@ TEST(PlantParamsTest, FreeLengthAndLengthAtForceInvertTheStaticLaw) {
     }
   }
   EXPECT_EQ(avbdl_free_length(a, 0.0), a.length_m);
-  EXPECT_EQ(avbdl_length_at_force(a, 0.4e6, 1e7), -1.0);   // more than it can pull
+  EXPECT_EQ(avbdl_length_at_force(a, 0.4e6, 1e7), -1.0);  // more than it can pull
 }
 
 TEST(PlantParamsTest, TheBladdersRelaxationIsRead) {
@@ -232,7 +237,8 @@ std::vector<BadPlantFile> bad_plant_files() {
        "bladder.relaxation_weights"},
       {"C20_MPa = 0.0035",
        "C20_MPa = 0.0035\nrelaxation_times_s = [1, 2, 3, 4, 5]\n"
-       "relaxation_weights = [1, 1, 1, 1, 1]", "bladder.relaxation_times_s"},
+       "relaxation_weights = [1, 1, 1, 1, 1]",
+       "bladder.relaxation_times_s"},
       {"C20_MPa = 0.0035",
        "C20_MPa = 0.0035\nrelaxation_times_s = [0.01, 0]\nrelaxation_weights = [0.1, 0.1]",
        "bladder.relaxation_times_s: [1]"},

@@ -49,14 +49,14 @@ TEST(SpringModelTest, StiffnessMatchesFiniteDifference) {
   const std::array<double, 6> eq4 = {0.911, 0.256, 7.00, 0.002, -0.201, 1.5};
   const std::array<double, 6> eq5 = {3.0, 0.005, 0.01, 0.5, 10.0, 0.0};
   const std::vector<SpringModel> models = {
-      table4_agonist(), table4_antagonist(), spring_model_from_paper_units(SpringLaw::kEq4, 0, 170, eq4),
+      table4_agonist(), table4_antagonist(),
+      spring_model_from_paper_units(SpringLaw::kEq4, 0, 170, eq4),
       spring_model_from_paper_units(SpringLaw::kEq5, 0, 170, eq5)};
   for (const SpringModel& model : models) {
     for (double p : {0.1e6, 0.45e6, 0.8e6}) {
       for (double d : {1e-3, 10e-3, 25e-3}) {
         const double h = 1e-7;
-        const double fd =
-            (spring_force(model, p, d + h) - spring_force(model, p, d - h)) / (2 * h);
+        const double fd = (spring_force(model, p, d + h) - spring_force(model, p, d - h)) / (2 * h);
         EXPECT_NEAR(spring_stiffness(model, p, d), fd, 1e-6 * std::abs(fd) + 1e-6);
       }
     }
@@ -121,7 +121,7 @@ void expect_round_trip(const SpringModel& model) {
       ++checked;
     }
   }
-  EXPECT_GT(checked, 15 * 60 * 9 / 10);   // most of the working range is monotone
+  EXPECT_GT(checked, 15 * 60 * 9 / 10);  // most of the working range is monotone
 }
 
 TEST(SpringModelTest, RoundTripTable4Eq3) {
@@ -190,7 +190,7 @@ TEST(SpringModelTest, SmallestPositiveRootOfCubics) {
   const double r = smallest_positive_root(2.0, 0.5, 3.0, 7.0);
   EXPECT_NEAR(2 * r * r * r + 0.5 * r * r + 3 * r, 7.0, 1e-12);
   // tiny leading coefficient: the quadratic roots are kept, the huge root is not chosen
-  const double q = smallest_positive_root(1e-18, 1.0, 1.0, 2.0);   // x^2 + x - 2 -> 1
+  const double q = smallest_positive_root(1e-18, 1.0, 1.0, 2.0);  // x^2 + x - 2 -> 1
   EXPECT_NEAR(q, 1.0, 1e-12);
   // negative leading coefficient with no crossing
   EXPECT_LT(smallest_positive_root(-1.0, 0.0, -1.0, 1.0), 0.0);

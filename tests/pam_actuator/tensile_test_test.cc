@@ -21,7 +21,6 @@ namespace {
 
 using pamsim_test::table4_agonist;
 
-
 TEST(TensileTestTest, ProtocolShape) {
   const std::vector<TensileRow> rows = run_tensile_test(table4_agonist(), TensileTestOptions{});
   // 5 pressures x (9 loading + 9 unloading) set points of 0..20 mm
@@ -46,17 +45,17 @@ TEST(TensileTestTest, ProtocolShape) {
 TEST(TensileTestTest, CustomPressuresMaxAndHysteresis) {
   TensileTestOptions o;
   o.pressures_mpa = {0.3};
-  o.max_deformation_mm = 11.0;   // not a multiple of 2.5: the last step is shorter
+  o.max_deformation_mm = 11.0;  // not a multiple of 2.5: the last step is shorter
   o.hysteresis = 0.1;
   const auto law = [](double p, double d) { return 1e-3 * p * d; };
   const auto l_n = [](double) { return 0.2; };
   const std::vector<TensileRow> rows = run_tensile_test(law, l_n, o);
-  ASSERT_EQ(rows.size(), 12u);   // 0, 2.5, 5, 7.5, 10, 11 and back
+  ASSERT_EQ(rows.size(), 12u);  // 0, 2.5, 5, 7.5, 10, 11 and back
   EXPECT_DOUBLE_EQ(rows[5].deformation_mm, 11.0);
   EXPECT_DOUBLE_EQ(rows[6].deformation_mm, 11.0);
   const double f = 1e-3 * 0.3e6 * 11e-3;
-  EXPECT_NEAR(rows[5].force_n, 1.1 * f, 1e-12);   // loading: f (1 + h)
-  EXPECT_NEAR(rows[6].force_n, 0.9 * f, 1e-12);   // unloading: f (1 - h)
+  EXPECT_NEAR(rows[5].force_n, 1.1 * f, 1e-12);  // loading: f (1 + h)
+  EXPECT_NEAR(rows[6].force_n, 0.9 * f, 1e-12);  // unloading: f (1 - h)
   EXPECT_NEAR(rows[0].length_mm, 200.0, 1e-12);
 }
 
@@ -91,8 +90,8 @@ TEST(TensileTestTest, NoiseIsDeterministicPerSeed) {
 // the forces are its static law, and its friction opens a loop (loading above unloading
 // by the two strokes' friction) that is closed without it.
 TEST(TensileTestTest, OnAPlantStartsAtItsFreeLengthAndShowsItsFriction) {
-  AvbdlParams plant = avbdl_params_from_geometry(0.18, 0.010, 25.0 * M_PI / 180.0, 0.002,
-                                                 kNaturalRubberTreloar);
+  AvbdlParams plant =
+      avbdl_params_from_geometry(0.18, 0.010, 25.0 * M_PI / 180.0, 0.002, kNaturalRubberTreloar);
   TensileTestOptions o;
   o.pressures_mpa = {0.4, 0.6};
   const std::vector<TensileRow> frictionless = run_tensile_test(plant, o);
@@ -108,7 +107,7 @@ TEST(TensileTestTest, OnAPlantStartsAtItsFreeLengthAndShowsItsFriction) {
   const std::vector<TensileRow> rubbing = run_tensile_test(plant, o);
   for (std::size_t k = 0; k < 9; ++k) {
     const TensileRow& up = rubbing[k];
-    const TensileRow& down = rubbing[17 - k];   // the same set point on the way back
+    const TensileRow& down = rubbing[17 - k];  // the same set point on the way back
     ASSERT_EQ(up.deformation_mm, down.deformation_mm);
     EXPECT_NEAR(up.force_n - down.force_n, 2.0 * (0.5 + 0.4e6 * 2e-6), 1e-9) << k;
   }
@@ -119,8 +118,8 @@ TEST(TensileTestTest, OnAPlantStartsAtItsFreeLengthAndShowsItsFriction) {
 // moved yet), one 2.5 mm step later (more than twice every breakaway travel) the whole
 // shortening friction acts; the first loading sample starts from unloaded elements.
 TEST(TensileTestTest, OnAMaxwellSlipPlantTheLoopTurnsOverAtTheReversal) {
-  AvbdlParams plant = avbdl_params_from_geometry(0.18, 0.010, 25.0 * M_PI / 180.0, 0.002,
-                                                 kNaturalRubberTreloar);
+  AvbdlParams plant =
+      avbdl_params_from_geometry(0.18, 0.010, 25.0 * M_PI / 180.0, 0.002, kNaturalRubberTreloar);
   plant.friction.extension = {0.5, 2e-6, 0.0};
   plant.friction.contraction = {0.3, 1e-6, 0.0};
   plant.friction.model = FrictionModel::kMaxwellSlip;

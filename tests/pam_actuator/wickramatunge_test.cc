@@ -24,8 +24,7 @@ TEST(WickramatungeTest, HandComputedTable1Value) {
   const double k = -2.299 * 4 - 5.741 * 2 * 3 + 2.741 * 9 + 119.304;
   EXPECT_NEAR(k, 100.331, 1e-9);
   EXPECT_NEAR(wickramatunge_force(m, 2e5, 0.03, StretchDirection::kExtension), 300.993, 1e-9);
-  EXPECT_NEAR(wickramatunge_stiffness(m, 2e5, 0.03, StretchDirection::kExtension), 10033.1,
-              1e-7);
+  EXPECT_NEAR(wickramatunge_stiffness(m, 2e5, 0.03, StretchDirection::kExtension), 10033.1, 1e-7);
   // contraction, high range, P = 4 bar, Ls = 5 cm
   const double kc = 3.837 * 16 - 2.389 * 4 * 5 + 1.850 * 25 + 53.021;
   EXPECT_NEAR(wickramatunge_force(m, 4e5, 0.05, StretchDirection::kContraction), kc * 5, 1e-9);
@@ -48,10 +47,8 @@ TEST(WickramatungeTest, PressureRangeAndBranchSelection) {
 
   // the branch follows the sign of dLs/dt and holds at rest
   EXPECT_EQ(stretch_direction(0.01, StretchDirection::kContraction), StretchDirection::kExtension);
-  EXPECT_EQ(stretch_direction(-0.01, StretchDirection::kExtension),
-            StretchDirection::kContraction);
-  EXPECT_EQ(stretch_direction(0.0, StretchDirection::kContraction),
-            StretchDirection::kContraction);
+  EXPECT_EQ(stretch_direction(-0.01, StretchDirection::kExtension), StretchDirection::kContraction);
+  EXPECT_EQ(stretch_direction(0.0, StretchDirection::kContraction), StretchDirection::kContraction);
   EXPECT_EQ(stretch_direction(0.0, StretchDirection::kExtension), StretchDirection::kExtension);
 }
 

@@ -115,8 +115,8 @@ TEST(ChamberOdeTest, ClosedValveFollowsPolytropicLawRate) {
   const double vdot = ode.volume_rate_m3_s(0, 1.01);
   EXPECT_NEAR(ydot[1] * v + p.polytropic_index * y[1] * vdot, 0.0, 1e-9);
   // the volume follows the extrapolated length l0 + ldot (t - t0)
-  EXPECT_NEAR(v, chou_hannaford_volume(table_one_braid(), 0.17 - 0.05 * 0.01) +
-                     p.tube_dead_volume_m3,
+  EXPECT_NEAR(v,
+              chou_hannaford_volume(table_one_braid(), 0.17 - 0.05 * 0.01) + p.tube_dead_volume_m3,
               1e-15);
 }
 
@@ -138,8 +138,8 @@ TEST(ChamberOdeTest, RejectsBadConstruction) {
 // A physical muscle's chamber is the AVBDL shape's (less than Chou-Hannaford's cylinder once
 // contracted: the end regions), and its rate follows the length's.
 TEST(ChamberOdeTest, APlantsChamberHasItsAvbdlVolume) {
-  const AvbdlParams plant = avbdl_params_from_geometry(0.18, 0.010, units::deg_to_rad(25.0),
-                                                       0.002, kNaturalRubberTreloar);
+  const AvbdlParams plant = avbdl_params_from_geometry(0.18, 0.010, units::deg_to_rad(25.0), 0.002,
+                                                       kNaturalRubberTreloar);
   const PneumaticParams params;
   PneumaticOde ode(params, ValveModel::kIso6358, {avbdl_braid(plant), avbdl_braid(plant)});
   ode.set_plant_volume(1, plant);
@@ -149,7 +149,7 @@ TEST(ChamberOdeTest, APlantsChamberHasItsAvbdlVolume) {
   EXPECT_DOUBLE_EQ(ode.volume_m3(0, 0.0), chou_hannaford_volume(avbdl_braid(plant), 0.150) + dead);
   EXPECT_DOUBLE_EQ(ode.volume_m3(1, 0.0), avbdl_volume(plant, 0.150) + dead);
   EXPECT_LT(ode.volume_m3(1, 0.0), ode.volume_m3(0, 0.0));
-  const double l = 0.150 + -0.02 * 0.5;   // 0.5 s later, extrapolated as the ODE does
+  const double l = 0.150 + -0.02 * 0.5;  // 0.5 s later, extrapolated as the ODE does
   EXPECT_DOUBLE_EQ(ode.volume_m3(1, 0.5), avbdl_volume(plant, l) + dead);
   EXPECT_DOUBLE_EQ(ode.volume_rate_m3_s(1, 0.5), avbdl_dvolume_dlength(plant, l) * -0.02);
   EXPECT_THROW(ode.set_plant_volume(2, plant), std::out_of_range);
@@ -189,8 +189,8 @@ TEST(ChamberOdeTest, EachMuscleIsABlockOfItsOwnStates) {
       ode.rhs(0.0, z.data(), moved.data());
       for (int i = 0; i < ode.size(); ++i) {
         if (i / c.states == j / c.states) continue;
-        ASSERT_EQ(moved[i], base[i]) << valve_model_name(c.model) << ": state " << j
-                                     << " moved derivative " << i;
+        ASSERT_EQ(moved[i], base[i])
+            << valve_model_name(c.model) << ": state " << j << " moved derivative " << i;
       }
     }
   }

@@ -92,10 +92,10 @@ TEST(CvodeIntegratorTest, ABandedSystemSolvesAsTheDenseOneForFewerRightHandSides
   }
   // the difference quotients of a band of 1 take 3 right-hand sides, a dense 8 x 8 takes 8
   ASSERT_GT(band_run.jacobian_evals(), 0);
-  const double band_per_jacobian = static_cast<double>(band_run.rhs_evals()) /
-                                   static_cast<double>(band_run.jacobian_evals());
-  const double dense_per_jacobian = static_cast<double>(dense_run.rhs_evals()) /
-                                    static_cast<double>(dense_run.jacobian_evals());
+  const double band_per_jacobian =
+      static_cast<double>(band_run.rhs_evals()) / static_cast<double>(band_run.jacobian_evals());
+  const double dense_per_jacobian =
+      static_cast<double>(dense_run.rhs_evals()) / static_cast<double>(dense_run.jacobian_evals());
   EXPECT_LT(band_per_jacobian + 4.0, dense_per_jacobian);
 }
 

@@ -35,8 +35,7 @@ std::string write_file(const std::string& text) {
 InputErrorParts refusal_of(const std::string& table, const std::string& key,
                            const std::string& value) {
   const std::string path = write_file("[" + table + "]\n" + key + " = " + value + "\n");
-  return refusal_parts([&] { load_pneumatic_params(path); },
-                       table + "." + key + " = " + value);
+  return refusal_parts([&] { load_pneumatic_params(path); }, table + "." + key + " = " + value);
 }
 
 TEST(PneumaticKeyTableTest, EveryKeyHasOneDocumentedRow) {
@@ -87,9 +86,8 @@ TEST(PneumaticKeyTableTest, EveryNumberRowRefusesWhatItsRangeAndTypeExclude) {
         const InputErrorParts parts = refusal_of(table.name, row.name, value);
         EXPECT_EQ(parts.key, key) << value;
         EXPECT_EQ(parts.file, path) << key;
-        const bool out_of_range =
-            parts.problem.rfind("must be in " + row.range.text(), 0) == 0 &&
-            parts.problem.find(", got ") != std::string::npos;
+        const bool out_of_range = parts.problem.rfind("must be in " + row.range.text(), 0) == 0 &&
+                                  parts.problem.find(", got ") != std::string::npos;
         EXPECT_TRUE(out_of_range || parts.problem.rfind("must be a number, got a ", 0) == 0 ||
                     parts.problem.rfind("must be finite, got ", 0) == 0)
             << key << " = " << value << ": " << parts.problem;
@@ -121,8 +119,9 @@ TEST(PneumaticKeyTableTest, AnUnknownKeyOrTableIsNamedWithWhatIsAllowed) {
   EXPECT_NE(key.problem.find("unknown key (allowed: dead_time_ms,"), std::string::npos);
   const InputErrorParts table = refusal_of("regulators", "dead_time_ms", "5");
   EXPECT_EQ(table.key, "regulators");
-  EXPECT_EQ(table.problem, "unknown table (allowed: supply, gas, valve, chamber, first_order, "
-                           "regulator, solver)");
+  EXPECT_EQ(table.problem,
+            "unknown table (allowed: supply, gas, valve, chamber, first_order, "
+            "regulator, solver)");
 }
 
 }  // namespace

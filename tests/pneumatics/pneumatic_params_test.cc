@@ -124,27 +124,27 @@ TEST(PneumaticParamsTest, EveryNumericKeyRejectsBadValues) {
 // ratio, the names be known; the shipped file's loop is delayed and closed on its outlet,
 // and a file that leaves the keys out gets the instant loop on the chamber.
 TEST(PneumaticParamsTest, RegulatorLoopKeysAreChecked) {
-  for (const char* key : {"supply_sonic_conductance_dm3_per_s_bar",
-                          "exhaust_sonic_conductance_dm3_per_s_bar",
-                          "tube_sonic_conductance_dm3_per_s_bar", "outlet_volume_cm3",
-                          "sample_period_ms"}) {
+  for (const char* key :
+       {"supply_sonic_conductance_dm3_per_s_bar", "exhaust_sonic_conductance_dm3_per_s_bar",
+        "tube_sonic_conductance_dm3_per_s_bar", "outlet_volume_cm3", "sample_period_ms"}) {
     const std::string m = load_error(std::string("[regulator]\n") + key + " = 0\n");
-    EXPECT_NE(m.find(std::string("pneumatics_bad.toml: regulator.") + key +
-                     ": must be in (0, "),
+    EXPECT_NE(m.find(std::string("pneumatics_bad.toml: regulator.") + key + ": must be in (0, "),
               std::string::npos)
         << m;
   }
-  const std::string ratio =
-      load_error("[valve]\nlaminar_ratio = 0.95\n[regulator]\ntube_critical_pressure_ratio = 0.96\n");
+  const std::string ratio = load_error(
+      "[valve]\nlaminar_ratio = 0.95\n[regulator]\ntube_critical_pressure_ratio = 0.96\n");
   EXPECT_NE(ratio.find("tube critical pressure ratio must be in [0, laminar ratio)"),
             std::string::npos)
       << ratio;
-  EXPECT_NE(load_error("[regulator]\nfeedback = \"late\"\n")
-                .find("regulator.feedback: unknown value \"late\", allowed \"instant\" | \"delayed\""),
-            std::string::npos);
-  EXPECT_NE(load_error("[regulator]\nsense = \"muscle\"\n")
-                .find("regulator.sense: unknown value \"muscle\", allowed \"chamber\" | \"outlet\""),
-            std::string::npos);
+  EXPECT_NE(
+      load_error("[regulator]\nfeedback = \"late\"\n")
+          .find("regulator.feedback: unknown value \"late\", allowed \"instant\" | \"delayed\""),
+      std::string::npos);
+  EXPECT_NE(
+      load_error("[regulator]\nsense = \"muscle\"\n")
+          .find("regulator.sense: unknown value \"muscle\", allowed \"chamber\" | \"outlet\""),
+      std::string::npos);
   EXPECT_NE(load_error("[regulator]\nsense = 1\n").find("regulator.sense: must be a string"),
             std::string::npos);
 
@@ -182,16 +182,13 @@ TEST(PneumaticParamsTest, RegulatorLoopKeysAreChecked) {
 
 TEST(PneumaticParamsTest, PolytropicIndexOutsideOneToOnePointFour) {
   const std::string m = load_error("[gas]\npolytropic_index = 1.5\n");
-  EXPECT_NE(m.find("gas.polytropic_index: must be in [1, 1.4], got 1.5"),
-            std::string::npos)
-      << m;
+  EXPECT_NE(m.find("gas.polytropic_index: must be in [1, 1.4], got 1.5"), std::string::npos) << m;
 }
 
 TEST(PneumaticParamsTest, CommandRangeMustBeWithinSupply) {
   const std::string m = load_error("[valve]\ncommand_max_MPa = 0.8\n");
   EXPECT_NE(m.find("command range"), std::string::npos) << m;
-  EXPECT_NE(load_error("[supply]\nsupply_MPa = 0.5\n").find("command range"),
-            std::string::npos);
+  EXPECT_NE(load_error("[supply]\nsupply_MPa = 0.5\n").find("command range"), std::string::npos);
 }
 
 TEST(PneumaticParamsTest, SolverStringsAreChecked) {
@@ -200,14 +197,15 @@ TEST(PneumaticParamsTest, SolverStringsAreChecked) {
             std::string::npos);
   EXPECT_NE(load_error("[solver]\non_command_change = 3\n").find("solver.on_command_change"),
             std::string::npos);
-  EXPECT_NE(load_error("[solver]\non_loop_action = \"cold\"\n")
-                .find("solver.on_loop_action: unknown value \"cold\", allowed \"warm\" | \"reinit\""),
-            std::string::npos);
-  const PneumaticParams p = load_pneumatic_params(write_temp(
-      "adams.toml", "[solver]\nmethod = \"adams\"\non_command_change = \"warm\"\n"));
+  EXPECT_NE(
+      load_error("[solver]\non_loop_action = \"cold\"\n")
+          .find("solver.on_loop_action: unknown value \"cold\", allowed \"warm\" | \"reinit\""),
+      std::string::npos);
+  const PneumaticParams p = load_pneumatic_params(
+      write_temp("adams.toml", "[solver]\nmethod = \"adams\"\non_command_change = \"warm\"\n"));
   EXPECT_EQ(p.solver.method, CvodeMethod::kAdams);
   EXPECT_EQ(p.solver.on_command_change, CommandChangePolicy::kWarm);
-  EXPECT_EQ(p.solver.on_loop_action, CommandChangePolicy::kReinit);   // unsaid: as before the key
+  EXPECT_EQ(p.solver.on_loop_action, CommandChangePolicy::kReinit);  // unsaid: as before the key
   const PneumaticParams w =
       load_pneumatic_params(write_temp("loop_warm.toml", "[solver]\non_loop_action = \"warm\"\n"));
   EXPECT_EQ(w.solver.on_loop_action, CommandChangePolicy::kWarm);

@@ -54,8 +54,7 @@ TEST(PneumaticsTest, FirstOrderMatchesAnalyticStepResponse) {
 
 // 10-90 % rise time [s] of a 0 -> target step with the ISO 6358 valve; also records the
 // pressure range seen
-double iso_rise_time(const PneumaticParams& params, double target, double* p_min,
-                     double* p_max) {
+double iso_rise_time(const PneumaticParams& params, double target, double* p_min, double* p_max) {
   PneumaticSystem sys(params, ValveModel::kIso6358, {table_one_braid()}, {0.0});
   sys.set_command(0, target);
   double t10 = -1.0;
@@ -122,8 +121,8 @@ TEST(PneumaticsTest, IsoPressureStaysWithinSupplyUnderFastLengthChanges) {
       ASSERT_LE(sys.regulator_pressure_pa(i), params.supply_gauge_pa + 1e-6);
     }
   }
-  std::printf("pressure range under 5 Hz length oscillation: [%.1f, %.1f] kPa\n",
-              p_min * 1e-3, p_max * 1e-3);
+  std::printf("pressure range under 5 Hz length oscillation: [%.1f, %.1f] kPa\n", p_min * 1e-3,
+              p_max * 1e-3);
   EXPECT_GE(p_min, 0.0);
   EXPECT_LE(p_max, params.supply_gauge_pa);
 }
@@ -184,8 +183,8 @@ std::vector<double> scenario_trace(const PneumaticParams& params, ValveModel mod
   for (int k = 0; k < 1500; ++k) {
     const double t = sys.time_s();
     if (k % 10 == 0) {
-      sys.set_command(0, 0.4e6 + 0.15e6 * std::sin(2.0 * units::kPi * t) +
-                             (k % 200 < 20 ? 0.1e6 : 0.0));
+      sys.set_command(
+          0, 0.4e6 + 0.15e6 * std::sin(2.0 * units::kPi * t) + (k % 200 < 20 ? 0.1e6 : 0.0));
       sys.set_command(1, 0.4e6 - 0.15e6 * std::sin(2.0 * units::kPi * t));
     }
     sys.set_kinematics(0, 0.165 + 0.005 * std::sin(w * t), 0.005 * w * std::cos(w * t));
@@ -232,10 +231,9 @@ TEST(PneumaticsTest, RejectsBadInputs) {
   const PneumaticParams params;
   EXPECT_THROW(PneumaticSystem(params, ValveModel::kIso6358, {table_one_braid()}, {0.8e6}),
                InputError);
-  EXPECT_THROW(PneumaticSystem(params, ValveModel::kIso6358, {table_one_braid()}, {}),
-               InputError);
+  EXPECT_THROW(PneumaticSystem(params, ValveModel::kIso6358, {table_one_braid()}, {}), InputError);
   PneumaticSystem sys(params, ValveModel::kIso6358, {table_one_braid()}, {0.0});
-  EXPECT_THROW(sys.advance(kDt), std::logic_error);  // kinematics never set
+  EXPECT_THROW(sys.advance(kDt), std::logic_error);                      // kinematics never set
   EXPECT_THROW(sys.set_kinematics(0, 0.5, 0.0), std::invalid_argument);  // > fibre length
   EXPECT_THROW(sys.set_kinematics(0, 0.17, std::nan("")), std::invalid_argument);
   sys.set_kinematics(0, 0.17, 0.0);

@@ -8,9 +8,9 @@
 
 namespace pamsim_test {
 
-constexpr double kDt = 1e-3;        // physics step [s]
-constexpr double kL0 = 0.18;        // Table I muscle length [m]
-constexpr double kLength = 0.15;    // a contracted Table I muscle [m]
+constexpr double kDt = 1e-3;      // physics step [s]
+constexpr double kL0 = 0.18;      // Table I muscle length [m]
+constexpr double kLength = 0.15;  // a contracted Table I muscle [m]
 
 inline pamsim::BraidGeometry table_one_braid() {
   return pamsim::braid_from_initial_shape(kL0, 0.016, pamsim::units::deg_to_rad(25.0));

@@ -24,7 +24,7 @@ using pamsim_test::kDt;
 using pamsim_test::kLength;
 using pamsim_test::table_one_braid;
 
-constexpr double kBarToPa = 1e5;   // dm^3/(s bar) -> m^3/(s Pa): 1e-3 / kBarToPa
+constexpr double kBarToPa = 1e5;  // dm^3/(s bar) -> m^3/(s Pa): 1e-3 / kBarToPa
 
 // a loop that is stable with its feedback delayed: a band wide enough for the dead time
 PneumaticParams loop_params(RegulatorFeedback feedback, RegulatorSense sense) {
@@ -47,7 +47,7 @@ struct Trace {
   double length_end = kLength;
 };
 Trace run(const PneumaticParams& params, double p_cmd, double velocity, int rest, int moving,
-        int total, double dt = kDt) {
+          int total, double dt = kDt) {
   PneumaticSystem sys(params, ValveModel::kRegulator, {table_one_braid()}, {0.4e6});
   Trace r;
   double l = kLength;
@@ -87,14 +87,14 @@ double closed_chamber_pa(const PneumaticParams& params, double velocity, int res
 // p V^n = const to the solver's tolerance; right after, the loop vents.
 TEST(RegulatorLoopTest, DelayedFeedbackAnswersAStretchOnlyAfterTheDeadTime) {
   constexpr int kRest = 50;
-  constexpr double kVelocity = 0.1;   // the impact's 100 mm/s
+  constexpr double kVelocity = 0.1;  // the impact's 100 mm/s
   for (double dead_ms : {5.0, 10.0, 20.0}) {
     SCOPED_TRACE(dead_ms);
     PneumaticParams params = loop_params(RegulatorFeedback::kDelayed, RegulatorSense::kChamber);
     params.regulator_dead_time_s = dead_ms * 1e-3;
     params.regulator_valve_time_constant_s = 2e-3;
     const Trace r = run(params, 0.4e6, kVelocity, kRest, 40, 90);
-    const int answered = kRest + 1 + static_cast<int>(dead_ms);   // step ending at 51 ms + D
+    const int answered = kRest + 1 + static_cast<int>(dead_ms);  // step ending at 51 ms + D
     for (int k = kRest; k < answered; ++k) {
       const double closed = closed_chamber_pa(params, kVelocity, kRest, k);
       EXPECT_NEAR(r.chamber[k], closed, 0.05) << "t = " << k + 1 << " ms: passive";
@@ -120,7 +120,7 @@ TEST(RegulatorLoopTest, DelayedFeedbackAnswersAStretchOnlyAfterTheDeadTime) {
 TEST(RegulatorLoopTest, DelayedFeedbackWithoutDeadTimeTendsToTheInstantLoop) {
   PneumaticParams instant = loop_params(RegulatorFeedback::kInstant, RegulatorSense::kChamber);
   instant.regulator_dead_time_s = 0.0;
-  instant.regulator_proportional_band_pa = 20e3;   // the shipped band: stiff loop
+  instant.regulator_proportional_band_pa = 20e3;  // the shipped band: stiff loop
   const Trace ref = run(instant, 0.5e6, 0.1, 20, 20, 150);
   double previous = INFINITY;
   for (double period_ms : {0.2, 0.1, 0.05}) {
@@ -143,7 +143,7 @@ TEST(RegulatorLoopTest, OutletSenseTendsToChamberSenseWithAStiffTube) {
     const PneumaticParams chamber = loop_params(feedback, RegulatorSense::kChamber);
     PneumaticParams outlet = loop_params(feedback, RegulatorSense::kOutlet);
     outlet.regulator_outlet_volume_m3 = 0.05e-6;
-    outlet.tube_dead_volume_m3 -= outlet.regulator_outlet_volume_m3;   // same total volume
+    outlet.tube_dead_volume_m3 -= outlet.regulator_outlet_volume_m3;  // same total volume
     outlet.tube_conductance_m3_per_s_pa = 50.0 * 1e-3 / kBarToPa;
     const Trace a = run(chamber, 0.5e6, 0.1, 20, 20, 300);
     const Trace b = run(outlet, 0.5e6, 0.1, 20, 20, 300);
@@ -177,7 +177,7 @@ double crossing_time(const PneumaticParams& params, double p0, double p_cmd, dou
     sys.set_kinematics(0, kLength, 0.0);
     sys.advance(k * kFine);
     const double p = sys.pressure_pa(0);
-    if (std::fabs(p - p0) >= dp) {   // interpolate inside the last step
+    if (std::fabs(p - p0) >= dp) {  // interpolate inside the last step
       return (k - 1 + (dp - std::fabs(previous - p0)) / std::fabs(p - previous)) * kFine;
     }
     previous = p;
@@ -199,15 +199,15 @@ TEST(RegulatorLoopTest, SeparateSupplyAndExhaustGiveTheChokedFlowRatio) {
   p.regulator_exhaust_conductance_m3_per_s_pa = 0.05e-3 / kBarToPa;
   p.regulator_supply_critical_ratio = 0.5;
   p.regulator_exhaust_critical_ratio = 0.5;
-  const double p0 = 0.2e6, dp = 5e3;   // 301 kPa abs: both paths choked over +-5 kPa
+  const double p0 = 0.2e6, dp = 5e3;  // 301 kPa abs: both paths choked over +-5 kPa
   const double p0_abs = p0 + p.atmospheric_pa, p_supply = p.supply_gauge_pa + p.atmospheric_pa;
   ASSERT_LE((p0_abs + dp) / p_supply, 0.5);
   ASSERT_LE(p.atmospheric_pa / (p0_abs - dp), 0.5);
   const double t_fill = crossing_time(p, p0, 0.3e6, dp);
   const double t_vent = crossing_time(p, p0, 0.1e6, dp);
-  const double expected = (dp / (*p.regulator_supply_conductance_m3_per_s_pa * p_supply)) /
-                          (std::log(p0_abs / (p0_abs - dp)) /
-                           *p.regulator_exhaust_conductance_m3_per_s_pa);
+  const double expected =
+      (dp / (*p.regulator_supply_conductance_m3_per_s_pa * p_supply)) /
+      (std::log(p0_abs / (p0_abs - dp)) / *p.regulator_exhaust_conductance_m3_per_s_pa);
   EXPECT_NEAR(t_fill / t_vent, expected, 0.01 * expected);
   // and each time itself, at the chamber's volume
   const double volume = chou_hannaford_volume(table_one_braid(), kLength) + p.tube_dead_volume_m3;
@@ -216,8 +216,8 @@ TEST(RegulatorLoopTest, SeparateSupplyAndExhaustGiveTheChokedFlowRatio) {
                    std::sqrt(kIso6358ReferenceTemperatureK / p.temperature_k) / volume;
   EXPECT_NEAR(t_fill, dp / (k * *p.regulator_supply_conductance_m3_per_s_pa * p_supply),
               0.01 * t_fill);
-  EXPECT_NEAR(t_vent, std::log(p0_abs / (p0_abs - dp)) /
-                          (k * *p.regulator_exhaust_conductance_m3_per_s_pa),
+  EXPECT_NEAR(t_vent,
+              std::log(p0_abs / (p0_abs - dp)) / (k * *p.regulator_exhaust_conductance_m3_per_s_pa),
               0.01 * t_vent);
 }
 
@@ -227,15 +227,15 @@ TEST(RegulatorLoopTest, SeparateSupplyAndExhaustGiveTheChokedFlowRatio) {
 TEST(RegulatorLoopTest, TheTubeConservesMass) {
   PneumaticParams p = loop_params(RegulatorFeedback::kDelayed, RegulatorSense::kOutlet);
   p.polytropic_index = 1.0;
-  p.regulator_dead_time_s = 0.2;   // the valve stays shut throughout
+  p.regulator_dead_time_s = 0.2;  // the valve stays shut throughout
   PneumaticOde ode(p, ValveModel::kRegulator, {table_one_braid()});
   ode.set_kinematics(0, 0.0, kLength, 0.2);
-  const double y[3] = {0.0, 5e5, 6e5};   // u, chamber, outlet
+  const double y[3] = {0.0, 5e5, 6e5};  // u, chamber, outlet
   double ydot[3];
   ode.rhs(1e-3, y, ydot);
   const double v = ode.volume_m3(0, 1e-3);
-  const double balance = p.regulator_outlet_volume_m3 * ydot[2] + v * ydot[1] +
-                         y[1] * ode.volume_rate_m3_s(0, 1e-3);
+  const double balance =
+      p.regulator_outlet_volume_m3 * ydot[2] + v * ydot[1] + y[1] * ode.volume_rate_m3_s(0, 1e-3);
   EXPECT_NEAR(balance, 0.0, 1e-12 * v * std::fabs(ydot[1]));
   EXPECT_GT(std::fabs(ydot[2]), 1e3) << "the tube carries air";
 
@@ -257,8 +257,8 @@ TEST(RegulatorLoopTest, TheDelayLineSamplesAndActsOnTime) {
   EXPECT_EQ(line.held(), std::vector<double>{1.0});
   EXPECT_DOUBLE_EQ(line.next_sample_s(), 1e-3);
   EXPECT_DOUBLE_EQ(line.next_action_s(), 2.5e-3);
-  line.take_sample({2.0});   // at 1 ms, acts at 3.5 ms
-  line.take_sample({3.0});   // at 2 ms, acts at 4.5 ms
+  line.take_sample({2.0});  // at 1 ms, acts at 3.5 ms
+  line.take_sample({3.0});  // at 2 ms, acts at 4.5 ms
   EXPECT_DOUBLE_EQ(line.next_event_s(), 2.5e-3);
   EXPECT_FALSE(line.act()) << "the initial sample changes nothing";
   EXPECT_DOUBLE_EQ(line.next_action_s(), 3.5e-3);
@@ -292,7 +292,7 @@ TEST(RegulatorLoopTest, WarmLoopActionsKeepTheAccuracyAtAFractionOfTheCost) {
     double l = kLength;
     for (int k = 0; k < 600; ++k) {
       if (k == 50) sys.set_command(0, 0.6e6);
-      const double v = (k >= 300 && k < 400) ? 0.05 : 0.0;   // a 5 mm stretch in 0.1 s
+      const double v = (k >= 300 && k < 400) ? 0.05 : 0.0;  // a 5 mm stretch in 0.1 s
       sys.set_kinematics(0, l, v);
       sys.advance((k + 1) * kDt);
       l += v * kDt;

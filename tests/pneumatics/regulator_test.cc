@@ -23,8 +23,7 @@ using pamsim_test::kLength;
 using pamsim_test::table_one_braid;
 
 // p(t) [Pa gauge] after each of n physics steps at fixed length, a step to p_cmd at t = 0
-std::vector<double> step_response(const PneumaticParams& params, double p0, double p_cmd,
-                                  int n) {
+std::vector<double> step_response(const PneumaticParams& params, double p0, double p_cmd, int n) {
   PneumaticSystem sys(params, ValveModel::kRegulator, {table_one_braid()}, {p0});
   sys.set_command(0, p_cmd);
   std::vector<double> p;
@@ -43,7 +42,7 @@ TEST(RegulatorTest, CommandArrivesExactlyOneDeadTimeLate) {
     params.regulator_dead_time_s = dead_ms * 1e-3;
     const std::vector<double> p = step_response(params, 0.4e6, 0.5e6, 40);
     for (int k = 1; k <= 40; ++k) {
-      const double t_ms = k;   // p[k - 1] is at t = k ms
+      const double t_ms = k;  // p[k - 1] is at t = k ms
       if (t_ms <= dead_ms) {
         EXPECT_EQ(p[k - 1], 0.4e6) << "t = " << t_ms << " ms: still at rest";
       } else if (t_ms >= dead_ms + 3.0) {
@@ -123,11 +122,11 @@ StretchRise stretch(const PneumaticParams& params, ValveModel model, double velo
 
 TEST(RegulatorTest, ClosedChamberUnderAStretchIsIsothermalBoyle) {
   PneumaticParams params;
-  params.sonic_conductance_m3_per_s_pa = 0.0;   // closed valve
-  params.polytropic_index = 1.0;                // isothermal
+  params.sonic_conductance_m3_per_s_pa = 0.0;  // closed valve
+  params.polytropic_index = 1.0;               // isothermal
   for (ValveModel model : {ValveModel::kIso6358, ValveModel::kRegulator}) {
     SCOPED_TRACE(valve_model_name(model));
-    const StretchRise r = stretch(params, model, 0.1, 20);   // 2 mm at 100 mm/s
+    const StretchRise r = stretch(params, model, 0.1, 20);  // 2 mm at 100 mm/s
     EXPECT_GT(r.closed_isothermal, 5e3);
     EXPECT_NEAR(r.final, r.closed_isothermal, 1e-3 * r.closed_isothermal);
   }
@@ -170,7 +169,8 @@ TEST(RegulatorTest, BadRegulatorParametersAreNamed) {
       ADD_FAILURE() << c.says << " = " << c.value << " accepted";
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(std::string("pneumatics.toml: ") + c.says),
-                std::string::npos) << e.what();
+                std::string::npos)
+          << e.what();
     }
   }
 }

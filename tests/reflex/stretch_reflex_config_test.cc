@@ -24,6 +24,7 @@ using BadValue = test::BadValueOf<StretchReflexControllerConfig>;
 
 using BadValue = test::BadValueOf<StretchReflexControllerConfig>;
 
+// clang-format off
 std::vector<BadValue> bad_values() {
   using C = StretchReflexControllerConfig&;
   return {
@@ -70,6 +71,7 @@ std::vector<BadValue> bad_values() {
       {"reflex.pairs[0]", "1", [](C c) { c.pairs = {ReflexPair{1, 1}}; }},
   };
 }
+// clang-format on
 
 TEST(StretchReflexControllerConfig, DefaultsAreValid) {
   StretchReflexControllerConfig config;
@@ -112,9 +114,14 @@ TEST(StretchReflexControllerConfig, MessagesSayWhatIsAllowed) {
             "reflex.v_thr_mm_s must be in (0, inf), got -5");
   EXPECT_EQ(message([](C c) { c.reflex.duration_s = 0.001; }),
             "reflex.duration_s must be >= one control period (0.01 s), got 0.001");
-  EXPECT_EQ(message([](C c) { c.pairs = {ReflexPair{0, 2}}; }),
+  EXPECT_EQ(message([](C c) {
+              c.pairs = {ReflexPair{0, 2}};
+            }),
             "reflex.pairs[0] must be a muscle index in [0, 2), got 2");
-  EXPECT_EQ(message([](C c) { c.muscle_count = 3; c.pairs = {{0, 1}, {2, 1}}; }),
+  EXPECT_EQ(message([](C c) {
+              c.muscle_count = 3;
+              c.pairs = {{0, 1}, {2, 1}};
+            }),
             "reflex.pairs[1] must be muscles not already in a pair (muscle index), got 1");
 }
 
@@ -130,8 +137,7 @@ TEST(ReflexSensor, ParsesAndRejectsNamingTheKey) {
       ADD_FAILURE() << "no throw for " << bad;
     } catch (const InputError& e) {
       EXPECT_EQ(std::string(e.what()),
-                std::string("reflex.sensor must be \"model\" or \"fiber\", got \"") + bad +
-                    "\"");
+                std::string("reflex.sensor must be \"model\" or \"fiber\", got \"") + bad + "\"");
     }
   }
 }
@@ -139,8 +145,8 @@ TEST(ReflexSensor, ParsesAndRejectsNamingTheKey) {
 TEST(ReflexSensor, TableIiThresholdsAndGains) {
   const ReflexConfig model = table_ii_reflex_config(ReflexSensor::kModel);
   EXPECT_EQ(model.sensor, ReflexSensor::kModel);
-  EXPECT_DOUBLE_EQ(model.v_thr_m_s, 70.0e-3);            // 70 mm/s
-  EXPECT_DOUBLE_EQ(model.k_pa_s_per_m, 1e6 / 800.0 / 1e-3);   // 1/800 MPa per mm/s
+  EXPECT_DOUBLE_EQ(model.v_thr_m_s, 70.0e-3);                // 70 mm/s
+  EXPECT_DOUBLE_EQ(model.k_pa_s_per_m, 1e6 / 800.0 / 1e-3);  // 1/800 MPa per mm/s
   const ReflexConfig fiber = table_ii_reflex_config(ReflexSensor::kFiber);
   EXPECT_EQ(fiber.sensor, ReflexSensor::kFiber);
   EXPECT_DOUBLE_EQ(fiber.v_thr_m_s, 25.0e-3);

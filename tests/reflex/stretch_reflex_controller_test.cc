@@ -8,7 +8,7 @@
 namespace pamsim {
 namespace {
 
-using namespace reflex_test;   // Rig, Harness and the ramps
+using namespace reflex_test;  // Rig, Harness and the ramps
 using pamsim_test::kControlDt;
 
 TEST(StretchReflexController, StretchRampTriggersAgonistReflex) {
@@ -51,8 +51,7 @@ TEST(StretchReflexController, ActsOnTheConfiguredSensorsVelocity) {
     for (std::size_t tick = 0; tick < h.outputs.size(); ++tick) {
       for (int j = 0; j < 2; ++j) {
         const MuscleReading& r = h.reading_log[tick][j];
-        const double v = sensor == ReflexSensor::kFiber ? r.fiber_velocity_m_s
-                                                        : r.velocity_est_m_s;
+        const double v = sensor == ReflexSensor::kFiber ? r.fiber_velocity_m_s : r.velocity_est_m_s;
         EXPECT_EQ(h.outputs[tick].velocity_m_s[j], v) << tick;
       }
     }
@@ -91,7 +90,7 @@ TEST(StretchReflexController, PressureLowpassRemovesMistripsAtHighNoise) {
     int count = 0;
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       Rig rig;
-      rig.sensing.sensors.pressure_noise_pa = 0.003e6;   // 0.003 MPa
+      rig.sensing.sensors.pressure_noise_pa = 0.003e6;  // 0.003 MPa
       rig.sensing.sensors.gauge_noise_v = 0.5 * rig.muscles[0].gauge.q_v_per_n;
       rig.sensing.sensors.pressure_lowpass_hz = pressure_lowpass_hz;
       rig.controller.reflex.refractory_s = 0.0;
@@ -180,7 +179,7 @@ TEST(StretchReflexController, DisabledReflexMatchesPassThrough) {
     none.update(in, &expected);
     EXPECT_EQ(h.outputs[tick].p_cmd_pa, expected.p_cmd_pa) << tick;
     EXPECT_EQ(h.outputs[tick].velocity_m_s, expected.velocity_m_s) << tick;
-    EXPECT_TRUE(expected.channels.empty());   // "none" logs no window
+    EXPECT_TRUE(expected.channels.empty());  // "none" logs no window
     for (double open : h.outputs[tick].channels[kWindow]) EXPECT_EQ(open, 0.0) << tick;
   }
 }

@@ -30,7 +30,7 @@ using pamsim_test::kControlDt;
 
 using test::table_iv_agonist;
 using test::table_iv_antagonist;
-constexpr double kRampV_m_s = 0.150;   // the stretch of the ramps below
+constexpr double kRampV_m_s = 0.150;  // the stretch of the ramps below
 // the log's channel of the stretch (Ia) windows in a reflex controller's output
 constexpr int kWindow = StretchReflexController::kStretchWindow;
 
@@ -41,8 +41,8 @@ constexpr int kWindow = StretchReflexController::kStretchWindow;
 struct Rig {
   std::vector<MuscleSensorSpec> muscles = {table_iv_agonist(), table_iv_antagonist()};
   std::vector<double> d_m = {6.66e-3, 1.0e-3};
-  std::vector<double> p_pa = {0.4e6, 0.4e6};      // true chamber pressures
-  std::vector<double> p_tp_pa = {0.4e6, 0.4e6};   // scheduled commands
+  std::vector<double> p_pa = {0.4e6, 0.4e6};     // true chamber pressures
+  std::vector<double> p_tp_pa = {0.4e6, 0.4e6};  // scheduled commands
   SensingConfig sensing;
   StretchReflexControllerConfig controller;
   std::uint64_t seed = 7;
@@ -72,7 +72,7 @@ inline Rig with_spare_muscle(double p_tp_pa) {
 inline Rig two_pairs() {
   Rig rig;
   rig.muscles = {table_iv_agonist("muscles.ago_a"), table_iv_agonist("muscles.ago_b"),
-               table_iv_antagonist("muscles.anta_a"), table_iv_antagonist("muscles.anta_b")};
+                 table_iv_antagonist("muscles.anta_a"), table_iv_antagonist("muscles.anta_b")};
   rig.d_m = {6.66e-3, 6.66e-3, 1.0e-3, 1.0e-3};
   rig.p_pa = {0.4e6, 0.4e6, 0.4e6, 0.4e6};
   rig.p_tp_pa = {0.4e6, 0.4e6, 0.4e6, 0.4e6};
@@ -112,15 +112,15 @@ struct Harness {
   // One control tick at t = (ticks so far) * dt: truth -> readings -> controller. The
   // output starts as NaN / 2 so that an element the controller leaves unwritten shows.
   const ControlOutput& tick(bool enabled = true) {
-    const double time_s =
-        static_cast<double>(outputs.size()) / controller.config().control_hz;
+    const double time_s = static_cast<double>(outputs.size()) / controller.config().control_hz;
     std::vector<MuscleReading> readings(muscle_count());
     sensing.sample(truth(), &readings);
     ControlOutput out;
     out.resize(muscle_count(), controller.config().tension ? 2 : 1);
     std::fill(out.p_cmd_pa.begin(), out.p_cmd_pa.end(), kNaN);
     std::fill(out.velocity_m_s.begin(), out.velocity_m_s.end(), kNaN);
-    for (std::vector<double>& channel : out.channels) std::fill(channel.begin(), channel.end(), 2.0);
+    for (std::vector<double>& channel : out.channels)
+      std::fill(channel.begin(), channel.end(), 2.0);
     ControlInput in;
     in.time_s = time_s;
     in.enabled = enabled;
@@ -132,11 +132,11 @@ struct Harness {
     return outputs.back();
   }
 
-  Rig rig;     // the plant's state and the schedule, moved by the tests
+  Rig rig;  // the plant's state and the schedule, moved by the tests
   SensorSuite sensing;
   StretchReflexController controller;
-  std::vector<std::vector<MuscleReading>> reading_log;   // per tick
-  std::vector<ControlOutput> outputs;                     // per tick
+  std::vector<std::vector<MuscleReading>> reading_log;  // per tick
+  std::vector<ControlOutput> outputs;                   // per tick
 };
 
 // stretch `muscle` at 150 mm/s for 5 ticks, from tick `first` on (the tick is run after

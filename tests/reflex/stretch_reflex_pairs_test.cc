@@ -7,7 +7,7 @@
 namespace pamsim {
 namespace {
 
-using namespace reflex_test;   // Rig, Harness and the ramps
+using namespace reflex_test;  // Rig, Harness and the ramps
 
 TEST(StretchReflexController, LatchModeHoldsTheTriggerCommand) {
   Rig rig;
@@ -143,7 +143,7 @@ TEST(StretchReflexController, ZeroMinimumTensionLetsASlackLineTrigger) {
     StretchReflexController controller(config);
     std::vector<MuscleReading> readings(2);
     readings[0].force_meas_n = -0.3;
-    readings[0].velocity_est_m_s = 0.2;   // well above 70 mm/s
+    readings[0].velocity_est_m_s = 0.2;  // well above 70 mm/s
     readings[1].force_meas_n = 20.0;
     std::vector<double> p_tp = {0.4e6, 0.4e6};
     ControlInput in;
@@ -162,7 +162,7 @@ TEST(StretchReflexController, TriggerTimesPerMuscleAndTheEarliest) {
   // 1.81 s (after its 0.2 s window and 0.5 s refractory period)
   Harness h(two_pairs());
   const Controller& as_controller = h.controller;
-  ASSERT_EQ(as_controller.event_times_s().size(), 1u);   // stretch_trigger
+  ASSERT_EQ(as_controller.event_times_s().size(), 1u);  // stretch_trigger
   for (int j = 0; j < 200; ++j) {
     stretch_at(&h, j, 51, 1);
     stretch_at(&h, j, 101, 0);

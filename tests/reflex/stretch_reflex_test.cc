@@ -16,9 +16,8 @@ namespace {
 
 using pamsim_test::kControlDt;
 
-
 StretchReflexParams params(double refractory_s = 10.0, double arm_after_s = 0.0) {
-  StretchReflexParams p;   // 70 mm/s, k = 1/800 MPa per mm/s, 0.2 s, follow
+  StretchReflexParams p;  // 70 mm/s, k = 1/800 MPa per mm/s, 0.2 s, follow
   p.refractory_s = refractory_s;
   p.arm_after_s = arm_after_s;
   return p;
@@ -55,8 +54,8 @@ TEST(StretchReflex, NoTriggerBelowOrAtThreshold) {
   LoggedReflex reflex(params(), kControlDt);
   int active = 0;
   for (double dp : run(&reflex, 100, 69.9, &active)) EXPECT_EQ(dp, 0.0);
-  for (double dp : run(&reflex, 100, 70.0, &active, 100)) EXPECT_EQ(dp, 0.0);   // "exceeds"
-  for (double dp : run(&reflex, 100, -500.0, &active, 200)) EXPECT_EQ(dp, 0.0); // shortening
+  for (double dp : run(&reflex, 100, 70.0, &active, 100)) EXPECT_EQ(dp, 0.0);    // "exceeds"
+  for (double dp : run(&reflex, 100, -500.0, &active, 200)) EXPECT_EQ(dp, 0.0);  // shortening
   EXPECT_EQ(active, 0);
   EXPECT_EQ(reflex.trigger_count(), 0);
 }
@@ -86,8 +85,8 @@ TEST(StretchReflex, SingleSpikeGivesFullWindow) {
   EXPECT_EQ(active, 20);
   EXPECT_EQ(reflex.trigger_count(), 1);
   EXPECT_DOUBLE_EQ(reflex.trigger_times_s()[0], 5 * kControlDt);
-  EXPECT_NEAR(dp[18], 150.0 / 800.0 * 1e6, 1e-6);   // last tick of the window (tick 24)
-  EXPECT_EQ(dp[19], 0.0);                            // tick 25: over
+  EXPECT_NEAR(dp[18], 150.0 / 800.0 * 1e6, 1e-6);  // last tick of the window (tick 24)
+  EXPECT_EQ(dp[19], 0.0);                          // tick 25: over
 }
 
 TEST(StretchReflex, FollowTracksVelocityLatchHoldsTrigger) {
@@ -106,7 +105,7 @@ TEST(StretchReflex, FollowTracksVelocityLatchHoldsTrigger) {
       EXPECT_EQ(dl, 0.0);
       continue;
     }
-    EXPECT_NEAR(df, k_pa_per_mm_s * std::max(v_mm_s[j], 0.0), 1e-6) << j;   // clamped >= 0
+    EXPECT_NEAR(df, k_pa_per_mm_s * std::max(v_mm_s[j], 0.0), 1e-6) << j;  // clamped >= 0
     EXPECT_NEAR(dl, k_pa_per_mm_s * 100.0, 1e-6) << j;
     EXPECT_TRUE(rf.active());
     EXPECT_TRUE(rl.active());
@@ -118,14 +117,14 @@ TEST(StretchReflex, RefractoryPeriodDelaysTheNextTrigger) {
   LoggedReflex reflex(params(0.1), kControlDt);
   int active = 0;
   run(&reflex, 100, 100.0, &active);
-  ASSERT_EQ(reflex.trigger_count(), 4);   // ticks 0, 30, 60, 90
+  ASSERT_EQ(reflex.trigger_count(), 4);  // ticks 0, 30, 60, 90
   EXPECT_NEAR(reflex.trigger_times_s()[1], 0.30, 1e-12);
   EXPECT_NEAR(reflex.trigger_times_s()[3], 0.90, 1e-12);
   // without a refractory period it re-fires at once
   LoggedReflex eager(params(0.0), kControlDt);
   active = 0;
   run(&eager, 100, 100.0, &active);
-  EXPECT_EQ(eager.trigger_count(), 5);    // ticks 0, 20, 40, 60, 80
+  EXPECT_EQ(eager.trigger_count(), 5);  // ticks 0, 20, 40, 60, 80
   EXPECT_EQ(active, 100);
   EXPECT_NEAR(eager.trigger_times_s()[1], 0.20, 1e-12);
 }

@@ -28,8 +28,8 @@ using test::expect_bad_value;
 TensionReflexParams tension_params() {
   TensionReflexParams p;
   p.f_thr_N = 60.0;
-  p.k_pa_per_n = 4000.0;   // 0.004 MPa/N
-  p.duration_s = 0.05;   // 5 ticks
+  p.k_pa_per_n = 4000.0;  // 0.004 MPa/N
+  p.duration_s = 0.05;    // 5 ticks
   p.refractory_s = 0.03;  // 3 ticks
   p.arm_after_s = 0.0;
   return p;
@@ -71,7 +71,7 @@ TEST(TensionReflexTest, ARisingTensionTriggersOnItsRateAtTheTickTheClosedFormGiv
   TensionReflex level_only(p, kControlDt);
   int fired = -1;
   for (int k = 0; k <= expected + 1; ++k) {
-    const double f = r * kControlDt * k;   // 10 N a tick: under the 60 N level for these few ticks
+    const double f = r * kControlDt * k;  // 10 N a tick: under the 60 N level for these few ticks
     ASSERT_LT(f, 60.0);
     rate.update(k * kControlDt, f);
     level_only.update(k * kControlDt, f);
@@ -138,9 +138,9 @@ TEST(TensionReflexTest, ASilentTensionReflexLeavesTheStretchReflexsCommands) {
   out_a.resize(2, 1);
   out_b.resize(2, 2);
   for (int k = 0; k < 60; ++k) {
-    readings[0].velocity_est_m_s = 0.15 * std::sin(0.3 * k);   // stretches past 70 mm/s
+    readings[0].velocity_est_m_s = 0.15 * std::sin(0.3 * k);  // stretches past 70 mm/s
     readings[1].velocity_est_m_s = -0.1 * std::sin(0.3 * k);
-    readings[0].force_meas_n = 30.0 + 25.0 * std::sin(0.2 * k);   // under 60 N
+    readings[0].force_meas_n = 30.0 + 25.0 * std::sin(0.2 * k);  // under 60 N
     readings[1].force_meas_n = 20.0;
     const ControlInput in{k * kControlDt, true, &readings, &p_tp};
     a.update(in, &out_a);
@@ -164,8 +164,7 @@ TEST(TensionReflexTest, EveryValidatedKeyRefusesABadValue) {
   bad([](TensionReflexParams& p) { p.duration_s = 0.001; }, "reflex.ib.duration_s", "0.001");
   bad([](TensionReflexParams& p) { p.refractory_s = -0.1; }, "reflex.ib.refractory_s", "-0.1");
   bad([](TensionReflexParams& p) { p.arm_after_s = -1.0; }, "reflex.ib.arm_after_s", "-1");
-  bad([](TensionReflexParams& p) { p.rate_lowpass_hz = 80.0; }, "reflex.ib.rate_lowpass_hz",
-      "80");
+  bad([](TensionReflexParams& p) { p.rate_lowpass_hz = 80.0; }, "reflex.ib.rate_lowpass_hz", "80");
 }
 
 }  // namespace

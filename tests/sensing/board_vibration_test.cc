@@ -48,7 +48,7 @@ TEST(BoardVibrationTest, RampResponseIsTheDampedOscillators) {
   };
   for (double dt : {1e-3, 1e-4}) {
     BoardVibration board(f, zeta, dt);
-    board.step(0.0);   // at rest, unloaded
+    board.step(0.0);  // at rest, unloaded
     double worst = 0.0, peak = 0.0;
     for (int k = 1; k <= 200; ++k) {
       board.step(1.0);
@@ -70,7 +70,9 @@ TEST(BoardVibrationTest, RampResponseIsTheDampedOscillators) {
 TEST(BoardVibrationTest, TheRingingHardlyDependsOnTheStep) {
   const double f = 664.0, zeta = 0.015;
   // a pull rising by 20 N over 4 ms (the impact's contact time) from 18 N
-  const auto pull = [](double t) { return t < 0.0 ? 18.0 : 18.0 + 20.0 * std::min(t / 0.004, 1.0); };
+  const auto pull = [](double t) {
+    return t < 0.0 ? 18.0 : 18.0 + 20.0 * std::min(t / 0.004, 1.0);
+  };
   BoardVibration coarse(f, zeta, 1e-3), fine(f, zeta, 1e-4);
   coarse.step(pull(-1e-3));
   fine.step(pull(-1e-4));
@@ -111,7 +113,7 @@ TEST(BoardVibrationTest, AGaugeOnARingingBoardReadsItsBend) {
   const double bent = twin.equivalent_force_n();
   EXPECT_GT(std::fabs(bent - 30.0), 1.0);
   EXPECT_NEAR(ringing.voltage(30.0), still.voltage(bent), 1e-12);
-  for (int k = 0; k < 500; ++k) ringing.observe(30.0);   // 0.5 s: 40 decay times
+  for (int k = 0; k < 500; ++k) ringing.observe(30.0);  // 0.5 s: 40 decay times
   EXPECT_NEAR(ringing.voltage(30.0), still.voltage(30.0), 1e-9);
   // switched off, the gauge reads the pull as before
   c.vibration.enabled = false;

@@ -20,7 +20,6 @@ namespace {
 
 using pamsim_test::kControlDt;
 
-
 FiberHardwareConfig fabric(double nonlinearity_pct, std::vector<PronyTerm> creep) {
   FiberHardwareConfig c;
   c.enabled = true;
@@ -75,7 +74,7 @@ TEST(EncoderTest, TheFiberIsCalibratedToTheEncodersCount) {
   config.encoder = {true, 1e-5};
   EXPECT_DOUBLE_EQ(encoder_read_m(config.encoder, 0.1600049), 0.16);
   EXPECT_DOUBLE_EQ(encoder_read_m(config.encoder, 0.1600051), 0.16001);
-  EXPECT_DOUBLE_EQ(encoder_read_m(EncoderConfig{}, 0.1600049), 0.1600049);   // ideal
+  EXPECT_DOUBLE_EQ(encoder_read_m(EncoderConfig{}, 0.1600049), 0.1600049);  // ideal
   // the count step: every reading on a multiple of 10 um, within half of it
   for (double l = 0.15; l < 0.17; l += 1.37e-6) {
     const double r = encoder_read_m(config.encoder, l);
@@ -97,8 +96,14 @@ TEST(FiberHardwareTest, EveryBadKeyIsNamed) {
       {"sensors.fiber.nonlinearity_pct", "nan", [](C& c) { c.nonlinearity_pct = kNaN; }},
       {"sensors.fiber.nonlinearity_pct", "100", [](C& c) { c.nonlinearity_pct = 100; }},
       {"sensors.fiber.span_mm", "0", [](C& c) { c.span_m = 0; }},
-      {"sensors.fiber.creep_weights[0]", "-0.1", [](C& c) { c.creep = {{-0.1, 1.0}}; }},
-      {"sensors.fiber.creep_times_s[0]", "0", [](C& c) { c.creep = {{0.1, 0.0}}; }},
+      {"sensors.fiber.creep_weights[0]", "-0.1",
+       [](C& c) {
+         c.creep = {{-0.1, 1.0}};
+       }},
+      {"sensors.fiber.creep_times_s[0]", "0",
+       [](C& c) {
+         c.creep = {{0.1, 0.0}};
+       }},
   };
   for (const auto& k : cases) {
     C c;

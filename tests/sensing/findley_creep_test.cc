@@ -13,7 +13,7 @@
 namespace pamsim {
 namespace {
 
-constexpr double kDt = 0.01;   // the control tick of the scenarios
+constexpr double kDt = 0.01;  // the control tick of the scenarios
 
 // The series' reading t after a unit load was applied (and, with t1 > 0, removed at t1).
 double series_reading(const FindleyCreep& law, double t, double t1 = -1.0) {

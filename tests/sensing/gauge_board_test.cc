@@ -15,7 +15,7 @@ namespace pamsim {
 namespace {
 
 GaugeBoardParams strip_board() {
-  GaugeBoardParams b;   // a 20 x 2 mm acrylic strip, gauge 10 mm from the clamp
+  GaugeBoardParams b;  // a 20 x 2 mm acrylic strip, gauge 10 mm from the clamp
   b.width_m = 0.020;
   b.thickness_m = 0.002;
   b.gauge_position_m = 0.010;
@@ -32,8 +32,7 @@ TEST(GaugeBoardTest, StrainIsTheCantileverSurfaceStrain) {
               1e-15);
   EXPECT_NEAR(gauge_board_strain(b, 10.0, b.contact_position_m), 6.818e-3, 1e-6);
   // linear in the force
-  EXPECT_NEAR(gauge_board_strain(b, 2.5, 0.040), gauge_board_strain(b, 10.0, 0.040) / 4.0,
-              1e-18);
+  EXPECT_NEAR(gauge_board_strain(b, 2.5, 0.040), gauge_board_strain(b, 10.0, 0.040) / 4.0, 1e-18);
 }
 
 TEST(GaugeBoardTest, AContactShiftReadsAsAForceChange) {
@@ -50,18 +49,22 @@ TEST(GaugeBoardTest, ASlackLineOrAContactAtTheGaugeBendsNothingThere) {
   EXPECT_EQ(gauge_board_strain(b, 0.0, 0.040), 0.0);
   EXPECT_EQ(gauge_board_strain(b, -3.0, 0.040), 0.0);
   EXPECT_EQ(gauge_board_strain(b, 10.0, 0.010), 0.0);
-  EXPECT_EQ(gauge_board_strain(b, 10.0, 0.005), 0.0);   // inside the gauge: no moment there
+  EXPECT_EQ(gauge_board_strain(b, 10.0, 0.005), 0.0);  // inside the gauge: no moment there
 }
 
 TEST(GaugeBoardTest, EveryBadValueNamesItsKey) {
-  struct Case { const char* key; double GaugeBoardParams::*field; double value; };
+  struct Case {
+    const char* key;
+    double GaugeBoardParams::*field;
+    double value;
+  };
   for (const Case& c : {Case{"youngs_modulus_MPa", &GaugeBoardParams::youngs_modulus_pa, 0.0},
                         Case{"width_mm", &GaugeBoardParams::width_m, -0.01},
                         Case{"thickness_mm", &GaugeBoardParams::thickness_m, 0.0},
                         Case{"thickness_mm", &GaugeBoardParams::thickness_m, std::nan("")},
                         Case{"gauge_position_mm", &GaugeBoardParams::gauge_position_m, -0.001},
                         Case{"contact_position_mm", &GaugeBoardParams::contact_position_m, 0.01}}) {
-    GaugeHardwareConfig gauge;   // each key's row, then what joins them
+    GaugeHardwareConfig gauge;  // each key's row, then what joins them
     gauge.board.*c.field = c.value;
     try {
       validate(gauge);

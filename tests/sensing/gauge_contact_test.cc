@@ -17,9 +17,11 @@
 namespace pamsim {
 namespace {
 
-constexpr double kL0 = 0.150;   // the muscle's start length [m]
+constexpr double kL0 = 0.150;  // the muscle's start length [m]
 
-GaugeBoardParams default_board() { return GaugeHardwareConfig{}.board; }   // contact 40, free end 45 mm
+GaugeBoardParams default_board() {
+  return GaugeHardwareConfig{}.board;
+}  // contact 40, free end 45 mm
 
 // the path fitting -> edge point y -> shaft, unfolded: its length as a function of y
 double path_length(const GaugeContactParams& c, double y_p, double l1, double y) {
@@ -30,8 +32,8 @@ TEST(GaugeContactTest, TheRestingPointIsTheShortestPath) {
   GaugeContactParams c;
   c.misalignment_m = 0.050;
   const double y0 = 0.040, s = 0.012, l1 = c.fitting_distance_m + s;
-  const double y_p = y0 - c.misalignment_m * c.fitting_distance_m /
-                              (c.fitting_distance_m + c.shaft_distance_m);
+  const double y_p =
+      y0 - c.misalignment_m * c.fitting_distance_m / (c.fitting_distance_m + c.shaft_distance_m);
   // golden-section search for the shortest path's crossing
   double a = y_p - 0.1, b = y_p + 0.2;
   const double g = (std::sqrt(5.0) - 1.0) / 2.0;
@@ -44,11 +46,11 @@ TEST(GaugeContactTest, TheRestingPointIsTheShortestPath) {
     }
   }
   const double y = contact_rest_position_m(c, y0, s);
-  EXPECT_NEAR(y, 0.5 * (a + b), 1e-7);   // a minimum's flatness limits the search
+  EXPECT_NEAR(y, 0.5 * (a + b), 1e-7);  // a minimum's flatness limits the search
   // exactly: the path's slope in y is zero there (equal angles on both sides of the edge)
   const double h = 1e-7;
   EXPECT_NEAR(path_length(c, y_p, l1, y + h) - path_length(c, y_p, l1, y - h), 0.0, 1e-15);
-  EXPECT_DOUBLE_EQ(contact_rest_position_m(c, y0, 0.0), y0);   // at the start, the contact
+  EXPECT_DOUBLE_EQ(contact_rest_position_m(c, y0, 0.0), y0);  // at the start, the contact
 }
 
 // w = 2 mu sin(theta / 2) / (1/L1 + 1/L2); the contact stays until y* has moved w, then
@@ -69,7 +71,7 @@ TEST(GaugeContactTest, TheContactSticksWithinThePlayThenFollowsAtItsEdge) {
       EXPECT_NEAR(contact.position_m(), rest - w, 1e-15) << s;
     }
   }
-  EXPECT_GT(contact.position_m(), 0.040);   // it did slide
+  EXPECT_GT(contact.position_m(), 0.040);  // it did slide
 }
 
 // Without friction the contact is y*; it leaves the 45 mm board where y*(s) = 45 mm:
@@ -88,7 +90,7 @@ TEST(GaugeContactTest, AFrictionlessLineLeavesTheBoardWhereGeometryPredicts) {
   after.follow(kL0 - (s_loss + 1e-6), 10.0);
   EXPECT_FALSE(before.lost());
   EXPECT_TRUE(after.lost());
-  after.follow(kL0, 10.0);   // gone for good
+  after.follow(kL0, 10.0);  // gone for good
   EXPECT_TRUE(after.lost());
 }
 
@@ -130,18 +132,26 @@ TEST(GaugeContactTest, TheGaugeReadsThePullTimesTheLeverOfTheMoment) {
 }
 
 TEST(GaugeContactTest, EveryBadKeyIsNamed) {
-  struct Case { const char* key; void (*spoil)(GaugeContactParams&); };
+  struct Case {
+    const char* key;
+    void (*spoil)(GaugeContactParams&);
+  };
   const Case cases[] = {
-      {"sensors.gauge.contact.misalignment_mm", [](GaugeContactParams& c) { c.misalignment_m = NAN; }},
-      {"sensors.gauge.contact.fitting_distance_mm", [](GaugeContactParams& c) { c.fitting_distance_m = 0; }},
-      {"sensors.gauge.contact.fitting_distance_mm", [](GaugeContactParams& c) { c.fitting_distance_m = 0.5e-3; }},
-      {"sensors.gauge.contact.shaft_distance_mm", [](GaugeContactParams& c) { c.shaft_distance_m = -1; }},
+      {"sensors.gauge.contact.misalignment_mm",
+       [](GaugeContactParams& c) { c.misalignment_m = NAN; }},
+      {"sensors.gauge.contact.fitting_distance_mm",
+       [](GaugeContactParams& c) { c.fitting_distance_m = 0; }},
+      {"sensors.gauge.contact.fitting_distance_mm",
+       [](GaugeContactParams& c) { c.fitting_distance_m = 0.5e-3; }},
+      {"sensors.gauge.contact.shaft_distance_mm",
+       [](GaugeContactParams& c) { c.shaft_distance_m = -1; }},
       {"sensors.gauge.contact.wrap_deg", [](GaugeContactParams& c) { c.wrap_deg = 180; }},
       {"sensors.gauge.contact.wrap_deg", [](GaugeContactParams& c) { c.wrap_deg = 0; }},
-      {"sensors.gauge.contact.friction_coefficient", [](GaugeContactParams& c) { c.friction_coefficient = -0.1; }},
+      {"sensors.gauge.contact.friction_coefficient",
+       [](GaugeContactParams& c) { c.friction_coefficient = -0.1; }},
   };
   for (const Case& k : cases) {
-    GaugeHardwareConfig gauge;   // the contact's keys are the gauge's rows
+    GaugeHardwareConfig gauge;  // the contact's keys are the gauge's rows
     k.spoil(gauge.contact);
     try {
       validate(gauge);

@@ -19,7 +19,7 @@ namespace {
 
 using pamsim_test::kControlDt;
 
-const StrainGaugeParams kPublished{2.25e-3, 0.1};   // Table IV's agonist q, an offset
+const StrainGaugeParams kPublished{2.25e-3, 0.1};  // Table IV's agonist q, an offset
 
 GaugeHardwareConfig config(double tolerance_pct, double max_n = 50.0) {
   GaugeHardwareConfig c;
@@ -60,15 +60,15 @@ TEST(GaugeHardwareTest, ABuiltGaugeCalibratesItsOwnOffsetAway) {
 
 TEST(GaugeHardwareTest, ACreepingBoardCalibratesToItsCompliance) {
   GaugeHardwareConfig c = config(0.0, 5.0);
-  c.creep = {{0.05, 0.1}};     // 5 % more strain, 0.1 s: complete within a 2 s hold
+  c.creep = {{0.05, 0.1}};  // 5 % more strain, 0.1 s: complete within a 2 s hold
   std::mt19937_64 rng(1);
-  const StrainGaugeParams fit =
-      calibrate_gauge(GaugeHardware(c, kPublished, rng, kControlDt), c, kControlDt, "muscles.agonist");
+  const StrainGaugeParams fit = calibrate_gauge(GaugeHardware(c, kPublished, rng, kControlDt), c,
+                                                kControlDt, "muscles.agonist");
   EXPECT_NEAR(fit.q_v_per_n / 2.25e-3, 1.05, 2e-3);
   c.calibration_hold_s = 0.0;  // read at once: one tick of creep, 1 - exp(-0.1)
   std::mt19937_64 rng2(1);
-  const StrainGaugeParams quick =
-      calibrate_gauge(GaugeHardware(c, kPublished, rng2, kControlDt), c, kControlDt, "muscles.agonist");
+  const StrainGaugeParams quick = calibrate_gauge(GaugeHardware(c, kPublished, rng2, kControlDt), c,
+                                                  kControlDt, "muscles.agonist");
   EXPECT_LT(quick.q_v_per_n, fit.q_v_per_n);
 }
 
@@ -97,6 +97,7 @@ TEST(GaugeHardwareTest, TheInstrumentSeedFixesTheArms) {
   EXPECT_NE(ga.arms().r1_ohm, go.arms().r1_ohm);
 }
 
+// clang-format off
 TEST(GaugeHardwareTest, EveryBadKeyIsNamed) {
   struct Case { const char* key; void (*spoil)(GaugeHardwareConfig&); };
   const Case cases[] = {
@@ -150,6 +151,7 @@ TEST(GaugeHardwareTest, EveryBadKeyIsNamed) {
   }
   EXPECT_NO_THROW(validate_calibration_length(config(0.4), 100.0));
 }
+// clang-format on
 
 }  // namespace
 }  // namespace pamsim

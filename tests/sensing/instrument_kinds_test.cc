@@ -28,7 +28,7 @@ TEST(InstrumentKindsTest, TheKindsAreTheFourInstrumentsInReadingOrder) {
 TEST(InstrumentKindsTest, EachKindsModelIsItsFirstChoiceAndReachesTheConfig) {
   for (const InstrumentKind& kind : instrument_kinds()) {
     SCOPED_TRACE(kind.name);
-    SensorConfig config;   // every instrument ideal by default
+    SensorConfig config;  // every instrument ideal by default
     std::vector<KeyTable> tables = kind.key_tables(&config);
     ASSERT_FALSE(tables.empty());
     EXPECT_EQ(tables.front().name, "sensors." + kind.name);
@@ -37,11 +37,11 @@ TEST(InstrumentKindsTest, EachKindsModelIsItsFirstChoiceAndReachesTheConfig) {
     ASSERT_EQ(model.allowed.size(), 2u);
     EXPECT_EQ(model.get(), model.allowed.front());
     SensorConfig ideal = config;
-    model.set(model.allowed.back());   // the hardware model, set in the config
+    model.set(model.allowed.back());  // the hardware model, set in the config
     EXPECT_EQ(model.get(), model.allowed.back());
     EXPECT_EQ(kind.key_tables(&config).front().choices.at(0).get(), model.allowed.back());
-    EXPECT_NE(kind.key_tables(&ideal).front().choices.at(0).get(),
-              model.allowed.back()) << "the copy taken before stays ideal";
+    EXPECT_NE(kind.key_tables(&ideal).front().choices.at(0).get(), model.allowed.back())
+        << "the copy taken before stays ideal";
     EXPECT_NO_THROW(kind.validate(config));
   }
 }
@@ -60,13 +60,12 @@ TEST(InstrumentKindsTest, EachKindsValidateRefusesABadRowValueNamingTheKey) {
     }
     ASSERT_NE(with_numbers, nullptr);
     const NumberRow& row = with_numbers->numbers.front();
-    *row.target = std::nan("");   // outside every range
+    *row.target = std::nan("");  // outside every range
     try {
       kind.validate(config);
       ADD_FAILURE() << row.name << " = NaN was accepted";
     } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(with_numbers->name + "." + row.name),
-                std::string::npos)
+      EXPECT_NE(std::string(e.what()).find(with_numbers->name + "." + row.name), std::string::npos)
           << e.what();
     }
   }

@@ -106,10 +106,10 @@ TEST(LengthEstimator, PressureLowpassFiltersBeforeInversion) {
   const double alpha = 1.0 - std::exp(-2.0 * 3.14159265358979323846 * 5.0 * 0.01);
   const LengthEstimate e = est.update(0.5e6, v);
   EXPECT_NEAR(e.pressure_pa, 0.4e6 + alpha * 0.1e6, 1e-6);
-  EXPECT_NEAR(e.length_m,
-              natural_length(spring, e.pressure_pa) +
-                  invert_spring_model(spring, e.pressure_pa, 30.0).d_m,
-              1e-12);
+  EXPECT_NEAR(
+      e.length_m,
+      natural_length(spring, e.pressure_pa) + invert_spring_model(spring, e.pressure_pa, 30.0).d_m,
+      1e-12);
 }
 
 TEST(LengthEstimator, VelocityLowpassSmoothsEq11) {

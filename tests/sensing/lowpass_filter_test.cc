@@ -17,9 +17,9 @@ TEST(LowpassFilter, StepResponseMatchesContinuousAtSamples) {
   const double dt = 0.01;
   const double tau = 1.0 / (2.0 * kPi * fc);
   LowpassFilter filter(fc, dt);
-  EXPECT_DOUBLE_EQ(filter.step(0.0), 0.0);   // initialises at 0
+  EXPECT_DOUBLE_EQ(filter.step(0.0), 0.0);  // initialises at 0
   for (int n = 1; n <= 100; ++n) {
-    const double y = filter.step(1.0);       // unit step from sample 0 to 1
+    const double y = filter.step(1.0);  // unit step from sample 0 to 1
     EXPECT_NEAR(y, 1.0 - std::exp(-n * dt / tau), 1e-12) << "sample " << n;
   }
 }

@@ -21,7 +21,6 @@ namespace {
 
 using pamsim_test::kControlDt;
 
-
 // one source at a time: everything else off
 PressureHardwareConfig only(void (*set)(PressureHardwareConfig&)) {
   PressureHardwareConfig c;
@@ -60,9 +59,9 @@ TEST(PressureHardwareTest, OffsetAndGainOfTheDrawnInstrument) {
 }
 
 TEST(PressureHardwareTest, TheInstrumentSeedFixesTheDrawsAndAnotherChangesThem) {
-  const PressureHardwareConfig c;   // the PSE540 class defaults
+  const PressureHardwareConfig c;  // the PSE540 class defaults
   const PressureHardware a = build(c, 5, 1), same = build(c, 5, 2), other = build(c, 6, 1);
-  EXPECT_EQ(a.bias_pa(), same.bias_pa());        // the trial's seed does not rebuild it
+  EXPECT_EQ(a.bias_pa(), same.bias_pa());  // the trial's seed does not rebuild it
   EXPECT_EQ(a.gain_error(), same.gain_error());
   EXPECT_NE(a.bias_pa(), other.bias_pa());
   EXPECT_NE(a.gain_error(), other.gain_error());
@@ -128,8 +127,7 @@ TEST(PressureHardwareTest, TheSensorRoundsToItsPrecisionAfterTheNoise) {
   SensorConfig config;
   config.pressure_adc_bits = 0;
   config.pressure_noise_pa = 0.0;
-  const PressureHardwareConfig c =
-      only([](PressureHardwareConfig& c) { c.precision_pa = 5000.0; });
+  const PressureHardwareConfig c = only([](PressureHardwareConfig& c) { c.precision_pa = 5000.0; });
   PressureSensor sensor(config, build(c));
   std::mt19937_64 rng(1);
   EXPECT_NEAR(sensor.sample(0.4121e6, rng).pressure_pa, 0.41e6, 1e-6);
@@ -142,7 +140,8 @@ TEST(PressureHardwareTest, EveryBadKeyIsNamed) {
       {"sensors.pressure.bias_mean_MPa", "nan", [](C& c) { c.bias_mean_pa = kNaN; }},
       {"sensors.pressure.bias_stddev_MPa", "-0.001", [](C& c) { c.bias_stddev_pa = -1000; }},
       {"sensors.pressure.gain_error_stddev_pct", "-1", [](C& c) { c.gain_error_stddev_pct = -1; }},
-      {"sensors.pressure.gain_error_stddev_pct", "nan", [](C& c) { c.gain_error_stddev_pct = kNaN; }},
+      {"sensors.pressure.gain_error_stddev_pct", "nan",
+       [](C& c) { c.gain_error_stddev_pct = kNaN; }},
       {"sensors.pressure.dynamic_bias_stddev_MPa", "-0.001",
        [](C& c) { c.dynamic_bias_stddev_pa = -1000; }},
       {"sensors.pressure.dynamic_bias_correlation_time_s", "0",

@@ -28,7 +28,7 @@ double creep_after(double t) {
 
 TEST(PronyCreepTest, ALoadStepCreepsAsTheClosedFormAtEveryTick) {
   PronyCreep creep(kTerms, kControlDt);
-  for (int k = 1; k <= 60000; ++k) {   // 10 minutes at 100 Hz
+  for (int k = 1; k <= 60000; ++k) {  // 10 minutes at 100 Hz
     const double out = creep.step(2.0);
     if (k % 997 == 0 || k == 1) {
       ASSERT_NEAR(out, 2.0 * creep_after(k * kControlDt), 1e-12) << "tick " << k;
@@ -38,7 +38,7 @@ TEST(PronyCreepTest, ALoadStepCreepsAsTheClosedFormAtEveryTick) {
 
 TEST(PronyCreepTest, RemovingTheLoadRecoversAsTheClosedForm) {
   PronyCreep creep(kTerms, kControlDt);
-  const int loaded = 30000;   // 300 s under load
+  const int loaded = 30000;  // 300 s under load
   for (int k = 0; k < loaded; ++k) creep.step(1.0);
   const double t1 = loaded * kControlDt;
   for (int k = 1; k <= 30000; ++k) {
@@ -46,7 +46,8 @@ TEST(PronyCreepTest, RemovingTheLoadRecoversAsTheClosedForm) {
     if (k % 1009 == 0 || k == 1) {
       double expected = 0.0;
       for (const PronyTerm& p : kTerms) {
-        expected += p.weight * (1.0 - std::exp(-t1 / p.time_s)) * std::exp(-k * kControlDt / p.time_s);
+        expected +=
+            p.weight * (1.0 - std::exp(-t1 / p.time_s)) * std::exp(-k * kControlDt / p.time_s);
       }
       ASSERT_NEAR(out, expected, 1e-12) << "tick " << k;
     }
@@ -56,7 +57,7 @@ TEST(PronyCreepTest, RemovingTheLoadRecoversAsTheClosedForm) {
 TEST(PronyCreepTest, AHeldLoadTendsToTheLongTermFactorAndNoTermsMeansNoCreep) {
   PronyCreep creep(kTerms, 10.0);
   double out = 0.0;
-  for (int k = 0; k < 10000; ++k) out = creep.step(1.0);   // 28 h: every tau long past
+  for (int k = 0; k < 10000; ++k) out = creep.step(1.0);  // 28 h: every tau long past
   EXPECT_NEAR(out, creep.long_term_factor(), 1e-12);
   EXPECT_DOUBLE_EQ(creep.long_term_factor(), 1.15);
   PronyCreep elastic({}, kControlDt);
@@ -65,10 +66,14 @@ TEST(PronyCreepTest, AHeldLoadTendsToTheLongTermFactorAndNoTermsMeansNoCreep) {
 }
 
 TEST(PronyCreepTest, EveryBadValueNamesItsKey) {
-  struct Case { PronyTerm term; const char* key; };
-  for (const Case& c : {Case{{-0.01, 1.0}, "creep_weights"}, Case{{std::nan(""), 1.0}, "creep_weights"},
-                        Case{{0.1, 0.0}, "creep_times_s"}, Case{{0.1, -5.0}, "creep_times_s"},
-                        Case{{0.1, INFINITY}, "creep_times_s"}}) {
+  struct Case {
+    PronyTerm term;
+    const char* key;
+  };
+  for (const Case& c :
+       {Case{{-0.01, 1.0}, "creep_weights"}, Case{{std::nan(""), 1.0}, "creep_weights"},
+        Case{{0.1, 0.0}, "creep_times_s"}, Case{{0.1, -5.0}, "creep_times_s"},
+        Case{{0.1, INFINITY}, "creep_times_s"}}) {
     try {
       validate_prony({{0.1, 1.0}, c.term}, "creep_weights", "creep_times_s");
       ADD_FAILURE() << "no throw for " << c.key;

@@ -23,8 +23,8 @@ TEST(QuarterBridgeTest, EqualArmsGiveTheTextbookQuarterBridge) {
   EXPECT_DOUBLE_EQ(quarter_bridge_output_v(p, arms, 0.0), 0.0);
   for (double strain : {-2e-3, -1e-4, 1e-6, 5e-4, 2e-3}) {
     const double gf_eps = 2.0 * strain;
-    EXPECT_NEAR(quarter_bridge_output_v(p, arms, strain), 100.0 * 5.0 * gf_eps / (4.0 + 2.0 * gf_eps),
-                1e-12)
+    EXPECT_NEAR(quarter_bridge_output_v(p, arms, strain),
+                100.0 * 5.0 * gf_eps / (4.0 + 2.0 * gf_eps), 1e-12)
         << strain;
   }
   // small strains: the familiar V_ex GF eps / 4, bending below it (by GF eps / 2) as it grows
@@ -43,7 +43,7 @@ TEST(QuarterBridgeTest, UnequalArmsReadAnOffsetAtZeroStrain) {
 }
 
 TEST(QuarterBridgeTest, DrawnArmsStayInTheirToleranceAndRepeatWithTheSeed) {
-  QuarterBridgeParams p;   // 120 +- 0.5 Ohm
+  QuarterBridgeParams p;  // 120 +- 0.5 Ohm
   std::mt19937_64 a(7), b(7), c(8);
   double widest = 0.0;
   for (int i = 0; i < 1000; ++i) {
@@ -56,7 +56,7 @@ TEST(QuarterBridgeTest, DrawnArmsStayInTheirToleranceAndRepeatWithTheSeed) {
     EXPECT_EQ(r.r1_ohm, again.r1_ohm);
     EXPECT_EQ(r.gauge_ohm, again.gauge_ohm);
   }
-  EXPECT_GT(widest, 0.49);   // the draws fill the band
+  EXPECT_GT(widest, 0.49);  // the draws fill the band
   EXPECT_NE(draw_bridge(p, c).r1_ohm, draw_bridge(p, a).r1_ohm);
   p.tolerance_pct = 0.0;
   const BridgeResistors exact = draw_bridge(p, a);
@@ -64,7 +64,11 @@ TEST(QuarterBridgeTest, DrawnArmsStayInTheirToleranceAndRepeatWithTheSeed) {
 }
 
 TEST(QuarterBridgeTest, EveryBadValueNamesItsKey) {
-  struct Case { const char* key; double QuarterBridgeParams::*field; double value; };
+  struct Case {
+    const char* key;
+    double QuarterBridgeParams::*field;
+    double value;
+  };
   const double nan = std::nan("");
   for (const Case& c : {Case{"excitation_V", &QuarterBridgeParams::excitation_v, 0.0},
                         Case{"gauge_factor", &QuarterBridgeParams::gauge_factor, -2.0},
@@ -72,7 +76,7 @@ TEST(QuarterBridgeTest, EveryBadValueNamesItsKey) {
                         Case{"tolerance_pct", &QuarterBridgeParams::tolerance_pct, 100.0},
                         Case{"tolerance_pct", &QuarterBridgeParams::tolerance_pct, 150.0},
                         Case{"tolerance_pct", &QuarterBridgeParams::tolerance_pct, -0.1}}) {
-    GaugeHardwareConfig gauge;   // the bridge's keys are the gauge's rows
+    GaugeHardwareConfig gauge;  // the bridge's keys are the gauge's rows
     gauge.bridge.*c.field = c.value;
     try {
       validate(gauge);

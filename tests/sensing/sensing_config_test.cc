@@ -75,27 +75,36 @@ std::vector<BadSensing> bad_sensing_values() {
       {"reflex.lowpass_hz", "60", [](C c) { c.velocity_lowpass_hz = 60.0; }},
       {"reflex.lowpass_hz", "nan", [](C c) { c.velocity_lowpass_hz = kNaN; }},
       // the cutoffs are checked against the configured control rate, not 100 Hz
-      {"reflex.lowpass_hz", "30", [](C c) { c.control_hz = 50.0; c.velocity_lowpass_hz = 30.0; }},
+      {"reflex.lowpass_hz", "30",
+       [](C c) {
+         c.control_hz = 50.0;
+         c.velocity_lowpass_hz = 30.0;
+       }},
       {"sensors.pressure_lowpass_hz", "30",
-       [](C c) { c.control_hz = 50.0; c.sensors.pressure_lowpass_hz = 30.0; }},
+       [](C c) {
+         c.control_hz = 50.0;
+         c.sensors.pressure_lowpass_hz = 30.0;
+       }},
   };
 }
 
 struct BadMuscle {
-  std::string key;     // after the muscle's own key
-  std::string value;   // as the message quotes it (paper units for the spring)
+  std::string key;    // after the muscle's own key
+  std::string value;  // as the message quotes it (paper units for the spring)
   std::function<void(MuscleSensorSpec&)> set;
 };
 
 MuscleSensorSpec eq4_muscle() {
-  return {"muscles.eq4", spring_model_from_paper_units(SpringLaw::kEq4, -60.0, 170.0,
-                                                       {1.0, 0.2, 5.0, -0.1, 0.01, 0.3}),
+  return {"muscles.eq4",
+          spring_model_from_paper_units(SpringLaw::kEq4, -60.0, 170.0,
+                                        {1.0, 0.2, 5.0, -0.1, 0.01, 0.3}),
           StrainGaugeParams{2.0e-3, 0.0}};
 }
 MuscleSensorSpec eq5_muscle() {
-  return {"muscles.eq5", spring_model_from_paper_units(SpringLaw::kEq5, -60.0, 170.0,
-                                                       {1.0, 0.2, 5.0, -0.1, 0.01, 0}),
-          StrainGaugeParams{2.0e-3, 0.0}};
+  return {
+      "muscles.eq5",
+      spring_model_from_paper_units(SpringLaw::kEq5, -60.0, 170.0, {1.0, 0.2, 5.0, -0.1, 0.01, 0}),
+      StrainGaugeParams{2.0e-3, 0.0}};
 }
 
 std::vector<BadMuscle> bad_muscle_values() {
@@ -108,14 +117,14 @@ std::vector<BadMuscle> bad_muscle_values() {
       {".strain_gauge.V_base_V", "inf", [](M m) { m.gauge.v_base_v = kInfinity; }},
       {".spring.m", "nan", [](M m) { m.estimator.m_m_per_pa = kNaN; }},
       {".spring.m", "-inf", [](M m) { m.estimator.m_m_per_pa = -kInfinity; }},
-      {".spring.h", "-100", [](M m) { m.estimator.h_m = -0.1; }},   // [mm] as in the file
+      {".spring.h", "-100", [](M m) { m.estimator.h_m = -0.1; }},  // [mm] as in the file
       {".spring.h", "0", [](M m) { m.estimator.h_m = 0.0; }},
       {".spring.h", "nan", [](M m) { m.estimator.h_m = kNaN; }},
   };
   // every coefficient of the law, named as in the paper (Eq. (3): a0..a3)
   for (int k = 0; k < 4; ++k) {
-    bad.push_back({".spring.a" + std::to_string(k), "nan",
-                   [k](M m) { m.estimator.coef[k] = kNaN; }});
+    bad.push_back(
+        {".spring.a" + std::to_string(k), "nan", [k](M m) { m.estimator.coef[k] = kNaN; }});
   }
   return bad;
 }
@@ -161,8 +170,11 @@ TEST(MuscleSensorSpec, EveryBadValueThrowsNamingTheMusclesKeyAndValue) {
     bad.set(muscle);
     expect_bad_value([&] { validate(muscle); }, "muscles.antagonist" + bad.key, bad.value);
     // the constructor checks every muscle, not only the first
-    expect_bad_value([&] { SensorSuite{SensingConfig{}, {table_iv_agonist(), muscle}, 1}; },
-                     "muscles.antagonist" + bad.key, bad.value);
+    expect_bad_value(
+        [&] {
+          SensorSuite{SensingConfig{}, {table_iv_agonist(), muscle}, 1};
+        },
+        "muscles.antagonist" + bad.key, bad.value);
   }
 }
 

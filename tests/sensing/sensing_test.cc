@@ -32,10 +32,10 @@ namespace {
 using pamsim_test::kControlDt;
 
 using test::expect_bad_value;
-using test::table_iv_agonist;
-using test::table_iv_antagonist;
 using test::fields;
 using test::noise_free;
+using test::table_iv_agonist;
+using test::table_iv_antagonist;
 using test::table_iv_muscles;
 
 // The arm at the falling-mass operating point (at -36 deg on the Table IV laws, as a
@@ -71,7 +71,6 @@ std::vector<std::vector<MuscleReading>> run(
   return out;
 }
 
-
 double rms(const std::vector<double>& x) {
   double sum2 = 0.0;
   for (double v : x) sum2 += v * v;
@@ -103,7 +102,7 @@ TEST(SensorSuite, FillsEveryReadingField) {
 
 TEST(SensorSuite, NoiseFreeReadingsEqualTheTruth) {
   Plant plant;
-  plant.muscles[1].gauge.v_base_v = 0.1;   // Eq. (9) subtracts the offset
+  plant.muscles[1].gauge.v_base_v = 0.1;  // Eq. (9) subtracts the offset
   SensorSuite suite(noise_free(), plant.muscles, 1);
   const std::vector<MuscleTruth> truth = plant.truth();
   for (const std::vector<MuscleReading>& tick : run(&suite, &plant, 5)) {
@@ -111,7 +110,7 @@ TEST(SensorSuite, NoiseFreeReadingsEqualTheTruth) {
       const MuscleReading& r = tick[j];
       const StrainGaugeParams& g = plant.muscles[j].gauge;
       EXPECT_NEAR(r.pressure_sensor_v, pse540_voltage(truth[j].pressure_pa), 1e-12);
-      EXPECT_NEAR(r.gauge_v, g.q_v_per_n * truth[j].force_n + g.v_base_v, 1e-12);   // Eq. (8)
+      EXPECT_NEAR(r.gauge_v, g.q_v_per_n * truth[j].force_n + g.v_base_v, 1e-12);  // Eq. (8)
       EXPECT_NEAR(r.pressure_meas_pa, truth[j].pressure_pa, 1e-6);
       EXPECT_NEAR(r.force_meas_n, truth[j].force_n, 1e-9);
       EXPECT_NEAR(r.length_est_m, truth[j].length_m, 1e-9);
@@ -137,7 +136,7 @@ TEST(SensorSuite, StretchReadsAsVelocityOnThatMuscleOnly) {
     // Eq. (11) at constant pressure: the length moves by d alone
     EXPECT_NEAR(ago.velocity_est_m_s, v_true, 1e-6) << tick;
     EXPECT_NEAR(ago.fiber_rate_m_s, v_true, 1e-9) << tick;
-    EXPECT_NEAR(ago.fiber_velocity_m_s, v_true, 1e-9) << tick;   // reflex.lowpass_hz = 0
+    EXPECT_NEAR(ago.fiber_velocity_m_s, v_true, 1e-9) << tick;  // reflex.lowpass_hz = 0
     const double d_m = 6.66e-3 + std::max(0, tick - 9) * 0.150 * kControlDt;
     EXPECT_NEAR(ago.length_est_m, natural_length(plant.muscles[0].estimator, 0.4e6) + d_m, 1e-9);
     EXPECT_NEAR(anta.velocity_est_m_s, 0.0, 1e-9) << tick;
@@ -184,7 +183,7 @@ TEST(SensorSuite, PressureLowpassRemovesNoiseThatReadsAsVelocity) {
     return natural_length(ago.estimator, p) + invert_spring_model(ago.estimator, p, f_n).d_m;
   };
   const double dl_dp = (length_m(p_pa + 1e3) - length_m(p_pa - 1e3)) / 2e3;
-  ASSERT_NEAR(dl_dp * 1e9, -66.3, 0.5);   // [mm/MPa]: -60.1 from l_n, -6.2 from d
+  ASSERT_NEAR(dl_dp * 1e9, -66.3, 0.5);  // [mm/MPa]: -60.1 from l_n, -6.2 from d
 
   auto velocity_rms = [&](double pressure_lowpass_hz) {
     SensingConfig config = noise_free();
@@ -205,8 +204,8 @@ TEST(SensorSuite, PressureLowpassRemovesNoiseThatReadsAsVelocity) {
   const double unfiltered = std::sqrt(2.0) * sigma_p_pa * std::abs(dl_dp) / kControlDt;
   const double alpha = lowpass_alpha(5.0, kControlDt);
   const double filtered = unfiltered * alpha / std::sqrt(2.0 - alpha);
-  EXPECT_NEAR(velocity_rms(0.0), unfiltered, 0.05 * unfiltered);   // ~28 mm/s
-  EXPECT_NEAR(velocity_rms(5.0), filtered, 0.05 * filtered);       // ~6 mm/s
+  EXPECT_NEAR(velocity_rms(0.0), unfiltered, 0.05 * unfiltered);  // ~28 mm/s
+  EXPECT_NEAR(velocity_rms(5.0), filtered, 0.05 * filtered);      // ~6 mm/s
   // unfiltered it would cross the model reflex threshold (70 mm/s) at 2.5 sigma; filtered,
   // at more than 10 sigma
   EXPECT_LT(filtered, 0.1 * 0.070);

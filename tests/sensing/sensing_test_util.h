@@ -56,9 +56,9 @@ inline void expect_bad_value(const std::function<void()>& call, const std::strin
 
 // every field of a reading, in declaration order
 inline std::vector<double> fields(const MuscleReading& r) {
-  return {r.pressure_sensor_v, r.gauge_v,          r.fiber_rate_m_s,
-          r.fiber_length_m,    r.fiber_velocity_m_s, r.pressure_meas_pa,
-          r.force_meas_n,      r.length_est_m,     r.velocity_est_m_s};
+  return {r.pressure_sensor_v,  r.gauge_v,          r.fiber_rate_m_s, r.fiber_length_m,
+          r.fiber_velocity_m_s, r.pressure_meas_pa, r.force_meas_n,   r.length_est_m,
+          r.velocity_est_m_s};
 }
 
 // Both of Table IV's muscles, agonist first.

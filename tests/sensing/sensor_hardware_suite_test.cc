@@ -38,7 +38,6 @@ std::vector<std::vector<MuscleReading>> run(const SensingConfig& config, std::ui
   return out;
 }
 
-
 // FNV-1a over the bits of every field of every reading
 std::uint64_t digest(const std::vector<std::vector<MuscleReading>>& readings) {
   std::uint64_t h = 1469598103934665603ull;

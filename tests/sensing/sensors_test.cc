@@ -158,7 +158,7 @@ TEST(Sensors, NoiseScaleMultipliesEveryNoiseStd) {
   SensorConfig one;
   one.pressure_adc_bits = 0;
   one.gauge_adc_bits = 0;
-  one.pressure_bias_pa = 0.01e6;   // not scaled
+  one.pressure_bias_pa = 0.01e6;  // not scaled
   SensorConfig scaled = one;
   scaled.noise_scale = 2.5;
   const StrainGaugeParams gauge{2.25e-3, 0.0};
@@ -182,7 +182,7 @@ TEST(Sensors, NoiseScaleMultipliesEveryNoiseStd) {
 }
 
 TEST(Sensors, DeterministicPerSeed) {
-  const SensorConfig c;   // default noise
+  const SensorConfig c;  // default noise
   auto run = [&](std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     PressureSensor p(c);

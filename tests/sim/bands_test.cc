@@ -80,19 +80,18 @@ TEST(BandsTest, ARigsDrawsDependOnTheSeedAndTheRigAloneAndStayInTheirBrackets) {
     EXPECT_TRUE(v[0] >= 0.0 && v[0] <= 0.6) << v[0];
     EXPECT_TRUE(v[1] >= -2.0 && v[1] <= 2.0) << v[1];
   }
-  EXPECT_EQ(bracket_overrides(b, {0.25, -1.0}),
-            (std::vector<std::string>{"a.b=0.25", "c.d=-1.0"}));
+  EXPECT_EQ(bracket_overrides(b, {0.25, -1.0}), (std::vector<std::string>{"a.b=0.25", "c.d=-1.0"}));
 }
 
 TEST(BandsTest, StatisticsAreTheOrderStatisticsInterpolated) {
   std::vector<double> v;
-  for (int i = 21; i >= 1; --i) v.push_back(i);   // 1 .. 21, shuffled order irrelevant
-  v.push_back(NAN);                                // a diverged rig: not counted
+  for (int i = 21; i >= 1; --i) v.push_back(i);  // 1 .. 21, shuffled order irrelevant
+  v.push_back(NAN);                              // a diverged rig: not counted
   const BandStats s = band_stats(v);
   EXPECT_EQ(s.n, 21);
   EXPECT_DOUBLE_EQ(s.median, 11.0);
-  EXPECT_DOUBLE_EQ(s.p5, 2.0);     // 1 + 0.05 * 20
-  EXPECT_DOUBLE_EQ(s.p95, 20.0);   // 1 + 0.95 * 20
+  EXPECT_DOUBLE_EQ(s.p5, 2.0);    // 1 + 0.05 * 20
+  EXPECT_DOUBLE_EQ(s.p95, 20.0);  // 1 + 0.95 * 20
   EXPECT_EQ(s.min, 1.0);
   EXPECT_EQ(s.max, 21.0);
   EXPECT_EQ(band_stats({NAN}).n, 0);
@@ -155,12 +154,13 @@ TEST(BandsTest, ARigTheProtocolRefusesIsCountedNotFatal) {
   }
   std::vector<double> rmse;
   for (const auto& rig : bands.runs.errors) rmse.push_back(rig[0].rmse_pct);
-  EXPECT_EQ(band_stats(rmse).n, 100 - refused);   // the refused rigs are in no statistic
+  EXPECT_EQ(band_stats(rmse).n, 100 - refused);  // the refused rigs are in no statistic
   EXPECT_LE(band_stats(rmse).max, 0.3);
   EXPECT_NE(bands_markdown(bands).find("could not run " + std::to_string(refused) + " of 100 rigs"),
             std::string::npos);
   // quoted in the CSV, its comma kept
-  EXPECT_NE(draws_csv(bands).find(",\"tensile test: cannot stretch, so far\"\n"), std::string::npos);
+  EXPECT_NE(draws_csv(bands).find(",\"tensile test: cannot stretch, so far\"\n"),
+            std::string::npos);
   // every run refused: the first refusal is the error
   EXPECT_THROW(run_bands(b, seed, 3,
                          [](int, const std::vector<std::string>&) -> std::vector<BandCell> {
@@ -189,12 +189,12 @@ TEST(BandsTest, SensitivitySetsEachBracketAloneAtItsEnds) {
   });
   ASSERT_EQ(seen.size(), 5u);
   using Set = std::vector<std::string>;
-  EXPECT_EQ(seen[0], (Set{"a.b=0.3", "c.d=0.0"}));   // every bracket at its middle
+  EXPECT_EQ(seen[0], (Set{"a.b=0.3", "c.d=0.0"}));  // every bracket at its middle
   EXPECT_EQ(seen[1], (Set{"a.b=0.0", "c.d=0.0"}));
   EXPECT_EQ(seen[2], (Set{"a.b=0.6", "c.d=0.0"}));
   EXPECT_EQ(seen[4], (Set{"a.b=0.3", "c.d=2.0"}));
-  EXPECT_DOUBLE_EQ(s.swing(0, 0), 0.6);   // the cell is a.b's value
-  EXPECT_DOUBLE_EQ(s.swing(1, 0), 0.0);   // c.d moves nothing
+  EXPECT_DOUBLE_EQ(s.swing(0, 0), 0.6);  // the cell is a.b's value
+  EXPECT_DOUBLE_EQ(s.swing(1, 0), 0.0);  // c.d moves nothing
   EXPECT_NE(sensitivity_markdown(s).find("| creep |"), std::string::npos);
 }
 

@@ -50,8 +50,8 @@ TEST(BracketSourcesTest, PamDsSiliconeBandSpansTheSourcesStressesAtStretchFour) 
   EXPECT_EQ(b.key, "pams.D.plant.bladder.C20_MPa");
   const double low = mooney_rivlin_stress(pam_d_law(spec, b.from), 4.0);
   const double high = mooney_rivlin_stress(pam_d_law(spec, b.to), 4.0);
-  EXPECT_NEAR(low, 0.87e6, 0.01e6);    // M4601's initial modulus, neo-Hookean
-  EXPECT_NEAR(high, 5.12e6, 0.01e6);   // M4601's Yeoh law (Polygerinos et al. 2015)
+  EXPECT_NEAR(low, 0.87e6, 0.01e6);   // M4601's initial modulus, neo-Hookean
+  EXPECT_NEAR(high, 5.12e6, 0.01e6);  // M4601's Yeoh law (Polygerinos et al. 2015)
   // the shipped plant is the bracket's top: M4601 itself
   EXPECT_EQ(mooney_rivlin_stress(spec.pams.front().plant.avbdl.bladder, 4.0), high);
   const double dragon_skin = mooney_rivlin_stress({0.1536e6, 0.0, 0.0016e6}, 4.0);
@@ -60,7 +60,8 @@ TEST(BracketSourcesTest, PamDsSiliconeBandSpansTheSourcesStressesAtStretchFour) 
 }
 
 TEST(BracketSourcesTest, TheBoardsThicknessBracketIsItsStressAtTheGaugeFromTwentyToFiveMpa) {
-  const ReachingValidationSpec spec = load_reaching_validation(kScenarios + "validate_reaching.toml");
+  const ReachingValidationSpec spec =
+      load_reaching_validation(kScenarios + "validate_reaching.toml");
   const Bracket& b = bracket_named(spec.brackets, "board thickness");
   GaugeBoardParams board = GaugeHardwareConfig{}.board;
   const auto stress_mpa = [&](double thickness_mm) {
@@ -73,7 +74,8 @@ TEST(BracketSourcesTest, TheBoardsThicknessBracketIsItsStressAtTheGaugeFromTwent
 }
 
 TEST(BracketSourcesTest, TheBoardsCreepBracketTopsAtAboutFivePercentWithinAHundredSeconds) {
-  const ReachingValidationSpec spec = load_reaching_validation(kScenarios + "validate_reaching.toml");
+  const ReachingValidationSpec spec =
+      load_reaching_validation(kScenarios + "validate_reaching.toml");
   const Bracket& b = bracket_named(spec.brackets, "board creep");
   EXPECT_EQ(b.from, 0.0);
   EXPECT_NEAR(findley_creep({0.24, b.to}, 100.0), 0.05, 0.005);
@@ -83,8 +85,8 @@ TEST(BracketSourcesTest, TheBoardsCreepBracketTopsAtAboutFivePercentWithinAHundr
 // The largest pull on either line over the reaching task with the lines tied `mm` tight
 // (taken inextensible, as the brackets' sources derive their tops)
 double peak_pull_n(const ReachingValidationSpec& spec, double mm) {
-  const Scenario sc = load_scenario(
-      spec.scenario_file, {"model.antagonist_deformation_mm=" + format_shortest(mm)});
+  const Scenario sc =
+      load_scenario(spec.scenario_file, {"model.antagonist_deformation_mm=" + format_shortest(mm)});
   const TrialResult r = run_trial(load_trial_model(sc), sc, 1);
   double peak = 0.0;
   for (const char* column : {"force_ago_N", "force_anta_N"}) {

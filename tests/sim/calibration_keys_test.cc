@@ -23,7 +23,8 @@ const std::string kModels = std::string(PAMSIM_SOURCE_DIR) + "/models/";
 
 // `text` with key's line set to `value`
 std::string with_value(const std::string& text, const std::string& key, const std::string& value) {
-  return std::regex_replace(text, std::regex("(^|\n)" + key + " = [^\n]*"), "$1" + key + " = " + value);
+  return std::regex_replace(text, std::regex("(^|\n)" + key + " = [^\n]*"),
+                            "$1" + key + " = " + value);
 }
 
 TEST(CalibrationKeysTest, EachKeyHasOneRowAndTheReferenceListsThemAll) {
@@ -77,8 +78,8 @@ TEST(CalibrationKeysTest, EveryRowRefusesItsBadValuesByItsKey) {
         const std::string text = with_value(good, row.name, bad);
         ASSERT_NE(text, good) << row.name << " is not in the file";
         pamsim_test::write_text(file, text);
-        const InputErrorParts parts = refusal_parts(
-            [&] { load_calibration(file.string()); }, row.name + " = " + bad);
+        const InputErrorParts parts =
+            refusal_parts([&] { load_calibration(file.string()); }, row.name + " = " + bad);
         EXPECT_EQ(parts.file, file.string()) << bad;
         EXPECT_EQ(parts.key, row.name) << bad;
       }

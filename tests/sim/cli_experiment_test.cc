@@ -55,8 +55,8 @@ nlohmann::json read_json(const fs::path& path) {
 
 TEST(CliExperimentTest, PulleyRunWritesTrajectorySummaryAndPlot) {
   const fs::path out = fresh_dir("run_pulley");
-  const CliResult r = run_pamsim("run scenarios/pulley_sine_5kg.toml --set sim.duration_s=5 --out " +
-                                 out.string());
+  const CliResult r =
+      run_pamsim("run scenarios/pulley_sine_5kg.toml --set sim.duration_s=5 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* f : {"trajectory.csv", "summary.json", "position.png"}) {
     EXPECT_TRUE(fs::exists(out / f)) << f;
@@ -73,9 +73,9 @@ TEST(CliExperimentTest, PulleyRunWritesTrajectorySummaryAndPlot) {
   EXPECT_EQ(s["status"], "ok");
   EXPECT_EQ(s["steps"], 5000);
   EXPECT_EQ(s["scenario"]["controller"], "none");
-  for (const char* key : {"pressure_rmse_pam_MPa", "length_est_rmse_pam_pct",
-                          "length_est_max_error_pam_pct", "position_min_mm", "position_max_mm",
-                          "length_est_rmse_mm"}) {
+  for (const char* key :
+       {"pressure_rmse_pam_MPa", "length_est_rmse_pam_pct", "length_est_max_error_pam_pct",
+        "position_min_mm", "position_max_mm", "length_est_rmse_mm"}) {
     EXPECT_TRUE(s.contains(key)) << key;
   }
   EXPECT_FALSE(s.contains("peak_drop_deg")) << "the pulley lists no drop metrics";
@@ -86,15 +86,18 @@ TEST(CliExperimentTest, CompareDrawsTheJointTheRunsLogAndRefusesToMixJoints) {
   const fs::path dir = fresh_dir("compare_joints");
   const std::string pulley = "run scenarios/pulley_sine_5kg.toml --set sim.duration_s=1 --no-plot";
   ASSERT_EQ(run_pamsim(pulley + " --out " + (dir / "a").string()).exit_code, 0);
-  ASSERT_EQ(run_pamsim(pulley + " --set sensors.noise_scale=2 --out " + (dir / "b").string())
-                .exit_code, 0);
-  const CliResult ok = run_pamsim("compare " + (dir / "a").string() + " " +
-                                  (dir / "b").string() + " -o " + (dir / "ab.png").string());
+  ASSERT_EQ(
+      run_pamsim(pulley + " --set sensors.noise_scale=2 --out " + (dir / "b").string()).exit_code,
+      0);
+  const CliResult ok = run_pamsim("compare " + (dir / "a").string() + " " + (dir / "b").string() +
+                                  " -o " + (dir / "ab.png").string());
   ASSERT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_TRUE(fs::is_regular_file(dir / "ab.png"));
   // a slide's runs against a hinge's: one line naming both, nothing written
   ASSERT_EQ(run_pamsim("run scenarios/drop_mass.toml --set sim.duration_s=1.2 --no-plot --out " +
-                       (dir / "arm").string()).exit_code, 0);
+                       (dir / "arm").string())
+                .exit_code,
+            0);
   const CliResult mixed = run_pamsim("compare " + (dir / "a").string() + " " +
                                      (dir / "arm").string() + " -o " + (dir / "mix.png").string());
   EXPECT_EQ(mixed.exit_code, 2);
@@ -125,7 +128,8 @@ TEST(CliExperimentTest, RenderAcceptsTheReachingAndPulleyScenarios) {
     const std::string mp4 = (dir / (std::string(scenario) + ".mp4")).string();
     const CliResult r = run_pamsim(std::string("render scenarios/") + scenario +
                                    ".toml --set sim.duration_s=0.5 --fps 10 --width 320 "
-                                   "--height 240 -o " + mp4);
+                                   "--height 240 -o " +
+                                   mp4);
     ASSERT_EQ(r.exit_code, 0) << scenario << ": " << r.err;
     const auto video = pamsim_test::decode_video(mp4);
     ASSERT_TRUE(video.opened) << mp4;
@@ -138,10 +142,11 @@ TEST(CliExperimentTest, RenderAcceptsTheReachingAndPulleyScenarios) {
 TEST(CliExperimentTest, SweepOverThePulleysAmplitudeExportsItsTrackingMetrics) {
   const fs::path dir = fresh_dir("sweep_pulley");
   const fs::path sweep = dir / "amplitude.toml";
-  write_text(sweep, "base = \"" + kSource + "/scenarios/pulley_sine_5kg.toml\"\n"
-                    "[fixed.sim]\nduration_s = 2.0\n"
-                    "[[axis]]\nkey = \"muscles.pam.command.amplitude_MPa\"\n"
-                    "values = [0.05, 0.2]\n");
+  write_text(sweep, "base = \"" + kSource +
+                        "/scenarios/pulley_sine_5kg.toml\"\n"
+                        "[fixed.sim]\nduration_s = 2.0\n"
+                        "[[axis]]\nkey = \"muscles.pam.command.amplitude_MPa\"\n"
+                        "values = [0.05, 0.2]\n");
   const std::string db = (dir / "a.db").string();
   const CliResult r = run_pamsim("sweep " + sweep.string() + " --threads 2 --db " + db);
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -161,8 +166,8 @@ TEST(CliExperimentTest, SweepOverThePulleysAmplitudeExportsItsTrackingMetrics) {
 
 struct BadCase {
   std::string what;
-  std::string args;        // after `run`
-  std::string expected;    // in the one-line message
+  std::string args;      // after `run`
+  std::string expected;  // in the one-line message
 };
 
 TEST(CliExperimentTest, BadExperimentInputIsOneLineNonZeroAndWritesNothing) {
@@ -174,16 +179,16 @@ TEST(CliExperimentTest, BadExperimentInputIsOneLineNonZeroAndWritesNothing) {
 
   write_text(dir / "back_in_time.csv", "time_s,MPa\n0,0.5\n2,0.6\n1.5,0.7\n");
   write_text(dir / "table.toml",
-             replaced(pulley, sine_command, "command = { kind = \"table\", file = \"back_in_time.csv\" }"));
-  write_text(dir / "square.toml",
-             replaced(pulley, "kind = \"sine\"", "kind = \"square\""));
+             replaced(pulley, sine_command,
+                      "command = { kind = \"table\", file = \"back_in_time.csv\" }"));
+  write_text(dir / "square.toml", replaced(pulley, "kind = \"sine\"", "kind = \"square\""));
   write_text(dir / "ghost_body.toml",
-             pulley + "\n[events.lift]\naction = \"add_mass\"\nbody = \"ghost\"\nmass_kg = 1.0\n"
-                      "when.at_s = 1.0\n");
-  write_text(dir / "ghost_muscle.toml",
-             pulley + "\n[muscles.biceps]\nparams = \"" + kSource +
-                 "/models/pams/table4_agonist.toml\"\nline_mm = 300\n"
-                 "command = { kind = \"constant\", MPa = 0.4 }\n");
+             pulley +
+                 "\n[events.lift]\naction = \"add_mass\"\nbody = \"ghost\"\nmass_kg = 1.0\n"
+                 "when.at_s = 1.0\n");
+  write_text(dir / "ghost_muscle.toml", pulley + "\n[muscles.biceps]\nparams = \"" + kSource +
+                                            "/models/pams/table4_agonist.toml\"\nline_mm = 300\n"
+                                            "command = { kind = \"constant\", MPa = 0.4 }\n");
   write_text(dir / "arm_3pam.xml", pamsim_test::three_pam_model());
   write_text(dir / "unbound_pam.toml",
              replaced(movable("reaching.toml"), "\"" + kSource + "/models/arm_2pam.xml\"",

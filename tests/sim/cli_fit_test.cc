@@ -96,7 +96,7 @@ TEST_F(CliFitTest, TensileFitEstimateRoundTrip) {
     for (int k = 0; k < n; ++k) {
       EXPECT_TRUE(j.at("coefficients").at(letter + std::to_string(k)).is_number());
     }
-    EXPECT_NEAR(j.at("m").get<double>(), -60.1, 1e-6);   // Eq. (2) from l - d
+    EXPECT_NEAR(j.at("m").get<double>(), -60.1, 1e-6);  // Eq. (2) from l - d
     EXPECT_NEAR(j.at("h").get<double>(), 170.1, 1e-6);
   }
   const nlohmann::json eq3 = nlohmann::json::parse(run("fit --model eq3 t.csv --json").out);
@@ -133,8 +133,8 @@ TEST_F(CliFitTest, BadTensileData) {
   std::string rows;
   for (double p : {0.4, 0.6, 0.8}) {
     for (double d : {2.5, 5.0}) {
-      rows += std::to_string(p) + "," + std::to_string(d) + "," + std::to_string(10 * d * p) +
-              "," + std::to_string(170 - 60 * p + d) + "\n";
+      rows += std::to_string(p) + "," + std::to_string(d) + "," + std::to_string(10 * d * p) + "," +
+              std::to_string(170 - 60 * p + d) + "\n";
     }
   }
   write("missing_column.csv", "pressure_MPa,deformation_mm,length_mm\n0.4,1,150\n");
@@ -149,10 +149,10 @@ TEST_F(CliFitTest, BadTensileData) {
                   {"missing_column.csv", "missing column force_N"}, "out.toml");
   expect_rejected(fit + "non_numeric.csv -o out.toml",
                   {"non_numeric.csv", "row 8", "deformation_mm"}, "out.toml");
-  expect_rejected(fit + "nan.csv -o out.toml", {"nan.csv", "row 2", "force_N", "not a decimal number"},
+  expect_rejected(fit + "nan.csv -o out.toml",
+                  {"nan.csv", "row 2", "force_N", "not a decimal number"}, "out.toml");
+  expect_rejected(fit + "negative.csv -o out.toml", {"negative.csv", "row 8", "negative pressure"},
                   "out.toml");
-  expect_rejected(fit + "negative.csv -o out.toml",
-                  {"negative.csv", "row 8", "negative pressure"}, "out.toml");
   expect_rejected(fit + "few.csv -o out.toml", {"few.csv", "too few points"}, "out.toml");
   expect_rejected("fit --model eq7 few.csv -o out.toml", {"--model", "eq7"}, "out.toml");
 }
@@ -166,8 +166,8 @@ TEST_F(CliFitTest, BadParameterFiles) {
   unit.replace(unit.find("\"MPa\""), 5, "\"kPa\"");
   write("wrong_unit.toml", unit);
 
-  for (const std::string cmd : {"estimate --pressure-MPa 0.4 --force-N 50 --params ",
-                                "tensile -o out.csv --params "}) {
+  for (const std::string cmd :
+       {"estimate --pressure-MPa 0.4 --force-N 50 --params ", "tensile -o out.csv --params "}) {
     expect_rejected(cmd + "missing_coef.toml", {"missing_coef.toml", "spring.a2", "missing"},
                     "out.csv");
     expect_rejected(cmd + "wrong_unit.toml", {"wrong_unit.toml", "spring.units.pressure"},

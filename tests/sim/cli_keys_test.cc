@@ -31,7 +31,8 @@ TEST(CliKeysTest, KeysListsTheDocumentationAndAScenariosValues) {
   const nlohmann::json docs = nlohmann::json::parse(all.out);
   EXPECT_EQ(docs.size(), pamsim::scenario_key_docs().size());
 
-  const CliResult drop = run_pamsim("keys scenarios/drop_mass.toml --set reflex.duration_s=0.3 --json");
+  const CliResult drop =
+      run_pamsim("keys scenarios/drop_mass.toml --set reflex.duration_s=0.3 --json");
   ASSERT_EQ(drop.exit_code, 0) << drop.err;
   std::map<std::string, nlohmann::json> by_key;
   for (const auto& j : nlohmann::json::parse(drop.out)) by_key[j["key"]] = j;
@@ -90,13 +91,15 @@ TEST(CliKeysTest, KeysPlantAndParamsListEveryKeyTheShippedFilesGive) {
     for (const auto& entry : std::filesystem::directory_iterator("models/pams")) {
       if (entry.path().filename().string().rfind(prefix, 0) != 0) continue;
       ++files;
-      std::vector<std::string> keys;   // the file's dotted keys, tables' own aside
+      std::vector<std::string> keys;  // the file's dotted keys, tables' own aside
       std::function<void(const toml::table&, const std::string&)> collect =
           [&](const toml::table& t, const std::string& at) {
             for (const auto& [k, v] : t) {
               const std::string key = at + std::string(k.str());
-              if (v.is_table()) collect(*v.as_table(), key + ".");
-              else keys.push_back(key);
+              if (v.is_table())
+                collect(*v.as_table(), key + ".");
+              else
+                keys.push_back(key);
             }
           };
       collect(toml::parse_file(entry.path().string()), "");
@@ -121,25 +124,32 @@ TEST(CliKeysTest, AMisspelledKeyGetsTheKeyMeant) {
            // a key the reader asks only whether present: still suggested
            {"valve.dead_tim_ms=5", "did you mean valve.dead_time_ms?"},
        }) {
-    const CliResult r = run_pamsim("run scenarios/drop_mass.toml --out /nonexistent/x --set " + c.set);
+    const CliResult r =
+        run_pamsim("run scenarios/drop_mass.toml --out /nonexistent/x --set " + c.set);
     EXPECT_EQ(r.exit_code, 2) << c.set;
     EXPECT_EQ(line_count(r.err), 1) << r.err;
     EXPECT_NE(r.err.find("is not a known key; " + c.suggestion), std::string::npos)
         << c.set << " -> " << r.err;
   }
   // a refusal caused by another key's value says which, and where that came from
-  const CliResult file = run_pamsim("run scenarios/drop_mass.toml --out /nonexistent/x --set sim.duration_s=1");
+  const CliResult file =
+      run_pamsim("run scenarios/drop_mass.toml --out /nonexistent/x --set sim.duration_s=1");
   EXPECT_EQ(file.exit_code, 2);
   EXPECT_NE(file.err.find("drop.time_s = 1 (file) with sim.duration_s = 1 (--set)"),
-            std::string::npos) << file.err;
+            std::string::npos)
+      << file.err;
   const fs::path dir = fresh_dir("keys_other");
-  const std::string no_time = pamsim_test::scenario_variant(dir, "drop_mass.toml", "time_s = 1.0", "");
-  const CliResult other = run_pamsim("run " + no_time + " --out /nonexistent/x --set sim.duration_s=1");
+  const std::string no_time =
+      pamsim_test::scenario_variant(dir, "drop_mass.toml", "time_s = 1.0", "");
+  const CliResult other =
+      run_pamsim("run " + no_time + " --out /nonexistent/x --set sim.duration_s=1");
   EXPECT_EQ(other.exit_code, 2);
   EXPECT_NE(other.err.find("drop.time_s = 1 (default) with sim.duration_s = 1 (--set)"),
-            std::string::npos) << other.err;
+            std::string::npos)
+      << other.err;
   // nothing near: no guess
-  const CliResult far = run_pamsim("run scenarios/drop_mass.toml --out /nonexistent/x --set zzz.qqq=1");
+  const CliResult far =
+      run_pamsim("run scenarios/drop_mass.toml --out /nonexistent/x --set zzz.qqq=1");
   EXPECT_EQ(far.exit_code, 2);
   EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
 }

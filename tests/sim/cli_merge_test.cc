@@ -23,8 +23,8 @@
 namespace {
 
 namespace fs = std::filesystem;
-using pamsim_test::fresh_dir;
 using pamsim_test::freeze;
+using pamsim_test::fresh_dir;
 using pamsim_test::interruptible_sweep;
 using pamsim_test::kInterruptibleTrials;
 using pamsim_test::line_count;
@@ -41,10 +41,9 @@ const std::string kSmoke = "scenarios/sweep_smoke.toml";
 // The trial numbers stored in `db`, in order.
 std::vector<std::int64_t> trials_in(const std::string& db) {
   std::vector<std::int64_t> trials;
-  pamsim::ResultsDb::open_existing(db).for_each_trial(
-      [&](const std::vector<pamsim::DbValue>& row) {
-        trials.push_back(static_cast<std::int64_t>(row[0].number));
-      });
+  pamsim::ResultsDb::open_existing(db).for_each_trial([&](const std::vector<pamsim::DbValue>& row) {
+    trials.push_back(static_cast<std::int64_t>(row[0].number));
+  });
   return trials;
 }
 
@@ -74,15 +73,15 @@ class ShardedSmokeSweep : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     const auto built = fs::last_write_time(PAMSIM_BINARY).time_since_epoch().count();
-    dir_ = new fs::path(fs::path(::testing::TempDir()) /
-                        ("sweep_shards_" + std::to_string(::getppid()) + "_" +
-                         std::to_string(built)));
+    dir_ =
+        new fs::path(fs::path(::testing::TempDir()) /
+                     ("sweep_shards_" + std::to_string(::getppid()) + "_" + std::to_string(built)));
     fs::create_directories(*dir_);
     const int lock = ::open((*dir_ / ".lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
     ASSERT_GE(lock, 0);
     ASSERT_EQ(::flock(lock, LOCK_EX), 0);
     if (!fs::exists(*dir_ / ".made")) make_sweeps();
-    ::close(lock);   // (releases the lock)
+    ::close(lock);  // (releases the lock)
   }
   static void make_sweeps() {
     const auto whole = run_pamsim("sweep " + kSmoke + " --threads 2 --db " + db("whole"));
@@ -108,7 +107,7 @@ TEST_F(ShardedSmokeSweep, EachShardHoldsExactlyItsTrials) {
   std::vector<int> seen(32, 0);
   for (int i = 0; i < 3; ++i) {
     const std::vector<std::int64_t> trials = trials_in(shard(i));
-    EXPECT_EQ(trials.size(), i < 2 ? 11u : 10u) << "shard " << i;   // 32 = 11 + 11 + 10
+    EXPECT_EQ(trials.size(), i < 2 ? 11u : 10u) << "shard " << i;  // 32 = 11 + 11 + 10
     for (std::int64_t t : trials) {
       EXPECT_EQ(t % 3, i) << "trial " << t << " in shard " << i;
       ++seen[static_cast<std::size_t>(t)];
@@ -174,7 +173,7 @@ TEST_F(ShardedSmokeSweep, DuplicatesAreKeptOnceAndMissingTrialsReportedThenResum
 TEST_F(ShardedSmokeSweep, MergeRefusesPartsThatDoNotBelongTogether) {
   struct Case {
     const char* name;
-    const char* sql;       // what makes a copy of shard 1 not belong
+    const char* sql;  // what makes a copy of shard 1 not belong
     const char* message;
   };
   const Case cases[] = {
@@ -193,8 +192,8 @@ TEST_F(ShardedSmokeSweep, MergeRefusesPartsThatDoNotBelongTogether) {
     ASSERT_NO_FATAL_FAILURE(execute_sql(part, c.sql));
     const std::string out = fresh_file(db(std::string("out_") + c.name));
     // "differs" needs the true trial 1 first
-    const std::string parts = std::string(c.name) == "differs" ? shard(1) + " " + part
-                                                               : shard(0) + " " + part;
+    const std::string parts =
+        std::string(c.name) == "differs" ? shard(1) + " " + part : shard(0) + " " + part;
     const auto r = run_pamsim("merge " + out + " " + parts);
     EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.err;
     EXPECT_EQ(line_count(r.err), 1) << c.name << ": " << r.err;
@@ -214,16 +213,16 @@ TEST_F(ShardedSmokeSweep, MergeRefusesPartsThatDoNotBelongTogether) {
 TEST_F(ShardedSmokeSweep, AShardDatabaseResumesOnlyAsThatShard) {
   const std::string copy = fresh_file(db("shard1_copy"));
   fs::copy_file(shard(1), copy);
-  for (const std::string& wrong : {std::string(""), std::string(" --shard 2/3"),
-                                   std::string(" --shard 1/4")}) {
+  for (const std::string& wrong :
+       {std::string(""), std::string(" --shard 2/3"), std::string(" --shard 1/4")}) {
     const auto r = run_pamsim("sweep " + kSmoke + " --resume --db " + copy + wrong);
     EXPECT_EQ(r.exit_code, 2) << wrong << ": " << r.err;
     EXPECT_EQ(line_count(r.err), 1) << r.err;
     EXPECT_NE(r.err.find("holds shard 1/3"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("--shard 1/3"), std::string::npos) << r.err;
   }
-  const auto whole = run_pamsim("sweep " + kSmoke + " --resume --db " + db("whole") +
-                                " --shard 0/3");
+  const auto whole =
+      run_pamsim("sweep " + kSmoke + " --resume --db " + db("whole") + " --shard 0/3");
   EXPECT_EQ(whole.exit_code, 2);
   EXPECT_NE(whole.err.find("holds the whole sweep, not shard 0/3"), std::string::npos) << whole.err;
 }
@@ -233,26 +232,27 @@ TEST_F(ShardedSmokeSweep, AShardDatabaseResumesOnlyAsThatShard) {
 TEST_F(ShardedSmokeSweep, SlurmScriptsRunTheShardsAndMergeThem) {
   const fs::path out = *dir_ / "slurm";
   fs::remove_all(out);
-  const std::string in_source = std::string("cd ") + PAMSIM_SOURCE_DIR + " && PAMSIM=" +
-                                PAMSIM_BINARY + " ";
+  const std::string in_source =
+      std::string("cd ") + PAMSIM_SOURCE_DIR + " && PAMSIM=" + PAMSIM_BINARY + " ";
   for (int i = 0; i < 3; ++i) {
     const std::string task = in_source + "SLURM_ARRAY_TASK_ID=" + std::to_string(i) +
                              " SLURM_ARRAY_TASK_COUNT=3 SLURM_ARRAY_TASK_MIN=0 "
-                             "SLURM_CPUS_PER_TASK=2 bash scripts/slurm/shard.sbatch " + kSmoke +
-                             " " + out.string() + " 3 > /dev/null 2>&1";
+                             "SLURM_CPUS_PER_TASK=2 bash scripts/slurm/shard.sbatch " +
+                             kSmoke + " " + out.string() + " 3 > /dev/null 2>&1";
     ASSERT_EQ(std::system(task.c_str()), 0) << task;
   }
   // shard 1 resubmitted alone (--array=1): it resumes its finished database, runs nothing
-  const std::string again = in_source + "SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_COUNT=1 "
-                            "SLURM_ARRAY_TASK_MIN=1 bash scripts/slurm/shard.sbatch " + kSmoke +
-                            " " + out.string() + " 3 2>&1 | grep -q '0 trials run'";
+  const std::string again = in_source +
+                            "SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_COUNT=1 "
+                            "SLURM_ARRAY_TASK_MIN=1 bash scripts/slurm/shard.sbatch " +
+                            kSmoke + " " + out.string() + " 3 2>&1 | grep -q '0 trials run'";
   EXPECT_EQ(std::system(again.c_str()), 0) << again;
   // a task that is not a shard (an array past SHARDS-1) is refused
   const std::string past = in_source + "SLURM_ARRAY_TASK_ID=3 bash scripts/slurm/shard.sbatch " +
-                            kSmoke + " " + out.string() + " 3 > /dev/null 2>&1";
+                           kSmoke + " " + out.string() + " 3 > /dev/null 2>&1";
   EXPECT_NE(std::system(past.c_str()), 0);
-  const std::string merge = in_source + "bash scripts/slurm/merge.sbatch " + out.string() +
-                            " 3 > /dev/null 2>&1";
+  const std::string merge =
+      in_source + "bash scripts/slurm/merge.sbatch " + out.string() + " 3 > /dev/null 2>&1";
   ASSERT_EQ(std::system(merge.c_str()), 0);
   const std::string merged = (out / "sweep.db").string();
   ASSERT_EQ(run_pamsim("export " + merged + " --csv " + merged + ".csv").exit_code, 0);
@@ -261,14 +261,15 @@ TEST_F(ShardedSmokeSweep, SlurmScriptsRunTheShardsAndMergeThem) {
 
 TEST(CliShardTest, MalformedShardsAreRefusedWithOneLine) {
   const fs::path dir = fresh_dir("sweep_bad_shard");
-  for (const char* shard : {"3/3", "-1/3", "1", "0/0", "a/2", "1/b", "1/2x", "/2", "1/",
-                            "0/-2", "1 /2", "99999999999999999999/3"}) {
-    const auto r = run_pamsim("sweep " + kSmoke + " --out " + dir.string() + " --shard '" +
-                              shard + "'");
+  for (const char* shard : {"3/3", "-1/3", "1", "0/0", "a/2", "1/b", "1/2x", "/2", "1/", "0/-2",
+                            "1 /2", "99999999999999999999/3"}) {
+    const auto r =
+        run_pamsim("sweep " + kSmoke + " --out " + dir.string() + " --shard '" + shard + "'");
     EXPECT_EQ(r.exit_code, 2) << shard << ": " << r.err;
     EXPECT_EQ(line_count(r.err), 1) << shard << ": " << r.err;
     EXPECT_NE(r.err.find("--shard must be I/N with 0 <= I < N, got '" + std::string(shard) + "'"),
-              std::string::npos) << r.err;
+              std::string::npos)
+        << r.err;
   }
   EXPECT_TRUE(fs::is_empty(dir));
 }
@@ -276,7 +277,7 @@ TEST(CliShardTest, MalformedShardsAreRefusedWithOneLine) {
 TEST(CliShardTest, AShardKilledMidwayFinishesWithResumeWithoutRepeats) {
   const fs::path dir = fresh_dir("shard_kill");
   const fs::path sweep = interruptible_sweep(dir);
-  const std::int64_t shard_trials = kInterruptibleTrials / 2;   // shard 1/2: the odd trials
+  const std::int64_t shard_trials = kInterruptibleTrials / 2;  // shard 1/2: the odd trials
   const std::string db = (dir / "shard1.db").string();
   const pid_t pid = spawn_sweep(sweep, db, {"--shard", "1/2"});
   ASSERT_GT(pid, 0);
@@ -288,8 +289,10 @@ TEST(CliShardTest, AShardKilledMidwayFinishesWithResumeWithoutRepeats) {
   ASSERT_EQ(::waitpid(pid, nullptr, 0), pid);
   reap.release();
 
-  const auto resumed = run_pamsim("sweep " + sweep.string() + " --threads 2 --resume --shard 1/2 "
-                                  "--db " + db);
+  const auto resumed = run_pamsim("sweep " + sweep.string() +
+                                  " --threads 2 --resume --shard 1/2 "
+                                  "--db " +
+                                  db);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   const std::vector<std::int64_t> trials = trials_in(db);
   ASSERT_EQ(trials.size(), static_cast<std::size_t>(shard_trials));

@@ -55,7 +55,7 @@ TEST_F(CliMpiTest, ThreeRanksExportExactlyWhatOneProcessExports) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("on 2 MPI worker ranks"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("32 trials run"), std::string::npos) << r.err;
-  EXPECT_EQ(r.out, mpi + "\n");   // rank 0 alone reports
+  EXPECT_EQ(r.out, mpi + "\n");  // rank 0 alone reports
   for (const std::string& db : {one, mpi}) {
     ASSERT_EQ(run_pamsim("export " + db + " --csv " + db + ".csv").exit_code, 0);
   }
@@ -92,13 +92,15 @@ TEST_F(CliMpiTest, RanksThatCannotReadTheSweepAreReportedAndTheJobEnds) {
   const fs::path dir = fresh_dir("mpi_unreadable");
   const std::string elsewhere = dir.string();
   for (const char* lost : {"2", "1|2"}) {
-    const std::string db = (dir / (std::string(lost) == "2" ? "one_lost.db" : "all_lost.db")).string();
+    const std::string db =
+        (dir / (std::string(lost) == "2" ? "one_lost.db" : "all_lost.db")).string();
     // every rank starts in the source folder; the lost ones move away before running pamsim
     const std::string rank_cmd = std::string("sh -c 'case $OMPI_COMM_WORLD_RANK in ") + lost +
                                  ") cd " + elsewhere + ";; esac; exec " + PAMSIM_BINARY +
                                  " sweep scenarios/sweep_smoke.toml --threads 1 --db " + db + "'";
-    const std::string cmd = std::string("cd ") + PAMSIM_SOURCE_DIR + " && " + kMpiEnv + "timeout 120 " + kMpiLaunch +
-                            " " + rank_cmd + " > " + db + ".out 2> " + db + ".err";
+    const std::string cmd = std::string("cd ") + PAMSIM_SOURCE_DIR + " && " + kMpiEnv +
+                            "timeout 120 " + kMpiLaunch + " " + rank_cmd + " > " + db + ".out 2> " +
+                            db + ".err";
     const int status = std::system(cmd.c_str());
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     const std::string err = read_file(db + ".err");
@@ -111,7 +113,8 @@ TEST_F(CliMpiTest, RanksThatCannotReadTheSweepAreReportedAndTheJobEnds) {
     } else {
       EXPECT_EQ(code, 1) << err;
       EXPECT_NE(err.find("pamsim: error: 2 of 2 worker ranks ran no trials (rank "),
-                std::string::npos) << err;
+                std::string::npos)
+          << err;
       EXPECT_NE(err.find("0 of 32 trials stored; finish with: pamsim sweep "), std::string::npos)
           << err;
     }
@@ -127,7 +130,8 @@ pid_t rank_pid(const std::string& marker, int rank) {
     const std::string exe = read_file(entry.path() / "cmdline");
     if (exe.rfind(PAMSIM_BINARY, 0) != 0) continue;
     if (env.find(marker + '\0') == std::string::npos) continue;
-    if (env.find("OMPI_COMM_WORLD_RANK=" + std::to_string(rank) + '\0') == std::string::npos) continue;
+    if (env.find("OMPI_COMM_WORLD_RANK=" + std::to_string(rank) + '\0') == std::string::npos)
+      continue;
     return static_cast<pid_t>(std::stol(name));
   }
   return -1;
@@ -135,7 +139,7 @@ pid_t rank_pid(const std::string& marker, int rank) {
 
 TEST_F(CliMpiTest, AKilledRankEndsTheJobAndResumeFinishesWithoutRepeats) {
   const fs::path dir = fresh_dir("mpi_kill");
-  const fs::path sweep = interruptible_sweep(dir, 30);   // 360 trials, one thread per worker
+  const fs::path sweep = interruptible_sweep(dir, 30);  // 360 trials, one thread per worker
   const std::int64_t total = 3 * 4 * 30;
   const std::string ref = (dir / "ref.db").string(), db = (dir / "killed.db").string();
   ASSERT_EQ(run_pamsim("sweep " + sweep.string() + " --threads 2 --db " + ref).exit_code, 0);
@@ -159,16 +163,16 @@ TEST_F(CliMpiTest, AKilledRankEndsTheJobAndResumeFinishesWithoutRepeats) {
   ASSERT_EQ(::waitpid(job, &status, 0), job);
   reap.release();
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0) << read_file(db + ".log");
-  EXPECT_NE(read_file(db + ".log").find("rank 1"), std::string::npos)   // mpirun names it
+  EXPECT_NE(read_file(db + ".log").find("rank 1"), std::string::npos)  // mpirun names it
       << read_file(db + ".log");
   const std::int64_t kept = pamsim::ResultsDb::open_existing(db).trial_count();
   EXPECT_GE(kept, total / 6);
-  EXPECT_LT(kept, total);   // what rank 1 held is lost for this run
+  EXPECT_LT(kept, total);  // what rank 1 held is lost for this run
 
   const auto resumed = run_pamsim("sweep " + sweep.string() + " --resume --db " + db, kMpirun);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
-  EXPECT_NE(resumed.err.find(std::to_string(total - kept) + " trials run"),
-            std::string::npos) << resumed.err;
+  EXPECT_NE(resumed.err.find(std::to_string(total - kept) + " trials run"), std::string::npos)
+      << resumed.err;
   ASSERT_EQ(run_pamsim("export " + db + " --csv " + db + ".csv").exit_code, 0);
   EXPECT_EQ(read_file(db + ".csv"), read_file(ref + ".csv"));
 }

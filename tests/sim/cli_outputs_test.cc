@@ -16,13 +16,12 @@ namespace {
 namespace fs = std::filesystem;
 using pamsim_test::CliResult;
 using pamsim_test::fresh_dir;
+using pamsim_test::kShortDrop;
 using pamsim_test::line_count;
 using pamsim_test::read_file;
 using pamsim_test::run_pamsim;
-using pamsim_test::kShortDrop;
 
 nlohmann::json json_file(const fs::path& path) { return nlohmann::json::parse(read_file(path)); }
-
 
 // Every command that writes a file or a folder of its own refuses to replace an earlier one
 // without --force (one line, exit 2, the file untouched), and replaces it with --force.
@@ -37,9 +36,12 @@ TEST(CliReproduceTest, EveryCommandReplacesAnOutputOnlyWithForce) {
   const std::string models = std::string(PAMSIM_SOURCE_DIR) + "/models/pams/";
   const std::string db = (dir / "sweep.db").string();
   ASSERT_EQ(run_pamsim("sweep scenarios/sweep_smoke.toml --db " + db + " --out " + dir.string())
-                .exit_code, 0);
+                .exit_code,
+            0);
   ASSERT_EQ(run_pamsim("tensile --params " + models + "table4_agonist.toml -o " +
-                       (dir / "t.csv").string()).exit_code, 0);
+                       (dir / "t.csv").string())
+                .exit_code,
+            0);
   // folders that hold an earlier run's file
   existing("frames/frame_00000.png");
   existing("val/table5.csv");
@@ -49,8 +51,7 @@ TEST(CliReproduceTest, EveryCommandReplacesAnOutputOnlyWithForce) {
     fs::path output;
   };
   const std::vector<Case> cases = {
-      {"tensile --params " + models + "table4_agonist.toml -o " + existing("a.csv"),
-       dir / "a.csv"},
+      {"tensile --params " + models + "table4_agonist.toml -o " + existing("a.csv"), dir / "a.csv"},
       {"fit --model eq3 " + (dir / "t.csv").string() + " -o " + existing("f.toml"), dir / "f.toml"},
       {"export " + db + " -o " + existing("e.csv"), dir / "e.csv"},
       {"export " + db + " --csv " + existing("e2.csv"), dir / "e2.csv"},
@@ -59,7 +60,8 @@ TEST(CliReproduceTest, EveryCommandReplacesAnOutputOnlyWithForce) {
            (dir / "new.mp4").string(),
        dir / "frames/frame_00000.png"},
       {"run scenarios/drop_mass.toml --out " + (dir / "r").string() + " --video " +
-           existing("r.mp4"), dir / "r.mp4"},
+           existing("r.mp4"),
+       dir / "r.mp4"},
       {"calibrate scenarios/drop_mass_passive.toml -o " + existing("c.toml"), dir / "c.toml"},
       {"validate reaching --out " + (dir / "val").string(), dir / "val/table5.csv"},
       {"report " + db + " --out " + (dir / "rep").string(), dir / "rep/points.csv"},
@@ -84,8 +86,10 @@ TEST(CliReproduceTest, AReportWithNoPlotDrawsNoHeatMaps) {
   const fs::path dir = fresh_dir("reproduce_no_plot_report");
   const std::string db = (dir / "sweep.db").string();
   ASSERT_EQ(run_pamsim("sweep scenarios/sweep_smoke.toml --db " + db + " --out " + dir.string())
-                .exit_code, 0);
-  const CliResult report = run_pamsim("report " + db + " --no-plot --out " + (dir / "rep2").string());
+                .exit_code,
+            0);
+  const CliResult report =
+      run_pamsim("report " + db + " --no-plot --out " + (dir / "rep2").string());
   ASSERT_EQ(report.exit_code, 0) << report.err;
   EXPECT_TRUE(fs::exists(dir / "rep2" / "points.csv"));
   EXPECT_EQ(json_file(dir / "rep2" / "provenance.json")["from"], db);
@@ -94,11 +98,9 @@ TEST(CliReproduceTest, AReportWithNoPlotDrawsNoHeatMaps) {
   }
 }
 
-
 TEST(CliReproduceTest, PlotsComeAsSvgOrPdfBesideThePng) {
   const fs::path dir = fresh_dir("reproduce_plot_format");
-  const std::string run =
-      "run scenarios/drop_mass.toml --out " + (dir / "a").string() + kShortDrop;
+  const std::string run = "run scenarios/drop_mass.toml --out " + (dir / "a").string() + kShortDrop;
   const CliResult both = run_pamsim(run + " --plot-format svg,pdf");
   ASSERT_EQ(both.exit_code, 0) << both.err;
   for (const char* f : {"angle.png", "angle.svg", "angle.pdf"}) {
@@ -120,24 +122,26 @@ TEST(CliReproduceTest, PlotsComeAsSvgOrPdfBesideThePng) {
   }
 }
 
-
 // "-" is standard output for a file argument and standard input for an input file: a
 // tensile test piped into a fit gives the fit of the file; a scenario read from stdin runs
 // as the file does (its paths relative to the current folder).
 TEST(CliReproduceTest, DashIsStandardInputAndOutput) {
   const fs::path dir = fresh_dir("reproduce_dash");
-  const std::string tensile = "tensile --params models/pams/table4_agonist.toml --seed 3 "
-                              "--noise-force-N 0.2 -o ";
+  const std::string tensile =
+      "tensile --params models/pams/table4_agonist.toml --seed 3 "
+      "--noise-force-N 0.2 -o ";
   ASSERT_EQ(run_pamsim(tensile + (dir / "t.csv").string()).exit_code, 0);
-  const CliResult piped = run_pamsim(tensile + "- | " + std::string(PAMSIM_BINARY) +
-                                     " fit --model eq3 - -o -");
+  const CliResult piped =
+      run_pamsim(tensile + "- | " + std::string(PAMSIM_BINARY) + " fit --model eq3 - -o -");
   ASSERT_EQ(piped.exit_code, 0) << piped.err;
   const CliResult from_file = run_pamsim("fit --model eq3 " + (dir / "t.csv").string() + " -o " +
                                          (dir / "f.toml").string());
   ASSERT_EQ(from_file.exit_code, 0) << from_file.err;
   // the same parameters (the source line names the input)
   const std::string file = read_file(dir / "f.toml");
-  const auto coefficients = [](const std::string& toml) { return toml.substr(toml.find("[spring]")); };
+  const auto coefficients = [](const std::string& toml) {
+    return toml.substr(toml.find("[spring]"));
+  };
   EXPECT_EQ(coefficients(piped.out), coefficients(file));
   EXPECT_NE(piped.err.find("fitted to -"), std::string::npos) << "the table goes to stderr";
   // two things on stdout are refused
@@ -145,9 +149,9 @@ TEST(CliReproduceTest, DashIsStandardInputAndOutput) {
   EXPECT_EQ(both.exit_code, 2);
   EXPECT_EQ(line_count(both.err), 1) << both.err;
 
-  const CliResult stdin_run = run_pamsim(
-      "run - --no-plot --out " + (dir / "s").string() + kShortDrop + " < drop_mass.toml",
-      "cd scenarios &&");
+  const CliResult stdin_run =
+      run_pamsim("run - --no-plot --out " + (dir / "s").string() + kShortDrop + " < drop_mass.toml",
+                 "cd scenarios &&");
   ASSERT_EQ(stdin_run.exit_code, 0) << stdin_run.err;
   const CliResult file_run = run_pamsim("run scenarios/drop_mass.toml --no-plot --out " +
                                         (dir / "f").string() + kShortDrop);

@@ -48,19 +48,18 @@ TEST(CliPlantTest, CommittedFittedEstimatorsAreWhatThePipelineWrites) {
   const std::string cmd = std::string("bash ") + PAMSIM_SOURCE_DIR + "/scripts/fit-estimators.sh " +
                           PAMSIM_BINARY + " " + out.string() + " > /dev/null 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  for (const char* m : {"agonist", "antagonist", "leg/IL", "leg/GM", "leg/RF", "leg/VAS",
-                        "leg/BFS", "leg/GAS", "leg/SOL", "leg/TA", "table1/agonist",
-                        "table1/antagonist"}) {
+  for (const char* m : {"agonist", "antagonist", "leg/IL", "leg/GM", "leg/RF", "leg/VAS", "leg/BFS",
+                        "leg/GAS", "leg/SOL", "leg/TA", "table1/agonist", "table1/antagonist"}) {
     SCOPED_TRACE(m);
     // "leg/IL" -> leg/fitted_IL.toml
     std::string name = m;
     const std::size_t slash = name.find('/');
-    const std::string file = slash == std::string::npos
-                                 ? "fitted_" + name + ".toml"
-                                 : name.substr(0, slash + 1) + "fitted_" + name.substr(slash + 1) + ".toml";
+    const std::string file = slash == std::string::npos ? "fitted_" + name + ".toml"
+                                                        : name.substr(0, slash + 1) + "fitted_" +
+                                                              name.substr(slash + 1) + ".toml";
     std::istringstream fresh(pamsim_test::read_file(out / file));
-    std::istringstream shipped(pamsim_test::read_file(std::string(PAMSIM_SOURCE_DIR) +
-                                                      "/models/pams/" + file));
+    std::istringstream shipped(
+        pamsim_test::read_file(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/" + file));
     std::string a, b;
     int lines = 0;
     while (std::getline(fresh, a)) {
@@ -86,8 +85,8 @@ TEST(CliPlantTest, TensileTestThenFitGivesTheEstimatorItsTableIIIAccuracy) {
                  fitted);
   ASSERT_EQ(r.exit_code, 0) << r.err;
 
-  r = run_pamsim("run scenarios/pulley_sine_5kg.toml --set sim.duration_s=10" + plant +
-                 " --out " + (dir / "table4").string());
+  r = run_pamsim("run scenarios/pulley_sine_5kg.toml --set sim.duration_s=10" + plant + " --out " +
+                 (dir / "table4").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   r = run_pamsim("run scenarios/pulley_sine_5kg.toml --set sim.duration_s=10" + plant +
                  " --set 'muscles.pam.params=\"" + fitted + "\"' --out " + (dir / "fit").string());
@@ -109,12 +108,14 @@ TEST(CliPlantTest, CalibrateWithPlantsHoldsTheArmAtItsStartAngle) {
   const std::string plants =
       " --set 'muscles.agonist.plant=\"../models/pams/plant_agonist.toml\"'"
       " --set 'muscles.antagonist.plant=\"../models/pams/plant_agonist.toml\"'";
-  CliResult r = run_pamsim("calibrate scenarios/drop_mass_passive.toml" + plants + " -o " +
-                           calibration);
+  CliResult r =
+      run_pamsim("calibrate scenarios/drop_mass_passive.toml" + plants + " -o " + calibration);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  r = run_pamsim("run scenarios/drop_mass_passive.toml" + plants +
-                 " --set 'model.calibration=\"" + calibration + "\"' --set drop.enabled=false"
-                 " --set sim.duration_s=2 --out " + (dir / "rest").string());
+  r = run_pamsim("run scenarios/drop_mass_passive.toml" + plants + " --set 'model.calibration=\"" +
+                 calibration +
+                 "\"' --set drop.enabled=false"
+                 " --set sim.duration_s=2 --out " +
+                 (dir / "rest").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::ifstream in(dir / "rest" / "summary.json");
   const nlohmann::json s = nlohmann::json::parse(in);
@@ -130,12 +131,13 @@ TEST(CliPlantTest, BadPipelineInputIsOneLineAndExit2) {
   const std::string out = (dir / "x.csv").string();
   for (const std::string& args : std::vector<std::string>{
            "tensile -o " + out,
-        "tensile --params models/pams/table4_agonist.toml --plant models/pams/plant_agonist.toml"
-        " -o " + out,
-        "tensile --plant models/pams/missing.toml -o " + out,
-        "tensile --plant models/pams/table4_agonist.toml -o " + out,
-        // beyond the plant's fibre length: refused, not NaN rows
-        "tensile --plant models/pams/plant_agonist.toml --max-deformation-mm 60 -o " + out}) {
+           "tensile --params models/pams/table4_agonist.toml --plant models/pams/plant_agonist.toml"
+           " -o " +
+               out,
+           "tensile --plant models/pams/missing.toml -o " + out,
+           "tensile --plant models/pams/table4_agonist.toml -o " + out,
+           // beyond the plant's fibre length: refused, not NaN rows
+           "tensile --plant models/pams/plant_agonist.toml --max-deformation-mm 60 -o " + out}) {
     const CliResult r = run_pamsim(args);
     EXPECT_EQ(r.exit_code, 2) << args;
     EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
@@ -143,17 +145,18 @@ TEST(CliPlantTest, BadPipelineInputIsOneLineAndExit2) {
   }
   ASSERT_EQ(run_pamsim("tensile --plant models/pams/plant_agonist.toml -o " + out).exit_code, 0);
   const std::string fitted = (dir / "f.toml").string();
-  const CliResult r =
-      run_pamsim("fit --model eq3 " + out + " --sensors-from models/pams/missing.toml -o " + fitted);
+  const CliResult r = run_pamsim("fit --model eq3 " + out +
+                                 " --sensors-from models/pams/missing.toml -o " + fitted);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(line_count(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("missing.toml"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(fitted));
   // a sensors file without the gauge calibration, or nowhere to write it: refused
   const std::string no_gauge = (dir / "no_gauge.toml").string();
-  pamsim_test::write_text(no_gauge, "name = \"x\"\n[spring]\nlaw = \"eq3\"\nunits = { pressure = "
-                                    "\"MPa\", length = \"mm\", force = \"N\" }\nm = -60.0\n"
-                                    "h = 170.0\na0 = 1.0\na1 = 0.0\na2 = 7.0\na3 = 0.0\n");
+  pamsim_test::write_text(no_gauge,
+                          "name = \"x\"\n[spring]\nlaw = \"eq3\"\nunits = { pressure = "
+                          "\"MPa\", length = \"mm\", force = \"N\" }\nm = -60.0\n"
+                          "h = 170.0\na0 = 1.0\na1 = 0.0\na2 = 7.0\na3 = 0.0\n");
   for (const std::string& args :
        {"fit --model eq3 " + out + " --sensors-from " + no_gauge + " -o " + fitted,
         "fit --model eq3 " + out + " --sensors-from models/pams/table4_agonist.toml"}) {
@@ -180,8 +183,10 @@ TEST(CliPlantTest, TensileSetChangesAPlantFieldAsEditingTheFileWould) {
   text.replace(text.find(field), field.size(), "wall_thickness_mm = 1.5");
   const std::string edited_plant = (dir / "plant.toml").string();
   pamsim_test::write_text(edited_plant, text);
-  ASSERT_EQ(run_pamsim("tensile --plant " + plant + " --set geometry.wall_thickness_mm=1.5 -o " +
-                       set).exit_code, 0);
+  ASSERT_EQ(
+      run_pamsim("tensile --plant " + plant + " --set geometry.wall_thickness_mm=1.5 -o " + set)
+          .exit_code,
+      0);
   ASSERT_EQ(run_pamsim("tensile --plant " + edited_plant + " -o " + edited).exit_code, 0);
   ASSERT_EQ(run_pamsim("tensile --plant " + plant + " -o " + original).exit_code, 0);
   EXPECT_EQ(pamsim_test::read_file(set), pamsim_test::read_file(edited));

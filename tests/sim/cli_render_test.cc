@@ -28,8 +28,8 @@ using pamsim_test::run_pamsim;
 class CliRenderTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    for (const char* var : {"DISPLAY", "PAMSIM_GL_BACKEND", "MUJOCO_GL", "EGL_DEVICE_ID",
-                            "MUJOCO_EGL_DEVICE_ID"}) {
+    for (const char* var :
+         {"DISPLAY", "PAMSIM_GL_BACKEND", "MUJOCO_GL", "EGL_DEVICE_ID", "MUJOCO_EGL_DEVICE_ID"}) {
       ::unsetenv(var);
     }
   }
@@ -96,16 +96,17 @@ TEST_F(CliRenderTest, VideoDoesNotChangeTheTrial) {
 TEST_F(CliRenderTest, DashStreamsTheVideoToStandardOutput) {
   const fs::path dir = fresh_dir("render_stdout");
   const fs::path piped = dir / "piped.mp4";
-  const CliResult r = run_pamsim("render scenarios/drop_mass.toml --quiet --width 160 --height 120 "
-                                 "--quality fast --set sim.duration_s=0.5 drop.time_s=0.2 -o -",
-                                 "bash -c '\"$0\" \"$@\" > " + piped.string() + "'");
+  const CliResult r = run_pamsim(
+      "render scenarios/drop_mass.toml --quiet --width 160 --height 120 "
+      "--quality fast --set sim.duration_s=0.5 drop.time_s=0.2 -o -",
+      "bash -c '\"$0\" \"$@\" > " + piped.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto video = decode_video(piped.string());
   EXPECT_EQ(video.frames, 15);
   EXPECT_EQ(video.width, 160);
-  expect_exactly(dir, {"piped.mp4"});   // no temp file, nothing named "-"
-  const CliResult run = run_pamsim("run scenarios/drop_mass.toml --video - --out " +
-                                   (dir / "r").string());
+  expect_exactly(dir, {"piped.mp4"});  // no temp file, nothing named "-"
+  const CliResult run =
+      run_pamsim("run scenarios/drop_mass.toml --video - --out " + (dir / "r").string());
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(line_count(run.err), 1) << run.err;
 }
@@ -117,9 +118,10 @@ TEST_F(CliRenderTest, PresetChoosesTheEncodersTradeOff) {
   const char* presets[2] = {"ultrafast", "veryslow"};
   for (int i = 0; i < 2; ++i) {
     const fs::path mp4 = dir / (std::string(presets[i]) + ".mp4");
-    const CliResult r = run_pamsim("render scenarios/drop_mass.toml --quiet --width 320 --height 240 "
-                                   "--set sim.duration_s=0.5 drop.time_s=0.2 --preset " +
-                                   std::string(presets[i]) + " -o " + mp4.string());
+    const CliResult r = run_pamsim(
+        "render scenarios/drop_mass.toml --quiet --width 320 --height 240 "
+        "--set sim.duration_s=0.5 drop.time_s=0.2 --preset " +
+        std::string(presets[i]) + " -o " + mp4.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(decode_video(mp4.string()).frames, 15);
     bytes[i] = fs::file_size(mp4);
@@ -134,7 +136,7 @@ TEST_F(CliRenderTest, EglAndOsmesaDrawTheSameFrames) {
       "--width 320 --height 180 --fps 10 --quality fast --plot --png-dir ";
   const CliResult osmesa = run_pamsim(common + (dir / "osmesa").string() + " --backend osmesa");
   ASSERT_EQ(osmesa.exit_code, 0) << osmesa.err;
-  ::setenv("PAMSIM_GL_BACKEND", "egl", 1);   // the environment picks the backend too
+  ::setenv("PAMSIM_GL_BACKEND", "egl", 1);  // the environment picks the backend too
   const CliResult egl = run_pamsim(common + (dir / "egl").string());
   ASSERT_EQ(egl.exit_code, 0) << egl.err;
   EXPECT_NE(egl.err.find("egl"), std::string::npos) << egl.err;
@@ -179,9 +181,10 @@ TEST_F(CliRenderTest, EglDeviceIsChosenNamedAndDrawsTheSameFramesEveryRun) {
   const CliResult any = run_pamsim(common + (dir / "any").string() + " --backend egl");
   ASSERT_EQ(any.exit_code, 0) << any.err;
   EXPECT_EQ(gl_line(any.err).rfind("pamsim: GL: egl ", 0), 0u) << any.err;
-  if (gl_line(any.err).rfind("pamsim: GL: egl surfaceless", 0) == 0) {   // says why no device
+  if (gl_line(any.err).rfind("pamsim: GL: egl surfaceless", 0) == 0) {  // says why no device
     EXPECT_NE(gl_line(any.err).find("egl surfaceless (no GPU device: EGL lists "),
-              std::string::npos) << any.err;
+              std::string::npos)
+        << any.err;
   }
 }
 
@@ -201,7 +204,8 @@ TEST_F(CliRenderTest, EglWithoutADriverFallsBackToOsmesaAndSaysWhy) {
   EXPECT_EQ(named.exit_code, 2) << named.err;
   EXPECT_EQ(line_count(named.err), 1) << named.err;
   EXPECT_NE(named.err.find("--gpu 0: no such EGL device; the devices here: none"),
-            std::string::npos) << named.err;
+            std::string::npos)
+      << named.err;
   EXPECT_FALSE(fs::exists(dir / "named"));
 }
 
@@ -218,14 +222,14 @@ TEST_F(CliRenderTest, BadInputIsOneLineNonZeroAndLeavesNothing) {
   xml.replace(xml.find("name=\"side\""), 11, "name=\"back\"");
   pamsim_test::write_text(no_side, xml);
   const std::vector<std::string> cases = {
-      render + "-o /proc/pamsim_no_such/v.mp4",                 // unwritable
-      render + "-o " + (blocker / "v.mp4").string(),            // parent is a file
-      render + "-o " + (dir / "v.avi").string(),                // not .mp4
+      render + "-o /proc/pamsim_no_such/v.mp4",       // unwritable
+      render + "-o " + (blocker / "v.mp4").string(),  // parent is a file
+      render + "-o " + (dir / "v.avi").string(),      // not .mp4
       render + "-o " + mp4 + " --width 0",
       render + "-o " + mp4 + " --height 0",
       render + "-o " + mp4 + " --width 100000",
       render + "-o " + mp4 + " --height 100000",
-      render + "-o " + mp4 + " --width 641",                    // odd: 4:2:0 needs even
+      render + "-o " + mp4 + " --width 641",  // odd: 4:2:0 needs even
       render + "-o " + mp4 + " --fps 0",
       render + "-o " + mp4 + " --fps -5",
       render + "-o " + mp4 + " --fps 1000",
@@ -234,16 +238,16 @@ TEST_F(CliRenderTest, BadInputIsOneLineNonZeroAndLeavesNothing) {
       render + "-o " + mp4 + " --preset turbo",
       render + "-o " + mp4 + " --camera top",
       render + "-o " + mp4 + " --backend vulkan",
-      render + "-o " + mp4 + " --backend egl --gpu 99",           // no such EGL device
+      render + "-o " + mp4 + " --backend egl --gpu 99",  // no such EGL device
       render + "-o " + mp4 + " --backend egl --gpu -3",
-      render + "-o " + mp4 + " --gpu 0",                          // a device, but osmesa
+      render + "-o " + mp4 + " --gpu 0",  // a device, but osmesa
       "render scenarios/missing.toml -o " + mp4,
-      render + "--png-dir " + dir.string(),                     // holds other files
+      render + "--png-dir " + dir.string(),  // holds other files
       "run scenarios/drop_mass.toml --trials 2 --video " + mp4 + " --out " + (dir / "o").string(),
       "run scenarios/drop_mass.toml --video " + (dir / "v.mov").string() + " --out " +
           (dir / "o").string(),
       "run scenarios/drop_mass.toml --set model.file=\\\"" + no_side.string() + "\\\" --video " +
-          mp4 + " --out " + (dir / "o").string(),               // no camera: no output folder
+          mp4 + " --out " + (dir / "o").string(),  // no camera: no output folder
   };
   for (const std::string& args : cases) {
     const CliResult r = run_pamsim(args);
@@ -255,8 +259,7 @@ TEST_F(CliRenderTest, BadInputIsOneLineNonZeroAndLeavesNothing) {
 
   // the unknown camera's message lists the model's cameras; the environment is checked too
   const CliResult camera = run_pamsim(render + "-o " + mp4 + " --camera top");
-  EXPECT_NE(camera.err.find("(the model's cameras: side, wide)"), std::string::npos)
-      << camera.err;
+  EXPECT_NE(camera.err.find("(the model's cameras: side, wide)"), std::string::npos) << camera.err;
   ::setenv("PAMSIM_GL_BACKEND", "vulkan", 1);
   const CliResult env = run_pamsim(render + "-o " + mp4);
   EXPECT_EQ(env.exit_code, 2);

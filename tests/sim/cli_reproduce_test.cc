@@ -35,18 +35,19 @@ TEST(CliReproduceTest, ARunFromItsFolderWritesByteIdenticalOutputs) {
   for (const int trials : {1, 2}) {
     const fs::path a = dir / ("a" + std::to_string(trials));
     const fs::path b = dir / ("b" + std::to_string(trials));
-    const CliResult first = run_pamsim("run scenarios/drop_mass.toml --no-plot --trials " +
-                                       std::to_string(trials) + " --out " + a.string() + kShort +
-                                       " reflex.v_thr_mm_s=55");
+    const CliResult first =
+        run_pamsim("run scenarios/drop_mass.toml --no-plot --trials " + std::to_string(trials) +
+                   " --out " + a.string() + kShort + " reflex.v_thr_mm_s=55");
     ASSERT_EQ(first.exit_code, 0) << first.err;
-    const CliResult again = run_pamsim("run --from " + a.string() + " --no-plot --out " + b.string());
+    const CliResult again =
+        run_pamsim("run --from " + a.string() + " --no-plot --out " + b.string());
     ASSERT_EQ(again.exit_code, 0) << again.err;
-    EXPECT_EQ(again.out, first.out);   // the summary printed
+    EXPECT_EQ(again.out, first.out);  // the summary printed
     const std::vector<std::string> files =
         trials == 1 ? std::vector<std::string>{"trajectory.csv", "summary.json"}
-                    : std::vector<std::string>{"summary.json", "trial_0000/trajectory.csv",
-                                               "trial_0000/summary.json", "trial_0001/trajectory.csv",
-                                               "trial_0001/summary.json"};
+                    : std::vector<std::string>{
+                          "summary.json", "trial_0000/trajectory.csv", "trial_0000/summary.json",
+                          "trial_0001/trajectory.csv", "trial_0001/summary.json"};
     for (const std::string& f : files) {
       ASSERT_TRUE(fs::exists(a / f)) << f;
       EXPECT_EQ(read_file(a / f), read_file(b / f)) << f << " of " << trials << " trial(s)";
@@ -76,8 +77,9 @@ TEST(CliReproduceTest, AnInputChangedSinceTheRunIsNamedWhenItRunsAgain) {
   fs::copy_file(calibration, dir / "cal.toml");
   const std::string own = pamsim_test::scenario_variant(dir, "drop_mass.toml", calibration,
                                                         (dir / "cal.toml").string());
-  ASSERT_EQ(run_pamsim("run " + own + " --no-plot --out " + (dir / "own").string() + kShort)
-                .exit_code, 0);
+  ASSERT_EQ(
+      run_pamsim("run " + own + " --no-plot --out " + (dir / "own").string() + kShort).exit_code,
+      0);
   const nlohmann::json inputs = json_of(dir / "own" / "provenance.json")["inputs"];
   std::set<std::string> keys;
   for (const auto& f : inputs) keys.insert(f["key"].get<std::string>());
@@ -85,17 +87,19 @@ TEST(CliReproduceTest, AnInputChangedSinceTheRunIsNamedWhenItRunsAgain) {
   EXPECT_EQ(run_pamsim("run --from " + (dir / "own").string() + " --no-plot").err.find("changed"),
             std::string::npos);
   pamsim_test::write_text(dir / "cal.toml", read_file(dir / "cal.toml") + "# edited\n");
-  const CliResult changed = run_pamsim("run --from " + (dir / "own").string() +
-                                       " --no-plot --force");
+  const CliResult changed =
+      run_pamsim("run --from " + (dir / "own").string() + " --no-plot --force");
   EXPECT_EQ(changed.exit_code, 0) << changed.err;
   EXPECT_NE(changed.err.find("model.calibration (" + (dir / "cal.toml").string() + ") changed"),
-            std::string::npos) << changed.err;
+            std::string::npos)
+      << changed.err;
 
   // an input path that is no file (a hand-edited provenance.json) is named, not read
   nlohmann::json edited = json_of(dir / "own" / "provenance.json");
   edited["inputs"][0]["path"] = "/dev/zero";
   pamsim_test::write_text(dir / "own" / "provenance.json", edited.dump(2));
-  const CliResult device = run_pamsim("run --from " + (dir / "own").string() + " --no-plot --force");
+  const CliResult device =
+      run_pamsim("run --from " + (dir / "own").string() + " --no-plot --force");
   EXPECT_EQ(device.exit_code, 0) << device.err;
   EXPECT_NE(device.err.find("(/dev/zero) is gone or not a readable file"), std::string::npos)
       << device.err;
@@ -116,8 +120,9 @@ TEST(CliReproduceTest, BadFromFoldersAreRefused) {
 
 TEST(CliReproduceTest, ProvenanceRecordsWhatMadeTheRun) {
   const fs::path out = fresh_dir("reproduce_provenance") / "run";
-  const CliResult r = run_pamsim("run scenarios/drop_mass.toml --no-plot --trials 3 --threads 2 --out " +
-                                 out.string() + kShort);
+  const CliResult r =
+      run_pamsim("run scenarios/drop_mass.toml --no-plot --trials 3 --threads 2 --out " +
+                 out.string() + kShort);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json p = json_of(out / "provenance.json");
   EXPECT_EQ(p["format"], "pamsim-provenance-1");
@@ -143,7 +148,8 @@ TEST(CliReproduceTest, ProvenanceRecordsWhatMadeTheRun) {
 
 TEST(CliReproduceTest, AnEarlierRunsOutputsAreReplacedOnlyWithForce) {
   const fs::path dir = fresh_dir("reproduce_force");
-  const std::string run = "run scenarios/drop_mass.toml --no-plot --out " + (dir / "out").string() + kShort;
+  const std::string run =
+      "run scenarios/drop_mass.toml --no-plot --out " + (dir / "out").string() + kShort;
   ASSERT_EQ(run_pamsim(run).exit_code, 0);
   pamsim_test::write_text(dir / "out" / "notes.txt", "the user's own file");
   const auto before = pamsim_test::folder_snapshot(dir);
@@ -175,14 +181,15 @@ TEST(CliReproduceTest, TheDefaultFolderNamesTheScenarioAndTheOverrides) {
 
 TEST(CliReproduceTest, NoPlotAndNoGnuplotStillRun) {
   const fs::path dir = fresh_dir("reproduce_no_plot");
-  const CliResult quiet = run_pamsim("run scenarios/drop_mass.toml --no-plot --out " +
-                                     (dir / "a").string() + kShort);
+  const CliResult quiet =
+      run_pamsim("run scenarios/drop_mass.toml --no-plot --out " + (dir / "a").string() + kShort);
   ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
   EXPECT_FALSE(fs::exists(dir / "a" / "angle.png"));
   EXPECT_EQ(quiet.err.find("gnuplot"), std::string::npos) << quiet.err;
   // no gnuplot on PATH: the run succeeds and says the plots were skipped
-  const CliResult without = run_pamsim("run scenarios/drop_mass.toml --out " + (dir / "b").string() +
-                                       kShort, "env PATH=" + dir.string());
+  const CliResult without =
+      run_pamsim("run scenarios/drop_mass.toml --out " + (dir / "b").string() + kShort,
+                 "env PATH=" + dir.string());
   ASSERT_EQ(without.exit_code, 0) << without.err;
   EXPECT_TRUE(fs::exists(dir / "b" / "trajectory.csv"));
   EXPECT_FALSE(fs::exists(dir / "b" / "angle.png"));
@@ -212,7 +219,8 @@ TEST(CliReproduceTest, AReplayedSweepTrialEqualsItsStoredRow) {
   const fs::path dir = fresh_dir("reproduce_replay");
   const std::string db = (dir / "sweep.db").string();
   ASSERT_EQ(run_pamsim("sweep scenarios/sweep_smoke.toml --db " + db + " --out " + dir.string())
-                .exit_code, 0);
+                .exit_code,
+            0);
   const CliResult exported = run_pamsim("export " + db + " --csv -");
   ASSERT_EQ(exported.exit_code, 0) << exported.err;
   // the stored row of trial 13 (point 6, seed 2), by column name
@@ -230,7 +238,8 @@ TEST(CliReproduceTest, AReplayedSweepTrialEqualsItsStoredRow) {
   }
 
   const fs::path out = dir / "trial_13";
-  const CliResult replay = run_pamsim("replay " + db + " --trial 13 --no-plot --out " + out.string());
+  const CliResult replay =
+      run_pamsim("replay " + db + " --trial 13 --no-plot --out " + out.string());
   ASSERT_EQ(replay.exit_code, 0) << replay.err;
   EXPECT_NE(replay.err.find("the replay equals the stored trial"), std::string::npos) << replay.err;
   const nlohmann::json summary = json_of(out / "summary.json");
@@ -244,15 +253,15 @@ TEST(CliReproduceTest, AReplayedSweepTrialEqualsItsStoredRow) {
   EXPECT_GE(compared, 10);
   // its full time series, and a folder that reruns
   EXPECT_GT(line_count(read_file(out / "trajectory.csv")), 100);
-  const CliResult rerun = run_pamsim("run --from " + out.string() + " --no-plot --out " +
-                                     (dir / "rerun").string());
+  const CliResult rerun =
+      run_pamsim("run --from " + out.string() + " --no-plot --out " + (dir / "rerun").string());
   ASSERT_EQ(rerun.exit_code, 0) << rerun.err;
   EXPECT_EQ(read_file(dir / "rerun" / "trajectory.csv"), read_file(out / "trajectory.csv"));
 
   // bad input: one line, exit 2
-  for (const std::string& args : {"replay " + db + " --trial 999", "replay " + db + " --trial -1",
-                                  "replay " + (dir / "none.db").string() + " --trial 0",
-                                  "replay " + db}) {
+  for (const std::string& args :
+       {"replay " + db + " --trial 999", "replay " + db + " --trial -1",
+        "replay " + (dir / "none.db").string() + " --trial 0", "replay " + db}) {
     const CliResult bad = run_pamsim(args);
     EXPECT_EQ(bad.exit_code, 2) << args;
     EXPECT_EQ(line_count(bad.err), 1) << args << ": " << bad.err;

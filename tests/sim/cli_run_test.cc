@@ -26,8 +26,8 @@ using pamsim_test::run_pamsim;
 
 TEST(CliRunTest, RunWritesTrajectorySummaryAndPlot) {
   const fs::path out = fresh_dir("run_ok");
-  const CliResult r = run_pamsim("run scenarios/drop_mass.toml --set sim.duration_s=1.5 --out " +
-                          out.string());
+  const CliResult r =
+      run_pamsim("run scenarios/drop_mass.toml --set sim.duration_s=1.5 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* f : {"trajectory.csv", "summary.json", "angle.png"}) {
     EXPECT_TRUE(fs::exists(out / f)) << f;
@@ -35,11 +35,11 @@ TEST(CliRunTest, RunWritesTrajectorySummaryAndPlot) {
   std::ifstream in(out / "summary.json");
   const nlohmann::json s = nlohmann::json::parse(in);
   EXPECT_EQ(s["status"], "ok");
-  for (const char* key : {"seed", "start_angle_deg", "min_angle_deg", "peak_drop_deg",
-                          "final_angle_deg", "impact_time_s", "steps", "sim_time_s",
-                          "reflex_triggers_ago",
-                          "reflex_triggers_anta", "first_trigger_time_s", "mistrips",
-                          "recovery_time_s", "length_est_rmse_mm", "length_est_max_error_mm"}) {
+  for (const char* key :
+       {"seed", "start_angle_deg", "min_angle_deg", "peak_drop_deg", "final_angle_deg",
+        "impact_time_s", "steps", "sim_time_s", "reflex_triggers_ago", "reflex_triggers_anta",
+        "first_trigger_time_s", "mistrips", "recovery_time_s", "length_est_rmse_mm",
+        "length_est_max_error_mm"}) {
     EXPECT_TRUE(s.contains(key)) << key;
   }
   EXPECT_EQ(s["steps"], 1500);
@@ -59,11 +59,13 @@ TEST(CliRunTest, RunWritesTrajectorySummaryAndPlot) {
 
 TEST(CliRunTest, TrialsWriteEachTrialAndTheAggregate) {
   const fs::path out = fresh_dir("run_trials");
-  const CliResult r = run_pamsim("run scenarios/drop_mass.toml --set sim.duration_s=1.3 --trials 3 "
-                          "--threads 2 --out " + out.string());
+  const CliResult r = run_pamsim(
+      "run scenarios/drop_mass.toml --set sim.duration_s=1.3 --trials 3 "
+      "--threads 2 --out " +
+      out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* f : {"summary.json", "angle_band.png", "trial_0000/trajectory.csv",
-                        "trial_0002/summary.json"}) {
+  for (const char* f :
+       {"summary.json", "angle_band.png", "trial_0000/trajectory.csv", "trial_0002/summary.json"}) {
     EXPECT_TRUE(fs::exists(out / f)) << f;
   }
   std::ifstream in(out / "summary.json");
@@ -99,8 +101,8 @@ void expect_refused_writing_nothing(const std::string& scenario, const std::stri
                                     const std::vector<BadSet>& cases) {
   const fs::path out = fresh_dir(dir) / "new" / "out";
   for (const BadSet& c : cases) {
-    const CliResult r = run_pamsim("run scenarios/" + scenario + " " + c.set + " --out " +
-                                   out.string());
+    const CliResult r =
+        run_pamsim("run scenarios/" + scenario + " " + c.set + " --out " + out.string());
     EXPECT_EQ(r.exit_code, 2) << c.set;
     EXPECT_EQ(line_count(r.err), 1) << c.set << ": " << r.err;
     EXPECT_NE(r.err.find(c.key), std::string::npos) << c.set << ": " << r.err;
@@ -111,27 +113,29 @@ void expect_refused_writing_nothing(const std::string& scenario, const std::stri
 // The hardware's error sources: a negative creep constant, a tolerance over 100 %,
 // a line diameter of zero, a loss factor of 1, a bladder relaxing in negative time.
 TEST(CliRunTest, BadHardwareKeysAreOneLineExitTwoAndWriteNothing) {
-  expect_refused_writing_nothing("drop_mass.toml", "run_bad_hardware", {
-      {"--set 'sensors.gauge.board.creep_weights=[-0.02]' "
-       "--set 'sensors.gauge.board.creep_times_s=[60]'",
-       "sensors.gauge.board.creep_weights[0]"},
-      {"--set 'sensors.fiber.creep_weights=[-0.02]' --set 'sensors.fiber.creep_times_s=[60]'",
-       "sensors.fiber.creep_weights[0]"},
-      {"--set sensors.gauge.tolerance_pct=150", "sensors.gauge.tolerance_pct"},
-      {"--set muscles.agonist.line_diameter_mm=0 --set muscles.agonist.line_modulus_MPa=2500",
-       "muscles.agonist.line_diameter_mm"},
-      {"--set sensors.gauge.board.loss_factor=1", "sensors.gauge.board.loss_factor"},
-      {"--set 'muscles.agonist.plant.bladder.relaxation_times_s=[-1]' "
-       "--set 'muscles.agonist.plant.bladder.relaxation_weights=[0.07]'",
-       "muscles.agonist.plant.bladder.relaxation_times_s: [0] must be in (0, inf) s, got -1"}});
+  expect_refused_writing_nothing(
+      "drop_mass.toml", "run_bad_hardware",
+      {{"--set 'sensors.gauge.board.creep_weights=[-0.02]' "
+        "--set 'sensors.gauge.board.creep_times_s=[60]'",
+        "sensors.gauge.board.creep_weights[0]"},
+       {"--set 'sensors.fiber.creep_weights=[-0.02]' --set 'sensors.fiber.creep_times_s=[60]'",
+        "sensors.fiber.creep_weights[0]"},
+       {"--set sensors.gauge.tolerance_pct=150", "sensors.gauge.tolerance_pct"},
+       {"--set muscles.agonist.line_diameter_mm=0 --set muscles.agonist.line_modulus_MPa=2500",
+        "muscles.agonist.line_diameter_mm"},
+       {"--set sensors.gauge.board.loss_factor=1", "sensors.gauge.board.loss_factor"},
+       {"--set 'muscles.agonist.plant.bladder.relaxation_times_s=[-1]' "
+        "--set 'muscles.agonist.plant.bladder.relaxation_weights=[0.07]'",
+        "muscles.agonist.plant.bladder.relaxation_times_s: [0] must be in (0, inf) s, got -1"}});
 }
 
 // The tension (Ib) reflex and reflex pairs: an Ib threshold below zero, a reflex pair naming
 // a muscle twice.
 TEST(CliRunTest, BadTensionReflexKeysAreOneLineExitTwoAndWriteNothing) {
-  expect_refused_writing_nothing("drop_mass_heavy_ia_ib.toml", "run_bad_tension_reflex", {
-      {"--set reflex.ib.f_thr_N=-1", "reflex.ib.f_thr_N must be in (0, inf) N, got -1"},
-      {"--set 'reflex.pairs=[[\"agonist\", \"agonist\"]]'", "reflex.pairs"}});
+  expect_refused_writing_nothing(
+      "drop_mass_heavy_ia_ib.toml", "run_bad_tension_reflex",
+      {{"--set reflex.ib.f_thr_N=-1", "reflex.ib.f_thr_N must be in (0, inf) N, got -1"},
+       {"--set 'reflex.pairs=[[\"agonist\", \"agonist\"]]'", "reflex.pairs"}});
 }
 
 // A run that fails after its first output (here a full disk: a file-size limit with SIGXFSZ
@@ -140,8 +144,8 @@ TEST(CliRunTest, BadTensionReflexKeysAreOneLineExitTwoAndWriteNothing) {
 TEST(CliRunTest, ARunThatFailsHalfWayLeavesTheEarlierOutputsAsTheyWere) {
   const fs::path dir = fresh_dir("run_staged");
   const fs::path out = dir / "out";
-  const std::string run = "run scenarios/drop_mass.toml --set sim.duration_s=1.3 --out " +
-                          out.string();
+  const std::string run =
+      "run scenarios/drop_mass.toml --set sim.duration_s=1.3 --out " + out.string();
   ASSERT_EQ(run_pamsim(run).exit_code, 0);
   const auto before = pamsim_test::folder_snapshot(dir);
   const CliResult full = run_pamsim(run + " --set seed=7 --force",
@@ -182,7 +186,7 @@ TEST(CliRunTest, CalibrateReproducesTheShippedCalibration) {
     EXPECT_GT(lines, 8);
   }
   const CliResult bad = run_pamsim("calibrate scenarios/drop_mass_passive.toml --angle-deg 95 -o " +
-                            (out / "d.toml").string());
+                                   (out / "d.toml").string());
   EXPECT_NE(bad.exit_code, 0);
   EXPECT_FALSE(fs::exists(out / "d.toml"));
 }

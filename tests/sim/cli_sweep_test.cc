@@ -24,19 +24,19 @@
 namespace {
 
 namespace fs = std::filesystem;
-using pamsim_test::fresh_dir;
-using pamsim_test::line_count;
-using pamsim_test::read_file;
-using pamsim_test::run_pamsim;
-using pamsim_test::write_text;
 using pamsim_test::freeze;
+using pamsim_test::fresh_dir;
 using pamsim_test::interruptible_sweep;
 using pamsim_test::kInterruptibleTrials;
+using pamsim_test::line_count;
 using pamsim_test::lines_of;
+using pamsim_test::read_file;
 using pamsim_test::ReapOnExit;
+using pamsim_test::run_pamsim;
 using pamsim_test::short_sweep;
 using pamsim_test::spawn_sweep;
 using pamsim_test::wait_for_trials;
+using pamsim_test::write_text;
 
 TEST(CliSweepTest, SmokeSweepExportsTheSameCsvOnOneAndTwoThreads) {
   const fs::path dir = fresh_dir("sweep_threads");
@@ -57,9 +57,9 @@ TEST(CliSweepTest, SmokeSweepExportsTheSameCsvOnOneAndTwoThreads) {
   EXPECT_EQ(piped.out, one);
   const fs::path fifo = dir / "fifo";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  const std::string reader = "cat " + fifo.string() + " > " + (dir / "from_fifo").string() +
-                             " & " + PAMSIM_BINARY + " export " + (dir / "t1.db").string() +
-                             " --csv " + fifo.string() + " 2> /dev/null; status=$?; wait; exit $status";
+  const std::string reader = "cat " + fifo.string() + " > " + (dir / "from_fifo").string() + " & " +
+                             PAMSIM_BINARY + " export " + (dir / "t1.db").string() + " --csv " +
+                             fifo.string() + " 2> /dev/null; status=$?; wait; exit $status";
   EXPECT_EQ(std::system(reader.c_str()), 0);
   EXPECT_EQ(read_file(dir / "from_fifo"), one);
   EXPECT_TRUE(fs::is_fifo(fifo)) << "the FIFO was replaced by a file";
@@ -68,7 +68,10 @@ TEST(CliSweepTest, SmokeSweepExportsTheSameCsvOnOneAndTwoThreads) {
   const auto lines = lines_of(one);
   ASSERT_EQ(lines.size(), 1u + 32u);
   EXPECT_EQ(lines[0].rfind("trial,point,seed_index,seed,reflex.v_thr_mm_s,reflex.k_MPa_s_per_mm,"
-                           "status,message,", 0), 0u) << lines[0];
+                           "status,message,",
+                           0),
+            0u)
+      << lines[0];
   for (const char* metric : {"peak_drop_deg", "mistrips", "recovery_time_s", "impact_time_s"}) {
     EXPECT_NE(lines[0].find(metric), std::string::npos) << metric;
   }
@@ -131,7 +134,7 @@ TEST(CliSweepTest, SigintStopsCleanlyWithExit130AndResumeFinishes) {
   ASSERT_NO_FATAL_FAILURE(freeze(pid));
   const std::int64_t before = pamsim::ResultsDb::open_existing(db).trial_count();
   ASSERT_LT(before, kInterruptibleTrials) << "stopped too late to test an interrupt";
-  ASSERT_EQ(::kill(pid, SIGINT), 0);   // delivered when it runs again
+  ASSERT_EQ(::kill(pid, SIGINT), 0);  // delivered when it runs again
   ASSERT_EQ(::kill(pid, SIGCONT), 0);
   int status = 0;
   ASSERT_EQ(::waitpid(pid, &status, 0), pid);
@@ -233,8 +236,8 @@ TEST(CliSweepTest, ReportWritesHeatMapsAndABestSettingThatRuns) {
   EXPECT_EQ(lines_of(read_file(out / "points.csv")).size(), 1u + 16u);
 
   // the best setting runs as a scenario, from another folder than the sweep's
-  const auto run = run_pamsim("run " + (out / "best.toml").string() + " --out " +
-                              (dir / "best_run").string());
+  const auto run =
+      run_pamsim("run " + (out / "best.toml").string() + " --out " + (dir / "best_run").string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(fs::exists(dir / "best_run" / "summary.json"));
 
@@ -247,10 +250,11 @@ TEST(CliSweepTest, ReportWritesHeatMapsAndABestSettingThatRuns) {
 TEST(CliSweepTest, IntegerBooleanAndStringAxesKeepTheirTypesIntoTheBestScenario) {
   const fs::path dir = fresh_dir("sweep_types");
   const fs::path sweep = dir / "sweep.toml";
-  write_text(sweep, short_sweep("[[axis]]\nkey = \"sensors.pressure_adc_bits\"\nvalues = [10, 12]\n"
-                                "[[axis]]\nkey = \"reflex.mode\"\nvalues = [\"follow\", \"latch\"]\n"
-                                "[[axis]]\nkey = \"reflex.reciprocal_trigger_inhibition\"\n"
-                                "values = [true, false]\n"));
+  write_text(sweep,
+             short_sweep("[[axis]]\nkey = \"sensors.pressure_adc_bits\"\nvalues = [10, 12]\n"
+                         "[[axis]]\nkey = \"reflex.mode\"\nvalues = [\"follow\", \"latch\"]\n"
+                         "[[axis]]\nkey = \"reflex.reciprocal_trigger_inhibition\"\n"
+                         "values = [true, false]\n"));
   const std::string db = (dir / "s.db").string();
   const auto r = run_pamsim("sweep " + sweep.string() + " --db " + db);
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -262,10 +266,10 @@ TEST(CliSweepTest, IntegerBooleanAndStringAxesKeepTheirTypesIntoTheBestScenario)
   EXPECT_EQ(points[1].rfind("0,10,follow,true,", 0), 0u) << points[1];
   EXPECT_EQ(points[8].rfind("7,12,latch,false,", 0), 0u) << points[8];
   const std::string best = read_file(out / "best.toml");
-  EXPECT_NE(best.find("pressure_adc_bits = 1"), std::string::npos) << best;   // 10 or 12
+  EXPECT_NE(best.find("pressure_adc_bits = 1"), std::string::npos) << best;  // 10 or 12
   EXPECT_EQ(best.find("pressure_adc_bits = 1.0"), std::string::npos) << best;
-  const auto run = run_pamsim("run " + (out / "best.toml").string() + " --out " +
-                              (dir / "best_run").string());
+  const auto run =
+      run_pamsim("run " + (out / "best.toml").string() + " --out " + (dir / "best_run").string());
   EXPECT_EQ(run.exit_code, 0) << run.err;
 }
 
@@ -283,17 +287,16 @@ TEST(CliSweepTest, ReadOnlyDatabaseIsReadAndItsResumeRefusedBeforeRunning) {
   const std::string full = (ro / "full.db").string(), part = (ro / "part.db").string();
   ASSERT_EQ(run_pamsim("sweep " + sweep.string() + " --db " + full).exit_code, 0);
   ASSERT_EQ(run_pamsim("export " + full + " --csv " + (dir / "ref.csv").string()).exit_code, 0);
-  pamsim::ResultsDb::create(part, pamsim::load_sweep(sweep.string()));   // no trials yet
+  pamsim::ResultsDb::create(part, pamsim::load_sweep(sweep.string()));  // no trials yet
 
   const std::string as_reader =
       ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups" : "";
   if (!as_reader.empty() && run_pamsim("--version", as_reader).exit_code != 0) {
     GTEST_SKIP() << "user nobody cannot run " << PAMSIM_BINARY;
   }
-  fs::permissions(dir, fs::perms::all);   // outputs go beside the read-only folder
-  for (const std::string& f : {full, part}) fs::permissions(f, fs::perms::owner_read |
-                                                                fs::perms::group_read |
-                                                                fs::perms::others_read);
+  fs::permissions(dir, fs::perms::all);  // outputs go beside the read-only folder
+  for (const std::string& f : {full, part})
+    fs::permissions(f, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
   fs::permissions(ro, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
                           fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
   const std::string part_before = read_file(part);
@@ -311,27 +314,29 @@ TEST(CliSweepTest, ReadOnlyDatabaseIsReadAndItsResumeRefusedBeforeRunning) {
   EXPECT_EQ(line_count(resume.err), 1) << resume.err;
   EXPECT_NE(resume.err.find(part + ": is read-only"), std::string::npos) << resume.err;
   EXPECT_EQ(read_file(part), part_before);
-  fs::permissions(ro, fs::perms::owner_all);   // so that the folder can be cleaned up
+  fs::permissions(ro, fs::perms::owner_all);  // so that the folder can be cleaned up
 }
 
 // A --db that names a folder is refused before anything is made, and the folders made for a
 // database that then cannot be made are removed again; they used to stay, empty.
 TEST(CliSweepTest, ADatabaseThatCannotBeMadeLeavesNoFolder) {
   const fs::path dir = fresh_dir("sweep_no_folder");
-  const auto r = run_pamsim("sweep scenarios/sweep_smoke.toml --db " + (dir / "new/deep/").string());
+  const auto r =
+      run_pamsim("sweep scenarios/sweep_smoke.toml --db " + (dir / "new/deep/").string());
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_EQ(line_count(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("is a folder; name the database file"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::is_empty(dir));
   // a database that cannot be written in the folders made for it (a full disk: a 1 KiB
   // file-size limit, SIGXFSZ ignored) leaves none of them
-  const auto full = run_pamsim("sweep scenarios/sweep_smoke.toml --db " +
-                                   (dir / "new" / "deeper" / "s.db").string(),
-                               "bash -c 'trap \"\" XFSZ; ulimit -f 1; exec \"$0\" \"$@\"'");
+  const auto full = run_pamsim(
+      "sweep scenarios/sweep_smoke.toml --db " + (dir / "new" / "deeper" / "s.db").string(),
+      "bash -c 'trap \"\" XFSZ; ulimit -f 1; exec \"$0\" \"$@\"'");
   EXPECT_NE(full.exit_code, 0) << full.err;
   EXPECT_EQ(line_count(full.err), 1) << full.err;
   EXPECT_NE(full.err.find((dir / "new" / "deeper" / "s.db").string() +
-                          ": cannot create the sweep database ("), std::string::npos)
+                          ": cannot create the sweep database ("),
+            std::string::npos)
       << full.err;
   EXPECT_TRUE(fs::is_empty(dir)) << full.err;
 }
@@ -339,11 +344,10 @@ TEST(CliSweepTest, ADatabaseThatCannotBeMadeLeavesNoFolder) {
 TEST(CliSweepTest, ExportAndReportRefuseWhatIsNotASweepDatabase) {
   const fs::path dir = fresh_dir("sweep_not_db");
   write_text(dir / "junk.db", "not a database at all, just some text that is long enough\n");
-  for (const std::string& args : {"export " + (dir / "junk.db").string() + " --csv " +
-                                      (dir / "x.csv").string(),
-                                  "export " + (dir / "absent.db").string() + " --csv " +
-                                      (dir / "x.csv").string(),
-                                  "report " + (dir / "junk.db").string()}) {
+  for (const std::string& args :
+       {"export " + (dir / "junk.db").string() + " --csv " + (dir / "x.csv").string(),
+        "export " + (dir / "absent.db").string() + " --csv " + (dir / "x.csv").string(),
+        "report " + (dir / "junk.db").string()}) {
     const auto r = run_pamsim(args);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
     EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;

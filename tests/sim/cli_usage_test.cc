@@ -22,8 +22,9 @@ TEST(CliUsageTest, UsageErrorsExitTwoInOneLineWithTheCommandsThereAre) {
            {"rnu scenarios/drop_mass.toml", "unknown command 'rnu'; commands: fit"},
            {"runn scenarios/drop_mass.toml", "did you mean run?"},
            {"validate", "commands: length-estimation, reaching"},
-           {"validate reachin", "unknown command 'reachin'; commands: length-estimation, "
-                                "reaching; did you mean reaching?"},
+           {"validate reachin",
+            "unknown command 'reachin'; commands: length-estimation, "
+            "reaching; did you mean reaching?"},
            {"run", "run needs a scenario file, or --from DIR"},
            {"sweep scenarios/sweep_smoke.toml --bogus", "--bogus"},
            {"run scenarios/drop_mass.toml --trials x", "--trials"},
@@ -75,14 +76,16 @@ TEST(CliUsageTest, TheVersionIsTheSameInTheProgramTheCitationAndTheChangelog) {
 // that points at it.
 TEST(CliUsageTest, MessagesEscapeAndShortenEchoedValuesAndNameTheKeyOfAMissingFile) {
   const auto dir = pamsim_test::fresh_dir("usage_echo");
-  const std::string base = "base = \"" + std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml\"\n";
+  const std::string base =
+      "base = \"" + std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml\"\n";
   pamsim_test::write_text(dir / "nul.toml", base + "design = \"ab\\u0000cd\\u001b[31m\"\n");
   const auto nul = run_pamsim("sweep " + (dir / "nul.toml").string());
   EXPECT_EQ(nul.exit_code, 2);
   EXPECT_EQ(line_count(nul.err), 1) << nul.err;
   EXPECT_NE(nul.err.find("design is \"ab\\x00cd\\x1B[31m\""), std::string::npos) << nul.err;
 
-  pamsim_test::write_text(dir / "big.toml", base + "design = \"" + std::string(3 << 20, 'x') + "\"\n");
+  pamsim_test::write_text(dir / "big.toml",
+                          base + "design = \"" + std::string(3 << 20, 'x') + "\"\n");
   const auto big = run_pamsim("sweep " + (dir / "big.toml").string());
   EXPECT_EQ(big.exit_code, 2);
   EXPECT_EQ(line_count(big.err), 1);
@@ -90,14 +93,16 @@ TEST(CliUsageTest, MessagesEscapeAndShortenEchoedValuesAndNameTheKeyOfAMissingFi
   // the word of the quoted value (its quotes and the comma after it) is cut to 240 bytes at
   // each end
   EXPECT_NE(big.err.find("...(" + std::to_string((3 << 20) + 3 - 480) + " bytes)..."),
-            std::string::npos) << big.err;
+            std::string::npos)
+      << big.err;
 
-  const auto model = run_pamsim(
-      "run scenarios/drop_mass.toml --set model.file=\\\"/nonexistent.xml\\\" --out " +
-      (dir / "out").string());
+  const auto model =
+      run_pamsim("run scenarios/drop_mass.toml --set model.file=\\\"/nonexistent.xml\\\" --out " +
+                 (dir / "out").string());
   EXPECT_EQ(model.exit_code, 2);
-  EXPECT_EQ(model.err, "pamsim: scenarios/drop_mass.toml: --set model.file: /nonexistent.xml: "
-                       "cannot open file (No such file or directory)\n");
+  EXPECT_EQ(model.err,
+            "pamsim: scenarios/drop_mass.toml: --set model.file: /nonexistent.xml: "
+            "cannot open file (No such file or directory)\n");
 }
 
 }  // namespace

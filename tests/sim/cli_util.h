@@ -37,10 +37,10 @@ inline std::string read_file(const std::filesystem::path& path) {
 // (a command that runs the rest, e.g. setpriv) if one is given.
 inline CliResult run_pamsim(const std::string& args, const std::string& wrapper = "") {
   static int counter = 0;
-  const std::string base = ::testing::TempDir() + "pamsim_cli_" + std::to_string(::getpid()) +
-                           "_" + std::to_string(counter++);
-  const std::string cmd = std::string("cd ") + PAMSIM_SOURCE_DIR + " && " + wrapper + " " + PAMSIM_BINARY + " " +
-                          args + " > " + base + ".out 2> " + base + ".err";
+  const std::string base = ::testing::TempDir() + "pamsim_cli_" + std::to_string(::getpid()) + "_" +
+                           std::to_string(counter++);
+  const std::string cmd = std::string("cd ") + PAMSIM_SOURCE_DIR + " && " + wrapper + " " +
+                          PAMSIM_BINARY + " " + args + " > " + base + ".out 2> " + base + ".err";
   const int status = std::system(cmd.c_str());
   CliResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

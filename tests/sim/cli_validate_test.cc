@@ -59,8 +59,8 @@ TEST(CliValidateTest, LengthEstimationWritesEveryPamLawAndWeight) {
   // docs/validation.md's Table III, Eq. (3) at 5 kg, to its digits: a change to the PAMs'
   // physics (PAMs A-C as Table I builds them) shows here, and the page's block is
   // made again with it
-  const std::map<std::string, double> readme_rmse = {{"A", 0.438}, {"B", 0.459}, {"C", 0.458},
-                                                     {"D", 0.475}};
+  const std::map<std::string, double> readme_rmse = {
+      {"A", 0.438}, {"B", 0.459}, {"C", 0.458}, {"D", 0.475}};
   int pinned = 0;
   for (std::size_t i = 1; i < rows.size(); ++i) {
     if (rows[i][1] != "eq3" || rows[i][2] != "5") continue;
@@ -183,10 +183,10 @@ TEST(CliValidateTest, BadInputIsOneLineAndLeavesNoTable) {
 // A reaching protocol of one short trial with the given [[budget_source]] tables (the
 // shipped scenario, its path made absolute), written into dir.
 fs::path budget_protocol(const fs::path& dir, const std::string& sources) {
-  pamsim_test::write_text(
-      dir / "budget.toml",
-      "scenario = \"" + std::string(PAMSIM_SOURCE_DIR) + "/scenarios/reaching.toml\"\n"
-      "trials = 1\nwindow_s = [2.0, 4.0]\n" + sources);
+  pamsim_test::write_text(dir / "budget.toml", "scenario = \"" + std::string(PAMSIM_SOURCE_DIR) +
+                                                   "/scenarios/reaching.toml\"\n"
+                                                   "trials = 1\nwindow_s = [2.0, 4.0]\n" +
+                                                   sources);
   return dir / "budget.toml";
 }
 
@@ -236,8 +236,7 @@ TEST(CliValidateTest, BadBudgetIsOneLineAndLeavesNoBudget) {
            {"", "", "budget_source: --budget needs at least one [[budget_source]]"},
            {"[[budget_source]]\nname = \"p\"\non = ['sensors.pressure.model=\"psx\"']\n", "",
             "budget source \"p\" on: "},
-           {"[[budget_source]]\nname = \"p\"\non = ['sensors.nosuch=1']\n", "",
-            "sensors.nosuch"},
+           {"[[budget_source]]\nname = \"p\"\non = ['sensors.nosuch=1']\n", "", "sensors.nosuch"},
            {kBudgetSources, " --set sensors.noise_scale=2", "sets sensors.noise_scale"},
            {"[[budget_source]]\nname = \"p\"\non = []\n", "", "budget_source[0].on"}}) {
     const fs::path protocol = budget_protocol(dir, c.protocol);
@@ -272,11 +271,11 @@ TEST(CliValidateTest, BandsDrawEveryRigAndAreTheSameOnAnyThreadCount) {
   const CliResult r = run_pamsim(args + (dir / "a").string() + " --threads 2");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto rows = csv_rows(read_file(dir / "a" / "bands.csv"));
-  ASSERT_EQ(rows.size(), 1u + 12 * 2);   // 2 muscles x 2 methods x 3 parts, max and RMSE
+  ASSERT_EQ(rows.size(), 1u + 12 * 2);  // 2 muscles x 2 methods x 3 parts, max and RMSE
   EXPECT_EQ(rows[2][0], "agonist model all");
   EXPECT_EQ(rows[2][1], "rmse");
   EXPECT_EQ(rows[2][2], "3");
-  EXPECT_EQ(rows[2][9], "outside");   // 5.24 %: far above a 2 s window's error
+  EXPECT_EQ(rows[2][9], "outside");  // 5.24 %: far above a 2 s window's error
   const auto draws = csv_rows(read_file(dir / "a" / "draws.csv"));
   ASSERT_EQ(draws.size(), 4u);
   EXPECT_EQ(draws[0][1], "sensors.gauge.contact.reseat_mm");
@@ -289,11 +288,10 @@ TEST(CliValidateTest, BandsDrawEveryRigAndAreTheSameOnAnyThreadCount) {
 
   const CliResult s = run_pamsim("validate reaching " + protocol.string() +
                                  " --sensitivity --set sim.duration_s=5 --set " + kLineModulus +
-                                 " --no-plot --out " +
-                                 (dir / "s").string());
+                                 " --no-plot --out " + (dir / "s").string());
   ASSERT_EQ(s.exit_code, 0) << s.err;
   const auto swings = csv_rows(read_file(dir / "s" / "sensitivity.csv"));
-  ASSERT_EQ(swings.size(), 1u + 12 * 2);   // a row per cell and bracket
+  ASSERT_EQ(swings.size(), 1u + 12 * 2);  // a row per cell and bracket
   // the re-seated line moves the agonist's model estimate; it cannot move the fiber's
   EXPECT_GT(std::stod(swings[1][7]), 0.01) << "agonist model all, line re-seated";
   EXPECT_EQ(std::stod(swings[7][7]), 0.0) << swings[7][0];
@@ -302,7 +300,8 @@ TEST(CliValidateTest, BandsDrawEveryRigAndAreTheSameOnAnyThreadCount) {
 TEST(CliValidateTest, BadBandsAreOneLineAndLeaveNoBands) {
   const fs::path dir = fresh_dir("cli_validate_bands_bad");
   const fs::path out = dir / "out";
-  const std::string creep = std::string(kBandBrackets) +
+  const std::string creep =
+      std::string(kBandBrackets) +
       "[[bracket]]\nname = \"creep\"\nkey = \"sensors.gauge.board.creep_exponent\"\n"
       "from = 0.2\nto = 0.9\nsource = \"s\"\n";
   struct Case {
@@ -312,16 +311,15 @@ TEST(CliValidateTest, BadBandsAreOneLineAndLeaveNoBands) {
            {kBandBrackets, " --bands 0", "--bands must be in [1, 10000], got 0"},
            {"", " --bands 2", "bracket: --bands and --sensitivity need at least one"},
            {"[[bracket]]\nname = \"a\"\nkey = \"sim.duration_s\"\nfrom = 3\nto = 2\n"
-            "source = \"s\"\n", " --bands 2", "bracket[0].from must be below to"},
-           {creep, " --bands 2",
-            "bracket \"creep\" (sensors.gauge.board.creep_exponent = 0.9): "},
+            "source = \"s\"\n",
+            " --bands 2", "bracket[0].from must be below to"},
+           {creep, " --bands 2", "bracket \"creep\" (sensors.gauge.board.creep_exponent = 0.9): "},
            {kBandBrackets, " --sensitivity --set muscles.agonist.line_diameter_mm=0.3",
             "is drawn by"},
            {kBandBrackets, " --bands 2 --budget", "excludes"}}) {
     const fs::path protocol = budget_protocol(dir, c.protocol);
-    const CliResult r =
-        run_pamsim("validate reaching " + protocol.string() + c.args + " --set " + kLineModulus +
-                   " --out " + out.string());
+    const CliResult r = run_pamsim("validate reaching " + protocol.string() + c.args + " --set " +
+                                   kLineModulus + " --out " + out.string());
     EXPECT_EQ(r.exit_code, 2) << c.says;
     EXPECT_EQ(line_count(r.err), 1) << c.says << ": " << r.err;
     EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
@@ -344,8 +342,7 @@ TEST(CliValidateTest, ARigWhoseLineBreaksIsOneLineAndLeavesNoFolder) {
       out.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(line_count(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find("muscles.antagonist.line_strength_MPa: its line breaks"),
-            std::string::npos)
+  EXPECT_NE(r.err.find("muscles.antagonist.line_strength_MPa: its line breaks"), std::string::npos)
       << r.err;
   EXPECT_FALSE(fs::exists(out));
 }

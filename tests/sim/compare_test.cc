@@ -30,7 +30,7 @@
 namespace pamsim {
 namespace {
 
-using namespace plot_test;   // the synthetic trial, read_png_size, PlotTest
+using namespace plot_test;  // the synthetic trial, read_png_size, PlotTest
 
 // trajectory.csv
 
@@ -156,8 +156,9 @@ TEST_F(PlotTest, AHeatMapWithAMissingCellAndCellTextsIsDrawn) {
 TEST_F(PlotTest, CompareDrawsBothRunsAndPrintsTheirMetrics) {
   write_run(dir_ / "model", 3, 0.0);
   write_run(dir_ / "fiber", 1, 2.0);
-  const std::string out = run_compare({(dir_ / "model").string(), (dir_ / "fiber").string(), "-o",
-                                       path("cmp.png"), "--label-a", "model", "--label-b", "fiber"});
+  const std::string out =
+      run_compare({(dir_ / "model").string(), (dir_ / "fiber").string(), "-o", path("cmp.png"),
+                   "--label-a", "model", "--label-b", "fiber"});
   EXPECT_TRUE(read_png_size(path("cmp.png")).ok);
   EXPECT_NE(out.find("model mean [min, max]"), std::string::npos) << out;
   EXPECT_NE(out.find("fiber mean [min, max]"), std::string::npos) << out;

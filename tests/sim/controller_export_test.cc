@@ -40,11 +40,11 @@ CliResult build_and_replay(const fs::path& dir, const std::string& make_vars,
 
 // a trial's readings and its controller's export, in `dir`
 void export_trial(const fs::path& dir, const std::string& scenario, const std::string& set) {
-  const CliResult run = run_pamsim("run " + scenario + set + " --readings --no-plot --out " +
-                                   (dir / "run").string());
+  const CliResult run =
+      run_pamsim("run " + scenario + set + " --readings --no-plot --out " + (dir / "run").string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  const CliResult exported = run_pamsim("controller export " + scenario + set + " -o " +
-                                        (dir / "export").string());
+  const CliResult exported =
+      run_pamsim("controller export " + scenario + set + " -o " + (dir / "export").string());
   ASSERT_EQ(exported.exit_code, 0) << exported.err;
 }
 
@@ -58,8 +58,8 @@ void expect_bit_for_bit(const fs::path& dir) {
 
 TEST(ControllerExportTest, BuiltOutsideItGivesTheSimulatorsCommandsBitForBit) {
   const fs::path root = fresh_dir("export_b2b");
-  for (const std::string s : {"drop_mass", "drop_mass_fiber", "drop_mass_heavy_ia_ib",
-                              "landing_reflex"}) {
+  for (const std::string s :
+       {"drop_mass", "drop_mass_fiber", "drop_mass_heavy_ia_ib", "landing_reflex"}) {
     SCOPED_TRACE(s);
     export_trial(root / s, "scenarios/" + s + ".toml", "");
     expect_bit_for_bit(root / s);
@@ -70,14 +70,15 @@ TEST(ControllerExportTest, Eq4AndEq5EstimatorsRunTheRootSolveBitForBit) {
   const fs::path root = fresh_dir("export_eq45");
   const CliResult tensile = run_pamsim(
       "tensile --plant models/pams/plant_agonist.toml --pressures-MPa 0.2,0.4,0.6 "
-      "--max-deformation-mm 15 --seed 1 -o " + (root / "agonist.csv").string());
+      "--max-deformation-mm 15 --seed 1 -o " +
+      (root / "agonist.csv").string());
   ASSERT_EQ(tensile.exit_code, 0) << tensile.err;
   for (const std::string law : {"eq4", "eq5"}) {
     SCOPED_TRACE(law);
     const fs::path params = root / ("agonist_" + law + ".toml");
-    const CliResult fit = run_pamsim("fit --model " + law + " " + (root / "agonist.csv").string() +
-                                     " --sensors-from models/pams/table4_agonist.toml -o " +
-                                     params.string());
+    const CliResult fit =
+        run_pamsim("fit --model " + law + " " + (root / "agonist.csv").string() +
+                   " --sensors-from models/pams/table4_agonist.toml -o " + params.string());
     ASSERT_EQ(fit.exit_code, 0) << fit.err;
     export_trial(root / law, "scenarios/drop_mass.toml",
                  " --set model.agonist_params=" + params.string());
@@ -89,7 +90,7 @@ TEST(ControllerExportTest, PamsimsReplayOfAnExportEqualsTheSimulatorAndNamesItsT
   const fs::path dir = fresh_dir("export_replay");
   export_trial(dir, "scenarios/drop_mass.toml", kShortDrop);
   for (const std::string& from : {"--export " + (dir / "export").string(),
-                                 "--scenario scenarios/drop_mass.toml" + kShortDrop}) {
+                                  "--scenario scenarios/drop_mass.toml" + kShortDrop}) {
     SCOPED_TRACE(from);
     fs::remove_all(dir / "replay");
     const CliResult r = run_pamsim("controller replay " + (dir / "run/readings.csv").string() +
@@ -108,7 +109,9 @@ TEST(ControllerExportTest, PamsimsReplayOfAnExportEqualsTheSimulatorAndNamesItsT
 TEST(ControllerExportTest, TheConfigurationSurvivesItsJson) {
   const fs::path dir = fresh_dir("export_json");
   ASSERT_EQ(run_pamsim("controller export scenarios/drop_mass_heavy_ia_ib.toml -o " +
-                       (dir / "e").string()).exit_code, 0);
+                       (dir / "e").string())
+                .exit_code,
+            0);
   const nlohmann::json j = nlohmann::json::parse(read_file(dir / "e/pamctl_config.json"));
   std::vector<std::string> muscles;
   const pamctl_config c = pamsim::embedded_config_from_json(j, "pamctl_config.json", &muscles);
@@ -124,17 +127,19 @@ TEST(ControllerExportTest, BadExportsAndBadLogsAreRefusedInOneLineWithNothingWri
   std::string gap = readings, text = readings, no_column = readings;
   gap.erase(gap.find('\n', gap.find('\n', gap.find('\n') + 1) + 1) + 1,
             gap.find('\n', gap.find('\n', gap.find('\n', gap.find('\n') + 1) + 1) + 1) -
-                gap.find('\n', gap.find('\n', gap.find('\n') + 1) + 1));   // drop row 3
+                gap.find('\n', gap.find('\n', gap.find('\n') + 1) + 1));  // drop row 3
   text.replace(text.find('\n') + 1, 1, "x");
   no_column.replace(0, no_column.find(','), "t");
   const std::vector<std::pair<std::string, std::string>> logs = {
-      {gap, "the control period is 0.01 s"}, {text, "is not a number"}, {no_column, "no column time_s"}};
+      {gap, "the control period is 0.01 s"},
+      {text, "is not a number"},
+      {no_column, "no column time_s"}};
   for (const auto& [log, says] : logs) {
     SCOPED_TRACE(says);
     write_text(dir / "bad.csv", log);
-    const CliResult r = run_pamsim("controller replay " + (dir / "bad.csv").string() +
-                                   " --export " + (dir / "export").string() + " --out " +
-                                   (dir / "out").string());
+    const CliResult r =
+        run_pamsim("controller replay " + (dir / "bad.csv").string() + " --export " +
+                   (dir / "export").string() + " --out " + (dir / "out").string());
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
     EXPECT_EQ(line_count(r.err), 1) << r.err;
@@ -144,15 +149,17 @@ TEST(ControllerExportTest, BadExportsAndBadLogsAreRefusedInOneLineWithNothingWri
   std::string json = read_file(dir / "export/pamctl_config.json");
   json.insert(json.find("\"v_thr_m_s\": ") + 13, "-");
   write_text(dir / "export/pamctl_config.json", json);
-  const CliResult r = run_pamsim("controller replay " + (dir / "run/readings.csv").string() +
-                                 " --export " + (dir / "export").string() + " --out " +
-                                 (dir / "out").string());
+  const CliResult r =
+      run_pamsim("controller replay " + (dir / "run/readings.csv").string() + " --export " +
+                 (dir / "export").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("reflex.ia.v_thr_m_s must be finite and > 0"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "out"));
   // a scenario the export cannot read
-  const CliResult bad = run_pamsim("controller export scenarios/drop_mass.toml --set "
-                                   "reflex.v_thr_mm_s=-1 -o " + (dir / "bad_export").string());
+  const CliResult bad = run_pamsim(
+      "controller export scenarios/drop_mass.toml --set "
+      "reflex.v_thr_mm_s=-1 -o " +
+      (dir / "bad_export").string());
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_EQ(line_count(bad.err), 1) << bad.err;
   EXPECT_FALSE(fs::exists(dir / "bad_export"));

@@ -46,7 +46,7 @@ class ConstantCommandController final : public Controller {
 
 class ConstantCommandConfig final : public ControllerConfig {
  public:
-  double pressure_pa = 0.0;   // constant_command.MPa
+  double pressure_pa = 0.0;  // constant_command.MPa
   std::vector<SummaryField> summary_fields() const override {
     return {{"constant_command_MPa", units::pa_to_mpa(pressure_pa)}};
   }
@@ -118,9 +118,10 @@ TEST(ControllerPlugin, RegisteredAfterTheBuiltInKinds) {
   ASSERT_EQ(controller_kinds().back().name, "constant_command");
   // a plug-in's kind is one of controller.kind's allowed names, as the built-in ones are
   EXPECT_EQ(error_of("bang_bang"),
-            kReaching + ": controller.kind is \"bang_bang\", allowed \"none\" | "
-                        "\"stretch_reflex\" | \"tension_reflex\" | \"stretch_tension_reflex\" | "
-                        "\"constant_command\"");
+            kReaching +
+                ": controller.kind is \"bang_bang\", allowed \"none\" | "
+                "\"stretch_reflex\" | \"tension_reflex\" | \"stretch_tension_reflex\" | "
+                "\"constant_command\"");
 }
 
 TEST(ControllerPlugin, AScenarioChoosesItAndItsCommandsDriveTheValves) {
@@ -168,8 +169,8 @@ TEST(ControllerPlugin, ItsSummaryFieldAndNameGoToSummaryJson) {
 
 TEST(ControllerPlugin, ItsKeyIsValidatedNamingTheFileAndTheKey) {
   // (the value as written, as the message echoes it)
-  for (const auto& [bad, echoed] : {std::pair{"-0.1", "got -0.1"}, std::pair{"5.0", "got 5"},
-                                    std::pair{"nan", "got nan"}}) {
+  for (const auto& [bad, echoed] :
+       {std::pair{"-0.1", "got -0.1"}, std::pair{"5.0", "got 5"}, std::pair{"nan", "got nan"}}) {
     const std::string message =
         error_of("constant_command", std::string("[constant_command]\nMPa = ") + bad + "\n");
     EXPECT_EQ(message.rfind(kReaching + ": constant_command.MPa must be ", 0), 0u) << message;
@@ -177,8 +178,9 @@ TEST(ControllerPlugin, ItsKeyIsValidatedNamingTheFileAndTheKey) {
   }
   // its section with another kind is refused, like [reflex] with "none"
   EXPECT_EQ(error_of("none", "[constant_command]\nMPa = 0.1\n"),
-            kReaching + ": constant_command is the constant_command controller's section, but "
-                        "controller.kind is \"none\"");
+            kReaching +
+                ": constant_command is the constant_command controller's section, but "
+                "controller.kind is \"none\"");
 }
 
 }  // namespace

@@ -47,7 +47,8 @@ TEST(DropMassTest, ModelReflexTriggersPromptlyWithoutMistripAndReducesTheDrop) {
 
     // the arm drops less than without the reflex, with the same impact
     EXPECT_NEAR(passive.summary.metric("impact_time_s"), s.metric("impact_time_s"), 1e-9);
-    EXPECT_GT(s.metric("min_angle_deg"), passive.summary.metric("min_angle_deg") + 0.5) << "seed " << seed;
+    EXPECT_GT(s.metric("min_angle_deg"), passive.summary.metric("min_angle_deg") + 0.5)
+        << "seed " << seed;
   }
 }
 
@@ -68,8 +69,8 @@ TEST(DropMassTest, AgonistCommandRisesDuringTheReflexWindow) {
     trough_anta = std::min(trough_anta, tr.at(row, cmd_anta));
   }
   EXPECT_EQ(window_rows, 20) << "one 200 ms window at 100 Hz";
-  EXPECT_GT(peak, 0.45);              // excitation, Eq. (12)
-  EXPECT_LT(trough_anta, 0.35);       // reciprocal inhibition, Eq. (13)
+  EXPECT_GT(peak, 0.45);         // excitation, Eq. (12)
+  EXPECT_LT(trough_anta, 0.35);  // reciprocal inhibition, Eq. (13)
 }
 
 TEST(DropMassTest, FiberSensorReflexTriggersToo) {
@@ -216,8 +217,8 @@ TEST(DropMassTest, ExtensibleLinesKeepTheStartAndSoftenTheArm) {
     ASSERT_NEAR(ct.at(row, angle), -36.0, 1e-3) << "crept, before the drop";
   }
   EXPECT_LT(crept.summary.metric("final_angle_deg"), soft.summary.metric("final_angle_deg") - 0.1);
-  EXPECT_FALSE(same_trial_model(b, load_scenario(scenario_path("drop_mass_passive.toml"),
-                                                 crept_lines)));
+  EXPECT_FALSE(
+      same_trial_model(b, load_scenario(scenario_path("drop_mass_passive.toml"), crept_lines)));
 }
 
 // joints.<joint>.*: a bearing's damping and friction loss in place of the model's; more
@@ -247,11 +248,12 @@ TEST(DropMassTest, JointKeysSetTheModelsDampingAndFrictionLoss) {
 TEST(DropMassTest, OutcomeMetricsAgreeWithTheTrajectory) {
   // the shipped scenarios keep the mass without retriggers; the fiber reflex on the ideal
   // plant loses it and retriggers (docs/findings.md), so both branches are checked
-  const std::vector<std::string> ideal_fiber = {
-      "reflex.sensor=\"fiber\"", "reflex.v_thr_mm_s=25",
-      "reflex.k_MPa_s_per_mm=0.0033333333333333335"};
+  const std::vector<std::string> ideal_fiber = {"reflex.sensor=\"fiber\"", "reflex.v_thr_mm_s=25",
+                                                "reflex.k_MPa_s_per_mm=0.0033333333333333335"};
   const std::vector<std::pair<const char*, std::vector<std::string>>> cases = {
-      {"drop_mass.toml", {}}, {"drop_mass_fiber.toml", {}}, {"drop_mass_passive.toml", {}},
+      {"drop_mass.toml", {}},
+      {"drop_mass_fiber.toml", {}},
+      {"drop_mass_passive.toml", {}},
       {"drop_mass_ideal.toml", ideal_fiber}};
   for (const auto& [name, overrides] : cases) {
     SCOPED_TRACE(name);

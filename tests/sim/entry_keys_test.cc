@@ -38,9 +38,9 @@ using pamsim_test::CliResult;
 using pamsim_test::run_pamsim;
 
 struct ArrayCase {
-  std::string file;     // a shipped file, from the source tree
-  std::string header;   // the line of the table the key goes under
-  std::string array;    // its name in messages
+  std::string file;    // a shipped file, from the source tree
+  std::string header;  // the line of the table the key goes under
+  std::string array;   // its name in messages
   std::function<void(const std::string&)> load;
   const std::vector<EntryKey>* keys;
 };
@@ -51,24 +51,24 @@ std::vector<ArrayCase> cases() {
   const auto sweep = [](const std::string& p) { load_sweep(p); };
   const auto reaching = [](const std::string& p) { load_reaching_validation(p); };
   const std::string tuning = "scenarios/tune_reflex.toml", id = "examples/identify/identify.toml";
-  return {{tuning, "[[parameter]]", "parameter", tune, &parameter_entry_keys()},
-          {tuning, "[[objective]]", "objective", tune, &objective_entry_keys()},
-          {tuning, "[[constraint]]", "constraint", tune, &constraint_entry_keys()},
-          {tuning, "[[reference]]", "reference", tune, &reference_entry_keys()},
-          {id, "[[recording]]", "recording", identify, &recording_entry_keys()},
-          {id, "[[tensile]]", "tensile", identify, &tensile_entry_keys()},
-          {id, "[[candidate]]", "candidate", identify, &candidate_entry_keys()},
-          {"scenarios/sweep_reflex.toml", "[[axis]]", "axis", sweep, &axis_entry_keys()},
-          {"scenarios/sweep_findings_gates.toml", "[[axis]]", "axis", sweep,
-           &case_axis_entry_keys()},
-          {"scenarios/sweep_findings_gates.toml", "[[axis.case]]", "axis[0].case", sweep,
-           &case_entry_keys()},
-          {"scenarios/sweep_robustness.toml", "[[randomize]]", "randomize", sweep,
-           &randomize_entry_keys()},
-          {"scenarios/validate_reaching.toml", "[[bracket]]", "bracket", reaching,
-           &bracket_entry_keys()},
-          {"scenarios/validate_reaching.toml", "[[budget_source]]", "budget_source", reaching,
-           &budget_source_entry_keys()}};
+  return {
+      {tuning, "[[parameter]]", "parameter", tune, &parameter_entry_keys()},
+      {tuning, "[[objective]]", "objective", tune, &objective_entry_keys()},
+      {tuning, "[[constraint]]", "constraint", tune, &constraint_entry_keys()},
+      {tuning, "[[reference]]", "reference", tune, &reference_entry_keys()},
+      {id, "[[recording]]", "recording", identify, &recording_entry_keys()},
+      {id, "[[tensile]]", "tensile", identify, &tensile_entry_keys()},
+      {id, "[[candidate]]", "candidate", identify, &candidate_entry_keys()},
+      {"scenarios/sweep_reflex.toml", "[[axis]]", "axis", sweep, &axis_entry_keys()},
+      {"scenarios/sweep_findings_gates.toml", "[[axis]]", "axis", sweep, &case_axis_entry_keys()},
+      {"scenarios/sweep_findings_gates.toml", "[[axis.case]]", "axis[0].case", sweep,
+       &case_entry_keys()},
+      {"scenarios/sweep_robustness.toml", "[[randomize]]", "randomize", sweep,
+       &randomize_entry_keys()},
+      {"scenarios/validate_reaching.toml", "[[bracket]]", "bracket", reaching,
+       &bracket_entry_keys()},
+      {"scenarios/validate_reaching.toml", "[[budget_source]]", "budget_source", reaching,
+       &budget_source_entry_keys()}};
 }
 
 // A bad value of a typed row as TOML text, and a word its refusal must hold.
@@ -81,23 +81,30 @@ struct BadValue {
 // finite side of its range just outside, a name it lacks; none for an untyped row.
 std::vector<BadValue> bad_values(const EntryKey& k) {
   switch (k.type) {
-    case EntryType::kText: return {{"1", "must be a string"}};
-    case EntryType::kTexts: return {{"1", "list of strings"}, {"[1]", "list of strings"}};
-    case EntryType::kBool: return {{"1", "true or false"}, {"\"yes\"", "true or false"}};
-    case EntryType::kTable: return {{"1", "must be "}};
-    case EntryType::kChoice: return {{"\"no_such_name\"", "allowed"}, {"1", "allowed"}};
+    case EntryType::kText:
+      return {{"1", "must be a string"}};
+    case EntryType::kTexts:
+      return {{"1", "list of strings"}, {"[1]", "list of strings"}};
+    case EntryType::kBool:
+      return {{"1", "true or false"}, {"\"yes\"", "true or false"}};
+    case EntryType::kTable:
+      return {{"1", "must be "}};
+    case EntryType::kChoice:
+      return {{"\"no_such_name\"", "allowed"}, {"1", "allowed"}};
     case EntryType::kNumber: {
-      std::vector<BadValue> bad = {{"\"x\"", "must be a number"}, {"true", "must be a number"},
-                                   {"nan", "must be finite"}};
+      std::vector<BadValue> bad = {
+          {"\"x\"", "must be a number"}, {"true", "must be a number"}, {"nan", "must be finite"}};
       for (double v : outside(k.range)) bad.push_back({format_number(v), "must be in"});
       return bad;
     }
     case EntryType::kInteger: {
       std::vector<BadValue> bad = {{"1.5", "an integer"}, {"\"x\"", "an integer"}};
-      for (double v : outside(k.range)) bad.push_back({std::to_string(std::llround(v)), "must be in"});
+      for (double v : outside(k.range))
+        bad.push_back({std::to_string(std::llround(v)), "must be in"});
       return bad;
     }
-    case EntryType::kAny: break;
+    case EntryType::kAny:
+      break;
   }
   return {};
 }
@@ -140,7 +147,7 @@ TEST(EntryKeysTest, EveryShippedTableRefusesAKeyOutsideItsList) {
     bad.insert(at + c.header.size() + 1, "no_such_key = 1\n");
     std::ofstream(copy) << bad;
     const InputErrorParts parts = refusal_parts([&] { c.load(copy.string()); }, c.array);
-    std::ofstream(copy) << text;   // and without it, read as shipped
+    std::ofstream(copy) << text;  // and without it, read as shipped
     EXPECT_NO_THROW(c.load(copy.string()));
     fs::remove_all(root);
     EXPECT_EQ(parts.key, c.array + "[0].no_such_key");
@@ -183,19 +190,22 @@ TEST(EntryKeysTest, OnlyTheRowsOfAnotherKeysTypeAreUntyped) {
 }
 
 TEST(EntryKeysTest, PamsimKeysListsEveryTablesKeys) {
-  const std::vector<std::pair<std::string, std::vector<std::pair<std::string,
-                                                                  const std::vector<EntryKey>*>>>>
-      files = {{"--identify", {{"parameter", &parameter_entry_keys()},
-                               {"recording", &recording_entry_keys()},
-                               {"tensile", &tensile_entry_keys()},
-                               {"candidate", &candidate_entry_keys()}}},
-               {"--tune", {{"objective", &objective_entry_keys()},
-                           {"constraint", &constraint_entry_keys()},
-                           {"reference", &reference_entry_keys()},
-                           {"randomize", &randomize_entry_keys()}}},
-               {"--sweep", {{"axis", &axis_entry_keys()},
-                            {"axis", &case_axis_entry_keys()},
-                            {"axis[].case", &case_entry_keys()}}}};
+  const std::vector<
+      std::pair<std::string, std::vector<std::pair<std::string, const std::vector<EntryKey>*>>>>
+      files = {{"--identify",
+                {{"parameter", &parameter_entry_keys()},
+                 {"recording", &recording_entry_keys()},
+                 {"tensile", &tensile_entry_keys()},
+                 {"candidate", &candidate_entry_keys()}}},
+               {"--tune",
+                {{"objective", &objective_entry_keys()},
+                 {"constraint", &constraint_entry_keys()},
+                 {"reference", &reference_entry_keys()},
+                 {"randomize", &randomize_entry_keys()}}},
+               {"--sweep",
+                {{"axis", &axis_entry_keys()},
+                 {"axis", &case_axis_entry_keys()},
+                 {"axis[].case", &case_entry_keys()}}}};
   int listed = 0;
   for (const auto& [flag, arrays] : files) {
     const CliResult r = run_pamsim("keys " + flag);

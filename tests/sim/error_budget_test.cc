@@ -48,8 +48,10 @@ TEST(ErrorBudgetTest, SourcesAreReadInTheFilesOrder) {
 TEST(ErrorBudgetTest, RunsAreNoneAllEachAloneAndAllButEach) {
   const std::vector<BudgetConfig> c = budget_configs(read(kTwoSources));
   ASSERT_EQ(c.size(), 6u);
-  const std::string g_on = "sensors.gauge.model=\"bridge\"", g_off = "sensors.gauge.model=\"linear\"";
-  const std::string l1 = "muscles.pam.line_diameter_mm=0.5", l2 = "muscles.pam.line_modulus_MPa=2500";
+  const std::string g_on = "sensors.gauge.model=\"bridge\"",
+                    g_off = "sensors.gauge.model=\"linear\"";
+  const std::string l1 = "muscles.pam.line_diameter_mm=0.5",
+                    l2 = "muscles.pam.line_modulus_MPa=2500";
   EXPECT_EQ(c[0].name, "none");
   EXPECT_EQ(c[0].overrides, (std::vector<std::string>{g_off}));
   EXPECT_EQ(c[1].name, "all");
@@ -150,8 +152,10 @@ TEST(ErrorBudgetTest, BadSourcesNameTheirKey) {
            {"[[budget_source]]\nname = \"a\"\n", "budget_source[0].on is required"},
            {"[[budget_source]]\nname = \"a\"\non = []\n", "budget_source[0].on must hold at least"},
            {"[[budget_source]]\nname = \"a\"\non = [1]\n", "budget_source[0].on must be a list of"},
-           {"[[budget_source]]\nname = \"a\"\non = \"x=1\"\n", "budget_source[0].on must be a list"},
-           {"[[budget_source]]\nname = \"a\"\non = [\"noequals\"]\n", "budget_source[0].on must hold"},
+           {"[[budget_source]]\nname = \"a\"\non = \"x=1\"\n",
+            "budget_source[0].on must be a list"},
+           {"[[budget_source]]\nname = \"a\"\non = [\"noequals\"]\n",
+            "budget_source[0].on must hold"},
            {"[[budget_source]]\nname = \"a\"\non = [\"x=1\", \"x =2\"]\n", "sets x twice"},
            {"[[budget_source]]\nname = \"a\"\n" + ok_on + "off = [\"=1\"]\n",
             "budget_source[0].off must hold"},

@@ -21,8 +21,8 @@
 namespace pamsim {
 namespace {
 
-using pamsim_test::kSource;
 using pamsim_test::kScenarios;
+using pamsim_test::kSource;
 
 TrialResult run_file(const std::string& name, const std::vector<std::string>& overrides = {}) {
   const Scenario sc = load_scenario(kScenarios + name, overrides);
@@ -134,9 +134,9 @@ TEST(ExperimentTest, PulleyTrialsAreTheSameOnOneAndTwoThreads) {
 // weight at rest, and the estimator is now wrong by what separates the two laws.
 TEST(ExperimentTest, PulleyWithAPhysicalPlantHoldsItsWeightAndShowsTheEstimatorsError) {
   const std::string plant = "muscles.pam.plant=\"../models/pams/plant_agonist.toml\"";
-  const TrialResult still = run_file("pulley_sine_5kg.toml",
-                                     {plant, "sim.duration_s=2",
-                                      "muscles.pam.command={ kind = \"constant\", MPa = 0.6 }"});
+  const TrialResult still = run_file(
+      "pulley_sine_5kg.toml",
+      {plant, "sim.duration_s=2", "muscles.pam.command={ kind = \"constant\", MPa = 0.6 }"});
   ASSERT_EQ(still.summary.status, "ok") << still.summary.message;
   for (double x : column(still.trajectory, "position_mm")) EXPECT_NEAR(x, 0.0, 0.05);
   const std::vector<double> force = column(still.trajectory, "force_pam_N");
@@ -165,7 +165,7 @@ TEST(ExperimentTest, ReachingArmRisesMonotonicallyWhileTheRampsRun) {
   const std::vector<double> est_anta = column(r.trajectory, "length_est_anta_mm");
   double start = NAN, end = NAN;
   for (std::size_t k = 1; k < t.size(); ++k) {
-    if (t[k] <= 2.0 || t[k] > 14.0) continue;   // while the ramps run
+    if (t[k] <= 2.0 || t[k] > 14.0) continue;  // while the ramps run
     // never back down (by more than the braid friction's creep before it breaks away)
     EXPECT_GT(angle[k], angle[k - 1] - 0.01) << "t = " << t[k];
     if (std::isnan(start)) start = angle[k - 1];
@@ -175,7 +175,7 @@ TEST(ExperimentTest, ReachingArmRisesMonotonicallyWhileTheRampsRun) {
   }
   EXPECT_GT(end - start, 40.0) << "from " << start << " to " << end << " deg";
   // the commands are the ramps: 0.2 -> 0.6 and 0.6 -> 0.2 MPa over 2..14 s
-  const std::size_t mid = 800;   // t = 8 s
+  const std::size_t mid = 800;  // t = 8 s
   ASSERT_NEAR(t[mid], 8.0, 1e-9);
   EXPECT_NEAR(ago[mid], 0.4, 1e-9);
   EXPECT_NEAR(anta[mid], 0.4, 1e-9);
@@ -194,6 +194,7 @@ TEST(ExperimentTest, ReachingArmRisesMonotonicallyWhileTheRampsRun) {
 
 // --- a third PAM -----------------------------------------------------------------------
 
+// clang-format off
 TEST(ExperimentTest, AThirdPamRunsWithNoChangeToTheCode) {
   const auto dir = pamsim_test::fresh_dir("three_pam");
   pamsim_test::write_text(dir / "arm_3pam.xml", pamsim_test::three_pam_model());
@@ -246,13 +247,14 @@ TEST(ExperimentTest, AThirdPamRunsWithNoChangeToTheCode) {
   EXPECT_GT(force2.back(), 10.0);
   EXPECT_FALSE(std::isnan(r.summary.metric("reflex_triggers_ago2")));
 }
+// clang-format on
 
 // --- events ----------------------------------------------------------------------------
 
 TEST(ExperimentTest, EndEventsStopTheTrialOnATimeAJointOrABodyHeight) {
   // at a time
-  const TrialResult timed = run_text(std::string(kQuietArm) +
-                                     "[events.stop]\naction = \"end\"\nwhen.at_s = 1.25\n");
+  const TrialResult timed =
+      run_text(std::string(kQuietArm) + "[events.stop]\naction = \"end\"\nwhen.at_s = 1.25\n");
   ASSERT_EQ(timed.summary.status, "ok") << timed.summary.message;
   EXPECT_NEAR(timed.summary.metric("sim_time_s"), 1.25, 1e-6);
   EXPECT_NE(timed.summary.message.find("stop"), std::string::npos) << timed.summary.message;
@@ -267,8 +269,9 @@ TEST(ExperimentTest, EndEventsStopTheTrialOnATimeAJointOrABodyHeight) {
   ASSERT_EQ(loaded.summary.status, "ok");
   EXPECT_NEAR(loaded.summary.metric("angle_start_deg"), -36.0, 0.5);
   EXPECT_LT(loaded.summary.metric("angle_min_deg"), -45.0) << "the payload pulls the arm down";
-  const TrialResult ended = run_text(payload + "[events.low]\naction = \"end\"\nafter = \"load\"\n"
-                                               "when = { joint = \"shoulder\", below_deg = -40 }\n");
+  const TrialResult ended = run_text(payload +
+                                     "[events.low]\naction = \"end\"\nafter = \"load\"\n"
+                                     "when = { joint = \"shoulder\", below_deg = -40 }\n");
   ASSERT_EQ(ended.summary.status, "ok");
   const double t_low = ended.summary.metric("sim_time_s");
   EXPECT_GT(t_low, 1.0);
@@ -292,10 +295,11 @@ TEST(ExperimentTest, ControllerOffBeforeTheImpactKeepsTheReflexSilent) {
   const TrialResult reflex = run_file("drop_mass.toml", {"sim.duration_s=2"});
   ASSERT_GE(reflex.summary.metric("reflex_triggers_ago"), 1.0);
   const std::string text = pamsim_test::read_file(kScenarios + "drop_mass.toml");
-  const std::string off_then_on = "[events.off]\naction = \"controller_off\"\nwhen.at_s = 1.1\n"
-                                  "[events.on]\naction = \"controller_on\"\nwhen.at_s = 1.9\n";
-  const Scenario sc = load_scenario_text(text + off_then_on, kScenarios + "inline.toml",
-                                         {"sim.duration_s=2"});
+  const std::string off_then_on =
+      "[events.off]\naction = \"controller_off\"\nwhen.at_s = 1.1\n"
+      "[events.on]\naction = \"controller_on\"\nwhen.at_s = 1.9\n";
+  const Scenario sc =
+      load_scenario_text(text + off_then_on, kScenarios + "inline.toml", {"sim.duration_s=2"});
   const TrialResult off = run_trial(load_trial_model(sc), sc, sc.seed);
   ASSERT_EQ(off.summary.status, "ok");
   EXPECT_EQ(off.summary.metric("reflex_triggers_ago"), 0.0);

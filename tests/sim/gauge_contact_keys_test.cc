@@ -25,7 +25,7 @@ std::vector<std::string> knife_edge(const std::string& table) {
     set.push_back(table + "." + kv);
   }
   set.push_back("sensors.gauge.board.length_mm=0");
-  set.push_back("model.antagonist_deformation_mm=5");   // the lines tied as the docs' run
+  set.push_back("model.antagonist_deformation_mm=5");  // the lines tied as the docs' run
   return set;
 }
 
@@ -63,7 +63,7 @@ TEST(GaugeContactKeysTest, BadValuesAreRefusedByTheMusclesKey) {
            {key + "wrap_deg=200", key + "wrap_deg"},
            {key + "friction_coefficient=-1", key + "friction_coefficient"},
            {key + "model=\"glued\"", key + "model"},
-           {key + "reseat_mm=50", key + "reseat_mm"}}) {   // off the board: the gauge's check
+           {key + "reseat_mm=50", key + "reseat_mm"}}) {  // off the board: the gauge's check
     const std::string message = error_of("reaching.toml", {set});
     EXPECT_NE(message.find(named), std::string::npos) << set << ": " << message;
   }

@@ -1,6 +1,6 @@
 // gl_context_test.cc: choosing the GL backend (option over PAMSIM_GL_BACKEND over MUJOCO_GL's
-// headless values over the default, one clear line for an unknown name), the EGL device (option over
-// EGL_DEVICE_ID over MUJOCO_EGL_DEVICE_ID) and the one-backend-per-process rule.
+// headless values over the default, one clear line for an unknown name), the EGL device (option
+// over EGL_DEVICE_ID over MUJOCO_EGL_DEVICE_ID) and the one-backend-per-process rule.
 #include "sim/render/gl_context.h"
 
 #include <gtest/gtest.h>
@@ -56,10 +56,10 @@ TEST(GlContextTest, MujocoGlCountsAfterPamsimGlBackendAndOnlyForHeadlessValues) 
     ScopedEnv mujoco("MUJOCO_GL", "egl");
     EXPECT_EQ(choose_gl_backend(""), GlBackend::kEgl);
     EXPECT_EQ(choose_gl_backend("osmesa"), GlBackend::kOsmesa);
-    ScopedEnv own("PAMSIM_GL_BACKEND", "osmesa");   // pamsim's own variable is the more specific
+    ScopedEnv own("PAMSIM_GL_BACKEND", "osmesa");  // pamsim's own variable is the more specific
     EXPECT_EQ(choose_gl_backend(""), GlBackend::kOsmesa);
   }
-  for (const char* window_system : {"glfw", "glx", "EGL"}) {   // MuJoCo's, not headless
+  for (const char* window_system : {"glfw", "glx", "EGL"}) {  // MuJoCo's, not headless
     ScopedEnv mujoco("MUJOCO_GL", window_system);
     EXPECT_EQ(choose_gl_backend(""), GlBackend::kOsmesa) << window_system;
   }

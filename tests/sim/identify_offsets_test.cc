@@ -27,9 +27,9 @@ namespace fs = std::filesystem;
 
 // The true arm's (wall 2.7 mm) `column` under kSine, plus `offset`, every second 10 ms row.
 void record_with_offset(const fs::path& file, const std::string& column, double offset) {
-  const Scenario sc = load_scenario(
-      kArm, {"muscles.antagonist.plant.geometry.wall_thickness_mm=2.7", "sim.duration_s=2",
-             "seed=7", kSine});
+  const Scenario sc =
+      load_scenario(kArm, {"muscles.antagonist.plant.geometry.wall_thickness_mm=2.7",
+                           "sim.duration_s=2", "seed=7", kSine});
   const TrialResult t = run_trial(load_trial_model(sc), sc, sc.seed, true);
   const std::size_t c = t.trajectory.column(column);
   std::string csv = "time_s," + column + "\n";
@@ -45,12 +45,17 @@ void record_with_offset(const fs::path& file, const std::string& column, double 
 IdentifyDefinition wall_and_offset(const fs::path& dir, const std::string& column, double offset,
                                    double lo_hi, const std::string& top = "") {
   record_with_offset(dir / "sine.csv", column, offset);
-  pamsim_test::write_text(dir / "id.toml",
-      top + "\nbase = \"" + kArm + "\"\noverrides = [\"sim.duration_s=2\"]\n"
-      "[[parameter]]\nkey = \"muscles.antagonist.plant.geometry.wall_thickness_mm\"\nfrom = 2.0\n"
-      "to = 4.0\n[[parameter]]\nkey = \"channel." + column + ".offset\"\nfrom = " +
-      format_shortest(-lo_hi) + "\nto = " + format_shortest(lo_hi) + "\n"
-      "[[recording]]\nfile = \"sine.csv\"\nset = ['" + kSine + "']\n");
+  pamsim_test::write_text(
+      dir / "id.toml", top + "\nbase = \"" + kArm +
+                           "\"\noverrides = [\"sim.duration_s=2\"]\n"
+                           "[[parameter]]\nkey = "
+                           "\"muscles.antagonist.plant.geometry.wall_thickness_mm\"\nfrom = 2.0\n"
+                           "to = 4.0\n[[parameter]]\nkey = \"channel." +
+                           column + ".offset\"\nfrom = " + format_shortest(-lo_hi) +
+                           "\nto = " + format_shortest(lo_hi) +
+                           "\n"
+                           "[[recording]]\nfile = \"sine.csv\"\nset = ['" +
+                           kSine + "']\n");
   return load_identify_definition((dir / "id.toml").string());
 }
 
@@ -68,14 +73,14 @@ double mean_difference(const IdentifyDefinition& def, std::vector<double> values
 
 TEST(IdentifyOffsetsTest, TheProjectedOffsetIsTheMeanDifferenceWithinItsRange) {
   const fs::path dir = pamsim_test::fresh_dir("identify_offsets_mean");
-  for (const double recorded_offset : {1.7, 9.0}) {   // inside [-5, 5], then beyond it
+  for (const double recorded_offset : {1.7, 9.0}) {  // inside [-5, 5], then beyond it
     const IdentifyDefinition def = wall_and_offset(dir, "force_meas_anta_N", recorded_offset, 5.0);
     fs::remove(dir / "id.db");
     IdentifyDb db = IdentifyDb::create((dir / "id.db").string(), def);
     IdentifyResiduals residuals(def, db, 2);
     const OffsetProjection projection(def, residuals);
     ASSERT_EQ(projection.searched(), std::vector<std::size_t>{0}) << "the wall alone is searched";
-    const std::vector<double> unit = projection.embed({0.4});   // a wall of 2.8 mm
+    const std::vector<double> unit = projection.embed({0.4});  // a wall of 2.8 mm
     EXPECT_EQ(unit, (std::vector<double>{0.4, 0.5}));
     const std::vector<double> projected = projection.project(unit, residuals.at(unit, "test"));
     const std::vector<double> values = residuals.values_at(projected);
@@ -149,7 +154,9 @@ TEST(IdentifyOffsetsTest, AStoppedRunResumedIsTheUninterruptedOne) {
   std::atomic<bool> stop{false};
   IdentifyRunOptions stopping = o;
   stopping.stop = &stop;
-  stopping.on_progress = [&](const std::string&, std::int64_t n) { if (n == 5) stop = true; };
+  stopping.on_progress = [&](const std::string&, std::int64_t n) {
+    if (n == 5) stop = true;
+  };
   ASSERT_TRUE(run("part.db", false, stopping).interrupted);
   const IdentifyResult resumed = run("part.db", true, o);
   ASSERT_FALSE(resumed.interrupted);

@@ -2,7 +2,8 @@
 // the standard deviations after against their closed forms for a linear model; on the example
 // arm, a candidate that drops the ball determines its mass (which no recording sees) and
 // ranks first, while one that never moves the ball leaves the mass exactly at its prior; a
-// fitted recording whose trial fails is named as left out; and every bad [[candidate]] is one line naming its key, exit 2, nothing written.
+// fitted recording whose trial fails is named as left out; and every bad [[candidate]] is one line
+// naming its key, exit 2, nothing written.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -54,12 +55,16 @@ const std::string kStill =
 // The wall and the held ball's mass fitted to a 2 s step recording, with `candidates`.
 std::string plan_file(const fs::path& dir, const std::string& candidates) {
   record_arm(dir / "steps.csv", kSteps);
-  pamsim_test::write_text(dir / "id.toml",
-      "base = \"" + kArm + "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
-      "population = 6\npolish_iterations = 10\n"
-      "[[parameter]]\nkey = \"muscles.antagonist.plant.geometry.wall_thickness_mm\"\nfrom = 2.0\nto = 4.0\n"
-      "[[parameter]]\nkey = \"bodies.ball.mass_kg\"\nfrom = 0.1\nto = 0.4\n"
-      "[[recording]]\nfile = \"steps.csv\"\nset = ['" + kSteps + "']\n" + candidates);
+  pamsim_test::write_text(
+      dir / "id.toml",
+      "base = \"" + kArm +
+          "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
+          "population = 6\npolish_iterations = 10\n"
+          "[[parameter]]\nkey = \"muscles.antagonist.plant.geometry.wall_thickness_mm\"\nfrom = "
+          "2.0\nto = 4.0\n"
+          "[[parameter]]\nkey = \"bodies.ball.mass_kg\"\nfrom = 0.1\nto = 0.4\n"
+          "[[recording]]\nfile = \"steps.csv\"\nset = ['" +
+          kSteps + "']\n" + candidates);
   return (dir / "id.toml").string();
 }
 
@@ -100,7 +105,7 @@ TEST(IdentifyPlanTest, AFittedRecordingWhoseTrialFailsIsNamedAsLeftOut) {
   options.threads = 2;
   const IdentifyResult r = run_identify(def, db, options);
   EXPECT_TRUE(plan_candidates(def, r, 2).left_out.empty());
-  def.recordings[0].set.push_back("bodies.no_such_body.mass_kg=1");   // its trials now fail
+  def.recordings[0].set.push_back("bodies.no_such_body.mass_kg=1");  // its trials now fail
   const IdentifyPlan plan = plan_candidates(def, r, 2);
   ASSERT_EQ(plan.left_out.size(), 1u);
   EXPECT_EQ(plan.left_out[0].rfind(def.recordings[0].name + ": ", 0), 0u) << plan.left_out[0];
@@ -114,22 +119,30 @@ TEST(IdentifyPlanTest, BadCandidatesAreOneLineExitTwoAndNothingWritten) {
   const std::string none = plan_file(dir, "");
   const std::string good = pamsim_test::read_file(none);
   const std::string still = "[[candidate]]\nname = \"still\"\n";
-  std::string long_trials = good;   // 200 s trials
+  std::string long_trials = good;  // 200 s trials
   long_trials.replace(long_trials.find("sim.duration_s=2\""), 17, "sim.duration_s=200\"");
   for (const auto& [text, says] : std::vector<std::pair<std::string, std::string>>{
            {good + still, "candidate[0].channels must name at least one channel"},
-           {good + still + "channels = []\n", "candidate[0].channels must name at least one channel"},
+           {good + still + "channels = []\n",
+            "candidate[0].channels must name at least one channel"},
            {good + "[[candidate]]\nchannels = [\"angle_deg\"]\n", "candidate[0].name"},
-           {good + still + "channels = [\"angle_deg\"]\nrate_hz = 0\n", "candidate[0].rate_hz must be in (0, 10000] Hz, got 0"},
-           {good + still + "channels = [\"angle_deg\"]\nduration_s = 3\n", "candidate[0].duration_s must be at most its scenario's sim.duration_s, 2 s, got 3"},
+           {good + still + "channels = [\"angle_deg\"]\nrate_hz = 0\n",
+            "candidate[0].rate_hz must be in (0, 10000] Hz, got 0"},
+           {good + still + "channels = [\"angle_deg\"]\nduration_s = 3\n",
+            "candidate[0].duration_s must be at most its scenario's sim.duration_s, 2 s, got 3"},
            {long_trials + still + "channels = [\"angle_deg\"]\nrate_hz = 10000\n",
             "candidate[0].rate_hz x duration_s gives 2000001 samples, more than the 1000000"},
-           {good + still + "channels = [\"angle_rad\"]\nnoise = { angle_rad = 1 }\n", "candidate[0] (still): channel angle_rad is not a column"},
-           {good + still + "channels = [\"p_meas_ago_MPa\"]\n", "candidate[0].noise gives no floor for p_meas_ago_MPa"},
-           {good + still + "channels = [\"angle_deg\"]\nnoise = { angle_deg = 0 }\n", "candidate[0].noise.angle_deg must be a noise floor > 0"},
+           {good + still + "channels = [\"angle_rad\"]\nnoise = { angle_rad = 1 }\n",
+            "candidate[0] (still): channel angle_rad is not a column"},
+           {good + still + "channels = [\"p_meas_ago_MPa\"]\n",
+            "candidate[0].noise gives no floor for p_meas_ago_MPa"},
+           {good + still + "channels = [\"angle_deg\"]\nnoise = { angle_deg = 0 }\n",
+            "candidate[0].noise.angle_deg must be a noise floor > 0"},
            {good + still + "channels = [\"angle_deg\", \"angle_deg\"]\n", "names angle_deg twice"},
-           {good + still + "channels = [\"angle_deg\"]\n" + still + "channels = [\"angle_deg\"]\n", "candidate[1].name \"still\" is taken"},
-           {good + still + "channels = [\"angle_deg\"]\nset = ['bodies.ball.mass_kg=0.2']\n", "set gives bodies.ball.mass_kg, a parameter"},
+           {good + still + "channels = [\"angle_deg\"]\n" + still + "channels = [\"angle_deg\"]\n",
+            "candidate[1].name \"still\" is taken"},
+           {good + still + "channels = [\"angle_deg\"]\nset = ['bodies.ball.mass_kg=0.2']\n",
+            "set gives bodies.ball.mass_kg, a parameter"},
            {good, "--plan ranks the file's [[candidate]] experiments, and it has none"}}) {
     pamsim_test::expect_file_refused(dir, "identify", text, "--plan", says);
   }

@@ -116,7 +116,7 @@ TEST(IdentifyRoughnessTest, SecantsUndoTheInformationAJitterPretends) {
   const LineModel line;
   const double truth = errors(line).first;
   LineModel rough;
-  rough.amplitude = 0.002;   // a jitter of 0.02 noise SDs, fresh every 1e-4 of the box
+  rough.amplitude = 0.002;  // a jitter of 0.02 noise SDs, fresh every 1e-4 of the box
   rough.cell = 1e-4;
   const auto [local, secant] = errors(rough);
   IdentifyResult result = one_parameter();

@@ -38,13 +38,16 @@ TEST(IdentifyStartsTest, ALocalMinimumAndAnEqualMinimumElsewhereAreEachOneLine) 
   r.best_start = 0;
   const std::vector<std::string> lines = start_warnings(def, r);
   ASSERT_EQ(lines.size(), 2u);
-  EXPECT_EQ(lines[0], "the polish's start 2 of 4 ended in a local minimum: cost 20 against the "
-                      "result's 10 (start 1), at muscles.agonist.plant.geometry."
-                      "wall_thickness_mm = 2.6 against 1.4");
+  EXPECT_EQ(lines[0],
+            "the polish's start 2 of 4 ended in a local minimum: cost 20 against the "
+            "result's 10 (start 1), at muscles.agonist.plant.geometry."
+            "wall_thickness_mm = 2.6 against 1.4");
   EXPECT_EQ(lines[1].rfind("the polish's start 3 of 4 ended as low at another point: cost 11", 0),
-            0u) << lines[1];
+            0u)
+      << lines[1];
   EXPECT_NE(lines[1].find("antagonist.plant.geometry.wall_thickness_mm = 3.8 against 3"),
-            std::string::npos) << lines[1];
+            std::string::npos)
+      << lines[1];
   // with the result's standard errors, the distance is counted in them, among the
   // parameters the recordings determine (the second is not: it is never named)
   r.parameters.resize(2);
@@ -78,7 +81,8 @@ TEST(IdentifyStartsTest, FewerStartsThanAskedIsOneLineWithItsReason) {
   EXPECT_EQ(start_warnings(def, r)[0].rfind("starts = 3 asked, 2 run: the global search's "
                                             "points held no more that lie 0.1 of the box apart",
                                             0),
-            0u) << start_warnings(def, r)[0];
+            0u)
+      << start_warnings(def, r)[0];
   r.interrupted = true;
   EXPECT_TRUE(start_warnings(def, r).empty()) << "an interrupted run resumes with every start";
   r.interrupted = false;
@@ -89,15 +93,18 @@ TEST(IdentifyStartsTest, FewerStartsThanAskedIsOneLineWithItsReason) {
 // The wall fitted from `starts` starts to the 2 s step recording dir/steps.csv.
 IdentifyResult fit_from(const fs::path& dir, int starts) {
   const fs::path file = dir / ("id" + std::to_string(starts) + ".toml");
-  pamsim_test::write_text(file,
-      "base = \"" + kArm + "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
-      "population = 6\npolish_iterations = 10\nstarts = " + std::to_string(starts) + "\n"
-      "[[parameter]]\nkey = \"muscles.antagonist.plant.geometry.wall_thickness_mm\"\n"
-      "from = 2.0\nto = 4.0\n"
-      "[[recording]]\nfile = \"steps.csv\"\nset = ['" + kSteps + "']\n");
+  pamsim_test::write_text(
+      file, "base = \"" + kArm +
+                "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
+                "population = 6\npolish_iterations = 10\nstarts = " +
+                std::to_string(starts) +
+                "\n"
+                "[[parameter]]\nkey = \"muscles.antagonist.plant.geometry.wall_thickness_mm\"\n"
+                "from = 2.0\nto = 4.0\n"
+                "[[recording]]\nfile = \"steps.csv\"\nset = ['" +
+                kSteps + "']\n");
   const IdentifyDefinition def = load_identify_definition(file.string());
-  IdentifyDb db = IdentifyDb::create((dir / ("id" + std::to_string(starts) + ".db")).string(),
-                                     def);
+  IdentifyDb db = IdentifyDb::create((dir / ("id" + std::to_string(starts) + ".db")).string(), def);
   IdentifyRunOptions options;
   options.threads = 2;
   return run_identify(def, db, options);

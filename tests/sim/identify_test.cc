@@ -36,12 +36,17 @@ std::string identify_file(const fs::path& dir) {
   record_arm(dir / "steps.csv", kSteps);
   record_arm(dir / "sine.csv", kSine);
   const std::string text =
-      "base = \"" + kArm + "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
+      "base = \"" + kArm +
+      "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
       "population = 6\npolish_iterations = 10\n"
-      "[[parameter]]\nkey = \"muscles.antagonist.plant.geometry.wall_thickness_mm\"\nfrom = 2.0\nto = 4.0\n"
+      "[[parameter]]\nkey = \"muscles.antagonist.plant.geometry.wall_thickness_mm\"\nfrom = "
+      "2.0\nto = 4.0\n"
       "[[parameter]]\nkey = \"bodies.ball.mass_kg\"\nfrom = 0.1\nto = 0.4\n"
-      "[[recording]]\nfile = \"steps.csv\"\nset = ['" + kSteps + "']\n"
-      "[[recording]]\nfile = \"sine.csv\"\nheld_out = true\nset = ['" + kSine + "']\n";
+      "[[recording]]\nfile = \"steps.csv\"\nset = ['" +
+      kSteps +
+      "']\n"
+      "[[recording]]\nfile = \"sine.csv\"\nheld_out = true\nset = ['" +
+      kSine + "']\n";
   pamsim_test::write_text(dir / "id.toml", text);
   return (dir / "id.toml").string();
 }
@@ -49,7 +54,8 @@ std::string identify_file(const fs::path& dir) {
 IdentifyResult run(const IdentifyDefinition& def, const std::string& db_path, bool resume,
                    const std::atomic<bool>* stop = nullptr,
                    std::function<void(const std::string&, std::int64_t)> progress = nullptr) {
-  IdentifyDb db = resume ? IdentifyDb::open_to_resume(db_path, def) : IdentifyDb::create(db_path, def);
+  IdentifyDb db =
+      resume ? IdentifyDb::open_to_resume(db_path, def) : IdentifyDb::create(db_path, def);
   IdentifyRunOptions o;
   o.threads = 2;
   o.stop = stop;
@@ -73,7 +79,8 @@ TEST(IdentifyTest, RecoversTheWallAndSaysWhatTheRecordingCannotSee) {
   EXPECT_TRUE(std::isnan(r.parameters[1].std_error));
   ASSERT_EQ(r.fits.size(), 2u);
   for (const ChannelFit& f : r.fits) {
-    EXPECT_LT(f.rmse_after, 0.1 * f.rmse_before) << f.recording << (f.held_out ? " (held out)" : "");
+    EXPECT_LT(f.rmse_after, 0.1 * f.rmse_before)
+        << f.recording << (f.held_out ? " (held out)" : "");
   }
   EXPECT_TRUE(r.fits[1].held_out);
   EXPECT_LE(r.cost_final, r.cost_global);
@@ -83,8 +90,8 @@ TEST(IdentifyTest, RecoversTheWallAndSaysWhatTheRecordingCannotSee) {
 // and lengths (no trial runs).
 TEST(IdentifyTest, ATensileTestAloneGivesThePlantsWall) {
   const fs::path dir = pamsim_test::fresh_dir("identify_tensile");
-  AvbdlParams truth = load_plant_params(std::string(PAMSIM_SOURCE_DIR) +
-                                        "/models/pams/plant_agonist.toml").avbdl;
+  AvbdlParams truth =
+      load_plant_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_agonist.toml").avbdl;
   truth.wall_thickness_m = 2.2e-3;
   TensileTestOptions test;
   test.pressures_mpa = {0.2, 0.4, 0.6};
@@ -92,10 +99,13 @@ TEST(IdentifyTest, ATensileTestAloneGivesThePlantsWall) {
   test.noise_force_n = 0.5;
   test.seed = 3;
   pamsim_test::write_text(dir / "tensile.csv", tensile_rows_to_csv(run_tensile_test(truth, test)));
-  pamsim_test::write_text(dir / "id.toml",
-      "base = \"" + kArm + "\"\ngenerations = 2\npopulation = 5\npolish_iterations = 10\n"
-      "[[parameter]]\nkey = \"muscles.agonist.plant.geometry.wall_thickness_mm\"\nfrom = 1.5\nto = 3.0\n"
-      "[[tensile]]\nmuscle = \"agonist\"\nfile = \"tensile.csv\"\n");
+  pamsim_test::write_text(
+      dir / "id.toml",
+      "base = \"" + kArm +
+          "\"\ngenerations = 2\npopulation = 5\npolish_iterations = 10\n"
+          "[[parameter]]\nkey = \"muscles.agonist.plant.geometry.wall_thickness_mm\"\nfrom = "
+          "1.5\nto = 3.0\n"
+          "[[tensile]]\nmuscle = \"agonist\"\nfile = \"tensile.csv\"\n");
   const IdentifyDefinition def = load_identify_definition((dir / "id.toml").string());
   const IdentifyResult r = run(def, (dir / "id.db").string(), false);
   ASSERT_EQ(r.parameters.size(), 1u);
@@ -130,18 +140,21 @@ TEST(IdentifyTest, ASensorsGainOffsetAndDelayAreParametersToo) {
   const TrialResult t = run_trial(load_trial_model(sc), sc, sc.seed, true);
   const std::size_t force = t.trajectory.column("force_meas_anta_N");
   std::string csv = "time_s,force_meas_anta_N\n";
-  for (std::size_t row = 2; row < t.trajectory.rows(); row += 2) {   // 100 Hz log, 20 ms = 2 rows
+  for (std::size_t row = 2; row < t.trajectory.rows(); row += 2) {  // 100 Hz log, 20 ms = 2 rows
     csv += format_shortest(t.trajectory.at(row, 0)) + "," +
            format_shortest(1.05 * t.trajectory.at(row - 2, force) + 2.0) + "\n";
   }
   pamsim_test::write_text(dir / "sine.csv", csv);
-  pamsim_test::write_text(dir / "id.toml",
-      "base = \"" + kArm + "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 3\n"
-      "population = 6\npolish_iterations = 20\n"
-      "[[parameter]]\nkey = \"channel.force_meas_anta_N.gain\"\nfrom = 0.8\nto = 1.2\n"
-      "[[parameter]]\nkey = \"channel.force_meas_anta_N.offset\"\nfrom = -5.0\nto = 5.0\n"
-      "[[parameter]]\nkey = \"channel.force_meas_anta_N.delay_ms\"\nfrom = 0.0\nto = 50.0\n"
-      "[[recording]]\nfile = \"sine.csv\"\nset = ['" + kSine + "']\n");
+  pamsim_test::write_text(
+      dir / "id.toml",
+      "base = \"" + kArm +
+          "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 3\n"
+          "population = 6\npolish_iterations = 20\n"
+          "[[parameter]]\nkey = \"channel.force_meas_anta_N.gain\"\nfrom = 0.8\nto = 1.2\n"
+          "[[parameter]]\nkey = \"channel.force_meas_anta_N.offset\"\nfrom = -5.0\nto = 5.0\n"
+          "[[parameter]]\nkey = \"channel.force_meas_anta_N.delay_ms\"\nfrom = 0.0\nto = 50.0\n"
+          "[[recording]]\nfile = \"sine.csv\"\nset = ['" +
+          kSine + "']\n");
   const IdentifyDefinition def = load_identify_definition((dir / "id.toml").string());
   const IdentifyResult r = run(def, (dir / "id.db").string(), false);
   ASSERT_EQ(r.parameters.size(), 3u);
@@ -163,26 +176,32 @@ TEST(IdentifyTest, AResumeAfterAnInputFileChangedIsRefused) {
                 dir / "plant_antagonist.toml");
   const std::string source_plant =
       "plant = \"" + std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_antagonist.toml\"";
-  const std::string base = pamsim_test::scenario_variant(
-      dir, "reaching.toml", source_plant, "plant = \"" + (dir / "plant_antagonist.toml").string() + "\"");
+  const std::string base =
+      pamsim_test::scenario_variant(dir, "reaching.toml", source_plant,
+                                    "plant = \"" + (dir / "plant_antagonist.toml").string() + "\"");
   record_arm(dir / "steps.csv", kSteps);
-  pamsim_test::write_text(dir / "id.toml",
-      "base = \"" + base + "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 0\n"
-      "polish_iterations = 0\n"
-      "[[parameter]]\nkey = \"joints.shoulder.damping_N_m_s_per_rad\"\nfrom = 0.05\nto = 0.2\n"
-      "[[recording]]\nfile = \"steps.csv\"\nset = ['" + kSteps + "']\n");
+  pamsim_test::write_text(
+      dir / "id.toml",
+      "base = \"" + base +
+          "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 0\n"
+          "polish_iterations = 0\n"
+          "[[parameter]]\nkey = \"joints.shoulder.damping_N_m_s_per_rad\"\nfrom = 0.05\nto = 0.2\n"
+          "[[recording]]\nfile = \"steps.csv\"\nset = ['" +
+          kSteps + "']\n");
   const IdentifyDefinition def = load_identify_definition((dir / "id.toml").string());
   const std::string db = (dir / "id.db").string();
   { IdentifyDb made = IdentifyDb::create(db, def); }
-  { IdentifyDb same = IdentifyDb::open_to_resume(db, def); }   // nothing changed
+  { IdentifyDb same = IdentifyDb::open_to_resume(db, def); }  // nothing changed
   std::ofstream(dir / "plant_antagonist.toml", std::ios::app) << "# edited\n";
   try {
     IdentifyDb::open_to_resume(db, def);
     ADD_FAILURE() << "resumed on a changed plant file";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("muscles.antagonist.plant"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("muscles.antagonist.plant"), std::string::npos)
+        << e.what();
     EXPECT_NE(std::string(e.what()).find("changed since this identification began"),
-              std::string::npos) << e.what();
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -191,8 +210,10 @@ TEST(IdentifyTest, AStoppedRunResumedIsTheUninterruptedOne) {
   const IdentifyDefinition def = load_identify_definition(identify_file(dir));
   const IdentifyResult whole = run(def, (dir / "whole.db").string(), false);
   std::atomic<bool> stop{false};
-  const IdentifyResult part = run(def, (dir / "part.db").string(), false, &stop,
-                                  [&](const std::string&, std::int64_t n) { if (n == 7) stop = true; });
+  const IdentifyResult part =
+      run(def, (dir / "part.db").string(), false, &stop, [&](const std::string&, std::int64_t n) {
+        if (n == 7) stop = true;
+      });
   ASSERT_TRUE(part.interrupted);
   const IdentifyResult resumed = run(def, (dir / "part.db").string(), true);
   ASSERT_FALSE(resumed.interrupted);
@@ -204,8 +225,8 @@ TEST(IdentifyTest, AStoppedRunResumedIsTheUninterruptedOne) {
 
 // The shipped example stays a valid identification: its recordings, tensile test and keys.
 TEST(IdentifyTest, TheShippedExampleLoads) {
-  const IdentifyDefinition def = load_identify_definition(
-      std::string(PAMSIM_SOURCE_DIR) + "/examples/identify/identify.toml");
+  const IdentifyDefinition def =
+      load_identify_definition(std::string(PAMSIM_SOURCE_DIR) + "/examples/identify/identify.toml");
   EXPECT_EQ(def.parameters.size(), 5u);
   EXPECT_EQ(def.candidates.size(), 4u) << "ball_drop, reflex_drop, slow_ramp, fast_steps";
   ASSERT_EQ(def.recordings.size(), 3u);
@@ -216,6 +237,7 @@ TEST(IdentifyTest, TheShippedExampleLoads) {
   EXPECT_EQ(def.tensile[0].muscle, "agonist");
 }
 
+// clang-format off
 TEST(IdentifyTest, BadFilesAreOneLineExitTwoAndNoDatabase) {
   const fs::path dir = pamsim_test::fresh_dir("identify_bad");
   const std::string good = pamsim_test::read_file(identify_file(dir));
@@ -262,6 +284,7 @@ TEST(IdentifyTest, BadFilesAreOneLineExitTwoAndNoDatabase) {
     pamsim_test::expect_file_refused(dir, "identify", text, "", says);
   }
 }
+// clang-format on
 
 }  // namespace
 }  // namespace pamsim

@@ -24,9 +24,9 @@ inline const std::string kSine =
 // log rows late (an unmodelled sensor delay; 0: none).
 inline void record_arm(const std::filesystem::path& file, const std::string& command,
                        std::size_t delay_rows = 0) {
-  const Scenario sc = load_scenario(
-      kArm, {"muscles.antagonist.plant.geometry.wall_thickness_mm=2.7", "sim.duration_s=2",
-             "seed=7", command});
+  const Scenario sc =
+      load_scenario(kArm, {"muscles.antagonist.plant.geometry.wall_thickness_mm=2.7",
+                           "sim.duration_s=2", "seed=7", command});
   const TrialResult t = run_trial(load_trial_model(sc), sc, sc.seed, true);
   std::string csv = "time_s,angle_deg\n";
   const std::size_t angle = t.trajectory.column("angle_deg");

@@ -30,11 +30,14 @@ namespace fs = std::filesystem;
 IdentifyResult identify_wall(const fs::path& dir, std::size_t delay_rows,
                              const std::string& top = "", const std::string& recording = "") {
   record_arm(dir / "steps.csv", kSteps, delay_rows);
-  pamsim_test::write_text(dir / "id.toml",
-      top + "base = \"" + kArm + "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
-      "population = 6\npolish_iterations = 10\n[[parameter]]\n"
-      "key = \"muscles.antagonist.plant.geometry.wall_thickness_mm\"\nfrom = 2.0\nto = 4.0\n"
-      "[[recording]]\nfile = \"steps.csv\"\nset = ['" + kSteps + "']\n" + recording);
+  pamsim_test::write_text(
+      dir / "id.toml",
+      top + "base = \"" + kArm +
+          "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
+          "population = 6\npolish_iterations = 10\n[[parameter]]\n"
+          "key = \"muscles.antagonist.plant.geometry.wall_thickness_mm\"\nfrom = 2.0\nto = 4.0\n"
+          "[[recording]]\nfile = \"steps.csv\"\nset = ['" +
+          kSteps + "']\n" + recording);
   const IdentifyDefinition def = load_identify_definition((dir / "id.toml").string());
   IdentifyDb db = IdentifyDb::create((dir / "id.db").string(), def);
   IdentifyRunOptions options;
@@ -58,7 +61,7 @@ TEST(IdentifyUncertaintyTest, AnExplainedRecordingGivesAnIntervalAroundTheTruth)
 
 TEST(IdentifyUncertaintyTest, AnUnmodelledSensorDelayIsReportedAsNotExplained) {
   const fs::path dir = pamsim_test::fresh_dir("uncertainty_delayed");
-  const IdentifyResult r = identify_wall(dir, 6);   // 60 ms late
+  const IdentifyResult r = identify_wall(dir, 6);  // 60 ms late
   ASSERT_EQ(r.fits.size(), 1u);
   EXPECT_FALSE(r.fits[0].explained) << r.fits[0].rmse_after << " vs " << r.fits[0].noise_floor;
   const std::vector<std::string> lines = unexplained_channels(r);
@@ -68,7 +71,8 @@ TEST(IdentifyUncertaintyTest, AnUnmodelledSensorDelayIsReportedAsNotExplained) {
   IdentifyDefinition def = load_identify_definition((dir / "id.toml").string());
   const std::string md = identify_markdown(def, r);
   EXPECT_NE(md.find("not to be trusted"), std::string::npos);
-  EXPECT_EQ(identify_warnings(def, r).front(), lines[0] + "; the standard errors are not to be trusted");
+  EXPECT_EQ(identify_warnings(def, r).front(),
+            lines[0] + "; the standard errors are not to be trusted");
   EXPECT_NE(identify_fits_csv(r).find(",0\n"), std::string::npos) << identify_fits_csv(r);
 }
 
@@ -82,9 +86,8 @@ namespace {
 TEST(IdentifyUncertaintyTest, AGivenNoiseFloorAndIntervalLevelAreUsed) {
   const fs::path dir = pamsim_test::fresh_dir("uncertainty_given");
   const IdentifyResult wide = identify_wall(dir, 6);
-  const IdentifyResult given =
-      identify_wall(pamsim_test::fresh_dir("uncertainty_given2"), 6, "interval = 0.5\n",
-                    "noise = { angle_deg = 1.0 }\n");
+  const IdentifyResult given = identify_wall(pamsim_test::fresh_dir("uncertainty_given2"), 6,
+                                             "interval = 0.5\n", "noise = { angle_deg = 1.0 }\n");
   ASSERT_EQ(given.fits.size(), 1u);
   EXPECT_EQ(given.fits[0].noise_floor, 1.0);
   EXPECT_TRUE(given.fits[0].explained) << "1.9 deg of RMS is within 3 floors of 1 deg";
@@ -112,10 +115,12 @@ TEST(IdentifyUncertaintyTest, NoConvergenceAndABoundAreWarnings) {
   r.polish_iterations = 10;
   const std::vector<std::string> warnings = identify_warnings(def, r);
   ASSERT_EQ(warnings.size(), 2u);
-  EXPECT_EQ(warnings[0], "the polish stopped after 10 iterations without converging "
-                         "(polish_iterations = 10): the point may not be the minimum");
-  EXPECT_EQ(warnings[1], "muscles.antagonist.plant.geometry.wall_thickness_mm = 4 sits at a "
-                         "bound of its range [2, 4]: widen it, or the value is not identified");
+  EXPECT_EQ(warnings[0],
+            "the polish stopped after 10 iterations without converging "
+            "(polish_iterations = 10): the point may not be the minimum");
+  EXPECT_EQ(warnings[1],
+            "muscles.antagonist.plant.geometry.wall_thickness_mm = 4 sits at a "
+            "bound of its range [2, 4]: widen it, or the value is not identified");
   r.polish_converged = true;
   r.parameters[0].at_bound = false;
   EXPECT_TRUE(identify_warnings(def, r).empty());
@@ -139,14 +144,15 @@ TEST(IdentifyUncertaintyTest, TooFewSamplesToEstimateTheNoiseIsUnknown) {
   EXPECT_TRUE(unexplained_channels(r).empty()) << "unknown is not \"does not explain\"";
   const std::vector<std::string> warnings = identify_warnings(IdentifyDefinition{}, r);
   ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_EQ(warnings[0], "recording sparse (angle_deg) has too few samples to estimate its "
-                         "noise: whether the model explains it is unknown (give noise = { "
-                         "angle_deg = ... })");
+  EXPECT_EQ(warnings[0],
+            "recording sparse (angle_deg) has too few samples to estimate its "
+            "noise: whether the model explains it is unknown (give noise = { "
+            "angle_deg = ... })");
   EXPECT_NE(identify_fits_csv(r).find(",\n"), std::string::npos) << "explained: empty";
-  judge_channel(recorded, 0.5, 3.0, &fit);   // a given floor judges it
+  judge_channel(recorded, 0.5, 3.0, &fit);  // a given floor judges it
   EXPECT_TRUE(fit.judged);
   EXPECT_TRUE(fit.explained) << "1 <= 3 x 0.5";
-  judge_channel(recorded, 0.5, 1.5, &fit);   // the file's explained_noise_factor = 1.5
+  judge_channel(recorded, 0.5, 1.5, &fit);  // the file's explained_noise_factor = 1.5
   EXPECT_FALSE(fit.explained) << "1 > 1.5 x 0.5";
 }
 

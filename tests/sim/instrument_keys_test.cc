@@ -25,18 +25,17 @@
 namespace pamsim {
 namespace {
 
-using pamsim_test::kScenarios;
 using pamsim_test::kDropMass;
+using pamsim_test::kScenarios;
 
 // the key set to `value` as an override of the shipped drop; the refusal's parts
 InputErrorParts refusal_of(const std::string& key, const std::string& value) {
-  return refusal_parts([&] { load_scenario(kDropMass, {key + "=" + value}); },
-                       key + " = " + value);
+  return refusal_parts([&] { load_scenario(kDropMass, {key + "=" + value}); }, key + " = " + value);
 }
 
 bool is_instrument_key(const std::string& key) {
-  for (const char* prefix : {"sensors.gauge.", "sensors.pressure.", "sensors.fiber.",
-                             "sensors.encoder."}) {
+  for (const char* prefix :
+       {"sensors.gauge.", "sensors.pressure.", "sensors.fiber.", "sensors.encoder."}) {
     if (key.rfind(prefix, 0) == 0) return true;
   }
   return false;
@@ -78,7 +77,7 @@ TEST(InstrumentKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {
   };
   std::vector<std::vector<double>> lists;
   for (const KeyTable& t : all_instrument_tables(&s, &lists)) {
-    for (const ListRow& row : t.lists) {   // a value out of range, a list of text
+    for (const ListRow& row : t.lists) {  // a value out of range, a list of text
       const double bad = row.range.lo_open ? row.range.lo : row.range.lo - 1;
       expect_refused(t.name + "." + row.name, "[" + format_value(bad) + "]");
       expect_refused(t.name + "." + row.name, "[\"x\"]");
@@ -118,18 +117,16 @@ TEST(InstrumentKeysTest, AValueInTheFilesUnitReachesItsSiField) {
   EXPECT_EQ(s.pressure_hardware.response_time_s, 2e-3);
   EXPECT_EQ(s.fiber_hardware.span_m, units::mm_to_m(30.0));
   EXPECT_EQ(s.encoder.resolution_m, units::mm_to_m(0.02));
-  EXPECT_TRUE(s.gauge_hardware.enabled && s.pressure_hardware.enabled &&
-              s.fiber_hardware.enabled && s.encoder.enabled);
+  EXPECT_TRUE(s.gauge_hardware.enabled && s.pressure_hardware.enabled && s.fiber_hardware.enabled &&
+              s.encoder.enabled);
 }
 
 TEST(InstrumentKeysTest, AnIdealInstrumentRefusesItsHardwaresKeys) {
   const std::string ideal = kScenarios + "drop_mass_ideal.toml";
-  for (const std::string& key : {std::string("sensors.gauge.board.width_mm"),
-                                 std::string("sensors.pressure.hysteresis_MPa"),
-                                 std::string("sensors.fiber.span_mm"),
-                                 std::string("sensors.encoder.resolution_mm")}) {
-    const InputErrorParts parts =
-        refusal_parts([&] { load_scenario(ideal, {key + "=1"}); }, key);
+  for (const std::string& key :
+       {std::string("sensors.gauge.board.width_mm"), std::string("sensors.pressure.hysteresis_MPa"),
+        std::string("sensors.fiber.span_mm"), std::string("sensors.encoder.resolution_mm")}) {
+    const InputErrorParts parts = refusal_parts([&] { load_scenario(ideal, {key + "=1"}); }, key);
     EXPECT_EQ(parts.key, key);
     EXPECT_NE(parts.problem.find("is used only by"), std::string::npos) << parts.problem;
   }

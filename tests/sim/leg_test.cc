@@ -28,7 +28,7 @@ namespace pamsim {
 namespace {
 
 using pamsim_test::kScenarios;
-constexpr double kLegMass_kg = 1.016 + 0.30 + 0.14 + 0.044;   // trunk, thigh, shank, foot
+constexpr double kLegMass_kg = 1.016 + 0.30 + 0.14 + 0.044;  // trunk, thigh, shank, foot
 
 TrialResult land(const std::vector<std::string>& overrides = {}) {
   const Scenario sc = load_scenario(kScenarios + "landing.toml", overrides);
@@ -110,7 +110,7 @@ double knee_gravity_torque_nm(const std::vector<std::string>& overrides) {
 
 TEST(LegTest, CalibrationPlacesTheOtherJointsAtTheirStartKeys) {
   const double flexed = knee_gravity_torque_nm({"joints.hip.start_deg=60"});
-  const double crouched = knee_gravity_torque_nm({});   // hip 10
+  const double crouched = knee_gravity_torque_nm({});  // hip 10
   const double straight = knee_gravity_torque_nm({"joints.hip.start_deg=0"});
   EXPECT_GT(std::fabs(flexed - crouched), 0.1 * std::fabs(crouched));
   EXPECT_NE(crouched, straight);
@@ -145,8 +145,9 @@ TEST(LegTest, BehindTheShippedRegulatorTheReflexesActOnlyAfterTheImpact) {
 // Behind a direct valve, with the gains scenarios/sweep_landing_gains.toml finds (Ia 0.00094,
 // Ib 0.0034), Ia + Ib collapses the knee less than no reflex on the 100 mm landing (29.45 deg
 // against 30.7 over seeds 1-20, every one below; on seeds 1001-1020 two of 20 collapse more,
-// docs/tension-reflex.md), where the Ia reflex alone collapses it more (37.4): the Ib reflex takes back the Ia reflex's push on the rebound. Behind the shipped
-// regulator no reflex changes the collapse (docs/leg.md).
+// docs/tension-reflex.md), where the Ia reflex alone collapses it more (37.4): the Ib reflex takes
+// back the Ia reflex's push on the rebound. Behind the shipped regulator no reflex changes the
+// collapse (docs/leg.md).
 TEST(LegTest, BehindADirectValveIaAndIbCollapseTheKneeLessThanNoReflex) {
   const auto collapse = [](const std::vector<std::string>& sets) {
     std::vector<std::string> all = {"valve.model=\"iso6358\""};
@@ -261,18 +262,20 @@ TEST(LegTest, SpansAndMetricSetsAreOfTheTrialModel) {
 }
 
 TEST(LegTest, BadLegInputIsOneLineNamingTheKey) {
-  pamsim_test::expect_each_named("landing.toml", {
-      {{"joints.knee.start_deg=720"}, "joints.knee.start_deg"},
-      {{"joints.trunk_z.start_deg=10"}, "joints.trunk_z"},   // a slide
-      {{"joints.knee.start_deg=-10"}, "joints.knee.start_deg must be within the joint's range"},
-      {{"muscles.VAS.line_mm=0"}, "muscles.VAS.line_mm"},
-      // a biarticular tendon whose path misses a joint it is said to cross
-      {{"muscles.RF.spans=[\"hip\", \"ankle\"]"},
-       "muscles.RF.spans names joint 'ankle', which the tendon's path misses"},
-      {{"muscles.GAS.spans=[\"knee\", \"elbow\"]"}, "muscles.GAS.spans"}});
-  pamsim_test::expect_each_named("landing_reflex.toml", {
-      {{"reflex.ib.f_thr_N=-1"}, "reflex.ib.f_thr_N"},
-      {{"reflex.pairs=[[\"VAS\", \"BFS\"], [\"VAS\", \"TA\"]]"}, "reflex.pairs"}});
+  pamsim_test::expect_each_named(
+      "landing.toml",
+      {{{"joints.knee.start_deg=720"}, "joints.knee.start_deg"},
+       {{"joints.trunk_z.start_deg=10"}, "joints.trunk_z"},  // a slide
+       {{"joints.knee.start_deg=-10"}, "joints.knee.start_deg must be within the joint's range"},
+       {{"muscles.VAS.line_mm=0"}, "muscles.VAS.line_mm"},
+       // a biarticular tendon whose path misses a joint it is said to cross
+       {{"muscles.RF.spans=[\"hip\", \"ankle\"]"},
+        "muscles.RF.spans names joint 'ankle', which the tendon's path misses"},
+       {{"muscles.GAS.spans=[\"knee\", \"elbow\"]"}, "muscles.GAS.spans"}});
+  pamsim_test::expect_each_named(
+      "landing_reflex.toml",
+      {{{"reflex.ib.f_thr_N=-1"}, "reflex.ib.f_thr_N"},
+       {{"reflex.pairs=[[\"VAS\", \"BFS\"], [\"VAS\", \"TA\"]]"}, "reflex.pairs"}});
 }
 
 }  // namespace

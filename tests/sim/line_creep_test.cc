@@ -16,7 +16,8 @@
 namespace pamsim {
 namespace {
 
-constexpr double kCreepLine = 0.3, kCreepEa = 300.0, kCreepStiffness = 5000.0, kCreepPressure = 0.4e6;
+constexpr double kCreepLine = 0.3, kCreepEa = 300.0, kCreepStiffness = 5000.0,
+                 kCreepPressure = 0.4e6;
 
 // The slider (nuserdata 3: two pressures' room, then the creep state) with a linear spring
 // law (Eq. (3), a0 only) on a line of E A 300 N creeping by g over tau
@@ -41,15 +42,15 @@ TEST(LineCreepTest, AHeldLineCreepsFromTheElasticToTheLongTermSeriesSpring) {
   SpringModel law = pam_spring_from_model(m.get(), 0);
   d->qpos[0] = kCreepLine + natural_length(law, kCreepPressure) + stretch;
   d->userdata[1] = kCreepPressure;
-  d->userdata[2] = 0.0;   // a line never loaded
+  d->userdata[2] = 0.0;  // a line never loaded
   mj_forward(m.get(), d.get());
   const double elastic = kCreepStiffness * stretch / (1.0 + kCreepStiffness * c);
   EXPECT_NEAR(-d->actuator_force[0], elastic, 1e-9 * elastic);
-  for (int k = 0; k < 20000; ++k) pam_length_committing_creep(m.get(), d.get(), 0, dt);   // 20 tau
+  for (int k = 0; k < 20000; ++k) pam_length_committing_creep(m.get(), d.get(), 0, dt);  // 20 tau
   mj_forward(m.get(), d.get());
   const double long_term = kCreepStiffness * stretch / (1.0 + kCreepStiffness * c * (1.0 + g));
   EXPECT_NEAR(-d->actuator_force[0], long_term, 1e-7 * long_term);
-  EXPECT_NEAR(d->userdata[2], long_term, 1e-7 * long_term);   // the state: the held tension
+  EXPECT_NEAR(d->userdata[2], long_term, 1e-7 * long_term);  // the state: the held tension
 }
 
 TEST(LineCreepTest, ASlackLineRecoversExponentiallyAndTheStateStartsAtTheStartsTension) {
@@ -57,8 +58,8 @@ TEST(LineCreepTest, ASlackLineRecoversExponentiallyAndTheStateStartsAtTheStartsT
   MjModelPtr m = creeping_slider(0.3, tau);
   MjDataPtr d = make_data(m.get());
   pam_start_line_creep(m.get(), d.get(), 0);
-  EXPECT_EQ(d->userdata[2], 12.0);   // LineBinding::start_tension_n
-  d->qpos[0] = 0.0;                  // far slack: the line pulls nothing
+  EXPECT_EQ(d->userdata[2], 12.0);  // LineBinding::start_tension_n
+  d->qpos[0] = 0.0;                 // far slack: the line pulls nothing
   d->userdata[1] = kCreepPressure;
   mj_forward(m.get(), d.get());
   for (int k = 0; k < 1000; ++k) pam_length_committing_creep(m.get(), d.get(), 0, dt);
@@ -66,12 +67,13 @@ TEST(LineCreepTest, ASlackLineRecoversExponentiallyAndTheStateStartsAtTheStartsT
 }
 
 TEST(LineCreepTest, ACreepStateTheModelHasNoRoomForIsRefused) {
-  MjModelPtr m = pamsim_test::load_inline(pamsim_test::kSliderXml, "slider.xml");   // 2 values
+  MjModelPtr m = pamsim_test::load_inline(pamsim_test::kSliderXml, "slider.xml");  // 2 values
   store_pam_in_model(m.get(), 0, SpringModel{}, kCreepLine, 1, "slider.xml");
-  EXPECT_THROW(store_line_in_model(m.get(), 0, LineBinding{kCreepEa, 0.2, 10.0, 0.0, 2}, "slider.xml"),
-               InputError);
-  EXPECT_NO_THROW(store_line_in_model(m.get(), 0, LineBinding{kCreepEa, 0.0, 10.0, 0.0, -1},
-                                      "slider.xml"));
+  EXPECT_THROW(
+      store_line_in_model(m.get(), 0, LineBinding{kCreepEa, 0.2, 10.0, 0.0, 2}, "slider.xml"),
+      InputError);
+  EXPECT_NO_THROW(
+      store_line_in_model(m.get(), 0, LineBinding{kCreepEa, 0.0, 10.0, 0.0, -1}, "slider.xml"));
 }
 
 }  // namespace

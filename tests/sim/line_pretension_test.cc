@@ -80,7 +80,7 @@ TEST(LinePretensionTest, BadValuesAndMissingCalibrationsAreRefusedByKey) {
             std::string::npos);
   EXPECT_NE(error_of(kPassive, {kKey + "=3", "muscles.agonist.line_mm=300"}).find(kKey),
             std::string::npos);
-  try {   // calibrate solves the lines by its own options: the key would be ignored
+  try {  // calibrate solves the lines by its own options: the key would be ignored
     load_scenario_for_calibration(kPassive, {kKey + "=3"});
     ADD_FAILURE() << "calibrate took " << kKey;
   } catch (const InputError& e) {
@@ -173,10 +173,10 @@ TEST(LinePretensionTest, TheLengthProtocolRefusesARigWhoseLineTheWeightBreaks) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.parts().key, "muscles.pam.line_strength_MPa") << e.what();
   }
-  EXPECT_EQ(run_length_validation(load_length_validation(file, {"A"}, {"weights_kg=[5.0]"}),
-                                  options)
-                .rows.size(),
-            3u);
+  EXPECT_EQ(
+      run_length_validation(load_length_validation(file, {"A"}, {"weights_kg=[5.0]"}), options)
+          .rows.size(),
+      3u);
 }
 
 }  // namespace

@@ -26,7 +26,7 @@ constexpr int kHeight = 48;
 // Bottom-up RGB: the bottom half red, the top half blue, and a white column at x = frame.
 std::vector<unsigned char> test_frame(int frame) {
   std::vector<unsigned char> rgb(3 * kWidth * kHeight);
-  for (int row = 0; row < kHeight; ++row) {     // row 0 is the bottom
+  for (int row = 0; row < kHeight; ++row) {  // row 0 is the bottom
     for (int x = 0; x < kWidth; ++x) {
       unsigned char* px = &rgb[3 * (row * kWidth + x)];
       const bool bottom = row < kHeight / 2;

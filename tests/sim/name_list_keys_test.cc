@@ -26,13 +26,13 @@ using pamsim_test::kDropMass;
 // and the key; the names reach the scenario; the reference lists each row once.
 TEST(NameListKeysTest, MetricsAndContactRefuseTheirBadValuesAndReachTheScenario) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
-      {"metrics", {}},
-      {"events.e.when.contact", {"events.e.action=\"mark\""}}};
+      {"metrics", {}}, {"events.e.when.contact", {"events.e.action=\"mark\""}}};
   for (const auto& [key, context] : cases) {
     for (const char* bad : {"[\"drop\", 3]", "\"drop\"", "7"}) {
       std::vector<std::string> set = context;
       set.push_back(key + "=" + bad);
-      const InputErrorParts parts = refusal_parts([&] { load_scenario(kDropMass, set); }, key + bad);
+      const InputErrorParts parts =
+          refusal_parts([&] { load_scenario(kDropMass, set); }, key + bad);
       EXPECT_EQ(parts.key, key) << bad;
       EXPECT_EQ(parts.file, kDropMass) << bad;
     }
@@ -52,10 +52,13 @@ TEST(NameListKeysTest, MetricsAndContactRefuseTheirBadValuesAndReachTheScenario)
   EXPECT_EQ(e->when.kind, ConditionKind::kContact);
   EXPECT_EQ(e->when.body_a, "ball");
   EXPECT_EQ(e->when.body_b, "basket");
-  EXPECT_EQ(refusal_parts([&] {
-              load_scenario(kDropMass, {"events.e.action=\"mark\"",
-                                        "events.e.when.contact=[\"ball\"]"});
-            }, "one body").key,
+  EXPECT_EQ(refusal_parts(
+                [&] {
+                  load_scenario(kDropMass,
+                                {"events.e.action=\"mark\"", "events.e.when.contact=[\"ball\"]"});
+                },
+                "one body")
+                .key,
             "events.e.when.contact");
   Scenario sc;
   EventSpec event;
@@ -70,10 +73,12 @@ TEST(NameListKeysTest, MetricsAndContactRefuseTheirBadValuesAndReachTheScenario)
 // file and the key, a good one reaches the muscle, a label with a space is still refused.
 TEST(MuscleNameKeysTest, LabelAndSpansRefuseTheirBadValuesAndReachTheMuscle) {
   for (const auto& [key, bad] : std::vector<std::pair<std::string, std::string>>{
-           {"muscles.agonist.label", "1"}, {"muscles.agonist.label", "true"},
-           {"muscles.agonist.spans", "\"shoulder\""}, {"muscles.agonist.spans", "[\"shoulder\", 2]"},
+           {"muscles.agonist.label", "1"},
+           {"muscles.agonist.label", "true"},
+           {"muscles.agonist.spans", "\"shoulder\""},
+           {"muscles.agonist.spans", "[\"shoulder\", 2]"},
            {"muscles.agonist.label", "\"a b\""}}) {
-    const std::string set = key + "=" + bad;   // a structured binding is no lambda capture in C++17
+    const std::string set = key + "=" + bad;  // a structured binding is no lambda capture in C++17
     const InputErrorParts parts = refusal_parts([&] { load_scenario(kDropMass, {set}); }, set);
     EXPECT_EQ(parts.key, key) << bad;
     EXPECT_EQ(parts.file, kDropMass) << bad;

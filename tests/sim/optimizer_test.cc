@@ -114,15 +114,15 @@ TEST(OptimizerTest, Nsga2FrontIsNonDominatedAndApproachesTheParetoSet) {
   const std::vector<const Evaluation*> front = pareto_front(two.stored);
   ASSERT_GE(front.size(), 3u);
   for (const Evaluation* a : front) {
-    EXPECT_LT(a->unit[1], 0.1);   // the Pareto set is u1 = 0
+    EXPECT_LT(a->unit[1], 0.1);  // the Pareto set is u1 = 0
     for (const Evaluation* b : front) {
-      const bool b_dominates_a = b->fitness[0] <= a->fitness[0] &&
-                                 b->fitness[1] <= a->fitness[1] && b->fitness != a->fitness;
+      const bool b_dominates_a = b->fitness[0] <= a->fitness[0] && b->fitness[1] <= a->fitness[1] &&
+                                 b->fitness != a->fitness;
       EXPECT_FALSE(b_dominates_a);
     }
   }
   for (std::size_t i = 1; i < front.size(); ++i) {
-    EXPECT_LE(front[i - 1]->fitness[0], front[i]->fitness[0]);   // sorted by the first
+    EXPECT_LE(front[i - 1]->fitness[0], front[i]->fitness[0]);  // sorted by the first
   }
 }
 

@@ -110,10 +110,10 @@ TEST_F(PamCallbackTest, RejectsActuatorsThatCannotBePams) {
     ADD_FAILURE() << "a plant was bound to an actuator with no spring law";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("slider.xml: actuator 0 is not a bound PAM"),
-              std::string::npos) << e.what();
+              std::string::npos)
+        << e.what();
   }
-  EXPECT_THROW(store_line_in_model(unbound.get(), 0, LineBinding{300.0}, "slider.xml"),
-               InputError);
+  EXPECT_THROW(store_line_in_model(unbound.get(), 0, LineBinding{300.0}, "slider.xml"), InputError);
 }
 
 // The binding belongs to the model: a copy (copy_model) pulls with the same law, a rebinding
@@ -199,7 +199,7 @@ struct LoadedSlider {
   MjModelPtr m;
   MjDataPtr d;
   AvbdlParams plant;
-  static constexpr double kPressure = 0.4e6, kLoad = 20.0;   // [Pa], [N]
+  static constexpr double kPressure = 0.4e6, kLoad = 20.0;  // [Pa], [N]
 
   explicit LoadedSlider(FrictionModel form) {
     std::string xml = kSliderXml;
@@ -226,7 +226,7 @@ struct LoadedSlider {
   double settle_from(double offset_m) {
     d->qpos[0] = avbdl_length_at_force(plant, kPressure, kLoad) + offset_m + 0.3;
     d->userdata[1] = kPressure;
-    for (int k = 0; k < 12000; ++k) {   // 6 s
+    for (int k = 0; k < 12000; ++k) {  // 6 s
       d->xfrc_applied[6 * 1 + 0] = kLoad;
       mj_step(m.get(), d.get());
       pam_commit_history(m.get(), d.get(), 0, pam_muscle_length(m.get(), d.get(), 0));
@@ -246,7 +246,8 @@ TEST(PamCallbackSlipTest, MaxwellSlipStopsWithinTheFrictionBandAndSmoothFriction
   const double p = LoadedSlider::kPressure;
   const double l_eq = avbdl_length_at_force(slip.plant, p, LoadedSlider::kLoad);
   const double stiffness = (avbdl_static_force(slip.plant, p, l_eq + 1e-5) -
-                            avbdl_static_force(slip.plant, p, l_eq - 1e-5)) / 2e-5;
+                            avbdl_static_force(slip.plant, p, l_eq - 1e-5)) /
+                           2e-5;
   const double band = (1.0 + 2.0e-6 * p) + (1.0 + 1.5e-6 * p);
   const double from_above = slip.settle_from(3e-3), from_below = slip.settle_from(-3e-3);
   EXPECT_GT(from_above, l_eq) << "shortening, the friction holds back the pull";
@@ -263,7 +264,7 @@ TEST(PamCallbackSlipTest, AMaxwellSlipPlantNeedsRoomForItsState) {
   plant.friction.slip.count = 2;
   plant.friction.slip.weight = {0.5, 0.5};
   plant.friction.slip.breakaway_m = {0.05e-3, 0.2e-3};
-  for (int history_index : {2, -1}) {   // 2 + 1 + 2 values need nuserdata 5
+  for (int history_index : {2, -1}) {  // 2 + 1 + 2 values need nuserdata 5
     MjModelPtr m = slider_with_userdata(4);
     ASSERT_TRUE(m);
     store_pam_in_model(m.get(), 0, SpringModel{}, 0.3, 1, "slider.xml");
@@ -272,7 +273,8 @@ TEST(PamCallbackSlipTest, AMaxwellSlipPlantNeedsRoomForItsState) {
       ADD_FAILURE() << "bound with its history at " << history_index;
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find("slider.xml: <size nuserdata> must be >= "),
-                std::string::npos) << e.what();
+                std::string::npos)
+          << e.what();
     }
   }
   // read back whole from a model with room
@@ -293,9 +295,9 @@ TEST(PamCallbackLineTest, AnExtensibleLineIsASpringInSeriesWithTheMuscle) {
   ASSERT_TRUE(m);
   install_pam_actuator_callback();
   SpringModel linear;
-  linear.m_m_per_pa = -60e-9;   // l_n = 0.17 m - 60 mm/MPa p
+  linear.m_m_per_pa = -60e-9;  // l_n = 0.17 m - 60 mm/MPa p
   linear.h_m = 0.170;
-  linear.coef = {5000.0, 0, 0, 0, 0, 0};   // k [N/m]
+  linear.coef = {5000.0, 0, 0, 0, 0, 0};  // k [N/m]
   const double line = 0.3, ea = 300.0, c = line / ea, k = 5000.0, p = 0.4e6;
   store_pam_in_model(m.get(), 0, linear, line, 1, "slider.xml");
   store_line_in_model(m.get(), 0, LineBinding{ea}, "slider.xml");
@@ -310,7 +312,7 @@ TEST(PamCallbackLineTest, AnExtensibleLineIsASpringInSeriesWithTheMuscle) {
     EXPECT_NEAR(-d->actuator_force[0], f, 1e-9 * f) << stretch;
     EXPECT_NEAR(pam_length(m.get(), d.get(), 0), l_n + stretch - c * f, 1e-12) << stretch;
   }
-  d->qpos[0] = line + l_n - 0.001;   // slack: no tension, no stretch
+  d->qpos[0] = line + l_n - 0.001;  // slack: no tension, no stretch
   mj_forward(m.get(), d.get());
   EXPECT_EQ(d->actuator_force[0], 0.0);
   EXPECT_NEAR(pam_length(m.get(), d.get(), 0), l_n - 0.001, 1e-15);
@@ -336,9 +338,10 @@ TEST(PamCallbackBladderTest, ATubeBladderPlantIsStoredWholeAndPullsWithItsLaw) {
   tube.bladder_diameter_m = 0.004;
   tube.end_length_m = 0.0256;
   const double line = 0.3;
-  store_pam_in_model(m.get(), 0, spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1,
-                                                                {0.911, 0.256, 7.0, -0.2, 0, 0}),
-                     line, 1, "slider.xml");
+  store_pam_in_model(
+      m.get(), 0,
+      spring_model_from_paper_units(SpringLaw::kEq3, -60.1, 170.1, {0.911, 0.256, 7.0, -0.2, 0, 0}),
+      line, 1, "slider.xml");
   store_plant_in_model(m.get(), 0, tube, -1, "slider.xml");
   AvbdlParams back;
   ASSERT_TRUE(pam_plant_from_model(m.get(), 0, &back));

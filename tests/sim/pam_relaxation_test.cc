@@ -19,7 +19,6 @@ namespace {
 
 using pamsim_test::load_inline;
 
-
 constexpr double kLine = 0.3, kPressure = 0.4e6;
 
 AvbdlParams relaxing_plant() {
@@ -33,8 +32,7 @@ AvbdlParams relaxing_plant() {
 
 // The slider (slider_mjcf.h) with room for a relaxing bladder (`size`: 2 pressures' worth of
 // userdata, then the history block) and a 1 ms step
-MjModelPtr model_with(const AvbdlParams& plant,
-                      const char* size = "nuserdata=\"8\"") {
+MjModelPtr model_with(const AvbdlParams& plant, const char* size = "nuserdata=\"8\"") {
   std::string xml = pamsim_test::kSliderXml;
   xml.replace(xml.find("nuserdata=\"2\""), 13, size);
   xml.replace(xml.find("gravity=\"0 0 0\""), 15, "gravity=\"0 0 0\" timestep=\"0.001\"");
@@ -65,7 +63,7 @@ TEST(PamRelaxationTest, ALengthStepRelaxesAsThePronySeriesSays) {
   MjModelPtr m = model_with(plant);
   MjDataPtr d = make_data(m.get());
   const double l1 = avbdl_length_at_force(plant, kPressure, 20.0), l2 = l1 + 2e-3;
-  for (int k = 0; k < 500; ++k) pull_and_commit(m.get(), d.get(), l1);   // relaxed at L1
+  for (int k = 0; k < 500; ++k) pull_and_commit(m.get(), d.get(), l1);  // relaxed at L1
   const double change =
       avbdl_dbladder_energy_dlength(plant, l2) - avbdl_dbladder_energy_dlength(plant, l1);
   ASSERT_GT(std::fabs(change), 0.1) << "the bladder's force moves with the step";
@@ -74,8 +72,7 @@ TEST(PamRelaxationTest, ALengthStepRelaxesAsThePronySeriesSays) {
     double expected = static_pull;
     for (int i = 0; i < 2; ++i) {
       const double x = 0.001 / plant.relaxation.time_s[i];
-      expected += plant.relaxation.weight[i] * (1.0 - std::exp(-x)) / x * change *
-                  std::exp(-x * n);
+      expected += plant.relaxation.weight[i] * (1.0 - std::exp(-x)) / x * change * std::exp(-x * n);
     }
     ASSERT_NEAR(pull_and_commit(m.get(), d.get(), l2), expected, 1e-9 * expected) << n;
   }
@@ -110,8 +107,9 @@ TEST(PamRelaxationTest, TheTermsRoundTripAndAModelWithoutRoomIsRefused) {
     model_with(plant, "nuserdata=\"5\"");
     ADD_FAILURE() << "a 4-value history at index 2 bound in 5 values of userdata";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "relaxing.xml: <size nuserdata> must be >= 6 to hold the "
-                                     "PAMs' pressures and histories");
+    EXPECT_EQ(std::string(e.what()),
+              "relaxing.xml: <size nuserdata> must be >= 6 to hold the "
+              "PAMs' pressures and histories");
   }
 }
 

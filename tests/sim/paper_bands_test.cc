@@ -58,18 +58,17 @@ ValidationOptions two_threads(const std::string& name) {
 }
 
 TEST(PaperBandsTest, TableThreeCellsSitInsideForPamCAndAboveForPamA) {
-  const LengthValidationSpec spec =
-      load_length_validation(kScenarios + "validate_length_estimation.toml", {"A", "C"},
-                             {"weights_kg=[5.0]"});
+  const LengthValidationSpec spec = load_length_validation(
+      kScenarios + "validate_length_estimation.toml", {"A", "C"}, {"weights_kg=[5.0]"});
   const Bands bands = run_length_bands(spec, two_threads("t3"), kRigs);
   EXPECT_EQ(bands.runs.refused_count(), 0);
   const BandStats c = rmse_band(bands, "PAM-C eq3 5 kg");
   EXPECT_EQ(c.n, kRigs);
-  EXPECT_LE(c.min, 0.683);   // Table III, PAM-C, Eq. (3)
+  EXPECT_LE(c.min, 0.683);  // Table III, PAM-C, Eq. (3)
   EXPECT_GE(c.max, 0.683);
   const BandStats a = rmse_band(bands, "PAM-A eq3 5 kg");
-  EXPECT_LT(a.max, 0.861);   // Table III, PAM-A, Eq. (3): above the band
-  EXPECT_GT(a.min, 0.3);     // the misfit's floor, not a broken run
+  EXPECT_LT(a.max, 0.861);  // Table III, PAM-A, Eq. (3): above the band
+  EXPECT_GT(a.min, 0.3);    // the misfit's floor, not a broken run
 }
 
 TEST(PaperBandsTest, TableFiveModelCellsSitFarAboveTheirBandsWithEitherLine) {
@@ -77,14 +76,14 @@ TEST(PaperBandsTest, TableFiveModelCellsSitFarAboveTheirBandsWithEitherLine) {
     SCOPED_TRACE(file);
     const ReachingValidationSpec spec = load_reaching_validation(kScenarios + file, {"trials=1"});
     const Bands bands = run_reaching_bands(spec, two_threads("t5"), kRigs);
-    const int refused = bands.runs.refused_count();   // a line too thin for its pull
+    const int refused = bands.runs.refused_count();  // a line too thin for its pull
     EXPECT_LT(refused, kRigs / 2);
     for (const auto& [cell, paper] : std::vector<std::pair<std::string, double>>{
              {"agonist model all", 5.24}, {"antagonist model all", 5.02}}) {
       const BandStats b = rmse_band(bands, cell);
       EXPECT_EQ(b.n, kRigs - refused) << cell;
-      EXPECT_LT(2.0 * b.max, paper) << cell;   // Table V: a factor of 2 at least
-      EXPECT_GT(b.max - b.min, 0.1) << cell;   // the brackets do move it
+      EXPECT_LT(2.0 * b.max, paper) << cell;  // Table V: a factor of 2 at least
+      EXPECT_GT(b.max - b.min, 0.1) << cell;  // the brackets do move it
     }
   }
 }
@@ -108,14 +107,14 @@ TEST(PaperBandsTest, TheMissingMechanismsMoveTableFiveTowardsThePaper) {
   const ErrorPct antagonist = model_cell({}, "antagonist", "all");
   // the agonist's line leaving the board (a knife-edge contact), the lines tied 5 mm tight:
   // its error after the loss within a factor 1.5 of the paper's 5.94 %
-  const ErrorPct after = model_cell(
-      {"muscles.agonist.gauge.contact.misalignment_mm=5",
-       "muscles.agonist.gauge.contact.fitting_distance_mm=10",
-       "muscles.agonist.gauge.contact.shaft_distance_mm=100",
-       "muscles.agonist.gauge.contact.wrap_deg=5",
-       "muscles.agonist.gauge.contact.friction_coefficient=0.2", "sensors.gauge.board.length_mm=0",
-       "model.antagonist_deformation_mm=5"},
-      "agonist", "after_slack");
+  const ErrorPct after =
+      model_cell({"muscles.agonist.gauge.contact.misalignment_mm=5",
+                  "muscles.agonist.gauge.contact.fitting_distance_mm=10",
+                  "muscles.agonist.gauge.contact.shaft_distance_mm=100",
+                  "muscles.agonist.gauge.contact.wrap_deg=5",
+                  "muscles.agonist.gauge.contact.friction_coefficient=0.2",
+                  "sensors.gauge.board.length_mm=0", "model.antagonist_deformation_mm=5"},
+                 "agonist", "after_slack");
   EXPECT_GT(after.rmse_pct, 5.94 / 1.5);
   EXPECT_LT(after.rmse_pct, 5.94 * 1.5);
   EXPECT_GT(after.rmse_pct, 3.0 * agonist.rmse_pct);
@@ -129,10 +128,10 @@ TEST(PaperBandsTest, TheMissingMechanismsMoveTableFiveTowardsThePaper) {
 
 // PAM-A's Eq. (3) RMSE at 5 kg on the pulley rig, its plant changed by `set`
 double pam_a_eq3_rmse(std::vector<std::string> set) {
-  LengthValidationSpec spec = with_plant_changes(
-      load_length_validation(kScenarios + "validate_length_estimation.toml", {"A"},
-                             {"weights_kg=[5.0]"}),
-      &set);
+  LengthValidationSpec spec =
+      with_plant_changes(load_length_validation(kScenarios + "validate_length_estimation.toml",
+                                                {"A"}, {"weights_kg=[5.0]"}),
+                         &set);
   const LengthValidationResult r = run_length_validation(spec, two_threads("t3_mechanism"));
   for (const DynamicRow& row : r.rows) {
     if (row.law == SpringLaw::kEq3) return row.sim.rmse_pct;

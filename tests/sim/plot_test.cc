@@ -30,7 +30,7 @@
 namespace pamsim {
 namespace {
 
-using namespace plot_test;   // the synthetic trial, read_png_size, PlotTest
+using namespace plot_test;  // the synthetic trial, read_png_size, PlotTest
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -120,7 +120,7 @@ TEST_F(PlotTest, ABandOfASlideIsItsPositionInMillimetresAndJointsDoNotMix) {
   const BandSeries band = angle_band({&a, &b}, "pulley");
   EXPECT_EQ(band.quantity, "position");
   EXPECT_EQ(band.unit, "mm");
-  EXPECT_DOUBLE_EQ(band.mean[30], 0.1 * 30 + 2.0);   // the mean of 3 and 7 mm
+  EXPECT_DOUBLE_EQ(band.mean[30], 0.1 * 30 + 2.0);  // the mean of 3 and 7 mm
   EXPECT_EQ(angle_band({&a}, "x").trials, 1u);
   const Trajectory hinge = synthetic_trajectory(0.0);
   EXPECT_EQ(angle_band({&hinge}, "arm").quantity, "angle");
@@ -174,7 +174,8 @@ TEST_F(PlotTest, PlotsFromManyThreadsDoNotCollide) {
   for (auto& t : threads) t.join();
   EXPECT_EQ(ok, std::vector<int>(4, 1));
   EXPECT_EQ(entries(dir_).size(), 4u);
-  for (int k = 0; k < 4; ++k) EXPECT_TRUE(read_png_size(path("band_" + std::to_string(k) + ".png")).ok);
+  for (int k = 0; k < 4; ++k)
+    EXPECT_TRUE(read_png_size(path("band_" + std::to_string(k) + ".png")).ok);
   EXPECT_EQ(leftover_plot_temp_dirs(), 0);
 }
 
@@ -204,7 +205,8 @@ TEST_F(PlotTest, UnwritableFolderThrowsAndLeavesNothing) {
     // the temp PNG cannot be made beside it: said before gnuplot runs
     EXPECT_EQ(std::string(e.what()).rfind(png + ": cannot write (", 0), 0u) << e.what();
   }
-  for (const auto& name : entries(folder)) EXPECT_EQ(name.find("pamsim_plot_test"), std::string::npos);
+  for (const auto& name : entries(folder))
+    EXPECT_EQ(name.find("pamsim_plot_test"), std::string::npos);
   EXPECT_EQ(leftover_plot_temp_dirs(), 0);
   fs::permissions(dir_ / "read_only", fs::perms::owner_all);
 }
@@ -217,7 +219,7 @@ TEST_F(PlotTest, APngCutShortByAFullDiskIsAnErrorAndLeavesNothing) {
   struct rlimit old {};
   ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old), 0);
   struct rlimit small = old;
-  small.rlim_cur = 16 * 1024;   // the data files fit, the 1200x900 image does not
+  small.rlim_cur = 16 * 1024;  // the data files fit, the 1200x900 image does not
   const auto old_handler = ::signal(SIGXFSZ, SIG_IGN);
   ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
   std::string message;
@@ -263,7 +265,7 @@ TEST(BandPlotItemsTest, ASingleTrialHasNoBandAndItsLineIsTheRun) {
   three.label = "reflex";
   three.trials = 3;
   const std::vector<std::string> items = band_plot_items({three, one});
-  ASSERT_EQ(items.size(), 3u);   // the reflex's band, then both lines
+  ASSERT_EQ(items.size(), 3u);  // the reflex's band, then both lines
   EXPECT_NE(items[0].find("filledcurves"), std::string::npos);
   EXPECT_NE(items[0].find("'reflex min-max over 3 trials'"), std::string::npos) << items[0];
   EXPECT_NE(items[1].find("title 'reflex mean'"), std::string::npos) << items[1];

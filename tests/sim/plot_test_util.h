@@ -44,7 +44,7 @@ inline Trajectory synthetic_trajectory(double offset_deg, std::size_t rows = 301
     set(r, "reflex_anta", anta ? 1.0 : 0.0);
     set(r, "fiber_rate_ago_mm_s", std::numeric_limits<double>::quiet_NaN());
   }
-  set(50, "angle_deg", std::numeric_limits<double>::quiet_NaN());   // a missing sample: no break
+  set(50, "angle_deg", std::numeric_limits<double>::quiet_NaN());  // a missing sample: no break
   return tr;
 }
 

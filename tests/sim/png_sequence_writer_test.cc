@@ -21,7 +21,7 @@ using pamsim_test::decode_video;
 using pamsim_test::fresh_dir;
 using pamsim_test::write_text;
 
-constexpr int kWidth = 30;   // odd sizes are fine for PNG
+constexpr int kWidth = 30;  // odd sizes are fine for PNG
 constexpr int kHeight = 17;
 
 // Bottom-up RGB: the bottom row green, everything else grey.

@@ -64,7 +64,7 @@ TEST(PoseCalibrationTest, BalancedLinesHoldTheLegsPoseAsMujocoComputesIt) {
   const std::vector<double> net = net_torques(c);
   for (std::size_t j = 0; j < net.size(); ++j) EXPECT_NEAR(net[j], 0.0, 1e-6) << c.joints[j];
   for (const auto& l : c.lines) {
-    EXPECT_GT(l.deformation_m, 0.0) << l.muscle;   // every line taut
+    EXPECT_GT(l.deformation_m, 0.0) << l.muscle;  // every line taut
     EXPECT_GT(l.force_n, 0.0) << l.muscle;
   }
 }
@@ -77,7 +77,7 @@ TEST(PoseCalibrationTest, TheUniformRulesResidualIsWhatMujocoSees) {
     EXPECT_NEAR(net[j], -c.residual_nm[j], 1e-6) << c.joints[j];
     largest = std::max(largest, std::fabs(net[j]));
   }
-  EXPECT_GT(largest, 0.1);   // 2 mm everywhere does not hold the pose
+  EXPECT_GT(largest, 0.1);  // 2 mm everywhere does not hold the pose
   for (const auto& l : c.lines) EXPECT_DOUBLE_EQ(l.deformation_m, 2e-3) << l.muscle;
 }
 
@@ -99,10 +99,9 @@ TEST(PoseCalibrationTest, TheLegsScenariosCarryTheUniformLines) {
 }
 
 TEST(PoseCalibrationTest, BadRequestsAreOneLineAndExit2) {
-  for (const std::string& args : {std::string("--pose --deformation-mm 0"),
-                                  std::string("--pose --deformation-mm -1"),
-                                  std::string("--pose --pressure-MPa -0.1"),
-                                  std::string("--balance")}) {
+  for (const std::string& args :
+       {std::string("--pose --deformation-mm 0"), std::string("--pose --deformation-mm -1"),
+        std::string("--pose --pressure-MPa -0.1"), std::string("--balance")}) {
     const auto r = pamsim_test::run_pamsim("calibrate " + kLanding + " " + args);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
     EXPECT_EQ(pamsim_test::line_count(r.err), 1) << args << ": " << r.err;

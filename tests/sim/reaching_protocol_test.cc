@@ -24,7 +24,8 @@ const Bracket& named(const std::vector<Bracket>& brackets, const std::string& na
 }
 
 TEST(ReachingProtocolTest, ThePeBraidProtocolIsItsBaseWithTheLinesReplaced) {
-  const ReachingValidationSpec nylon = load_reaching_validation(kScenarios + "validate_reaching.toml");
+  const ReachingValidationSpec nylon =
+      load_reaching_validation(kScenarios + "validate_reaching.toml");
   const ReachingValidationSpec pe =
       load_reaching_validation(kScenarios + "validate_reaching_pe_braid.toml");
   EXPECT_EQ(pe.scenario_file, nylon.scenario_file);
@@ -49,8 +50,9 @@ TEST(ReachingProtocolTest, ThePeBraidProtocolIsItsBaseWithTheLinesReplaced) {
 TEST(ReachingProtocolTest, ALayersOwnKeysWinAndBadLayersAreRefusedByKey) {
   const auto dir = pamsim_test::fresh_dir("reaching_protocol_layers");
   const std::string base = "base = \"" + kScenarios + "validate_reaching.toml\"\n";
-  pamsim_test::write_text(dir / "a.toml", base + "trials = 2\nbracket_seed = 7\n[paper]\n"
-                                                 "model_agonist = [1.0, 0.5]\n");
+  pamsim_test::write_text(dir / "a.toml", base +
+                                              "trials = 2\nbracket_seed = 7\n[paper]\n"
+                                              "model_agonist = [1.0, 0.5]\n");
   const ReachingValidationSpec a = load_reaching_validation((dir / "a.toml").string());
   EXPECT_EQ(a.trials, 2);
   EXPECT_EQ(a.bracket_seed, 7u);
@@ -69,16 +71,17 @@ TEST(ReachingProtocolTest, ALayersOwnKeysWinAndBadLayersAreRefusedByKey) {
   const std::string two = refused_key("b.toml", "base = \"a.toml\"\n");
   EXPECT_NE(two.find("a.toml: base"), std::string::npos) << two;
   const std::string again = refused_key(
-      "c.toml", base + "[[bracket]]\nname = \"creep again\"\nkey = "
-                       "\"sensors.gauge.board.creep_1000h\"\nfrom = 0.0\nto = 0.1\nsource = \"s\"\n");
+      "c.toml", base +
+                    "[[bracket]]\nname = \"creep again\"\nkey = "
+                    "\"sensors.gauge.board.creep_1000h\"\nfrom = 0.0\nto = 0.1\nsource = \"s\"\n");
   EXPECT_NE(again.find("c.toml: bracket"), std::string::npos) << again;
   EXPECT_NE(again.find("board creep"), std::string::npos) << again;
   const std::string unknown = refused_key("d.toml", base + "trails = 3\n");
   EXPECT_NE(unknown.find("trails"), std::string::npos) << unknown;
-  std::string many = base;   // 20 new brackets beside the base's 13: over the 32 allowed
+  std::string many = base;  // 20 new brackets beside the base's 13: over the 32 allowed
   for (int k = 0; k < 20; ++k) {
-    many += "[[bracket]]\nname = \"b" + std::to_string(k) + "\"\nkey = \"a.k" +
-            std::to_string(k) + "\"\nfrom = 0.0\nto = 1.0\nsource = \"s\"\n";
+    many += "[[bracket]]\nname = \"b" + std::to_string(k) + "\"\nkey = \"a.k" + std::to_string(k) +
+            "\"\nfrom = 0.0\nto = 1.0\nsource = \"s\"\n";
   }
   const std::string over = refused_key("f.toml", many);
   EXPECT_NE(over.find("f.toml: bracket may hold at most 32 brackets with the base's"),

@@ -23,8 +23,9 @@ std::string write_recording(const std::string& name, const std::string& text) {
 
 TEST(RecordingCsvTest, ReadsUnevenTimesGapsAndComments) {
   const Recording r = read_recording_csv(write_recording(
-      "r.csv", "# made by hand\nangle_deg,time_s,force_meas_ago_N\n-36,0.0,10\n\n-35.5,0.013,\n"
-               " -35 , 0.5 ,12.5\r\n"));
+      "r.csv",
+      "# made by hand\nangle_deg,time_s,force_meas_ago_N\n-36,0.0,10\n\n-35.5,0.013,\n"
+      " -35 , 0.5 ,12.5\r\n"));
   ASSERT_EQ(r.channels, (std::vector<std::string>{"angle_deg", "force_meas_ago_N"}));
   EXPECT_EQ(r.time_s, (std::vector<double>{0.0, 0.013, 0.5}));
   EXPECT_EQ(r.samples[0], (std::vector<double>{-36, -35.5, -35}));
@@ -42,7 +43,8 @@ TEST(RecordingCsvTest, MalformedFilesAreOneLineNamingFileAndLine) {
            {"time_s\n0\n1\n", "no channel besides time_s"},
            {"time_s,,x\n0,1,1\n", "column 2 has no name"},
            {"time_s,angle_deg\n0,1\n1,2,3\n", "line 3: 3 cells, the header has 2"},
-           {"time_s,angle_deg\n0,1\n1,nan\n", "line 3: angle_deg must be a finite number or empty, got \"nan\""},
+           {"time_s,angle_deg\n0,1\n1,nan\n",
+            "line 3: angle_deg must be a finite number or empty, got \"nan\""},
            {"time_s,angle_deg\n0,1\n1,fast\n", "angle_deg must be a finite number or empty"},
            {"time_s,angle_deg\n0,1\n0,2\n", "line 3: time_s must increase strictly"},
            {"time_s,angle_deg\n0.5,1\n0.2,2\n", "time_s must increase strictly"},

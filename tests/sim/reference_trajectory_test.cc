@@ -40,8 +40,7 @@ Recording short_trial(const std::string& scenario) {
   const TrialResult r = run_trial(load_trial_model(sc), sc, sc.seed);
   EXPECT_EQ(r.summary.status, "ok") << r.summary.message;
   const std::string path =
-      (std::filesystem::temp_directory_path() / ("pamsim_reference_" + scenario + ".csv"))
-          .string();
+      (std::filesystem::temp_directory_path() / ("pamsim_reference_" + scenario + ".csv")).string();
   write_file_atomically(path, trajectory_to_csv(r.trajectory));
   Recording trial = read_recording_csv(path);
   std::filesystem::remove(path);
@@ -86,9 +85,9 @@ TEST(ReferenceTrajectoryTest, ToleranceSeesAChangeAtTheFifthDigitAndNamesIt) {
   reference.time_s = {0.0, 0.01};
   reference.samples = {{10.0, 12.0}, {0.0, 1.0}};
   Recording trial = reference;
-  trial.samples[0][1] = 12.0 + 1e-7;   // the solvers' last bits
+  trial.samples[0][1] = 12.0 + 1e-7;  // the solvers' last bits
   EXPECT_EQ(differences(trial, reference), "");
-  trial.samples[0][1] = 12.0012;       // the fifth digit
+  trial.samples[0][1] = 12.0012;  // the fifth digit
   EXPECT_EQ(differences(trial, reference),
             "angle_deg at t = 0.01 s: 12.0012, reference 12 (tolerance 1.2e-05)\n"
             "1 of 2 columns moved\n");
@@ -101,8 +100,8 @@ class ShortDropTest : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ShortDropTest, MatchesItsReferenceColumnByColumn) {
   const std::string name = GetParam();
-  const Recording reference = read_recording_csv(std::string(PAMSIM_SOURCE_DIR) +
-                                                 "/tests/reference/" + name + ".csv");
+  const Recording reference =
+      read_recording_csv(std::string(PAMSIM_SOURCE_DIR) + "/tests/reference/" + name + ".csv");
   EXPECT_EQ(differences(short_trial(name + ".toml"), reference), "") << name;
 }
 
@@ -116,11 +115,11 @@ TEST(ReferenceTrajectoryTest, TimesAreTheirExactDecimals) {
   const TrialResult r = run_trial(load_trial_model(sc), sc, sc.seed);
   const std::size_t time = r.trajectory.column("time_s");
   for (std::size_t row = 0; row < r.trajectory.rows(); ++row) {
-    ASSERT_EQ(r.trajectory.at(row, time), static_cast<double>(row) / 100.0) << row;   // 10 ms
+    ASSERT_EQ(r.trajectory.at(row, time), static_cast<double>(row) / 100.0) << row;  // 10 ms
   }
   for (const char* name : {"impact_time_s", "min_angle_time_s", "first_trigger_time_s"}) {
     const double t = r.summary.metric(name);
-    EXPECT_EQ(t, std::round(t * 1000.0) / 1000.0) << name << " " << t;   // whole steps
+    EXPECT_EQ(t, std::round(t * 1000.0) / 1000.0) << name << " " << t;  // whole steps
   }
   EXPECT_EQ(r.summary.metric("sim_time_s"), 1.5);
 }

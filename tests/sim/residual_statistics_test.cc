@@ -3,9 +3,9 @@
 // covariance agrees with the estimate's true covariance (B X^T Sigma X B, Sigma_ij =
 // phi^|i-j| / (1 - phi^2)) and its 95 % intervals cover the truth about 91 % of the time
 // (365 of 400 at phi = 0.8, n = 400: the finite-sample shortfall every HAC estimator has
-// there), where the plain s^2 (J^T J)^-1 ones cover half (200 of 400); the Ljung-Box test's false-alarm rate on white
-// noise is its level, and it sees AR(1) residuals; the noise floor of a smooth signal plus
-// white noise is the noise's sigma.
+// there), where the plain s^2 (J^T J)^-1 ones cover half (200 of 400); the Ljung-Box test's
+// false-alarm rate on white noise is its level, and it sees AR(1) residuals; the noise floor of a
+// smooth signal plus white noise is the noise's sigma.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -162,7 +162,7 @@ TEST(ResidualStatisticsTest, NoiseFloorOfASmoothSignalIsItsNoise) {
   // the sine's own second differences, at most 10 (2 pi / 200)^2, bound its floor
   const double curvature = 10.0 * std::pow(2.0 * 3.14159265358979 / 200.0, 2);
   EXPECT_LT(noise_floor(smooth), 1.4826 * curvature / std::sqrt(6.0));
-  noisy[100] = noisy[500] = std::nan("");   // gaps are skipped
+  noisy[100] = noisy[500] = std::nan("");  // gaps are skipped
   EXPECT_NEAR(noise_floor(noisy), 0.1, 0.006);
   EXPECT_TRUE(std::isnan(noise_floor({1.0, 2.0, 3.0})));
 }

@@ -15,7 +15,6 @@
 
 namespace pamsim_test {
 
-
 // The message of the InputError that reading scenarios/`scenario` (or `scenario` itself, an
 // absolute path) with `overrides` and binding its model throws, or "" if none.
 inline std::string error_of(const std::string& scenario,
@@ -32,7 +31,7 @@ inline std::string error_of(const std::string& scenario,
 
 struct BadValue {
   std::vector<std::string> assignments;
-  std::string key;   // the message names it
+  std::string key;  // the message names it
 };
 
 // Each case is refused with one line that names the scenario file and the key.

@@ -1,9 +1,10 @@
 // scenario_key_tables_test.cc: [sim], the drop's numbers, [valve], joints.<joint>, bodies.<body>,
 // holds.<body>, muscles.<actuator>'s line keys and events.<event>
-// (scenario_key_tables.h) through the scenario reader: every key the reader asks for under sim. and drop. (the drop's names
-// aside) has exactly one row and every row is read; a bad value of every row, generated from
-// the row, is refused in one line naming the scenario file and the key; a value reaches its
-// field; and what joins keys (the steps a trial takes, a drop before the end) is still refused.
+// (scenario_key_tables.h) through the scenario reader: every key the reader asks for under sim. and
+// drop. (the drop's names aside) has exactly one row and every row is read; a bad value of every
+// row, generated from the row, is refused in one line naming the scenario file and the key; a value
+// reaches its field; and what joins keys (the steps a trial takes, a drop before the end) is still
+// refused.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -49,8 +50,8 @@ TEST(TimeAndDropKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {
   DropShorthand drop;
   int refused = 0;
   const auto expect_refused = [&](const std::string& key, const std::string& value) {
-    const InputErrorParts parts = refusal_parts(
-        [&] { load_scenario(kDropMass, {key + "=" + value}); }, key + " = " + value);
+    const InputErrorParts parts =
+        refusal_parts([&] { load_scenario(kDropMass, {key + "=" + value}); }, key + " = " + value);
     EXPECT_EQ(parts.key, key) << value;
     EXPECT_EQ(parts.file, kDropMass) << key;
     ++refused;
@@ -76,8 +77,8 @@ TEST(TopLevelScenarioKeysTest, TheSeedIsARowThatRefusesItsBadValuesAndReachesThe
   const KeyTable table = top_level_key_table(&sc);
   ASSERT_EQ(table.ints.size(), 1u);
   for (const std::string& value : bad_int_texts(table.ints[0])) {
-    const InputErrorParts parts = refusal_parts(
-        [&] { load_scenario(kDropMass, {"seed=" + value}); }, "seed = " + value);
+    const InputErrorParts parts =
+        refusal_parts([&] { load_scenario(kDropMass, {"seed=" + value}); }, "seed = " + value);
     EXPECT_EQ(parts.key, "seed") << value;
     EXPECT_EQ(parts.file, kDropMass) << value;
   }
@@ -85,9 +86,9 @@ TEST(TopLevelScenarioKeysTest, TheSeedIsARowThatRefusesItsBadValuesAndReachesThe
 }
 
 TEST(TimeAndDropKeysTest, AValueReachesItsFieldAndWhatJoinsKeysIsStillChecked) {
-  const Scenario sc = load_scenario(
-      kDropMass, {"sim.timestep_s=0.0005", "sim.control_hz=200", "drop.mass_kg=0.3",
-                  "drop.height_m=0.1", "drop.time_s=1.5"});
+  const Scenario sc =
+      load_scenario(kDropMass, {"sim.timestep_s=0.0005", "sim.control_hz=200", "drop.mass_kg=0.3",
+                                "drop.height_m=0.1", "drop.time_s=1.5"});
   EXPECT_EQ(sc.timestep_s, 0.0005);
   EXPECT_EQ(sc.control_hz, 200.0);
   ASSERT_FALSE(sc.body_masses.empty());
@@ -100,7 +101,7 @@ TEST(TimeAndDropKeysTest, AValueReachesItsFieldAndWhatJoinsKeysIsStillChecked) {
     return refusal_parts([&] { load_scenario(kDropMass, overrides); }, overrides.back()).key;
   };
   EXPECT_EQ(refused_key({"sim.timestep_s=0.0001", "sim.max_steps=1000"}), "sim.timestep_s");
-  EXPECT_EQ(refused_key({"sim.control_hz=300"}), "sim.control_hz");   // 1 kHz / 300
+  EXPECT_EQ(refused_key({"sim.control_hz=300"}), "sim.control_hz");  // 1 kHz / 300
   EXPECT_EQ(refused_key({"drop.time_s=3.0"}), "drop.time_s");        // at the trial's end
 }
 
@@ -120,14 +121,14 @@ std::vector<std::string> every_valve_key(const std::vector<KeyTable>& valve) {
 }
 
 TEST(ValveKeysTest, EveryValveKeyTheReaderAsksForIsOneRowOfThePneumaticsFile) {
-  PneumaticParams p = load_scenario(kDropMass).pneumatics;   // the file's values
+  PneumaticParams p = load_scenario(kDropMass).pneumatics;  // the file's values
   const std::vector<KeyTable> valve = valve_key_tables(&p);
   std::set<std::string> asked;
   for (const ScenarioKeyValue& kv : scenario_key_values(kDropMass, every_valve_key(valve))) {
     if (split_key(kv.key).front() == "valve" && kv.key != "valve.model") asked.insert(kv.key);
   }
   expect_rows_are_the_asked_keys(row_keys(valve), asked);
-  EXPECT_EQ(asked.size(), key_names(valve.at(1)).size() + 2);   // the supply, the command's max
+  EXPECT_EQ(asked.size(), key_names(valve.at(1)).size() + 2);  // the supply, the command's max
   // given at the file's own values, the keys change nothing
   const PneumaticParams read = load_scenario(kDropMass, every_valve_key(valve)).pneumatics;
   EXPECT_EQ(read.regulator_dead_time_s, p.regulator_dead_time_s);
@@ -138,7 +139,7 @@ TEST(ValveKeysTest, EveryValveKeyTheReaderAsksForIsOneRowOfThePneumaticsFile) {
 TEST(ValveKeysTest, EveryRowRefusesABadValueAndARegulatorKeyWantsTheRegulator) {
   PneumaticParams p;
   const std::vector<KeyTable> tables = valve_key_tables(&p);
-  KeyTable valve = tables.at(1);   // the regulator's rows, then the rig's
+  KeyTable valve = tables.at(1);  // the regulator's rows, then the rig's
   valve.numbers.insert(valve.numbers.end(), tables.at(0).numbers.begin(),
                        tables.at(0).numbers.end());
   int refused = 0;
@@ -146,7 +147,9 @@ TEST(ValveKeysTest, EveryRowRefusesABadValueAndARegulatorKeyWantsTheRegulator) {
     const std::string key = "valve." + row.name;
     for (const std::string& value : bad_number_texts(row)) {
       const InputErrorParts parts = refusal_parts(
-          [&] { load_scenario(kDropMass, {"valve.model=\"regulator\"", key + "=" + value}); },
+          [&] {
+            load_scenario(kDropMass, {"valve.model=\"regulator\"", key + "=" + value});
+          },
           key + " = " + value);
       EXPECT_EQ(parts.key, key) << value;
       EXPECT_EQ(parts.file, kDropMass) << key;
@@ -155,9 +158,11 @@ TEST(ValveKeysTest, EveryRowRefusesABadValueAndARegulatorKeyWantsTheRegulator) {
   }
   for (const ChoiceRow& row : valve.choices) {
     const std::string key = "valve." + row.name;
-    EXPECT_EQ(refusal_parts([&] { load_scenario(kDropMass, {"valve.model=\"regulator\"",
-                                                            key + "=\"neither\""}); },
-                            key)
+    EXPECT_EQ(refusal_parts(
+                  [&] {
+                    load_scenario(kDropMass, {"valve.model=\"regulator\"", key + "=\"neither\""});
+                  },
+                  key)
                   .key,
               key);
   }
@@ -165,7 +170,10 @@ TEST(ValveKeysTest, EveryRowRefusesABadValueAndARegulatorKeyWantsTheRegulator) {
   // a regulator key with another valve model, which would ignore it
   for (const std::string& key : key_names(tables.at(1))) {
     const InputErrorParts parts = refusal_parts(
-        [&] { load_scenario(kDropMass, {"valve.model=\"iso6358\"", key + "=1"}); }, key);
+        [&] {
+          load_scenario(kDropMass, {"valve.model=\"iso6358\"", key + "=1"});
+        },
+        key);
     EXPECT_EQ(parts.key, key);
     EXPECT_NE(parts.problem.find("valve.model = \"regulator\""), std::string::npos) << key;
   }
@@ -182,7 +190,7 @@ TEST(JointKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
       {hinge_key_table(&defaults), {kDropMass, "joints.shoulder"}},
       {slide_key_table(&defaults), {landing, "joints.trunk_z"}}};
   for (const auto& [table, where] : cases) {
-    const std::string scenario = where.first, prefix = where.second;   // (lambdas capture them)
+    const std::string scenario = where.first, prefix = where.second;  // (lambdas capture them)
     for (const NumberRow& row : table.numbers) {
       const std::string key = prefix + "." + row.name;
       for (const std::string& value : bad_number_texts(row)) {
@@ -194,8 +202,8 @@ TEST(JointKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
     }
   }
   EXPECT_EQ(refused, 6 * 5);
-  const Scenario arm = load_scenario(kDropMass, {"joints.shoulder.start_deg=-5",
-                                                 "joints.shoulder.frictionloss_N_m=0.02"});
+  const Scenario arm = load_scenario(
+      kDropMass, {"joints.shoulder.start_deg=-5", "joints.shoulder.frictionloss_N_m=0.02"});
   ASSERT_EQ(arm.joints.size(), 1u);
   EXPECT_TRUE(arm.joints[0].rotational);
   EXPECT_DOUBLE_EQ(arm.joints[0].start, -5.0 * units::kPi / 180.0);
@@ -211,7 +219,8 @@ TEST(JointKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
   }
   EXPECT_TRUE(found);
   EXPECT_EQ(refusal_parts([&] { load_scenario(landing, {"joints.trunk_z.start_deg=10"}); },
-                          "a hinge's key on a slide").key,
+                          "a hinge's key on a slide")
+                .key,
             "joints.trunk_z");
 }
 
@@ -224,8 +233,8 @@ TEST(BodyAndHoldKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
   std::vector<double> position;
   int refused = 0;
   for (const auto& [table, prefix] : std::vector<std::pair<KeyTable, std::string>>{
-           {body_key_table(&body), "bodies.basket"}, {hold_key_table(&hold, &position),
-                                                      "holds.ball"}}) {
+           {body_key_table(&body), "bodies.basket"},
+           {hold_key_table(&hold, &position), "holds.ball"}}) {
     for (const NumberRow& row : table.numbers) {
       const std::string key = prefix + "." + row.name;
       for (const std::string& value : bad_number_texts(row)) {
@@ -243,12 +252,12 @@ TEST(BodyAndHoldKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
            {"bodies.basket.inertia_kg_m2=[1e-4, -2e-4, 2e-4]", "bodies.basket.inertia_kg_m2"},
            {"holds.ball.position_m=[0, 0.1]", "holds.ball.position_m"},
            {"holds.ball.above_site=3", "holds.ball.above_site"}}) {
-    const std::string given = set;   // (a lambda captures no structured binding)
+    const std::string given = set;  // (a lambda captures no structured binding)
     EXPECT_EQ(refusal_parts([&] { load_scenario(kDropMass, {given}); }, given).key, key) << set;
   }
-  const Scenario sc = load_scenario(kDropMass, {"bodies.basket.mass_kg=0.3",
-                                                "bodies.basket.inertia_kg_m2=[1e-4, 2e-4, 2e-4]",
-                                                "holds.box={ position_m = [0, 0.1, 0.5] }"});
+  const Scenario sc = load_scenario(
+      kDropMass, {"bodies.basket.mass_kg=0.3", "bodies.basket.inertia_kg_m2=[1e-4, 2e-4, 2e-4]",
+                  "holds.box={ position_m = [0, 0.1, 0.5] }"});
   bool basket = false, box = false;
   for (const BodyMassSpec& b : sc.body_masses) {
     if (b.body != "basket") continue;
@@ -265,7 +274,6 @@ TEST(BodyAndHoldKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
   EXPECT_TRUE(basket);
   EXPECT_TRUE(box) << "a hold on a body the model may lack is the binding's to refuse";
 }
-
 
 // muscles.<actuator>'s line keys: every number row refuses its bad values naming the key, and
 // given values reach the muscle in SI (the line's E A from its diameter and modulus).
@@ -287,7 +295,7 @@ TEST(MuscleLineKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
       kDropMass, {"muscles.agonist.line_mm=300", "muscles.agonist.line_diameter_mm=0.5",
                   "muscles.agonist.line_modulus_MPa=2500", "muscles.agonist.line_creep=0.1",
                   "muscles.agonist.line_creep_time_s=20", "muscles.agonist.line_limit_N=100",
-                  "metrics=[\"drop\", \"reflex\", \"tension\"]"});   // the limit's readers
+                  "metrics=[\"drop\", \"reflex\", \"tension\"]"});  // the limit's readers
   const MuscleSpec& m = sc.muscles.front();
   ASSERT_EQ(m.key, "muscles.agonist");
   EXPECT_DOUBLE_EQ(m.line_length_m, 0.3);
@@ -296,7 +304,6 @@ TEST(MuscleLineKeysTest, EveryRowRefusesABadValueAndAValueReachesItsField) {
   EXPECT_EQ(m.line_creep_time_s, 20.0);
   EXPECT_EQ(m.line_limit_n, 100.0);
 }
-
 
 // events.<event> and its when.*: every number row refuses its bad values naming the key (with
 // the keys its action or condition needs beside it), and a key beside the wrong action is
@@ -308,7 +315,8 @@ TEST(EventKeysTest, EveryNumberRowRefusesABadValueNamingTheKey) {
       {event_key_table(&event),
        {"events.e.action=\"add_mass\"", "events.e.body=\"basket\"", "events.e.when.at_s=0.5"}},
       {event_when_key_table(&event, &thresholds), {}}};
-  const std::map<std::string, std::string> beside = {   // what each condition row goes with
+  const std::map<std::string, std::string> beside = {
+      // what each condition row goes with
       {"below_deg", "events.e.when.joint=\"shoulder\""},
       {"above_deg", "events.e.when.joint=\"shoulder\""},
       {"below_mm", "events.e.when.joint=\"shoulder\""},

@@ -38,54 +38,59 @@ TEST(ScenarioKeysTest, ShippedExperimentsLoad) {
 
 TEST(ScenarioKeysTest, MuscleAndScheduleKeysNameTheirKey) {
   const std::string c = "muscles.agonist.command";
-  expect_each_named("reaching.toml", {
-      {{c + ".kind=\"square\""}, c + ".kind"},
-      {{c + ".kind=\"sine\""}, c + ".offset_MPa"},   // a sine needs its own fields
-      {{c + ".to_MPa=\"high\""}, c + ".to_MPa"},
-      {{c + ".to_MPa=nan"}, c},
-      {{c + ".to_MPa=0.9"}, c},                        // above the 0.7 MPa supply
-      {{c + ".from_MPa=-0.1"}, c},
-      {{c + ".duration_s=0"}, c + ".duration_s"},
-      {{c + ".duration_s=-12"}, c + ".duration_s"},
-      {{c + ".start_s=inf"}, c},
-      {{c + ".shape=1"}, c + ".shape"},                // an unknown key
-      {{c + "={ kind = \"steps\", times_s = [0, 1], MPa = [0.2] }"}, c + ".MPa"},
-      {{c + "={ kind = \"steps\", times_s = [1, 0], MPa = [0.2, 0.3] }"}, c + ".times_s"},
-      {{c + "={ kind = \"table\" }"}, c + ".file"},
-      {{c + "={ kind = \"table\", file = \"missing.csv\" }"}, "missing.csv"},
-      {{c + "={ kind = \"sine\", offset_MPa = 0.4, amplitude_MPa = 0.1, period_s = 0 }"},
-       c + ".period_s"},
-      {{c + "=0.6"}, c + " must be a table"},
-      {{"muscles.agonist.label=\"a b\""}, "muscles.agonist.label"},
-      {{"muscles.agonist.label=\"anta\""}, "muscles.antagonist.label"},   // repeated
-      {{"muscles.agonist.line=\"loose\""}, "muscles.agonist.line"},
-      {{"muscles.agonist.line_mm=0"}, "muscles.agonist.line_mm"},
-      {{"muscles.agonist.line_diameter_mm=0", "muscles.agonist.line_modulus_MPa=2500"},
-       "muscles.agonist.line_diameter_mm must be in (0, 10] mm, got 0"},
-      {{"muscles.agonist.line_diameter_mm=nan", "muscles.agonist.line_modulus_MPa=2500"},
-       "muscles.agonist.line_diameter_mm"},
-      {{"muscles.agonist.line_diameter_mm=0.5", "muscles.agonist.line_modulus_MPa=-1"},
-       "muscles.agonist.line_modulus_MPa"},
-      {{"muscles.agonist.line_diameter_mm=0.5"}, "muscles.agonist.line_modulus_MPa is required"},
-      {{"muscles.agonist.line_modulus_MPa=2500"}, "muscles.agonist.line_diameter_mm is required"},
-      {{"muscles.agonist.line_mm=300", "muscles.agonist.line=\"equilibrium\""},
-       "muscles.agonist.line"},
-      {{"muscles.agonist.params=\"missing.toml\""}, "missing.toml"},
-      {{"muscles.agonist.plant=\"missing.toml\""}, "muscles.agonist.plant: "},
-      {{"muscles.agonist.plant=3"}, "muscles.agonist.plant"},
-      {{"muscles.biceps.command.MPa=0.4"}, "muscles.biceps.params"},
-      {{"model.joint=\"elbow\""}, "model.joint"},
-      {{"model.joint=\"ball\""}, "model.joint"},        // a free joint
-      {{"metrics=[\"speed\"]"}, "metrics"},
-      {{"metrics=[\"drop\"]"}, "metrics"},               // no release or impact event
-      {{"controller.kind=\"pid\""}, "controller.kind"},
-      {{"valve.supply_MPa=0"}, "valve.supply_MPa"},
-      {{"valve.supply_MPa=nan"}, "valve.supply_MPa"},
-      {{"valve.command_max_MPa=0.9"}, "valve.command_max_MPa"},   // above the supply
-      {{"valve.command_max_MPa=-1"}, "valve.command_max_MPa"},
-  });
+  expect_each_named(
+      "reaching.toml",
+      {
+          {{c + ".kind=\"square\""}, c + ".kind"},
+          {{c + ".kind=\"sine\""}, c + ".offset_MPa"},  // a sine needs its own fields
+          {{c + ".to_MPa=\"high\""}, c + ".to_MPa"},
+          {{c + ".to_MPa=nan"}, c},
+          {{c + ".to_MPa=0.9"}, c},  // above the 0.7 MPa supply
+          {{c + ".from_MPa=-0.1"}, c},
+          {{c + ".duration_s=0"}, c + ".duration_s"},
+          {{c + ".duration_s=-12"}, c + ".duration_s"},
+          {{c + ".start_s=inf"}, c},
+          {{c + ".shape=1"}, c + ".shape"},  // an unknown key
+          {{c + "={ kind = \"steps\", times_s = [0, 1], MPa = [0.2] }"}, c + ".MPa"},
+          {{c + "={ kind = \"steps\", times_s = [1, 0], MPa = [0.2, 0.3] }"}, c + ".times_s"},
+          {{c + "={ kind = \"table\" }"}, c + ".file"},
+          {{c + "={ kind = \"table\", file = \"missing.csv\" }"}, "missing.csv"},
+          {{c + "={ kind = \"sine\", offset_MPa = 0.4, amplitude_MPa = 0.1, period_s = 0 }"},
+           c + ".period_s"},
+          {{c + "=0.6"}, c + " must be a table"},
+          {{"muscles.agonist.label=\"a b\""}, "muscles.agonist.label"},
+          {{"muscles.agonist.label=\"anta\""}, "muscles.antagonist.label"},  // repeated
+          {{"muscles.agonist.line=\"loose\""}, "muscles.agonist.line"},
+          {{"muscles.agonist.line_mm=0"}, "muscles.agonist.line_mm"},
+          {{"muscles.agonist.line_diameter_mm=0", "muscles.agonist.line_modulus_MPa=2500"},
+           "muscles.agonist.line_diameter_mm must be in (0, 10] mm, got 0"},
+          {{"muscles.agonist.line_diameter_mm=nan", "muscles.agonist.line_modulus_MPa=2500"},
+           "muscles.agonist.line_diameter_mm"},
+          {{"muscles.agonist.line_diameter_mm=0.5", "muscles.agonist.line_modulus_MPa=-1"},
+           "muscles.agonist.line_modulus_MPa"},
+          {{"muscles.agonist.line_diameter_mm=0.5"},
+           "muscles.agonist.line_modulus_MPa is required"},
+          {{"muscles.agonist.line_modulus_MPa=2500"},
+           "muscles.agonist.line_diameter_mm is required"},
+          {{"muscles.agonist.line_mm=300", "muscles.agonist.line=\"equilibrium\""},
+           "muscles.agonist.line"},
+          {{"muscles.agonist.params=\"missing.toml\""}, "missing.toml"},
+          {{"muscles.agonist.plant=\"missing.toml\""}, "muscles.agonist.plant: "},
+          {{"muscles.agonist.plant=3"}, "muscles.agonist.plant"},
+          {{"muscles.biceps.command.MPa=0.4"}, "muscles.biceps.params"},
+          {{"model.joint=\"elbow\""}, "model.joint"},
+          {{"model.joint=\"ball\""}, "model.joint"},  // a free joint
+          {{"metrics=[\"speed\"]"}, "metrics"},
+          {{"metrics=[\"drop\"]"}, "metrics"},  // no release or impact event
+          {{"controller.kind=\"pid\""}, "controller.kind"},
+          {{"valve.supply_MPa=0"}, "valve.supply_MPa"},
+          {{"valve.supply_MPa=nan"}, "valve.supply_MPa"},
+          {{"valve.command_max_MPa=0.9"}, "valve.command_max_MPa"},  // above the supply
+          {{"valve.command_max_MPa=-1"}, "valve.command_max_MPa"},
+      });
 }
 
+// clang-format off
 TEST(ScenarioKeysTest, BodyHoldAndEventKeysNameTheirKey) {
   const std::string e = "events.load";
   const std::string add = e + ".action=\"add_mass\"";
@@ -141,30 +146,35 @@ TEST(ScenarioKeysTest, BodyHoldAndEventKeysNameTheirKey) {
        "events.go.body"},   // no hold holds the basket
   });
 }
+// clang-format on
 
 // A start key on the calibrated joint is refused when model.joint names it (above) and when
 // it is the model's first hinge by default (drop_mass.toml names none)
 TEST(ScenarioKeysTest, AStartKeyOnTheDefaultCalibratedJointIsRefused) {
   expect_each_named("drop_mass.toml", {
-      {{"joints.shoulder.start_deg=-30"}, "joints.shoulder.start_deg would move the start"},
-  });
+                                          {{"joints.shoulder.start_deg=-30"},
+                                           "joints.shoulder.start_deg would move the start"},
+                                      });
 }
 
 TEST(ScenarioKeysTest, ReflexPairsNameKnownDistinctMuscles) {
-  expect_each_named("drop_mass.toml", {
-      {{"reflex.pairs=[[\"agonist\", \"biceps\"]]"}, "reflex.pairs"},
-      // the controller would clamp a goal above its range: refused, naming the muscle
-      {{"controller.p_max_MPa=0.3"}, "muscles.agonist.command goes up to 0.4 MPa"},
-      // a [drop] sets the ball's mass already
-      {{"bodies.ball.mass_kg=0.3"}, "bodies.ball.mass_kg sets body 'ball', already set by"},
-      {{"sensors.gauge_adc_bits=4294967308"}, "sensors.gauge_adc_bits"},
-      {{"sensors.pressure_adc_bits=-1"}, "sensors.pressure_adc_bits"},
-      {{"reflex.pairs=[[\"agonist\", \"agonist\"]]"}, "reflex.pairs pairs muscle 'agonist' with itself"},
-      {{"reflex.pairs=[[\"agonist\", \"antagonist\"], [\"antagonist\", \"agonist\"]]"},
-       "reflex.pairs puts muscle 'antagonist' in two pairs"},
-      {{"reflex.pairs=[[\"agonist\"]]"}, "reflex.pairs"},
-      {{"reflex.pairs=\"agonist\""}, "reflex.pairs"},
-  });
+  expect_each_named(
+      "drop_mass.toml",
+      {
+          {{"reflex.pairs=[[\"agonist\", \"biceps\"]]"}, "reflex.pairs"},
+          // the controller would clamp a goal above its range: refused, naming the muscle
+          {{"controller.p_max_MPa=0.3"}, "muscles.agonist.command goes up to 0.4 MPa"},
+          // a [drop] sets the ball's mass already
+          {{"bodies.ball.mass_kg=0.3"}, "bodies.ball.mass_kg sets body 'ball', already set by"},
+          {{"sensors.gauge_adc_bits=4294967308"}, "sensors.gauge_adc_bits"},
+          {{"sensors.pressure_adc_bits=-1"}, "sensors.pressure_adc_bits"},
+          {{"reflex.pairs=[[\"agonist\", \"agonist\"]]"},
+           "reflex.pairs pairs muscle 'agonist' with itself"},
+          {{"reflex.pairs=[[\"agonist\", \"antagonist\"], [\"antagonist\", \"agonist\"]]"},
+           "reflex.pairs puts muscle 'antagonist' in two pairs"},
+          {{"reflex.pairs=[[\"agonist\"]]"}, "reflex.pairs"},
+          {{"reflex.pairs=\"agonist\""}, "reflex.pairs"},
+      });
 }
 
 // A schedule must stay within the valve's command range (the regulator would clamp it):
@@ -183,14 +193,15 @@ TEST(ScenarioKeysTest, AShorthandSetOnTheCommandLineReplacesTheLongForm) {
   // the other way round, both would be in play: refused, naming both
   const std::string message = error_of("drop_mass.toml", {"muscles.agonist.command.MPa=0.3"});
   EXPECT_NE(message.find("pressure.agonist_MPa is the shorthand of muscles.agonist.command"),
-            std::string::npos) << message;
+            std::string::npos)
+      << message;
 }
 
 // The keys a sweep's best.toml must rebase when it moves a scenario elsewhere.
 TEST(ScenarioKeysTest, PathKeysAreTheOnesThatNameFiles) {
   for (const char* key : {"model.file", "model.calibration", "model.pneumatics",
-                          "model.agonist_params", "muscles.pam.params", "muscles.pam.plant", "muscles.pam.plant.file",
-                          "muscles.pam.command.file"}) {
+                          "model.agonist_params", "muscles.pam.params", "muscles.pam.plant",
+                          "muscles.pam.plant.file", "muscles.pam.command.file"}) {
     EXPECT_TRUE(is_scenario_path_key(key)) << key;
   }
   for (const char* key : {"muscles.pam.label", "muscles.pam.line", "muscles.pam.command.kind",

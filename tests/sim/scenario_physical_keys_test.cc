@@ -69,17 +69,17 @@ TEST(ScenarioPlantKeysTest, ASetFieldChangesThatFieldOfThePlantFileOnly) {
     EXPECT_NE(agonist(both).plant_file.find("plant_antagonist.toml"), std::string::npos);
   }
   EXPECT_FALSE(same_trial_model(base, changed)) << "a sweep over the field rebuilds the model";
-  EXPECT_TRUE(same_trial_model(changed, load_scenario(kReaching, {pamsim_test::kAgonistWall + "=1.5"})));
+  EXPECT_TRUE(
+      same_trial_model(changed, load_scenario(kReaching, {pamsim_test::kAgonistWall + "=1.5"})));
   // the file's own reading of the same value
-  EXPECT_EQ(load_plant_params(agonist(base).plant_file).avbdl.wall_thickness_m,
-            a.wall_thickness_m);
+  EXPECT_EQ(load_plant_params(agonist(base).plant_file).avbdl.wall_thickness_m, a.wall_thickness_m);
 }
 
 TEST(ScenarioPlantKeysTest, APlantTableInTheScenarioIsTheSameAsTheSet) {
   const auto dir = pamsim_test::fresh_dir("plant_keys_table");
   const std::string variant = pamsim_test::scenario_variant(
-      dir, "reaching.toml", "plant = \"" + std::string(PAMSIM_SOURCE_DIR) +
-                                "/models/pams/plant_agonist.toml\"",
+      dir, "reaching.toml",
+      "plant = \"" + std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_agonist.toml\"",
       "plant = { file = \"" + std::string(PAMSIM_SOURCE_DIR) +
           "/models/pams/plant_agonist.toml\", geometry = { wall_thickness_mm = 1.5 }, "
           "friction = { extension = { A0_mm2 = 3.0 } } }");
@@ -91,13 +91,15 @@ TEST(ScenarioPlantKeysTest, APlantTableInTheScenarioIsTheSameAsTheSet) {
 
 TEST(ScenarioPlantKeysTest, TheRunFoldersScenarioKeepsTheFieldsAndThePath) {
   const auto dir = pamsim_test::fresh_dir("plant_keys_recorded");
-  const RecordedScenario r = load_recorded_scenario(pamsim_test::read_file(kReaching), kReaching,
-                                                    {pamsim_test::kAgonistWall + "=1.5"}, dir.string(), "");
+  const RecordedScenario r =
+      load_recorded_scenario(pamsim_test::read_file(kReaching), kReaching,
+                             {pamsim_test::kAgonistWall + "=1.5"}, dir.string(), "");
   pamsim_test::write_text(dir / "scenario.toml", r.resolved_toml);
   const Scenario again = load_scenario((dir / "scenario.toml").string());
   EXPECT_EQ(agonist(again).plant.wall_thickness_m, 1.5e-3);
   EXPECT_EQ(agonist(again).plant_changes, agonist(r.scenario).plant_changes);
-  EXPECT_TRUE(std::filesystem::equivalent(agonist(again).plant_file, agonist(r.scenario).plant_file));
+  EXPECT_TRUE(
+      std::filesystem::equivalent(agonist(again).plant_file, agonist(r.scenario).plant_file));
   bool recorded = false;
   for (const auto& [key, path] : r.input_paths) recorded |= key == "muscles.agonist.plant.file";
   EXPECT_TRUE(recorded) << "the plant file is among the run's inputs";
@@ -105,26 +107,27 @@ TEST(ScenarioPlantKeysTest, TheRunFoldersScenarioKeepsTheFieldsAndThePath) {
 
 // Each bad field is one line naming its scenario key, as the file's own would name its key.
 TEST(ScenarioPlantKeysTest, BadFieldsNameTheirScenarioKey) {
-  expect_refused({
-           {pamsim_test::kAgonistWall + "=-1", pamsim_test::kAgonistWall + ": must be in [0, inf) mm, got -1"},
-           {pamsim_test::kAgonistWall + "=\"thick\"", pamsim_test::kAgonistWall + ": must be a number"},
-           {"muscles.agonist.plant.geometry.colour=1",
-            "muscles.agonist.plant.geometry.colour: unknown key"},
-           {"muscles.agonist.plant.friction.extension.A0_mm2=-2",
-            "muscles.agonist.plant.friction.extension.A0_mm2: must be in [0, inf) mm^2, got -2"},
-           {"muscles.agonist.plant.geometry.length_mm.x=1",
-            "muscles.agonist.plant.geometry.length_mm: is a value, not a table"},
-           {"muscles.agonist.plant.bladder.diameter_mm=40",
-            "muscles.agonist.plant.bladder.diameter_mm: must be 0"},
-           {"muscles.pam.plant.geometry.wall_thickness_mm=1", "muscles.pam"},
-           // no value at all (a fuzzer's finding: it threw std::out_of_range)
-           {"muscles.agonist.plant=", "muscles.agonist.plant"},
-           {"muscles.agonist.plant.geometry.wall_thickness_mm=  ", pamsim_test::kAgonistWall}});
+  expect_refused(
+      {{pamsim_test::kAgonistWall + "=-1",
+        pamsim_test::kAgonistWall + ": must be in [0, inf) mm, got -1"},
+       {pamsim_test::kAgonistWall + "=\"thick\"", pamsim_test::kAgonistWall + ": must be a number"},
+       {"muscles.agonist.plant.geometry.colour=1",
+        "muscles.agonist.plant.geometry.colour: unknown key"},
+       {"muscles.agonist.plant.friction.extension.A0_mm2=-2",
+        "muscles.agonist.plant.friction.extension.A0_mm2: must be in [0, inf) mm^2, got -2"},
+       {"muscles.agonist.plant.geometry.length_mm.x=1",
+        "muscles.agonist.plant.geometry.length_mm: is a value, not a table"},
+       {"muscles.agonist.plant.bladder.diameter_mm=40",
+        "muscles.agonist.plant.bladder.diameter_mm: must be 0"},
+       {"muscles.pam.plant.geometry.wall_thickness_mm=1", "muscles.pam"},
+       // no value at all (a fuzzer's finding: it threw std::out_of_range)
+       {"muscles.agonist.plant=", "muscles.agonist.plant"},
+       {"muscles.agonist.plant.geometry.wall_thickness_mm=  ", pamsim_test::kAgonistWall}});
   // a plant table without its file
   const auto dir = pamsim_test::fresh_dir("plant_keys_nofile");
   const std::string variant = pamsim_test::scenario_variant(
-      dir, "reaching.toml", "plant = \"" + std::string(PAMSIM_SOURCE_DIR) +
-                                "/models/pams/plant_agonist.toml\"",
+      dir, "reaching.toml",
+      "plant = \"" + std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_agonist.toml\"",
       "plant = { geometry = { wall_thickness_mm = 1.5 } }");
   try {
     load_scenario(variant);
@@ -146,14 +149,18 @@ TEST(ScenarioBodyKeysTest, InertiaReplacesTheModelsAndAMassAloneScalesIt) {
   };
   const Scenario base = load_scenario(kReaching);
   const std::array<double, 3> model = inertia(base, "basket");
-  const std::array<double, 3> doubled = inertia(load_scenario(kReaching, {"bodies.basket.mass_kg=" + std::to_string(2 * 0.0831)}), "basket");
+  const std::array<double, 3> doubled = inertia(
+      load_scenario(kReaching, {"bodies.basket.mass_kg=" + std::to_string(2 * 0.0831)}), "basket");
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(doubled[k], 2 * model[k], 1e-6 * model[k]);
   const std::array<double, 3> given{1e-4, 2e-4, 2.5e-4};
-  const Scenario set = load_scenario(kReaching, {"bodies.basket.inertia_kg_m2=[1e-4, 2e-4, 2.5e-4]"});
+  const Scenario set =
+      load_scenario(kReaching, {"bodies.basket.inertia_kg_m2=[1e-4, 2e-4, 2.5e-4]"});
   EXPECT_EQ(inertia(set, "basket"), given);
   EXPECT_FALSE(same_trial_model(base, set));
   EXPECT_EQ(inertia(load_scenario(kReaching, {"bodies.basket.inertia_kg_m2=[1e-4, 2e-4, 2.5e-4]",
-                                              "bodies.basket.mass_kg=1"}), "basket"), given);
+                                              "bodies.basket.mass_kg=1"}),
+                    "basket"),
+            given);
   // the drop's ball: its mass from [drop], its inertia from bodies.ball
   const std::string drop = std::string(PAMSIM_SOURCE_DIR) + "/scenarios/drop_mass.toml";
   EXPECT_EQ(inertia(load_scenario(drop, {"bodies.ball.inertia_kg_m2=[3e-5, 3e-5, 3e-5]"}), "ball"),
@@ -162,7 +169,8 @@ TEST(ScenarioBodyKeysTest, InertiaReplacesTheModelsAndAMassAloneScalesIt) {
 
 TEST(ScenarioPneumaticsKeysTest, ASetFieldChangesThatFieldOfThePneumaticsFileOnly) {
   const Scenario base = load_scenario(kReaching);
-  const Scenario changed = load_scenario(kReaching, {kTube + "=20", "pneumatics.gas.polytropic_index=1.4"});
+  const Scenario changed =
+      load_scenario(kReaching, {kTube + "=20", "pneumatics.gas.polytropic_index=1.4"});
   EXPECT_DOUBLE_EQ(changed.pneumatics.tube_dead_volume_m3, 20e-6);
   EXPECT_EQ(changed.pneumatics.polytropic_index, 1.4);
   EXPECT_NE(base.pneumatics.tube_dead_volume_m3, changed.pneumatics.tube_dead_volume_m3);
@@ -173,8 +181,8 @@ TEST(ScenarioPneumaticsKeysTest, ASetFieldChangesThatFieldOfThePneumaticsFileOnl
   EXPECT_EQ(load_pneumatic_params(base.pneumatics_file).tube_dead_volume_m3,
             base.pneumatics.tube_dead_volume_m3);
   // a valve.* key still has the last word over the file's field it overrides
-  const Scenario both = load_scenario(kReaching, {"pneumatics.supply.supply_MPa=0.95",
-                                                  "valve.supply_MPa=0.9"});
+  const Scenario both =
+      load_scenario(kReaching, {"pneumatics.supply.supply_MPa=0.95", "valve.supply_MPa=0.9"});
   EXPECT_DOUBLE_EQ(both.pneumatics.supply_gauge_pa, 0.9e6);
 }
 
@@ -188,15 +196,14 @@ TEST(ScenarioPneumaticsKeysTest, TheRunFoldersScenarioKeepsTheFields) {
 }
 
 TEST(ScenarioPneumaticsKeysTest, BadFieldsNameTheirScenarioKey) {
-  expect_refused({
-           {kTube + "=-1", kTube + ": "},
-           {kTube + "=nan", kTube + ": "},
-           {"pneumatics.gas.polytropic_index=1.6", "pneumatics.gas.polytropic_index: "},
-           {"pneumatics.chamber.colour=1", "pneumatics.chamber.colour: unknown key"},
-           {"pneumatics.pipes.length_m=1", "pneumatics.pipes: unknown table"},
-           {"pneumatics.solver.method=\"rk4\"", "pneumatics.solver.method: unknown value"},
-           {"pneumatics=3", "pneumatics must be a table"}},
-      "pneumatics.toml");   // named by its key, not by the file
+  expect_refused({{kTube + "=-1", kTube + ": "},
+                  {kTube + "=nan", kTube + ": "},
+                  {"pneumatics.gas.polytropic_index=1.6", "pneumatics.gas.polytropic_index: "},
+                  {"pneumatics.chamber.colour=1", "pneumatics.chamber.colour: unknown key"},
+                  {"pneumatics.pipes.length_m=1", "pneumatics.pipes: unknown table"},
+                  {"pneumatics.solver.method=\"rk4\"", "pneumatics.solver.method: unknown value"},
+                  {"pneumatics=3", "pneumatics must be a table"}},
+                 "pneumatics.toml");  // named by its key, not by the file
 }
 
 }  // namespace

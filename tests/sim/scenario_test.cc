@@ -49,14 +49,14 @@ TEST(ScenarioTest, ShippedScenariosLoad) {
   const Scenario sc = load_scenario(kScenario);
   const StretchReflexScenarioConfig* reflex = sc.controller_config<StretchReflexScenarioConfig>();
   ASSERT_NE(reflex, nullptr);
-  EXPECT_DOUBLE_EQ(reflex->reflex.v_thr_m_s, 70.0e-3);   // 70 mm/s
-  EXPECT_DOUBLE_EQ(reflex->reflex.k_pa_s_per_m, 1e6 / 800.0 / 1e-3);   // 1/800 MPa s/mm
+  EXPECT_DOUBLE_EQ(reflex->reflex.v_thr_m_s, 70.0e-3);                // 70 mm/s
+  EXPECT_DOUBLE_EQ(reflex->reflex.k_pa_s_per_m, 1e6 / 800.0 / 1e-3);  // 1/800 MPa s/mm
   EXPECT_DOUBLE_EQ(sc.muscle("agonist")->command.at(0.0), 0.4e6);
 }
 
 TEST(ScenarioTest, OverridesTakeEffect) {
-  const Scenario sc = load_scenario(kScenario, {"reflex.v_thr_mm_s=55", "seed=9",
-                                                "valve.model=first_order"});
+  const Scenario sc =
+      load_scenario(kScenario, {"reflex.v_thr_mm_s=55", "seed=9", "valve.model=first_order"});
   EXPECT_DOUBLE_EQ(sc.controller_config<StretchReflexScenarioConfig>()->reflex.v_thr_m_s, 55.0e-3);
   EXPECT_EQ(sc.seed, 9u);
   EXPECT_EQ(sc.valve_model, ValveModel::kFirstOrder);
@@ -86,9 +86,9 @@ TEST(ScenarioTest, RegulatorKeysOverrideThePneumaticsFile) {
   EXPECT_EQ(base.pneumatics.regulator_dead_time_s, 10.0 * 1e-3);
   EXPECT_EQ(base.pneumatics.regulator_valve_time_constant_s, 20.0 * 1e-3);
   EXPECT_EQ(base.pneumatics.regulator_proportional_band_pa, 380.0 * 1e3);
-  const Scenario sc =
-      load_scenario(kScenario, {"valve.dead_time_ms=2", "valve.valve_time_constant_ms=5",
-                                "valve.proportional_band_kPa=50"});
+  const Scenario sc = load_scenario(
+      kScenario,
+      {"valve.dead_time_ms=2", "valve.valve_time_constant_ms=5", "valve.proportional_band_kPa=50"});
   EXPECT_EQ(sc.pneumatics.regulator_dead_time_s, 2.0 * 1e-3);
   EXPECT_EQ(sc.pneumatics.regulator_valve_time_constant_s, 5.0 * 1e-3);
   EXPECT_EQ(sc.pneumatics.regulator_proportional_band_pa, 50.0 * 1e3);
@@ -108,13 +108,13 @@ TEST(ScenarioTest, RegulatorLoopKeysOverrideThePneumaticsFile) {
   EXPECT_EQ(base.pneumatics.regulator_sense, RegulatorSense::kOutlet);
   EXPECT_NEAR(*base.pneumatics.regulator_supply_conductance_m3_per_s_pa, 0.35e-8, 1e-22);
   const Scenario sc = load_scenario(
-      kScenario, {"valve.feedback=\"instant\"", "valve.sense=\"chamber\"",
-                  "valve.sample_period_ms=0.5", "valve.supply_sonic_conductance_dm3_per_s_bar=0.5",
-                  "valve.supply_critical_pressure_ratio=0.25",
-                  "valve.exhaust_sonic_conductance_dm3_per_s_bar=0.2",
-                  "valve.exhaust_critical_pressure_ratio=0.35", "valve.outlet_volume_cm3=3",
-                  "valve.tube_sonic_conductance_dm3_per_s_bar=2",
-                  "valve.tube_critical_pressure_ratio=0.45"});
+      kScenario,
+      {"valve.feedback=\"instant\"", "valve.sense=\"chamber\"", "valve.sample_period_ms=0.5",
+       "valve.supply_sonic_conductance_dm3_per_s_bar=0.5",
+       "valve.supply_critical_pressure_ratio=0.25",
+       "valve.exhaust_sonic_conductance_dm3_per_s_bar=0.2",
+       "valve.exhaust_critical_pressure_ratio=0.35", "valve.outlet_volume_cm3=3",
+       "valve.tube_sonic_conductance_dm3_per_s_bar=2", "valve.tube_critical_pressure_ratio=0.45"});
   const PneumaticParams& p = sc.pneumatics;
   EXPECT_EQ(p.regulator_feedback, RegulatorFeedback::kInstant);
   EXPECT_EQ(p.regulator_sense, RegulatorSense::kChamber);
@@ -134,7 +134,10 @@ TEST(ScenarioTest, RegulatorLoopKeysOverrideThePneumaticsFile) {
 // An instrument's hardware keys with its ideal model would be ignored: refused, by key, as
 // the valve's regulator keys are with another valve.
 TEST(ScenarioTest, HardwareKeysOfAnIdealInstrumentAreRefused) {
-  struct Case { std::vector<std::string> set; std::string says; };
+  struct Case {
+    std::vector<std::string> set;
+    std::string says;
+  };
   for (const Case& c : std::vector<Case>{
            {{"sensors.gauge.model=\"linear\"", "sensors.gauge.contact.misalignment_mm=300"},
             "sensors.gauge.contact.misalignment_mm is used only by sensors.gauge.model = "
@@ -156,7 +159,8 @@ TEST(ScenarioTest, HardwareKeysOfAnIdealInstrumentAreRefused) {
 TEST(ScenarioTest, ABadGaugeCreepTermIsNamedWithItsIndex) {
   const std::string message = error_of({"sensors.gauge.board.creep_weights=[0.02, -0.1]",
                                         "sensors.gauge.board.creep_times_s=[1, 60]"});
-  EXPECT_NE(message.find("sensors.gauge.board.creep_weights[1] must be in [0, inf)"), std::string::npos)
+  EXPECT_NE(message.find("sensors.gauge.board.creep_weights[1] must be in [0, inf)"),
+            std::string::npos)
       << message;
 }
 

@@ -39,7 +39,7 @@ constexpr int kHeight = 120;
 
 struct RedBlob {
   int pixels = 0;
-  double mean_row = 0;   // counted from the bottom, as OpenGL reads them
+  double mean_row = 0;  // counted from the bottom, as OpenGL reads them
 };
 
 RedBlob find_red(const unsigned char* rgb) {
@@ -155,8 +155,7 @@ TEST(SceneRendererTest, UnknownCameraNamesTheModelsCameras) {
     SceneRenderer renderer(model.get(), "ball.xml", small_frame("back"));
     FAIL() << "no camera 'back' in the model";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "ball.xml: no camera named 'back' (the model's cameras: front, top)");
+    EXPECT_STREQ(e.what(), "ball.xml: no camera named 'back' (the model's cameras: front, top)");
   }
 }
 
@@ -180,10 +179,10 @@ namespace {
 
 // A live plot's four time labels are told apart with the fewest decimals: no "0 0.1 0.1 0.2".
 TEST(FigureTimeFormatTest, LabelsAreDistinctWithTheFewestDecimals) {
-  EXPECT_EQ(figure_time_format(3.0, 4), "%.0f");    // 0 1 2 3
-  EXPECT_EQ(figure_time_format(1.2, 4), "%.1f");    // 0 0.4 0.8 1.2
-  EXPECT_EQ(figure_time_format(0.15, 4), "%.2f");   // 0 0.05 0.10 0.15
-  EXPECT_EQ(figure_time_format(0.1, 4), "%.3f");    // 0.033..., as close as three digits go
+  EXPECT_EQ(figure_time_format(3.0, 4), "%.0f");   // 0 1 2 3
+  EXPECT_EQ(figure_time_format(1.2, 4), "%.1f");   // 0 0.4 0.8 1.2
+  EXPECT_EQ(figure_time_format(0.15, 4), "%.2f");  // 0 0.05 0.10 0.15
+  EXPECT_EQ(figure_time_format(0.1, 4), "%.3f");   // 0.033..., as close as three digits go
   for (const double duration : {0.15, 0.3, 0.6, 1.5, 4.5}) {
     const std::string format = figure_time_format(duration, 4);
     std::vector<std::string> labels;

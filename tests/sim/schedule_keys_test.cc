@@ -29,8 +29,7 @@ const std::string kCommand = "muscles.agonist.command";
 // a whole command table for `kind`, every key given, as a --set of reaching.toml's agonist
 const std::map<ScheduleKind, std::string> kGood = {
     {ScheduleKind::kConstant, "{kind=\"constant\", MPa=0.3}"},
-    {ScheduleKind::kRamp,
-     "{kind=\"ramp\", from_MPa=0.2, to_MPa=0.5, start_s=1.5, duration_s=3}"},
+    {ScheduleKind::kRamp, "{kind=\"ramp\", from_MPa=0.2, to_MPa=0.5, start_s=1.5, duration_s=3}"},
     {ScheduleKind::kSine,
      "{kind=\"sine\", offset_MPa=0.4, amplitude_MPa=0.1, period_s=2, phase_deg=90, "
      "start_s=0.5}"},
@@ -45,7 +44,7 @@ std::string with(ScheduleKind kind, const std::string& key, const std::string& v
   if (at == std::string::npos) return table.substr(0, table.size() - 1) + ", " + entry + "}";
   std::size_t end = at + 1;
   int depth = 0;
-  for (; end < table.size(); ++end) {   // the entry's end: a comma or the brace outside lists
+  for (; end < table.size(); ++end) {  // the entry's end: a comma or the brace outside lists
     if (table[end] == '[') ++depth;
     if (table[end] == ']') --depth;
     if (depth == 0 && (table[end] == ',' || table[end] == '}')) break;
@@ -53,9 +52,7 @@ std::string with(ScheduleKind kind, const std::string& key, const std::string& v
   return table.substr(0, at + 1) + entry + table.substr(end);
 }
 
-std::vector<std::string> set_command(const std::string& table) {
-  return {kCommand + "=" + table};
-}
+std::vector<std::string> set_command(const std::string& table) { return {kCommand + "=" + table}; }
 
 TEST(ScheduleKeysTest, EveryKeyTheReaderAsksForHasExactlyOneRowOfItsKind) {
   for (const auto& [kind, table] : kGood) {
@@ -77,8 +74,8 @@ TEST(ScheduleKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {
   const auto expect_refused = [&](ScheduleKind kind, const std::string& name,
                                   const std::string& value) {
     const std::string table = with(kind, name, value);
-    const InputErrorParts parts = refusal_parts(
-        [&] { load_scenario(kReaching, set_command(table)); }, table);
+    const InputErrorParts parts =
+        refusal_parts([&] { load_scenario(kReaching, set_command(table)); }, table);
     EXPECT_EQ(parts.key, kCommand + "." + name) << table;
     EXPECT_EQ(parts.file, kReaching) << table;
     ++refused;
@@ -88,13 +85,13 @@ TEST(ScheduleKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {
     const KeyTable rows = schedule_key_table(kind, &s);
     for (const NumberRow& row : rows.numbers) {
       for (const std::string& value : bad_number_texts(row)) expect_refused(kind, row.name, value);
-      if (row.required) {   // left out
+      if (row.required) {  // left out
         std::string without = table;
         const std::size_t at = without.find(", " + row.name + "=");
         ASSERT_NE(at, std::string::npos) << row.name;
         without.erase(at, without.find_first_of(",}", at + 2) - at);
-        const InputErrorParts parts = refusal_parts(
-            [&] { load_scenario(kReaching, set_command(without)); }, without);
+        const InputErrorParts parts =
+            refusal_parts([&] { load_scenario(kReaching, set_command(without)); }, without);
         EXPECT_EQ(parts.key, kCommand + "." + row.name) << without;
         EXPECT_NE(parts.problem.find("is required"), std::string::npos) << parts.problem;
         ++refused;

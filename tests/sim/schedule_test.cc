@@ -60,7 +60,7 @@ TEST(ScheduleTest, SineIsThePapersSinusoid) {
   for (double t = 0.0; t < 20.0; t += 0.37) {
     EXPECT_NEAR(s.at(t), (0.2 * std::sin(2 * kPi * t / 5) + 0.6) * kMPa, 1e-6) << t;
   }
-  EXPECT_NEAR(s.at(1.25), 0.8 * kMPa, 1e-6);   // a quarter period: the top
+  EXPECT_NEAR(s.at(1.25), 0.8 * kMPa, 1e-6);  // a quarter period: the top
   EXPECT_NEAR(s.at(3.75), 0.4 * kMPa, 1e-6);
   EXPECT_EQ(s.min_pa(), 0.4 * kMPa);
   EXPECT_EQ(s.max_pa(), 0.8 * kMPa);
@@ -81,7 +81,7 @@ TEST(ScheduleTest, StepsTakeEachLevelFromItsTime) {
   s.kind = ScheduleKind::kSteps;
   s.times_s = {1.0, 2.0, 3.0};
   s.values_pa = {0.1 * kMPa, 0.5 * kMPa, 0.3 * kMPa};
-  EXPECT_EQ(s.at(0.0), 0.1 * kMPa);   // before the first time: the first level
+  EXPECT_EQ(s.at(0.0), 0.1 * kMPa);  // before the first time: the first level
   EXPECT_EQ(s.at(1.0), 0.1 * kMPa);
   EXPECT_EQ(s.at(1.999), 0.1 * kMPa);
   EXPECT_EQ(s.at(2.0), 0.5 * kMPa);
@@ -201,7 +201,7 @@ TEST(ScheduleTest, ValidateNamesTheFieldThatIsWrong) {
   sine.period_s = 5.0;
   sine.amplitude_pa = NAN;
   EXPECT_EQ(error_of(sine), key + " must have finite values");
-  sine.amplitude_pa = 0.3 * kMPa;   // 0.4 +- 0.3 MPa fits the 0.7 MPa supply exactly
+  sine.amplitude_pa = 0.3 * kMPa;  // 0.4 +- 0.3 MPa fits the 0.7 MPa supply exactly
   EXPECT_EQ(error_of(sine), "");
   sine.p0_pa = 0.5 * kMPa;
   EXPECT_NE(error_of(sine).find(key + " must stay within [0, 0.7] MPa"), std::string::npos);

@@ -26,8 +26,7 @@ using pamsim_test::kDropMass;
 
 // the key set to `value` as an override of the shipped drop; the refusal's parts
 InputErrorParts refusal_of(const std::string& key, const std::string& value) {
-  return refusal_parts([&] { load_scenario(kDropMass, {key + "=" + value}); },
-                       key + " = " + value);
+  return refusal_parts([&] { load_scenario(kDropMass, {key + "=" + value}); }, key + " = " + value);
 }
 
 TEST(SensorKeysTest, EveryKeyTheReaderAsksForHasExactlyOneRow) {

@@ -80,11 +80,11 @@ TEST(SensorMetricsTest, EveryNamedSensorGivesItsExtremesInThePapersUnits) {
   MjModelPtr m = rig(0.05);
   std::vector<std::string> names;
   for (const Metric& metric : run(m.get(), 0.01)) names.push_back(metric.name);
-  EXPECT_EQ(names, (std::vector<std::string>{
-                       "grf_min_N", "grf_max_N", "grf_touchdowns", "swing_angle_min_deg",
-                       "swing_angle_max_deg", "drop_height_min_mm", "drop_height_max_mm",
-                       "tip_x_min_mm", "tip_x_max_mm", "tip_y_min_mm", "tip_y_max_mm",
-                       "tip_z_min_mm", "tip_z_max_mm"}))
+  EXPECT_EQ(names,
+            (std::vector<std::string>{
+                "grf_min_N", "grf_max_N", "grf_touchdowns", "swing_angle_min_deg",
+                "swing_angle_max_deg", "drop_height_min_mm", "drop_height_max_mm", "tip_x_min_mm",
+                "tip_x_max_mm", "tip_y_min_mm", "tip_y_max_mm", "tip_z_min_mm", "tip_z_max_mm"}))
       << "the unnamed jointvel sensor is skipped";
 }
 
@@ -92,7 +92,7 @@ TEST(SensorMetricsTest, EveryNamedSensorGivesItsExtremesInThePapersUnits) {
 // integrator's error); its lowest point is 0.5 m below the pivot, 500 mm.
 TEST(SensorMetricsTest, APendulumSwingsBetweenItsReleaseAngles) {
   MjModelPtr m = rig(0.05);
-  const std::vector<Metric> metrics = run(m.get(), 1.6);   // beyond half a period (0.71 s)
+  const std::vector<Metric> metrics = run(m.get(), 1.6);  // beyond half a period (0.71 s)
   EXPECT_NEAR(value(metrics, "swing_angle_max_deg"), 30.0, 0.01);
   EXPECT_NEAR(value(metrics, "swing_angle_min_deg"), -30.0, 0.3);
   EXPECT_NEAR(value(metrics, "tip_z_min_mm"), 500.0, 0.1);
@@ -122,7 +122,7 @@ TEST(SensorMetricsTest, ADroppedBoxTouchesDownOnceAndRestsWithItsWeight) {
 }
 
 TEST(SensorMetricsTest, ABoxThatStartsOnTheFloorHasNoTouchdown) {
-  MjModelPtr m = rig(0.0495);   // pressed 0.5 mm into it: in contact from the first step
+  MjModelPtr m = rig(0.0495);  // pressed 0.5 mm into it: in contact from the first step
   const std::vector<Metric> metrics = run(m.get(), 0.5);
   EXPECT_EQ(value(metrics, "grf_touchdowns"), 0.0);
   EXPECT_GT(value(metrics, "grf_min_N"), 0.0);

@@ -67,17 +67,19 @@ TEST(SweepCasesTest, CasesCrossTheOtherAxesAndSetTheirKeys) {
 // with its sources), then its own set.
 TEST(SweepCasesTest, ACaseTakesItsKeysFromAnotherFilesTable) {
   const fs::path dir = fresh_dir("sweep_cases_from");
-  write_text(dir / "bracket.toml", "[fast]\n\"valve.dead_time_ms\" = 2.0\n"
-                                   "valve.proportional_band_kPa = 250.0\n"
-                                   "\"sensors.fiber.creep_times_s\" = [10.0, 100.0]\n"
-                                   "\"sensors.fiber.creep_weights\" = [0.05, 0.01]\n");
-  const pamsim::SweepDefinition s = cases_sweep(
-      dir, "[[axis]]\nname = \"regulator\"\n[[axis.case]]\nname = \"fast\"\n"
-           "from = { file = \"bracket.toml\", table = \"fast\" }\n"
-           "set = { reflex.v_thr_mm_s = 60.0 }\n");
+  write_text(dir / "bracket.toml",
+             "[fast]\n\"valve.dead_time_ms\" = 2.0\n"
+             "valve.proportional_band_kPa = 250.0\n"
+             "\"sensors.fiber.creep_times_s\" = [10.0, 100.0]\n"
+             "\"sensors.fiber.creep_weights\" = [0.05, 0.01]\n");
+  const pamsim::SweepDefinition s =
+      cases_sweep(dir,
+                  "[[axis]]\nname = \"regulator\"\n[[axis.case]]\nname = \"fast\"\n"
+                  "from = { file = \"bracket.toml\", table = \"fast\" }\n"
+                  "set = { reflex.v_thr_mm_s = 60.0 }\n");
   const std::vector<std::string> o = s.overrides(0);
   ASSERT_EQ(o.size(), s.fixed.size() + 5);
-  const std::size_t f = s.fixed.size();   // in key order; a list as one value
+  const std::size_t f = s.fixed.size();  // in key order; a list as one value
   EXPECT_EQ(o[f], "sensors.fiber.creep_times_s=[10.0, 100.0]");
   EXPECT_EQ(o[f + 1], "sensors.fiber.creep_weights=[0.05, 0.01]");
   EXPECT_EQ(o[f + 2], "valve.proportional_band_kPa=250.0");
@@ -96,8 +98,8 @@ TEST(SweepCasesTest, ACasesTrialsAreThoseOfItsKeysAsAnAxis) {
                                             "values = [40.0, 100.0]\n"));
   for (const char* name : {"cases", "axis"}) {
     const std::string db = (dir / (std::string(name) + ".db")).string();
-    const auto r = run_pamsim("sweep " + (dir / (std::string(name) + ".toml")).string() +
-                              " --db " + db);
+    const auto r =
+        run_pamsim("sweep " + (dir / (std::string(name) + ".toml")).string() + " --db " + db);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     ASSERT_EQ(run_pamsim("export " + db + " -o " + (dir / name).string() + ".csv").exit_code, 0);
   }
@@ -111,7 +113,8 @@ TEST(SweepCasesTest, ACasesTrialsAreThoseOfItsKeysAsAnAxis) {
     for (int comma = 0; comma < 4; ++comma) at = line.find(',', at) + 1;
     return line.substr(0, at) + line.substr(line.find(',', at));
   };
-  for (std::size_t i = 1; i < cases.size(); ++i) EXPECT_EQ(without_axis(cases[i]), without_axis(axis[i])) << i;
+  for (std::size_t i = 1; i < cases.size(); ++i)
+    EXPECT_EQ(without_axis(cases[i]), without_axis(axis[i])) << i;
   EXPECT_NE(cases[1].find("low"), std::string::npos) << cases[1];
 }
 
@@ -148,17 +151,15 @@ TEST(SweepCasesTest, TheReportTablesTheCasesAndItsBestSettingCarriesTheirKeys) {
 TEST(SweepCasesTest, TheFindingsFiberCaseIsTheFiberScenario) {
   const std::string fiber = pamsim_test::kScenarios + "drop_mass_fiber.toml";
   const std::string dir = fresh_dir("sweep_cases_fiber").string();
-  const std::string want = pamsim::resolved_scenario_toml(pamsim_test::read_file(fiber), fiber,
-                                                          {}, dir, "");
+  const std::string want =
+      pamsim::resolved_scenario_toml(pamsim_test::read_file(fiber), fiber, {}, dir, "");
   // (the shipped regulator and hardware, every gate on, the fiber reflex)
   for (const auto& [file, point] : {std::pair<const char*, int>{"sweep_findings_regulator", 9},
                                     std::pair<const char*, int>{"sweep_findings_gates", 1},
                                     std::pair<const char*, int>{"sweep_hardware_losses", 1}}) {
-    const pamsim::SweepDefinition s =
-        pamsim::load_sweep(pamsim_test::kScenarios + file + ".toml");
+    const pamsim::SweepDefinition s = pamsim::load_sweep(pamsim_test::kScenarios + file + ".toml");
     ASSERT_EQ(s.value(point, s.axes.size() - 1).text, "fiber (1/300)") << file;
-    EXPECT_EQ(pamsim::resolved_scenario_toml(s.base_text, s.base_path, s.overrides(point), dir,
-                                             ""),
+    EXPECT_EQ(pamsim::resolved_scenario_toml(s.base_text, s.base_path, s.overrides(point), dir, ""),
               want)
         << file;
   }
@@ -169,21 +170,24 @@ TEST(SweepCasesTest, TheFindingsFiberCaseIsTheFiberScenario) {
 TEST(SweepCasesTest, AReflexSwitchedOffByItsKeysIsTheScenarioWithoutIt) {
   const fs::path dir = fresh_dir("sweep_cases_off");
   struct Pair {
-    const char* without;   // the scenario file without the reflex
-    const char* with;      // the one the sweep runs, and the keys that switch it off
+    const char* without;  // the scenario file without the reflex
+    const char* with;     // the one the sweep runs, and the keys that switch it off
     const char* off;
     std::vector<const char*> metrics;
   };
   const std::vector<Pair> pairs = {
-      {"landing.toml", "landing_reflex.toml", "reflex.enabled=false",
+      {"landing.toml",
+       "landing_reflex.toml",
+       "reflex.enabled=false",
        {"knee_angle_max_deg", "grf_max_N", "peak_tension_VAS_N", "trunk_z_min_mm"}},
-      {"drop_mass_heavy.toml", "drop_mass_heavy_ia_ib.toml", "reflex.ib.k_MPa_per_N=0",
+      {"drop_mass_heavy.toml",
+       "drop_mass_heavy_ia_ib.toml",
+       "reflex.ib.k_MPa_per_N=0",
        {"peak_drop_deg", "peak_tension_ago_N", "reflex_triggers_ago", "recovery_time_s"}}};
   for (const Pair& p : pairs) {
     const auto summary = [&](const std::string& args, const std::string& name) {
       const fs::path out = dir / name;
-      const auto r = run_pamsim("run " + pamsim_test::kScenarios + args + " --out " +
-                                out.string());
+      const auto r = run_pamsim("run " + pamsim_test::kScenarios + args + " --out " + out.string());
       EXPECT_EQ(r.exit_code, 0) << r.err;
       return nlohmann::json::parse(read_file(out / "summary.json"));
     };
@@ -196,6 +200,7 @@ TEST(SweepCasesTest, AReflexSwitchedOffByItsKeysIsTheScenarioWithoutIt) {
   }
 }
 
+// clang-format off
 TEST(SweepCasesTest, BadCaseAxesFailWithOneLineAndNoDatabase) {
   const std::string one = "[[axis.case]]\nname = \"a\"\n";
   struct Bad {
@@ -252,5 +257,6 @@ TEST(SweepCasesTest, BadCaseAxesFailWithOneLineAndNoDatabase) {
     EXPECT_FALSE(fs::exists(out / "sweep.db")) << c.name;
   }
 }
+// clang-format on
 
 }  // namespace

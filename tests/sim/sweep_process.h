@@ -24,7 +24,6 @@ namespace pamsim_test {
 
 namespace fs = std::filesystem;
 
-
 // A sweep file on the drop-mass scenario with short trials and the given extra text.
 inline std::string short_sweep(const std::string& body) {
   return "base = \"" + kDropMass + "\"\n" + body +
@@ -45,7 +44,7 @@ inline std::int64_t wait_for_trials(const std::string& db, std::int64_t n, pid_t
       try {
         const std::int64_t stored = pamsim::ResultsDb::open_existing(db).trial_count();
         if (stored >= n) return stored;
-      } catch (const std::exception&) {   // mid-creation: try again
+      } catch (const std::exception&) {  // mid-creation: try again
       }
     }
     if (::waitpid(pid, nullptr, WNOHANG) == pid) return -1;
@@ -80,7 +79,7 @@ inline void freeze(pid_t pid) {
 inline pid_t spawn_sweep(const fs::path& sweep, const std::string& db,
                          const std::vector<std::string>& extra = {}) {
   std::vector<std::string> args = {PAMSIM_BINARY, "sweep", sweep.string(), "--threads", "2",
-                                   "--db", db};
+                                   "--db",        db};
   args.insert(args.end(), extra.begin(), extra.end());
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());

@@ -32,13 +32,16 @@ using pamsim_test::kDropMass;
 // A sweep of drop_mass.toml, 1.3 s long: `top` its top-level keys, `tables` the rest.
 SweepDefinition sweep_from(const fs::path& dir, const std::string& top, const std::string& tables) {
   const fs::path file = dir / "sweep.toml";
-  pamsim_test::write_text(file, "base = \"" + kDropMass + "\"\n" + top + "[fixed.sim]\n"
-                          "duration_s = 1.3\n[fixed.drop]\ntime_s = 0.3\n" + tables);
+  pamsim_test::write_text(file, "base = \"" + kDropMass + "\"\n" + top +
+                                    "[fixed.sim]\n"
+                                    "duration_s = 1.3\n[fixed.drop]\ntime_s = 0.3\n" +
+                                    tables);
   return load_sweep(file.string());
 }
 
 const std::string kAxis = "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 70.0]\n";
-const std::string kDraws = "[[randomize]]\nkey = \"" + pamsim_test::kAgonistWall + "\"\ndistribution = \"normal\"\n"
+const std::string kDraws = "[[randomize]]\nkey = \"" + pamsim_test::kAgonistWall +
+                           "\"\ndistribution = \"normal\"\n"
                            "mean = 2.0\nstddev = 0.1\nmin = 1.8\nmax = 2.3\n"
                            "[[randomize]]\nkey = \"pneumatics.chamber.tube_dead_volume_cm3\"\n"
                            "distribution = \"uniform\"\nfrom = 10.0\nto = 15.0\n";
@@ -74,7 +77,7 @@ TEST(RandomizeTest, EachDistributionHasItsMoments) {
   Randomization l{"k", Distribution::kLogNormal, 3.0, 0.2};
   const Moments ml = moments_of(l, n, 3.0);
   EXPECT_NEAR(ml.below_median, 0.5, 4 * 0.5 / std::sqrt(n));
-  EXPECT_NEAR(ml.mean, 3.0 * std::exp(0.02), 0.01);   // E = median exp(sigma^2 / 2)
+  EXPECT_NEAR(ml.mean, 3.0 * std::exp(0.02), 0.01);  // E = median exp(sigma^2 / 2)
   EXPECT_DOUBLE_EQ(l.kept_share(), 1.0);
 }
 
@@ -116,7 +119,8 @@ std::vector<std::string> rows_of(const std::string& path) {
     for (std::size_t c = 0; c < cells.size(); ++c) {
       if (is_timing_metric(columns[c])) continue;
       row += (cells[c].kind == DbValue::Kind::kNumber ? format_shortest(cells[c].number)
-                                                     : cells[c].text) + ";";
+                                                      : cells[c].text) +
+             ";";
     }
     rows.push_back(row);
   });
@@ -144,7 +148,8 @@ TEST(RandomizeTest, TheDrawnValuesAreStoredAndTheSameOnAnyThreadCountOrShard) {
   // the columns hold the draws
   const ResultsDb db = ResultsDb::open_existing((dir / "one.db").string());
   const std::vector<std::string> columns = db.trial_columns();
-  const auto wall = std::find(columns.begin(), columns.end(), pamsim_test::kAgonistWall) - columns.begin();
+  const auto wall =
+      std::find(columns.begin(), columns.end(), pamsim_test::kAgonistWall) - columns.begin();
   ASSERT_LT(static_cast<std::size_t>(wall), columns.size());
   for (std::int64_t t = 0; t < s.trials(); ++t) {
     EXPECT_EQ(db.trial_row(t)[static_cast<std::size_t>(wall)].number, s.draws(t)[0]) << t;
@@ -154,8 +159,10 @@ TEST(RandomizeTest, TheDrawnValuesAreStoredAndTheSameOnAnyThreadCountOrShard) {
 TEST(RandomizeTest, AReplayedTrialRunsItsDrawnValues) {
   const fs::path dir = pamsim_test::fresh_dir("randomize_replay");
   const fs::path file = dir / "sweep.toml";
-  pamsim_test::write_text(file, "base = \"" + kDropMass + "\"\nseeds = 2\n[fixed.sim]\n"
-                          "duration_s = 1.3\n[fixed.drop]\ntime_s = 0.3\n" + kAxis + kDraws);
+  pamsim_test::write_text(file, "base = \"" + kDropMass +
+                                    "\"\nseeds = 2\n[fixed.sim]\n"
+                                    "duration_s = 1.3\n[fixed.drop]\ntime_s = 0.3\n" +
+                                    kAxis + kDraws);
   const std::string db = (dir / "s.db").string();
   ASSERT_EQ(pamsim_test::run_pamsim("sweep " + file.string() + " --db " + db).exit_code, 0);
   const pamsim_test::CliResult replay = pamsim_test::run_pamsim(
@@ -165,7 +172,8 @@ TEST(RandomizeTest, AReplayedTrialRunsItsDrawnValues) {
   const std::string resolved = pamsim_test::read_file(dir / "t3" / "scenario.toml");
   const SweepDefinition s = load_sweep(file.string());
   EXPECT_NE(resolved.find("tube_dead_volume_cm3 = " + format_shortest(s.draws(3)[1])),
-            std::string::npos) << resolved;
+            std::string::npos)
+      << resolved;
 }
 
 TEST(RandomizeTest, TheShippedRobustnessSweepDrawsInsideItsRanges) {
@@ -187,32 +195,53 @@ TEST(RandomizeTest, BadTablesAreRefusedByTheirKey) {
   const std::string head = "[[randomize]]\nkey = \"" + pamsim_test::kAgonistWall + "\"\n";
   for (const auto& [body, says] : std::vector<std::pair<std::string, std::string>>{
            {head + "from = 1.0\nto = 2.0\n", "randomize[0].distribution is required"},
-           {head + "distribution = \"beta\"\n", "randomize[0].distribution is \"beta\", allowed \"uniform\" | \"normal\""},
+           {head + "distribution = \"beta\"\n",
+            "randomize[0].distribution is \"beta\", allowed \"uniform\" | \"normal\""},
            {head + "distribution = \"uniform\"\nfrom = 2.0\n", "randomize[0].to is required"},
-           {head + "distribution = \"uniform\"\nfrom = 2.0\nto = 2.0\n", "randomize[0].from must be below to"},
-           {head + "distribution = \"uniform\"\nfrom = 1.0\nto = nan\n", "randomize[0].to must be finite"},
-           {head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\nmin = 1.0\n", "randomize[0].min is not a key of a uniform draw"},
-           {head + "distribution = \"normal\"\nmean = 2.0\nstddev = 0.0\n", "randomize[0].stddev must be in (0, inf), got 0"},
-           {head + "distribution = \"normal\"\nmean = 2.0\nsd = 0.1\n", "randomize[0].sd is not a key of this table (key, distribution, from"},
-           {head + "distribution = \"normal\"\nmean = 2.0\nstddev = 0.1\nmin = 2.5\nmax = 2.4\n", "randomize[0].min must be below max"},
-           {head + "distribution = \"normal\"\nmean = 2.0\nstddev = 0.1\nmin = 2.4\n", "keep 0.003"},
-           {head + "distribution = \"lognormal\"\nmedian = -1.0\nsigma = 0.1\n", "randomize[0].median must be in (0, inf), got -1"},
-           {"[[randomize]]\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize[0].key is required"},
-           {"[[randomize]]\nkey = \"seed\"\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize[0].key cannot be \"seed\""},
+           {head + "distribution = \"uniform\"\nfrom = 2.0\nto = 2.0\n",
+            "randomize[0].from must be below to"},
+           {head + "distribution = \"uniform\"\nfrom = 1.0\nto = nan\n",
+            "randomize[0].to must be finite"},
+           {head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\nmin = 1.0\n",
+            "randomize[0].min is not a key of a uniform draw"},
+           {head + "distribution = \"normal\"\nmean = 2.0\nstddev = 0.0\n",
+            "randomize[0].stddev must be in (0, inf), got 0"},
+           {head + "distribution = \"normal\"\nmean = 2.0\nsd = 0.1\n",
+            "randomize[0].sd is not a key of this table (key, distribution, from"},
+           {head + "distribution = \"normal\"\nmean = 2.0\nstddev = 0.1\nmin = 2.5\nmax = 2.4\n",
+            "randomize[0].min must be below max"},
+           {head + "distribution = \"normal\"\nmean = 2.0\nstddev = 0.1\nmin = 2.4\n",
+            "keep 0.003"},
+           {head + "distribution = \"lognormal\"\nmedian = -1.0\nsigma = 0.1\n",
+            "randomize[0].median must be in (0, inf), got -1"},
+           {"[[randomize]]\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n",
+            "randomize[0].key is required"},
+           {"[[randomize]]\nkey = \"seed\"\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n",
+            "randomize[0].key cannot be \"seed\""},
            {head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n" + head +
-                "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize names " + pamsim_test::kAgonistWall + " twice"},
-           {"[[randomize]]\nkey = \"reflex.v_thr_mm_s\"\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize sets reflex.v_thr_mm_s, which axis[0] sets too"},
-           {"[[randomize]]\nkey = \"drop.time_s\"\ndistribution = \"uniform\"\nfrom = 0.1\nto = 0.2\n",
-            "randomize sets drop.time_s, which [fixed] sets too"},   // sweep_from's [fixed.drop]
+                "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n",
+            "randomize names " + pamsim_test::kAgonistWall + " twice"},
+           {"[[randomize]]\nkey = \"reflex.v_thr_mm_s\"\ndistribution = \"uniform\"\nfrom = "
+            "1.0\nto = 2.0\n",
+            "randomize sets reflex.v_thr_mm_s, which axis[0] sets too"},
+           {"[[randomize]]\nkey = \"drop.time_s\"\ndistribution = \"uniform\"\nfrom = 0.1\nto = "
+            "0.2\n",
+            "randomize sets drop.time_s, which [fixed] sets too"},  // sweep_from's [fixed.drop]
            {"randomize_seed = 3\n!", "randomize_seed is for files with [[randomize]]"},
-           {"randomize_seed = -1\n!" + head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "randomize_seed must be >= 0"},
-           {head + "distribution = \"uniform\"\nfrom = -2.0\nto = -1.0\n", "seed index 0 draws " + pamsim_test::kAgonistWall},
-           {"[[randomize]]\nkey = \"reflex.colour\"\ndistribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n", "reflex.colour"}}) {
+           {"randomize_seed = -1\n!" + head + "distribution = \"uniform\"\nfrom = 1.0\nto = 2.0\n",
+            "randomize_seed must be >= 0"},
+           {head + "distribution = \"uniform\"\nfrom = -2.0\nto = -1.0\n",
+            "seed index 0 draws " + pamsim_test::kAgonistWall},
+           {"[[randomize]]\nkey = \"reflex.colour\"\ndistribution = \"uniform\"\nfrom = 1.0\nto = "
+            "2.0\n",
+            "reflex.colour"}}) {
     SCOPED_TRACE(body);
     try {
-      const std::size_t bang = body.find('!');   // top-level keys before it
-      if (bang == std::string::npos) sweep_from(dir, "", kAxis + body);
-      else sweep_from(dir, body.substr(0, bang), kAxis + body.substr(bang + 1));
+      const std::size_t bang = body.find('!');  // top-level keys before it
+      if (bang == std::string::npos)
+        sweep_from(dir, "", kAxis + body);
+      else
+        sweep_from(dir, body.substr(0, bang), kAxis + body.substr(bang + 1));
       ADD_FAILURE() << "accepted";
     } catch (const InputError& e) {
       const std::string what = e.what();

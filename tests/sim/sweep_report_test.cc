@@ -35,9 +35,11 @@ class SweepReportTest : public ::testing::Test {
 // A sweep database with hand-made results: point p, seed i has peak drop 10 + p + i and
 // mistrips only at point 0.
 pamsim::SweepSummary synthetic_summary(const fs::path& dir) {
-  write_text(dir / "sweep.toml", "base = \"" + kDropMass + "\"\n"
-      "seeds = 3\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 60.0]\n"
-      "[[axis]]\nkey = \"reflex.k_MPa_s_per_mm\"\nvalues = [0.001, 0.002, 0.003]\n");
+  write_text(dir / "sweep.toml",
+             "base = \"" + kDropMass +
+                 "\"\n"
+                 "seeds = 3\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 60.0]\n"
+                 "[[axis]]\nkey = \"reflex.k_MPa_s_per_mm\"\nvalues = [0.001, 0.002, 0.003]\n");
   const SweepDefinition s = pamsim::load_sweep((dir / "sweep.toml").string());
   const std::string path = (dir / "synthetic.db").string();
   fs::remove(path);
@@ -70,7 +72,7 @@ TEST_F(SweepReportTest, StatisticsAndBestPointFollowTheCriterion) {
   ASSERT_GE(m, 0);
   const pamsim::MetricStats& p2 = sweep.points[2].metrics[m];
   EXPECT_EQ(p2.count, 3);
-  EXPECT_DOUBLE_EQ(p2.mean, 13.0);   // 12, 13, 14
+  EXPECT_DOUBLE_EQ(p2.mean, 13.0);  // 12, 13, 14
   EXPECT_DOUBLE_EQ(p2.std, 1.0);
   EXPECT_EQ(p2.min, 12.0);
   EXPECT_EQ(p2.max, 14.0);
@@ -103,8 +105,8 @@ TEST_F(SweepReportTest, HeatMapCellsAndLabelsSayWhatTheyShow) {
   // heat map cells: x = v_thr level, y = k level
   const pamsim::HeatMap map = pamsim::sweep_heat_map(sweep, "peak_drop_deg", best, "peak_drop_deg");
   ASSERT_EQ(map.cells.size(), 6u);
-  EXPECT_DOUBLE_EQ(map.cells[0 * 2 + 1], 14.0);   // v = 60 (ix 1), k = 0.001 (iy 0): point 3
-  EXPECT_DOUBLE_EQ(map.cells[2 * 2 + 0], 13.0);   // v = 50, k = 0.003: point 2
+  EXPECT_DOUBLE_EQ(map.cells[0 * 2 + 1], 14.0);  // v = 60 (ix 1), k = 0.001 (iy 0): point 3
+  EXPECT_DOUBLE_EQ(map.cells[2 * 2 + 0], 13.0);  // v = 50, k = 0.003: point 2
   EXPECT_EQ(map.mark_x, 0.0);
   EXPECT_EQ(map.mark_y, 1.0);
   EXPECT_EQ(map.x_levels, (std::vector<std::string>{"50", "60"}));
@@ -113,7 +115,7 @@ TEST_F(SweepReportTest, HeatMapCellsAndLabelsSayWhatTheyShow) {
   EXPECT_NE(map.y_label.find("[MPa s/mm]"), std::string::npos) << map.y_label;
   EXPECT_EQ(map.title, "peak drop [deg]: mean ± SD over 3 seeds per point");
   ASSERT_EQ(map.cell_texts.size(), 6u);
-  EXPECT_EQ(map.cell_texts[2 * 2 + 0], "13 ± 1");   // point 2: 12, 13, 14
+  EXPECT_EQ(map.cell_texts[2 * 2 + 0], "13 ± 1");  // point 2: 12, 13, 14
   EXPECT_NE(map.mark_label.find("ties: lowest point"), std::string::npos);
   EXPECT_NE(pamsim::best_criterion(sweep, "peak_drop_deg").find("ties: the lowest point number"),
             std::string::npos);
@@ -130,7 +132,10 @@ TEST_F(SweepReportTest, PointsCsvGivesTheHeadlineMetricsAndAnIncompleteSweepSays
   const std::string header = csv.substr(0, csv.find('\n'));
   EXPECT_EQ(header.rfind("point,reflex.v_thr_mm_s,reflex.k_MPa_s_per_mm,trials,ok,mistrip_rate,"
                          "peak_drop_deg_mean,peak_drop_deg_sd,peak_drop_deg_ci95_low,"
-                         "peak_drop_deg_ci95_high,recovery_time_s_mean", 0), 0u) << header;
+                         "peak_drop_deg_ci95_high,recovery_time_s_mean",
+                         0),
+            0u)
+      << header;
   EXPECT_EQ(header.find("_min"), std::string::npos) << header;
   const std::string row2 = csv.substr(csv.find("\n2,") + 1);
   // point 2: 12, 13, 14 -> mean 13, sd 1, 13 -+ t(0.975, 2) / sqrt(3)
@@ -180,7 +185,7 @@ TEST_F(SweepReportTest, BestScenarioKeepsTheBaseAndSetsThePoint) {
   const pamsim::Scenario base = pamsim::load_scenario(kDropMass, {});
   const auto* reflex = sc.controller_config<pamsim::StretchReflexScenarioConfig>();
   ASSERT_NE(reflex, nullptr);
-  EXPECT_DOUBLE_EQ(reflex->reflex.v_thr_m_s, 50.0e-3);   // the file's 50 mm/s, in SI
+  EXPECT_DOUBLE_EQ(reflex->reflex.v_thr_m_s, 50.0e-3);  // the file's 50 mm/s, in SI
   EXPECT_DOUBLE_EQ(reflex->reflex.k_pa_s_per_m, 0.002e9);
   EXPECT_EQ(fs::weakly_canonical(sc.model_file), fs::weakly_canonical(base.model_file));
   EXPECT_EQ(sc.duration_s, base.duration_s);

@@ -47,9 +47,10 @@ class SweepTest : public ::testing::Test {
 };
 
 TEST_F(SweepTest, GridIsRowMajorWithTheFirstAxisSlowest) {
-  const SweepDefinition s = sweep_from(dir_,
-      "seeds = 3\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 60.0]\n"
-      "[[axis]]\nkey = \"reflex.sensor\"\nvalues = [\"model\", \"fiber\", \"model\"]\n");
+  const SweepDefinition s =
+      sweep_from(dir_,
+                 "seeds = 3\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 60.0]\n"
+                 "[[axis]]\nkey = \"reflex.sensor\"\nvalues = [\"model\", \"fiber\", \"model\"]\n");
   ASSERT_EQ(s.points(), 6);
   EXPECT_EQ(s.trials(), 18);
   EXPECT_EQ(s.value(0, 0).number, 50.0);
@@ -62,7 +63,7 @@ TEST_F(SweepTest, GridIsRowMajorWithTheFirstAxisSlowest) {
   EXPECT_EQ(s.seed_of(5), 3u);
   EXPECT_EQ(s.seed_of(6), 1u);
   const auto o = s.overrides(4);
-  EXPECT_EQ(o.back(), "reflex.sensor='fiber'");   // a TOML literal string
+  EXPECT_EQ(o.back(), "reflex.sensor='fiber'");  // a TOML literal string
   EXPECT_EQ(o[o.size() - 2], "reflex.v_thr_mm_s=60.0");
 }
 
@@ -77,10 +78,11 @@ TEST_F(SweepTest, MaxTrialsCapsPointsTimesSeedsAndRaisingItLetsTheSweepThrough) 
 }
 
 TEST_F(SweepTest, RangesHitTheirEndsExactlyAndLogRangesAreGeometric) {
-  const SweepDefinition s = sweep_from(dir_,
-      "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nfrom = 10.0\nto = 200.0\ncount = 20\n"
-      "[[axis]]\nkey = \"reflex.k_MPa_s_per_mm\"\nfrom = 0.0001\nto = 0.01\ncount = 5\n"
-      "scale = \"log\"\n[fixed.sim]\nduration_s = 1.5\n");
+  const SweepDefinition s =
+      sweep_from(dir_,
+                 "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nfrom = 10.0\nto = 200.0\ncount = 20\n"
+                 "[[axis]]\nkey = \"reflex.k_MPa_s_per_mm\"\nfrom = 0.0001\nto = 0.01\ncount = 5\n"
+                 "scale = \"log\"\n[fixed.sim]\nduration_s = 1.5\n");
   const auto& v = s.axes[0].values;
   const auto& k = s.axes[1].values;
   ASSERT_EQ(v.size(), 20u);
@@ -93,7 +95,7 @@ TEST_F(SweepTest, RangesHitTheirEndsExactlyAndLogRangesAreGeometric) {
   for (std::size_t i = 1; i < k.size(); ++i) {
     EXPECT_NEAR(k[i].number / k[i - 1].number, std::sqrt(10.0), 1e-9);
   }
-  EXPECT_EQ(k[2].toml(), "0.001");   // tidy levels, exact as written
+  EXPECT_EQ(k[2].toml(), "0.001");  // tidy levels, exact as written
   EXPECT_EQ(s.fixed, std::vector<std::string>{"sim.duration_s=1.5"});
 }
 
@@ -126,16 +128,17 @@ TEST_F(SweepTest, LatinHypercubePutsOnePointInEveryStratumOfEveryAxis) {
   EXPECT_EQ(k_strata.size(), 16u);
   // the design is a function of its seed
   EXPECT_EQ(sweep_from(dir_, body).canonical_json(), s.canonical_json());
-  const SweepDefinition other = sweep_from(dir_, body.substr(0, body.find("design_seed")) +
-                                                     "design_seed = 8\n" +
-                                                     body.substr(body.find("[[axis]]")));
+  const SweepDefinition other =
+      sweep_from(dir_, body.substr(0, body.find("design_seed")) + "design_seed = 8\n" +
+                           body.substr(body.find("[[axis]]")));
   EXPECT_NE(other.value(0, 0).number, s.value(0, 0).number);
 }
 
 TEST_F(SweepTest, RandomDesignStaysInsideItsRanges) {
-  const SweepDefinition s = sweep_from(dir_,
-      "design = \"random\"\nsamples = 50\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\n"
-      "from = 30.0\nto = 90.0\n");
+  const SweepDefinition s =
+      sweep_from(dir_,
+                 "design = \"random\"\nsamples = 50\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\n"
+                 "from = 30.0\nto = 90.0\n");
   ASSERT_EQ(s.points(), 50);
   double lo = 1e9, hi = -1e9;
   for (std::int64_t p = 0; p < 50; ++p) {
@@ -144,7 +147,7 @@ TEST_F(SweepTest, RandomDesignStaysInsideItsRanges) {
   }
   EXPECT_GE(lo, 30.0);
   EXPECT_LT(hi, 90.0);
-  EXPECT_GT(hi - lo, 30.0);   // spread over the range, not one value
+  EXPECT_GT(hi - lo, 30.0);  // spread over the range, not one value
 }
 
 TEST_F(SweepTest, TheDefinitionIsTheExperimentNotTheFileName) {
@@ -159,8 +162,8 @@ TEST_F(SweepTest, TheDefinitionIsTheExperimentNotTheFileName) {
 // A database written by a pamsim whose summaries held other metrics (an older version, or
 // a base scenario whose metric sets changed) is another sweep: resuming it would mix rows.
 TEST_F(SweepTest, ResumeRefusesADatabaseWithOtherMetrics) {
-  const SweepDefinition s = sweep_from(dir_,
-      "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 60.0]\n");
+  const SweepDefinition s =
+      sweep_from(dir_, "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 60.0]\n");
   const std::string path = (dir_ / "m.db").string();
   { ResultsDb db = ResultsDb::create(path, s); }
   SweepDefinition older = s;
@@ -175,8 +178,8 @@ TEST_F(SweepTest, ResumeRefusesADatabaseWithOtherMetrics) {
 }
 
 TEST_F(SweepTest, DatabaseRefusesDuplicateTrialsAndKeepsTheBatchAtomic) {
-  const SweepDefinition s = sweep_from(dir_,
-      "seeds = 2\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 60.0]\n");
+  const SweepDefinition s =
+      sweep_from(dir_, "seeds = 2\n[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0, 60.0]\n");
   const std::string path = (dir_ / "r.db").string();
   ResultsDb db = ResultsDb::create(path, s);
   EXPECT_THROW(ResultsDb::create(path, s), InputError);
@@ -190,14 +193,15 @@ TEST_F(SweepTest, DatabaseRefusesDuplicateTrialsAndKeepsTheBatchAtomic) {
   EXPECT_EQ(db.trial_count(), 1);
   pamsim::TrialRecord b = a;
   b.trial = 2;
-  EXPECT_THROW(db.insert(s, {b, a}), std::runtime_error);   // a again: the whole batch rolls back
+  EXPECT_THROW(db.insert(s, {b, a}), std::runtime_error);  // a again: the whole batch rolls back
   EXPECT_EQ(db.trial_count(), 1);
   const std::vector<bool> finished = db.finished_trials(s.trials());
   EXPECT_EQ(finished, (std::vector<bool>{false, true, false, false}));
 }
 
 TEST_F(SweepTest, FailedTrialsStoreNoMetricsAndLeftoverWalFilesAreRefused) {
-  const SweepDefinition s = sweep_from(dir_, "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0]\n");
+  const SweepDefinition s =
+      sweep_from(dir_, "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0]\n");
   const std::string path = (dir_ / "f.db").string();
   {
     ResultsDb db = ResultsDb::create(path, s);
@@ -224,7 +228,8 @@ TEST_F(SweepTest, FailedTrialsStoreNoMetricsAndLeftoverWalFilesAreRefused) {
 }
 
 TEST_F(SweepTest, RunnerRejectsZeroThreads) {
-  const SweepDefinition s = sweep_from(dir_, "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0]\n");
+  const SweepDefinition s =
+      sweep_from(dir_, "[[axis]]\nkey = \"reflex.v_thr_mm_s\"\nvalues = [50.0]\n");
   ResultsDb db = ResultsDb::create((dir_ / "z.db").string(), s);
   pamsim::SweepRunOptions options;
   options.threads = 0;

@@ -37,7 +37,7 @@ struct Identified {
 std::map<std::string, Identified> identified(const fs::path& csv) {
   std::istringstream in(pamsim_test::read_file(csv));
   std::string line;
-  std::getline(in, line);   // key,from,to,scale,start,identified,std_error,...,"verdict"
+  std::getline(in, line);  // key,from,to,scale,start,identified,std_error,...,"verdict"
   std::map<std::string, Identified> out;
   while (std::getline(in, line)) {
     std::istringstream row(line);

@@ -28,10 +28,10 @@ TrialResult run(const std::string& file, const std::vector<std::string>& overrid
   return run_trial(model, sc, seed);
 }
 
-const std::vector<std::string> kSilentIb = {
-    "controller.kind=\"stretch_tension_reflex\"", "reflex.ib.f_thr_N=60",
-    "reflex.ib.df_thr_N_s=600", "reflex.ib.k_MPa_per_N=0.004",
-    "metrics=[\"drop\", \"reflex\", \"tension\"]"};
+const std::vector<std::string> kSilentIb = {"controller.kind=\"stretch_tension_reflex\"",
+                                            "reflex.ib.f_thr_N=60", "reflex.ib.df_thr_N_s=600",
+                                            "reflex.ib.k_MPa_per_N=0.004",
+                                            "metrics=[\"drop\", \"reflex\", \"tension\"]"};
 
 TEST(TensionReflexScenarioTest, OnThePapersDropASilentIbReflexChangesNothing) {
   const TrialResult ia = run("drop_mass.toml", {"metrics=[\"drop\", \"reflex\", \"tension\"]"});
@@ -139,20 +139,24 @@ TEST(TensionReflexScenarioTest, TheGainSweepIsAGridOfValidScenarios) {
 }
 
 TEST(TensionReflexScenarioTest, EachKindReadsItsOwnKeysAndNamesABadOne) {
-  pamsim_test::expect_each_named("drop_mass_heavy_ia_ib.toml", {
-      {{"reflex.ib.f_thr_N=-5"}, "reflex.ib.f_thr_N must be in (0, inf) N, got -5"},
-      {{"reflex.ib.mode=\"hold\""}, "reflex.ib.mode"},
-      {{"reflex.pairs=[[\"agonist\", \"agonist\"]]"}, "reflex.pairs"},
-      {{"muscles.agonist.line_limit_N=0"}, "muscles.agonist.line_limit_N must be in (0, 100000] N"},
-      {{"muscles.agonist.line_limit_N=nan"}, "muscles.agonist.line_limit_N"}});
-  pamsim_test::expect_each_named("drop_mass.toml", {
-      {{"controller.kind=\"stretch_tension_reflex\"", "reflex.ib.k_MPa_per_N=0.004"},
-       "reflex.ib.f_thr_N is required"},
-      {{"reflex.ib.f_thr_N=60"}, "reflex.ib.f_thr_N"},   // the Ia kind: an unknown key
-      {{"muscles.agonist.line_limit_N=100"},   // no tension set to read it
-       "muscles.agonist.line_limit_N needs the metric set \"tension\""}});
-  pamsim_test::expect_each_named("drop_mass_heavy_ib.toml", {
-      {{"reflex.v_thr_mm_s=70"}, "reflex.v_thr_mm_s"}});   // an Ia key with the Ib kind
+  pamsim_test::expect_each_named(
+      "drop_mass_heavy_ia_ib.toml",
+      {{{"reflex.ib.f_thr_N=-5"}, "reflex.ib.f_thr_N must be in (0, inf) N, got -5"},
+       {{"reflex.ib.mode=\"hold\""}, "reflex.ib.mode"},
+       {{"reflex.pairs=[[\"agonist\", \"agonist\"]]"}, "reflex.pairs"},
+       {{"muscles.agonist.line_limit_N=0"},
+        "muscles.agonist.line_limit_N must be in (0, 100000] N"},
+       {{"muscles.agonist.line_limit_N=nan"}, "muscles.agonist.line_limit_N"}});
+  pamsim_test::expect_each_named(
+      "drop_mass.toml",
+      {{{"controller.kind=\"stretch_tension_reflex\"", "reflex.ib.k_MPa_per_N=0.004"},
+        "reflex.ib.f_thr_N is required"},
+       {{"reflex.ib.f_thr_N=60"}, "reflex.ib.f_thr_N"},  // the Ia kind: an unknown key
+       {{"muscles.agonist.line_limit_N=100"},            // no tension set to read it
+        "muscles.agonist.line_limit_N needs the metric set \"tension\""}});
+  pamsim_test::expect_each_named(
+      "drop_mass_heavy_ib.toml",
+      {{{"reflex.v_thr_mm_s=70"}, "reflex.v_thr_mm_s"}});  // an Ia key with the Ib kind
 }
 
 }  // namespace

@@ -33,11 +33,12 @@ namespace fs = std::filesystem;
 // lines) first.
 std::string search_keys_file(const fs::path& dir, const std::string& top) {
   if (!fs::exists(dir / "steps.csv")) record_arm(dir / "steps.csv", kSteps);
-  pamsim_test::write_text(
-      dir / "id.toml",
-      top + "\nbase = \"" + kArm + "\"\noverrides = [\"sim.duration_s=2\"]\n"
-      "[[parameter]]\nkey = \"bodies.ball.mass_kg\"\nfrom = 0.1\nto = 0.4\n"
-      "[[recording]]\nfile = \"steps.csv\"\nset = ['" + kSteps + "']\n");
+  pamsim_test::write_text(dir / "id.toml",
+                          top + "\nbase = \"" + kArm +
+                              "\"\noverrides = [\"sim.duration_s=2\"]\n"
+                              "[[parameter]]\nkey = \"bodies.ball.mass_kg\"\nfrom = 0.1\nto = 0.4\n"
+                              "[[recording]]\nfile = \"steps.csv\"\nset = ['" +
+                              kSteps + "']\n");
   return (dir / "id.toml").string();
 }
 
@@ -81,11 +82,11 @@ TEST(IdentifyKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {
 
 // A one-parameter tuning of the reflex threshold, with `top` first.
 std::string tune_keys_file(const fs::path& dir, const std::string& top) {
-  pamsim_test::write_text(
-      dir / "tune.toml",
-      top + "\nbase = \"" + pamsim_test::kDropMass + "\"\n"
-      "[[parameter]]\nkey = \"reflex.v_thr_mm_s\"\nfrom = 40\nto = 100\n"
-      "[[objective]]\nmetric = \"peak_drop_deg\"\n");
+  pamsim_test::write_text(dir / "tune.toml",
+                          top + "\nbase = \"" + pamsim_test::kDropMass +
+                              "\"\n"
+                              "[[parameter]]\nkey = \"reflex.v_thr_mm_s\"\nfrom = 40\nto = 100\n"
+                              "[[objective]]\nmetric = \"peak_drop_deg\"\n");
   return (dir / "tune.toml").string();
 }
 
@@ -98,8 +99,7 @@ TEST(TuneKeysTest, EveryRowRefusesABadValueAndNsga2sPopulationIsAMultipleOfFour)
       [](const std::string& path) { load_tune_definition(path); });
   EXPECT_EQ(refused, 5 * 4 + 2);
   const std::string nsga2 = tune_keys_file(dir, "algorithm = \"nsga2\"\npopulation = 10");
-  EXPECT_EQ(refusal_parts([&] { load_tune_definition(nsga2); }, "population 10").key,
-            "population");
+  EXPECT_EQ(refusal_parts([&] { load_tune_definition(nsga2); }, "population 10").key, "population");
   const TuneDefinition def = load_tune_definition(
       tune_keys_file(dir, "algorithm = \"nsga2\"\npopulation = 12\nseed = 4294967295"));
   EXPECT_EQ(def.algorithm, TuneAlgorithm::kNsga2);
@@ -110,16 +110,17 @@ TEST(TuneKeysTest, EveryRowRefusesABadValueAndNsga2sPopulationIsAMultipleOfFour)
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::map<std::string, int> listed;
   for (const auto& j : nlohmann::json::parse(r.out)) {
-    if (!is_entry_key_doc(j["key"])) ++listed[j["key"]];   // the tables' (entry_keys_test)
+    if (!is_entry_key_doc(j["key"])) ++listed[j["key"]];  // the tables' (entry_keys_test)
   }
   EXPECT_EQ(listed, row_keys({tune_search_table(&defaults)}));
 }
 
 TEST(IdentifyKeysTest, AValueReachesItsFieldAndKeysListsEveryRowOnce) {
   const fs::path dir = pamsim_test::fresh_dir("identify_keys_read");
-  const IdentifyDefinition def = load_identify_definition(search_keys_file(
-      dir, "seed = 4294967295\npolish_iterations = 0\nexplained_noise_factor = 2.5\n"
-           "interval = 0.9\nprofile_offsets = false"));
+  const IdentifyDefinition def = load_identify_definition(
+      search_keys_file(dir,
+                       "seed = 4294967295\npolish_iterations = 0\nexplained_noise_factor = 2.5\n"
+                       "interval = 0.9\nprofile_offsets = false"));
   EXPECT_EQ(def.seed, 4294967295u);
   EXPECT_EQ(def.polish_iterations, 0);
   EXPECT_EQ(def.explained_noise_factor, 2.5);
@@ -133,7 +134,7 @@ TEST(IdentifyKeysTest, AValueReachesItsFieldAndKeysListsEveryRowOnce) {
   std::map<std::string, int> listed;
   std::map<std::string, std::string> fallback;
   for (const auto& j : nlohmann::json::parse(r.out)) {
-    if (is_entry_key_doc(j["key"])) continue;   // the tables' keys (entry_keys_test)
+    if (is_entry_key_doc(j["key"])) continue;  // the tables' keys (entry_keys_test)
     ++listed[j["key"]];
     fallback[j["key"]] = j["default"];
   }
@@ -152,13 +153,14 @@ TEST(IdentifyKeysTest, AValueReachesItsFieldAndKeysListsEveryRowOnce) {
 // random design of two samples unless `top` gives them.
 std::string sweep_keys_file(const fs::path& dir, const std::string& top, bool sampled) {
   const bool own_samples = top.rfind("samples", 0) == 0;
-  const std::string design = !sampled ? "" : own_samples ? "design = \"random\"\n"
-                                                         : "design = \"random\"\nsamples = 2\n";
-  pamsim_test::write_text(
-      dir / "sweep.toml",
-      design + top + "\nbase = \"" + pamsim_test::kDropMass + "\"\n[[axis]]\n"
-      "key = \"reflex.v_thr_mm_s\"\n" +
-          (sampled ? "from = 50.0\nto = 80.0\n" : "values = [60.0]\n"));
+  const std::string design = !sampled      ? ""
+                             : own_samples ? "design = \"random\"\n"
+                                           : "design = \"random\"\nsamples = 2\n";
+  pamsim_test::write_text(dir / "sweep.toml",
+                          design + top + "\nbase = \"" + pamsim_test::kDropMass +
+                              "\"\n[[axis]]\n"
+                              "key = \"reflex.v_thr_mm_s\"\n" +
+                              (sampled ? "from = 50.0\nto = 80.0\n" : "values = [60.0]\n"));
   return (dir / "sweep.toml").string();
 }
 
@@ -188,7 +190,7 @@ TEST(SweepKeysTest, EveryRowRefusesABadValueAndAGridRefusesTheSamplingKeys) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::map<std::string, int> listed;
   for (const auto& j : nlohmann::json::parse(r.out)) {
-    if (!is_entry_key_doc(j["key"])) ++listed[j["key"]];   // the tables' (entry_keys_test)
+    if (!is_entry_key_doc(j["key"])) ++listed[j["key"]];  // the tables' (entry_keys_test)
   }
   EXPECT_EQ(listed, row_keys({sweep_design_table(&defaults), sweep_sampling_table(&defaults)}));
 }

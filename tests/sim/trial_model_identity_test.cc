@@ -39,13 +39,13 @@ void binding_text(std::ostringstream& os, const MuscleBinding& b) {
   bits(os, b.spring.h_m);
   for (double c : b.spring.coef) bits(os, c);
   bits(os, b.line_length_m);
-  for (double v : {b.line.axial_stiffness_n, b.line.creep, b.line.creep_time_s,
-                   b.line.start_tension_n}) {
+  for (double v :
+       {b.line.axial_stiffness_n, b.line.creep, b.line.creep_time_s, b.line.start_tension_n}) {
     bits(os, v);
   }
   os << b.line.creep_index << ';';
-  os << b.pressure_index << ';' << b.has_plant << ';' << b.slip_block << ';'
-     << b.relaxation_block << ';';
+  os << b.pressure_index << ';' << b.has_plant << ';' << b.slip_block << ';' << b.relaxation_block
+     << ';';
   AvbdlParams plant = b.plant;
   for (const KeyDoc& d : key_table_docs(avbdl_key_tables(&plant))) os << d.fallback << ';';
   for (int i = 0; i < plant.relaxation.count; ++i) {
@@ -149,10 +149,12 @@ Counts check_every_key(const std::string& scenario, const std::vector<std::strin
 
 TEST(TrialModelIdentityTest, WhatSameTrialModelCallsTheSameIsBuiltTheSame) {
   using pamsim_test::kScenarios;
-  const std::vector<std::string> arm = {
-      "muscles.agonist.plant.geometry.wall_thickness_mm=1.5", "bodies.basket.mass_kg=0.3",
-      "joints.shoulder.damping_N_m_s_per_rad=0.01", "joints.shoulder.frictionloss_N_m=0.001",
-      "muscles.antagonist.line_diameter_mm=0.4", "muscles.antagonist.line_modulus_MPa=2000"};
+  const std::vector<std::string> arm = {"muscles.agonist.plant.geometry.wall_thickness_mm=1.5",
+                                        "bodies.basket.mass_kg=0.3",
+                                        "joints.shoulder.damping_N_m_s_per_rad=0.01",
+                                        "joints.shoulder.frictionloss_N_m=0.001",
+                                        "muscles.antagonist.line_diameter_mm=0.4",
+                                        "muscles.antagonist.line_modulus_MPa=2000"};
   for (const auto& [file, given] : std::vector<std::pair<std::string, std::vector<std::string>>>{
            {"drop_mass.toml", {}}, {"reaching.toml", arm}, {"landing.toml", {}}}) {
     const Counts counts = check_every_key(kScenarios + file, given);

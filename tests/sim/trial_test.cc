@@ -63,7 +63,8 @@ TEST(TrialTest, PassiveDropLandsDropsAndSettlesHoldingTheMass) {
   EXPECT_LT(s.metric("min_angle_deg"), s.metric("start_angle_deg") - 3.0);
   EXPECT_GT(s.metric("final_angle_deg"), s.metric("min_angle_deg") + 3.0);
   EXPECT_LT(s.metric("final_angle_deg"), s.metric("start_angle_deg"));
-  EXPECT_NEAR(s.metric("peak_drop_deg"), s.metric("start_angle_deg") - s.metric("min_angle_deg"), 1e-9);
+  EXPECT_NEAR(s.metric("peak_drop_deg"), s.metric("start_angle_deg") - s.metric("min_angle_deg"),
+              1e-9);
 
   // settled: the last 0.5 s hardly move, and the mass is still in the basket (it rides
   // about 0.3 m below the shoulder at 1.0 m)
@@ -130,7 +131,7 @@ class RecordingObserver : public TrialObserver {
   void observe(const TrialSnapshot& snapshot) override {
     times_s.push_back(snapshot.time_s);
     angles_deg.push_back(snapshot.joint_position);
-    any_reflex = any_reflex || (*snapshot.channel_values)[0][0] != 0.0;   // reflex_ (Ia)
+    any_reflex = any_reflex || (*snapshot.channel_values)[0][0] != 0.0;  // reflex_ (Ia)
     first_trigger_s = snapshot.first_trigger_s;
   }
   std::vector<double> times_s;
@@ -154,7 +155,7 @@ TEST(TrialTest, ObserverSeesItsTimesAndChangesNothing) {
   // the initial state, then the first step at or after each multiple of 0.1 s, up to 1.5 s
   ASSERT_EQ(observer.times_s.size(), 16u);
   for (std::size_t k = 0; k < observer.times_s.size(); ++k) {
-    EXPECT_NEAR(observer.times_s[k], 0.1 * k, 1e-9) << k;   // 0.1 s is a whole 100 steps
+    EXPECT_NEAR(observer.times_s[k], 0.1 * k, 1e-9) << k;  // 0.1 s is a whole 100 steps
   }
   EXPECT_NEAR(observer.angles_deg.front(), -36.0, 0.5);
   EXPECT_TRUE(observer.any_reflex) << "the reflex fires after the impact at 1.17 s";
@@ -197,11 +198,12 @@ TEST(SteppedTrialTest, SteppingWithTheScenariosControllerReproducesRunTrial) {
     ++periods;
   }
   const TrialResult mine = stepped.finish();
-  EXPECT_EQ(periods + 1, static_cast<long>(ran.trajectory.rows()));   // one row per period
+  EXPECT_EQ(periods + 1, static_cast<long>(ran.trajectory.rows()));  // one row per period
   ASSERT_EQ(mine.trajectory.columns, ran.trajectory.columns);
   ASSERT_EQ(mine.trajectory.values.size(), ran.trajectory.values.size());
   EXPECT_EQ(std::memcmp(mine.trajectory.values.data(), ran.trajectory.values.data(),
-                        ran.trajectory.values.size() * sizeof(double)), 0);
+                        ran.trajectory.values.size() * sizeof(double)),
+            0);
   ASSERT_EQ(mine.summary.metrics.size(), ran.summary.metrics.size());
   for (std::size_t k = 0; k < ran.summary.metrics.size(); ++k) {
     if (is_timing_metric(ran.summary.metrics[k].name)) continue;
@@ -214,7 +216,8 @@ TEST(SteppedTrialTest, SteppingWithTheScenariosControllerReproducesRunTrial) {
   }
   const TrialResult again = stepped.finish();
   EXPECT_EQ(std::memcmp(again.trajectory.values.data(), ran.trajectory.values.data(),
-                        ran.trajectory.values.size() * sizeof(double)), 0);
+                        ran.trajectory.values.size() * sizeof(double)),
+            0);
 }
 
 // A stepped trial may move between threads (a thread pool steps it, as ThreadedVectorEnv
@@ -228,23 +231,26 @@ TEST(SteppedTrialTest, ATrialResetOnAnotherThreadRunsOnThisOne) {
   SteppedTrial stepped(arm, sc, 1);
   std::thread([&] { stepped.reset(3); }).join();
   stepped.step();
-  const TrialResult beside = run_trial(arm, sc, 3);   // this thread's data, while it runs
+  const TrialResult beside = run_trial(arm, sc, 3);  // this thread's data, while it runs
   while (stepped.step()) {
   }
   const TrialResult mine = stepped.finish();
   ASSERT_EQ(mine.trajectory.values.size(), ran.trajectory.values.size());
   EXPECT_EQ(std::memcmp(mine.trajectory.values.data(), ran.trajectory.values.data(),
-                        ran.trajectory.values.size() * sizeof(double)), 0);
+                        ran.trajectory.values.size() * sizeof(double)),
+            0);
   EXPECT_EQ(std::memcmp(beside.trajectory.values.data(), ran.trajectory.values.data(),
-                        ran.trajectory.values.size() * sizeof(double)), 0);
+                        ran.trajectory.values.size() * sizeof(double)),
+            0);
 }
 
 // Commands given to step() are the valve commands in force, and logged as such.
 TEST(SteppedTrialTest, CommandsReplaceTheControllersAndAreChecked) {
-  const Scenario sc = load_scenario(kReflex, {"sim.duration_s=0.2", "drop.time_s=0.1", "drop.enabled=false"});
+  const Scenario sc =
+      load_scenario(kReflex, {"sim.duration_s=0.2", "drop.time_s=0.1", "drop.enabled=false"});
   const TrialModel arm = load_trial_model(sc);
   SteppedTrial stepped(arm, sc, 1);
-  const std::vector<double> commands = {0.45e6, 0.3e6};   // each muscle its own
+  const std::vector<double> commands = {0.45e6, 0.3e6};  // each muscle its own
   ASSERT_EQ(arm.muscles.size(), commands.size());
   for (int k = 0; k < 20 && stepped.step(&commands); ++k) {
     EXPECT_EQ(stepped.observe().command_pa, commands) << "tick " << k;

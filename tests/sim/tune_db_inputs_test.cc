@@ -22,16 +22,18 @@ TEST(TuneDbInputsTest, AResumeAfterAnInputFileChangedIsRefused) {
   fs::copy_file(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_agonist.toml",
                 dir / "plant_agonist.toml");
   const std::string base = pamsim_test::scenario_variant(
-      dir, "drop_mass.toml", "plant = \"" + std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_agonist.toml\"",
+      dir, "drop_mass.toml",
+      "plant = \"" + std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_agonist.toml\"",
       "plant = \"" + (dir / "plant_agonist.toml").string() + "\"");
-  pamsim_test::write_text(dir / "tune.toml",
-      "base = \"" + base + "\"\ngenerations = 1\npopulation = 5\nseeds = 1\nheld_out_seeds = 0\n"
-      "[[parameter]]\nkey = \"reflex.v_thr_mm_s\"\nfrom = 40.0\nto = 100.0\n"
-      "[[objective]]\nmetric = \"peak_drop_deg\"\n");
+  pamsim_test::write_text(
+      dir / "tune.toml", "base = \"" + base +
+                             "\"\ngenerations = 1\npopulation = 5\nseeds = 1\nheld_out_seeds = 0\n"
+                             "[[parameter]]\nkey = \"reflex.v_thr_mm_s\"\nfrom = 40.0\nto = 100.0\n"
+                             "[[objective]]\nmetric = \"peak_drop_deg\"\n");
   const TuneDefinition def = load_tune_definition((dir / "tune.toml").string());
   const std::string db = (dir / "tune.db").string();
   { TuneDb made = TuneDb::create(db, def); }
-  { TuneDb same = TuneDb::open_to_resume(db, def); }   // nothing changed
+  { TuneDb same = TuneDb::open_to_resume(db, def); }  // nothing changed
   std::ofstream(dir / "plant_agonist.toml", std::ios::app) << "# edited\n";
   try {
     TuneDb::open_to_resume(db, def);

@@ -29,7 +29,8 @@ using pamsim_test::kScenarios;
 // (drawn) and not on the pressure sensor's bias (the parameter), which only the estimate sees.
 std::string robust_tuning(const std::string& dir, const std::string& extra) {
   const std::string text =
-      "base = \"" + kScenarios + "drop_mass_ideal.toml\"\n"
+      "base = \"" + kScenarios +
+      "drop_mass_ideal.toml\"\n"
       "overrides = [\"sim.duration_s=0.6\", \"drop.time_s=0.3\", \"drop.enabled=false\", "
       "\"reflex.enabled=false\"]\n"
       "algorithm = \"cmaes\"\ngenerations = 1\npopulation = 6\nseed = 3\nseeds = 3\n"
@@ -37,7 +38,8 @@ std::string robust_tuning(const std::string& dir, const std::string& extra) {
       "[[parameter]]\nkey = \"sensors.pressure_bias_MPa\"\nfrom = -0.05\nto = 0.03\n"
       "[[objective]]\nmetric = \"length_est_rmse_pct\"\n"
       "[[randomize]]\nkey = \"bodies.basket.mass_kg\"\ndistribution = \"uniform\"\n"
-      "from = 0.05\nto = 0.15\n" + extra;
+      "from = 0.05\nto = 0.15\n" +
+      extra;
   const std::string path = dir + "/robust.toml";
   pamsim_test::write_text(path, text);
   return path;
@@ -51,8 +53,8 @@ std::map<int, std::map<std::uint64_t, double>> final_angles(const std::string& d
   sqlite3_prepare_v2(db, "SELECT evaluation, seed, metrics FROM trials", -1, &st, nullptr);
   std::map<int, std::map<std::uint64_t, double>> out;
   while (sqlite3_step(st) == SQLITE_ROW) {
-    const auto metrics = nlohmann::json::parse(
-        reinterpret_cast<const char*>(sqlite3_column_text(st, 2)));
+    const auto metrics =
+        nlohmann::json::parse(reinterpret_cast<const char*>(sqlite3_column_text(st, 2)));
     out[sqlite3_column_int(st, 0)][static_cast<std::uint64_t>(sqlite3_column_int64(st, 1))] =
         metrics.at("final_angle_deg").get<double>();
   }
@@ -69,7 +71,7 @@ TEST(TuneRandomizeTest, EveryPointTriedSeesTheSameDrawnArms) {
   TuneRunOptions o;
   o.threads = 2;
   const TuneRunResult r = run_tune(def, db, o);
-  ASSERT_EQ(r.history.size(), 12u);   // the initial population and one generation
+  ASSERT_EQ(r.history.size(), 12u);  // the initial population and one generation
   const auto angles = final_angles(dir + "/tune.db");
   ASSERT_EQ(angles.size(), 12u);
   const std::map<std::uint64_t, double>& first = angles.begin()->second;
@@ -108,11 +110,14 @@ TEST(TuneRandomizeTest, ADrawnParameterOrNoiseScaleIsRefused) {
   const std::string dir = pamsim_test::fresh_dir("tune_randomize_bad").string();
   for (const auto& [extra, says] : std::vector<std::pair<std::string, std::string>>{
            {"[[randomize]]\nkey = \"sensors.pressure_bias_MPa\"\ndistribution = \"uniform\"\n"
-            "from = 0.0\nto = 0.01\n", "draws sensors.pressure_bias_MPa, which is a parameter too"},
+            "from = 0.0\nto = 0.01\n",
+            "draws sensors.pressure_bias_MPa, which is a parameter too"},
            {"[[randomize]]\nkey = \"sensors.noise_scale\"\ndistribution = \"uniform\"\n"
-            "from = 0.0\nto = 1.0\n", "cannot draw sensors.noise_scale"},
+            "from = 0.0\nto = 1.0\n",
+            "cannot draw sensors.noise_scale"},
            {"[[randomize]]\nkey = \"bodies.arm.mass_kg\"\ndistribution = \"uniform\"\n"
-            "from = -1.0\nto = 0.0\n", "the draws of seed index 0"}}) {
+            "from = -1.0\nto = 0.0\n",
+            "the draws of seed index 0"}}) {
     SCOPED_TRACE(extra);
     try {
       load_tune_definition(robust_tuning(dir, extra));

@@ -185,8 +185,8 @@ TEST(TuneTest, Nsga2WritesANonDominatedParetoFront) {
   swap("population = 6", "population = 8");
   text += "[[objective]]\nmetric = \"length_est_max_error_pct\"\n";
   pamsim_test::write_text(dir + "/two.toml", text);
-  const auto r = pamsim_test::run_pamsim("tune " + dir + "/two.toml --threads 2 --out " + dir +
-                                         "/out");
+  const auto r =
+      pamsim_test::run_pamsim("tune " + dir + "/two.toml --threads 2 --out " + dir + "/out");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir + "/out/pareto.png"));
   const TuneDb db = TuneDb::open_existing(dir + "/out/tune.db");

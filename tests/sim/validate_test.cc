@@ -160,7 +160,8 @@ TEST(ValidateTest, APlantChangeReachesTheTensileTestAndTheTrials) {
   for (const auto& [set, says] : std::vector<std::pair<std::string, std::string>>{
            {"pams.Z.plant.geometry.wall_thickness_mm=1", "has no PAM Z"},
            {"pams.B.plnt.geometry.wall_thickness_mm=1", "only a plant's field"},
-           {"pams.B.plant.geometry.wall_thickness_mm=-1", "pams.B.plant.geometry.wall_thickness_mm"},
+           {"pams.B.plant.geometry.wall_thickness_mm=-1",
+            "pams.B.plant.geometry.wall_thickness_mm"},
            {"muscles.pam.plant.geometry.wall_thickness_mm=1", "pams.<NAME>.plant"}}) {
     o.overrides = {set};
     try {

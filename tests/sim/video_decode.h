@@ -15,11 +15,11 @@ namespace pamsim_test {
 
 struct DecodedVideo {
   bool opened = false;
-  std::string codec;   // "h264", "png", ...
+  std::string codec;  // "h264", "png", ...
   int width = 0;
   int height = 0;
-  int frames = 0;      // frames decoded
-  std::vector<std::vector<unsigned char>> rgb;   // frames kept, 3 * width * height each
+  int frames = 0;                               // frames decoded
+  std::vector<std::vector<unsigned char>> rgb;  // frames kept, 3 * width * height each
 };
 
 // Decodes all of `path`; keeps the RGB of the first `keep_frames` frames.
@@ -49,10 +49,9 @@ inline DecodedVideo decode_video(const std::string& path, int keep_frames = 0) {
   auto receive_all = [&] {
     while (avcodec_receive_frame(decoder.get(), frame.get()) >= 0) {
       if (v.frames < keep_frames) {
-        to_rgb.reset(sws_getContext(frame->width, frame->height,
-                                    static_cast<AVPixelFormat>(frame->format), frame->width,
-                                    frame->height, AV_PIX_FMT_RGB24, SWS_POINT, nullptr, nullptr,
-                                    nullptr));
+        to_rgb.reset(sws_getContext(
+            frame->width, frame->height, static_cast<AVPixelFormat>(frame->format), frame->width,
+            frame->height, AV_PIX_FMT_RGB24, SWS_POINT, nullptr, nullptr, nullptr));
         std::vector<unsigned char> rgb(3 * static_cast<std::size_t>(v.width) * v.height);
         uint8_t* dst[1] = {rgb.data()};
         const int dst_stride[1] = {3 * v.width};
@@ -67,7 +66,7 @@ inline DecodedVideo decode_video(const std::string& path, int keep_frames = 0) {
     av_packet_unref(packet.get());
     receive_all();
   }
-  avcodec_send_packet(decoder.get(), nullptr);   // flush delayed frames
+  avcodec_send_packet(decoder.get(), nullptr);  // flush delayed frames
   receive_all();
   return v;
 }

@@ -54,25 +54,39 @@ def register_envs() -> None:
     import gymnasium
 
     entry = "pamsim.envs.drop_mass:DropMassEnv"
-    vector = "pamsim.envs.vector:make_threaded"   # make_vec(..., "vector_entry_point")
+    vector = "pamsim.envs.vector:make_threaded"  # make_vec(..., "vector_entry_point")
     if "pamsim/DropMass-v0" in gymnasium.registry:
         return
     gymnasium.register("pamsim/DropMass-v0", entry_point=entry, vector_entry_point=vector)
-    gymnasium.register("pamsim/DropMass-Noisy-v0", entry_point=entry, vector_entry_point=vector,
-                       kwargs={"noise_scale": 2.0})
+    gymnasium.register(
+        "pamsim/DropMass-Noisy-v0",
+        entry_point=entry,
+        vector_entry_point=vector,
+        kwargs={"noise_scale": 2.0},
+    )
     reaching = "pamsim.envs.reaching:ReachingEnv"
     reaching_vector = "pamsim.envs.vector:make_threaded_reaching"
-    gymnasium.register("pamsim/Reaching-v0", entry_point=reaching,
-                       vector_entry_point=reaching_vector)
-    gymnasium.register("pamsim/Reaching-Noisy-v0", entry_point=reaching,
-                       vector_entry_point=reaching_vector, kwargs={"noise_scale": 2.0})
+    gymnasium.register(
+        "pamsim/Reaching-v0", entry_point=reaching, vector_entry_point=reaching_vector
+    )
+    gymnasium.register(
+        "pamsim/Reaching-Noisy-v0",
+        entry_point=reaching,
+        vector_entry_point=reaching_vector,
+        kwargs={"noise_scale": 2.0},
+    )
     gymnasium.register("pamsim/Scenario-v0", entry_point="pamsim.envs.scenario:ScenarioEnv")
     gymnasium.register("pamsim/Landing-v0", entry_point="pamsim.envs.scenario:landing")
     gymnasium.register("pamsim/Hopping-v0", entry_point="pamsim.envs.scenario:hopping")
     # the pressure regulator bracket's ends (models/pams/regulator_bracket.toml)
     for end, name in (("fast", "FastValve"), ("slow", "SlowValve")):
         valve = {"overrides": regulator_bracket(end)}
-        gymnasium.register(f"pamsim/DropMass-{name}-v0", entry_point=entry,
-                           vector_entry_point=vector, kwargs=valve)
-        gymnasium.register(f"pamsim/Reaching-{name}-v0", entry_point=reaching,
-                           vector_entry_point=reaching_vector, kwargs=valve)
+        gymnasium.register(
+            f"pamsim/DropMass-{name}-v0", entry_point=entry, vector_entry_point=vector, kwargs=valve
+        )
+        gymnasium.register(
+            f"pamsim/Reaching-{name}-v0",
+            entry_point=reaching,
+            vector_entry_point=reaching_vector,
+            kwargs=valve,
+        )

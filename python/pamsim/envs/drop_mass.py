@@ -47,21 +47,38 @@ def _drop_overrides(draws: list[float]) -> dict[str, Any]:
 
 
 class DropMassEnv(PamTrialEnv):
-    def __init__(self, scenario: str | None = None, observation: str = "measured",
-                 fiber: bool = False, randomize: bool = True, noise_scale: float = 1.0,
-                 duration_s: float = 1.5, mass_lost_penalty: float = 10.0,
-                 p_max_MPa: float | None = None, render_mode: str | None = None,
-                 overrides: dict[str, Any] | None = None) -> None:
+    def __init__(
+        self,
+        scenario: str | None = None,
+        observation: str = "measured",
+        fiber: bool = False,
+        randomize: bool = True,
+        noise_scale: float = 1.0,
+        duration_s: float = 1.5,
+        mass_lost_penalty: float = 10.0,
+        p_max_MPa: float | None = None,
+        render_mode: str | None = None,
+        overrides: dict[str, Any] | None = None,
+    ) -> None:
         if randomize and not duration_s > DROP_TIME_S[1]:
-            raise ValueError(f"duration_s must exceed the latest drop time {DROP_TIME_S[1]} s, "
-                             f"got {duration_s}")
+            raise ValueError(
+                f"duration_s must exceed the latest drop time {DROP_TIME_S[1]} s, got {duration_s}"
+            )
         self.randomize = randomize
         self.mass_lost_penalty = mass_lost_penalty
         self.start_position = 0.0
         latest = [DROP_TIME_S[1], MASS_KG[1], HEIGHT_M[1]] if randomize else [math.nan] * 3
-        super().__init__(scenario or str(data_dir() / "scenarios" / "drop_mass.toml"),
-                         _drop_overrides(latest), observation, fiber, noise_scale, duration_s,
-                         p_max_MPa, render_mode, overrides)
+        super().__init__(
+            scenario or str(data_dir() / "scenarios" / "drop_mass.toml"),
+            _drop_overrides(latest),
+            observation,
+            fiber,
+            noise_scale,
+            duration_s,
+            p_max_MPa,
+            render_mode,
+            overrides,
+        )
 
     def draw(self, rng: np.random.Generator) -> tuple[dict[str, Any], dict[str, Any]]:
         if self.randomize:

@@ -56,13 +56,21 @@ def joint_state(observation: dict[str, Any]) -> tuple[float, float]:
 
 class PamTrialEnv(gymnasium.Env[Obs, Act]):
     metadata: dict[str, Any] = {"render_modes": ["rgb_array"], "render_fps": 100}
-    task_observation_size = 0   # entries the task adds to the observation
-    render_width, render_height = 640, 480   # render_mode="rgb_array"'s frame [px]
+    task_observation_size = 0  # entries the task adds to the observation
+    render_width, render_height = 640, 480  # render_mode="rgb_array"'s frame [px]
 
-    def __init__(self, scenario: str, probe_overrides: dict[str, Any], observation: str,
-                 fiber: bool, noise_scale: float, duration_s: float | None,
-                 p_max_MPa: float | None, render_mode: str | None,
-                 overrides: dict[str, Any] | None = None) -> None:
+    def __init__(
+        self,
+        scenario: str,
+        probe_overrides: dict[str, Any],
+        observation: str,
+        fiber: bool,
+        noise_scale: float,
+        duration_s: float | None,
+        p_max_MPa: float | None,
+        render_mode: str | None,
+        overrides: dict[str, Any] | None = None,
+    ) -> None:
         if observation not in ("measured", "privileged"):
             raise ValueError(f'observation must be "measured" or "privileged", got {observation!r}')
         if render_mode not in (None, "rgb_array"):
@@ -73,21 +81,24 @@ class PamTrialEnv(gymnasium.Env[Obs, Act]):
         self.fiber = fiber
         self.noise_scale = noise_scale
         self.duration_s = duration_s
-        self.overrides = dict(overrides or {})   # scenario keys of every trial (a variant's)
+        self.overrides = dict(overrides or {})  # scenario keys of every trial (a variant's)
         self._trial: Trial | None = None
         self._warned = False
         self._time_s = 0.0
         self.last_result: Any = None
         probe = Trial(self.scenario, self.scenario_overrides(probe_overrides))
         self.muscles: list[str] = list(probe.muscles)
-        probe.step()   # one control period: the frames' rate
+        probe.step()  # one control period: the frames' rate
         self.metadata = {**self.metadata, "render_fps": round(1.0 / probe.observe()["time_s"])}
         # the actions' top: the scenario's valve range unless given
         self.p_max_MPa: float = probe.command_max_MPa if p_max_MPa is None else p_max_MPa
         n = len(self.muscles)
         self.action_space = spaces.Box(0.0, self.p_max_MPa, shape=(n,), dtype=np.float32)
-        size = (n * (len(MEASURED) + (1 if fiber else 0)) + self.task_observation_size +
-                (2 if self.privileged else 0))
+        size = (
+            n * (len(MEASURED) + (1 if fiber else 0))
+            + self.task_observation_size
+            + (2 if self.privileged else 0)
+        )
         self.observation_space = spaces.Box(-np.inf, np.inf, shape=(size,), dtype=np.float64)
 
     # what a task defines
@@ -127,14 +138,15 @@ class PamTrialEnv(gymnasium.Env[Obs, Act]):
             values += list(joint_state(o))
         return np.array(values, dtype=np.float64)
 
-    def reset(self, *, seed: int | None = None,
-              options: dict[str, Any] | None = None) -> tuple[Obs, dict[str, Any]]:
+    def reset(
+        self, *, seed: int | None = None, options: dict[str, Any] | None = None
+    ) -> tuple[Obs, dict[str, Any]]:
         super().reset(seed=seed)
         overrides, info = self.draw(self.np_random)
         sensor_seed = int(self.np_random.integers(1, 2**31))
         self._trial = Trial(self.scenario, self.scenario_overrides(overrides), seed=sensor_seed)
         self.start_position = joint_state(self._trial.observe())[0]
-        self._trial.step()   # the first tick with the scenario's own commands
+        self._trial.step()  # the first tick with the scenario's own commands
         self._time_s = self._trial.observe()["time_s"]
         self._warned = False
         return self._observe(), {**info, "sensor_seed": sensor_seed}
@@ -154,8 +166,10 @@ class PamTrialEnv(gymnasium.Env[Obs, Act]):
             raise ValueError(f"action holds NaN (valve commands [MPa]): {a.tolist()}")
         clipped = np.clip(a, 0.0, self.p_max_MPa)
         if not np.array_equal(clipped, a) and not self._warned:
-            warnings.warn(f"action {a.tolist()} MPa clipped to [0, {self.p_max_MPa}] "
-                          "(once per episode)", stacklevel=3)
+            warnings.warn(
+                f"action {a.tolist()} MPa clipped to [0, {self.p_max_MPa}] (once per episode)",
+                stacklevel=3,
+            )
             self._warned = True
         return clipped
 
@@ -164,7 +178,7 @@ class PamTrialEnv(gymnasium.Env[Obs, Act]):
         commands = self._checked(action)
         running = trial.step(pressure_commands_MPa=commands)
         o = trial.observe()
-        period_s = o["time_s"] - self._time_s   # the control period just run
+        period_s = o["time_s"] - self._time_s  # the control period just run
         self._time_s = o["time_s"]
         reward = self.step_reward(o, period_s)
         obs = self._observe()

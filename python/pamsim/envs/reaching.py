@@ -34,20 +34,37 @@ RAMP_S = 2.0
 class ReachingEnv(PamTrialEnv):
     task_observation_size = 1
 
-    def __init__(self, scenario: str | None = None, observation: str = "measured",
-                 fiber: bool = False, randomize: bool = True, noise_scale: float = 1.0,
-                 duration_s: float = 4.0, final_deg: float = -30.0,
-                 p_max_MPa: float | None = None, render_mode: str | None = None,
-                 overrides: dict[str, Any] | None = None) -> None:
+    def __init__(
+        self,
+        scenario: str | None = None,
+        observation: str = "measured",
+        fiber: bool = False,
+        randomize: bool = True,
+        noise_scale: float = 1.0,
+        duration_s: float = 4.0,
+        final_deg: float = -30.0,
+        p_max_MPa: float | None = None,
+        render_mode: str | None = None,
+        overrides: dict[str, Any] | None = None,
+    ) -> None:
         if not duration_s > RAMP_START_S + RAMP_S:
-            raise ValueError(f"duration_s must exceed the ramp's end {RAMP_START_S + RAMP_S} s, "
-                             f"got {duration_s}")
+            raise ValueError(
+                f"duration_s must exceed the ramp's end {RAMP_START_S + RAMP_S} s, got {duration_s}"
+            )
         self.randomize = randomize
         self.final_deg = final_deg
         self.start_position = 0.0
-        super().__init__(scenario or str(data_dir() / "scenarios" / "reaching.toml"), {},
-                         observation, fiber, noise_scale, duration_s, p_max_MPa, render_mode,
-                         overrides)
+        super().__init__(
+            scenario or str(data_dir() / "scenarios" / "reaching.toml"),
+            {},
+            observation,
+            fiber,
+            noise_scale,
+            duration_s,
+            p_max_MPa,
+            render_mode,
+            overrides,
+        )
 
     def draw(self, rng: np.random.Generator) -> tuple[dict[str, Any], dict[str, Any]]:
         if self.randomize:

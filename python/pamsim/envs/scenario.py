@@ -27,16 +27,34 @@ __all__ = ["ScenarioEnv", "hopping", "landing"]
 
 
 class ScenarioEnv(PamTrialEnv):
-    def __init__(self, scenario: str, reward: dict[str, float], observation: str = "measured",
-                 fiber: bool = False, noise_scale: float = 1.0, duration_s: float | None = None,
-                 p_max_MPa: float | None = None, render_mode: str | None = None,
-                 overrides: dict[str, Any] | None = None) -> None:
+    def __init__(
+        self,
+        scenario: str,
+        reward: dict[str, float],
+        observation: str = "measured",
+        fiber: bool = False,
+        noise_scale: float = 1.0,
+        duration_s: float | None = None,
+        p_max_MPa: float | None = None,
+        render_mode: str | None = None,
+        overrides: dict[str, Any] | None = None,
+    ) -> None:
         if not reward:
-            raise ValueError("reward must weigh at least one summary metric, e.g. "
-                             '{"peak_drop_deg": -1.0}')
+            raise ValueError(
+                'reward must weigh at least one summary metric, e.g. {"peak_drop_deg": -1.0}'
+            )
         self.reward_weights = dict(reward)
-        super().__init__(scenario, {}, observation, fiber, noise_scale, duration_s, p_max_MPa,
-                         render_mode, overrides)
+        super().__init__(
+            scenario,
+            {},
+            observation,
+            fiber,
+            noise_scale,
+            duration_s,
+            p_max_MPa,
+            render_mode,
+            overrides,
+        )
 
     def step_reward(self, observation: dict[str, Any], period_s: float) -> float:
         return 0.0

@@ -12,8 +12,7 @@
 #include "pamctl_export.h"
 
 void board_wait_for_tick(void);
-void board_read_sensors(pamctl_real* pressure_v, pamctl_real* gauge_v,
-                        pamctl_real* fiber_rate_m_s);
+void board_read_sensors(pamctl_real* pressure_v, pamctl_real* gauge_v, pamctl_real* fiber_rate_m_s);
 void board_goal_pressures(pamctl_real time_s, pamctl_real* p_tp_pa);
 bool board_reflexes_enabled(void);
 void board_write_valves(const pamctl_real* p_cmd_pa);
@@ -30,7 +29,7 @@ int32_t pamctl_example_main(void) {
   pamctl_export_config(&config);
   const int32_t code = pamctl_init(&config, &state);
   if (code != 0) {
-    pamctl_tick(&config, &state, &input, &output);   /* unconfigured: vents */
+    pamctl_tick(&config, &state, &input, &output); /* unconfigured: vents */
     board_write_valves(output.p_cmd_pa);
     return code;
   }

@@ -78,7 +78,8 @@ static void write_header(FILE* out, int n) {
   for (int j = 0; j < n; ++j) fprintf(out, ",p_cmd_%s_Pa", names[j]);
   for (int j = 0; j < n; ++j) fprintf(out, ",velocity_%s_m_s", names[j]);
   for (int j = 0; j < n; ++j) fprintf(out, ",reflex_%s,trigger_%s", names[j], names[j]);
-  for (int j = 0; j < n; ++j) fprintf(out, ",tension_reflex_%s,tension_trigger_%s", names[j], names[j]);
+  for (int j = 0; j < n; ++j)
+    fprintf(out, ",tension_reflex_%s,tension_trigger_%s", names[j], names[j]);
   fprintf(out, ",status\n");
 }
 

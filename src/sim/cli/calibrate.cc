@@ -34,7 +34,7 @@ struct CalibrateOptions {
   bool force = false;
   bool pose = false;
   double deformation_mm = 2.0;
-  double pressure_mpa = -1;   // --pressure-MPa; < 0: each muscle's start command
+  double pressure_mpa = -1;  // --pressure-MPa; < 0: each muscle's start command
   bool balance = false;
   bool pressure_mpa_given = false;
 };

@@ -18,9 +18,8 @@ void add_database_options(CLI::App* cmd, DatabaseOptions* options, const std::st
 CommandDatabase command_database(const std::string& input_file, const DatabaseOptions& options,
                                  const std::string& file_name) {
   CommandDatabase db;
-  db.out = options.out.empty()
-               ? "renders/" + std::filesystem::path(input_file).stem().string()
-               : options.out;
+  db.out = options.out.empty() ? "renders/" + std::filesystem::path(input_file).stem().string()
+                               : options.out;
   db.path = options.db.empty() ? db.out + "/" + file_name : options.db;
   std::error_code ec;
   db.exists = std::filesystem::exists(db.path, ec);
@@ -30,9 +29,8 @@ CommandDatabase command_database(const std::string& input_file, const DatabaseOp
 void warn_if_other_version(const std::string& command, const std::string& path,
                            const std::string& made_by, const std::string& items) {
   if (made_by == PAMSIM_VERSION) return;
-  std::cerr << "pamsim " << command << ": warning: " << path << " was started by pamsim "
-            << made_by << ", this is " << PAMSIM_VERSION << "; its " << items
-            << " may not be comparable\n";
+  std::cerr << "pamsim " << command << ": warning: " << path << " was started by pamsim " << made_by
+            << ", this is " << PAMSIM_VERSION << "; its " << items << " may not be comparable\n";
 }
 
 }  // namespace pamsim

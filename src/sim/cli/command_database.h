@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "sim/io/outputs.h"        // FolderGuard
-#include "sim/io/sqlite_file.h"    // prepare_database_folder
+#include "sim/io/outputs.h"      // FolderGuard
+#include "sim/io/sqlite_file.h"  // prepare_database_folder
 
 namespace CLI {
 class App;
@@ -30,8 +30,8 @@ void add_database_options(CLI::App* cmd, DatabaseOptions* options, const std::st
                           const std::string& resume_help, const std::string& out_help);
 
 struct CommandDatabase {
-  std::string out;    // --out, default renders/<input file's name without extension>
-  std::string path;   // --db, default <out>/<file name>
+  std::string out;   // --out, default renders/<input file's name without extension>
+  std::string path;  // --db, default <out>/<file name>
   bool exists = false;
 };
 

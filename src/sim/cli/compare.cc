@@ -49,12 +49,10 @@ struct MetricStats {
 struct LoadedRun {
   std::string dir;
   std::vector<Trajectory> trajectories;
-  std::map<std::string, MetricStats> metrics;   // by name, sorted
+  std::map<std::string, MetricStats> metrics;  // by name, sorted
 };
 
-double number_or_nan(const nlohmann::json& j) {
-  return j.is_number() ? j.get<double>() : NAN;
-}
+double number_or_nan(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : NAN; }
 
 nlohmann::json read_json(const fs::path& path) {
   std::ifstream in(path);
@@ -80,10 +78,12 @@ Trajectory load_trajectory(const fs::path& csv) {
 LoadedRun load_run(const std::string& dir) {
   LoadedRun run;
   run.dir = dir;
-  if (!fs::is_directory(dir)) throw InputError(dir + ": not a folder (expected a `pamsim run` output folder)");
+  if (!fs::is_directory(dir))
+    throw InputError(dir + ": not a folder (expected a `pamsim run` output folder)");
   const fs::path summary_path = fs::path(dir) / "summary.json";
   if (!fs::is_regular_file(summary_path)) {
-    throw InputError(dir + ": not a run folder, no summary.json (expected a `pamsim run` output folder)");
+    throw InputError(dir +
+                     ": not a run folder, no summary.json (expected a `pamsim run` output folder)");
   }
   const nlohmann::json summary = read_json(summary_path);
   if (!summary.is_object()) throw InputError(summary_path.string() + ": expected a JSON object");
@@ -91,7 +91,8 @@ LoadedRun load_run(const std::string& dir) {
   if (summary.contains("metrics")) {
     // repeated trials: aggregate metrics, one trajectory per trial_* folder (sorted by name)
     const nlohmann::json& metrics = summary["metrics"];
-    if (!metrics.is_object()) throw InputError(summary_path.string() + ": metrics must be an object");
+    if (!metrics.is_object())
+      throw InputError(summary_path.string() + ": metrics must be an object");
     for (const auto& [name, m] : metrics.items()) {
       if (!m.is_object()) continue;
       MetricStats s;
@@ -110,7 +111,8 @@ LoadedRun load_run(const std::string& dir) {
       }
     }
     if (trial_csvs.empty()) {
-      throw InputError(dir + ": not a run folder, no trial_*/trajectory.csv beside its summary.json");
+      throw InputError(dir +
+                       ": not a run folder, no trial_*/trajectory.csv beside its summary.json");
     }
     std::sort(trial_csvs.begin(), trial_csvs.end());
     for (const auto& csv : trial_csvs) run.trajectories.push_back(load_trajectory(csv));
@@ -125,7 +127,9 @@ LoadedRun load_run(const std::string& dir) {
     }
     const fs::path csv = fs::path(dir) / "trajectory.csv";
     if (!fs::is_regular_file(csv)) {
-      throw InputError(dir + ": not a run folder, its summary.json has no metrics and there is no trajectory.csv");
+      throw InputError(
+          dir +
+          ": not a run folder, its summary.json has no metrics and there is no trajectory.csv");
     }
     run.trajectories.push_back(load_trajectory(csv));
   }
@@ -182,8 +186,8 @@ void print_metrics_table(std::ostream& out, const LoadedRun& a, const std::strin
 
   std::vector<std::array<std::string, 3>> rows;
   rows.push_back({"metric", label_a + " mean [min, max]", label_b + " mean [min, max]"});
-  rows.push_back({"trials", std::to_string(a.trajectories.size()),
-                  std::to_string(b.trajectories.size())});
+  rows.push_back(
+      {"trials", std::to_string(a.trajectories.size()), std::to_string(b.trajectories.size())});
   for (const auto& name : names) {
     const auto ia = a.metrics.find(name);
     const auto ib = b.metrics.find(name);
@@ -234,7 +238,8 @@ void compare(const CompareOptions& opt) {
   for (const std::string& format : plot_formats(opt.plot_format)) {
     refuse_existing_file(fs::path(out).replace_extension(format).string(), opt.force);
   }
-  make_directories(fs::path(out).parent_path().empty() ? "." : fs::path(out).parent_path().string());
+  make_directories(fs::path(out).parent_path().empty() ? "."
+                                                       : fs::path(out).parent_path().string());
   write_compare_plot(out, bands);
 
   // the metrics side by side

@@ -66,19 +66,21 @@ EmbeddedScenario embedded_scenario(const std::string& path,
     throw InputError(path + ": controller.kind = " + e.scenario.controller_kind + ": " + why);
   }
   const std::int32_t code = pamctl_check_config(&e.config);
-  if (code != 0) throw InputError(path + ": the embedded controller refuses " +
-                                  std::string(pamctl_config_error(code)));
+  if (code != 0)
+    throw InputError(path + ": the embedded controller refuses " +
+                     std::string(pamctl_config_error(code)));
   for (const BoundMuscle& m : e.model.muscles) e.muscles.push_back(m.label);
   return e;
 }
 
 void run_export(const ControllerExportOptions& opt) {
-  const std::string out = !opt.out.empty() ? opt.out
-                          : "renders/" + fs::path(opt.scenario).stem().string() + "_controller";
+  const std::string out = !opt.out.empty()
+                              ? opt.out
+                              : "renders/" + fs::path(opt.scenario).stem().string() + "_controller";
   const EmbeddedScenario e = embedded_scenario(opt.scenario, opt.overrides);
   // the generated files name what made them: the resolved scenario's digest and pamsim
-  const std::string resolved = resolved_scenario_toml(read_text_file(opt.scenario), opt.scenario,
-                                                      opt.overrides, out, "");
+  const std::string resolved =
+      resolved_scenario_toml(read_text_file(opt.scenario), opt.scenario, opt.overrides, out, "");
   char digest[32];
   std::snprintf(digest, sizeof(digest), "%016llx",
                 static_cast<unsigned long long>(fnv1a64(resolved)));
@@ -100,7 +102,8 @@ void fill_goal_pressures(const EmbeddedScenario* e, const std::string& log, Cont
     MuscleStream& m = s->muscles[j];
     if (!m.p_tp_pa.empty()) continue;
     if (!e) {
-      throw InputError(log + ": no column p_tp_" + std::string("<muscle>") + "_Pa or _MPa (the "
+      throw InputError(log + ": no column p_tp_" + std::string("<muscle>") +
+                       "_Pa or _MPa (the "
                        "scheduled commands): give them, or replay with --scenario, whose "
                        "schedules give them");
     }
@@ -157,7 +160,8 @@ void run_replay(const ControllerReplayOptions& opt) {
   check_control_rate(stream, config.control_period_s, opt.log);
   fill_goal_pressures(e.get(), opt.log, &stream);
   if (!stream.has_enabled) {
-    std::cerr << "pamsim: " << opt.log << " has no enabled column: the reflexes are on "
+    std::cerr << "pamsim: " << opt.log
+              << " has no enabled column: the reflexes are on "
                  "throughout\n";
   }
   if (stream.missing_readings > 0) {
@@ -198,8 +202,10 @@ void add_controller_command(CLI::App& app) {
   exp->add_flag("--force", eo->force, "Replace an earlier export in the folder");
   const auto [rep, ro] = add_command<ControllerReplayOptions>(
       *cmd, "replay", "Drive the embedded controller with a log of its readings", run_replay);
-  rep->add_option("log", ro->log, "readings.csv (pamsim run --readings), trajectory.csv or a "
-                                  "lab's log with the same columns")->required();
+  rep->add_option("log", ro->log,
+                  "readings.csv (pamsim run --readings), trajectory.csv or a "
+                  "lab's log with the same columns")
+      ->required();
   rep->add_option("--export", ro->export_dir, "An export folder (pamsim controller export)");
   rep->add_option("--scenario", ro->scenario, "Or a scenario whose controller to run");
   add_overrides_option(rep, &ro->overrides, "Override a key of --scenario");

@@ -52,8 +52,8 @@ void run_estimate(const EstimateOptions& o) {
   } else if (have_length) {
     std::printf("deformation %.6f mm, length %.6f mm (%s)\n", d_mm, l_mm, to_string(e.status));
   } else {
-    std::printf("no physical root: %.6g N is beyond what %s can produce at %.6g MPa\n",
-                o.force_n, params.name.c_str(), o.pressure_mpa);
+    std::printf("no physical root: %.6g N is beyond what %s can produce at %.6g MPa\n", o.force_n,
+                params.name.c_str(), o.pressure_mpa);
   }
 }
 

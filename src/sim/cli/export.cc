@@ -1,8 +1,8 @@
 // export.cc: `pamsim export DB -o FILE [--timing] [--force]` (-o is also --csv): a sweep
-// database as CSV, one row per trial in trial order, the columns of the trials table (results_db.h), streamed to a
-// temp file and renamed into place (FILE "-" is standard output; a FIFO or device is
-// written through, never replaced). Numbers are written in their shortest exact form,
-// missing values as empty cells. The per-run timing metrics (wall_time_s, realtime_factor)
+// database as CSV, one row per trial in trial order, the columns of the trials table
+// (results_db.h), streamed to a temp file and renamed into place (FILE "-" is standard output; a
+// FIFO or device is written through, never replaced). Numbers are written in their shortest exact
+// form, missing values as empty cells. The per-run timing metrics (wall_time_s, realtime_factor)
 // are left out unless --timing, so the same sweep exports the same file whatever the machine
 // or thread count.
 #include <CLI/CLI.hpp>
@@ -43,12 +43,15 @@ std::string csv_field(const std::string& s) {
 
 std::string csv_cell(const DbValue& v) {
   switch (v.kind) {
-    case DbValue::Kind::kNull: return "";
-    case DbValue::Kind::kText: return csv_field(v.text);
-    case DbValue::Kind::kNumber: break;
+    case DbValue::Kind::kNull:
+      return "";
+    case DbValue::Kind::kText:
+      return csv_field(v.text);
+    case DbValue::Kind::kNumber:
+      break;
   }
   char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof(buf), v.number);   // shortest round trip
+  const auto r = std::to_chars(buf, buf + sizeof(buf), v.number);  // shortest round trip
   return std::string(buf, r.ptr);
 }
 
@@ -100,8 +103,7 @@ void export_csv(const ExportOptions& opt) {
   }
   if (tmp) {
     if (std::rename(tmp->path().c_str(), opt.csv.c_str()) != 0) {
-      throw InputError(opt.csv + ": cannot move the CSV into place (" + std::strerror(errno) +
-                       ")");
+      throw InputError(opt.csv + ": cannot move the CSV into place (" + std::strerror(errno) + ")");
     }
     tmp->release();
   }

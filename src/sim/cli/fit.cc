@@ -63,7 +63,7 @@ void print_json(const SpringFit& fit) {
 void print_table(const SpringFit& fit, const std::string& csv_path, std::FILE* out) {
   const PaperFit p = to_paper(fit.model);
   std::fprintf(out, "%s fitted to %s (%d points); units: p MPa, d mm, f N\n",
-              to_string(fit.model.law), csv_path.c_str(), fit.points);
+               to_string(fit.model.law), csv_path.c_str(), fit.points);
   std::fprintf(out, "  %-4s %14.6g  mm/MPa  (Eq. 2 slope)\n", "m", p.m);
   std::fprintf(out, "  %-4s %14.6g  mm      (Eq. 2 intercept)\n", "h", p.h);
   for (int k = 0; k < coefficient_count(fit.model.law); ++k) {

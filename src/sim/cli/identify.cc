@@ -76,11 +76,33 @@ void publish_outputs(const IdentifyDefinition& def, const IdentifyResult& r, con
   staged.publish();
 }
 
+// what the run cost, where its outputs are, how the search ended, and the warnings, last
+void print_ending(const IdentifyDefinition& def, const IdentifyResult& r, const std::string& out,
+                  bool plots) {
+  std::cerr << "pamsim identify: " << r.simulated << " points simulated, " << r.cached
+            << " from the database; " << format_value(r.global_s) << " s CMA-ES, "
+            << format_value(r.polish_s) << " s polish, " << format_value(r.check_s)
+            << " s checks\n";
+  std::cout << "outputs: " << out << "/{identified.toml,identify.csv,identify_fits.csv,identify.md"
+            << (plots ? ",recording_*.png" : "") << "} and the identified plant/pneumatics files\n";
+  // the search's budget and how it ended, then what a user must not miss, last
+  std::cout << "search: CMA-ES " << def.generations << " generations of " << def.population
+            << " (cost " << format_value(r.cost_global) << "), then " << r.polish_iterations
+            << " Levenberg-Marquardt iterations of at most " << def.polish_iterations << " ("
+            << (r.polish_failed      ? "failed"
+                : r.polish_converged ? "converged"
+                                     : "not converged")
+            << ", cost " << format_value(r.cost_final) << ")\n";
+  for (const std::string& line : identify_warnings(def, r))
+    std::cout << "warning: " << line << "\n";
+}
+
 void identify(const IdentifyOptions& opt) {
   const int threads = resolve_thread_count(opt.database.threads);
-  const IdentifyDefinition def = load_identify_definition(opt.file);   // everything validated
+  const IdentifyDefinition def = load_identify_definition(opt.file);  // everything validated
   if (opt.plan && def.candidates.empty()) {
-    throw InputError(opt.file + ": --plan ranks the file's [[candidate]] experiments, and it has none");
+    throw InputError(opt.file +
+                     ": --plan ranks the file's [[candidate]] experiments, and it has none");
   }
   const CommandDatabase where = command_database(opt.file, opt.database, "identify.db");
   if (opt.database.resume && !where.exists) {
@@ -99,15 +121,16 @@ void identify(const IdentifyOptions& opt) {
             << def.recordings.size() << " recordings; CMA-ES " << def.generations
             << " generations of " << def.population << ", then up to " << def.polish_iterations
             << " Levenberg-Marquardt iterations, on " << threads
-            << (threads == 1 ? " thread" : " threads") << " into " << where.path
-            << " (" << db.size() << " points stored)\n";
+            << (threads == 1 ? " thread" : " threads") << " into " << where.path << " ("
+            << db.size() << " points stored)\n";
   StopOnSignal stop_on_signal;
   IdentifyRunOptions run;
   run.threads = threads;
   run.stop = &stop_requested();
   if (!opt.quiet) {
     run.on_progress = [](const std::string& phase, std::int64_t points) {
-      if (points % 10 == 0) std::cerr << "pamsim identify: " << phase << " " << points << " points\n";
+      if (points % 10 == 0)
+        std::cerr << "pamsim identify: " << phase << " " << points << " points\n";
     };
   }
   const IdentifyResult r = run_identify(def, db, run);
@@ -121,18 +144,7 @@ void identify(const IdentifyOptions& opt) {
   if (opt.plan) plan = plan_candidates(def, r, threads);
   publish_outputs(def, r, where.out, plots, plan);
   print_result(r, plan);
-  std::cerr << "pamsim identify: " << r.simulated << " points simulated, " << r.cached
-            << " from the database; " << format_value(r.global_s) << " s CMA-ES, "
-            << format_value(r.polish_s) << " s polish, " << format_value(r.check_s) << " s checks\n";
-  std::cout << "outputs: " << where.out << "/{identified.toml,identify.csv,identify_fits.csv,identify.md"
-            << (plots ? ",recording_*.png" : "") << "} and the identified plant/pneumatics files\n";
-  // the search's budget and how it ended, then what a user must not miss, last
-  std::cout << "search: CMA-ES " << def.generations << " generations of " << def.population
-            << " (cost " << format_value(r.cost_global) << "), then " << r.polish_iterations
-            << " Levenberg-Marquardt iterations of at most " << def.polish_iterations << " ("
-            << (r.polish_failed ? "failed" : r.polish_converged ? "converged" : "not converged")
-            << ", cost " << format_value(r.cost_final) << ")\n";
-  for (const std::string& line : identify_warnings(def, r)) std::cout << "warning: " << line << "\n";
+  print_ending(def, r, where.out, plots);
 }
 
 }  // namespace

@@ -46,7 +46,10 @@ struct KeysOptions {
 };
 
 nlohmann::json doc_json(const KeyDoc& d) {
-  return {{"key", d.key}, {"unit", d.unit}, {"default", d.fallback}, {"allowed", d.allowed},
+  return {{"key", d.key},
+          {"unit", d.unit},
+          {"default", d.fallback},
+          {"allowed", d.allowed},
           {"meaning", d.meaning}};
 }
 
@@ -60,8 +63,10 @@ void print_doc(const std::string& head, const KeyDoc& d) {
 void print_docs(const std::vector<KeyDoc>& docs, bool json) {
   nlohmann::json all = nlohmann::json::array();
   for (const KeyDoc& d : docs) {
-    if (json) all.push_back(doc_json(d));
-    else print_doc(d.key, d);
+    if (json)
+      all.push_back(doc_json(d));
+    else
+      print_doc(d.key, d);
   }
   if (json) std::cout << all.dump(2) << "\n";
 }
@@ -78,7 +83,7 @@ std::vector<KeyDoc> with_entries(
 
 // an identification, tuning or sweep file's keys: its top-level rows, then its tables'
 std::vector<KeyDoc> search_file_docs(const KeysOptions& opt) {
-  IdentifyDefinition identify;   // the rows' defaults are the structs' own
+  IdentifyDefinition identify;  // the rows' defaults are the structs' own
   TuneDefinition tune;
   SweepDefinition sweep;
   if (opt.identify) {
@@ -115,11 +120,11 @@ bool print_file_keys(const KeysOptions& opt) {
   if (!(opt.scenario.empty() && opt.overrides.empty())) {
     throw InputError(flags + " list a file's keys: they take no scenario or --set");
   }
-  print_docs(opt.pneumatics ? pneumatic_key_docs()
-             : opt.plant    ? plant_key_docs()
-             : opt.params   ? pam_key_docs()
+  print_docs(opt.pneumatics    ? pneumatic_key_docs()
+             : opt.plant       ? plant_key_docs()
+             : opt.params      ? pam_key_docs()
              : opt.calibration ? calibration_key_docs()
-                            : search_file_docs(opt),
+                               : search_file_docs(opt),
              opt.json);
   return true;
 }
@@ -143,8 +148,10 @@ void keys(const KeysOptions& opt) {
     }
     const std::string head = kv.key + " = " + (kv.value.empty() ? "(not set)" : kv.value) +
                              (kv.is_default ? "  (default)" : "");
-    if (d) print_doc(head, *d);
-    else std::cout << head << "\n";
+    if (d)
+      print_doc(head, *d);
+    else
+      std::cout << head << "\n";
   }
   if (opt.json) std::cout << all.dump(2) << "\n";
 }

@@ -63,7 +63,7 @@ std::string conversion_message(const CLI::App& app, const std::string& what) {
   const std::string name = what.substr(head.size(), eq - head.size());
   const std::string value = what.substr(eq + 3);
   const CLI::App* at = &app;
-  for (const CLI::App* sub : app.get_subcommands()) at = sub;   // the command given
+  for (const CLI::App* sub : app.get_subcommands()) at = sub;  // the command given
   const CLI::Option* opt = at->get_option_no_throw(name);
   const std::string type = opt ? opt->get_type_name() : "";
   const std::string wanted = type == "UINT"    ? "a whole number >= 0"
@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
   CLI::App app{"pamsim: simulation testbed for PAM-driven arms with a stretch reflex"};
   app.set_version_flag("--version", std::string("pamsim ") + PAMSIM_VERSION);
   app.require_subcommand(1);
-  app.option_defaults()->always_capture_default();   // --help shows every option's default
+  app.option_defaults()->always_capture_default();  // --help shows every option's default
 
   pamsim::add_fit_command(app);
   pamsim::add_estimate_command(app);
@@ -116,8 +116,7 @@ int main(int argc, char** argv) {
     // one line, like every other input error (CLI11's own exit adds a second one), exit 2
     // (CLI11's own codes, 104-109, are not pamsim's); a missing or unknown subcommand is
     // answered with the ones there are, and the nearest name
-    std::cerr << "pamsim: " << pamsim::printable_message(usage_message(app, e, argc, argv))
-              << "\n";
+    std::cerr << "pamsim: " << pamsim::printable_message(usage_message(app, e, argc, argv)) << "\n";
     return 2;
   } catch (const pamsim::CommandExit& e) {
     return e.code;

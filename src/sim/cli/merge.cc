@@ -35,7 +35,8 @@ void merge(const MergeOptions& opt) {
     std::cerr << "pamsim merge: " << r.missing << " trials are missing (in no part), first:";
     for (std::int64_t t : r.first_missing) std::cerr << " " << t;
     std::cerr << "; run them with: pamsim sweep "
-              << (r.sweep_file.empty() ? "SWEEP.toml" : r.sweep_file) << " --db " << opt.out << " --resume\n";
+              << (r.sweep_file.empty() ? "SWEEP.toml" : r.sweep_file) << " --db " << opt.out
+              << " --resume\n";
   }
   std::cout << opt.out << "\n";
 }

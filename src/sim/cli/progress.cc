@@ -20,8 +20,10 @@ std::string format_duration(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) return "--:--";
   const long s = std::lround(seconds);
   char buf[32];
-  if (s >= 3600) std::snprintf(buf, sizeof(buf), "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
-  else std::snprintf(buf, sizeof(buf), "%ld:%02ld", s / 60, s % 60);
+  if (s >= 3600)
+    std::snprintf(buf, sizeof(buf), "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+  else
+    std::snprintf(buf, sizeof(buf), "%ld:%02ld", s / 60, s % 60);
   return buf;
 }
 
@@ -30,9 +32,8 @@ ProgressStyle progress_style(bool quiet) {
   return ::isatty(STDERR_FILENO) != 0 ? ProgressStyle::kTerminal : ProgressStyle::kLog;
 }
 
-ProgressReporter::ProgressReporter(std::string label, std::int64_t total,
-                                   std::int64_t already_done, std::ostream& out,
-                                   ProgressStyle style, std::string unit)
+ProgressReporter::ProgressReporter(std::string label, std::int64_t total, std::int64_t already_done,
+                                   std::ostream& out, ProgressStyle style, std::string unit)
     : label_(std::move(label)),
       unit_(std::move(unit)),
       total_(total),
@@ -75,8 +76,9 @@ void ProgressReporter::print(std::int64_t done, bool last) {
                 format_duration(last ? elapsed : eta).c_str());
   if (style_ == ProgressStyle::kTerminal) {
     const int filled = static_cast<int>(fraction * kBarWidth);
-    out_ << "\r" << label_ << " [" << std::string(filled, '#') << std::string(kBarWidth - filled, '.')
-         << "]  " << numbers << "\x1b[K" << (last ? "\n" : "") << std::flush;
+    out_ << "\r" << label_ << " [" << std::string(filled, '#')
+         << std::string(kBarWidth - filled, '.') << "]  " << numbers << "\x1b[K"
+         << (last ? "\n" : "") << std::flush;
   } else {
     out_ << label_ << ": " << numbers << "\n" << std::flush;
   }

@@ -22,8 +22,8 @@ class ProgressReporter {
   // `unit` names what is counted in the rate ("trials/s", "evaluations/s").
   ProgressReporter(std::string label, std::int64_t total, std::int64_t already_done,
                    std::ostream& out, ProgressStyle style, std::string unit = "trials");
-  void update(std::int64_t done);   // throttled
-  void finish(std::int64_t done);   // always prints the last state
+  void update(std::int64_t done);  // throttled
+  void finish(std::int64_t done);  // always prints the last state
 
  private:
   void print(std::int64_t done, bool last);

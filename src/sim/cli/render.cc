@@ -1,7 +1,7 @@
 // render.cc: `pamsim render SCENARIO.toml [--set key=value ...] [-o FILE.mp4]
 // [--png-dir DIR] [--width W] [--height H] [--fps F] [--quality fast|default] [--preset P]
-// [--camera NAME] [--backend osmesa|egl] [--gpu N] [--plot] [--force]`: runs the scenario's trial (its own seed) and
-// renders it headlessly while it runs (TrialVideo): H.264 MP4 (default
+// [--camera NAME] [--backend osmesa|egl] [--gpu N] [--plot] [--force]`: runs the scenario's trial
+// (its own seed) and renders it headlessly while it runs (TrialVideo): H.264 MP4 (default
 // renders/<scenario>/<scenario>.mp4) and/or numbered PNGs, saying which GL renderer drew it.
 // The physics is the same as `pamsim run`'s, bit for bit.
 #include <CLI/CLI.hpp>
@@ -30,9 +30,9 @@ struct RenderCommandOptions {
   std::vector<std::string> overrides;
   VideoOptions video;
   std::string quality = "default";
-  std::string backend;   // empty: $MUJOCO_GL, $PAMSIM_GL_BACKEND, else osmesa
-  int gpu = -1;          // EGL device; -1: $EGL_DEVICE_ID, else the first GPU
-  bool force = false;    // replace an existing MP4 or PNG frames
+  std::string backend;  // empty: $MUJOCO_GL, $PAMSIM_GL_BACKEND, else osmesa
+  int gpu = -1;         // EGL device; -1: $EGL_DEVICE_ID, else the first GPU
+  bool force = false;   // replace an existing MP4 or PNG frames
   bool quiet = false;
 };
 
@@ -43,7 +43,7 @@ void render(RenderCommandOptions opt) {
   video.backend = choose_gl_backend(opt.backend);
   if (video.backend == GlBackend::kEgl) {
     video.egl_device = choose_egl_device(opt.gpu);
-  } else if (opt.gpu != -1) {   // (a device in the environment does not concern osmesa)
+  } else if (opt.gpu != -1) {  // (a device in the environment does not concern osmesa)
     throw InputError("--gpu " + std::to_string(opt.gpu) +
                      " chooses an EGL device, but the backend is osmesa: add --backend egl");
   }
@@ -76,15 +76,15 @@ void render(RenderCommandOptions opt) {
 
   const std::string where = video.mp4_path.empty() ? video.png_dir + "/" : video.mp4_path;
   std::cerr << "pamsim: GL: " << r.gl << "\n";
-  char took[64];   // to sensible digits: "8.94 s, 5.37 frames/s"
+  char took[64];  // to sensible digits: "8.94 s, 5.37 frames/s"
   std::snprintf(took, sizeof(took), "%.3g s, %.3g frames/s", wall_s, r.frames / wall_s);
   std::cerr << "pamsim: " << where << ": " << r.frames << " frames of " << video.width_px << "x"
             << video.height_px << " at " << video.fps << " fps (" << r.encoder << ") in " << took
             << "\n";
   const TrialSummary& s = r.trial.summary;
   if (s.status != "ok") {
-    std::cerr << "pamsim: " << sc.path << ": trial with seed " << s.seed << " " << s.status
-              << ": " << s.message << "\n";
+    std::cerr << "pamsim: " << sc.path << ": trial with seed " << s.seed << " " << s.status << ": "
+              << s.message << "\n";
     throw SimulationFailed();
   }
 }
@@ -112,9 +112,10 @@ void add_render_command(CLI::App& app) {
                   "libx264's speed/size trade-off: ultrafast ... veryslow (default: ultrafast "
                   "with --quality fast, else veryfast)");
   cmd->add_option("--camera", v.camera, "A camera named in the model")->capture_default_str();
-  cmd->add_option("--backend", opt->backend,
-                  "GL context: osmesa or egl (default $PAMSIM_GL_BACKEND, else $MUJOCO_GL when "
-                  "egl or osmesa, else osmesa); egl falls back to osmesa where EGL gives no context");
+  cmd->add_option(
+      "--backend", opt->backend,
+      "GL context: osmesa or egl (default $PAMSIM_GL_BACKEND, else $MUJOCO_GL when "
+      "egl or osmesa, else osmesa); egl falls back to osmesa where EGL gives no context");
   cmd->add_option("--gpu", opt->gpu,
                   "EGL device number, with --backend egl (default $EGL_DEVICE_ID, else the "
                   "first GPU, else Mesa's software renderer)");

@@ -97,7 +97,8 @@ std::vector<std::string> trial_overrides(const ResultsDb& db, const SweepSummary
   for (const PointSummary& p : sweep.points) {
     if (p.point == point) at = &p;
   }
-  if (at == nullptr) throw InputError(db.path() + ": point " + std::to_string(point) + " is missing");
+  if (at == nullptr)
+    throw InputError(db.path() + ": point " + std::to_string(point) + " is missing");
   std::vector<std::string> overrides = point_overrides(sweep, *at);
   overrides.push_back("seed=" + std::to_string(seed));
   for (const std::string& key : sweep.randomize_keys) {
@@ -117,9 +118,11 @@ void replay(const ReplayOptions& opt) {
   const auto seed = static_cast<std::uint64_t>(row.at("seed").number);
   const std::vector<std::string> overrides = trial_overrides(db, sweep, point, seed, row);
 
-  const std::string out = !opt.out.empty() ? opt.out
-      : (fs::path(opt.db).parent_path() / (fs::path(opt.db).stem().string() + "_trial_" +
-                                           std::to_string(opt.trial))).string();
+  const std::string out =
+      !opt.out.empty() ? opt.out
+                       : (fs::path(opt.db).parent_path() / (fs::path(opt.db).stem().string() +
+                                                            "_trial_" + std::to_string(opt.trial)))
+                             .string();
   if (!opt.force) refuse_earlier_outputs(out, kReplayOutputs);
   use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
@@ -127,7 +130,8 @@ void replay(const ReplayOptions& opt) {
       sweep.base_scenario, sweep.base_path, overrides, out,
       "# Trial " + std::to_string(opt.trial) + " of the sweep in " + opt.db + " (point " +
           std::to_string(point) + ", seed " + std::to_string(seed) +
-          "), resolved by pamsim " PAMSIM_VERSION "\n# (provenance.json beside it says how); "
+          "), resolved by pamsim " PAMSIM_VERSION
+          "\n# (provenance.json beside it says how); "
           "pamsim run --from <this folder> runs it again\n");
   const Scenario& sc = recorded.scenario;
   const TrialModel model = load_trial_model(sc);

@@ -39,7 +39,7 @@ struct ReportOptions {
   bool no_plot = false;
   std::string plot_format = "png";
   bool all_columns = false;
-  std::vector<std::string> table;   // table.md's metrics (empty: default_table_metrics)
+  std::vector<std::string> table;  // table.md's metrics (empty: default_table_metrics)
 };
 
 const std::vector<std::string> kSweepReportOutputs = [] {
@@ -54,7 +54,7 @@ void write_report_provenance(const ReportOptions& opt, const StagedOutputs& stag
                              const std::string& started_utc) {
   Provenance p;
   p.command = "report";
-  p.from = opt.db;   // what it was made from
+  p.from = opt.db;  // what it was made from
   p.started_utc = started_utc;
   write_provenance(staged.path(kProvenanceFile), p, started);
 }
@@ -121,11 +121,10 @@ const PointSummary* report_best_point(const ReportOptions& opt, const SweepSumma
     const int m = sweep.metric_index(name);
     if (m >= 0) std::cout << "  " << name << " " << stats_text(best->metrics[m]) << "\n";
   }
-  const std::string header = "# Best setting of the sweep " + sweep.sweep_file + " (database " +
-                             opt.db + "):\n# " + best_criterion(sweep, opt.metric) +
-                             ".\n# Point " + std::to_string(best->point) + ": " + setting +
-                             ".\n# Written by pamsim report from the base scenario " +
-                             sweep.base_path + ".\n\n";
+  const std::string header =
+      "# Best setting of the sweep " + sweep.sweep_file + " (database " + opt.db + "):\n# " +
+      best_criterion(sweep, opt.metric) + ".\n# Point " + std::to_string(best->point) + ": " +
+      setting + ".\n# Written by pamsim report from the base scenario " + sweep.base_path + ".\n\n";
   write_file_atomically(staged.path("best.toml"), point_scenario_toml(sweep, *best, out, header));
   std::cout << "  scenario: " << out << "/best.toml (pamsim run " << out << "/best.toml)\n";
   return best;
@@ -133,8 +132,8 @@ const PointSummary* report_best_point(const ReportOptions& opt, const SweepSumma
 
 // A heat map of each headline metric the sweep has (mistrip rate, peak drop, recovery time)
 // and of --metric, over the first two axes; false (and says why) when there are none.
-bool write_heat_maps(const ReportOptions& opt, const SweepSummary& sweep,
-                     const PointSummary* best, const StagedOutputs& staged, bool plots) {
+bool write_heat_maps(const ReportOptions& opt, const SweepSummary& sweep, const PointSummary* best,
+                     const StagedOutputs& staged, bool plots) {
   if (!plots) {
     std::cout << "heat maps: none (no plots)\n";
     return false;
@@ -193,8 +192,8 @@ void report(const ReportOptions& opt) {
 
     const PointSummary* best = report_best_point(opt, sweep, staged, out);
     if (!write_heat_maps(opt, sweep, best, staged, plots)) return;
-    std::cout << "outputs: " << out << "/{points.csv,table.md,heatmap_*.png" << (best ? ",best.toml" : "")
-              << "}\n";
+    std::cout << "outputs: " << out << "/{points.csv,table.md,heatmap_*.png"
+              << (best ? ",best.toml" : "") << "}\n";
   });
   staged.write([&] { write_report_provenance(opt, staged, started, started_utc); });
   staged.publish();

@@ -38,7 +38,7 @@ namespace fs = std::filesystem;
 
 struct RunOptions {
   std::string scenario;
-  std::string from;   // an earlier run's output folder
+  std::string from;  // an earlier run's output folder
   std::vector<std::string> overrides;
   std::string out;
   int trials = 1;
@@ -48,14 +48,15 @@ struct RunOptions {
   bool force = false;
   bool no_plot = false;
   bool quiet = false;
-  bool readings = false;   // readings.csv: the controller's inputs, lossless
+  bool readings = false;  // readings.csv: the controller's inputs, lossless
   std::string plot_format = "png";
 };
 
 // What a run writes in its folder (StagedOutputs replaces exactly these).
 const std::vector<std::string> kRunOutputs = [] {
-  std::vector<std::string> names = {"trajectory.csv", "summary.json", "trial_[0-9][0-9][0-9][0-9]",
-                                    "readings.csv", kResolvedScenarioFile, kProvenanceFile};
+  std::vector<std::string> names = {
+      "trajectory.csv", "summary.json",        "trial_[0-9][0-9][0-9][0-9]",
+      "readings.csv",   kResolvedScenarioFile, kProvenanceFile};
   for (const std::string& plot : plot_file_names({"angle.png", "position.png", "angle_band.png"})) {
     names.push_back(plot);
   }
@@ -65,7 +66,8 @@ const std::vector<std::string> kRunOutputs = [] {
 // "renders/<scenario name>", and for each override "__<key's last part>-<value>" (characters
 // other than letters, digits, '.', '_' and '-' as '-'): `--set reflex.v_thr_mm_s=60` runs into
 // renders/drop_mass__v_thr_mm_s-60, beside the unmodified run.
-std::string default_out_dir(const std::string& scenario, const std::vector<std::string>& overrides) {
+std::string default_out_dir(const std::string& scenario,
+                            const std::vector<std::string>& overrides) {
   std::string name = scenario == "-" ? "stdin" : fs::path(scenario).stem().string();
   for (const std::string& o : overrides) {
     const auto eq = o.find('=');
@@ -77,7 +79,7 @@ std::string default_out_dir(const std::string& scenario, const std::vector<std::
     }
     name += part;
   }
-  if (name.size() > 120) name = name.substr(0, 120);   // a file name's length is bounded
+  if (name.size() > 120) name = name.substr(0, 120);  // a file name's length is bounded
   return "renders/" + name;
 }
 
@@ -118,13 +120,13 @@ void warn_if_a_line_breaks(const Scenario& sc, const std::vector<TrialResult>& r
     double peak = 0.0;
     for (const TrialResult& r : results) {
       const double stepped = r.summary.metric("peak_tension_" + m.label + "_N");
-      peak = std::max(peak, std::isfinite(stepped) ? stepped
-                                                   : logged_peak_tension(m, {&r.trajectory}));
+      peak = std::max(peak,
+                      std::isfinite(stepped) ? stepped : logged_peak_tension(m, {&r.trajectory}));
     }
     const std::string problem = line_break_problem(m, peak);
     if (problem.empty()) continue;
-    std::cerr << "pamsim: warning: " << sc.path << ": " << m.key << ".line_strength_MPa: "
-              << problem << " (the trial ran on as if it held)\n";
+    std::cerr << "pamsim: warning: " << sc.path << ": " << m.key
+              << ".line_strength_MPa: " << problem << " (the trial ran on as if it held)\n";
   }
 }
 
@@ -148,9 +150,9 @@ std::string take_earlier_run(RunOptions& opt, Provenance* provenance) {
   }
   const BuildInfo now = build_info();
   if (earlier.pamsim_version != now.pamsim_version || earlier.git_commit != now.git_commit) {
-    std::cerr << "pamsim: warning: " << opt.from << " was made by pamsim "
-              << earlier.pamsim_version << " (" << earlier.git_commit << "), this is "
-              << now.pamsim_version << " (" << now.git_commit
+    std::cerr << "pamsim: warning: " << opt.from << " was made by pamsim " << earlier.pamsim_version
+              << " (" << earlier.git_commit << "), this is " << now.pamsim_version << " ("
+              << now.git_commit
               << "); its outputs may differ where the physics or defaults changed\n";
   }
   if (!opt.trials_given) opt.trials = static_cast<int>(earlier.seeds.size());
@@ -162,12 +164,13 @@ VideoOptions video_options_of(const RunOptions& opt) {
   VideoOptions video;
   if (opt.video.empty()) return video;
   if (opt.trials != 1) {
-    throw InputError("--video renders a single trial; drop --trials " +
-                     std::to_string(opt.trials) + " (or use pamsim render)");
+    throw InputError("--video renders a single trial; drop --trials " + std::to_string(opt.trials) +
+                     " (or use pamsim render)");
   }
   if (opt.video == "-") {
-    throw InputError("--video -: run prints its summary on standard output; give a file (or "
-                     "pamsim render -o - for the video alone)");
+    throw InputError(
+        "--video -: run prints its summary on standard output; give a file (or "
+        "pamsim render -o - for the video alone)");
   }
   video.mp4_path = opt.video;
   refuse_existing_file(video.mp4_path, opt.force);
@@ -193,15 +196,16 @@ std::vector<TrialResult> run_trials_of(const RunOptions& opt, const TrialModel& 
   // a bar for several trials (one is over in a blink)
   ProgressReporter progress("pamsim run", opt.trials, 0, std::cerr,
                             opt.trials > 1 ? progress_style(opt.quiet) : ProgressStyle::kQuiet);
-  std::vector<TrialResult> results = run_trials(model, sc, opt.trials, threads, true,
-                                                [&](int done) { progress.update(done); });
+  std::vector<TrialResult> results =
+      run_trials(model, sc, opt.trials, threads, true, [&](int done) { progress.update(done); });
   progress.finish(opt.trials);
   return results;
 }
 
 // The trials' outputs into the staging folder; returns the summary printed on stdout.
-nlohmann::json write_run_outputs(const StagedOutputs& staged, const std::vector<TrialResult>& results,
-                                 const Scenario& sc, bool plots) {
+nlohmann::json write_run_outputs(const StagedOutputs& staged,
+                                 const std::vector<TrialResult>& results, const Scenario& sc,
+                                 bool plots) {
   if (results.size() == 1) {
     const TrialResult& r = results.front();
     write_trial_outputs(staged.staging(), r, sc);
@@ -221,6 +225,21 @@ nlohmann::json write_run_outputs(const StagedOutputs& staged, const std::vector<
   write_file_atomically(staged.path("summary.json"), printed.dump(2) + "\n");
   if (plots) write_angle_band_plot(staged.path("angle_band.png"), trajectories, sc);
   return printed;
+}
+
+// --out, or renders/<scenario name>..., or DIR_rerun with --from DIR
+std::string out_dir_of(const RunOptions& opt) {
+  if (!opt.out.empty()) return opt.out;
+  if (!opt.from.empty()) return fs::path(opt.from).lexically_normal().string() + "_rerun";
+  return default_out_dir(opt.scenario, opt.overrides);
+}
+
+// the comment heading a run's scenario.toml
+std::string resolved_header(const Provenance& provenance) {
+  return "# The scenario of a pamsim run, resolved by pamsim " PAMSIM_VERSION " from " +
+         provenance.scenario_file +
+         "\n# (provenance.json beside it says how); pamsim run --from "
+         "<this folder> runs it again\n";
 }
 
 // --trials N (>= 1), and --readings of one trial without a video
@@ -244,7 +263,7 @@ void run(RunOptions opt) {
   provenance.command = "run";
   provenance.started_utc = utc_timestamp();
   provenance.overrides = opt.overrides;
-  std::string scenario_path = opt.scenario;   // the file read
+  std::string scenario_path = opt.scenario;  // the file read
   if (!opt.from.empty()) {
     scenario_path = take_earlier_run(opt, &provenance);
   } else {
@@ -255,16 +274,12 @@ void run(RunOptions opt) {
   const int threads = resolve_thread_count(opt.threads);
   provenance.threads = opt.video.empty() ? std::min(threads, opt.trials) : 1;
   const VideoOptions video = video_options_of(opt);
-  const std::string out = !opt.out.empty() ? opt.out
-                          : !opt.from.empty() ? fs::path(opt.from).lexically_normal().string() + "_rerun"
-                                              : default_out_dir(opt.scenario, opt.overrides);
+  const std::string out = out_dir_of(opt);
   // read once: the scenario, its resolved text (paths relative to the output folder) and
   // its input files, whatever happens to the file meanwhile
-  RecordedScenario recorded = load_recorded_scenario(
-      read_text_file(scenario_path), scenario_path, opt.overrides, out,
-      "# The scenario of a pamsim run, resolved by pamsim " PAMSIM_VERSION " from " +
-          provenance.scenario_file + "\n# (provenance.json beside it says how); pamsim run --from "
-          "<this folder> runs it again\n");
+  RecordedScenario recorded =
+      load_recorded_scenario(read_text_file(scenario_path), scenario_path, opt.overrides, out,
+                             resolved_header(provenance));
   Scenario& sc = recorded.scenario;
   provenance.inputs = fingerprint_inputs(recorded.input_paths);
   // a rerun's summary names the scenario file the first run was given, as that run's did
@@ -311,10 +326,11 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--out", opt->out,
                   "Output folder (default renders/<scenario name>[__<key>-<value> per --set], "
                   "or DIR_rerun with --from DIR)");
-  CLI::Option* trials = cmd->add_option("--trials", opt->trials,
-                                        "Number of trials, seeds seed..seed+N-1")
-                            ->capture_default_str();
-  cmd->add_option("--threads", opt->threads, "Worker threads (0: all cores)")->capture_default_str();
+  CLI::Option* trials =
+      cmd->add_option("--trials", opt->trials, "Number of trials, seeds seed..seed+N-1")
+          ->capture_default_str();
+  cmd->add_option("--threads", opt->threads, "Worker threads (0: all cores)")
+      ->capture_default_str();
   cmd->add_option("--video", opt->video,
                   "Also render the trial to this MP4 (1280x720, 30 fps; see pamsim render)");
   cmd->add_flag("--force", opt->force, "Replace the outputs of an earlier run in the folder");

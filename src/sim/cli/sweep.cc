@@ -51,7 +51,7 @@ struct SweepOptions {
 // Where the trials run when not on this machine's threads: rank 0 of an MPI job hands them
 // to the other ranks, which start once it has opened the database and said so.
 struct RemoteTrials {
-  std::string where;                       // " on 2 MPI worker ranks"
+  std::string where;  // " on 2 MPI worker ranks"
   std::function<void()> database_opened;
   std::function<SweepRunResult(const SweepDefinition&, ResultsDb&, const SweepRunOptions&)> run;
 };
@@ -75,13 +75,12 @@ void report_sweep_run(const SweepOptions& opt, const SweepRunResult& r, const Sw
                                (shard.whole() ? "" : " --shard " + shard.text()) + " --resume";
     if (!r.incomplete_reason.empty()) throw std::runtime_error(r.incomplete_reason + "; " + finish);
     std::cerr << "pamsim sweep: interrupted with " << finish << "\n";
-    throw CommandExit(128 + stop_signal());   // the shell's code for that signal
+    throw CommandExit(128 + stop_signal());  // the shell's code for that signal
   }
   std::cout << db_path << "\n";
   if (!shard.whole()) {
-    std::cerr << "pamsim sweep: next, when every shard is done: pamsim merge "
-              << where.out << "/sweep.db " << where.out << "/sweep.shard-*-of-" << shard.count
-              << ".db\n";
+    std::cerr << "pamsim sweep: next, when every shard is done: pamsim merge " << where.out
+              << "/sweep.db " << where.out << "/sweep.shard-*-of-" << shard.count << ".db\n";
     return;
   }
   std::cerr << "pamsim sweep: next: pamsim export " << db_path << " -o FILE; pamsim report "
@@ -92,8 +91,9 @@ void report_sweep_run(const SweepOptions& opt, const SweepRunResult& r, const Sw
 void run_sweep_command(const SweepOptions& opt, const RemoteTrials* remote) {
   const std::string started_utc = utc_timestamp();
   const int threads = resolve_thread_count(opt.database.threads);
-  const SweepShard shard = opt.shard.empty() ? SweepShard{} : parse_sweep_shard(opt.shard, "--shard");
-  const SweepDefinition def = load_sweep(opt.sweep_file);   // everything validated first
+  const SweepShard shard =
+      opt.shard.empty() ? SweepShard{} : parse_sweep_shard(opt.shard, "--shard");
+  const SweepDefinition def = load_sweep(opt.sweep_file);  // everything validated first
   const std::string db_name = shard.whole() ? "sweep.db"
                                             : "sweep.shard-" + std::to_string(shard.index) +
                                                   "-of-" + std::to_string(shard.count) + ".db";
@@ -102,15 +102,17 @@ void run_sweep_command(const SweepOptions& opt, const RemoteTrials* remote) {
   const std::int64_t trials = shard.trials_of(def.trials());
   ResultsDb db = open_in_database_folder(where, db_name, [&] {
     return opt.database.resume && where.exists ? ResultsDb::open_to_resume(db_path, def, shard)
-                                      : ResultsDb::create(db_path, def, shard);
+                                               : ResultsDb::create(db_path, def, shard);
   });
   if (remote) remote->database_opened();
   warn_if_other_version("sweep", db_path, db.meta("pamsim_version"), "trials");
-  std::cerr << "pamsim sweep: " << def.points() << " points x " << def.seeds << " seeds = "
-            << def.trials() << " trials (" << sweep_design_name(def.design) << ")";
+  std::cerr << "pamsim sweep: " << def.points() << " points x " << def.seeds
+            << " seeds = " << def.trials() << " trials (" << sweep_design_name(def.design) << ")";
   if (!shard.whole()) std::cerr << ", shard " << shard.text() << ": " << trials << " trials";
-  if (remote) std::cerr << remote->where;
-  else std::cerr << " on " << threads << (threads == 1 ? " thread" : " threads");
+  if (remote)
+    std::cerr << remote->where;
+  else
+    std::cerr << " on " << threads << (threads == 1 ? " thread" : " threads");
   std::cerr << " into " << db_path << "\n";
 
   StopOnSignal stop_on_signal;
@@ -143,7 +145,7 @@ void run_sweep_command(const SweepOptions& opt, const RemoteTrials* remote) {
 // trials it hands out, on --threads threads (default: this node's cores shared among its
 // ranks). Says nothing: rank 0 reports for the job.
 void run_mpi_worker(const SweepOptions& opt, const MpiSession& mpi) {
-  if (!mpi.broadcast_go(false)) return;   // rank 0 refused the sweep and said why
+  if (!mpi.broadcast_go(false)) return;  // rank 0 refused the sweep and said why
   SweepDefinition def;
   std::string load_error;
   try {
@@ -152,8 +154,8 @@ void run_mpi_worker(const SweepOptions& opt, const MpiSession& mpi) {
     load_error = e.what();
   }
   const int threads = opt.database.threads > 0
-      ? resolve_thread_count(opt.database.threads)
-      : std::max(1, resolve_thread_count(0) / mpi.ranks_on_this_node());
+                          ? resolve_thread_count(opt.database.threads)
+                          : std::max(1, resolve_thread_count(0) / mpi.ranks_on_this_node());
   StopOnSignal stop_on_signal;
   work_mpi_sweep(mpi, def, threads, &stop_requested(), load_error);
 }
@@ -174,14 +176,14 @@ void sweep(const SweepOptions& opt) {
       try {
         return run_sweep_command(opt, &ranks);
       } catch (const CommandExit&) {
-        throw;   // interrupted: the workers have sent what they ran and ended
+        throw;  // interrupted: the workers have sent what they ran and ended
       } catch (const std::exception& e) {
         // refused before the database was open: the workers are told and end quietly
         if (!mpi.decided()) {
           mpi.broadcast_go(false);
           throw;
         }
-        if (mpi.workers_done()) throw;   // nobody waits for rank 0 any more
+        if (mpi.workers_done()) throw;  // nobody waits for rank 0 any more
         // later (the database cannot be written): the workers would wait for ever
         std::cerr << "pamsim: error: " << printable_message(e.what()) << "\n";
         mpi.abort(1);
@@ -193,9 +195,10 @@ void sweep(const SweepOptions& opt) {
   for (const char* var : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
     const char* size = std::getenv(var);
     if (size && std::atoi(size) > 1) {
-      throw InputError("pamsim sweep: this pamsim was built without MPI, so under mpirun every "
-                       "rank would run the whole sweep; build with -DPAMSIM_MPI=ON, or use "
-                       "--shard I/N");
+      throw InputError(
+          "pamsim sweep: this pamsim was built without MPI, so under mpirun every "
+          "rank would run the whole sweep; build with -DPAMSIM_MPI=ON, or use "
+          "--shard I/N");
     }
   }
 #endif

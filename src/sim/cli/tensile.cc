@@ -30,7 +30,7 @@ struct TensileCommand {
   std::string params_path;
   std::string plant_path;
   std::string output_path;
-  std::vector<std::string> plant_changes;   // --set geometry.wall_thickness_mm=0.5
+  std::vector<std::string> plant_changes;  // --set geometry.wall_thickness_mm=0.5
   bool force = false;
   TensileTestOptions test;
 };
@@ -53,8 +53,8 @@ void validate(const TensileTestOptions& t) {
           "a standard deviation >= 0", t.noise_force_n);
   require(std::isfinite(t.noise_length_mm) && t.noise_length_mm >= 0.0, "--noise-length-mm",
           "a standard deviation >= 0", t.noise_length_mm);
-  require(std::isfinite(t.hysteresis) && t.hysteresis >= 0.0 && t.hysteresis < 0.5,
-          "--hysteresis", "in [0, 0.5)", t.hysteresis);
+  require(std::isfinite(t.hysteresis) && t.hysteresis >= 0.0 && t.hysteresis < 0.5, "--hysteresis",
+          "in [0, 0.5)", t.hysteresis);
   require(std::isfinite(t.max_deformation_mm) && t.max_deformation_mm >= t.step_mm,
           "--max-deformation-mm", ">= the 2.5 mm step", t.max_deformation_mm);
   if (t.pressures_mpa.empty()) throw InputError("--pressures-MPa: the list is empty");
@@ -72,7 +72,7 @@ void run_tensile(const TensileCommand& c) {
   if (c.plant_path.empty() && !c.plant_changes.empty()) {
     throw InputError("tensile: --set changes a plant file's fields: give --plant");
   }
-  ConfigReader changes("", "tensile");   // the --set fields, as the plant file's own tables
+  ConfigReader changes("", "tensile");  // the --set fields, as the plant file's own tables
   changes.apply_overrides(c.plant_changes);
   const std::vector<TensileRow> rows =
       c.plant_path.empty()
@@ -98,8 +98,7 @@ void add_tensile_command(CLI::App& app) {
                        "Change a plant file's field: --set geometry.wall_thickness_mm=0.5");
   cmd->add_option("-o,--output", c->output_path, "output CSV file")->required();
   cmd->add_flag("--force", c->force, "replace an existing output file");
-  cmd->add_option("--seed", t.seed, "noise seed (same seed, same data)")
-      ->check(non_negative_seed);
+  cmd->add_option("--seed", t.seed, "noise seed (same seed, same data)")->check(non_negative_seed);
   cmd->add_option("--noise-pressure-MPa", t.noise_pressure_mpa, "pressure sensor noise SD");
   cmd->add_option("--noise-force-N", t.noise_force_n, "force sensor noise SD");
   cmd->add_option("--noise-length-mm", t.noise_length_mm, "length encoder noise SD");

@@ -69,8 +69,7 @@ TuneRunResult run_search_command(const TuneOptions& opt, const TuneDefinition& d
   std::cerr << "pamsim tune: " << (def.algorithm == TuneAlgorithm::kCmaes ? "CMA-ES" : "NSGA-II")
             << ", " << def.generations << " generations of " << def.population << " (" << total
             << " evaluations) x " << def.seeds * def.noise_scales.size() << " trials each, on "
-            << threads << (threads == 1 ? " thread" : " threads") << " into " << where.path
-            << "\n";
+            << threads << (threads == 1 ? " thread" : " threads") << " into " << where.path << "\n";
   ProgressReporter progress("pamsim tune", total, 0, std::cerr, progress_style(opt.quiet),
                             "evaluations");
   warn_if_other_version("tune", where.path, db.meta("pamsim_version"), "evaluations");
@@ -106,16 +105,17 @@ void check_settings(const TuneDefinition& def, const std::vector<TuneEvaluation>
   staged.write([&] {
     write_file_atomically(staged.path("tuning_seeds.csv"), held_out_csv(def, on_tuning));
   });
-  print_checks(def, on_tuning, "on the tuning seeds (" + std::to_string(def.seeds) +
-                                   " seeds x " + std::to_string(def.noise_scales.size()) +
-                                   " noise levels)");
+  print_checks(def, on_tuning,
+               "on the tuning seeds (" + std::to_string(def.seeds) + " seeds x " +
+                   std::to_string(def.noise_scales.size()) + " noise levels)");
   if (def.held_out_seeds > 0) {
     const std::vector<HeldOutCheck> checks = check_held_out(def, settings, threads);
     staged.write(
         [&] { write_file_atomically(staged.path("held_out.csv"), held_out_csv(def, checks)); });
-    print_checks(def, checks, "held-out check (" + std::to_string(def.held_out_seeds) +
-                                  " seeds x " + std::to_string(def.noise_scales.size()) +
-                                  " noise levels, not used in tuning)");
+    print_checks(def, checks,
+                 "held-out check (" + std::to_string(def.held_out_seeds) + " seeds x " +
+                     std::to_string(def.noise_scales.size()) +
+                     " noise levels, not used in tuning)");
   }
 }
 
@@ -127,13 +127,15 @@ void tune(const TuneOptions& opt) {
     throw InputError(where.path + ": --resume, but there is no database");
   }
   // a new tuning does not replace another's outputs silently (a resumed one replaces its own)
-  if (!opt.database.resume && !where.exists && !opt.force) refuse_earlier_outputs(where.out, kTuneOutputs);
+  if (!opt.database.resume && !where.exists && !opt.force)
+    refuse_earlier_outputs(where.out, kTuneOutputs);
   use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
   TuneDb db = open_in_database_folder(where, "tune.db", [&] {
-    return opt.database.resume ? TuneDb::open_to_resume(where.path, def) : TuneDb::create(where.path, def);
+    return opt.database.resume ? TuneDb::open_to_resume(where.path, def)
+                               : TuneDb::create(where.path, def);
   });
-  StopOnSignal stop_on_signal;   // until the end: a signal stops the search, not the checks
+  StopOnSignal stop_on_signal;  // until the end: a signal stops the search, not the checks
   const TuneRunResult r = run_search_command(opt, def, db, where, threads);
   // the outputs are published together once all are written (tune.db stays where it is)
   StagedOutputs staged(where.out, kTuneOutputs);
@@ -141,8 +143,8 @@ void tune(const TuneOptions& opt) {
   check_settings(def, r.history, staged, threads);
   staged.publish();
   std::cout << "outputs: " << where.out << "/{best.toml,evaluations.csv,convergence.png"
-            << (def.objectives.size() > 1 ? ",pareto.csv,pareto.png" : "")
-            << ",tuning_seeds.csv" << (def.held_out_seeds > 0 ? ",held_out.csv" : "") << "}\n";
+            << (def.objectives.size() > 1 ? ",pareto.csv,pareto.png" : "") << ",tuning_seeds.csv"
+            << (def.held_out_seeds > 0 ? ",held_out.csv" : "") << "}\n";
 }
 
 }  // namespace

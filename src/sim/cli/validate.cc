@@ -50,7 +50,7 @@ struct ValidateOptions {
   int threads = 0;
   bool force = false;
   bool budget = false;
-  std::optional<int> bands;    // --bands N
+  std::optional<int> bands;  // --bands N
   bool sensitivity = false;
   bool no_plot = false;
   bool quiet = false;
@@ -114,7 +114,7 @@ class MadeFolder {
   MadeFolder(const MadeFolder&) = delete;
   MadeFolder& operator=(const MadeFolder&) = delete;
   ~MadeFolder() {
-    std::error_code ec;   // (a folder that holds anything is not removed)
+    std::error_code ec;  // (a folder that holds anything is not removed)
     if (made_ && std::uncaught_exceptions() > 0) std::filesystem::remove(dir_, ec);
   }
 
@@ -195,7 +195,7 @@ void run_bands_command(const ValidateOptions& o, const std::string& name,
   const auto started = std::chrono::steady_clock::now();
   const std::string started_utc = utc_timestamp();
   const bool banded = o.bands.has_value();
-  if (banded) check_band_rigs(*o.bands);   // before any folder is made
+  if (banded) check_band_rigs(*o.bands);  // before any folder is made
   const std::string what = banded ? "bands" : "sensitivity";
   ValidationOptions v = common_options(o, "renders/validate_" + name + "_" + what);
   const std::vector<std::string>& outputs = banded ? kBandsOutputs : kSensitivityOutputs;
@@ -219,8 +219,10 @@ void run_bands_command(const ValidateOptions& o, const std::string& name,
   };
   std::optional<Bands> b;
   std::optional<Sensitivity> s;
-  if (banded) b = bands(v);
-  else s = sensitivity(v);
+  if (banded)
+    b = bands(v);
+  else
+    s = sensitivity(v);
   if (progress) progress->finish(total);
   StagedOutputs staged(v.out_dir, outputs);
   staged.write([&] {
@@ -244,15 +246,15 @@ void run_length_estimation(const ValidateOptions& o) {
         [&](const ValidationOptions& v) { return run_length_sensitivity(spec, v); });
   }
   if (o.budget) {
-    return run_budget_command(o, "length_estimation", spec.budget,
-                              static_cast<int>(spec.pams.size()),
-                              [&](const ValidationOptions& v) { return run_length_budget(spec, v); });
+    return run_budget_command(
+        o, "length_estimation", spec.budget, static_cast<int>(spec.pams.size()),
+        [&](const ValidationOptions& v) { return run_length_budget(spec, v); });
   }
   ValidationOptions v = common_options(o, "renders/validate_length_estimation");
   if (!o.force) refuse_earlier_outputs(v.out_dir, kLengthOutputs);
   use_plot_formats(o.plot_format);
   const bool plots = plots_wanted(o.no_plot);
-  const auto folder = require_writable(v.out_dir);   // unwritable: fails before any work
+  const auto folder = require_writable(v.out_dir);  // unwritable: fails before any work
   const int total = static_cast<int>(spec.pams.size() * spec.laws.size() * spec.weights_kg.size());
   std::shared_ptr<ProgressReporter> progress;
   attach_progress(&v, "pamsim validate length-estimation", total, o.quiet, &progress);
@@ -268,8 +270,8 @@ void run_length_estimation(const ValidateOptions& o) {
   StagedOutputs staged(v.out_dir, kLengthOutputs);
   staged.write([&] {
     write_length_validation(result, spec, staged.staging(), plots);
-    write_validation_provenance(o, v, "validate length-estimation",
-                                staged.path(kProvenanceFile), started, started_utc);
+    write_validation_provenance(o, v, "validate length-estimation", staged.path(kProvenanceFile),
+                                started, started_utc);
   });
   staged.publish();
   std::cout << table3_markdown(result, spec);
@@ -288,10 +290,9 @@ void run_reaching(const ValidateOptions& o) {
         [&](const ValidationOptions& v) { return run_reaching_sensitivity(spec, v); });
   }
   if (o.budget) {
-    return run_budget_command(o, "reaching", spec.budget, spec.trials,
-                              [&](const ValidationOptions& v) {
-      return run_reaching_budget(spec, v);
-    });
+    return run_budget_command(
+        o, "reaching", spec.budget, spec.trials,
+        [&](const ValidationOptions& v) { return run_reaching_budget(spec, v); });
   }
   ValidationOptions v = common_options(o, "renders/validate_reaching");
   if (!o.force) refuse_earlier_outputs(v.out_dir, kReachingOutputs);
@@ -332,10 +333,10 @@ void add_common(CLI::App* cmd, ValidateOptions* o, const std::string& default_fi
       "Run the protocol on N rigs drawn from the file's [[bracket]] tables, every hardware "
       "source on: each cell as median [5 %, 95 %] with the paper's value beside (bands.csv, "
       "bands.md, draws.csv, bands.png)");
-  CLI::Option* sensitivity = cmd->add_flag(
-      "--sensitivity", o->sensitivity,
-      "Each [[bracket]] alone at its two ends: which unknown moves which cell "
-      "(sensitivity.csv, sensitivity.md)");
+  CLI::Option* sensitivity =
+      cmd->add_flag("--sensitivity", o->sensitivity,
+                    "Each [[bracket]] alone at its two ends: which unknown moves which cell "
+                    "(sensitivity.csv, sensitivity.md)");
   bands->excludes(sensitivity);
   cmd->get_option("--budget")->excludes(bands)->excludes(sensitivity);
   cmd->add_flag("--no-plot", o->no_plot, "Write no figures (gnuplot not needed)");

@@ -25,14 +25,16 @@ void check_calibration_request(const TrialModel& tm, const CalibrationRequest& r
     throw InputError(req.where + ": --antagonist-deformation-mm must be > 0, got " +
                      format_value(units::m_to_mm(req.antagonist_deformation_m)));
   }
-  if (!tm.joint.hinge) throw InputError(req.where + ": joint '" + tm.joint.name + "' is not a hinge");
+  if (!tm.joint.hinge)
+    throw InputError(req.where + ": joint '" + tm.joint.name + "' is not a hinge");
 }
 
 // Throws InputError where a solved line is not longer than 0 (a tendon shorter than its PAM).
 void check_line_lengths(const TrialModel& tm, const ArmCalibration& c) {
   for (const CalibratedLine& line : c.lines) {
     if (!(line.line_length_m > 0)) {
-      throw InputError(tm.model_path + ": the tendon is shorter than the PAM it holds; "
+      throw InputError(tm.model_path +
+                       ": the tendon is shorter than the PAM it holds; "
                        "move the PAM anchors further from the shaft");
     }
   }

@@ -23,7 +23,7 @@ namespace pamsim {
 struct CalibratedLine {
   std::string actuator;
   double line_length_m = 0.0;
-  double pressure_pa = 0.0;   // the pressure it was solved for
+  double pressure_pa = 0.0;  // the pressure it was solved for
 };
 
 // The calibration file (models/arm_2pam_calibration.toml): the joint's start angle and the
@@ -31,19 +31,19 @@ struct CalibratedLine {
 struct ArmCalibration {
   double start_angle_rad = 0.0;
   std::vector<CalibratedLine> lines;
-  double antagonist_deformation_m = 0.0;   // the chosen pre-deformation
-  double gravity_torque_nm = 0.0;          // what the PAMs hold at the start
-  std::string written_by;                  // the file's record of what wrote it
+  double antagonist_deformation_m = 0.0;  // the chosen pre-deformation
+  double gravity_torque_nm = 0.0;         // what the PAMs hold at the start
+  std::string written_by;                 // the file's record of what wrote it
   // The line of an actuator, or nullptr.
   const CalibratedLine* line(const std::string& actuator) const;
 };
 
 struct CalibrationRequest {
-  double start_angle_rad = -0.6283185307179586;   // -36 deg
+  double start_angle_rad = -0.6283185307179586;  // -36 deg
   double pressure_agonist_pa = 0.4e6;
   double pressure_antagonist_pa = 0.4e6;
   double antagonist_deformation_m = 1.0e-3;
-  std::string where = "calibrate";   // what its errors name first: the command, or a key
+  std::string where = "calibrate";  // what its errors name first: the command, or a key
 };
 
 // Solves the line lengths of `pair` (muscle indices of `model`, whose current line lengths

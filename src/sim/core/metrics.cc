@@ -53,7 +53,8 @@ class DropMetrics final : public MetricSet {
   explicit DropMetrics(const Scenario& sc)
       : release_(event_index(sc, "release")), impact_(event_index(sc, "impact")) {
     if (release_ < 0 || impact_ < 0) {
-      throw InputError(sc.path + ": metrics \"drop\" needs events named \"release\" and "
+      throw InputError(sc.path +
+                       ": metrics \"drop\" needs events named \"release\" and "
                        "\"impact\" (the [drop] table makes them)");
     }
   }
@@ -168,8 +169,8 @@ class TensionMetrics final : public MetricSet {
     for (std::size_t j = 0; j < r.labels.size(); ++j) {
       const double peak = j < r.peak_tension_n.size() ? r.peak_tension_n[j] : kNaN;
       out->push_back({"peak_tension_" + r.labels[j] + "_N", peak});
-      for (const auto& [loads, name] : {std::pair{&limit_n_, "line_load_"},
-                                        std::pair{&break_n_, "line_break_load_"}}) {
+      for (const auto& [loads, name] :
+           {std::pair{&limit_n_, "line_load_"}, std::pair{&break_n_, "line_break_load_"}}) {
         const auto load = loads->find(r.labels[j]);
         if (load == loads->end() || std::isnan(load->second)) continue;
         out->push_back({name + r.labels[j] + "_pct", 100.0 * peak / load->second});
@@ -182,8 +183,8 @@ class TensionMetrics final : public MetricSet {
   }
 
  private:
-  std::map<std::string, double> limit_n_;   // by label
-  std::map<std::string, double> break_n_;   // by label
+  std::map<std::string, double> limit_n_;  // by label
+  std::map<std::string, double> break_n_;  // by label
 };
 
 // length_estimate: the estimate against the encoder, all muscles pooled [mm]
@@ -281,13 +282,12 @@ bool is_timing_metric(const std::string& name) {
 }
 
 const std::vector<std::string>& metric_set_names() {
-  static const std::vector<std::string> names = {"drop", "reflex", "length_estimate", "tracking",
-                                                 "tension", "sensors", "events"};
+  static const std::vector<std::string> names = {
+      "drop", "reflex", "length_estimate", "tracking", "tension", "sensors", "events"};
   return names;
 }
 
-std::vector<std::unique_ptr<MetricSet>> make_metric_sets(const Scenario& sc,
-                                                         const mjModel* model) {
+std::vector<std::unique_ptr<MetricSet>> make_metric_sets(const Scenario& sc, const mjModel* model) {
   std::vector<std::unique_ptr<MetricSet>> sets;
   for (const std::string& name : sc.metrics) {
     if (name == "drop") {

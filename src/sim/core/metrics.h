@@ -50,12 +50,12 @@ namespace pamsim {
 struct Metric {
   std::string name;
   double value = 0.0;
-  bool integer = false;   // a count (written as an integer)
+  bool integer = false;  // a count (written as an integer)
 };
 
 struct TrialSummary {
-  std::string status = "ok";   // "ok" | "diverged" | "failed" (a sweep trial that could not run)
-  std::string message;         // why, when not ok; or which event ended the trial
+  std::string status = "ok";  // "ok" | "diverged" | "failed" (a sweep trial that could not run)
+  std::string message;        // why, when not ok; or which event ended the trial
   std::uint64_t seed = 0;
   std::vector<Metric> metrics;
 
@@ -71,15 +71,15 @@ struct FinishedTrial {
   const Scenario* scenario = nullptr;
   const Trajectory* log = nullptr;
   const LogLayout* layout = nullptr;
-  std::vector<std::string> labels;        // muscles, model order
-  bool hinge = true;                      // the joint's kind
-  std::vector<double> event_time_s;       // per Scenario::events, NaN if it never fired
-  std::vector<double> event_position;     // the joint's position when it fired [rad or m]
-  std::vector<char> event_holds_at_end;   // per event: its condition holds in the final state
+  std::vector<std::string> labels;       // muscles, model order
+  bool hinge = true;                     // the joint's kind
+  std::vector<double> event_time_s;      // per Scenario::events, NaN if it never fired
+  std::vector<double> event_position;    // the joint's position when it fired [rad or m]
+  std::vector<char> event_holds_at_end;  // per event: its condition holds in the final state
   // the events the controller recorded: their kinds, and their times [event][muscle][k]
   const std::vector<ControllerEvent>* events = nullptr;
   const std::vector<std::vector<std::vector<double>>>* event_times_s = nullptr;
-  std::vector<double> peak_tension_n;     // per muscle, the largest pull of a physics step
+  std::vector<double> peak_tension_n;  // per muscle, the largest pull of a physics step
   long steps = 0;
   double sim_time_s = 0.0;
   double wall_time_s = 0.0;

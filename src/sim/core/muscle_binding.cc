@@ -12,7 +12,7 @@
 namespace pamsim {
 namespace {
 
-using Laws = std::vector<std::shared_ptr<const BoundMuscleLaw>>;   // by actuator id
+using Laws = std::vector<std::shared_ptr<const BoundMuscleLaw>>;  // by actuator id
 
 struct Registry {
   std::mutex mutex;
@@ -21,7 +21,7 @@ struct Registry {
 };
 
 Registry& registry() {
-  static Registry* r = new Registry;   // never destroyed: models may outlive static teardown
+  static Registry* r = new Registry;  // never destroyed: models may outlive static teardown
   return *r;
 }
 
@@ -53,8 +53,7 @@ void require_userdata(const mjModel* m, int start, int end, const char* path, co
 }
 
 int slip_block_size(const AvbdlParams& plant) {
-  return plant.friction.model == FrictionModel::kMaxwellSlip ? 1 + plant.friction.slip.count
-                                                             : 0;
+  return plant.friction.model == FrictionModel::kMaxwellSlip ? 1 + plant.friction.slip.count : 0;
 }
 
 int relaxation_block_size(const AvbdlParams& plant) {
@@ -88,7 +87,7 @@ void copy_muscle_bindings(const mjModel* from, const mjModel* to) {
   const std::lock_guard<std::mutex> lock(r.mutex);
   const auto it = r.models.find(from);
   if (it == r.models.end()) return;
-  const Laws laws = it->second;   // (a copy: the insertion below may move the map's nodes)
+  const Laws laws = it->second;  // (a copy: the insertion below may move the map's nodes)
   r.models[to] = laws;
   r.epoch.fetch_add(1, std::memory_order_acq_rel);
 }
@@ -99,9 +98,7 @@ void unbind_muscles(const mjModel* m) {
   if (r.models.erase(m) > 0) r.epoch.fetch_add(1, std::memory_order_acq_rel);
 }
 
-std::uint64_t muscle_binding_epoch() {
-  return registry().epoch.load(std::memory_order_acquire);
-}
+std::uint64_t muscle_binding_epoch() { return registry().epoch.load(std::memory_order_acquire); }
 
 int pam_history_size(const AvbdlParams& plant) {
   return slip_block_size(plant) + relaxation_block_size(plant);
@@ -109,8 +106,8 @@ int pam_history_size(const AvbdlParams& plant) {
 
 bool pam_has_history(const AvbdlParams& plant) { return pam_history_size(plant) > 0; }
 
-void store_pam_in_model(const mjModel* m, int id, const SpringModel& spring,
-                        double line_length_m, int userdata_index, const char* path) {
+void store_pam_in_model(const mjModel* m, int id, const SpringModel& spring, double line_length_m,
+                        int userdata_index, const char* path) {
   const char* name = mj_id2name(m, mjOBJ_ACTUATOR, id);
   if (m->actuator_biastype[id] != mjBIAS_USER || m->actuator_trntype[id] != mjTRN_TENDON) {
     throw InputError(std::string(path) + ": actuator '" + (name ? name : "?") +
@@ -128,8 +125,8 @@ void store_pam_in_model(const mjModel* m, int id, const SpringModel& spring,
   bind_muscle(m, id, b);
 }
 
-void store_plant_in_model(const mjModel* m, int id, const AvbdlParams& plant,
-                          int history_index, const char* path) {
+void store_plant_in_model(const mjModel* m, int id, const AvbdlParams& plant, int history_index,
+                          const char* path) {
   MuscleBinding b = bound(m, id, path);
   b.has_plant = true;
   b.plant = plant;

@@ -27,30 +27,30 @@ namespace pamsim {
 // A muscle's line beyond its length: a spring in series with it (E A), and its creep, one
 // Kelvin-Voigt element on that spring's compliance (pam_callback.h).
 struct LineBinding {
-  double axial_stiffness_n = 0.0;   // E A [N]; 0: inextensible
-  double creep = 0.0;               // g >= 0: the long-term creep per unit elastic stretch
-  double creep_time_s = 0.0;        // tau > 0: its retardation time
-  double start_tension_n = 0.0;     // F0, held long before the trial: the creep state's start
-  int creep_index = -1;             // d->userdata index of the creep state q [N], or -1
+  double axial_stiffness_n = 0.0;  // E A [N]; 0: inextensible
+  double creep = 0.0;              // g >= 0: the long-term creep per unit elastic stretch
+  double creep_time_s = 0.0;       // tau > 0: its retardation time
+  double start_tension_n = 0.0;    // F0, held long before the trial: the creep state's start
+  int creep_index = -1;            // d->userdata index of the creep state q [N], or -1
 };
 
 struct MuscleBinding {
-  SpringModel spring;                   // Eq. (1)-(5): the estimator's law; the plant's too
-                                        // when has_plant is false
-  double line_length_m = 0.0;           // the line's unstretched length
-  LineBinding line;                     // its stretch and creep
-  int pressure_index = -1;              // d->userdata index of the chamber gauge pressure [Pa]
-  bool has_plant = false;               // else the spring law is the plant
-  AvbdlParams plant;                    // the plant's law, when has_plant
-  int slip_block = -1;       // d->userdata index of [L_prev, s_1..s_N] (Maxwell-slip), or -1
-  int relaxation_block = -1;  // ... of [L_prev, F_e(L_prev), h_1..h_N] (relaxation), or -1
+  SpringModel spring;          // Eq. (1)-(5): the estimator's law; the plant's too
+                               // when has_plant is false
+  double line_length_m = 0.0;  // the line's unstretched length
+  LineBinding line;            // its stretch and creep
+  int pressure_index = -1;     // d->userdata index of the chamber gauge pressure [Pa]
+  bool has_plant = false;      // else the spring law is the plant
+  AvbdlParams plant;           // the plant's law, when has_plant
+  int slip_block = -1;         // d->userdata index of [L_prev, s_1..s_N] (Maxwell-slip), or -1
+  int relaxation_block = -1;   // ... of [L_prev, F_e(L_prev), h_1..h_N] (relaxation), or -1
 };
 
 // A binding with what its plant derives from its parameters alone, computed when bound.
 struct BoundMuscleLaw {
   MuscleBinding binding;
-  AvbdlShape shape;            // avbdl_shape(binding.plant), when has_plant
-  double max_length_m = 0.0;   // avbdl_max_length(binding.plant), when has_plant
+  AvbdlShape shape;           // avbdl_shape(binding.plant), when has_plant
+  double max_length_m = 0.0;  // avbdl_max_length(binding.plant), when has_plant
 };
 
 // Binds actuator `actuator_id` of `m` (replacing any binding it had).

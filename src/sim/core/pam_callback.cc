@@ -14,11 +14,10 @@
 
 #include "base/input_error.h"
 
-
 namespace pamsim {
 namespace {
 
-constexpr int kLineSolveBits = 40;          // the line's tension to ~1e-12 relative
+constexpr int kLineSolveBits = 40;  // the line's tension to ~1e-12 relative
 constexpr int kLineSolveIterations = 50;
 
 // The PAM's law as bound (muscle_binding.h): the plant's (Pipan et al., Eq. (25), with friction;
@@ -29,7 +28,7 @@ constexpr int kLineSolveIterations = 50;
 struct PamLaw {
   BoundMuscleLaw bound;
   const MuscleBinding& b() const { return bound.binding; }
-  mutable double step_s = 0.0;           // the relaxation's constants, for this time step
+  mutable double step_s = 0.0;  // the relaxation's constants, for this time step
   mutable RelaxationStep relaxation_step_constants;
 
   const RelaxationStep& relaxation(const mjModel* m) const {
@@ -94,7 +93,7 @@ const PamLaw& pam_law(const mjModel* m, int id) {
     int id = -1;
     PamLaw law;
   };
-  thread_local std::array<Entry, 16> cache;   // two legs of eight PAMs
+  thread_local std::array<Entry, 16> cache;  // two legs of eight PAMs
   thread_local std::size_t next = 0;
   thread_local std::uint64_t epoch = 0;
   const std::uint64_t now = muscle_binding_epoch();
@@ -119,7 +118,8 @@ const PamLaw& pam_law(const mjModel* m, int id) {
 double creep_stretch(const PamLaw& law, const mjData* d) {
   const LineBinding& line = law.b().line;
   if (line.creep_index < 0) return 0.0;
-  return law.b().line_length_m / line.axial_stiffness_n * line.creep * d->userdata[line.creep_index];
+  return law.b().line_length_m / line.axial_stiffness_n * line.creep *
+         d->userdata[line.creep_index];
 }
 
 // The line's tension [N], and in *taut the length it leaves the PAM. An inextensible line
@@ -128,13 +128,13 @@ double creep_stretch(const PamLaw& law, const mjData* d) {
 // q)] by TOMS 748.
 double line_tension(const mjModel* m, const mjData* d, int id, double* taut) {
   const PamLaw& law = pam_law(m, id);
-  if (law.b().pressure_index < 0) return 0.0;   // unbound
+  if (law.b().pressure_index < 0) return 0.0;  // unbound
   const double p = d->userdata[law.b().pressure_index];
   const double ea = law.b().line.axial_stiffness_n;
   const double unstretched = d->actuator_length[id] - law.b().line_length_m - creep_stretch(law, d);
   *taut = unstretched;
   const double rigid = law.pull(m, d, id, p, unstretched);
-  if (ea <= 0.0 || !(rigid > 0.0)) return rigid;   // (a NaN pull is the trial's to report)
+  if (ea <= 0.0 || !(rigid > 0.0)) return rigid;  // (a NaN pull is the trial's to report)
   const double c = law.b().line_length_m / ea;
   const auto residual = [&](double f) { return law.pull(m, d, id, p, unstretched - c * f) - f; };
   // the root lies in [0, rigid] when the pull grows with length; at its end (or should the
@@ -189,12 +189,11 @@ double pam_muscle_length_at(const mjModel* m, const mjData* d, int id, double ta
                             FreeLengthTrack* track) {
   // the plant's free length is a root solve, done only when the line is slack
   const PamLaw& law = pam_law(m, id);
-  if (law.b().pressure_index < 0) return taut;   // unbound
+  if (law.b().pressure_index < 0) return taut;  // unbound
   const double p = d->userdata[law.b().pressure_index];
   if (law.b().has_plant) {
-    FreeLengthTrack none;   // no last root: the whole stroke's search
-    return avbdl_line_muscle_length(law.b().plant, law.bound.shape, p, taut,
-                                    track ? track : &none);
+    FreeLengthTrack none;  // no last root: the whole stroke's search
+    return avbdl_line_muscle_length(law.b().plant, law.bound.shape, p, taut, track ? track : &none);
   }
   return std::max(taut, natural_length(law.b().spring, p));
 }
@@ -235,12 +234,11 @@ double pam_length_committing_creep(const mjModel* m, mjData* d, int id, double d
   const LineBinding& line = pam_law(m, id).b().line;
   if (line.creep_index < 0) return pam_length(m, d, id);
   double taut = 0.0;
-  const double f = std::max(line_tension(m, d, id, &taut), 0.0);   // a slack line recovers
+  const double f = std::max(line_tension(m, d, id, &taut), 0.0);  // a slack line recovers
   double& q = d->userdata[line.creep_index];
   q = f + (q - f) * std::exp(-dt_s / line.creep_time_s);
-  return taut;   // the step's length: before the state moved
+  return taut;  // the step's length: before the state moved
 }
-
 
 void install_pam_actuator_callback() { mjcb_act_bias = pam_actuator_force; }
 

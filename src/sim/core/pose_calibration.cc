@@ -15,14 +15,14 @@ namespace pamsim {
 namespace {
 
 constexpr int kMaxIterations = 50;
-constexpr double kTorqueTolerance = 1e-9;   // N m
-constexpr double kLengthStep = 1e-7;        // m, the pull's slope by central differences
+constexpr double kTorqueTolerance = 1e-9;  // N m
+constexpr double kLengthStep = 1e-7;       // m, the pull's slope by central differences
 
 // What the balance needs at the pose: each muscle's moment arms on the crossed joints.
 struct Pose {
-  std::vector<int> dofs;      // the dofs a muscle crosses
-  Eigen::MatrixXd moments;    // dofs x muscles, r_ji
-  Eigen::VectorXd needed;     // qfrc_passive - qfrc_bias on those dofs
+  std::vector<int> dofs;    // the dofs a muscle crosses
+  Eigen::MatrixXd moments;  // dofs x muscles, r_ji
+  Eigen::VectorXd needed;   // qfrc_passive - qfrc_bias on those dofs
 };
 
 Pose pose_of(const TrialModel& tm, const mjData* d, PoseCalibration* out) {
@@ -46,8 +46,8 @@ Pose pose_of(const TrialModel& tm, const mjData* d, PoseCalibration* out) {
     const int dof = pose.dofs[static_cast<std::size_t>(j)];
     pose.needed(j) = d->qfrc_passive[dof] - d->qfrc_bias[dof];
     for (Eigen::Index i = 0; i < n; ++i) {
-      pose.moments(j, i) = d->actuator_moment[tm.muscles[static_cast<std::size_t>(i)].actuator *
-                                              m->nv + dof];
+      pose.moments(j, i) =
+          d->actuator_moment[tm.muscles[static_cast<std::size_t>(i)].actuator * m->nv + dof];
     }
   }
   return pose;
@@ -84,10 +84,13 @@ void balance(const Scenario& sc, const TrialModel& tm, const Pose& pose, double 
     d = d0_vec - jac.transpose() * (jac * jac.transpose()).ldlt().solve(rhs);
     for (Eigen::Index i = 0; i < n; ++i) {
       if (!(d(i) > 0)) {
-        throw InputError("calibrate --pose --balance: the muscles cannot hold the pose with "
-                         "every line taut (" + c->lines[static_cast<std::size_t>(i)].muscle +
-                         " would be " + format_value(units::m_to_mm(d(i))) + " mm past its "
-                         "free length)");
+        throw InputError(
+            "calibrate --pose --balance: the muscles cannot hold the pose with "
+            "every line taut (" +
+            c->lines[static_cast<std::size_t>(i)].muscle + " would be " +
+            format_value(units::m_to_mm(d(i))) +
+            " mm past its "
+            "free length)");
       }
       c->lines[static_cast<std::size_t>(i)].deformation_m = d(i);
     }
@@ -130,7 +133,8 @@ PoseCalibration solve_pose_calibration(const TrialModel& tm, const Scenario& sc,
   for (std::size_t i = 0; i < c.lines.size(); ++i) {
     c.lines[i].force_n = force(static_cast<Eigen::Index>(i));
     if (!(c.lines[i].line_m() > 0)) {
-      throw InputError(tm.model_path + ": " + c.lines[i].muscle + "'s tendon is shorter than "
+      throw InputError(tm.model_path + ": " + c.lines[i].muscle +
+                       "'s tendon is shorter than "
                        "its muscle at the pose; move its anchors apart");
     }
   }

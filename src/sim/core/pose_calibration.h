@@ -22,28 +22,28 @@
 namespace pamsim {
 
 struct PoseCalibrationRequest {
-  double deformation_m = 2.0e-3;   // d of the uniform rule, the target of the balanced one
-  double pressure_pa = -1;         // every muscle's p; < 0: each muscle's start command
+  double deformation_m = 2.0e-3;  // d of the uniform rule, the target of the balanced one
+  double pressure_pa = -1;        // every muscle's p; < 0: each muscle's start command
   bool balance = false;
 };
 
 struct PoseLine {
-  std::string muscle;          // the scenario key, "muscles.VAS"
+  std::string muscle;  // the scenario key, "muscles.VAS"
   double tendon_m = 0, free_length_m = 0, deformation_m = 0;
-  double force_n = 0;          // its plant's pull at the start
-  double pressure_pa = 0;      // its start command
+  double force_n = 0;      // its plant's pull at the start
+  double pressure_pa = 0;  // its start command
   double line_m() const { return tendon_m - free_length_m - deformation_m; }
 };
 
 struct PoseCalibration {
-  std::vector<PoseLine> lines;           // in the model's muscle order
-  std::vector<std::string> joints;       // the joints the muscles cross
-  std::vector<double> residual_nm;       // per joint: sum r F - (passive - bias), at the end
-  int iterations = 0;                    // Gauss-Newton's (0 for the uniform rule)
+  std::vector<PoseLine> lines;      // in the model's muscle order
+  std::vector<std::string> joints;  // the joints the muscles cross
+  std::vector<double> residual_nm;  // per joint: sum r F - (passive - bias), at the end
+  int iterations = 0;               // Gauss-Newton's (0 for the uniform rule)
 };
 
-// Throws InputError naming the problem: a deformation <= 0, a pressure not finite, a line <= 0 (the tendon is
-// shorter than its muscle), a pose the muscles cannot hold with every line taut.
+// Throws InputError naming the problem: a deformation <= 0, a pressure not finite, a line <= 0 (the
+// tendon is shorter than its muscle), a pose the muscles cannot hold with every line taut.
 PoseCalibration solve_pose_calibration(const TrialModel& model, const Scenario& scenario,
                                        const PoseCalibrationRequest& request);
 

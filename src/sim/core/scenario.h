@@ -25,8 +25,8 @@ namespace pamsim {
 
 // How a muscle's fishing-line length (tendon length minus PAM length) is set.
 enum class LineSource {
-  kFixed,         // muscles.<name>.line_mm, or <actuator>_line_mm of model.calibration
-  kEquilibrium,   // solved so the start state is static (trial_model.h)
+  kFixed,        // muscles.<name>.line_mm, or <actuator>_line_mm of model.calibration
+  kEquilibrium,  // solved so the start state is static (trial_model.h)
 };
 
 // Every spec carries the scenario key it was read from (e.g. "muscles.agonist",
@@ -34,14 +34,14 @@ enum class LineSource {
 
 struct MuscleSpec {
   std::string key;
-  std::string actuator;        // the model's PAM actuator (MJCF name)
-  std::string label;           // in log columns and metric names (default: actuator)
-  std::string params_file;     // muscles.<name>.params
-  PamParams pam;               // the law its estimator inverts, its gauge and geometry
-  std::string plant_file;      // muscles.<name>.plant, or empty: the plant is pam's law
-  AvbdlParams plant;           // the physical muscle (Pipan et al.), when plant_file is set
-  std::string plant_changes;   // muscles.<name>.plant.<table>.<field> as TOML text, if any
-  PressureSchedule command;    // muscles.<name>.command
+  std::string actuator;       // the model's PAM actuator (MJCF name)
+  std::string label;          // in log columns and metric names (default: actuator)
+  std::string params_file;    // muscles.<name>.params
+  PamParams pam;              // the law its estimator inverts, its gauge and geometry
+  std::string plant_file;     // muscles.<name>.plant, or empty: the plant is pam's law
+  AvbdlParams plant;          // the physical muscle (Pipan et al.), when plant_file is set
+  std::string plant_changes;  // muscles.<name>.plant.<table>.<field> as TOML text, if any
+  PressureSchedule command;   // muscles.<name>.command
   LineSource line = LineSource::kFixed;
   double line_length_m = 0.0;  // kFixed
   // The line's axial stiffness E A [N] (muscles.<m>.line_diameter_mm, line_modulus_MPa);
@@ -72,9 +72,9 @@ struct MuscleSpec {
 struct HoldSpec {
   std::string key;
   std::string body;
-  std::string above_site;      // held height_m above this site (its bottom, for a sphere)...
+  std::string above_site;  // held height_m above this site (its bottom, for a sphere)...
   double height_m = 0.0;
-  bool at_position = false;    // ...or at position_m in the world
+  bool at_position = false;  // ...or at position_m in the world
   std::array<double, 3> position_m{};
 };
 
@@ -83,8 +83,8 @@ struct HoldSpec {
 struct BodyMassSpec {
   std::string key;
   std::string body;
-  double mass_kg = 0.0;                     // 0: the model's
-  std::array<double, 3> inertia_kg_m2{};   // all 0: the model's (scaled with a new mass)
+  double mass_kg = 0.0;                   // 0: the model's
+  std::array<double, 3> inertia_kg_m2{};  // all 0: the model's (scaled with a new mass)
 };
 
 // joints.<joint>.*: a joint's viscous damping and dry friction (MuJoCo's damping and
@@ -92,12 +92,12 @@ struct BodyMassSpec {
 // keys are in N m s/rad and N m, a slide's in N s/m and N; `rotational` says which were
 // given. A value not given (NaN) keeps the model's.
 struct JointSpec {
-  std::string key;          // "joints.<joint>"
+  std::string key;  // "joints.<joint>"
   std::string joint;
   bool rotational = true;
   double damping = std::numeric_limits<double>::quiet_NaN();
   double frictionloss = std::numeric_limits<double>::quiet_NaN();
-  double start = std::numeric_limits<double>::quiet_NaN();   // its position at t = 0 [rad, m]
+  double start = std::numeric_limits<double>::quiet_NaN();  // its position at t = 0 [rad, m]
 };
 
 // When an event fires: at a time, or on the first physics step a condition holds; either
@@ -114,38 +114,38 @@ struct ConditionSpec {
 };
 
 enum class EventAction {
-  kMark,            // only records its time (e.g. the impact, for metrics)
-  kRelease,         // stops holding `body`
-  kAddMass,         // adds mass_kg to `body` (at its centre of mass)
-  kControllerOff,   // the controller passes the schedules through
+  kMark,           // only records its time (e.g. the impact, for metrics)
+  kRelease,        // stops holding `body`
+  kAddMass,        // adds mass_kg to `body` (at its centre of mass)
+  kControllerOff,  // the controller passes the schedules through
   kControllerOn,
-  kEnd,             // ends the trial (status ok)
+  kEnd,  // ends the trial (status ok)
 };
 
 struct EventSpec {
   std::string key;
-  std::string name;            // unique; metrics look events up by name
+  std::string name;  // unique; metrics look events up by name
   EventAction action = EventAction::kMark;
   ConditionSpec when;
-  std::string body;            // kRelease, kAddMass
-  double mass_kg = 0.0;        // kAddMass
+  std::string body;      // kRelease, kAddMass
+  double mass_kg = 0.0;  // kAddMass
 };
 
 struct Scenario {
-  std::string path;            // the scenario file (for messages and summaries)
+  std::string path;  // the scenario file (for messages and summaries)
 
-  std::string model_file;      // model.file
-  std::string joint;           // model.joint: logged as angle/omega or position/velocity
-  std::string calibration_file;   // model.calibration (optional): start angle, line lengths
-  std::string pneumatics_file;    // model.pneumatics
-  bool has_start_position = false;   // the joint's start [rad or m] (from the calibration);
-  double start_position = 0.0;       // otherwise the model's qpos0
+  std::string model_file;           // model.file
+  std::string joint;                // model.joint: logged as angle/omega or position/velocity
+  std::string calibration_file;     // model.calibration (optional): start angle, line lengths
+  std::string pneumatics_file;      // model.pneumatics
+  bool has_start_position = false;  // the joint's start [rad or m] (from the calibration);
+  double start_position = 0.0;      // otherwise the model's qpos0
   // model.antagonist_deformation_mm: the calibration's two lines solved again at its start
   // angle and pressures with this pre-stretch of its antagonist, as `pamsim calibrate
   // --antagonist-deformation-mm` solves them (calibration.h); unset: the file's lines
   std::optional<double> antagonist_deformation_m;
-  std::array<std::string, 2> calibrated_pair;        // the file's (agonist, antagonist)
-  std::array<double, 2> calibrated_pressure_pa{};    // the pressures it was solved for
+  std::array<std::string, 2> calibrated_pair;      // the file's (agonist, antagonist)
+  std::array<double, 2> calibrated_pressure_pa{};  // the pressures it was solved for
 
   std::uint64_t seed = 1;
   double timestep_s = 0.001;
@@ -168,7 +168,7 @@ struct Scenario {
   std::shared_ptr<const ControllerConfig> controller;
   SensingConfig sensing;
 
-  std::vector<std::string> metrics;       // metric sets (metrics.h), in output order
+  std::vector<std::string> metrics;  // metric sets (metrics.h), in output order
 
   // The keys that may change its trial model, as its reader read them: the file's path, then
   // the document with its overrides, less the keys trial_only_key (trial_model.h) names, as

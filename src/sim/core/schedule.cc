@@ -31,11 +31,16 @@ long segment(const std::vector<double>& times, double t) {
 
 const char* to_string(ScheduleKind kind) {
   switch (kind) {
-    case ScheduleKind::kConstant: return "constant";
-    case ScheduleKind::kRamp: return "ramp";
-    case ScheduleKind::kSine: return "sine";
-    case ScheduleKind::kSteps: return "steps";
-    case ScheduleKind::kTable: return "table";
+    case ScheduleKind::kConstant:
+      return "constant";
+    case ScheduleKind::kRamp:
+      return "ramp";
+    case ScheduleKind::kSine:
+      return "sine";
+    case ScheduleKind::kSteps:
+      return "steps";
+    case ScheduleKind::kTable:
+      return "table";
   }
   return "?";
 }
@@ -51,8 +56,10 @@ ScheduleKind parse_schedule_kind(const std::string& name, const std::string& key
   for (ScheduleKind k : schedule_kinds()) {
     if (name == to_string(k)) return k;
   }
-  throw InputError(key + " must be one of \"constant\", \"ramp\", \"sine\", \"steps\", "
-                   "\"table\", got \"" + name + "\"");
+  throw InputError(key +
+                   " must be one of \"constant\", \"ramp\", \"sine\", \"steps\", "
+                   "\"table\", got \"" +
+                   name + "\"");
 }
 
 double PressureSchedule::at(double t) const {
@@ -84,21 +91,29 @@ double PressureSchedule::at(double t) const {
 
 double PressureSchedule::min_pa() const {
   switch (kind) {
-    case ScheduleKind::kRamp: return std::min(p0_pa, p1_pa);
-    case ScheduleKind::kSine: return std::min(p0_pa, p0_pa - std::fabs(amplitude_pa));
+    case ScheduleKind::kRamp:
+      return std::min(p0_pa, p1_pa);
+    case ScheduleKind::kSine:
+      return std::min(p0_pa, p0_pa - std::fabs(amplitude_pa));
     case ScheduleKind::kSteps:
-    case ScheduleKind::kTable: return *std::min_element(values_pa.begin(), values_pa.end());
-    default: return p0_pa;
+    case ScheduleKind::kTable:
+      return *std::min_element(values_pa.begin(), values_pa.end());
+    default:
+      return p0_pa;
   }
 }
 
 double PressureSchedule::max_pa() const {
   switch (kind) {
-    case ScheduleKind::kRamp: return std::max(p0_pa, p1_pa);
-    case ScheduleKind::kSine: return std::max(p0_pa, p0_pa + std::fabs(amplitude_pa));
+    case ScheduleKind::kRamp:
+      return std::max(p0_pa, p1_pa);
+    case ScheduleKind::kSine:
+      return std::max(p0_pa, p0_pa + std::fabs(amplitude_pa));
     case ScheduleKind::kSteps:
-    case ScheduleKind::kTable: return *std::max_element(values_pa.begin(), values_pa.end());
-    default: return p0_pa;
+    case ScheduleKind::kTable:
+      return *std::max_element(values_pa.begin(), values_pa.end());
+    default:
+      return p0_pa;
   }
 }
 
@@ -119,8 +134,8 @@ void validate(const PressureSchedule& s, const std::string& key, double max_pa) 
     const std::string where = key + (field.empty() ? "" : "." + field);
     throw InputError(where + " " + problem, {"", where, problem});
   };
-  for (double v : {s.p0_pa, s.p1_pa, s.amplitude_pa, s.period_s, s.phase_rad, s.start_s,
-                   s.duration_s}) {
+  for (double v :
+       {s.p0_pa, s.p1_pa, s.amplitude_pa, s.period_s, s.phase_rad, s.start_s, s.duration_s}) {
     if (!std::isfinite(v)) fail("", "must have finite values");
   }
   if (s.kind == ScheduleKind::kSine && !(s.period_s > 0)) fail("period_s", "must be > 0");

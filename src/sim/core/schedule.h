@@ -28,16 +28,16 @@ ScheduleKind parse_schedule_kind(const std::string& name, const std::string& key
 
 struct PressureSchedule {
   ScheduleKind kind = ScheduleKind::kConstant;
-  double p0_pa = 0.4e6;        // constant, ramp start, sine offset
-  double p1_pa = 0.4e6;        // ramp end
-  double amplitude_pa = 0.0;   // sine
-  double period_s = 1.0;       // sine, > 0
-  double phase_rad = 0.0;      // sine
-  double start_s = 0.0;        // ramp, sine
-  double duration_s = 1.0;     // ramp, > 0
-  std::vector<double> times_s;     // steps, table: strictly increasing
-  std::vector<double> values_pa;   // steps, table: one per time
-  std::string source;              // table: the CSV file it came from (for messages)
+  double p0_pa = 0.4e6;           // constant, ramp start, sine offset
+  double p1_pa = 0.4e6;           // ramp end
+  double amplitude_pa = 0.0;      // sine
+  double period_s = 1.0;          // sine, > 0
+  double phase_rad = 0.0;         // sine
+  double start_s = 0.0;           // ramp, sine
+  double duration_s = 1.0;        // ramp, > 0
+  std::vector<double> times_s;    // steps, table: strictly increasing
+  std::vector<double> values_pa;  // steps, table: one per time
+  std::string source;             // table: the CSV file it came from (for messages)
 
   // p(t) [Pa]. Constant schedules return p0_pa exactly.
   double at(double t_s) const;

@@ -11,7 +11,7 @@ namespace {
 
 struct Unit {
   const char* name;
-  double scale;   // SI -> unit
+  double scale;  // SI -> unit
 };
 
 // The unit of a sensor's type (and, for joint sensors, its joint's kind)
@@ -22,17 +22,24 @@ Unit unit_of(const mjModel* m, int sensor) {
   switch (m->sensor_type[sensor]) {
     case mjSENS_TOUCH:
     case mjSENS_FORCE:
-    case mjSENS_ACTUATORFRC: return {"N", 1.0};
-    case mjSENS_TORQUE: return {"N_m", 1.0};
-    case mjSENS_JOINTPOS: return hinge ? Unit{"deg", deg} : Unit{"mm", mm};
-    case mjSENS_JOINTVEL: return hinge ? Unit{"deg_s", deg} : Unit{"mm_s", mm};
+    case mjSENS_ACTUATORFRC:
+      return {"N", 1.0};
+    case mjSENS_TORQUE:
+      return {"N_m", 1.0};
+    case mjSENS_JOINTPOS:
+      return hinge ? Unit{"deg", deg} : Unit{"mm", mm};
+    case mjSENS_JOINTVEL:
+      return hinge ? Unit{"deg_s", deg} : Unit{"mm_s", mm};
     case mjSENS_FRAMEPOS:
     case mjSENS_TENDONPOS:
-    case mjSENS_RANGEFINDER: return {"mm", mm};
+    case mjSENS_RANGEFINDER:
+      return {"mm", mm};
     case mjSENS_FRAMELINVEL:
     case mjSENS_VELOCIMETER:
-    case mjSENS_TENDONVEL: return {"mm_s", mm};
-    default: return {"si", 1.0};
+    case mjSENS_TENDONVEL:
+      return {"mm_s", mm};
+    default:
+      return {"si", 1.0};
   }
 }
 
@@ -67,7 +74,7 @@ void SensorMetrics::on_state(const mjData* d) {
     const double v = c.scale * d->sensordata[c.address];
     if (!c.seen || std::isnan(v)) {
       c.min = c.max = v;
-    } else if (!std::isnan(c.min)) {   // NaN sticks: a diverged trial's extremes are NaN
+    } else if (!std::isnan(c.min)) {  // NaN sticks: a diverged trial's extremes are NaN
       if (v < c.min) c.min = v;
       if (v > c.max) c.max = v;
     }

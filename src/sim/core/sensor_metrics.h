@@ -36,15 +36,15 @@ class SensorMetrics final : public MetricSet {
 
  private:
   struct Channel {
-    std::string name;        // <name>[_<axis>]
-    std::string unit;        // in the metric's name
-    int address = 0;         // in d->sensordata
-    double scale = 1.0;      // SI -> the unit
-    bool touch = false;      // counts touchdowns
+    std::string name;    // <name>[_<axis>]
+    std::string unit;    // in the metric's name
+    int address = 0;     // in d->sensordata
+    double scale = 1.0;  // SI -> the unit
+    bool touch = false;  // counts touchdowns
     double min = 0.0, max = 0.0;
     int touchdowns = 0;
-    bool seen = false;       // a step has been read
-    bool touching = false;   // the last step read a force
+    bool seen = false;      // a step has been read
+    bool touching = false;  // the last step read a force
   };
   std::vector<Channel> channels_;
 };

@@ -54,7 +54,8 @@ std::unique_ptr<Controller> make_controller(const TrialModel& tm, const Scenario
 
 std::vector<std::string> held_bodies(const TrialModel& tm) {
   std::vector<std::string> names;
-  for (const BoundHold& h : tm.holds) names.push_back(mj_id2name(tm.model.get(), mjOBJ_BODY, h.body));
+  for (const BoundHold& h : tm.holds)
+    names.push_back(mj_id2name(tm.model.get(), mjOBJ_BODY, h.body));
   return names;
 }
 
@@ -75,8 +76,7 @@ thread_local ThreadTrialData t_trial_data;
 }  // namespace
 
 LogLayout trial_log_layout(const TrialModel& tm, const Scenario& sc) {
-  return make_log_layout(tm.joint.hinge, held_bodies(tm), labels_of(tm),
-                         sc.controller_channels());
+  return make_log_layout(tm.joint.hinge, held_bodies(tm), labels_of(tm), sc.controller_channels());
 }
 
 TrialData::TrialData(const TrialModel& model, const mjModel* m, bool stays_on_thread) {
@@ -135,8 +135,9 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
       channels_(sc.controller_channels()),
       events_(sc.controller_events()) {
   if (m_->opt.timestep != sc.timestep_s) {
-    throw std::logic_error("run_trial: the model's timestep differs from sim.timestep_s "
-                           "(load it with load_trial_model)");
+    throw std::logic_error(
+        "run_trial: the model's timestep differs from sim.timestep_s "
+        "(load it with load_trial_model)");
   }
   for (const auto& set : metrics_) {
     if (set->wants_steps()) step_metrics_.push_back(set.get());
@@ -155,7 +156,7 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
   step_force_n_.resize(n_);
   peak_tension_n_.assign(n_, 0.0);
   history_.assign(n_, 0);
-  for (std::size_t i = 0; i < n_; ++i) {   // a physical muscle's chamber has its own shape
+  for (std::size_t i = 0; i < n_; ++i) {  // a physical muscle's chamber has its own shape
     const MuscleSpec& spec = sc.muscles[tm.muscles[i].spec];
     if (spec.plant_file.empty()) continue;
     pneumatics_.set_plant_volume(static_cast<int>(i), spec.plant);
@@ -287,7 +288,7 @@ TrialObservation TrialRun::observe() const {
     o.pressure_pa.push_back(pneumatics_.pressure_pa(static_cast<int>(i)));
     o.command_pa.push_back(pneumatics_.command_pa(static_cast<int>(i)));
     o.force_n.push_back(-pam_actuator_force(m_, d_, act));
-    FreeLengthTrack track = free_length_[i];   // a look changes nothing in the trial
+    FreeLengthTrack track = free_length_[i];  // a look changes nothing in the trial
     o.length_m.push_back(pam_muscle_length(m_, d_, act, &track));
     o.length_est_m.push_back(readings_[i].length_est_m);
     o.velocity_est_m_s.push_back(i < out_.velocity_m_s.size() ? out_.velocity_m_s[i] : 0.0);
@@ -335,7 +336,7 @@ bool SteppedTrial::step(const std::vector<double>* commands_pa) {
                      std::to_string(model_.muscles.size()) + " muscles");
   }
   run.set_external_commands(commands_pa);
-  bool alive = run.step();   // the step that starts with the control tick
+  bool alive = run.step();  // the step that starts with the control tick
   run.set_external_commands(nullptr);
   while (alive && !run.control_due()) alive = run.step();
   return !done();

@@ -39,11 +39,11 @@ struct TrialSnapshot {
   const mjModel* model = nullptr;
   const mjData* data = nullptr;
   double time_s = 0.0;
-  bool hinge = true;                  // the joint's kind
-  double joint_position = 0.0;        // [deg] for a hinge, [mm] for a slide
+  bool hinge = true;            // the joint's kind
+  double joint_position = 0.0;  // [deg] for a hinge, [mm] for a slide
   const std::vector<std::string>* labels = nullptr;
-  const std::vector<double>* pressure_pa = nullptr;   // chamber pressures
-  const std::vector<double>* command_pa = nullptr;    // valve commands
+  const std::vector<double>* pressure_pa = nullptr;  // chamber pressures
+  const std::vector<double>* command_pa = nullptr;   // valve commands
   // what the controller logs per muscle (its channels) and their values as of the last
   // control tick, [channel][muscle]
   const std::vector<ControllerChannel>* channels = nullptr;
@@ -85,8 +85,8 @@ struct ControlLog {
 
 struct TrialOptions {
   bool keep_trajectory = true;
-  TrialObserver* observer = nullptr;   // not owned; none by default (nothing to pay for)
-  ControlLog* control_log = nullptr;   // not owned; filled at every control tick when given
+  TrialObserver* observer = nullptr;  // not owned; none by default (nothing to pay for)
+  ControlLog* control_log = nullptr;  // not owned; filled at every control tick when given
 };
 
 // The controller `scenario` runs on `model` as the embedded controller holds it (its
@@ -105,8 +105,8 @@ LogLayout trial_log_layout(const TrialModel& model, const Scenario& scenario);
 // The summary's wall_time_s is the simulation's alone, without the observer's time.
 TrialResult run_trial(const TrialModel& model, const Scenario& scenario, std::uint64_t seed,
                       const TrialOptions& options);
-inline TrialResult run_trial(const TrialModel& model, const Scenario& scenario,
-                             std::uint64_t seed, bool keep_trajectory = true) {
+inline TrialResult run_trial(const TrialModel& model, const Scenario& scenario, std::uint64_t seed,
+                             bool keep_trajectory = true) {
   TrialOptions options;
   options.keep_trajectory = keep_trajectory;
   return run_trial(model, scenario, seed, options);
@@ -116,18 +116,18 @@ inline TrialResult run_trial(const TrialModel& model, const Scenario& scenario,
 // per muscle, model order.
 struct TrialObservation {
   double time_s = 0.0;
-  long steps = 0;                      // physics steps taken
-  double joint_position = 0.0;         // [rad] for a hinge, [m] for a slide
-  double joint_velocity = 0.0;         // [rad/s] or [m/s]
-  std::vector<double> pressure_pa;     // chamber pressures
-  std::vector<double> command_pa;      // valve commands in force
-  std::vector<double> force_n;         // tension in each PAM
-  std::vector<double> length_m;        // each PAM's length
-  std::vector<double> length_est_m;    // the estimator's length, as of the last control tick
+  long steps = 0;                    // physics steps taken
+  double joint_position = 0.0;       // [rad] for a hinge, [m] for a slide
+  double joint_velocity = 0.0;       // [rad/s] or [m/s]
+  std::vector<double> pressure_pa;   // chamber pressures
+  std::vector<double> command_pa;    // valve commands in force
+  std::vector<double> force_n;       // tension in each PAM
+  std::vector<double> length_m;      // each PAM's length
+  std::vector<double> length_est_m;  // the estimator's length, as of the last control tick
   // what the controller logs per muscle (its channels: the log's <prefix><m><suffix> column
   // names without the muscle, "reflex_"), and their values as of the last control tick
   std::vector<std::string> channel_names;
-  std::vector<std::vector<double>> channels;   // [channel][muscle]
+  std::vector<std::vector<double>> channels;  // [channel][muscle]
   // What the controller saw at the last control tick, as the log's row of that tick has it:
   // the instruments' readings and estimates (sensing/muscle_reading.h), and the velocity
   // each muscle's control acted on (the log's velocity_est_<m>_mm_s).

@@ -26,7 +26,7 @@ void make_lines_extensible(const Scenario& sc, TrialModel* tm, int creep_index) 
     return sc.muscles[b.spec].line_axial_stiffness_n > 0.0;
   };
   if (std::none_of(tm->muscles.begin(), tm->muscles.end(), extensible)) return;
-  MjDataPtr data = start_state(sc, *tm);   // the inextensible lines' tensions at the start
+  MjDataPtr data = start_state(sc, *tm);  // the inextensible lines' tensions at the start
   for (std::size_t k = 0; k < tm->muscles.size(); ++k) {
     BoundMuscle& b = tm->muscles[k];
     if (!extensible(b)) continue;
@@ -61,14 +61,15 @@ void solve_line(const Scenario& sc, TrialModel* tm, int solved) {
   const double pam_length = plant_length_at_force(spec, p0, f);
   if (!(pam_length > 0)) {
     char buf[160];
-    std::snprintf(buf, sizeof(buf), "cannot hold the start state: it needs %.4g N at %.4g MPa",
-                  f, units::pa_to_mpa(p0));
+    std::snprintf(buf, sizeof(buf), "cannot hold the start state: it needs %.4g N at %.4g MPa", f,
+                  units::pa_to_mpa(p0));
     fail(sc, spec.key + ".line", std::string("= \"equilibrium\" ") + buf);
   }
   b.line_length_m = d->actuator_length[b.actuator] - pam_length;
   if (!(b.line_length_m > 0)) {
-    fail(sc, spec.key + ".line", "= \"equilibrium\" gives a line <= 0: the tendon is shorter "
-                                 "than the PAM it holds");
+    fail(sc, spec.key + ".line",
+         "= \"equilibrium\" gives a line <= 0: the tendon is shorter "
+         "than the PAM it holds");
   }
   store_pam_in_model(m, b.actuator, spec.pam.spring, b.line_length_m, solved,
                      sc.model_file.c_str());
@@ -78,7 +79,7 @@ void solve_line(const Scenario& sc, TrialModel* tm, int solved) {
 // angle and pressures with this pre-stretch (calibration.h), in place of the file's
 void recalibrate_lines(const Scenario& sc, TrialModel* tm) {
   const std::string key = "model.antagonist_deformation_mm";
-  const ReflexPair pair = tm->pair_of(sc, sc.calibrated_pair, key);   // model.calibration's
+  const ReflexPair pair = tm->pair_of(sc, sc.calibrated_pair, key);  // model.calibration's
   CalibrationRequest req;
   req.start_angle_rad = sc.start_position;
   req.pressure_agonist_pa = sc.calibrated_pressure_pa[0];
@@ -89,8 +90,8 @@ void recalibrate_lines(const Scenario& sc, TrialModel* tm) {
   for (int k : {pair.agonist, pair.antagonist}) {
     BoundMuscle& b = tm->muscles[k];
     b.line_length_m = c.lines[k == pair.agonist ? 0 : 1].line_length_m;
-    store_pam_in_model(tm->model.get(), b.actuator, sc.muscles[b.spec].pam.spring,
-                       b.line_length_m, k, sc.model_file.c_str());
+    store_pam_in_model(tm->model.get(), b.actuator, sc.muscles[b.spec].pam.spring, b.line_length_m,
+                       k, sc.model_file.c_str());
   }
 }
 
@@ -115,15 +116,16 @@ MjDataPtr start_state(const Scenario& sc, const TrialModel& tm) {
 void set_lines(const Scenario& sc, TrialModel* tm) {
   mjModel* m = tm->model.get();
   int solved = -1;
-  int history_index = static_cast<int>(tm->muscles.size());   // after the pressures
+  int history_index = static_cast<int>(tm->muscles.size());  // after the pressures
   for (std::size_t k = 0; k < tm->muscles.size(); ++k) {
     BoundMuscle& b = tm->muscles[k];
     const MuscleSpec& spec = sc.muscles[b.spec];
     b.line_length_m = spec.line_length_m;
     if (spec.line == LineSource::kEquilibrium) {
-      if (solved >= 0) fail(sc, spec.key + ".line", "\"equilibrium\" is allowed for one muscle only");
+      if (solved >= 0)
+        fail(sc, spec.key + ".line", "\"equilibrium\" is allowed for one muscle only");
       solved = static_cast<int>(k);
-      b.line_length_m = 1e3;   // slack while the others' forces are computed
+      b.line_length_m = 1e3;  // slack while the others' forces are computed
     }
     store_pam_in_model(m, b.actuator, spec.pam.spring, b.line_length_m, static_cast<int>(k),
                        sc.model_file.c_str());
@@ -136,6 +138,5 @@ void set_lines(const Scenario& sc, TrialModel* tm) {
   if (sc.antagonist_deformation_m) recalibrate_lines(sc, tm);
   make_lines_extensible(sc, tm, history_index);
 }
-
 
 }  // namespace pamsim::detail

@@ -29,10 +29,10 @@ namespace pamsim {
 // The log, row-major; columns named by its layout.
 struct Trajectory {
   std::vector<std::string> columns;
-  std::vector<double> values;   // row-major
+  std::vector<double> values;  // row-major
   std::size_t rows() const { return columns.empty() ? 0 : values.size() / columns.size(); }
   double at(std::size_t row, std::size_t col) const { return values[row * columns.size() + col]; }
-  std::size_t column(const std::string& name) const;   // throws std::out_of_range
+  std::size_t column(const std::string& name) const;  // throws std::out_of_range
   bool has_column(const std::string& name) const;
 };
 
@@ -40,15 +40,15 @@ inline constexpr std::size_t kNoColumn = static_cast<std::size_t>(-1);
 
 struct MuscleColumns {
   std::size_t p_cmd, p, force, length, length_est, velocity_est;
-  std::vector<std::size_t> channels;   // per declared controller channel
+  std::vector<std::size_t> channels;  // per declared controller channel
   std::size_t pressure_sensor, gauge, fiber_rate, p_meas, force_meas;
 };
 
 struct LogLayout {
   std::vector<std::string> columns;
   std::size_t time = 0, joint_position = 1, joint_velocity = 2;
-  std::vector<std::size_t> body_z;      // per hold
-  std::vector<MuscleColumns> muscle;    // per muscle, model order
+  std::vector<std::size_t> body_z;    // per hold
+  std::vector<MuscleColumns> muscle;  // per muscle, model order
 };
 
 // `hinge`: the joint's kind; `bodies`: the held bodies' names; `labels`: the muscles';

@@ -18,7 +18,7 @@
 namespace pamsim {
 namespace {
 
-constexpr double kMinMomentArm_m = 1e-4;   // 0.1 mm: below it a tendon does not cross a joint
+constexpr double kMinMomentArm_m = 1e-4;  // 0.1 mm: below it a tendon does not cross a joint
 
 using detail::fail;
 using detail::start_state;
@@ -30,8 +30,10 @@ int find_id(const mjModel* m, mjtObj type, const std::string& name) {
 int require(const Scenario& sc, const mjModel* m, mjtObj type, const std::string& name,
             const std::string& key, const char* what) {
   const int id = find_id(m, type, name);
-  if (id < 0) fail(sc, key, "names " + std::string(what) + " '" + name + "', which " +
-                                sc.model_file + " does not have");
+  if (id < 0)
+    fail(sc, key,
+         "names " + std::string(what) + " '" + name + "', which " + sc.model_file +
+             " does not have");
   return id;
 }
 
@@ -55,8 +57,9 @@ void bind_muscles(const Scenario& sc, TrialModel* tm) {
     const MuscleSpec& spec = sc.muscles[k];
     const int id = find_id(m, mjOBJ_ACTUATOR, spec.actuator);
     if (id < 0 || !is_pam_actuator(m, id)) {
-      fail(sc, spec.key, "names no PAM actuator of " + sc.model_file + " (it has: " +
-                             pam_actuator_names(m) + ")");
+      fail(
+          sc, spec.key,
+          "names no PAM actuator of " + sc.model_file + " (it has: " + pam_actuator_names(m) + ")");
     }
   }
   for (int id = 0; id < m->nu; ++id) {
@@ -64,18 +67,20 @@ void bind_muscles(const Scenario& sc, TrialModel* tm) {
     const std::string name = mj_id2name(m, mjOBJ_ACTUATOR, id);
     const MuscleSpec* spec = sc.muscle(name);
     if (!spec) {
-      fail(sc, "muscles." + name, "is required: " + sc.model_file +
-                                      " has a PAM actuator of that name (give its params)");
+      fail(sc, "muscles." + name,
+           "is required: " + sc.model_file + " has a PAM actuator of that name (give its params)");
     }
     BoundMuscle b;
     b.spec = static_cast<int>(spec - sc.muscles.data());
     b.actuator = id;
     b.label = spec->label;
     if (!spec->plant_file.empty()) {
-      b.braid = avbdl_braid(spec->plant);   // the chamber of the physical muscle
+      b.braid = avbdl_braid(spec->plant);  // the chamber of the physical muscle
     } else if (!spec->pam.geometry) {
-      fail(sc, spec->key + ".params", "(" + spec->params_file + ") needs a [geometry] table "
-                                          "for the chamber volume");
+      fail(sc, spec->key + ".params",
+           "(" + spec->params_file +
+               ") needs a [geometry] table "
+               "for the chamber volume");
     } else {
       b.braid = braid_from_initial_shape(spec->pam.geometry->length_m,
                                          spec->pam.geometry->sleeve_diameter_m,
@@ -92,11 +97,12 @@ void bind_muscles(const Scenario& sc, TrialModel* tm) {
 void bind_joint(const Scenario& sc, TrialModel* tm) {
   const mjModel* m = tm->model.get();
   int j = -1;
-  if (sc.joint.empty()) {   // the model's first hinge or slide joint
+  if (sc.joint.empty()) {  // the model's first hinge or slide joint
     for (int k = 0; k < m->njnt && j < 0; ++k) {
       if (m->jnt_type[k] == mjJNT_HINGE || m->jnt_type[k] == mjJNT_SLIDE) j = k;
     }
-    if (j < 0) fail(sc, "model.joint", "is required: " + sc.model_file + " has no hinge or slide joint");
+    if (j < 0)
+      fail(sc, "model.joint", "is required: " + sc.model_file + " has no hinge or slide joint");
   } else {
     j = require(sc, m, mjOBJ_JOINT, sc.joint, "model.joint", "a joint");
   }
@@ -108,8 +114,8 @@ void bind_joint(const Scenario& sc, TrialModel* tm) {
   tm->joint.qpos = m->jnt_qposadr[j];
   tm->joint.dof = m->jnt_dofadr[j];
   if (sc.has_start_position && !tm->joint.hinge) {
-    fail(sc, "model.calibration", "gives a start angle, but joint '" + tm->joint.name +
-                                      "' is a slide");
+    fail(sc, "model.calibration",
+         "gives a start angle, but joint '" + tm->joint.name + "' is a slide");
   }
 }
 
@@ -118,8 +124,8 @@ void free_joint_of(const Scenario& sc, const mjModel* m, int body, const std::st
                    int* qpos, int* dof) {
   const int j = m->body_jntadr[body];
   if (j < 0 || m->jnt_type[j] != mjJNT_FREE) {
-    fail(sc, key, "needs body '" + std::string(mj_id2name(m, mjOBJ_BODY, body)) +
-                      "' to have a free joint");
+    fail(sc, key,
+         "needs body '" + std::string(mj_id2name(m, mjOBJ_BODY, body)) + "' to have a free joint");
   }
   *qpos = m->jnt_qposadr[j];
   *dof = m->jnt_dofadr[j];
@@ -198,9 +204,9 @@ void set_joints(const Scenario& sc, TrialModel* tm) {
       fail(sc, j.key, "names joint '" + j.joint + "', which is neither a hinge nor a slide");
     }
     if ((type == mjJNT_HINGE) != j.rotational) {
-      fail(sc, j.key, "gives a " + std::string(j.rotational ? "hinge" : "slide") +
-                          "'s keys, but joint '" + j.joint + "' is a " +
-                          (type == mjJNT_HINGE ? "hinge" : "slide"));
+      fail(sc, j.key,
+           "gives a " + std::string(j.rotational ? "hinge" : "slide") + "'s keys, but joint '" +
+               j.joint + "' is a " + (type == mjJNT_HINGE ? "hinge" : "slide"));
     }
     const int dof = m->jnt_dofadr[id];
     if (!std::isnan(j.damping)) m->dof_damping[dof] = j.damping;
@@ -214,13 +220,13 @@ void set_joints(const Scenario& sc, TrialModel* tm) {
     const double* range = m->jnt_range + 2 * id;
     if (m->jnt_limited[id] && !(j.start >= range[0] && j.start <= range[1])) {
       const double unit = j.rotational ? units::rad_to_deg(1.0) : units::m_to_mm(1.0);
-      fail(sc, key, "must be within the joint's range [" + format_value(unit * range[0]) + ", " +
-                        format_value(unit * range[1]) + "], got " + format_value(unit * j.start));
+      fail(sc, key,
+           "must be within the joint's range [" + format_value(unit * range[0]) + ", " +
+               format_value(unit * range[1]) + "], got " + format_value(unit * j.start));
     }
     tm->start_qpos.push_back({m->jnt_qposadr[id], j.start});
   }
 }
-
 
 // muscles.<m>.spans: a moment arm of the muscle's tendon at each joint it names, in the
 // start state (a biarticular tendon whose path misses a joint has none there)
@@ -235,11 +241,13 @@ void check_spans(const Scenario& sc, const TrialModel& tm) {
         fail(sc, spec.key + ".spans", "names joint '" + joint + "': a hinge or slide only");
       }
       if (!data) data = start_state(sc, tm);
-      const double arm = data->actuator_moment[static_cast<long>(b.actuator) * m->nv +
-                                               m->jnt_dofadr[j]];
+      const double arm =
+          data->actuator_moment[static_cast<long>(b.actuator) * m->nv + m->jnt_dofadr[j]];
       if (std::fabs(arm) < kMinMomentArm_m) {
-        fail(sc, spec.key + ".spans", "names joint '" + joint + "', which the tendon's path "
-                                          "misses (no moment arm there at the start)");
+        fail(sc, spec.key + ".spans",
+             "names joint '" + joint +
+                 "', which the tendon's path "
+                 "misses (no moment arm there at the start)");
       }
     }
   }
@@ -284,7 +292,7 @@ TrialModel load_trial_model(const Scenario& sc) {
   tm.model_path = sc.model_file;
   tm.model = load_mjcf(sc.model_file);
   mjModel* m = tm.model.get();
-  m->opt.timestep = sc.timestep_s;   // the scenario's step, not the MJCF's
+  m->opt.timestep = sc.timestep_s;  // the scenario's step, not the MJCF's
 
   // the cast by name; masses before the lines: a static start depends on them
   bind_muscles(sc, &tm);
@@ -293,7 +301,7 @@ TrialModel load_trial_model(const Scenario& sc) {
     const int body = require(sc, m, mjOBJ_BODY, b.body, b.key, "a body");
     if (b.mass_kg > 0) set_body_mass(m, body, b.mass_kg);
   }
-  for (const BodyMassSpec& b : sc.body_masses) {   // an inertia given wins over a scaled one
+  for (const BodyMassSpec& b : sc.body_masses) {  // an inertia given wins over a scaled one
     const int body = require(sc, m, mjOBJ_BODY, b.body, b.key, "a body");
     if (b.inertia_kg_m2[0] > 0) std::copy_n(b.inertia_kg_m2.data(), 3, m->body_inertia + 3 * body);
   }

@@ -24,26 +24,26 @@
 namespace pamsim {
 
 struct BoundMuscle {
-  int spec = -1;                 // index into Scenario::muscles
+  int spec = -1;  // index into Scenario::muscles
   int actuator = -1;
   std::string label;
-  BraidGeometry braid;           // the chamber volume law, from the params' [geometry]
-  double line_length_m = 0.0;    // as bound to the actuator
+  BraidGeometry braid;         // the chamber volume law, from the params' [geometry]
+  double line_length_m = 0.0;  // as bound to the actuator
 };
 
 struct BoundJoint {
   std::string name;
-  bool hinge = true;             // else slide
+  bool hinge = true;  // else slide
   int qpos = -1;
   int dof = -1;
 };
 
 struct BoundHold {
   int body = -1;
-  int qpos = -1;                 // of its free joint
+  int qpos = -1;  // of its free joint
   int dof = -1;
-  int site = -1;                 // above_site, or -1 for a fixed position
-  double radius_m = 0.0;         // of the body's first geom if it is a sphere, else 0
+  int site = -1;          // above_site, or -1 for a fixed position
+  double radius_m = 0.0;  // of the body's first geom if it is a sphere, else 0
 };
 
 struct BoundEvent {
@@ -55,17 +55,17 @@ struct BoundEvent {
 };
 
 struct TrialModel {
-  std::uint64_t id = 0;               // unique per load in this process (trial data reuse)
+  std::uint64_t id = 0;  // unique per load in this process (trial data reuse)
   std::string model_path;
   MjModelPtr model;
-  std::vector<BoundMuscle> muscles;   // model actuator order
+  std::vector<BoundMuscle> muscles;  // model actuator order
   BoundJoint joint;
-  std::vector<BoundHold> holds;       // Scenario::holds order
+  std::vector<BoundHold> holds;  // Scenario::holds order
   // joints.<joint>.start_*: (qpos address, position [rad or m]) set at the start
   std::vector<std::pair<int, double>> start_qpos;
-  std::vector<BoundEvent> events;     // Scenario::events order
-  std::vector<ReflexPair> pairs;      // by muscle index (model order)
-  bool events_change_model = false;   // an add_mass event: each trial copies the model
+  std::vector<BoundEvent> events;    // Scenario::events order
+  std::vector<ReflexPair> pairs;     // by muscle index (model order)
+  bool events_change_model = false;  // an add_mass event: each trial copies the model
 
   // The muscle index of an actuator name, or -1.
   int muscle_index(const Scenario& scenario, const std::string& actuator) const;

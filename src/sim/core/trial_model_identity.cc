@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "base/config_reader.h"   // split_key
+#include "base/config_reader.h"  // split_key
 #include "sim/core/trial_model.h"
 
 namespace pamsim {
@@ -20,7 +20,7 @@ std::vector<TrialModel> shared_trial_models(const std::vector<Scenario>& scenari
   std::vector<TrialModel> models;
   model_of->assign(scenarios.size(), 0);
   for (std::size_t i = 0; i < scenarios.size(); ++i) {
-    std::size_t m = 0;   // the first earlier scenario of the same model
+    std::size_t m = 0;  // the first earlier scenario of the same model
     while (m < i && !same_trial_model(scenarios[i], scenarios[m])) ++m;
     if (m == i) {
       (*model_of)[i] = models.size();
@@ -37,9 +37,10 @@ bool trial_only_key(const std::string& key) {
   static const std::vector<std::vector<std::string>> kTables = {
       {"reflex"}, {"sensors"}, {"valve"}, {"pneumatics"}, {"muscles", "*", "gauge"}};
   static const std::vector<std::string> kKeys = {
-      "seed", "sim.duration_s", "sim.control_hz", "sim.max_steps", "model.pneumatics",
-      "controller.p_max_MPa", "drop.time_s", "drop.height_m"};
-  if (key == "reflex.pairs") return false;   // the pairs bound to muscle indices
+      "seed",          "sim.duration_s",   "sim.control_hz",
+      "sim.max_steps", "model.pneumatics", "controller.p_max_MPa",
+      "drop.time_s",   "drop.height_m"};
+  if (key == "reflex.pairs") return false;  // the pairs bound to muscle indices
   if (std::find(kKeys.begin(), kKeys.end(), key) != kKeys.end()) return true;
   const std::vector<std::string> parts = split_key(key);
   return std::any_of(kTables.begin(), kTables.end(), [&](const std::vector<std::string>& t) {

@@ -47,9 +47,9 @@ class TrialRun {
            bool stays_on_thread = true);
   TrialResult run();
 
-  void begin();          // the start state; the observer's first look
-  bool step();           // one physics step (a control tick first when due); false: ended
-  TrialResult end();     // the summary (and the log); the run is spent
+  void begin();       // the start state; the observer's first look
+  bool step();        // one physics step (a control tick first when due); false: ended
+  TrialResult end();  // the summary (and the log); the run is spent
   bool ended() const { return ended_ || step_ >= n_steps_; }
   bool control_due() const { return step_ % control_every_ == 0; }
   // Valve commands [Pa] that replace the controller's at the next control ticks (null: the
@@ -61,15 +61,15 @@ class TrialRun {
 
  private:
   void start_state();
-  bool before_step(double t);    // false: an event ended the trial
-  bool control_tick(double t);   // false: the controller failed (diverged)
-  bool physics_step(double t);   // false: the step diverged
-  bool after_step();             // false: an event ended the trial
+  bool before_step(double t);   // false: an event ended the trial
+  bool control_tick(double t);  // false: the controller failed (diverged)
+  bool physics_step(double t);  // false: the step diverged
+  bool after_step();            // false: an event ended the trial
   void fire(std::size_t k, double t);
   bool condition_holds(std::size_t k) const;
   void hold_bodies();
-  bool first_window_open() const;   // a window of the first window channel is open
-  void log_control(double t);   // one tick into options_.control_log
+  bool first_window_open() const;  // a window of the first window channel is open
+  void log_control(double t);      // one tick into options_.control_log
   void log_row(double t);
   void show_observer();
   double joint_position() const { return d_->qpos[tm_.joint.qpos]; }
@@ -79,22 +79,22 @@ class TrialRun {
   const TrialModel& tm_;
   const Scenario& sc_;
   const TrialOptions& options_;
-  MjModelPtr own_model_;   // a copy, only when events change the model
+  MjModelPtr own_model_;  // a copy, only when events change the model
   mjModel* mutable_model_ = nullptr;
   const mjModel* m_;
-  TrialData data_;         // this thread's mjData for the model, reset
+  TrialData data_;  // this thread's mjData for the model, reset
   mjData* d_;
-  const std::size_t n_;    // muscles
+  const std::size_t n_;  // muscles
   const std::vector<std::string> labels_;
-  const std::vector<double> start_p_pa_;   // the schedules at t = 0
+  const std::vector<double> start_p_pa_;  // the schedules at t = 0
   PneumaticSystem pneumatics_;
   SensorSuite sensors_;
   std::unique_ptr<Controller> controller_;
   std::vector<std::unique_ptr<MetricSet>> metrics_;
   std::vector<MetricSet*> step_metrics_;
   LogLayout layout_;
-  std::vector<ControllerChannel> channels_;   // what the controller logs per muscle
-  std::vector<ControllerEvent> events_;       // and the events it records
+  std::vector<ControllerChannel> channels_;  // what the controller logs per muscle
+  std::vector<ControllerEvent> events_;      // and the events it records
   TrialResult result_;
 
   // per tick and per step state, allocated once
@@ -104,12 +104,12 @@ class TrialRun {
   ControlOutput out_;
   std::vector<double> row_;
   std::vector<double> pressure_pa_, command_pa_;
-  double first_trigger_s_ = std::numeric_limits<double>::quiet_NaN();   // for the observer
-  std::vector<double> muscle_length_m_;   // per muscle, at the last physics step
-  std::vector<FreeLengthTrack> free_length_;   // per muscle: its last free length (avbdl.h)
-  std::vector<double> step_force_n_;      // per muscle, this physics step's pull (sensors)
-  std::vector<double> peak_tension_n_;    // per muscle, the largest pull of any physics step
-  std::vector<char> history_;             // per muscle: its plant has a history (slip, relaxation)
+  double first_trigger_s_ = std::numeric_limits<double>::quiet_NaN();  // for the observer
+  std::vector<double> muscle_length_m_;       // per muscle, at the last physics step
+  std::vector<FreeLengthTrack> free_length_;  // per muscle: its last free length (avbdl.h)
+  std::vector<double> step_force_n_;          // per muscle, this physics step's pull (sensors)
+  std::vector<double> peak_tension_n_;        // per muscle, the largest pull of any physics step
+  std::vector<char> history_;  // per muscle: its plant has a history (slip, relaxation)
   std::vector<std::array<double, 3>> hold_pos_;
   std::vector<char> held_;
   std::vector<char> fired_;
@@ -128,7 +128,7 @@ class TrialRun {
   // 1.1500000000000001), else steps x timestep. MuJoCo's own clock (d->time) adds the step
   // up and drifts (1.168999999999982); the physics does not read these times.
   double time_at(long steps) const;
-  long steps_per_second_ = 0;   // 0: a second is no whole number of steps
+  long steps_per_second_ = 0;  // 0: a second is no whole number of steps
   bool ended_ = false;
   std::chrono::steady_clock::time_point wall_start_;
   const std::vector<double>* external_pa_ = nullptr;

@@ -15,7 +15,7 @@
 namespace pamsim {
 namespace {
 
-constexpr double kTimeToleranceS = 1e-12;   // a step at t counts as reaching at_s
+constexpr double kTimeToleranceS = 1e-12;  // a step at t counts as reaching at_s
 
 // Why the step went unstable, or nullptr (no allocation: called at every physics step).
 const char* diverged_reason(const mjData* d) {
@@ -48,12 +48,23 @@ void TrialRun::fire(std::size_t k, double t) {
   event_time_s_[k] = t;
   event_position_[k] = joint_position();
   switch (e.action) {
-    case EventAction::kRelease: held_[b.hold] = 0; break;
-    case EventAction::kAddMass: set_body_mass(mutable_model_, b.body, m_->body_mass[b.body] + e.mass_kg); break;
-    case EventAction::kControllerOff: controller_enabled_ = false; break;
-    case EventAction::kControllerOn: controller_enabled_ = true; break;
-    case EventAction::kEnd: end_message_ = "ended by event " + e.name; break;
-    case EventAction::kMark: break;
+    case EventAction::kRelease:
+      held_[b.hold] = 0;
+      break;
+    case EventAction::kAddMass:
+      set_body_mass(mutable_model_, b.body, m_->body_mass[b.body] + e.mass_kg);
+      break;
+    case EventAction::kControllerOff:
+      controller_enabled_ = false;
+      break;
+    case EventAction::kControllerOn:
+      controller_enabled_ = true;
+      break;
+    case EventAction::kEnd:
+      end_message_ = "ended by event " + e.name;
+      break;
+    case EventAction::kMark:
+      break;
   }
 }
 
@@ -80,10 +91,14 @@ bool TrialRun::condition_holds(std::size_t k) const {
         if ((b1 == b.body_a && b2 == b.body_b) || (b1 == b.body_b && b2 == b.body_a)) return true;
       }
       return false;
-    case ConditionKind::kJointBelow: return d_->qpos[b.joint_qpos] < c.threshold;
-    case ConditionKind::kJointAbove: return d_->qpos[b.joint_qpos] > c.threshold;
-    case ConditionKind::kBodyBelow: return d_->xpos[3 * b.body_a + 2] < c.threshold;
-    case ConditionKind::kTime: return false;
+    case ConditionKind::kJointBelow:
+      return d_->qpos[b.joint_qpos] < c.threshold;
+    case ConditionKind::kJointAbove:
+      return d_->qpos[b.joint_qpos] > c.threshold;
+    case ConditionKind::kBodyBelow:
+      return d_->xpos[3 * b.body_a + 2] < c.threshold;
+    case ConditionKind::kTime:
+      return false;
   }
   return false;
 }
@@ -124,7 +139,7 @@ bool TrialRun::control_tick(double t) {
   try {
     controller_->update(in, &out_);
     if (std::isnan(first_trigger_s_) && first_window_open()) {
-      first_trigger_s_ = time_at(step_);   // recorded: the exact decimal time
+      first_trigger_s_ = time_at(step_);  // recorded: the exact decimal time
     }
     const std::vector<double>& p_cmd = external_pa_ ? *external_pa_ : out_.p_cmd_pa;
     for (std::size_t i = 0; i < n_; ++i) pneumatics_.set_command(static_cast<int>(i), p_cmd[i]);
@@ -179,7 +194,7 @@ void TrialRun::log_row(double t) {
     row_[c.length_est] = units::m_to_mm(r.length_est_m);
     row_[c.velocity_est] = units::m_to_mm(out_.velocity_m_s[i]);
     for (std::size_t k = 0; k < c.channels.size(); ++k) {
-      row_[c.channels[k]] = out_.channels[k][i];   // what the controller declares it logs
+      row_[c.channels[k]] = out_.channels[k][i];  // what the controller declares it logs
     }
     row_[c.pressure_sensor] = r.pressure_sensor_v;
     row_[c.gauge] = r.gauge_v;
@@ -222,10 +237,9 @@ bool TrialRun::physics_step(double t) {
       const double length = pam_muscle_length_at(m_, d_, act, taut, &free_length_[i]);
       // (an extensible line's stretch moves the muscle apart from the tendon: its length's
       // rate too)
-      const bool slack = taut < length, stretches = pam_line_axial_stiffness(m_, act) > 0.0;
-      const double velocity = slack || stretches
-                                  ? (length - muscle_length_m_[i]) / sc_.timestep_s
-                                  : d_->actuator_velocity[act];
+      const bool slack = taut<length, stretches = pam_line_axial_stiffness(m_, act)> 0.0;
+      const double velocity = slack || stretches ? (length - muscle_length_m_[i]) / sc_.timestep_s
+                                                 : d_->actuator_velocity[act];
       muscle_length_m_[i] = length;
       if (history_[i]) pam_commit_history(m_, d_, act, length);
       pneumatics_.set_kinematics(static_cast<int>(i), length, velocity);
@@ -235,7 +249,8 @@ bool TrialRun::physics_step(double t) {
     set_status("diverged", std::string("pneumatics: ") + e.what(), t);
     return false;
   }
-  for (std::size_t i = 0; i < n_; ++i) d_->userdata[i] = pneumatics_.pressure_pa(static_cast<int>(i));
+  for (std::size_t i = 0; i < n_; ++i)
+    d_->userdata[i] = pneumatics_.pressure_pa(static_cast<int>(i));
   return true;
 }
 
@@ -254,8 +269,8 @@ TrialSnapshot TrialRun::snapshot() {
   snapshot.data = d_;
   snapshot.time_s = time_at(step_);
   snapshot.hinge = tm_.joint.hinge;
-  snapshot.joint_position = tm_.joint.hinge ? units::rad_to_deg(joint_position())
-                                            : units::m_to_mm(joint_position());
+  snapshot.joint_position =
+      tm_.joint.hinge ? units::rad_to_deg(joint_position()) : units::m_to_mm(joint_position());
   snapshot.labels = &labels_;
   snapshot.pressure_pa = &pressure_pa_;
   snapshot.command_pa = &command_pa_;

@@ -61,7 +61,8 @@ void check_control_rate(const ControlStream& stream, double period_s, const std:
     if (std::fabs(step - period_s) <= 1e-6 * period_s) continue;
     throw InputError(path + ": line " + std::to_string(k + 2) + ": time_s steps " +
                      format_value(step) + " s from the line before, the control period is " +
-                     format_value(period_s) + " s (another rate, or a gap): resample the log "
+                     format_value(period_s) +
+                     " s (another rate, or a gap): resample the log "
                      "to the controller's rate");
   }
 }
@@ -112,8 +113,8 @@ void write_replay_plot(const std::string& png_path, const std::string& csv,
   GnuplotJob job;
   job.data_files.push_back({"replay.csv", csv});
   std::string logged;
-  for (std::size_t k = 0; k < stream.time_s.size() && !stream.muscles.empty() &&
-                          !stream.muscles[0].p_cmd_pa.empty();
+  for (std::size_t k = 0;
+       k < stream.time_s.size() && !stream.muscles.empty() && !stream.muscles[0].p_cmd_pa.empty();
        ++k) {
     logged += gp_num(stream.time_s[k]);
     for (const MuscleStream& m : stream.muscles) {
@@ -132,19 +133,20 @@ void write_replay_plot(const std::string& png_path, const std::string& csv,
       top += ", 'logged.dat' using 1:" + std::to_string(2 + j) + " with lines dt 2 title " +
              gp_quote(muscles[j] + " (log)");
     }
-    bottom += std::string(j ? ", " : "") + "'replay.csv' every ::1 using 1:" +
-              std::to_string(4 + 7 * j) + " with lines title " + gp_quote(muscles[j]) +
-              ", 'replay.csv' every ::1 using 1:($" + std::to_string(6 + 7 * j) +
-              "*50) with steps lt 0 notitle";
+    bottom += std::string(j ? ", " : "") +
+              "'replay.csv' every ::1 using 1:" + std::to_string(4 + 7 * j) + " with lines title " +
+              gp_quote(muscles[j]) + ", 'replay.csv' every ::1 using 1:($" +
+              std::to_string(6 + 7 * j) + "*50) with steps lt 0 notitle";
   }
   const double v_thr_mm_s = units::m_to_mm(config.reflex.ia.v_thr_m_s);
   if (config.kind == PAMCTL_KIND_REFLEX) {
     bottom += ", " + gp_num(v_thr_mm_s) + " with lines dt 3 title 'v_{thr}'";
   }
-  job.script = "set datafile separator ','\nset multiplot layout 2,1\nset grid\n"
-               "set ylabel 'command [MPa]'\nunset xlabel\n" + top + "\n" +
-               "set ylabel 'velocity [mm/s] (windows: steps)'\nset xlabel 'time [s]'\n" +
-               bottom + "\nunset multiplot\n";
+  job.script =
+      "set datafile separator ','\nset multiplot layout 2,1\nset grid\n"
+      "set ylabel 'command [MPa]'\nunset xlabel\n" +
+      top + "\n" + "set ylabel 'velocity [mm/s] (windows: steps)'\nset xlabel 'time [s]'\n" +
+      bottom + "\nunset multiplot\n";
   run_gnuplot(png_path, job);
 }
 

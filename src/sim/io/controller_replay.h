@@ -15,19 +15,19 @@
 namespace pamsim {
 
 struct ReplayComparison {
-  bool compared = false;            // the log holds every muscle's commands
-  long first_differing_tick = -1;   // -1: every command equal, bit for bit
+  bool compared = false;           // the log holds every muscle's commands
+  long first_differing_tick = -1;  // -1: every command equal, bit for bit
   double first_differing_time_s = 0.0;
   double largest_difference_pa = 0.0;
-  std::string largest_muscle;       // where the largest difference is
+  std::string largest_muscle;  // where the largest difference is
 };
 
 struct ReplaySummary {
   long ticks = 0;
-  std::vector<std::vector<double>> stretch_triggers_s;   // per muscle, the Ia windows' starts
-  std::vector<std::vector<double>> tension_triggers_s;   // and the Ib windows'
-  long flagged_ticks = 0;          // ticks with any PAMCTL_FLAG_* set
-  unsigned status = 0;             // the union of every tick's flags
+  std::vector<std::vector<double>> stretch_triggers_s;  // per muscle, the Ia windows' starts
+  std::vector<std::vector<double>> tension_triggers_s;  // and the Ib windows'
+  long flagged_ticks = 0;                               // ticks with any PAMCTL_FLAG_* set
+  unsigned status = 0;                                  // the union of every tick's flags
   ReplayComparison comparison;
 };
 

@@ -89,7 +89,7 @@ std::string c_value(std::int32_t v) { return std::to_string(v); }
 std::string c_value(bool v) { return v ? "true" : "false"; }
 std::string c_value(double v) {
   char buf[64];
-  std::snprintf(buf, sizeof(buf), "%a", v);   // exact
+  std::snprintf(buf, sizeof(buf), "%a", v);  // exact
   char decimal[40];
   std::snprintf(decimal, sizeof(decimal), "%.17g", v);
   return std::string("R(") + buf + ") /* " + decimal + " */";
@@ -163,12 +163,13 @@ std::string embedded_config_c(const pamctl_config& config, const std::vector<std
   for (std::size_t j = 0; j < muscles.size(); ++j) c << " " << j << " " << muscles[j];
   c << ". */\n#include \"pamctl_export.h\"\n\n"
     << "#if PAMCTL_MAX_MUSCLES < " << config.muscle_count << "\n#error \"this controller has "
-    << config.muscle_count << " muscles: build with PAMCTL_MAX_MUSCLES >= "
-    << config.muscle_count << "\"\n#endif\n\n"
+    << config.muscle_count << " muscles: build with PAMCTL_MAX_MUSCLES >= " << config.muscle_count
+    << "\"\n#endif\n\n"
        "#ifdef PAMCTL_FLOAT\n#define R(x) x##f\n#else\n#define R(x) x\n#endif\n\n"
        "void pamctl_export_config(pamctl_config* config) {\n"
        "  /* the muscles this controller does not have: unpaired, unused */\n"
-    << "  for (int j = " << config.muscle_count << "; j < PAMCTL_MAX_MUSCLES; ++j) "
+    << "  for (int j = " << config.muscle_count
+    << "; j < PAMCTL_MAX_MUSCLES; ++j) "
        "config->partner[j] = -1;\n";
   for_each_field(config, config.muscle_count, [&c](const std::string& path, const auto& field) {
     c << "  config->" << c_path(path) << " = " << c_value(field) << ";\n";

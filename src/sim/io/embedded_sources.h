@@ -9,7 +9,7 @@
 namespace pamsim {
 
 struct EmbeddedFile {
-  const char* path;   // in the export: pamctl/pamctl.h, Makefile, pamctl_export.h.in, ...
+  const char* path;  // in the export: pamctl/pamctl.h, Makefile, pamctl_export.h.in, ...
   const char* text;
 };
 

@@ -38,8 +38,10 @@ std::atomic<unsigned long> g_plot_counter{0};
 std::string sh_quote(const std::string& s) {
   std::string out = "'";
   for (char c : s) {
-    if (c == '\'') out += "'\\''";
-    else out += c;
+    if (c == '\'')
+      out += "'\\''";
+    else
+      out += c;
   }
   return out + "'";
 }
@@ -67,7 +69,8 @@ class TempDir {
   explicit TempDir(const std::string& png_path) {
     std::error_code ec;
     const fs::path base = fs::temp_directory_path(ec);
-    if (ec) throw std::runtime_error(png_path + ": no temp folder for gnuplot (" + ec.message() + ")");
+    if (ec)
+      throw std::runtime_error(png_path + ": no temp folder for gnuplot (" + ec.message() + ")");
     for (int attempt = 0; attempt < 100; ++attempt) {
       const fs::path p = base / ("pamsim_plot_" + std::to_string(::getpid()) + "_" +
                                  std::to_string(g_plot_counter++));
@@ -134,9 +137,12 @@ bool png_is_complete(const std::string& path) {
 std::string gp_quote(const std::string& s) {
   std::string out = "'";
   for (char c : s) {
-    if (c == '\'') out += "''";
-    else if (c == '\n') out += ' ';
-    else out += c;
+    if (c == '\'')
+      out += "''";
+    else if (c == '\n')
+      out += ' ';
+    else
+      out += c;
   }
   return out + "'";
 }
@@ -152,7 +158,7 @@ std::string gp_num(double v) {
 namespace {
 
 std::mutex g_formats_mutex;
-std::vector<std::string> g_extra_formats;   // set_extra_plot_formats
+std::vector<std::string> g_extra_formats;  // set_extra_plot_formats
 
 std::vector<std::string> extra_formats() {
   const std::lock_guard<std::mutex> lock(g_formats_mutex);
@@ -163,7 +169,8 @@ std::vector<std::string> extra_formats() {
 bool ends_with_text(const std::string& path, const std::string& tail) {
   std::string text = read_text(path);
   while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-  return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+  return text.size() >= tail.size() &&
+         text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
 }
 
 // Draws `job` with `terminal` into a temp file beside `path`, checked whole by `complete`,
@@ -173,7 +180,7 @@ std::unique_ptr<TempPath> draw(const std::string& gnuplot, const std::string& pa
                                bool (*complete)(const std::string&)) {
   const fs::path target = fs::absolute(path);
   const TempDir dir(path);
-  std::unique_ptr<TempPath> tmp_guard;   // exclusive, unpredictable; removed on any failure
+  std::unique_ptr<TempPath> tmp_guard;  // exclusive, unpredictable; removed on any failure
   try {
     tmp_guard = std::make_unique<TempPath>(target.string(), TempKind::kFile);
   } catch (const InputError& e) {
@@ -207,8 +214,8 @@ std::unique_ptr<TempPath> draw(const std::string& gnuplot, const std::string& pa
   if (!exited_ok || !complete(tmp)) {
     std::string why = first_error_line(read_text(dir.path() / "gnuplot.err"));
     if (why.empty()) {
-      why = rc == -1             ? std::string("cannot start a shell")
-            : !WIFEXITED(rc)     ? "killed by signal " + std::to_string(WTERMSIG(rc))
+      why = rc == -1               ? std::string("cannot start a shell")
+            : !WIFEXITED(rc)       ? "killed by signal " + std::to_string(WTERMSIG(rc))
             : WEXITSTATUS(rc) != 0 ? "exit status " + std::to_string(WEXITSTATUS(rc))
                                    : std::string("the image was not written whole (disk full?)");
     }
@@ -233,8 +240,8 @@ void run_gnuplot(const std::string& png_path, const GnuplotJob& job) {
   // gnuplot must exist and the target folder too (gnuplot's own message would name a temp file)
   const std::string gnuplot = find_gnuplot();
   if (gnuplot.empty()) {
-    throw std::runtime_error(png_path +
-                             ": gnuplot not found on PATH (install gnuplot-nox, pngcairo terminal)");
+    throw std::runtime_error(
+        png_path + ": gnuplot not found on PATH (install gnuplot-nox, pngcairo terminal)");
   }
   const fs::path target = fs::absolute(png_path);
   if (!fs::is_directory(target.parent_path())) {
@@ -256,7 +263,7 @@ void run_gnuplot(const std::string& png_path, const GnuplotJob& job) {
       drawn.emplace_back(draw(gnuplot, path, job, terminal.str(),
                               [](const std::string& p) { return ends_with_text(p, "</svg>"); }),
                          path);
-    } else {   // pdf: the same aspect, 100 px per inch
+    } else {  // pdf: the same aspect, 100 px per inch
       terminal << "set terminal pdfcairo size " << gp_num(job.width_px / 100.0) << ","
                << gp_num(job.height_px / 100.0) << " noenhanced font 'sans,11'";
       drawn.emplace_back(draw(gnuplot, path, job, terminal.str(),
@@ -266,8 +273,7 @@ void run_gnuplot(const std::string& png_path, const GnuplotJob& job) {
   }
   for (auto& [tmp, path] : drawn) {
     if (std::rename(tmp->path().c_str(), fs::absolute(path).c_str()) != 0) {
-      throw std::runtime_error(path + ": cannot move the plot into place: " +
-                               std::strerror(errno));
+      throw std::runtime_error(path + ": cannot move the plot into place: " + std::strerror(errno));
     }
     tmp->release();
   }

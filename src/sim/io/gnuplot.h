@@ -18,7 +18,7 @@ namespace pamsim {
 struct GnuplotJob {
   int width_px = 1200;
   int height_px = 900;
-  std::vector<std::pair<std::string, std::string>> data_files;   // name, content
+  std::vector<std::pair<std::string, std::string>> data_files;  // name, content
   std::string script;
 };
 

@@ -68,8 +68,8 @@ std::string grid_cells(std::ostringstream& s, const HeatMap& map, double lo, dou
     return t + ")\n";
   };
   s << tics("x", map.x_levels) << tics("y", map.y_levels)
-    << (nx > 8 ? "set xtics rotate by 45 right\n" : "")
-    << "set xrange [-0.5:" << gp_num(nx - 0.5) << "]\nset yrange [-0.5:" << gp_num(ny - 0.5) << "]\n"
+    << (nx > 8 ? "set xtics rotate by 45 right\n" : "") << "set xrange [-0.5:" << gp_num(nx - 0.5)
+    << "]\nset yrange [-0.5:" << gp_num(ny - 0.5) << "]\n"
     << "set tics scale 0\n";
   s << "plot 'cells.dat' using 1:2:(0.5):(0.5):3 with boxxyerror fc palette fs solid 1.0 "
        "border lc rgb 'white' notitle";
@@ -110,11 +110,13 @@ void write_heatmap(const std::string& png_path, const HeatMap& map) {
   std::ostringstream s;
   s << "set encoding utf8\nset title " << gp_quote(map.title) << " font ',14'\n"
     << "set xlabel " << gp_quote(map.x_label) << "\nset ylabel " << gp_quote(map.y_label) << "\n"
-    << "set cblabel " << gp_quote(map.value_label) << "\n"
+    << "set cblabel " << gp_quote(map.value_label)
+    << "\n"
     // viridis: dark is low, yellow is high; no data is grey
     << "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', 0.75 '#5ec962', "
        "1 '#fde725')\n"
-    << "set object 1 rectangle from graph 0,0 to graph 1,1 behind fc rgb '#d0d0d0' fs solid noborder\n"
+    << "set object 1 rectangle from graph 0,0 to graph 1,1 behind fc rgb '#d0d0d0' fs solid "
+       "noborder\n"
     << "set key outside bottom center horizontal\n";
   double lo, hi;
   colour_range(s, map, &lo, &hi);
@@ -131,13 +133,14 @@ void write_heatmap(const std::string& png_path, const HeatMap& map) {
     s << ", " << mark_plot << " title " << gp_quote(map.mark_label);
   }
   const bool any_missing =
-      !map.scattered && std::any_of(map.cells.begin(), map.cells.end(),
-                                    [](double v) { return !std::isfinite(v); });
+      !map.scattered &&
+      std::any_of(map.cells.begin(), map.cells.end(), [](double v) { return !std::isfinite(v); });
   if (any_missing && !map.missing_label.empty()) {
-    s << ", keyentry with boxes fc rgb '#d0d0d0' fs solid 1.0 title " << gp_quote(map.missing_label);
+    s << ", keyentry with boxes fc rgb '#d0d0d0' fs solid 1.0 title "
+      << gp_quote(map.missing_label);
   }
   s << "\n";
-  if (dat.empty()) dat = "nan nan nan\n";   // nothing to colour: gnuplot still draws the axes
+  if (dat.empty()) dat = "nan nan nan\n";  // nothing to colour: gnuplot still draws the axes
   job.data_files.emplace_back("cells.dat", dat);
   job.script = s.str();
   run_gnuplot(png_path, job);

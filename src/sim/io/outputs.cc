@@ -27,13 +27,12 @@ nlohmann::json number_or_null(double v) {
 namespace {
 
 nlohmann::json scenario_json(const Scenario& sc) {
-  nlohmann::json j = {
-      {"file", sc.path},
-      {"valve_model", valve_model_name(sc.valve_model)},
-      {"controller", sc.controller_kind},
-      {"timestep_s", sc.timestep_s},
-      {"control_hz", sc.control_hz}};
-  if (sc.controller) {   // the kind's own fields
+  nlohmann::json j = {{"file", sc.path},
+                      {"valve_model", valve_model_name(sc.valve_model)},
+                      {"controller", sc.controller_kind},
+                      {"timestep_s", sc.timestep_s},
+                      {"control_hz", sc.control_hz}};
+  if (sc.controller) {  // the kind's own fields
     for (const SummaryField& f : sc.controller->summary_fields()) {
       std::visit([&](const auto& value) { j[f.key] = value; }, f.value);
     }
@@ -59,7 +58,7 @@ std::string trajectory_to_csv(const Trajectory& tr) {
       const double v = tr.at(r, c);
       if (c) out += ',';
       if (std::isfinite(v)) {
-        out.append(buf, std::to_chars(buf, buf + sizeof(buf), v).ptr);   // format_shortest's form
+        out.append(buf, std::to_chars(buf, buf + sizeof(buf), v).ptr);  // format_shortest's form
       } else {
         out += "nan";
       }
@@ -172,17 +171,17 @@ void make_directories(const std::string& dir) {
 FolderGuard::FolderGuard(const std::string& dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  std::vector<fs::path> missing;   // innermost first
+  std::vector<fs::path> missing;  // innermost first
   for (fs::path p = fs::path(dir).lexically_normal(); !p.empty() && !fs::exists(p, ec);
        p = p.parent_path()) {
-    if (!fs::is_symlink(p, ec)) missing.push_back(p);   // (a dangling link: mkdir says so)
+    if (!fs::is_symlink(p, ec)) missing.push_back(p);  // (a dangling link: mkdir says so)
     if (p == p.parent_path() || p.parent_path().empty()) break;
   }
   for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
     if (fs::create_directory(*it, ec)) {
       made_.push_back(it->string());
     } else if (ec) {
-      break;   // make_directories below says why
+      break;  // make_directories below says why
     }
   }
   try {

@@ -56,11 +56,11 @@ class FolderGuard {
   ~FolderGuard();
   FolderGuard(const FolderGuard&) = delete;
   FolderGuard& operator=(const FolderGuard&) = delete;
-  void keep() { made_.clear(); }   // an output is in place: the folders stay
+  void keep() { made_.clear(); }  // an output is in place: the folders stay
 
  private:
   void remove_made();
-  std::vector<std::string> made_;   // the folders made here, outermost first
+  std::vector<std::string> made_;  // the folders made here, outermost first
 };
 
 // DIR/trajectory.csv and DIR/summary.json.

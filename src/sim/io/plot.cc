@@ -23,8 +23,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // the band plots' runs, in order, then repeating
-constexpr const char* kBandColours[] = {"#2166ac", "#c0392b", "#1b9e77", "#7570b3",
-                                        "#d95f02", "#e7298a"};
+constexpr const char* kBandColours[] = {"#2166ac", "#c0392b", "#1b9e77",
+                                        "#7570b3", "#d95f02", "#e7298a"};
 
 // the band plot body shared by angle_band.png and compare.png
 GnuplotJob band_job(const std::vector<BandSeries>& runs, const std::string& title,
@@ -52,8 +52,8 @@ GnuplotJob band_job(const std::vector<BandSeries>& runs, const std::string& titl
   // axes (the joint of the first run: compare checks they agree); a fixed y range if no value
   // is finite (gnuplot refuses an all-missing plot)
   s << "set title " << gp_quote(title) << " font ',14'\n"
-    << "set xlabel 'time (s)'\nset ylabel '" << runs.front().quantity << " ("
-    << runs.front().unit << ")'\nset grid\n"
+    << "set xlabel 'time (s)'\nset ylabel '" << runs.front().quantity << " (" << runs.front().unit
+    << ")'\nset grid\n"
     << "set key top right box opaque width 2\n"
     << xrange_line(all_time);
   double lo, hi;
@@ -169,8 +169,9 @@ void use_plot_formats(const std::string& text) {
     }
   }
   if (!ok) {
-    throw InputError("--plot-format must be png, svg, pdf or a comma-separated list of them, got '" +
-                     text + "'");
+    throw InputError(
+        "--plot-format must be png, svg, pdf or a comma-separated list of them, got '" + text +
+        "'");
   }
   set_extra_plot_formats(extra);
 }
@@ -186,7 +187,7 @@ std::vector<std::string> plot_formats(const std::string& text) {
 std::vector<std::string> plot_file_names(const std::vector<std::string>& png_names) {
   std::vector<std::string> names;
   for (const std::string& png : png_names) {
-    const std::string stem = png.substr(0, png.size() - 4);   // "angle.png", "heatmap_*.png"
+    const std::string stem = png.substr(0, png.size() - 4);  // "angle.png", "heatmap_*.png"
     for (const char* ext : {".png", ".svg", ".pdf"}) names.push_back(stem + ext);
   }
   return names;
@@ -205,8 +206,7 @@ std::string trial_plot_name(const Trajectory& tr) {
 }
 
 void write_angle_band_plot(const std::string& png_path,
-                           const std::vector<const Trajectory*>& trials,
-                           const Scenario& scenario) {
+                           const std::vector<const Trajectory*>& trials, const Scenario& scenario) {
   if (trials.empty()) throw std::runtime_error(png_path + ": no trajectories to plot");
   const std::string name = fs::path(scenario.path).stem().string();
   const BandSeries band = angle_band(trials, name.empty() ? "angle" : name);
@@ -230,13 +230,14 @@ void write_compare_plot(const std::string& png_path, const std::vector<BandSerie
     }
     if (b.mean.size() != b.time_s.size() || b.min.size() != b.time_s.size() ||
         b.max.size() != b.time_s.size()) {
-      throw std::invalid_argument(png_path + ": band '" + b.label + "' has columns of different lengths");
+      throw std::invalid_argument(png_path + ": band '" + b.label +
+                                  "' has columns of different lengths");
     }
     if (b.time_s.empty()) throw std::runtime_error(png_path + ": band '" + b.label + "' is empty");
     title += (k ? " vs " : "") + b.label;
   }
-  const bool bands = std::any_of(runs.begin(), runs.end(),
-                                 [](const BandSeries& b) { return b.trials > 1; });
+  const bool bands =
+      std::any_of(runs.begin(), runs.end(), [](const BandSeries& b) { return b.trials > 1; });
   run_gnuplot(png_path, band_job(runs, bands ? title + " (mean and range)" : title, kNaN));
 }
 

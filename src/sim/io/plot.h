@@ -20,20 +20,20 @@
 namespace pamsim {
 
 // Image sizes [px].
-inline constexpr int kAnglePlotWidthPx = 1200;   // angle.png
+inline constexpr int kAnglePlotWidthPx = 1200;  // angle.png
 inline constexpr int kAnglePlotHeightPx = 900;
-inline constexpr int kBandPlotWidthPx = 1200;    // angle_band.png and compare.png
+inline constexpr int kBandPlotWidthPx = 1200;  // angle_band.png and compare.png
 inline constexpr int kBandPlotHeightPx = 800;
-inline constexpr int kHeatMapWidthPx = 1100;     // heatmap_*.png
+inline constexpr int kHeatMapWidthPx = 1100;  // heatmap_*.png
 inline constexpr int kHeatMapHeightPx = 900;
 
 // The joint over repeated trials, per time row: mean, min and max of its column (angle_deg
 // of a hinge, position_mm of a slide) over the trials where it is finite (NaN where none
 // is). time_s is the first trial's; trials of different lengths are cut to the shortest.
 struct BandSeries {
-  std::string label;        // legend text
-  std::size_t trials = 0;   // how many trajectories went in
-  std::string quantity = "angle", unit = "deg";   // "position", "mm" for a slide joint
+  std::string label;                             // legend text
+  std::size_t trials = 0;                        // how many trajectories went in
+  std::string quantity = "angle", unit = "deg";  // "position", "mm" for a slide joint
   std::vector<double> time_s, mean, min, max;
 };
 
@@ -96,8 +96,7 @@ std::vector<std::string> plot_file_names(const std::vector<std::string>& png_nam
 void write_angle_plot(const std::string& png_path, const TrialResult& trial,
                       const Scenario& scenario);
 void write_angle_band_plot(const std::string& png_path,
-                           const std::vector<const Trajectory*>& trials,
-                           const Scenario& scenario);
+                           const std::vector<const Trajectory*>& trials, const Scenario& scenario);
 // Two (or more) runs' bands on one axis, one colour each, with a legend.
 void write_compare_plot(const std::string& png_path, const std::vector<BandSeries>& runs);
 // The gnuplot plot items of bands (band_<k>.dat): each band of two or more trials as its

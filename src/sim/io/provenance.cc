@@ -11,7 +11,7 @@
 #include "base/input_error.h"
 #include "base/toml_file.h"
 #include "sim/io/build_info.h"
-#include "sim/io/outputs.h"   // number_or_null
+#include "sim/io/outputs.h"  // number_or_null
 
 namespace pamsim {
 namespace {
@@ -41,7 +41,7 @@ std::string hex64(std::uint64_t v) {
 // size (read_text_file: a path in a hand-edited provenance.json to /dev/zero is refused,
 // not read forever).
 bool fingerprint(const std::string& path, std::uint64_t* bytes, std::string* hash) {
-  if (path == "-") return false;   // standard input: nothing to read again
+  if (path == "-") return false;  // standard input: nothing to read again
   std::string text;
   try {
     text = read_text_file(path);

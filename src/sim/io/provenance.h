@@ -32,12 +32,12 @@ struct InputFile {
   std::string key;
   std::string path;
   std::uint64_t bytes = 0;
-  std::string fnv1a64;   // 16 hex digits
+  std::string fnv1a64;  // 16 hex digits
 };
 // The files the scenario's path keys name (model, pneumatics, calibration, params, plants,
 // schedule tables), fingerprinted now.
-std::vector<InputFile> fingerprint_inputs(const std::vector<std::pair<std::string, std::string>>&
-                                              key_paths);
+std::vector<InputFile> fingerprint_inputs(
+    const std::vector<std::pair<std::string, std::string>>& key_paths);
 // "model.calibration (models/x.toml) changed since DIR's run" for each input of `earlier`
 // whose file now differs (or is gone); empty if none.
 std::vector<std::string> changed_inputs(const std::vector<InputFile>& earlier);
@@ -70,23 +70,23 @@ std::vector<std::pair<std::string, std::string>> database_provenance_meta();
 struct TrialTiming {
   std::uint64_t seed = 0;
   double wall_time_s = 0;
-  double realtime_factor = 0;   // simulated s per wall-clock s
+  double realtime_factor = 0;  // simulated s per wall-clock s
 };
 
 // A trial's wall time and real-time factor, from its summary's timing metrics.
 TrialTiming timing_of(const TrialSummary& summary);
 
 struct Provenance {
-  std::string command;                  // "run", "validate", ...
-  std::string scenario_file;            // as given on the command line
-  std::vector<std::string> overrides;   // --set key=value, in order
-  std::string from;                     // `run --from DIR`: the folder it reproduces
+  std::string command;                 // "run", "validate", ...
+  std::string scenario_file;           // as given on the command line
+  std::vector<std::string> overrides;  // --set key=value, in order
+  std::string from;                    // `run --from DIR`: the folder it reproduces
   std::vector<std::uint64_t> seeds;
   int threads = 1;
-  std::string started_utc;              // ISO 8601
-  double wall_time_s = 0;               // the whole command
+  std::string started_utc;  // ISO 8601
+  double wall_time_s = 0;   // the whole command
   std::vector<TrialTiming> trials;
-  std::vector<InputFile> inputs;        // the files the scenario read
+  std::vector<InputFile> inputs;  // the files the scenario read
   // read back by read_provenance from "build" (written by provenance_to_json)
   std::string pamsim_version, git_commit;
 };

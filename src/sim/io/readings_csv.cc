@@ -56,8 +56,8 @@ double cell_value(const std::string& cell, const Source& s, int line, const std:
     return kNaN;
   }
   throw InputError(path + ": line " + std::to_string(line) + ", column " + s.name + ": '" + t +
-                   "' is not a number" + (may_be_missing ? " (nan or empty: a missing reading)"
-                                                         : ""));
+                   "' is not a number" +
+                   (may_be_missing ? " (nan or empty: a missing reading)" : ""));
 }
 
 Header read_header(const std::string& line, const std::string& path) {
@@ -93,8 +93,10 @@ void read_row(const std::vector<std::string>& cells, int line, const std::string
   if (enabled.index >= 0) {
     const double e = cell_value(cells[enabled.index], enabled, line, path, false, &ignored);
     if (e != 0.0 && e != 1.0) {
-      throw InputError(path + ": line " + std::to_string(line) + ", column enabled: must be 0 "
-                       "or 1, got " + format_value(e));
+      throw InputError(path + ": line " + std::to_string(line) +
+                       ", column enabled: must be 0 "
+                       "or 1, got " +
+                       format_value(e));
     }
     on = e == 1.0 ? 1 : 0;
   }
@@ -103,10 +105,12 @@ void read_row(const std::vector<std::string>& cells, int line, const std::string
   for (std::size_t j = 0; j < src.size(); ++j) {
     const MuscleSources& s = src[j];
     MuscleStream& m = out->muscles[j];
-    m.pressure_v.push_back(cell_value(cells[s.pressure.index], s.pressure, line, path, true, missing));
+    m.pressure_v.push_back(
+        cell_value(cells[s.pressure.index], s.pressure, line, path, true, missing));
     m.gauge_v.push_back(cell_value(cells[s.gauge.index], s.gauge, line, path, true, missing));
     m.fiber_rate_m_s.push_back(
-        s.fiber.index < 0 ? 0.0 : cell_value(cells[s.fiber.index], s.fiber, line, path, true, missing));
+        s.fiber.index < 0 ? 0.0
+                          : cell_value(cells[s.fiber.index], s.fiber, line, path, true, missing));
     if (s.p_tp.index >= 0) {
       m.p_tp_pa.push_back(cell_value(cells[s.p_tp.index], s.p_tp, line, path, false, &ignored));
     }
@@ -123,8 +127,8 @@ using namespace readings_csv_cells;
 std::vector<std::string> readings_columns(const std::vector<std::string>& muscles) {
   std::vector<std::string> names = {"time_s", "enabled"};
   for (const std::string& m : muscles) {
-    for (const char* c : {"pressure_sensor_%_V", "gauge_%_V", "fiber_rate_%_m_s", "p_tp_%_Pa",
-                          "p_cmd_%_Pa"}) {
+    for (const char* c :
+         {"pressure_sensor_%_V", "gauge_%_V", "fiber_rate_%_m_s", "p_tp_%_Pa", "p_cmd_%_Pa"}) {
       std::string name = c;
       name.replace(name.find('%'), 1, m);
       names.push_back(name);

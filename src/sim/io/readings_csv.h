@@ -27,17 +27,17 @@ namespace pamsim {
 struct MuscleStream {
   std::vector<double> pressure_v;
   std::vector<double> gauge_v;
-  std::vector<double> fiber_rate_m_s;   // zeros when the log has no fiber column
-  std::vector<double> p_tp_pa;          // empty: the log has none
-  std::vector<double> p_cmd_pa;         // empty: the log has none
+  std::vector<double> fiber_rate_m_s;  // zeros when the log has no fiber column
+  std::vector<double> p_tp_pa;         // empty: the log has none
+  std::vector<double> p_cmd_pa;        // empty: the log has none
 };
 
 struct ControlStream {
   std::vector<double> time_s;
-  std::vector<char> enabled;            // all 1 when the log has no column
+  std::vector<char> enabled;  // all 1 when the log has no column
   bool has_enabled = false;
-  std::vector<MuscleStream> muscles;    // in the order asked for
-  int missing_readings = 0;             // NaN or empty reading cells
+  std::vector<MuscleStream> muscles;  // in the order asked for
+  int missing_readings = 0;           // NaN or empty reading cells
 };
 
 // The header of readings.csv for these muscles' labels.

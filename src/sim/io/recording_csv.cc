@@ -22,13 +22,17 @@ void read_header(const std::string& line, const std::string& where, Recording* r
   *time_column = names.size();
   for (std::size_t i = 0; i < names.size(); ++i) {
     const std::string name = trim_cell(names[i]);
-    if (name.empty()) throw InputError(where + ": column " + std::to_string(i + 1) + " has no name");
+    if (name.empty())
+      throw InputError(where + ": column " + std::to_string(i + 1) + " has no name");
     if (!seen.insert(name).second) throw InputError(where + ": column " + name + " is named twice");
-    if (name == "time_s") *time_column = i;
-    else r->channels.push_back(name);
+    if (name == "time_s")
+      *time_column = i;
+    else
+      r->channels.push_back(name);
   }
   if (*time_column == names.size()) {
-    throw InputError(where + ": the header has no time_s column (columns: " + trim_cell(line) + ")");
+    throw InputError(where + ": the header has no time_s column (columns: " + trim_cell(line) +
+                     ")");
   }
   if (r->channels.empty()) throw InputError(where + ": the header names no channel besides time_s");
   r->samples.resize(r->channels.size());
@@ -44,7 +48,8 @@ void read_row(const std::string& line, const std::string& where, std::size_t tim
   }
   double t = 0.0;
   if (!parse_finite_cell(cells[time_column], &t)) {
-    throw InputError(where + ": time_s must be a finite number, got \"" + trim_cell(cells[time_column]) + "\"");
+    throw InputError(where + ": time_s must be a finite number, got \"" +
+                     trim_cell(cells[time_column]) + "\"");
   }
   if (t < 0.0) throw InputError(where + ": time_s must be >= 0, got " + format_value(t));
   if (!r->time_s.empty() && !(t > r->time_s.back())) {

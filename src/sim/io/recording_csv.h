@@ -22,7 +22,7 @@ struct Recording {
   std::vector<std::vector<double>> samples;  // per channel, per row; NaN where the cell is empty
 
   std::size_t channel(const std::string& name) const;   // index, or channels.size()
-  std::size_t sample_count(std::size_t channel) const;   // its non-empty cells
+  std::size_t sample_count(std::size_t channel) const;  // its non-empty cells
 };
 
 // Throws InputError "<path>: <problem>" or "<path>: line <n>: <problem>".

@@ -94,7 +94,7 @@ void create_sqlite_file(const std::string& path, const std::string& what,
                        "; remove it to make a new one there");
     }
   }
-  std::unique_ptr<TempPath> tmp_guard;   // removes the temp name however this ends
+  std::unique_ptr<TempPath> tmp_guard;  // removes the temp name however this ends
   try {
     tmp_guard = std::make_unique<TempPath>(path, TempKind::kFile);
   } catch (const InputError&) {
@@ -117,8 +117,8 @@ void create_sqlite_file(const std::string& path, const std::string& what,
   const bool synced = fd >= 0 && ::fsync(fd) == 0;
   if (fd >= 0) ::close(fd);
   if (!synced) {
-    throw std::runtime_error(path + ": cannot create the " + what + " (fsync: " +
-                             std::strerror(errno) + ")");
+    throw std::runtime_error(path + ": cannot create the " + what +
+                             " (fsync: " + std::strerror(errno) + ")");
   }
   if (::link(tmp.c_str(), path.c_str()) != 0) {
     throw InputError(path + ": cannot create the " + what + " (" + std::strerror(errno) + ")");
@@ -148,7 +148,7 @@ sqlite3* open_sqlite_file(const std::string& path, DbAccess access, const std::s
                        "results a killed run left uncommitted to the file: copy both to a "
                        "writable folder to read them");
     }
-    name = uri_of(path, "immutable=1");   // no locks, no -shm: readable on read-only media
+    name = uri_of(path, "immutable=1");  // no locks, no -shm: readable on read-only media
     flags |= SQLITE_OPEN_URI;
   }
   sqlite3* db = nullptr;
@@ -253,7 +253,7 @@ Statement SqliteDb::prepare(const std::string& sql, const std::string& what) con
 
 std::string SqliteDb::meta(const std::string& key) const {
   Statement s = prepare_statement(db_, "SELECT value FROM meta WHERE key = ?");
-  if (!s) return "";   // no meta table: not a pamsim database
+  if (!s) return "";  // no meta table: not a pamsim database
   sqlite3_bind_text(s.get(), 1, key.c_str(), -1, SQLITE_TRANSIENT);
   if (sqlite3_step(s.get()) != SQLITE_ROW) return "";
   const auto* text = sqlite3_column_text(s.get(), 0);
@@ -275,7 +275,7 @@ void SqliteDb::become_writer(const std::string& busy, const std::string& what) {
   // flock(2), independent of SQLite's fcntl locks
   const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0 || ::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-    const int error = errno;   // before close() can change it
+    const int error = errno;  // before close() can change it
     if (fd >= 0) ::close(fd);
     throw InputError(path_ + (error == EWOULDBLOCK ? ": " + busy
                                                    : ": cannot lock the " + what + " (" +

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "sim/io/outputs.h"
-#include "sim/io/provenance.h"   // utc_timestamp, for created_utc
+#include "sim/io/provenance.h"  // utc_timestamp, for created_utc
 
 struct sqlite3;
 struct sqlite3_stmt;

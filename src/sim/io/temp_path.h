@@ -16,7 +16,7 @@ class TempPath {
   // Creates the temp file (empty) or folder. Throws InputError "<output>: cannot write
   // (why)" when the folder is missing or not writable.
   TempPath(const std::string& output, TempKind kind);
-  ~TempPath();   // removes the file or folder (recursively) unless released
+  ~TempPath();  // removes the file or folder (recursively) unless released
   TempPath(const TempPath&) = delete;
   TempPath& operator=(const TempPath&) = delete;
 

@@ -17,7 +17,8 @@ std::vector<std::string> split_cells(const std::string& line) {
   std::size_t begin = 0;
   while (true) {
     const std::size_t end = line.find(',', begin);
-    std::string cell = line.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+    std::string cell =
+        line.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
     const auto b = cell.find_first_not_of(" \t");
     const auto e = cell.find_last_not_of(" \t");
     cells.push_back(b == std::string::npos ? "" : cell.substr(b, e - b + 1));
@@ -84,8 +85,8 @@ Trajectory read_trajectory_csv(const std::string& path) {
     for (std::size_t c = 0; c < cells.size(); ++c) {
       double v = 0;
       if (!parse_number(cells[c], v)) {
-        throw InputError(path + ": line " + std::to_string(line_no) + ", column " +
-                         tr.columns[c] + ": '" + cells[c] + "' is not a number");
+        throw InputError(path + ": line " + std::to_string(line_no) + ", column " + tr.columns[c] +
+                         ": '" + cells[c] + "' is not a number");
       }
       tr.values.push_back(v);
     }

@@ -61,7 +61,7 @@ std::vector<std::string> muscle_labels(const Trajectory& tr) {
 // What the single-trial figure draws: the joint, each muscle's command and chamber
 // pressure (in pairs, in the order of `labels`) and its reflex windows.
 struct AnglePlotColumns {
-  std::string joint;   // angle_deg or position_mm
+  std::string joint;  // angle_deg or position_mm
   bool hinge = false;
   std::vector<double> t, q;
   std::vector<std::string> labels;
@@ -100,8 +100,8 @@ std::string angle_plot_data(const AnglePlotColumns& c) {
 
 // title: scenario file, seed, status (and why, when not ok)
 std::string angle_plot_title(const Scenario& scenario, const TrialSummary& sum) {
-  std::string title = file_name(scenario.path) + ", seed " + std::to_string(sum.seed) + ", " +
-                      sum.status;
+  std::string title =
+      file_name(scenario.path) + ", seed " + std::to_string(sum.seed) + ", " + sum.status;
   if (sum.status != "ok" && !sum.message.empty()) {
     title += ": " + (sum.message.size() > 80 ? sum.message.substr(0, 77) + "..." : sum.message);
   }
@@ -153,13 +153,14 @@ void pressure_panel(std::ostringstream& s, const AnglePlotColumns& c) {
   std::vector<double> all_p;
   for (const auto& p : c.pressure) all_p.insert(all_p.end(), p.begin(), p.end());
   if (!finite_range(all_p, lo, hi)) s << "set yrange [0:1]\n";
-  if (c.labels.empty()) s << "set label 1 'no muscles' at graph 0.5, 0.5 center\nplot NaN notitle\n";
+  if (c.labels.empty())
+    s << "set label 1 'no muscles' at graph 0.5, 0.5 center\nplot NaN notitle\n";
   for (std::size_t j = 0; j < c.labels.size(); ++j) {
     const char* colour = kMuscleColour[j % kPalette];
     s << (j == 0 ? "plot " : ", ") << "'angle.dat' using 1:" << 3 + 2 * j
-      << " with lines dt 2 lw 1.5 lc rgb '" << colour << "' title " << gp_quote(c.labels[j] + " command")
-      << ", '' using 1:" << 4 + 2 * j << " with lines lw 2 lc rgb '" << colour << "' title "
-      << gp_quote(c.labels[j] + " chamber");
+      << " with lines dt 2 lw 1.5 lc rgb '" << colour << "' title "
+      << gp_quote(c.labels[j] + " command") << ", '' using 1:" << 4 + 2 * j
+      << " with lines lw 2 lc rgb '" << colour << "' title " << gp_quote(c.labels[j] + " chamber");
   }
   s << "\nunset multiplot\n";
 }

@@ -44,7 +44,7 @@ class IdentifyObjective : public Objective {
     std::vector<double> r = residuals_.at(e.unit, "global");
     if (projection_.projects() && !r.empty()) {
       e.unit = projection_.project(e.unit, r);
-      r = residuals_.at(e.unit, "global");   // the same trials, other offsets
+      r = residuals_.at(e.unit, "global");  // the same trials, other offsets
     }
     e.values = residuals_.values_at(e.unit);
     const double cost = sum_of_squares(r);
@@ -93,7 +93,7 @@ std::vector<std::vector<double>> global_search(const IdentifyDefinition& def,
   IdentifyObjective objective(residuals, projection);
   if (projection.searched().empty()) return {objective.evaluate(0, {}).unit};
   std::vector<Evaluation> history;
-  struct Recorder : Objective {   // keeps every evaluation for the best one
+  struct Recorder : Objective {  // keeps every evaluation for the best one
     IdentifyObjective& inner;
     std::vector<Evaluation>& out;
     const IdentifyRunOptions& options;
@@ -193,7 +193,7 @@ void polish(const IdentifyDefinition& def, PolishProblem& p, const IdentifyRunOp
   o.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
   o.linear_solver_type = ceres::DENSE_QR;
   o.max_num_iterations = def.polish_iterations;
-  o.num_threads = 1;   // the recordings of each point run in parallel instead
+  o.num_threads = 1;  // the recordings of each point run in parallel instead
   // With bounds, Ceres searches along each step before it tries it (a projected Armijo line
   // search, trust_region_minimizer.cc). With its default cubic interpolation the search asks
   // for the gradient at each trial step, here a whole Jacobian of differences (two trials per
@@ -279,8 +279,14 @@ void add_tensile_fits(const IdentifyDefinition& def, const std::vector<double>& 
     std::string failure;
     const std::vector<double> before = tensile_forces(def, t, def.overrides, &failure);
     const std::vector<double> after = tensile_forces(def, t, def.overrides_at(values), &failure);
-    fits->push_back({"tensile_" + t.muscle, "force_N", false, t.rows.size(),
-                     rms_difference(before, recorded), rms_difference(after, recorded), {}, {}});
+    fits->push_back({"tensile_" + t.muscle,
+                     "force_N",
+                     false,
+                     t.rows.size(),
+                     rms_difference(before, recorded),
+                     rms_difference(after, recorded),
+                     {},
+                     {}});
   }
 }
 
@@ -300,7 +306,8 @@ std::vector<ChannelFit> channel_fits(const IdentifyDefinition& def,
   std::vector<double> ideal = values;
   for (std::size_t k = 0; k < ideal.size(); ++k) {
     const ChannelParameter::Kind kind = def.channel_parameters[k].kind;
-    if (kind != ChannelParameter::Kind::kNone) ideal[k] = kind == ChannelParameter::Kind::kGain ? 1.0 : 0.0;
+    if (kind != ChannelParameter::Kind::kNone)
+      ideal[k] = kind == ChannelParameter::Kind::kGain ? 1.0 : 0.0;
   }
   std::vector<ChannelFit> fits;
   for (std::size_t i = 0; i < n; ++i) {
@@ -310,8 +317,10 @@ std::vector<ChannelFit> channel_fits(const IdentifyDefinition& def,
     const std::vector<double> before = channel_rmse(r, sampled_before);
     const std::vector<double> after = channel_rmse(r, sampled_after);
     for (std::size_t c = 0; c < r.channels.size(); ++c) {
-      ChannelFit f{r.name, r.data.channels[r.channels[c]], r.held_out,
-                   r.data.sample_count(r.channels[c]), before[c], after[c], {}, {}};
+      ChannelFit f{r.name,     r.data.channels[r.channels[c]],
+                   r.held_out, r.data.sample_count(r.channels[c]),
+                   before[c],  after[c],
+                   {},         {}};
       if (!sampled_before.empty()) f.before = sampled_before[c];
       if (!sampled_after.empty()) f.after = sampled_after[c];
       judge_channel(r.data.samples[r.channels[c]], r.noise[c], def.explained_noise_factor, &f);
@@ -340,8 +349,10 @@ IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
   result.unit = result.starts[result.best_start].end;
   result.cost_final = result.starts[result.best_start].cost;
   if (!std::isfinite(result.cost_final) && !result.interrupted) {
-    throw InputError(def.file + ": no point of the search ran its recordings' trials to the end "
-                     "(the first failure: " + residuals.first_failure() + ")");
+    throw InputError(def.file +
+                     ": no point of the search ran its recordings' trials to the end "
+                     "(the first failure: " +
+                     residuals.first_failure() + ")");
   }
   result.polish_s = seconds_since(t0);
   result.simulated = residuals.simulated;
@@ -366,12 +377,12 @@ IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
     return residuals.at(unit, "interval");
   };
   fill_roughness(residuals_at, result.unit, &result);
-  fill_interval_uncertainty(residuals_at, jacobian, at_result, residuals.segments(),
-                            result.unit, def.interval, &result);
+  fill_interval_uncertainty(residuals_at, jacobian, at_result, residuals.segments(), result.unit,
+                            def.interval, &result);
   result.fits = channel_fits(def, values, options.threads);
   result.check_s = seconds_since(t0);
   result.simulated = residuals.simulated;
-  result.cached = residuals.cached;   // (the checks' simulations are not stored)
+  result.cached = residuals.cached;  // (the checks' simulations are not stored)
   return result;
 }
 

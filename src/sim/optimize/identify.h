@@ -26,22 +26,22 @@ namespace pamsim {
 
 struct IdentifyRunOptions {
   int threads = 1;
-  const std::atomic<bool>* stop = nullptr;   // set: stop after the simulation in flight
+  const std::atomic<bool>* stop = nullptr;  // set: stop after the simulation in flight
   std::function<void(const std::string& phase, std::int64_t points)> on_progress;
 };
 
 struct IdentifiedParameter {
   SearchParameter parameter;
-  double start = 0.0;           // the model's value before (NaN: unknown)
+  double start = 0.0;  // the model's value before (NaN: unknown)
   double value = 0.0;
-  double std_error = 0.0;       // HAC (identify_uncertainty.h); NaN when not determined
-  double std_error_plain = 0.0; // s^2 (J^T J)^-1, for comparison; NaN when not determined
+  double std_error = 0.0;        // HAC (identify_uncertainty.h); NaN when not determined
+  double std_error_plain = 0.0;  // s^2 (J^T J)^-1, for comparison; NaN when not determined
   // the interval of the file's level (identify_file.h: interval, 0.95 unless it says) from
   // std_error; NaN: none
   double interval_lo = 0.0, interval_hi = 0.0;
-  bool at_bound = false;        // within 0.1 % of the box's edge
-  bool identifiable = true;     // false: the recordings do not determine it
-  std::vector<std::pair<std::string, double>> correlated;   // |correlation| > 0.9
+  bool at_bound = false;     // within 0.1 % of the box's edge
+  bool identifiable = true;  // false: the recordings do not determine it
+  std::vector<std::pair<std::string, double>> correlated;  // |correlation| > 0.9
   // the model's numerical roughness along the parameter at the result: its residuals' second
   // difference over their first (identify_uncertainty.h); above kRoughnessLimit its standard
   // error is not to be trusted. NaN: not measured (one-sided, or the differences vanish)
@@ -53,15 +53,15 @@ struct ChannelFit {
   std::string recording, channel;
   bool held_out = false;
   std::size_t samples = 0;
-  double rmse_before = 0.0, rmse_after = 0.0;   // in the channel's unit
-  std::vector<double> before, after;            // simulated at the recording's times (NaN: gap)
+  double rmse_before = 0.0, rmse_after = 0.0;  // in the channel's unit
+  std::vector<double> before, after;           // simulated at the recording's times (NaN: gap)
   // the recorded channel's white noise in its unit, and the Ljung-Box p-value of the
   // residuals after (identify_uncertainty.h); NaN: unknown (too few samples, a tensile test)
   double noise_floor = std::numeric_limits<double>::quiet_NaN();
   double whiteness_p = std::numeric_limits<double>::quiet_NaN();
-  bool explained = true;         // RMSE after within explained_noise_factor noise floors
-  bool judged = true;            // false: too few samples to estimate the floor, so whether
-                                 // the model explains the channel is unknown (explained false)
+  bool explained = true;  // RMSE after within explained_noise_factor noise floors
+  bool judged = true;     // false: too few samples to estimate the floor, so whether
+                          // the model explains the channel is unknown (explained false)
 };
 
 // The polish's starts are CMA-ES's best points that lie at least this fraction of the box
@@ -70,26 +70,26 @@ inline constexpr double kStartSpacing = 0.1;
 
 // Where one of the polish's starts ended (IdentifyDefinition::starts).
 struct PolishEnd {
-  std::vector<double> start, end;   // in the unit box
-  double cost = 0.0;                // sum of squared residuals at the end
+  std::vector<double> start, end;  // in the unit box
+  double cost = 0.0;               // sum of squared residuals at the end
   bool converged = false;
 };
 
 struct IdentifyResult {
-  std::vector<double> unit;                     // the identified point in the unit box
+  std::vector<double> unit;  // the identified point in the unit box
   std::vector<IdentifiedParameter> parameters;
   std::vector<ChannelFit> fits;
-  double cost_global = 0.0, cost_final = 0.0;   // sum of squared residuals (identify_residuals.h)
+  double cost_global = 0.0, cost_final = 0.0;  // sum of squared residuals (identify_residuals.h)
   std::size_t residuals = 0;
-  std::int64_t simulated = 0, cached = 0;       // points simulated, points answered stored
-  double global_s = 0.0, polish_s = 0.0, check_s = 0.0;   // wall time of each phase
-  double interval_level = 0.95;                 // the parameters' intervals' level
-  int hac_lags = 0;   // the HAC covariance's largest Bartlett bandwidth (each series has its own)
-  double residual_lag1 = 0.0;                   // the residuals' pooled lag-1 autocorrelation
-  std::string polish_summary;                   // Ceres's brief report
-  bool polish_failed = false;                   // Ceres ended in FAILURE: the global result stands
-  bool polish_converged = true;                 // Ceres reported CONVERGENCE (or no polish ran)
-  int polish_iterations = 0;                    // Levenberg-Marquardt iterations taken
+  std::int64_t simulated = 0, cached = 0;                // points simulated, points answered stored
+  double global_s = 0.0, polish_s = 0.0, check_s = 0.0;  // wall time of each phase
+  double interval_level = 0.95;                          // the parameters' intervals' level
+  int hac_lags = 0;  // the HAC covariance's largest Bartlett bandwidth (each series has its own)
+  double residual_lag1 = 0.0;    // the residuals' pooled lag-1 autocorrelation
+  std::string polish_summary;    // Ceres's brief report
+  bool polish_failed = false;    // Ceres ended in FAILURE: the global result stands
+  bool polish_converged = true;  // Ceres reported CONVERGENCE (or no polish ran)
+  int polish_iterations = 0;     // Levenberg-Marquardt iterations taken
   bool interrupted = false;
   // every start the polish ran, in the order they were chosen (the global search's best
   // first), and which of them the result is (the lowest end)

@@ -39,24 +39,28 @@ IdentifyDb::IdentifyDb(SqliteDb db) : db_(std::move(db)) {
     const auto* key = reinterpret_cast<const char*>(sqlite3_column_text(s.get(), 0));
     const int bytes = sqlite3_column_bytes(s.get(), 1);
     std::vector<double> r(static_cast<std::size_t>(bytes) / sizeof(double));
-    if (bytes > 0) std::memcpy(r.data(), sqlite3_column_blob(s.get(), 1), r.size() * sizeof(double));
+    if (bytes > 0)
+      std::memcpy(r.data(), sqlite3_column_blob(s.get(), 1), r.size() * sizeof(double));
     stored_[key] = std::move(r);
   }
 }
 
 IdentifyDb IdentifyDb::create(const std::string& path, const IdentifyDefinition& def) {
-  create_sqlite_file(path, kDbWhat, "give --resume to continue it, or another --db",
-                     [&](const std::string& tmp) {
-    const SqliteDb db = SqliteDb::open_new(tmp, kDbWhat);
-    db.exec("CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT);"
+  create_sqlite_file(
+      path, kDbWhat, "give --resume to continue it, or another --db", [&](const std::string& tmp) {
+        const SqliteDb db = SqliteDb::open_new(tmp, kDbWhat);
+        db.exec(
+            "CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT);"
             "CREATE TABLE evaluations(point TEXT PRIMARY KEY, phase TEXT NOT NULL, cost REAL,"
             " residuals BLOB);");
-    std::vector<std::pair<std::string, std::string>> meta = {
-        {"kind", kDbKind}, {"identify_definition", def.canonical_json()},
-        {"identify_file", def.file}, inputs_meta(identify_input_paths(def))};
-    for (auto& entry : database_provenance_meta()) meta.push_back(std::move(entry));
-    db.put_meta(meta, "cannot write");
-  });
+        std::vector<std::pair<std::string, std::string>> meta = {
+            {"kind", kDbKind},
+            {"identify_definition", def.canonical_json()},
+            {"identify_file", def.file},
+            inputs_meta(identify_input_paths(def))};
+        for (auto& entry : database_provenance_meta()) meta.push_back(std::move(entry));
+        db.put_meta(meta, "cannot write");
+      });
   return open_to_resume(path, def);
 }
 
@@ -64,7 +68,8 @@ IdentifyDb IdentifyDb::open_to_resume(const std::string& path, const IdentifyDef
   SqliteDb db = SqliteDb::open(path, DbAccess::kWrite, kDbWhat);
   if (db.meta("kind") != kDbKind) throw InputError(path + ": not a pamsim identification database");
   if (db.meta("identify_definition") != def.canonical_json()) {
-    throw InputError(path + ": holds another identification (a different file, base scenario, "
+    throw InputError(path +
+                     ": holds another identification (a different file, base scenario, "
                      "recording or setting); start a new --db");
   }
   refuse_changed_inputs(path, db.meta("inputs"), "identification");
@@ -86,8 +91,10 @@ void IdentifyDb::insert(const std::vector<double>& unit, const std::string& phas
   db_.transaction([&] {
     sqlite3_bind_text(s.get(), 1, key.c_str(), -1, SQLITE_TRANSIENT);
     sqlite3_bind_text(s.get(), 2, phase.c_str(), -1, SQLITE_TRANSIENT);
-    if (std::isfinite(cost)) sqlite3_bind_double(s.get(), 3, cost);
-    else sqlite3_bind_null(s.get(), 3);
+    if (std::isfinite(cost))
+      sqlite3_bind_double(s.get(), 3, cost);
+    else
+      sqlite3_bind_null(s.get(), 3);
     sqlite3_bind_blob(s.get(), 4, residuals.data(),
                       static_cast<int>(residuals.size() * sizeof(double)), SQLITE_TRANSIENT);
     if (sqlite3_step(s.get()) != SQLITE_DONE) db_.fail("cannot store an evaluation");

@@ -41,7 +41,7 @@ class IdentifyDb {
   explicit IdentifyDb(SqliteDb db);
 
   SqliteDb db_;
-  std::map<std::string, std::vector<double>> stored_;   // by point key
+  std::map<std::string, std::vector<double>> stored_;  // by point key
 };
 
 }  // namespace pamsim

@@ -31,13 +31,14 @@ void read_tensile(ConfigReader& in, IdentifyDefinition* def) {
     IdentifyTensile t;
     t.muscle = e.text("muscle", true);
     const std::string file = e.text("file", true);
-    t.file = fs::path(file).is_absolute() ? file : (fs::path(in.name()).parent_path() / file).string();
+    t.file =
+        fs::path(file).is_absolute() ? file : (fs::path(in.name()).parent_path() / file).string();
     try {
       t.rows = read_tensile_csv(t.file);
     } catch (const InputError& err) {
       in.fail(e.where + "file", std::string("(") + err.what() + ")");
     }
-    t.weight = e.number("weight").value_or(1.0);   // > 0, by its row
+    t.weight = e.number("weight").value_or(1.0);  // > 0, by its row
     def->tensile.push_back(std::move(t));
   }
 }
@@ -57,8 +58,10 @@ void check_tensile(const IdentifyDefinition& def) {
       if (m.actuator == def.tensile[i].muscle) found = &m;
     }
     if (!found) {
-      throw InputError(where + "\"" + def.tensile[i].muscle + "\" is not a muscle of the base "
-                       "scenario (it has " + names + ")");
+      throw InputError(where + "\"" + def.tensile[i].muscle +
+                       "\" is not a muscle of the base "
+                       "scenario (it has " +
+                       names + ")");
     }
     if (found->plant_file.empty()) {
       throw InputError(where + "\"" + found->actuator + "\" has no plant file (muscles." +
@@ -79,16 +82,20 @@ void read_channel_parameters(ConfigReader& in, IdentifyDefinition* def) {
       const std::size_t dot = p.key.rfind('.');
       const std::string kind = p.key.substr(dot + 1);
       c.column = p.key.substr(8, dot > 8 ? dot - 8 : 0);
-      c.kind = kind == "offset" ? Kind::kOffset : kind == "gain" ? Kind::kGain
-             : kind == "delay_ms" ? Kind::kDelay : Kind::kNone;
+      c.kind = kind == "offset"     ? Kind::kOffset
+               : kind == "gain"     ? Kind::kGain
+               : kind == "delay_ms" ? Kind::kDelay
+                                    : Kind::kNone;
       in.check(c.kind != Kind::kNone && !c.column.empty(), where,
-               "\"" + p.key + "\": a channel's parameter is channel.<column>.offset, .gain or .delay_ms");
+               "\"" + p.key +
+                   "\": a channel's parameter is channel.<column>.offset, .gain or .delay_ms");
       bool matched = false;
       for (const IdentifyRecording& r : def->recordings) {
         for (std::size_t k : r.channels) matched = matched || r.data.channels[k] == c.column;
       }
       in.check(matched, where, "\"" + p.key + "\": no recording matches " + c.column);
-      in.check(c.kind != Kind::kGain || p.from > 0, where, "\"" + p.key + "\": a gain's range must be above 0");
+      in.check(c.kind != Kind::kGain || p.from > 0, where,
+               "\"" + p.key + "\": a gain's range must be above 0");
       in.check(c.kind != Kind::kDelay || (p.from >= 0 && p.to <= 1000), where,
                "\"" + p.key + "\": a delay's range must lie within [0, 1000] ms");
     }
@@ -133,8 +140,9 @@ Scenario checked_scenario(const IdentifyDefinition& def, const IdentifyRecording
 void check_recording(const IdentifyDefinition& def, const IdentifyRecording& r,
                      const std::string& where) {
   for (const std::string& s : r.set) {
-    for (const SearchParameter& p : def.parameters) {   // (a channel. key is never a set's)
-      if (s.rfind(p.key + "=", 0) == 0) throw InputError(where + ": set gives " + p.key + ", a parameter");
+    for (const SearchParameter& p : def.parameters) {  // (a channel. key is never a set's)
+      if (s.rfind(p.key + "=", 0) == 0)
+        throw InputError(where + ": set gives " + p.key + ", a parameter");
     }
   }
   const Scenario sc = checked_scenario(def, r, where);
@@ -142,14 +150,14 @@ void check_recording(const IdentifyDefinition& def, const IdentifyRecording& r,
   for (std::size_t c : r.channels) {
     const std::string& name = r.data.channels[c];
     if (std::find(logged.begin(), logged.end(), name) == logged.end()) {
-      throw InputError(where + ": channel " + name + " is not a column pamsim logs for this "
+      throw InputError(where + ": channel " + name +
+                       " is not a column pamsim logs for this "
                        "scenario (trajectory.csv's columns)");
     }
   }
   if (r.data.time_s.back() > sc.duration_s + 1e-9) {
     throw InputError(where + ": the recording lasts " + format_value(r.data.time_s.back()) +
-                     " s, its scenario " + format_value(sc.duration_s) +
-                     " s (set sim.duration_s)");
+                     " s, its scenario " + format_value(sc.duration_s) + " s (set sim.duration_s)");
   }
 }
 
@@ -176,8 +184,8 @@ KeyTable identify_search_table(IdentifyDefinition* def) {
               0, 1000, &def->generations),
       int_row("population", "CMA-ES population", 5, 1000, &def->population),
       int_row("seed", "CMA-ES seed (pagmo's seeds are 32-bit)", 0, 4294967295LL, &def->seed),
-      int_row("polish_iterations", "Levenberg-Marquardt iterations of the local polish (Ceres)",
-              0, 1000, &def->polish_iterations),
+      int_row("polish_iterations", "Levenberg-Marquardt iterations of the local polish (Ceres)", 0,
+              1000, &def->polish_iterations),
       int_row("starts",
               "the polish's starts: the global search's best point, then its best points at "
               "least 0.1 of the box from every start before (the lowest end is the result; "
@@ -192,9 +200,16 @@ KeyTable identify_search_table(IdentifyDefinition* def) {
               "(variable projection); the polish fits all together",
               &def->profile_offsets}};
   t.numbers = {
-      {"interval", "", 1.0, {0.0, 1.0, true, true},
-       "the level of the parameters' reported intervals", &def->interval},
-      {"explained_noise_factor", "", 1.0, {1.0, 1000.0, false, false},
+      {"interval",
+       "",
+       1.0,
+       {0.0, 1.0, true, true},
+       "the level of the parameters' reported intervals",
+       &def->interval},
+      {"explained_noise_factor",
+       "",
+       1.0,
+       {1.0, 1000.0, false, false},
        "a fitted channel is explained when its RMS after the fit is at most this many noise "
        "floors (the model's own noise and the recording's make sqrt(2))",
        &def->explained_noise_factor}};
@@ -228,7 +243,8 @@ std::vector<std::string> IdentifyDefinition::overrides_at(const IdentifyRecordin
   std::vector<std::string> out = overrides;
   out.insert(out.end(), recording.set.begin(), recording.set.end());
   const std::vector<std::string> params = overrides_at(values);
-  out.insert(out.end(), params.begin() + static_cast<std::ptrdiff_t>(overrides.size()), params.end());
+  out.insert(out.end(), params.begin() + static_cast<std::ptrdiff_t>(overrides.size()),
+             params.end());
   return out;
 }
 
@@ -260,9 +276,14 @@ std::string IdentifyDefinition::canonical_json() const {
   for (const auto& r : recordings) {
     std::vector<std::string> channels;
     for (std::size_t c : r.channels) channels.push_back(r.data.channels[c]);
-    recs.push_back({{"name", r.name}, {"set", r.set}, {"channels", channels},
-                    {"weight", r.weight}, {"held_out", r.held_out}, {"time_s", r.data.time_s},
-                    {"samples", r.data.samples}, {"noise", r.noise}});
+    recs.push_back({{"name", r.name},
+                    {"set", r.set},
+                    {"channels", channels},
+                    {"weight", r.weight},
+                    {"held_out", r.held_out},
+                    {"time_s", r.data.time_s},
+                    {"samples", r.data.samples},
+                    {"noise", r.noise}});
   }
   nlohmann::json tensile_json = nlohmann::json::array();
   for (const auto& t : tensile) {
@@ -273,20 +294,23 @@ std::string IdentifyDefinition::canonical_json() const {
     }
     tensile_json.push_back({{"muscle", t.muscle}, {"weight", t.weight}, {"rows", rows}});
   }
-  const nlohmann::json j = {{"base_scenario", base_text}, {"base_path", base_path},
-                            {"overrides", overrides},     {"generations", generations},
-                            {"population", population},   {"seed", seed},
+  const nlohmann::json j = {{"base_scenario", base_text},
+                            {"base_path", base_path},
+                            {"overrides", overrides},
+                            {"generations", generations},
+                            {"population", population},
+                            {"seed", seed},
                             {"polish_iterations", polish_iterations},
-                            {"parameters", params},       {"recordings", recs},
+                            {"parameters", params},
+                            {"recordings", recs},
                             // residuals over the channels' noise floors (pamsim 0.4): a
                             // database of an earlier scale does not resume
                             {"residual_scale", "noise_floor"}};
   // each added only where given, so that an older database (no tensile tests, one start, no
   // offset the search could project) resumes as it did
-  const bool offsets = std::any_of(channel_parameters.begin(), channel_parameters.end(),
-                                   [](const ChannelParameter& c) {
-                                     return c.kind == ChannelParameter::Kind::kOffset;
-                                   });
+  const bool offsets = std::any_of(
+      channel_parameters.begin(), channel_parameters.end(),
+      [](const ChannelParameter& c) { return c.kind == ChannelParameter::Kind::kOffset; });
   if (tensile.empty() && starts == 1 && !offsets) return j.dump();
   nlohmann::json with = j;
   if (!tensile.empty()) with["tensile"] = tensile_json;
@@ -295,13 +319,15 @@ std::string IdentifyDefinition::canonical_json() const {
   return with.dump();
 }
 
-std::vector<std::pair<std::string, std::string>> identify_input_paths(const IdentifyDefinition& def) {
+std::vector<std::pair<std::string, std::string>> identify_input_paths(
+    const IdentifyDefinition& def) {
   std::vector<std::pair<std::string, std::string>> out;
   const std::string dir = fs::path(def.base_path).parent_path().string();
   auto add = [&](const std::vector<std::string>& overrides) {
-    for (const auto& kp : load_recorded_scenario(def.base_text, def.base_path, overrides, dir, "").input_paths) {
-      const bool seen = std::any_of(out.begin(), out.end(),
-                                    [&](const auto& o) { return o.second == kp.second; });
+    for (const auto& kp :
+         load_recorded_scenario(def.base_text, def.base_path, overrides, dir, "").input_paths) {
+      const bool seen =
+          std::any_of(out.begin(), out.end(), [&](const auto& o) { return o.second == kp.second; });
       if (!seen) out.push_back(kp);
     }
   };

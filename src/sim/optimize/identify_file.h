@@ -33,9 +33,9 @@
 //                       name); file: a tensile test of it in `pamsim tensile`'s CSV format;
 //                       weight: > 0, default 1. Its plant's forces at the recorded pressures
 //                       and lengths, on each row's stroke, must match the recorded forces.
-// At least one recording is fitted (not held out), or a tensile test given. Every recording's scenario must load, and
-// each channel must be one its trials log (trajectory.csv's columns); a recording must not
-// outlast its scenario's sim.duration_s.
+// At least one recording is fitted (not held out), or a tensile test given. Every recording's
+// scenario must load, and each channel must be one its trials log (trajectory.csv's columns); a
+// recording must not outlast its scenario's sim.duration_s.
 #pragma once
 
 #include <cstdint>
@@ -53,16 +53,16 @@ namespace pamsim {
 struct IdentifyRecording {
   std::string name;
   Recording data;
-  std::vector<std::string> set;        // the recording's own overrides
-  std::vector<std::size_t> channels;   // indices into data.channels
+  std::vector<std::string> set;       // the recording's own overrides
+  std::vector<std::size_t> channels;  // indices into data.channels
   double weight = 1.0;
   bool held_out = false;
-  std::vector<double> noise;           // per chosen channel, its given noise floor (NaN: none)
+  std::vector<double> noise;  // per chosen channel, its given noise floor (NaN: none)
 };
 
 // A parameter that is a recorded channel's sensor rather than a scenario key.
 struct ChannelParameter {
-  enum class Kind { kNone, kOffset, kGain, kDelay } kind = Kind::kNone;   // kNone: a scenario key
+  enum class Kind { kNone, kOffset, kGain, kDelay } kind = Kind::kNone;  // kNone: a scenario key
   std::string column;
 };
 
@@ -72,7 +72,7 @@ struct ChannelTransform {
 };
 
 struct IdentifyTensile {
-  std::string muscle;               // the actuator's name (muscles.<muscle>)
+  std::string muscle;  // the actuator's name (muscles.<muscle>)
   std::string file;
   std::vector<TensileRow> rows;
   double weight = 1.0;
@@ -85,14 +85,14 @@ struct IdentifyDefinition {
   unsigned generations = 6, population = 8;
   std::uint64_t seed = 1;
   int polish_iterations = 30;
-  int starts = 1;   // Levenberg-Marquardt starts (identify.h: IdentifyResult::starts)
-  bool profile_offsets = true;   // the global search projects the offsets out (identify_offsets.h)
+  int starts = 1;               // Levenberg-Marquardt starts (identify.h: IdentifyResult::starts)
+  bool profile_offsets = true;  // the global search projects the offsets out (identify_offsets.h)
   // the reported intervals' level, and the RMS in noise floors within which a fitted channel
   // is explained (identify_uncertainty.h); neither in canonical_json: neither changes the search
   double interval = 0.95;
   double explained_noise_factor = 3.0;
   std::vector<SearchParameter> parameters;
-  std::vector<ChannelParameter> channel_parameters;   // per parameter (kNone: a scenario key)
+  std::vector<ChannelParameter> channel_parameters;  // per parameter (kNone: a scenario key)
   std::vector<IdentifyRecording> recordings;
   std::vector<IdentifyTensile> tensile;
   // [[candidate]]s: a recording's conditions and channels on a sample grid, no data
@@ -123,7 +123,8 @@ struct IdentifyDefinition {
 // The files the base scenario and every recording's scenario read (model, pneumatics,
 // calibration, parameter and plant files, schedule tables), as (scenario key, path), each
 // once: what a resumed identification must find unchanged (identify_db.h).
-std::vector<std::pair<std::string, std::string>> identify_input_paths(const IdentifyDefinition& def);
+std::vector<std::pair<std::string, std::string>> identify_input_paths(
+    const IdentifyDefinition& def);
 
 // The file's top-level numbers as rows (base/key_table.h), bound to `def`: each one's range,
 // default (the struct's own) and meaning; the reader, `pamsim keys --identify` and the tests

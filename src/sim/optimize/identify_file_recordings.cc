@@ -84,8 +84,8 @@ IdentifyRecording read_recording(ConfigReader& in, const TableEntry& e) {
   r.set = e.texts("set", false);
   r.channels = read_channels(e, r.data);
   r.noise = read_noise(e, r.data, r.channels);
-  r.weight = e.number("weight").value_or(1.0);   // > 0, by its row
-  r.held_out = e.table["held_out"].value_or(false);   // true or false, by its row
+  r.weight = e.number("weight").value_or(1.0);       // > 0, by its row
+  r.held_out = e.table["held_out"].value_or(false);  // true or false, by its row
   return r;
 }
 
@@ -105,7 +105,7 @@ bool fitted_channel(const IdentifyDefinition& def, const std::string& name) {
 // sim.duration_s unless it says).
 std::vector<double> candidate_times(ConfigReader& in, const TableEntry& e,
                                     const IdentifyDefinition& def, const IdentifyRecording& c) {
-  const double rate = e.number("rate_hz").value_or(100.0);   // in (0, 10000], by its row
+  const double rate = e.number("rate_hz").value_or(100.0);  // in (0, 10000], by its row
   std::vector<std::string> overrides = def.overrides;
   overrides.insert(overrides.end(), c.set.begin(), c.set.end());
   double duration = 0.0;
@@ -116,8 +116,8 @@ std::vector<double> candidate_times(ConfigReader& in, const TableEntry& e,
   }
   const double given = e.number("duration_s").value_or(duration);
   in.check(given <= duration, e.where + "duration_s",
-           "must be at most its scenario's sim.duration_s, " + format_value(duration) +
-               " s, got " + format_value(given));
+           "must be at most its scenario's sim.duration_s, " + format_value(duration) + " s, got " +
+               format_value(given));
   // (a bound on what a candidate holds: a 6 s trial at 100 Hz is 600 samples)
   constexpr double kMaxSamples = 1e6;
   in.check(rate * given <= kMaxSamples, e.where + "rate_hz",
@@ -151,9 +151,8 @@ IdentifyRecording read_candidate(ConfigReader& in, const TableEntry& e,
   }
   c.noise = read_noise(e, c.data, c.channels);
   for (std::size_t k = 0; k < c.channels.size(); ++k) {
-    in.check(!std::isnan(c.noise[k]) || fitted_channel(def, c.data.channels[k]),
-             e.where + "noise", "gives no floor for " + c.data.channels[k] +
-                                    ", which no fitted recording measures");
+    in.check(!std::isnan(c.noise[k]) || fitted_channel(def, c.data.channels[k]), e.where + "noise",
+             "gives no floor for " + c.data.channels[k] + ", which no fitted recording measures");
   }
   return c;
 }
@@ -164,8 +163,8 @@ const std::vector<EntryKey>& tensile_entry_keys() {
   static const std::vector<EntryKey> keys = {
       {"muscle", "", "a muscle of the base scenario", "(required)",
        "the muscle whose plant the tensile test measured", EntryType::kText},
-      {"file", "", "a tensile CSV (pamsim tensile's columns), relative to this file",
-       "(required)", "the static test's rows, fitted with the recordings", EntryType::kText},
+      {"file", "", "a tensile CSV (pamsim tensile's columns), relative to this file", "(required)",
+       "the static test's rows, fitted with the recordings", EntryType::kText},
       {"weight", "", "", "1.0", "its share of the cost", EntryType::kNumber, kPositiveRange}};
   return keys;
 }
@@ -183,9 +182,8 @@ const std::vector<EntryKey>& recording_entry_keys() {
       {"weight", "", "", "1.0", "its share of the cost", EntryType::kNumber, kPositiveRange},
       {"held_out", "", "", "false", "kept out of the fit, used for the held-out check",
        EntryType::kBool},
-      {"noise", "(each channel's)", "{ <channel> = floor > 0 }",
-       "(estimated from the recording)", "each channel's noise floor, in its unit",
-       EntryType::kTable}};
+      {"noise", "(each channel's)", "{ <channel> = floor > 0 }", "(estimated from the recording)",
+       "each channel's noise floor, in its unit", EntryType::kTable}};
   return keys;
 }
 
@@ -197,21 +195,24 @@ const std::vector<EntryKey>& candidate_entry_keys() {
        "what it would do: a command schedule, an event, a mass", EntryType::kTexts},
       {"channels", "", "list of trajectory.csv's columns, at least one", "(required)",
        "the channels it would log", EntryType::kTexts},
-      {"rate_hz", "Hz", "", "100.0", "their sampling rate", EntryType::kNumber,
+      {"rate_hz",
+       "Hz",
+       "",
+       "100.0",
+       "their sampling rate",
+       EntryType::kNumber,
        {0.0, 10000.0, true, false}},
       {"duration_s", "s", "at most its scenario's sim.duration_s", "(sim.duration_s)",
        "how long it would log", EntryType::kNumber, kPositiveRange},
-      {"noise", "(each channel's)", "{ <channel> = floor > 0 }",
-       "(a fitted recording's floor)", "each channel's noise floor, in its unit",
-       EntryType::kTable}};
+      {"noise", "(each channel's)", "{ <channel> = floor > 0 }", "(a fitted recording's floor)",
+       "each channel's noise floor, in its unit", EntryType::kTable}};
   return keys;
 }
 
 void read_recordings(ConfigReader& in, IdentifyDefinition* def) {
   const TableArray tables(in, "recording");
   std::set<std::string> names;
-  for (const TableEntry& e :
-       tables.entries(recording_entry_keys())) {
+  for (const TableEntry& e : tables.entries(recording_entry_keys())) {
     def->recordings.push_back(read_recording(in, e));
     const IdentifyRecording& r = def->recordings.back();
     in.check(names.insert(r.name).second, e.where + "name", "\"" + r.name + "\" is taken");
@@ -221,8 +222,7 @@ void read_recordings(ConfigReader& in, IdentifyDefinition* def) {
 void read_candidates(ConfigReader& in, IdentifyDefinition* def) {
   const TableArray tables(in, "candidate");
   std::set<std::string> names;
-  for (const TableEntry& e :
-       tables.entries(candidate_entry_keys())) {
+  for (const TableEntry& e : tables.entries(candidate_entry_keys())) {
     def->candidates.push_back(read_candidate(in, e, *def));
     const IdentifyRecording& c = def->candidates.back();
     in.check(names.insert(c.name).second, e.where + "name", "\"" + c.name + "\" is taken");

@@ -18,7 +18,7 @@ OffsetProjection::OffsetProjection(const IdentifyDefinition& def,
     if (p.slope_squares > 0.0) {
       projected_.push_back(std::move(p));
     } else {
-      searched_.push_back(k);   // fitted on no sample: nothing to project from
+      searched_.push_back(k);  // fitted on no sample: nothing to project from
     }
   }
 }
@@ -32,7 +32,7 @@ std::vector<double> OffsetProjection::embed(const std::vector<double>& searched_
 std::vector<double> OffsetProjection::project(const std::vector<double>& unit,
                                               const std::vector<double>& residuals) const {
   std::vector<double> out = unit;
-  if (residuals.empty()) return out;   // the point's trials failed: nothing to move by
+  if (residuals.empty()) return out;  // the point's trials failed: nothing to move by
   for (const Projected& p : projected_) {
     // the least-squares step of a parameter the residuals are linear in
     double dot = 0.0;

@@ -40,7 +40,7 @@ class OffsetProjection {
  private:
   struct Projected {
     std::size_t parameter;
-    std::vector<double> slope;   // d residual / d offset, per residual (0 off its channel)
+    std::vector<double> slope;  // d residual / d offset, per residual (0 off its channel)
     double slope_squares = 0.0;
   };
   const IdentifyDefinition& def_;

@@ -87,7 +87,11 @@ std::string fits_table(const IdentifyResult& r) {
        << " | " << f.samples << " | " << format_value(f.rmse_before) << " | "
        << format_value(f.rmse_after) << " | " << value_or_dash(f.noise_floor) << " | "
        << value_or_dash(f.rmse_after / f.noise_floor) << " | " << value_or_dash(f.whiteness_p)
-       << " | " << (!f.judged ? "unknown" : f.explained ? "yes" : "no") << " |\n";
+       << " | "
+       << (!f.judged     ? "unknown"
+           : f.explained ? "yes"
+                         : "no")
+       << " |\n";
   }
   return md.str();
 }
@@ -115,8 +119,10 @@ void write_identified_file(const std::string& out, const std::string& file,
                            const toml::table& fields, const std::string& header) {
   toml::table root = parse_toml_file(file);
   write_changes(root, fields, "");
-  write_file_atomically(out, header + "# (identified from " + file + "; its comments say where "
-                                      "its other values come from)\n" + toml_text(root));
+  write_file_atomically(out, header + "# (identified from " + file +
+                                 "; its comments say where "
+                                 "its other values come from)\n" +
+                                 toml_text(root));
 }
 
 // plant_<muscle>.toml and pneumatics.toml with the identified fields.
@@ -126,11 +132,13 @@ void write_identified_files(const IdentifyDefinition& def, const IdentifyResult&
   for (const MuscleSpec& m : sc.muscles) {
     const toml::table fields = identified_fields(r, "muscles." + m.actuator + ".plant.");
     if (!fields.empty() && !m.plant_file.empty()) {
-      write_identified_file(out.path("plant_" + m.actuator + ".toml"), m.plant_file, fields, header);
+      write_identified_file(out.path("plant_" + m.actuator + ".toml"), m.plant_file, fields,
+                            header);
     }
   }
   const toml::table fields = identified_fields(r, "pneumatics.");
-  if (!fields.empty()) write_identified_file(out.path("pneumatics.toml"), sc.pneumatics_file, fields, header);
+  if (!fields.empty())
+    write_identified_file(out.path("pneumatics.toml"), sc.pneumatics_file, fields, header);
 }
 
 }  // namespace
@@ -138,13 +146,13 @@ void write_identified_files(const IdentifyDefinition& def, const IdentifyResult&
 // Where polish end `e` lies from the result's: the parameter farthest from the result's value
 // in standard errors (among those the recordings determine), else in the unit box;
 // "<key> = <value> against <result's> (<k> standard errors)".
-std::string where_apart(const IdentifyDefinition& def, const IdentifyResult& r,
-                        const PolishEnd& e, double* unit_apart, double* se_apart) {
+std::string where_apart(const IdentifyDefinition& def, const IdentifyResult& r, const PolishEnd& e,
+                        double* unit_apart, double* se_apart) {
   const PolishEnd& best = r.starts[r.best_start];
   const std::vector<double> at_e = parameter_values(def, e.end);
   const std::vector<double> at_best = parameter_values(def, best.end);
   std::size_t by_box = 0, by_se = 0;
-  double most_se = -1.0;   // none determined
+  double most_se = -1.0;  // none determined
   *unit_apart = 0.0;
   for (std::size_t i = 0; i < e.end.size(); ++i) {
     const double d = std::abs(e.end[i] - best.end[i]);
@@ -163,8 +171,8 @@ std::string where_apart(const IdentifyDefinition& def, const IdentifyResult& r,
   *se_apart = most_se;
   if (e.end.empty()) return "";
   const std::size_t i = most_se >= 0.0 ? by_se : by_box;
-  const std::string errors = " (" + format_value(std::round(most_se * 10) / 10) +
-                             " standard errors)";
+  const std::string errors =
+      " (" + format_value(std::round(most_se * 10) / 10) + " standard errors)";
   return def.parameters[i].key + " = " + format_value(at_e[i]) + " against " +
          format_value(at_best[i]) + (most_se >= 0.0 ? errors : "");
 }
@@ -179,7 +187,8 @@ std::vector<std::string> start_warnings(const IdentifyDefinition& def, const Ide
                        ? "without a global search (generations = 0) the polish starts from the "
                          "middle of the box alone"
                        : "the global search's points held no more that lie " +
-                             format_value(kStartSpacing) + " of the box apart (more generations "
+                             format_value(kStartSpacing) +
+                             " of the box apart (more generations "
                              "or a larger population give more)"));
   }
   if (r.starts.size() < 2) return out;
@@ -191,15 +200,15 @@ std::vector<std::string> start_warnings(const IdentifyDefinition& def, const Ide
     // elsewhere: more than kSameEnd standard errors off in a parameter the recordings
     // determine (an undetermined one may end anywhere), or, without them, of the box
     const bool elsewhere = apart_se >= 0.0 ? apart_se > kSameEndErrors : apart > kSameEnd;
-    const std::string start = "the polish's start " + std::to_string(k + 1) + " of " +
-                              std::to_string(r.starts.size());
+    const std::string start =
+        "the polish's start " + std::to_string(k + 1) + " of " + std::to_string(r.starts.size());
     const std::string costs = "cost " + format_value(e.cost) + " against the result's " +
                               format_value(best.cost) + " (start " +
                               std::to_string(r.best_start + 1) + ")";
     if (e.cost > best.cost + kLocalMinimumMargin) {
-      out.push_back(start + (e.converged ? " ended in a local minimum: "
-                                         : " stopped without converging: ") +
-                    costs + ", at " + where);
+      out.push_back(
+          start + (e.converged ? " ended in a local minimum: " : " stopped without converging: ") +
+          costs + ", at " + where);
     } else if (k != r.best_start && elsewhere) {
       out.push_back(start + " ended as low at another point: " + costs + ", at " + where +
                     ": the recordings do not single out one minimum");
@@ -208,8 +217,7 @@ std::vector<std::string> start_warnings(const IdentifyDefinition& def, const Ide
   return out;
 }
 
-std::vector<std::string> identify_warnings(const IdentifyDefinition& def,
-                                           const IdentifyResult& r) {
+std::vector<std::string> identify_warnings(const IdentifyDefinition& def, const IdentifyResult& r) {
   std::vector<std::string> out = start_warnings(def, r);
   for (const std::string& line : unexplained_channels(r)) {
     out.push_back(line + "; the standard errors are not to be trusted");
@@ -221,8 +229,8 @@ std::vector<std::string> identify_warnings(const IdentifyDefinition& def,
                   f.channel + " = ... })");
   }
   if (r.polish_failed) {
-    out.push_back("the polish failed; the global search's best point stands (" +
-                  r.polish_summary + ")");
+    out.push_back("the polish failed; the global search's best point stands (" + r.polish_summary +
+                  ")");
   } else if (!r.polish_converged && def.polish_iterations > 0) {
     out.push_back("the polish stopped after " + std::to_string(r.polish_iterations) +
                   " iterations without converging (polish_iterations = " +
@@ -230,47 +238,53 @@ std::vector<std::string> identify_warnings(const IdentifyDefinition& def,
   }
   for (const IdentifiedParameter& p : r.parameters) {
     if (!(p.roughness > kRoughnessLimit) || !p.identifiable) continue;
-    out.push_back(p.parameter.key + ": the model's prediction is rough along it (second "
-                  "differences " + format_value(std::round(p.roughness * 100) / 100) +
+    out.push_back(p.parameter.key +
+                  ": the model's prediction is rough along it (second "
+                  "differences " +
+                  format_value(std::round(p.roughness * 100) / 100) +
                   " x the first at the difference step): numerical error, such as the chamber "
                   "solver's (pneumatics.solver.relative_tolerance) or an instrument's quantiser "
                   "(sensors.*_adc_bits), makes its standard error too small; tighten the "
                   "tolerance or make the instruments ideal in `overrides`");
   }
   for (const IdentifiedParameter& p : r.parameters) {
-    if (!p.at_bound || !p.identifiable) continue;   // (undetermined: said so, wherever it sits)
+    if (!p.at_bound || !p.identifiable) continue;  // (undetermined: said so, wherever it sits)
     out.push_back(p.parameter.key + " = " + format_value(p.value) + " sits at a bound of its " +
-                  "range [" + format_value(p.parameter.from) + ", " +
-                  format_value(p.parameter.to) + "]: widen it, or the value is not identified");
+                  "range [" + format_value(p.parameter.from) + ", " + format_value(p.parameter.to) +
+                  "]: widen it, or the value is not identified");
   }
   return out;
 }
 
 std::string identify_parameters_csv(const IdentifyResult& r) {
-  std::string out = "key,from,to,scale,start,identified,std_error,at_bound,identifiable,"
-                    "correlated_with,std_error_plain,interval_lo,interval_hi,verdict,"
-                    "difference_roughness\n";
+  std::string out =
+      "key,from,to,scale,start,identified,std_error,at_bound,identifiable,"
+      "correlated_with,std_error_plain,interval_lo,interval_hi,verdict,"
+      "difference_roughness\n";
   const bool explained = unexplained_channels(r).empty();
   for (const IdentifiedParameter& p : r.parameters) {
     out += p.parameter.key + "," + cell(p.parameter.from) + "," + cell(p.parameter.to) + "," +
            (p.parameter.log ? "log" : "linear") + "," + cell(p.start) + "," + cell(p.value) + "," +
-           cell(p.std_error) +
-           "," + (p.at_bound ? "1" : "0") + "," + (p.identifiable ? "1" : "0") + "," +
-           correlated_text(p) + "," + cell(p.std_error_plain) + "," + cell(p.interval_lo) + "," +
-           cell(p.interval_hi) + ",\"" + verdict(p, explained) + "\"," + cell(p.roughness) +
+           cell(p.std_error) + "," + (p.at_bound ? "1" : "0") + "," + (p.identifiable ? "1" : "0") +
+           "," + correlated_text(p) + "," + cell(p.std_error_plain) + "," + cell(p.interval_lo) +
+           "," + cell(p.interval_hi) + ",\"" + verdict(p, explained) + "\"," + cell(p.roughness) +
            "\n";
   }
   return out;
 }
 
 std::string identify_fits_csv(const IdentifyResult& r) {
-  std::string out = "recording,channel,held_out,samples,rmse_before,rmse_after,noise_floor,"
-                    "whiteness_p,explained\n";
+  std::string out =
+      "recording,channel,held_out,samples,rmse_before,rmse_after,noise_floor,"
+      "whiteness_p,explained\n";
   for (const ChannelFit& f : r.fits) {
     out += f.recording + "," + f.channel + "," + (f.held_out ? "1" : "0") + "," +
-           std::to_string(f.samples) + "," + cell(f.rmse_before) + "," + cell(f.rmse_after) +
-           "," + cell(f.noise_floor) + "," + cell(f.whiteness_p) + "," +
-           (!f.judged ? "" : f.explained ? "1" : "0") + "\n";
+           std::to_string(f.samples) + "," + cell(f.rmse_before) + "," + cell(f.rmse_after) + "," +
+           cell(f.noise_floor) + "," + cell(f.whiteness_p) + "," +
+           (!f.judged     ? ""
+            : f.explained ? "1"
+                          : "0") +
+           "\n";
   }
   return out;
 }
@@ -285,13 +299,17 @@ std::string identify_markdown(const IdentifyDefinition& def, const IdentifyResul
      << format_value(r.cost_final) << " in " << format_value(r.polish_s) << " s ("
      << r.polish_summary << "). " << r.simulated << " points simulated, " << r.cached
      << " answered from the database.\n\n"
-     << warnings_text(def, r)
-     << "## Parameters\n\n" << parameters_table(r) << "\n"
-     << "Standard errors and " << level_text(r) << " intervals: the sandwich (HAC) covariance, which holds for "
+     << warnings_text(def, r) << "## Parameters\n\n"
+     << parameters_table(r) << "\n"
+     << "Standard errors and " << level_text(r)
+     << " intervals: the sandwich (HAC) covariance, which holds for "
         "residuals correlated in time, as a recording's are (Newey-West with Andrews' "
-        "bandwidth for each recording's channel, here up to " << r.hac_lags << " lags; the "
+        "bandwidth for each recording's channel, here up to "
+     << r.hac_lags
+     << " lags; the "
         "lag-1 autocorrelation pooled over them "
-     << format_value(std::round(r.residual_lag1 * 1000) / 1000) << "; prewhitened); "
+     << format_value(std::round(r.residual_lag1 * 1000) / 1000)
+     << "; prewhitened); "
         "\"plain s.e.\": s^2 (J^T J)^-1, which assumes independent residuals. \"not "
         "determined\": the recordings do not move with it (its Jacobian column vanishes) or "
         "J^T J is singular. The costs are sums of squared residuals (Ceres's own report "
@@ -313,8 +331,7 @@ void write_identify_outputs(const IdentifyDefinition& def, const IdentifyResult&
   header += "\n";
   write_file_atomically(out.path("identified.toml"),
                         resolved_scenario_toml(def.base_text, def.base_path,
-                                               def.overrides_at(values),
-                                               out.dir(), header));
+                                               def.overrides_at(values), out.dir(), header));
   write_file_atomically(out.path("identify.csv"), identify_parameters_csv(r));
   write_file_atomically(out.path("identify_fits.csv"), identify_fits_csv(r));
   write_file_atomically(out.path("identify.md"), identify_markdown(def, r));

@@ -29,8 +29,8 @@ namespace pamsim {
 class StagedOutputs;
 
 inline const std::vector<std::string> kIdentifyOutputs = {
-    "identified.toml", "identify.csv", "identify_fits.csv", "identify.md", "recording_*.png",
-    "recording_*.svg", "recording_*.pdf", "plant_*.toml", "pneumatics.toml", "plan.csv",
+    "identified.toml", "identify.csv",    "identify_fits.csv", "identify.md",     "recording_*.png",
+    "recording_*.svg", "recording_*.pdf", "plant_*.toml",      "pneumatics.toml", "plan.csv",
     "plan.md"};
 
 // A polish start that ends more than kLocalMinimumMargin (chi-square of one degree of freedom

@@ -23,7 +23,7 @@ Eigen::MatrixXd sensitivity(const IdentifyDefinition& def, const IdentifyRecordi
                             int threads, std::string* failure) {
   const std::size_t n = unit.size();
   std::vector<std::vector<double>> points = {unit};
-  std::vector<std::pair<std::size_t, std::size_t>> trial_of(n, {0, 0});   // plus, minus
+  std::vector<std::pair<std::size_t, std::size_t>> trial_of(n, {0, 0});  // plus, minus
   for (std::size_t j = 0; j < n; ++j) {
     if (def.channel_parameters[j].kind != ChannelParameter::Kind::kNone) continue;
     const DifferenceSides s = difference_sides(unit, j, kDifferenceStep);
@@ -60,8 +60,7 @@ Eigen::MatrixXd sensitivity(const IdentifyDefinition& def, const IdentifyRecordi
       if (!(noise[c] > 0.0)) continue;
       for (std::size_t k = 0; k < centre[c].size(); ++k) {
         if (std::isnan(centre[c][k])) continue;
-        s(row++, static_cast<Eigen::Index>(j)) =
-            (plus[c][k] - minus[c][k]) / side.width / noise[c];
+        s(row++, static_cast<Eigen::Index>(j)) = (plus[c][k] - minus[c][k]) / side.width / noise[c];
       }
     }
   }
@@ -74,8 +73,8 @@ Eigen::MatrixXd tensile_sensitivity(const IdentifyDefinition& def, const Identif
                                     const std::vector<double>& unit, double floor,
                                     std::string* failure) {
   const std::size_t n = unit.size();
-  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(t.rows.size()),
-                                            static_cast<Eigen::Index>(n));
+  Eigen::MatrixXd s =
+      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(t.rows.size()), static_cast<Eigen::Index>(n));
   for (std::size_t j = 0; j < n && floor > 0.0; ++j) {
     if (def.channel_parameters[j].kind != ChannelParameter::Kind::kNone) continue;
     const DifferenceSides side = difference_sides(unit, j, kDifferenceStep);

@@ -35,14 +35,14 @@ InformationGain information_gain(const Eigen::MatrixXd& now, const Eigen::Matrix
 struct PlannedCandidate {
   std::string name;
   double d_gain = 0.0;
-  std::vector<double> sd_after;   // per parameter, in its unit
+  std::vector<double> sd_after;  // per parameter, in its unit
 };
 
 struct IdentifyPlan {
-  std::vector<std::string> keys;     // the parameters
+  std::vector<std::string> keys;  // the parameters
   // per parameter, in its unit (the prior's where nothing sees it)
   std::vector<double> sd_now;
-  std::vector<PlannedCandidate> ranked;   // best first (ties: the file's order)
+  std::vector<PlannedCandidate> ranked;  // best first (ties: the file's order)
   // "<candidate>: <why>" for a candidate whose trial failed
   std::vector<std::string> failures;
   // "<recording>: <why>" for a fitted recording or tensile test whose trial failed at a side

@@ -41,8 +41,10 @@ void write_recording_plot(const std::string& png_path, const IdentifyRecording& 
     const std::size_t col = 2 + 3 * i;
     script << "set ylabel " << gp_quote(fits[i]->channel) << "\n"
            << (i + 1 == fits.size() ? "set xlabel 'time [s]'\n" : "unset xlabel\n")
-           << "plot 'recording.dat' using 1:" << col << " with points pt 7 ps 0.4 lc rgb '#444444' title 'recorded', "
-           << "'' using 1:" << col + 1 << " with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'before', "
+           << "plot 'recording.dat' using 1:" << col
+           << " with points pt 7 ps 0.4 lc rgb '#444444' title 'recorded', "
+           << "'' using 1:" << col + 1
+           << " with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'before', "
            << "'' using 1:" << col + 2 << " with lines lw 1.5 lc rgb '#2166ac' title 'after'\n";
   }
   script << "unset multiplot\n";

@@ -55,7 +55,7 @@ SimulatedRecording simulate_recording(const IdentifyDefinition& def, const Ident
       for (std::size_t row = 0; row < v.size(); ++row) v[row] = log.at(row, column);
       out.columns.push_back(std::move(v));
     }
-  } catch (const InputError& e) {   // a value the scenario refuses, or a model that fails
+  } catch (const InputError& e) {  // a value the scenario refuses, or a model that fails
     out.failure = e.what();
   }
   return out;
@@ -73,7 +73,8 @@ std::vector<std::vector<double>> sample_channels(const IdentifyDefinition& def,
     std::vector<double> v(rec.size(), kNaN);
     std::size_t row = 0;
     for (std::size_t k = 0; k < v.size(); ++k) {
-      const double simulated = interpolate(sim.time_s, sim.columns[i], r.data.time_s[k] - t.delay_s, &row);
+      const double simulated =
+          interpolate(sim.time_s, sim.columns[i], r.data.time_s[k] - t.delay_s, &row);
       if (!std::isnan(rec[k])) v[k] = t.gain * simulated + t.offset;
     }
     out.push_back(std::move(v));
@@ -82,7 +83,8 @@ std::vector<std::vector<double>> sample_channels(const IdentifyDefinition& def,
 }
 
 std::vector<double> tensile_forces(const IdentifyDefinition& def, const IdentifyTensile& t,
-                                   const std::vector<std::string>& overrides, std::string* failure) {
+                                   const std::vector<std::string>& overrides,
+                                   std::string* failure) {
   try {
     const Scenario sc = load_scenario_text(def.base_text, def.base_path, overrides);
     for (const MuscleSpec& m : sc.muscles) {
@@ -134,7 +136,8 @@ IdentifyResiduals::IdentifyResiduals(const IdentifyDefinition& def, IdentifyDb& 
   for (std::size_t length : segments_) count_ += length;
 }
 
-bool IdentifyResiduals::append_tensile(const std::vector<double>& values, std::vector<double>* out) {
+bool IdentifyResiduals::append_tensile(const std::vector<double>& values,
+                                       std::vector<double>* out) {
   for (std::size_t k = 0; k < def_.tensile.size(); ++k) {
     const IdentifyTensile& t = def_.tensile[k];
     std::string failure;
@@ -155,7 +158,8 @@ std::vector<double> IdentifyResiduals::values_at(const std::vector<double>& unit
   return parameter_values(def_, unit);
 }
 
-std::vector<double> parameter_values(const IdentifyDefinition& def, const std::vector<double>& unit) {
+std::vector<double> parameter_values(const IdentifyDefinition& def,
+                                     const std::vector<double>& unit) {
   std::vector<double> values;
   for (std::size_t i = 0; i < unit.size(); ++i) {
     values.push_back(value_at(def.parameters[i], std::clamp(unit[i], 0.0, 1.0)));
@@ -168,8 +172,9 @@ std::vector<double> IdentifyResiduals::at(const std::vector<double>& unit_in, co
   for (double& u : unit) u = std::clamp(u, 0.0, 1.0);
   if (const auto stored = db_.find(unit)) {
     if (!stored->empty() && stored->size() != count_) {
-      throw std::runtime_error(db_.path() + ": a stored point has " + std::to_string(stored->size()) +
-                               " residuals, not " + std::to_string(count_) + " (a damaged database)");
+      throw std::runtime_error(db_.path() + ": a stored point has " +
+                               std::to_string(stored->size()) + " residuals, not " +
+                               std::to_string(count_) + " (a damaged database)");
     }
     ++cached;
     return *stored;
@@ -184,7 +189,8 @@ std::vector<double> IdentifyResiduals::at(const std::vector<double>& unit_in, co
   return residuals;
 }
 
-const std::vector<SimulatedRecording>& IdentifyResiduals::trials_at(const std::vector<double>& values) {
+const std::vector<SimulatedRecording>& IdentifyResiduals::trials_at(
+    const std::vector<double>& values) {
   const std::string key = bits_key(def_.scenario_values(values));
   for (const auto& [k, trials] : trials_) {
     if (k == key) return trials;
@@ -194,13 +200,14 @@ const std::vector<SimulatedRecording>& IdentifyResiduals::trials_at(const std::v
     const IdentifyRecording& r = def_.recordings[fitted_[static_cast<std::size_t>(k)]];
     sims[static_cast<std::size_t>(k)] = simulate_recording(def_, r, def_.overrides_at(r, values));
   });
-  constexpr std::size_t kKept = 4;   // a Jacobian's channel columns reuse its centre's trials
+  constexpr std::size_t kKept = 4;  // a Jacobian's channel columns reuse its centre's trials
   if (trials_.size() == kKept) trials_.erase(trials_.begin());
   trials_.emplace_back(key, std::move(sims));
   return trials_.back().second;
 }
 
-bool IdentifyResiduals::append_recordings(const std::vector<double>& values, std::vector<double>* out) {
+bool IdentifyResiduals::append_recordings(const std::vector<double>& values,
+                                          std::vector<double>* out) {
   const std::vector<SimulatedRecording>& sims = trials_at(values);
   for (std::size_t k = 0; k < fitted_.size(); ++k) {
     if (!sims[k].failure.empty()) {
@@ -213,7 +220,8 @@ bool IdentifyResiduals::append_recordings(const std::vector<double>& values, std
     for (std::size_t i = 0; i < r.channels.size(); ++i) {
       const std::vector<double>& rec = r.data.samples[r.channels[i]];
       for (std::size_t j = 0; j < rec.size(); ++j) {
-        if (!std::isnan(rec[j])) out->push_back(w * (sampled[i][j] - rec[j]) / scale_[fitted_[k]][i]);
+        if (!std::isnan(rec[j]))
+          out->push_back(w * (sampled[i][j] - rec[j]) / scale_[fitted_[k]][i]);
       }
     }
   }
@@ -222,17 +230,18 @@ bool IdentifyResiduals::append_recordings(const std::vector<double>& values, std
 
 std::vector<double> IdentifyResiduals::offset_slope(const std::string& column) const {
   std::vector<double> out;
-  for (std::size_t k = 0; k < fitted_.size(); ++k) {   // append_recordings' order
+  for (std::size_t k = 0; k < fitted_.size(); ++k) {  // append_recordings' order
     const IdentifyRecording& r = def_.recordings[fitted_[k]];
     const double w = std::sqrt(r.weight);
     for (std::size_t i = 0; i < r.channels.size(); ++i) {
-      const double slope = r.data.channels[r.channels[i]] == column ? w / scale_[fitted_[k]][i] : 0.0;
+      const double slope =
+          r.data.channels[r.channels[i]] == column ? w / scale_[fitted_[k]][i] : 0.0;
       for (double v : r.data.samples[r.channels[i]]) {
         if (!std::isnan(v)) out.push_back(slope);
       }
     }
   }
-  out.resize(count_, 0.0);   // the tensile tests' residuals
+  out.resize(count_, 0.0);  // the tensile tests' residuals
   return out;
 }
 

@@ -44,8 +44,8 @@ DifferenceSides difference_sides(const std::vector<double>& unit, std::size_t j,
 // errors propagate, and nothing is stored for the point).
 struct SimulatedRecording {
   std::vector<double> time_s;
-  std::vector<std::vector<double>> columns;   // per chosen channel, the log's rows
-  std::string failure;                        // "" when the trial ran to the end
+  std::vector<std::vector<double>> columns;  // per chosen channel, the log's rows
+  std::string failure;                       // "" when the trial ran to the end
 };
 
 // The chosen channels as the recording's sensors read them at its sample times: gain x
@@ -74,7 +74,7 @@ class IdentifyResiduals {
  public:
   IdentifyResiduals(const IdentifyDefinition& def, IdentifyDb& db, int threads);
 
-  std::size_t count() const { return count_; }   // residuals of the fitted recordings
+  std::size_t count() const { return count_; }  // residuals of the fitted recordings
   // The residual vector's series, in order: each fitted recording's channels, then each
   // tensile test; their lengths sum to count() (lags of a series stay within it).
   const std::vector<std::size_t>& segments() const { return segments_; }
@@ -87,7 +87,7 @@ class IdentifyResiduals {
   // fitted recordings' samples of `column` (the offset adds to each), 0 elsewhere.
   std::vector<double> offset_slope(const std::string& column) const;
 
-  std::int64_t simulated = 0, cached = 0;   // points simulated, points answered from the db
+  std::int64_t simulated = 0, cached = 0;  // points simulated, points answered from the db
   // Why the first point that failed failed ("" if none did, or it was stored before).
   const std::string& first_failure() const { return first_failure_; }
 
@@ -97,9 +97,9 @@ class IdentifyResiduals {
   int threads_;
   std::size_t count_ = 0;
   std::vector<std::size_t> segments_;
-  std::vector<std::size_t> fitted_;                 // recordings fitted, in order
-  std::vector<std::vector<double>> scale_;          // per recording, per chosen channel
-  std::vector<double> tensile_scale_;               // per tensile test
+  std::vector<std::size_t> fitted_;         // recordings fitted, in order
+  std::vector<std::vector<double>> scale_;  // per recording, per chosen channel
+  std::vector<double> tensile_scale_;       // per tensile test
   // the fitted recordings' trials of the last few scenario settings (the channel parameters'
   // differences need no new trial), by the settings' bits
   std::vector<std::pair<std::string, std::vector<SimulatedRecording>>> trials_;
@@ -128,7 +128,8 @@ double judged_floor(const std::vector<double>& samples);
 double residual_floor(const std::vector<double>& samples, double given);
 
 // The definition's parameters' values at `unit` (each clamped to [0, 1]).
-std::vector<double> parameter_values(const IdentifyDefinition& def, const std::vector<double>& unit);
+std::vector<double> parameter_values(const IdentifyDefinition& def,
+                                     const std::vector<double>& unit);
 
 // Sum of squares; +inf for an empty (failed) vector.
 double sum_of_squares(const std::vector<double>& residuals);

@@ -40,7 +40,7 @@ void fill_uncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
     p.correlated.clear();
   }
   if (jacobian.rows() != r.size() || jacobian.cols() != static_cast<Eigen::Index>(params.size())) {
-    return;   // the Jacobian could not be evaluated
+    return;  // the Jacobian could not be evaluated
   }
   const std::vector<Eigen::Index> free = determined_columns(jacobian);
   Eigen::MatrixXd j(jacobian.rows(), static_cast<Eigen::Index>(free.size()));
@@ -52,10 +52,10 @@ void fill_uncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
   const std::vector<int> bandwidths = segment_bandwidths(rv, segments);
   result->hac_lags =
       bandwidths.empty() ? 0 : *std::max_element(bandwidths.begin(), bandwidths.end());
-  const Eigen::MatrixXd cov = free.empty() ? Eigen::MatrixXd()
-                                           : hac_covariance(j, r, segments, bandwidths);
+  const Eigen::MatrixXd cov =
+      free.empty() ? Eigen::MatrixXd() : hac_covariance(j, r, segments, bandwidths);
   const Eigen::MatrixXd plain = free.empty() ? Eigen::MatrixXd() : plain_covariance(j, r);
-  if (cov.size() == 0 || plain.size() == 0) return;   // none, or jointly undetermined
+  if (cov.size() == 0 || plain.size() == 0) return;  // none, or jointly undetermined
   for (std::size_t a = 0; a < free.size(); ++a) {
     const auto ka = static_cast<Eigen::Index>(a);
     IdentifiedParameter& p = params[static_cast<std::size_t>(free[a])];
@@ -128,7 +128,7 @@ void fill_interval_uncertainty(const ResidualsAt& residuals_at, Eigen::MatrixXd 
                                const Eigen::VectorXd& r, const std::vector<std::size_t>& segments,
                                const std::vector<double>& unit, double level,
                                IdentifyResult* result) {
-  std::vector<double> plain;   // the derivative's, kept for comparison
+  std::vector<double> plain;  // the derivative's, kept for comparison
   for (const IdentifiedParameter& p : result->parameters) plain.push_back(p.std_error_plain);
   const double z = boost::math::quantile(boost::math::normal(), 0.5 + 0.5 * level);
   for (std::size_t j = 0; j < unit.size() && j < result->parameters.size(); ++j) {
@@ -136,7 +136,7 @@ void fill_interval_uncertainty(const ResidualsAt& residuals_at, Eigen::MatrixXd 
     double step = std::clamp(half_interval(result->parameters[j], unit[j], z), kDifferenceStep,
                              kLargestSecant);
     for (;;) {
-      if (!set_secant(residuals_at, unit, j, step, &jacobian)) break;   // the last errors stand
+      if (!set_secant(residuals_at, unit, j, step, &jacobian)) break;  // the last errors stand
       fill_uncertainty(jacobian, r, segments, unit, level, result);
       const double half = half_interval(result->parameters[j], unit[j], z);
       if (!(half > step * (1.0 + kIntervalSettled)) || step >= kLargestSecant) break;

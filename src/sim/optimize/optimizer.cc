@@ -24,7 +24,7 @@ struct StopSearch {};
 struct Evaluator {
   Objective* objective = nullptr;
   SearchOptions options;
-  std::map<std::vector<double>, std::vector<double>> cache;   // fitness by the point
+  std::map<std::vector<double>, std::vector<double>> cache;  // fitness by the point
   std::int64_t next_index = 0, cached = 0, total = 0, evaluated = 0;
 
   pagmo::vector_double fitness(const pagmo::vector_double& u) {
@@ -85,7 +85,7 @@ SearchResult run_search(const SearchSettings& settings, Objective& objective,
   evaluator->total = settings.evaluations();
   // a resume: the stored evaluations answer the replayed optimiser's calls
   for (const Evaluation& e : stored) {
-    evaluator->cache.emplace(e.unit, e.fitness);   // the exact point pagmo asked for
+    evaluator->cache.emplace(e.unit, e.fitness);  // the exact point pagmo asked for
     evaluator->next_index = std::max(evaluator->next_index, e.index + 1);
   }
   SearchResult result;
@@ -127,9 +127,8 @@ std::vector<const Evaluation*> pareto_front(const std::vector<Evaluation>& histo
     });
     if (!dominated) front.push_back(&e);
   }
-  std::sort(front.begin(), front.end(), [](const Evaluation* a, const Evaluation* b) {
-    return a->fitness[0] < b->fitness[0];
-  });
+  std::sort(front.begin(), front.end(),
+            [](const Evaluation* a, const Evaluation* b) { return a->fitness[0] < b->fitness[0]; });
   return front;
 }
 

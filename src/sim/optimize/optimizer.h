@@ -17,12 +17,12 @@ namespace pamsim {
 // One point the optimiser proposed, as its objective scored it.
 struct Evaluation {
   std::int64_t index = 0;
-  std::vector<double> unit;         // the optimiser's point in [0, 1]^n (the resume's key)
-  std::vector<double> values;       // the parameters' values at it
-  std::vector<double> objectives;   // each objective as it reads (not negated)
-  double violation = 0.0;           // constraints broken and trials failed; 0: feasible
-  std::vector<double> fitness;      // what is minimised: objectives (signed) + penalty
-  int trials = 0, ok = 0;           // trials run, trials that ran to the end
+  std::vector<double> unit;        // the optimiser's point in [0, 1]^n (the resume's key)
+  std::vector<double> values;      // the parameters' values at it
+  std::vector<double> objectives;  // each objective as it reads (not negated)
+  double violation = 0.0;          // constraints broken and trials failed; 0: feasible
+  std::vector<double> fitness;     // what is minimised: objectives (signed) + penalty
+  int trials = 0, ok = 0;          // trials run, trials that ran to the end
 };
 
 // What a client of the driver plugs in: its dimension, its number of objectives, and the
@@ -41,7 +41,7 @@ enum class SearchAlgorithm { kCmaes, kNsga2 };
 struct SearchSettings {
   SearchAlgorithm algorithm = SearchAlgorithm::kCmaes;
   unsigned generations = 10, population = 8;
-  std::uint64_t seed = 1;   // pagmo's seed, < 2^32
+  std::uint64_t seed = 1;  // pagmo's seed, < 2^32
   // The points the optimiser asks for: the first population and one per generation.
   std::int64_t evaluations() const {
     return static_cast<std::int64_t>(population) * (generations + 1);
@@ -54,8 +54,8 @@ struct SearchOptions {
 };
 
 struct SearchResult {
-  std::int64_t cached = 0;     // proposals answered from `stored` or from earlier proposals
-  bool interrupted = false;    // stopped by options.stop
+  std::int64_t cached = 0;   // proposals answered from `stored` or from earlier proposals
+  bool interrupted = false;  // stopped by options.stop
 };
 
 // Runs (or, with the evaluations `stored` before, resumes) the search. CMA-ES runs all its

@@ -100,7 +100,7 @@ std::vector<int> segment_bandwidths(const std::vector<double>& r,
 
 int bartlett_bandwidth(double rho, std::size_t n) {
   if (!(rho > 0.0)) return 0;
-  rho = std::min(rho, 0.97);   // a random walk has no finite long-run variance
+  rho = std::min(rho, 0.97);  // a random walk has no finite long-run variance
   const double a = 4.0 * rho * rho / ((1.0 - rho) * (1.0 - rho) * (1.0 + rho) * (1.0 + rho));
   const double lags = 1.1447 * std::cbrt(a * static_cast<double>(n));
   return static_cast<int>(std::min(std::floor(lags), static_cast<double>(n / 4)));
@@ -168,7 +168,7 @@ Eigen::MatrixXd hac_covariance(const Eigen::MatrixXd& jacobian, const Eigen::Vec
   const Eigen::FullPivLU<Eigen::MatrixXd> lu(jacobian.transpose() * jacobian);
   if (n <= p || !lu.isInvertible()) return {};
   const Eigen::MatrixXd bread = lu.inverse();
-  const Eigen::MatrixXd g = r.asDiagonal() * jacobian;   // row t: g_t^T = r_t J_t
+  const Eigen::MatrixXd g = r.asDiagonal() * jacobian;  // row t: g_t^T = r_t J_t
   // prewhitened (Andrews & Monahan 1992): v_t = g_t - A g_{t-1} within each segment, the
   // Bartlett sum over v, recoloured by (I - A)^-1
   const Eigen::MatrixXd a = lags > 0 ? score_ar1(g, segments) : Eigen::MatrixXd::Zero(p, p);

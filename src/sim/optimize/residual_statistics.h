@@ -37,8 +37,8 @@ std::vector<double> autocorrelation(const std::vector<double>& r, int max_lag);
 
 struct WhitenessTest {
   int lags = 0;
-  double q = 0.0;         // the Ljung-Box statistic
-  double p_value = 1.0;   // P(chi^2_lags >= q): small means not white; NaN: too few samples
+  double q = 0.0;        // the Ljung-Box statistic
+  double p_value = 1.0;  // P(chi^2_lags >= q): small means not white; NaN: too few samples
 };
 
 // Ljung-Box over lags 1..`lags` (default: min(20, n / 5), at least 1); p_value NaN unless

@@ -73,7 +73,7 @@ SearchParameter read_parameter(ConfigReader& in, const TableEntry& e,
   p.to = *to;
   in.check(p.from < p.to, e.where + "from",
            "must be below to (" + format_value(p.from) + " >= " + format_value(p.to) + ")");
-  p.log = e.text("scale", false, "linear") == "log";   // one of its row's names
+  p.log = e.text("scale", false, "linear") == "log";  // one of its row's names
   in.check(!p.log || p.from > 0.0, e.where + "from",
            "must be > 0 on a log scale, got " + format_value(p.from));
   return p;
@@ -100,8 +100,14 @@ const std::vector<EntryKey>& parameter_entry_keys() {
        "the search box's lower end, in the key's own unit", EntryType::kNumber},
       {"to", "(the key's)", "above from, within the key's range", "(required)",
        "the search box's upper end", EntryType::kNumber},
-      {"scale", "", "log: from > 0", "\"linear\"", "how the search spaces the box",
-       EntryType::kChoice, {}, {"linear", "log"}}};
+      {"scale",
+       "",
+       "log: from > 0",
+       "\"linear\"",
+       "how the search spaces the box",
+       EntryType::kChoice,
+       {},
+       {"linear", "log"}}};
   return keys;
 }
 

@@ -30,9 +30,9 @@ std::int64_t read_bounded_int(ConfigReader& in, const std::string& key, std::int
                               std::int64_t lo, std::int64_t hi, const std::string& range_text);
 
 struct SearchParameter {
-  std::string key;               // a scenario key, e.g. "reflex.v_thr_mm_s"
-  double from = 0.0, to = 0.0;   // bounds, from < to
-  bool log = false;              // log scale (from > 0)
+  std::string key;              // a scenario key, e.g. "reflex.v_thr_mm_s"
+  double from = 0.0, to = 0.0;  // bounds, from < to
+  bool log = false;             // log scale (from > 0)
 };
 
 // The parameter's value at `u` in [0, 1]: linear, or geometric on a log scale.

@@ -17,7 +17,6 @@
 namespace pamsim {
 namespace {
 
-
 struct TrialOutcome {
   std::uint64_t seed = 0;
   double noise_scale = 1.0;
@@ -26,7 +25,8 @@ struct TrialOutcome {
 
 // The scenarios of a setting's trials: one per noise level, or with [[randomize]] one per
 // trial (level-major), its seed index first_seed_offset + k % seeds drawing its arm.
-std::vector<Scenario> setting_scenarios(const TuneDefinition& def, const std::vector<double>& values,
+std::vector<Scenario> setting_scenarios(const TuneDefinition& def,
+                                        const std::vector<double>& values,
                                         std::uint64_t first_seed_offset, int seeds) {
   std::vector<Scenario> scenarios;
   const int per_level = def.randomize.empty() ? 1 : seeds;
@@ -114,7 +114,8 @@ class TuningObjective final : public Objective {
 
   Evaluation evaluate(std::int64_t index, const std::vector<double>& unit) override {
     std::vector<double> values;
-    for (std::size_t i = 0; i < unit.size(); ++i) values.push_back(value_at(def_.parameters[i], unit[i]));
+    for (std::size_t i = 0; i < unit.size(); ++i)
+      values.push_back(value_at(def_.parameters[i], unit[i]));
     const std::vector<TrialOutcome> trials = run_setting(def_, values, 0, def_.seeds, threads_);
     TuneEvaluation e = score(def_, values, trials);
     e.index = index;

@@ -35,15 +35,18 @@ std::string evaluation_columns(const TuneDefinition& def) {
 }
 
 void fill_new_database(const SqliteDb& db, const TuneDefinition& def) {
-  db.exec("CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT);"
-          "CREATE TABLE evaluations(evaluation INTEGER PRIMARY KEY" +
-          evaluation_columns(def) +
-          ");"
-          "CREATE TABLE trials(evaluation INTEGER, seed INTEGER, noise_scale REAL, status TEXT,"
-          " message TEXT, metrics TEXT, PRIMARY KEY(evaluation, seed, noise_scale));");
+  db.exec(
+      "CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT);"
+      "CREATE TABLE evaluations(evaluation INTEGER PRIMARY KEY" +
+      evaluation_columns(def) +
+      ");"
+      "CREATE TABLE trials(evaluation INTEGER, seed INTEGER, noise_scale REAL, status TEXT,"
+      " message TEXT, metrics TEXT, PRIMARY KEY(evaluation, seed, noise_scale));");
   const std::string dir = std::filesystem::path(def.base_path).parent_path().string();
   std::vector<std::pair<std::string, std::string>> meta = {
-      {"kind", "pamsim tune"}, {"tune_definition", def.canonical_json()}, {"tune_file", def.file},
+      {"kind", "pamsim tune"},
+      {"tune_definition", def.canonical_json()},
+      {"tune_file", def.file},
       inputs_meta(load_recorded_scenario(def.base_text, def.base_path, def.overrides, dir, "")
                       .input_paths)};
   for (auto& entry : database_provenance_meta()) meta.push_back(std::move(entry));
@@ -62,10 +65,9 @@ void bind_real(sqlite3_stmt* s, int* col, double v) {
 }  // namespace
 
 TuneDb TuneDb::create(const std::string& path, const TuneDefinition& def) {
-  create_sqlite_file(path, kWhat, "give --resume to continue it, or another --db",
-                     [&](const std::string& tmp) {
-                       fill_new_database(SqliteDb::open_new(tmp, kWhat), def);
-                     });
+  create_sqlite_file(
+      path, kWhat, "give --resume to continue it, or another --db",
+      [&](const std::string& tmp) { fill_new_database(SqliteDb::open_new(tmp, kWhat), def); });
   return open_to_resume(path, def);
 }
 
@@ -92,7 +94,7 @@ bool TuneDb::is_tune_database(const std::string& path) {
   try {
     return SqliteDb::open(path, DbAccess::kRead, "database").meta("kind") == "pamsim tune";
   } catch (const std::exception&) {
-    return false;   // the sweep reader says what is wrong with it
+    return false;  // the sweep reader says what is wrong with it
   }
 }
 

@@ -104,10 +104,9 @@ void write_best_scenario(const TuneDefinition& def, const TuneEvaluation& best,
          << (best.violation == 0.0 ? "the best feasible" : "none feasible: the least violating")
          << "), " << def.objectives[0].metric << " mean " << format_value(best.objectives[0])
          << "\n";
-  write_file_atomically(out.path("best.toml"),
-                        resolved_scenario_toml(def.base_text, def.base_path,
-                                               def.overrides_at(best.values), out.dir(),
-                                               header.str()));
+  write_file_atomically(out.path("best.toml"), resolved_scenario_toml(def.base_text, def.base_path,
+                                                                      def.overrides_at(best.values),
+                                                                      out.dir(), header.str()));
 }
 
 }  // namespace

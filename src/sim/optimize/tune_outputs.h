@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/io/plot.h"   // plot_file_names
+#include "sim/io/plot.h"  // plot_file_names
 #include "sim/optimize/tune.h"
 
 namespace pamsim {

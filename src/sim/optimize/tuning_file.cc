@@ -38,9 +38,9 @@ void read_base(ConfigReader& in, TuneDefinition* def) {
 void read_search_and_trials(ConfigReader& in, TuneDefinition* def) {
   read_key_rows(in, tune_search_table(def));
   if (def->algorithm == TuneAlgorithm::kNsga2) {
-    in.check(def->population >= 8 && def->population % 4 == 0, "population",
-             "must be a multiple of 4 in [8, 10000] for nsga2, got " +
-                 std::to_string(def->population));
+    in.check(
+        def->population >= 8 && def->population % 4 == 0, "population",
+        "must be a multiple of 4 in [8, 10000] for nsga2, got " + std::to_string(def->population));
   }
   def->noise_scales = in.get_double_list("noise_scales", def->noise_scales);
   in.check(!def->noise_scales.empty(), "noise_scales", "must hold at least one level");
@@ -49,8 +49,8 @@ void read_search_and_trials(ConfigReader& in, TuneDefinition* def) {
     const double n = levels[i];
     in.check(n >= 0.0 && n <= 1000.0, "noise_scales",
              "must be within [0, 1000], got " + format_value(n));
-    in.check(std::find(levels.begin(), levels.begin() + i, n) == levels.begin() + i,
-             "noise_scales", "names " + format_value(n) + " twice");
+    in.check(std::find(levels.begin(), levels.begin() + i, n) == levels.begin() + i, "noise_scales",
+             "names " + format_value(n) + " twice");
   }
 }
 
@@ -69,7 +69,7 @@ void read_objectives(ConfigReader& in, const std::vector<std::string>& metrics,
     TuneObjective o;
     o.metric = e.text("metric", true);
     check_metric(in, metrics, e.where + "metric", o.metric);
-    o.maximize = e.table["maximize"].value_or(false);   // true or false, by its row
+    o.maximize = e.table["maximize"].value_or(false);  // true or false, by its row
     def->objectives.push_back(o);
   }
   in.check(!def->objectives.empty(), "objective", "needs at least one [[objective]]");
@@ -190,34 +190,32 @@ const std::vector<EntryKey>& reference_entry_keys() {
   static const std::vector<EntryKey> keys = {
       {"name", "", "", "(required)", "a setting evaluated beside the search's best",
        EntryType::kText},
-      {"values", "(the parameters')", "one number per [[parameter]], in their order",
-       "(required)", "the setting's parameter values"}};
+      {"values", "(the parameters')", "one number per [[parameter]], in their order", "(required)",
+       "the setting's parameter values"}};
   return keys;
 }
 
 KeyTable tune_search_table(TuneDefinition* def) {
   KeyTable t{"", {}, {}, {}};
-  t.choices = {{"algorithm", {"cmaes", "nsga2"},
-                "pagmo2's CMA-ES (exactly one objective) or NSGA-II (one or more)",
-                [def](const std::string& v) {
-                  def->algorithm = v == "cmaes" ? TuneAlgorithm::kCmaes : TuneAlgorithm::kNsga2;
-                },
-                [def] {
-                  return std::string(def->algorithm == TuneAlgorithm::kCmaes ? "cmaes" : "nsga2");
-                }}};
-  t.ints = {
-      int_row("generations", "the optimiser's generations", 1, 10000, &def->generations),
-      int_row("population", "its population (nsga2: a multiple of 4, at least 8)", 5, 10000,
-              &def->population),
-      int_row("seed", "the optimiser's seed (pagmo's seeds are 32-bit)", 0, 4294967295LL,
-              &def->seed),
-      int_row("seeds", "trials per noise level of an evaluation (seeds base.seed ..)", 1, 1000,
-              &def->seeds),
-      int_row("held_out_seeds", "seeds of the final check (base.seed + 1000 ..)", 0, 1000,
-              &def->held_out_seeds)};
+  t.choices = {
+      {"algorithm",
+       {"cmaes", "nsga2"},
+       "pagmo2's CMA-ES (exactly one objective) or NSGA-II (one or more)",
+       [def](const std::string& v) {
+         def->algorithm = v == "cmaes" ? TuneAlgorithm::kCmaes : TuneAlgorithm::kNsga2;
+       },
+       [def] { return std::string(def->algorithm == TuneAlgorithm::kCmaes ? "cmaes" : "nsga2"); }}};
+  t.ints = {int_row("generations", "the optimiser's generations", 1, 10000, &def->generations),
+            int_row("population", "its population (nsga2: a multiple of 4, at least 8)", 5, 10000,
+                    &def->population),
+            int_row("seed", "the optimiser's seed (pagmo's seeds are 32-bit)", 0, 4294967295LL,
+                    &def->seed),
+            int_row("seeds", "trials per noise level of an evaluation (seeds base.seed ..)", 1,
+                    1000, &def->seeds),
+            int_row("held_out_seeds", "seeds of the final check (base.seed + 1000 ..)", 0, 1000,
+                    &def->held_out_seeds)};
   return t;
 }
-
 
 TuneDefinition load_tune_definition(const std::string& path) {
   ConfigReader in(path);
@@ -240,7 +238,8 @@ TuneDefinition load_tune_definition(const std::string& path) {
   read_references(in, &def);
   read_randomizations(in, &def.randomize, &def.randomize_seed);
   for (const Randomization& r : def.randomize) {
-    in.check(r.key != "sensors.noise_scale", "randomize", "cannot draw sensors.noise_scale: "
+    in.check(r.key != "sensors.noise_scale", "randomize",
+             "cannot draw sensors.noise_scale: "
              "use the tuning file's noise_scales");
     for (const TuneParameter& p : def.parameters) {
       in.check(p.key != r.key, "randomize", "draws " + r.key + ", which is a parameter too");
@@ -265,20 +264,20 @@ std::string TuneDefinition::canonical_json() const {
   nlohmann::json refs = nlohmann::json::array();
   for (const auto& r : references) refs.push_back({{"name", r.name}, {"values", r.values}});
   nlohmann::json j = {{"base_scenario", base_text},
-                            {"base_path", base_path},
-                            {"overrides", overrides},
-                            {"algorithm", algorithm == TuneAlgorithm::kCmaes ? "cmaes" : "nsga2"},
-                            {"generations", generations},
-                            {"population", population},
-                            {"seed", seed},
-                            {"seeds", seeds},
-                            {"noise_scales", noise_scales},
-                            {"held_out_seeds", held_out_seeds},
-                            {"parameters", params},
-                            {"objectives", objs},
-                            {"constraints", cons},
-                            {"references", refs}};
-  if (!randomize.empty()) {   // (a definition without draws reads as before they existed)
+                      {"base_path", base_path},
+                      {"overrides", overrides},
+                      {"algorithm", algorithm == TuneAlgorithm::kCmaes ? "cmaes" : "nsga2"},
+                      {"generations", generations},
+                      {"population", population},
+                      {"seed", seed},
+                      {"seeds", seeds},
+                      {"noise_scales", noise_scales},
+                      {"held_out_seeds", held_out_seeds},
+                      {"parameters", params},
+                      {"objectives", objs},
+                      {"constraints", cons},
+                      {"references", refs}};
+  if (!randomize.empty()) {  // (a definition without draws reads as before they existed)
     j["randomize"] = randomizations_json(randomize);
     j["randomize_seed"] = randomize_seed;
   }

@@ -14,7 +14,8 @@
 //   [[objective]]     metric (a summary metric), maximize = false
 //   [[constraint]]    metric, min and/or max: on the metric's mean over an evaluation's trials
 //   [[reference]]     name, values = [one per parameter]: settings checked beside the best
-//   [[randomize]]     key and distribution drawn per seed (sim/scenario/randomize.h): robust tuning,
+//   [[randomize]]     key and distribution drawn per seed (sim/scenario/randomize.h): robust
+//   tuning,
 //                     each evaluation's k-th seed on the same drawn arm; randomize_seed
 #pragma once
 
@@ -66,7 +67,7 @@ struct TuneDefinition {
   std::vector<TuneObjective> objectives;
   std::vector<TuneConstraint> constraints;
   std::vector<TuneReference> references;
-  std::vector<Randomization> randomize;   // drawn per seed index (robust tuning)
+  std::vector<Randomization> randomize;  // drawn per seed index (robust tuning)
   std::uint64_t randomize_seed = 1;
 
   // Everything that decides the evaluations, as canonical JSON (stored; a resume must match).

@@ -9,20 +9,23 @@ namespace {
 // the box's half thickness; the wall it shows is its far face, kBackdropDistanceM + this
 // from the camera: its frame (right, up, forward) is mirrored, so MuJoCo culls its near face
 constexpr double kHalfThicknessM = 0.01;
-constexpr double kHalfSideM = 20.0;        // the box's width and height, halved
+constexpr double kHalfSideM = 20.0;  // the box's width and height, halved
 
 // the legacy GL calls the quad makes (the types from GL/gl.h's declarations; the functions
 // themselves come from the context: the linked ones may belong to another library)
+// clang-format off
 #define PAMSIM_BACKDROP_GL(X)                                                              \
   X(PushAttrib) X(PopAttrib) X(MatrixMode) X(PushMatrix) X(PopMatrix) X(LoadIdentity)       \
   X(Disable) X(Enable) X(DepthFunc) X(DepthMask) X(PolygonMode) X(Viewport) X(Color4f)      \
   X(Begin) X(Vertex3f) X(End)
+// clang-format on
 
 // whether `head` is behind plane geom `g` (MuJoCo 2.2's test: mjr_render then draws the
 // plane transparent)
 bool head_behind(const mjtNum head[3], const mjvGeom& g) {
   return (head[0] - g.pos[0]) * g.mat[2] + (head[1] - g.pos[1]) * g.mat[5] +
-             (head[2] - g.pos[2]) * g.mat[8] < 0.0;
+             (head[2] - g.pos[2]) * g.mat[8] <
+         0.0;
 }
 
 }  // namespace
@@ -31,7 +34,7 @@ struct Backdrop::Gl {
 #define PAMSIM_GL_POINTER(name) decltype(&::gl##name) name = nullptr;
   PAMSIM_BACKDROP_GL(PAMSIM_GL_POINTER)
 #undef PAMSIM_GL_POINTER
-  bool complete = true;   // every entry point found
+  bool complete = true;  // every entry point found
 };
 
 Backdrop::Backdrop(const GlContext& gl) : gl_(std::make_unique<Gl>()) {
@@ -79,8 +82,8 @@ void Backdrop::add_geom(mjvScene* scene) {
     pos[i] = eye.pos[i] + kBackdropDistanceM * eye.forward[i];
   }
   mju_cross(right, forward, up);
-  const mjtNum mat[9] = {right[0], up[0], forward[0], right[1], up[1],
-                         forward[1], right[2], up[2], forward[2]};
+  const mjtNum mat[9] = {right[0],   up[0],    forward[0], right[1],  up[1],
+                         forward[1], right[2], up[2],      forward[2]};
   const mjtNum size[3] = {kHalfSideM, kHalfSideM, kHalfThicknessM};
   const float rgba[4] = {0.93f, 0.93f, 0.95f, 1.0f};
   mjvGeom* g = scene->geoms + scene->ngeom++;
@@ -106,9 +109,8 @@ void Backdrop::draw_quad(const mjvScene& scene, const mjrRect& viewport) const {
   // is on)
   gl.PushAttrib(GL_ENABLE_BIT | GL_DEPTH_BUFFER_BIT | GL_CURRENT_BIT | GL_LIGHTING_BIT |
                 GL_POLYGON_BIT | GL_VIEWPORT_BIT);
-  for (GLenum cap : {GL_LIGHTING, GL_COLOR_MATERIAL, GL_TEXTURE_2D, GL_BLEND, GL_FOG,
-                     GL_CULL_FACE, GL_ALPHA_TEST, GL_STENCIL_TEST, GL_SCISSOR_TEST,
-                     GL_CLIP_PLANE0}) {
+  for (GLenum cap : {GL_LIGHTING, GL_COLOR_MATERIAL, GL_TEXTURE_2D, GL_BLEND, GL_FOG, GL_CULL_FACE,
+                     GL_ALPHA_TEST, GL_STENCIL_TEST, GL_SCISSOR_TEST, GL_CLIP_PLANE0}) {
     gl.Disable(cap);
   }
   gl.Enable(GL_DEPTH_TEST);

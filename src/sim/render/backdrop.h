@@ -21,7 +21,7 @@
 
 namespace pamsim {
 
-inline constexpr double kBackdropDistanceM = 2.5;   // from the camera, along its view
+inline constexpr double kBackdropDistanceM = 2.5;  // from the camera, along its view
 
 class Backdrop {
  public:

@@ -31,6 +31,7 @@ namespace {
 
 // The core EGL entry points pamsim calls, as X(name without "egl", its pointer type): the
 // one list EglApi declares and egl_api() loads.
+// clang-format off
 #define PAMSIM_EGL_CORE_FUNCTIONS(X)                                                          \
   X(GetProcAddress, PFNEGLGETPROCADDRESSPROC) X(QueryString, PFNEGLQUERYSTRINGPROC)           \
   X(GetDisplay, PFNEGLGETDISPLAYPROC) X(Initialize, PFNEGLINITIALIZEPROC)                     \
@@ -38,6 +39,7 @@ namespace {
   X(BindAPI, PFNEGLBINDAPIPROC) X(CreateContext, PFNEGLCREATECONTEXTPROC)                     \
   X(MakeCurrent, PFNEGLMAKECURRENTPROC) X(GetCurrentContext, PFNEGLGETCURRENTCONTEXTPROC)     \
   X(DestroyContext, PFNEGLDESTROYCONTEXTPROC) X(GetError, PFNEGLGETERRORPROC)
+// clang-format on
 
 // The EGL entry points, from libEGL loaded once, privately (RTLD_LOCAL) until a context exists
 // (see the top of this file).
@@ -49,7 +51,7 @@ struct EglApi {
   PFNEGLQUERYDEVICESEXTPROC QueryDevices = nullptr;
   PFNEGLQUERYDEVICESTRINGEXTPROC QueryDeviceString = nullptr;
   PFNEGLGETPLATFORMDISPLAYEXTPROC GetPlatformDisplay = nullptr;
-  std::string load_error;   // why the API is unusable, empty when it is
+  std::string load_error;  // why the API is unusable, empty when it is
 };
 
 bool has_extension(const char* extensions, const char* name) {
@@ -64,7 +66,7 @@ bool has_extension(const char* extensions, const char* name) {
 const EglApi& egl_api() {
   static const EglApi api = [] {
     EglApi a;
-    void* lib = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);   // global once it works
+    void* lib = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);  // global once it works
     if (!lib) {
       const char* why = dlerror();
       a.load_error = std::string("cannot load libEGL.so.1 (") + (why ? why : "unknown") + ")";
@@ -105,7 +107,7 @@ std::string egl_error(const EglApi& egl, const char* call) {
 // One EGL device: its handle and what to call it.
 struct EglDevice {
   EGLDeviceEXT handle = nullptr;
-  std::string name;        // its DRM node, or "software" for Mesa's llvmpipe device
+  std::string name;  // its DRM node, or "software" for Mesa's llvmpipe device
   bool software = false;
 };
 
@@ -122,7 +124,8 @@ std::vector<EglDevice> egl_devices(const EglApi& egl) {
     const char* extensions = egl.QueryDeviceString(d.handle, EGL_EXTENSIONS);
     d.software = has_extension(extensions, "EGL_MESA_device_software");
     const char* node = has_extension(extensions, "EGL_EXT_device_drm")
-                           ? egl.QueryDeviceString(d.handle, EGL_DRM_DEVICE_FILE_EXT) : nullptr;
+                           ? egl.QueryDeviceString(d.handle, EGL_DRM_DEVICE_FILE_EXT)
+                           : nullptr;
     d.name = node ? node : d.software ? "software" : "no DRM node";
     devices.push_back(d);
   }
@@ -143,15 +146,28 @@ struct EglSetup {
   EGLDisplay display = EGL_NO_DISPLAY;
   EGLContext context = EGL_NO_CONTEXT;
   std::string description;
-  std::string error;   // empty on success
+  std::string error;  // empty on success
 };
 
 // make_context's second half, on an initialised display.
 EglSetup make_context_on(const EglApi& egl, EGLDisplay display, EglSetup setup) {
-  const EGLint config_attribs[] = {
-      EGL_SURFACE_TYPE, EGL_PBUFFER_BIT,   EGL_RED_SIZE,        8, EGL_GREEN_SIZE, 8,
-      EGL_BLUE_SIZE,    8,                 EGL_ALPHA_SIZE,      8, EGL_DEPTH_SIZE, 24,
-      EGL_STENCIL_SIZE, 8,                 EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  const EGLint config_attribs[] = {EGL_SURFACE_TYPE,
+                                   EGL_PBUFFER_BIT,
+                                   EGL_RED_SIZE,
+                                   8,
+                                   EGL_GREEN_SIZE,
+                                   8,
+                                   EGL_BLUE_SIZE,
+                                   8,
+                                   EGL_ALPHA_SIZE,
+                                   8,
+                                   EGL_DEPTH_SIZE,
+                                   24,
+                                   EGL_STENCIL_SIZE,
+                                   8,
+                                   EGL_RENDERABLE_TYPE,
+                                   EGL_OPENGL_BIT,
+                                   EGL_NONE};
   EGLConfig config = nullptr;
   EGLint n_configs = 0;
   if (egl.ChooseConfig(display, config_attribs, &config, 1, &n_configs) != EGL_TRUE ||
@@ -207,18 +223,19 @@ EglSetup make_context(const EglApi& egl, EGLDisplay display, std::string descrip
 EglSetup open_egl(const EglApi& egl, const EglDeviceChoice& choice) {
   const std::vector<EglDevice> devices = egl_devices(egl);
   const auto on_device = [&](std::size_t i) {
-    return make_context(egl, egl.GetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i].handle,
-                                                    nullptr),
+    return make_context(egl,
+                        egl.GetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i].handle, nullptr),
                         "egl device " + std::to_string(i) + " of " +
                             std::to_string(devices.size()) + " (" + devices[i].name + ")");
   };
   if (choice.index >= 0) {
     if (static_cast<std::size_t>(choice.index) >= devices.size()) {
-      throw InputError(
-          choice.source + " " + std::to_string(choice.index) +
-          ": no such EGL device; the devices here: " + device_list(devices) +
-          (devices.empty() ? " (without a device number, egl takes the surfaceless platform, "
-                             "which can still reach a GPU)" : ""));
+      throw InputError(choice.source + " " + std::to_string(choice.index) +
+                       ": no such EGL device; the devices here: " + device_list(devices) +
+                       (devices.empty()
+                            ? " (without a device number, egl takes the surfaceless platform, "
+                              "which can still reach a GPU)"
+                            : ""));
     }
     EglSetup setup = on_device(static_cast<std::size_t>(choice.index));
     if (!setup.error.empty()) {

@@ -19,7 +19,7 @@ namespace pamsim {
 namespace {
 
 constexpr const char* kBackendEnvVar = "PAMSIM_GL_BACKEND";
-constexpr const char* kMujocoBackendEnvVar = "MUJOCO_GL";   // as MuJoCo's Python bindings
+constexpr const char* kMujocoBackendEnvVar = "MUJOCO_GL";  // as MuJoCo's Python bindings
 constexpr const char* kDeviceEnvVars[] = {"EGL_DEVICE_ID", "MUJOCO_EGL_DEVICE_ID"};
 
 // MuJoCo binds GL functions once per process, through the first backend's loader. Throws if
@@ -103,7 +103,7 @@ std::unique_ptr<GlContext> create_gl_context(GlBackend backend, int width, int h
       check_backend_for_process(GlBackend::kEgl, true);
       return context;
     } catch (const InputError& e) {
-      if (device.index >= 0) throw;   // that device was asked for: no substitute
+      if (device.index >= 0) throw;  // that device was asked for: no substitute
       check_backend_for_process(GlBackend::kOsmesa, false);
       context = make_osmesa_context(width, height, e.what());
     }

@@ -8,9 +8,9 @@
 //           EGL cannot give a context at all (no libEGL, no driver), osmesa, saying why.
 //           libEGL is loaded when first asked for.
 // The backend comes from --backend, else PAMSIM_GL_BACKEND, else MUJOCO_GL when it is egl or
-// osmesa (as MuJoCo's Python bindings read it; its glfw needs a window), else osmesa. MuJoCo resolves the GL functions once per process,
-// through the first backend used, so a process uses one backend only (a second one throws
-// std::logic_error).
+// osmesa (as MuJoCo's Python bindings read it; its glfw needs a window), else osmesa. MuJoCo
+// resolves the GL functions once per process, through the first backend used, so a process uses one
+// backend only (a second one throws std::logic_error).
 #pragma once
 
 #include <memory>
@@ -33,8 +33,8 @@ GlBackend choose_gl_backend(const std::string& option_value);
 
 // An EGL device, by its index in eglQueryDevicesEXT's list, and where the choice came from.
 struct EglDeviceChoice {
-  int index = -1;       // -1: none asked for (the first GPU, else Mesa's surfaceless platform)
-  std::string source;   // "--gpu", "EGL_DEVICE_ID", "MUJOCO_EGL_DEVICE_ID"
+  int index = -1;      // -1: none asked for (the first GPU, else Mesa's surfaceless platform)
+  std::string source;  // "--gpu", "EGL_DEVICE_ID", "MUJOCO_EGL_DEVICE_ID"
 };
 
 // The device asked for by an option (`option_value` >= 0, "--gpu"), else by EGL_DEVICE_ID,

@@ -40,7 +40,8 @@ const AVCodec* checked_h264_encoder(const std::string& path, const Mp4Settings& 
   if (settings.fps <= 0) throw InputError(path + ": fps must be > 0");
   const AVCodec* codec = find_h264_encoder();
   if (!codec) {
-    throw InputError(path + ": this FFmpeg has no H.264 encoder (install libavcodec with "
+    throw InputError(path +
+                     ": this FFmpeg has no H.264 encoder (install libavcodec with "
                      "libx264, or write a PNG sequence instead)");
   }
   return codec;
@@ -71,23 +72,23 @@ struct Mp4Writer::Impl {
   void stop_encoding_thread();
 
   std::string path;
-  std::unique_ptr<TempPath> temp_file;   // none for "-": standard output, streamed
+  std::unique_ptr<TempPath> temp_file;  // none for "-": standard output, streamed
   AvOutputContextPtr muxer;
-  AVStream* stream = nullptr;   // owned by the muxer
+  AVStream* stream = nullptr;  // owned by the muxer
   AvCodecContextPtr encoder;
   SwsContextPtr rgb_to_yuv;
-  AvFramePtr frame;             // the YUV frame handed to the encoder, reused
-  AvPacketPtr packet;           // reused
+  AvFramePtr frame;    // the YUV frame handed to the encoder, reused
+  AvPacketPtr packet;  // reused
   long frames_encoded = 0;
 
   // hand-over of one frame at a time from the caller to the encoding thread
   std::thread encoding_thread;
   std::mutex mutex;
   std::condition_variable changed;
-  std::vector<unsigned char> handed_over;   // RGB, bottom-up
+  std::vector<unsigned char> handed_over;  // RGB, bottom-up
   bool frame_waiting = false;
   bool closing = false;
-  std::exception_ptr failure;   // from the encoding thread, rethrown to the caller
+  std::exception_ptr failure;  // from the encoding thread, rethrown to the caller
 };
 
 void Mp4Writer::Impl::encoding_loop() {
@@ -135,7 +136,7 @@ void Mp4Writer::Impl::drain_packets() {
     const int status = avcodec_receive_packet(encoder.get(), p);
     if (status == AVERROR(EAGAIN) || status == AVERROR_EOF) return;
     check_av(status, path, "encoding failed");
-    p->duration = 1;   // one frame: the MP4's length counts the last frame's too
+    p->duration = 1;  // one frame: the MP4's length counts the last frame's too
     av_packet_rescale_ts(p, encoder->time_base, stream->time_base);
     p->stream_index = stream->index;
     check_av(av_interleaved_write_frame(muxer.get(), p), path, "write failed");
@@ -186,7 +187,7 @@ void Mp4Writer::Impl::open_muxer(const std::string& target) {
 
 // Opens the encoder with the x264 settings, adds its stream and writes the MP4 header.
 void Mp4Writer::Impl::open_encoder_and_write_header(const AVCodec* codec,
-                                                   const Mp4Settings& settings, bool streamed) {
+                                                    const Mp4Settings& settings, bool streamed) {
   AVCodecContext* enc = encoder.get();
   AVDictionary* encoder_options = nullptr;
   av_dict_set(&encoder_options, "preset", settings.x264_preset.c_str(), 0);
@@ -211,8 +212,8 @@ void Mp4Writer::Impl::open_encoder_and_write_header(const AVCodec* codec,
 
 // RGB (bottom-up) -> YUV 4:2:0 at the same size, into a reused frame.
 void Mp4Writer::Impl::make_converter(int w, int h) {
-  rgb_to_yuv.reset(sws_getContext(w, h, AV_PIX_FMT_RGB24, w, h, AV_PIX_FMT_YUV420P,
-                                  SWS_BILINEAR, nullptr, nullptr, nullptr));
+  rgb_to_yuv.reset(sws_getContext(w, h, AV_PIX_FMT_RGB24, w, h, AV_PIX_FMT_YUV420P, SWS_BILINEAR,
+                                  nullptr, nullptr, nullptr));
   frame = alloc_frame(w, h, AV_PIX_FMT_YUV420P);
   packet.reset(av_packet_alloc());
   if (!rgb_to_yuv || !packet) throw std::bad_alloc();

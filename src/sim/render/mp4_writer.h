@@ -15,11 +15,11 @@
 namespace pamsim {
 
 struct Mp4Settings {
-  int width_px = 1280;   // even, as 4:2:0 chroma needs
-  int height_px = 720;   // even
+  int width_px = 1280;  // even, as 4:2:0 chroma needs
+  int height_px = 720;  // even
   int fps = 30;
-  std::string x264_preset = "veryfast";   // libx264's speed/size trade-off
-  int x264_crf = 23;                      // constant quality, lower is better (0-51)
+  std::string x264_preset = "veryfast";  // libx264's speed/size trade-off
+  int x264_crf = 23;                     // constant quality, lower is better (0-51)
 };
 
 class Mp4Writer {
@@ -51,7 +51,7 @@ class Mp4Writer {
   std::string path_;
   long frames_written_ = 0;
   std::string encoder_name_;
-  std::unique_ptr<Impl> impl_;   // FFmpeg's objects (av_handles.h)
+  std::unique_ptr<Impl> impl_;  // FFmpeg's objects (av_handles.h)
 };
 
 }  // namespace pamsim

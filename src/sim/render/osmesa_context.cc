@@ -35,8 +35,8 @@ class OsMesaGlContext : public GlContext {
   void make_current() override {
     if (!OSMesaMakeCurrent(context_.get(), color_buffer_.data(), GL_UNSIGNED_BYTE, width_,
                            height_)) {
-      throw InputError("--backend osmesa: OSMesaMakeCurrent failed for " +
-                       std::to_string(width_) + "x" + std::to_string(height_));
+      throw InputError("--backend osmesa: OSMesaMakeCurrent failed for " + std::to_string(width_) +
+                       "x" + std::to_string(height_));
     }
   }
 
@@ -53,10 +53,10 @@ class OsMesaGlContext : public GlContext {
   void set_fallback_reason(std::string why) { fallback_reason_ = std::move(why); }
 
  private:
-  std::string fallback_reason_;   // why egl, asked for, was not used
+  std::string fallback_reason_;  // why egl, asked for, was not used
   int width_;
   int height_;
-  std::vector<unsigned char> color_buffer_;   // the default framebuffer, never read
+  std::vector<unsigned char> color_buffer_;  // the default framebuffer, never read
   OsMesaContextPtr context_;
 };
 

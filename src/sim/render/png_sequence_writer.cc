@@ -52,8 +52,8 @@ struct PngSequenceWriter::Impl {
   explicit Impl(const std::string& dir) : temp_dir(dir, TempKind::kFolder) {}
   TempPath temp_dir;
   AvCodecContextPtr encoder;
-  AvFramePtr frame;     // RGB rows top-down, reused
-  AvPacketPtr packet;   // reused
+  AvFramePtr frame;    // RGB rows top-down, reused
+  AvPacketPtr packet;  // reused
 };
 
 PngSequenceWriter::PngSequenceWriter(const std::string& dir, int width_px, int height_px)

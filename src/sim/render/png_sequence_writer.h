@@ -32,7 +32,7 @@ class PngSequenceWriter {
 
   std::string dir_;
   long frames_written_ = 0;
-  std::unique_ptr<Impl> impl_;   // FFmpeg's objects and the temp folder
+  std::unique_ptr<Impl> impl_;  // FFmpeg's objects and the temp folder
 };
 
 }  // namespace pamsim

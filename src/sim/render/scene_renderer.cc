@@ -11,7 +11,7 @@ namespace pamsim {
 namespace {
 
 constexpr int kMaxSceneGeoms = 1000;
-constexpr int kLargeFontMinHeightPx = 600;   // 150 % font from here up, else 100 %
+constexpr int kLargeFontMinHeightPx = 600;  // 150 % font from here up, else 100 %
 
 // "side, top" or "none", for the unknown-camera message
 std::string camera_names(const mjModel* m) {
@@ -57,8 +57,8 @@ RenderQuality parse_render_quality(const std::string& name) {
 
 void check_camera(const mjModel* model, const std::string& model_path, const std::string& camera) {
   if (mj_name2id(model, mjOBJ_CAMERA, camera.c_str()) < 0) {
-    throw InputError(model_path + ": no camera named '" + camera + "' (the model's cameras: " +
-                     camera_names(model) + ")");
+    throw InputError(model_path + ": no camera named '" + camera +
+                     "' (the model's cameras: " + camera_names(model) + ")");
   }
 }
 
@@ -97,8 +97,7 @@ SceneRenderer::SceneRenderer(const mjModel* model, const std::string& model_path
   viewport_ = {0, 0, options.width_px, options.height_px};
 
   // GL context, then MuJoCo's scene and render context drawing offscreen
-  gl_ = create_gl_context(options.backend, options.width_px, options.height_px,
-                          options.egl_device);
+  gl_ = create_gl_context(options.backend, options.width_px, options.height_px, options.egl_device);
   backdrop_ = std::make_unique<Backdrop>(*gl_);
   backdrop_geom_ = options.backdrop_geom;
   scene_.reset(new mjvScene);
@@ -143,8 +142,7 @@ void SceneRenderer::draw_scene(const mjData* data, const std::vector<Capsule>& c
   // positions from the copied qpos: after mj_step2 the caller's own are a step old
   mj_copyData(data_.get(), model_.get(), data);
   mj_fwdPosition(model_.get(), data_.get());
-  mjv_updateScene(model_.get(), data_.get(), &option_, nullptr, &camera_, mjCAT_ALL,
-                  scene_.get());
+  mjv_updateScene(model_.get(), data_.get(), &option_, nullptr, &camera_, mjCAT_ALL, scene_.get());
   mjvScene* scn = scene_.get();
   for (const Capsule& c : capsules) {
     if (scn->ngeom >= scn->maxgeom) break;

@@ -23,8 +23,8 @@ inline constexpr int kMinFrameSidePx = 16;
 inline constexpr int kMaxFrameSidePx = 8192;
 
 enum class RenderQuality {
-  kFast,      // no shadows, reflections or skybox, no multisampling
-  kDefault,   // the model's own <visual> settings
+  kFast,     // no shadows, reflections or skybox, no multisampling
+  kDefault,  // the model's own <visual> settings
 };
 
 // "fast" | "default". Throws InputError "--quality must be fast or default, got '<name>'".
@@ -34,9 +34,9 @@ struct SceneRenderOptions {
   int width_px = 1280;
   int height_px = 720;
   RenderQuality quality = RenderQuality::kDefault;
-  std::string camera = "side";   // a camera named in the model
+  std::string camera = "side";  // a camera named in the model
   GlBackend backend = GlBackend::kOsmesa;
-  EglDeviceChoice egl_device;    // egl only
+  EglDeviceChoice egl_device;  // egl only
   // the backdrop always as a scene geom (backdrop.h), never as the quad that draws it
   // faster where it can: for comparisons
   bool backdrop_geom = false;
@@ -101,16 +101,16 @@ class SceneRenderer {
     void operator()(mjrContext* context) const;
   };
 
-  MjModelPtr model_;   // the copy that is drawn
-  MjDataPtr data_;     // the state being drawn, copied from the caller's
+  MjModelPtr model_;  // the copy that is drawn
+  MjDataPtr data_;    // the state being drawn, copied from the caller's
   mjvOption option_;
   mjvCamera camera_;
   mjrRect viewport_;
   std::unique_ptr<GlContext> gl_;
   std::unique_ptr<Backdrop> backdrop_;
-  bool backdrop_geom_ = false;   // SceneRenderOptions::backdrop_geom
+  bool backdrop_geom_ = false;  // SceneRenderOptions::backdrop_geom
   std::unique_ptr<mjvScene, SceneDeleter> scene_;
-  std::unique_ptr<mjrContext, ContextDeleter> context_;   // freed while gl_ is current
+  std::unique_ptr<mjrContext, ContextDeleter> context_;  // freed while gl_ is current
   std::vector<unsigned char> rgb_;
 };
 

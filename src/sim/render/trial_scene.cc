@@ -11,8 +11,8 @@
 namespace pamsim {
 namespace {
 
-constexpr double kDefaultMuscleDiameterM = 0.016;   // a muscle without [geometry]
-constexpr double kMinMuscleDiameterM = 0.004;       // still visible fully stretched
+constexpr double kDefaultMuscleDiameterM = 0.016;  // a muscle without [geometry]
+constexpr double kMinMuscleDiameterM = 0.004;      // still visible fully stretched
 
 // viridis at t in [0, 1] (clamped): dark blue (low) to yellow (high), as the heat maps
 std::array<float, 3> viridis(double t) {
@@ -55,7 +55,7 @@ void TrialScene::draw_colour_key() {
   constexpr int kCells = 48;
   for (int k = 0; k < kCells; ++k) colours.push_back(viridis((k + 0.5) / kCells));
   const int line = renderer_.line_height_px();
-  const int width = 12 * line;   // the bar beside its labels, clear of the bottom-left plots
+  const int width = 12 * line;  // the bar beside its labels, clear of the bottom-left plots
   const mjrRect bar{renderer_.width_px() - width - 6 * line, line, width, line};
   char high[32];
   std::snprintf(high, sizeof(high), "%.1f MPa", units::pa_to_mpa(colour_max_pa_));

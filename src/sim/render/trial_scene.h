@@ -23,7 +23,7 @@ class TrialScene {
   // Draws the snapshot's state over the whole frame (the renderer keeps it for overlays).
   void draw(const TrialSnapshot& snapshot);
   SceneRenderer& renderer() { return renderer_; }
-  double colour_max_pa() const { return colour_max_pa_; }   // the colour scale's top [Pa]
+  double colour_max_pa() const { return colour_max_pa_; }  // the colour scale's top [Pa]
   // The muscles' colour scale as a bar with its ends' pressures, in the bottom-right corner.
   void draw_colour_key();
 
@@ -31,7 +31,7 @@ class TrialScene {
   struct DrawnMuscle {
     int actuator = -1;
     int tendon = -1;
-    BraidGeometry braid;   // fibre length 0: no [geometry], a fixed thickness
+    BraidGeometry braid;  // fibre length 0: no [geometry], a fixed thickness
   };
   std::vector<SceneRenderer::Capsule> muscle_capsules(const TrialSnapshot& snapshot) const;
 

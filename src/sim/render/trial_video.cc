@@ -20,12 +20,12 @@
 namespace pamsim {
 namespace {
 
-constexpr double kPlotWidthShare = 0.32;    // of the frame, each plot
+constexpr double kPlotWidthShare = 0.32;  // of the frame, each plot
 constexpr double kPlotHeightShare = 0.26;
 constexpr double kTableLineSpacing = 1.25;  // the overlay table's rows, in font line heights
 constexpr int kMinPlotHeightPx = 60;
-constexpr double kAngleTickDeg = 10.0;      // the angle plot's range: multiples of this
-constexpr double kPressureTickMpa = 0.1;    // the pressure plot's range: [0, a multiple]
+constexpr double kAngleTickDeg = 10.0;    // the angle plot's range: multiples of this
+constexpr double kPressureTickMpa = 0.1;  // the pressure plot's range: [0, a multiple]
 
 // frames at k / fps strictly before the end of the trial: duration x fps when whole
 long frames_in(double duration_s, int fps) {
@@ -64,7 +64,8 @@ void state_numbers(const TrialSnapshot& snap, std::string* names, std::string* v
   for (std::size_t i = 0; i < labels.size(); ++i) {
     *names += "\n" + labels[i];
     std::snprintf(line, sizeof(line), "\n%.3f MPa (cmd %.3f)",
-                  units::pa_to_mpa((*snap.pressure_pa)[i]), units::pa_to_mpa((*snap.command_pa)[i]));
+                  units::pa_to_mpa((*snap.pressure_pa)[i]),
+                  units::pa_to_mpa((*snap.command_pa)[i]));
     *values += line;
   }
 }
@@ -144,10 +145,10 @@ std::string reflex_state(const TrialSnapshot& snap) {
 // Each muscle's own colour in the live plot, up to eight (a leg's), and its name in the key.
 constexpr std::size_t kMuscleColours = 8;
 constexpr std::array<float, 3> kMuscleRgb[kMuscleColours] = {
-    {0.95f, 0.3f, 0.3f},  {0.35f, 0.45f, 1.0f}, {0.3f, 0.8f, 0.35f}, {0.75f, 0.4f, 0.9f},
-    {1.0f, 0.6f, 0.15f},  {0.2f, 0.85f, 0.9f},  {1.0f, 0.5f, 0.8f},  {0.65f, 0.5f, 0.3f}};
-constexpr const char* kMuscleColourNames[kMuscleColours] = {
-    "red", "blue", "green", "purple", "orange", "cyan", "pink", "brown"};
+    {0.95f, 0.3f, 0.3f}, {0.35f, 0.45f, 1.0f}, {0.3f, 0.8f, 0.35f}, {0.75f, 0.4f, 0.9f},
+    {1.0f, 0.6f, 0.15f}, {0.2f, 0.85f, 0.9f},  {1.0f, 0.5f, 0.8f},  {0.65f, 0.5f, 0.3f}};
+constexpr const char* kMuscleColourNames[kMuscleColours] = {"red",    "blue", "green", "purple",
+                                                            "orange", "cyan", "pink",  "brown"};
 
 std::array<float, 3> muscle_rgb(std::size_t i, bool command) {
   std::array<float, 3> c = kMuscleRgb[i % kMuscleColours];
@@ -186,9 +187,10 @@ void validate_video_options(const VideoOptions& o, const std::string& mp4_option
       known = known || o.x264_preset == p;
       names += std::string(names.empty() ? "" : ", ") + p;
     }
-    if (!known) throw InputError("--preset must be one of " + names + ", got '" + o.x264_preset + "'");
+    if (!known)
+      throw InputError("--preset must be one of " + names + ", got '" + o.x264_preset + "'");
   }
-  if (!o.mp4_path.empty() && o.mp4_path != "-") {   // "-": standard output
+  if (!o.mp4_path.empty() && o.mp4_path != "-") {  // "-": standard output
     if (!ends_with_mp4(o.mp4_path)) {
       throw InputError(mp4_option + " " + o.mp4_path + ": the video is an MP4 file, name it .mp4");
     }
@@ -211,21 +213,24 @@ TrialVideo::TrialVideo(const TrialModel& model, const Scenario& sc, const VideoO
     plots_ = std::make_unique<Plots>();
     // the muscles in their tendons' colours, commands dimmer
     // the measured joint by name ("knee angle [deg]"): a leg has several
-    const std::string joint = model.joint.name + (model.joint.hinge ? " angle [deg]" : " position [mm]");
+    const std::string joint =
+        model.joint.name + (model.joint.hinge ? " angle [deg]" : " position [mm]");
     init_figure(&plots_->angle, joint.c_str(), "%.0f", sc.duration_s,
-                {{0.9f, 0.75f, 0.1f}});   // yellow
+                {{0.9f, 0.75f, 0.1f}});  // yellow
     std::vector<std::array<float, 3>> lines;
     const std::size_t n = std::min<std::size_t>(model.muscles.size(), mjMAXLINE / 2);
     for (std::size_t i = 0; i < n; ++i) lines.push_back(muscle_rgb(i, false));
     for (std::size_t i = 0; i < n; ++i) lines.push_back(muscle_rgb(i, true));
-    lines.push_back({1.0f, 1.0f, 1.0f});   // the reflex trigger, white
+    lines.push_back({1.0f, 1.0f, 1.0f});  // the reflex trigger, white
     init_figure(&plots_->pressure, "pressure [MPa] (dim: command)", "%.1f", sc.duration_s, lines);
     // one entry per colour: each muscle its own up to eight, more joined ("red IL/X"); three
     // entries a line, so that the key box stays narrow, clear of the numbers' box and of a
     // leg framed in the middle
     constexpr std::size_t kPerLine = 3;
     for (std::size_t c = 0; c < std::min(n, kMuscleColours); ++c) {
-      plot_key_ += std::string(c == 0 ? "" : c % kPerLine == 0 ? "\n" : ", ") +
+      plot_key_ += std::string(c == 0              ? ""
+                               : c % kPerLine == 0 ? "\n"
+                                                   : ", ") +
                    kMuscleColourNames[c] + " ";
       for (std::size_t i = c; i < n; i += kMuscleColours) {
         plot_key_ += (i > c ? "/" : "") + model.muscles[i].label;
@@ -247,8 +252,8 @@ TrialVideo::TrialVideo(const TrialModel& model, const Scenario& sc, const VideoO
     mp4_ = std::make_unique<Mp4Writer>(options.mp4_path, settings);
   }
   if (!options.png_dir.empty()) {
-    png_ = std::make_unique<PngSequenceWriter>(options.png_dir, options.width_px,
-                                               options.height_px);
+    png_ =
+        std::make_unique<PngSequenceWriter>(options.png_dir, options.width_px, options.height_px);
   }
 }
 
@@ -290,17 +295,17 @@ void TrialVideo::draw_overlays(const TrialSnapshot& snap) {
   }
   renderer_.draw_text((names + "\nreflex").c_str(), (values + "\n" + reflex).c_str());
   // the title and the keys, top right
-  std::snprintf(line, sizeof(line), "%s, t = %.2f s\ndark 0 to yellow %.1f MPa",
-                title_.c_str(), snap.time_s, units::pa_to_mpa(scene_.colour_max_pa()));
+  std::snprintf(line, sizeof(line), "%s, t = %.2f s\ndark 0 to yellow %.1f MPa", title_.c_str(),
+                snap.time_s, units::pa_to_mpa(scene_.colour_max_pa()));
   std::string keys = "trial\nmuscle colour";
   std::string key_values = line;
   if (plots_) {
     keys += "\nplot lines";
-    for (char c : plot_key_) keys += c == '\n' ? "\n" : "";   // a continued key's rows
+    for (char c : plot_key_) keys += c == '\n' ? "\n" : "";  // a continued key's rows
     key_values += "\n" + plot_key_ + "; white: trigger";
   }
   renderer_.draw_text(keys.c_str(), key_values.c_str(), mjGRID_TOPRIGHT);
-  scene_.draw_colour_key();   // the muscles' colour scale, drawn
+  scene_.draw_colour_key();  // the muscles' colour scale, drawn
   if (!plots_) return;
 
   // the live plots, bottom left: pressures at the bottom, the joint above
@@ -320,14 +325,15 @@ void TrialVideo::draw_overlays(const TrialSnapshot& snap) {
   set_y_range(&p.pressure, 0.0, p.pressure_max_mpa, kPressureTickMpa);
   // the first trigger: a white vertical line across each plot
   if (trigger_s_ >= 0) {
-    for (auto [figure, line_index] : {std::pair{&p.angle, 1}, {&p.pressure, static_cast<int>(2 * n)}}) {
+    for (auto [figure, line_index] :
+         {std::pair{&p.angle, 1}, {&p.pressure, static_cast<int>(2 * n)}}) {
       figure->linepnt[line_index] = 0;
       append_point(figure, line_index, trigger_s_, figure->range[1][0]);
       append_point(figure, line_index, trigger_s_, figure->range[1][1]);
     }
   }
   const int w = static_cast<int>(kPlotWidthShare * renderer_.width_px());
-  const int h = plot_height_px(labels.size() + 3);   // time, joint, the muscles, reflex
+  const int h = plot_height_px(labels.size() + 3);  // time, joint, the muscles, reflex
   renderer_.draw_figure(mjrRect{0, 0, w, h}, &p.pressure);
   renderer_.draw_figure(mjrRect{0, h, w, h}, &p.angle);
 }

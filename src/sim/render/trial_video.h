@@ -27,18 +27,18 @@ namespace pamsim {
 inline constexpr int kMaxVideoFps = 240;
 
 struct VideoOptions {
-  std::string mp4_path;   // H.264 MP4 file (.mp4); empty: none
-  std::string png_dir;    // folder for frame_00000.png, ...; empty: none
-  int width_px = 1280;    // even (4:2:0 video), [kMinFrameSidePx, kMaxFrameSidePx]
+  std::string mp4_path;  // H.264 MP4 file (.mp4); empty: none
+  std::string png_dir;   // folder for frame_00000.png, ...; empty: none
+  int width_px = 1280;   // even (4:2:0 video), [kMinFrameSidePx, kMaxFrameSidePx]
   int height_px = 720;
-  int fps = 30;           // [1, kMaxVideoFps]
+  int fps = 30;  // [1, kMaxVideoFps]
   RenderQuality quality = RenderQuality::kDefault;
-  std::string x264_preset;   // libx264's speed/size trade-off; empty: by quality (fast:
-                             // ultrafast, default: veryfast); one of kX264Presets
+  std::string x264_preset;  // libx264's speed/size trade-off; empty: by quality (fast:
+                            // ultrafast, default: veryfast); one of kX264Presets
   std::string camera = "side";
   GlBackend backend = GlBackend::kOsmesa;
-  EglDeviceChoice egl_device;   // egl only
-  bool plot = false;      // live plots of angle and pressures
+  EglDeviceChoice egl_device;  // egl only
+  bool plot = false;           // live plots of angle and pressures
   // called after each frame written with (frames written, frames in all), e.g. for progress
   std::function<void(long, long)> on_frame;
 };
@@ -49,9 +49,8 @@ struct VideoOptions {
 std::string figure_time_format(double duration_s, int grid_lines);
 
 // libx264's presets, fastest first (what --preset accepts).
-inline constexpr const char* kX264Presets[] = {"ultrafast", "superfast", "veryfast", "faster",
-                                               "fast",      "medium",    "slow",     "slower",
-                                               "veryslow"};
+inline constexpr const char* kX264Presets[] = {
+    "ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"};
 
 // Checks what needs no model: size, fps, the outputs' names. `mp4_option` names the option
 // that gave mp4_path in messages ("-o", "--video"). Throws InputError naming the option.
@@ -65,7 +64,7 @@ class TrialVideo : public TrialObserver {
   // `seed` is the trial's (for the title line).
   TrialVideo(const TrialModel& model, const Scenario& scenario, const VideoOptions& options,
              std::uint64_t seed);
-  ~TrialVideo() override;   // unfinished outputs are removed
+  ~TrialVideo() override;  // unfinished outputs are removed
 
   double next_observation_time_s() const override;
   void observe(const TrialSnapshot& snapshot) override;
@@ -74,8 +73,8 @@ class TrialVideo : public TrialObserver {
   void finish();
 
   long frames_written() const { return next_frame_; }
-  std::string encoder_name() const;   // the MP4's H.264 encoder; "png" without an MP4
-  std::string gl_in_use() const { return renderer_.gl_in_use(); }   // SceneRenderer's
+  std::string encoder_name() const;  // the MP4's H.264 encoder; "png" without an MP4
+  std::string gl_in_use() const { return renderer_.gl_in_use(); }  // SceneRenderer's
 
  private:
   struct Plots;
@@ -84,23 +83,23 @@ class TrialVideo : public TrialObserver {
   int plot_height_px(std::size_t table_rows) const;
 
   VideoOptions options_;
-  std::string title_;                 // "drop_mass.toml, seed 1"
-  double trigger_s_ = -1.0;           // the first reflex trigger; < 0: none yet
-  std::string plot_key_;              // "red ago, blue anta": the pressure plot's lines
-  long frame_count_ = 0;   // frames the whole trial makes
+  std::string title_;        // "drop_mass.toml, seed 1"
+  double trigger_s_ = -1.0;  // the first reflex trigger; < 0: none yet
+  std::string plot_key_;     // "red ago, blue anta": the pressure plot's lines
+  long frame_count_ = 0;     // frames the whole trial makes
   long next_frame_ = 0;
   TrialScene scene_;
-  SceneRenderer& renderer_;        // scene_'s, for the overlays
-  std::unique_ptr<Plots> plots_;   // with --plot
+  SceneRenderer& renderer_;       // scene_'s, for the overlays
+  std::unique_ptr<Plots> plots_;  // with --plot
   std::unique_ptr<Mp4Writer> mp4_;
   std::unique_ptr<PngSequenceWriter> png_;
 };
 
 struct RenderedTrial {
   TrialResult trial;
-  long frames = 0;       // written to each output
-  std::string encoder;   // the MP4's H.264 encoder; "png" without an MP4
-  std::string gl;        // the GL context that drew it (SceneRenderer::gl_in_use)
+  long frames = 0;      // written to each output
+  std::string encoder;  // the MP4's H.264 encoder; "png" without an MP4
+  std::string gl;       // the GL context that drew it (SceneRenderer::gl_in_use)
 };
 
 // Runs `scenario`'s trial with `seed` on `model`, rendered as it runs into the outputs of

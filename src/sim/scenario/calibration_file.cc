@@ -34,25 +34,35 @@ std::vector<std::string> calibrated_actuators(const toml::table& doc) {
 }  // namespace
 
 std::vector<KeyTable> calibration_key_tables(ArmCalibration* c) {
-  NumberRow start{"start_angle_deg", "deg", units::kPi, KeyRange{-90.0, 90.0, true, true},
-                  "the calibrated joint's angle at rest at the start", &c->start_angle_rad};
+  NumberRow start{"start_angle_deg",
+                  "deg",
+                  units::kPi,
+                  KeyRange{-90.0, 90.0, true, true},
+                  "the calibrated joint's angle at rest at the start",
+                  &c->start_angle_rad};
   start.required = true;
-  start.divisor = 180.0;   // units::deg_to_rad's rounding
-  KeyTable t{"",
-             {start,
-              {"antagonist_deformation_mm", "mm", units::kMPerMm, kAnyRange,
-               "the antagonist's chosen pre-stretch at the start (a small pre-tension)",
-               &c->antagonist_deformation_m},
-              {"gravity_torque_Nm", "N m", 1.0, kAnyRange,
-               "what the PAMs hold against gravity at the start, for the record",
-               &c->gravity_torque_nm}},
-             {}};
+  start.divisor = 180.0;  // units::deg_to_rad's rounding
+  KeyTable t{
+      "",
+      {start,
+       {"antagonist_deformation_mm", "mm", units::kMPerMm, kAnyRange,
+        "the antagonist's chosen pre-stretch at the start (a small pre-tension)",
+        &c->antagonist_deformation_m},
+       {"gravity_torque_Nm", "N m", 1.0, kAnyRange,
+        "what the PAMs hold against gravity at the start, for the record", &c->gravity_torque_nm}},
+      {}};
   t.texts = {{"written_by", "the program and version that wrote the file", &c->written_by}};
   for (CalibratedLine& line : c->lines) {
-    NumberRow length{line.actuator + kLineSuffix, "mm", units::kMPerMm, kPositiveRange,
+    NumberRow length{line.actuator + kLineSuffix,
+                     "mm",
+                     units::kMPerMm,
+                     kPositiveRange,
                      "the muscle's line length (tendon length minus PAM length) at the start",
                      &line.line_length_m};
-    NumberRow pressure{line.actuator + "_pressure_MPa", "MPa", units::kPaPerMPa, kAnyRange,
+    NumberRow pressure{line.actuator + "_pressure_MPa",
+                       "MPa",
+                       units::kPaPerMPa,
+                       kAnyRange,
                        "the muscle's pressure the line length was solved for",
                        &line.pressure_pa};
     length.required = pressure.required = true;
@@ -85,7 +95,7 @@ std::string calibration_to_toml(const ArmCalibration& c, const std::string& prov
       << "# arm at rest at start_angle_deg with both PAMs at the given pressures and the\n"
       << "# antagonist stretched by antagonist_deformation_mm (a design choice: a small\n"
       << "# pre-tension so neither line is slack at the start). Written by `pamsim calibrate`.\n"
-      << "written_by = " << toml::value<std::string>(provenance) << "\n"   // TOML-escaped
+      << "written_by = " << toml::value<std::string>(provenance) << "\n"  // TOML-escaped
       << "start_angle_deg = " << units::rad_to_deg(c.start_angle_rad) << "\n";
   for (const CalibratedLine& l : c.lines) {
     out << l.actuator << "_pressure_MPa = " << units::pa_to_mpa(l.pressure_pa) << "\n";

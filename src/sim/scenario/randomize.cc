@@ -39,7 +39,8 @@ void read_parameters(const TableEntry& t, Randomization* r) {
   };
   for (const auto& [k, _] : t.table) {
     const std::string key(k.str());
-    const bool truncation = r->distribution != Distribution::kUniform && (key == "min" || key == "max");
+    const bool truncation =
+        r->distribution != Distribution::kUniform && (key == "min" || key == "max");
     if (key != "key" && key != "distribution" && key != first && key != second && !truncation) {
       fail(key, "is not a key of a " + std::string(name_of(kDistributions, r->distribution)) +
                     " draw (" + first + ", " + second +
@@ -49,7 +50,8 @@ void read_parameters(const TableEntry& t, Randomization* r) {
   r->a = required(t, first);
   r->b = required(t, second);
   if (r->distribution == Distribution::kUniform) {
-    if (!(r->a < r->b)) fail("from", "must be below to, got " + format_value(r->a) + " and " + format_value(r->b));
+    if (!(r->a < r->b))
+      fail("from", "must be below to, got " + format_value(r->a) + " and " + format_value(r->b));
     return;
   }
   // stddev, median and sigma are > 0 by their rows
@@ -83,7 +85,7 @@ double Randomization::draw(std::mt19937_64& rng) const {
     return a + (b - a) * u;
   }
   for (int i = 0; i < kMaxRedraws; ++i) {
-    const double z = portable_standard_normal(rng);   // the same draws with any library
+    const double z = portable_standard_normal(rng);  // the same draws with any library
     const double v = distribution == Distribution::kNormal ? a + b * z : a * std::exp(b * z);
     if (v >= min && v <= max) return v;
   }
@@ -104,8 +106,14 @@ const std::vector<EntryKey>& randomize_entry_keys() {
   static const std::vector<EntryKey> keys = {
       {"key", "", "a numeric scenario key, not seed", "(required)", "the scenario key drawn",
        EntryType::kText},
-      {"distribution", "", "", "(required)", "how it is drawn, once per seed",
-       EntryType::kChoice, {}, enum_name_list(kDistributions)},
+      {"distribution",
+       "",
+       "",
+       "(required)",
+       "how it is drawn, once per seed",
+       EntryType::kChoice,
+       {},
+       enum_name_list(kDistributions)},
       {"from", "(the key's)", "uniform: below to", "(required)", "a uniform draw's lower end",
        EntryType::kNumber},
       {"to", "(the key's)", "uniform", "(required)", "a uniform draw's upper end",
@@ -136,7 +144,8 @@ void read_randomizations(ConfigReader& in, std::vector<Randomization>* randomize
   }
   const bool has_seed = in.has("randomize_seed");
   const std::int64_t seed = in.get_int("randomize_seed", 1);
-  in.check(!randomize->empty() || !has_seed, "randomize_seed", "is for files with [[randomize]] tables");
+  in.check(!randomize->empty() || !has_seed, "randomize_seed",
+           "is for files with [[randomize]] tables");
   in.check(seed >= 0, "randomize_seed", "must be >= 0, got " + std::to_string(seed));
   *randomize_seed = static_cast<std::uint64_t>(seed);
 }
@@ -144,7 +153,8 @@ void read_randomizations(ConfigReader& in, std::vector<Randomization>* randomize
 std::vector<double> draw_values(const std::vector<Randomization>& randomize,
                                 std::uint64_t randomize_seed, std::int64_t seed_index) {
   const auto index = static_cast<std::uint64_t>(seed_index);
-  std::seed_seq seq{static_cast<std::uint32_t>(randomize_seed), static_cast<std::uint32_t>(randomize_seed >> 32),
+  std::seed_seq seq{static_cast<std::uint32_t>(randomize_seed),
+                    static_cast<std::uint32_t>(randomize_seed >> 32),
                     static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(index >> 32)};
   std::mt19937_64 rng(seq);
   std::vector<double> values;
@@ -163,8 +173,10 @@ void append_draws(const std::vector<Randomization>& randomize, std::uint64_t ran
 nlohmann::json randomizations_json(const std::vector<Randomization>& randomize) {
   nlohmann::json out = nlohmann::json::array();
   for (const Randomization& r : randomize) {
-    nlohmann::json j = {{"key", r.key}, {"distribution", name_of(kDistributions, r.distribution)},
-                        {"a", r.a}, {"b", r.b}};
+    nlohmann::json j = {{"key", r.key},
+                        {"distribution", name_of(kDistributions, r.distribution)},
+                        {"a", r.a},
+                        {"b", r.b}};
     if (std::isfinite(r.min)) j["min"] = r.min;
     if (std::isfinite(r.max)) j["max"] = r.max;
     out.push_back(j);
@@ -177,7 +189,8 @@ std::vector<Randomization> randomizations_from_json(const nlohmann::json& j) {
   for (const auto& e : j) {
     Randomization r;
     r.key = e.at("key").get<std::string>();
-    r.distribution = parse_name(kDistributions, e.at("distribution").get<std::string>(), "randomize");
+    r.distribution =
+        parse_name(kDistributions, e.at("distribution").get<std::string>(), "randomize");
     r.a = e.at("a").get<double>();
     r.b = e.at("b").get<double>();
     if (e.contains("min")) r.min = e.at("min").get<double>();

@@ -28,16 +28,16 @@
 
 namespace pamsim {
 
-class ConfigReader;   // base/config_reader.h
+class ConfigReader;  // base/config_reader.h
 
 enum class Distribution { kUniform, kNormal, kLogNormal };
 
 struct Randomization {
   std::string key;
   Distribution distribution = Distribution::kUniform;
-  double a = 0.0;   // uniform: from; normal: mean; lognormal: median
-  double b = 0.0;   // uniform: to; normal: stddev; lognormal: sigma
-  double min = -std::numeric_limits<double>::infinity();   // normal, lognormal
+  double a = 0.0;  // uniform: from; normal: mean; lognormal: median
+  double b = 0.0;  // uniform: to; normal: stddev; lognormal: sigma
+  double min = -std::numeric_limits<double>::infinity();  // normal, lognormal
   double max = std::numeric_limits<double>::infinity();
 
   // One draw (truncated to [min, max] by drawing again).

@@ -28,8 +28,10 @@ void read_event_keys(ConfigReader& in, EventSpec* e) {
 void set_joint_threshold(ConfigReader& in, const std::string& key, const EventThresholds& t,
                          ConditionSpec* c) {
   const std::pair<const std::optional<double>*, ConditionKind> given[] = {
-      {&t.below_rad, ConditionKind::kJointBelow}, {&t.above_rad, ConditionKind::kJointAbove},
-      {&t.below_m, ConditionKind::kJointBelow}, {&t.above_m, ConditionKind::kJointAbove}};
+      {&t.below_rad, ConditionKind::kJointBelow},
+      {&t.above_rad, ConditionKind::kJointAbove},
+      {&t.below_m, ConditionKind::kJointBelow},
+      {&t.above_m, ConditionKind::kJointAbove}};
   int n = 0;
   for (const auto& [value, kind] : given) {
     if (!value->has_value()) continue;
@@ -66,7 +68,7 @@ void read_condition(ConfigReader& in, const Scenario& sc, EventSpec* e) {
     c.body_b = bodies[1];
   } else if (in.has(key + ".joint")) {
     read_key_rows(in, rows_given(in, rows_named(table, {"joint", "below_deg", "above_deg",
-                                                       "below_mm", "above_mm"})));
+                                                        "below_mm", "above_mm"})));
     set_joint_threshold(in, key, thresholds, &c);
   } else {
     c.kind = ConditionKind::kBodyBelow;
@@ -125,7 +127,7 @@ void read_bodies(ConfigReader& in, Scenario* sc) {
     in.check(keys.mass_kg || in.has(inertia_key), key, "is required (or inertia_kg_m2)");
     BodyMassSpec spec{keys.mass_kg ? key : inertia_key, body, keys.mass_kg.value_or(0.0), {}};
     if (in.has(inertia_key)) {
-      const std::vector<double>& i = keys.inertia_kg_m2;   // three (its row)
+      const std::vector<double>& i = keys.inertia_kg_m2;  // three (its row)
       for (int k = 0; k < 3; ++k) {
         in.check(i[k] <= i[(k + 1) % 3] + i[(k + 2) % 3], inertia_key,
                  "is no rigid body's: each moment must be at most the sum of the other two");
@@ -153,14 +155,15 @@ void read_bodies_and_holds(ConfigReader& in, Scenario* sc) {
     read_key_rows(in, rows_given(in, table));
     h.at_position = in.has(h.key + ".position_m");
     if (h.at_position) {
-      h.position_m = {position[0], position[1], position[2]};   // three (its row)
+      h.position_m = {position[0], position[1], position[2]};  // three (its row)
       in.check(!in.has(h.key + ".above_site") && !in.has(h.key + ".height_m"), h.key,
                "gives position_m and above_site or height_m; give one");
     } else {
       in.check(!h.above_site.empty(), h.key, "must give above_site (with height_m) or position_m");
     }
     for (const HoldSpec& other : sc->holds) {
-      in.check(other.body != body, h.key, "holds body '" + body + "', already held by " + other.key);
+      in.check(other.body != body, h.key,
+               "holds body '" + body + "', already held by " + other.key);
     }
     sc->holds.push_back(h);
   }
@@ -171,7 +174,8 @@ void read_events(ConfigReader& in, Scenario* sc) {
     EventSpec e;
     e.key = "events." + name;
     e.name = name;
-    in.check(sc->event(name) == nullptr, e.key, "repeats the name of an event the [drop] table makes");
+    in.check(sc->event(name) == nullptr, e.key,
+             "repeats the name of an event the [drop] table makes");
     read_event_keys(in, &e);
     read_condition(in, *sc, &e);
     sc->events.push_back(e);

@@ -11,7 +11,7 @@
 #include "base/toml_file.h"
 #include "reflex/controller_registry.h"
 #include "sim/core/metrics.h"
-#include "sim/core/trial_model.h"   // trial_only_key
+#include "sim/core/trial_model.h"  // trial_only_key
 #include "sim/scenario/scenario_key_docs.h"
 #include "sim/scenario/scenario_reading.h"
 #include "sim/scenario/scenario_key_tables.h"
@@ -51,10 +51,9 @@ void read_valve(ConfigReader& in, const std::string& valve, Scenario* sc) {
   read_key_rows(in, tables.at(0));
   read_key_rows(in, rows_given(in, regulator));
   // a rig's supply and command range, and the loop's restrictions, must make sense together
-  for (const char* key : {"valve.supply_MPa", "valve.command_max_MPa",
-                          "valve.supply_critical_pressure_ratio",
-                          "valve.exhaust_critical_pressure_ratio",
-                          "valve.tube_critical_pressure_ratio"}) {
+  for (const char* key :
+       {"valve.supply_MPa", "valve.command_max_MPa", "valve.supply_critical_pressure_ratio",
+        "valve.exhaust_critical_pressure_ratio", "valve.tube_critical_pressure_ratio"}) {
     if (!in.has(key)) continue;
     in_file(in, [&] {
       validate_pneumatic_params(sc->pneumatics, key);
@@ -71,9 +70,8 @@ void read_pneumatics(ConfigReader& in, Scenario* sc) {
     if (!t->is_table()) in.fail("pneumatics", "must be a table of the pneumatics file's fields");
     changes = *t->as_table();
   }
-  sc->pneumatics = in_file(in, [&] {
-    return load_pneumatic_params(sc->pneumatics_file, changes, "pneumatics.");
-  });
+  sc->pneumatics = in_file(
+      in, [&] { return load_pneumatic_params(sc->pneumatics_file, changes, "pneumatics."); });
 }
 
 void read_model(ConfigReader& in, Scenario* sc) {
@@ -87,15 +85,18 @@ void read_model(ConfigReader& in, Scenario* sc) {
 void read_controller(ConfigReader& in, Scenario* sc) {
   std::string kind = default_controller_kind();
   read_key_rows(in, controller_kind_key_table(&kind));
-  const ControllerKind* chosen = find_controller_kind(kind);   // one of them: the row's choices
+  const ControllerKind* chosen = find_controller_kind(kind);  // one of them: the row's choices
   // another kind's section would be ignored: refused (kinds may share one: the reflex kinds
   // all read [reflex], each its own keys of it, and reject_unknown names the rest)
   for (const ControllerKind& other : controller_kinds()) {
     for (const std::string& section : other.sections) {
       const auto& own = chosen->sections;
       if (std::find(own.begin(), own.end(), section) != own.end()) continue;
-      in.check(!in.has(section), section, "is the " + other.name + " controller's section, but "
-                                          "controller.kind is \"" + kind + "\"");
+      in.check(!in.has(section), section,
+               "is the " + other.name +
+                   " controller's section, but "
+                   "controller.kind is \"" +
+                   kind + "\"");
     }
   }
   ControllerScenario context;
@@ -118,7 +119,7 @@ void read_metrics(ConfigReader& in, Scenario* sc, bool has_drop) {
   }
   sc->metrics = defaults;
   read_key_rows(in, metrics_key_table(sc));
-  make_metric_sets(*sc);   // throws "<file>: metrics ..." for a set whose events are missing
+  make_metric_sets(*sc);  // throws "<file>: metrics ..." for a set whose events are missing
   // a line's working load is read only by the tension set: refused where it would be ignored
   const bool tension = std::count(sc->metrics.begin(), sc->metrics.end(), "tension") > 0;
   for (const MuscleSpec& m : sc->muscles) {
@@ -141,8 +142,8 @@ void apply_scenario_overrides(ConfigReader& in, const std::vector<std::string>& 
     const std::size_t start = eq == std::string::npos ? eq : o.find_first_not_of(' ', eq + 1);
     const std::string value = start == std::string::npos ? "" : o.substr(start);
     const bool path = !value.empty() && (value[0] == '"' || value[0] == '\'');
-    in.apply_override(plant && parts.size() == 3 && path && in.is_table(key)
-                          ? key + ".file=" + value : o);
+    in.apply_override(
+        plant && parts.size() == 3 && path && in.is_table(key) ? key + ".file=" + value : o);
   }
 }
 
@@ -222,7 +223,7 @@ RecordedScenario load_recorded_scenario(const std::string& text, const std::stri
                                         const std::string& dir, const std::string& header) {
   ConfigReader in(text, path);
   RecordedScenario r;
-  r.scenario = read_scenario(in, overrides);   // validates, and finds the defaults
+  r.scenario = read_scenario(in, overrides);  // validates, and finds the defaults
   const std::map<std::string, std::string> defaults = in.defaults_used();
   // file paths: recorded as read, then written relative to the new file's folder
   namespace fs = std::filesystem;
@@ -250,18 +251,18 @@ std::string resolved_scenario_toml(const std::string& text, const std::string& p
 }
 
 std::vector<ScenarioKeyValue> scenario_key_values(const std::string& path,
-                                                 const std::vector<std::string>& overrides) {
+                                                  const std::vector<std::string>& overrides) {
   ConfigReader in(path);
   read_scenario(in, overrides);
-  const std::vector<std::string> asked = in.asked_keys();   // sorted
+  const std::vector<std::string> asked = in.asked_keys();  // sorted
   std::vector<ScenarioKeyValue> out;
   for (std::size_t i = 0; i < asked.size(); ++i) {
     const std::string& key = asked[i];
     const toml::node_view<const toml::node> node = in.document().at_path(key);
     // a name that may hold a table (muscles.<m>.plant) is a key where the file gives a value
     const bool is_table_name = !(node && !node.is_table()) &&
-        (in.is_table(key) || is_scenario_table(key) ||
-         (i + 1 < asked.size() && asked[i + 1].rfind(key + ".", 0) == 0));
+                               (in.is_table(key) || is_scenario_table(key) ||
+                                (i + 1 < asked.size() && asked[i + 1].rfind(key + ".", 0) == 0));
     if (is_table_name) continue;
     ScenarioKeyValue kv{key, "", false};
     if (node) {
@@ -279,8 +280,8 @@ bool is_scenario_path_key(const std::string& key) {
   if (key == "model.file" || key == "model.calibration" || key == "model.pneumatics") return true;
   if (key.rfind("model.", 0) == 0 && ends_with(key, "_params")) return true;
   if (key.rfind("muscles.", 0) == 0) {
-    return ends_with(key, ".params") || ends_with(key, ".plant") ||
-           ends_with(key, ".plant.file") || ends_with(key, ".command.file");
+    return ends_with(key, ".params") || ends_with(key, ".plant") || ends_with(key, ".plant.file") ||
+           ends_with(key, ".command.file");
   }
   return false;
 }

@@ -75,7 +75,7 @@ struct ScenarioKeyValue {
   bool is_default = false;
 };
 std::vector<ScenarioKeyValue> scenario_key_values(const std::string& path,
-                                                 const std::vector<std::string>& overrides = {});
+                                                  const std::vector<std::string>& overrides = {});
 
 // True for the keys that hold file paths (relative to the scenario file), for tools that
 // move a scenario elsewhere (a sweep's best.toml): model.file, model.calibration,

@@ -24,10 +24,10 @@ void read_joints(ConfigReader& in, Scenario* sc) {
       return names;
     };
     const bool is_hinge = gives(hinge), is_slide = gives(slide);
-    in.check(!(is_hinge && is_slide), j.key, "mixes a hinge's keys (" + list(hinge) +
-                                                 ") with a slide's (" + list(slide) + ")");
-    in.check(is_hinge || is_slide, j.key, "gives none of " + list(hinge) + " (a hinge), " +
-                                              list(slide) + " (a slide)");
+    in.check(!(is_hinge && is_slide), j.key,
+             "mixes a hinge's keys (" + list(hinge) + ") with a slide's (" + list(slide) + ")");
+    in.check(is_hinge || is_slide, j.key,
+             "gives none of " + list(hinge) + " (a hinge), " + list(slide) + " (a slide)");
     j.rotational = is_hinge;
     read_key_rows(in, rows_given(in, is_hinge ? hinge : slide));
     sc->joints.push_back(j);

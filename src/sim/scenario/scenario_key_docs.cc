@@ -10,7 +10,7 @@
 #include <set>
 #include <string>
 
-#include "base/config_reader.h"   // split_key
+#include "base/config_reader.h"  // split_key
 #include "reflex/controller_registry.h"
 #include "sensing/instrument_keys.h"
 #include "sensing/instrument_kinds.h"
@@ -41,19 +41,28 @@ bool matches(const std::string& pattern, const std::string& key) {
 
 // seed, metrics, model, sim, valve, muscles
 std::vector<KeyDoc> model_docs() {
-  Scenario scenario;   // the rows' defaults are the struct's own
-  std::vector<KeyDoc> docs =
-      key_table_docs({top_level_key_table(&scenario), metrics_key_table(&scenario),
-                      model_key_table(&scenario)});
+  Scenario scenario;  // the rows' defaults are the struct's own
+  std::vector<KeyDoc> docs = key_table_docs(
+      {top_level_key_table(&scenario), metrics_key_table(&scenario), model_key_table(&scenario)});
   const std::vector<KeyDoc> by_hand = {
-      {"pneumatics.<table>.<field>", "(the file's)", "(model.pneumatics')", "as in the pneumatics file (pamsim keys --pneumatics)", "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index"},
-      {"muscles.<actuator>.plant", "", "(the params file's law)", "path to a plant file; or a table: file and any of that file's fields in its units (muscles.<m>.plant.geometry.wall_thickness_mm = 1.5), each validated as the file's own", "the physical muscle (AVBDL law with friction)"},
-      {"muscles.<actuator>.plant.file", "", "(required in the table form)", "path to a plant file", "the plant file whose fields muscles.<actuator>.plant.<table>.<field> change"},
-      {"muscles.<actuator>.plant.<table>.<field>", "(the file's)", "(the plant file's)", "as in the plant file (pam_actuator/plant_params.h)", "a field of the plant file, e.g. geometry.wall_thickness_mm, bladder.diameter_mm"},
-      {"muscles.<actuator>.plant.<table>.<stroke>.<field>", "(the file's)", "(the plant file's)", "as in the plant file (pam_actuator/plant_params.h)", "a field of the plant file's friction strokes, e.g. friction.extension.A0_mm2"},
+      {"pneumatics.<table>.<field>", "(the file's)", "(model.pneumatics')",
+       "as in the pneumatics file (pamsim keys --pneumatics)",
+       "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index"},
+      {"muscles.<actuator>.plant", "", "(the params file's law)",
+       "path to a plant file; or a table: file and any of that file's fields in its units "
+       "(muscles.<m>.plant.geometry.wall_thickness_mm = 1.5), each validated as the file's own",
+       "the physical muscle (AVBDL law with friction)"},
+      {"muscles.<actuator>.plant.file", "", "(required in the table form)", "path to a plant file",
+       "the plant file whose fields muscles.<actuator>.plant.<table>.<field> change"},
+      {"muscles.<actuator>.plant.<table>.<field>", "(the file's)", "(the plant file's)",
+       "as in the plant file (pam_actuator/plant_params.h)",
+       "a field of the plant file, e.g. geometry.wall_thickness_mm, bladder.diameter_mm"},
+      {"muscles.<actuator>.plant.<table>.<stroke>.<field>", "(the file's)", "(the plant file's)",
+       "as in the plant file (pam_actuator/plant_params.h)",
+       "a field of the plant file's friction strokes, e.g. friction.extension.A0_mm2"},
   };
   docs.insert(docs.end(), by_hand.begin(), by_hand.end());
-  MuscleSpec muscle;   // the shorthands: their long forms' rows, renamed
+  MuscleSpec muscle;  // the shorthands: their long forms' rows, renamed
   for (const KeyDoc& d :
        key_table_docs({params_shorthand_key_table(&muscle, "<actuator>"),
                        pressure_shorthand_key_table(&muscle.command, "<actuator>")})) {
@@ -69,12 +78,11 @@ std::vector<KeyDoc> schedule_docs() {
   for (ScheduleKind kind : schedule_kinds()) {
     const std::string with_kind = std::string("kind = \"") + to_string(kind) + "\": ";
     for (const KeyDoc& d : key_table_docs({schedule_key_table(kind, &defaults)})) {
-      const auto same = std::find_if(docs.begin(), docs.end(),
-                                     [&](const KeyDoc& e) { return e.key == d.key; });
-      if (same == docs.end()) {   // a key of one kind, or the first kind that has it
-        docs.push_back({d.key, d.unit, d.fallback, with_kind + d.allowed,
-                        with_kind + d.meaning});
-      } else {                    // one key, several kinds (start_s, MPa): one line
+      const auto same =
+          std::find_if(docs.begin(), docs.end(), [&](const KeyDoc& e) { return e.key == d.key; });
+      if (same == docs.end()) {  // a key of one kind, or the first kind that has it
+        docs.push_back({d.key, d.unit, d.fallback, with_kind + d.allowed, with_kind + d.meaning});
+      } else {  // one key, several kinds (start_s, MPa): one line
         same->allowed += "; " + with_kind + d.allowed;
         same->meaning += "; " + with_kind + d.meaning;
         if (same->fallback != d.fallback) same->fallback = "(by kind)";
@@ -109,7 +117,7 @@ std::vector<KeyDoc> valve_docs() {
   const std::vector<KeyTable> tables = valve_key_tables(&defaults);
   std::vector<KeyDoc> docs = key_table_docs({tables.at(0)});
   for (KeyDoc& d : docs) d.fallback = "(model.pneumatics')";
-  Scenario scenario;   // the row's default is the struct's own
+  Scenario scenario;  // the row's default is the struct's own
   const std::vector<KeyDoc> model = key_table_docs({valve_model_key_table(&scenario)});
   docs.insert(docs.begin(), model.begin(), model.end());
   for (KeyDoc d : key_table_docs({tables.at(1)})) {
@@ -138,27 +146,27 @@ std::vector<KeyDoc> joint_docs() {
 
 // [sim] and the drop's numbers (scenario_key_tables.h)
 std::vector<KeyDoc> time_and_drop_docs() {
-  Scenario scenario;   // the rows' defaults are the struct's own
+  Scenario scenario;  // the rows' defaults are the struct's own
   double max_steps = kDefaultMaxSteps;
   DropShorthand drop;
   return key_table_docs({sim_key_table(&scenario, &max_steps), drop_key_table(&drop)});
 }
 
 std::vector<KeyDoc> sensor_docs() {
-  SensorConfig defaults;   // the rows' defaults are the struct's own
+  SensorConfig defaults;  // the rows' defaults are the struct's own
   return key_table_docs({sensor_key_table(&defaults)});
 }
 
 // the instruments as hardware: their rows (sensing/instrument_keys.h), then the keys outside
 // them, the creep series and the instruments' seed
 std::vector<KeyDoc> instrument_docs() {
-  SensorConfig defaults;   // the rows' defaults are the structs' own
+  SensorConfig defaults;  // the rows' defaults are the structs' own
   std::vector<KeyDoc> docs = key_table_docs(instrument_key_tables(&defaults));
-  KeyTable own = gauge_contact_key_table(&defaults.gauge_hardware.contact);   // a muscle's
+  KeyTable own = gauge_contact_key_table(&defaults.gauge_hardware.contact);  // a muscle's
   own.name = "muscles.<actuator>.gauge.contact";
   for (NumberRow& row : own.numbers) row.fallback_doc = "(sensors.gauge.contact's)";
   for (const KeyDoc& d : key_table_docs({own})) docs.push_back(d);
-  for (const InstrumentKind& kind : instrument_kinds()) {   // the creep series' rows
+  for (const InstrumentKind& kind : instrument_kinds()) {  // the creep series' rows
     if (!kind.creep) continue;
     std::vector<double> weights, times;
     prony_lists(*kind.creep(&defaults), &weights, &times);
@@ -188,8 +196,7 @@ std::vector<KeyDoc> all_docs() {
   std::vector<KeyDoc> docs;
   for (const std::vector<KeyDoc>& part :
        {model_docs(), schedule_docs(), valve_docs(), joint_docs(), time_and_drop_docs(),
-        body_and_hold_docs(), event_docs(), controller_docs(), sensor_docs(),
-        instrument_docs()}) {
+        body_and_hold_docs(), event_docs(), controller_docs(), sensor_docs(), instrument_docs()}) {
     docs.insert(docs.end(), part.begin(), part.end());
   }
   return docs;

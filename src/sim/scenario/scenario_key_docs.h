@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "base/key_table.h"   // KeyDoc
+#include "base/key_table.h"  // KeyDoc
 
 namespace pamsim {
 

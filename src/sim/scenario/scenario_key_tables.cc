@@ -16,8 +16,9 @@ namespace pamsim {
 
 KeyTable top_level_key_table(Scenario* scenario) {
   KeyTable t{"", {}, {}, {}};
-  t.ints = {int_row("seed", "the trial's random seed (sensor noise); trial k of --trials uses seed + k",
-                    0, std::numeric_limits<std::int64_t>::max(), &scenario->seed)};
+  t.ints = {int_row("seed",
+                    "the trial's random seed (sensor noise); trial k of --trials uses seed + k", 0,
+                    std::numeric_limits<std::int64_t>::max(), &scenario->seed)};
   return t;
 }
 
@@ -35,12 +36,22 @@ KeyTable sim_key_table(Scenario* scenario, double* max_steps) {
   KeyTable t{"sim", {}, {}, {}};
   t.numbers = {
       {"timestep_s", "s", 1.0, {0.0, 0.01, true, false}, "physics step", &scenario->timestep_s},
-      {"duration_s", "s", 1.0, {0.0, 3600.0, true, false},
-       "simulated time of a trial (after every timed event)", &scenario->duration_s},
-      {"control_hz", "Hz", 1.0, {0.0, inf, true, false},
+      {"duration_s",
+       "s",
+       1.0,
+       {0.0, 3600.0, true, false},
+       "simulated time of a trial (after every timed event)",
+       &scenario->duration_s},
+      {"control_hz",
+       "Hz",
+       1.0,
+       {0.0, inf, true, false},
        "control, sensing and logging rate, a whole divisor of 1 / sim.timestep_s",
        &scenario->control_hz},
-      {"max_steps", "", 1.0, {1.0, 1e10, false, false},
+      {"max_steps",
+       "",
+       1.0,
+       {1.0, 1e10, false, false},
        "the most physics steps a trial may take (at least duration_s / timestep_s)",
        max_steps}};
   return t;
@@ -49,13 +60,24 @@ KeyTable sim_key_table(Scenario* scenario, double* max_steps) {
 KeyTable drop_key_table(DropShorthand* drop) {
   KeyTable t{"drop", {}, {}, {}};
   t.bools = {{"enabled", "shorthand: drop the mass at drop.time_s", &drop->enabled}};
-  t.numbers = {
-      {"mass_kg", "kg", 1.0, {0.0, 10.0, true, false}, "shorthand: the falling mass",
-       &drop->mass_kg},
-      {"height_m", "m", 1.0, {0.0, 1.0, false, false},
-       "shorthand: its fall height above the basket floor", &drop->height_m},
-      {"time_s", "s", 1.0, {0.0, 3600.0, false, true},
-       "shorthand: when it is released, before sim.duration_s", &drop->time_s}};
+  t.numbers = {{"mass_kg",
+                "kg",
+                1.0,
+                {0.0, 10.0, true, false},
+                "shorthand: the falling mass",
+                &drop->mass_kg},
+               {"height_m",
+                "m",
+                1.0,
+                {0.0, 1.0, false, false},
+                "shorthand: its fall height above the basket floor",
+                &drop->height_m},
+               {"time_s",
+                "s",
+                1.0,
+                {0.0, 3600.0, false, true},
+                "shorthand: when it is released, before sim.duration_s",
+                &drop->time_s}};
   t.texts = {{"body", "shorthand: the falling body, a free body of the model", &drop->body},
              {"basket", "shorthand: the body it lands in (the impact event), a body of the model",
               &drop->basket},
@@ -76,16 +98,22 @@ KeyTable model_key_table(Scenario* scenario) {
                      &scenario->pneumatics_file};
   file.input_file = calibration.input_file = pneumatics.input_file = true;
   file.required = pneumatics.required = true;
-  t.numbers = {{"antagonist_deformation_mm", "mm", units::kMPerMm, {0.0, 100.0, true, false},
+  t.numbers = {{"antagonist_deformation_mm",
+                "mm",
+                units::kMPerMm,
+                {0.0, 100.0, true, false},
                 "the lines' pre-tension: model.calibration's two lines solved again at its "
                 "start angle and pressures with its antagonist this far past its free length "
                 "(as pamsim calibrate --antagonist-deformation-mm)",
-                nullptr, &scenario->antagonist_deformation_m, false,
+                nullptr,
+                &scenario->antagonist_deformation_m,
+                false,
                 "(model.calibration's lines as written)"}};
   t.texts = {file,
              {"joint", "the joint logged and measured, a hinge or slide joint of the model",
               &scenario->joint, "(the model's first hinge or slide joint)"},
-             calibration, pneumatics};
+             calibration,
+             pneumatics};
   return t;
 }
 
@@ -113,8 +141,8 @@ std::vector<KeyTable> valve_key_tables(PneumaticParams* pneumatics) {
     assert(false && "valve_key_tables: no such row of the pneumatics file");
     return NumberRow{};
   };
-  KeyTable rig{"valve", {file_row("supply", "supply_MPa"), file_row("valve", "command_max_MPa")},
-               {}};
+  KeyTable rig{
+      "valve", {file_row("supply", "supply_MPa"), file_row("valve", "command_max_MPa")}, {}};
   KeyTable regulator = pneumatic_regulator_table(pneumatics);
   regulator.name = "valve";
   return {rig, regulator};
@@ -122,16 +150,29 @@ std::vector<KeyTable> valve_key_tables(PneumaticParams* pneumatics) {
 
 KeyTable body_key_table(BodyKeys* body) {
   KeyTable t{"bodies.<body>", {}, {}, {}};
-  t.numbers = {{"mass_kg", "kg", 1.0, {0.0, 1000.0, true, false},
-                "a body's mass, in place of the model's (its inertia scaled with it)", nullptr,
-                &body->mass_kg, false, "(the model's)"}};
-  t.lists = {{"inertia_kg_m2", "kg m^2", 1.0, {0.0, 1000.0, true, false}, 3,
+  t.numbers = {{"mass_kg",
+                "kg",
+                1.0,
+                {0.0, 1000.0, true, false},
+                "a body's mass, in place of the model's (its inertia scaled with it)",
+                nullptr,
+                &body->mass_kg,
+                false,
+                "(the model's)"}};
+  t.lists = {{"inertia_kg_m2",
+              "kg m^2",
+              1.0,
+              {0.0, 1000.0, true, false},
+              3,
               "a body's principal moments of inertia [I1, I2, I3] about its centre of mass, in "
               "place of the model's; each at most the sum of the others",
-              &body->inertia_kg_m2, "(the model's)", 3}};
+              &body->inertia_kg_m2,
+              "(the model's)",
+              3}};
   return t;
 }
 
+// clang-format off
 KeyTable muscle_line_key_table(MuscleLineKeys* line, MuscleSpec* muscle) {
   KeyTable t{"muscles.<actuator>", {}, {}, {}};
   t.numbers = {
@@ -170,18 +211,21 @@ KeyTable muscle_line_key_table(MuscleLineKeys* line, MuscleSpec* muscle) {
                 }}};
   return t;
 }
+// clang-format on
 
 KeyTable muscle_name_key_table(MuscleSpec* muscle) {
   KeyTable t{"muscles.<actuator>", {}, {}, {}};
-  t.texts = {{"label",
-              "the muscle's name in columns and metrics: no spaces, commas or quotes; unique",
-              &muscle->label, "(the actuator's name)"},
-             {"params", "the estimator's spring model: a PAM parameter file (models/pams/...)",
-              &muscle->params_file, "(required)", true, true}};
-  t.name_lists = {{"spans", {},
+  t.texts = {
+      {"label", "the muscle's name in columns and metrics: no spaces, commas or quotes; unique",
+       &muscle->label, "(the actuator's name)"},
+      {"params", "the estimator's spring model: a PAM parameter file (models/pams/...)",
+       &muscle->params_file, "(required)", true, true}};
+  t.name_lists = {{"spans",
+                   {},
                    "the joints of the model its tendon must cross: refused if its path misses "
                    "one (no moment arm at the start)",
-                   &muscle->spans, "(not checked)"}};
+                   &muscle->spans,
+                   "(not checked)"}};
   return t;
 }
 
@@ -213,8 +257,14 @@ KeyTable event_key_table(EventSpec* event) {
                   }
                   return std::string("?");
                 }}};
-  t.numbers = {{"mass_kg", "kg", 1.0, {0.0, 1000.0, true, false},
-                "with add_mass: the mass added", &event->mass_kg, nullptr, true}};
+  t.numbers = {{"mass_kg",
+                "kg",
+                1.0,
+                {0.0, 1000.0, true, false},
+                "with add_mass: the mass added",
+                &event->mass_kg,
+                nullptr,
+                true}};
   t.texts = {{"body", "with release or add_mass: the body released or loaded", &event->body},
              {"after", "fire only after this other event", &event->when.after}};
   return t;
@@ -222,10 +272,14 @@ KeyTable event_key_table(EventSpec* event) {
 
 KeyTable event_when_key_table(EventSpec* event, EventThresholds* thresholds) {
   constexpr double inf = std::numeric_limits<double>::infinity();
-  const double per_deg = units::deg_to_rad(1.0);   // rad per degree, as the reader converts
+  const double per_deg = units::deg_to_rad(1.0);  // rad per degree, as the reader converts
   KeyTable t{"events.<event>.when", {}, {}, {}};
   t.numbers = {
-      {"at_s", "s", 1.0, {0.0, inf, false, true}, "fire at this time (before sim.duration_s)",
+      {"at_s",
+       "s",
+       1.0,
+       {0.0, inf, false, true},
+       "fire at this time (before sim.duration_s)",
        &event->when.at_s},
       {"below_deg", "deg", per_deg, kAnyRange, "with when.joint, a hinge: fire below this angle",
        nullptr, &thresholds->below_rad},
@@ -235,49 +289,86 @@ KeyTable event_when_key_table(EventSpec* event, EventThresholds* thresholds) {
        "with when.joint, a slide: fire below this position", nullptr, &thresholds->below_m},
       {"above_mm", "mm", units::kMPerMm, kAnyRange,
        "with when.joint, a slide: fire above this position", nullptr, &thresholds->above_m},
-      {"below_z_m", "m", 1.0, kAnyRange, "with when.body: fire when its origin is below this height",
-       nullptr, &thresholds->below_z_m, true}};
+      {"below_z_m", "m", 1.0, kAnyRange,
+       "with when.body: fire when its origin is below this height", nullptr, &thresholds->below_z_m,
+       true}};
   t.texts = {{"joint", "fire on this joint's position (with one threshold)", &event->when.joint},
              {"body", "fire on this body's height (with below_z_m)", &event->when.body_a}};
-  t.name_lists = {{"contact", {}, "fire when the two bodies touch: [body_a, body_b]",
-                   &thresholds->contact, "(one when.* is required)"}};
+  t.name_lists = {{"contact",
+                   {},
+                   "fire when the two bodies touch: [body_a, body_b]",
+                   &thresholds->contact,
+                   "(one when.* is required)"}};
   return t;
 }
 
 KeyTable hold_key_table(HoldSpec* hold, std::vector<double>* position_m) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   KeyTable t{"holds.<body>", {}, {}, {}};
-  t.numbers = {{"height_m", "m", 1.0, {0.0, 10.0}, "with above_site: the held body's bottom "
-                "above the site", &hold->height_m}};
+  t.numbers = {{"height_m",
+                "m",
+                1.0,
+                {0.0, 10.0},
+                "with above_site: the held body's bottom "
+                "above the site",
+                &hold->height_m}};
   t.texts = {{"above_site", "hold the body above this site of the model until released",
               &hold->above_site}};
-  t.lists = {{"position_m", "m", 1.0, {-inf, inf}, 3,
+  t.lists = {{"position_m",
+              "m",
+              1.0,
+              {-inf, inf},
+              3,
               "hold the body at [x, y, z] in the world instead (not with above_site)",
-              position_m, "(none)", 3}};
+              position_m,
+              "(none)",
+              3}};
   return t;
 }
 
 KeyTable hinge_key_table(JointSpec* joint) {
   KeyTable t{"joints.<joint>", {}, {}, {}};
-  t.numbers = {
-      {"damping_N_m_s_per_rad", "N m s/rad", 1.0, {0.0, 1e4, false, false},
-       "the hinge's viscous damping (MuJoCo damping), e.g. a bearing's", &joint->damping},
-      {"frictionloss_N_m", "N m", 1.0, {0.0, 1e4, false, false},
-       "the hinge's dry friction torque (MuJoCo frictionloss)", &joint->frictionloss},
-      {"start_deg", "deg", units::deg_to_rad(1.0), {-360.0, 360.0, false, false},
-       "the hinge's angle at the start", &joint->start}};
+  t.numbers = {{"damping_N_m_s_per_rad",
+                "N m s/rad",
+                1.0,
+                {0.0, 1e4, false, false},
+                "the hinge's viscous damping (MuJoCo damping), e.g. a bearing's",
+                &joint->damping},
+               {"frictionloss_N_m",
+                "N m",
+                1.0,
+                {0.0, 1e4, false, false},
+                "the hinge's dry friction torque (MuJoCo frictionloss)",
+                &joint->frictionloss},
+               {"start_deg",
+                "deg",
+                units::deg_to_rad(1.0),
+                {-360.0, 360.0, false, false},
+                "the hinge's angle at the start",
+                &joint->start}};
   return t;
 }
 
 KeyTable slide_key_table(JointSpec* joint) {
   KeyTable t{"joints.<joint>", {}, {}, {}};
-  t.numbers = {
-      {"damping_N_s_per_m", "N s/m", 1.0, {0.0, 1e6, false, false},
-       "the slide's viscous damping (MuJoCo damping)", &joint->damping},
-      {"frictionloss_N", "N", 1.0, {0.0, 1e6, false, false},
-       "the slide's dry friction force (MuJoCo frictionloss)", &joint->frictionloss},
-      {"start_mm", "mm", units::mm_to_m(1.0), {-1e4, 1e4, false, false},
-       "the slide's position at the start", &joint->start}};
+  t.numbers = {{"damping_N_s_per_m",
+                "N s/m",
+                1.0,
+                {0.0, 1e6, false, false},
+                "the slide's viscous damping (MuJoCo damping)",
+                &joint->damping},
+               {"frictionloss_N",
+                "N",
+                1.0,
+                {0.0, 1e6, false, false},
+                "the slide's dry friction force (MuJoCo frictionloss)",
+                &joint->frictionloss},
+               {"start_mm",
+                "mm",
+                units::mm_to_m(1.0),
+                {-1e4, 1e4, false, false},
+                "the slide's position at the start",
+                &joint->start}};
   return t;
 }
 

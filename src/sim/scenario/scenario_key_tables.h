@@ -40,7 +40,7 @@ struct DropShorthand {
   double mass_kg = 0.2;
   double height_m = 0.14;
   double time_s = 1.0;
-  std::string body = "ball";            // the model's names it uses (checked when bound)
+  std::string body = "ball";  // the model's names it uses (checked when bound)
   std::string basket = "basket";
   std::string site = "basket_floor";
 };
@@ -105,7 +105,7 @@ KeyTable params_shorthand_key_table(MuscleSpec* muscle, const std::string& actua
 // unknown.
 struct EventThresholds {
   std::optional<double> below_rad, above_rad, below_m, above_m, below_z_m;
-  std::vector<std::string> contact;   // when.contact's two bodies
+  std::vector<std::string> contact;  // when.contact's two bodies
 };
 KeyTable event_key_table(EventSpec* event);
 KeyTable event_when_key_table(EventSpec* event, EventThresholds* thresholds);

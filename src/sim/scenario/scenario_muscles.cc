@@ -41,14 +41,15 @@ std::string long_or_short(ConfigReader& in, const std::string& long_key,
   if (has_long && has_short && !in.overridden(short_key)) {
     in.fail(short_key, "is the shorthand of " + long_key + "; give one of them");
   }
-  if (has_long && has_short) in.raw(long_key);   // marks the replaced long form read
+  if (has_long && has_short) in.raw(long_key);  // marks the replaced long form read
   if (has_short) return short_key;
   return has_long ? long_key : "";
 }
 
 PressureSchedule read_command(ConfigReader& in, const std::string& key) {
-  in.check(in.is_table(key), key, "must be a table: { kind = \"constant\", MPa = ... } or another "
-                                  "schedule (core/schedule.h)");
+  in.check(in.is_table(key), key,
+           "must be a table: { kind = \"constant\", MPa = ... } or another "
+           "schedule (core/schedule.h)");
   PressureSchedule s;
   KeyTable kind = schedule_kind_key_table(&s);
   kind.name = key;
@@ -60,12 +61,12 @@ PressureSchedule read_command(ConfigReader& in, const std::string& key) {
     in.check(!s.times_s.empty() && s.times_s.size() == s.values_pa.size(), key + ".MPa",
              "must give one pressure per time in times_s, at least one");
   } else if (s.kind == ScheduleKind::kTable) {
-    const std::string file = s.source;   // its row's, resolved
+    const std::string file = s.source;  // its row's, resolved
     s = in_file(in, [&] {
       try {
         return read_schedule_csv(file);
       } catch (const InputError& e) {
-        throw InputError(key + ".file: " + e.what());   // the key, then the CSV's own line
+        throw InputError(key + ".file: " + e.what());  // the key, then the CSV's own line
       }
     });
   }
@@ -118,7 +119,8 @@ void read_muscle_plant(ConfigReader& in, MuscleSpec* muscle) {
   const auto mismatch = [&](const char* what, double plant, double estimator, const char* unit) {
     return std::string("has a ") + what + " of " + format_value(plant) + " " + unit +
            ", but its estimator's file (" + m.params_file + ", [geometry]) describes " +
-           format_value(estimator) + " " + unit + ": change both, fitting an estimator to the "
+           format_value(estimator) + " " + unit +
+           ": change both, fitting an estimator to the "
            "changed plant (pamsim tensile --plant FILE --set ..., then pamsim fit) and giving "
            "it as its params file";
   };
@@ -135,7 +137,8 @@ void read_muscle_plant(ConfigReader& in, MuscleSpec* muscle) {
 void read_muscle_command(ConfigReader& in, const Scenario& sc, const std::string& name,
                          MuscleSpec* muscle) {
   MuscleSpec& m = *muscle;
-  const std::string command_key = long_or_short(in, m.key + ".command", "pressure." + name + "_MPa");
+  const std::string command_key =
+      long_or_short(in, m.key + ".command", "pressure." + name + "_MPa");
   in.check(!command_key.empty(), m.key + ".command", "is required");
   if (command_key == m.key + ".command") {
     m.command = read_command(in, command_key);
@@ -168,13 +171,13 @@ void set_line_stiffness(ConfigReader& in, const MuscleLineKeys& keys, MuscleSpec
 }
 
 // the line: fixed, solved, or the calibration's; then its stiffness and working load
-void read_muscle_line(ConfigReader& in, const std::string& name,
-                      const ArmCalibration* calibration, bool lines_needed, MuscleSpec* muscle) {
+void read_muscle_line(ConfigReader& in, const std::string& name, const ArmCalibration* calibration,
+                      bool lines_needed, MuscleSpec* muscle) {
   MuscleSpec& m = *muscle;
   MuscleLineKeys keys;
   KeyTable table = muscle_line_key_table(&keys, &m);
   table.name = m.key;
-  read_key_rows(in, rows_given(in, table));   // .line sets m.line
+  read_key_rows(in, rows_given(in, table));  // .line sets m.line
   const bool solved = m.line == LineSource::kEquilibrium;
   in.check(!(keys.line_m && solved), m.key + ".line", "and line_mm may not both be given");
   if (keys.line_m) {
@@ -182,11 +185,12 @@ void read_muscle_line(ConfigReader& in, const std::string& name,
   } else if (solved) {
     // its length is solved when the model is bound (trial_lines.cc)
   } else if (!lines_needed) {
-    m.line_length_m = 1.0;   // a placeholder: `pamsim calibrate` solves it
+    m.line_length_m = 1.0;  // a placeholder: `pamsim calibrate` solves it
   } else {
     const CalibratedLine* c = calibration ? calibration->line(name) : nullptr;
-    in.check(c != nullptr, m.key + ".line_mm",
-             "is required (or .line = \"equilibrium\", or model.calibration with " + name + "_line_mm)");
+    in.check(
+        c != nullptr, m.key + ".line_mm",
+        "is required (or .line = \"equilibrium\", or model.calibration with " + name + "_line_mm)");
     m.line_length_m = c->line_length_m;
   }
   set_line_stiffness(in, keys, &m);
@@ -250,7 +254,7 @@ void read_muscles(ConfigReader& in, Scenario* sc, bool lines_needed) {
     sc->has_start_position = true;
     sc->start_position = calibration->start_angle_rad;
   }
-  if (sc->antagonist_deformation_m) {   // (calibrate solves the lines by its own options)
+  if (sc->antagonist_deformation_m) {  // (calibrate solves the lines by its own options)
     in.check(lines_needed, "model.antagonist_deformation_mm",
              "is not read by pamsim calibrate: give --antagonist-deformation-mm");
     read_recalibration(in, calibration, sc);

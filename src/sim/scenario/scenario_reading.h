@@ -3,7 +3,7 @@
 #pragma once
 
 #include "sim/core/scenario.h"
-#include "sim/scenario/schedule_csv.h"   // read_schedule_csv, for muscles.<m>.command.file
+#include "sim/scenario/schedule_csv.h"  // read_schedule_csv, for muscles.<m>.command.file
 #include "base/config_reader.h"
 
 namespace pamsim {

@@ -44,8 +44,9 @@ void read_instrument(ConfigReader& in, const std::vector<KeyTable>& tables) {
   if (model.get() == model.allowed.front()) {
     for (const std::string& key : in.leaf_keys()) {
       if (key.rfind(prefix, 0) != 0 || key == prefix + model.name) continue;
-      in.check(false, key, "is used only by " + prefix + model.name + " = \"" +
-                               model.allowed.back() + "\", not \"" + model.allowed.front() + "\"");
+      in.check(false, key,
+               "is used only by " + prefix + model.name + " = \"" + model.allowed.back() +
+                   "\", not \"" + model.allowed.front() + "\"");
     }
   }
   for (const KeyTable& table : tables) read_key_rows(in, table);
@@ -98,10 +99,10 @@ void read_muscle_contacts(ConfigReader& in, Scenario* sc) {
 
 void read_sensors(ConfigReader& in, Scenario* sc) {
   SensorConfig& s = sc->sensing.sensors;
-  read_key_rows(in, sensor_key_table(&s));   // sensors.*: noise, ADCs, the pressure low-pass
+  read_key_rows(in, sensor_key_table(&s));  // sensors.*: noise, ADCs, the pressure low-pass
   read_instruments(in, &s);
   read_muscle_contacts(in, sc);
-  sc->sensing.control_hz = sc->control_hz;   // velocity_lowpass_hz: the controller's config
+  sc->sensing.control_hz = sc->control_hz;  // velocity_lowpass_hz: the controller's config
   sc->sensing.physics_dt_s = sc->timestep_s;
   in_file(in, [&] {
     validate(sc->sensing);

@@ -40,7 +40,8 @@ PressureSchedule read_schedule_csv(const std::string& path) {
     // the header names the two columns and their units
     if (!header) {
       std::string h;
-      for (char c : line) if (c != ' ' && c != '\t') h += c;
+      for (char c : line)
+        if (c != ' ' && c != '\t') h += c;
       if (h != "time_s,MPa") throw InputError(where + ": expected the header \"time_s,MPa\"");
       header = true;
       continue;
@@ -50,7 +51,8 @@ PressureSchedule read_schedule_csv(const std::string& path) {
     const auto comma = line.find(',');
     double t = 0.0, p = 0.0;
     if (comma == std::string::npos || line.find(',', comma + 1) != std::string::npos ||
-        !parse_finite_cell(line.substr(0, comma), &t) || !parse_finite_cell(line.substr(comma + 1), &p)) {
+        !parse_finite_cell(line.substr(0, comma), &t) ||
+        !parse_finite_cell(line.substr(comma + 1), &p)) {
       throw InputError(where + ": expected two finite numbers \"time_s,MPa\"");
     }
     if (!times_s.empty() && !(t > times_s.back())) {

@@ -10,7 +10,7 @@ namespace {
 
 constexpr double kMPa = units::kPaPerMPa;
 const char* const kTable = "muscles.<actuator>.command";
-constexpr std::size_t kMaxSteps = 100000;   // a steps schedule's most levels
+constexpr std::size_t kMaxSteps = 100000;  // a steps schedule's most levels
 
 NumberRow pressure_row(const std::string& name, const std::string& doc, double* target) {
   NumberRow row{name, "MPa", kMPa, kNonNegativeRange, doc, target};
@@ -29,11 +29,10 @@ KeyTable schedule_kind_key_table(PressureSchedule* schedule) {
   KeyTable t{kTable, {}, {}, {}};
   std::vector<std::string> names;
   for (ScheduleKind kind : schedule_kinds()) names.emplace_back(to_string(kind));
-  t.choices = {{"kind", names, "the commanded pressure's schedule (core/schedule.h)",
-                [schedule](const std::string& name) {
-                  schedule->kind = parse_schedule_kind(name, "kind");
-                },
-                [schedule] { return std::string(to_string(schedule->kind)); }}};
+  t.choices = {
+      {"kind", names, "the commanded pressure's schedule (core/schedule.h)",
+       [schedule](const std::string& name) { schedule->kind = parse_schedule_kind(name, "kind"); },
+       [schedule] { return std::string(to_string(schedule->kind)); }}};
   return t;
 }
 
@@ -45,12 +44,11 @@ KeyTable schedule_key_table(ScheduleKind kind, PressureSchedule* schedule) {
       t.numbers = {pressure_row("MPa", "the commanded pressure", &s.p0_pa)};
       break;
     case ScheduleKind::kRamp: {
-      NumberRow duration{"duration_s", "s", 1.0, kPositiveRange, "the ramp's duration",
-                         &s.duration_s};
+      NumberRow duration{"duration_s",          "s",          1.0, kPositiveRange,
+                         "the ramp's duration", &s.duration_s};
       duration.required = true;
       t.numbers = {pressure_row("from_MPa", "the ramp's start", &s.p0_pa),
-                   pressure_row("to_MPa", "the ramp's end", &s.p1_pa), start_row(s),
-                   duration};
+                   pressure_row("to_MPa", "the ramp's end", &s.p1_pa), start_row(s), duration};
       break;
     }
     case ScheduleKind::kSine: {
@@ -58,24 +56,24 @@ KeyTable schedule_key_table(ScheduleKind kind, PressureSchedule* schedule) {
       period.required = true;
       NumberRow phase{"phase_deg", "deg", units::kPi, kAnyRange, "the sine's phase at start_s",
                       &s.phase_rad};
-      phase.divisor = 180.0;   // units::deg_to_rad's rounding
+      phase.divisor = 180.0;  // units::deg_to_rad's rounding
       t.numbers = {pressure_row("offset_MPa", "the sine's mean", &s.p0_pa),
-                   pressure_row("amplitude_MPa", "the sine's amplitude", &s.amplitude_pa),
-                   period, phase, start_row(s)};
+                   pressure_row("amplitude_MPa", "the sine's amplitude", &s.amplitude_pa), period,
+                   phase, start_row(s)};
       break;
     }
     case ScheduleKind::kSteps:
       t.lists = {{"times_s", "s", 1.0, kNonNegativeRange, kMaxSteps,
                   "the steps' times, increasing: MPa[i] from times_s[i] on, MPa[0] before",
                   &s.times_s, "(required)", 1},
-                 {"MPa", "MPa", kMPa, kNonNegativeRange, kMaxSteps, "the steps' pressures, one per time",
-                  &s.values_pa, "(required)", 1}};
+                 {"MPa", "MPa", kMPa, kNonNegativeRange, kMaxSteps,
+                  "the steps' pressures, one per time", &s.values_pa, "(required)", 1}};
       break;
     case ScheduleKind::kTable:
       t.texts = {{"file",
-                   "a CSV \"time_s,MPa\": a piecewise linear schedule through its rows "
-                   "(scenario/schedule_csv.h)",
-                   &s.source, "(required)", true, true}};
+                  "a CSV \"time_s,MPa\": a piecewise linear schedule through its rows "
+                  "(scenario/schedule_csv.h)",
+                  &s.source, "(required)", true, true}};
       break;
   }
   return t;

@@ -179,7 +179,7 @@ void write_merged_meta(MergedDb& db, const std::vector<std::string>& parts,
                        const nlohmann::json& invocations, const std::set<std::string>& commits) {
   nlohmann::json merged_from = nlohmann::json::array();
   for (const std::string& part : parts) merged_from.push_back(part);
-  std::string commit_list;   // one, or the parts' different ones
+  std::string commit_list;  // one, or the parts' different ones
   for (const std::string& c : commits) commit_list += (commit_list.empty() ? "" : ", ") + c;
   for (const auto& [key, value] :
        {std::pair<std::string, std::string>{"created_utc", utc_timestamp()},

@@ -4,7 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "sim/io/provenance.h"   // fnv1a64
+#include "sim/io/provenance.h"  // fnv1a64
 
 namespace pamsim {
 namespace mpi {
@@ -108,8 +108,8 @@ Report decode(const std::vector<char>& bytes, const SweepDefinition& sweep) {
 }
 
 void send_bytes(const std::vector<char>& bytes, int to, int tag) {
-  check(MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, to, tag,
-                 MPI_COMM_WORLD), "MPI_Send");
+  check(MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, to, tag, MPI_COMM_WORLD),
+        "MPI_Send");
 }
 
 std::vector<char> receive_bytes(const MPI_Status& status) {
@@ -117,10 +117,10 @@ std::vector<char> receive_bytes(const MPI_Status& status) {
   check(MPI_Get_count(&status, MPI_BYTE, &n), "MPI_Get_count");
   std::vector<char> bytes(static_cast<std::size_t>(n));
   check(MPI_Recv(bytes.data(), n, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
-                 MPI_STATUS_IGNORE), "MPI_Recv");
+                 MPI_STATUS_IGNORE),
+        "MPI_Recv");
   return bytes;
 }
-
 
 }  // namespace mpi
 }  // namespace pamsim

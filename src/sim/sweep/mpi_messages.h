@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/sweep/results_db.h"   // TrialRecord
+#include "sim/sweep/results_db.h"  // TrialRecord
 #include "sim/sweep/sweep.h"
 
 namespace pamsim {

@@ -22,13 +22,14 @@
 
 namespace pamsim {
 
-using namespace mpi;   // the messages
+using namespace mpi;  // the messages
 
 namespace {
 
 constexpr auto kPollInterval = std::chrono::milliseconds(1);
-constexpr auto kReportInterval = std::chrono::milliseconds(200);   // results sent at least this often
-constexpr auto kDrainLimit = std::chrono::milliseconds(100);       // rank 0 commits at least this often
+constexpr auto kReportInterval =
+    std::chrono::milliseconds(200);                           // results sent at least this often
+constexpr auto kDrainLimit = std::chrono::milliseconds(100);  // rank 0 commits at least this often
 
 }  // namespace
 
@@ -46,7 +47,7 @@ MpiSession::MpiSession() {
   check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
-  MPI_Comm node;   // the ranks sharing this node's memory: they share its cores
+  MPI_Comm node;  // the ranks sharing this node's memory: they share its cores
   MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node);
   MPI_Comm_size(node, &local_size_);
   MPI_Comm_free(&node);
@@ -63,7 +64,7 @@ bool MpiSession::broadcast_go(bool go) const {
 
 void MpiSession::abort(int code) const {
   MPI_Abort(MPI_COMM_WORLD, code);
-  std::exit(code);   // (MPI_Abort does not return)
+  std::exit(code);  // (MPI_Abort does not return)
 }
 
 // ---- rank 0 --------------------------------------------------------------------------
@@ -75,8 +76,13 @@ class Coordinator {
  public:
   Coordinator(const MpiSession& mpi, const SweepDefinition& sweep, ResultsDb& db,
               const SweepRunOptions& options)
-      : mpi_(mpi), sweep_(sweep), db_(db), options_(options), total_(sweep.trials()),
-        finished_(db.finished_trials(total_)), expected_(fingerprint(sweep)),
+      : mpi_(mpi),
+        sweep_(sweep),
+        db_(db),
+        options_(options),
+        total_(sweep.trials()),
+        finished_(db.finished_trials(total_)),
+        expected_(fingerprint(sweep)),
         workers_left_(mpi.size() - 1) {
     for (bool f : finished_) result_.already_done += f ? 1 : 0;
   }
@@ -91,14 +97,13 @@ class Coordinator {
         std::this_thread::sleep_for(kPollInterval);
       }
     }
-    result_.interrupted =
-        result_.already_done + result_.ran < options_.shard.trials_of(total_);
+    result_.interrupted = result_.already_done + result_.ran < options_.shard.trials_of(total_);
     if (result_.interrupted && !(options_.stop && options_.stop->load())) {
-      result_.incomplete_reason =
-          !refused_.empty() ? std::to_string(refused_.size()) + " of " +
-                                  std::to_string(mpi_.size() - 1) +
-                                  " worker ranks ran no trials (" + first_refusal_ + ")"
-                            : "a worker rank stopped before its trials were done";
+      result_.incomplete_reason = !refused_.empty()
+                                      ? std::to_string(refused_.size()) + " of " +
+                                            std::to_string(mpi_.size() - 1) +
+                                            " worker ranks ran no trials (" + first_refusal_ + ")"
+                                      : "a worker rank stopped before its trials were done";
     }
     result_.wall_time_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -110,8 +115,8 @@ class Coordinator {
   // per worker and 100 ms between commits, so a busy job still commits steadily)
   void drain() {
     const auto drain_start = std::chrono::steady_clock::now();
-    for (int drained = 0; drained < mpi_.size() - 1 &&
-                          std::chrono::steady_clock::now() - drain_start < kDrainLimit;
+    for (int drained = 0;
+         drained < mpi_.size() - 1 && std::chrono::steady_clock::now() - drain_start < kDrainLimit;
          ++drained) {
       int arrived = 0;
       MPI_Status status;
@@ -125,10 +130,9 @@ class Coordinator {
   void answer(Report report, int from) {
     std::int64_t want = report.want;
     if (!report.load_error.empty() || report.fingerprint != expected_) {
-      if (refused_.insert(from).second) {   // said once; it gets no trials
-        const std::string why = report.load_error.empty()
-                                    ? "its sweep file differs from rank 0's"
-                                    : report.load_error;
+      if (refused_.insert(from).second) {  // said once; it gets no trials
+        const std::string why =
+            report.load_error.empty() ? "its sweep file differs from rank 0's" : report.load_error;
         std::cerr << "pamsim sweep: rank " << from << " runs no trials: " << why << "\n";
         if (first_refusal_.empty()) first_refusal_ = "rank " + std::to_string(from) + ": " + why;
       }
@@ -165,8 +169,8 @@ class Coordinator {
   const std::vector<bool> finished_;
   const std::uint64_t expected_;
   int workers_left_;
-  std::int64_t next_ = 0;     // the next trial to consider handing out
-  std::set<int> refused_;     // ranks that run no trials (said once)
+  std::int64_t next_ = 0;  // the next trial to consider handing out
+  std::set<int> refused_;  // ranks that run no trials (said once)
   std::string first_refusal_;
   std::vector<TrialRecord> batch_;
   SweepRunResult result_;
@@ -256,7 +260,7 @@ class WorkerRank {
              (!no_more_ && static_cast<std::int64_t>(todo_.size()) < threads_) ||
              (stop_ && stop_->load() && !no_more_);
     });
-    if (stop_ && stop_->load() && !no_more_) {   // the trials running finish; no new ones
+    if (stop_ && stop_->load() && !no_more_) {  // the trials running finish; no new ones
       no_more_ = true;
       todo_.clear();
       changed_.notify_all();
@@ -264,10 +268,10 @@ class WorkerRank {
     report_.records.swap(outbox_);
     outbox_.clear();
     const bool done = running_threads_ == 0;
-    report_.want = done       ? -1
-                   : no_more_ ? 0
-                              : std::max<std::int64_t>(
-                                    0, ahead - static_cast<std::int64_t>(todo_.size()));
+    report_.want = done ? -1
+                   : no_more_
+                       ? 0
+                       : std::max<std::int64_t>(0, ahead - static_cast<std::int64_t>(todo_.size()));
     return done;
   }
 

@@ -41,7 +41,7 @@ class MpiSession {
   // Rank 0 tells every rank whether the sweep goes ahead (after it opened the database);
   // the others return what it said.
   bool broadcast_go(bool go) const;
-  bool decided() const { return decided_; }   // broadcast_go has been called
+  bool decided() const { return decided_; }  // broadcast_go has been called
   // Rank 0: every worker has sent its last report (set by coordinate_mpi_sweep), so rank 0
   // may end on its own, e.g. with an error, without leaving a rank waiting.
   bool workers_done() const { return workers_done_; }
@@ -54,8 +54,8 @@ class MpiSession {
   int local_size_ = 1;
   mutable bool decided_ = false;
   mutable bool workers_done_ = false;
-  friend SweepRunResult coordinate_mpi_sweep(const MpiSession&, const SweepDefinition&,
-                                             ResultsDb&, const SweepRunOptions&);
+  friend SweepRunResult coordinate_mpi_sweep(const MpiSession&, const SweepDefinition&, ResultsDb&,
+                                             const SweepRunOptions&);
 };
 
 // Rank 0: runs every trial of `sweep` (of options.shard) not yet in `db` on the other ranks

@@ -116,7 +116,7 @@ std::string metric_label(const std::string& name) {
   if (name == kMistripRate) return "mistrip rate [fraction of seeds]";
   static const std::pair<const char*, const char*> kUnits[] = {
       {"_mm_s", "mm/s"}, {"_deg", "deg"}, {"_mm", "mm"}, {"_pct", "% of length"},
-      {"_MPa", "MPa"},  {"_N", "N"},      {"_s", "s"}};
+      {"_MPa", "MPa"},   {"_N", "N"},     {"_s", "s"}};
   std::string base = name, unit;
   for (const auto& [suffix, u] : kUnits) {
     if (ends_with(name, suffix)) {
@@ -159,7 +159,8 @@ std::string points_csv(const SweepSummary& sweep, const std::string& metric, boo
   // the metrics shown: all, or the headline ones the sweep has and the report's own
   std::vector<int> shown;
   if (all_columns) {
-    for (std::size_t m = 0; m < sweep.metric_names.size(); ++m) shown.push_back(static_cast<int>(m));
+    for (std::size_t m = 0; m < sweep.metric_names.size(); ++m)
+      shown.push_back(static_cast<int>(m));
   } else {
     std::vector<std::string> names = kPointsCsvMetrics;
     if (std::find(names.begin(), names.end(), metric) == names.end()) names.push_back(metric);
@@ -173,9 +174,9 @@ std::string points_csv(const SweepSummary& sweep, const std::string& metric, boo
   out += ",trials,ok,mistrip_rate";
   for (const int m : shown) {
     const std::string& name = sweep.metric_names[static_cast<std::size_t>(m)];
-    out += all_columns ? "," + name + "_mean," + name + "_std," + name + "_min," + name + "_max"
-                       : "," + name + "_mean," + name + "_sd," + name + "_ci95_low," + name +
-                             "_ci95_high";
+    out += all_columns
+               ? "," + name + "_mean," + name + "_std," + name + "_min," + name + "_max"
+               : "," + name + "_mean," + name + "_sd," + name + "_ci95_low," + name + "_ci95_high";
   }
   out += "\n";
   for (const PointSummary& p : sweep.points) {
@@ -202,8 +203,8 @@ std::string points_csv(const SweepSummary& sweep, const std::string& metric, boo
 namespace {
 
 // random and lhs: every point where it lies
-void scatter_points(const SweepSummary& sweep, const std::string& metric,
-                    const PointSummary* mark, HeatMap* out) {
+void scatter_points(const SweepSummary& sweep, const std::string& metric, const PointSummary* mark,
+                    HeatMap* out) {
   HeatMap& map = *out;
   map.scattered = true;
   map.x_log = sweep.axis_log[0];
@@ -226,7 +227,7 @@ void grid_cells(const SweepSummary& sweep, const std::string& metric, const Poin
   const bool rate = metric == kMistripRate;
   // grid: the point's level on each of the first two axes (row-major, first axis slowest)
   const std::size_t nx = sweep.axis_levels[0].size(), ny = sweep.axis_levels[1].size();
-  std::int64_t inner = 1;   // points per level of axis 1
+  std::int64_t inner = 1;  // points per level of axis 1
   for (std::size_t a = 2; a < sweep.axis_levels.size(); ++a) {
     inner *= static_cast<std::int64_t>(sweep.axis_levels[a].size());
   }
@@ -234,11 +235,12 @@ void grid_cells(const SweepSummary& sweep, const std::string& metric, const Poin
   for (const auto& l : sweep.axis_levels[0]) map.x_levels.push_back(level_label(l));
   for (const auto& l : sweep.axis_levels[1]) map.y_levels.push_back(level_label(l));
   std::vector<Accumulator> cells(nx * ny);
-  std::vector<double> seed_sd(nx * ny, kNaN);   // a cell of one point: its SD over the seeds
+  std::vector<double> seed_sd(nx * ny, kNaN);  // a cell of one point: its SD over the seeds
   const int m = sweep.metric_index(metric);
   for (const PointSummary& p : sweep.points) {
     const std::size_t iy = static_cast<std::size_t>(p.point / inner) % ny;
-    const std::size_t ix = static_cast<std::size_t>(p.point / inner / static_cast<std::int64_t>(ny));
+    const std::size_t ix =
+        static_cast<std::size_t>(p.point / inner / static_cast<std::int64_t>(ny));
     const double v = point_value(sweep, p, metric);
     if (std::isfinite(v)) cells[iy * nx + ix].add(v);
     if (m >= 0) seed_sd[iy * nx + ix] = p.metrics[static_cast<std::size_t>(m)].std;

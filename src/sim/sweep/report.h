@@ -15,34 +15,34 @@
 namespace pamsim {
 
 struct MetricStats {
-  int count = 0;   // seeds where the metric is defined
-  double mean = 0, std = 0, min = 0, max = 0;   // NaN when count == 0 (std NaN when count < 2)
+  int count = 0;                               // seeds where the metric is defined
+  double mean = 0, std = 0, min = 0, max = 0;  // NaN when count == 0 (std NaN when count < 2)
 };
 
 struct PointSummary {
   std::int64_t point = 0;
-  std::vector<std::string> axis_values;   // as TOML values (numbers exact), one per axis
-  int trials = 0;          // stored
-  int ok = 0;              // of those, status "ok"
-  int with_mistrips = 0;   // of the ok ones, with mistrips > 0
-  std::vector<MetricStats> metrics;   // one per SweepSummary::metric_names
-  double mistrip_rate() const;        // with_mistrips / ok; NaN if none ran ok
+  std::vector<std::string> axis_values;  // as TOML values (numbers exact), one per axis
+  int trials = 0;                        // stored
+  int ok = 0;                            // of those, status "ok"
+  int with_mistrips = 0;                 // of the ok ones, with mistrips > 0
+  std::vector<MetricStats> metrics;      // one per SweepSummary::metric_names
+  double mistrip_rate() const;           // with_mistrips / ok; NaN if none ran ok
 };
 
 struct SweepSummary {
   std::string db_path, sweep_file, base_path, design;
-  std::string base_scenario;               // its text at the time of the sweep
-  std::vector<std::string> fixed;          // "key=value" at every point
+  std::string base_scenario;       // its text at the time of the sweep
+  std::vector<std::string> fixed;  // "key=value" at every point
   std::int64_t seeds = 0, points_total = 0, trials_total = 0;
   std::int64_t trials_stored = 0, trials_not_ok = 0;
   std::vector<std::string> axis_keys;
   std::vector<bool> axis_log;
-  std::vector<std::vector<std::string>> axis_levels;   // grid designs: each axis's values
+  std::vector<std::vector<std::string>> axis_levels;  // grid designs: each axis's values
   // a case axis's sets ("key=value" per case, in its levels' order); empty for a key's axis
   std::vector<std::vector<std::vector<std::string>>> axis_cases;
-  std::vector<std::string> randomize_keys; // [[randomize]]: drawn per trial, a column each
+  std::vector<std::string> randomize_keys;  // [[randomize]]: drawn per trial, a column each
   std::vector<std::string> metric_names;
-  std::vector<PointSummary> points;        // stored points, in point order
+  std::vector<PointSummary> points;  // stored points, in point order
 
   // index of a metric, or -1
   int metric_index(const std::string& name) const;
@@ -75,8 +75,8 @@ std::string point_scenario_toml(const SweepSummary& sweep, const PointSummary& p
 // `all_columns`, every metric (timing left out) with _mean, _std, _min, _max instead, the
 // table of pamsim 0.2. Every trial's values stay in the database (pamsim export).
 inline const std::vector<std::string> kPointsCsvMetrics = {
-    "peak_drop_deg", "recovery_time_s", "first_trigger_time_s", "mistrips",
-    "retriggers_after_impact", "mass_retained", "length_est_rmse_pct"};
+    "peak_drop_deg",           "recovery_time_s", "first_trigger_time_s", "mistrips",
+    "retriggers_after_impact", "mass_retained",   "length_est_rmse_pct"};
 std::string points_csv(const SweepSummary& sweep, const std::string& metric = "peak_drop_deg",
                        bool all_columns = false);
 
@@ -94,7 +94,8 @@ std::string points_markdown(const SweepSummary& sweep, const std::vector<std::st
 // (a case's name may hold any of them).
 std::string markdown_cell(const std::string& text);
 // The metrics table.md shows unless asked: kPointsCsvMetrics the sweep has, and `metric`.
-std::vector<std::string> default_table_metrics(const SweepSummary& sweep, const std::string& metric);
+std::vector<std::string> default_table_metrics(const SweepSummary& sweep,
+                                               const std::string& metric);
 
 // A heat map of `metric` (or "mistrip_rate") over the first two axes, with `best` (chosen
 // on `best_metric`) marked if not null; on a grid with more axes each cell averages the

@@ -47,30 +47,36 @@ ResultsDb ResultsDb::create(const std::string& path, const SweepDefinition& swee
   create_sqlite_file(path, "sweep database",
                      "add --resume to finish that sweep, or choose another --db",
                      [&](const std::string& tmp) {
-    const SqliteDb db = SqliteDb::open_new(tmp, "sweep database");
-    std::string columns = "trial INTEGER PRIMARY KEY, point INTEGER NOT NULL, "
-                          "seed_index INTEGER NOT NULL, seed INTEGER NOT NULL";
-    for (const auto& axis : sweep.axes) columns += ", " + quoted_identifier(axis.key);
-    for (const auto& r : sweep.randomize) columns += ", " + quoted_identifier(r.key) + " REAL";
-    columns += ", status TEXT NOT NULL, message TEXT";
-    for (const auto& name : sweep.metric_names) columns += ", " + quoted_identifier(name) + " REAL";
-    db.exec("BEGIN; CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL); "
-            "CREATE TABLE trials(" + columns + ");");
-    std::vector<std::pair<std::string, std::string>> meta = {
-        {"format", "pamsim-sweep-1"},
-        {"definition", sweep.canonical_json()},
-        {"trials", std::to_string(sweep.trials())},
-        {"pamsim_version", PAMSIM_VERSION},
-        {"git_commit", build_info().git_commit},
-        {"mujoco_version", build_info().mujoco_version},
-        {"sundials_version", build_info().sundials_version},
-        {"sweep_file", sweep.file},
-        {"base_path", fs::absolute(sweep.base_path).lexically_normal().string()},
-        {"created_utc", utc_timestamp()}};
-    if (!shard.whole()) meta.emplace_back("shard", shard.text());
-    db.put_meta(meta, "cannot write the sweep's description");
-    db.exec("COMMIT; PRAGMA journal_mode=WAL;");
-  });
+                       const SqliteDb db = SqliteDb::open_new(tmp, "sweep database");
+                       std::string columns =
+                           "trial INTEGER PRIMARY KEY, point INTEGER NOT NULL, "
+                           "seed_index INTEGER NOT NULL, seed INTEGER NOT NULL";
+                       for (const auto& axis : sweep.axes)
+                         columns += ", " + quoted_identifier(axis.key);
+                       for (const auto& r : sweep.randomize)
+                         columns += ", " + quoted_identifier(r.key) + " REAL";
+                       columns += ", status TEXT NOT NULL, message TEXT";
+                       for (const auto& name : sweep.metric_names)
+                         columns += ", " + quoted_identifier(name) + " REAL";
+                       db.exec(
+                           "BEGIN; CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL); "
+                           "CREATE TABLE trials(" +
+                           columns + ");");
+                       std::vector<std::pair<std::string, std::string>> meta = {
+                           {"format", "pamsim-sweep-1"},
+                           {"definition", sweep.canonical_json()},
+                           {"trials", std::to_string(sweep.trials())},
+                           {"pamsim_version", PAMSIM_VERSION},
+                           {"git_commit", build_info().git_commit},
+                           {"mujoco_version", build_info().mujoco_version},
+                           {"sundials_version", build_info().sundials_version},
+                           {"sweep_file", sweep.file},
+                           {"base_path", fs::absolute(sweep.base_path).lexically_normal().string()},
+                           {"created_utc", utc_timestamp()}};
+                       if (!shard.whole()) meta.emplace_back("shard", shard.text());
+                       db.put_meta(meta, "cannot write the sweep's description");
+                       db.exec("COMMIT; PRAGMA journal_mode=WAL;");
+                     });
   return open_to_resume(path, sweep, shard);
 }
 
@@ -103,19 +109,18 @@ ResultsDb ResultsDb::open_to_resume(const std::string& path, const SweepDefiniti
   const std::string wanted = sweep.canonical_json();
   if (stored != wanted) {
     throw InputError(path + ": holds a different sweep (its " + first_difference(stored, wanted) +
-                     " differs from " + sweep.file + "); use another --db, or the sweep file "
+                     " differs from " + sweep.file +
+                     "); use another --db, or the sweep file "
                      "it was made with");
   }
   const std::string stored_shard = db.meta("shard");
   if (stored_shard != (shard.whole() ? "" : shard.text())) {
-    throw InputError(path + ": holds " +
-                     (stored_shard.empty() ? std::string("the whole sweep")
-                                           : "shard " + stored_shard) +
-                     ", not " + (shard.whole() ? std::string("the whole sweep")
-                                               : "shard " + shard.text()) +
-                     "; resume it with " +
-                     (stored_shard.empty() ? std::string("no --shard")
-                                           : "--shard " + stored_shard));
+    throw InputError(
+        path + ": holds " +
+        (stored_shard.empty() ? std::string("the whole sweep") : "shard " + stored_shard) +
+        ", not " + (shard.whole() ? std::string("the whole sweep") : "shard " + shard.text()) +
+        "; resume it with " +
+        (stored_shard.empty() ? std::string("no --shard") : "--shard " + stored_shard));
   }
   db.db_.become_writer("another pamsim sweep is writing to it; wait for it or stop it first",
                        "sweep database");
@@ -160,27 +165,36 @@ void ResultsDb::insert(const SweepDefinition& sweep, const std::vector<TrialReco
       for (std::size_t a = 0; a < sweep.axes.size(); ++a) {
         const AxisValue& v = sweep.value(r.point, a);
         switch (v.kind) {
-          case AxisValue::Kind::kNumber: sqlite3_bind_double(st, c++, v.number); break;
+          case AxisValue::Kind::kNumber:
+            sqlite3_bind_double(st, c++, v.number);
+            break;
           case AxisValue::Kind::kInteger:
             sqlite3_bind_int64(st, c++, static_cast<sqlite3_int64>(v.number));
             break;
           case AxisValue::Kind::kString:
             sqlite3_bind_text(st, c++, v.text.c_str(), -1, SQLITE_TRANSIENT);
             break;
-          case AxisValue::Kind::kBool: sqlite3_bind_int(st, c++, v.flag ? 1 : 0); break;
+          case AxisValue::Kind::kBool:
+            sqlite3_bind_int(st, c++, v.flag ? 1 : 0);
+            break;
         }
       }
       for (double drawn : sweep.draws(r.trial)) sqlite3_bind_double(st, c++, drawn);
       sqlite3_bind_text(st, c++, r.summary.status.c_str(), -1, SQLITE_TRANSIENT);
-      if (r.summary.message.empty()) sqlite3_bind_null(st, c++);
-      else sqlite3_bind_text(st, c++, r.summary.message.c_str(), -1, SQLITE_TRANSIENT);
-      const bool measured = r.summary.status != "failed";   // a failed trial has no metrics
+      if (r.summary.message.empty())
+        sqlite3_bind_null(st, c++);
+      else
+        sqlite3_bind_text(st, c++, r.summary.message.c_str(), -1, SQLITE_TRANSIENT);
+      const bool measured = r.summary.status != "failed";  // a failed trial has no metrics
       for (const std::string& name : sweep.metric_names) {
         const double value = r.summary.metric(name);
-        if (measured && std::isfinite(value)) sqlite3_bind_double(st, c++, value);
-        else sqlite3_bind_null(st, c++);
+        if (measured && std::isfinite(value))
+          sqlite3_bind_double(st, c++, value);
+        else
+          sqlite3_bind_null(st, c++);
       }
-      if (sqlite3_step(st) != SQLITE_DONE) db_.fail("cannot store trial " + std::to_string(r.trial));
+      if (sqlite3_step(st) != SQLITE_DONE)
+        db_.fail("cannot store trial " + std::to_string(r.trial));
       sqlite3_reset(st);
     }
   });
@@ -189,7 +203,8 @@ void ResultsDb::insert(const SweepDefinition& sweep, const std::vector<TrialReco
 std::vector<std::string> ResultsDb::trial_columns() const {
   Statement s = db_.prepare("SELECT * FROM trials LIMIT 0", "cannot read the trials");
   std::vector<std::string> names;
-  for (int c = 0; c < sqlite3_column_count(s.get()); ++c) names.push_back(sqlite3_column_name(s.get(), c));
+  for (int c = 0; c < sqlite3_column_count(s.get()); ++c)
+    names.push_back(sqlite3_column_name(s.get(), c));
   return names;
 }
 
@@ -202,7 +217,9 @@ void read_cells(sqlite3_stmt* s, std::vector<DbValue>* cells) {
     DbValue& v = (*cells)[c];
     const int i = static_cast<int>(c);
     switch (sqlite3_column_type(s, i)) {
-      case SQLITE_NULL: v.kind = DbValue::Kind::kNull; break;
+      case SQLITE_NULL:
+        v.kind = DbValue::Kind::kNull;
+        break;
       case SQLITE_INTEGER:
       case SQLITE_FLOAT:
         v.kind = DbValue::Kind::kNumber;
@@ -223,8 +240,10 @@ std::vector<DbValue> ResultsDb::trial_row(std::int64_t trial) const {
   sqlite3_bind_int64(s.get(), 1, trial);
   std::vector<DbValue> cells;
   const int rc = sqlite3_step(s.get());
-  if (rc == SQLITE_ROW) read_cells(s.get(), &cells);
-  else if (rc != SQLITE_DONE) db_.fail("cannot read the trials");
+  if (rc == SQLITE_ROW)
+    read_cells(s.get(), &cells);
+  else if (rc != SQLITE_DONE)
+    db_.fail("cannot read the trials");
   return cells;
 }
 

@@ -26,7 +26,6 @@
 #include "sim/sweep/sweep.h"
 #include "sim/core/trial.h"
 
-
 namespace pamsim {
 
 // One finished trial, as stored.
@@ -34,7 +33,7 @@ struct TrialRecord {
   std::int64_t trial = 0;
   std::int64_t point = 0;
   std::int64_t seed_index = 0;
-  TrialSummary summary;   // summary.seed is the trial's seed
+  TrialSummary summary;  // summary.seed is the trial's seed
 };
 
 // A cell read back: NULL, a number or text.
@@ -61,7 +60,7 @@ class ResultsDb {
   static ResultsDb open_existing(const std::string& path);
 
   const std::string& path() const { return db_.path(); }
-  std::string meta(const std::string& key) const { return db_.meta(key); }   // "" if absent
+  std::string meta(const std::string& key) const { return db_.meta(key); }  // "" if absent
 
   // finished[t] is true for every trial already stored; `trials` is the sweep's count.
   std::vector<bool> finished_trials(std::int64_t trials) const;
@@ -85,8 +84,7 @@ class ResultsDb {
   explicit ResultsDb(SqliteDb db) : db_(std::move(db)) {}
   static ResultsDb open_as(const std::string& path, DbAccess access);
 
-  SqliteDb db_;   // the handle, and while this handle writes, the writer's lock
+  SqliteDb db_;  // the handle, and while this handle writes, the writer's lock
 };
-
 
 }  // namespace pamsim

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "sim/sweep/report.h"   // MetricStats
+#include "sim/sweep/report.h"  // MetricStats
 
 namespace pamsim {
 

@@ -37,7 +37,7 @@ void make_points(SweepDefinition* def) {
   if (def->design == SweepDesign::kGrid) {
     const std::int64_t n = grid_points(def->axes, std::numeric_limits<std::int64_t>::max());
     out.resize(static_cast<std::size_t>(n) * n_axes);
-    for (std::int64_t p = 0; p < n; ++p) {   // row-major: the first axis varies slowest
+    for (std::int64_t p = 0; p < n; ++p) {  // row-major: the first axis varies slowest
       std::int64_t rest = p;
       for (std::size_t a = n_axes; a-- > 0;) {
         const auto levels = static_cast<std::int64_t>(def->axes[a].values.size());
@@ -55,7 +55,7 @@ void make_points(SweepDefinition* def) {
     std::vector<std::int64_t> stratum(n);
     for (std::int64_t i = 0; i < n; ++i) stratum[i] = i;
     if (def->design == SweepDesign::kLatinHypercube) {
-      for (std::int64_t i = n - 1; i > 0; --i) {   // Fisher-Yates with a portable draw
+      for (std::int64_t i = n - 1; i > 0; --i) {  // Fisher-Yates with a portable draw
         std::swap(stratum[i], stratum[rng() % static_cast<std::uint64_t>(i + 1)]);
       }
     }
@@ -89,24 +89,25 @@ std::string AxisValue::toml() const {
   switch (kind) {
     case Kind::kString: {
       std::ostringstream os;
-      os << toml::value<std::string>(text);   // quoted and escaped as TOML
+      os << toml::value<std::string>(text);  // quoted and escaped as TOML
       return os.str();
     }
-    case Kind::kBool: return flag ? "true" : "false";
-    case Kind::kInteger: return std::to_string(static_cast<std::int64_t>(number));
-    case Kind::kNumber: break;
+    case Kind::kBool:
+      return flag ? "true" : "false";
+    case Kind::kInteger:
+      return std::to_string(static_cast<std::int64_t>(number));
+    case Kind::kNumber:
+      break;
   }
   if (!std::isfinite(number)) return std::isnan(number) ? "nan" : number > 0 ? "inf" : "-inf";
   char buf[40];
-  const auto end = std::to_chars(buf, buf + sizeof(buf), number).ptr;   // shortest exact form
+  const auto end = std::to_chars(buf, buf + sizeof(buf), number).ptr;  // shortest exact form
   std::string s(buf, end);
-  if (s.find_first_of(".e") == std::string::npos) s += ".0";   // stay a float in TOML
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";  // stay a float in TOML
   return s;
 }
 
-std::string SweepShard::text() const {
-  return std::to_string(index) + "/" + std::to_string(count);
-}
+std::string SweepShard::text() const { return std::to_string(index) + "/" + std::to_string(count); }
 
 SweepShard parse_sweep_shard(const std::string& text, const std::string& source) {
   const auto bad = [&] {
@@ -175,14 +176,18 @@ std::string SweepDefinition::canonical_json() const {
     nlohmann::json values = nlohmann::json::array();
     for (const auto& v : a.values) values.push_back(v.toml());
     j["values"] = values;
-    if (a.is_cases()) j["cases"] = a.case_sets;   // (absent on a key's axis, as before cases)
+    if (a.is_cases()) j["cases"] = a.case_sets;  // (absent on a key's axis, as before cases)
     axes_json.push_back(j);
   }
-  nlohmann::json j = {{"base_scenario", base_text}, {"fixed", fixed},
-                            {"axes", axes_json},          {"design", sweep_design_name(design)},
-                            {"samples", samples},         {"design_seed", design_seed},
-                            {"seeds", seeds},             {"metrics", metric_names}};
-  if (!randomize.empty()) {   // (a sweep without draws is described as before they existed)
+  nlohmann::json j = {{"base_scenario", base_text},
+                      {"fixed", fixed},
+                      {"axes", axes_json},
+                      {"design", sweep_design_name(design)},
+                      {"samples", samples},
+                      {"design_seed", design_seed},
+                      {"seeds", seeds},
+                      {"metrics", metric_names}};
+  if (!randomize.empty()) {  // (a sweep without draws is described as before they existed)
     j["randomize"] = randomizations_json(randomize);
     j["randomize_seed"] = randomize_seed;
   }

@@ -17,8 +17,8 @@
 //                  (named bundles of scenario keys; an empty set is the base scenario's);
 //                  from = { file = "f.toml", table = "t" } takes a case's keys from a table
 //                  of another file (relative to the sweep file), before its set
-//   [[randomize]] key and a distribution drawn per trial (sim/scenario/randomize.h), e.g. a plant's field
-//   randomize_seed  seed of those draws, >= 0                                  default 1
+//   [[randomize]] key and a distribution drawn per trial (sim/scenario/randomize.h), e.g. a plant's
+//   field randomize_seed  seed of those draws, >= 0                                  default 1
 #pragma once
 
 #include <cstdint>
@@ -39,23 +39,23 @@ SweepDesign parse_sweep_design(const std::string& name, const std::string& conte
 // boolean scenario value. Integers stay integers (integer keys refuse 12.0).
 struct AxisValue {
   enum class Kind { kNumber, kInteger, kString, kBool } kind = Kind::kNumber;
-  double number = 0;   // kNumber, kInteger (exact up to 2^53)
-  std::string text;    // kString
-  bool flag = false;   // kBool
+  double number = 0;  // kNumber, kInteger (exact up to 2^53)
+  std::string text;   // kString
+  bool flag = false;  // kBool
   // The value as TOML source for a `key=value` override (numbers round-trip exactly).
   std::string toml() const;
 };
 
 struct SweepAxis {
-  std::string key;                  // scenario key, e.g. "reflex.v_thr_mm_s"; a case axis's name
-  std::vector<AxisValue> values;    // grid levels (grid design); a case axis's case names
+  std::string key;                // scenario key, e.g. "reflex.v_thr_mm_s"; a case axis's name
+  std::vector<AxisValue> values;  // grid levels (grid design); a case axis's case names
   // A case axis: case_sets[i] holds case i's "key=value" overrides in key order (values[i]
   // its name).
   std::vector<std::vector<std::string>> case_sets;
   bool is_cases() const { return !case_sets.empty(); }
   // The "key=value" overrides of the level `v`: key=v, or the case named v's set.
   std::vector<std::string> overrides_of(const AxisValue& v) const;
-  bool is_range = false;            // from/to given (random and lhs sample inside it)
+  bool is_range = false;  // from/to given (random and lhs sample inside it)
   double from = 0, to = 0;
   bool log_scale = false;
   // The value at fraction u in [0, 1] of the range (geometric on a log scale).
@@ -63,19 +63,19 @@ struct SweepAxis {
 };
 
 struct SweepDefinition {
-  std::string file;               // the sweep file, as given
-  std::string base_path;          // the base scenario, resolved
-  std::string base_text;          // its content (part of the definition)
-  std::vector<std::string> fixed; // "key=value" overrides at every point
+  std::string file;                // the sweep file, as given
+  std::string base_path;           // the base scenario, resolved
+  std::string base_text;           // its content (part of the definition)
+  std::vector<std::string> fixed;  // "key=value" overrides at every point
   std::vector<SweepAxis> axes;
   SweepDesign design = SweepDesign::kGrid;
   std::int64_t samples = 0;       // random, lhs
   std::uint64_t design_seed = 1;  // random, lhs
   std::int64_t seeds = 1;
-  std::vector<Randomization> randomize;   // drawn per seed index (randomize.h)
+  std::vector<Randomization> randomize;  // drawn per seed index (randomize.h)
   std::uint64_t randomize_seed = 1;
   std::int64_t max_trials = 1000000;  // the cap on points x seeds (not part of the definition)
-  std::uint64_t base_seed = 1;    // the base scenario's seed (with fixed overrides)
+  std::uint64_t base_seed = 1;        // the base scenario's seed (with fixed overrides)
   // the metrics each trial stores (the database's metric columns), from the base scenario
   std::vector<std::string> metric_names;
 
@@ -104,7 +104,7 @@ struct SweepDefinition {
 // whose cost depends on the point spread evenly over the shards.
 struct SweepShard {
   std::int64_t index = 0;
-  std::int64_t count = 1;   // 1: the whole sweep
+  std::int64_t count = 1;  // 1: the whole sweep
 
   bool whole() const { return count == 1; }
   bool holds(std::int64_t trial) const { return trial % count == index; }
@@ -112,7 +112,7 @@ struct SweepShard {
   std::int64_t trials_of(std::int64_t total) const {
     return total / count + (index < total % count ? 1 : 0);
   }
-  std::string text() const;   // "I/N"
+  std::string text() const;  // "I/N"
 };
 
 // Parses "I/N" (decimal integers, N >= 1, 0 <= I < N). Throws InputError
@@ -142,7 +142,8 @@ const std::vector<EntryKey>& axis_entry_keys();
 const std::vector<EntryKey>& case_axis_entry_keys();
 const std::vector<EntryKey>& case_entry_keys();
 
-// Reads and validates a sweep file (sweep_file.cc), including every point's scenario. Throws InputError
+// Reads and validates a sweep file (sweep_file.cc), including every point's scenario. Throws
+// InputError
 // "<file>: <key> <problem>" for the first problem found.
 SweepDefinition load_sweep(const std::string& path);
 

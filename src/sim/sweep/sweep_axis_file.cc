@@ -50,7 +50,7 @@ void flatten_keys(const toml::table& t, const std::string& prefix, const Where& 
     if (const toml::table* sub = node.as_table()) {
       flatten_keys(*sub, key + ".", where, out);
     } else if (const toml::array* list = node.as_array()) {
-      for (const toml::node& item : *list) axis_value(item, where, key);   // checks each
+      for (const toml::node& item : *list) axis_value(item, where, key);  // checks each
       out->push_back(key + "=" + toml_value_text(*list));
     } else {
       out->push_back(key + "=" + axis_value(node, where, key).toml());

@@ -48,7 +48,6 @@ SweepAxis read_case_axis(const toml::table& t, std::size_t index, SweepDesign de
 // same scenario key: the later would silently win. `drawn` are the randomized keys, `fixed`
 // [fixed]'s "key=value" overrides.
 void check_axes_disjoint(const std::vector<SweepAxis>& axes, const std::vector<std::string>& drawn,
-                         const std::vector<std::string>& fixed,
-                         const std::string& file);
+                         const std::vector<std::string>& fixed, const std::string& file);
 
 }  // namespace pamsim::detail

@@ -69,7 +69,7 @@ void read_case(const toml::node& node, std::size_t c, const Where& axis, SweepAx
     }
   }
   if (const toml::node* s = t->get("set")) {
-    flatten_keys(*s->as_table(), "", Where{axis.file, where.prefix + "set."}, &set);   // by its row
+    flatten_keys(*s->as_table(), "", Where{axis.file, where.prefix + "set."}, &set);  // by its row
   }
   AxisValue v;
   v.kind = AxisValue::Kind::kString;
@@ -102,12 +102,11 @@ SweepAxis read_case_axis(const toml::table& t, std::size_t index, SweepDesign de
 
 void check_axes_disjoint(const std::vector<SweepAxis>& axes, const std::vector<std::string>& drawn,
                          const std::vector<std::string>& fixed, const std::string& file) {
-  std::map<std::string, std::string> setter;   // scenario key -> what sets it
+  std::map<std::string, std::string> setter;  // scenario key -> what sets it
   const auto claim = [&](const std::string& key, const std::string& who) {
     const auto [at, fresh] = setter.emplace(key, who);
     if (!fresh && at->second != who) {
-      throw InputError(file + ": " + who + " sets " + key + ", which " + at->second +
-                       " sets too");
+      throw InputError(file + ": " + who + " sets " + key + ", which " + at->second + " sets too");
     }
   };
   for (const std::string& assignment : fixed) claim(override_key(assignment), "[fixed]");

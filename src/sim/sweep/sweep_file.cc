@@ -51,16 +51,16 @@ void read_grid_levels(const toml::table& t, std::int64_t max_trials, const Where
   SweepAxis& axis = *axis_out;
   const toml::node* count_node = t.get("count");
   where.check(count_node && count_node->is_integer(), "count", "is required (an integer >= 1)");
-  const std::int64_t count = *count_node->value<std::int64_t>();   // >= 1, by its row
+  const std::int64_t count = *count_node->value<std::int64_t>();  // >= 1, by its row
   where.check(count > 1 || axis.from == axis.to, "count", "must be >= 2 for a range from != to");
   where.check(count <= max_trials, "count",
               "is " + std::to_string(count) + ", more than max_trials = " +
                   std::to_string(max_trials) + " (raise max_trials to run it)");
   for (std::int64_t i = 0; i < count; ++i) {
     AxisValue v;
-    v.number = i == 0 ? axis.from
-             : i == count - 1 ? axis.to
-                              : tidy(axis.at(static_cast<double>(i) / (count - 1)));
+    v.number = i == 0           ? axis.from
+               : i == count - 1 ? axis.to
+                                : tidy(axis.at(static_cast<double>(i) / (count - 1)));
     axis.values.push_back(v);
   }
 }
@@ -73,14 +73,23 @@ const std::vector<EntryKey>& axis_entry_keys() {
        EntryType::kText},
       {"values", "(the key's)", "a list (grid designs)", "(values or from/to)",
        "the values, in the key's own unit or type"},
-      {"from", "(the key's)", "> 0 on a log scale", "(values or from/to)",
-       "a range's first value", EntryType::kNumber},
-      {"to", "(the key's)", "", "(values or from/to)", "a range's last value",
+      {"from", "(the key's)", "> 0 on a log scale", "(values or from/to)", "a range's first value",
        EntryType::kNumber},
-      {"count", "", "grid designs", "(required with from/to)",
-       "how many values the range takes", EntryType::kInteger,
+      {"to", "(the key's)", "", "(values or from/to)", "a range's last value", EntryType::kNumber},
+      {"count",
+       "",
+       "grid designs",
+       "(required with from/to)",
+       "how many values the range takes",
+       EntryType::kInteger,
        {1.0, std::numeric_limits<double>::infinity()}},
-      {"scale", "", "", "\"linear\"", "how a range spaces its values", EntryType::kChoice, {},
+      {"scale",
+       "",
+       "",
+       "\"linear\"",
+       "how a range spaces its values",
+       EntryType::kChoice,
+       {},
        {"linear", "log"}}};
   return keys;
 }
@@ -117,7 +126,8 @@ SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
                       "and [[axis.case]])");
   SweepAxis axis;
   const auto key = t["key"].value<std::string>();
-  where.check(key.has_value() && !key->empty(), "key", "is required (a scenario key, e.g. "
+  where.check(key.has_value() && !key->empty(), "key",
+              "is required (a scenario key, e.g. "
               "\"reflex.v_thr_mm_s\")");
   axis.key = *key;
   where.check(axis.key != "seed", "key", "cannot be \"seed\": use the sweep's `seeds`");
@@ -133,9 +143,9 @@ SweepAxis read_axis(const toml::table& t, std::size_t index, SweepDesign design,
 
   axis.is_range = true;
   where.check(t.contains("from") && t.contains("to"), "from", "and to are both required");
-  axis.from = *t["from"].value<double>();   // finite numbers, by their rows (check_entry)
+  axis.from = *t["from"].value<double>();  // finite numbers, by their rows (check_entry)
   axis.to = *t["to"].value<double>();
-  axis.log_scale = t["scale"].value_or(std::string("linear")) == "log";   // a row's name
+  axis.log_scale = t["scale"].value_or(std::string("linear")) == "log";  // a row's name
   if (axis.log_scale) {
     where.check(axis.from > 0 && axis.to > 0, "from",
                 "and to must be > 0 on a log scale, got " + format_value(axis.from) + " and " +
@@ -176,8 +186,8 @@ const std::string kRaise = " (raise max_trials to run it)";
 void read_design(ConfigReader& in, SweepDefinition* def) {
   read_key_rows(in, sweep_design_table(def));
   in.check(def->seeds <= def->max_trials, "seeds",
-           "is " + std::to_string(def->seeds) + ", more trials than max_trials = " +
-               std::to_string(def->max_trials) + kRaise);
+           "is " + std::to_string(def->seeds) +
+               ", more trials than max_trials = " + std::to_string(def->max_trials) + kRaise);
   const KeyTable sampling = sweep_sampling_table(def);
   if (def->design == SweepDesign::kGrid) {
     for (const std::string& key : key_names(sampling)) {
@@ -237,7 +247,7 @@ void read_randomize(ConfigReader& in, SweepDefinition* def) {
 void check_grid_size(ConfigReader& in, const SweepDefinition& def) {
   if (def.design != SweepDesign::kGrid) return;
   if (grid_points(def.axes, def.max_trials / def.seeds) >= 0) return;
-  double product = 1;   // for the message only
+  double product = 1;  // for the message only
   for (const auto& a : def.axes) product *= static_cast<double>(a.values.size());
   in.fail("max_trials", "is " + std::to_string(def.max_trials) + ", fewer than the grid's " +
                             format_value(product) + " points (" + std::to_string(def.axes.size()) +
@@ -284,8 +294,9 @@ void check_points(SweepDefinition* def) {
       const Scenario point =
           load_scenario_text(def->base_text, def->base_path, def->trial_overrides(t));
       if (names_of(point) != def->metric_names) {
-        throw InputError("changes the metrics or the muscles' labels, which a sweep's columns "
-                         "cannot follow");
+        throw InputError(
+            "changes the metrics or the muscles' labels, which a sweep's columns "
+            "cannot follow");
       }
     } catch (const InputError& e) {
       throw InputError(def->file + ": " + describe_trial(*def, t) + ": " + e.what());
@@ -297,7 +308,8 @@ void check_points(SweepDefinition* def) {
 
 KeyTable sweep_design_table(SweepDefinition* def) {
   KeyTable t{"", {}, {}, {}};
-  t.choices = {{"design", {"grid", "random", "lhs"},
+  t.choices = {{"design",
+                {"grid", "random", "lhs"},
                 "how the axes become points: their full grid, uniform random draws, or a Latin "
                 "hypercube",
                 [def](const std::string& v) { def->design = parse_sweep_design(v, "design"); },
@@ -318,7 +330,6 @@ KeyTable sweep_sampling_table(SweepDefinition* def) {
                     std::int64_t{1} << 62, &def->design_seed)};
   return t;
 }
-
 
 SweepDefinition load_sweep(const std::string& path) {
   ConfigReader in(path);

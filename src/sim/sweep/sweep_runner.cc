@@ -16,7 +16,7 @@
 namespace pamsim {
 namespace {
 
-constexpr auto kProgressInterval = std::chrono::milliseconds(200);   // progress when idle
+constexpr auto kProgressInterval = std::chrono::milliseconds(200);  // progress when idle
 
 // A trial that could not run: status "failed" and why (the database stores no metrics).
 TrialSummary failed_summary(std::uint64_t seed, const std::string& why) {
@@ -55,7 +55,7 @@ TrialRecord SweepTrialRunner::run(std::int64_t trial) {
   try {
     move_to(trial);
     record.summary = run_trial(*model_, scenario_, seed, false).summary;
-  } catch (const std::exception& e) {   // anything but a divergence (that is a status already)
+  } catch (const std::exception& e) {  // anything but a divergence (that is a status already)
     record.summary = failed_summary(seed, e.what());
   }
   return record;
@@ -82,10 +82,10 @@ struct SweepWork {
   const SweepRunOptions& options;
   const std::vector<bool>& finished;
   std::atomic<std::int64_t> next{0};
-  std::atomic<bool> abort{false};   // the writer failed: workers stop too
+  std::atomic<bool> abort{false};  // the writer failed: workers stop too
   std::mutex mutex;
   std::condition_variable finished_cv;
-  std::vector<TrialRecord> queue;   // finished, not yet committed
+  std::vector<TrialRecord> queue;  // finished, not yet committed
   int workers_left;
 
   bool stopping() const { return abort.load() || (options.stop && options.stop->load()); }
@@ -101,7 +101,7 @@ struct SweepWork {
       TrialRecord record = runner.run(t);
       std::lock_guard<std::mutex> lock(mutex);
       queue.push_back(std::move(record));
-      finished_cv.notify_one();   // commit it now: a kill loses only the trials still running
+      finished_cv.notify_one();  // commit it now: a kill loses only the trials still running
     }
     std::lock_guard<std::mutex> lock(mutex);
     --workers_left;
@@ -149,7 +149,8 @@ SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
   }
   for (auto& t : pool) t.join();
   result.interrupted = result.already_done + result.ran < options.shard.trials_of(total);
-  result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

@@ -24,8 +24,9 @@ struct TrialModel;
 
 // Runs single trials of a sweep on the calling thread (one runner per thread). It keeps the
 // scenario and model of the point it ran last (of the trial, when the sweep draws
-// [[randomize]] values per trial), reloading the model only when a scenario changes it; each trial gets a fresh mjData and CVODE context, so a record depends only on its trial
-// number. A trial that cannot run is returned with status "failed" and the reason.
+// [[randomize]] values per trial), reloading the model only when a scenario changes it; each trial
+// gets a fresh mjData and CVODE context, so a record depends only on its trial number. A trial that
+// cannot run is returned with status "failed" and the reason.
 class SweepTrialRunner {
  public:
   explicit SweepTrialRunner(const SweepDefinition& sweep);
@@ -36,14 +37,14 @@ class SweepTrialRunner {
   void move_to(std::int64_t trial);
 
   const SweepDefinition& sweep_;
-  std::int64_t scenario_id_ = -1;   // the point (or trial) scenario_ was made for
+  std::int64_t scenario_id_ = -1;  // the point (or trial) scenario_ was made for
   Scenario scenario_;
   std::unique_ptr<TrialModel> model_;
 };
 
 struct SweepRunOptions {
   int threads = 1;
-  SweepShard shard;   // the trials to run: the whole sweep, or one shard of it
+  SweepShard shard;  // the trials to run: the whole sweep, or one shard of it
   // Set (e.g. by a SIGINT handler) to stop: trials in flight finish and are committed,
   // no new one starts.
   const std::atomic<bool>* stop = nullptr;
@@ -52,11 +53,11 @@ struct SweepRunOptions {
 };
 
 struct SweepRunResult {
-  std::int64_t already_done = 0;   // stored before this run (--resume)
-  std::int64_t ran = 0;            // run and stored now
-  std::int64_t diverged = 0;       // of those, status "diverged" or "failed"
-  bool interrupted = false;        // stopped before every trial was stored
-  std::string incomplete_reason;   // why, when not stopped by options.stop (MPI ranks)
+  std::int64_t already_done = 0;  // stored before this run (--resume)
+  std::int64_t ran = 0;           // run and stored now
+  std::int64_t diverged = 0;      // of those, status "diverged" or "failed"
+  bool interrupted = false;       // stopped before every trial was stored
+  std::string incomplete_reason;  // why, when not stopped by options.stop (MPI ranks)
   double wall_time_s = 0;
 };
 
@@ -65,9 +66,9 @@ struct SweepRunResult {
 void store_trials(const SweepDefinition& sweep, ResultsDb& db, std::vector<TrialRecord>& batch,
                   const SweepRunOptions& options, SweepRunResult& result);
 
-// Runs every trial of `sweep` (of `options.shard`) not yet in `db`. Trial failures (divergence, an exception in a
-// trial) are stored with their status and message; the sweep goes on. Throws InputError if
-// threads < 1, std::runtime_error if the database cannot be written.
+// Runs every trial of `sweep` (of `options.shard`) not yet in `db`. Trial failures (divergence, an
+// exception in a trial) are stored with their status and message; the sweep goes on. Throws
+// InputError if threads < 1, std::runtime_error if the database cannot be written.
 SweepRunResult run_sweep(const SweepDefinition& sweep, ResultsDb& db,
                          const SweepRunOptions& options);
 

@@ -70,8 +70,7 @@ void read_definition(const ResultsDb& db, SweepSummary* out) {
       std::vector<std::string> levels = axis.at("values").get<std::vector<std::string>>();
       if (sweep.design == "grid") sweep.points_total *= static_cast<std::int64_t>(levels.size());
       sweep.axis_levels.push_back(std::move(levels));
-      sweep.axis_cases.push_back(
-          axis.value("cases", std::vector<std::vector<std::string>>{}));
+      sweep.axis_cases.push_back(axis.value("cases", std::vector<std::vector<std::string>>{}));
     }
     for (const auto& r : def.value("randomize", nlohmann::json::array())) {
       sweep.randomize_keys.push_back(r.at("key").get<std::string>());
@@ -85,7 +84,7 @@ void read_definition(const ResultsDb& db, SweepSummary* out) {
 // Where the summary's columns are in the trials table.
 struct TrialColumns {
   std::size_t point = 0, status = 0;
-  std::size_t mistrips = 0;   // past the end when the sweep has no reflex metrics
+  std::size_t mistrips = 0;  // past the end when the sweep has no reflex metrics
   std::vector<std::size_t> axes, metrics;
 };
 
@@ -131,9 +130,9 @@ SweepSummary summarize_sweep(const ResultsDb& db) {
     if (current.trials > 0 && point != current.point) close_point();
     if (current.trials == 0) {
       current.point = point;
-      if (sweep.design == "grid") {   // the levels exactly as the sweep set them (types kept)
+      if (sweep.design == "grid") {  // the levels exactly as the sweep set them (types kept)
         current.axis_values = grid_levels_of(sweep, point);
-      } else {   // random and lhs sample float ranges
+      } else {  // random and lhs sample float ranges
         for (std::size_t c : col.axes) current.axis_values.push_back(toml_value(row[c]));
       }
       acc.assign(col.metrics.size(), Accumulator{});

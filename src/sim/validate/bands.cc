@@ -56,8 +56,7 @@ const std::vector<EntryKey>& bracket_entry_keys() {
       {"from", "(the key's)", "below to", "(required)", "the bracket's lower end",
        EntryType::kNumber},
       {"to", "(the key's)", "", "(required)", "the bracket's upper end", EntryType::kNumber},
-      {"source", "", "a citation", "(required)", "where the bracket comes from",
-       EntryType::kText}};
+      {"source", "", "a citation", "(required)", "where the bracket comes from", EntryType::kText}};
   return keys;
 }
 
@@ -72,8 +71,8 @@ std::vector<Bracket> read_brackets(ConfigReader& in, std::uint64_t* seed) {
     b.name = e.text("name", true);
     check_bracket_name(e, b.name, brackets);
     b.key = e.text("key", true);
-    e.in.check(!b.key.empty() && b.key.find_first_of("=,\"") == std::string::npos,
-               e.where + "key", "must be a scenario key, got \"" + b.key + "\"");
+    e.in.check(!b.key.empty() && b.key.find_first_of("=,\"") == std::string::npos, e.where + "key",
+               "must be a scenario key, got \"" + b.key + "\"");
     b.from = required_number(e, "from");
     b.to = required_number(e, "to");
     e.in.check(b.from < b.to, e.where + "from",
@@ -91,7 +90,8 @@ std::vector<Bracket> read_brackets(ConfigReader& in, std::uint64_t* seed) {
 std::vector<double> bracket_draws(const std::vector<Bracket>& brackets, std::uint64_t seed,
                                   int rig) {
   std::vector<Randomization> uniform;
-  for (const Bracket& b : brackets) uniform.push_back({b.key, Distribution::kUniform, b.from, b.to});
+  for (const Bracket& b : brackets)
+    uniform.push_back({b.key, Distribution::kUniform, b.from, b.to});
   return draw_values(uniform, seed, rig);
 }
 
@@ -111,9 +111,9 @@ std::vector<double> bracket_middles(const std::vector<Bracket>& brackets) {
 }
 
 BandStats band_stats(std::vector<double> values) {
-  values.erase(std::remove_if(values.begin(), values.end(),
-                              [](double v) { return !std::isfinite(v); }),
-               values.end());
+  values.erase(
+      std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
+      values.end());
   BandStats s;
   s.n = static_cast<int>(values.size());
   if (values.empty()) return s;
@@ -126,23 +126,22 @@ BandStats band_stats(std::vector<double> values) {
   return s;
 }
 
-Bands run_bands(const std::vector<Bracket>& brackets, std::uint64_t seed, int rigs,
-                const std::function<std::vector<BandCell>(int rig,
-                                                          const std::vector<std::string>&)>& run) {
+Bands run_bands(
+    const std::vector<Bracket>& brackets, std::uint64_t seed, int rigs,
+    const std::function<std::vector<BandCell>(int rig, const std::vector<std::string>&)>& run) {
   Bands bands;
   bands.brackets = brackets;
   bands.seed = seed;
   for (int rig = 0; rig < rigs; ++rig) bands.draws.push_back(bracket_draws(brackets, seed, rig));
-  bands.runs = gather_runs(rigs, [&](int rig) {
-    return run(rig, bracket_overrides(brackets, bands.draws[rig]));
-  });
+  bands.runs = gather_runs(
+      rigs, [&](int rig) { return run(rig, bracket_overrides(brackets, bands.draws[rig])); });
   return bands;
 }
 
 double Sensitivity::swing(std::size_t b, std::size_t c) const {
   double lo = INFINITY, hi = -INFINITY;
   int ran = 0;
-  for (std::size_t run : {std::size_t{0}, 2 * b + 1, 2 * b + 2}) {   // middle, from, to
+  for (std::size_t run : {std::size_t{0}, 2 * b + 1, 2 * b + 2}) {  // middle, from, to
     const double rmse = runs.errors[run][c].rmse_pct;
     if (!std::isfinite(rmse)) continue;
     lo = std::min(lo, rmse);
@@ -164,15 +163,14 @@ Sensitivity run_sensitivity(
       settings.back()[b] = end;
     }
   }
-  s.runs = gather_runs(static_cast<int>(settings.size()), [&](int k) {
-    return run(bracket_overrides(brackets, settings[k]));
-  });
+  s.runs = gather_runs(static_cast<int>(settings.size()),
+                       [&](int k) { return run(bracket_overrides(brackets, settings[k])); });
   return s;
 }
 
 int RunCells::refused_count() const {
-  return static_cast<int>(
-      std::count_if(refused.begin(), refused.end(), [](const std::string& r) { return !r.empty(); }));
+  return static_cast<int>(std::count_if(refused.begin(), refused.end(),
+                                        [](const std::string& r) { return !r.empty(); }));
 }
 
 RunCells gather_runs(int runs, const std::function<std::vector<BandCell>(int)>& run) {
@@ -186,7 +184,8 @@ RunCells gather_runs(int runs, const std::function<std::vector<BandCell>(int)>& 
       out.refused[k] = e.what();
     }
   }
-  const auto first = std::find_if(ran.begin(), ran.end(), [](const auto& r) { return r.has_value(); });
+  const auto first =
+      std::find_if(ran.begin(), ran.end(), [](const auto& r) { return r.has_value(); });
   if (first == ran.end()) throw InputError(out.refused.front());
   for (const BandCell& c : **first) {
     out.cells.push_back(c.name);
@@ -207,7 +206,8 @@ void check_brackets(const std::vector<Bracket>& brackets,
                     const std::vector<std::string>& user_overrides, const std::string& what,
                     const std::function<void(const std::vector<std::string>&)>& check) {
   if (brackets.empty()) {
-    throw InputError(what + ": bracket: --bands and --sensitivity need at least one [[bracket]] table");
+    throw InputError(what +
+                     ": bracket: --bands and --sensitivity need at least one [[bracket]] table");
   }
   for (std::size_t k = 0; k < brackets.size(); ++k) {
     const Bracket& b = brackets[k];

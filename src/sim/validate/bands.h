@@ -49,7 +49,7 @@ std::vector<double> bracket_middles(const std::vector<Bracket>& brackets);
 
 // A cell of the protocol's table as one run gives it, and the paper's (where published).
 struct BandCell {
-  std::string name;   // "PAM-A eq3 5 kg", "agonist model all"
+  std::string name;  // "PAM-A eq3 5 kg", "agonist model all"
   ErrorPct error;
   std::optional<ErrorPct> paper;
 };
@@ -69,9 +69,9 @@ inline constexpr double kBandLow = 0.05, kBandHigh = 0.95;
 // cannot reach the tensile test's deformation), which is a finding, not an input error.
 struct RunCells {
   std::vector<std::string> cells;
-  std::vector<std::optional<ErrorPct>> paper;   // per cell
-  std::vector<std::vector<ErrorPct>> errors;    // [run][cell]
-  std::vector<std::string> refused;             // [run]
+  std::vector<std::optional<ErrorPct>> paper;  // per cell
+  std::vector<std::vector<ErrorPct>> errors;   // [run][cell]
+  std::vector<std::string> refused;            // [run]
   int refused_count() const;
 };
 
@@ -81,19 +81,19 @@ struct RunCells {
 RunCells gather_runs(int runs, const std::function<std::vector<BandCell>(int)>& run);
 
 struct Bands {
-  std::string protocol;    // "length-estimation", "reaching"
-  std::string cases_are;   // what a run's cells are, for the Markdown
+  std::string protocol;   // "length-estimation", "reaching"
+  std::string cases_are;  // what a run's cells are, for the Markdown
   std::vector<Bracket> brackets;
   std::uint64_t seed = 1;
-  std::vector<std::vector<double>> draws;   // [rig][bracket]
-  RunCells runs;                            // one run per rig
+  std::vector<std::vector<double>> draws;  // [rig][bracket]
+  RunCells runs;                           // one run per rig
 };
 
 // Runs `run(rig, overrides)` (one protocol run) for rigs 0 .. rigs - 1, each with its draws
 // as overrides (gather_runs).
-Bands run_bands(const std::vector<Bracket>& brackets, std::uint64_t seed, int rigs,
-                const std::function<std::vector<BandCell>(int rig,
-                                                          const std::vector<std::string>&)>& run);
+Bands run_bands(
+    const std::vector<Bracket>& brackets, std::uint64_t seed, int rigs,
+    const std::function<std::vector<BandCell>(int rig, const std::vector<std::string>&)>& run);
 
 // The sensitivity, one unknown at a time about the brackets' middles: run once with every
 // bracket at its middle, then per bracket at `from` and at `to`, the others at their

@@ -39,14 +39,14 @@ std::string refusals(const RunCells& runs, const std::string& what) {
   const auto first = std::find_if(runs.refused.begin(), runs.refused.end(),
                                   [](const std::string& r) { return !r.empty(); });
   return "The protocol could not run " + std::to_string(k) + " of " +
-         std::to_string(runs.refused.size()) + " " + what + " (their cells n/a); the first: " +
-         *first + "\n\n";
+         std::to_string(runs.refused.size()) + " " + what +
+         " (their cells n/a); the first: " + *first + "\n\n";
 }
 
 std::string band_text(const BandStats& s) {
   if (s.n == 0) return "n/a";
-  return markdown_number(s.median) + " [" + markdown_number(s.p5) + ", " +
-         markdown_number(s.p95) + "]";
+  return markdown_number(s.median) + " [" + markdown_number(s.p5) + ", " + markdown_number(s.p95) +
+         "]";
 }
 
 }  // namespace
@@ -89,7 +89,8 @@ std::string bands_markdown(const Bands& b) {
   out << "# Bands: pamsim validate " << b.protocol << ", " << b.draws.size()
       << " rigs drawn from the brackets\n\n"
       << "Each cell: " << b.cases_are << "; error in % of length over the drawn rigs as median ["
-      << kBandLow * 100 << " %, " << kBandHigh * 100 << " %], every hardware source on; the paper's "
+      << kBandLow * 100 << " %, " << kBandHigh * 100
+      << " %], every hardware source on; the paper's "
       << "value beside, inside or outside that range.\n\n";
   out << markdown_header("cell", {"max error", "RMSE", "paper max / RMSE", "paper is (max, RMSE)"});
   int inside = 0, judged = 0;
@@ -108,8 +109,8 @@ std::string bands_markdown(const Bands& b) {
     out << " |\n";
   }
   out << "\nThe paper's RMSE inside the range: " << inside << " of " << judged << " cells.\n\n"
-      << refusals(b.runs, "rigs")
-      << "The brackets (drawn uniformly, bracket_seed " << b.seed << "):\n\n"
+      << refusals(b.runs, "rigs") << "The brackets (drawn uniformly, bracket_seed " << b.seed
+      << "):\n\n"
       << markdown_header("unknown", {"key", "from", "to", "source"});
   for (const Bracket& k : b.brackets) {
     out << "| " << k.name << " | " << k.key << " | " << format_value(k.from) << " | "
@@ -125,8 +126,8 @@ std::string sensitivity_csv(const Sensitivity& s) {
   for (std::size_t c = 0; c < s.runs.cells.size(); ++c) {
     for (std::size_t b = 0; b < s.brackets.size(); ++b) {
       const Bracket& k = s.brackets[b];
-      out << csv_text(s.runs.cells[c]) << ',' << k.name << ',' << k.key << ',' << csv_number(k.from) << ','
-          << csv_number(k.to) << ',' << csv_number(e[2 * b + 1][c].rmse_pct) << ','
+      out << csv_text(s.runs.cells[c]) << ',' << k.name << ',' << k.key << ',' << csv_number(k.from)
+          << ',' << csv_number(k.to) << ',' << csv_number(e[2 * b + 1][c].rmse_pct) << ','
           << csv_number(e[2 * b + 2][c].rmse_pct) << ',' << csv_number(s.swing(b, c)) << ','
           << csv_number(e[0][c].rmse_pct) << '\n';
     }
@@ -146,8 +147,9 @@ std::string sensitivity_markdown(const Sensitivity& s) {
   columns.push_back("dominant");
   out << markdown_header("cell (RMSE at the middles)", columns);
   for (std::size_t c = 0; c < s.runs.cells.size(); ++c) {
-    out << "| " << s.runs.cells[c] << " (" << markdown_number(s.runs.errors[0][c].rmse_pct) << ") |";
-    std::optional<std::size_t> top;   // the largest finite swing
+    out << "| " << s.runs.cells[c] << " (" << markdown_number(s.runs.errors[0][c].rmse_pct)
+        << ") |";
+    std::optional<std::size_t> top;  // the largest finite swing
     for (std::size_t b = 0; b < s.brackets.size(); ++b) {
       out << ' ' << markdown_number(s.swing(b, c)) << " |";
       if (std::isfinite(s.swing(b, c)) && (!top || s.swing(b, c) > s.swing(*top, c))) top = b;
@@ -177,15 +179,17 @@ void write_bands(const Bands& b, const std::string& out_dir, bool draw) {
   job.width_px = 1200;
   job.height_px = 700;
   job.data_files = {{"bands.dat", data.str()}};
-  job.script = "set datafile separator '\\t'\n"
-               "set title " + gp_quote("pamsim validate " + b.protocol + " --bands " +
-                                       std::to_string(b.draws.size())) + " noenhanced\n"
-               "set ylabel 'RMS error [% of length]'\nset grid ytics\nset yrange [0:*]\n"
-               "set xtics rotate by -40 noenhanced\nset key outside right top\n"
-               "set offsets 0.5, 0.5, 0, 0\n"
-               "plot 'bands.dat' using 1:4:3:5:xtic(2) with yerrorbars pt 7 lc rgb '#1f77b4' "
-               "title 'median, 5-95 % of the rigs', "
-               "'' using 1:6 with points pt 9 ps 1.5 lc rgb '#d62728' title 'paper'\n";
+  job.script =
+      "set datafile separator '\\t'\n"
+      "set title " +
+      gp_quote("pamsim validate " + b.protocol + " --bands " + std::to_string(b.draws.size())) +
+      " noenhanced\n"
+      "set ylabel 'RMS error [% of length]'\nset grid ytics\nset yrange [0:*]\n"
+      "set xtics rotate by -40 noenhanced\nset key outside right top\n"
+      "set offsets 0.5, 0.5, 0, 0\n"
+      "plot 'bands.dat' using 1:4:3:5:xtic(2) with yerrorbars pt 7 lc rgb '#1f77b4' "
+      "title 'median, 5-95 % of the rigs', "
+      "'' using 1:6 with points pt 9 ps 1.5 lc rgb '#d62728' title 'paper'\n";
   run_gnuplot((fs::path(out_dir) / "bands.png").string(), job);
 }
 

@@ -51,8 +51,7 @@ const std::vector<EntryKey>& budget_source_entry_keys() {
       {"on", "", "list of \"key=value\" scenario overrides, at least one", "(required)",
        "the source switched on", EntryType::kTexts},
       {"off", "", "list of \"key=value\" scenario overrides", "[]",
-       "the source switched off, where the protocol's own scenario has it on",
-       EntryType::kTexts}};
+       "the source switched off, where the protocol's own scenario has it on", EntryType::kTexts}};
   return keys;
 }
 

@@ -48,8 +48,8 @@ std::string budget_csv(const ErrorBudget& b) {
     for (std::size_t r = 0; r < b.configs.size(); ++r) {
       const BudgetConfig& c = b.configs[r];
       out << b.cases[k] << ',' << c.name << ',' << run_source(b, c) << ','
-          << csv_number(b.errors[r][k].max_pct) << ',' << csv_number(b.errors[r][k].rmse_pct)
-          << ',' << csv_number(run_share(b, c, k)) << '\n';
+          << csv_number(b.errors[r][k].max_pct) << ',' << csv_number(b.errors[r][k].rmse_pct) << ','
+          << csv_number(run_share(b, c, k)) << '\n';
     }
   }
   return out.str();
@@ -119,16 +119,19 @@ void write_error_budget(const ErrorBudget& b, const std::string& out_dir, bool d
   job.width_px = 1200;
   job.height_px = 700;
   job.data_files = {{"budget.dat", data.str()}};
-  job.script = "set datafile separator '\\t'\n"
-               "set title " + gp_quote("Error budget: pamsim validate " + b.protocol + " (" +
-                                       b.cases_are + ")") + " noenhanced\n"
-               "set ylabel 'RMS error: the none run, each source alone [% of length]'\n"
-               "set style data histograms\nset style histogram clustered gap 1\n"
-               "set style fill solid 0.85 border -1\nset boxwidth 0.9\n"
-               "set key outside right top noenhanced\nset grid ytics\nset yrange [0:*]\n"
-               "set xtics noenhanced\n"
-               "plot for [i=2:" + std::to_string(b.sources.size() + 2) +
-               "] 'budget.dat' using i:xtic(1) title columnheader(i)\n";
+  job.script =
+      "set datafile separator '\\t'\n"
+      "set title " +
+      gp_quote("Error budget: pamsim validate " + b.protocol + " (" + b.cases_are + ")") +
+      " noenhanced\n"
+      "set ylabel 'RMS error: the none run, each source alone [% of length]'\n"
+      "set style data histograms\nset style histogram clustered gap 1\n"
+      "set style fill solid 0.85 border -1\nset boxwidth 0.9\n"
+      "set key outside right top noenhanced\nset grid ytics\nset yrange [0:*]\n"
+      "set xtics noenhanced\n"
+      "plot for [i=2:" +
+      std::to_string(b.sources.size() + 2) +
+      "] 'budget.dat' using i:xtic(1) title columnheader(i)\n";
   run_gnuplot((fs::path(out_dir) / "budget.png").string(), job);
 }
 

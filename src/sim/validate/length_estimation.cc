@@ -92,9 +92,8 @@ double reachable_mm(const AvbdlParams& plant, const TensileTestOptions& test) {
 
 // The static tests and their fits (Yoshida and Hosoda, Sec. II-B), each fit as a PAM file in
 // fits_dir.
-void run_tensile_tests_and_fits(const LengthValidationSpec& spec,
-                                const ValidationOptions& options, const std::string& fits_dir,
-                                LengthValidationResult* result) {
+void run_tensile_tests_and_fits(const LengthValidationSpec& spec, const ValidationOptions& options,
+                                const std::string& fits_dir, LengthValidationResult* result) {
   for (const ValidationPam& pam : spec.pams) {
     TensileTestOptions test = pam.tensile;
     if (options.seed) test.seed = *options.seed;
@@ -125,7 +124,8 @@ void check_overrides_not_per_trial(const LengthValidationSpec& spec,
                                    const ValidationOptions& options) {
   for (const std::string& o : options.overrides) {
     if (o.rfind("muscles.pam.plant.", 0) == 0) {
-      throw InputError("--set " + o + ": a PAM's plant is changed by pams.<NAME>.plant.<table>."
+      throw InputError("--set " + o +
+                       ": a PAM's plant is changed by pams.<NAME>.plant.<table>."
                        "<field> (its tensile test and fits see the change too)");
     }
     for (const char* key : {"muscles.pam.plant", "muscles.pam.params", "bodies.weight.mass_kg",
@@ -141,14 +141,13 @@ void check_overrides_not_per_trial(const LengthValidationSpec& spec,
 // One dynamic trial's overrides of the rig: the protocol's, the PAM's plant, the fit as its
 // estimator, the weight and the sine's offset, then the command line's
 std::vector<std::string> trial_overrides(const LengthValidationSpec& spec,
-                                         const ValidationOptions& options,
-                                         const ValidationPam& pam, const FittedLaw& f,
-                                         double weight) {
+                                         const ValidationOptions& options, const ValidationPam& pam,
+                                         const FittedLaw& f, double weight) {
   std::vector<std::string> overrides = spec.overrides;
   const std::string plant = quoted(fs::absolute(pam.plant_file).string());
   if (pam.plant_changes.empty()) {
     overrides.push_back("muscles.pam.plant=" + plant);
-  } else {   // the plant file with the PAM's changes, as the rig's table form
+  } else {  // the plant file with the PAM's changes, as the rig's table form
     overrides.push_back("muscles.pam.plant={ file = " + plant + " }");
     for (const std::string& c : pam.plant_changes) overrides.push_back("muscles.pam.plant." + c);
   }
@@ -176,8 +175,7 @@ std::vector<Job> dynamic_jobs(const LengthValidationSpec& spec, const Validation
     for (SpringLaw law : spec.laws) {
       const FittedLaw& f = result->fits[fit_index++];
       for (double weight : spec.weights_kg) {
-        const std::vector<std::string> overrides =
-            trial_overrides(spec, options, pam, f, weight);
+        const std::vector<std::string> overrides = trial_overrides(spec, options, pam, f, weight);
         DynamicRow row;
         row.pam = pam.name;
         row.law = law;

@@ -63,9 +63,9 @@ struct LengthValidationSpec {
   StrainGaugeParams gauge;  // from tensile.sensors_from
   std::string gauge_file;
   std::vector<ValidationPam> pams;
-  std::vector<std::string> pam_names;   // every PAM of the file, asked for or not
-  std::vector<BudgetSource> budget;  // [[budget_source]]
-  std::vector<Bracket> brackets;     // [[bracket]]: the rig's unsized parts (bands.h)
+  std::vector<std::string> pam_names;  // every PAM of the file, asked for or not
+  std::vector<BudgetSource> budget;    // [[budget_source]]
+  std::vector<Bracket> brackets;       // [[bracket]]: the rig's unsized parts (bands.h)
   std::uint64_t bracket_seed = 1;
 };
 

@@ -184,7 +184,8 @@ LengthValidationSpec with_plant_changes(const LengthValidationSpec& spec,
     const std::string name = o.substr(5, dot == std::string::npos ? std::string::npos : dot - 5);
     const std::string plant = "pams." + name + ".plant.";
     if (o.rfind(plant, 0) != 0 || o.find('=') == std::string::npos) {
-      throw InputError("--set " + o + ": only a plant's field, pams.<NAME>.plant.<table>.<field>, "
+      throw InputError("--set " + o +
+                       ": only a plant's field, pams.<NAME>.plant.<table>.<field>, "
                        "may be changed");
     }
     if (std::find(spec.pam_names.begin(), spec.pam_names.end(), name) == spec.pam_names.end()) {
@@ -198,7 +199,8 @@ LengthValidationSpec with_plant_changes(const LengthValidationSpec& spec,
     if (pam.plant_changes.empty()) continue;
     ConfigReader changes("", "pams." + pam.name + ".plant");
     changes.apply_overrides(pam.plant_changes);
-    pam.plant = load_plant_params(pam.plant_file, changes.document(), "pams." + pam.name + ".plant.");
+    pam.plant =
+        load_plant_params(pam.plant_file, changes.document(), "pams." + pam.name + ".plant.");
   }
   *overrides = rest;
   return drawn;

@@ -44,12 +44,10 @@ std::string table3_csv(const LengthValidationResult& result) {
       return f.pam == row.pam && f.law == row.law;
     });
     out << row.pam << ',' << to_string(row.law) << ',' << csv_number(row.weight_kg) << ','
-        << row.status << ',' << csv_number(row.sim.max_pct) << ','
-        << csv_number(row.sim.rmse_pct) << ','
-        << (row.paper ? csv_number(row.paper->max_pct) : "") << ','
-        << (row.paper ? csv_number(row.paper->rmse_pct) : "") << ','
-        << csv_number(fit->fit.rmse_n) << ',' << csv_number(fit->max_residual_n) << ','
-        << csv_number(fit->fit.r2) << '\n';
+        << row.status << ',' << csv_number(row.sim.max_pct) << ',' << csv_number(row.sim.rmse_pct)
+        << ',' << (row.paper ? csv_number(row.paper->max_pct) : "") << ','
+        << (row.paper ? csv_number(row.paper->rmse_pct) : "") << ',' << csv_number(fit->fit.rmse_n)
+        << ',' << csv_number(fit->max_residual_n) << ',' << csv_number(fit->fit.r2) << '\n';
   }
   return out.str();
 }

@@ -9,7 +9,8 @@
 
 namespace pamsim {
 
-double logged_peak_tension(const MuscleSpec& m, const std::vector<const Trajectory*>& trajectories) {
+double logged_peak_tension(const MuscleSpec& m,
+                           const std::vector<const Trajectory*>& trajectories) {
   double peak = 0.0;
   for (const Trajectory* tr : trajectories) {
     const std::size_t force = tr->column("force_" + m.label + "_N");

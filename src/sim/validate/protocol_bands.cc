@@ -40,12 +40,12 @@ std::vector<BandCell> run_one(
 std::vector<BandCell> length_cells(const LengthValidationSpec& spec, const ValidationOptions& v) {
   const LengthValidationResult result = run_length_validation(spec, v);
   std::error_code ec;
-  std::filesystem::remove_all(result.fits_dir, ec);   // a band keeps no fitted files
+  std::filesystem::remove_all(result.fits_dir, ec);  // a band keeps no fitted files
   std::vector<BandCell> cells;
   for (const DynamicRow& row : result.rows) {
-    cells.push_back({"PAM-" + row.pam + " " + to_string(row.law) + " " +
-                         format_value(row.weight_kg) + " kg",
-                     row.sim, row.paper});
+    cells.push_back(
+        {"PAM-" + row.pam + " " + to_string(row.law) + " " + format_value(row.weight_kg) + " kg",
+         row.sim, row.paper});
   }
   return cells;
 }
@@ -68,7 +68,7 @@ void check_length_brackets(const LengthValidationSpec& spec, const ValidationOpt
                    all.insert(all.end(), on.begin(), on.end());
                    all.insert(all.end(), options.overrides.begin(), options.overrides.end());
                    all.insert(all.end(), end.begin(), end.end());
-                   with_plant_changes(spec, &all);   // a PAM's plant: checked by its file
+                   with_plant_changes(spec, &all);  // a PAM's plant: checked by its file
                    load_scenario(spec.rig_file, all);
                  });
 }
@@ -109,14 +109,21 @@ struct Protocol {
 };
 
 Protocol length_protocol(const LengthValidationSpec& spec) {
-  return {spec.brackets, spec.bracket_seed, spec.budget,
+  return {spec.brackets,
+          spec.bracket_seed,
+          spec.budget,
           static_cast<int>(spec.pams.size() * spec.laws.size() * spec.weights_kg.size()),
-          "length-estimation", length_cases(spec),
+          "length-estimation",
+          length_cases(spec),
           [&spec](const ValidationOptions& v) { return length_cells(spec, v); }};
 }
 
 Protocol reaching_protocol(const ReachingValidationSpec& spec) {
-  return {spec.brackets, spec.bracket_seed, spec.budget, spec.trials, "reaching",
+  return {spec.brackets,
+          spec.bracket_seed,
+          spec.budget,
+          spec.trials,
+          "reaching",
           reaching_cases(spec),
           [&spec](const ValidationOptions& v) { return reaching_cells(spec, v); }};
 }
@@ -126,10 +133,10 @@ Bands bands_of(const Protocol& p, const ValidationOptions& options, int rigs) {
   const int total = p.per_run * rigs;
   if (options.started) options.started(total);
   const std::vector<std::string> on = all_sources_on(p.budget);
-  Bands bands = run_bands(p.brackets, p.seed, rigs,
-                          [&](int rig, const std::vector<std::string>& draws) {
-    return run_one(options, on, draws, rig, p.per_run, total, p.cells);
-  });
+  Bands bands =
+      run_bands(p.brackets, p.seed, rigs, [&](int rig, const std::vector<std::string>& draws) {
+        return run_one(options, on, draws, rig, p.per_run, total, p.cells);
+      });
   bands.protocol = p.name;
   bands.cases_are = p.cases_are;
   return bands;

@@ -62,8 +62,9 @@ ErrorBudget run_length_budget(const LengthValidationSpec& spec, const Validation
     return cells;
   });
   budget.protocol = "length-estimation";
-  budget.cases_are = std::string("each PAM's ") + to_string(headline.laws.front()) + " estimate at " +
-                     format_value(headline.weights_kg.front()) + " kg on the pulley rig";
+  budget.cases_are = std::string("each PAM's ") + to_string(headline.laws.front()) +
+                     " estimate at " + format_value(headline.weights_kg.front()) +
+                     " kg on the pulley rig";
   return budget;
 }
 
@@ -74,14 +75,15 @@ ErrorBudget run_reaching_budget(const ReachingValidationSpec& spec,
                        [&](const std::vector<std::string>& overrides) {
                          load_scenario(spec.scenario_file, overrides);
                        });
-  ErrorBudget budget = run_budget(spec.budget, options, spec.trials, [&](const ValidationOptions& v) {
-    const ReachingValidationResult result = run_reaching_validation(spec, v);
-    std::vector<BudgetCell> cells;
-    for (const ReachingRow& row : result.rows) {
-      if (row.part == "all") cells.push_back({row.muscle + " " + row.method, row.sim});
-    }
-    return cells;
-  });
+  ErrorBudget budget =
+      run_budget(spec.budget, options, spec.trials, [&](const ValidationOptions& v) {
+        const ReachingValidationResult result = run_reaching_validation(spec, v);
+        std::vector<BudgetCell> cells;
+        for (const ReachingRow& row : result.rows) {
+          if (row.part == "all") cells.push_back({row.muscle + " " + row.method, row.sim});
+        }
+        return cells;
+      });
   budget.protocol = "reaching";
   budget.cases_are = "each muscle's model estimate and fiber sensor over " +
                      format_value(spec.window_start_s) + "-" + format_value(spec.window_end_s) +

@@ -116,10 +116,9 @@ namespace {
 
 // One muscle's errors over every trial, pooled per method (model, fiber) and part (all,
 // before and after its slack episode); its slack episodes' starts, per trial, in *starts.
-void pool_muscle_errors(const ReachingValidationSpec& spec,
-                        const std::vector<TrialResult>& trials, const std::string& label,
-                        double dt, ErrorPool (&pools)[2][3], std::vector<double>* starts,
-                        std::vector<std::string>* causes) {
+void pool_muscle_errors(const ReachingValidationSpec& spec, const std::vector<TrialResult>& trials,
+                        const std::string& label, double dt, ErrorPool (&pools)[2][3],
+                        std::vector<double>* starts, std::vector<std::string>* causes) {
   for (const TrialResult& r : trials) {
     const SlackEpisode episode = first_slack_episode(r.trajectory, label, spec.window_start_s,
                                                      spec.window_end_s, spec.min_slack_s);
@@ -227,8 +226,8 @@ std::string table5_csv(const ReachingValidationResult& result) {
         << csv_number(row.sim.max_pct) << ',' << csv_number(row.sim.rmse_pct) << ','
         << (row.paper ? csv_number(row.paper->max_pct) : "") << ','
         << (row.paper ? csv_number(row.paper->rmse_pct) : "") << ','
-        << csv_number(result.slack_start_s[m].front()) << ','
-        << result.episode_cause[m].front() << '\n';
+        << csv_number(result.slack_start_s[m].front()) << ',' << result.episode_cause[m].front()
+        << '\n';
   }
   return out.str();
 }
@@ -277,8 +276,8 @@ std::string table5_markdown(const ReachingValidationResult& result,
     out << "- " << result.scenario.muscles[m].actuator << ":";
     for (std::size_t k = 0; k < result.slack_start_s[m].size(); ++k) {
       const double s = result.slack_start_s[m][k];
-      out << ' ' << (std::isnan(s) ? "none" : format_value(s) + " (" +
-                                                  result.episode_cause[m][k] + ")");
+      out << ' '
+          << (std::isnan(s) ? "none" : format_value(s) + " (" + result.episode_cause[m][k] + ")");
     }
     out << '\n';
   }

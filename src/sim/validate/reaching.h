@@ -45,7 +45,7 @@ struct ReachingValidationSpec {
   double min_slack_s = 0.1;
   std::map<std::string, ErrorPct> paper;  // "model_agonist", "fiber_antagonist_after_slack"
   std::vector<BudgetSource> budget;       // [[budget_source]]
-  std::vector<Bracket> brackets;     // [[bracket]]: the rig's unsized parts (bands.h)
+  std::vector<Bracket> brackets;          // [[bracket]]: the rig's unsized parts (bands.h)
   std::uint64_t bracket_seed = 1;
 };
 
@@ -90,9 +90,9 @@ ReachingValidationResult run_reaching_validation(const ReachingValidationSpec& s
 // the board, gauge_contact.h).
 struct SlackEpisode {
   double start_s;
-  std::string cause;   // "slack" | "gauge" | "" (none)
+  std::string cause;  // "slack" | "gauge" | "" (none)
 };
-inline constexpr double kPulledN = 5.0;   // 20 sigma of the gauge's noise on the agonist
+inline constexpr double kPulledN = 5.0;  // 20 sigma of the gauge's noise on the agonist
 inline constexpr double kReadN = 1.0;
 SlackEpisode first_slack_episode(const Trajectory& trajectory, const std::string& label,
                                  double start_s, double end_s, double min_slack_s);

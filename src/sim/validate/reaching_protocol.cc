@@ -18,8 +18,8 @@ namespace {
 template <typename Entry>
 std::vector<Entry> layered_by_name(std::vector<Entry> base, const std::vector<Entry>& layer) {
   for (const Entry& e : layer) {
-    const auto same = std::find_if(base.begin(), base.end(),
-                                   [&](const Entry& b) { return b.name == e.name; });
+    const auto same =
+        std::find_if(base.begin(), base.end(), [&](const Entry& b) { return b.name == e.name; });
     if (same != base.end()) {
       *same = e;
     } else {
@@ -30,7 +30,7 @@ std::vector<Entry> layered_by_name(std::vector<Entry> base, const std::vector<En
 }
 
 void read_window(ConfigReader& in, bool layered, ReachingValidationSpec* spec) {
-  std::vector<double> fallback;   // a base's window, or none: the key is required
+  std::vector<double> fallback;  // a base's window, or none: the key is required
   if (layered) fallback = {spec->window_start_s, spec->window_end_s};
   const std::vector<double> window = in.get_double_list("window_s", fallback);
   std::string got;
@@ -82,7 +82,7 @@ ReachingValidationSpec read_protocol(const std::string& path,
   const bool layered = !base.empty();
   ReachingValidationSpec spec = layered ? read_protocol(base, {}, true) : ReachingValidationSpec{};
   spec.file = path;
-  if (!layered || in.has("scenario")) {   // (a base's path is already resolved)
+  if (!layered || in.has("scenario")) {  // (a base's path is already resolved)
     spec.scenario_file = in.require_path("scenario", "the reaching scenario");
   }
   const std::int64_t trials = in.get_int("trials", spec.trials);

@@ -9,7 +9,7 @@
 
 namespace pamsim {
 
-struct TableEntry;   // base/config_reader.h
+struct TableEntry;  // base/config_reader.h
 
 // Refuses (through the entry's reader, "<where>name ...") an empty name, or one holding a
 // comma, quote, bar, tab or line break: a name that becomes a cell of the CSV, the Markdown
