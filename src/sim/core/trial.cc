@@ -187,7 +187,7 @@ void TrialRun::start_state() {
   // pneumatics start at the scheduled pressures, in equilibrium
   for (std::size_t i = 0; i < n_; ++i) {
     pneumatics_.set_command(static_cast<int>(i), start_p_pa_[i]);
-    d_->userdata[i] = pneumatics_.pressure_pa(static_cast<int>(i));
+    d_->userdata[tm_.muscles[i].pressure_slot] = pneumatics_.pressure_pa(static_cast<int>(i));
     pam_start_line_creep(m_, d_, tm_.muscles[i].actuator);
     muscle_length_m_[i] = pam_muscle_length(m_, d_, tm_.muscles[i].actuator, &free_length_[i]);
   }

@@ -107,7 +107,8 @@ MjDataPtr start_state(const Scenario& sc, const TrialModel& tm) {
   MjDataPtr data = make_data(m);
   tm.place_at_start(sc, data.get());
   for (std::size_t k = 0; k < tm.muscles.size(); ++k) {
-    data->userdata[k] = sc.muscles[tm.muscles[k].spec].command.at(0.0);
+    const int slot = pam_userdata_index(m, tm.muscles[k].actuator);  // the binding's
+    data->userdata[slot] = sc.muscles[tm.muscles[k].spec].command.at(0.0);
   }
   mj_forward(m, data.get());
   return data;

@@ -310,6 +310,9 @@ TrialModel load_trial_model(const Scenario& sc) {
   bind_events(sc, &tm);
   bind_pairs(sc, &tm);
   detail::set_lines(sc, &tm);
+  // where the force callback reads each muscle's pressure: the trial writes it there
+  for (BoundMuscle& b : tm.muscles)
+    b.pressure_slot = pam_userdata_index(tm.model.get(), b.actuator);
   check_spans(sc, tm);
   std::vector<std::string> labels;
   for (const BoundMuscle& b : tm.muscles) labels.push_back(b.label);

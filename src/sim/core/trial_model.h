@@ -29,6 +29,7 @@ struct BoundMuscle {
   std::string label;
   BraidGeometry braid;         // the chamber volume law, from the params' [geometry]
   double line_length_m = 0.0;  // as bound to the actuator
+  int pressure_slot = -1;      // d->userdata index of its chamber pressure [Pa], the binding's
 };
 
 struct BoundJoint {

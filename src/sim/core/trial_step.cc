@@ -249,8 +249,9 @@ bool TrialRun::physics_step(double t) {
     set_status("diverged", std::string("pneumatics: ") + e.what(), t);
     return false;
   }
-  for (std::size_t i = 0; i < n_; ++i)
-    d_->userdata[i] = pneumatics_.pressure_pa(static_cast<int>(i));
+  for (std::size_t i = 0; i < n_; ++i) {
+    d_->userdata[tm_.muscles[i].pressure_slot] = pneumatics_.pressure_pa(static_cast<int>(i));
+  }
   return true;
 }
 
