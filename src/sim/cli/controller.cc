@@ -97,15 +97,15 @@ void run_export(const ControllerExportOptions& opt) {
 }
 
 // the scheduled commands where the log has none: the scenario's schedules at each tick
-void fill_goal_pressures(const EmbeddedScenario* e, const std::string& log, ControlStream* s) {
+void fill_goal_pressures(const EmbeddedScenario* e, const std::vector<std::string>& muscles,
+                         const std::string& log, ControlStream* s) {
   for (std::size_t j = 0; j < s->muscles.size(); ++j) {
     MuscleStream& m = s->muscles[j];
     if (!m.p_tp_pa.empty()) continue;
     if (!e) {
-      throw InputError(log + ": no column p_tp_" + std::string("<muscle>") +
-                       "_Pa or _MPa (the "
-                       "scheduled commands): give them, or replay with --scenario, whose "
-                       "schedules give them");
+      throw InputError(log + ": no column p_tp_" + muscles[j] + "_Pa or p_tp_" + muscles[j] +
+                       "_MPa (the scheduled commands): give them, or replay with --scenario, "
+                       "whose schedules give them");
     }
     const PressureSchedule& schedule = e->scenario.muscles[e->model.muscles[j].spec].command;
     for (double t : s->time_s) m.p_tp_pa.push_back(schedule.at(t));
@@ -158,7 +158,7 @@ void run_replay(const ControllerReplayOptions& opt) {
   // the log, at the controller's rate, with its goal pressures
   ControlStream stream = read_control_stream(read_text_file(opt.log), opt.log, muscles);
   check_control_rate(stream, config.control_period_s, opt.log);
-  fill_goal_pressures(e.get(), opt.log, &stream);
+  fill_goal_pressures(e.get(), muscles, opt.log, &stream);
   if (!stream.has_enabled) {
     std::cerr << "pamsim: " << opt.log
               << " has no enabled column: the reflexes are on "

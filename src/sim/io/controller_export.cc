@@ -11,10 +11,20 @@
 namespace pamsim {
 namespace {
 
+// `text` as a C string literal: quotes and backslashes escaped
+std::string c_string(const std::string& text) {
+  std::string out = "\"";
+  for (char ch : text) {
+    if (ch == '"' || ch == '\\') out += '\\';
+    out += ch;
+  }
+  return out + "\"";
+}
+
 // the generated header: the muscles' count and names into the template
 std::string export_header(const std::string& templ, const std::vector<std::string>& muscles) {
   std::string names;
-  for (const std::string& m : muscles) names += (names.empty() ? "\"" : ", \"") + m + "\"";
+  for (const std::string& m : muscles) names += (names.empty() ? "" : ", ") + c_string(m);
   std::string text = templ;
   const auto put = [&text](const std::string& key, const std::string& value) {
     text.replace(text.find(key), key.size(), value);
