@@ -48,6 +48,13 @@ void export_trial(const fs::path& dir, const std::string& scenario, const std::s
   ASSERT_EQ(exported.exit_code, 0) << exported.err;
 }
 
+// where line `n` (0: the header) of `text` starts
+std::size_t line_start(const std::string& text, int n) {
+  std::size_t at = 0;
+  for (int k = 0; k < n; ++k) at = text.find('\n', at) + 1;
+  return at;
+}
+
 void expect_bit_for_bit(const fs::path& dir) {
   for (const std::string cc : {"gcc", "clang"}) {
     const CliResult r = build_and_replay(dir / "export", "CC=" + cc, dir / "run/readings.csv");
@@ -125,9 +132,7 @@ TEST(ControllerExportTest, BadExportsAndBadLogsAreRefusedInOneLineWithNothingWri
   export_trial(dir, "scenarios/drop_mass.toml", kShortDrop);
   const std::string readings = read_file(dir / "run/readings.csv");
   std::string gap = readings, text = readings, no_column = readings;
-  gap.erase(gap.find('\n', gap.find('\n', gap.find('\n') + 1) + 1) + 1,
-            gap.find('\n', gap.find('\n', gap.find('\n', gap.find('\n') + 1) + 1) + 1) -
-                gap.find('\n', gap.find('\n', gap.find('\n') + 1) + 1));  // drop row 3
+  gap.erase(line_start(gap, 3), line_start(gap, 4) - line_start(gap, 3));  // drop row 3
   text.replace(text.find('\n') + 1, 1, "x");
   no_column.replace(0, no_column.find(','), "t");
   const std::vector<std::pair<std::string, std::string>> logs = {
