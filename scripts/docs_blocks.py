@@ -242,7 +242,7 @@ def version():
 # the physics digest's record: the reference numbers and the id the slow blocks carry
 DIGEST_FILE = os.path.join(ROOT, "docs", "generated", "physics_digest.json")
 # how far a machine's last bits may move a reference number (relative, as
-# tests/sim/reference_trajectory_test.cc holds trajectories)
+# tests/sim/core/reference_trajectory_test.cc holds trajectories)
 DIGEST_TOLERANCE = 1e-6
 
 

@@ -9,7 +9,7 @@
 # plant's own geometry; the arm's muscles as Table I builds them
 # (models/pams/table1/plant_<m>.toml -> models/pams/table1/fitted_<m>.toml) Table IV's gauge
 # and their plant's identified braid angle. Rerun after changing a plant file;
-# tests/sim/cli_plant_test.cc checks that the committed files are what this script writes.
+# tests/sim/cli/cli_plant_test.cc checks that the committed files are what this script writes.
 #
 # Protocol: the arm's pressure range, 0.2-0.7 MPa in 0.1 MPa steps (the reaching task's
 # 0.2-0.6 MPa and the valve's 0.7 MPa top); 2.5 mm steps from the free length to 15 mm

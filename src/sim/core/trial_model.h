@@ -91,7 +91,7 @@ TrialModel load_trial_model(const Scenario& scenario);
 // True if two scenarios build the same TrialModel, so a sweep worker can keep its model
 // when a point changes only trial-only keys (gains, noise, the valve, the run's length...):
 // their model_keys are equal, and not empty. A test holds this to the built models, key by
-// key (tests/sim/trial_model_identity_test.cc).
+// key (tests/sim/core/trial_model_identity_test.cc).
 bool same_trial_model(const Scenario& a, const Scenario& b);
 
 // One bound model per distinct model among `scenarios` (same_trial_model), in order of first

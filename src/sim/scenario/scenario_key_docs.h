@@ -1,7 +1,7 @@
 // scenario_key_docs.h: the documentation of every scenario key, one entry each, for `pamsim keys`:
 // its unit, default, allowed values and one-line meaning. Keys under a name the scenario
 // chooses are written with a placeholder: muscles.<actuator>.params, bodies.<body>.mass_kg,
-// holds.<body>.*, events.<event>.*. tests/sim/cli_keys_test.cc holds this list to the keys
+// holds.<body>.*, events.<event>.*. tests/sim/cli/cli_keys_test.cc holds this list to the keys
 // the reader (scenario_file.h) asks for, both ways, and the literal defaults to the reader's.
 #pragma once
 
