@@ -3,36 +3,9 @@
  * volts, the fiber sensor's rate) and the scheduled goal pressures in; the valve commands
  * out, with each muscle's estimates and the reflexes' windows and triggers. pamsim's own
  * estimator and reflex controllers call this code, so what a lab tunes in pamsim is what its
- * board runs (docs/embedded.md).
- *
- * Per tick, for each muscle j (Yoshida and Hosoda's pipeline, Sec. III-C/D):
- *   p   = lowpass((V_p - V_0) / s_p)         the pressure sensor's line, [MPa] to [Pa]
- *   f   = (V_g - V_base) / q                 Eq. (9), the strain gauge's Eq. (8) inverted
- *   d   = smallest d >= 0 with f(p, d) = f   Eq. (3)-(5) inverted, Eq. (10)
- *   l   = m p + h + d                        Eq. (1)-(2)
- *   v   = lowpass((l_j - l_{j-1}) / dt)      Eq. (11)
- * then the reflexes of each antagonistic pair (Ia: Eq. (14) on v; Ib: on f) and the commands
- * of Eq. (12)-(13), clamped to the valve's range [0, p_max].
- *
- * Rules of the code: no heap, no I/O, no mutable globals, no recursion, every loop bounded;
- * re-entrant (all state in the caller's pamctl_state); only <math.h>, <stdint.h> and
- * <stdbool.h>. SI units throughout. `double` by default; define PAMCTL_FLOAT for `float`.
- * Build with -ffp-contract=off and without -ffast-math, as pamsim does: the equality of the
- * board's commands with the simulator's rests on it.
- *
- * Safe behaviour on bad input (each sets a flag in pamctl_output, never undefined behaviour):
- *  - a configuration that pamctl_check_config refuses: pamctl_init returns its code and the
- *    state stays unconfigured; pamctl_tick on an unconfigured state vents every valve (0 Pa)
- *    and reports PAMCTL_STATUS_UNCONFIGURED;
- *  - a non-finite pressure or gauge reading: that muscle's estimate holds its last length
- *    (velocity 0, so no stretch reflex triggers on it), its tension is NaN (no tension
- *    reflex triggers on it) and PAMCTL_FLAG_NONFINITE_READING is set; the next valid tick's
- *    Eq. (11) spans the whole gap (its length change over the ticks since the last valid one);
- *  - a non-finite fiber rate: the filter keeps its state, the rate reads 0, the same flag;
- *  - a reading outside its sensor's configured output range: used as read, with
- *    PAMCTL_FLAG_READING_OUT_OF_RANGE;
- *  - a non-finite command (a NaN goal pressure): the valve vents (0 Pa),
- *    PAMCTL_FLAG_COMMAND_VENTED. (pamsim's C++ clamp passed a NaN through; the library vents.)
+ * board runs (docs/embedded.md). Its rules of the code, its per-tick pipeline (Yoshida and
+ * Hosoda, Sec. III-C/D; Eq. (1)-(14)) and its safe behaviour on bad input are told beside
+ * the code: above PAMCTL_MAX_MUSCLES, pamctl_tick and the PAMCTL_FLAG_* flags.
  */
 #ifndef PAMCTL_H
 #define PAMCTL_H
@@ -44,6 +17,11 @@
 extern "C" {
 #endif
 
+/* Rules of the code: no heap, no I/O, no mutable globals, no recursion, every loop bounded;
+ * re-entrant (all state in the caller's pamctl_state); only <math.h>, <stdint.h> and
+ * <stdbool.h>. SI units throughout. `double` by default; define PAMCTL_FLOAT for `float`.
+ * Build with -ffp-contract=off and without -ffast-math, as pamsim does: the equality of the
+ * board's commands with the simulator's rests on it. */
 #ifndef PAMCTL_MAX_MUSCLES
 #define PAMCTL_MAX_MUSCLES 16
 #endif
@@ -272,6 +250,19 @@ typedef struct {
 } pamctl_input;
 
 /* flags per muscle (pamctl_estimate.flags) and their union (pamctl_output.status) */
+/* Safe behaviour on bad input (each sets a flag in pamctl_output, never undefined behaviour):
+ *  - a configuration that pamctl_check_config refuses: pamctl_init returns its code and the
+ *    state stays unconfigured; pamctl_tick on an unconfigured state vents every valve (0 Pa)
+ *    and reports PAMCTL_STATUS_UNCONFIGURED;
+ *  - a non-finite pressure or gauge reading: that muscle's estimate holds its last length
+ *    (velocity 0, so no stretch reflex triggers on it), its tension is NaN (no tension
+ *    reflex triggers on it) and PAMCTL_FLAG_NONFINITE_READING is set; the next valid tick's
+ *    Eq. (11) spans the whole gap (its length change over the ticks since the last valid one);
+ *  - a non-finite fiber rate: the filter keeps its state, the rate reads 0, the same flag;
+ *  - a reading outside its sensor's configured output range: used as read, with
+ *    PAMCTL_FLAG_READING_OUT_OF_RANGE;
+ *  - a non-finite command (a NaN goal pressure): the valve vents (0 Pa),
+ *    PAMCTL_FLAG_COMMAND_VENTED. */
 #define PAMCTL_FLAG_NONFINITE_READING 0x1u
 #define PAMCTL_FLAG_READING_OUT_OF_RANGE 0x2u
 #define PAMCTL_FLAG_COMMAND_VENTED 0x4u
@@ -297,7 +288,15 @@ int32_t pamctl_init(const pamctl_config* config, pamctl_state* state);
 /* Resets the state for a configuration its caller has checked (pamsim, whose own checks
  * name the scenario's keys). */
 void pamctl_reset(const pamctl_config* config, pamctl_state* state);
-/* One control tick: estimates, reflexes, commands. */
+/* One control tick: estimates, reflexes, commands. For each muscle j (Yoshida and Hosoda's
+ * pipeline, Sec. III-C/D):
+ *   p   = lowpass((V_p - V_0) / s_p)         the pressure sensor's line, [MPa] to [Pa]
+ *   f   = (V_g - V_base) / q                 Eq. (9), the strain gauge's Eq. (8) inverted
+ *   d   = smallest d >= 0 with f(p, d) = f   Eq. (3)-(5) inverted, Eq. (10)
+ *   l   = m p + h + d                        Eq. (1)-(2)
+ *   v   = lowpass((l_j - l_{j-1}) / dt)      Eq. (11)
+ * then the reflexes of each antagonistic pair (Ia: Eq. (14) on v; Ib: on f) and the commands
+ * of Eq. (12)-(13), clamped to the valve's range [0, p_max]. */
 void pamctl_tick(const pamctl_config* config, pamctl_state* state, const pamctl_input* in,
                  pamctl_output* out);
 /* The controller alone, on estimates already in out->estimates (how pamsim runs its sensing

@@ -2,73 +2,9 @@
 // "Accurate Volume and Bladder Deformation Loss", as a plant force law, plus the fibre
 // friction that the paper names as what it leaves out. Pure functions, SI
 // (Pa, m, N, J); p is gauge pressure, L the muscle length between the end fittings, and
-// tension (pull) is positive. Equation numbers are Pipan et al.'s.
-//
-// Map from the paper to this file:
-//   Eq. (3), (18)  F = P dV/dDL = -p dV/dL            avbdl_dvolume_dlength (dDL = -dL)
-//   Eq. (6)        end-region profile y(x)             avbdl_end_radius
-//   Eq. (8)        p_n(P, DL), the DMSP-20 data matrix (not printed; see below)
-//   Eq. (9)-(17)   volume by Guldin's rule: deformed end regions AR1 (length Ld each)
-//                  + straight middle AR2               avbdl_volume
-//   Eq. (19)       W_out = W_in - W_ob                 avbdl_static_force
-//   Eq. (20)       Mooney-Rivlin uniaxial stress       mooney_rivlin_stress
-//   Eq. (21)-(22)  its work per reference volume       mooney_rivlin_energy_density
-//   Eq. (23)-(24)  bladder work, lambda = R/R0, summed over the end slices and the middle
-//                                                      avbdl_bladder_energy (+ its slope)
-//   Eq. (25)       F = -p dV/dL + dW_def/dL            avbdl_static_force
-//   Eq. (26)       D_max = D0 L0 / L_min (as read)     replaced by the braid (avbdl_middle_radius)
-//   Eq. (27)-(29)  profile scaled to any D, L          avbdl_end_radius, avbdl_params_from_geometry
-//
-// The bladder's reference. Pipan et al.'s DMSP-20 has a bladder as wide as its braid, and by
-// default so does this file's: the wall spans R0 to R0 + t and its hoop stretch is R / R0.
-// The papers' own muscles (Yoshida and Hosoda, Table I) are a rubber tube a third to a
-// quarter of the sleeve's diameter (the arm's: 4 mm inside 16 mm): with
-// bladder_diameter_m > 0 the wall is that tube, Db / 2 - t to Db / 2, its stretch is
-// R / rb with rb = Db / 2 - t / 2 (the wall's mid-surface; thin once inflated), so at L0 it
-// is already stretched R0 / rb (about 5): the tube inflates freely until it meets the braid,
-// and the braid pulls only at pressures above that (avbdl_bladder_free_pressure). Eq. (20)'s
-// Mooney-Rivlin fit holds to a stretch of 2.4; for the tube, BladderLaw::kGentGent, the
-// Gent-Gent law (Pucci & Saccomandi 2002), fitted here to Treloar's whole uniaxial curve
-// (to a stretch of 7.6) within 4 %. Both are used as the paper uses Eq. (20): the hoop's
-// nominal uniaxial stress and its work per reference volume.
-//
-// What pamsim builds where the paper gives data instead of formulas:
-// - The middle radius follows the inextensible braid (Chou & Hannaford, chou_hannaford.h):
-//   R(L) = sqrt(b^2 - L^2) / (2 pi n). For the DMSP-20 the braid reaches D = 38.6 mm at its
-//   free-contraction length b/sqrt(3) = 127 mm, where Eq. (26) as read gives 31 mm; the
-//   paper measured D_F20_max = 36 mm.
-// - The DMSP-20 coefficients of Eq. (6)/(8) are not printed. The end profile keeps Eq. (6)'s
-//   four terms (p4 + p3 x + p2 x^2 + p1 x^3) and, as Eq. (27)-(29) do, scales one normalised
-//   shape affinely onto the muscle: y(x) = R0 + (R(L) - R0) eta(x / Ld) with
-//   eta(s) = a s + (3 - 2a) s^2 + (a - 2) s^3: y(0) = R0 (p4 is the initial radius, Sec.
-//   2.2), y(Ld) = R(L) and y'(Ld) = 0 (it meets the straight part without a kink),
-//   y'(0) = a (R(L) - R0) / Ld. eta is monotone exactly for a in [0, 3]. The profile does not
-//   depend on p (the paper's p-dependence comes from fibre stretch, absent here).
-//   Eq. (28)-(29) (K1, K2) lost their fraction bars; they are read as the affine map that
-//   sends the DMSP-20's radii [D_F20, D_F20_max] / 2 onto [D, D_max] / 2; here that map is
-//   applied directly with the muscle's own R0 and R(L).
-// - With Ld = 0 (no end regions) and t = 0 (no bladder) the model is Chou-Hannaford exactly.
-//
-// Friction (pamsim's addition; Pipan et al. Sec. 3 ask for "a pressure- and strain-dependent
-// friction term"): dry friction between braid and bladder, proportional to the normal load,
-// i.e. to p times a contact area that changes with contraction strain eps = (L0 - L) / L0,
-// in the spirit of Tondu & Lopez (2000, ref. [4] of Pipan et al.):
-//   F_f = F0 + max(p, 0) max(A0 + A1 eps, 0) >= 0,
-// with its own (F0, A0, A1) for lengthening (StretchDirection::kExtension) and shortening
-// (kContraction). It opposes motion: +F_f while lengthening, -F_f while shortening, so the
-// muscle pulls harder while being stretched than while shortening at the same (p, L).
-// Two forms: avbdl_friction_force takes the direction as a state (rate-independent, for
-// quasi-static tensile tests); avbdl_smooth_friction_force, used by avbdl_force, is
-// tanh(v / v_s) F_f(direction of v): continuous in v (zero at rest, no jump at reversal) for
-// ODE solvers and MuJoCo steps; v_s sets how fast it saturates. Its price: no stiction, a
-// muscle at rest carries no friction, so it creeps to the friction-free equilibrium. The
-// Maxwell-slip form (FrictionModel::kMaxwellSlip, maxwell_slip.h) sticks
-// instead: its elements hold their shares of F_f,ext (stretched side) and F_f,con
-// (shortened side) as the braid's contacts deflect, slip beyond their breakaway travel,
-// and keep what they hold when the muscle stops; their state is the trial's. Friction
-// defaults to zero (no published values): fit it from a measured loop, whose width at
-// (p, eps) is F_f,ext + F_f,con in both forms.
-//
+// tension (pull) is positive. Equation numbers are Pipan et al.'s, each beside the function
+// that implements it: Eq. (3), (18), (19), (25) the force, Eq. (6), (8), (26)-(29) the
+// muscle's shape, Eq. (9)-(17) its volume, Eq. (20)-(24) the bladder's work.
 // Domain: 2 Ld <= L < b (validate_avbdl_params makes the whole contraction range
 // [b/sqrt(3), L0] lie inside it). Outside, results are not physical.
 #pragma once
@@ -120,8 +56,33 @@ struct GentGentConstants {
 // Table I tube reaches (4-6) the Mooney-Rivlin fit above is 25-50 % too stiff.
 inline constexpr GentGentConstants kNaturalRubberTreloarGentGent{0.23732e6, 0.29918e6, 77.94};
 
+// The bladder's law. Eq. (20)'s Mooney-Rivlin fit holds to a stretch of 2.4; for a tube
+// bladder (avbdl_bladder_reference_radius), kGentGent, the Gent-Gent law (Pucci & Saccomandi
+// 2002), fitted here to Treloar's whole uniaxial curve (to a stretch of 7.6) within 4 %. Both
+// are used as the paper uses Eq. (20): the hoop's nominal uniaxial stress and its work per
+// reference volume.
 enum class BladderLaw { kMooneyRivlin, kGentGent };
 
+// Friction (pamsim's addition; Pipan et al. Sec. 3 ask for "a pressure- and strain-dependent
+// friction term"): dry friction between braid and bladder, proportional to the normal load,
+// i.e. to p times a contact area that changes with contraction strain eps = (L0 - L) / L0,
+// in the spirit of Tondu & Lopez (2000, ref. [4] of Pipan et al.):
+//   F_f = F0 + max(p, 0) max(A0 + A1 eps, 0) >= 0,
+// with its own (F0, A0, A1) for lengthening (StretchDirection::kExtension) and shortening
+// (kContraction). It opposes motion: +F_f while lengthening, -F_f while shortening, so the
+// muscle pulls harder while being stretched than while shortening at the same (p, L).
+// Two forms: avbdl_friction_force takes the direction as a state (rate-independent, for
+// quasi-static tensile tests); avbdl_smooth_friction_force, used by avbdl_force, is
+// tanh(v / v_s) F_f(direction of v): continuous in v (zero at rest, no jump at reversal) for
+// ODE solvers and MuJoCo steps; v_s sets how fast it saturates. Its price: no stiction, a
+// muscle at rest carries no friction, so it creeps to the friction-free equilibrium. The
+// Maxwell-slip form (FrictionModel::kMaxwellSlip, maxwell_slip.h) sticks
+// instead: its elements hold their shares of F_f,ext (stretched side) and F_f,con
+// (shortened side) as the braid's contacts deflect, slip beyond their breakaway travel,
+// and keep what they hold when the muscle stops; their state is the trial's. Friction
+// defaults to zero (no published values): fit it from a measured loop, whose width at
+// (p, eps) is F_f,ext + F_f,con in both forms.
+//
 // One stroke direction's friction coefficients, all >= 0.
 struct AvbdlFrictionCoefficients {
   double force_n = 0.0;           // F0: friction at p = 0 [N]
@@ -145,7 +106,8 @@ struct AvbdlFriction {
 // 221 mm, n 1.5, braid 25 deg; b and n follow from L0, D0, alpha0: 220.7 mm, 1.49) and its
 // 32 mm end regions (Sec. 2.2). Its wall thickness and fitted Mooney-Rivlin constants are not
 // in the text (Table 3 and Fig. 7 are lost): 2 mm is pamsim's assumption and the bladder
-// stands in with natural rubber.
+// stands in with natural rubber. With Ld = 0 (no end regions) and t = 0 (no bladder) the
+// model is Chou-Hannaford exactly.
 struct AvbdlParams {
   double length_m = 0.200;                           // L0 at p = 0, > 0
   double diameter_m = 0.020;                         // D0 = 2 R0, > 0
@@ -228,16 +190,32 @@ inline constexpr double kAvbdlEndFraction = 0.032 / 0.200;
 // braid flares from the fitting's radius, so they scale with the radius, not the length.
 inline constexpr double kAvbdlEndPerRadius = 0.032 / 0.010;
 
-// Radius of the straight middle part [m]: the braid's sqrt(b^2 - L^2) / (2 pi n).
+// Radius of the straight middle part [m]: the braid's sqrt(b^2 - L^2) / (2 pi n). In place of
+// Eq. (26), D_max = D0 L0 / L_min as read, the middle radius follows the inextensible braid
+// (Chou & Hannaford, chou_hannaford.h). For the DMSP-20 the braid reaches D = 38.6 mm at its
+// free-contraction length b/sqrt(3) = 127 mm, where Eq. (26) as read gives 31 mm; the paper
+// measured D_F20_max = 36 mm.
 double avbdl_middle_radius(const AvbdlParams& params, double length_m);
 
 // Eq. (6), (27): radius [m] of the end region at x in [0, Ld] from the fitting.
+// The DMSP-20 coefficients of Eq. (6) and Eq. (8)'s data matrix p_n(P, DL) are not printed.
+// The end profile keeps Eq. (6)'s four terms (p4 + p3 x + p2 x^2 + p1 x^3) and, as
+// Eq. (27)-(29) do, scales one normalised shape affinely onto the muscle:
+// y(x) = R0 + (R(L) - R0) eta(x / Ld) with eta(s) = a s + (3 - 2a) s^2 + (a - 2) s^3:
+// y(0) = R0 (p4 is the initial radius, Sec. 2.2), y(Ld) = R(L) and y'(Ld) = 0 (it meets the
+// straight part without a kink), y'(0) = a (R(L) - R0) / Ld. eta is monotone exactly for a in
+// [0, 3]. The profile does not depend on p (the paper's p-dependence comes from fibre
+// stretch, absent here). Eq. (28)-(29) (K1, K2) lost their fraction bars; they are read as
+// the affine map that sends the DMSP-20's radii [D_F20, D_F20_max] / 2 onto [D, D_max] / 2;
+// here that map is applied directly with the muscle's own R0 and R(L).
 double avbdl_end_radius(const AvbdlParams& params, double x_m, double length_m);
 
-// Eq. (9)-(17): gas volume [m^3] of the muscle at length L.
+// Eq. (9)-(17): gas volume [m^3] of the muscle at length L, by Guldin's rule: the deformed
+// end regions AR1 (length Ld each) plus the straight middle AR2.
 double avbdl_volume(const AvbdlParams& params, double length_m);
 double avbdl_volume(const AvbdlParams& params, const AvbdlShape& shape, double length_m);
-// dV/dL [m^2], analytic.
+// dV/dL [m^2], analytic: Eq. (3), (18), the pressure's force F = P dV/dDL = -p dV/dL
+// (dDL = -dL).
 double avbdl_dvolume_dlength(const AvbdlParams& params, double length_m);
 double avbdl_dvolume_dlength(const AvbdlParams& params, const AvbdlShape& shape, double length_m);
 
@@ -253,8 +231,16 @@ double gent_gent_energy_density(const GentGentConstants& c, double stretch);
 double bladder_stress(const AvbdlParams& params, double stretch);
 double bladder_energy_density(const AvbdlParams& params, double stretch);
 
+// The bladder's reference. Pipan et al.'s DMSP-20 has a bladder as wide as its braid, and by
+// default so does this file's: the wall spans R0 to R0 + t and its hoop stretch is R / R0.
+// The papers' own muscles (Yoshida and Hosoda, Table I) are a rubber tube a third to a
+// quarter of the sleeve's diameter (the arm's: 4 mm inside 16 mm): with
+// bladder_diameter_m > 0 the wall is that tube, Db / 2 - t to Db / 2, its stretch is
+// R / rb with rb = Db / 2 - t / 2 (the wall's mid-surface; thin once inflated), so at L0 it
+// is already stretched R0 / rb (about 5): the tube inflates freely until it meets the braid,
+// and the braid pulls only at pressures above that (avbdl_bladder_free_pressure).
 // The bladder's reference radius [m], its stretch being R / that: R0 by default, the tube's
-// mid-surface Db / 2 - t / 2 with bladder_diameter_m > 0 (see the top of this file).
+// mid-surface Db / 2 - t / 2 with bladder_diameter_m > 0.
 double avbdl_bladder_reference_radius(const AvbdlParams& params);
 // The gauge pressure [Pa] that holds the bladder, unconfined, at outer radius r >= its
 // reference: the thin tube's p = sigma(lambda) t / (lambda rb) with lambda = r / rb.
@@ -263,13 +249,15 @@ double avbdl_bladder_free_pressure(const AvbdlParams& params, double radius_m);
 double avbdl_bladder_contact_pressure(const AvbdlParams& params);
 
 // Eq. (23)-(24): work [J] stored in the bladder's radial deformation at length L
-// (0 at L0); and its slope dW/dL [N].
+// (0 at L0), summed over the end slices and the middle, lambda = R / the reference radius;
+// and its slope dW/dL [N].
 double avbdl_bladder_energy(const AvbdlParams& params, double length_m);
 double avbdl_dbladder_energy_dlength(const AvbdlParams& params, double length_m);
 double avbdl_dbladder_energy_dlength(const AvbdlParams& params, const AvbdlShape& shape,
                                      double length_m);
 
-// Eq. (25): the paper's static force [N], -p dV/dL + dW/dL, without friction.
+// Eq. (25): the paper's static force [N], -p dV/dL + dW/dL, without friction; with
+// Eq. (19), W_out = W_in - W_ob.
 double avbdl_static_force(const AvbdlParams& params, double p_pa, double length_m);
 
 // The free length [m] at gauge pressure p: where avbdl_static_force is zero, in
@@ -283,7 +271,7 @@ double avbdl_free_length(const AvbdlParams& params, double p_pa);
 // its free length and avbdl_max_length; -1 if it cannot pull that much there.
 double avbdl_length_at_force(const AvbdlParams& params, double p_pa, double f_n);
 
-// Friction magnitude F_f >= 0 [N] for a stroke direction (see the top of this file).
+// Friction magnitude F_f >= 0 [N] for a stroke direction (AvbdlFrictionCoefficients).
 double avbdl_friction_magnitude(const AvbdlParams& params, double p_pa, double length_m,
                                 StretchDirection direction);
 // Signed friction [N] with the direction as a state: +F_f lengthening, -F_f shortening.

@@ -7,7 +7,15 @@
 // model sticks (a small reversal is elastic, no energy lost), slips beyond the band, and
 // remembers where in the loop it rests: what the smooth tanh(v / v_s) friction of
 // avbdl_friction.cc cannot do.
-//
+#pragma once
+
+#include <array>
+#include <string>
+
+namespace pamsim {
+
+inline constexpr int kMaxSlipElements = 4;
+
 // Element i is given by its share w_i of the total slip force (sum w_i = 1) and its
 // breakaway travel delta_i, the travel over which its spring takes up its share. Its state
 // is the normalised deflection s_i = z_i / delta_i in [-1, 1]. With a total slip force F_up
@@ -19,19 +27,6 @@
 // change, so the springs stiffen with the load as tangential contact stiffness does (Mindlin;
 // the LuGre model's bristles likewise deflect sigma_0^-1 F_c at sliding): a falling pressure
 // scales the held force down at once and a rising one up, with no jump in state.
-//
-// Closed forms (tested): on the virgin branch F(x) = F_up sum w_i min(x / delta_i, 1); a
-// loop of amplitude A >= max delta_i is F_up + F_down wide and encloses
-// 2 (F_up + F_down) sum w_i (A - delta_i).
-#pragma once
-
-#include <array>
-#include <string>
-
-namespace pamsim {
-
-inline constexpr int kMaxSlipElements = 4;
-
 struct MaxwellSlipParams {
   int count = 0;                                       // 1..kMaxSlipElements when used
   std::array<double, kMaxSlipElements> weight{};       // w_i > 0, summing to 1
@@ -50,7 +45,9 @@ void validate_maxwell_slip(const MaxwellSlipParams& params, const std::string& p
 void maxwell_slip_advance(const MaxwellSlipParams& params, double step_m, double* state);
 
 // The elements' total force [N] in `state` for slip forces up_n, down_n >= 0 (see above):
-// positive after the input has been pushed up (resisting the push).
+// positive after the input has been pushed up (resisting the push). Closed forms (tested):
+// on the virgin branch F(x) = F_up sum w_i min(x / delta_i, 1); a loop of amplitude
+// A >= max delta_i is F_up + F_down wide and encloses 2 (F_up + F_down) sum w_i (A - delta_i).
 double maxwell_slip_force(const MaxwellSlipParams& params, const double* state, double up_n,
                           double down_n);
 

@@ -1,19 +1,6 @@
 // pam_params.h: one PAM's parameter file (TOML, the paper's units named in the file),
-// read once, validated, converted to SI. Shipped files live in models/pams/.
-//
-//   name = "agonist"
-//   source = "Yoshida & Hosoda, Table IV"
-//   [spring]
-//   law = "eq3"                                   # eq3 | eq4 | eq5
-//   units = { pressure = "MPa", length = "mm", force = "N" }
-//   m = -60.1                                     # Eq. (2) slope [mm/MPa]
-//   h = 170.1                                     # Eq. (2) intercept [mm]
-//   a0 = 0.911  a1 = 0.256  a2 = 7.00  a3 = -0.201   (b0..b5 for eq4, c0..c4 for eq5)
-//   [strain_gauge]                                # optional, Eq. (8)
-//   q_V_per_N = 2.25e-3
-//   V_base_V = 0.0                                # optional, default 0
-//   [geometry]                                    # optional, Table I; for the chamber volume
-//   length_mm = 180  sleeve_diameter_mm = 16.0  bladder_diameter_mm = 4.0  braid_angle_deg = 25
+// read once, validated, converted to SI. Shipped files live in models/pams/; the file's
+// layout is shown at load_pam_params.
 #pragma once
 
 #include <optional>
@@ -45,6 +32,20 @@ struct PamParams {
   std::optional<PamGeometry> geometry;
 };
 
+// A parameter file:
+//   name = "agonist"
+//   source = "Yoshida & Hosoda, Table IV"
+//   [spring]
+//   law = "eq3"                                   # eq3 | eq4 | eq5
+//   units = { pressure = "MPa", length = "mm", force = "N" }
+//   m = -60.1                                     # Eq. (2) slope [mm/MPa]
+//   h = 170.1                                     # Eq. (2) intercept [mm]
+//   a0 = 0.911  a1 = 0.256  a2 = 7.00  a3 = -0.201   (b0..b5 for eq4, c0..c4 for eq5)
+//   [strain_gauge]                                # optional, Eq. (8)
+//   q_V_per_N = 2.25e-3
+//   V_base_V = 0.0                                # optional, default 0
+//   [geometry]                                    # optional, Table I; for the chamber volume
+//   length_mm = 180  sleeve_diameter_mm = 16.0  bladder_diameter_mm = 4.0  braid_angle_deg = 25
 // Reads and validates a parameter file. Throws InputError naming the file and key for a
 // missing file, a TOML syntax error, an unknown key, a missing coefficient, a wrong unit,
 // or a non-finite / out-of-range value.

@@ -1,7 +1,26 @@
 // plant_params.h: a muscle's physical plant, read from its own file (models/pams/plant_*.toml),
 // apart from the spring law its estimator inverts (pam_params.h): the simulated muscle is
-// physics, the estimator a fit to it. Today one law, AVBDL (avbdl.h, Pipan et al.). The file,
-// in the papers' units:
+// physics, the estimator a fit to it. Today one law, AVBDL (avbdl.h, Pipan et al.); the
+// file's layout is shown at load_plant_params.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "base/key_table.h"
+#include "pam_actuator/avbdl.h"
+
+namespace pamsim {
+
+struct PlantParams {
+  std::string name;
+  std::string source;
+  AvbdlParams avbdl;
+};
+
+// A plant file, in the papers' units:
 //   name = "agonist"
 //   source = "..."                      # where the numbers come from
 //   law = "avbdl"
@@ -29,24 +48,7 @@
 //   weights = [0.5, 0.5]                # and their shares of F_f, summing to 1
 //   extension = { F0_N = 0.5, A0_mm2 = 1.0, A1_mm2 = 0.0 }
 //   contraction = { F0_N = 0.5, A0_mm2 = 1.0, A1_mm2 = 0.0 }
-#pragma once
-
-#include <string>
-#include <vector>
-
-#include <toml++/toml.h>
-
-#include "base/key_table.h"
-#include "pam_actuator/avbdl.h"
-
-namespace pamsim {
-
-struct PlantParams {
-  std::string name;
-  std::string source;
-  AvbdlParams avbdl;
-};
-
+//
 // Reads and validates a plant file. Throws InputError "<path>: <key>: <problem>" for a
 // missing file, a syntax error, an unknown key, a missing or non-finite value, or
 // dimensions that cannot be (a braid angle impossible for the length, a negative friction).

@@ -1,8 +1,24 @@
 // chamber_ode.h: the right-hand side of the valve + muscle-chamber ODE, without any solver.
 // PneumaticOde implements the small f(t, y) -> ydot interface that CvodeIntegrator
 // integrates (ode_system.h: Cantera's split between a reactor's equations and the
-// integrator) for N muscles with one of three valve models.
-//
+// integrator) for N muscles with one of three valve models (ValveModel). Inputs per muscle,
+// held over a step: command (absolute Pa inside this class), length l0 [m] and velocity
+// ldot [m/s] at time t0 [s]; inside the step l(t) = l0 + ldot (t - t0), so V(t) and dV/dt
+// are consistent.
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "pam_actuator/avbdl.h"
+#include "pam_actuator/chou_hannaford.h"
+#include "pneumatics/ode_system.h"
+#include "pneumatics/pneumatic_params.h"
+
+namespace pamsim {
+
 // kIso6358 (two states per muscle, absolute pressures [Pa]):
 //   regulator  dp_reg/dt = (p_cmd - p_reg) / tau_reg                (first-order regulator)
 //   restriction (ISO 6358-1) qm = C rho0 p_up sqrt(T0/T) psi(r),  r = p_down / p_up,
@@ -36,23 +52,6 @@
 //     regulator took one dead time ago (set_sensed_abs(), held between samples;
 //     PneumaticSystem keeps the delay line), so a disturbance, like a command, is answered
 //     only after the dead time.
-// Inputs per muscle, held over a step: command (absolute Pa inside this class), length l0
-// [m] and velocity ldot [m/s] at time t0 [s]; inside the step l(t) = l0 + ldot (t - t0), so
-// V(t) and dV/dt are consistent.
-#pragma once
-
-#include <optional>
-#include <stdexcept>
-#include <string>
-#include <vector>
-
-#include "pam_actuator/avbdl.h"
-#include "pam_actuator/chou_hannaford.h"
-#include "pneumatics/ode_system.h"
-#include "pneumatics/pneumatic_params.h"
-
-namespace pamsim {
-
 enum class ValveModel { kIso6358, kFirstOrder, kRegulator };
 
 // The name a file gives `model`: "iso6358", "first_order" or "regulator".

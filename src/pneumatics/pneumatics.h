@@ -2,7 +2,20 @@
 // valve commands in, chamber gauge pressures out, advanced by one CVODE instance over each
 // physics step. Equations: chamber_ode.h; solver: cvode_integrator.h; parameters:
 // pneumatic_params.h (models/pams/pneumatics.toml).
-//
+#pragma once
+
+#include <deque>
+#include <memory>
+#include <vector>
+
+#include "pneumatics/chamber_ode.h"
+#include "pam_actuator/chou_hannaford.h"
+#include "pneumatics/cvode_integrator.h"
+#include "pneumatics/pneumatic_params.h"
+#include "pneumatics/sampled_delay_line.h"
+
+namespace pamsim {
+
 // Per physics step [t, t + dt] the loop calls set_kinematics() for every muscle (length and
 // velocity at t; inside the step l is extrapolated linearly), then advance(t + dt). A
 // controller tick calls set_command(); the command is held until changed. With the
@@ -35,8 +48,8 @@
 //   = "reinit"): ~1.5 steps, ~2.3 rhs evals, ~2.2 us per physics step, max pressure error
 //   ~170 Pa. "warm" costs ~1.3 us (1.0 step) but reaches ~600 Pa error; rtol 1e-5 ~3.7 us
 //   and ~80 Pa. The budget (1-1.5 us) is met only by "warm" at rtol 1e-4.
-// - The regulator loop (BM_RegulatorLoopStep, CPU time on 2 shared cores, reinit): the model
-//   as it was (feedback "instant", sense "chamber") ~1.8 us; sense "outlet" ~4.2 us (a third
+// - The regulator loop (BM_RegulatorLoopStep, CPU time on 2 shared cores, reinit): feedback
+//   "instant" with sense "chamber" ~1.8 us; sense "outlet" ~4.2 us (a third
 //   state, and the tube's laminar region is stiff); feedback "delayed" ~11.6 us and with
 //   the outlet ~13.1 us with solver.on_loop_action = "reinit": every action of a 1 ms sample
 //   is a jump in the valve's target, CVODE restarts there and takes ~6 steps per physics
@@ -45,20 +58,6 @@
 //   solver.on_loop_action = "warm" takes 1.0 step and 1.1 rhs evaluations per physics step
 //   against 2.0 and 10.5 with "reinit" (chamber within 0.42 against 0.31 kPa of a rtol 1e-9
 //   reference; regulator_loop_test.cc).
-#pragma once
-
-#include <deque>
-#include <memory>
-#include <vector>
-
-#include "pneumatics/chamber_ode.h"
-#include "pam_actuator/chou_hannaford.h"
-#include "pneumatics/cvode_integrator.h"
-#include "pneumatics/pneumatic_params.h"
-#include "pneumatics/sampled_delay_line.h"
-
-namespace pamsim {
-
 class PneumaticSystem {
  public:
   // One CVODE instance for all muscles. braid[i] gives muscle i's chamber volume law.

@@ -1,8 +1,15 @@
 // sampled_delay_line.h: the delay line of a sampled-data controller, as the "regulator"
 // valve model's loop uses it with [regulator] feedback = "delayed" (pneumatics.h): the
 // controller samples its sensed pressures at t_k = t0 + k T (T the sample period) and acts
-// on sample k at t_k + D (D the dead time), holding it until sample k + 1 acts.
-//
+// on sample k at t_k + D (D the dead time), holding it until sample k + 1 acts. Why not a
+// continuous delay p(t - D): see SampledDelayLine.
+#pragma once
+
+#include <deque>
+#include <vector>
+
+namespace pamsim {
+
 // Why a sampled-data line and not a continuous delay p(t - D): between two moments the
 // loop's input is constant, so the ODE the integrator sees is smooth on each interval and
 // CVODE's error control holds unchanged; PneumaticSystem splits its intervals at the
@@ -14,13 +21,6 @@
 // ITV-class regulator's control circuit reads its pressure sensor and drives its pilot solenoid
 // valves digitally (SMC ITV manual, working principle); as T -> 0 and D -> 0 the line becomes the
 // instant loop (tested).
-#pragma once
-
-#include <deque>
-#include <vector>
-
-namespace pamsim {
-
 class SampledDelayLine {
  public:
   // `initial` is the sample taken at t0_s and the value held until it acts.

@@ -1,28 +1,6 @@
 // stretch_reflex.h: the stretch reflex of one muscle and the reflex command law of the paper
-// (Sec. III-D, Eq. (12)-(14); Takahashi et al.'s alpha-motor-neuron design).
-//
-// Each muscle has its own reflex. When its velocity v (positive = being stretched) exceeds
-// V_thr, the reflex fires for `duration_s` (200 ms in the paper: 20 ticks at 100 Hz) and
-// outputs, Eq. (14),
-//   dp = dp_exci = dp_inhi = k v,     dp [MPa] = k [MPa per mm/s] * v [mm/s]
-// (the paper prints k's unit as "GPa s"; dimensionally it is MPa/(mm/s) = GPa s/m:
-// 100 mm/s with k = 1/800 gives 0.125 MPa). The commands are, Eq. (12)-(13),
-//   p_ago  = p_tp_ago  + dp_exci_ago  - dp_inhi_anta
-//   p_anta = p_tp_anta + dp_exci_anta - dp_inhi_ago
-// so a muscle's own reflex raises its command and lowers the other's (reciprocal
-// inhibition), clamped to the valve's range [0, p_max].
-//
-// Mode (the paper does not say which): "follow" uses the current v during the window,
-// clamped >= 0; "latch" holds the v that triggered. Default: follow. A prototype of the
-// falling-mass arm found that following gives the full drop reduction (~3.6 deg with the
-// ISO 6358 chamber) and lets the command fall back within ~50 ms once the stretch stops,
-// while latching the peak for the whole 200 ms overshoots the arm to about -11 deg with the fiber
-// sensor; follow is also the closer analogue of a spindle whose discharge tracks the stretch rate.
-//
-// Timing, all in whole control ticks of dt: the trigger tick is the first of the window's
-// n = round(duration_s / dt) ticks (>= 1); a window is never extended or restarted while it
-// runs. After it, the reflex is refractory for round(refractory_s / dt) ticks (0 allowed).
-// It is disarmed while t < arm_after_s (filters and the plant settling at the start).
+// (Sec. III-D, Eq. (12)-(14); Takahashi et al.'s alpha-motor-neuron design): Eq. (14) at
+// StretchReflex, Eq. (12)-(13) at reflex_commands, the window's timing at ReflexWindow.
 #pragma once
 
 #include <array>
@@ -33,6 +11,12 @@
 
 namespace pamsim {
 
+// Mode (the paper does not say which): "follow" uses the current v during the window,
+// clamped >= 0; "latch" holds the v that triggered. Default: follow. A prototype of the
+// falling-mass arm found that following gives the full drop reduction (~3.6 deg with the
+// ISO 6358 chamber) and lets the command fall back within ~50 ms once the stretch stops,
+// while latching the peak for the whole 200 ms overshoots the arm to about -11 deg with the fiber
+// sensor; follow is also the closer analogue of a spindle whose discharge tracks the stretch rate.
 enum class ReflexMode { kFollow, kLatch };
 
 // "follow" | "latch"
@@ -64,7 +48,8 @@ struct StretchReflexParams {
 // The timing every reflex shares (the stretch reflex here, the tension reflex of
 // tension_reflex.h): a trigger opens a window of round(duration_s / dt) ticks (>= 1), the
 // trigger tick its first; a window is never extended or restarted while it runs; after it,
-// round(refractory_s / dt) ticks refractory; no trigger while t < arm_after_s. The ticks are
+// round(refractory_s / dt) ticks refractory (0 allowed); no trigger while t < arm_after_s
+// (filters and the plant settling at the start). All in whole control ticks; the ticks are
 // counted by the embedded controller's code (pamctl_window_update, src/embedded/pamctl.h);
 // embedded_window computes its tick counts, once.
 pamctl_window_config embedded_window(double duration_s, double refractory_s, double arm_after_s,
@@ -91,6 +76,12 @@ class ReflexWindow {
 // The stretch reflex as the embedded controller holds it (SI, its window in ticks).
 pamctl_stretch_config embedded_stretch(const StretchReflexParams& params, double control_period_s);
 
+// Each muscle has its own reflex. When its velocity v (positive = being stretched) exceeds
+// V_thr, the reflex fires for `duration_s` (200 ms in the paper: 20 ticks at 100 Hz) and
+// outputs, Eq. (14),
+//   dp = dp_exci = dp_inhi = k v,     dp [MPa] = k [MPa per mm/s] * v [mm/s]
+// (the paper prints k's unit as "GPa s"; dimensionally it is MPa/(mm/s) = GPa s/m:
+// 100 mm/s with k = 1/800 gives 0.125 MPa).
 class StretchReflex {
  public:
   // control_period_s > 0. Parameters must have passed validate() (asserted).
@@ -116,7 +107,11 @@ enum PairRole : int { kAgonist = 0, kAntagonist = 1 };
 using PairValues = std::array<double, 2>;  // indexed by PairRole
 
 // Eq. (12)-(13): a pair's commands [Pa] from its goal pressures and the two reflexes' dp
-// [Pa], each clamped to [0, p_max_pa].
+// [Pa], each clamped to [0, p_max_pa]:
+//   p_ago  = p_tp_ago  + dp_exci_ago  - dp_inhi_anta
+//   p_anta = p_tp_anta + dp_exci_anta - dp_inhi_ago
+// so a muscle's own reflex raises its command and lowers the other's (reciprocal
+// inhibition).
 PairValues reflex_commands(const PairValues& p_tp_pa, const PairValues& dp_pa, double p_max_pa);
 
 }  // namespace pamsim

@@ -5,19 +5,8 @@
 // velocity estimate (Eq. (9)-(11)) or by the fiber sensor's rate. "tension_reflex" has the
 // tension (Ib) reflex of tension_reflex.h instead, driven by the strain gauge's tension
 // (Eq. (8)-(9)); "stretch_tension_reflex" has both, the paper's next step (Sec. V). Muscles
-// in no pair get their scheduled command.
-//
-// Per control tick, muscle by muscle in model order:
-//   1. take v from the reading: the estimate (reflex.sensor = "model") or the fiber rate
-//      ("fiber"), both low-passed at reflex.lowpass_hz by the sensing (sensing.h,
-//      SensingConfig::velocity_lowpass_hz, from this kind's ControllerConfig);
-//   2. run the muscle's stretch reflex (stretch_reflex.h) if reflex.enabled and the
-//      controller is on, behind two gates (below); and its tension reflex on the measured
-//      tension, with no gate of its own (its windows are not the log's reflex_<m> flag,
-//      which is the stretch reflex's; the metric set "tension" counts its triggers);
-// then command each pair, clamped to [0, p_max]: by Eq. (12)-(13) with the Ia reflexes
-// alone, and with the Ib reflexes by the rule of reflex_commands (below). All of it is the
-// embedded controller's code (pamctl_control, src/embedded/pamctl.h), which the robot runs.
+// in no pair get their scheduled command. All of it is the embedded controller's code
+// (pamctl_control, src/embedded/pamctl.h), which the robot runs.
 #pragma once
 
 #include <string>
@@ -129,6 +118,16 @@ ControllerKind stretch_reflex_controller_kind();
 ControllerKind tension_reflex_controller_kind();
 ControllerKind stretch_tension_reflex_controller_kind();
 
+// Per control tick, muscle by muscle in model order:
+//   1. take v from the reading: the estimate (reflex.sensor = "model") or the fiber rate
+//      ("fiber"), both low-passed at reflex.lowpass_hz by the sensing (sensing.h,
+//      SensingConfig::velocity_lowpass_hz, from this kind's ControllerConfig);
+//   2. run the muscle's stretch reflex (stretch_reflex.h) if reflex.enabled and the
+//      controller is on, behind two gates (ReflexConfig); and its tension reflex on the
+//      measured tension, with no gate of its own (its windows are not the log's reflex_<m>
+//      flag, which is the stretch reflex's; the metric set "tension" counts its triggers);
+// then command each pair, clamped to [0, p_max]: by Eq. (12)-(13) with the Ia reflexes
+// alone, and with the Ib reflexes by the rule of reflex_commands (above).
 class StretchReflexController final : public Controller {
  public:
   // Validates the configuration (throws InputError).

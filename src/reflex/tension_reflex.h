@@ -1,23 +1,8 @@
 // tension_reflex.h: the Ib reflex of one muscle, autogenic inhibition from its force sensor
 // alone: the Golgi tendon organ's analogue, the step Yoshida and Hosoda name after the Ia
 // stretch reflex (Sec. V: "the Ia reflex and the Ib reflex
-// coexist ... using only pressure and force sensors").
-//
-// A tendon organ fires with the tension of its muscle and inhibits that muscle's motor
-// neurons (and, through interneurons, excites the antagonist's). Here, after Eq. (12)-(14)
-// of the Ia reflex: when the measured tension f (Eq. (8)-(9), the strain gauge) exceeds
-// F_thr, or its rate df/dt exceeds dF_thr (optional, low-passed), the reflex fires for
-// `duration_s` and outputs
-//   dp_ib = k_ib f,        dp [MPa] = k_ib [MPa/N] * f [N],
-// f followed (>= 0) during the window or latched at the trigger (reflex.ib.mode), to subtract
-// from the muscle's own command and, with excite_antagonist, to add to its pair partner's.
-// The window, refractory time and arming are the Ia reflex's (ReflexWindow,
-// stretch_reflex.h). How the Ia and Ib outputs combine: stretch_reflex_controller.h.
-//
-// pamsim's choices where the paper gives no Ib design: the output is proportional to the
-// whole tension, as Eq. (14)'s is to the whole velocity (a tendon organ's discharge grows with
-// tension from its threshold on); the rate trigger catches an impact's rising tension before
-// it peaks, as the Ia reflex's velocity does for length.
+// coexist ... using only pressure and force sensors"). pamsim's design, after Eq. (12)-(14)
+// of the Ia reflex, as the paper gives none: TensionReflex.
 #pragma once
 
 #include "sensing/lowpass_filter.h"
@@ -48,6 +33,21 @@ void validate(const TensionReflexParams& params, double control_hz);
 // filter's factor).
 pamctl_tension_config embedded_tension(const TensionReflexParams& params, double control_period_s);
 
+// A tendon organ fires with the tension of its muscle and inhibits that muscle's motor
+// neurons (and, through interneurons, excites the antagonist's). Here, after Eq. (12)-(14)
+// of the Ia reflex: when the measured tension f (Eq. (8)-(9), the strain gauge) exceeds
+// F_thr, or its rate df/dt exceeds dF_thr (optional, low-passed), the reflex fires for
+// `duration_s` and outputs
+//   dp_ib = k_ib f,        dp [MPa] = k_ib [MPa/N] * f [N],
+// f followed (>= 0) during the window or latched at the trigger (reflex.ib.mode), to subtract
+// from the muscle's own command and, with excite_antagonist, to add to its pair partner's.
+// The window, refractory time and arming are the Ia reflex's (ReflexWindow,
+// stretch_reflex.h). How the Ia and Ib outputs combine: stretch_reflex_controller.h.
+//
+// pamsim's choices where the paper gives no Ib design: the output is proportional to the
+// whole tension, as Eq. (14)'s is to the whole velocity (a tendon organ's discharge grows with
+// tension from its threshold on); the rate trigger catches an impact's rising tension before
+// it peaks, as the Ia reflex's velocity does for length.
 class TensionReflex {
  public:
   // Parameters must have passed validate() (asserted where cheap).

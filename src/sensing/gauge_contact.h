@@ -2,8 +2,37 @@
 // does: a contact point that moves and sticks, and a line able to lose that contact by
 // geometry (Yoshida and Hosoda, Sec. IV-B: "the voltage values fluctuated significantly due
 // to slight positional shifts of the fishing line", and the agonist's signal was lost as its
-// muscle contracted).
-//
+// muscle contracted). The geometry is told at contact_rest_position_m, its figures at
+// GaugeContactParams.
+#pragma once
+
+#include <string>
+
+#include "sensing/gauge_board.h"
+
+namespace pamsim {
+
+// The figures (each a key, sensors.gauge.contact.*) are an ASSUMPTION, a row of docs/physics.md's
+// departures: the paper gives no geometry of its gauges. D = 2 mm (an assembly's lateral
+// tolerance), d1 = 20 mm (the board at the fitting), d2 = 250 mm (the MJCF's 0.4 m from anchor to
+// shaft less the muscle), theta = 30 deg, mu = 0.3 (nylon on acrylic, the usual 0.2-0.4 of polymer
+// pairs), and the board 5 mm longer than the contact position. With them the contact sticks over
+// the arm's whole stroke (w about 2.9 mm, y* moving about 0.2 mm): docs/physics.md says what it
+// would take to lose it.
+struct GaugeContactParams {
+  bool sliding = true;                // sensors.gauge.contact.model: "fixed" | "sliding"
+  double misalignment_m = 0.002;      // D, misalignment_mm (either sign)
+  double fitting_distance_m = 0.020;  // d1, fitting_distance_mm >= 1
+  double shaft_distance_m = 0.250;    // d2, shaft_distance_mm > 0
+  double wrap_deg = 30.0;             // theta, wrap_deg in (0, 180)
+  double friction_coefficient = 0.3;  // mu >= 0
+  // reseat_mm: the contact's shift along the edge between the gauge's static calibration
+  // and the trial (the paper's "slight positional shifts of the fishing line", Sec. IV-B),
+  // which scales the trial's reading by the lever's change, (y0 + shift - y_g) / (y0 - y_g).
+  // A line re-laid on the board rests anywhere its stick band holds it: +-w of y*.
+  double reseat_m = 0.0;
+};
+
 // The line runs from the muscle's end fitting over the board's edge (the cantilever of
 // gauge_board.h, clamped at y = 0, free at y = L_b) on to the arm's shaft. Along the edge,
 // the shaft lies a misalignment D beside the fitting. Unfolded into a plane, the line's
@@ -20,35 +49,6 @@
 // is unloaded from then on, whatever the line pulls (the paper's "failure to send voltage
 // signals"). The reading follows the pull times the lever y - y_g (gauge_board.h).
 //
-// The figures (each a key, sensors.gauge.contact.*) are an ASSUMPTION, a row of docs/physics.md's
-// departures: the paper gives no geometry of its gauges. D = 2 mm (an assembly's lateral
-// tolerance), d1 = 20 mm (the board at the fitting), d2 = 250 mm (the MJCF's 0.4 m from anchor to
-// shaft less the muscle), theta = 30 deg, mu = 0.3 (nylon on acrylic, the usual 0.2-0.4 of polymer
-// pairs), and the board 5 mm longer than the contact position. With them the contact sticks over
-// the arm's whole stroke (w about 2.9 mm, y* moving about 0.2 mm): docs/physics.md says what it
-// would take to lose it.
-#pragma once
-
-#include <string>
-
-#include "sensing/gauge_board.h"
-
-namespace pamsim {
-
-struct GaugeContactParams {
-  bool sliding = true;                // sensors.gauge.contact.model: "fixed" | "sliding"
-  double misalignment_m = 0.002;      // D, misalignment_mm (either sign)
-  double fitting_distance_m = 0.020;  // d1, fitting_distance_mm >= 1
-  double shaft_distance_m = 0.250;    // d2, shaft_distance_mm > 0
-  double wrap_deg = 30.0;             // theta, wrap_deg in (0, 180)
-  double friction_coefficient = 0.3;  // mu >= 0
-  // reseat_mm: the contact's shift along the edge between the gauge's static calibration
-  // and the trial (the paper's "slight positional shifts of the fishing line", Sec. IV-B),
-  // which scales the trial's reading by the lever's change, (y0 + shift - y_g) / (y0 - y_g).
-  // A line re-laid on the board rests anywhere its stick band holds it: +-w of y*.
-  double reseat_m = 0.0;
-};
-
 // y* [m] once the muscle has shortened by s [m] from the start (negative: lengthened).
 double contact_rest_position_m(const GaugeContactParams& c, double y0_m, double shortening_m);
 // w [m], the half-width of the band in which the contact sticks.

@@ -6,14 +6,6 @@
 // "q was obtained by measuring voltage and force while statically loading the strain
 // gauge"), pamsim loads the simulated gauge in steps, reads it, and fits Eq. (8)'s q and
 // V_base by least squares (calibrate_gauge).
-//
-// The amplifier's gain is the one unknown the paper pins: it is set so that a nominal gauge
-// (equal arms, no creep, small strain) has the muscle's published slope q (Table IV), and
-// its output offset is the published V_base; everything else is this gauge's physics.
-//
-// The board rings (board_vibration.h): fed the line's pull at every physics step
-// (observe()), a gauge reads the board's bend, not the pull of this instant. Without those
-// calls (the static calibration) it reads the pull held over the tick.
 #pragma once
 
 #include <cstdint>
@@ -35,8 +27,10 @@ namespace pamsim {
 // Keys sensors.gauge.* (read in sim/io; SI inside).
 struct GaugeHardwareConfig {
   bool enabled = false;  // sensors.gauge.model: "linear" (Eq. (8) exact) | "bridge"
-  // sensors.gauge.excitation_V, gauge_factor, nominal_Ohm, tolerance_pct (the amplifier's
-  // gain is derived, see above)
+  // sensors.gauge.excitation_V, gauge_factor, nominal_Ohm, tolerance_pct. The amplifier's
+  // gain is the one unknown the paper pins: it is set so that a nominal gauge (equal arms,
+  // no creep, small strain) has the muscle's published slope q (Table IV), and its output
+  // offset is the published V_base; everything else is this gauge's physics.
   QuarterBridgeParams bridge;
   // sensors.gauge.board.*: the paper gives no board dimensions; these are an ASSUMPTION (a
   // 20 x 5 mm acrylic strip, the gauge 10 mm from the clamp, the line 30 mm beyond it:
@@ -73,7 +67,10 @@ class GaugeHardware {
                 std::mt19937_64& instrument_rng, double sample_period_s);
 
   // The board's ringing, stepped by physics_dt_s from the first observe() on (a no-op when
-  // sensors.gauge.board.vibration is off).
+  // sensors.gauge.board.vibration is off). The board rings (board_vibration.h): fed the
+  // line's pull at every physics step (observe()), a gauge reads the board's bend, not the
+  // pull of this instant. Without those calls (the static calibration) it reads the pull
+  // held over the tick.
   void enable_vibration(double physics_dt_s);
   bool vibrates() const { return vibration_.has_value(); }
   // One physics step with the line's pull f_n [N] held over it.

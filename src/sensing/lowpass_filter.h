@@ -1,7 +1,13 @@
 // lowpass_filter.h: the first-order low-pass used on measured pressure and on velocity
 // (the paper's suggested fix for noisy velocity, Sec. V-C), discretised exactly for the
-// control period.
-//
+// control period. The update is the embedded controller's (pamctl_lowpass_step,
+// src/embedded/pamctl.h).
+#pragma once
+
+#include "embedded/pamctl.h"
+
+namespace pamsim {
+
 // Continuous filter: tau dy/dt = x - y, tau = 1 / (2 pi fc). Holding x constant over one
 // sample period dt (zero-order hold) the exact update is
 //   y_j = y_{j-1} + alpha (x_j - y_{j-1}),   alpha = 1 - exp(-2 pi fc dt),
@@ -12,14 +18,7 @@
 // sensors.h) were measured with it.
 //
 // The filter is initialised to its first input (no start-up transient). A cutoff of 0
-// turns it off: the output is the input. The update is the embedded controller's
-// (pamctl_lowpass_step, src/embedded/pamctl.h).
-#pragma once
-
-#include "embedded/pamctl.h"
-
-namespace pamsim {
-
+// turns it off: the output is the input.
 class LowpassFilter {
  public:
   // cutoff_hz >= 0 (0 = off), sample_period_s > 0; both finite. Violations are internal

@@ -1,22 +1,19 @@
 // pressure_hardware.h: the pressure sensor as hardware (sensors.pressure.model = "pse540")
 // instead of an exact transducer with white noise: the static and dynamic errors of the SMC
 // PSE540 class (0-1 MPa gauge, 1-5 V out; Yoshida and Hosoda, Sec. III-A, name the PSE540),
-// in Gazebo's noise parameters (sensor_noise.h). Per tick, in order:
-//   1. response: the sensing element lags the chamber, a first order with the catalogue's
-//      response time read as its 0-90 % rise, tau = t_r / ln 10 (lowpass_filter.h; the
-//      chamber pressure held over the control tick, so exact for that input);
-//   2. hysteresis: a play (backlash) operator of full width h: rising and falling readings
-//      of one pressure differ by h (one Maxwell-slip element whose breakaway travel and
-//      slip force are both h / 2, so its force is its deflection, the play;
-//      pam_actuator/maxwell_slip.h);
-//   3. static error of this instrument, drawn once from sensors.instrument_seed:
-//      p (1 + g) + b, b ~ N(bias_mean, bias_stddev^2), g ~ N(0, gain_error_stddev^2);
-//   4. dynamic bias: a Gauss-Markov drift of the zero (sensor_noise.h), drawn from the
-//      trial's seed (a trial is the lab on another day);
-// then the sensor's existing bias and white noise (sensors.pressure_bias_MPa,
-// pressure_noise_MPa, in sensors.h), then `precision` (Gazebo's rounding of the output),
-// then the 1-5 V transfer and the ADC.
-//
+// in Gazebo's noise parameters (sensor_noise.h): response, hysteresis, the instrument's static
+// error and a drifting zero (PressureHardware), with its figures in PressureHardwareConfig.
+#pragma once
+
+#include <limits>
+#include <random>
+
+#include "pam_actuator/maxwell_slip.h"
+#include "sensing/lowpass_filter.h"
+#include "sensing/sensor_noise.h"
+
+namespace pamsim {
+
 // Figures (the PSE540 datasheet itself could not be retrieved; these are the class figures
 // sensors.h quotes for it, and assumptions where stated, each a row of docs/physics.md's
 // departures):
@@ -34,17 +31,7 @@
 //  - precision: 0 (the PSE540's output is analog; the ADC quantises).
 // The arm's sensors are not the tensile rig's: the estimator's spring model was fitted on the
 // rig, so this instrument's offset moves the estimated length (~66 mm/MPa: 4.7 kPa ~ 0.3 mm).
-#pragma once
-
-#include <limits>
-#include <random>
-
-#include "pam_actuator/maxwell_slip.h"
-#include "sensing/lowpass_filter.h"
-#include "sensing/sensor_noise.h"
-
-namespace pamsim {
-
+//
 // Keys sensors.pressure.* (read in sim/io; SI inside, MPa / % / ms / s in the keys).
 struct PressureHardwareConfig {
   bool enabled = false;                   // sensors.pressure.model: "ideal" | "pse540"
@@ -61,6 +48,21 @@ struct PressureHardwareConfig {
 // Throws InputError "<key> must be ..., got <value>" naming the sensors.pressure.* key.
 void validate(const PressureHardwareConfig& config);
 
+// Per tick, in order:
+//   1. response: the sensing element lags the chamber, a first order with the catalogue's
+//      response time read as its 0-90 % rise, tau = t_r / ln 10 (lowpass_filter.h; the
+//      chamber pressure held over the control tick, so exact for that input);
+//   2. hysteresis: a play (backlash) operator of full width h: rising and falling readings
+//      of one pressure differ by h (one Maxwell-slip element whose breakaway travel and
+//      slip force are both h / 2, so its force is its deflection, the play;
+//      pam_actuator/maxwell_slip.h);
+//   3. static error of this instrument, drawn once from sensors.instrument_seed:
+//      p (1 + g) + b, b ~ N(bias_mean, bias_stddev^2), g ~ N(0, gain_error_stddev^2);
+//   4. dynamic bias: a Gauss-Markov drift of the zero (sensor_noise.h), drawn from the
+//      trial's seed (a trial is the lab on another day);
+// then the sensor's existing bias and white noise (sensors.pressure_bias_MPa,
+// pressure_noise_MPa, in sensors.h), then `precision` (Gazebo's rounding of the output),
+// then the 1-5 V transfer and the ADC.
 class PressureHardware {
  public:
   // One built sensor: its bias and gain drawn from `instrument_rng` (two draws); its dynamic

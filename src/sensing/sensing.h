@@ -1,17 +1,6 @@
 // sensing.h: every muscle's sensors and its model-based length estimate, sampled once per
 // control tick: what a controller sees of the plant (reflex/controller.h), and all it sees.
-//
-// Per tick, muscle by muscle in the model's actuator order (so the noise stream, and
-// therefore a trial, is fixed by the seed alone):
-//   1. sample the PSE540 pressure sensor, the strain gauge and the fiber sensor (sensors.h),
-//      in that order, each drawing one normal from the suite's std::mt19937_64 (sensors built
-//      as hardware draw their own errors from generators of their own, sensor_noise.h);
-//   2. estimate length and velocity from pressure and force, Eq. (9)-(11), with the muscle's
-//      estimator law, and low-pass the fiber rate at reflex.lowpass_hz (the velocity a fiber
-//      reflex uses): the embedded controller's estimator (pamctl_estimate_muscle,
-//      src/embedded/pamctl.h), fed the readings a board would read.
-// All sensors are sampled whatever the controller uses, so a model-based and a fiber-based
-// trial with the same seed see the same noise.
+// The order of a tick, which fixes the noise stream by the seed alone: SensorSuite.
 #pragma once
 
 #include <cstdint>
@@ -64,6 +53,17 @@ struct SensingConfig {
 void validate(const SensingConfig& config);
 void validate(const MuscleSensorSpec& muscle);
 
+// Per tick, muscle by muscle in the model's actuator order (so the noise stream, and
+// therefore a trial, is fixed by the seed alone):
+//   1. sample the PSE540 pressure sensor, the strain gauge and the fiber sensor (sensors.h),
+//      in that order, each drawing one normal from the suite's std::mt19937_64 (sensors built
+//      as hardware draw their own errors from generators of their own, sensor_noise.h);
+//   2. estimate length and velocity from pressure and force, Eq. (9)-(11), with the muscle's
+//      estimator law, and low-pass the fiber rate at reflex.lowpass_hz (the velocity a fiber
+//      reflex uses): the embedded controller's estimator (pamctl_estimate_muscle,
+//      src/embedded/pamctl.h), fed the readings a board would read.
+// All sensors are sampled whatever the controller uses, so a model-based and a fiber-based
+// trial with the same seed see the same noise.
 class SensorSuite {
  public:
   // Validates (throws InputError) and seeds the generator with `seed`.

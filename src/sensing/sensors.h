@@ -7,34 +7,8 @@
 // its datasheet or the literature, each file says which): the gauge (gauge_hardware.h),
 // the pressure sensor (pressure_hardware.h), the fiber sensor (fiber_hardware.h) and the
 // encoder's resolution (EncoderConfig below). Their random draws come from generators of
-// their own (sensor_noise.h), so the stream below is the same with them on or off.
-//
-// Noise is drawn from a std::mt19937_64 the caller owns (the SensorSuite seeds one per
-// trial from the trial seed), so a trial is deterministic. Every sample() call draws exactly
-// one standard normal even when its noise level is 0, so the random stream, and therefore the
-// noise of the other sensors, does not depend on which noise levels a sweep sets to 0.
-//
-// Defaults (SensorConfig) and why:
-//  - sensors.pressure_noise_MPa = 0.001 (1 kPa, 0.1 % F.S.) random noise per sample. The PSE540's
-//    +/-2 % F.S. accuracy is a slowly varying offset, not sample-to-sample noise: it is the
-//    separate sensors.pressure_bias_MPa (default 0; a bias shifts the length estimate by about
-//    66 mm/MPa at the operating point but cancels in the velocity, Eq. (11)), or, drawn per
-//    instrument with its gain error, hysteresis, response and drift, sensors.pressure.*
-//    (pressure_hardware.h). Its repeatability
-//    is +/-0.2 % F.S., so random noise of half that is a realistic level.
-//  - pressure ADC: 12 bit over 0-5 V (a microcontroller or DAQ input): 1.22 mV = 0.31 kPa
-//    per step, well below the noise.
-//  - gauge_noise_v = 0.5 mV: 0.22 N on the agonist (q = 2.25e-3 V/N) and 0.12 N on the
-//    antagonist (q = 4.33e-3 V/N), the 0.2 N level of the prototype below.
-//  - gauge ADC: 16 bit over -5..+5 V (a bridge amplifier into a bipolar DAQ input, so noise
-//    around V_base is not clipped): 0.15 mV = 0.07 N per step on the agonist.
-//  - sensors.fiber_noise_mm_s = 2 on the rate: the fiber reflex threshold of Table II (25 mm/s)
-//    is 12 standard deviations away, and the integrated length drifts only ~0.6 mm over 10 s.
-// With these defaults (no pressure low-pass), the velocity estimate at 100 Hz has a standard
-// deviation of about 9 mm/s (drop_mass.toml's quiet second: 9.6 mm/s agonist, 8.4 mm/s
-// antagonist, largest 32 mm/s), 7 sigma below the model reflex threshold (70 mm/s): no
-// mistrip (a prototype of the falling-mass arm measured ~1.5 % mistrips per quiet second at
-// 0.002 MPa / 0.2 N, whose velocity noise is ~19 mm/s).
+// their own (sensor_noise.h), so the noise stream (PressureSensor) is the same with them on
+// or off.
 #pragma once
 
 #include <optional>
@@ -61,6 +35,28 @@ struct EncoderConfig {
 };
 double encoder_read_m(const EncoderConfig& encoder, double length_m);
 
+// Defaults (SensorConfig) and why:
+//  - sensors.pressure_noise_MPa = 0.001 (1 kPa, 0.1 % F.S.) random noise per sample. The PSE540's
+//    +/-2 % F.S. accuracy is a slowly varying offset, not sample-to-sample noise: it is the
+//    separate sensors.pressure_bias_MPa (default 0; a bias shifts the length estimate by about
+//    66 mm/MPa at the operating point but cancels in the velocity, Eq. (11)), or, drawn per
+//    instrument with its gain error, hysteresis, response and drift, sensors.pressure.*
+//    (pressure_hardware.h). Its repeatability
+//    is +/-0.2 % F.S., so random noise of half that is a realistic level.
+//  - pressure ADC: 12 bit over 0-5 V (a microcontroller or DAQ input): 1.22 mV = 0.31 kPa
+//    per step, well below the noise.
+//  - gauge_noise_v = 0.5 mV: 0.22 N on the agonist (q = 2.25e-3 V/N) and 0.12 N on the
+//    antagonist (q = 4.33e-3 V/N), the 0.2 N level of the prototype below.
+//  - gauge ADC: 16 bit over -5..+5 V (a bridge amplifier into a bipolar DAQ input, so noise
+//    around V_base is not clipped): 0.15 mV = 0.07 N per step on the agonist.
+//  - sensors.fiber_noise_mm_s = 2 on the rate: the fiber reflex threshold of Table II (25 mm/s)
+//    is 12 standard deviations away, and the integrated length drifts only ~0.6 mm over 10 s.
+// With these defaults (no pressure low-pass), the velocity estimate at 100 Hz has a standard
+// deviation of about 9 mm/s (drop_mass.toml's quiet second: 9.6 mm/s agonist, 8.4 mm/s
+// antagonist, largest 32 mm/s), 7 sigma below the model reflex threshold (70 mm/s): no
+// mistrip (a prototype of the falling-mass arm measured ~1.5 % mistrips per quiet second at
+// 0.002 MPa / 0.2 N, whose velocity noise is ~19 mm/s).
+//
 // The sensors' parameters, SI; their scenario keys sensors.* (paper units, named) are rows
 // of sensor_keys.h. Checked by validate() in sensing.h.
 struct SensorConfig {
@@ -122,6 +118,12 @@ struct PressureReading {
   double pressure_pa = 0.0;  // pse540_pressure_pa(voltage_v)
 };
 
+// The sensors' noise (here and below) is drawn from a std::mt19937_64 the caller owns (the
+// SensorSuite seeds one per trial from the trial seed), so a trial is deterministic. Every
+// sample() call draws exactly one standard normal even when its noise level is 0, so the
+// random stream, and therefore the noise of the other sensors, does not depend on which noise
+// levels a sweep sets to 0.
+//
 // Reading = ADC(PSE540(p + bias + noise)), noise ~ N(0, pressure_noise_pa^2); with its
 // hardware (pressure_hardware.h), ADC(PSE540(round(hw(p) + bias + noise))).
 class PressureSensor {

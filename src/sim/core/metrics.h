@@ -1,37 +1,7 @@
 // metrics.h: a trial's summary, made by small metric sets that each experiment lists
-// (the scenario's `metrics` key), followed by the sets every trial has:
-//   drop              the falling mass: start_angle_deg (at the "release" event),
-//                     min_angle_deg and min_angle_time_s (every physics step after it),
-//                     peak_drop_deg = start - min, final_angle_deg, impact_time_s (the
-//                     "impact" event), recovery_time_s (impact until the angle stays within
-//                     2 deg of its final value), mass_retained (1 if the impact's two
-//                     bodies, the mass and the basket, still touch at the end, else 0);
-//                     needs a hinge joint and both events
-//   reflex            reflex_triggers_<m> per muscle, first_trigger_time_s, mistrips
-//                     (triggers before the "impact" event, or all if there is none),
-//                     retriggers_after_impact (triggers from the impact on, all muscles,
-//                     beyond the first)
-//   length_estimate   length_est_rmse_mm, length_est_max_error_mm, and the same in % of the
-//                     true length (length_est_rmse_pct, length_est_max_error_pct): the
-//                     model-based length estimate against the encoder, all muscles, every
-//                     tick (Table III's and Table V's metric)
-//   tracking          per muscle: pressure_rmse_<m>_MPa (chamber vs command),
-//                     length_est_rmse_<m>_pct, length_est_max_error_<m>_pct (in % of the
-//                     true length, Table III's metric); the joint's start, final, min and
-//                     max (angle_*_deg or position_*_mm)
-//   sensors           the extremes of every named MJCF sensor over every physics step, and
-//                     a touch sensor's touchdowns (sensor_metrics.h)
-//   events            event_<name>_time_s: when each scenario event fired, NaN if never
-//   tension           per muscle: peak_tension_<m>_N (the line's largest pull over every
-//                     physics step), line_load_<m>_pct (that in per cent of its
-//                     muscles.<m>.line_limit_N, where given), line_break_load_<m>_pct (in per
-//                     cent of its break load, where muscles.<m>.line_strength_MPa is given:
-//                     over 100 the line breaks) and tension_triggers_<m> (its
-//                     tension (Ib) reflex's triggers; 0 without one);
-//                     first_tension_trigger_time_s
-//   (always) trial    steps, sim_time_s, wall_time_s, realtime_factor
-//   (always) solver   cvode_steps, cvode_rhs_evals
-// A metric is NaN where it is undefined (an event that did not happen); JSON writes null.
+// (the scenario's `metrics` key; the sets and their metrics are listed at metric_set_names),
+// followed by the sets every trial has (trial, solver). A metric is NaN where it is
+// undefined (an event that did not happen); JSON writes null.
 #pragma once
 
 #include <mujoco/mujoco.h>
@@ -103,7 +73,38 @@ class MetricSet {
   virtual void finish(const FinishedTrial& record, std::vector<Metric>* out) const = 0;
 };
 
-// The names a scenario may list, in the documented order.
+// The names a scenario may list, in the documented order, and what each set gives:
+//   drop              the falling mass: start_angle_deg (at the "release" event),
+//                     min_angle_deg and min_angle_time_s (every physics step after it),
+//                     peak_drop_deg = start - min, final_angle_deg, impact_time_s (the
+//                     "impact" event), recovery_time_s (impact until the angle stays within
+//                     2 deg of its final value), mass_retained (1 if the impact's two
+//                     bodies, the mass and the basket, still touch at the end, else 0);
+//                     needs a hinge joint and both events
+//   reflex            reflex_triggers_<m> per muscle, first_trigger_time_s, mistrips
+//                     (triggers before the "impact" event, or all if there is none),
+//                     retriggers_after_impact (triggers from the impact on, all muscles,
+//                     beyond the first)
+//   length_estimate   length_est_rmse_mm, length_est_max_error_mm, and the same in % of the
+//                     true length (length_est_rmse_pct, length_est_max_error_pct): the
+//                     model-based length estimate against the encoder, all muscles, every
+//                     tick (Table III's and Table V's metric)
+//   tracking          per muscle: pressure_rmse_<m>_MPa (chamber vs command),
+//                     length_est_rmse_<m>_pct, length_est_max_error_<m>_pct (in % of the
+//                     true length, Table III's metric); the joint's start, final, min and
+//                     max (angle_*_deg or position_*_mm)
+//   sensors           the extremes of every named MJCF sensor over every physics step, and
+//                     a touch sensor's touchdowns (sensor_metrics.h)
+//   events            event_<name>_time_s: when each scenario event fired, NaN if never
+//   tension           per muscle: peak_tension_<m>_N (the line's largest pull over every
+//                     physics step), line_load_<m>_pct (that in per cent of its
+//                     muscles.<m>.line_limit_N, where given), line_break_load_<m>_pct (in per
+//                     cent of its break load, where muscles.<m>.line_strength_MPa is given:
+//                     over 100 the line breaks) and tension_triggers_<m> (its
+//                     tension (Ib) reflex's triggers; 0 without one);
+//                     first_tension_trigger_time_s
+//   (always) trial    steps, sim_time_s, wall_time_s, realtime_factor
+//   (always) solver   cvode_steps, cvode_rhs_evals
 const std::vector<std::string>& metric_set_names();
 
 // The sets of a scenario: its `metrics` list, then trial and solver. Throws InputError

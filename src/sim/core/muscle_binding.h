@@ -5,13 +5,6 @@
 // with its shape derived once here, the line, and where in d->userdata the trial keeps the
 // muscle's chamber pressure and history. A plant feature is a field of AvbdlParams and is
 // bound with it; nothing is packed into the model's actuator_user slots.
-//
-// The table is keyed by the model's address: load_trial_model binds a model's muscles,
-// copy_model (mujoco_util.h) gives a copy the same bindings, and MjModelPtr's deleter
-// unbinds them, so a model deleted and another allocated at its address find nothing stale.
-// Trials on other threads share a model's bindings read-only; everything that changes
-// during a trial lives in its mjData. (The binding is what a MuJoCo >= 2.3 actuator plugin
-// would hold as its instance's configuration, and the userdata blocks its plugin state.)
 #pragma once
 
 #include <mujoco/mujoco.h>
@@ -53,6 +46,13 @@ struct BoundMuscleLaw {
   double max_length_m = 0.0;  // avbdl_max_length(binding.plant), when has_plant
 };
 
+// The table is keyed by the model's address: load_trial_model binds a model's muscles,
+// copy_model (mujoco_util.h) gives a copy the same bindings, and MjModelPtr's deleter
+// unbinds them, so a model deleted and another allocated at its address find nothing stale.
+// Trials on other threads share a model's bindings read-only; everything that changes
+// during a trial lives in its mjData. (The binding is what a MuJoCo >= 2.3 actuator plugin
+// would hold as its instance's configuration, and the userdata blocks its plugin state.)
+//
 // Binds actuator `actuator_id` of `m` (replacing any binding it had).
 void bind_muscle(const mjModel* m, int actuator_id, const MuscleBinding& binding);
 // Actuator `actuator_id`'s binding, or nullptr if it has none.

@@ -2,18 +2,6 @@
 // declares, over every physics step, so that an experiment measures what its model defines
 // (a touch sensor under a foot for the ground reaction force, a jointpos sensor for a knee's
 // collapse, a framepos sensor for a hop's height) without code of its own.
-//
-// For each named sensor (unnamed ones are skipped) and each of its components, in the
-// model's order: <name>[_<axis>]_min_<unit> and _max_<unit>, in the papers' units by the
-// sensor's type:
-//   touch, force, actuatorfrc        N            torque              N_m
-//   jointpos, jointvel (hinge)       deg, deg_s   (slide)             mm, mm_s
-//   framepos, tendonpos, rangefinder mm           framelinvel, velocimeter, tendonvel  mm_s
-//   any other                        si (MuJoCo's own SI value)
-// axes x, y, z for three-component sensors, 0.. for others with more than one. A touch
-// sensor also counts its touchdowns, <name>_touchdowns: the steps at which it reads a
-// force after a step at which it read none (a contact at the start is not one). Sensors are
-// read after each mj_step, at the state MuJoCo computed them for.
 #pragma once
 
 #include <mujoco/mujoco.h>
@@ -25,6 +13,17 @@
 
 namespace pamsim {
 
+// For each named sensor (unnamed ones are skipped) and each of its components, in the
+// model's order: <name>[_<axis>]_min_<unit> and _max_<unit>, in the papers' units by the
+// sensor's type:
+//   touch, force, actuatorfrc        N            torque              N_m
+//   jointpos, jointvel (hinge)       deg, deg_s   (slide)             mm, mm_s
+//   framepos, tendonpos, rangefinder mm           framelinvel, velocimeter, tendonvel  mm_s
+//   any other                        si (MuJoCo's own SI value)
+// axes x, y, z for three-component sensors, 0.. for others with more than one. A touch
+// sensor also counts its touchdowns, <name>_touchdowns: the steps at which it reads a
+// force after a step at which it read none (a contact at the start is not one). Sensors are
+// read after each mj_step, at the state MuJoCo computed them for.
 class SensorMetrics final : public MetricSet {
  public:
   // The model's sensors; a null model has none (a scenario read without its model).

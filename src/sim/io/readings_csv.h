@@ -1,19 +1,8 @@
 // readings_csv.h: a controller's stream of inputs, tick by tick: what `pamsim run --readings`
 // writes (readings.csv: the embedded controller's inputs exactly as the simulator handed
 // them, and the commands it returned) and what `pamsim controller replay` reads back, from
-// that file, from a trial's trajectory.csv or from a lab's log with the same columns.
-//
-// Columns, one row per control tick (any other column is ignored):
-//   time_s                                 required
-//   enabled                                0 or 1: events switched the reflexes off; default 1
-//   pressure_sensor_<m>_V, gauge_<m>_V     required for every muscle m
-//   fiber_rate_<m>_m_s | fiber_rate_<m>_mm_s   the fiber sensor's rate; default 0 (none)
-//   p_tp_<m>_Pa | p_tp_<m>_MPa             the scheduled goal pressure; default: the scenario's
-//   p_cmd_<m>_Pa | p_cmd_<m>_MPa           the commands a controller sent, to compare with
-// readings.csv holds the SI columns (m_s, Pa), written as the shortest decimal text that reads
-// back to the same double: the one lossless form. A "nan" or empty reading cell is a missing
-// reading, handed on as NaN (the embedded controller's documented handling) and counted; any
-// other cell that is not a number is refused.
+// that file, from a trial's trajectory.csv or from a lab's log with the same columns (the
+// columns are listed at readings_columns).
 #pragma once
 
 #include <string>
@@ -40,6 +29,18 @@ struct ControlStream {
   int missing_readings = 0;           // NaN or empty reading cells
 };
 
+// Columns, one row per control tick (any other column is ignored):
+//   time_s                                 required
+//   enabled                                0 or 1: events switched the reflexes off; default 1
+//   pressure_sensor_<m>_V, gauge_<m>_V     required for every muscle m
+//   fiber_rate_<m>_m_s | fiber_rate_<m>_mm_s   the fiber sensor's rate; default 0 (none)
+//   p_tp_<m>_Pa | p_tp_<m>_MPa             the scheduled goal pressure; default: the scenario's
+//   p_cmd_<m>_Pa | p_cmd_<m>_MPa           the commands a controller sent, to compare with
+// readings.csv holds the SI columns (m_s, Pa), written as the shortest decimal text that reads
+// back to the same double: the one lossless form. A "nan" or empty reading cell is a missing
+// reading, handed on as NaN (the embedded controller's documented handling) and counted; any
+// other cell that is not a number is refused.
+//
 // The header of readings.csv for these muscles' labels.
 std::vector<std::string> readings_columns(const std::vector<std::string>& muscles);
 

@@ -1,7 +1,20 @@
 // identify_file.h: an identification file (`pamsim identify`) as data: the base
 // scenario, the parameters to identify (search_space.h: any scenario key, e.g. a plant's
-// field), the lab's recordings and how to search.
-//
+// field), the lab's recordings and how to search; load_identify_definition reads it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "base/key_table.h"
+#include "pam_actuator/tensile_test.h"
+#include "sim/io/recording_csv.h"
+#include "sim/optimize/search_space.h"
+
+namespace pamsim {
+
 // Identification file keys (paths relative to the file):
 //   base                scenario file, required
 //   overrides           scenario overrides at every simulation ("key=value" strings)
@@ -35,21 +48,7 @@
 //                       and lengths, on each row's stroke, must match the recorded forces.
 // At least one recording is fitted (not held out), or a tensile test given. Every recording's
 // scenario must load, and each channel must be one its trials log (trajectory.csv's columns); a
-// recording must not outlast its scenario's sim.duration_s.
-#pragma once
-
-#include <cstdint>
-#include <string>
-#include <utility>
-#include <vector>
-
-#include "base/key_table.h"
-#include "pam_actuator/tensile_test.h"
-#include "sim/io/recording_csv.h"
-#include "sim/optimize/search_space.h"
-
-namespace pamsim {
-
+// recording must not outlast its scenario's sim.duration_s (load_identify_definition).
 struct IdentifyRecording {
   std::string name;
   Recording data;

@@ -1,22 +1,6 @@
-// identify_outputs.h: what `pamsim identify` writes into its output folder:
-//   identified.toml    the base scenario with the identified values (plus the file's
-//                      overrides), ready for `pamsim run`; its header names the recordings
-//   identify.csv       per parameter: key, bounds, start (the model's value), identified
-//                      value, standard error (HAC, identify_uncertainty.h), whether
-//                      it hit a bound, whether the recordings determine it, the parameters
-//                      it correlates with above 0.9, the plain s^2 (J^T J)^-1 error and the
-//                      95 % interval
-//   identify_fits.csv  per recording and channel: fitted or held out, samples, RMSE before
-//                      (the base scenario as it stands) and after, in the channel's unit, the
-//                      channel's noise floor, the residuals' Ljung-Box p-value, explained (1 or 0;
-//                      empty: too few samples to estimate the floor, so unknown)
-//   identify.md        both tables, the search's cost and time, and a warning for each
-//                      fitted channel the model does not explain
-//   recording_<name>.png  each recording's channels: recorded, before and after (plots on)
-//   plant_<muscle>.toml   for each muscle with a plant field among the parameters: its plant
-//                      file with the identified fields, a comment naming the recordings
-//   pneumatics.toml    the same for the pneumatics file's fields (pneumatics.<table>.<field>)
-//   plan.csv, plan.md  with --plan: the [[candidate]] experiments ranked (identify_plan.h)
+// identify_outputs.h: what `pamsim identify` writes into its output folder (the identified
+// scenario and plant files, the parameter and fit tables, the figures; each listed at
+// write_identify_outputs), and the warnings a user must not miss.
 #pragma once
 
 #include <string>
@@ -53,6 +37,25 @@ std::string identify_parameters_csv(const IdentifyResult& result);
 std::string identify_fits_csv(const IdentifyResult& result);
 std::string identify_markdown(const IdentifyDefinition& def, const IdentifyResult& result);
 
+// The outputs:
+//   identified.toml    the base scenario with the identified values (plus the file's
+//                      overrides), ready for `pamsim run`; its header names the recordings
+//   identify.csv       per parameter: key, bounds, start (the model's value), identified
+//                      value, standard error (HAC, identify_uncertainty.h), whether
+//                      it hit a bound, whether the recordings determine it, the parameters
+//                      it correlates with above 0.9, the plain s^2 (J^T J)^-1 error and the
+//                      95 % interval
+//   identify_fits.csv  per recording and channel: fitted or held out, samples, RMSE before
+//                      (the base scenario as it stands) and after, in the channel's unit, the
+//                      channel's noise floor, the residuals' Ljung-Box p-value, explained (1 or 0;
+//                      empty: too few samples to estimate the floor, so unknown)
+//   identify.md        both tables, the search's cost and time, and a warning for each
+//                      fitted channel the model does not explain
+//   recording_<name>.png  each recording's channels: recorded, before and after (plots on)
+//   plant_<muscle>.toml   for each muscle with a plant field among the parameters: its plant
+//                      file with the identified fields, a comment naming the recordings
+//   pneumatics.toml    the same for the pneumatics file's fields (pneumatics.<table>.<field>)
+//   plan.csv, plan.md  with --plan: the [[candidate]] experiments ranked (identify_plan.h)
 // All of them into the staging folder of `out` (published by the caller); the figures only
 // with `plots`.
 void write_identify_outputs(const IdentifyDefinition& def, const IdentifyResult& result,

@@ -1,18 +1,6 @@
 // identify_plan.h: `pamsim identify --plan`: which of the file's [[candidate]] experiments
-// would most shrink the parameters' uncertainty, at the identified point.
-//
-// Each recording's (and candidate's) sensitivities dy/du, its channels' samples against the
-// parameters in the unit box, come from central differences of kDifferenceStep (one-sided at
-// a bound; a sensor's parameter re-samples the same trial), divided by each channel's noise
-// floor: F = S^T S is its Fisher information for white noise of that floor. The information
-// now is the prior I (each parameter somewhere in its range: a standard deviation of the
-// whole range) plus the fitted recordings' and tensile tests' (a tensile test's floor: its
-// RMSE after the fit). A candidate is ranked by the D-optimal criterion, the gain
-// 0.5 ln det(F_now + F_c) - 0.5 ln det(F_now) (nats: the log of the factor by which the
-// confidence region's volume shrinks), and for each parameter the candidate that leaves the
-// smallest standard deviation sqrt([(F_now + F_c)^-1]_jj) dx/du is named. These are the
-// plain, white-noise figures: a recording's correlated residuals make every one of them
-// optimistic alike (identify_uncertainty.h), which does not change the ranking much.
+// would most shrink the parameters' uncertainty, at the identified point, by the D-optimal
+// criterion on the Fisher information (plan_candidates).
 #pragma once
 
 #include <string>
@@ -50,6 +38,18 @@ struct IdentifyPlan {
   std::vector<std::string> left_out;
 };
 
+// Each recording's (and candidate's) sensitivities dy/du, its channels' samples against the
+// parameters in the unit box, come from central differences of kDifferenceStep (one-sided at
+// a bound; a sensor's parameter re-samples the same trial), divided by each channel's noise
+// floor: F = S^T S is its Fisher information for white noise of that floor. The information
+// now is the prior I (each parameter somewhere in its range: a standard deviation of the
+// whole range) plus the fitted recordings' and tensile tests' (a tensile test's floor: its
+// RMSE after the fit). A candidate is ranked by the D-optimal criterion, the gain
+// 0.5 ln det(F_now + F_c) - 0.5 ln det(F_now) (nats: the log of the factor by which the
+// confidence region's volume shrinks), and for each parameter the candidate that leaves the
+// smallest standard deviation sqrt([(F_now + F_c)^-1]_jj) dx/du is named. These are the
+// plain, white-noise figures: a recording's correlated residuals make every one of them
+// optimistic alike (identify_uncertainty.h), which does not change the ranking much.
 // The file's candidates ranked at `result`'s point (its fits give the channels' noise
 // floors); the trials on `threads` threads.
 IdentifyPlan plan_candidates(const IdentifyDefinition& def, const IdentifyResult& result,

@@ -1,19 +1,8 @@
 // identify_residuals.h: what `pamsim identify` minimises. A recording's trial is
 // its scenario (the base, the file's overrides, the recording's `set`, the parameters) run
 // with the scenario's seed; each chosen channel's simulated column is interpolated linearly
-// at the recording's sample times (gaps skipped). A residual is
-//   sqrt(weight) (simulated - recorded) / sigma_c,
-// sigma_c the channel's noise floor (residual_floor: the file's `noise`, else estimated from
-// the recording), so that the cost is the chi-square of white noise at the floors: each
-// channel weighs by what it can tell (least squares as maximum likelihood), whatever its unit.
-// (The channel's standard deviation as sigma_c would let the noisy force and pressure
-// channels outweigh a precise angle: the example's fit would end with its angle 45 noise
-// floors off at a cost no higher than the truth's.) A tensile test's rows add
-// sqrt(weight) (plant force - recorded force) / sigma_F, the plant's force on each row's
-// stroke at its recorded pressure and length (tensile_test.h), sigma_F the recorded forces'
-// floor found the same way. Residual vectors are kept in the run's database
-// (identify_db.h), so a point is simulated once, whichever phase asks, and a resumed run
-// simulates nothing twice.
+// at the recording's sample times (gaps skipped), and each residual is its difference from
+// the recording in the channel's noise floors (IdentifyResiduals).
 #pragma once
 
 #include <cstdint>
@@ -70,6 +59,19 @@ std::vector<double> tensile_forces(const IdentifyDefinition& def, const Identify
 std::vector<double> channel_rmse(const IdentifyRecording& recording,
                                  const std::vector<std::vector<double>>& sampled);
 
+// A residual is
+//   sqrt(weight) (simulated - recorded) / sigma_c,
+// sigma_c the channel's noise floor (residual_floor: the file's `noise`, else estimated from
+// the recording), so that the cost is the chi-square of white noise at the floors: each
+// channel weighs by what it can tell (least squares as maximum likelihood), whatever its unit.
+// (The channel's standard deviation as sigma_c would let the noisy force and pressure
+// channels outweigh a precise angle: the example's fit would end with its angle 45 noise
+// floors off at a cost no higher than the truth's.) A tensile test's rows add
+// sqrt(weight) (plant force - recorded force) / sigma_F, the plant's force on each row's
+// stroke at its recorded pressure and length (tensile_test.h), sigma_F the recorded forces'
+// floor found the same way. Residual vectors are kept in the run's database
+// (identify_db.h), so a point is simulated once, whichever phase asks, and a resumed run
+// simulates nothing twice.
 class IdentifyResiduals {
  public:
   IdentifyResiduals(const IdentifyDefinition& def, IdentifyDb& db, int threads);

@@ -1,30 +1,7 @@
 // identify_uncertainty.h: how sure `pamsim identify` is of its result, from the residuals
-// and their Jacobian at the identified point (residual_statistics.h):
-//  - each parameter's standard error from the prewhitened HAC (sandwich) covariance, which
-//    holds for residuals correlated in time as a recording's are, its interval at the file's
-//    level (95 %: value(u +- 1.96 se_u)) through the parameter's scale (a log parameter's is
-//    asymmetric),
-//    and the plain s^2 (J^T J)^-1 error beside it; correlations above 0.9 from the same
-//    covariance. A parameter whose Jacobian column vanishes is not determined by the
-//    recordings and is kept out; a singular rest leaves all of them undetermined.
-//  - each recording's channel judged against its own noise: the noise floor the file gives,
-//    else the recorded channel's own (its second differences), the fit's RMS in multiples of
-//    it, and the Ljung-Box p-value of its residuals. A channel is "explained" when the RMS is
-//    at most the file's explained_noise_factor (default 3) times its floor: a model that
-//    explains a recording leaves the recording's noise and its own simulated noise, sqrt(2)
-//    times the floor, plus what the instruments add that is not white (creep, ringing,
-//    quantisation). Where a fitted channel
-//    is not explained, no standard error is to be trusted. A channel with too few samples
-//    to estimate its floor, and none given, is not judged (ChannelFit::judged): unknown.
-//  - each parameter's Jacobian column checked for numerical noise (Moré and Wild's test of a
-//    simulation's computational noise, SIAM J. Sci. Comput. 33(3), 2011): a chamber solver's
-//    error control or an instrument's quantiser makes the model's prediction a rough function
-//    of its parameters at the difference step's scale. Such a column measures the roughness as
-//    much as the parameter's effect, overstates the information and so understates the
-//    standard error (the worked example's dead time at the shipped solver tolerance: 2.4
-//    standard errors off the truth's 6 ms). So the errors are then taken again from each
-//    parameter's secant over its own interval (fill_interval_uncertainty), the roughness
-//    reported beside them.
+// and their Jacobian at the identified point (residual_statistics.h): each parameter's
+// standard error and interval (fill_uncertainty), each channel judged against its own noise
+// (judge_channel), each Jacobian column checked for numerical noise (kRoughnessLimit).
 #pragma once
 
 #include <cstddef>
@@ -38,6 +15,12 @@
 
 namespace pamsim {
 
+// Each parameter's standard error from the prewhitened HAC (sandwich) covariance, which
+// holds for residuals correlated in time as a recording's are, its interval at the file's
+// level (95 %: value(u +- 1.96 se_u)) through the parameter's scale (a log parameter's is
+// asymmetric), and the plain s^2 (J^T J)^-1 error beside it; correlations above 0.9 from the
+// same covariance. A parameter whose Jacobian column vanishes is not determined by the
+// recordings and is kept out; a singular rest leaves all of them undetermined.
 // Fills std_error, std_error_plain, interval_lo, interval_hi (at `level`, in (0, 1)),
 // identifiable and correlated of result->parameters (their values at `unit`) from the
 // residuals `r` and their Jacobian in the unit
@@ -47,6 +30,16 @@ void fill_uncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
                       const std::vector<std::size_t>& segments, const std::vector<double>& unit,
                       double level, IdentifyResult* result);
 
+// Each parameter's Jacobian column is checked for numerical noise (Moré and Wild's test of a
+// simulation's computational noise, SIAM J. Sci. Comput. 33(3), 2011): a chamber solver's
+// error control or an instrument's quantiser makes the model's prediction a rough function
+// of its parameters at the difference step's scale. Such a column measures the roughness as
+// much as the parameter's effect, overstates the information and so understates the
+// standard error (the worked example's dead time at the shipped solver tolerance: 2.4
+// standard errors off the truth's 6 ms). So the errors are then taken again from each
+// parameter's secant over its own interval (fill_interval_uncertainty), the roughness
+// reported beside them.
+//
 // Above this roughness (the RMS of r(u + h) - 2 r(u) + r(u - h) over that of
 // r(u + h) - r(u - h)) a parameter's standard error is not to be trusted. Independent
 // numerical noise of SD e on each trial, over a column h |J| long, gives
@@ -87,6 +80,15 @@ void fill_interval_uncertainty(const ResidualsAt& residuals_at, Eigen::MatrixXd 
                                const std::vector<double>& unit, double level,
                                IdentifyResult* result);
 
+// Each recording's channel is judged against its own noise: the noise floor the file gives,
+// else the recorded channel's own (its second differences), the fit's RMS in multiples of
+// it, and the Ljung-Box p-value of its residuals. A channel is "explained" when the RMS is
+// at most the file's explained_noise_factor (default 3) times its floor: a model that
+// explains a recording leaves the recording's noise and its own simulated noise, sqrt(2)
+// times the floor, plus what the instruments add that is not white (creep, ringing,
+// quantisation). Where a fitted channel is not explained, no standard error is to be
+// trusted. A channel with too few samples to estimate its floor, and none given, is not
+// judged (ChannelFit::judged): unknown.
 // A channel's noise floor (`given`, or NaN: estimated), RMS in floors, residual whiteness and
 // verdict, from its recorded samples (NaN: a gap) and the fit's `after` at the same times.
 // Explained: the RMS at most `explained_factor` floors.

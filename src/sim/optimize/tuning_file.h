@@ -1,22 +1,7 @@
 // tuning_file.h: a tuning file (`pamsim tune`) as data: the base scenario, the free
 // parameters with bounds (search_space.h), the objectives and constraints built from trial
 // metrics averaged over seeds and sensor-noise levels, references to check beside the best,
-// and the algorithm (optimizer.h).
-//
-// Tuning file keys (paths relative to the file):
-//   base              scenario file, required
-//   overrides         scenario overrides at every evaluation ("key=value" strings)
-//   algorithm, generations, population, seed, seeds, held_out_seeds: rows of
-//                     tune_search_table below (`pamsim keys --tune`)
-//   noise_scales      sensors.noise_scale levels each evaluation averages over, each in
-//                     [0, 1000] once; default [1]
-//   [[parameter]]     key (a scenario key), from < to, scale = "linear" | "log" (from > 0)
-//   [[objective]]     metric (a summary metric), maximize = false
-//   [[constraint]]    metric, min and/or max: on the metric's mean over an evaluation's trials
-//   [[reference]]     name, values = [one per parameter]: settings checked beside the best
-//   [[randomize]]     key and distribution drawn per seed (sim/scenario/randomize.h): robust
-//   tuning,
-//                     each evaluation's k-th seed on the same drawn arm; randomize_seed
+// and the algorithm (optimizer.h). The file's keys are listed at load_tune_definition.
 #pragma once
 
 #include <cstdint>
@@ -91,6 +76,20 @@ const std::vector<EntryKey>& objective_entry_keys();
 const std::vector<EntryKey>& constraint_entry_keys();
 const std::vector<EntryKey>& reference_entry_keys();
 
+// Tuning file keys (paths relative to the file):
+//   base              scenario file, required
+//   overrides         scenario overrides at every evaluation ("key=value" strings)
+//   algorithm, generations, population, seed, seeds, held_out_seeds: rows of
+//                     tune_search_table above (`pamsim keys --tune`)
+//   noise_scales      sensors.noise_scale levels each evaluation averages over, each in
+//                     [0, 1000] once; default [1]
+//   [[parameter]]     key (a scenario key), from < to, scale = "linear" | "log" (from > 0)
+//   [[objective]]     metric (a summary metric), maximize = false
+//   [[constraint]]    metric, min and/or max: on the metric's mean over an evaluation's trials
+//   [[reference]]     name, values = [one per parameter]: settings checked beside the best
+//   [[randomize]]     key and distribution drawn per seed (sim/scenario/randomize.h): robust
+//                     tuning, each evaluation's k-th seed on the same drawn arm;
+//                     randomize_seed
 // Reads and validates the file, the base scenario (with the overrides, and with each
 // parameter at both bounds) and the metric names. Throws InputError "<file>: <key> <problem>".
 TuneDefinition load_tune_definition(const std::string& path);

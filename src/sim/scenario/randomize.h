@@ -2,17 +2,7 @@
 // for questions such as "does the tuned reflex keep the mass if the braid's friction is 30 %
 // higher and the wall 10 % thinner?". Each table names a scenario key (any numeric key: a
 // plant's or the pneumatics file's field, a body's mass, a joint's loss, ...) and how it is
-// drawn:
-//   key          = "muscles.agonist.plant.geometry.wall_thickness_mm"
-//   distribution = "uniform"     from, to (from < to)
-//                  "normal"      mean, stddev (> 0)
-//                  "lognormal"   median (> 0), sigma (> 0: the logarithm's standard deviation)
-//   min, max     optional, normal and lognormal: truncation (a draw outside is drawn again);
-//                the range must hold at least 1 % of the distribution
-// A trial's draws depend on the sweep's randomize_seed and the trial's seed index (trial t:
-// t % seeds) alone, never on its point, thread, shard or rank: every point sees the same
-// `seeds` drawn arms (common random numbers, as with the noise seeds), and a sweep draws the
-// same values wherever it runs. The values are stored with the trial (a column per key,
+// drawn (Randomization). The values are stored with the trial (a column per key,
 // results_db.h), which is what `pamsim replay` runs again.
 #pragma once
 
@@ -32,6 +22,13 @@ class ConfigReader;  // base/config_reader.h
 
 enum class Distribution { kUniform, kNormal, kLogNormal };
 
+// A [[randomize]] table:
+//   key          = "muscles.agonist.plant.geometry.wall_thickness_mm"
+//   distribution = "uniform"     from, to (from < to)
+//                  "normal"      mean, stddev (> 0)
+//                  "lognormal"   median (> 0), sigma (> 0: the logarithm's standard deviation)
+//   min, max     optional, normal and lognormal: truncation (a draw outside is drawn again);
+//                the range must hold at least 1 % of the distribution
 struct Randomization {
   std::string key;
   Distribution distribution = Distribution::kUniform;
@@ -56,6 +53,10 @@ const std::vector<EntryKey>& randomize_entry_keys();
 void read_randomizations(ConfigReader& in, std::vector<Randomization>* randomize,
                          std::uint64_t* randomize_seed);
 
+// A trial's draws depend on the sweep's randomize_seed and the trial's seed index (trial t:
+// t % seeds) alone, never on its point, thread, shard or rank: every point sees the same
+// `seeds` drawn arms (common random numbers, as with the noise seeds), and a sweep draws the
+// same values wherever it runs.
 // The values of the trials with seed index `seed_index`, one per randomization, in order.
 std::vector<double> draw_values(const std::vector<Randomization>& randomize,
                                 std::uint64_t randomize_seed, std::int64_t seed_index);

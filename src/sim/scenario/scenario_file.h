@@ -6,19 +6,7 @@
 // schedules' in schedule_key_tables.h, the sensors' and instruments' in sensing/, a controller
 // kind's in its own file); only the keys that hand a value on to another file (a plant as a
 // table of its fields, pneumatics.*) are described in scenario_key_docs.cc.
-// `pamsim keys` prints them all.
-// Shorthands kept from pamsim 0.1 (their keys keep their meaning):
-//   drop.{enabled, mass_kg, height_m, time_s} (and body = "ball", basket = "basket",
-//     site = "basket_floor"): the falling mass: bodies.<body>.mass_kg, a hold of the body
-//     height_m above the site, events "release" (at time_s, if enabled) and "impact" (the
-//     body touches the basket, after the release); a pamsim 0.1 file (muscles given by
-//     model.<actuator>_params, no holds or events) without a [drop] table gets the drop
-//     with these defaults, as it did
-//   model.<actuator>_params = muscles.<actuator>.params (the agonist and antagonist of
-//     these files are labelled "ago" and "anta", as before)
-//   pressure.<actuator>_MPa = a constant muscles.<actuator>.command
-// A shorthand and its long form may not both be given in the file; a --set of the
-// shorthand replaces the long form.
+// `pamsim keys` prints them all. pamsim 0.1's shorthands are listed at load_scenario.
 #pragma once
 
 #include <string>
@@ -29,6 +17,18 @@
 
 namespace pamsim {
 
+// Shorthands of pamsim 0.1 files (their keys keep their meaning):
+//   drop.{enabled, mass_kg, height_m, time_s} (and body = "ball", basket = "basket",
+//     site = "basket_floor"): the falling mass: bodies.<body>.mass_kg, a hold of the body
+//     height_m above the site, events "release" (at time_s, if enabled) and "impact" (the
+//     body touches the basket, after the release); a pamsim 0.1 file (muscles given by
+//     model.<actuator>_params, no holds or events) without a [drop] table gets the drop
+//     with these defaults
+//   model.<actuator>_params = muscles.<actuator>.params (the agonist and antagonist of
+//     these files are labelled "ago" and "anta")
+//   pressure.<actuator>_MPa = a constant muscles.<actuator>.command
+// A shorthand and its long form may not both be given in the file; a --set of the
+// shorthand replaces the long form.
 // Throws InputError "<file>: <key> <problem>" on the first error.
 Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides = {});
 // The same from the scenario's text, as if read from `path` (relative paths resolve against

@@ -1,18 +1,9 @@
-// results_db.h: a sweep's results in SQLite, one file per sweep.
-//   meta(key, value)   format, the sweep definition (canonical JSON, sweep.h), trials (the
-//                      sweep's count), pamsim_version, git_commit, mujoco_version,
-//                      sundials_version, sweep_file, base_path, created_utc; shard ("I/N") in
-//                      a shard's database; merged_from in a merged one; invocations (a JSON
-//                      array: each `pamsim sweep` that ran trials into it, with its command
-//                      line, threads, start, wall time and trials run: provenance.h)
-//   trials(trial INTEGER PRIMARY KEY, point, seed_index, seed, <one column per axis key>,
-//          <one per [[randomize]] key: the value drawn for the trial>,
-//          status, message, <every metric of summary.json>; NULL where undefined, and all
-//          NULL for a trial that failed to run)
-// A new database is built under a temp name and renamed into place, so a half-made file never
-// exists. Results are committed in transactions (WAL journal, synchronous=FULL): a process
-// killed at any moment, or a power loss, loses at most the trials not yet committed, and the
-// trial primary key makes a repeated trial an error rather than a duplicate row.
+// results_db.h: a sweep's results in SQLite, one file per sweep (its tables: meta and
+// trials, listed at ResultsDb). A new database is built under a temp name and renamed into
+// place, so a half-made file never exists. Results are committed in transactions (WAL
+// journal, synchronous=FULL): a process killed at any moment, or a power loss, loses at most
+// the trials not yet committed, and the trial primary key makes a repeated trial an error
+// rather than a duplicate row.
 #pragma once
 
 #include <cstdint>
@@ -43,6 +34,17 @@ struct DbValue {
   std::string text;
 };
 
+// The tables:
+//   meta(key, value)   format, the sweep definition (canonical JSON, sweep.h), trials (the
+//                      sweep's count), pamsim_version, git_commit, mujoco_version,
+//                      sundials_version, sweep_file, base_path, created_utc; shard ("I/N") in
+//                      a shard's database; merged_from in a merged one; invocations (a JSON
+//                      array: each `pamsim sweep` that ran trials into it, with its command
+//                      line, threads, start, wall time and trials run: provenance.h)
+//   trials(trial INTEGER PRIMARY KEY, point, seed_index, seed, <one column per axis key>,
+//          <one per [[randomize]] key: the value drawn for the trial>,
+//          status, message, <every metric of summary.json>; NULL where undefined, and all
+//          NULL for a trial that failed to run)
 class ResultsDb {
  public:
   // Creates `path` for `sweep` (or one shard of it); throws InputError if it exists or

@@ -3,22 +3,7 @@
 // into points (full grid, uniform random, or Latin hypercube) and the seeds per point.
 // Trial t is point t / seeds with seed base.seed + t % seeds, so every point sees the same
 // noise seeds (common random numbers: differences between points are not sampling noise).
-//
-// Sweep file keys:
-//   base         scenario file (path, relative to the sweep file)            required
-//   design, seeds, max_trials, and samples, design_seed (random and lhs only): rows of
-//                sweep_design_table and sweep_sampling_table below (`pamsim keys --sweep`)
-//   [fixed]      scenario keys set at every point, as in the scenario: [fixed.sim] duration_s = 2
-//   [[axis]]     key = "reflex.v_thr_mm_s", and either
-//                  values = [..]                       (grid only), or
-//                  from, to, count, scale = "linear"|"log"   (count for grid only)
-//                or a case axis (grid only): name = "regulator" (its column) and one or more
-//                  [[axis.case]] name = "ITV2000 class", set = { "valve.dead_time_ms" = 2.0 }
-//                  (named bundles of scenario keys; an empty set is the base scenario's);
-//                  from = { file = "f.toml", table = "t" } takes a case's keys from a table
-//                  of another file (relative to the sweep file), before its set
-//   [[randomize]] key and a distribution drawn per trial (sim/scenario/randomize.h), e.g. a plant's
-//   field randomize_seed  seed of those draws, >= 0                                  default 1
+// The file's keys are listed at load_sweep.
 #pragma once
 
 #include <cstdint>
@@ -142,6 +127,21 @@ const std::vector<EntryKey>& axis_entry_keys();
 const std::vector<EntryKey>& case_axis_entry_keys();
 const std::vector<EntryKey>& case_entry_keys();
 
+// Sweep file keys:
+//   base         scenario file (path, relative to the sweep file)            required
+//   design, seeds, max_trials, and samples, design_seed (random and lhs only): rows of
+//                sweep_design_table and sweep_sampling_table above (`pamsim keys --sweep`)
+//   [fixed]      scenario keys set at every point, as in the scenario: [fixed.sim] duration_s = 2
+//   [[axis]]     key = "reflex.v_thr_mm_s", and either
+//                  values = [..]                       (grid only), or
+//                  from, to, count, scale = "linear"|"log"   (count for grid only)
+//                or a case axis (grid only): name = "regulator" (its column) and one or more
+//                  [[axis.case]] name = "ITV2000 class", set = { "valve.dead_time_ms" = 2.0 }
+//                  (named bundles of scenario keys; an empty set is the base scenario's);
+//                  from = { file = "f.toml", table = "t" } takes a case's keys from a table
+//                  of another file (relative to the sweep file), before its set
+//   [[randomize]] key and a distribution drawn per trial (sim/scenario/randomize.h), e.g. a plant's
+//   field randomize_seed  seed of those draws, >= 0                                  default 1
 // Reads and validates a sweep file (sweep_file.cc), including every point's scenario. Throws
 // InputError
 // "<file>: <key> <problem>" for the first problem found.

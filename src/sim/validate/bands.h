@@ -7,13 +7,6 @@
 // the rigs, with the paper's value beside, inside or outside that range. With
 // --sensitivity, each bracket is instead set alone to its ends (the others at their
 // brackets' middles), so a lab reads which part of its rig to measure first.
-//
-// The brackets are data, a protocol file's [[bracket]] tables:
-//   name     what is unknown ("board creep"), unique; no comma, quote, bar, tab or newline
-//   key      the scenario key it sets (any numeric key of the rig's scenario)
-//   from, to the bracket, from < to, in the key's unit; drawn uniformly
-//   source   where the bracket comes from (a datasheet, a material's data), required
-// and bracket_seed (>= 0, default 1) fixes the draws: rig r's values depend on it and r alone.
 #pragma once
 
 #include <cstdint>
@@ -27,6 +20,12 @@
 
 namespace pamsim {
 
+// The brackets are data, a protocol file's [[bracket]] tables:
+//   name     what is unknown ("board creep"), unique; no comma, quote, bar, tab or newline
+//   key      the scenario key it sets (any numeric key of the rig's scenario)
+//   from, to the bracket, from < to, in the key's unit; drawn uniformly
+//   source   where the bracket comes from (a datasheet, a material's data), required
+// and bracket_seed (>= 0, default 1) fixes the draws: rig r's values depend on it and r alone.
 struct Bracket {
   std::string name, key, source;
   double from = 0.0, to = 0.0;

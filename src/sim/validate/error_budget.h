@@ -1,21 +1,8 @@
-// error_budget.h: what each of the hardware's error sources costs the length estimate (issue
-// 25, item 6). A validation protocol (length_estimation.h, reaching.h) is run with no source
-// on, with every source on, with each source alone and with each off in turn; per case (a PAM,
-// a muscle's estimate) the budget gives the max and RMS error of every run and each source's
-// share of the RMS error, in quadrature:
-//   alone:       sqrt(RMSE(only s)^2 - RMSE(none)^2)
-//   by removal:  sqrt(RMSE(all)^2 - RMSE(all but s)^2)
-// (zero where the difference is negative: a source that lowers the error). Were the sources'
-// errors independent and additive, both would be equal and RMSE(all)^2 would be RMSE(none)^2
-// plus the sum of the shares' squares; the budget prints how close it comes.
-//
-// The sources are data, a protocol file's [[budget_source]] tables:
-//   name   what the source is ("pressure sensor"), unique; no comma, quote, bar, tab or
-//          newline (it is a cell of the CSV, the Markdown and the chart's data)
-//   on     the scenario overrides ("key=value") that turn it on, at least one
-//   off    those that turn it off; default none (the scenario's own setting is off)
-// Every run sets every source's `on` or `off` after the user's --set, so a --set of a key
-// that a source sets is refused.
+// error_budget.h: what each of the hardware's error sources costs the length estimate. A
+// validation protocol (length_estimation.h, reaching.h) is run with no source on, with every
+// source on, with each source alone and with each off in turn; per case (a PAM, a muscle's
+// estimate) the budget gives the max and RMS error of every run and each source's share of
+// the RMS error, in quadrature (ErrorBudget::share_alone, share_by_removal).
 #pragma once
 
 #include <functional>
@@ -27,6 +14,13 @@
 
 namespace pamsim {
 
+// The sources are data, a protocol file's [[budget_source]] tables:
+//   name   what the source is ("pressure sensor"), unique; no comma, quote, bar, tab or
+//          newline (it is a cell of the CSV, the Markdown and the chart's data)
+//   on     the scenario overrides ("key=value") that turn it on, at least one
+//   off    those that turn it off; default none (the scenario's own setting is off)
+// Every run sets every source's `on` or `off` after the user's --set, so a --set of a key
+// that a source sets is refused.
 struct BudgetSource {
   std::string name;
   std::vector<std::string> on, off;
@@ -73,7 +67,12 @@ struct ErrorBudget {
   std::vector<std::vector<ErrorPct>> errors;  // [config][case]
 
   const ErrorPct& at(BudgetConfig::Kind kind, int source, std::size_t c) const;
-  // A source's share of case c's RMS error, alone and by removal (see the top).
+  // A source's share of case c's RMS error, alone and by removal, in quadrature:
+  //   alone:       sqrt(RMSE(only s)^2 - RMSE(none)^2)
+  //   by removal:  sqrt(RMSE(all)^2 - RMSE(all but s)^2)
+  // (zero where the difference is negative: a source that lowers the error). Were the
+  // sources' errors independent and additive, both would be equal and RMSE(all)^2 would be
+  // RMSE(none)^2 plus the sum of the shares' squares; the budget prints how close it comes.
   double share_alone(int source, std::size_t c) const;
   double share_by_removal(int source, std::size_t c) const;
 };

@@ -3,23 +3,8 @@
 // tensile test on its plant (pam_actuator/tensile_test.h), the least-squares fits of Eq. (3),
 // (4) and (5) (identification.h), then the dynamic test on the pulley rig, one trial per
 // fitted law and weight, the length estimated by that law against the rig's true length.
-// The protocol is a file (scenarios/validate_length_estimation.toml); its keys, paths
-// relative to it:
-//   rig                 the dynamic test's scenario (the pulley rig), required
-//   overrides           scenario overrides for every dynamic trial ("key=value" strings)
-//   laws                ["eq3", "eq4", "eq5"] or a subset
-//   weights_kg          the hanging weights, each in (0, 1000]
-//   [tensile]           step_mm (> 0), noise_pressure_MPa, noise_force_N, noise_length_mm
-//                       (>= 0), seed (>= 0), sensors_from: a PAM file whose [strain_gauge]
-//                       (Eq. (8)) the fitted estimators get
-//   [pams.<NAME>]       plant (file), bladder_diameter_mm (Table I, > 0), pressures_MPa (the
-//                       test's, >= 3 distinct for Eq. (4)), max_deformation_mm (> step),
-//                       offset_MPa (the sine's, Eq. (6)-(7)), paper = { eq3 = [max, RMSE],
-//                       ... } (Table III, % of length; optional)
-//   [[budget_source]]   the hardware's error sources for --budget (error_budget.h)
-//   [[bracket]], bracket_seed  the rig's unsized parts for --bands, --sensitivity (bands.h)
-// Each PAM's dynamic trials set muscles.pam.plant, muscles.pam.params (the fit, written as
-// a PAM file), bodies.weight.mass_kg and muscles.pam.command.offset_MPa on the rig.
+// The protocol is a file (scenarios/validate_length_estimation.toml; its keys at
+// load_length_validation).
 #pragma once
 
 #include <array>
@@ -69,6 +54,22 @@ struct LengthValidationSpec {
   std::uint64_t bracket_seed = 1;
 };
 
+// The protocol file's keys, paths relative to it:
+//   rig                 the dynamic test's scenario (the pulley rig), required
+//   overrides           scenario overrides for every dynamic trial ("key=value" strings)
+//   laws                ["eq3", "eq4", "eq5"] or a subset
+//   weights_kg          the hanging weights, each in (0, 1000]
+//   [tensile]           step_mm (> 0), noise_pressure_MPa, noise_force_N, noise_length_mm
+//                       (>= 0), seed (>= 0), sensors_from: a PAM file whose [strain_gauge]
+//                       (Eq. (8)) the fitted estimators get
+//   [pams.<NAME>]       plant (file), bladder_diameter_mm (Table I, > 0), pressures_MPa (the
+//                       test's, >= 3 distinct for Eq. (4)), max_deformation_mm (> step),
+//                       offset_MPa (the sine's, Eq. (6)-(7)), paper = { eq3 = [max, RMSE],
+//                       ... } (Table III, % of length; optional)
+//   [[budget_source]]   the hardware's error sources for --budget (error_budget.h)
+//   [[bracket]], bracket_seed  the rig's unsized parts for --bands, --sensitivity (bands.h)
+// Each PAM's dynamic trials set muscles.pam.plant, muscles.pam.params (the fit, written as
+// a PAM file), bodies.weight.mass_kg and muscles.pam.command.offset_MPa on the rig.
 // Reads and validates the protocol, with `protocol_overrides` ("key=value" of the protocol
 // file's own keys) applied first; `only` keeps the named PAMs, in that order (empty: all).
 // Throws InputError "<file>: <key> <problem>" (or "--pams: unknown PAM X, the file has A, B").

@@ -2,25 +2,9 @@
 // IV-B, Table V, Fig. 7): the arm's reaching scenario repeated over seeds; the model-based
 // length estimate (Eq. (9)-(10)) and the fiber sensor against the encoder, per muscle, over
 // a window (the ramps) and before / after the muscle's slack episode. The protocol is a file
-// (scenarios/validate_reaching.toml); its keys, paths relative to it:
-//   scenario      the reaching scenario, required (per muscle: length_<m>_mm, the encoder;
-//                 length_est_<m>_mm; fiber_rate_<m>_mm_s; force_<m>_N, the line's tension)
-//   trials        repetitions, seeds seed .. seed + trials - 1, in [1, 1000]; default 5
-//   window_s      [start, end] of the comparison [s], 0 <= start < end
-//   min_slack_s   a slack episode starts where a line that was taut inside the window has
-//                 zero tension for at least this long [s], > 0; default 0.1. "Before" is
-//                 from the line's first taut sample in the window to the episode, "after"
-//                 from the episode to the window's end; a trial without an episode adds to
-//                 neither (only to "all")
-//   [paper]       <method>_<muscle>[_before_slack|_after_slack] = [max, RMSE] (% of
-//                 length), method "model" or "fiber", muscle the scenario's muscle name
-//   [[budget_source]] the hardware's error sources for --budget (error_budget.h)
-//   [[bracket]], bracket_seed  the rig's unsized parts for --bands, --sensitivity (bands.h)
-//   base          another protocol file this one changes (reaching_protocol.cc): every key
-//                 from it, this file's replacing them, a [[budget_source]] or [[bracket]] of
-//                 the same name in place; then scenario is optional
-// The fiber sensor reads only the rate of length change: its length is the rate integrated
-// from the encoder's length at the window's start (the paper calibrated it so).
+// (scenarios/validate_reaching.toml; its keys at load_reaching_validation). The fiber sensor
+// reads only the rate of length change: its length is the rate integrated from the encoder's
+// length at the window's start (the paper calibrated it so).
 #pragma once
 
 #include <cstdint>
@@ -49,6 +33,23 @@ struct ReachingValidationSpec {
   std::uint64_t bracket_seed = 1;
 };
 
+// The protocol file's keys, paths relative to it:
+//   scenario      the reaching scenario, required (per muscle: length_<m>_mm, the encoder;
+//                 length_est_<m>_mm; fiber_rate_<m>_mm_s; force_<m>_N, the line's tension)
+//   trials        repetitions, seeds seed .. seed + trials - 1, in [1, 1000]; default 5
+//   window_s      [start, end] of the comparison [s], 0 <= start < end
+//   min_slack_s   a slack episode starts where a line that was taut inside the window has
+//                 zero tension for at least this long [s], > 0; default 0.1. "Before" is
+//                 from the line's first taut sample in the window to the episode, "after"
+//                 from the episode to the window's end; a trial without an episode adds to
+//                 neither (only to "all")
+//   [paper]       <method>_<muscle>[_before_slack|_after_slack] = [max, RMSE] (% of
+//                 length), method "model" or "fiber", muscle the scenario's muscle name
+//   [[budget_source]] the hardware's error sources for --budget (error_budget.h)
+//   [[bracket]], bracket_seed  the rig's unsized parts for --bands, --sensitivity (bands.h)
+//   base          another protocol file this one changes (reaching_protocol.cc): every key
+//                 from it, this file's replacing them, a [[budget_source]] or [[bracket]] of
+//                 the same name in place; then scenario is optional
 // Throws InputError "<file>: <key> <problem>". `protocol_overrides` ("key=value" of the
 // protocol file's own keys) are applied first.
 ReachingValidationSpec load_reaching_validation(
