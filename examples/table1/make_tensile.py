@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""make_tensile.py: Table IV's two spring laws (seeds/000, Eq. (2)-(3)) as the tensile tests
-the lab fitted them to, for identifying the arm's muscles as Table I builds them (issue 25,
-item 1; docs/physics.md, "The muscles as Table I builds them").
+"""make_tensile.py: Table IV's two spring laws (Yoshida and Hosoda [1], Eq. (2)-(3)) as the
+tensile tests the lab fitted them to, for identifying the arm's muscles as Table I builds them
+(docs/physics.md, "The muscles as Table I builds them").
 
 The paper publishes the fits, not the rows. This writes the rows the fits give at the
 protocol scripts/fit-estimators.sh runs on the plants (the arm's 0.2-0.7 MPa in 0.1 MPa
