@@ -109,6 +109,43 @@ struct LoadedScenario {
         model(std::make_unique<TrialModel>(load_trial_model(scenario))) {}
 };
 
+// a tuning database's evaluations as a list of dicts
+py::list read_tune(const std::string& path) {
+  const TuneDb db = TuneDb::open_existing(path);
+  py::list out;
+  for (const TuneEvaluation& e : db.evaluations()) {
+    py::dict d;
+    d["evaluation"] = e.index;
+    d["values"] = e.values;
+    d["fitness"] = e.fitness;
+    d["trials"] = e.trials;
+    d["ok"] = e.ok;
+    d["objectives"] = e.objectives;
+    d["violation"] = e.violation;
+    out.append(d);
+  }
+  return out;
+}
+
+// trial_channel_table() as a list of dicts
+py::list channel_rows() {
+  py::list out;
+  for (const ChannelRow& r : trial_channel_table()) {
+    py::dict d;
+    d["name"] = r.name;
+    d["unit"] = r.unit;
+    d["to_si"] = r.to_si;
+    d["divisor"] = r.divisor;
+    d["meaning"] = r.meaning;
+    d["source"] = r.source;
+    d["per_muscle"] = r.per_muscle() || r.controller_channels;
+    d["measured"] = r.measured;
+    d["quantity"] = r.quantity();
+    out.append(d);
+  }
+  return out;
+}
+
 PyResult run_scenario(const std::string& path, const py::object& overrides,
                       std::optional<std::uint64_t> seed) {
   LoadedScenario loaded(path, overrides);
@@ -129,7 +166,8 @@ class PyTrial {
       : loaded_(path, overrides),
         seed_(seed.value_or(loaded_.scenario.seed)),
         trial_(std::make_unique<SteppedTrial>(*loaded_.model, loaded_.scenario, seed_)),
-        commands_pa_(loaded_.model->muscles.size()) {
+        commands_pa_(loaded_.model->muscles.size()),
+        layout_(trial_log_layout(*loaded_.model, loaded_.scenario)) {
     for (const BoundMuscle& b : loaded_.model->muscles) labels_.push_back(b.label);
   }
 
@@ -165,49 +203,25 @@ class PyTrial {
     return units::pa_to_mpa(loaded_.scenario.pneumatics.command_max_gauge_pa);
   }
 
+  // The state now as the log's columns name it (trial_channels.h), each quantity by its name
+  // without the muscle ("p_meas_MPa": one value per muscle; "angle_deg": one value), in the
+  // log's units and bits; "measured" holds what a controller on the robot sees.
   py::dict observe() const {
     const TrialObservation o = trial_->observe();
-    const bool hinge = loaded_.model->joint.hinge;
-    py::dict out;
-    out["time_s"] = o.time_s;
+    py::dict out, measured;
     out["steps"] = o.steps;
-    out[hinge ? "angle_deg" : "position_mm"] =
-        hinge ? units::rad_to_deg(o.joint_position) : units::m_to_mm(o.joint_position);
-    out[hinge ? "angular_velocity_deg_s" : "velocity_mm_s"] =
-        hinge ? units::rad_to_deg(o.joint_velocity) : units::m_to_mm(o.joint_velocity);
     out["muscles"] = labels_;
-    out["pressure_MPa"] = scaled(o.pressure_pa, 1e-6);
-    out["command_MPa"] = scaled(o.command_pa, 1e-6);
-    out["force_N"] = scaled(o.force_n, 1.0);
-    out["length_mm"] = scaled(o.length_m, 1e3);
-    out["length_est_mm"] = scaled(o.length_est_m, 1e3);
+    for (const ObservedQuantity& q : observed_quantities(layout_, o)) {
+      out[q.name.c_str()] = q.per_muscle ? py::object(as_array(q.values)) : py::float_(q.values[0]);
+      if (q.measured) measured[q.name.c_str()] = q.values;
+    }
+    // the names this module gave these before the channel table
+    out["pressure_MPa"] = out["p_MPa"];
+    out["command_MPa"] = out["p_cmd_MPa"];
+    if (out.contains("omega_deg_s")) out["angular_velocity_deg_s"] = out["omega_deg_s"];
     out["reflex_active"] = windows_open(o, "reflex_");
-    out["measured"] = measured(o);
+    out["measured"] = measured;
     return out;
-  }
-
-  // What the controller saw at the last control tick, in the log's units and by its columns'
-  // names (trajectory.csv's p_meas, force_meas, length_est, velocity_est, fiber_rate,
-  // pressure_sensor and gauge): one value per muscle each, NaN where an instrument is absent.
-  static py::dict measured(const TrialObservation& o) {
-    // the log's own conversions (trial_step.cc), so that the values are its bits
-    const auto same = [](double v) { return v; };
-    const auto column = [&](auto field, auto convert) {
-      std::vector<double> v;
-      for (const MuscleReading& r : o.readings) v.push_back(convert(r.*field));
-      return v;
-    };
-    std::vector<double> velocity;
-    for (double v : o.velocity_est_m_s) velocity.push_back(units::m_to_mm(v));
-    py::dict m;
-    m["p_meas_MPa"] = column(&MuscleReading::pressure_meas_pa, units::pa_to_mpa);
-    m["force_meas_N"] = column(&MuscleReading::force_meas_n, same);
-    m["length_est_mm"] = column(&MuscleReading::length_est_m, units::m_to_mm);
-    m["velocity_est_mm_s"] = velocity;
-    m["fiber_rate_mm_s"] = column(&MuscleReading::fiber_rate_m_s, units::m_to_mm);
-    m["pressure_sensor_V"] = column(&MuscleReading::pressure_sensor_v, same);
-    m["gauge_V"] = column(&MuscleReading::gauge_v, same);
-    return m;
   }
 
   PyResult finish() {
@@ -238,10 +252,9 @@ class PyTrial {
     return open;
   }
 
-  static Array scaled(const std::vector<double>& v, double factor) {
+  static Array as_array(const std::vector<double>& v) {
     Array a(static_cast<py::ssize_t>(v.size()));
-    for (std::size_t i = 0; i < v.size(); ++i)
-      a.mutable_at(static_cast<py::ssize_t>(i)) = v[i] * factor;
+    for (std::size_t i = 0; i < v.size(); ++i) a.mutable_at(static_cast<py::ssize_t>(i)) = v[i];
     return a;
   }
   std::string join_labels() const {
@@ -254,6 +267,7 @@ class PyTrial {
   std::uint64_t seed_;
   std::unique_ptr<SteppedTrial> trial_;
   std::vector<double> commands_pa_;
+  LogLayout layout_;
   std::vector<std::string> labels_;
   FrameRenderer frames_;
 };
@@ -361,26 +375,13 @@ PYBIND11_MODULE(_pamsim, m) {
            "The state now as an RGB frame, a (height, width, 3) uint8 array (pamsim render's "
            "scene without its overlays)");
 
+  m.def("channels", &channel_rows,
+        "trajectory.csv's channels as rows: name ('{m}': a muscle's label), unit, to_si, "
+        "divisor (a column's value is SI * divisor / to_si), meaning, source, per_muscle, "
+        "measured (what a controller on the robot sees), quantity (the observation's name)");
   m.def("read_sweep", &read_sweep, py::arg("path"),
         "A sweep database's trials: {column: values} (numbers as float arrays)");
-  m.def("read_tune",
-        [](const std::string& path) {
-          const TuneDb db = TuneDb::open_existing(path);
-          py::list out;
-          for (const TuneEvaluation& e : db.evaluations()) {
-            py::dict d;
-            d["evaluation"] = e.index;
-            d["values"] = e.values;
-            d["fitness"] = e.fitness;
-            d["trials"] = e.trials;
-            d["ok"] = e.ok;
-            d["objectives"] = e.objectives;
-            d["violation"] = e.violation;
-            out.append(d);
-          }
-          return out;
-        },
-        py::arg("path"), "A tuning database's evaluations, in order");
+  m.def("read_tune", &read_tune, py::arg("path"), "A tuning database's evaluations, in order");
 
   m.def("_cxx_force_loop_s", &cxx_force_loop_s);
   m.def("_cxx_step_s", &cxx_step_s, py::arg("scenario"), py::arg("overrides"), py::arg("periods"));

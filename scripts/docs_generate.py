@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """docs_generate.py PAMSIM OUT: the documentation's reference pages, written from the program
 itself so that they cannot go stale: every key of a scenario and of the other files
-(`pamsim keys --json`, one table per kind), every command's options (`pamsim <command>
+(`pamsim keys --json`, one table per kind), trajectory.csv's channels (`pamsim keys
+--channels`), every command's options (`pamsim <command>
 --help`), the references (CITATION.cff), and the C++ library's public headers with their
 opening comments (CMakeLists.txt's PAMSIM_PUBLIC_HEADERS). scripts/docs.sh runs it before
 Sphinx.
@@ -57,6 +58,26 @@ def key_list(pamsim, flags):
             "",
         ]
     return "\n".join(lines), len(rows)
+
+
+def channel_list(pamsim, *args):
+    """trajectory.csv's channels (`pamsim keys --channels [SCENARIO] --json`) as a table."""
+    rows = json.loads(
+        subprocess.run(
+            [pamsim, "keys", "--channels", *args, "--json"],
+            check=True,
+            capture_output=True,
+            text=True,
+        ).stdout
+    )
+    lines = ["| column | unit | SI per unit | meaning | from |", "|---|---|---|---|---|"]
+    for r in rows:
+        source = r["source"] + (" (measured)" if r["measured"] else "")
+        lines.append(
+            f"| `{r['column']}` | {prose(r['unit'])} | {r['si_per_unit']:.6g} | "
+            f"{prose(r['meaning'])} | {prose(source)} |"
+        )
+    return "\n".join(lines) + "\n", len(rows)
 
 
 def commands(pamsim):
@@ -166,6 +187,16 @@ def main():
         )
     atomic_write(os.path.join(out, "commands.md"), commands(pamsim))
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    table, n = channel_list(pamsim)
+    atomic_write(
+        os.path.join(out, "channels.md"),
+        f"{n} rows, as `pamsim keys --channels` lists them.\n\n{table}",
+    )
+    table, n = channel_list(pamsim, os.path.join(root, "scenarios", "drop_mass.toml"))
+    atomic_write(
+        os.path.join(out, "channels_drop_mass.md"),
+        f"{n} columns, as `pamsim keys --channels scenarios/drop_mass.toml` lists them.\n\n{table}",
+    )
     atomic_write(os.path.join(out, "references.md"), references(os.path.join(root, "CITATION.cff")))
     atomic_write(os.path.join(out, "cpp_api.md"), cpp_api(root))
 

@@ -24,6 +24,7 @@ from ._pamsim import (  # noqa: F401
     SpringModel,
     Trial,
     __version__,
+    channels,
     fit,
     fit_csv,
     read_sweep,

@@ -154,6 +154,11 @@ def fit(
     Least-squares fit of Eq. (2) and the law (Yoshida and Hosoda, Sec. II-B): {model, rmse_N, r2, points}
     """
 
+def channels() -> list[dict[str, typing.Any]]:
+    """
+    trajectory.csv's channels as rows: name ('{m}': a muscle's label), unit, to_si, divisor (a column's value is SI * divisor / to_si), meaning, source, per_muscle, measured (what a controller on the robot sees), quantity (the observation's name)
+    """
+
 def fit_csv(law: str, path: str) -> dict[str, typing.Any]:
     """
     The same fit from a tensile CSV (pamsim tensile's format)

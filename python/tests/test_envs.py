@@ -19,6 +19,16 @@ def make(**kwargs):
     return gymnasium.make("pamsim/DropMass-v0", **kwargs)
 
 
+def test_the_observed_quantities_are_measured_rows_of_the_channel_table():
+    """What the environments observe is what a controller on the robot sees: each name a
+    per-muscle row of trajectory.csv's channel table marked measured, none of the plant's
+    truths."""
+    rows = {r["quantity"]: r for r in pamsim.channels()}
+    for name in MEASURED + ("fiber_rate_mm_s",):
+        assert name in rows, name
+        assert rows[name]["measured"] and rows[name]["per_muscle"], name
+
+
 def test_every_registered_environment_passes_the_checker():
     from gymnasium.utils.env_checker import check_env
 

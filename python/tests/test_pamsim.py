@@ -124,6 +124,24 @@ def test_a_python_controller_drives_the_valves():
     assert result.summary["status"] == "ok"
 
 
+def test_the_observation_names_every_channel_of_the_table_in_its_unit():
+    """observe() carries each row of trajectory.csv's channel table by its name without the
+    muscle, one value per muscle, in the log's units."""
+    trial = pamsim.Trial(DROP, ["sim.duration_s=0.3", "drop.time_s=0.1"])
+    trial.step()
+    obs = trial.observe()
+    rows = [r for r in pamsim.channels() if r["per_muscle"] and r["name"] != "{controller}"]
+    assert {r["quantity"] for r in rows} >= {"p_meas_MPa", "force_N", "length_est_mm"}
+    for r in rows:
+        assert len(obs[r["quantity"]]) == len(trial.muscles), r["name"]
+    for r in (r for r in rows if r["measured"]):
+        assert r["quantity"] in obs["measured"], r["name"]
+    # MPa is the chamber's Pa / 1e6, as trajectory.csv has it
+    p = obs["p_MPa"]
+    assert np.array_equal(obs["pressure_MPa"], p)
+    assert all(0.0 <= v < 1.0 for v in p)
+
+
 def test_bad_input_raises_value_error_with_the_message():
     with pytest.raises(ValueError, match="scenarios/missing.toml"):
         pamsim.run(os.path.join(SOURCE, "scenarios/missing.toml"))

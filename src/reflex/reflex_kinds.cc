@@ -116,11 +116,7 @@ std::vector<ControllerKeyDoc> reflex_docs(bool stretch, bool tension) {
 StretchReflexControllerConfig StretchReflexScenarioConfig::bound(
     const ControllerSetup& setup) const {
   StretchReflexControllerConfig config;
-  config.reflex = reflex;
-  config.stretch = stretch;
-  config.tension = tension;
-  config.ib = ib;
-  config.p_max_pa = p_max_pa;
+  static_cast<StretchReflexSettings&>(config) = *this;
   config.control_hz = setup.control_hz;
   config.muscle_count = setup.muscle_count;
   config.pairs = setup.pairs;

@@ -51,13 +51,19 @@ struct ReflexConfig : StretchReflexParams {
 // and 1/800 MPa/(mm/s)); fiber 25 mm/s and 1/300. The other fields keep their defaults.
 ReflexConfig table_ii_reflex_config(ReflexSensor sensor);
 
-struct StretchReflexControllerConfig {
+// What a reflex kind's keys set (reflex.*, reflex.ib.*, controller.p_max_MPa), in SI: the one
+// type its rows fill, which the scenario's configuration holds and its controller runs with.
+struct StretchReflexSettings {
   ReflexConfig reflex;
   bool stretch = true;   // the Ia reflexes run
   bool tension = false;  // the Ib reflexes run (reflex.ib.*)
   TensionReflexParams ib;
   // valve range [Pa]: the commands are clamped to [0, p_max]     controller.p_max_MPa
   double p_max_pa = 0.8e6;
+};
+
+// The settings bound to a trial: its control rate, muscles and pairs.
+struct StretchReflexControllerConfig : StretchReflexSettings {
   double control_hz = 100.0;  // sim.control_hz
   int muscle_count = 2;
   std::vector<ReflexPair> pairs{ReflexPair{}};  // reflex.pairs
@@ -87,14 +93,8 @@ PairValues reflex_commands(const PairValues& p_tp_pa, const PairValues& dp_ia_pa
 
 // A reflex kind as a scenario configures it (controller_kind.h): the keys reflex.*,
 // reflex.ib.* and controller.p_max_MPa, read by the kinds' readers.
-class StretchReflexScenarioConfig final : public ControllerConfig {
+class StretchReflexScenarioConfig final : public ControllerConfig, public StretchReflexSettings {
  public:
-  ReflexConfig reflex;  // reflex.*
-  bool stretch = true;  // the kind's reflexes: Ia, Ib
-  bool tension = false;
-  TensionReflexParams ib;  // reflex.ib.*
-  double p_max_pa = 0.0;   // controller.p_max_MPa, or the regulator's command maximum
-
   // The controller's configuration for a trial's muscles, pairs and control rate.
   StretchReflexControllerConfig bound(const ControllerSetup& setup) const;
   // the windows: reflex_<m> (Ia; every reflex kind logs it), tension_reflex_<m> (Ib, with

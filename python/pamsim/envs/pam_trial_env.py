@@ -43,6 +43,8 @@ from .._pamsim import Trial
 Obs = npt.NDArray[np.float64]
 Act = npt.NDArray[np.float32]
 
+# what the policy observes per muscle: rows of trajectory.csv's channel table marked measured
+# (pamsim.channels(); a test holds this list to it), by their names without the muscle
 MEASURED = ("p_meas_MPa", "force_meas_N", "length_est_mm", "velocity_est_mm_s")
 
 

@@ -8,7 +8,8 @@
 // `--calibration`: a calibration file's (model.calibration, as `pamsim calibrate` writes it);
 // `--identify`, `--tune`, `--sweep`: an identification, tuning or sweep file's top-level keys,
 // from their rows, then the keys of its tables' entries ([[parameter]], [[recording]],
-// [[axis]]...: "parameter[].from"), from their readers' lists.
+// [[axis]]...: "parameter[].from"), from their readers' lists. `--channels [SCENARIO]`:
+// trajectory.csv's channels (trial_channels.h), or the columns a scenario's log has.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -19,6 +20,8 @@
 #include "pneumatics/pneumatic_params.h"
 #include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
+#include "sim/core/trial.h"
+#include "sim/core/trial_model.h"
 #include "sim/optimize/identify_file.h"
 #include "sim/optimize/identify_file_recordings.h"
 #include "sim/optimize/search_space.h"
@@ -43,6 +46,7 @@ struct KeysOptions {
   bool identify = false;
   bool tune = false;
   bool sweep = false;
+  bool channels = false;
 };
 
 nlohmann::json doc_json(const KeyDoc& d) {
@@ -129,7 +133,40 @@ bool print_file_keys(const KeysOptions& opt) {
   return true;
 }
 
+// --channels: trajectory.csv's channels as the table has them, or a scenario's columns
+void print_channels(const KeysOptions& opt) {
+  std::vector<ChannelDoc> docs = channel_docs();
+  if (!opt.scenario.empty()) {
+    const Scenario sc = load_scenario(opt.scenario, opt.overrides);
+    docs = channel_docs(trial_log_layout(load_trial_model(sc), sc), sc.controller_channels());
+  } else if (!opt.overrides.empty()) {
+    throw InputError("--set needs a scenario");
+  }
+  nlohmann::json all = nlohmann::json::array();
+  for (const ChannelDoc& d : docs) {
+    if (opt.json) {
+      all.push_back({{"column", d.column},
+                     {"unit", d.unit},
+                     {"si_per_unit", d.si_per_unit},
+                     {"meaning", d.meaning},
+                     {"source", d.source},
+                     {"measured", d.measured}});
+    } else {
+      std::cout << d.column << (d.unit.empty() ? "" : "  [" + d.unit + "]") << "\n    " << d.meaning
+                << "; from " << d.source << (d.measured ? " (measured)" : "") << "\n";
+    }
+  }
+  if (opt.json) std::cout << all.dump(2) << "\n";
+}
+
 void keys(const KeysOptions& opt) {
+  if (opt.channels) {
+    if (opt.pneumatics + opt.plant + opt.params + opt.calibration + opt.identify + opt.tune +
+        opt.sweep) {
+      throw InputError("--channels lists trajectory.csv's columns: it takes no other file's flag");
+    }
+    return print_channels(opt);
+  }
   if (print_file_keys(opt)) return;
   if (opt.scenario.empty()) {
     if (!opt.overrides.empty()) throw InputError("--set needs a scenario");
@@ -187,6 +224,9 @@ void add_keys_command(CLI::App& app) {
                 "A tuning file's keys (its search keys, then those of [[parameter]], "
                 "[[objective]], [[constraint]], [[reference]], [[randomize]]) instead of the "
                 "scenario's");
+  cmd->add_flag("--channels", opt->channels,
+                "trajectory.csv's channels (column, unit, SI factor, meaning, source); with a "
+                "scenario, the columns its log has");
   cmd->add_flag("--sweep", opt->sweep,
                 "A sweep file's keys (its design keys, then those of [[axis]], [[axis.case]], "
                 "[[randomize]]) instead of the scenario's");

@@ -192,11 +192,16 @@ class LengthEstimateMetrics final : public MetricSet {
  public:
   void finish(const FinishedTrial& r, std::vector<Metric>* out) const override {
     ErrorStats mm, pct;
+    std::vector<std::size_t> estimate, truth;  // per muscle
+    for (std::size_t j = 0; j < r.labels.size(); ++j) {
+      estimate.push_back(r.layout->column_of("length_est_{m}_mm", j));
+      truth.push_back(r.layout->column_of("length_{m}_mm", j));
+    }
     for (std::size_t row = 0; row < r.log->rows(); ++row) {
-      for (const MuscleColumns& mc : r.layout->muscle) {
-        const double error = r.log->at(row, mc.length_est) - r.log->at(row, mc.length);
+      for (std::size_t j = 0; j < r.labels.size(); ++j) {
+        const double error = r.log->at(row, estimate[j]) - r.log->at(row, truth[j]);
         mm.add(error);
-        pct.add(100.0 * error / r.log->at(row, mc.length));
+        pct.add(100.0 * error / r.log->at(row, truth[j]));
       }
     }
     out->push_back({"length_est_rmse_mm", mm.rms()});
@@ -212,12 +217,15 @@ class TrackingMetrics final : public MetricSet {
   void finish(const FinishedTrial& r, std::vector<Metric>* out) const override {
     const Trajectory& log = *r.log;
     for (std::size_t j = 0; j < r.labels.size(); ++j) {
-      const MuscleColumns& mc = r.layout->muscle[j];
+      const std::size_t p = r.layout->column_of("p_{m}_MPa", j);
+      const std::size_t p_cmd = r.layout->column_of("p_cmd_{m}_MPa", j);
+      const std::size_t length = r.layout->column_of("length_{m}_mm", j);
+      const std::size_t length_est = r.layout->column_of("length_est_{m}_mm", j);
       ErrorStats pressure, length_pct;
       for (std::size_t row = 0; row < log.rows(); ++row) {
-        pressure.add(log.at(row, mc.p) - log.at(row, mc.p_cmd));
-        const double truth = log.at(row, mc.length);
-        length_pct.add(100.0 * (log.at(row, mc.length_est) - truth) / truth);
+        pressure.add(log.at(row, p) - log.at(row, p_cmd));
+        const double truth = log.at(row, length);
+        length_pct.add(100.0 * (log.at(row, length_est) - truth) / truth);
       }
       const std::string& m = r.labels[j];
       out->push_back({"pressure_rmse_" + m + "_MPa", pressure.rms()});

@@ -172,7 +172,7 @@ double pam_line_axial_stiffness(const mjModel* m, int id) {
 
 int pam_userdata_index(const mjModel* m, int id) { return pam_law(m, id).b().pressure_index; }
 
-double pam_length(const mjModel* m, const mjData* d, int id) {
+double pam_taut_length(const mjModel* m, const mjData* d, int id) {
   const PamLaw& law = pam_law(m, id);
   const double unstretched = d->actuator_length[id] - law.b().line_length_m;
   if (law.b().line.axial_stiffness_n <= 0.0) return unstretched;
@@ -182,7 +182,7 @@ double pam_length(const mjModel* m, const mjData* d, int id) {
 }
 
 double pam_muscle_length(const mjModel* m, const mjData* d, int id, FreeLengthTrack* track) {
-  return pam_muscle_length_at(m, d, id, pam_length(m, d, id), track);
+  return pam_muscle_length_at(m, d, id, pam_taut_length(m, d, id), track);
 }
 
 double pam_muscle_length_at(const mjModel* m, const mjData* d, int id, double taut,
@@ -230,9 +230,9 @@ void pam_start_line_creep(const mjModel* m, mjData* d, int id) {
   if (line.creep_index >= 0) d->userdata[line.creep_index] = line.start_tension_n;
 }
 
-double pam_length_committing_creep(const mjModel* m, mjData* d, int id, double dt_s) {
+double pam_taut_length_committing_creep(const mjModel* m, mjData* d, int id, double dt_s) {
   const LineBinding& line = pam_law(m, id).b().line;
-  if (line.creep_index < 0) return pam_length(m, d, id);
+  if (line.creep_index < 0) return pam_taut_length(m, d, id);
   double taut = 0.0;
   const double f = std::max(line_tension(m, d, id, &taut), 0.0);  // a slack line recovers
   double& q = d->userdata[line.creep_index];

@@ -149,18 +149,20 @@ TrialRun::TrialRun(const TrialModel& tm, const Scenario& sc, std::uint64_t seed,
   p_tp_pa_.resize(n_);
   out_.resize(static_cast<int>(n_), static_cast<int>(channels_.size()));
   row_.resize(layout_.columns.size());
+  tick_.body_z_m.resize(tm_.holds.size());
+  for (auto* v : {&tick_.command_pa, &tick_.pressure_pa, &tick_.force_n, &tick_.length_m,
+                  &tick_.length_est_m, &tick_.velocity_est_m_s}) {
+    v->resize(n_);
+  }
   pressure_pa_.resize(n_);
   command_pa_.resize(n_);
-  muscle_length_m_.resize(n_);
-  free_length_.resize(n_);
+  muscle_.resize(n_);
   step_force_n_.resize(n_);
-  peak_tension_n_.assign(n_, 0.0);
-  history_.assign(n_, 0);
   for (std::size_t i = 0; i < n_; ++i) {  // a physical muscle's chamber has its own shape
     const MuscleSpec& spec = sc.muscles[tm.muscles[i].spec];
     if (spec.plant_file.empty()) continue;
     pneumatics_.set_plant_volume(static_cast<int>(i), spec.plant);
-    history_[i] = pam_has_history(spec.plant);
+    muscle_[i].has_history = pam_has_history(spec.plant);
   }
   held_.assign(tm.holds.size(), 1);
   fired_.assign(sc.events.size(), 0);
@@ -189,7 +191,8 @@ void TrialRun::start_state() {
     pneumatics_.set_command(static_cast<int>(i), start_p_pa_[i]);
     d_->userdata[tm_.muscles[i].pressure_slot] = pneumatics_.pressure_pa(static_cast<int>(i));
     pam_start_line_creep(m_, d_, tm_.muscles[i].actuator);
-    muscle_length_m_[i] = pam_muscle_length(m_, d_, tm_.muscles[i].actuator, &free_length_[i]);
+    muscle_[i].length_m =
+        pam_muscle_length(m_, d_, tm_.muscles[i].actuator, &muscle_[i].free_length);
   }
 }
 
@@ -207,7 +210,8 @@ TrialSummary TrialRun::finish(long steps, std::chrono::steady_clock::duration wa
   }
   record.events = &events_;
   record.event_times_s = &controller_->event_times_s();
-  record.peak_tension_n = peak_tension_n_;
+  for (const MuscleLoopState& muscle : muscle_)
+    record.peak_tension_n.push_back(muscle.peak_tension_n);
   record.steps = steps;
   record.sim_time_s = time_at(steps);
   record.wall_time_s = std::chrono::duration<double>(wall - observer_wall_).count();
@@ -281,14 +285,15 @@ TrialObservation TrialRun::observe() const {
   TrialObservation o;
   o.time_s = time_at(step_);
   o.steps = step_;
-  o.joint_position = joint_position();
-  o.joint_velocity = d_->qvel[tm_.joint.dof];
+  o.joint_position_rad_or_m = joint_position();
+  o.joint_velocity_rad_or_m_per_s = d_->qvel[tm_.joint.dof];
+  for (const BoundHold& hold : tm_.holds) o.body_z_m.push_back(d_->qpos[hold.qpos + 2]);
   for (std::size_t i = 0; i < n_; ++i) {
     const int act = tm_.muscles[i].actuator;
     o.pressure_pa.push_back(pneumatics_.pressure_pa(static_cast<int>(i)));
     o.command_pa.push_back(pneumatics_.command_pa(static_cast<int>(i)));
     o.force_n.push_back(-pam_actuator_force(m_, d_, act));
-    FreeLengthTrack track = free_length_[i];  // a look changes nothing in the trial
+    FreeLengthTrack track = muscle_[i].free_length;  // a look changes nothing in the trial
     o.length_m.push_back(pam_muscle_length(m_, d_, act, &track));
     o.length_est_m.push_back(readings_[i].length_est_m);
     o.velocity_est_m_s.push_back(i < out_.velocity_m_s.size() ? out_.velocity_m_s[i] : 0.0);

@@ -39,8 +39,8 @@ struct TrialSnapshot {
   const mjModel* model = nullptr;
   const mjData* data = nullptr;
   double time_s = 0.0;
-  bool hinge = true;            // the joint's kind
-  double joint_position = 0.0;  // [deg] for a hinge, [mm] for a slide
+  bool hinge = true;                      // the joint's kind
+  double joint_position_deg_or_mm = 0.0;  // a hinge's [deg], a slide's [mm]
   const std::vector<std::string>* labels = nullptr;
   const std::vector<double>* pressure_pa = nullptr;  // chamber pressures
   const std::vector<double>* command_pa = nullptr;   // valve commands
@@ -112,28 +112,8 @@ inline TrialResult run_trial(const TrialModel& model, const Scenario& scenario, 
   return run_trial(model, scenario, seed, options);
 }
 
-// What a caller stepping a trial sees after a step (SteppedTrial::observe): SI units; vectors
-// per muscle, model order.
-struct TrialObservation {
-  double time_s = 0.0;
-  long steps = 0;                    // physics steps taken
-  double joint_position = 0.0;       // [rad] for a hinge, [m] for a slide
-  double joint_velocity = 0.0;       // [rad/s] or [m/s]
-  std::vector<double> pressure_pa;   // chamber pressures
-  std::vector<double> command_pa;    // valve commands in force
-  std::vector<double> force_n;       // tension in each PAM
-  std::vector<double> length_m;      // each PAM's length
-  std::vector<double> length_est_m;  // the estimator's length, as of the last control tick
-  // what the controller logs per muscle (its channels: the log's <prefix><m><suffix> column
-  // names without the muscle, "reflex_"), and their values as of the last control tick
-  std::vector<std::string> channel_names;
-  std::vector<std::vector<double>> channels;  // [channel][muscle]
-  // What the controller saw at the last control tick, as the log's row of that tick has it:
-  // the instruments' readings and estimates (sensing/muscle_reading.h), and the velocity
-  // each muscle's control acted on (the log's velocity_est_<m>_mm_s).
-  std::vector<MuscleReading> readings;
-  std::vector<double> velocity_est_m_s;
-};
+// What a caller stepping a trial sees after a step (SteppedTrial::observe) is a
+// TrialObservation (trial_channels.h).
 
 // A trial advanced by its caller one control period at a time, for a controller outside
 // pamsim (the Python module's Trial, a user's C++). Each step runs the next control tick

@@ -58,14 +58,14 @@ void solve_line(const Scenario& sc, TrialModel* tm, int solved) {
   const double others = d->qfrc_actuator[dof] + d->qfrc_passive[dof];
   const double f = m->nv > 0 && moment[dof] != 0 ? (others - d->qfrc_bias[dof]) / moment[dof] : 0.0;
   const double p0 = spec.command.at(0.0);
-  const double pam_length = plant_length_at_force(spec, p0, f);
-  if (!(pam_length > 0)) {
+  const double pam_length_m = plant_length_at_force(spec, p0, f);
+  if (!(pam_length_m > 0)) {
     char buf[160];
     std::snprintf(buf, sizeof(buf), "cannot hold the start state: it needs %.4g N at %.4g MPa", f,
                   units::pa_to_mpa(p0));
     fail(sc, spec.key + ".line", std::string("= \"equilibrium\" ") + buf);
   }
-  b.line_length_m = d->actuator_length[b.actuator] - pam_length;
+  b.line_length_m = d->actuator_length[b.actuator] - pam_length_m;
   if (!(b.line_length_m > 0)) {
     fail(sc, spec.key + ".line",
          "= \"equilibrium\" gives a line <= 0: the tendon is shorter "

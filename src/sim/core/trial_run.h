@@ -97,19 +97,26 @@ class TrialRun {
   std::vector<ControllerEvent> events_;      // and the events it records
   TrialResult result_;
 
-  // per tick and per step state, allocated once
+  // One muscle's state the loop keeps from one physics step to the next, its own.
+  struct MuscleLoopState {
+    double length_m = 0.0;        // at the last physics step
+    FreeLengthTrack free_length;  // its last free length (avbdl.h)
+    double peak_tension_n = 0.0;  // the largest pull of any physics step
+    bool has_history = false;     // its plant has a history (slip, relaxation)
+  };
+
+  // per tick and per step state, allocated once; the vectors below are handed on whole (to
+  // the sensors, the controller, the observer), the rest is in muscle_
+  std::vector<MuscleLoopState> muscle_;  // per muscle, model order
   std::vector<MuscleTruth> truth_;
   std::vector<MuscleReading> readings_;
   std::vector<double> p_tp_pa_;
   ControlOutput out_;
+  TrialObservation tick_;  // the state the log's row is read from (trial_channels.h)
   std::vector<double> row_;
   std::vector<double> pressure_pa_, command_pa_;
   double first_trigger_s_ = std::numeric_limits<double>::quiet_NaN();  // for the observer
-  std::vector<double> muscle_length_m_;       // per muscle, at the last physics step
-  std::vector<FreeLengthTrack> free_length_;  // per muscle: its last free length (avbdl.h)
-  std::vector<double> step_force_n_;          // per muscle, this physics step's pull (sensors)
-  std::vector<double> peak_tension_n_;        // per muscle, the largest pull of any physics step
-  std::vector<char> history_;  // per muscle: its plant has a history (slip, relaxation)
+  std::vector<double> step_force_n_;  // per muscle, this physics step's pull (sensors)
   std::vector<std::array<double, 3>> hold_pos_;
   std::vector<char> held_;
   std::vector<char> fired_;

@@ -125,7 +125,7 @@ bool TrialRun::control_tick(double t) {
     const int act = tm_.muscles[i].actuator;
     truth_[i].pressure_pa = pneumatics_.pressure_pa(static_cast<int>(i));
     truth_[i].force_n = -pam_actuator_force(m_, d_, act);
-    truth_[i].length_m = pam_muscle_length(m_, d_, act, &free_length_[i]);
+    truth_[i].length_m = pam_muscle_length(m_, d_, act, &muscle_[i].free_length);
     p_tp_pa_[i] = sc_.muscles[tm_.muscles[i].spec].command.at(t);
   }
   sensors_.sample(truth_, &readings_);
@@ -176,32 +176,26 @@ void TrialRun::log_control(double t) {
 }
 
 void TrialRun::log_row(double t) {
-  // the joint in deg (hinge) or mm (slide), held bodies' heights, then every muscle
-  const double q = joint_position(), qdot = d_->qvel[tm_.joint.dof];
-  row_[layout_.time] = t;
-  row_[layout_.joint_position] = tm_.joint.hinge ? units::rad_to_deg(q) : units::m_to_mm(q);
-  row_[layout_.joint_velocity] = tm_.joint.hinge ? units::rad_to_deg(qdot) : units::m_to_mm(qdot);
+  // the state at this tick as the channel table reads it (trial_channels.h)
+  TrialObservation& o = tick_;
+  o.time_s = t;
+  o.steps = step_;
+  o.joint_position_rad_or_m = joint_position();
+  o.joint_velocity_rad_or_m_per_s = d_->qvel[tm_.joint.dof];
   for (std::size_t h = 0; h < tm_.holds.size(); ++h) {
-    row_[layout_.body_z[h]] = d_->qpos[tm_.holds[h].qpos + 2];
+    o.body_z_m[h] = d_->qpos[tm_.holds[h].qpos + 2];
   }
   for (std::size_t i = 0; i < n_; ++i) {
-    const MuscleColumns& c = layout_.muscle[i];
-    const MuscleReading& r = readings_[i];
-    row_[c.p_cmd] = units::pa_to_mpa(pneumatics_.command_pa(static_cast<int>(i)));
-    row_[c.p] = units::pa_to_mpa(truth_[i].pressure_pa);
-    row_[c.force] = truth_[i].force_n;
-    row_[c.length] = units::m_to_mm(truth_[i].length_m);
-    row_[c.length_est] = units::m_to_mm(r.length_est_m);
-    row_[c.velocity_est] = units::m_to_mm(out_.velocity_m_s[i]);
-    for (std::size_t k = 0; k < c.channels.size(); ++k) {
-      row_[c.channels[k]] = out_.channels[k][i];  // what the controller declares it logs
-    }
-    row_[c.pressure_sensor] = r.pressure_sensor_v;
-    row_[c.gauge] = r.gauge_v;
-    row_[c.fiber_rate] = units::m_to_mm(r.fiber_rate_m_s);
-    row_[c.p_meas] = units::pa_to_mpa(r.pressure_meas_pa);
-    row_[c.force_meas] = r.force_meas_n;
+    o.command_pa[i] = pneumatics_.command_pa(static_cast<int>(i));
+    o.pressure_pa[i] = truth_[i].pressure_pa;
+    o.force_n[i] = truth_[i].force_n;
+    o.length_m[i] = truth_[i].length_m;
+    o.length_est_m[i] = readings_[i].length_est_m;
+    o.velocity_est_m_s[i] = out_.velocity_m_s[i];
   }
+  o.readings = readings_;
+  o.channels = out_.channels;
+  write_log_row(layout_, o, row_.data());
   result_.trajectory.values.insert(result_.trajectory.values.end(), row_.begin(), row_.end());
 }
 
@@ -220,7 +214,7 @@ bool TrialRun::physics_step(double t) {
   for (std::size_t i = 0; i < n_; ++i) {
     step_force_n_[i] = -d_->actuator_force[tm_.muscles[i].actuator];
     // a NaN pull sticks, as the sensors' extremes do: a diverged trial reports no peak
-    double& peak = peak_tension_n_[i];
+    double& peak = muscle_[i].peak_tension_n;
     if (!std::isnan(peak) && !(step_force_n_[i] <= peak)) peak = step_force_n_[i];
   }
   if (sensors_.observes_forces()) sensors_.observe(step_force_n_);
@@ -233,15 +227,16 @@ bool TrialRun::physics_step(double t) {
   try {
     for (std::size_t i = 0; i < n_; ++i) {
       const int act = tm_.muscles[i].actuator;
-      const double taut = pam_length_committing_creep(m_, d_, act, sc_.timestep_s);
-      const double length = pam_muscle_length_at(m_, d_, act, taut, &free_length_[i]);
+      const double taut = pam_taut_length_committing_creep(m_, d_, act, sc_.timestep_s);
+      MuscleLoopState& muscle = muscle_[i];
+      const double length = pam_muscle_length_at(m_, d_, act, taut, &muscle.free_length);
       // (an extensible line's stretch moves the muscle apart from the tendon: its length's
       // rate too)
       const bool slack = taut<length, stretches = pam_line_axial_stiffness(m_, act)> 0.0;
-      const double velocity = slack || stretches ? (length - muscle_length_m_[i]) / sc_.timestep_s
+      const double velocity = slack || stretches ? (length - muscle.length_m) / sc_.timestep_s
                                                  : d_->actuator_velocity[act];
-      muscle_length_m_[i] = length;
-      if (history_[i]) pam_commit_history(m_, d_, act, length);
+      muscle.length_m = length;
+      if (muscle.has_history) pam_commit_history(m_, d_, act, length);
       pneumatics_.set_kinematics(static_cast<int>(i), length, velocity);
     }
     pneumatics_.advance(t + sc_.timestep_s);
@@ -270,7 +265,7 @@ TrialSnapshot TrialRun::snapshot() {
   snapshot.data = d_;
   snapshot.time_s = time_at(step_);
   snapshot.hinge = tm_.joint.hinge;
-  snapshot.joint_position =
+  snapshot.joint_position_deg_or_mm =
       tm_.joint.hinge ? units::rad_to_deg(joint_position()) : units::m_to_mm(joint_position());
   snapshot.labels = &labels_;
   snapshot.pressure_pa = &pressure_pa_;

@@ -1,8 +1,9 @@
 // recording_csv.h: a lab's recording of a trial, as `pamsim identify` reads it: a CSV file
 // whose header names `time_s` and any of the columns `pamsim run` writes to trajectory.csv
-// (angle_deg, p_meas_<label>_MPa, force_meas_<label>_N, gauge_<label>_V, ...; trial_log.h
-// lists them), in that file's units. Any sampling rate, also uneven; an empty cell is a
-// sample that channel lacks (a gap, or a channel that started late). Lines starting with
+// (angle_deg, p_meas_<label>_MPa, force_meas_<label>_N, gauge_<label>_V, ...; the channel
+// table lists them, trial_channels.h), in that file's units. Any sampling rate, also uneven; an
+// empty cell is a sample that channel lacks (a gap, or a channel that started late). Lines starting
+// with
 // '#' and blank lines are skipped.
 // Refused, naming the file and line: no `time_s` column, no other column, a column named
 // twice, a row with another number of cells than the header, a cell that is not a finite

@@ -58,7 +58,7 @@ void state_numbers(const TrialSnapshot& snap, std::string* names, std::string* v
   const std::vector<std::string>& labels = *snap.labels;
   *names = snap.hinge ? "time\nangle" : "time\nposition";
   char line[96];
-  std::snprintf(line, sizeof(line), "%.3f s\n%.2f %s", snap.time_s, snap.joint_position,
+  std::snprintf(line, sizeof(line), "%.3f s\n%.2f %s", snap.time_s, snap.joint_position_deg_or_mm,
                 snap.hinge ? "deg" : "mm");
   *values = line;
   for (std::size_t i = 0; i < labels.size(); ++i) {
@@ -310,9 +310,9 @@ void TrialVideo::draw_overlays(const TrialSnapshot& snap) {
 
   // the live plots, bottom left: pressures at the bottom, the joint above
   Plots& p = *plots_;
-  append_point(&p.angle, 0, snap.time_s, snap.joint_position);
-  p.angle_min_deg = std::min(p.angle_min_deg, snap.joint_position);
-  p.angle_max_deg = std::max(p.angle_max_deg, snap.joint_position);
+  append_point(&p.angle, 0, snap.time_s, snap.joint_position_deg_or_mm);
+  p.angle_min_deg = std::min(p.angle_min_deg, snap.joint_position_deg_or_mm);
+  p.angle_max_deg = std::max(p.angle_max_deg, snap.joint_position_deg_or_mm);
   const std::size_t n = std::min<std::size_t>(labels.size(), mjMAXLINE / 2);
   for (std::size_t i = 0; i < n; ++i) {
     const double p_mpa = units::pa_to_mpa((*snap.pressure_pa)[i]);

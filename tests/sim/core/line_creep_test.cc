@@ -46,7 +46,8 @@ TEST(LineCreepTest, AHeldLineCreepsFromTheElasticToTheLongTermSeriesSpring) {
   mj_forward(m.get(), d.get());
   const double elastic = kCreepStiffness * stretch / (1.0 + kCreepStiffness * c);
   EXPECT_NEAR(-d->actuator_force[0], elastic, 1e-9 * elastic);
-  for (int k = 0; k < 20000; ++k) pam_length_committing_creep(m.get(), d.get(), 0, dt);  // 20 tau
+  for (int k = 0; k < 20000; ++k)
+    pam_taut_length_committing_creep(m.get(), d.get(), 0, dt);  // 20 tau
   mj_forward(m.get(), d.get());
   const double long_term = kCreepStiffness * stretch / (1.0 + kCreepStiffness * c * (1.0 + g));
   EXPECT_NEAR(-d->actuator_force[0], long_term, 1e-7 * long_term);
@@ -62,7 +63,7 @@ TEST(LineCreepTest, ASlackLineRecoversExponentiallyAndTheStateStartsAtTheStartsT
   d->qpos[0] = 0.0;                 // far slack: the line pulls nothing
   d->userdata[1] = kCreepPressure;
   mj_forward(m.get(), d.get());
-  for (int k = 0; k < 1000; ++k) pam_length_committing_creep(m.get(), d.get(), 0, dt);
+  for (int k = 0; k < 1000; ++k) pam_taut_length_committing_creep(m.get(), d.get(), 0, dt);
   EXPECT_NEAR(d->userdata[2], 12.0 * std::exp(-1000 * dt / tau), 1e-12);
 }
 

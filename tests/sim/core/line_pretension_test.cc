@@ -56,8 +56,8 @@ TEST(LinePretensionTest, TheAntagonistSitsThatFarPastItsFreeLengthAndTheArmIsAtR
     const BoundMuscle& anta = tm.muscles[1];
     const MuscleSpec& spec = sc.muscles[anta.spec];
     ASSERT_DOUBLE_EQ(spec.command.at(0.0), 0.4e6) << "the calibration's pressure";
-    const double pam_length = d->actuator_length[anta.actuator] - anta.line_length_m;
-    EXPECT_NEAR(pam_length - plant_free_length(spec, 0.4e6), units::mm_to_m(mm), 1e-9);
+    const double pam_length_m = d->actuator_length[anta.actuator] - anta.line_length_m;
+    EXPECT_NEAR(pam_length_m - plant_free_length(spec, 0.4e6), units::mm_to_m(mm), 1e-9);
     // at rest: the muscles' torques (their force law, through the callback) balance gravity
     const int dof = tm.joint.dof;
     EXPECT_NEAR(d->qfrc_actuator[dof] - d->qfrc_bias[dof], 0.0, 1e-6) << "N m";

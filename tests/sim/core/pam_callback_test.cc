@@ -310,12 +310,12 @@ TEST(PamCallbackLineTest, AnExtensibleLineIsASpringInSeriesWithTheMuscle) {
     mj_forward(m.get(), d.get());
     const double f = k * stretch / (1.0 + k * c);
     EXPECT_NEAR(-d->actuator_force[0], f, 1e-9 * f) << stretch;
-    EXPECT_NEAR(pam_length(m.get(), d.get(), 0), l_n + stretch - c * f, 1e-12) << stretch;
+    EXPECT_NEAR(pam_taut_length(m.get(), d.get(), 0), l_n + stretch - c * f, 1e-12) << stretch;
   }
   d->qpos[0] = line + l_n - 0.001;  // slack: no tension, no stretch
   mj_forward(m.get(), d.get());
   EXPECT_EQ(d->actuator_force[0], 0.0);
-  EXPECT_NEAR(pam_length(m.get(), d.get(), 0), l_n - 0.001, 1e-15);
+  EXPECT_NEAR(pam_taut_length(m.get(), d.get(), 0), l_n - 0.001, 1e-15);
 
   // made inextensible again: the muscle's end is the line's, tendon - L0
   store_line_in_model(m.get(), 0, LineBinding{}, "slider.xml");

@@ -130,7 +130,7 @@ class RecordingObserver : public TrialObserver {
   double next_observation_time_s() const override { return period_s_ * times_s.size(); }
   void observe(const TrialSnapshot& snapshot) override {
     times_s.push_back(snapshot.time_s);
-    angles_deg.push_back(snapshot.joint_position);
+    angles_deg.push_back(snapshot.joint_position_deg_or_mm);
     any_reflex = any_reflex || (*snapshot.channel_values)[0][0] != 0.0;  // reflex_ (Ia)
     first_trigger_s = snapshot.first_trigger_s;
   }
