@@ -233,6 +233,7 @@ double file_value(const KeyTable& table, const std::string& name) {
 std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
   std::vector<KeyDoc> docs;
   for (const KeyTable& t : tables) {
+    const std::size_t first = docs.size();
     for (const ChoiceRow& row : t.choices) {
       docs.push_back(
           {row_key(t, row.name), "", "\"" + row.get() + "\"", choices_text(row), row.doc});
@@ -245,6 +246,7 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
       docs.push_back({row_key(t, row.name), "",
                       row.fallback_doc.empty() ? std::to_string(row.get()) : row.fallback_doc,
                       int_range(row), row.doc});
+      docs.back().trial_only = row.trial_only;
     }
     for (const NumberRow& row : t.numbers) {
       const double* si = field(row);
@@ -252,6 +254,7 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
       if (row.required) fallback = "(required)";
       if (!row.fallback_doc.empty()) fallback = row.fallback_doc;
       docs.push_back({row_key(t, row.name), row.unit, fallback, row.range.text(), row.doc});
+      docs.back().trial_only = row.trial_only;
     }
     for (const TextRow& row : t.texts) {
       std::string fallback = row.required                            ? "(required)"
@@ -262,6 +265,7 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
           {row_key(t, row.name), "", fallback,
            row.input_file ? "a path to a file, relative to the file that gives it" : "a string",
            row.doc});
+      docs.back().trial_only = row.trial_only;
     }
     for (const ListRow& row : t.lists) {
       std::string values;
@@ -278,6 +282,9 @@ std::vector<KeyDoc> key_table_docs(const std::vector<KeyTable>& tables) {
       docs.push_back({row_key(t, row.name), "",
                       row.fallback_doc.empty() ? "[" + names + "]" : row.fallback_doc,
                       name_list_allowed(row), row.doc});
+    }
+    for (std::size_t k = first; k < docs.size(); ++k) {
+      docs[k].trial_only = docs[k].trial_only || t.trial_only;
     }
   }
   return docs;

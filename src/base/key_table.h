@@ -51,6 +51,7 @@ struct NumberRow {
                                // rounds them (to_si = pi, divisor = 180)
 
   double si(double value) const { return value * to_si / divisor; }
+  bool trial_only = false;  // only the trial reads it, not the model it runs on (KeyTable's)
 };
 
 // An integer key (a count: bits, steps, a seed), in [lo, hi]; int_row binds it to a field.
@@ -63,6 +64,7 @@ struct IntRow {
   std::function<std::int64_t()> get;      // the field's value now
   std::string fallback_doc{};  // the default as a reference shows it, where it is not the
                                // field's one value ("(8, more for many parameters)")
+  bool trial_only = false;     // only the trial reads it, not the model (KeyTable's)
 };
 
 // An IntRow bound to an integer field of any type whose range holds [lo, hi].
@@ -108,6 +110,7 @@ struct TextRow {
                                // empty value stands for another ("(the model's first joint)")
   bool input_file = false;     // a path to a file to read (above)
   bool required = false;       // a file must give it
+  bool trial_only = false;     // only the trial reads it, not the model (KeyTable's)
 };
 
 // A key whose value is one of a few names.
@@ -141,6 +144,10 @@ struct KeyTable {
   std::vector<ListRow> lists{};
   bool optional = false;  // the file may leave the whole table out (its required rows with it)
   std::vector<NameListRow> name_lists{};
+  // A scenario's keys that only the trial reads (a gain, a sensor's, the duration), not the
+  // simulated model it runs on (the MJCF and the muscles' bindings): scenarios that differ only
+  // in such keys share one compiled model (same_trial_model). For a row, its own flag.
+  bool trial_only = false;
 };
 
 class ConfigReader;
@@ -153,6 +160,7 @@ struct KeyDoc {
                          // parentheses where it is not one value ("(Table II)", "(unset)")
   std::string allowed;   // the values the reader accepts
   std::string meaning;
+  bool trial_only = false;  // only the trial reads it, not its model (KeyTable::trial_only)
 };
 
 // Reads `doc` (the file at `path`) by `tables`: every table and key must have a row, a

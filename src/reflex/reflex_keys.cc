@@ -35,6 +35,7 @@ std::vector<NumberRow> window_rows(double* duration_s, double* refractory_s, dou
 KeyTable stretch_reflex_key_table(ReflexConfig* reflex, double* velocity_lowpass_hz, bool stretch) {
   ReflexConfig& r = *reflex;
   KeyTable t{"reflex", {}, {}, {}};
+  t.trial_only = true;  // the controller's, not the simulated model's
   t.bools.push_back(
       {"enabled", "the reflex may trigger (false: the passive arm, same sensing)", &r.enabled});
   if (!stretch) return t;
@@ -84,6 +85,7 @@ KeyTable stretch_reflex_key_table(ReflexConfig* reflex, double* velocity_lowpass
 KeyTable tension_reflex_key_table(TensionReflexParams* ib) {
   TensionReflexParams& p = *ib;
   KeyTable t{"reflex.ib", {}, {}, {}};
+  t.trial_only = true;
   t.bools.push_back({"excite_antagonist", "the output also raises the pair partner's command",
                      &p.excite_antagonist});
   t.choices.push_back(mode_row(&p.mode, "reflex.ib.mode",

@@ -104,9 +104,10 @@ std::vector<ControllerKeyDoc> reflex_docs(bool stretch, bool tension) {
   if (tension) tables.push_back(tension_reflex_key_table(&ib));
   std::vector<ControllerKeyDoc> docs = {
       {"controller.p_max_MPa", "MPa", "(valve.command_max_MPa)", "(0, valve.command_max_MPa]",
-       "the highest pressure the reflex commands"},
+       "the highest pressure the reflex commands", true},
+      // (the pairs are bound to the model's muscles when it is loaded)
       {"reflex.pairs", "", "([[\"agonist\", \"antagonist\"]] when both exist)",
-       "[[agonist, antagonist], ...]", "the reflex pairs by actuator name"}};
+       "[[agonist, antagonist], ...]", "the reflex pairs by actuator name", false}};
   for (const KeyDoc& doc : key_table_docs(tables)) docs.push_back(doc);
   return docs;
 }

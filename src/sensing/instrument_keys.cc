@@ -104,7 +104,11 @@ KeyTable contact_rows(GaugeContactParams& c) {
 
 }  // namespace
 
-KeyTable gauge_contact_key_table(GaugeContactParams* contact) { return contact_rows(*contact); }
+KeyTable gauge_contact_key_table(GaugeContactParams* contact) {
+  KeyTable t = contact_rows(*contact);
+  t.trial_only = true;
+  return t;
+}
 
 std::vector<KeyTable> gauge_hardware_key_tables(GaugeHardwareConfig* gauge) {
   GaugeHardwareConfig& g = *gauge;
@@ -205,7 +209,10 @@ KeyTable encoder_key_table(EncoderConfig* encoder) {
 std::vector<KeyTable> instrument_key_tables(SensorConfig* sensors) {
   std::vector<KeyTable> tables;
   for (const InstrumentKind& kind : instrument_kinds()) {
-    for (KeyTable& t : kind.key_tables(sensors)) tables.push_back(std::move(t));
+    for (KeyTable& t : kind.key_tables(sensors)) {
+      t.trial_only = true;  // the instruments are the trial's, not the model's
+      tables.push_back(std::move(t));
+    }
   }
   return tables;
 }

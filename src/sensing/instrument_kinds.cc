@@ -55,6 +55,7 @@ std::vector<InstrumentKind> make_kinds() {
 KeyTable creep_key_table(const InstrumentKind& kind, std::vector<double>* weights,
                          std::vector<double>* times) {
   KeyTable t{kind.creep_table, {}, {}};
+  t.trial_only = true;
   const std::string none = weights->empty() ? "(none)" : "";
   t.lists = {{"creep_weights", "", 1.0, kNonNegativeRange, kMaxCreepTerms,
               kind.creep_whose + " Prony creep weights", weights, none},

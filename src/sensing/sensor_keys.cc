@@ -14,6 +14,7 @@ KeyTable sensor_key_table(SensorConfig* sensors) {
   const KeyRange non_negative{0.0, inf, false, true};
   const KeyRange any{-inf, inf, true, true};
   KeyTable t{"sensors", {}, {}, {}};
+  t.trial_only = true;  // the instruments are the trial's, not the model's
   // a bit count within an int; validate() allows 0 (no ADC) or 4..24
   t.ints = {
       int_row("pressure_adc_bits", "the pressure ADC's resolution (0: ideal, else 4 to 24)", 0, 64,

@@ -50,11 +50,8 @@ struct KeysOptions {
 };
 
 nlohmann::json doc_json(const KeyDoc& d) {
-  return {{"key", d.key},
-          {"unit", d.unit},
-          {"default", d.fallback},
-          {"allowed", d.allowed},
-          {"meaning", d.meaning}};
+  return {{"key", d.key},         {"unit", d.unit},       {"default", d.fallback},
+          {"allowed", d.allowed}, {"meaning", d.meaning}, {"trial_only", d.trial_only}};
 }
 
 void print_doc(const std::string& head, const KeyDoc& d) {

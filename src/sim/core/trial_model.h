@@ -100,14 +100,6 @@ bool same_trial_model(const Scenario& a, const Scenario& b);
 std::vector<TrialModel> shared_trial_models(const std::vector<Scenario>& scenarios,
                                             std::vector<std::size_t>* model_of);
 
-// Whether a scenario key (dotted, as a file writes it; a table's name stands for its keys)
-// is one load_trial_model never reads: the run's own keys (seed, sim.duration_s,
-// sim.control_hz, sim.max_steps), the controller's gains and the sensors (controller.p_max_MPa,
-// reflex.* but reflex.pairs, sensors.*, muscles.<m>.gauge.*), the pneumatics (valve.*,
-// pneumatics.*, model.pneumatics) and the drop's time and height. Every other key counts as
-// the model's: a key this list misses costs a sweep a model load, never a wrong model.
-bool trial_only_key(const std::string& key);
-
 // Sets a body's mass, scaling its inertia with it, and the subtree masses above it.
 void set_body_mass(mjModel* m, int body, double mass_kg);
 

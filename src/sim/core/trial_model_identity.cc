@@ -1,12 +1,11 @@
-// trial_model_identity.cc: same_trial_model and trial_only_key (trial_model.h): which
-// scenarios share a trial model, by the keys that may change it. The list here names what
-// load_trial_model never reads; everything else is compared, so that a key added to the
-// scenario, or a new use of one when the model is bound, can only cost a model load.
+// trial_model_identity.cc: same_trial_model (trial_model.h): which scenarios share a trial
+// model, by their model_keys (the scenario less the keys whose rows say only the trial reads
+// them, scenario_key_docs.h: trial_only_key); everything else is compared, so that a key added
+// to the scenario, or a new use of one when the model is bound, can only cost a model load.
 #include <algorithm>
 #include <string>
 #include <vector>
 
-#include "base/config_reader.h"  // split_key
 #include "sim/core/trial_model.h"
 
 namespace pamsim {
@@ -30,26 +29,6 @@ std::vector<TrialModel> shared_trial_models(const std::vector<Scenario>& scenari
     }
   }
   return models;
-}
-
-bool trial_only_key(const std::string& key) {
-  // whole tables, then single keys ("*": any one part)
-  static const std::vector<std::vector<std::string>> kTables = {
-      {"reflex"}, {"sensors"}, {"valve"}, {"pneumatics"}, {"muscles", "*", "gauge"}};
-  static const std::vector<std::string> kKeys = {
-      "seed",          "sim.duration_s",   "sim.control_hz",
-      "sim.max_steps", "model.pneumatics", "controller.p_max_MPa",
-      "drop.time_s",   "drop.height_m"};
-  if (key == "reflex.pairs") return false;  // the pairs bound to muscle indices
-  if (std::find(kKeys.begin(), kKeys.end(), key) != kKeys.end()) return true;
-  const std::vector<std::string> parts = split_key(key);
-  return std::any_of(kTables.begin(), kTables.end(), [&](const std::vector<std::string>& t) {
-    if (parts.size() < t.size()) return false;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      if (t[i] != "*" && t[i] != parts[i]) return false;
-    }
-    return true;
-  });
 }
 
 }  // namespace pamsim

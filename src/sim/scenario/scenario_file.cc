@@ -11,7 +11,8 @@
 #include "base/toml_file.h"
 #include "reflex/controller_registry.h"
 #include "sim/core/metrics.h"
-#include "sim/core/trial_model.h"  // trial_only_key
+#include "sim/core/trial_model.h"
+#include "sim/scenario/scenario_key_docs.h"  // trial_only_key
 #include "sim/scenario/scenario_key_docs.h"
 #include "sim/scenario/scenario_reading.h"
 #include "sim/scenario/scenario_key_tables.h"
@@ -147,7 +148,7 @@ void apply_scenario_overrides(ConfigReader& in, const std::vector<std::string>& 
   }
 }
 
-// `t` less its trial-only keys (trial_only_key, trial_model.h), each table walked to its
+// `t` less its trial-only keys (trial_only_key, scenario_key_docs.h), each table walked to its
 // leaves; a table left empty goes too where it is a trial-only table itself ([sensors], which
 // an override makes), and stays where its presence is read ([drop], [holds])
 void drop_trial_only(toml::table* t, const std::string& prefix) {

@@ -47,7 +47,8 @@ std::vector<KeyDoc> model_docs() {
   const std::vector<KeyDoc> by_hand = {
       {"pneumatics.<table>.<field>", "(the file's)", "(model.pneumatics')",
        "as in the pneumatics file (pamsim keys --pneumatics)",
-       "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index"},
+       "a field of the pneumatics file, e.g. chamber.tube_dead_volume_cm3, gas.polytropic_index",
+       true},
       {"muscles.<actuator>.plant", "", "(the params file's law)",
        "path to a plant file; or a table: file and any of that file's fields in its units "
        "(muscles.<m>.plant.geometry.wall_thickness_mm = 1.5), each validated as the file's own",
@@ -219,6 +220,22 @@ bool is_scenario_table(const std::string& key) {
     if (matches(prefix, key)) return true;
   }
   return false;
+}
+
+bool trial_only_key(const std::string& key) {
+  if (const KeyDoc* d = scenario_key_doc(key)) return d->trial_only;
+  const std::size_t depth = split_key(key).size();
+  bool any = false;
+  for (const KeyDoc& d : scenario_key_docs()) {
+    const std::vector<std::string> parts = split_key(d.key);
+    if (parts.size() <= depth) continue;
+    std::string prefix = parts[0];
+    for (std::size_t i = 1; i < depth; ++i) prefix += "." + parts[i];
+    if (!matches(prefix, key)) continue;
+    if (!d.trial_only) return false;
+    any = true;
+  }
+  return any;
 }
 
 const KeyDoc* scenario_key_doc(const std::string& key) {

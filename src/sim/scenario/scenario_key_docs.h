@@ -22,4 +22,12 @@ const KeyDoc* scenario_key_doc(const std::string& key);
 // a key itself.
 bool is_scenario_table(const std::string& key);
 
+// Whether a scenario key (dotted, as a file writes it) is one load_trial_model never reads,
+// as its row says (KeyTable::trial_only: the run's length and seed, the controller's gains,
+// the sensors, the pneumatics, the drop's time and height); a table is when every documented
+// key under it is. An undocumented key counts as the model's: a row that misses the flag
+// costs a sweep a model load, never a wrong model (trial_model_identity_test holds the flags
+// to the built models).
+bool trial_only_key(const std::string& key);
+
 }  // namespace pamsim

@@ -19,6 +19,7 @@ KeyTable top_level_key_table(Scenario* scenario) {
   t.ints = {int_row("seed",
                     "the trial's random seed (sensor noise); trial k of --trials uses seed + k", 0,
                     std::numeric_limits<std::int64_t>::max(), &scenario->seed)};
+  t.ints[0].trial_only = true;  // the sensors' noise
   return t;
 }
 
@@ -54,6 +55,7 @@ KeyTable sim_key_table(Scenario* scenario, double* max_steps) {
        {1.0, 1e10, false, false},
        "the most physics steps a trial may take (at least duration_s / timestep_s)",
        max_steps}};
+  for (NumberRow& row : t.numbers) row.trial_only = row.name != "timestep_s";  // (the model's)
   return t;
 }
 
@@ -78,6 +80,8 @@ KeyTable drop_key_table(DropShorthand* drop) {
                 {0.0, 3600.0, false, true},
                 "shorthand: when it is released, before sim.duration_s",
                 &drop->time_s}};
+  // the release (its time and height) is the trial's; the mass and bodies the model's
+  for (NumberRow& row : t.numbers) row.trial_only = row.name != "mass_kg";
   t.texts = {{"body", "shorthand: the falling body, a free body of the model", &drop->body},
              {"basket", "shorthand: the body it lands in (the impact event), a body of the model",
               &drop->basket},
@@ -98,6 +102,7 @@ KeyTable model_key_table(Scenario* scenario) {
                      &scenario->pneumatics_file};
   file.input_file = calibration.input_file = pneumatics.input_file = true;
   file.required = pneumatics.required = true;
+  pneumatics.trial_only = true;  // the valves and chambers are the trial's
   t.numbers = {{"antagonist_deformation_mm",
                 "mm",
                 units::kMPerMm,
@@ -127,7 +132,9 @@ KeyTable controller_kind_key_table(std::string* kind) {
 }
 
 KeyTable valve_model_key_table(Scenario* scenario) {
-  return KeyTable{"valve", {}, {valve_model_row("model", &scenario->valve_model)}};
+  KeyTable t{"valve", {}, {valve_model_row("model", &scenario->valve_model)}};
+  t.trial_only = true;
+  return t;
 }
 
 std::vector<KeyTable> valve_key_tables(PneumaticParams* pneumatics) {
@@ -145,6 +152,7 @@ std::vector<KeyTable> valve_key_tables(PneumaticParams* pneumatics) {
       "valve", {file_row("supply", "supply_MPa"), file_row("valve", "command_max_MPa")}, {}};
   KeyTable regulator = pneumatic_regulator_table(pneumatics);
   regulator.name = "valve";
+  rig.trial_only = regulator.trial_only = true;  // the valves are the trial's
   return {rig, regulator};
 }
 

@@ -1,11 +1,12 @@
 // trial_model_identity_test.cc: same_trial_model (trial_model.h) against what it stands for.
-// It calls two scenarios the same where they differ only in keys trial_only_key names; this
-// test holds that list to the built models: for every key of the shipped arm, rig and leg
-// scenarios changed in turn (a number, a boolean, a choice), whenever same_trial_model says
-// the changed scenario builds the same trial model, the two models built are the same
-// (MuJoCo's model bytes, every muscle's binding, the bound ids and start state). A key the
-// list names that load_trial_model reads fails here, naming the key; the counts show the test
-// is not empty either way, and the sweeps' usual axes keep their model.
+// It calls two scenarios the same where they differ only in keys whose rows say only the trial
+// reads them (trial_only_key, scenario_key_docs.h); this test holds those flags to the built
+// models: for every key of the shipped arm, rig and leg scenarios changed in turn (a number, a
+// boolean, a choice), whenever same_trial_model says the changed scenario builds the same trial
+// model, the two models built are the same (MuJoCo's model bytes, every muscle's binding, the
+// bound ids and start state). A key flagged trial-only that load_trial_model reads fails here,
+// naming the key; the counts show the test is not empty either way, and the sweeps' usual axes
+// keep their model.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -138,7 +139,7 @@ Counts check_every_key(const std::string& scenario, const std::vector<std::strin
       ++counts.same;
       EXPECT_EQ(built_text(load_trial_model(other)), base_text)
           << scenario << ": --set " << sets.back() << " builds another model, but "
-          << "same_trial_model says it is the same (trial_only_key names a key "
+          << "same_trial_model says it is the same (its row flags as trial-only a key "
           << "load_trial_model reads)";
     } catch (const InputError&) {
       // a value the scenario refuses, or a model it cannot bind: nothing to compare
@@ -180,6 +181,21 @@ TEST(TrialModelIdentityTest, TheShippedAxesOfTheControllerSensorsAndValveKeepThe
     EXPECT_FALSE(same_trial_model(base, load_scenario(drop, {set}))) << set;
   }
   EXPECT_FALSE(same_trial_model(Scenario{}, Scenario{}));
+}
+
+// The flags as the rows set them: a key, or a table by every documented key under it
+TEST(TrialModelIdentityTest, RowsFlagTheTrialsKeysAndTablesButNotTheModels) {
+  for (const char* key :
+       {"seed", "sim.duration_s", "sim.control_hz", "controller.p_max_MPa", "reflex.v_thr_mm_s",
+        "reflex.ib.f_thr_N", "sensors.noise_scale", "muscles.agonist.gauge.contact.wrap_deg",
+        "model.pneumatics", "pneumatics.chamber.tube_dead_volume_cm3", "drop.time_s", "sensors",
+        "valve", "reflex.ib", "sensors.gauge", "pneumatics.chamber"}) {
+    EXPECT_TRUE(trial_only_key(key)) << key;
+  }
+  for (const char* key : {"sim.timestep_s", "reflex.pairs", "model.file", "drop.mass_kg", "drop",
+                          "reflex", "muscles.agonist.plant", "joints", "no.such_key"}) {
+    EXPECT_FALSE(trial_only_key(key)) << key;
+  }
 }
 
 // Scenarios A A B C B (two masses and a gain): three models, each scenario bound to its own
