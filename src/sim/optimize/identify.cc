@@ -11,11 +11,10 @@
 #include "base/input_error.h"
 #include "base/no_value.h"
 #include "sim/core/runner.h"
-#include "sim/optimize/identify_offsets.h"
+#include "sim/optimize/identify_global.h"
 #include "sim/optimize/identify_outputs.h"
 #include "sim/optimize/identify_residuals.h"
 #include "sim/optimize/identify_uncertainty.h"
-#include "sim/optimize/optimizer.h"
 
 namespace pamsim {
 namespace {
@@ -23,97 +22,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// A failed point's fitness for CMA-ES: worse than any point whose trials ran.
-constexpr double kFailedCost = 1e300;
-
-// The global phase's objective: a point's cost (sum of squares), CMA-ES moving only the
-// parameters the projection leaves to it, each point's offsets at their best
-// (identify_offsets.h); the evaluation's unit is the whole projected point.
-class IdentifyObjective : public Objective {
- public:
-  IdentifyObjective(IdentifyResiduals& residuals, const OffsetProjection& projection)
-      : residuals_(residuals), projection_(projection) {}
-  std::size_t dimension() const override { return projection_.searched().size(); }
-  std::size_t objective_count() const override { return 1; }
-  Evaluation evaluate(std::int64_t index, const std::vector<double>& searched) override {
-    Evaluation e;
-    e.index = index;
-    e.unit = projection_.embed(searched);
-    std::vector<double> r = residuals_.at(e.unit, "global");
-    if (projection_.projects() && !r.empty()) {
-      e.unit = projection_.project(e.unit, r);
-      r = residuals_.at(e.unit, "global");  // the same trials, other offsets
-    }
-    e.values = residuals_.values_at(e.unit);
-    const double cost = sum_of_squares(r);
-    e.objectives = {cost};
-    e.fitness = {std::isfinite(cost) ? cost : kFailedCost};
-    e.trials = 1;
-    e.ok = std::isfinite(cost) ? 1 : 0;
-    return e;
-  }
-
- private:
-  IdentifyResiduals& residuals_;
-  const OffsetProjection& projection_;
-};
-
-// The polish's starts from CMA-ES's points: the best, then the next best that lie at least
-// kStartSpacing of the box (in some parameter) from every start chosen, up to def.starts; the
-// middle of the box alone without generations.
-std::vector<std::vector<double>> distinct_starts(const IdentifyDefinition& def,
-                                                 std::vector<Evaluation> history) {
-  std::stable_sort(history.begin(), history.end(), [](const Evaluation& a, const Evaluation& b) {
-    return a.fitness.at(0) < b.fitness.at(0);
-  });
-  std::vector<std::vector<double>> starts;
-  for (const Evaluation& e : history) {
-    if (starts.size() >= static_cast<std::size_t>(def.starts)) break;
-    const bool apart = std::all_of(starts.begin(), starts.end(), [&](const auto& s) {
-      double d = 0.0;
-      for (std::size_t i = 0; i < s.size(); ++i) d = std::max(d, std::abs(s[i] - e.unit[i]));
-      return d >= kStartSpacing;
-    });
-    if (apart) starts.push_back(e.unit);
-  }
-  return starts;
-}
-
-// CMA-ES over the box, the offsets projected out; the polish's starts (distinct_starts).
-// With every parameter an offset there is nothing to search: the middle, projected.
-std::vector<std::vector<double>> global_search(const IdentifyDefinition& def,
-                                               IdentifyResiduals& residuals,
-                                               const IdentifyRunOptions& options,
-                                               bool* interrupted) {
-  const std::size_t n = def.parameters.size();
-  if (def.generations == 0) return {std::vector<double>(n, 0.5)};
-  const OffsetProjection projection(def, residuals);
-  IdentifyObjective objective(residuals, projection);
-  if (projection.searched().empty()) return {objective.evaluate(0, {}).unit};
-  std::vector<Evaluation> history;
-  struct Recorder : Objective {  // keeps every evaluation for the best one
-    IdentifyObjective& inner;
-    std::vector<Evaluation>& out;
-    const IdentifyRunOptions& options;
-    Recorder(IdentifyObjective& i, std::vector<Evaluation>& o, const IdentifyRunOptions& op)
-        : inner(i), out(o), options(op) {}
-    std::size_t dimension() const override { return inner.dimension(); }
-    std::size_t objective_count() const override { return 1; }
-    Evaluation evaluate(std::int64_t index, const std::vector<double>& unit) override {
-      out.push_back(inner.evaluate(index, unit));
-      if (options.on_progress) options.on_progress("global", static_cast<std::int64_t>(out.size()));
-      return out.back();
-    }
-  } recorder(objective, history, options);
-  SearchOptions search;
-  search.stop = options.stop;
-  const SearchSettings settings{SearchAlgorithm::kCmaes, def.generations, def.population, def.seed};
-  *interrupted = run_search(settings, recorder, {}, search).interrupted;
-  std::vector<std::vector<double>> starts = distinct_starts(def, history);
-  if (starts.empty()) starts.push_back(std::vector<double>(n, 0.5));
-  return starts;
 }
 
 // Ceres's view of the residuals: one parameter block of size 1 per parameter, the Jacobian by
@@ -217,16 +125,16 @@ void polish(const IdentifyDefinition& def, PolishProblem& p, const IdentifyRunOp
 // polish's report in *result.
 std::unique_ptr<PolishProblem> polish_from_starts(const IdentifyDefinition& def,
                                                   IdentifyResiduals& residuals,
-                                                  const std::vector<std::vector<double>>& starts,
+                                                  const std::vector<GlobalStart>& starts,
                                                   const IdentifyRunOptions& options,
                                                   IdentifyResult* result) {
   std::unique_ptr<PolishProblem> best;
   for (std::size_t k = 0; k < starts.size(); ++k) {
-    auto problem = std::make_unique<PolishProblem>(residuals, starts[k]);
+    auto problem = std::make_unique<PolishProblem>(residuals, starts[k].unit);
     IdentifyResult report;
     if (!result->interrupted) polish(def, *problem, options, &report);
     result->interrupted = result->interrupted || report.interrupted;
-    PolishEnd end{starts[k], problem->unit, 0.0, report.polish_converged};
+    PolishEnd end{starts[k].unit, problem->unit, 0.0, report.polish_converged, starts[k].run};
     for (double& u : end.end) u = std::clamp(u, 0.0, 1.0);
     end.cost = sum_of_squares(residuals.at(end.end, "polish"));
     // lower, or the first end whose trials ran (a failed start's cost is NaN)
@@ -339,9 +247,9 @@ IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
   IdentifyResiduals residuals(def, db, options.threads);
   result.residuals = residuals.count();
   auto t0 = Clock::now();
-  const std::vector<std::vector<double>> polish_starts =
+  const std::vector<GlobalStart> polish_starts =
       global_search(def, residuals, options, &result.interrupted);
-  result.cost_global = sum_of_squares(residuals.at(polish_starts.front(), "global"));
+  result.cost_global = sum_of_squares(residuals.at(polish_starts.front().unit, "global"));
   result.global_s = seconds_since(t0);
   t0 = Clock::now();
   const std::unique_ptr<PolishProblem> problem =
@@ -379,6 +287,7 @@ IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
   fill_roughness(residuals_at, result.unit, &result);
   fill_interval_uncertainty(residuals_at, jacobian, at_result, residuals.segments(), result.unit,
                             def.interval, &result);
+  result.settled = judge_settled(def, result);
   result.fits = channel_fits(def, values, options.threads);
   result.check_s = seconds_since(t0);
   result.simulated = residuals.simulated;

@@ -1,11 +1,11 @@
 // identify.h: `pamsim identify`: the parameters of an identification file fitted
 // to its recordings, in two phases over the parameters' unit box: a global search by pagmo2's
-// CMA-ES (optimizer.h; `generations` of `population`), then a local least-squares polish from
-// its best point by Ceres Solver's Levenberg-Marquardt (bounds [0, 1], central-difference
-// Jacobian), and the parameters' covariance at the result, one that holds for residuals
-// correlated in time (identify_uncertainty.h: a prewhitened HAC sandwich, with the plain
-// s^2 (J^T J)^-1 beside it), carried to the parameters' units by dx/du; each channel is
-// judged against its own noise floor.
+// CMA-ES (optimizer.h; `generations` of `population`, in `runs` runs: identify_global.h), then a
+// least-squares polish from each run's best point by Ceres Solver's Levenberg-Marquardt
+// (bounds [0, 1], central-difference Jacobian), and the parameters' covariance at the result,
+// one that holds for residuals correlated in time (identify_uncertainty.h: a prewhitened HAC
+// sandwich, with the plain s^2 (J^T J)^-1 beside it), carried to the parameters' units by
+// dx/du; each channel is judged against its own noise floor.
 // Every residual vector is committed to the run's database as it is computed
 // (identify_db.h); a run stopped at any point and started again with the same database
 // replays both phases, deterministic, and simulates only what it had not.
@@ -73,7 +73,23 @@ struct PolishEnd {
   std::vector<double> start, end;  // in the unit box
   double cost = 0.0;               // sum of squared residuals at the end
   bool converged = false;
+  int run = -1;  // the global search's run whose best point it started from; -1: a further start
 };
+
+// Two polish ends are at the same point when every parameter the recordings determine is within
+// kSameEndErrors of the result's standard errors (without one, kSameEnd of the box); an end
+// whose cost is more than kLocalMinimumMargin (chi-square of one degree of freedom at 95 %)
+// above the result's is a local minimum.
+inline constexpr double kLocalMinimumMargin = 3.84;
+inline constexpr double kSameEndErrors = 2.0;
+inline constexpr double kSameEnd = 0.01;
+
+// Whether the global search's independent runs (IdentifyDefinition::runs) ended at one answer:
+// a run's polished end agrees with the result when it is at the same point and costs at most
+// kLocalMinimumMargin more, or kSettledCostRatio times as much, whichever is more; two that
+// agree (the result among them) settle the search.
+enum class SearchSettled { kNotChecked, kSettled, kNotSettled };
+inline constexpr double kSettledCostRatio = 1.1;
 
 struct IdentifyResult {
   std::vector<double> unit;  // the identified point in the unit box
@@ -95,6 +111,7 @@ struct IdentifyResult {
   // first), and which of them the result is (the lowest end)
   std::vector<PolishEnd> starts;
   std::size_t best_start = 0;
+  SearchSettled settled = SearchSettled::kNotChecked;  // kNotChecked: one run
 };
 
 // Throws InputError "<file>: no point of the search ran ..." when no point's trials all ran

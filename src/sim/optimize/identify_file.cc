@@ -187,10 +187,15 @@ KeyTable identify_search_table(IdentifyDefinition* def) {
       int_row("polish_iterations", "Levenberg-Marquardt iterations of the local polish (Ceres)", 0,
               1000, &def->polish_iterations),
       int_row("starts",
-              "the polish's starts: the global search's best point, then its best points at "
+              "the polish's starts: each run's best point, then the runs' best points at "
               "least 0.1 of the box from every start before (the lowest end is the result; "
               "one that ends higher is reported as a local minimum)",
-              1, 20, &def->starts)};
+              1, 20, &def->starts),
+      int_row("runs",
+              "independent runs of the global search, run r with seed + r and population x 2^r "
+              "(IPOP-CMA-ES's restarts), each run's best point polished; when the fit is above "
+              "the noise, runs that ended apart say the search did not settle, not the model",
+              1, 8, &def->runs)};
   t.ints[1].fallback_doc =
       "(the larger of 8 and 4 + floor(3 ln m), m the parameters CMA-ES moves: the offsets "
       "it sets aside not counted)";
@@ -311,10 +316,11 @@ std::string IdentifyDefinition::canonical_json() const {
   const bool offsets = std::any_of(
       channel_parameters.begin(), channel_parameters.end(),
       [](const ChannelParameter& c) { return c.kind == ChannelParameter::Kind::kOffset; });
-  if (tensile.empty() && starts == 1 && !offsets) return j.dump();
+  if (tensile.empty() && starts == 1 && runs == 1 && !offsets) return j.dump();
   nlohmann::json with = j;
   if (!tensile.empty()) with["tensile"] = tensile_json;
   if (starts > 1) with["starts"] = starts;
+  if (runs > 1) with["runs"] = runs;
   if (offsets) with["profile_offsets"] = profile_offsets;
   return with.dump();
 }

@@ -29,12 +29,13 @@ std::string correlated_text(const IdentifiedParameter& p) {
   return out;
 }
 
-// What a reader should make of a parameter's value (`explained`: every fitted channel is).
-std::string verdict(const IdentifiedParameter& p, bool explained) {
+// What a reader should make of a parameter's value (`distrust`: why the result as a whole is
+// not to be trusted, distrust_reason; "": it is).
+std::string verdict(const IdentifiedParameter& p, const std::string& distrust) {
   if (!p.identifiable) return "not determined by the recordings";
   std::string v = p.at_bound ? "at a bound of its range" : "identified";
   if (!p.correlated.empty()) v += ", strongly correlated";
-  if (!explained) v += "; not to be trusted: the model does not explain the recordings";
+  if (!distrust.empty()) v += "; not to be trusted: " + distrust;
   if (p.roughness > kRoughnessLimit) v += "; not to be trusted: the model's numerical error";
   return v;
 }
@@ -54,7 +55,7 @@ std::string level_text(const IdentifyResult& r) {
 
 std::string parameters_table(const IdentifyResult& r) {
   std::ostringstream md;
-  const bool explained = unexplained_channels(r).empty();
+  const std::string distrust = distrust_reason(r);
   md << "| parameter | range | start | identified | standard error | " << level_text(r)
      << " interval | "
         "plain s.e. | verdict | correlated (> 0.9) |\n"
@@ -64,7 +65,7 @@ std::string parameters_table(const IdentifyResult& r) {
        << format_value(p.parameter.to) << (p.parameter.log ? " (log)" : "") << " | "
        << value_or_dash(p.start) << " | " << format_value(p.value) << " | "
        << value_or_dash(p.std_error) << " | " << interval_text(p) << " | "
-       << value_or_dash(p.std_error_plain) << " | " << verdict(p, explained) << " | "
+       << value_or_dash(p.std_error_plain) << " | " << verdict(p, distrust) << " | "
        << correlated_text(p) << " |\n";
   }
   return md.str();
@@ -146,31 +147,45 @@ void write_identified_files(const IdentifyDefinition& def, const IdentifyResult&
 // Where polish end `e` lies from the result's: the parameter farthest from the result's value
 // in standard errors (among those the recordings determine), else in the unit box;
 // "<key> = <value> against <result's> (<k> standard errors)".
-std::string where_apart(const IdentifyDefinition& def, const IdentifyResult& r, const PolishEnd& e,
-                        double* unit_apart, double* se_apart) {
-  const PolishEnd& best = r.starts[r.best_start];
-  const std::vector<double> at_e = parameter_values(def, e.end);
-  const std::vector<double> at_best = parameter_values(def, best.end);
+// How far polish end `e` lies from the result's: the most box units off in any parameter, and
+// the most standard errors off in one the recordings determine (-1: none has a standard
+// error), with the parameters that are.
+struct EndDistance {
+  double box = 0.0, std_errors = -1.0;
   std::size_t by_box = 0, by_se = 0;
-  double most_se = -1.0;  // none determined
-  *unit_apart = 0.0;
+  // the same point as the result's (kSameEndErrors, kSameEnd; identify.h)
+  bool same() const { return std_errors >= 0.0 ? std_errors <= kSameEndErrors : box <= kSameEnd; }
+};
+
+EndDistance end_distance(const IdentifyResult& r, const PolishEnd& e,
+                         const std::vector<double>& at_e, const std::vector<double>& at_best) {
+  const PolishEnd& best = r.starts[r.best_start];
+  EndDistance d;
   for (std::size_t i = 0; i < e.end.size(); ++i) {
-    const double d = std::abs(e.end[i] - best.end[i]);
-    if (d > *unit_apart) {
-      *unit_apart = d;
-      by_box = i;
+    const double box = std::abs(e.end[i] - best.end[i]);
+    if (box > d.box) {
+      d.box = box;
+      d.by_box = i;
     }
     const IdentifiedParameter* p = i < r.parameters.size() ? &r.parameters[i] : nullptr;
     if (!p || !p->identifiable || !(p->std_error > 0.0)) continue;
     const double se = std::abs(at_e[i] - at_best[i]) / p->std_error;
-    if (se > most_se) {
-      most_se = se;
-      by_se = i;
+    if (se > d.std_errors) {
+      d.std_errors = se;
+      d.by_se = i;
     }
   }
-  *se_apart = most_se;
+  return d;
+}
+
+std::string where_apart(const IdentifyDefinition& def, const IdentifyResult& r, const PolishEnd& e,
+                        EndDistance* distance) {
+  const std::vector<double> at_e = parameter_values(def, e.end);
+  const std::vector<double> at_best = parameter_values(def, r.starts[r.best_start].end);
+  *distance = end_distance(r, e, at_e, at_best);
   if (e.end.empty()) return "";
-  const std::size_t i = most_se >= 0.0 ? by_se : by_box;
+  const double most_se = distance->std_errors;
+  const std::size_t i = most_se >= 0.0 ? distance->by_se : distance->by_box;
   const std::string errors =
       " (" + format_value(std::round(most_se * 10) / 10) + " standard errors)";
   return def.parameters[i].key + " = " + format_value(at_e[i]) + " against " +
@@ -195,11 +210,11 @@ std::vector<std::string> start_warnings(const IdentifyDefinition& def, const Ide
   const PolishEnd& best = r.starts[r.best_start];
   for (std::size_t k = 0; k < r.starts.size(); ++k) {
     const PolishEnd& e = r.starts[k];
-    double apart = 0.0, apart_se = -1.0;
-    const std::string where = where_apart(def, r, e, &apart, &apart_se);
-    // elsewhere: more than kSameEnd standard errors off in a parameter the recordings
-    // determine (an undetermined one may end anywhere), or, without them, of the box
-    const bool elsewhere = apart_se >= 0.0 ? apart_se > kSameEndErrors : apart > kSameEnd;
+    EndDistance distance;
+    const std::string where = where_apart(def, r, e, &distance);
+    // elsewhere: not the result's point in a parameter the recordings determine (an
+    // undetermined one may end anywhere), or, without standard errors, in the box
+    const bool elsewhere = !distance.same();
     const std::string start =
         "the polish's start " + std::to_string(k + 1) + " of " + std::to_string(r.starts.size());
     const std::string costs = "cost " + format_value(e.cost) + " against the result's " +
@@ -215,6 +230,21 @@ std::vector<std::string> start_warnings(const IdentifyDefinition& def, const Ide
     }
   }
   return out;
+}
+
+SearchSettled judge_settled(const IdentifyDefinition& def, const IdentifyResult& r) {
+  const PolishEnd& best = r.starts.at(r.best_start);
+  const std::vector<double> at_best = parameter_values(def, best.end);
+  int runs = 0, agreeing = 0;
+  for (const PolishEnd& e : r.starts) {
+    if (e.run < 0) continue;
+    ++runs;
+    const double most = std::max(best.cost + kLocalMinimumMargin, kSettledCostRatio * best.cost);
+    const bool cheap = e.cost <= most;
+    agreeing += cheap && end_distance(r, e, parameter_values(def, e.end), at_best).same();
+  }
+  if (runs < 2) return SearchSettled::kNotChecked;
+  return agreeing >= 2 ? SearchSettled::kSettled : SearchSettled::kNotSettled;
 }
 
 std::vector<std::string> identify_warnings(const IdentifyDefinition& def, const IdentifyResult& r) {
@@ -261,13 +291,13 @@ std::string identify_parameters_csv(const IdentifyResult& r) {
       "key,from,to,scale,start,identified,std_error,at_bound,identifiable,"
       "correlated_with,std_error_plain,interval_lo,interval_hi,verdict,"
       "difference_roughness\n";
-  const bool explained = unexplained_channels(r).empty();
+  const std::string distrust = distrust_reason(r);
   for (const IdentifiedParameter& p : r.parameters) {
     out += p.parameter.key + "," + cell(p.parameter.from) + "," + cell(p.parameter.to) + "," +
            (p.parameter.log ? "log" : "linear") + "," + cell(p.start) + "," + cell(p.value) + "," +
            cell(p.std_error) + "," + (p.at_bound ? "1" : "0") + "," + (p.identifiable ? "1" : "0") +
            "," + correlated_text(p) + "," + cell(p.std_error_plain) + "," + cell(p.interval_lo) +
-           "," + cell(p.interval_hi) + ",\"" + verdict(p, explained) + "\"," + cell(p.roughness) +
+           "," + cell(p.interval_hi) + ",\"" + verdict(p, distrust) + "\"," + cell(p.roughness) +
            "\n";
   }
   return out;

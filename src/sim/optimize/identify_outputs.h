@@ -17,16 +17,16 @@ inline const std::vector<std::string> kIdentifyOutputs = {
     "recording_*.svg", "recording_*.pdf", "plant_*.toml",      "pneumatics.toml", "plan.csv",
     "plan.md"};
 
-// A polish start that ends more than kLocalMinimumMargin (chi-square of one degree of freedom
-// at 95 %) above the result's cost ended in a local minimum (or stopped short of one); one that
-// ends within it but elsewhere (more than kSameEndErrors of the result's standard errors off
-// in a parameter the recordings determine; without standard errors, kSameEnd of the box) is
-// an equal minimum: the recordings do not single out one. One line each (none for one start),
-// and one when fewer starts ran than `starts` asks, with the reason.
-inline constexpr double kLocalMinimumMargin = 3.84;
-inline constexpr double kSameEndErrors = 2.0;
-inline constexpr double kSameEnd = 0.01;
+// A polish start that ends more than kLocalMinimumMargin (identify.h) above the result's cost
+// ended in a local minimum (or stopped short of one); one that ends within it but elsewhere
+// (not at the same end, same_end in identify.h) is an equal minimum: the recordings do not
+// single out one. One line each (none for one start), and one when fewer starts ran than
+// `starts` asks, with the reason.
 std::vector<std::string> start_warnings(const IdentifyDefinition& def, const IdentifyResult& r);
+
+// Whether the runs' polished ends agree (SearchSettled, identify.h): kNotChecked with fewer
+// than two runs.
+SearchSettled judge_settled(const IdentifyDefinition& def, const IdentifyResult& r);
 
 // What a user must not miss, one line each: a fitted channel the model does not explain, a
 // polish that did not converge or failed, a parameter at a bound of its range.

@@ -163,6 +163,30 @@ void judge_channel(const std::vector<double>& recorded, double given, double exp
   fit->explained = fit->judged && !(fit->rmse_after > explained_factor * fit->noise_floor);
 }
 
+namespace {
+
+// "the search did not settle: runs ended at costs 4102, 152384 (run 1, 2); run with more
+// runs (runs = 3) or generations"
+std::string unsettled_line(const IdentifyResult& result) {
+  std::string costs;
+  int runs = 0;
+  for (const PolishEnd& end : result.starts) {
+    if (end.run < 0) continue;
+    costs += (costs.empty() ? "" : ", ") + format_value(end.cost);
+    ++runs;
+  }
+  return "the search did not settle: its " + std::to_string(runs) + " runs ended at costs " +
+         costs + "; run with more runs (runs = " + std::to_string(runs + 1) + ") or generations";
+}
+
+}  // namespace
+
+std::string distrust_reason(const IdentifyResult& result) {
+  if (unexplained_channels(result).empty()) return "";
+  return result.settled == SearchSettled::kNotSettled ? "the search did not settle"
+                                                      : "the model does not explain the recordings";
+}
+
 std::vector<std::string> unexplained_channels(const IdentifyResult& result) {
   std::vector<std::string> lines;
   for (const ChannelFit& f : result.fits) {
@@ -170,6 +194,9 @@ std::vector<std::string> unexplained_channels(const IdentifyResult& result) {
     lines.push_back("the model does not explain recording " + f.recording + " (" + f.channel +
                     "): RMS " + format_value(std::round(f.rmse_after / f.noise_floor * 10) / 10) +
                     " x the noise");
+  }
+  if (!lines.empty() && result.settled == SearchSettled::kNotSettled) {
+    return {unsettled_line(result)};
   }
   return lines;
 }

@@ -96,7 +96,14 @@ void judge_channel(const std::vector<double>& recorded, double given, double exp
                    ChannelFit* fit);
 
 // "the model does not explain recording <r> (<channel>): RMS <k> x the noise" for each
-// fitted channel that is not explained; empty if all are.
+// fitted channel that is not explained; empty if all are. When the runs ended apart
+// (SearchSettled::kNotSettled) one line instead: "the search did not settle: runs ended at
+// costs ...; run with more runs (runs = ...) or generations".
 std::vector<std::string> unexplained_channels(const IdentifyResult& result);
+
+// Why the result as a whole is not to be trusted: "" when every fitted channel is explained;
+// "the search did not settle" when the runs ended apart; else "the model does not explain the
+// recordings".
+std::string distrust_reason(const IdentifyResult& result);
 
 }  // namespace pamsim
