@@ -86,8 +86,8 @@ void print_ending(const IdentifyDefinition& def, const IdentifyResult& r, const 
   std::cout << "outputs: " << out << "/{identified.toml,identify.csv,identify_fits.csv,identify.md"
             << (plots ? ",recording_*.png" : "") << "} and the identified plant/pneumatics files\n";
   // the search's budget and how it ended, then what a user must not miss, last
-  std::cout << "search: CMA-ES " << def.generations << " generations of " << def.population
-            << " (cost " << format_value(r.cost_global) << "), then " << r.polish_iterations
+  std::cout << "search: CMA-ES " << global_search_text(def, r) << " (cost "
+            << format_value(r.cost_global) << "), then " << r.polish_iterations
             << " Levenberg-Marquardt iterations of at most " << def.polish_iterations << " ("
             << (r.polish_failed      ? "failed"
                 : r.polish_converged ? "converged"

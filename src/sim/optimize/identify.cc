@@ -248,7 +248,7 @@ IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
   result.residuals = residuals.count();
   auto t0 = Clock::now();
   const std::vector<GlobalStart> polish_starts =
-      global_search(def, residuals, options, &result.interrupted);
+      global_search(def, residuals, options, &result.interrupted, &result.run_generations);
   result.cost_global = sum_of_squares(residuals.at(polish_starts.front().unit, "global"));
   result.global_s = seconds_since(t0);
   t0 = Clock::now();

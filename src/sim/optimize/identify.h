@@ -77,9 +77,9 @@ struct PolishEnd {
 };
 
 // Two polish ends are at the same point when every parameter the recordings determine is within
-// kSameEndErrors of the result's standard errors (without one, kSameEnd of the box); an end
-// whose cost is more than kLocalMinimumMargin (chi-square of one degree of freedom at 95 %)
-// above the result's is a local minimum.
+// kSameEndErrors of the result's standard errors, or within the polish's difference step of the
+// box (without one, kSameEnd of the box); an end whose cost is more than kLocalMinimumMargin
+// (chi-square of one degree of freedom at 95 %) above the result's is a local minimum.
 inline constexpr double kLocalMinimumMargin = 3.84;
 inline constexpr double kSameEndErrors = 2.0;
 inline constexpr double kSameEnd = 0.01;
@@ -112,6 +112,7 @@ struct IdentifyResult {
   std::vector<PolishEnd> starts;
   std::size_t best_start = 0;
   SearchSettled settled = SearchSettled::kNotChecked;  // kNotChecked: one run
+  std::vector<unsigned> run_generations;  // the generations each run of the global search ran
 };
 
 // Throws InputError "<file>: no point of the search ran ..." when no point's trials all ran

@@ -195,7 +195,12 @@ KeyTable identify_search_table(IdentifyDefinition* def) {
               "independent runs of the global search, run r with seed + r and population x 2^r "
               "(IPOP-CMA-ES's restarts), each run's best point polished; when the fit is above "
               "the noise, runs that ended apart say the search did not settle, not the model",
-              1, 8, &def->runs)};
+              1, 8, &def->runs),
+      int_row("stall_generations",
+              "a run of the global search ends once its best cost has fallen by less than 0.1 % "
+              "plus 1 (the cost is in noise floors squared) over this many generations in a "
+              "row; generations is then the most it runs (0: every generation)",
+              0, 1000, &def->stall_generations)};
   t.ints[1].fallback_doc =
       "(the larger of 8 and 4 + floor(3 ln m), m the parameters CMA-ES moves: the offsets "
       "it sets aside not counted)";
@@ -316,11 +321,14 @@ std::string IdentifyDefinition::canonical_json() const {
   const bool offsets = std::any_of(
       channel_parameters.begin(), channel_parameters.end(),
       [](const ChannelParameter& c) { return c.kind == ChannelParameter::Kind::kOffset; });
-  if (tensile.empty() && starts == 1 && runs == 1 && !offsets) return j.dump();
+  if (tensile.empty() && starts == 1 && runs == 1 && stall_generations == 0 && !offsets) {
+    return j.dump();
+  }
   nlohmann::json with = j;
   if (!tensile.empty()) with["tensile"] = tensile_json;
   if (starts > 1) with["starts"] = starts;
   if (runs > 1) with["runs"] = runs;
+  if (stall_generations > 0) with["stall_generations"] = stall_generations;
   if (offsets) with["profile_offsets"] = profile_offsets;
   return with.dump();
 }

@@ -11,6 +11,10 @@
 namespace pamsim {
 namespace {
 
+// A fall of the cost that does not count as progress for the stall stop, on top of 0.1 % of
+// it: one unit of a cost whose residuals are in noise floors.
+constexpr double kStallCost = 1.0;
+
 // A failed point's fitness for CMA-ES: worse than any point whose trials ran.
 constexpr double kFailedCost = 1e300;
 
@@ -90,7 +94,8 @@ class Recorder : public Objective {
 }  // namespace
 
 std::vector<GlobalStart> global_search(const IdentifyDefinition& def, IdentifyResiduals& residuals,
-                                       const IdentifyRunOptions& options, bool* interrupted) {
+                                       const IdentifyRunOptions& options, bool* interrupted,
+                                       std::vector<unsigned>* generations) {
   const std::size_t n = def.parameters.size();
   if (def.generations == 0) return {{std::vector<double>(n, 0.5), 0}};
   const OffsetProjection projection(def, residuals);
@@ -103,11 +108,15 @@ std::vector<GlobalStart> global_search(const IdentifyDefinition& def, IdentifyRe
   std::int64_t evaluated = 0;
   for (int run = 0; run < def.runs && !*interrupted; ++run) {
     // run r: seed + r, population x 2^r (pagmo's seeds are 32-bit)
-    const SearchSettings settings{SearchAlgorithm::kCmaes, def.generations, def.population << run,
-                                  (def.seed + run) & 0xffffffffULL};
+    SearchSettings settings{SearchAlgorithm::kCmaes, def.generations, def.population << run,
+                            (def.seed + run) & 0xffffffffULL};
+    settings.stall_generations = def.stall_generations;
+    settings.stall_absolute = kStallCost;
     std::vector<Evaluation> history;
     Recorder recorder(objective, history, &evaluated, options);
-    *interrupted = run_search(settings, recorder, {}, search).interrupted;
+    const SearchResult ran = run_search(settings, recorder, {}, search);
+    *interrupted = ran.interrupted;
+    generations->push_back(ran.generations);
     if (const Evaluation* best = best_evaluation(history)) starts.push_back({best->unit, run});
     pooled.insert(pooled.end(), history.begin(), history.end());
   }

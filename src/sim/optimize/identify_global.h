@@ -20,7 +20,9 @@ struct GlobalStart {
 // Each run's best point in run order, then further distinct points up to def.starts in all;
 // the middle of the box alone without generations, the middle projected when every parameter
 // is an offset. Sets *interrupted when options.stop stopped it.
+// The generations each run ran go to *generations.
 std::vector<GlobalStart> global_search(const IdentifyDefinition& def, IdentifyResiduals& residuals,
-                                       const IdentifyRunOptions& options, bool* interrupted);
+                                       const IdentifyRunOptions& options, bool* interrupted,
+                                       std::vector<unsigned>* generations);
 
 }  // namespace pamsim

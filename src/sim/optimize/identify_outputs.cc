@@ -149,7 +149,9 @@ void write_identified_files(const IdentifyDefinition& def, const IdentifyResult&
 // "<key> = <value> against <result's> (<k> standard errors)".
 // How far polish end `e` lies from the result's: the most box units off in any parameter, and
 // the most standard errors off in one the recordings determine (-1: none has a standard
-// error), with the parameters that are.
+// error), with the parameters that are. Ends within the polish's own difference step of each
+// other in a parameter (kDifferenceStep of the box) are not apart in it, however small its
+// standard error: the polish cannot tell them apart.
 struct EndDistance {
   double box = 0.0, std_errors = -1.0;
   std::size_t by_box = 0, by_se = 0;
@@ -169,7 +171,7 @@ EndDistance end_distance(const IdentifyResult& r, const PolishEnd& e,
     }
     const IdentifiedParameter* p = i < r.parameters.size() ? &r.parameters[i] : nullptr;
     if (!p || !p->identifiable || !(p->std_error > 0.0)) continue;
-    const double se = std::abs(at_e[i] - at_best[i]) / p->std_error;
+    const double se = box > kDifferenceStep ? std::abs(at_e[i] - at_best[i]) / p->std_error : 0.0;
     if (se > d.std_errors) {
       d.std_errors = se;
       d.by_se = i;
@@ -230,6 +232,22 @@ std::vector<std::string> start_warnings(const IdentifyDefinition& def, const Ide
     }
   }
   return out;
+}
+
+std::string global_search_text(const IdentifyDefinition& def, const IdentifyResult& r) {
+  if (def.runs == 1 && def.stall_generations == 0) {
+    return std::to_string(def.generations) + " generations of " + std::to_string(def.population);
+  }
+  std::string text = std::to_string(r.run_generations.size()) + " runs: ";
+  for (std::size_t k = 0; k < r.run_generations.size(); ++k) {
+    text += (k ? ", " : "") + std::to_string(r.run_generations[k]) +
+            (k ? " of " : " generations of ") + std::to_string(def.population << k);
+  }
+  if (def.stall_generations > 0) {
+    text += "; a run ends after " + std::to_string(def.stall_generations) +
+            " generations without progress, or at " + std::to_string(def.generations);
+  }
+  return text;
 }
 
 SearchSettled judge_settled(const IdentifyDefinition& def, const IdentifyResult& r) {
@@ -323,12 +341,11 @@ std::string identify_markdown(const IdentifyDefinition& def, const IdentifyResul
   std::ostringstream md;
   md << "# Identification: " << def.file << "\n\n"
      << "Base scenario `" << def.base_path << "`; " << def.recordings.size() << " recordings, "
-     << r.residuals << " residuals fitted. CMA-ES (" << def.generations << " generations of "
-     << def.population << ") reached a cost of " << format_value(r.cost_global) << " in "
-     << format_value(r.global_s) << " s; the Levenberg-Marquardt polish "
-     << format_value(r.cost_final) << " in " << format_value(r.polish_s) << " s ("
-     << r.polish_summary << "). " << r.simulated << " points simulated, " << r.cached
-     << " answered from the database.\n\n"
+     << r.residuals << " residuals fitted. CMA-ES (" << global_search_text(def, r)
+     << ") reached a cost of " << format_value(r.cost_global) << " in " << format_value(r.global_s)
+     << " s; the Levenberg-Marquardt polish " << format_value(r.cost_final) << " in "
+     << format_value(r.polish_s) << " s (" << r.polish_summary << "). " << r.simulated
+     << " points simulated, " << r.cached << " answered from the database.\n\n"
      << warnings_text(def, r) << "## Parameters\n\n"
      << parameters_table(r) << "\n"
      << "Standard errors and " << level_text(r)

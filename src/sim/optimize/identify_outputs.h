@@ -24,6 +24,10 @@ inline const std::vector<std::string> kIdentifyOutputs = {
 // `starts` asks, with the reason.
 std::vector<std::string> start_warnings(const IdentifyDefinition& def, const IdentifyResult& r);
 
+// The global search as it ran: "6 generations of 8"; with runs or a stall stop, each run's
+// ("2 runs: 9 generations of 8, 12 of 16, stalled after 3 without progress").
+std::string global_search_text(const IdentifyDefinition& def, const IdentifyResult& r);
+
 // Whether the runs' polished ends agree (SearchSettled, identify.h): kNotChecked with fewer
 // than two runs.
 SearchSettled judge_settled(const IdentifyDefinition& def, const IdentifyResult& r);

@@ -2,6 +2,7 @@
 #include "sim/optimize/optimizer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <pagmo/algorithm.hpp>
@@ -60,10 +61,32 @@ struct Problem {
 pagmo::algorithm make_algorithm(const SearchSettings& s) {
   const auto seed = static_cast<unsigned>(s.seed);
   if (s.algorithm == SearchAlgorithm::kCmaes) {
-    return pagmo::algorithm{
-        pagmo::cmaes(s.generations, -1, -1, -1, -1, 0.3, 0.0, 0.0, false, true, seed)};
+    // with a stall stop, one generation per call, its state kept between calls (memory)
+    const bool stepped = s.stall_generations > 0;
+    return pagmo::algorithm{pagmo::cmaes(stepped ? 1u : s.generations, -1, -1, -1, -1, 0.3, 0.0,
+                                         0.0, stepped, true, seed)};
   }
   return pagmo::algorithm{pagmo::nsga2(s.generations, 0.95, 10.0, 0.01, 50.0, seed)};
+}
+
+// CMA-ES a generation at a time until it stalls (SearchSettings::stall_generations) or has run
+// every generation; returns the generations run.
+unsigned evolve_until_stalled(const SearchSettings& s, pagmo::population* population) {
+  pagmo::algorithm algorithm = make_algorithm(s);
+  double reference = population->champion_f()[0];
+  unsigned since = 0, g = 0;
+  while (g < s.generations) {
+    *population = algorithm.evolve(*population);
+    ++g;
+    const double best = population->champion_f()[0];
+    if (best < reference - (s.stall_relative * std::abs(reference) + s.stall_absolute)) {
+      reference = best;
+      since = 0;
+    } else if (++since >= s.stall_generations) {
+      break;
+    }
+  }
+  return g;
 }
 
 bool dominates(const Evaluation& a, const Evaluation& b) {
@@ -93,7 +116,12 @@ SearchResult run_search(const SearchSettings& settings, Objective& objective,
     pagmo::problem problem{Problem{evaluator, objective.dimension(), objective.objective_count()}};
     pagmo::population population{problem, settings.population,
                                  static_cast<unsigned>(settings.seed)};
-    population = make_algorithm(settings).evolve(population);
+    result.generations = settings.generations;
+    if (settings.algorithm == SearchAlgorithm::kCmaes && settings.stall_generations > 0) {
+      result.generations = evolve_until_stalled(settings, &population);
+    } else {
+      population = make_algorithm(settings).evolve(population);
+    }
   } catch (const StopSearch&) {
     result.interrupted = true;
   }

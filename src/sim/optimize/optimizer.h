@@ -42,7 +42,12 @@ struct SearchSettings {
   SearchAlgorithm algorithm = SearchAlgorithm::kCmaes;
   unsigned generations = 10, population = 8;
   std::uint64_t seed = 1;  // pagmo's seed, < 2^32
-  // The points the optimiser asks for: the first population and one per generation.
+  // CMA-ES only: with stall_generations > 0 it stops once its best fitness has fallen by less
+  // than stall_relative x |best| + stall_absolute over that many generations in a row
+  // (`generations` is then the most it runs); 0: every generation.
+  unsigned stall_generations = 0;
+  double stall_relative = 1e-3, stall_absolute = 0.0;
+  // The points the optimiser asks for at the most: the first population and one per generation.
   std::int64_t evaluations() const {
     return static_cast<std::int64_t>(population) * (generations + 1);
   }
@@ -56,10 +61,12 @@ struct SearchOptions {
 struct SearchResult {
   std::int64_t cached = 0;   // proposals answered from `stored` or from earlier proposals
   bool interrupted = false;  // stopped by options.stop
+  unsigned generations = 0;  // generations run (CMA-ES with a stall stop; else as asked)
 };
 
 // Runs (or, with the evaluations `stored` before, resumes) the search. CMA-ES runs all its
-// generations (no tolerance stop); it needs exactly one objective.
+// generations unless it stalls (SearchSettings::stall_generations); it needs exactly one
+// objective.
 SearchResult run_search(const SearchSettings& settings, Objective& objective,
                         const std::vector<Evaluation>& stored, const SearchOptions& options);
 

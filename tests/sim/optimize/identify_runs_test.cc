@@ -4,7 +4,7 @@
 // the search, not the model, is why a recording is not explained, and the verdict says so
 // instead of blaming the model. On the example arm: a search cut short on purpose did not
 // settle; two full runs find the wall and settle; a recording read 60 ms late is still one
-// the model does not explain.
+// the model does not explain; a run with a stall stop ends when its cost stops falling.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -154,6 +154,28 @@ TEST(IdentifyRunsTest, ARecordingReadLateIsStillOneTheModelDoesNotExplain) {
   ASSERT_EQ(lines.size(), 1u);
   EXPECT_EQ(lines[0].rfind("the model does not explain recording steps (angle_deg)", 0), 0u)
       << lines[0];
+}
+
+TEST(IdentifyRunsTest, ARunEndsWhenItsCostStallsAndSaysSo) {
+  const fs::path dir = pamsim_test::fresh_dir("identify_runs_stall");
+  const IdentifyResult r =
+      identify_wall_by_runs(dir,
+                            "runs = 2\ngenerations = 60\npopulation = 5\nstall_generations = 3\n"
+                            "polish_iterations = 10\n");
+  ASSERT_EQ(r.run_generations.size(), 2u);
+  for (unsigned g : r.run_generations) {
+    EXPECT_GE(g, 3u);
+    EXPECT_LT(g, 60u) << "one wall is found in far fewer generations";
+  }
+  EXPECT_EQ(r.settled, SearchSettled::kSettled)
+      << r.starts[0].cost << " at " << r.starts[0].end[0] << " after " << r.run_generations[0]
+      << ", " << r.starts[1].cost << " at " << r.starts[1].end[0] << " after "
+      << r.run_generations[1] << "; se " << r.parameters[0].std_error;
+  const IdentifyDefinition def = load_identify_definition((dir / "id.toml").string());
+  EXPECT_EQ(global_search_text(def, r),
+            "2 runs: " + std::to_string(r.run_generations[0]) + " generations of 5, " +
+                std::to_string(r.run_generations[1]) +
+                " of 10; a run ends after 3 generations without progress, or at 60");
 }
 
 }  // namespace

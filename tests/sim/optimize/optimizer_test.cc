@@ -103,6 +103,36 @@ TEST(OptimizerTest, AStoppedSearchResumedFromItsStoredEvaluationsIsTheUninterrup
   }
 }
 
+// A stall stop ends CMA-ES once its best stops falling (on the bowl, near the minimum, long
+// before its generations), and a stopped run resumes to the same end.
+TEST(OptimizerTest, AStallStopEndsCmaesWhenItsBestNoLongerFallsAndResumesToTheSameEnd) {
+  SearchSettings s = cmaes(300);
+  s.stall_generations = 5;
+  s.stall_absolute = 1e-6;
+  Bowl whole;
+  const SearchResult r = run_search(s, whole, {}, {});
+  EXPECT_GE(r.generations, 5u);
+  EXPECT_LT(r.generations, 300u);
+  EXPECT_EQ(static_cast<std::int64_t>(whole.stored.size()) + r.cached,
+            static_cast<std::int64_t>(s.population) * (r.generations + 1));
+  const Evaluation* best = best_evaluation(whole.stored);
+  ASSERT_NE(best, nullptr);
+  EXPECT_NEAR(best->values[0], 0.3, 0.01);
+  EXPECT_NEAR(best->values[1], 0.7, 0.01);
+
+  Bowl part;
+  part.stop_after = 23;
+  SearchOptions stopping;
+  stopping.stop = &part.stop;
+  EXPECT_TRUE(run_search(s, part, {}, stopping).interrupted);
+  Bowl rest;
+  const SearchResult resumed = run_search(s, rest, part.stored, {});
+  EXPECT_EQ(resumed.generations, r.generations);
+  EXPECT_EQ(part.calls + rest.calls, whole.calls) << "nothing evaluated twice";
+  ASSERT_FALSE(rest.stored.empty());
+  EXPECT_EQ(rest.stored.back().unit, whole.stored.back().unit);
+}
+
 TEST(OptimizerTest, Nsga2FrontIsNonDominatedAndApproachesTheParetoSet) {
   TwoObjectives two;
   SearchSettings s;

@@ -77,7 +77,7 @@ TEST(IdentifyKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {
       identify_search_table(&defaults),
       [&](const std::string& line) { return search_keys_file(dir, line); },
       [](const std::string& path) { load_identify_definition(path); });
-  EXPECT_EQ(refused, 2 * 5 + 6 * 4 + 2 * 1);
+  EXPECT_EQ(refused, 2 * 5 + 7 * 4 + 2 * 1);
 }
 
 // A one-parameter tuning of the reflex threshold, with `top` first.
