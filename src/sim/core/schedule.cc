@@ -78,8 +78,9 @@ double PressureSchedule::at(double t) const {
       return values_pa[i < 0 ? 0 : static_cast<std::size_t>(i)];
     }
     case ScheduleKind::kTable: {
-      const long i = segment(times_s, t);
+      const long i = segment(times_s, hold ? t + kHoldToleranceS : t);
       if (i < 0) return values_pa.front();
+      if (hold) return values_pa[static_cast<std::size_t>(i)];
       const std::size_t k = static_cast<std::size_t>(i);
       if (k + 1 >= times_s.size()) return values_pa.back();
       const double w = (t - times_s[k]) / (times_s[k + 1] - times_s[k]);

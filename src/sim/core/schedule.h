@@ -8,7 +8,9 @@
 //             offset before (the length-estimation test: 0.2 sin(2 pi t / 5) + 0.6 MPa)
 //   steps     levels[i] from times[i] on, levels[0] before times[0]
 //   table     piecewise linear through (time_s, MPa) points read from a CSV file
-//             (scenario/schedule_csv.h), held constant before the first and after the last point
+//             (scenario/schedule_csv.h), held constant before the first and after the last point;
+//             with `hold`, each point held until the next instead (a zero-order hold, as a
+//             regulator holds the command a controller logged at its tick)
 // Pressures are gauge [Pa] inside; the scenario gives MPa.
 #pragma once
 
@@ -26,6 +28,8 @@ const char* to_string(ScheduleKind kind);
 // Throws InputError "<key> must be one of ..., got "<name>"" on anything else.
 ScheduleKind parse_schedule_kind(const std::string& name, const std::string& key);
 
+inline constexpr double kHoldToleranceS = 1e-9;
+
 struct PressureSchedule {
   ScheduleKind kind = ScheduleKind::kConstant;
   double p0_pa = 0.4e6;           // constant, ramp start, sine offset
@@ -38,8 +42,12 @@ struct PressureSchedule {
   std::vector<double> times_s;    // steps, table: strictly increasing
   std::vector<double> values_pa;  // steps, table: one per time
   std::string source;             // table: the CSV file it came from (for messages)
+  std::string column = "MPa";     // table: the file's column of pressures
+  bool hold = false;              // table: a zero-order hold through the points, not linear
 
-  // p(t) [Pa]. Constant schedules return p0_pa exactly.
+  // p(t) [Pa]. Constant schedules return p0_pa exactly. A held table's point applies from
+  // kHoldToleranceS before its time, so that a tick computed as step x timestep meets the
+  // point a log printed at that tick's decimal time.
   double at(double t_s) const;
   // The smallest and largest value p(t) takes (for range checks against the supply).
   double min_pa() const;

@@ -64,7 +64,7 @@ PressureSchedule read_command(ConfigReader& in, const std::string& key) {
     const std::string file = s.source;  // its row's, resolved
     s = in_file(in, [&] {
       try {
-        return read_schedule_csv(file);
+        return read_schedule_column(file, s.column, s.hold);
       } catch (const InputError& e) {
         throw InputError(key + ".file: " + e.what());  // the key, then the CSV's own line
       }

@@ -13,6 +13,7 @@
 #include "base/toml_file.h"
 #include "base/units.h"
 #include "sim/io/csv_cells.h"
+#include "sim/io/recording_csv.h"
 
 namespace pamsim {
 
@@ -66,6 +67,33 @@ PressureSchedule read_schedule_csv(const std::string& path) {
   if (!header) throw InputError(path + ": empty file, expected the header \"time_s,MPa\"");
   if (times_s.empty()) throw InputError(path + ": no (time_s, MPa) rows");
   return table_schedule(std::move(times_s), std::move(values_pa), path);
+}
+
+PressureSchedule read_schedule_column(const std::string& path, const std::string& column,
+                                      bool hold) {
+  PressureSchedule s;
+  if (column == "MPa") {
+    s = read_schedule_csv(path);
+  } else {
+    const std::string suffix = "_MPa";
+    if (column.size() <= suffix.size() ||
+        column.compare(column.size() - suffix.size(), suffix.size(), suffix) != 0) {
+      throw InputError(path + ": column " + column + " is not in MPa (its name must end _MPa)");
+    }
+    const Recording log = read_recording_csv(path);
+    const std::size_t c = log.channel(column);
+    if (c == log.channels.size()) throw InputError(path + ": has no column " + column);
+    std::vector<double> times_s, values_pa;
+    for (std::size_t row = 0; row < log.time_s.size(); ++row) {
+      if (std::isnan(log.samples[c][row])) continue;
+      times_s.push_back(log.time_s[row]);
+      values_pa.push_back(units::mpa_to_pa(log.samples[c][row]));
+    }
+    s = table_schedule(std::move(times_s), std::move(values_pa), path);
+  }
+  s.column = column;
+  s.hold = hold;
+  return s;
 }
 
 }  // namespace pamsim

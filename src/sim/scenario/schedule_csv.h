@@ -14,4 +14,11 @@ namespace pamsim {
 // or a time that does not increase strictly.
 PressureSchedule read_schedule_csv(const std::string& path);
 
+// The schedule through `column` of a CSV with a time_s column (a log, as
+// sim/io/recording_csv.h reads it: its rows whose `column` cell is empty skipped), or, for
+// column "MPa", read_schedule_csv's; `hold` as PressureSchedule's. Throws InputError
+// "<path>: <problem>" also for a column the file lacks or one not in MPa (not ending _MPa).
+PressureSchedule read_schedule_column(const std::string& path, const std::string& column,
+                                      bool hold);
+
 }  // namespace pamsim

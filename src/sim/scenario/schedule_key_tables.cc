@@ -72,8 +72,17 @@ KeyTable schedule_key_table(ScheduleKind kind, PressureSchedule* schedule) {
     case ScheduleKind::kTable:
       t.texts = {{"file",
                   "a CSV \"time_s,MPa\": a piecewise linear schedule through its rows "
-                  "(scenario/schedule_csv.h)",
-                  &s.source, "(required)", true, true}};
+                  "(scenario/schedule_csv.h); or a wider CSV with time_s and `column`",
+                  &s.source, "(required)", true, true},
+                 {"column",
+                  "the file's column of pressures [MPa]: \"MPa\" in a file of the two columns "
+                  "\"time_s,MPa\", or a name ending in _MPa in a wider one, such as a log's "
+                  "p_cmd_ago_MPa (its empty cells skipped)",
+                  &s.column}};
+      t.bools = {{"hold",
+                  "true: each row held until the next (a zero-order hold, as a regulator holds "
+                  "the command logged at a controller's tick); false: linear between rows",
+                  &s.hold}};
       break;
   }
   return t;

@@ -77,7 +77,7 @@ std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
         "muscles.agonist.gauge.contact.reseat_mm=1"}},
       {s + "reaching.toml",
        {"muscles.agonist.command={kind=\"table\", file=\"" + (dir / "schedule.csv").string() +
-            "\"}",
+            "\", column=\"MPa\", hold=true}",
         "muscles.antagonist.line=\"equilibrium\""}},
       {pamsim_test::scenario_variant(dir, "reaching.toml", "position_m = [0.5, 0.5, 0.5]",
                                      "above_site = \"basket_floor\"\nheight_m = 0.3"),
