@@ -39,8 +39,13 @@ struct IdentifyOptions {
 
 // The values, the channels' fits and, with --plan, the candidates ranked.
 void print_result(const IdentifyResult& r, const std::optional<IdentifyPlan>& plan) {
-  std::cout << "identified (cost " << format_value(r.cost_global) << " after CMA-ES, "
-            << format_value(r.cost_final) << " after the polish):\n";
+  if (r.parameters.empty()) {
+    std::cout << "the model held against the recordings (cost " << format_value(r.cost_final)
+              << ", no parameter fitted):\n";
+  } else {
+    std::cout << "identified (cost " << format_value(r.cost_global) << " after CMA-ES, "
+              << format_value(r.cost_final) << " after the polish):\n";
+  }
   for (const IdentifiedParameter& p : r.parameters) {
     std::cout << "  " << p.parameter.key << " = ";
     if (!p.identifiable) {
@@ -54,8 +59,12 @@ void print_result(const IdentifyResult& r, const std::optional<IdentifyPlan>& pl
   }
   for (const ChannelFit& f : r.fits) {
     std::cout << "  " << f.recording << " " << f.channel << (f.held_out ? " (held out)" : "")
-              << ": RMSE " << format_value(f.rmse_before) << " -> " << format_value(f.rmse_after);
+              << ": RMSE ";
+    if (!r.parameters.empty()) std::cout << format_value(f.rmse_before) << " -> ";
+    std::cout << format_value(f.rmse_after);
     if (std::isfinite(f.noise_floor)) std::cout << " (noise " << format_value(f.noise_floor) << ")";
+    if (r.parameters.empty() && f.judged)
+      std::cout << (f.explained ? ", explained" : ", NOT explained");
     std::cout << "\n";
   }
   if (!plan) return;
@@ -79,13 +88,22 @@ void publish_outputs(const IdentifyDefinition& def, const IdentifyResult& r, con
 // what the run cost, where its outputs are, how the search ended, and the warnings, last
 void print_ending(const IdentifyDefinition& def, const IdentifyResult& r, const std::string& out,
                   bool plots) {
+  const bool fitted = !def.parameters.empty();
   std::cerr << "pamsim identify: " << r.simulated << " points simulated, " << r.cached
-            << " from the database; " << format_value(r.global_s) << " s CMA-ES, "
-            << format_value(r.polish_s) << " s polish, " << format_value(r.check_s)
-            << " s checks\n";
+            << " from the database; "
+            << (fitted ? format_value(r.global_s) + " s CMA-ES, " + format_value(r.polish_s) +
+                             " s polish, "
+                       : "")
+            << format_value(r.check_s) << " s checks\n";
   std::cout << "outputs: " << out << "/{identified.toml,identify.csv,identify_fits.csv,identify.md"
-            << (plots ? ",recording_*.png" : "") << "} and the identified plant/pneumatics files\n";
+            << (plots ? ",recording_*.png" : "") << "}"
+            << (fitted ? " and the identified plant/pneumatics files" : "") << "\n";
   // the search's budget and how it ended, then what a user must not miss, last
+  if (!fitted) {
+    for (const std::string& line : identify_warnings(def, r))
+      std::cout << "warning: " << line << "\n";
+    return;
+  }
   std::cout << "search: CMA-ES " << global_search_text(def, r) << " (cost "
             << format_value(r.cost_global) << "), then " << r.polish_iterations
             << " Levenberg-Marquardt iterations of at most " << def.polish_iterations << " ("
@@ -97,12 +115,35 @@ void print_ending(const IdentifyDefinition& def, const IdentifyResult& r, const 
     std::cout << "warning: " << line << "\n";
 }
 
+// what will run, on how many threads, into which database
+void print_start(const IdentifyDefinition& def, int threads, const std::string& db_path,
+                 std::size_t stored) {
+  const std::string on = std::to_string(threads) + (threads == 1 ? " thread" : " threads");
+  if (def.parameters.empty()) {
+    std::cerr << "pamsim identify: no [[parameter]]: the model held against "
+              << def.recordings.size() << " recordings, on " << on << "\n";
+    return;
+  }
+  std::cerr << "pamsim identify: " << def.parameters.size() << " parameters, "
+            << def.recordings.size() << " recordings; CMA-ES "
+            << (def.runs > 1 ? std::to_string(def.runs) + " runs of up to " : "") << def.generations
+            << " generations of " << def.population << (def.runs > 1 ? " (doubling each run)" : "")
+            << ", then up to " << def.polish_iterations
+            << " Levenberg-Marquardt iterations per start, on " << on << " into " << db_path << " ("
+            << stored << " points stored)\n";
+}
+
 void identify(const IdentifyOptions& opt) {
   const int threads = resolve_thread_count(opt.database.threads);
   const IdentifyDefinition def = load_identify_definition(opt.file);  // everything validated
   if (opt.plan && def.candidates.empty()) {
     throw InputError(opt.file +
                      ": --plan ranks the file's [[candidate]] experiments, and it has none");
+  }
+  if (opt.plan && def.parameters.empty()) {
+    throw InputError(opt.file +
+                     ": --plan ranks experiments by the parameters' uncertainty, "
+                     "and the file has no [[parameter]]");
   }
   const CommandDatabase where = command_database(opt.file, opt.database, "identify.db");
   if (opt.database.resume && !where.exists) {
@@ -117,12 +158,7 @@ void identify(const IdentifyOptions& opt) {
     return opt.database.resume ? IdentifyDb::open_to_resume(where.path, def)
                                : IdentifyDb::create(where.path, def);
   });
-  std::cerr << "pamsim identify: " << def.parameters.size() << " parameters, "
-            << def.recordings.size() << " recordings; CMA-ES " << def.generations
-            << " generations of " << def.population << ", then up to " << def.polish_iterations
-            << " Levenberg-Marquardt iterations, on " << threads
-            << (threads == 1 ? " thread" : " threads") << " into " << where.path << " ("
-            << db.size() << " points stored)\n";
+  print_start(def, threads, where.path, db.size());
   StopOnSignal stop_on_signal;
   IdentifyRunOptions run;
   run.threads = threads;

@@ -199,14 +199,17 @@ void add_tensile_fits(const IdentifyDefinition& def, const std::vector<double>& 
 }
 
 // Every recording's channels before (the base scenario) and after (the identified values).
+// With no parameter, before and after are one trial.
 std::vector<ChannelFit> channel_fits(const IdentifyDefinition& def,
                                      const std::vector<double>& values, int threads) {
   const std::size_t n = def.recordings.size();
-  std::vector<SimulatedRecording> sims(2 * n);
-  parallel_for(static_cast<int>(2 * n), threads, [&](int k) {
+  const std::size_t after = def.parameters.empty() ? 0 : n;
+  std::vector<SimulatedRecording> sims(n + after);
+  parallel_for(static_cast<int>(n + after), threads, [&](int k) {
     const IdentifyRecording& r = def.recordings[static_cast<std::size_t>(k) % n];
     std::vector<std::string> before = def.overrides;
-    before.insert(before.end(), r.set.begin(), r.set.end());
+    const std::vector<std::string> conditions = r.conditions();
+    before.insert(before.end(), conditions.begin(), conditions.end());
     sims[static_cast<std::size_t>(k)] =
         simulate_recording(def, r, k < static_cast<int>(n) ? before : def.overrides_at(r, values));
   });
@@ -221,7 +224,7 @@ std::vector<ChannelFit> channel_fits(const IdentifyDefinition& def,
   for (std::size_t i = 0; i < n; ++i) {
     const IdentifyRecording& r = def.recordings[i];
     const auto sampled_before = sample_channels(def, r, sims[i], ideal);
-    const auto sampled_after = sample_channels(def, r, sims[n + i], values);
+    const auto sampled_after = sample_channels(def, r, sims[after + i], values);
     const std::vector<double> before = channel_rmse(r, sampled_before);
     const std::vector<double> after = channel_rmse(r, sampled_after);
     for (std::size_t c = 0; c < r.channels.size(); ++c) {
@@ -239,12 +242,32 @@ std::vector<ChannelFit> channel_fits(const IdentifyDefinition& def,
   return fits;
 }
 
+// No parameter: the model as the file gives it, its cost and its channels' verdicts.
+IdentifyResult hold_against_recordings(const IdentifyDefinition& def, IdentifyResiduals& residuals,
+                                       int threads) {
+  IdentifyResult result;
+  result.residuals = residuals.count();
+  const auto t0 = Clock::now();
+  result.cost_global = result.cost_final = sum_of_squares(residuals.at({}, "check"));
+  if (!std::isfinite(result.cost_final)) {
+    throw InputError(def.file + ": the model's trials did not run to the end (" +
+                     residuals.first_failure() + ")");
+  }
+  result.polish_summary = "no parameter to fit";
+  result.fits = channel_fits(def, {}, threads);
+  result.check_s = seconds_since(t0);
+  result.simulated = residuals.simulated;
+  result.cached = residuals.cached;
+  return result;
+}
+
 }  // namespace
 
 IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
                             const IdentifyRunOptions& options) {
-  IdentifyResult result;
   IdentifyResiduals residuals(def, db, options.threads);
+  if (def.parameters.empty()) return hold_against_recordings(def, residuals, options.threads);
+  IdentifyResult result;
   result.residuals = residuals.count();
   auto t0 = Clock::now();
   const std::vector<GlobalStart> polish_starts =

@@ -116,7 +116,9 @@ struct IdentifyResult {
 };
 
 // Throws InputError "<file>: no point of the search ran ..." when no point's trials all ran
-// to the end (a range no scenario allows, a model that diverges everywhere).
+// to the end (a range no scenario allows, a model that diverges everywhere). With no
+// parameter nothing is searched: the result is the model as the file gives it held against
+// the recordings (a lab's log against the model: cost, fits and their verdicts; no starts).
 IdentifyResult run_identify(const IdentifyDefinition& def, IdentifyDb& db,
                             const IdentifyRunOptions& options);
 

@@ -251,7 +251,8 @@ std::vector<std::string> IdentifyDefinition::overrides_at(const std::vector<doub
 std::vector<std::string> IdentifyDefinition::overrides_at(const IdentifyRecording& recording,
                                                           const std::vector<double>& values) const {
   std::vector<std::string> out = overrides;
-  out.insert(out.end(), recording.set.begin(), recording.set.end());
+  const std::vector<std::string> conditions = recording.conditions();
+  out.insert(out.end(), conditions.begin(), conditions.end());
   const std::vector<std::string> params = overrides_at(values);
   out.insert(out.end(), params.begin() + static_cast<std::ptrdiff_t>(overrides.size()),
              params.end());
@@ -294,6 +295,7 @@ std::string IdentifyDefinition::canonical_json() const {
                     {"time_s", r.data.time_s},
                     {"samples", r.data.samples},
                     {"noise", r.noise}});
+    if (!r.log_commands.empty()) recs.back()["commands"] = "log";  // (older files' text kept)
   }
   nlohmann::json tensile_json = nlohmann::json::array();
   for (const auto& t : tensile) {
@@ -348,7 +350,8 @@ std::vector<std::pair<std::string, std::string>> identify_input_paths(
   add(def.overrides);
   for (const IdentifyRecording& r : def.recordings) {
     std::vector<std::string> o = def.overrides;
-    o.insert(o.end(), r.set.begin(), r.set.end());
+    const std::vector<std::string> conditions = r.conditions();
+    o.insert(o.end(), conditions.begin(), conditions.end());
     add(o);
   }
   return out;
@@ -364,7 +367,7 @@ IdentifyDefinition load_identify_definition(const std::string& path) {
   def.overrides = std::move(base.overrides);
   const bool population_given = in.has("population");
   read_key_rows(in, identify_search_table(&def));
-  def.parameters = read_search_parameters(in, {"seed"}, "a recording's noise is its own");
+  def.parameters = read_search_parameters(in, {"seed"}, "a recording's noise is its own", false);
   read_recordings(in, &def);
   read_tensile(in, &def);
   read_channel_parameters(in, &def);

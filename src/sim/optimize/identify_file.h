@@ -34,6 +34,9 @@ namespace pamsim {
 //                       held_out: true: used only to check the result; default false
 //                       noise: a chosen channel's noise floor, > 0 in its unit, as a table
 //                       ({ angle_deg = 0.01 }); default: estimated from the recording
+//                       commands: "scenario" (default: the scenario's schedules) or "log":
+//                       the recording's own p_cmd_<label>_MPa columns drive the valves, held
+//                       (IdentifyRecording::log_commands), and are no channel to match
 //   [[candidate]]       an experiment a lab could run next, for `pamsim identify --plan`
 //                       (identify_plan.h): no data. name (required, unique; letters, digits,
 //                       '_', '-'); set: its conditions as --set "key=value" (a command
@@ -46,7 +49,9 @@ namespace pamsim {
 //                       name); file: a tensile test of it in `pamsim tensile`'s CSV format;
 //                       weight: > 0, default 1. Its plant's forces at the recorded pressures
 //                       and lengths, on each row's stroke, must match the recorded forces.
-// At least one recording is fitted (not held out), or a tensile test given. Every recording's
+// With no [[parameter]], nothing is searched: the model as the file gives it is held against
+// the recordings (identify.h). At least one recording is fitted (not held out), or a tensile
+// test given. Every recording's
 // scenario must load, and each channel must be one its trials log (trajectory.csv's columns); a
 // recording must not outlast its scenario's sim.duration_s (load_identify_definition).
 struct IdentifyRecording {
@@ -57,6 +62,13 @@ struct IdentifyRecording {
   double weight = 1.0;
   bool held_out = false;
   std::vector<double> noise;  // per chosen channel, its given noise floor (NaN: none)
+  // commands = "log": each muscle whose valve command the recording logged (p_cmd_<label>_MPa)
+  // driven by that column, held from row to row, with the controller off from 0 s (the log's
+  // commands are the controller's); the overrides that do it (identify_file_recordings.h)
+  std::vector<std::string> log_commands;
+
+  // Every override of its trial but the parameters': `set`, then log_commands.
+  std::vector<std::string> conditions() const;
 };
 
 // A parameter that is a recorded channel's sensor rather than a scenario key.

@@ -11,6 +11,7 @@
 
 #include "base/format.h"
 #include "base/input_error.h"
+#include "base/toml_file.h"
 #include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
@@ -47,18 +48,30 @@ bool is_name(const std::string& s) {
   return true;
 }
 
-// The channels a recording is matched on: those named, or every one it has.
-std::vector<std::size_t> read_channels(const TableEntry& e, const Recording& data) {
+// The channels a recording is matched on: those named, or every one it has, but never one of
+// `inputs` (the commands that drive its trial).
+std::vector<std::size_t> read_channels(const TableEntry& e, const Recording& data,
+                                       const std::vector<std::string>& inputs) {
+  const auto input = [&](const std::string& name) {
+    return std::find(inputs.begin(), inputs.end(), name) != inputs.end();
+  };
   std::vector<std::size_t> out;
   const std::vector<std::string> named = e.texts("channels", false);
   if (named.empty()) {
-    for (std::size_t c = 0; c < data.channels.size(); ++c) out.push_back(c);
+    for (std::size_t c = 0; c < data.channels.size(); ++c) {
+      if (!input(data.channels[c])) out.push_back(c);
+    }
+    e.in.check(!out.empty(), e.where + "file", "holds no channel besides the logged commands");
     return out;
   }
   for (const std::string& name : named) {
     const std::size_t c = data.channel(name);
     if (c == data.channels.size()) {
       e.in.fail(e.where + "channels", "names " + name + ", which " + data.path + " does not hold");
+    }
+    if (input(name)) {
+      e.in.fail(e.where + "channels",
+                "names " + name + ", a command that drives the trial (commands = \"log\")");
     }
     if (std::find(out.begin(), out.end(), c) != out.end()) {
       e.in.fail(e.where + "channels", "names " + name + " twice");
@@ -68,7 +81,40 @@ std::vector<std::size_t> read_channels(const TableEntry& e, const Recording& dat
   return out;
 }
 
-IdentifyRecording read_recording(ConfigReader& in, const TableEntry& e) {
+// commands = "log": for each muscle of the recording's scenario whose command column
+// p_cmd_<label>_MPa it holds, the override that drives the muscle by it, held, into
+// r->log_commands, then the controller switched off at 0 s; the columns into *columns.
+void read_log_commands(const TableEntry& e, const IdentifyDefinition& def, IdentifyRecording* r,
+                       std::vector<std::string>* columns) {
+  std::vector<std::string> overrides = def.overrides;
+  overrides.insert(overrides.end(), r->set.begin(), r->set.end());
+  Scenario sc;
+  try {
+    sc = load_scenario_text(def.base_text, def.base_path, overrides);
+  } catch (const InputError& err) {
+    e.in.fail(e.where + "set", std::string("(") + err.what() + ")");
+  }
+  const std::string file = toml_value_text(
+      toml::value<std::string>(fs::absolute(r->data.path).lexically_normal().string()));
+  std::string labels;
+  for (const MuscleSpec& m : sc.muscles) {
+    const std::string column = "p_cmd_" + m.label + "_MPa";
+    labels += (labels.empty() ? "" : ", ") + column;
+    if (r->data.channel(column) == r->data.channels.size()) continue;
+    columns->push_back(column);
+    r->log_commands.push_back(m.key + ".command={kind=\"table\", file=" + file + ", column=\"" +
+                              column + "\", hold=true}");
+  }
+  e.in.check(
+      !columns->empty(), e.where + "commands",
+      "is \"log\", but " + r->data.path + " holds none of its muscles' commands (" + labels + ")");
+  r->log_commands.push_back("events." + std::string(kLogCommandsEvent) +
+                            ".action=\"controller_off\"");
+  r->log_commands.push_back("events." + std::string(kLogCommandsEvent) + ".when.at_s=0");
+}
+
+IdentifyRecording read_recording(ConfigReader& in, const TableEntry& e,
+                                 const IdentifyDefinition& def) {
   IdentifyRecording r;
   const std::string file = e.text("file", true);
   const fs::path path = fs::path(in.name()).parent_path() / file;
@@ -82,7 +128,9 @@ IdentifyRecording read_recording(ConfigReader& in, const TableEntry& e) {
     in.fail(e.where + "name", "must be letters, digits, '_' or '-', got \"" + r.name + "\"");
   }
   r.set = e.texts("set", false);
-  r.channels = read_channels(e, r.data);
+  std::vector<std::string> inputs;
+  if (e.text("commands", false, "scenario") == "log") read_log_commands(e, def, &r, &inputs);
+  r.channels = read_channels(e, r.data, inputs);
   r.noise = read_noise(e, r.data, r.channels);
   r.weight = e.number("weight").value_or(1.0);       // > 0, by its row
   r.held_out = e.table["held_out"].value_or(false);  // true or false, by its row
@@ -183,8 +231,23 @@ const std::vector<EntryKey>& recording_entry_keys() {
       {"held_out", "", "", "false", "kept out of the fit, used for the held-out check",
        EntryType::kBool},
       {"noise", "(each channel's)", "{ <channel> = floor > 0 }", "(estimated from the recording)",
-       "each channel's noise floor, in its unit", EntryType::kTable}};
+       "each channel's noise floor, in its unit", EntryType::kTable},
+      {"commands",
+       "",
+       "log: the file holds p_cmd_<label>_MPa columns",
+       "\"scenario\"",
+       "what drives the valves: the scenario's schedules, or the log's own commands, each held "
+       "from row to row as a regulator holds it, the controller off",
+       EntryType::kChoice,
+       {},
+       {"scenario", "log"}}};
   return keys;
+}
+
+std::vector<std::string> IdentifyRecording::conditions() const {
+  std::vector<std::string> out = set;
+  out.insert(out.end(), log_commands.begin(), log_commands.end());
+  return out;
 }
 
 const std::vector<EntryKey>& candidate_entry_keys() {
@@ -213,7 +276,7 @@ void read_recordings(ConfigReader& in, IdentifyDefinition* def) {
   const TableArray tables(in, "recording");
   std::set<std::string> names;
   for (const TableEntry& e : tables.entries(recording_entry_keys())) {
-    def->recordings.push_back(read_recording(in, e));
+    def->recordings.push_back(read_recording(in, e, *def));
     const IdentifyRecording& r = def->recordings.back();
     in.check(names.insert(r.name).second, e.where + "name", "\"" + r.name + "\" is taken");
   }

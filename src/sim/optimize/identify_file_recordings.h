@@ -14,7 +14,11 @@ const std::vector<EntryKey>& tensile_entry_keys();
 const std::vector<EntryKey>& recording_entry_keys();
 const std::vector<EntryKey>& candidate_entry_keys();
 
-// Every [[recording]] into def->recordings (names unique).
+// The event a recording of commands = "log" adds to switch its controller off at 0 s.
+inline constexpr const char* kLogCommandsEvent = "log_commands";
+
+// Every [[recording]] into def->recordings (names unique), after the base scenario and its
+// overrides.
 void read_recordings(ConfigReader& in, IdentifyDefinition* def);
 
 // Every [[candidate]] into def->candidates, after the recordings: its channels sampled at

@@ -55,7 +55,8 @@ std::string identify_markdown(const IdentifyDefinition& def, const IdentifyResul
 //                      empty: too few samples to estimate the floor, so unknown)
 //   identify.md        both tables, the search's cost and time, and a warning for each
 //                      fitted channel the model does not explain
-//   recording_<name>.png  each recording's channels: recorded, before and after (plots on)
+//   recording_<name>.png  each recording's channels: recorded, before and after (plots on;
+//                      with no parameter, recorded and the model)
 //   plant_<muscle>.toml   for each muscle with a plant field among the parameters: its plant
 //                      file with the identified fields, a comment naming the recordings
 //   pneumatics.toml    the same for the pneumatics file's fields (pneumatics.<table>.<field>)
@@ -69,8 +70,9 @@ void write_identify_outputs(const IdentifyDefinition& def, const IdentifyResult&
 // overrides; a sensor's neutral value), NaN where pamsim cannot say (identify_start.cc).
 std::vector<double> start_values(const IdentifyDefinition& def);
 
-// recording_<name>.png: `fits` are the recording's channels' (identify_plot.cc).
+// recording_<name>.png: `fits` are the recording's channels' (identify_plot.cc); without
+// `fitted` (no parameter) the model's one line, no before.
 void write_recording_plot(const std::string& png_path, const IdentifyRecording& recording,
-                          const std::vector<const ChannelFit*>& fits);
+                          const std::vector<const ChannelFit*>& fits, bool fitted = true);
 
 }  // namespace pamsim

@@ -1,6 +1,6 @@
 // identify_plot.cc: recording_<name>.png of identify_outputs.h: a recording's channels, one
 // panel each, recorded (points) against the simulation before (the base scenario, dashed)
-// and after identification (line).
+// and after identification (line); with no parameter fitted, the model's one line.
 #include <cmath>
 #include <sstream>
 
@@ -18,7 +18,7 @@ std::string value_text(const std::vector<double>& v, std::size_t k) {
 }  // namespace
 
 void write_recording_plot(const std::string& png_path, const IdentifyRecording& recording,
-                          const std::vector<const ChannelFit*>& fits) {
+                          const std::vector<const ChannelFit*>& fits, bool fitted) {
   GnuplotJob job;
   job.width_px = 1200;
   job.height_px = 300 + 280 * static_cast<int>(fits.size());
@@ -35,17 +35,21 @@ void write_recording_plot(const std::string& png_path, const IdentifyRecording& 
   job.data_files.emplace_back("recording.dat", data.str());
   script << "set multiplot layout " << fits.size() << ",1 title "
          << gp_quote("recording " + recording.name + (recording.held_out ? " (held out)" : "") +
-                     ": recorded, before and after identification")
+                     (fitted ? ": recorded, before and after identification"
+                             : ": recorded and the model"))
          << "\nset grid\nset key outside right\nset datafile missing 'NaN'\n";
   for (std::size_t i = 0; i < fits.size(); ++i) {
     const std::size_t col = 2 + 3 * i;
     script << "set ylabel " << gp_quote(fits[i]->channel) << "\n"
            << (i + 1 == fits.size() ? "set xlabel 'time [s]'\n" : "unset xlabel\n")
            << "plot 'recording.dat' using 1:" << col
-           << " with points pt 7 ps 0.4 lc rgb '#444444' title 'recorded', "
-           << "'' using 1:" << col + 1
-           << " with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'before', "
-           << "'' using 1:" << col + 2 << " with lines lw 1.5 lc rgb '#2166ac' title 'after'\n";
+           << " with points pt 7 ps 0.4 lc rgb '#444444' title 'recorded', ";
+    if (fitted) {
+      script << "'' using 1:" << col + 1
+             << " with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'before', ";
+    }
+    script << "'' using 1:" << col + 2 << " with lines lw 1.5 lc rgb '#2166ac' title "
+           << (fitted ? "'after'" : "'model'") << "\n";
   }
   script << "unset multiplot\n";
   job.script = script.str();

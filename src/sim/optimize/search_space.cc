@@ -83,12 +83,13 @@ SearchParameter read_parameter(ConfigReader& in, const TableEntry& e,
 
 std::vector<SearchParameter> read_search_parameters(ConfigReader& in,
                                                     const std::vector<std::string>& reserved,
-                                                    const std::string& reserved_hint) {
+                                                    const std::string& reserved_hint,
+                                                    bool required) {
   std::vector<SearchParameter> out;
   for (const TableEntry& e : TableArray(in, "parameter").entries(parameter_entry_keys())) {
     out.push_back(read_parameter(in, e, out, reserved, reserved_hint));
   }
-  in.check(!out.empty(), "parameter", "needs at least one [[parameter]]");
+  in.check(!required || !out.empty(), "parameter", "needs at least one [[parameter]]");
   return out;
 }
 

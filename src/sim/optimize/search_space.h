@@ -52,10 +52,12 @@ const std::vector<EntryKey>& parameter_entry_keys();
 
 // The [[parameter]] tables (key, from, to, scale = "linear" | "log") of `in`'s document;
 // keys in `reserved` are refused with `reserved_hint` ("use the tuning file's seeds ..."). At
-// least one is required. Throws InputError "<file>: parameter[i].<key> <problem>".
+// least one is required unless `required` is false. Throws InputError
+// "<file>: parameter[i].<key> <problem>".
 std::vector<SearchParameter> read_search_parameters(ConfigReader& in,
                                                     const std::vector<std::string>& reserved,
-                                                    const std::string& reserved_hint);
+                                                    const std::string& reserved_hint,
+                                                    bool required = true);
 
 // The parameters as their definitions' canonical JSON lists them (tuning and identification
 // databases: [{key, from, to, log}, ...]), so that both store them alike.

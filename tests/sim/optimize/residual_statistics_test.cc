@@ -19,7 +19,7 @@ namespace pamsim {
 namespace {
 
 constexpr double kPhi = 0.8;
-constexpr int kSamples = 400;
+constexpr int kSeriesSamples = 400;
 
 // AR(1) noise of unit innovations, started in its stationary distribution
 Eigen::VectorXd ar1(std::mt19937_64& rng, double phi, int n) {
@@ -37,10 +37,10 @@ Eigen::MatrixXd line_design(int n) {
 }
 
 TEST(ResidualStatisticsTest, SandwichMatchesTheClosedFormAndCoversUnderAr1Noise) {
-  const Eigen::MatrixXd x = line_design(kSamples);
-  Eigen::MatrixXd sigma(kSamples, kSamples);
-  for (int i = 0; i < kSamples; ++i) {
-    for (int j = 0; j < kSamples; ++j) {
+  const Eigen::MatrixXd x = line_design(kSeriesSamples);
+  Eigen::MatrixXd sigma(kSeriesSamples, kSeriesSamples);
+  for (int i = 0; i < kSeriesSamples; ++i) {
+    for (int j = 0; j < kSeriesSamples; ++j) {
       sigma(i, j) = std::pow(kPhi, std::abs(i - j)) / (1.0 - kPhi * kPhi);
     }
   }
@@ -52,11 +52,11 @@ TEST(ResidualStatisticsTest, SandwichMatchesTheClosedFormAndCoversUnderAr1Noise)
   int hac_covered = 0, plain_covered = 0;
   double hac_variance = 0.0;
   for (int k = 0; k < trials; ++k) {
-    const Eigen::VectorXd y = x * beta + ar1(rng, kPhi, kSamples);
+    const Eigen::VectorXd y = x * beta + ar1(rng, kPhi, kSeriesSamples);
     const Eigen::Vector2d fit = bread * x.transpose() * y;
     // the residuals' Jacobian with respect to the parameters is -X; the sign cancels
     const Eigen::VectorXd r = y - x * fit;
-    const std::vector<std::size_t> one = {static_cast<std::size_t>(kSamples)};
+    const std::vector<std::size_t> one = {static_cast<std::size_t>(kSeriesSamples)};
     const std::vector<double> rv(r.data(), r.data() + r.size());
     const int lags = bartlett_bandwidth(pooled_lag1_autocorrelation(rv, one), rv.size());
     const Eigen::MatrixXd hac = hac_covariance(x, r, one, lags);
@@ -77,11 +77,11 @@ TEST(ResidualStatisticsTest, SandwichMatchesTheClosedFormAndCoversUnderAr1Noise)
 }
 
 TEST(ResidualStatisticsTest, ForIndependentResidualsTheSandwichIsThePlainCovariance) {
-  const Eigen::MatrixXd x = line_design(kSamples);
+  const Eigen::MatrixXd x = line_design(kSeriesSamples);
   std::mt19937_64 rng(3);
-  Eigen::VectorXd r(kSamples);
-  for (int t = 0; t < kSamples; ++t) r[t] = portable_standard_normal(rng);
-  const Eigen::MatrixXd hac = hac_covariance(x, r, {static_cast<std::size_t>(kSamples)}, 0);
+  Eigen::VectorXd r(kSeriesSamples);
+  for (int t = 0; t < kSeriesSamples; ++t) r[t] = portable_standard_normal(rng);
+  const Eigen::MatrixXd hac = hac_covariance(x, r, {static_cast<std::size_t>(kSeriesSamples)}, 0);
   const Eigen::MatrixXd plain = plain_covariance(x, r);
   // with no lags, the sandwich is the White estimator: close to the plain one for i.i.d. noise
   EXPECT_NEAR(hac(1, 1) / plain(1, 1), 1.0, 0.25);
@@ -98,7 +98,7 @@ TEST(ResidualStatisticsTest, EachSeriesKeepsItsOwnBandwidth) {
   // lag-1 autocorrelation pooled is near 0, often a bandwidth of 0, which leaves the second
   // parameter's variance about (1 + phi) / (1 - phi) = 9 times too small (about half of it on
   // average over these draws); each series' own bandwidth keeps it.
-  const int n = kSamples;
+  const int n = kSeriesSamples;
   Eigen::MatrixXd x = Eigen::MatrixXd::Zero(2 * n, 2);
   x.topRows(n).col(0).setOnes();
   x.bottomRows(n).col(1).setOnes();
