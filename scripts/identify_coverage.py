@@ -2,22 +2,22 @@
 """identify_coverage.py: does `pamsim identify` know how sure it is? Identifies N synthetic
 arms whose truth is known and counts how often each stated interval contains it.
 
-Each arm is examples/identify/arm.toml with its own truth, drawn (seeded) from the ranges in
-TRUTH_RANGES: both bladder walls, the shoulder's damping and the regulator's latency
-(valve.dead_time_ms, the 2-10 ms bracket of models/pams/pneumatics.toml), a noise seed of
-its own, and instruments of its own: a zero error of the encoder, of the agonist's pressure
-sensor and of the antagonist's force gauge (OFFSET_RANGES), added to what the lab's logger
-keeps. Its recordings are what make_recordings.py keeps (an agonist step schedule and an
-antagonist sine, fitted; the reaching ramps, held out). The identification fits all seven
-(four physical parameters, three offsets) from the model's values (the model's trials
+Each arm is examples/identify/arm.toml with its own truth, drawn (seeded) from the ranges of
+its family (identify_families.py: `example`, the worked example's walls, damping and dead
+time; `harder`, friction and the regulator's valve), a noise seed of its own, and instruments
+of its own: a zero error of each of the family's instruments, added to what the lab's logger
+keeps (make_recordings.py's logger: its channels, rate and 5 significant digits). The
+identification fits every parameter and offset from the model's values (the model's trials
 without noise and with ideal ADCs, the worked example's overrides; the recordings' and the
 model's chamber solver at arm.toml's tight tolerance), and each arm's identify.csv gives its
-value, standard error (HAC), plain standard error, interval and verdict. A control arm whose
-encoder is read 60 ms late (a delay the model lacks) must come out "does not explain".
+value, standard error (HAC), plain standard error, interval and verdict; the summary counts
+the arms explained, those whose search "did not settle", and the wall time of each. A control
+arm whose encoder is read 60 ms late (a delay the model lacks) must come out "does not explain".
 
-    python3 scripts/identify_coverage.py [--arms 20] [--seed 1] [--threads 2] [--starts 1]
-        [--searched-offsets] [--only 6,8] [--pamsim build/src/sim/pamsim]
-        [--out renders/identify_coverage]
+    python3 scripts/identify_coverage.py [--family example|harder] [--arms 20] [--seed 1]
+        [--threads 2] [--starts N] [--runs N] [--stall-generations N] [--generations N]
+        [--population N] [--searched-offsets] [--only 6,8] [--pamsim build/src/sim/pamsim]
+        [--out renders/identify_coverage[_harder]]
 
 writes OUT/coverage.csv (one row per arm and parameter) and OUT/coverage.md (the summary the
 docs show); an interrupted run started again skips the arms it finished and resumes the one
@@ -32,35 +32,27 @@ import random
 import shutil
 import subprocess
 import sys
+import time
 import tomllib
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "examples", "identify"))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import make_recordings  # noqa: E402  (the example's logger: channels, rates, a gap)
+from identify_families import FAMILIES  # noqa: E402
 
-# key: (truth drawn from [lo, hi], the identification's range [from, to], scale)
-TRUTH_RANGES = {
-    "muscles.antagonist.plant.geometry.wall_thickness_mm": ((2.5, 3.3), (2.0, 4.0), "linear"),
-    "muscles.agonist.plant.geometry.wall_thickness_mm": ((1.8, 2.5), (1.5, 3.0), "linear"),
-    "joints.shoulder.damping_N_m_s_per_rad": ((0.06, 0.3), (0.02, 0.5), "log"),
-    "valve.dead_time_ms": ((2.0, 10.0), (0.5, 20.0), "linear"),
-}
-# channel: (zero error drawn from [lo, hi] in the column's unit, the range fitted)
-OFFSET_RANGES = {
-    "angle_deg": ((-0.5, 0.5), (-2.0, 2.0)),
-    "p_meas_ago_MPa": ((-0.01, 0.01), (-0.03, 0.03)),
-    "force_meas_anta_N": ((-2.0, 2.0), (-5.0, 5.0)),
-}
-STEPS = make_recordings.RECORDINGS["steps"][0]
-SINE = make_recordings.RECORDINGS["sine"][0]
-RAMPS = make_recordings.RECORDINGS["ramps"][0]
-# name: (commands, channels, rate [Hz], held out)
-RECORDINGS = {
-    "steps": (STEPS, ["angle_deg", "p_meas_ago_MPa", "force_meas_anta_N"], 50.0, False),
-    "sine": (SINE, ["angle_deg", "force_meas_anta_N"], 40.0, False),
-    "ramps": (RAMPS, ["angle_deg"], 25.0, True),
-}
-SEARCH = {"generations": 8, "population": 12, "polish_iterations": 30, "profile_offsets": "true"}
+# the family's parameters, instruments, recordings and search (identify_families.py), set by
+# main from --family
+TRUTH_RANGES, OFFSET_RANGES, RECORDINGS, SEARCH = {}, {}, {}, {}
+# the identification file's search keys a run may set (--starts, --runs, ...)
+SEARCH_OPTIONS = (
+    "starts",
+    "runs",
+    "stall_generations",
+    "generations",
+    "population",
+    "polish_iterations",
+)
 # the model predicts the expected reading as the worked example's does, with its overrides
 # (no noise of its own, ideal ADCs: its identify.toml says why); its solver's tolerance is
 # arm.toml's
@@ -166,15 +158,35 @@ def identify(pamsim, path, threads):
         "--no-plot",
         "--quiet",
     ]
-    if os.path.exists(os.path.join(out, "identify.db")):
+    fresh = not os.path.exists(os.path.join(out, "identify.db"))
+    if not fresh:
         args.append("--resume")
+    start = time.monotonic()
     done = subprocess.run(args, stdout=subprocess.DEVNULL)
     if done.returncode != 0:  # pamsim said why on stderr; the arm's database is kept
         sys.exit(
             f"identify_coverage.py: pamsim identify {path} exited {done.returncode}; "
             "run the script again to resume"
         )
+    # the wall time of an identification run from start to end (a resumed one's is partial)
+    write_atomically(
+        os.path.join(out, "seconds.txt"), f"{time.monotonic() - start:.1f}" if fresh else ""
+    )
     return out
+
+
+def seconds(out):
+    """The arm's wall time in seconds, NaN where it is unknown (resumed, or older)."""
+    try:
+        with open(os.path.join(out, "seconds.txt")) as f:
+            return float(f.read() or "nan")
+    except (OSError, ValueError):
+        return math.nan
+
+
+def unsettled(rows):
+    """Whether identify said the search did not settle (a verdict that blames the search)."""
+    return any("the search did not settle" in r["verdict"] for r in rows)
 
 
 def read_csv(path):
@@ -242,12 +254,11 @@ def summary(rows, arms, control, args):
     md = [
         f"# `pamsim identify`: coverage over {len(arms)} synthetic arms",
         "",
-        f"`python3 scripts/identify_coverage.py --arms {args.arms} --seed {args.seed}"
-        f"{'' if args.starts == 1 else f' --starts {args.starts}'}"
-        f"{' --searched-offsets' if args.searched_offsets else ''}"
-        f"{f' --only {args.only}' if args.only else ''}`: "
-        "each arm's truth drawn from the script's ranges, its recordings made by pamsim "
-        "with a noise seed and instruments of its own; seven parameters fitted per arm.",
+        f"`python3 scripts/identify_coverage.py {command_options(args)}`: "
+        f"the {args.family} family; each arm's truth drawn from its ranges "
+        "(scripts/identify_families.py), its recordings made by pamsim with a noise seed and "
+        f"instruments of its own; {len(TRUTH_RANGES) + len(OFFSET_RANGES)} parameters "
+        f"fitted per arm{search_text()}.",
         "",
         "| parameter | 95 % interval contains the truth | plain s^2 (J^T J)^-1 interval does "
         "| median width, interval / plain | largest error in standard errors where "
@@ -266,6 +277,8 @@ def summary(rows, arms, control, args):
         )
     far = sum(1 for r in rows if trusted(r) and r["z"] > 5)
     good = sum(1 for a in arms if a["explained"] and a["identified"])
+    explained_arms = sum(a["explained"] for a in arms)
+    times = [a["seconds"] for a in arms if math.isfinite(a["seconds"])]
     md += [
         "",
         f"- Parameter-arm pairs whose interval contains the truth: "
@@ -273,6 +286,10 @@ def summary(rows, arms, control, args):
         f'- "identified" but more than 5 standard errors from the truth: {far} (claim: none).',
         f'- Arms "explained" with every parameter "identified": {pct(good, len(arms))} '
         "(claim: at least 80 %).",
+        f"- Arms whose fitted channels are all explained: {pct(explained_arms, len(arms))}; "
+        f'"the search did not settle": {sum(a["unsettled"] for a in arms)}.',
+        f"- Wall time per arm on {args.threads} threads: median {median(times):.0f} s, "
+        f"largest {max(times, default=math.nan):.0f} s.",
         f"- Held-out angle RMSE, median over the arms: "
         f"{median([a['before'] for a in arms]):.3g} deg before, "
         f"{median([a['after'] for a in arms]):.3g} deg after.",
@@ -283,6 +300,25 @@ def summary(rows, arms, control, args):
             f"the model lacks): {'explained (a miss)' if control else 'does not explain'}."
         )
     return "\n".join(md) + "\n"
+
+
+def command_options(args):
+    """The options the run was made with, as its command line gives them."""
+    out = f"--family {args.family} --arms {args.arms} --seed {args.seed}"
+    for name in SEARCH_OPTIONS:
+        value = getattr(args, name)
+        if value is not None:
+            out += f" --{name.replace('_', '-')} {value}"
+    out += " --searched-offsets" if args.searched_offsets else ""
+    return out + (f" --only {args.only}" if args.only else "")
+
+
+def search_text():
+    """The search settings the identification files give, or none (the file's defaults)."""
+    given = {k: v for k, v in SEARCH.items() if k != "profile_offsets"}
+    if not given:
+        return ", the identification file's default search"
+    return ", search " + ", ".join(f"{k} = {v}" for k, v in given.items())
 
 
 def write_atomically(path, text):
@@ -312,14 +348,15 @@ def main():
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--pamsim", default=os.path.join(ROOT, "build", "src", "sim", "pamsim"))
-    ap.add_argument("--out", default=os.path.join(ROOT, "renders", "identify_coverage"))
+    ap.add_argument("--out", help="default renders/identify_coverage[_<family>]")
     ap.add_argument("--no-control", action="store_true", help="skip the misspecified arm")
-    ap.add_argument(
-        "--starts",
-        type=int,
-        default=1,
-        help="the polish's starts per arm (identify's `starts`, 1 to 20)",
-    )
+    ap.add_argument("--family", choices=sorted(FAMILIES), default="example")
+    ap.add_argument("--starts", type=int, help="identify's `starts` (1 to 20)")
+    ap.add_argument("--runs", type=int, help="identify's `runs`")
+    ap.add_argument("--stall-generations", type=int, help="identify's `stall_generations`")
+    ap.add_argument("--generations", type=int, help="identify's `generations`")
+    ap.add_argument("--population", type=int, help="identify's `population`")
+    ap.add_argument("--polish-iterations", type=int, help="identify's `polish_iterations`")
     ap.add_argument(
         "--searched-offsets",
         action="store_true",
@@ -339,15 +376,25 @@ def main():
     if (
         args.arms < 1
         or args.threads < 1
-        or not 1 <= args.starts <= 20
+        or not 1 <= (args.starts or 1) <= 20
         or any(not 0 <= a < args.arms for a in only)
     ):
         sys.exit(
             "identify_coverage.py: --arms and --threads must be at least 1, --starts "
             "within [1, 20], --only's arms below --arms"
         )
-    SEARCH["starts"] = args.starts
+    family = FAMILIES[args.family]
+    TRUTH_RANGES.update(family["truth"])
+    OFFSET_RANGES.update(family["offsets"])
+    RECORDINGS.update(family["recordings"])
+    SEARCH.update(family["search"])
+    for name in SEARCH_OPTIONS:
+        if getattr(args, name) is not None:
+            SEARCH[name] = getattr(args, name)
     SEARCH["profile_offsets"] = "false" if args.searched_offsets else "true"
+    if args.out is None:
+        suffix = "" if args.family == "example" else "_" + args.family
+        args.out = os.path.join(ROOT, "renders", "identify_coverage" + suffix)
     rng = random.Random(args.seed)
     rows, arms = [], []
     for i in range(args.arms):
@@ -366,12 +413,16 @@ def main():
                 "before": before,
                 "after": after,
                 "identified": all(trusted(x) for x in r),
+                "unsettled": unsettled(r),
+                "seconds": seconds(out),
             }
         )
         rows += r
         print(
             f"arm {i:02d}: {sum(x['inside'] for x in r)}/{len(r)} inside, "
-            f"{'explained' if fitted else 'NOT explained'}",
+            f"{'explained' if fitted else 'NOT explained'}"
+            f"{', the search did not settle' if arms[-1]['unsettled'] else ''}, "
+            f"{arms[-1]['seconds']:.0f} s",
             flush=True,
         )
     control = None
