@@ -16,7 +16,8 @@ namespace {
 constexpr double kPaPerMPaHold = 1e6;
 
 TEST(ScheduleHoldTest, EachRowHoldsUntilTheNextFromItsOwnTime) {
-  PressureSchedule s = table_schedule({0.5, 1.0, 2.0}, {0.2 * kPaPerMPaHold, 0.6 * kPaPerMPaHold, 0.3 * kPaPerMPaHold}, "");
+  PressureSchedule s = table_schedule(
+      {0.5, 1.0, 2.0}, {0.2 * kPaPerMPaHold, 0.6 * kPaPerMPaHold, 0.3 * kPaPerMPaHold}, "");
   s.hold = true;
   EXPECT_EQ(s.at(0.0), 0.2 * kPaPerMPaHold) << "the first row before its time";
   EXPECT_EQ(s.at(0.5), 0.2 * kPaPerMPaHold);
@@ -25,7 +26,8 @@ TEST(ScheduleHoldTest, EachRowHoldsUntilTheNextFromItsOwnTime) {
   EXPECT_EQ(s.at(1.9), 0.6 * kPaPerMPaHold);
   EXPECT_EQ(s.at(7.0), 0.3 * kPaPerMPaHold) << "the last row after its time";
   // a tick a rounding below a row's printed time meets the row: 0.07 is not 7 x 0.01
-  PressureSchedule tick = table_schedule({0.06, 0.07}, {0.1 * kPaPerMPaHold, 0.4 * kPaPerMPaHold}, "");
+  PressureSchedule tick =
+      table_schedule({0.06, 0.07}, {0.1 * kPaPerMPaHold, 0.4 * kPaPerMPaHold}, "");
   tick.hold = true;
   EXPECT_EQ(tick.at(0.07 - 1e-12), 0.4 * kPaPerMPaHold);
   EXPECT_EQ(tick.at(0.07 - 1e-6), 0.1 * kPaPerMPaHold) << "a microsecond is not a rounding";
@@ -69,8 +71,8 @@ TEST_F(ScheduleColumnTest, ALogsCommandColumnIsHeldAndItsGapsSkipped) {
   EXPECT_FALSE(anta.hold);
   EXPECT_NEAR(anta.at(0.005), 0.405 * kPaPerMPaHold, 1e-6);
   // "MPa" is the two-column file's
-  const PressureSchedule two = read_schedule_column(write("time_s,MPa\n0,0.2\n1,0.4\n"), "MPa",
-                                                    true);
+  const PressureSchedule two =
+      read_schedule_column(write("time_s,MPa\n0,0.2\n1,0.4\n"), "MPa", true);
   EXPECT_EQ(two.at(0.9), 0.2 * kPaPerMPaHold);
 }
 

@@ -24,8 +24,8 @@ namespace fs = std::filesystem;
 const std::vector<std::string> kReflexDrop = {
     "events.fall.action=\"release\"", "events.fall.body=\"ball\"", "events.fall.when.at_s=1.0",
     "controller.kind=\"stretch_reflex\""};
-const std::vector<std::string> kLogged = {"angle_deg",      "p_meas_ago_MPa", "p_meas_anta_MPa",
-                                          "p_cmd_ago_MPa",  "p_cmd_anta_MPa"};
+const std::vector<std::string> kLogged = {"angle_deg", "p_meas_ago_MPa", "p_meas_anta_MPa",
+                                          "p_cmd_ago_MPa", "p_cmd_anta_MPa"};
 
 // The true arm's log of the reflex drop (every control tick, full precision) with `lab`'s
 // changes, and the trial that made it.
@@ -86,8 +86,8 @@ TEST(IdentifyLogTest, ALogsHeldCommandsReproduceItsTrial) {
                        lab.trajectory.at(row, lab.trajectory.column(c));
       most_command = std::max(most_command, std::abs(d));
     }
-    most_angle = std::max(most_angle, std::abs(model.trajectory.at(row, 1) -
-                                               lab.trajectory.at(row, 1)));
+    most_angle =
+        std::max(most_angle, std::abs(model.trajectory.at(row, 1) - lab.trajectory.at(row, 1)));
   }
   EXPECT_LT(most_command, 1e-12) << "MPa: the reflex's commands, held at its ticks";
   EXPECT_LT(most_angle, 1e-6) << "deg";
@@ -95,8 +95,8 @@ TEST(IdentifyLogTest, ALogsHeldCommandsReproduceItsTrial) {
   const IdentifyResult result = hold_against(dir, def);
   ASSERT_EQ(result.fits.size(), 3u);
   for (const ChannelFit& f : result.fits) {
-    EXPECT_TRUE(f.judged && f.explained) << f.channel << ": RMSE " << f.rmse_after << " noise "
-                                         << f.noise_floor;
+    EXPECT_TRUE(f.judged && f.explained)
+        << f.channel << ": RMSE " << f.rmse_after << " noise " << f.noise_floor;
   }
   EXPECT_TRUE(result.parameters.empty());
   EXPECT_TRUE(identify_warnings(def, result).empty());
@@ -108,8 +108,7 @@ TEST(IdentifyLogTest, ARegulator60MsSlowerThanTheModelsIsNotExplained) {
   // the model's regulator's dead time, and the lab's 60 ms more
   const Scenario model = load_scenario(kArm, {});
   const double dead_time_ms = 1e3 * model.pneumatics.regulator_dead_time_s;
-  log_reflex_drop(dir / "log.csv",
-                  {"valve.dead_time_ms=" + format_shortest(dead_time_ms + 60.0)});
+  log_reflex_drop(dir / "log.csv", {"valve.dead_time_ms=" + format_shortest(dead_time_ms + 60.0)});
   const IdentifyDefinition def = check_file(dir);
   const IdentifyResult result = hold_against(dir, def);
   bool angle_judged = false;
