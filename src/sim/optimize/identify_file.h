@@ -93,12 +93,12 @@ struct IdentifyDefinition {
   std::string file;
   std::string base_path, base_text;
   std::vector<std::string> overrides;
-  unsigned generations = 6, population = 8;
+  unsigned generations = 20, population = 8;  // generations: each run's most
   std::uint64_t seed = 1;
   int polish_iterations = 30;
   int starts = 1;  // Levenberg-Marquardt starts (identify.h: IdentifyResult::starts)
-  int runs = 1;    // independent CMA-ES runs (identify_global.h)
-  unsigned stall_generations = 0;  // a run's stall stop (identify_global.h); 0: none
+  int runs = 3;    // independent CMA-ES runs (identify_global.h)
+  unsigned stall_generations = 4;  // a run's stall stop (identify_global.h); 0: none
   bool profile_offsets = true;  // the global search projects the offsets out (identify_offsets.h)
   // the reported intervals' level, and the RMS in noise floors within which a fitted channel
   // is explained (identify_uncertainty.h); neither in canonical_json: neither changes the search

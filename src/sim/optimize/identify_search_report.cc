@@ -101,6 +101,7 @@ std::vector<std::string> start_warnings(const IdentifyDefinition& def, const Ide
 }
 
 std::string global_search_text(const IdentifyDefinition& def, const IdentifyResult& r) {
+  if (def.generations == 0) return "none: generations = 0";
   if (def.runs == 1 && def.stall_generations == 0) {
     return std::to_string(def.generations) + " generations of " + std::to_string(def.population);
   }

@@ -99,7 +99,7 @@ TEST(IdentifyOffsetsTest, TheProjectedOffsetIsTheMeanDifferenceWithinItsRange) {
 
 TEST(IdentifyOffsetsTest, AShortGlobalSearchEndsLowerWithTheOffsetProjected) {
   const fs::path dir = pamsim_test::fresh_dir("identify_offsets_search");
-  const std::string search = "generations = 3\npopulation = 6\npolish_iterations = 0";
+  const std::string search = "runs = 1\ngenerations = 3\npopulation = 6\npolish_iterations = 0";
   const IdentifyDefinition on = wall_and_offset(dir, "angle_deg", 1.2, 2.0, search);
   const IdentifyDefinition off =
       wall_and_offset(dir, "angle_deg", 1.2, 2.0, search + "\nprofile_offsets = false");
@@ -141,8 +141,9 @@ TEST(IdentifyOffsetsTest, TheDefaultPopulationGrowsWithTheParametersSearched) {
 // stopped within the search and resumed ends where the uninterrupted one does, bit for bit.
 TEST(IdentifyOffsetsTest, AStoppedRunResumedIsTheUninterruptedOne) {
   const fs::path dir = pamsim_test::fresh_dir("identify_offsets_resume");
-  const IdentifyDefinition def = wall_and_offset(
-      dir, "angle_deg", 1.2, 2.0, "generations = 3\npopulation = 6\npolish_iterations = 5");
+  const IdentifyDefinition def =
+      wall_and_offset(dir, "angle_deg", 1.2, 2.0,
+                      "runs = 1\ngenerations = 3\npopulation = 6\npolish_iterations = 5");
   IdentifyRunOptions o;
   o.threads = 2;
   const auto run = [&](const std::string& db_name, bool resume, IdentifyRunOptions options) {

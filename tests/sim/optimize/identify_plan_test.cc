@@ -58,7 +58,7 @@ std::string plan_file(const fs::path& dir, const std::string& candidates) {
   pamsim_test::write_text(
       dir / "id.toml",
       "base = \"" + kArm +
-          "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
+          "\"\noverrides = [\"sim.duration_s=2\"]\nruns = 1\ngenerations = 2\n"
           "population = 6\npolish_iterations = 10\n"
           "[[parameter]]\nkey = \"muscles.antagonist.plant.geometry.wall_thickness_mm\"\nfrom = "
           "2.0\nto = 4.0\n"

@@ -95,7 +95,7 @@ IdentifyResult fit_from(const fs::path& dir, int starts) {
   const fs::path file = dir / ("id" + std::to_string(starts) + ".toml");
   pamsim_test::write_text(
       file, "base = \"" + kArm +
-                "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
+                "\"\noverrides = [\"sim.duration_s=2\"]\nruns = 1\ngenerations = 2\n"
                 "population = 6\npolish_iterations = 10\nstarts = " +
                 std::to_string(starts) +
                 "\n"

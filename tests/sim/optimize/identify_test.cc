@@ -37,7 +37,7 @@ std::string identify_file(const fs::path& dir) {
   record_arm(dir / "sine.csv", kSine);
   const std::string text =
       "base = \"" + kArm +
-      "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
+      "\"\noverrides = [\"sim.duration_s=2\"]\nruns = 1\ngenerations = 2\n"
       "population = 6\npolish_iterations = 10\n"
       "[[parameter]]\nkey = \"muscles.antagonist.plant.geometry.wall_thickness_mm\"\nfrom = "
       "2.0\nto = 4.0\n"
@@ -102,7 +102,7 @@ TEST(IdentifyTest, ATensileTestAloneGivesThePlantsWall) {
   pamsim_test::write_text(
       dir / "id.toml",
       "base = \"" + kArm +
-          "\"\ngenerations = 2\npopulation = 5\npolish_iterations = 10\n"
+          "\"\nruns = 1\ngenerations = 2\npopulation = 5\npolish_iterations = 10\n"
           "[[parameter]]\nkey = \"muscles.agonist.plant.geometry.wall_thickness_mm\"\nfrom = "
           "1.5\nto = 3.0\n"
           "[[tensile]]\nmuscle = \"agonist\"\nfile = \"tensile.csv\"\n");
@@ -148,7 +148,7 @@ TEST(IdentifyTest, ASensorsGainOffsetAndDelayAreParametersToo) {
   pamsim_test::write_text(
       dir / "id.toml",
       "base = \"" + kArm +
-          "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 3\n"
+          "\"\noverrides = [\"sim.duration_s=2\"]\nruns = 1\ngenerations = 3\n"
           "population = 6\npolish_iterations = 20\n"
           "[[parameter]]\nkey = \"channel.force_meas_anta_N.gain\"\nfrom = 0.8\nto = 1.2\n"
           "[[parameter]]\nkey = \"channel.force_meas_anta_N.offset\"\nfrom = -5.0\nto = 5.0\n"
@@ -183,7 +183,7 @@ TEST(IdentifyTest, AResumeAfterAnInputFileChangedIsRefused) {
   pamsim_test::write_text(
       dir / "id.toml",
       "base = \"" + base +
-          "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 0\n"
+          "\"\noverrides = [\"sim.duration_s=2\"]\nruns = 1\ngenerations = 0\n"
           "polish_iterations = 0\n"
           "[[parameter]]\nkey = \"joints.shoulder.damping_N_m_s_per_rad\"\nfrom = 0.05\nto = 0.2\n"
           "[[recording]]\nfile = \"steps.csv\"\nset = ['" +

@@ -33,7 +33,7 @@ IdentifyResult identify_wall(const fs::path& dir, std::size_t delay_rows,
   pamsim_test::write_text(
       dir / "id.toml",
       top + "base = \"" + kArm +
-          "\"\noverrides = [\"sim.duration_s=2\"]\ngenerations = 2\n"
+          "\"\noverrides = [\"sim.duration_s=2\"]\nruns = 1\ngenerations = 2\n"
           "population = 6\npolish_iterations = 10\n[[parameter]]\n"
           "key = \"muscles.antagonist.plant.geometry.wall_thickness_mm\"\nfrom = 2.0\nto = 4.0\n"
           "[[recording]]\nfile = \"steps.csv\"\nset = ['" +

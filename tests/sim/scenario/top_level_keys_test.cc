@@ -126,7 +126,7 @@ TEST(IdentifyKeysTest, AValueReachesItsFieldAndKeysListsEveryRowOnce) {
   EXPECT_EQ(def.explained_noise_factor, 2.5);
   EXPECT_EQ(def.interval, 0.9);
   EXPECT_FALSE(def.profile_offsets);
-  EXPECT_EQ(def.generations, 6u) << "a key not given keeps the struct's default";
+  EXPECT_EQ(def.generations, 20u) << "a key not given keeps the struct's default";
   EXPECT_EQ(def.population, default_population(def)) << "sized to the parameters searched";
   EXPECT_EQ(load_identify_definition(search_keys_file(dir, "population = 5")).population, 5u);
   const pamsim_test::CliResult r = pamsim_test::run_pamsim("keys --identify --json");
@@ -141,7 +141,8 @@ TEST(IdentifyKeysTest, AValueReachesItsFieldAndKeysListsEveryRowOnce) {
   IdentifyDefinition defaults;
   EXPECT_EQ(listed, row_keys({identify_search_table(&defaults)}));
   EXPECT_EQ(fallback["explained_noise_factor"], "3.0");
-  EXPECT_EQ(fallback["generations"], "6");
+  EXPECT_EQ(fallback["generations"], "20");
+  EXPECT_EQ(fallback["runs"], "3");
   EXPECT_EQ(fallback["population"].rfind("(the larger of 8 and 4 + floor(3 ln m)", 0), 0u)
       << fallback["population"];
   const pamsim_test::CliResult both = pamsim_test::run_pamsim("keys --identify --pneumatics");
