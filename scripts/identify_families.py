@@ -20,8 +20,12 @@ files give (none: the file's defaults).
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
-                                "examples", "identify"))
+sys.path.insert(
+    0,
+    os.path.join(
+        os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "examples", "identify"
+    ),
+)
 import make_recordings  # noqa: E402  (the example's logger)
 
 # the ball released at 1 s, the trial 3 s long: a drop's conditions
@@ -37,7 +41,11 @@ FAMILIES = {
     "example": {
         # key: (truth drawn from [lo, hi], the identification's range [from, to], scale)
         "truth": {
-            "muscles.antagonist.plant.geometry.wall_thickness_mm": ((2.5, 3.3), (2.0, 4.0), "linear"),
+            "muscles.antagonist.plant.geometry.wall_thickness_mm": (
+                (2.5, 3.3),
+                (2.0, 4.0),
+                "linear",
+            ),
             "muscles.agonist.plant.geometry.wall_thickness_mm": ((1.8, 2.5), (1.5, 3.0), "linear"),
             "joints.shoulder.damping_N_m_s_per_rad": ((0.06, 0.3), (0.02, 0.5), "log"),
             "valve.dead_time_ms": ((2.0, 10.0), (0.5, 20.0), "linear"),
@@ -56,7 +64,12 @@ FAMILIES = {
                 50.0,
                 False,
             ),
-            "sine": (make_recordings.RECORDINGS["sine"][0], ["angle_deg", "force_meas_anta_N"], 40.0, False),
+            "sine": (
+                make_recordings.RECORDINGS["sine"][0],
+                ["angle_deg", "force_meas_anta_N"],
+                40.0,
+                False,
+            ),
             "ramps": (make_recordings.RECORDINGS["ramps"][0], ["angle_deg"], 25.0, True),
         },
         # one run of 8 generations of 12 (the search this family's coverage was first measured
@@ -71,7 +84,11 @@ FAMILIES = {
     },
     "harder": {
         "truth": {
-            "muscles.antagonist.plant.geometry.wall_thickness_mm": ((2.5, 3.3), (2.0, 4.0), "linear"),
+            "muscles.antagonist.plant.geometry.wall_thickness_mm": (
+                (2.5, 3.3),
+                (2.0, 4.0),
+                "linear",
+            ),
             "muscles.agonist.plant.friction.extension.A0_mm2": ((1.2, 4.0), (0.5, 8.0), "log"),
             "valve.valve_time_constant_ms": ((8.0, 30.0), (4.0, 60.0), "log"),
             "valve.proportional_band_kPa": ((300.0, 550.0), (200.0, 800.0), "log"),
