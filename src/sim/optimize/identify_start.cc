@@ -1,8 +1,9 @@
 // identify_start.cc: start_values of identify_outputs.h: each parameter's value in the model
 // as it stands (the base scenario with the file's overrides), where identification starts
 // from: a sensor's neutral value, a plant's field as the scenario changes it (else as its
-// file gives it), the pneumatics file's field from that file, a joint's losses and a body's
-// mass from the loaded model, any other key from the scenario (its value or default).
+// file gives it), the pneumatics file's field from that file, a valve's field as the
+// scenario's valve runs it, a joint's losses and a body's mass from the loaded model, any
+// other key from the scenario (its value or default).
 #include <cmath>
 
 #include "base/config_reader.h"
@@ -10,6 +11,7 @@
 #include "base/toml_file.h"
 #include "sim/core/trial_model.h"
 #include "sim/scenario/scenario_file.h"
+#include "sim/scenario/scenario_key_tables.h"
 #include "sim/optimize/identify_outputs.h"
 
 namespace pamsim {
@@ -50,6 +52,19 @@ double model_value(const TrialModel& tm, const std::vector<std::string>& parts) 
   return kNaN;
 }
 
+// valve.<field>: the value the scenario's valve runs with (its own, else the pneumatics
+// file's), through the rows that read it, in the key's unit
+double valve_value(const Scenario& sc, const std::vector<std::string>& parts) {
+  if (parts.size() != 2 || parts[0] != "valve") return kNaN;
+  PneumaticParams pneumatics = sc.pneumatics;
+  for (const KeyTable& table : valve_key_tables(&pneumatics)) {
+    for (const NumberRow& row : table.numbers) {
+      if (row.name == parts[1] && row.target) return *row.target * row.divisor / row.to_si;
+    }
+  }
+  return kNaN;
+}
+
 double scenario_value(const IdentifyDefinition& def, const std::string& key) {
   for (const ScenarioKeyValue& kv : scenario_key_values(def.base_path, def.overrides)) {
     if (kv.key != key || kv.value.empty()) continue;
@@ -78,6 +93,8 @@ double start_of(const IdentifyDefinition& def, std::size_t i, const Scenario& sc
   if (parts.size() > 1 && parts[0] == "pneumatics") {
     return file_value(sc.pneumatics_file, key.substr(std::string("pneumatics.").size()));
   }
+  const double from_valve = valve_value(sc, parts);
+  if (!std::isnan(from_valve)) return from_valve;
   const double from_model = model_value(tm, parts);
   return std::isnan(from_model) ? scenario_value(def, key) : from_model;
 }

@@ -237,6 +237,20 @@ TEST(IdentifyTest, TheShippedExampleLoads) {
   EXPECT_EQ(def.tensile[0].muscle, "agonist");
 }
 
+// A valve's field starts where the scenario's valve runs: the pneumatics file's [regulator]
+// (models/pams/pneumatics.toml: 10 ms, 20 ms, 380 kPa), or the scenario's own value.
+TEST(IdentifyTest, AValvesFieldStartsAtTheValueTheValveRunsWith) {
+  IdentifyDefinition def =
+      load_identify_definition(std::string(PAMSIM_SOURCE_DIR) + "/examples/identify/identify.toml");
+  def.parameters = {{"valve.dead_time_ms", 1.0, 20.0, false},
+                    {"valve.valve_time_constant_ms", 4.0, 60.0, true},
+                    {"valve.proportional_band_kPa", 200.0, 800.0, true}};
+  def.channel_parameters.assign(3, ChannelParameter{});
+  EXPECT_EQ(start_values(def), (std::vector<double>{10.0, 20.0, 380.0}));
+  def.overrides.push_back("valve.dead_time_ms=6.3");
+  EXPECT_EQ(start_values(def)[0], 6.3);
+}
+
 // clang-format off
 TEST(IdentifyTest, BadFilesAreOneLineExitTwoAndNoDatabase) {
   const fs::path dir = pamsim_test::fresh_dir("identify_bad");
