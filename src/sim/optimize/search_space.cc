@@ -17,7 +17,12 @@ namespace pamsim {
 SearchBase read_search_base(ConfigReader& in) {
   SearchBase base;
   base.path = in.require_path("base", "the base scenario file");
-  base.path = std::filesystem::weakly_canonical(std::filesystem::absolute(base.path)).string();
+  std::error_code error;  // a path the system cannot resolve (a name too long) is the file's fault
+  const std::filesystem::path absolute = std::filesystem::absolute(base.path, error);
+  std::filesystem::path resolved;
+  if (!error) resolved = std::filesystem::weakly_canonical(absolute, error);
+  if (error) in.fail("base", "cannot be resolved (" + error.message() + ")");
+  base.path = resolved.string();
   try {
     base.text = read_text_file(base.path);
   } catch (const InputError& e) {

@@ -278,6 +278,7 @@ TEST(IdentifyTest, BadFilesAreOneLineExitTwoAndNoDatabase) {
            {with("from = 0.1\nto = 0.4", "from = 0.4\nto = 0.4"), "parameter[1]"},
            {with("file = \"steps.csv\"", "file = \"steps.csv\"\nheld_out = true"), "needs at least one [[recording]] that is not held_out"},
            {with("file = \"steps.csv\"", "file = \"missing.csv\""), "missing.csv"},
+           {with(kArm, kArm + std::string(300, 'l')), "base cannot be resolved (File name too long)"},
            {with("overrides = [\"sim.duration_s=2\"]", "overrides = [\"sim.duration_s=1\"]"), "the recording lasts 1.98 s, its scenario 1 s"},
            {good + "[[tensile]]\nmuscle = \"agonist\"\nfile = \"t.csv\"\n", "tensile[0].file"},
            {with("key = \"bodies.ball.mass_kg\"", "key = \"channel.angle_rad.offset\""), "no recording matches angle_rad"},
