@@ -151,6 +151,9 @@ struct Scenario {
   double timestep_s = 0.001;
   double duration_s = 3.0;
   double control_hz = 100.0;
+  // sim.contact_soft_onset_mm: every contact's impedance rising from MuJoCo's least over this
+  // penetration [m] (trial_model.cc: set_contact_onset); 0: the model's own solimp
+  double contact_soft_onset_m = 0.0;
 
   std::vector<MuscleSpec> muscles;
   std::vector<BodyMassSpec> body_masses;

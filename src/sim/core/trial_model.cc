@@ -253,6 +253,21 @@ void check_spans(const Scenario& sc, const TrialModel& tm) {
   }
 }
 
+// sim.contact_soft_onset_mm: MuJoCo starts a contact on the step its geoms first overlap,
+// with the force its impedance at zero penetration gives (solimp's dmin, 0.9 by default), so
+// when a landing moves by a step the trajectory jumps, however small the change that moved
+// it: a prediction that is not a continuous function of the model's parameters. From mjMINIMP
+// over `width` the force starts at 0 and a landing's step no longer matters.
+void set_contact_onset(double width_m, mjModel* m) {
+  if (width_m <= 0) return;
+  const auto soften = [&](mjtNum* solimp) {
+    solimp[0] = mjMINIMP;
+    solimp[2] = width_m;
+  };
+  for (int g = 0; g < m->ngeom; ++g) soften(m->geom_solimp + mjNIMP * g);
+  for (int p = 0; p < m->npair; ++p) soften(m->pair_solimp + mjNIMP * p);
+}
+
 }  // namespace
 
 int TrialModel::muscle_index(const Scenario& sc, const std::string& actuator) const {
@@ -293,6 +308,7 @@ TrialModel load_trial_model(const Scenario& sc) {
   tm.model = load_mjcf(sc.model_file);
   mjModel* m = tm.model.get();
   m->opt.timestep = sc.timestep_s;  // the scenario's step, not the MJCF's
+  set_contact_onset(sc.contact_soft_onset_m, m);
 
   // the cast by name; masses before the lines: a static start depends on them
   bind_muscles(sc, &tm);

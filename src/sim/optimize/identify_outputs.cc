@@ -171,9 +171,11 @@ std::vector<std::string> identify_warnings(const IdentifyDefinition& def, const 
                   "differences " +
                   format_value(std::round(p.roughness * 100) / 100) +
                   " x the first at the difference step): numerical error, such as the chamber "
-                  "solver's (pneumatics.solver.relative_tolerance) or an instrument's quantiser "
-                  "(sensors.*_adc_bits), makes its standard error too small; tighten the "
-                  "tolerance or make the instruments ideal in `overrides`");
+                  "solver's (pneumatics.solver.relative_tolerance), an instrument's quantiser "
+                  "(sensors.*_adc_bits) or a contact starting on a step "
+                  "(sim.contact_soft_onset_mm), makes its standard error too small; tighten the "
+                  "tolerance, make the instruments ideal or soften the contacts' start in "
+                  "`overrides`");
   }
   for (const IdentifiedParameter& p : r.parameters) {
     if (!p.at_bound || !p.identifiable) continue;  // (undetermined: said so, wherever it sits)

@@ -54,8 +54,18 @@ KeyTable sim_key_table(Scenario* scenario, double* max_steps) {
        1.0,
        {1.0, 1e10, false, false},
        "the most physics steps a trial may take (at least duration_s / timestep_s)",
-       max_steps}};
-  for (NumberRow& row : t.numbers) row.trial_only = row.name != "timestep_s";  // (the model's)
+       max_steps},
+      {"contact_soft_onset_mm",
+       "mm",
+       1e-3,
+       {0.0, 10.0, false, false},
+       "penetration over which every contact's impedance rises from MuJoCo's least to the "
+       "model's (solimp's dmin and width), so that a contact's force starts at 0; 0: the "
+       "model's solimp",
+       &scenario->contact_soft_onset_m}};
+  for (NumberRow& row : t.numbers) {  // the step and the contacts are the model's
+    row.trial_only = row.name != "timestep_s" && row.name != "contact_soft_onset_mm";
+  }
   return t;
 }
 
