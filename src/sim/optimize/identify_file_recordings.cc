@@ -94,6 +94,14 @@ void read_log_commands(const TableEntry& e, const IdentifyDefinition& def, Ident
   } catch (const InputError& err) {
     e.in.fail(e.where + "set", std::string("(") + err.what() + ")");
   }
+  // the controller stays off for the whole recording, under an event name of its own
+  for (const EventSpec& ev : sc.events) {
+    e.in.check(ev.name != kLogCommandsEvent, e.where + "set",
+               "names an event \"" + ev.name + "\", the name commands = \"log\" uses");
+    e.in.check(ev.action != EventAction::kControllerOn, e.where + "set",
+               "switches the controller on (" + ev.key +
+                   "), but with commands = \"log\" the log's commands are the controller's");
+  }
   const std::string file = toml_value_text(
       toml::value<std::string>(fs::absolute(r->data.path).lexically_normal().string()));
   std::string labels;

@@ -141,7 +141,11 @@ TEST(IdentifyLogTest, ALogThatCannotDriveTheModelIsOneLine) {
            {with("log.csv", "angle.csv"), "recording[0].commands is \"log\", but"},
            {with("commands = \"log\"", "commands = \"csv\""), "recording[0].commands"},
            {good + "channels = [\"angle_deg\", \"p_cmd_ago_MPa\"]\n",
-            "names p_cmd_ago_MPa, a command that drives the trial"}}) {
+            "names p_cmd_ago_MPa, a command that drives the trial"},
+           {good + "set = ['events.log_commands.when.at_s=2']\n",
+            "recording[0].set names an event \"log_commands\", the name commands = \"log\" uses"},
+           {good + "set = ['events.on.action=\"controller_on\"', 'events.on.when.at_s=1']\n",
+            "recording[0].set switches the controller on (events.on)"}}) {
     pamsim_test::expect_file_refused(dir, "identify", text, "", says);
   }
   pamsim_test::write_text(dir / "check.toml", good + "[[candidate]]\nname = \"c\"\nchannels = [\"angle_deg\"]\n");

@@ -65,6 +65,18 @@ TEST(IdentifyStartsTest, ALocalMinimumAndAnEqualMinimumElsewhereAreEachOneLine) 
   EXPECT_TRUE(start_warnings(def, r).empty()) << "one start: nothing to compare";
 }
 
+TEST(IdentifyStartsTest, TheGlobalSearchIsNamedAsItRan) {
+  IdentifyDefinition def = two_walls();
+  def.generations = 0;
+  EXPECT_EQ(global_search_text(def, IdentifyResult{}), "none: generations = 0");
+  def.generations = 6;
+  def.population = 8;
+  def.runs = 1;
+  def.stall_generations = 0;
+  EXPECT_EQ(global_search_text(def, IdentifyResult{}), "6 generations of 8")
+      << "one run of a fixed length, as files before the runs were";
+}
+
 TEST(IdentifyStartsTest, FewerStartsThanAskedIsOneLineWithItsReason) {
   IdentifyDefinition def = two_walls();
   def.starts = 3;
