@@ -7,8 +7,11 @@ angle's first differences, y(k + 1) - y(k), and second differences, y(k + 1) - 2
 for a prediction smooth at the step's scale the first are alike and the second far smaller;
 where the second are as large as the first, the differences are the solver's error, not the
 dead time's effect (the roughness `pamsim identify` reports, docs/identification.md).
+With --landing, the same along a line of the harder family's parameters (scripts/
+identify_families.py) over which the ball's landing in a passive drop moves by a physics
+step, with the model's own contact and with sim.contact_soft_onset_mm = 1 (arm.toml's).
 
-    python3 scripts/identify_roughness.py [--pamsim build/src/sim/pamsim]
+    python3 scripts/identify_roughness.py [--pamsim build/src/sim/pamsim] [--landing]
 """
 
 import argparse
@@ -33,6 +36,35 @@ TOLERANCES = {  # name: the solver's keys as --set
 }
 
 
+# the antagonist's wall [mm], the agonist's extension friction A0 [mm^2], the valve's time
+# constant [ms], the regulator's band [kPa]: a fit of one harder arm ended at FROM, its truth
+# was TO (contact_onset_test.cc steps the same line)
+LANDING_FROM = {
+    "muscles.antagonist.plant.geometry.wall_thickness_mm": 2.586692288,
+    "muscles.agonist.plant.friction.extension.A0_mm2": 3.543786011,
+    "valve.valve_time_constant_ms": 15.66680396,
+    "valve.proportional_band_kPa": 340.0871688,
+}
+LANDING_TO = [2.58701, 3.5455, 15.7005, 340.536]
+LANDING_STEPS = 16
+CONTACTS = {  # name: the contact's key as --set
+    "the model's own (starts at full impedance)": ["sim.contact_soft_onset_mm=0"],
+    "softened over 1 mm (the example arm's)": ["sim.contact_soft_onset_mm=1"],
+}
+
+
+def landing_angle(pamsim, t, contact):
+    """The passive drop's angle column [deg] at fraction t of the way from LANDING_FROM to
+    LANDING_TO."""
+    sets = [
+        f"{k}={a + t * (b - a)!r}"
+        for (k, a), b in zip(LANDING_FROM.items(), LANDING_TO, strict=True)
+    ]
+    sets += ["sim.duration_s=3", 'events.fall.action="release"', 'events.fall.body="ball"']
+    sets += ["events.fall.when.at_s=1.0", "sensors.noise_scale=0"]
+    return [float(r["angle_deg"]) for r in make_recordings.trajectory(pamsim, sets + contact)]
+
+
 def angle(pamsim, dead_time_ms, solver):
     """The trial's angle column [deg] with the steps recording's commands."""
     sets = [f"valve.dead_time_ms={dead_time_ms!r}"] + make_recordings.RECORDINGS["steps"][0]
@@ -43,10 +75,38 @@ def rms(values):
     return math.sqrt(sum(v * v for v in values) / len(values))
 
 
+def differences(ys):
+    """The RMS over the trial of the first and of the second differences along `ys`."""
+    first = [
+        rms([b - a for a, b in zip(ys[k], ys[k + 1], strict=False)]) for k in range(len(ys) - 1)
+    ]
+    second = [
+        rms([a - 2 * b + c for a, b, c in zip(ys[k - 1], ys[k], ys[k + 1], strict=False)])
+        for k in range(1, len(ys) - 1)
+    ]
+    return first, second
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--pamsim", default=os.path.join(ROOT, "build", "src", "sim", "pamsim"))
+    ap.add_argument("--landing", action="store_true", help="along the harder arm's line instead")
     args = ap.parse_args()
+    if args.landing:
+        print(
+            f"| contact | angle's first differences, RMS [deg] per 1/{LANDING_STEPS} of the line "
+            "| largest over median |"
+        )
+        print("| --- | --- | --- |")
+        for name, contact in CONTACTS.items():
+            ys = [
+                landing_angle(args.pamsim, k / LANDING_STEPS, contact)
+                for k in range(LANDING_STEPS + 1)
+            ]
+            first = differences(ys)[0]
+            ratio = max(first) / sorted(first)[len(first) // 2]
+            print(f"| {name} | {' '.join(f'{v:.2g}' for v in first)} | {ratio:.3g} |")
+        return
     print(
         f"| solver tolerance | angle's first differences, RMS [deg] per {STEP_MS} ms "
         "| second differences, RMS [deg] |"
@@ -54,13 +114,7 @@ def main():
     print("| --- | --- | --- |")
     for name, solver in TOLERANCES.items():
         ys = [angle(args.pamsim, round(6.0 + k * STEP_MS, 6), solver) for k in range(-4, 5)]
-        first = [
-            rms([b - a for a, b in zip(ys[k], ys[k + 1], strict=False)]) for k in range(len(ys) - 1)
-        ]
-        second = [
-            rms([a - 2 * b + c for a, b, c in zip(ys[k - 1], ys[k], ys[k + 1], strict=False)])
-            for k in range(1, len(ys) - 1)
-        ]
+        first, second = differences(ys)
         print(
             f"| {name} | {' '.join(f'{v:.2g}' for v in first)} "
             f"| {' '.join(f'{v:.2g}' for v in second)} |"

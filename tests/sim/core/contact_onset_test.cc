@@ -97,7 +97,8 @@ double ball_rest_height(const std::vector<std::string>& extra) {
 TEST(ContactOnsetTest, TheBallAtRestSinksByNoMoreThanTheOnsetsWidth) {
   const double hard = ball_rest_height({"sim.contact_soft_onset_mm=0"});
   for (const double width_mm : {0.5, 1.0, 2.0}) {
-    const double soft = ball_rest_height({"sim.contact_soft_onset_mm=" + format_shortest(width_mm)});
+    const double soft =
+        ball_rest_height({"sim.contact_soft_onset_mm=" + format_shortest(width_mm)});
     EXPECT_LT(soft, hard) << "a softer start sinks the ball (" << width_mm << " mm)";
     EXPECT_GT(soft, hard - width_mm * 1e-3) << width_mm << " mm";
   }
