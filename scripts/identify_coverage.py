@@ -9,14 +9,16 @@ of its own: a zero error of each of the family's instruments, added to what the 
 keeps (make_recordings.py's logger: its channels, rate and 5 significant digits). The
 identification fits every parameter and offset from the model's values (the model's trials
 without noise and with ideal ADCs, the worked example's overrides; the recordings' and the
-model's chamber solver at arm.toml's tight tolerance), and each arm's identify.csv gives its
+model's chamber solver at arm.toml's tight tolerance, their contacts at arm.toml's soft onset
+or --contact-onset-mm's), and each arm's identify.csv gives its
 value, standard error (HAC), plain standard error, interval and verdict; the summary counts
 the arms explained, those whose search "did not settle", and the wall time of each. A control
 arm whose encoder is read 60 ms late (a delay the model lacks) must come out "does not explain".
 
     python3 scripts/identify_coverage.py [--family example|harder] [--arms 20] [--seed 1]
         [--threads 2] [--starts N] [--runs N] [--stall-generations N] [--generations N]
-        [--population N] [--searched-offsets] [--only 6,8] [--pamsim build/src/sim/pamsim]
+        [--population N] [--searched-offsets] [--contact-onset-mm MM] [--only 6,8]
+        [--pamsim build/src/sim/pamsim]
         [--out renders/identify_coverage[_harder]]
 
 writes OUT/coverage.csv (one row per arm and parameter) and OUT/coverage.md (the summary the
@@ -59,6 +61,9 @@ SEARCH_OPTIONS = (
 with open(os.path.join(ROOT, "examples", "identify", "identify.toml"), "rb") as _f:
     MODEL_OVERRIDES = tomllib.load(_f)["overrides"]
 CONTROL_DELAY_S = 0.06
+# --contact-onset-mm: sim.contact_soft_onset_mm for the arms and the model alike (unset:
+# arm.toml's)
+CONTACT = []
 
 
 def draw_arm(rng):
@@ -78,7 +83,7 @@ def toml_list(items):
 def identify_text(noise_seed):
     lines = [f'base = "{os.path.join(ROOT, "examples", "identify", "arm.toml")}"']
     lines += [f"{k} = {v}" for k, v in SEARCH.items()]
-    lines += ["seed = 1", "overrides = " + toml_list(MODEL_OVERRIDES), ""]
+    lines += ["seed = 1", "overrides = " + toml_list(MODEL_OVERRIDES + CONTACT), ""]
     for key, (_, (lo, hi), scale) in TRUTH_RANGES.items():
         lines += [
             "[[parameter]]",
@@ -110,7 +115,7 @@ def identify_text(noise_seed):
 def make_arm(pamsim, folder, truth, offsets, noise_seed, delays=None):
     """The arm's recordings and identification file in `folder` (kept if already there)."""
     os.makedirs(folder, exist_ok=True)
-    sets = [f"{k}={v!r}" for k, v in truth.items()] + [f"seed={noise_seed}"]
+    sets = [f"{k}={v!r}" for k, v in truth.items()] + [f"seed={noise_seed}"] + CONTACT
     for name, (commands, channels, rate, _) in RECORDINGS.items():
         if not os.path.exists(os.path.join(folder, name + ".csv")):
             make_recordings.record(
@@ -310,6 +315,8 @@ def command_options(args):
         if value is not None:
             out += f" --{name.replace('_', '-')} {value}"
     out += " --searched-offsets" if args.searched_offsets else ""
+    if args.contact_onset_mm is not None:
+        out += f" --contact-onset-mm {args.contact_onset_mm:g}"
     return out + (f" --only {args.only}" if args.only else "")
 
 
@@ -364,6 +371,12 @@ def main():
         "profile_offsets = false) instead of setting them at their best",
     )
     ap.add_argument(
+        "--contact-onset-mm",
+        type=float,
+        help="sim.contact_soft_onset_mm of the arms and the model (0: MuJoCo's own contact; "
+        "default arm.toml's)",
+    )
+    ap.add_argument(
         "--only",
         default="",
         help="identify only these of the --arms arms, e.g. 6,8 (each drawn as in the full run)",
@@ -392,6 +405,10 @@ def main():
         if getattr(args, name) is not None:
             SEARCH[name] = getattr(args, name)
     SEARCH["profile_offsets"] = "false" if args.searched_offsets else "true"
+    if args.contact_onset_mm is not None:
+        if not 0.0 <= args.contact_onset_mm <= 10.0:
+            sys.exit("identify_coverage.py: --contact-onset-mm must be within [0, 10]")
+        CONTACT.append(f"sim.contact_soft_onset_mm={args.contact_onset_mm!r}")
     if args.out is None:
         suffix = "" if args.family == "example" else "_" + args.family
         args.out = os.path.join(ROOT, "renders", "identify_coverage" + suffix)
