@@ -3,8 +3,9 @@
 // silicone band as the Yeoh law's nominal stress at stretch 4 (0.87 MPa with C20 = 0, 5.1 MPa
 // with Elastosil M4601's 0.02 MPa; Dragon Skin 30's 1.55 MPa between), the board's thickness
 // as its surface stress at the gauge under the calibration's 50 N (20 and 5 MPa), and the
-// board's creep bracket as about 0.05 within 100 s, and the lines' pre-tension up to the
-// break load of the strongest line bracketed (50 lb) at the reaching task's peak pull.
+// board's creep bracket as about 0.05 within 100 s, the lines' pre-tension up to the
+// break load of the strongest line bracketed (50 lb) at the reaching task's peak pull, and
+// the arm's bladder walls as the tested muscles' within the latex tubing's tolerance.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -109,6 +110,26 @@ TEST(BracketSourcesTest, TheLinesPretensionTopsWhereTheStrongestLineBreaks) {
     const Bracket& b = bracket_named(spec.brackets, "lines' pre-tension");
     EXPECT_NEAR(peak_pull_n(spec, b.to), break_n, 0.01 * break_n);
     EXPECT_LE(b.to, 20.0) << "within the tensile test's 20 mm, over which the estimator is fitted";
+  }
+}
+
+TEST(BracketSourcesTest, TheArmsWallsAreTheTestedWallsWithinTheTubingsTolerance) {
+  // the latex tubing specification: +-0.010 in for 1/16 and 5/64 in walls, +-0.015 in for
+  // 3/32 and 1/8 in walls, around the walls of the muscles the estimators were fitted to
+  constexpr double kInchMm = 25.4;
+  const ReachingValidationSpec spec =
+      load_reaching_validation(kScenarios + "validate_reaching.toml");
+  for (const auto& [muscle, tolerance_in] :
+       std::vector<std::pair<std::string, double>>{{"agonist", 0.010}, {"antagonist", 0.015}}) {
+    SCOPED_TRACE(muscle);
+    const double tested_mm =
+        load_plant_params(std::string(PAMSIM_SOURCE_DIR) + "/models/pams/plant_" + muscle + ".toml")
+            .avbdl.wall_thickness_m *
+        1e3;
+    const Bracket& b = bracket_named(spec.brackets, muscle + " wall on the arm");
+    EXPECT_EQ(b.key, "muscles." + muscle + ".plant.geometry.wall_thickness_mm");
+    EXPECT_NEAR(b.from, tested_mm - tolerance_in * kInchMm, 1e-3);
+    EXPECT_NEAR(b.to, tested_mm + tolerance_in * kInchMm, 1e-3);
   }
 }
 

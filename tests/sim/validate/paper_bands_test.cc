@@ -12,8 +12,9 @@
 //     above, PAM-B Eq. (4) and PAM-D Eq. (5) below: the braid's friction and angle, the
 //     plant files' assumptions, move each (docs/validation.md runs every one).
 //   Table V, model estimates: the paper's 5.24 / 5.02 % lie above the bands by a factor of
-//     2 or more, with nylon lines and with PE braid: the bracketed parts (the board, the
-//     re-seated line, the lines and their pre-tension) move them by tenths of a percent. The
+//     1.5 or more, with nylon lines and with PE braid: the bracketed parts (the board, the
+//     re-seated line, the lines and their pre-tension, the arm's bladder walls within the
+//     tubing's tolerance) move them by a percent at most. The
 //     mechanisms missing from the bands, each moving its cell towards the paper: the agonist's
 //     line leaving the board with the lines tied tighter (its error after the loss of the
 //     paper's size), and an antagonist that is not the muscle its estimator was fitted to (a
@@ -82,7 +83,8 @@ TEST(PaperBandsTest, TableFiveModelCellsSitFarAboveTheirBandsWithEitherLine) {
              {"agonist model all", 5.24}, {"antagonist model all", 5.02}}) {
       const BandStats b = rmse_band(bands, cell);
       EXPECT_EQ(b.n, kRigs - refused) << cell;
-      EXPECT_LT(2.0 * b.max, paper) << cell;  // Table V: a factor of 2 at least
+      // Table V: above every rig by a factor of 1.5 at least, the arm's walls bracketed too
+      EXPECT_LT(1.5 * b.max, paper) << cell;
       EXPECT_GT(b.max - b.min, 0.1) << cell;  // the brackets do move it
     }
   }
