@@ -13,12 +13,23 @@
 #include "base/format.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
+#include "sim/identify_test_arm.h"
 #include "sim/scenario/scenario_file.h"
 
 namespace pamsim {
 namespace {
 
-const std::string kOnsetArm = std::string(PAMSIM_SOURCE_DIR) + "/examples/identify/arm.toml";
+// the ball released at 1 s into the basket of the example arm (kArm), a 3 s trial, with
+// `extra` overrides; its trial, which must run to its end
+TrialResult ball_drop(const std::vector<std::string>& extra) {
+  std::vector<std::string> sets = {"sim.duration_s=3", "events.fall.action=\"release\"",
+                                   "events.fall.body=\"ball\"", "events.fall.when.at_s=1.0"};
+  sets.insert(sets.end(), extra.begin(), extra.end());
+  const Scenario sc = load_scenario(kArm, sets);
+  TrialResult r = run_trial(load_trial_model(sc), sc, sc.seed);
+  EXPECT_EQ(r.summary.status, "ok") << r.summary.message;
+  return r;
+}
 
 // Two points of the harder identification family's parameters (the antagonist's wall [mm],
 // the agonist's extension friction A0 [mm^2], the valve's time constant [ms], the regulator's
@@ -33,17 +44,13 @@ const char* const kOnsetKeys[] = {"muscles.antagonist.plant.geometry.wall_thickn
 // The passive drop's angle [deg] at each log row, at fraction `t` of the way from kFrom to
 // kTo, with `extra` overrides.
 std::vector<double> drop_angle(double t, const std::vector<std::string>& extra) {
-  std::vector<std::string> sets = {"sim.duration_s=3", "events.fall.action=\"release\"",
-                                   "events.fall.body=\"ball\"", "events.fall.when.at_s=1.0",
-                                   "sensors.noise_scale=0"};
+  std::vector<std::string> sets = {"sensors.noise_scale=0"};
   for (int i = 0; i < 4; ++i) {
     sets.push_back(std::string(kOnsetKeys[i]) + "=" +
                    format_shortest(kFrom[i] + t * (kTo[i] - kFrom[i])));
   }
   sets.insert(sets.end(), extra.begin(), extra.end());
-  const Scenario sc = load_scenario(kOnsetArm, sets);
-  const TrialResult r = run_trial(load_trial_model(sc), sc, sc.seed);
-  EXPECT_EQ(r.summary.status, "ok") << r.summary.message;
+  const TrialResult r = ball_drop(sets);
   const std::size_t angle = r.trajectory.column("angle_deg");
   std::vector<double> out;
   for (std::size_t row = 0; row < r.trajectory.rows(); ++row) {
@@ -84,13 +91,9 @@ TEST(ContactOnsetTest, ASoftOnsetMakesTheTrajectoryContinuousInTheParameters) {
 
 // The ball's height [m] at the end of a passive drop, settled in the basket.
 double ball_rest_height(const std::vector<std::string>& extra) {
-  std::vector<std::string> sets = {"sim.duration_s=3", "events.fall.action=\"release\"",
-                                   "events.fall.body=\"ball\"", "events.fall.when.at_s=1.0",
-                                   "joints.shoulder.damping_N_m_s_per_rad=2"};
+  std::vector<std::string> sets = {"joints.shoulder.damping_N_m_s_per_rad=2"};
   sets.insert(sets.end(), extra.begin(), extra.end());
-  const Scenario sc = load_scenario(kOnsetArm, sets);
-  const TrialResult r = run_trial(load_trial_model(sc), sc, sc.seed);
-  EXPECT_EQ(r.summary.status, "ok") << r.summary.message;
+  const TrialResult r = ball_drop(sets);
   return r.trajectory.at(r.trajectory.rows() - 1, r.trajectory.column("ball_z_m"));
 }
 
