@@ -23,6 +23,9 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "examples", "identify"))
 import make_recordings  # noqa: E402  (the example's commands)
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import identify_families  # noqa: E402  (the harder family's drop)
+
 STEP_MS = 0.01
 TOLERANCES = {  # name: the solver's keys as --set
     "the pneumatics file's (relative 1e-4, absolute 1 Pa)": [
@@ -60,8 +63,7 @@ def landing_angle(pamsim, t, contact):
         f"{k}={a + t * (b - a)!r}"
         for (k, a), b in zip(LANDING_FROM.items(), LANDING_TO, strict=True)
     ]
-    sets += ["sim.duration_s=3", 'events.fall.action="release"', 'events.fall.body="ball"']
-    sets += ["events.fall.when.at_s=1.0", "sensors.noise_scale=0"]
+    sets += identify_families.DROP + ["sensors.noise_scale=0"]
     return [float(r["angle_deg"]) for r in make_recordings.trajectory(pamsim, sets + contact)]
 
 
