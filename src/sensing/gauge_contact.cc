@@ -20,6 +20,12 @@ double contact_stick_band_m(const GaugeContactParams& c, double shortening_m) {
          (1.0 / l1 + 1.0 / c.shaft_distance_m);
 }
 
+double misalignment_for_loss_m(const GaugeContactParams& c, double margin_m, double shortening_m) {
+  const double d1 = c.fitting_distance_m, d2 = c.shaft_distance_m;
+  const double l1 = d1 + shortening_m;
+  return (margin_m + contact_stick_band_m(c, shortening_m)) / (l1 / (l1 + d2) - d1 / (d1 + d2));
+}
+
 GaugeContact::GaugeContact(const GaugeContactParams& c, const GaugeBoardParams& board)
     : params_(c),
       free_end_m_(board_free_length_m(board)),
@@ -36,6 +42,11 @@ void GaugeContact::follow(double length_m, double f_n) {
   if (!started_) {
     start_length_m_ = length_m;
     started_ = true;
+    // solved on the contact as the trial starts it (re-seated included)
+    if (params_.lost_at_shortening_m > 0.0) {
+      params_.misalignment_m =
+          misalignment_for_loss_m(params_, free_end_m_ - y0_m_, params_.lost_at_shortening_m);
+    }
   }
   // a fixed contact, a line gone, or a slack one (nothing drags it) stays where it is
   if (!params_.sliding || lost_ || !(f_n > 0.0)) return;

@@ -31,6 +31,10 @@ struct GaugeContactParams {
   // which scales the trial's reading by the lever's change, (y0 + shift - y_g) / (y0 - y_g).
   // A line re-laid on the board rests anywhere its stick band holds it: +-w of y*.
   double reseat_m = 0.0;
+  // lost_at_shortening_mm: 0, the misalignment as given; > 0, a calibration to an observed
+  // signal loss: D solved (misalignment_for_loss_m) so that the line leaves the board's free
+  // end once the muscle has shortened this far from the trial's start.
+  double lost_at_shortening_m = 0.0;
 };
 
 // The line runs from the muscle's end fitting over the board's edge (the cantilever of
@@ -53,6 +57,11 @@ struct GaugeContactParams {
 double contact_rest_position_m(const GaugeContactParams& c, double y0_m, double shortening_m);
 // w [m], the half-width of the band in which the contact sticks.
 double contact_stick_band_m(const GaugeContactParams& c, double shortening_m);
+// The misalignment D [m] at which a line that sticks from the start, the muscle shortening
+// steadily, leaves the board's free end (margin_m beyond the start's contact) once the muscle
+// has shortened by s: the contact slides off where y* - w = y0 + margin, so
+//   D = (margin + w(s)) / (L1 / (L1 + d2) - d1 / (d1 + d2)),  L1 = d1 + s,  s > 0.
+double misalignment_for_loss_m(const GaugeContactParams& c, double margin_m, double shortening_m);
 
 class GaugeContact {
  public:

@@ -49,6 +49,11 @@ void validate(const GaugeHardwareConfig& c) {
                  "such that the contact stays between gauge_position_mm and the board's free end",
                  units::m_to_mm(c.contact.reseat_m));
   }
+  if (c.contact.lost_at_shortening_m > 0.0 && !c.contact.sliding) {
+    checks::fail("sensors.gauge.contact.lost_at_shortening_mm",
+                 "0 with a fixed contact (model = \"sliding\" to solve its loss)",
+                 units::m_to_mm(c.contact.lost_at_shortening_m));
+  }
   const double f1 = board_first_mode_hz(c.board, c.vibration);
   if (c.vibration.enabled && !(f1 > 0.0 && std::isfinite(f1))) {
     checks::fail("sensors.gauge.board.length_mm", "short enough that the board has a first mode",

@@ -98,7 +98,12 @@ KeyTable contact_rows(GaugeContactParams& c) {
       {"reseat_mm", "mm", kMm, kAnyRange,
        "the contact moved along the edge between the static calibration and the trial (the "
        "line re-laid; within its stick band, gauge_contact.h)",
-       &c.reseat_m}};
+       &c.reseat_m},
+      {"lost_at_shortening_mm", "mm", kMm, kNonNegativeRange,
+       "0: misalignment_mm as given; > 0: misalignment_mm solved so that the line leaves the "
+       "board's free end once the muscle has shortened this far from the trial's start (a "
+       "calibration to an observed signal loss, gauge_contact.h)",
+       &c.lost_at_shortening_m}};
   return t;
 }
 

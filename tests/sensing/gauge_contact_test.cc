@@ -2,8 +2,8 @@
 // closed forms: the resting point is the line's shortest path over the edge, the contact
 // sticks within the friction's play and then follows at its edge, a frictionless line leaves
 // the board at the shortening geometry predicts, a slack line and a fixed contact stay put,
-// a gauge reads the pull times the lever of the moment and nothing once the line is off, and
-// every bad key is named.
+// a misalignment solved for an observed loss loses the line there, a gauge reads the pull
+// times the lever of the moment and nothing once the line is off, and every bad key is named.
 #include "sensing/gauge_contact.h"
 
 #include <gtest/gtest.h>
@@ -94,6 +94,33 @@ TEST(GaugeContactTest, AFrictionlessLineLeavesTheBoardWhereGeometryPredicts) {
   EXPECT_TRUE(after.lost());
 }
 
+// The calibration to an observed loss: the least misalignment that loses a steadily
+// shortening line by s, found by bisection on the contact itself, is the closed form; and a
+// contact given lost_at_shortening_mm loses its line there, re-seated or not.
+TEST(GaugeContactTest, ASolvedMisalignmentLosesTheLineAtTheGivenShortening) {
+  const GaugeContactParams shipped;  // margin 5 mm to the free end, w about 2.9 mm
+  const double s_loss = 0.012;
+  auto lost_by = [&](GaugeContactParams c, double shift_m, double s_end) {
+    GaugeContact g(c, default_board());
+    g.reseat(shift_m);
+    for (int i = 0; i <= 2000; ++i) g.follow(kL0 - s_end * i / 2000.0, 10.0);
+    return g.lost();
+  };
+  double lo = 0.0, hi = 10.0;
+  for (int k = 0; k < 60; ++k) {
+    GaugeContactParams c = shipped;
+    c.misalignment_m = 0.5 * (lo + hi);
+    (lost_by(c, 0.0, s_loss) ? hi : lo) = c.misalignment_m;
+  }
+  EXPECT_NEAR(lo, misalignment_for_loss_m(shipped, 0.005, s_loss), 1e-9);
+  for (double shift : {0.0, 0.002, -0.002}) {
+    GaugeContactParams c = shipped;
+    c.lost_at_shortening_m = s_loss;
+    EXPECT_FALSE(lost_by(c, shift, 0.999 * s_loss)) << shift;
+    EXPECT_TRUE(lost_by(c, shift, 1.001 * s_loss)) << shift;
+  }
+}
+
 TEST(GaugeContactTest, ASlackLineAndAFixedContactStayPut) {
   GaugeContactParams c;
   c.misalignment_m = 0.300;
@@ -149,6 +176,13 @@ TEST(GaugeContactTest, EveryBadKeyIsNamed) {
       {"sensors.gauge.contact.wrap_deg", [](GaugeContactParams& c) { c.wrap_deg = 0; }},
       {"sensors.gauge.contact.friction_coefficient",
        [](GaugeContactParams& c) { c.friction_coefficient = -0.1; }},
+      {"sensors.gauge.contact.lost_at_shortening_mm",
+       [](GaugeContactParams& c) { c.lost_at_shortening_m = -0.001; }},
+      {"sensors.gauge.contact.lost_at_shortening_mm",
+       [](GaugeContactParams& c) {
+         c.sliding = false;
+         c.lost_at_shortening_m = 0.010;
+       }},
   };
   for (const Case& k : cases) {
     GaugeHardwareConfig gauge;  // the contact's keys are the gauge's rows

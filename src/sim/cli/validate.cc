@@ -52,6 +52,7 @@ struct ValidateOptions {
   bool budget = false;
   std::optional<int> bands;  // --bands N
   bool sensitivity = false;
+  bool assumptions = false;  // --assumptions
   bool no_plot = false;
   bool quiet = false;
   std::string plot_format = "png";
@@ -104,6 +105,13 @@ ValidationOptions common_options(const ValidateOptions& o, const std::string& de
   v.seed = o.seed;
   v.threads = resolve_thread_count(o.threads);
   return v;
+}
+
+// --assumptions changes only which brackets a band or sensitivity run draws
+void refuse_stray_assumptions(const ValidateOptions& o) {
+  if (o.assumptions && !o.bands && !o.sensitivity) {
+    throw InputError("--assumptions needs --bands or --sensitivity");
+  }
 }
 
 // A folder this command made for its outputs: removed again if the command is refused
@@ -198,6 +206,7 @@ void run_bands_command(const ValidateOptions& o, const std::string& name,
   if (banded) check_band_rigs(*o.bands);  // before any folder is made
   const std::string what = banded ? "bands" : "sensitivity";
   ValidationOptions v = common_options(o, "renders/validate_" + name + "_" + what);
+  v.assumptions = o.assumptions;
   const std::vector<std::string>& outputs = banded ? kBandsOutputs : kSensitivityOutputs;
   if (!o.force) refuse_earlier_outputs(v.out_dir, outputs);
   use_plot_formats(o.plot_format);
@@ -205,7 +214,8 @@ void run_bands_command(const ValidateOptions& o, const std::string& name,
   const auto folder = require_writable(v.out_dir);
   const std::string command =
       "validate " + subcommand(name) +
-      (banded ? " --bands " + std::to_string(*o.bands) : std::string(" --sensitivity"));
+      (banded ? " --bands " + std::to_string(*o.bands) : std::string(" --sensitivity")) +
+      (o.assumptions ? " --assumptions" : "");
   std::shared_ptr<ProgressReporter> progress;
   int total = 0;
   v.started = [&](int n) {
@@ -238,6 +248,7 @@ void run_bands_command(const ValidateOptions& o, const std::string& name,
 void run_length_estimation(const ValidateOptions& o) {
   const auto started = std::chrono::steady_clock::now();
   const std::string started_utc = utc_timestamp();
+  refuse_stray_assumptions(o);
   const LengthValidationSpec spec = load_length_validation(o.file, o.pams);
   if (o.bands || o.sensitivity) {
     return run_bands_command(
@@ -282,6 +293,7 @@ void run_length_estimation(const ValidateOptions& o) {
 void run_reaching(const ValidateOptions& o) {
   const auto started = std::chrono::steady_clock::now();
   const std::string started_utc = utc_timestamp();
+  refuse_stray_assumptions(o);
   const ReachingValidationSpec spec = load_reaching_validation(o.file);
   if (o.bands || o.sensitivity) {
     return run_bands_command(
@@ -337,6 +349,10 @@ void add_common(CLI::App* cmd, ValidateOptions* o, const std::string& default_fi
       cmd->add_flag("--sensitivity", o->sensitivity,
                     "Each [[bracket]] alone at its two ends: which unknown moves which cell "
                     "(sensitivity.csv, sensitivity.md)");
+  cmd->add_flag("--assumptions", o->assumptions,
+                "With --bands or --sensitivity: draw the [[bracket]] tables marked assumption "
+                "too (without it they hold the scenario's values, and the headline count is "
+                "the sourced brackets' alone)");
   bands->excludes(sensitivity);
   cmd->get_option("--budget")->excludes(bands)->excludes(sensitivity);
   cmd->add_flag("--no-plot", o->no_plot, "Write no figures (gnuplot not needed)");

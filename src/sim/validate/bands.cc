@@ -56,7 +56,11 @@ const std::vector<EntryKey>& bracket_entry_keys() {
       {"from", "(the key's)", "below to", "(required)", "the bracket's lower end",
        EntryType::kNumber},
       {"to", "(the key's)", "", "(required)", "the bracket's upper end", EntryType::kNumber},
-      {"source", "", "a citation", "(required)", "where the bracket comes from", EntryType::kText}};
+      {"source", "", "a citation", "(required)", "where the bracket comes from", EntryType::kText},
+      {"assumption", "", "", "false",
+       "no published source sizes it: drawn only with --assumptions, never in the headline "
+       "count",
+       EntryType::kBool}};
   return keys;
 }
 
@@ -79,12 +83,21 @@ std::vector<Bracket> read_brackets(ConfigReader& in, std::uint64_t* seed) {
                "must be below to, got " + format_value(b.from) + " and " + format_value(b.to));
     b.source = e.text("source", true);
     e.in.check(!b.source.empty(), e.where + "source", "must cite where the bracket comes from");
+    b.assumption = e.table["assumption"].value_or(false);  // true or false, by its row
     brackets.push_back(std::move(b));
   }
   in.check(static_cast<int>(brackets.size()) <= kMaxBrackets, "bracket",
            "may hold at most " + std::to_string(kMaxBrackets) + " brackets, got " +
                std::to_string(brackets.size()));
   return brackets;
+}
+
+std::vector<Bracket> drawn_brackets(const std::vector<Bracket>& brackets, bool assumptions) {
+  std::vector<Bracket> drawn;
+  for (const Bracket& b : brackets) {
+    if (assumptions || !b.assumption) drawn.push_back(b);
+  }
+  return drawn;
 }
 
 std::vector<double> bracket_draws(const std::vector<Bracket>& brackets, std::uint64_t seed,

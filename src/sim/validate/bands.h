@@ -25,11 +25,18 @@ namespace pamsim {
 //   key      the scenario key it sets (any numeric key of the rig's scenario)
 //   from, to the bracket, from < to, in the key's unit; drawn uniformly
 //   source   where the bracket comes from (a datasheet, a material's data), required
+//   assumption  true: no published source sizes it (`source` says what it rests on); drawn
+//            only when asked (--assumptions) and never in the headline count; default false
 // and bracket_seed (>= 0, default 1) fixes the draws: rig r's values depend on it and r alone.
 struct Bracket {
   std::string name, key, source;
   double from = 0.0, to = 0.0;
+  bool assumption = false;
 };
+
+// The brackets a band or sensitivity run draws: the sourced ones, and the assumptions too
+// when `assumptions` is set.
+std::vector<Bracket> drawn_brackets(const std::vector<Bracket>& brackets, bool assumptions);
 
 // A [[bracket]] table's keys, as the reader takes them and the key reference lists them.
 const std::vector<EntryKey>& bracket_entry_keys();
@@ -80,9 +87,10 @@ struct RunCells {
 RunCells gather_runs(int runs, const std::function<std::vector<BandCell>(int)>& run);
 
 struct Bands {
-  std::string protocol;   // "length-estimation", "reaching"
-  std::string cases_are;  // what a run's cells are, for the Markdown
-  std::vector<Bracket> brackets;
+  std::string protocol;           // "length-estimation", "reaching"
+  std::string cases_are;          // what a run's cells are, for the Markdown
+  std::vector<Bracket> brackets;  // those drawn
+  std::vector<Bracket> held;      // assumptions not drawn: the scenario's values
   std::uint64_t seed = 1;
   std::vector<std::vector<double>> draws;  // [rig][bracket]
   RunCells runs;                           // one run per rig

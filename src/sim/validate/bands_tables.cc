@@ -43,6 +43,16 @@ std::string refusals(const RunCells& runs, const std::string& what) {
          " (their cells n/a); the first: " + *first + "\n\n";
 }
 
+// The brackets as a Markdown table, an assumption's source marked as one
+std::string bracket_rows(const std::vector<Bracket>& brackets) {
+  std::string rows = markdown_header("unknown", {"key", "from", "to", "source"});
+  for (const Bracket& k : brackets) {
+    rows += "| " + k.name + " | " + k.key + " | " + format_value(k.from) + " | " +
+            format_value(k.to) + " | " + (k.assumption ? "ASSUMPTION: " : "") + k.source + " |\n";
+  }
+  return rows;
+}
+
 std::string band_text(const BandStats& s) {
   if (s.n == 0) return "n/a";
   return markdown_number(s.median) + " [" + markdown_number(s.p5) + ", " + markdown_number(s.p95) +
@@ -108,13 +118,19 @@ std::string bands_markdown(const Bands& b) {
     }
     out << " |\n";
   }
-  out << "\nThe paper's RMSE inside the range: " << inside << " of " << judged << " cells.\n\n"
+  const bool assumed = std::any_of(b.brackets.begin(), b.brackets.end(),
+                                   [](const Bracket& k) { return k.assumption; });
+  out << "\nThe paper's RMSE inside the range: " << inside << " of " << judged << " cells"
+      << (assumed ? ", assumptions drawn too: not the headline count, which draws the sourced "
+                    "brackets alone.\n\n"
+                  : ".\n\n")
       << refusals(b.runs, "rigs") << "The brackets (drawn uniformly, bracket_seed " << b.seed
       << "):\n\n"
-      << markdown_header("unknown", {"key", "from", "to", "source"});
-  for (const Bracket& k : b.brackets) {
-    out << "| " << k.name << " | " << k.key << " | " << format_value(k.from) << " | "
-        << format_value(k.to) << " | " << k.source << " |\n";
+      << bracket_rows(b.brackets);
+  if (!b.held.empty()) {
+    out << "\nAssumptions, not drawn (held at the scenario's values; --assumptions draws "
+           "them):\n\n"
+        << bracket_rows(b.held);
   }
   return out.str();
 }

@@ -100,7 +100,7 @@ using CellsOf = std::function<std::vector<BandCell>(const ValidationOptions&)>;
 // What the bands and the sensitivity need of a protocol: its brackets and sources, its
 // trials per run, what its cells are, and a run's cells
 struct Protocol {
-  const std::vector<Bracket>& brackets;
+  std::vector<Bracket> brackets;  // all of the file's; drawn_brackets picks a run's
   std::uint64_t seed;
   const std::vector<BudgetSource>& budget;
   int per_run;
@@ -133,10 +133,13 @@ Bands bands_of(const Protocol& p, const ValidationOptions& options, int rigs) {
   const int total = p.per_run * rigs;
   if (options.started) options.started(total);
   const std::vector<std::string> on = all_sources_on(p.budget);
-  Bands bands =
-      run_bands(p.brackets, p.seed, rigs, [&](int rig, const std::vector<std::string>& draws) {
-        return run_one(options, on, draws, rig, p.per_run, total, p.cells);
-      });
+  Bands bands = run_bands(drawn_brackets(p.brackets, options.assumptions), p.seed, rigs,
+                          [&](int rig, const std::vector<std::string>& draws) {
+                            return run_one(options, on, draws, rig, p.per_run, total, p.cells);
+                          });
+  for (const Bracket& b : p.brackets) {
+    if (b.assumption && !options.assumptions) bands.held.push_back(b);
+  }
   bands.protocol = p.name;
   bands.cases_are = p.cases_are;
   return bands;
@@ -144,11 +147,12 @@ Bands bands_of(const Protocol& p, const ValidationOptions& options, int rigs) {
 
 // Its sensitivity: every run on the same seeds, so that the runs differ only by a bracket
 Sensitivity sensitivity_of(const Protocol& p, const ValidationOptions& options) {
-  const int total = p.per_run * static_cast<int>(1 + 2 * p.brackets.size());
+  const std::vector<Bracket> drawn = drawn_brackets(p.brackets, options.assumptions);
+  const int total = p.per_run * static_cast<int>(1 + 2 * drawn.size());
   if (options.started) options.started(total);
   const std::vector<std::string> on = all_sources_on(p.budget);
   int run = 0;
-  Sensitivity s = run_sensitivity(p.brackets, [&](const std::vector<std::string>& set) {
+  Sensitivity s = run_sensitivity(drawn, [&](const std::vector<std::string>& set) {
     ValidationOptions counted = options;
     counted.progress = [&](int done, int) {
       if (options.progress) options.progress(run * p.per_run + done, total);

@@ -21,6 +21,7 @@ struct ValidationOptions {
   std::vector<std::string> overrides;  // the user's --set, scenario keys of every trial
   std::optional<std::uint64_t> seed;   // tensile noise and trial seed; default: files'
   int threads = 1;
+  bool assumptions = false;  // --assumptions: bands and sensitivity draw assumption brackets too
   std::function<void(int total)> started;             // inputs checked, trials about to run
   std::function<void(int done, int total)> progress;  // called from one thread at a time
 };

@@ -316,7 +316,8 @@ TEST(CliValidateTest, BadBandsAreOneLineAndLeaveNoBands) {
            {creep, " --bands 2", "bracket \"creep\" (sensors.gauge.board.creep_exponent = 0.9): "},
            {kBandBrackets, " --sensitivity --set muscles.agonist.line_diameter_mm=0.3",
             "is drawn by"},
-           {kBandBrackets, " --bands 2 --budget", "excludes"}}) {
+           {kBandBrackets, " --bands 2 --budget", "excludes"},
+           {kBandBrackets, " --assumptions", "--assumptions needs --bands or --sensitivity"}}) {
     const fs::path protocol = budget_protocol(dir, c.protocol);
     const CliResult r = run_pamsim("validate reaching " + protocol.string() + c.args + " --set " +
                                    kLineModulus + " --out " + out.string());

@@ -63,7 +63,7 @@ TEST(InstrumentKeysTest, EveryKeyTheReaderAsksForHasExactlyOneRow) {
     if (is_instrument_key(kv.key)) asked.insert(kv.key);
   }
   expect_rows_are_the_asked_keys(rows, asked);
-  EXPECT_EQ(rows.size(), 44u) << "40 rows and two creep series of two lists";
+  EXPECT_EQ(rows.size(), 45u) << "41 rows and two creep series of two lists";
 }
 
 TEST(InstrumentKeysTest, EveryRowRefusesABadValueNamingTheFileAndTheKey) {

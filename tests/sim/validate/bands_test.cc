@@ -3,7 +3,8 @@
 // brackets, the statistics against order statistics worked by hand, a band over a run whose
 // cell is its draw (uniform: median near the middle, the 5-95 % range near 5 % and 95 % of
 // the bracket), the paper judged inside or outside, a rig the protocol refuses counted and
-// kept out of the statistics, and the sensitivity's runs and swings.
+// kept out of the statistics, an assumption drawn only when asked, and the sensitivity's runs
+// and swings.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -134,6 +135,44 @@ TEST(BandsTest, ABandOfAUniformDrawIsItsQuantilesAndJudgesThePaper) {
   EXPECT_NE(bands_csv(outside).find(",0.7,outside\n"), std::string::npos);
   EXPECT_NE(bands_markdown(outside).find("inside the range: 0 of 1 cells"), std::string::npos);
   EXPECT_NE(draws_csv(outside).find("rig,a.b,c.d,x rmse_pct,refused\n0,"), std::string::npos);
+}
+
+// A bracket without a published source: drawn only when asked, listed apart when held, and
+// the headline count says when it was drawn.
+TEST(BandsTest, AnAssumptionIsDrawnOnlyWhenAskedAndNeverInTheHeadline) {
+  std::uint64_t seed = 0;
+  const std::vector<Bracket> b =
+      read_bracket_text(std::string(kTwoBrackets) +
+                            "[[bracket]]\nname = \"guess\"\nkey = \"e.f\"\nfrom = 1\nto = 2\n"
+                            "source = \"nothing published\"\nassumption = true\n",
+                        &seed);
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_FALSE(b[0].assumption);
+  EXPECT_TRUE(b[2].assumption);
+  ASSERT_EQ(drawn_brackets(b, false).size(), 2u);
+  EXPECT_EQ(drawn_brackets(b, true).size(), 3u);
+  auto run = [](int, const std::vector<std::string>& o) { return echo_run(o, ErrorPct{1, 0.3}); };
+  Bands sourced = run_bands(drawn_brackets(b, false), seed, 20, run);
+  sourced.held = {b[2]};
+  const std::string md = bands_markdown(sourced);
+  EXPECT_NE(md.find("inside the range: 1 of 1 cells.\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("Assumptions, not drawn"), std::string::npos) << md;
+  EXPECT_NE(md.find("| guess | e.f | 1 | 2 | ASSUMPTION: nothing published |"), std::string::npos);
+  EXPECT_EQ(draws_csv(sourced).find("e.f"), std::string::npos);
+  const Bands all = run_bands(drawn_brackets(b, true), seed, 20, run);
+  EXPECT_NE(bands_markdown(all).find("1 of 1 cells, assumptions drawn too: not the headline"),
+            std::string::npos);
+  EXPECT_NE(draws_csv(all).find("e.f"), std::string::npos);
+  try {
+    read_bracket_text(
+        "[[bracket]]\nname = \"a\"\nkey = \"x.y\"\nfrom = 0\nto = 1\n"
+        "source = \"s\"\nassumption = \"yes\"\n",
+        &seed);
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bracket[0].assumption must be"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(BandsTest, ARigTheProtocolRefusesIsCountedNotFatal) {
