@@ -11,14 +11,12 @@
 //   Table III's other cells outside at 5 kg (50 rigs): PAM-A Eq. (4) and (5), PAM-D Eq. (3)
 //     above, PAM-B Eq. (4) and PAM-D Eq. (5) below: the braid's friction and angle, the
 //     plant files' assumptions, move each (docs/validation.md runs every one).
-//   Table V, model estimates: the paper's 5.24 / 5.02 % lie above the bands by a factor of
-//     1.5 or more, with nylon lines and with PE braid: the bracketed parts (the board, the
-//     re-seated line, the lines and their pre-tension, the arm's bladder walls within the
-//     tubing's tolerance) move them by a percent at most. The
-//     mechanisms missing from the bands, each moving its cell towards the paper: the agonist's
-//     line leaving the board with the lines tied tighter (its error after the loss of the
-//     paper's size), and an antagonist that is not the muscle its estimator was fitted to (a
-//     nearly constant error, as the paper's).
+//   Table V (50 rigs, one trial each): the agonist's model cells (all, and after its line's
+//     loss at the paper's 2.7 s) and both fiber cells lie inside their bands; the
+//     antagonist's model cell (5.02 %) lies above by a factor of 1.5 or more: the arm's
+//     antagonist within its tubing's tolerance of the tested one moves it by a percent at
+//     most, and an antagonist softer than the one fitted (a nearly constant error, as the
+//     paper's) is the mechanism no source sizes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -72,22 +70,28 @@ TEST(PaperBandsTest, TableThreeCellsSitInsideForPamCAndAboveForPamA) {
   EXPECT_GT(a.min, 0.3);    // the misfit's floor, not a broken run
 }
 
-TEST(PaperBandsTest, TableFiveModelCellsSitFarAboveTheirBandsWithEitherLine) {
-  for (const char* file : {"validate_reaching.toml", "validate_reaching_pe_braid.toml"}) {
-    SCOPED_TRACE(file);
-    const ReachingValidationSpec spec = load_reaching_validation(kScenarios + file, {"trials=1"});
-    const Bands bands = run_reaching_bands(spec, two_threads("t5"), kRigs);
-    const int refused = bands.runs.refused_count();  // a line too thin for its pull
-    EXPECT_LT(refused, kRigs / 2);
-    for (const auto& [cell, paper] : std::vector<std::pair<std::string, double>>{
-             {"agonist model all", 5.24}, {"antagonist model all", 5.02}}) {
-      const BandStats b = rmse_band(bands, cell);
-      EXPECT_EQ(b.n, kRigs - refused) << cell;
-      // Table V: above every rig by a factor of 1.5 at least, the arm's walls bracketed too
-      EXPECT_LT(1.5 * b.max, paper) << cell;
-      EXPECT_GT(b.max - b.min, 0.1) << cell;  // the brackets do move it
-    }
+// Table V against the 50 rigs of validate_reaching.toml, one trial per rig: the agonist's
+// cells and both fiber cells inside their 5-95 % ranges, the antagonist's model cell above its
+// range by a factor of 1.5 at least
+TEST(PaperBandsTest, TableFiveCellsSitInsideTheirBandsButTheAntagonistsModel) {
+  const ReachingValidationSpec spec =
+      load_reaching_validation(kScenarios + "validate_reaching.toml", {"trials=1"});
+  const Bands bands = run_reaching_bands(spec, two_threads("t5"), 50);
+  // the rigs that cannot exist, a line too thin for its pull (12 of 50 at bracket_seed 1)
+  const int refused = bands.runs.refused_count();
+  EXPECT_LE(refused, 15);
+  for (const auto& [cell, paper] :
+       std::vector<std::pair<std::string, double>>{{"agonist model all", 5.24},
+                                                   {"agonist model after_slack", 5.94},
+                                                   {"agonist fiber all", 0.888},
+                                                   {"antagonist fiber all", 1.78}}) {
+    const BandStats b = rmse_band(bands, cell);
+    EXPECT_EQ(b.n, 50 - refused) << cell;
+    EXPECT_LE(b.p5, paper) << cell;
+    EXPECT_GE(b.p95, paper) << cell;
   }
+  // the arm's antagonist within its tubing's tolerance of the tested one: far below the paper
+  EXPECT_LT(1.5 * rmse_band(bands, "antagonist model all").p95, 5.02);
 }
 
 // The cell (muscle, method "model", part) of one protocol run with `overrides`
@@ -105,21 +109,14 @@ ErrorPct model_cell(const std::vector<std::string>& overrides, const std::string
 }
 
 TEST(PaperBandsTest, TheMissingMechanismsMoveTableFiveTowardsThePaper) {
-  const ErrorPct agonist = model_cell({}, "agonist", "all");
   const ErrorPct antagonist = model_cell({}, "antagonist", "all");
-  // the agonist's line leaving the board (a knife-edge contact), the lines tied 5 mm tight:
+  // the agonist's line lost at the paper's 2.7 s (reaching.toml), the lines tied 5 mm tight:
   // its error after the loss within a factor 1.5 of the paper's 5.94 %
   const ErrorPct after =
-      model_cell({"muscles.agonist.gauge.contact.misalignment_mm=5",
-                  "muscles.agonist.gauge.contact.fitting_distance_mm=10",
-                  "muscles.agonist.gauge.contact.shaft_distance_mm=100",
-                  "muscles.agonist.gauge.contact.wrap_deg=5",
-                  "muscles.agonist.gauge.contact.friction_coefficient=0.2",
-                  "sensors.gauge.board.length_mm=0", "model.antagonist_deformation_mm=5"},
-                 "agonist", "after_slack");
+      model_cell({"model.antagonist_deformation_mm=5"}, "agonist", "after_slack");
   EXPECT_GT(after.rmse_pct, 5.94 / 1.5);
   EXPECT_LT(after.rmse_pct, 5.94 * 1.5);
-  EXPECT_GT(after.rmse_pct, 3.0 * agonist.rmse_pct);
+  EXPECT_GT(after.rmse_pct, 3.0 * model_cell({}, "agonist", "after_slack").rmse_pct);
   // an antagonist softer than the one fitted: a larger error, nearly constant (RMSE / max
   // 0.86 in the paper)
   const ErrorPct softer =
