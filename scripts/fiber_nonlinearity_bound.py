@@ -30,7 +30,7 @@ def r_squared(n_pct, loop):
         xs += [u, u]
         ys += [reading + half, reading - half]
     mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
-    sxy = sum((x - mx) * (y - my) for x, y in zip(xs, ys))
+    sxy = sum((x - mx) * (y - my) for x, y in zip(xs, ys, strict=True))
     sxx = sum((x - mx) ** 2 for x in xs)
     syy = sum((y - my) ** 2 for y in ys)
     return sxy * sxy / (sxx * syy)
@@ -51,11 +51,11 @@ def main():
     ap.add_argument("--hysteresis", type=float, default=0.0625, help="the loop, of the range")
     a = ap.parse_args()
     if r_squared(0.0, a.hysteresis) <= a.r2:
-        raise SystemExit("the loop alone lowers R^2 to %.4f: no nonlinearity is left to bound"
-                         % r_squared(0.0, a.hysteresis))
-    print("R^2 %.3f with a loop of %.2f %% of the range: N <= %.0f %%"
-          % (a.r2, 100 * a.hysteresis, bound(a.r2, a.hysteresis)))
-    print("R^2 %.3f with no loop: N <= %.0f %%" % (a.r2, bound(a.r2, 0.0)))
+        r2 = r_squared(0.0, a.hysteresis)
+        raise SystemExit(f"the loop alone lowers R^2 to {r2:.4f}: no nonlinearity is left to bound")
+    loop_pct, n_loop, n_none = 100 * a.hysteresis, bound(a.r2, a.hysteresis), bound(a.r2, 0.0)
+    print(f"R^2 {a.r2:.3f} with a loop of {loop_pct:.2f} % of the range: N <= {n_loop:.0f} %")
+    print(f"R^2 {a.r2:.3f} with no loop: N <= {n_none:.0f} %")
 
 
 if __name__ == "__main__":

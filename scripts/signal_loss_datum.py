@@ -25,6 +25,7 @@ import tomllib
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
+
 def trajectory(pamsim, scenario):
     with tempfile.TemporaryDirectory() as out:
         run = subprocess.run(
@@ -57,7 +58,7 @@ def main():
     with open(a.scenario, "rb") as f:
         muscle = tomllib.load(f)["muscles"][a.muscle]
     start = float(muscle["command"]["start_s"])
-    column = "length_%s_mm" % muscle.get("label", a.muscle)
+    column = f"length_{muscle.get('label', a.muscle)}_mm"
     rows = trajectory(a.pamsim, a.scenario)
     t_datum = start + a.datum_s
     # steady: no earlier shortening as large as the datum's
@@ -66,14 +67,16 @@ def main():
         float(rows[0][column]) - float(r[column]) for r in rows if float(r["time_s"]) < t_datum
     )
     if earlier > s_datum:
-        sys.exit("%s: the %s shortens %.3f mm before the datum, more than the datum's %.3f mm"
-                 % (a.scenario, a.muscle, earlier, s_datum))
-    print("the ramps start at %.2f s; the datum %.2f +- %.2f s into them" % (start, a.datum_s,
-                                                                          a.precision_s))
+        sys.exit(
+            f"{a.scenario}: the {a.muscle} shortens {earlier:.3f} mm before the datum, more "
+            f"than the datum's {s_datum:.3f} mm"
+        )
+    datum = f"{a.datum_s:.2f} +- {a.precision_s:.2f} s"
+    print(f"the ramps start at {start:.2f} s; the datum {datum} into them")
     for dt in (-a.precision_s, 0.0, a.precision_s):
         t = t_datum + dt
         s = shortening_at(rows, column, t)
-        print("trial time %.2f s: the %s shortened %.3f mm from the start" % (t, a.muscle, s))
+        print(f"trial time {t:.2f} s: the {a.muscle} shortened {s:.3f} mm from the start")
 
 
 if __name__ == "__main__":
