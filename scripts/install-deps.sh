@@ -36,6 +36,7 @@ packages=(
   python3-sphinx python3-myst-parser python3-yaml   # make docs: the site and its generated pages
   furo                                       # the docs' theme: a wide column, a sidebar that folds
   chromium                                   # scripts/docs_screenshot.py: the site in a 1280 px window
+  chromium-driver python3-selenium           # tests/browser: report pages driven in Chromium
   jq                                         # the docs' generated blocks pick numbers from JSON
   clang-format-14                            # scripts/format.sh: the C and C++ as .clang-format says
   gcc-arm-none-eabi libnewlib-arm-none-eabi  # the embedded controller for Cortex-M (make embedded)

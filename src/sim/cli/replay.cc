@@ -17,6 +17,7 @@
 #include "base/input_error.h"
 #include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
+#include "sim/cli/sweep_trials.h"
 #include "sim/core/metrics.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
@@ -51,19 +52,6 @@ const std::vector<std::string> kReplayOutputs = [] {
   return names;
 }();
 
-// The stored row of `trial` (cells by column name), or throws InputError.
-std::map<std::string, DbValue> stored_row(const ResultsDb& db, std::int64_t trial) {
-  const std::vector<DbValue> cells = db.trial_row(trial);
-  if (cells.empty()) {
-    throw InputError(db.path() + ": --trial " + std::to_string(trial) +
-                     " is not stored (the sweep has not run it, or it has fewer trials)");
-  }
-  const std::vector<std::string> columns = db.trial_columns();
-  std::map<std::string, DbValue> row;
-  for (std::size_t c = 0; c < columns.size() && c < cells.size(); ++c) row[columns[c]] = cells[c];
-  return row;
-}
-
 // "" if the replayed summary has every stored metric's value, else the first difference.
 std::string first_difference(const std::map<std::string, DbValue>& stored,
                              const std::vector<std::string>& metric_columns,
@@ -88,36 +76,14 @@ std::string first_difference(const std::map<std::string, DbValue>& stored,
   return "";
 }
 
-// The overrides that make a trial's scenario: its point's, its seed, and the values
-// [[randomize]] drew for it (as stored in its `row`).
-std::vector<std::string> trial_overrides(const ResultsDb& db, const SweepSummary& sweep,
-                                         std::int64_t point, std::uint64_t seed,
-                                         const std::map<std::string, DbValue>& row) {
-  const PointSummary* at = nullptr;
-  for (const PointSummary& p : sweep.points) {
-    if (p.point == point) at = &p;
-  }
-  if (at == nullptr)
-    throw InputError(db.path() + ": point " + std::to_string(point) + " is missing");
-  std::vector<std::string> overrides = point_overrides(sweep, *at);
-  overrides.push_back("seed=" + std::to_string(seed));
-  for (const std::string& key : sweep.randomize_keys) {
-    overrides.push_back(key + "=" + format_number(row.at(key).number));
-  }
-  return overrides;
-}
-
 void replay(const ReplayOptions& opt) {
   const auto started = std::chrono::steady_clock::now();
   const std::string started_utc = utc_timestamp();
   if (opt.trial < 0) throw InputError("--trial must be >= 0, got " + std::to_string(opt.trial));
   const ResultsDb db = ResultsDb::open_existing(opt.db);
   const SweepSummary sweep = summarize_sweep(db);
-  const std::map<std::string, DbValue> row = stored_row(db, opt.trial);
-  const auto point = static_cast<std::int64_t>(row.at("point").number);
-  const auto seed = static_cast<std::uint64_t>(row.at("seed").number);
-  const std::vector<std::string> overrides = trial_overrides(db, sweep, point, seed, row);
-
+  const StoredTrial stored = stored_trial(db, sweep, opt.trial);
+  const std::uint64_t seed = stored.seed;
   const std::string out =
       !opt.out.empty() ? opt.out
                        : (fs::path(opt.db).parent_path() / (fs::path(opt.db).stem().string() +
@@ -127,9 +93,9 @@ void replay(const ReplayOptions& opt) {
   use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
   const RecordedScenario recorded = load_recorded_scenario(
-      sweep.base_scenario, sweep.base_path, overrides, out,
+      sweep.base_scenario, sweep.base_path, stored.overrides, out,
       "# Trial " + std::to_string(opt.trial) + " of the sweep in " + opt.db + " (point " +
-          std::to_string(point) + ", seed " + std::to_string(seed) +
+          std::to_string(stored.point) + ", seed " + std::to_string(seed) +
           "), resolved by pamsim " PAMSIM_VERSION
           "\n# (provenance.json beside it says how); "
           "pamsim run --from <this folder> runs it again\n");
@@ -141,7 +107,7 @@ void replay(const ReplayOptions& opt) {
   Provenance provenance;
   provenance.command = "replay";
   provenance.scenario_file = sweep.base_path;
-  provenance.overrides = overrides;
+  provenance.overrides = stored.overrides;
   provenance.from = opt.db;
   provenance.seeds = {seed};
   provenance.threads = 1;
@@ -157,7 +123,7 @@ void replay(const ReplayOptions& opt) {
   staged.publish();
   std::cout << summary_to_json(result.summary, sc, false).dump(2) << "\n";
   std::cerr << "pamsim: outputs in " << out << "\n";
-  const std::string difference = first_difference(row, db.metric_columns(), result.summary);
+  const std::string difference = first_difference(stored.row, db.metric_columns(), result.summary);
   if (!difference.empty()) {
     throw std::runtime_error(opt.db + ": trial " + std::to_string(opt.trial) +
                              " replayed differently from its stored row (" + difference +

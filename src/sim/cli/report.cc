@@ -22,6 +22,7 @@
 #include "base/input_error.h"
 #include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
+#include "sim/cli/report_page.h"
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
 #include "sim/io/provenance.h"
@@ -39,11 +40,13 @@ struct ReportOptions {
   bool no_plot = false;
   std::string plot_format = "png";
   bool all_columns = false;
+  bool html = false;               // --html: report.html beside the other outputs
   std::vector<std::string> table;  // table.md's metrics (empty: default_table_metrics)
 };
 
 const std::vector<std::string> kSweepReportOutputs = [] {
-  std::vector<std::string> names = {"points.csv", "table.md", "best.toml", kProvenanceFile};
+  std::vector<std::string> names = {"points.csv", "table.md", "best.toml", "report.html",
+                                    kProvenanceFile};
   for (const std::string& plot : plot_file_names({"heatmap_*.png"})) names.push_back(plot);
   return names;
 }();
@@ -130,6 +133,19 @@ const PointSummary* report_best_point(const ReportOptions& opt, const SweepSumma
   return best;
 }
 
+// The headline metrics the sweep has (mistrip rate, peak drop, recovery time) and --metric
+std::vector<std::string> heat_map_metrics(const ReportOptions& opt, const SweepSummary& sweep) {
+  std::vector<std::string> maps;
+  for (const std::string& metric : {std::string("mistrip_rate"), std::string("peak_drop_deg"),
+                                    std::string("recovery_time_s"), opt.metric}) {
+    const bool listed = std::find(maps.begin(), maps.end(), metric) != maps.end();
+    // the mistrip rate comes from the reflex metrics' mistrips count
+    const bool has = sweep.metric_index(metric == "mistrip_rate" ? "mistrips" : metric) >= 0;
+    if (!listed && has) maps.push_back(metric);
+  }
+  return maps;
+}
+
 // A heat map of each headline metric the sweep has (mistrip rate, peak drop, recovery time)
 // and of --metric, over the first two axes; false (and says why) when there are none.
 bool write_heat_maps(const ReportOptions& opt, const SweepSummary& sweep, const PointSummary* best,
@@ -142,15 +158,7 @@ bool write_heat_maps(const ReportOptions& opt, const SweepSummary& sweep, const 
     std::cout << "heat maps: none (the sweep has one axis; see points.csv)\n";
     return false;
   }
-  std::vector<std::string> maps;
-  for (const std::string& metric : {std::string("mistrip_rate"), std::string("peak_drop_deg"),
-                                    std::string("recovery_time_s"), opt.metric}) {
-    const bool listed = std::find(maps.begin(), maps.end(), metric) != maps.end();
-    // the mistrip rate comes from the reflex metrics' mistrips count
-    const bool has = sweep.metric_index(metric == "mistrip_rate" ? "mistrips" : metric) >= 0;
-    if (!listed && has) maps.push_back(metric);
-  }
-  for (const auto& metric : maps) {
+  for (const auto& metric : heat_map_metrics(opt, sweep)) {
     write_heatmap(staged.path("heatmap_" + metric + ".png"),
                   sweep_heat_map(sweep, metric, best, opt.metric));
   }
@@ -191,6 +199,12 @@ void report(const ReportOptions& opt) {
     write_file_atomically(staged.path("table.md"), points_markdown(sweep, table));
 
     const PointSummary* best = report_best_point(opt, sweep, staged, out);
+    if (opt.html) {
+      write_file_atomically(
+          staged.path("report.html"),
+          sweep_page_html(db, sweep, opt.db, opt.metric, heat_map_metrics(opt, sweep)));
+      std::cout << "page: " << out << "/report.html\n";
+    }
     if (!write_heat_maps(opt, sweep, best, staged, plots)) return;
     std::cout << "outputs: " << out << "/{points.csv,table.md,heatmap_*.png"
               << (best ? ",best.toml" : "") << "}\n";
@@ -215,6 +229,9 @@ void add_report_command(CLI::App& app) {
   cmd->add_flag("--all-columns", opt->all_columns,
                 "points.csv with mean, std, min, max of every metric (default: mean, SD and 95 % "
                 "CI of the headline metrics)");
+  cmd->add_flag("--html", opt->html,
+                "Also report.html: one self-contained page (heat maps whose cells show their "
+                "points' metrics, the best points' trials replayed, every point's replay line)");
   cmd->add_flag("--no-plot", opt->no_plot, "Write no heat maps or figures (gnuplot not needed)");
   cmd->add_option("--table", opt->table,
                   "Metrics of table.md, comma-separated (default: the headline metrics the sweep "

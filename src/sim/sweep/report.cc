@@ -70,6 +70,15 @@ std::string number_text(double v) {
 }
 
 // The value shown for a point: a metric's mean, or the mistrip rate.
+// A grid's points per level pair of its first two axes: the other axes' levels multiplied
+std::int64_t points_per_cell(const SweepSummary& sweep) {
+  std::int64_t inner = 1;
+  for (std::size_t a = 2; a < sweep.axis_levels.size(); ++a) {
+    inner *= static_cast<std::int64_t>(sweep.axis_levels[a].size());
+  }
+  return inner;
+}
+
 double point_value(const SweepSummary& sweep, const PointSummary& p, const std::string& metric) {
   if (metric == kMistripRate) return p.mistrip_rate();
   const int m = sweep.metric_index(metric);
@@ -89,21 +98,34 @@ int SweepSummary::metric_index(const std::string& name) const {
   return -1;
 }
 
-const PointSummary* best_point(const SweepSummary& sweep, const std::string& metric) {
-  const PointSummary* best = nullptr;
-  double best_value = kNaN;
+std::vector<const PointSummary*> best_points(const SweepSummary& sweep, const std::string& metric,
+                                             std::size_t k) {
+  std::vector<std::pair<double, const PointSummary*>> ranked;
+  const int m = sweep.metric_index(metric);
   for (const PointSummary& p : sweep.points) {
     if (p.ok != sweep.seeds || p.with_mistrips != 0) continue;
-    const int m = sweep.metric_index(metric);
     if (m >= 0 && p.metrics[static_cast<std::size_t>(m)].count != sweep.seeds) continue;
     const double v = point_value(sweep, p, metric);
-    if (!std::isfinite(v)) continue;
-    if (!best || v < best_value) {
-      best = &p;
-      best_value = v;
-    }
+    if (std::isfinite(v)) ranked.emplace_back(v, &p);
   }
+  // by value, ties by point number (the points are in point order)
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<const PointSummary*> best;
+  for (std::size_t i = 0; i < ranked.size() && i < k; ++i) best.push_back(ranked[i].second);
   return best;
+}
+
+const PointSummary* best_point(const SweepSummary& sweep, const std::string& metric) {
+  const std::vector<const PointSummary*> best = best_points(sweep, metric, 1);
+  return best.empty() ? nullptr : best.front();
+}
+
+std::pair<std::size_t, std::size_t> grid_cell_of(const SweepSummary& sweep, std::int64_t point) {
+  const std::int64_t inner = points_per_cell(sweep);  // row-major, first axis slowest
+  const auto ny = static_cast<std::int64_t>(sweep.axis_levels[1].size());
+  return {static_cast<std::size_t>(point / inner / ny),
+          static_cast<std::size_t>(point / inner % ny)};
 }
 
 std::string best_criterion(const SweepSummary& sweep, const std::string& metric) {
@@ -225,12 +247,7 @@ void grid_cells(const SweepSummary& sweep, const std::string& metric, const Poin
                 HeatMap* out) {
   HeatMap& map = *out;
   const bool rate = metric == kMistripRate;
-  // grid: the point's level on each of the first two axes (row-major, first axis slowest)
   const std::size_t nx = sweep.axis_levels[0].size(), ny = sweep.axis_levels[1].size();
-  std::int64_t inner = 1;  // points per level of axis 1
-  for (std::size_t a = 2; a < sweep.axis_levels.size(); ++a) {
-    inner *= static_cast<std::int64_t>(sweep.axis_levels[a].size());
-  }
   if (sweep.axis_keys.size() > 2) map.title += " (cells average the other axes)";
   for (const auto& l : sweep.axis_levels[0]) map.x_levels.push_back(level_label(l));
   for (const auto& l : sweep.axis_levels[1]) map.y_levels.push_back(level_label(l));
@@ -238,9 +255,7 @@ void grid_cells(const SweepSummary& sweep, const std::string& metric, const Poin
   std::vector<double> seed_sd(nx * ny, kNaN);  // a cell of one point: its SD over the seeds
   const int m = sweep.metric_index(metric);
   for (const PointSummary& p : sweep.points) {
-    const std::size_t iy = static_cast<std::size_t>(p.point / inner) % ny;
-    const std::size_t ix =
-        static_cast<std::size_t>(p.point / inner / static_cast<std::int64_t>(ny));
+    const auto [ix, iy] = grid_cell_of(sweep, p.point);
     const double v = point_value(sweep, p, metric);
     if (std::isfinite(v)) cells[iy * nx + ix].add(v);
     if (m >= 0) seed_sd[iy * nx + ix] = p.metrics[static_cast<std::size_t>(m)].std;
@@ -255,7 +270,7 @@ void grid_cells(const SweepSummary& sweep, const std::string& metric, const Poin
     map.cells.push_back(st.mean);
     // the spread beside the mean: over the seeds, or (cells averaging other axes) over the
     // points' means
-    const double sd = inner == 1 ? seed_sd[c] : st.std;
+    const double sd = points_per_cell(sweep) == 1 ? seed_sd[c] : st.std;
     char text[64];
     if (rate || !std::isfinite(sd)) {
       std::snprintf(text, sizeof(text), map.cell_format.c_str(), st.mean);

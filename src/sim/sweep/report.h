@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,11 @@ SweepSummary summarize_sweep(const ResultsDb& db);
 // The criterion: among points whose every seed is stored, ran ok with zero mistrips and has
 // `metric` defined, the smallest mean of `metric`. nullptr if no point qualifies.
 const PointSummary* best_point(const SweepSummary& sweep, const std::string& metric);
+// The first k points by the same criterion, best first (fewer when fewer qualify).
+std::vector<const PointSummary*> best_points(const SweepSummary& sweep, const std::string& metric,
+                                             std::size_t k);
+// A grid design's cell of `point` on its first two axes: (level of axis 0, level of axis 1).
+std::pair<std::size_t, std::size_t> grid_cell_of(const SweepSummary& sweep, std::int64_t point);
 std::string best_criterion(const SweepSummary& sweep, const std::string& metric);
 // A metric's name for a plot, its unit from its suffix: "peak drop [deg]",
 // "recovery time [s]", "mistrip rate [fraction of seeds]".

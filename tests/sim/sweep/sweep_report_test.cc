@@ -1,8 +1,10 @@
 // sweep_report_test.cc: what `pamsim report` says of a sweep database with hand-made
 // results: per-point statistics, the best point under its criterion and its ties, the heat
-// map's cells and labels, points.csv's columns and intervals, and the best point written
-// back as a scenario.
+// map's cells and labels, points.csv's columns and intervals, the best point written back as a
+// scenario, the best few ranked, and the HTML page's data.
 #include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -14,6 +16,7 @@
 #include "reflex/stretch_reflex_controller.h"
 #include "sim/scenario/scenario_file.h"
 #include "sim/sweep/report.h"
+#include "sim/sweep/report_html.h"
 #include "sim/sweep/results_db.h"
 #include "sim/sweep/sweep.h"
 #include "sim/test_paths.h"
@@ -194,6 +197,59 @@ TEST_F(SweepReportTest, BestScenarioKeepsTheBaseAndSetsThePoint) {
 
 // a case's name is any string: in table.md it stays one cell (a '|' would end the cell, a
 // backslash escape the next character, a line break end the row)
+// The best few, in the criterion's order; each point's cell on the grid (first axis slowest)
+TEST_F(SweepReportTest, BestPointsAreRankedAndEachPointHasItsGridCell) {
+  const pamsim::SweepSummary sweep = synthetic_summary(dir_);
+  // point 0 mistrips, point 5 has a diverged seed: the others by their mean drop, 11 + p
+  std::vector<std::int64_t> ranked;
+  for (const pamsim::PointSummary* p : pamsim::best_points(sweep, "peak_drop_deg", 10)) {
+    ranked.push_back(p->point);
+  }
+  EXPECT_EQ(ranked, (std::vector<std::int64_t>{1, 2, 3, 4}));
+  ASSERT_EQ(pamsim::best_points(sweep, "peak_drop_deg", 2).size(), 2u);
+  EXPECT_EQ(pamsim::best_points(sweep, "peak_drop_deg", 1).front(),
+            pamsim::best_point(sweep, "peak_drop_deg"));
+  for (std::int64_t p = 0; p < 6; ++p) {
+    const auto [ix, iy] = pamsim::grid_cell_of(sweep, p);
+    EXPECT_EQ(ix, static_cast<std::size_t>(p / 3)) << p;  // v_thr: 2 levels
+    EXPECT_EQ(iy, static_cast<std::size_t>(p % 3)) << p;  // k: 3 levels
+  }
+}
+
+// The page's data, read back as its script reads them: every point with its statistics, the
+// cells' points, the best flagged, a replay line for the others
+TEST_F(SweepReportTest, ThePagesDataAreThePointsStatistics) {
+  const pamsim::SweepSummary sweep = synthetic_summary(dir_);
+  pamsim::SweepPage page;
+  page.sweep = &sweep;
+  page.metric = "peak_drop_deg";
+  page.heat_metrics = {"peak_drop_deg"};
+  page.best = pamsim::best_points(sweep, "peak_drop_deg", 1);
+  page.best_charts[1] = {pamsim::LineChart{"joint", "time [s]", "angle_deg", {}}};
+  page.first_trial = {{2, 6}};
+  page.db_path = "sweep.db";
+  const std::string html = pamsim::sweep_report_html(page);
+  const std::string open = "<script type=\"application/json\" id=\"page-data\">";
+  const std::size_t from = html.find(open) + open.size();
+  const nlohmann::json data =
+      nlohmann::json::parse(html.substr(from, html.find("</script>", from) - from));
+  ASSERT_EQ(data["points"].size(), 6u);
+  const int m = sweep.metric_index("peak_drop_deg");
+  EXPECT_EQ(data["points"][2]["metrics"][m][0].get<double>(), 13.0);  // 12, 13, 14
+  EXPECT_EQ(data["points"][2]["metrics"][m][1].get<double>(), 1.0);
+  EXPECT_TRUE(data["points"][1]["best"].get<bool>());
+  EXPECT_FALSE(data["points"][2]["best"].get<bool>());
+  EXPECT_EQ(data["points"][2]["replay"], "pamsim replay sweep.db --trial 6");
+  EXPECT_EQ(data["maps"]["map-peak_drop_deg"]["cells"]["1,0"], nlohmann::json::array({3}));
+  std::size_t cells = 0;
+  for (std::size_t at = html.find("class=\"cell"); at != std::string::npos;
+       at = html.find("class=\"cell", at + 1)) {
+    ++cells;
+  }
+  EXPECT_EQ(cells, 6u);
+  EXPECT_NE(html.find("id=\"point-1\""), std::string::npos);  // its trials' section
+}
+
 TEST(MarkdownCellTest, APipeABackslashAndALineBreakStayInOneCell) {
   EXPECT_EQ(pamsim::markdown_cell("light, high gain"), "light, high gain");
   EXPECT_EQ(pamsim::markdown_cell("a|b\\c\nd"), "a\\|b\\\\c d");

@@ -1,0 +1,66 @@
+// report_page.cc: see report_page.h.
+#include "sim/cli/report_page.h"
+
+#include "sim/cli/sweep_trials.h"
+#include "sim/core/trial.h"
+#include "sim/core/trial_model.h"
+#include "sim/io/build_info.h"
+#include "sim/io/html_page.h"
+#include "sim/io/provenance.h"
+#include "sim/scenario/scenario_file.h"
+#include "sim/sweep/report_html.h"
+
+namespace pamsim {
+namespace {
+
+// A point's stored trials run again, charted (a series per seed)
+std::vector<LineChart> replayed_charts(const ResultsDb& db, const SweepSummary& sweep,
+                                       const std::vector<std::int64_t>& trials) {
+  std::vector<Trajectory> logs;
+  std::vector<std::string> labels;
+  for (const std::int64_t trial : trials) {
+    const StoredTrial t = stored_trial(db, sweep, trial);
+    const Scenario sc = load_scenario_text(sweep.base_scenario, sweep.base_path, t.overrides);
+    const TrialModel model = load_trial_model(sc);
+    logs.push_back(run_trial(model, sc, t.seed, true).trajectory);
+    labels.push_back("trial " + std::to_string(trial) + ", seed " + std::to_string(t.seed));
+  }
+  std::vector<std::pair<std::string, const Trajectory*>> charted;
+  for (std::size_t i = 0; i < logs.size(); ++i) charted.emplace_back(labels[i], &logs[i]);
+  return trial_charts(charted);
+}
+
+std::string footer(const ResultsDb& db, const SweepSummary& sweep, const std::string& db_path) {
+  const BuildInfo b = build_info();
+  char digest[17];
+  std::snprintf(digest, sizeof(digest), "%016llx",
+                static_cast<unsigned long long>(fnv1a64(sweep.base_scenario)));
+  return html_escape("Made by pamsim " + b.pamsim_version + " (commit " + b.git_commit + ") from " +
+                     db_path + ", a sweep run by pamsim " + db.meta("pamsim_version") +
+                     " (commit " + db.meta("git_commit") + "); its base scenario " +
+                     sweep.base_path + ", FNV-1a digest " + digest +
+                     ". The best points' trials were run again when the page was made.");
+}
+
+}  // namespace
+
+std::string sweep_page_html(const ResultsDb& db, const SweepSummary& sweep,
+                            const std::string& db_path, const std::string& metric,
+                            const std::vector<std::string>& heat_metrics) {
+  SweepPage page;
+  page.sweep = &sweep;
+  page.metric = metric;
+  page.heat_metrics = heat_metrics;
+  page.db_path = db_path;
+  page.best = best_points(sweep, metric, kReplayedBestPoints);
+  const std::map<std::int64_t, std::vector<std::int64_t>> trials = trials_by_point(db);
+  for (const auto& [point, list] : trials) page.first_trial[point] = list.front();
+  for (const PointSummary* p : page.best) {
+    const auto t = trials.find(p->point);
+    if (t != trials.end()) page.best_charts[p->point] = replayed_charts(db, sweep, t->second);
+  }
+  page.footer_html = footer(db, sweep, db_path);
+  return sweep_report_html(page);
+}
+
+}  // namespace pamsim

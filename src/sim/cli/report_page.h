@@ -1,0 +1,22 @@
+// report_page.h: what `pamsim report --html` puts on a sweep's page that the database does not
+// hold: the best points' trials run again (the scenario each ran on, sweep_trials.h) and drawn,
+// and the provenance of the page and of the sweep.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sim/sweep/report.h"
+#include "sim/sweep/results_db.h"
+
+namespace pamsim {
+
+inline constexpr std::size_t kReplayedBestPoints = 3;
+
+// The page (report_html.h) of the sweep in `db` (at db_path): heat maps of heat_metrics, the
+// best kReplayedBestPoints points by `metric` with their trials replayed.
+std::string sweep_page_html(const ResultsDb& db, const SweepSummary& sweep,
+                            const std::string& db_path, const std::string& metric,
+                            const std::vector<std::string>& heat_metrics);
+
+}  // namespace pamsim

@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+"""report_page_test.py PAMSIM OUT: the sweep page of `pamsim report --html` opened in headless
+Chromium (Debian's chromium and chromium-driver, driven through Selenium). Runs the smoke sweep
+into OUT, makes its page, and checks: the page's heat maps, points and best points are all
+there; hovering a cell shows its point's numbers, the same as points.csv's; clicking the best
+point's cell opens its replayed trials; the console has no error; and the page requested
+nothing (no resource of any kind, no http address in it). Exit 0 when every check holds.
+
+    python3 tests/browser/report_page_test.py build/src/sim/pamsim /tmp/report_page
+"""
+
+import csv
+import os
+import shutil
+import subprocess
+import sys
+
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.by import By
+
+
+def make_page(pamsim, out):
+    shutil.rmtree(out, ignore_errors=True)
+    subprocess.run([pamsim, "sweep", "scenarios/sweep_smoke.toml", "--out", out], check=True,
+                   capture_output=True)
+    subprocess.run([pamsim, "report", os.path.join(out, "sweep.db"), "--html", "--no-plot"],
+                   check=True, capture_output=True)
+    return os.path.abspath(os.path.join(out, "report.html"))
+
+
+def browser():
+    options = webdriver.ChromeOptions()
+    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1300,1000"):
+        options.add_argument(arg)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    return webdriver.Chrome(service=Service(shutil.which("chromedriver")), options=options)
+
+
+def check(ok, what):
+    if not ok:
+        raise AssertionError(what)
+
+
+def shown(value):
+    """A number as the page's script writes it: four significant digits, JavaScript's form."""
+    return repr(float(f"{value:.4g}")).removesuffix(".0")
+
+
+def check_hover(driver, out):
+    with open(os.path.join(out, "points.csv")) as f:
+        point0 = next(r for r in csv.DictReader(f) if r["point"] == "0")
+    cell = driver.find_element(
+        By.CSS_SELECTOR, 'rect.cell[data-map="map-peak_drop_deg"][data-ix="0"][data-iy="0"]')
+    ActionChains(driver).move_to_element(cell).perform()
+    tip = driver.find_element(By.ID, "tip")
+    check(tip.is_displayed(), "hovering a cell shows no tooltip")
+    text = tip.text
+    check("point 0:" in text, f"the tooltip does not name point 0: {text!r}")
+    mean = shown(float(point0["peak_drop_deg_mean"]))
+    check(f"peak_drop_deg: {mean} \u00b1" in text, f"peak drop {mean} not in {text!r}")
+
+
+def check_best(driver):
+    best = driver.find_element(By.CSS_SELECTOR, "rect.cell.marked")
+    ActionChains(driver).move_to_element(best).click().perform()
+    opened = [d for d in driver.find_elements(By.CSS_SELECTOR, "details.trials")
+              if d.get_attribute("open") is not None]
+    check(len(opened) == 1, f"clicking the best cell opened {len(opened)} trial sections")
+    lines = opened[0].find_elements(By.CSS_SELECTOR, "svg.chart polyline.series")
+    check(len(lines) >= 3, f"the best point shows {len(lines)} series, not its trials' curves")
+    check(all(len(p.get_attribute("points").split()) > 50 for p in lines), "an empty series")
+
+
+def main():
+    pamsim, out = sys.argv[1], sys.argv[2]
+    page = make_page(pamsim, out)
+    html = open(page, encoding="utf-8").read()
+    check("http://" not in html and "https://" not in html, "the page names a web address")
+    driver = browser()
+    try:
+        driver.get("file://" + page)
+        check("sweep_smoke.toml" in driver.find_element(By.TAG_NAME, "h1").text, "no title")
+        maps = driver.find_elements(By.CSS_SELECTOR, "svg.heatmap")
+        check(len(maps) >= 2, f"{len(maps)} heat maps")
+        for m in maps:
+            check(len(m.find_elements(By.CSS_SELECTOR, ".cell")) == 16, "a map without 16 cells")
+        rows = driver.find_elements(By.CSS_SELECTOR, "table#points tr")
+        check(len(rows) == 17, f"{len(rows) - 1} rows of points, not 16")
+        check(len(driver.find_elements(By.CSS_SELECTOR, "details.trials")) == 3, "best points")
+        check_hover(driver, out)
+        check_best(driver)
+        errors = [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]
+        check(not errors, f"console errors: {errors}")
+        fetched = driver.execute_script(
+            "return performance.getEntriesByType('resource').map(e => e.name)")
+        check(fetched == [], f"the page requested {fetched}")
+    finally:
+        driver.quit()
+    print("report page: every check holds in Chromium")
+
+
+if __name__ == "__main__":
+    main()

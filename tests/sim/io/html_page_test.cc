@@ -1,0 +1,66 @@
+// html_page_test.cc: the pieces of a self-contained HTML page (html_page.h): text escaped,
+// JSON that cannot close its script element, a heat map's cells with their place and text,
+// and a trial's charts: one position series per trial, thinned to the limit, and the first
+// trial's commanded and chamber pressures (not the sensor's).
+#include "sim/io/html_page.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace pamsim {
+namespace {
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) {
+    ++n;
+  }
+  return n;
+}
+
+TEST(HtmlPageTest, TextIsEscapedAndJsonCannotCloseItsScript) {
+  EXPECT_EQ(html_escape("<a href=\"x\">&'"), "&lt;a href=&quot;x&quot;&gt;&amp;&#39;");
+  EXPECT_EQ(json_for_script(R"({"s":"</script><b>"})"), R"({"s":"<\/script><b>"})");
+  EXPECT_EQ(short_number(12.586636), "12.59");
+  EXPECT_EQ(short_number(NAN), "n/a");
+}
+
+TEST(HtmlPageTest, AHeatMapsCellsSayWhereTheyLieAndWhatTheyHold) {
+  HeatMap map;
+  map.title = "drop <deg>";
+  map.x_levels = {"1", "2", "3"};
+  map.y_levels = {"a", "b"};
+  map.cells = {1, 2, 3, 4, 5, NAN};
+  map.has_mark = true;
+  map.mark_x = 2;
+  map.mark_y = 0;
+  const std::string svg = svg_heat_map(map, "m1");
+  EXPECT_EQ(count(svg, "class=\"cell"), 6u);
+  EXPECT_EQ(count(svg, "class=\"cell marked\" data-map=\"m1\" data-ix=\"2\" data-iy=\"0\""), 1u);
+  EXPECT_NE(svg.find("drop &lt;deg&gt;"), std::string::npos);
+  EXPECT_NE(svg.find("fill=\"#c8c8c8\"><title>n/a</title>"), std::string::npos);  // no value
+  EXPECT_NE(svg.find("<title>5</title>"), std::string::npos);
+}
+
+TEST(HtmlPageTest, ATrialsChartsArePositionPerTrialAndTheFirstTrialsPressures) {
+  Trajectory t;
+  t.columns = {"time_s", "angle_deg", "p_cmd_ago_MPa", "p_ago_MPa", "p_meas_ago_MPa", "force_ago_N"};
+  for (int r = 0; r < 2000; ++r) {
+    for (double v : {r * 0.001, r * 0.01, 0.4, 0.41, 0.42, 10.0}) t.values.push_back(v);
+  }
+  const std::vector<LineChart> charts = trial_charts({{"seed 1", &t}, {"seed 2", &t}}, 800);
+  ASSERT_EQ(charts.size(), 2u);
+  ASSERT_EQ(charts[0].series.size(), 2u);
+  EXPECT_EQ(charts[0].y_label, "angle_deg");
+  EXPECT_EQ(charts[0].series[0].x.size(), 667u);  // every 3rd of 2000 rows: at most 800
+  EXPECT_DOUBLE_EQ(charts[0].series[0].y[2], 0.06);
+  ASSERT_EQ(charts[1].series.size(), 2u);
+  EXPECT_EQ(charts[1].series[0].label, "p_cmd_ago_MPa");
+  EXPECT_EQ(charts[1].series[1].label, "p_ago_MPa");
+  const std::string svg = svg_line_chart(charts[1]);
+  EXPECT_EQ(count(svg, "<polyline"), 2u);
+}
+
+}  // namespace
+}  // namespace pamsim
