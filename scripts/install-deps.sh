@@ -20,6 +20,7 @@ packages=(
   libegl-dev libgl1-mesa-dri                 # the EGL backend and Mesa's software driver for it
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev   # MP4 encoding
   gnuplot-nox                                # plots (pngcairo terminal)
+  libcmark-gfm-dev libcmark-gfm-extensions-dev   # report pages: Markdown tables as HTML
   python3                                    # scripts/*.py and the demo's summary line
 )
 # the rest: the tests, the sanitizer and fuzz builds, MPI, Slurm, the Python module, the docs

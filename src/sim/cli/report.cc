@@ -22,7 +22,10 @@
 #include "base/input_error.h"
 #include "sim/cli/cli_options.h"
 #include "sim/cli/commands.h"
+#include "sim/cli/report_folder.h"
 #include "sim/cli/report_page.h"
+#include "sim/optimize/tune_html.h"
+#include "sim/io/html_page.h"
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
 #include "sim/io/provenance.h"
@@ -45,7 +48,7 @@ struct ReportOptions {
 };
 
 const std::vector<std::string> kSweepReportOutputs = [] {
-  std::vector<std::string> names = {"points.csv", "table.md", "best.toml", "report.html",
+  std::vector<std::string> names = {"points.csv", "table.md", "best.toml", kReportPageFile,
                                     kProvenanceFile};
   for (const std::string& plot : plot_file_names({"heatmap_*.png"})) names.push_back(plot);
   return names;
@@ -82,11 +85,20 @@ void report_tune(const ReportOptions& opt) {
   const TuneDefinition def = tune_definition_from_db(db);
   const std::vector<TuneEvaluation> history = db.evaluations();
   const std::string out = report_folder(opt);
-  if (!opt.force) refuse_earlier_outputs(out, kTuneReportOutputs);
+  std::vector<std::string> outputs = kTuneReportOutputs;
+  outputs.push_back(kReportPageFile);
+  if (!opt.force) refuse_earlier_outputs(out, outputs);
   use_plot_formats(opt.plot_format);
   const bool plots = plots_wanted(opt.no_plot);
-  StagedOutputs staged(out, kTuneReportOutputs);
-  staged.write([&] { write_tune_outputs(def, history, staged, plots); });
+  StagedOutputs staged(out, outputs);
+  staged.write([&] {
+    write_tune_outputs(def, history, staged, plots);
+    if (!opt.html) return;
+    const std::string footer =
+        database_footer(opt.db, db.meta("pamsim_version"), db.meta("git_commit"), "");
+    write_file_atomically(staged.path(kReportPageFile),
+                          tune_report_html(def, history, opt.db, footer));
+  });
   staged.publish();
   const TuneEvaluation* best = best_evaluation(history);
   std::cout << "tuning: " << def.file << " (" << history.size() << " evaluations stored)\n"
@@ -165,7 +177,19 @@ bool write_heat_maps(const ReportOptions& opt, const SweepSummary& sweep, const 
   return true;
 }
 
+// A command's output folder (report_folder.h): its page, DIR/report.html (or in --out)
+void report_folder_page(const ReportOptions& opt) {
+  if (!opt.html) throw InputError(opt.db + ": a folder; its page needs --html");
+  const std::string out = opt.out.empty() ? opt.db : opt.out;
+  if (!opt.force) refuse_earlier_outputs(out, {kReportPageFile});
+  const std::string page = folder_page_html(opt.db);
+  make_directories(out);
+  write_file_atomically((std::filesystem::path(out) / kReportPageFile).string(), page);
+  std::cout << "page: " << out << "/report.html\n";
+}
+
 void report(const ReportOptions& opt) {
+  if (std::filesystem::is_directory(opt.db)) return report_folder_page(opt);
   if (TuneDb::is_tune_database(opt.db)) return report_tune(opt);
   const auto started = std::chrono::steady_clock::now();
   const std::string started_utc = utc_timestamp();
@@ -201,7 +225,7 @@ void report(const ReportOptions& opt) {
     const PointSummary* best = report_best_point(opt, sweep, staged, out);
     if (opt.html) {
       write_file_atomically(
-          staged.path("report.html"),
+          staged.path(kReportPageFile),
           sweep_page_html(db, sweep, opt.db, opt.metric, heat_map_metrics(opt, sweep)));
       std::cout << "page: " << out << "/report.html\n";
     }
@@ -221,7 +245,10 @@ void add_report_command(CLI::App& app) {
       "Per-point statistics, heat maps and the best setting of a sweep database (or a "
       "tuning database's evaluations, best setting, convergence and Pareto front)",
       report);
-  cmd->add_option("db", opt->db, "Sweep or tuning database (from pamsim sweep / tune)")->required();
+  cmd->add_option("db", opt->db,
+                  "Sweep or tuning database (from pamsim sweep / tune), or with --html a "
+                  "command's output folder (validate, identify)")
+      ->required();
   cmd->add_option("--metric", opt->metric,
                   "Metric to minimise for the best setting (default peak_drop_deg)");
   cmd->add_option("--out", opt->out, "Output folder (default: the database's folder)");

@@ -1,6 +1,8 @@
 // report_page.cc: see report_page.h.
 #include "sim/cli/report_page.h"
 
+#include <cstdio>
+
 #include "sim/cli/sweep_trials.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
@@ -30,19 +32,15 @@ std::vector<LineChart> replayed_charts(const ResultsDb& db, const SweepSummary& 
   return trial_charts(charted);
 }
 
-std::string footer(const ResultsDb& db, const SweepSummary& sweep, const std::string& db_path) {
-  const BuildInfo b = build_info();
-  char digest[17];
-  std::snprintf(digest, sizeof(digest), "%016llx",
-                static_cast<unsigned long long>(fnv1a64(sweep.base_scenario)));
-  return html_escape("Made by pamsim " + b.pamsim_version + " (commit " + b.git_commit + ") from " +
-                     db_path + ", a sweep run by pamsim " + db.meta("pamsim_version") +
-                     " (commit " + db.meta("git_commit") + "); its base scenario " +
-                     sweep.base_path + ", FNV-1a digest " + digest +
-                     ". The best points' trials were run again when the page was made.");
-}
-
 }  // namespace
+
+std::string database_footer(const std::string& db_path, const std::string& db_version,
+                            const std::string& db_commit, const std::string& more) {
+  const BuildInfo b = build_info();
+  return html_escape("Made by pamsim " + b.pamsim_version + " (commit " + b.git_commit + ") from " +
+                     db_path + ", written by pamsim " + db_version + " (commit " + db_commit +
+                     "). " + more);
+}
 
 std::string sweep_page_html(const ResultsDb& db, const SweepSummary& sweep,
                             const std::string& db_path, const std::string& metric,
@@ -59,7 +57,13 @@ std::string sweep_page_html(const ResultsDb& db, const SweepSummary& sweep,
     const auto t = trials.find(p->point);
     if (t != trials.end()) page.best_charts[p->point] = replayed_charts(db, sweep, t->second);
   }
-  page.footer_html = footer(db, sweep, db_path);
+  char digest[17];
+  std::snprintf(digest, sizeof(digest), "%016llx",
+                static_cast<unsigned long long>(fnv1a64(sweep.base_scenario)));
+  page.footer_html =
+      database_footer(db_path, db.meta("pamsim_version"), db.meta("git_commit"),
+                      "Its base scenario " + sweep.base_path + ", FNV-1a digest " + digest +
+                          ". The best points' trials were run again when the page was made.");
   return sweep_report_html(page);
 }
 

@@ -13,6 +13,11 @@ namespace pamsim {
 
 inline constexpr std::size_t kReplayedBestPoints = 3;
 
+// A page's foot for a database (its meta's pamsim_version and git_commit) at db_path: what
+// made the page and what made the database, escaped; `more` (plain text) after it.
+std::string database_footer(const std::string& db_path, const std::string& db_version,
+                            const std::string& db_commit, const std::string& more);
+
 // The page (report_html.h) of the sweep in `db` (at db_path): heat maps of heat_metrics, the
 // best kReplayedBestPoints points by `metric` with their trials replayed.
 std::string sweep_page_html(const ResultsDb& db, const SweepSummary& sweep,

@@ -29,6 +29,7 @@
 #include "sim/cli/commands.h"
 #include "sim/cli/progress.h"
 #include "sim/core/runner.h"
+#include "sim/io/html_page.h"
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
 #include "sim/io/provenance.h"
@@ -59,29 +60,31 @@ struct ValidateOptions {
 };
 
 const std::vector<std::string> kLengthOutputs = [] {
-  std::vector<std::string> names = {"table3.csv", "table3.md", "fits", kProvenanceFile};
+  std::vector<std::string> names = {"table3.csv", "table3.md", "fits", kProvenanceFile,
+                                    kReportPageFile};
   for (const std::string& plot : plot_file_names({"pam_*.png"})) names.push_back(plot);
   return names;
 }();
 const std::vector<std::string> kReachingOutputs = [] {
-  std::vector<std::string> names = {"table5.csv", "table5.md", kProvenanceFile};
+  std::vector<std::string> names = {"table5.csv", "table5.md", kProvenanceFile, kReportPageFile};
   for (const std::string& plot : plot_file_names({"fig7.png"})) names.push_back(plot);
   return names;
 }();
 
 const std::vector<std::string> kBudgetOutputs = [] {
-  std::vector<std::string> names = {"budget.csv", "budget.md", kProvenanceFile};
+  std::vector<std::string> names = {"budget.csv", "budget.md", kProvenanceFile, kReportPageFile};
   for (const std::string& plot : plot_file_names({"budget.png"})) names.push_back(plot);
   return names;
 }();
 
 const std::vector<std::string> kBandsOutputs = [] {
-  std::vector<std::string> names = {"bands.csv", "bands.md", "draws.csv", kProvenanceFile};
+  std::vector<std::string> names = {"bands.csv", "bands.md", "draws.csv", kProvenanceFile,
+                                    kReportPageFile};
   for (const std::string& plot : plot_file_names({"bands.png"})) names.push_back(plot);
   return names;
 }();
 const std::vector<std::string> kSensitivityOutputs = {"sensitivity.csv", "sensitivity.md",
-                                                      kProvenanceFile};
+                                                      kProvenanceFile, kReportPageFile};
 
 // provenance.json of a validation: its protocol file, overrides, seed and threads.
 void write_validation_provenance(const ValidateOptions& o, const ValidationOptions& v,

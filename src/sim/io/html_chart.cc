@@ -64,6 +64,21 @@ std::string axes(const LineChart& c, std::pair<double, double> xr, std::pair<dou
   return s.str();
 }
 
+// A series as markers, each with its values as its title; its label in the legend
+std::string markers(const LineSeries& ls, const char* col, std::pair<double, double> xr,
+                    std::pair<double, double> yr) {
+  const double pw = kWidth - kLeft - kRight, ph = kHeight - kTop - kBottom;
+  std::ostringstream s;
+  for (std::size_t i = 0; i < ls.x.size() && i < ls.y.size(); ++i) {
+    if (!std::isfinite(ls.x[i]) || !std::isfinite(ls.y[i])) continue;
+    s << "<circle class=\"marker\" r=\"3\" fill=\"" << col << "\" cx=\""
+      << svg_number(kLeft + (ls.x[i] - xr.first) / (xr.second - xr.first) * pw) << "\" cy=\""
+      << svg_number(kTop + ph - (ls.y[i] - yr.first) / (yr.second - yr.first) * ph) << "\"><title>"
+      << short_number(ls.x[i]) << ": " << short_number(ls.y[i]) << "</title></circle>";
+  }
+  return s.str();
+}
+
 }  // namespace
 
 std::string svg_line_chart(const LineChart& c) {
@@ -75,15 +90,20 @@ std::string svg_line_chart(const LineChart& c) {
   for (std::size_t k = 0; k < c.series.size(); ++k) {
     const LineSeries& ls = c.series[k];
     const char* col = kLineColours[k % std::size(kLineColours)];
-    s << "<polyline class=\"series\" fill=\"none\" stroke=\"" << col << "\" points=\"";
-    for (std::size_t i = 0; i < ls.x.size() && i < ls.y.size(); ++i) {
-      if (!std::isfinite(ls.x[i]) || !std::isfinite(ls.y[i])) continue;
-      s << svg_number(kLeft + (ls.x[i] - xr.first) / (xr.second - xr.first) * pw) << ','
-        << svg_number(kTop + ph - (ls.y[i] - yr.first) / (yr.second - yr.first) * ph) << ' ';
+    if (ls.markers) {
+      s << markers(ls, col, xr, yr);
+    } else {
+      s << "<polyline class=\"series\" fill=\"none\" stroke=\"" << col << "\" points=\"";
+      for (std::size_t i = 0; i < ls.x.size() && i < ls.y.size(); ++i) {
+        if (!std::isfinite(ls.x[i]) || !std::isfinite(ls.y[i])) continue;
+        s << svg_number(kLeft + (ls.x[i] - xr.first) / (xr.second - xr.first) * pw) << ','
+          << svg_number(kTop + ph - (ls.y[i] - yr.first) / (yr.second - yr.first) * ph) << ' ';
+      }
+      s << "\"><title>" << html_escape(ls.label) << "</title></polyline>";
     }
-    s << "\"><title>" << html_escape(ls.label) << "</title></polyline><text x=\""
-      << svg_number(kWidth - kRight + 8) << "\" y=\"" << svg_number(kTop + 12 + 14.0 * k)
-      << "\" fill=\"" << col << "\">" << html_escape(ls.label) << "</text>";
+    s << "<text x=\"" << svg_number(kWidth - kRight + 8) << "\" y=\""
+      << svg_number(kTop + 12 + 14.0 * k) << "\" style=\"fill:" << col << "\">"
+      << html_escape(ls.label) << "</text>";
   }
   s << "</svg>";
   return s.str();
@@ -142,7 +162,7 @@ std::string html_document(const std::string& title, const std::string& body,
        "max-width:36em;box-shadow:2px 2px 6px #0003;pointer-events:none}\n"
        "table{border-collapse:collapse;font-size:12px} td,th{border:1px solid #ccc;"
        "padding:2px 6px} code{font-size:12px}\n"
-       "footer{margin-top:2em;font-size:11px;color:#555}\n"
+       "footer{margin-top:2em;font-size:11px;color:#555} img{max-width:100%}\n"
        "</style></head><body>\n"
     << body << "\n<div id=\"tip\" hidden></div>\n<footer>" << footer << "</footer>\n<script>\n"
     << script << "\n</script></body></html>\n";

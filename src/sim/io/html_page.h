@@ -14,6 +14,10 @@
 
 namespace pamsim {
 
+// The page `pamsim report --html` writes into a folder; a command that writes the folder's
+// other files lists it among its outputs, so that its forced rerun leaves no stale page.
+inline constexpr const char* kReportPageFile = "report.html";
+
 // A coordinate as SVG takes it: one decimal.
 std::string svg_number(double v);
 // A number for a reader: four significant digits ("n/a" when not finite).
@@ -33,13 +37,14 @@ std::string svg_heat_map(const HeatMap& map, const std::string& id);
 struct LineSeries {
   std::string label;
   std::vector<double> x, y;  // one length; NaN: a gap
+  bool markers = false;      // a marker per value (its <title> "x: y"), not a line
 };
 struct LineChart {
   std::string title, x_label, y_label;
   std::vector<LineSeries> series;
 };
-// A line chart as SVG: the series as polylines on shared axes (their ranges, a few ticks),
-// a legend of their labels.
+// A line chart as SVG: the series as polylines (or markers, class "marker") on shared axes
+// (their ranges, a few ticks), a legend of their labels.
 std::string svg_line_chart(const LineChart& chart);
 
 // A point's trials as charts: the joint's position (the log's column 1: angle_deg, or a

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/io/html_page.h"
 #include "sim/optimize/identify.h"
 
 namespace pamsim {
@@ -13,9 +14,9 @@ namespace pamsim {
 class StagedOutputs;
 
 inline const std::vector<std::string> kIdentifyOutputs = {
-    "identified.toml", "identify.csv",    "identify_fits.csv", "identify.md",     "recording_*.png",
-    "recording_*.svg", "recording_*.pdf", "plant_*.toml",      "pneumatics.toml", "plan.csv",
-    "plan.md"};
+    "identified.toml", "identify.csv",    "identify_fits.csv", "identify.md",
+    "recording_*.png", "recording_*.svg", "recording_*.pdf",   "plant_*.toml",
+    "pneumatics.toml", "plan.csv",        "plan.md",           kReportPageFile};
 
 // A polish start that ends more than kLocalMinimumMargin (identify.h) above the result's cost
 // ended in a local minimum (or stopped short of one); one that ends within it but elsewhere

@@ -347,8 +347,8 @@ TEST(CliSweepTest, ExportAndReportRefuseWhatIsNotASweepDatabase) {
   for (const std::string& args :
        {"export " + (dir / "junk.db").string() + " --csv " + (dir / "x.csv").string(),
         "export " + (dir / "absent.db").string() + " --csv " + (dir / "x.csv").string(),
-        "report " + (dir / "junk.db").string(),
-        "report " + (dir / "junk.db").string() + " --html"}) {
+        "report " + (dir / "junk.db").string(), "report " + (dir / "junk.db").string() + " --html",
+        "report " + dir.string(), "report " + dir.string() + " --html"}) {
     const auto r = run_pamsim(args);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
     EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;

@@ -1,10 +1,13 @@
 // html_page_test.cc: the pieces of a self-contained HTML page (html_page.h): text escaped,
 // JSON that cannot close its script element, a heat map's cells with their place and text,
 // and a trial's charts: one position series per trial, thinned to the limit, and the first
-// trial's commanded and chamber pressures (not the sensor's).
+// trial's commanded and chamber pressures (not the sensor's); a command's Markdown as HTML, its
+// pipe tables as tables and any raw HTML left out.
 #include "sim/io/html_page.h"
 
 #include <gtest/gtest.h>
+
+#include "sim/io/markdown_html.h"
 
 #include <string>
 
@@ -45,7 +48,8 @@ TEST(HtmlPageTest, AHeatMapsCellsSayWhereTheyLieAndWhatTheyHold) {
 
 TEST(HtmlPageTest, ATrialsChartsArePositionPerTrialAndTheFirstTrialsPressures) {
   Trajectory t;
-  t.columns = {"time_s", "angle_deg", "p_cmd_ago_MPa", "p_ago_MPa", "p_meas_ago_MPa", "force_ago_N"};
+  t.columns = {"time_s",    "angle_deg",      "p_cmd_ago_MPa",
+               "p_ago_MPa", "p_meas_ago_MPa", "force_ago_N"};
   for (int r = 0; r < 2000; ++r) {
     for (double v : {r * 0.001, r * 0.01, 0.4, 0.41, 0.42, 10.0}) t.values.push_back(v);
   }
@@ -60,6 +64,18 @@ TEST(HtmlPageTest, ATrialsChartsArePositionPerTrialAndTheFirstTrialsPressures) {
   EXPECT_EQ(charts[1].series[1].label, "p_ago_MPa");
   const std::string svg = svg_line_chart(charts[1]);
   EXPECT_EQ(count(svg, "<polyline"), 2u);
+}
+
+TEST(HtmlPageTest, MarkdownTablesBecomeTablesAndRawHtmlIsLeftOut) {
+  const std::string html = markdown_to_html(
+      "# Table V\n\nEach cell: `max / RMSE`.\n\n| method | agonist |\n| --- | --- |\n"
+      "| model | 2.6 / 1.4 (8.82 / 5.24) |\n\n- a\n- b\n\n<script>alert(1)</script>\n");
+  EXPECT_NE(html.find("<h1>Table V</h1>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<code>max / RMSE</code>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<th>method</th>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td>2.6 / 1.4 (8.82 / 5.24)</td>"), std::string::npos) << html;
+  EXPECT_EQ(count(html, "<li>"), 2u);
+  EXPECT_EQ(html.find("<script>"), std::string::npos) << html;
 }
 
 }  // namespace
