@@ -43,8 +43,9 @@ struct ReportOptions {
   bool no_plot = false;
   std::string plot_format = "png";
   bool all_columns = false;
-  bool html = false;               // --html: report.html beside the other outputs
-  std::vector<std::string> table;  // table.md's metrics (empty: default_table_metrics)
+  bool html = false;                      // --html: report.html beside the other outputs
+  std::vector<std::int64_t> html_points;  // --html-points: more points replayed on it
+  std::vector<std::string> table;         // table.md's metrics (empty: default_table_metrics)
 };
 
 const std::vector<std::string> kSweepReportOutputs = [] {
@@ -189,6 +190,12 @@ void report_folder_page(const ReportOptions& opt) {
 }
 
 void report(const ReportOptions& opt) {
+  if (!opt.html_points.empty() && !opt.html) throw InputError("--html-points needs --html");
+  const bool a_sweep = !std::filesystem::is_directory(opt.db) && !TuneDb::is_tune_database(opt.db);
+  if (!opt.html_points.empty() && !a_sweep) {
+    throw InputError(opt.db +
+                     ": --html-points replays a sweep's points; this is no sweep database");
+  }
   if (std::filesystem::is_directory(opt.db)) return report_folder_page(opt);
   if (TuneDb::is_tune_database(opt.db)) return report_tune(opt);
   const auto started = std::chrono::steady_clock::now();
@@ -205,6 +212,7 @@ void report(const ReportOptions& opt) {
       throw InputError("--table " + metric + ": not a sweep metric (one of " + names + ")");
     }
   }
+  asked_points(sweep, opt.html_points, opt.db);  // refused before anything is written
   const std::string out = report_folder(opt);
   if (!opt.force) refuse_earlier_outputs(out, kSweepReportOutputs);
   use_plot_formats(opt.plot_format);
@@ -224,9 +232,9 @@ void report(const ReportOptions& opt) {
 
     const PointSummary* best = report_best_point(opt, sweep, staged, out);
     if (opt.html) {
-      write_file_atomically(
-          staged.path(kReportPageFile),
-          sweep_page_html(db, sweep, opt.db, opt.metric, heat_map_metrics(opt, sweep)));
+      write_file_atomically(staged.path(kReportPageFile),
+                            sweep_page_html(db, sweep, opt.db, opt.metric,
+                                            heat_map_metrics(opt, sweep), opt.html_points));
       std::cout << "page: " << out << "/report.html\n";
     }
     if (!write_heat_maps(opt, sweep, best, staged, plots)) return;
@@ -259,6 +267,10 @@ void add_report_command(CLI::App& app) {
   cmd->add_flag("--html", opt->html,
                 "Also report.html: one self-contained page (heat maps whose cells show their "
                 "points' metrics, the best points' trials replayed, every point's replay line)");
+  cmd->add_option("--html-points", opt->html_points,
+                  "With --html: these points' trials replayed on the page too (point numbers, "
+                  "comma-separated)")
+      ->delimiter(',');
   cmd->add_flag("--no-plot", opt->no_plot, "Write no heat maps or figures (gnuplot not needed)");
   cmd->add_option("--table", opt->table,
                   "Metrics of table.md, comma-separated (default: the headline metrics the sweep "

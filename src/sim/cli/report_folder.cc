@@ -71,10 +71,17 @@ std::string footer(const fs::path& dir, const nlohmann::json& provenance) {
   for (const auto& arg : provenance.value("command_line", nlohmann::json::array())) {
     if (arg.is_string()) line += (line.empty() ? "" : " ") + arg.get<std::string>();
   }
+  std::string inputs;  // the files it read, with their digests where it recorded them
+  for (const auto& in : provenance.value("inputs", nlohmann::json::array())) {
+    if (in.is_object()) {
+      inputs += ", " + in.value("path", "?") + " (FNV-1a " + in.value("fnv1a64", "?") + ")";
+    }
+  }
   const nlohmann::json build = provenance.value("build", nlohmann::json::object());
   return html_escape(made + " Its run: " + line + " (pamsim " + build.value("pamsim_version", "?") +
                      ", commit " + build.value("git_commit", "?") + ", started " +
-                     provenance.value("started_utc", "?") + ").");
+                     provenance.value("started_utc", "?") + "); its file " +
+                     provenance.value("scenario_file", "?") + inputs + ".");
 }
 
 }  // namespace

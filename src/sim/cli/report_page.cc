@@ -1,7 +1,10 @@
 // report_page.cc: see report_page.h.
 #include "sim/cli/report_page.h"
 
+#include <algorithm>
 #include <cstdio>
+
+#include "base/input_error.h"
 
 #include "sim/cli/sweep_trials.h"
 #include "sim/core/trial.h"
@@ -42,20 +45,43 @@ std::string database_footer(const std::string& db_path, const std::string& db_ve
                      "). " + more);
 }
 
+std::vector<const PointSummary*> asked_points(const SweepSummary& sweep,
+                                              const std::vector<std::int64_t>& asked,
+                                              const std::string& db_path) {
+  std::vector<const PointSummary*> points;
+  for (const std::int64_t n : asked) {
+    const auto at = std::find_if(sweep.points.begin(), sweep.points.end(),
+                                 [n](const PointSummary& p) { return p.point == n; });
+    if (at == sweep.points.end()) {
+      throw InputError("--html-points " + std::to_string(n) + ": not a stored point of " + db_path +
+                       " (points 0-" + std::to_string(sweep.points_total - 1) + ")");
+    }
+    points.push_back(&*at);
+  }
+  return points;
+}
+
 std::string sweep_page_html(const ResultsDb& db, const SweepSummary& sweep,
                             const std::string& db_path, const std::string& metric,
-                            const std::vector<std::string>& heat_metrics) {
+                            const std::vector<std::string>& heat_metrics,
+                            const std::vector<std::int64_t>& asked) {
   SweepPage page;
   page.sweep = &sweep;
   page.metric = metric;
   page.heat_metrics = heat_metrics;
   page.db_path = db_path;
   page.best = best_points(sweep, metric, kReplayedBestPoints);
+  page.replayed = page.best;
+  for (const PointSummary* p : asked_points(sweep, asked, db_path)) {
+    if (std::find(page.replayed.begin(), page.replayed.end(), p) == page.replayed.end()) {
+      page.replayed.push_back(p);
+    }
+  }
   const std::map<std::int64_t, std::vector<std::int64_t>> trials = trials_by_point(db);
   for (const auto& [point, list] : trials) page.first_trial[point] = list.front();
-  for (const PointSummary* p : page.best) {
+  for (const PointSummary* p : page.replayed) {
     const auto t = trials.find(p->point);
-    if (t != trials.end()) page.best_charts[p->point] = replayed_charts(db, sweep, t->second);
+    if (t != trials.end()) page.charts[p->point] = replayed_charts(db, sweep, t->second);
   }
   char digest[17];
   std::snprintf(digest, sizeof(digest), "%016llx",
@@ -63,7 +89,7 @@ std::string sweep_page_html(const ResultsDb& db, const SweepSummary& sweep,
   page.footer_html =
       database_footer(db_path, db.meta("pamsim_version"), db.meta("git_commit"),
                       "Its base scenario " + sweep.base_path + ", FNV-1a digest " + digest +
-                          ". The best points' trials were run again when the page was made.");
+                          ". The replayed points' trials were run again when the page was made.");
   return sweep_report_html(page);
 }
 

@@ -11,7 +11,7 @@
 namespace pamsim {
 namespace {
 
-// The page's script: a hovered cell's points described in the tooltip, a best point's trials
+// The page's script: a hovered cell's points described in the tooltip, a replayed point's trials
 // opened by a click on its cell or its row's link.
 constexpr const char* kScript = R"JS(
 const data = JSON.parse(document.getElementById('page-data').textContent);
@@ -36,7 +36,7 @@ function describe(i) {
     const v = p.metrics[k];
     line(box, m + ': ' + fmt(v[0]) + ' \u00b1 ' + fmt(v[1]) + ' [' + fmt(v[2]) + ', ' + fmt(v[3]) + '], n ' + v[4]);
   });
-  line(box, p.best ? 'its trials: click the cell' : p.replay, p.best ? 'i' : 'code');
+  line(box, p.replayed ? 'its trials: click the cell' : p.replay, p.replayed ? 'i' : 'code');
   return box;
 }
 function openPoint(point) {
@@ -55,7 +55,7 @@ document.querySelectorAll('.cell').forEach(el => {
   });
   el.addEventListener('mouseleave', () => { tip.hidden = true; });
   el.addEventListener('click', () => {
-    for (const i of pointsOf(el)) if (data.points[i].best && openPoint(data.points[i].point)) return;
+    for (const i of pointsOf(el)) if (data.points[i].replayed && openPoint(data.points[i].point)) return;
   });
 });
 document.querySelectorAll('a.open-point').forEach(a => a.addEventListener('click', ev => {
@@ -81,7 +81,7 @@ nlohmann::json point_json(const SweepPage& page, const PointSummary& p) {
           {"mistrip_rate", p.mistrip_rate()},
           {"metrics", metrics},
           {"replay", replay_line(page, p)},
-          {"best", page.best_charts.count(p.point) > 0}};
+          {"replayed", page.charts.count(p.point) > 0}};
 }
 
 // Which points each map's cell (grid: "ix,iy") or marker (scattered: index) stands for
@@ -138,7 +138,7 @@ std::string points_table(const SweepPage& page) {
         << "</td>";
     }
     s << "<td>"
-      << (page.best_charts.count(p.point)
+      << (page.charts.count(p.point)
               ? "<a class=\"open-point\" href=\"#point-" + std::to_string(p.point) +
                     "\" data-point=\"" + std::to_string(p.point) + "\">replayed below</a>"
               : "<code>" + html_escape(replay_line(page, p)) + "</code>")
@@ -148,11 +148,11 @@ std::string points_table(const SweepPage& page) {
   return s.str();
 }
 
-std::string best_sections(const SweepPage& page) {
+std::string replayed_sections(const SweepPage& page) {
   std::ostringstream s;
-  for (const PointSummary* p : page.best) {
-    const auto charts = page.best_charts.find(p->point);
-    if (charts == page.best_charts.end()) continue;
+  for (const PointSummary* p : page.replayed) {
+    const auto charts = page.charts.find(p->point);
+    if (charts == page.charts.end()) continue;
     std::string setting;
     for (std::size_t a = 0; a < page.sweep->axis_keys.size(); ++a) {
       setting += (a ? ", " : "") + page.sweep->axis_keys[a] + " = " + p->axis_values[a];
@@ -177,15 +177,15 @@ std::string sweep_report_html(const SweepPage& page) {
        << "</code>.</p>\n<p>Best: " << html_escape(best_criterion(sweep, page.metric)) << ".</p>\n";
   if (sweep.axis_keys.size() >= 2) {
     body << "<h2>Heat maps</h2>\n<p>Hover a cell for its points' metrics over the seeds; click a "
-            "best point's cell for its trials.</p>\n";
+            "replayed point's cell (the best are outlined in red) for its trials.</p>\n";
     const PointSummary* best = page.best.empty() ? nullptr : page.best.front();
     for (const std::string& metric : page.heat_metrics) {
       body << svg_heat_map(sweep_heat_map(sweep, metric, best, page.metric), "map-" + metric)
            << "\n";
     }
   }
-  body << "<h2>The best points' trials</h2>\n"
-       << best_sections(page) << "<h2>Every point</h2>\n"
+  body << "<h2>Trials replayed: the best points and those asked for</h2>\n"
+       << replayed_sections(page) << "<h2>Every point</h2>\n"
        << points_table(page) << "\n<script type=\"application/json\" id=\"page-data\">"
        << page_json(page) << "</script>";
   return html_document("pamsim report: " + sweep.sweep_file, body.str(), kScript, page.footer_html);

@@ -245,6 +245,17 @@ TEST(CliSweepTest, ReportWritesHeatMapsAndABestSettingThatRuns) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--metric nope"), std::string::npos) << bad.err;
   EXPECT_FALSE(fs::exists(dir / "bad"));
+  // the page: point 0 replayed beside the best; a point the sweep has not, refused in one line
+  const auto page = run_pamsim("report " + db + " --html --html-points 0 --no-plot --out " +
+                               (dir / "page").string());
+  ASSERT_EQ(page.exit_code, 0) << page.err;
+  EXPECT_NE(read_file(dir / "page" / "report.html").find("id=\"point-0\""), std::string::npos);
+  const auto none =
+      run_pamsim("report " + db + " --html --html-points 16 --out " + (dir / "none").string());
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_EQ(line_count(none.err), 1) << none.err;
+  EXPECT_NE(none.err.find("--html-points 16: not a stored point"), std::string::npos) << none.err;
+  EXPECT_FALSE(fs::exists(dir / "none"));
 }
 
 TEST(CliSweepTest, IntegerBooleanAndStringAxesKeepTheirTypesIntoTheBestScenario) {

@@ -217,7 +217,7 @@ TEST_F(SweepReportTest, BestPointsAreRankedAndEachPointHasItsGridCell) {
 }
 
 // The page's data, read back as its script reads them: every point with its statistics, the
-// cells' points, the best flagged, a replay line for the others
+// cells' points, the replayed flagged, a replay line for the others
 TEST_F(SweepReportTest, ThePagesDataAreThePointsStatistics) {
   const pamsim::SweepSummary sweep = synthetic_summary(dir_);
   pamsim::SweepPage page;
@@ -225,7 +225,8 @@ TEST_F(SweepReportTest, ThePagesDataAreThePointsStatistics) {
   page.metric = "peak_drop_deg";
   page.heat_metrics = {"peak_drop_deg"};
   page.best = pamsim::best_points(sweep, "peak_drop_deg", 1);
-  page.best_charts[1] = {pamsim::LineChart{"joint", "time [s]", "angle_deg", {}}};
+  page.replayed = page.best;
+  page.charts[1] = {pamsim::LineChart{"joint", "time [s]", "angle_deg", {}}};
   page.first_trial = {{2, 6}};
   page.db_path = "sweep.db";
   const std::string html = pamsim::sweep_report_html(page);
@@ -237,8 +238,8 @@ TEST_F(SweepReportTest, ThePagesDataAreThePointsStatistics) {
   const int m = sweep.metric_index("peak_drop_deg");
   EXPECT_EQ(data["points"][2]["metrics"][m][0].get<double>(), 13.0);  // 12, 13, 14
   EXPECT_EQ(data["points"][2]["metrics"][m][1].get<double>(), 1.0);
-  EXPECT_TRUE(data["points"][1]["best"].get<bool>());
-  EXPECT_FALSE(data["points"][2]["best"].get<bool>());
+  EXPECT_TRUE(data["points"][1]["replayed"].get<bool>());
+  EXPECT_FALSE(data["points"][2]["replayed"].get<bool>());
   EXPECT_EQ(data["points"][2]["replay"], "pamsim replay sweep.db --trial 6");
   EXPECT_EQ(data["maps"]["map-peak_drop_deg"]["cells"]["1,0"], nlohmann::json::array({3}));
   std::size_t cells = 0;
