@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <exception>
 #include <functional>
+#include <cerrno>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -125,6 +127,15 @@ int main(int argc, char** argv) {
   } catch (const pamsim::InputError& e) {
     std::cerr << "pamsim: " << pamsim::printable_message(e.what()) << "\n";
     return 2;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // a path the user gave that cannot be one (too long, through a file, not allowed): bad
+    // input, in one line naming the path; anything else the file system says is an error
+    const int code = e.code().value();
+    const bool input =
+        code == ENAMETOOLONG || code == ENOTDIR || code == EACCES || code == EROFS || code == ELOOP;
+    std::cerr << "pamsim: " << (input ? "" : "error: ")
+              << pamsim::printable_message(e.path1().string() + ": " + e.code().message()) << "\n";
+    return input ? 2 : 1;
   } catch (const std::exception& e) {
     std::cerr << "pamsim: error: " << pamsim::printable_message(e.what()) << "\n";
     return 1;

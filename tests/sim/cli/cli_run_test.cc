@@ -23,6 +23,7 @@ using pamsim_test::CliResult;
 using pamsim_test::fresh_dir;
 using pamsim_test::line_count;
 using pamsim_test::run_pamsim;
+using pamsim_test::write_text;
 
 TEST(CliRunTest, RunWritesTrajectorySummaryAndPlot) {
   const fs::path out = fresh_dir("run_ok");
@@ -89,6 +90,19 @@ TEST(CliRunTest, BadInputIsOneLineNonZeroAndWritesNothing) {
     EXPECT_EQ(line_count(r.err), 1) << args << ": " << r.err;
     EXPECT_EQ(r.err.rfind("pamsim: ", 0), 0u) << r.err;
     EXPECT_FALSE(fs::exists(out.parent_path())) << args;
+  }
+}
+
+// An --out the file system cannot hold (a name too long, a folder through a file): bad input,
+// exit 2, one line naming the path
+TEST(CliRunTest, AnOutFolderThatCannotBeIsOneLineExitTwo) {
+  const fs::path dir = fresh_dir("run_bad_out");
+  write_text(dir / "a_file", "x\n");
+  for (const fs::path& out : {dir / std::string(300, 'a'), dir / "a_file" / "out"}) {
+    const CliResult r = run_pamsim("run scenarios/drop_mass.toml --no-plot --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << out << ": " << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(dir.string()), std::string::npos) << r.err;
   }
 }
 
