@@ -96,23 +96,31 @@ double place(double v, double lo, double hi, bool log, double length) {
 
 std::string scattered_points(const HeatMap& map, const std::string& id, double x0, double y0,
                              double width, double height, std::pair<double, double> range) {
+  if (map.x.empty()) return "";
   const auto [xlo, xhi] = std::minmax_element(map.x.begin(), map.x.end());
   const auto [ylo, yhi] = std::minmax_element(map.y.begin(), map.y.end());
+  constexpr double kInset = 10;  // the markers kept off the frame
   std::ostringstream s;
   s << "<rect x=\"" << svg_number(x0) << "\" y=\"" << svg_number(y0) << "\" width=\""
     << svg_number(width) << "\" height=\"" << svg_number(height)
     << "\" fill=\"none\" stroke=\"#888\"/>";
   for (std::size_t i = 0; i < map.x.size(); ++i) {
-    const double px = x0 + place(map.x[i], *xlo, *xhi, map.x_log, width);
-    const double py = y0 + height - place(map.y[i], *ylo, *yhi, map.y_log, height);
-    s << "<circle class=\"cell\" data-map=\"" << id << "\" data-i=\"" << i << "\" cx=\""
-      << svg_number(px) << "\" cy=\"" << svg_number(py) << "\" r=\"6\" fill=\""
-      << colour(map.values[i], range.first, range.second) << "\"><title>"
+    const double px = x0 + kInset + place(map.x[i], *xlo, *xhi, map.x_log, width - 2 * kInset);
+    const double py =
+        y0 + height - kInset - place(map.y[i], *ylo, *yhi, map.y_log, height - 2 * kInset);
+    const bool marked = map.has_mark && map.x[i] == map.mark_x && map.y[i] == map.mark_y;
+    s << "<circle class=\"cell" << (marked ? " marked" : "") << "\" data-map=\"" << id
+      << "\" data-i=\"" << i << "\" cx=\"" << svg_number(px) << "\" cy=\"" << svg_number(py)
+      << "\" r=\"6\" fill=\"" << colour(map.values[i], range.first, range.second) << "\"><title>"
       << html_escape(short_number(map.values[i])) << "</title></circle>";
   }
   s << "<text x=\"" << svg_number(x0) << "\" y=\"" << svg_number(y0 + height + 14) << "\">"
     << short_number(*xlo) << "</text><text x=\"" << svg_number(x0 + width) << "\" y=\""
-    << svg_number(y0 + height + 14) << "\" text-anchor=\"end\">" << short_number(*xhi) << "</text>";
+    << svg_number(y0 + height + 14) << "\" text-anchor=\"end\">" << short_number(*xhi)
+    << "</text><text x=\"" << svg_number(x0 - 4) << "\" y=\"" << svg_number(y0 + height)
+    << "\" text-anchor=\"end\">" << short_number(*ylo) << "</text><text x=\"" << svg_number(x0 - 4)
+    << "\" y=\"" << svg_number(y0 + 10) << "\" text-anchor=\"end\">" << short_number(*yhi)
+    << "</text>";
   return s.str();
 }
 

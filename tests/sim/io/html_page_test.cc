@@ -46,6 +46,21 @@ TEST(HtmlPageTest, AHeatMapsCellsSayWhereTheyLieAndWhatTheyHold) {
   EXPECT_NE(svg.find("<title>5</title>"), std::string::npos);
 }
 
+TEST(HtmlPageTest, AScatteredDesignsPointsAreMarkersAndTheBestIsMarked) {
+  HeatMap map;
+  map.scattered = true;
+  map.x = {20, 80, 150};
+  map.y = {0.001, 0.01, 0.004};
+  map.values = {3, 1, 2};
+  map.has_mark = true;
+  map.mark_x = 80;
+  map.mark_y = 0.01;
+  const std::string svg = svg_heat_map(map, "m2");
+  EXPECT_EQ(count(svg, "<circle class=\"cell"), 3u);
+  EXPECT_EQ(count(svg, "class=\"cell marked\" data-map=\"m2\" data-i=\"1\""), 1u);
+  EXPECT_NE(svg.find(">0.01</text>"), std::string::npos);  // the y range's top
+}
+
 TEST(HtmlPageTest, ATrialsChartsArePositionPerTrialAndTheFirstTrialsPressures) {
   Trajectory t;
   t.columns = {"time_s",    "angle_deg",      "p_cmd_ago_MPa",
