@@ -18,6 +18,7 @@ import argparse
 import math
 import os
 import sys
+import tomllib
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "examples", "identify"))
@@ -39,17 +40,11 @@ TOLERANCES = {  # name: the solver's keys as --set
 }
 
 
-# the antagonist's wall [mm], the agonist's extension friction A0 [mm^2], the valve's time
-# constant [ms], the regulator's band [kPa]: a fit of one harder arm ended at FROM, its truth
-# was TO (contact_onset_test.cc steps the same line)
-LANDING_FROM = {
-    "muscles.antagonist.plant.geometry.wall_thickness_mm": 2.586692288,
-    "muscles.agonist.plant.friction.extension.A0_mm2": 3.543786011,
-    "valve.valve_time_constant_ms": 15.66680396,
-    "valve.proportional_band_kPa": 340.0871688,
-}
-LANDING_TO = [2.58701, 3.5455, 15.7005, 340.536]
-LANDING_STEPS = 16
+# the line along which, at the model's own contact, the harder arm's landing moves by a
+# physics step (shared with tests/sim/core/contact_onset_test.cc)
+with open(os.path.join(ROOT, "examples", "identify", "landing_line.toml"), "rb") as _f:
+    LANDING = tomllib.load(_f)
+LANDING_STEPS = LANDING["steps"]
 CONTACTS = {  # name: the contact's key as --set
     "the model's own (starts at full impedance)": ["sim.contact_soft_onset_mm=0"],
     "softened over 1 mm (the example arm's)": ["sim.contact_soft_onset_mm=1"],
@@ -57,12 +52,8 @@ CONTACTS = {  # name: the contact's key as --set
 
 
 def landing_angle(pamsim, t, contact):
-    """The passive drop's angle column [deg] at fraction t of the way from LANDING_FROM to
-    LANDING_TO."""
-    sets = [
-        f"{k}={a + t * (b - a)!r}"
-        for (k, a), b in zip(LANDING_FROM.items(), LANDING_TO, strict=True)
-    ]
+    """The passive drop's angle column [deg] at fraction t of the way along the line."""
+    sets = [f"{p['key']}={p['from'] + t * (p['to'] - p['from'])!r}" for p in LANDING["parameter"]]
     sets += identify_families.DROP + ["sensors.noise_scale=0"]
     return [float(r["angle_deg"]) for r in make_recordings.trajectory(pamsim, sets + contact)]
 

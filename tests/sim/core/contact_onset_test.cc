@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <toml++/toml.h>
+
 #include "base/format.h"
 #include "sim/core/trial.h"
 #include "sim/core/trial_model.h"
@@ -31,23 +33,36 @@ TrialResult ball_drop(const std::vector<std::string>& extra) {
   return r;
 }
 
-// Two points of the harder identification family's parameters (the antagonist's wall [mm],
-// the agonist's extension friction A0 [mm^2], the valve's time constant [ms], the regulator's
-// band [kPa]) between which, at the model's own contact, the ball's landing on the basket's
-// wall moves by a physics step (a fit once ended at the first, the truth was the second).
-constexpr double kFrom[] = {2.586692288, 3.543786011, 15.66680396, 340.0871688};
-constexpr double kTo[] = {2.58701, 3.5455, 15.7005, 340.536};
-const char* const kOnsetKeys[] = {"muscles.antagonist.plant.geometry.wall_thickness_mm",
-                                  "muscles.agonist.plant.friction.extension.A0_mm2",
-                                  "valve.valve_time_constant_ms", "valve.proportional_band_kPa"};
+// The line of examples/identify/landing_line.toml: parameters between which, at the model's
+// own contact, the ball's landing on the basket's wall moves by a physics step.
+struct LandingLine {
+  std::vector<std::string> keys;
+  std::vector<double> from, to;
+  int steps = 0;
+};
 
-// The passive drop's angle [deg] at each log row, at fraction `t` of the way from kFrom to
-// kTo, with `extra` overrides.
-std::vector<double> drop_angle(double t, const std::vector<std::string>& extra) {
+LandingLine landing_line() {
+  const toml::table file =
+      toml::parse_file(std::string(PAMSIM_SOURCE_DIR) + "/examples/identify/landing_line.toml");
+  LandingLine line;
+  line.steps = static_cast<int>(file["steps"].value_or(0));
+  for (const toml::node& p : *file["parameter"].as_array()) {
+    const toml::table& t = *p.as_table();
+    line.keys.push_back(t["key"].value_or(std::string()));
+    line.from.push_back(t["from"].value_or(NAN));
+    line.to.push_back(t["to"].value_or(NAN));
+  }
+  return line;
+}
+
+// The passive drop's angle [deg] at each log row, at fraction `t` of the way along the
+// line, with `extra` overrides.
+std::vector<double> drop_angle(const LandingLine& line, double t,
+                               const std::vector<std::string>& extra) {
   std::vector<std::string> sets = {"sensors.noise_scale=0"};
-  for (int i = 0; i < 4; ++i) {
-    sets.push_back(std::string(kOnsetKeys[i]) + "=" +
-                   format_shortest(kFrom[i] + t * (kTo[i] - kFrom[i])));
+  for (std::size_t i = 0; i < line.keys.size(); ++i) {
+    sets.push_back(line.keys[i] + "=" +
+                   format_shortest(line.from[i] + t * (line.to[i] - line.from[i])));
   }
   sets.insert(sets.end(), extra.begin(), extra.end());
   const TrialResult r = ball_drop(sets);
@@ -59,15 +74,17 @@ std::vector<double> drop_angle(double t, const std::vector<std::string>& extra) 
   return out;
 }
 
-// Over 16 equal steps along the line, the largest step's RMS change of the angle over the
+// Over the line's equal steps (16), the largest step's RMS change of the angle over the
 // median step's: near 1 for a trajectory continuous in the parameters, the jump over the
 // parameters' own effect where a landing moves by a step.
 double largest_over_median_step(const std::vector<std::string>& extra) {
-  constexpr int kSteps = 16;
+  const LandingLine line = landing_line();
+  const int steps = line.steps;
+  EXPECT_EQ(line.keys.size(), 4u);
   std::vector<std::vector<double>> runs;
-  for (int k = 0; k <= kSteps; ++k) runs.push_back(drop_angle(k / double(kSteps), extra));
+  for (int k = 0; k <= steps; ++k) runs.push_back(drop_angle(line, k / double(steps), extra));
   std::vector<double> step;
-  for (int k = 0; k < kSteps; ++k) {
+  for (int k = 0; k < steps; ++k) {
     double sum = 0.0;
     for (std::size_t i = 0; i < runs[k].size(); ++i) {
       sum += (runs[k + 1][i] - runs[k][i]) * (runs[k + 1][i] - runs[k][i]);
@@ -75,8 +92,8 @@ double largest_over_median_step(const std::vector<std::string>& extra) {
     step.push_back(std::sqrt(sum / runs[k].size()));
   }
   const double largest = *std::max_element(step.begin(), step.end());
-  std::nth_element(step.begin(), step.begin() + kSteps / 2, step.end());
-  return largest / step[kSteps / 2];
+  std::nth_element(step.begin(), step.begin() + steps / 2, step.end());
+  return largest / step[steps / 2];
 }
 
 TEST(ContactOnsetTest, TheModelsOwnContactMakesALandingJump) {
