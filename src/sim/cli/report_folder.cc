@@ -62,11 +62,23 @@ nlohmann::json provenance_of(const fs::path& dir) {
   return j.is_object() ? j : nlohmann::json(nullptr);
 }
 
+std::string run_of(const nlohmann::json& provenance);
+
 // What made the page, and what made the folder (its provenance)
 std::string footer(const fs::path& dir, const nlohmann::json& provenance) {
   const std::string made =
       "Made by pamsim " PAMSIM_VERSION " from the folder " + dir.string() + ".";
   if (provenance.is_null()) return html_escape(made + " It holds no readable provenance.json.");
+  try {
+    return html_escape(made + " Its run: " + run_of(provenance) + ".");
+  } catch (const nlohmann::json::exception&) {  // a field of another type than pamsim writes
+    return html_escape(made + " Its provenance.json is not one pamsim wrote.");
+  }
+}
+
+// The run a provenance.json records: its command line, build, start, file and inputs; throws
+// nlohmann::json::exception for a field of another type
+std::string run_of(const nlohmann::json& provenance) {
   std::string line;
   for (const auto& arg : provenance.value("command_line", nlohmann::json::array())) {
     if (arg.is_string()) line += (line.empty() ? "" : " ") + arg.get<std::string>();
@@ -78,10 +90,9 @@ std::string footer(const fs::path& dir, const nlohmann::json& provenance) {
     }
   }
   const nlohmann::json build = provenance.value("build", nlohmann::json::object());
-  return html_escape(made + " Its run: " + line + " (pamsim " + build.value("pamsim_version", "?") +
-                     ", commit " + build.value("git_commit", "?") + ", started " +
-                     provenance.value("started_utc", "?") + "); its file " +
-                     provenance.value("scenario_file", "?") + inputs + ".");
+  return line + " (pamsim " + build.value("pamsim_version", "?") + ", commit " +
+         build.value("git_commit", "?") + ", started " + provenance.value("started_utc", "?") +
+         "); its file " + provenance.value("scenario_file", "?") + inputs;
 }
 
 }  // namespace

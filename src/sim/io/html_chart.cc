@@ -39,7 +39,10 @@ std::vector<double> ticks(double lo, double hi) {
     }
   }
   std::vector<double> t;
-  for (double v = std::ceil(lo / step) * step; v <= hi + 1e-9 * step; v += step) t.push_back(v);
+  // (bounded: a step below the values' resolution would not advance)
+  for (double v = std::ceil(lo / step) * step; v <= hi + 1e-9 * step && t.size() < 12; v += step) {
+    t.push_back(v);
+  }
   return t;
 }
 

@@ -367,6 +367,14 @@ TEST(CliSweepTest, ExportAndReportRefuseWhatIsNotASweepDatabase) {
   EXPECT_FALSE(fs::exists(dir / "x.csv"));
   EXPECT_FALSE(fs::exists(dir / "absent.db"));
   EXPECT_FALSE(fs::exists(dir / "report.html"));
+  // a folder whose provenance.json has fields of other types: its page still, said so
+  const fs::path odd = dir / "odd";
+  fs::create_directories(odd);
+  write_text(odd / "table5.md", "| a |\n| --- |\n| 1 |\n");
+  write_text(odd / "provenance.json", "{\"build\": \"x\", \"started_utc\": 3}\n");
+  const auto page = run_pamsim("report " + odd.string() + " --html");
+  ASSERT_EQ(page.exit_code, 0) << page.err;
+  EXPECT_NE(read_file(odd / "report.html").find("not one pamsim wrote"), std::string::npos);
 }
 
 }  // namespace
