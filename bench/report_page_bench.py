@@ -51,10 +51,14 @@ def main():
             times.append(driver.execute_script(load))
     finally:
         driver.quit()
+    with open(page, encoding="utf-8") as f:
+        html = f.read()
+    points = html.count('<details class="trials"')  # the replayed points, their series (seeds)
+    trials = sum(len(s.split("<polyline")) - 1 for s in html.split("<svg")[1:] if "joint [" in s)
     print(
         f"sweep page of 2000 trials: {os.path.getsize(page) / 1e6:.2f} MB, made in {made_s:.1f} s "
-        f"(3 best points' 15 trials replayed); opened in Chromium in {min(times):.0f} ms best, "
-        f"{statistics.median(times):.0f} ms median of {OPENS}"
+        f"({points} best points' {trials} trials replayed); opened in Chromium in "
+        f"{min(times):.0f} ms best, {statistics.median(times):.0f} ms median of {OPENS}"
     )
 
 

@@ -11,6 +11,7 @@ refused more rigs.
 import argparse
 import csv
 import os
+import sys
 
 
 def rmse_rows(folder):
@@ -37,6 +38,10 @@ def main():
     ap.add_argument("before")
     ap.add_argument("after")
     a = ap.parse_args()
+    for folder in (a.before, a.after):
+        for name in ("bands.csv", "draws.csv"):
+            if not os.path.isfile(os.path.join(folder, name)):
+                sys.exit(f"{folder}: no {name} (the folder of a `pamsim validate ... --bands` run)")
     before, after = rmse_rows(a.before), rmse_rows(a.after)
     columns = ["cell", "paper RMSE"]
     for run in ("before", "after"):

@@ -50,6 +50,8 @@ def main():
     ap.add_argument("--r2", type=float, default=0.984)
     ap.add_argument("--hysteresis", type=float, default=0.0625, help="the loop, of the range")
     a = ap.parse_args()
+    if not (0.0 < a.r2 < 1.0 and 0.0 <= a.hysteresis < 1.0):
+        raise SystemExit("--r2 must lie in (0, 1) and --hysteresis in [0, 1)")
     if r_squared(0.0, a.hysteresis) <= a.r2:
         r2 = r_squared(0.0, a.hysteresis)
         raise SystemExit(f"the loop alone lowers R^2 to {r2:.4f}: no nonlinearity is left to bound")

@@ -40,6 +40,8 @@ def trajectory(pamsim, scenario):
 def shortening_at(rows, column, t):
     """The shortening [mm] from the first row at time t, linear between rows."""
     times = [float(r["time_s"]) for r in rows]
+    if not times[0] < t <= times[-1]:
+        sys.exit(f"--datum-s: trial time {t:.3f} s lies outside the trial's ({times[-1]:.3f} s)")
     k = next(i for i, ti in enumerate(times) if ti >= t)
     l0 = float(rows[0][column])
     a, b = float(rows[k - 1][column]), float(rows[k][column])
