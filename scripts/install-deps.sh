@@ -21,6 +21,7 @@ packages=(
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev   # MP4 encoding
   gnuplot-nox                                # plots (pngcairo terminal)
   libcmark-gfm-dev libcmark-gfm-extensions-dev   # report pages: Markdown tables as HTML
+  libglfw3-dev                               # pamsim view: the live window (GLFW on GLX)
   python3                                    # scripts/*.py and the demo's summary line
 )
 # the rest: the tests, the sanitizer and fuzz builds, MPI, Slurm, the Python module, the docs
@@ -38,6 +39,7 @@ packages=(
   furo                                       # the docs' theme: a wide column, a sidebar that folds
   chromium                                   # scripts/docs_screenshot.py: the site in a 1280 px window
   chromium-driver python3-selenium           # tests/browser: report pages driven in Chromium
+  xvfb xauth                                 # tests/viewer: pamsim view on a virtual display
   jq                                         # the docs' generated blocks pick numbers from JSON
   clang-format-14                            # scripts/format.sh: the C and C++ as .clang-format says
   gcc-arm-none-eabi libnewlib-arm-none-eabi  # the embedded controller for Cortex-M (make embedded)

@@ -68,10 +68,24 @@ class ControllerConfig {
   virtual std::vector<SummaryField> summary_fields() const { return {}; }
   // A new controller for one trial.
   virtual std::unique_ptr<Controller> make_controller(const ControllerSetup& setup) const = 0;
+  // Gives `controller`, one this kind made for `setup`, these settings from its next tick,
+  // its state (filters, windows, triggers so far) kept: a scenario's `set` event, a slider
+  // of `pamsim view`. A kind without settings that change during a trial (ControllerKind::
+  // live empty) is never asked.
+  virtual void retune(Controller& controller, const ControllerSetup& setup) const;
   // Its part of the embedded controller's configuration (src/embedded/pamctl.h: kind,
   // settings, pairs) into `config`, whose estimator part the sensing fills; "" when done,
   // else the one-line reason this kind has no embedded form.
   virtual std::string embedded(const ControllerSetup& setup, pamctl_config* config) const;
+};
+
+// A setting a kind lets change during a trial (a scenario's `set` event, a slider of `pamsim
+// view`): its scenario key (whose row gives its unit and range) and the span a slider shows,
+// in the key's unit.
+struct LiveSetting {
+  std::string key;
+  double slider_min = 0.0;
+  double slider_max = 1.0;
 };
 
 // One key of a kind for `pamsim keys`: the key reference's own row (base/key_table.h).
@@ -86,6 +100,9 @@ struct ControllerKind {
                                                         const ControllerScenario& scenario)>
       read;
   std::vector<ControllerKeyDoc> docs;  // its keys, in the order `pamsim keys` lists them
+  // the settings that may change during a trial; the others (its sensor, pairs, filters)
+  // shape what the trial logs and senses and hold for the whole trial
+  std::vector<LiveSetting> live{};
 };
 
 }  // namespace pamsim

@@ -112,6 +112,23 @@ std::vector<ControllerKeyDoc> reflex_docs(bool stretch, bool tension) {
   return docs;
 }
 
+// what may change during a trial: the thresholds, gains and trigger gate (the sensor, pairs,
+// filters and windows shape the sensing and the log and hold); the sliders span Table II's
+// values several times over
+std::vector<LiveSetting> live_settings(bool stretch, bool tension) {
+  std::vector<LiveSetting> live;
+  if (stretch) {
+    live.push_back({"reflex.v_thr_mm_s", 5.0, 300.0});
+    live.push_back({"reflex.k_MPa_s_per_mm", 0.0, 0.005});
+    live.push_back({"reflex.min_tension_N", 0.0, 10.0});
+  }
+  if (tension) {
+    live.push_back({"reflex.ib.f_thr_N", 1.0, 100.0});
+    live.push_back({"reflex.ib.k_MPa_per_N", 0.0, 0.02});
+  }
+  return live;
+}
+
 }  // namespace
 
 StretchReflexControllerConfig StretchReflexScenarioConfig::bound(
@@ -166,25 +183,34 @@ std::string StretchReflexScenarioConfig::embedded(const ControllerSetup& setup,
   return "";
 }
 
+void StretchReflexScenarioConfig::retune(Controller& controller,
+                                         const ControllerSetup& setup) const {
+  dynamic_cast<StretchReflexController&>(controller).retune(bound(setup));
+}
+
 ControllerKind stretch_reflex_controller_kind() {
   const auto read = [](ConfigReader& in, const ControllerScenario& sc) {
     return read_reflexes(in, sc, true, false);
   };
-  return {"stretch_reflex", {"reflex"}, read, reflex_docs(true, false)};
+  return {"stretch_reflex", {"reflex"}, read, reflex_docs(true, false), live_settings(true, false)};
 }
 
 ControllerKind tension_reflex_controller_kind() {
   const auto read = [](ConfigReader& in, const ControllerScenario& sc) {
     return read_reflexes(in, sc, false, true);
   };
-  return {"tension_reflex", {"reflex"}, read, reflex_docs(false, true)};
+  return {"tension_reflex", {"reflex"}, read, reflex_docs(false, true), live_settings(false, true)};
 }
 
 ControllerKind stretch_tension_reflex_controller_kind() {
   const auto read = [](ConfigReader& in, const ControllerScenario& sc) {
     return read_reflexes(in, sc, true, true);
   };
-  return {"stretch_tension_reflex", {"reflex"}, read, reflex_docs(true, true)};
+  return {"stretch_tension_reflex",
+          {"reflex"},
+          read,
+          reflex_docs(true, true),
+          live_settings(true, true)};
 }
 
 }  // namespace pamsim

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <set>
+#include <stdexcept>
 
 #include "base/enum_names.h"
 #include "base/input_error.h"
@@ -132,6 +133,16 @@ StretchReflexController::StretchReflexController(const StretchReflexControllerCo
                      std::vector<std::vector<double>>(config.muscle_count)) {
   embed_controller(config_, &embedded_);
   pamctl_reset(&embedded_, &state_);
+}
+
+void StretchReflexController::retune(const StretchReflexControllerConfig& config) {
+  validate(config);
+  if (config.stretch != config_.stretch || config.tension != config_.tension ||
+      config.muscle_count != config_.muscle_count) {
+    throw std::logic_error("retune: a reflex controller keeps its kind and muscles");
+  }
+  config_ = config;
+  embed_controller(config_, &embedded_);
 }
 
 void StretchReflexController::update(const ControlInput& in, ControlOutput* out) {

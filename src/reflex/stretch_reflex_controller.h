@@ -106,6 +106,7 @@ class StretchReflexScenarioConfig final : public ControllerConfig, public Stretc
   std::vector<SummaryField> summary_fields() const override;
   std::unique_ptr<Controller> make_controller(const ControllerSetup& setup) const override;
   std::string embedded(const ControllerSetup& setup, pamctl_config* config) const override;
+  void retune(Controller& controller, const ControllerSetup& setup) const override;
 };
 
 // The kind "stretch_reflex" (listed in controller_registry.cc): its reader checks the keys
@@ -140,6 +141,10 @@ class StretchReflexController final : public Controller {
   static constexpr int kTensionTrigger = 1;
 
   void update(const ControlInput& in, ControlOutput* out) override;
+  // These settings from the next tick, the state kept (ControllerConfig::retune). Throws
+  // InputError as the constructor, and std::logic_error for another kind's reflexes (the
+  // Ia or Ib reflexes added or taken away) or other muscles.
+  void retune(const StretchReflexControllerConfig& config);
   const std::vector<std::vector<std::vector<double>>>& event_times_s() const override {
     return event_times_s_;
   }

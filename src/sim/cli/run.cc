@@ -24,6 +24,7 @@
 #include "sim/io/outputs.h"
 #include "sim/io/plot.h"
 #include "sim/io/provenance.h"
+#include "sim/view/live_session.h"  // unreproduced_live_changes
 #include "sim/io/readings_csv.h"
 #include "sim/scenario/scenario_file.h"
 #include "sim/io/staged_outputs.h"
@@ -154,6 +155,10 @@ std::string take_earlier_run(RunOptions& opt, Provenance* provenance) {
               << " (" << earlier.git_commit << "), this is " << now.pamsim_version << " ("
               << now.git_commit
               << "); its outputs may differ where the physics or defaults changed\n";
+  }
+  // a live trial's changes that no scenario can hold (pamsim view --record)
+  for (const std::string& line : unreproduced_live_changes(opt.from)) {
+    std::cerr << "pamsim: warning: " << line << "\n";
   }
   if (!opt.trials_given) opt.trials = static_cast<int>(earlier.seeds.size());
   return (fs::path(opt.from) / kResolvedScenarioFile).string();

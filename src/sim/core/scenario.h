@@ -120,6 +120,7 @@ enum class EventAction {
   kControllerOff,  // the controller passes the schedules through
   kControllerOn,
   kEnd,  // ends the trial (status ok)
+  kSet,  // gives the controller the settings `set` assigns, from this control tick on
 };
 
 struct EventSpec {
@@ -129,6 +130,11 @@ struct EventSpec {
   ConditionSpec when;
   std::string body;      // kRelease, kAddMass
   double mass_kg = 0.0;  // kAddMass
+  // kSet: "key=value" assignments of the controller's settings (the keys its kind lets change
+  // during a trial, ControllerKind::live), each from the scenario's own settings, and the
+  // controller's configuration they make, read and validated with the scenario
+  std::vector<std::string> set;
+  std::shared_ptr<const ControllerConfig> controller;
 };
 
 struct Scenario {

@@ -41,9 +41,6 @@ std::vector<MuscleSensorSpec> sensor_specs(const TrialModel& tm, const Scenario&
 
 // the scenario's controller for the bound model: its muscles, pairs and control rate are
 // given here, and only here
-ControllerSetup controller_setup(const TrialModel& tm, const Scenario& sc) {
-  return ControllerSetup{static_cast<int>(tm.muscles.size()), sc.control_hz, tm.pairs};
-}
 
 std::unique_ptr<Controller> make_controller(const TrialModel& tm, const Scenario& sc) {
   if (!sc.controller) {
@@ -304,6 +301,10 @@ TrialObservation TrialRun::observe() const {
   return o;
 }
 
+ControllerSetup controller_setup(const TrialModel& tm, const Scenario& sc) {
+  return ControllerSetup{static_cast<int>(tm.muscles.size()), sc.control_hz, tm.pairs};
+}
+
 TrialResult run_trial(const TrialModel& model, const Scenario& scenario, std::uint64_t seed,
                       const TrialOptions& options) {
   TrialRun trial(model, scenario, seed, options);
@@ -352,6 +353,25 @@ bool SteppedTrial::done() const { return state_->run->ended(); }
 TrialObservation SteppedTrial::observe() const { return state_->run->observe(); }
 
 TrialSnapshot SteppedTrial::snapshot() { return state_->run->snapshot(); }
+
+const Scenario& SteppedTrial::scenario() const { return state_->scenario; }
+
+double SteppedTrial::time_s() const { return state_->run->observe_time_s(); }
+
+bool SteppedTrial::fire_event(const std::string& name) {
+  for (std::size_t k = 0; k < state_->scenario.events.size(); ++k) {
+    if (state_->scenario.events[k].name == name) return !done() && state_->run->fire_now(k);
+  }
+  throw InputError("fire_event: the scenario has no event '" + name + "'");
+}
+
+void SteppedTrial::set_controller_enabled(bool on) { state_->run->set_controller_enabled(on); }
+
+bool SteppedTrial::controller_enabled() const { return state_->run->controller_enabled(); }
+
+void SteppedTrial::retune_controller(const ControllerConfig& config) {
+  state_->run->retune_controller(config);
+}
 
 TrialResult SteppedTrial::finish() {
   TrialResult result = state_->run->end();

@@ -141,6 +141,21 @@ class SteppedTrial {
   // The state as a TrialObserver sees it (a video's frame draws it); valid until the next
   // step, reset() or finish().
   TrialSnapshot snapshot();
+  const Scenario& scenario() const;
+  double time_s() const;  // the next control tick's time (observe().time_s)
+
+  // Live changes (`pamsim view`), each from the next control tick, exactly as the scenario's
+  // own events make them there: a `set` event at that time gives the same trial, bit for bit.
+  // Fires the scenario's event `name` now (a release: the mass drops); false when it has
+  // fired already or the trial is done; throws InputError for a name the scenario lacks.
+  bool fire_event(const std::string& name);
+  // The controller on (its reflexes) or off (the schedules pass through): controller_on/off.
+  void set_controller_enabled(bool on);
+  bool controller_enabled() const;
+  // The controller's settings from a configuration of the scenario's kind
+  // (load_controller_settings), its state kept: a `set` event.
+  void retune_controller(const ControllerConfig& config);
+
   // The summary and the log of the trial so far (ended early if not done); reset() to run
   // another.
   TrialResult finish();

@@ -39,6 +39,9 @@ class TrialData {
   bool borrowed_ = false;
 };
 
+// What a trial of `sc` on `tm` gives its controller's kind (ControllerConfig).
+ControllerSetup controller_setup(const TrialModel& tm, const Scenario& sc);
+
 // One trial from start to summary; each private method is one phase of a physics step.
 // run() is begin(), step() until it returns false, end(); SteppedTrial calls them itself.
 class TrialRun {
@@ -56,6 +59,14 @@ class TrialRun {
   // controller's); the pointer must stay valid while set.
   void set_external_commands(const std::vector<double>* p_cmd_pa) { external_pa_ = p_cmd_pa; }
   TrialObservation observe() const;
+  // Live changes (SteppedTrial's), each as the scenario's events make it at this step.
+  bool fire_now(std::size_t event);
+  void set_controller_enabled(bool on) { controller_enabled_ = on; }
+  bool controller_enabled() const { return controller_enabled_; }
+  double observe_time_s() const { return time_at(step_); }
+  void retune_controller(const ControllerConfig& config) {
+    config.retune(*controller_, controller_setup(tm_, sc_));
+  }
   // The state as an observer sees it (trial.h); valid until the next step.
   TrialSnapshot snapshot();
 

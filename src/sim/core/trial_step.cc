@@ -63,9 +63,18 @@ void TrialRun::fire(std::size_t k, double t) {
     case EventAction::kEnd:
       end_message_ = "ended by event " + e.name;
       break;
+    case EventAction::kSet:
+      retune_controller(*e.controller);
+      break;
     case EventAction::kMark:
       break;
   }
+}
+
+bool TrialRun::fire_now(std::size_t event) {
+  if (fired_[event] || ended()) return false;
+  fire(event, time_at(step_));
+  return true;
 }
 
 bool TrialRun::before_step(double t) {

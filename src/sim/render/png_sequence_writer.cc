@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "base/atomic_file.h"
 #include "base/input_error.h"
 #include "sim/render/av_handles.h"
 #include "sim/io/temp_path.h"
@@ -45,7 +46,49 @@ std::string frame_file_name(long index) {
   return name;
 }
 
+// libavcodec's PNG encoder on RGB frames of width x height; `where` names the output
+AvCodecContextPtr open_png_encoder(int width_px, int height_px, const std::string& where) {
+  quiet_ffmpeg_log();
+  const AVCodec* codec = avcodec_find_encoder(AV_CODEC_ID_PNG);
+  if (!codec) throw InputError(where + ": this FFmpeg has no PNG encoder");
+  AvCodecContextPtr encoder(avcodec_alloc_context3(codec));
+  if (!encoder) throw std::bad_alloc();
+  encoder->width = width_px;
+  encoder->height = height_px;
+  encoder->pix_fmt = AV_PIX_FMT_RGB24;
+  encoder->time_base = AVRational{1, 1};
+  encoder->compression_level = kPngCompressionLevel;
+  check_av(avcodec_open2(encoder.get(), codec, nullptr), where, "cannot open the PNG encoder");
+  return encoder;
+}
+
+// One frame (rows bottom-up) encoded as a whole PNG file into `packet`.
+void encode_png(AVCodecContext* encoder, AVFrame* frame, AVPacket* packet,
+                const unsigned char* rgb_bottom_up, long pts, const std::string& where) {
+  check_av(av_frame_make_writable(frame), where, "frame buffer");
+  // copy the rows last to first: PNG stores them top-down
+  const int row_bytes = 3 * frame->width;
+  av_image_copy_plane(frame->data[0], frame->linesize[0],
+                      rgb_bottom_up + static_cast<std::ptrdiff_t>(frame->height - 1) * row_bytes,
+                      -row_bytes, row_bytes, frame->height);
+  frame->pts = pts;
+  check_av(avcodec_send_frame(encoder, frame), where, "PNG encoding failed");
+  check_av(avcodec_receive_packet(encoder, packet), where, "PNG encoding failed");
+}
+
 }  // namespace
+
+void write_png_file(const std::string& path, const unsigned char* rgb_bottom_up, int width_px,
+                    int height_px) {
+  if (width_px <= 0 || height_px <= 0) throw InputError(path + ": image size must be > 0");
+  AvCodecContextPtr encoder = open_png_encoder(width_px, height_px, path);
+  AvFramePtr frame = alloc_frame(width_px, height_px, AV_PIX_FMT_RGB24);
+  AvPacketPtr packet(av_packet_alloc());
+  if (!packet) throw std::bad_alloc();
+  encode_png(encoder.get(), frame.get(), packet.get(), rgb_bottom_up, 0, path);
+  write_file_atomically(path, std::string(reinterpret_cast<const char*>(packet->data),
+                                          static_cast<std::size_t>(packet->size)));
+}
 
 // Members are destroyed bottom-up: the encoder goes first, then the temp folder.
 struct PngSequenceWriter::Impl {
@@ -62,7 +105,6 @@ PngSequenceWriter::PngSequenceWriter(const std::string& dir, int width_px, int h
   if (dir_.size() > 1 && dir_.back() == '/') dir_.pop_back();
   if (width_px <= 0 || height_px <= 0) throw InputError(dir_ + ": frame size must be > 0");
   check_replaceable(dir_);
-  quiet_ffmpeg_log();
   // the temp folder, beside DIR
   std::error_code ec;
   const fs::path parent = fs::path(dir_).parent_path();
@@ -71,39 +113,19 @@ PngSequenceWriter::PngSequenceWriter(const std::string& dir, int width_px, int h
   impl_ = std::make_unique<Impl>(dir_);
   Impl& x = *impl_;
 
-  // the PNG encoder on RGB frames
-  const AVCodec* codec = avcodec_find_encoder(AV_CODEC_ID_PNG);
-  if (!codec) throw InputError(dir_ + ": this FFmpeg has no PNG encoder");
-  x.encoder.reset(avcodec_alloc_context3(codec));
+  x.encoder = open_png_encoder(width_px, height_px, dir_);
   x.frame = alloc_frame(width_px, height_px, AV_PIX_FMT_RGB24);
   x.packet.reset(av_packet_alloc());
-  if (!x.encoder || !x.packet) throw std::bad_alloc();
-  x.encoder->width = width_px;
-  x.encoder->height = height_px;
-  x.encoder->pix_fmt = AV_PIX_FMT_RGB24;
-  x.encoder->time_base = AVRational{1, 1};
-  x.encoder->compression_level = kPngCompressionLevel;
-  check_av(avcodec_open2(x.encoder.get(), codec, nullptr), dir_, "cannot open the PNG encoder");
+  if (!x.packet) throw std::bad_alloc();
 }
 
 PngSequenceWriter::~PngSequenceWriter() = default;
 
 void PngSequenceWriter::write_frame(const unsigned char* rgb_bottom_up) {
   Impl& x = *impl_;
-  AVFrame* frame = x.frame.get();
-  check_av(av_frame_make_writable(frame), dir_, "frame buffer");
-
-  // copy the rows last to first: PNG stores them top-down
-  const int row_bytes = 3 * frame->width;
-  av_image_copy_plane(frame->data[0], frame->linesize[0],
-                      rgb_bottom_up + static_cast<std::ptrdiff_t>(frame->height - 1) * row_bytes,
-                      -row_bytes, row_bytes, frame->height);
-  frame->pts = frames_written_;
-  check_av(avcodec_send_frame(x.encoder.get(), frame), dir_, "PNG encoding failed");
-
+  encode_png(x.encoder.get(), x.frame.get(), x.packet.get(), rgb_bottom_up, frames_written_, dir_);
   // one packet per frame: the whole PNG file
   AVPacket* packet = x.packet.get();
-  check_av(avcodec_receive_packet(x.encoder.get(), packet), dir_, "PNG encoding failed");
   const std::string file = x.temp_dir.path() + frame_file_name(frames_written_);
   std::ofstream out(file, std::ios::binary | std::ios::trunc);
   out.write(reinterpret_cast<const char*>(packet->data), packet->size);

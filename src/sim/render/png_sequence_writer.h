@@ -3,13 +3,19 @@
 // Frames are written into a temp folder beside DIR that replaces DIR in finish(); a writer
 // destroyed before finish() removes it, so a failed run leaves no partial sequence. An
 // existing DIR is replaced only if it holds nothing but frame_*.png files (an earlier
-// sequence); a folder with anything else in it is refused, never emptied.
+// sequence); a folder with anything else in it is refused, never emptied. And one image as a
+// PNG file.
 #pragma once
 
 #include <memory>
 #include <string>
 
 namespace pamsim {
+
+// One image (width * height RGB triplets, rows bottom-up, as mjr_readPixels gives them) as
+// the PNG file `path`, written atomically (a screenshot). Throws InputError naming the path.
+void write_png_file(const std::string& path, const unsigned char* rgb_bottom_up, int width_px,
+                    int height_px);
 
 class PngSequenceWriter {
  public:

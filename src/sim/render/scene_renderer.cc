@@ -97,7 +97,9 @@ SceneRenderer::SceneRenderer(const mjModel* model, const std::string& model_path
   viewport_ = {0, 0, options.width_px, options.height_px};
 
   // GL context, then MuJoCo's scene and render context drawing offscreen
-  gl_ = create_gl_context(options.backend, options.width_px, options.height_px, options.egl_device);
+  gl_ = options.context ? options.context()
+                        : create_gl_context(options.backend, options.width_px, options.height_px,
+                                            options.egl_device);
   backdrop_ = std::make_unique<Backdrop>(*gl_);
   backdrop_geom_ = options.backdrop_geom;
   scene_.reset(new mjvScene);
@@ -139,6 +141,7 @@ std::string SceneRenderer::gl_in_use() const {
 
 void SceneRenderer::draw_scene(const mjData* data, const std::vector<Capsule>& capsules) {
   gl_->make_current();
+  mjr_setBuffer(mjFB_OFFSCREEN, context_.get());  // (a window may have drawn in its own)
   // positions from the copied qpos: after mj_step2 the caller's own are a step old
   mj_copyData(data_.get(), model_.get(), data);
   mj_fwdPosition(model_.get(), data_.get());

@@ -8,6 +8,7 @@
 #include <mujoco/mujoco.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,6 +41,10 @@ struct SceneRenderOptions {
   // the backdrop always as a scene geom (backdrop.h), never as the quad that draws it
   // faster where it can: for comparisons
   bool backdrop_geom = false;
+  // the GL context to draw in, current on return (a window's: `pamsim view`); none: a new
+  // one of `backend`. The frame is still drawn offscreen; the window shows it by
+  // mjr_blitBuffer.
+  std::function<std::unique_ptr<GlContext>()> context{};
 };
 
 // Throws InputError naming `model_path` if `model` has no camera `camera` (the message lists
@@ -88,6 +93,14 @@ class SceneRenderer {
   // in equal cells, `low` written left of it and `high` right of it.
   void draw_colour_bar(const mjrRect& bar, const std::vector<std::array<float, 3>>& colours,
                        const char* low, const char* high);
+
+  // MuJoCo's objects, for a window that draws its own UI beside the frame (`pamsim view`):
+  // the render context, the scene last drawn, the camera (fixed on the named one until the
+  // caller moves it) and the model drawn.
+  mjrContext* render_context() { return context_.get(); }
+  mjvScene* scene() { return scene_.get(); }
+  mjvCamera* camera() { return &camera_; }
+  const mjModel* model() const { return model_.get(); }
 
   // The frame drawn so far: width * height RGB triplets, rows bottom-up (OpenGL's order).
   // Valid until the next call; the buffer is reused from frame to frame.

@@ -22,6 +22,10 @@ void read_event_keys(ConfigReader& in, EventSpec* e) {
     in.check(!e->body.empty(), e->key + ".body", "is required for this action");
   }
   if (e->action == EventAction::kAddMass) read_key_rows(in, rows_named(table, {"mass_kg"}));
+  if (e->action == EventAction::kSet) {
+    read_key_rows(in, rows_named(table, {"set"}));
+    in.check(!e->set.empty(), e->key + ".set", "is required for this action");
+  }
 }
 
 // when.joint with exactly one threshold: the condition's kind and its threshold in SI

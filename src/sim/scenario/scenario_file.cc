@@ -112,6 +112,44 @@ void read_controller(ConfigReader& in, Scenario* sc) {
   sc->sensing.velocity_lowpass_hz = sc->controller->velocity_lowpass_hz;
 }
 
+// The controller `assignments` ("reflex.v_thr_mm_s=50") make of the scenario `in` read as
+// `sc`: its kind's reader on the document with them set, each a key the kind lets change
+// during a trial (ControllerKind::live). Refusals name `where` ("events.faster.set").
+std::shared_ptr<const ControllerConfig> controller_with(const ConfigReader& in, const Scenario& sc,
+                                                        const std::vector<std::string>& assignments,
+                                                        const std::string& where) {
+  const ControllerKind* kind = find_controller_kind(sc.controller_kind);
+  std::string live;
+  for (const LiveSetting& setting : kind->live) live += (live.empty() ? "" : ", ") + setting.key;
+  for (const std::string& a : assignments) {
+    const std::string key = a.substr(0, a.find('='));
+    const bool ok = std::any_of(kind->live.begin(), kind->live.end(),
+                                [&](const LiveSetting& setting) { return setting.key == key; });
+    in.check(ok, where,
+             "sets " + key + ", which cannot change during a trial (controller.kind \"" +
+                 sc.controller_kind + "\" lets " + (live.empty() ? "none" : live) + ")");
+  }
+  ConfigReader changed_in(toml_text(in.document()), in.name());
+  Scenario changed = sc;
+  try {
+    changed_in.apply_overrides(assignments);
+    read_controller(changed_in, &changed);
+  } catch (const InputError& e) {
+    std::string why = e.what();
+    if (why.rfind(in.name() + ": ", 0) == 0) why = why.substr(in.name().size() + 2);
+    in.fail(where, "is refused: " + why);
+  }
+  return changed.controller;
+}
+
+// every `set` event's controller (EventSpec::controller)
+void read_controller_changes(ConfigReader& in, Scenario* sc) {
+  for (EventSpec& e : sc->events) {
+    if (e.action == EventAction::kSet)
+      e.controller = controller_with(in, *sc, e.set, e.key + ".set");
+  }
+}
+
 void read_metrics(ConfigReader& in, Scenario* sc, bool has_drop) {
   std::vector<std::string> defaults = {"drop", "reflex", "length_estimate"};
   if (!has_drop) {
@@ -192,6 +230,7 @@ Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrid
   read_joints(in, &sc);
   read_events(in, &sc);
   read_controller(in, &sc);
+  read_controller_changes(in, &sc);
   read_sensors(in, &sc);
   read_metrics(in, &sc, has_drop);
   in.reject_unknown();
@@ -211,6 +250,14 @@ Scenario load_scenario_text(const std::string& text, const std::string& path,
                             const std::vector<std::string>& overrides) {
   ConfigReader in(text, path);
   return read_scenario(in, overrides);
+}
+
+std::shared_ptr<const ControllerConfig> load_controller_settings(
+    const std::string& text, const std::string& path, const std::vector<std::string>& overrides,
+    const std::vector<std::string>& assignments, const std::string& where) {
+  ConfigReader in(text, path);
+  const Scenario sc = read_scenario(in, overrides);
+  return controller_with(in, sc, assignments, where);
 }
 
 Scenario load_scenario_for_calibration(const std::string& path,

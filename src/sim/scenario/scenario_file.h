@@ -37,6 +37,15 @@ Scenario load_scenario(const std::string& path, const std::vector<std::string>& 
 Scenario load_scenario_text(const std::string& text, const std::string& path,
                             const std::vector<std::string>& overrides = {});
 
+// The controller of the scenario (`text` read as if from `path`, with `overrides`) given the
+// settings `assignments` ("reflex.v_thr_mm_s=50"), as a `set` event gives them (each a key
+// its kind lets change during a trial, ControllerKind::live; the rest keep the scenario's
+// values): what `pamsim view`'s sliders hand the trial. Throws InputError "<file>: <where>
+// ..." for a key that cannot change or a value its row refuses.
+std::shared_ptr<const ControllerConfig> load_controller_settings(
+    const std::string& text, const std::string& path, const std::vector<std::string>& overrides,
+    const std::vector<std::string>& assignments, const std::string& where);
+
 // For `pamsim calibrate`, which solves the line lengths: reads the scenario without its
 // calibration file (which may not exist yet) and with placeholder lines.
 Scenario load_scenario_for_calibration(const std::string& path,

@@ -259,7 +259,8 @@ KeyTable event_key_table(EventSpec* event) {
       {"add_mass", EventAction::kAddMass},
       {"controller_off", EventAction::kControllerOff},
       {"controller_on", EventAction::kControllerOn},
-      {"end", EventAction::kEnd}};
+      {"end", EventAction::kEnd},
+      {"set", EventAction::kSet}};
   std::vector<std::string> names;
   for (const auto& [name, action] : kActions) names.push_back(name);
   KeyTable t{"events.<event>", {}, {}, {}};
@@ -285,6 +286,12 @@ KeyTable event_key_table(EventSpec* event) {
                 true}};
   t.texts = {{"body", "with release or add_mass: the body released or loaded", &event->body},
              {"after", "fire only after this other event", &event->when.after}};
+  t.name_lists = {{"set",
+                   {},
+                   "with set: the controller's settings from then on, [\"key=value\", ...] as "
+                   "--set gives them (the keys `pamsim keys` marks live; the others keep the "
+                   "scenario's values)",
+                   &event->set}};
   return t;
 }
 
