@@ -123,7 +123,7 @@ std::vector<LiveSetting> live_settings(bool stretch, bool tension) {
     live.push_back({"reflex.min_tension_N", 0.0, 10.0});
   }
   if (tension) {
-    live.push_back({"reflex.ib.f_thr_N", 1.0, 100.0});
+    live.push_back({"reflex.ib.f_thr_N", 1.0, 300.0});
     live.push_back({"reflex.ib.k_MPa_per_N", 0.0, 0.02});
   }
   return live;
