@@ -24,7 +24,12 @@ SCRIPT = "0 play\n3.0 close\n"
 def frame_rate(pamsim, env, script, quality):
     done = subprocess.run(
         [pamsim, "view", "scenarios/drop_mass.toml", "--script", script, "--quality", quality],
-        env=env, capture_output=True, text=True, check=True, timeout=120)
+        env=env,
+        capture_output=True,
+        text=True,
+        check=True,
+        timeout=120,
+    )
     line = [x for x in done.stderr.splitlines() if x.startswith("pamsim view:")][0]
     rate = float(re.search(r"\(([0-9.]+) frames/s", line).group(1))
     gl = line.split("; ", 1)[1]

@@ -55,8 +55,9 @@ SESSION = """# the falling mass, watched
 
 
 def view(pamsim, env, *args, timeout=120):
-    return subprocess.run([pamsim, "view", SCENARIO, *args], env=env, capture_output=True,
-                          text=True, timeout=timeout)
+    return subprocess.run(
+        [pamsim, "view", SCENARIO, *args], env=env, capture_output=True, text=True, timeout=timeout
+    )
 
 
 def metrics(folder):
@@ -67,7 +68,7 @@ def metrics(folder):
 def scene_of_screenshot(path):
     """The scene region of a window's screenshot: right of the UI, above the figures."""
     image = np.asarray(Image.open(path).convert("RGB"), dtype=np.int16)
-    return image[:SCENE_H, image.shape[1] - SCENE_W:]
+    return image[:SCENE_H, image.shape[1] - SCENE_W :]
 
 
 def check_session(pamsim, env, out):
@@ -83,10 +84,25 @@ def check_session(pamsim, env, out):
     assert np.array_equal(a, b), "the paused state moved"
     # render's frame at t = 0.5 (10 frames per second: frame 5)
     frames = os.path.join(out, "frames")
-    subprocess.run([pamsim, "render", SCENARIO, "--png-dir", frames, "--fps", "10", "--set",
-                    "sim.duration_s=1.2", "--quiet"], check=True, capture_output=True)
-    frame = np.asarray(Image.open(os.path.join(frames, "frame_00005.png")).convert("RGB"),
-                       dtype=np.int16)
+    subprocess.run(
+        [
+            pamsim,
+            "render",
+            SCENARIO,
+            "--png-dir",
+            frames,
+            "--fps",
+            "10",
+            "--set",
+            "sim.duration_s=1.2",
+            "--quiet",
+        ],
+        check=True,
+        capture_output=True,
+    )
+    frame = np.asarray(
+        Image.open(os.path.join(frames, "frame_00005.png")).convert("RGB"), dtype=np.int16
+    )
     diff = float(np.abs(a[MIDDLE] - frame[MIDDLE]).mean())
     print(f"view_test: scene against render's frame at 0.5 s: mean |difference| {diff:.2f}")
     assert diff <= MAX_MEAN_DIFF, diff
@@ -98,19 +114,43 @@ def check_record(pamsim, out, record):
     impact = got["impact_time_s"]
     assert DROP_S < impact < DROP_S + FALL_S + 0.05, impact  # not the scenario's 1.0 s
     rerun = os.path.join(out, "rerun")
-    subprocess.run([pamsim, "run", "--from", record, "--out", rerun, "--no-plot"], check=True,
-                   capture_output=True)
-    with open(os.path.join(record, "trajectory.csv"), "rb") as f1, \
-            open(os.path.join(rerun, "trajectory.csv"), "rb") as f2:
+    subprocess.run(
+        [pamsim, "run", "--from", record, "--out", rerun, "--no-plot"],
+        check=True,
+        capture_output=True,
+    )
+    with (
+        open(os.path.join(record, "trajectory.csv"), "rb") as f1,
+        open(os.path.join(rerun, "trajectory.csv"), "rb") as f2,
+    ):
         assert f1.read() == f2.read(), "run --from differs from the record"
+
     # the threshold the slider gave is the next trigger's
     def trigger(folder, threshold):
-        subprocess.run([pamsim, "run", SCENARIO, "--out", folder, "--no-plot", "--set",
-                        f"drop.time_s={DROP_S}", "--set", f"reflex.v_thr_mm_s={threshold}",
-                        "--set", "sim.duration_s=1.6"], check=True, capture_output=True)
+        subprocess.run(
+            [
+                pamsim,
+                "run",
+                SCENARIO,
+                "--out",
+                folder,
+                "--no-plot",
+                "--set",
+                f"drop.time_s={DROP_S}",
+                "--set",
+                f"reflex.v_thr_mm_s={threshold}",
+                "--set",
+                "sim.duration_s=1.6",
+            ],
+            check=True,
+            capture_output=True,
+        )
         return metrics(folder)["first_trigger_time_s"]
-    lowered, default = trigger(os.path.join(out, "low"), THRESHOLD), trigger(
-        os.path.join(out, "default"), 70)
+
+    lowered, default = (
+        trigger(os.path.join(out, "low"), THRESHOLD),
+        trigger(os.path.join(out, "default"), 70),
+    )
     assert got["first_trigger_time_s"] == lowered != default, (got, lowered, default)
 
 
@@ -120,8 +160,12 @@ def check_sigterm(pamsim, env, out):
     with open(script, "w") as f:
         f.write(f"0.2 pause\n0.2 screenshot {shot}\n0.2 wait 60\n")
     record = os.path.join(out, "held")
-    p = subprocess.Popen([pamsim, "view", SCENARIO, "--script", script, "--record", record],
-                         env=env, stderr=subprocess.PIPE, text=True)
+    p = subprocess.Popen(
+        [pamsim, "view", SCENARIO, "--script", script, "--record", record],
+        env=env,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
     deadline = time.monotonic() + 60
     while not os.path.exists(shot) and time.monotonic() < deadline and p.poll() is None:
         time.sleep(0.1)
@@ -129,8 +173,13 @@ def check_sigterm(pamsim, env, out):
     err = p.communicate(timeout=30)[1]
     assert p.returncode == 128 + signal.SIGTERM, (p.returncode, err)
     files = sorted(os.listdir(record))
-    assert files == ["provenance.json", "scenario.toml", "summary.json", "trajectory.csv",
-                     "view_changes.json"], files
+    assert files == [
+        "provenance.json",
+        "scenario.toml",
+        "summary.json",
+        "trajectory.csv",
+        "view_changes.json",
+    ], files
 
 
 def check_bad_input(pamsim, env, out):
@@ -138,8 +187,11 @@ def check_bad_input(pamsim, env, out):
         "a bad line": ("0.1 pause\n0.5 jump\n", [], "bad.txt:2: unknown command 'jump'"),
         "a bad value": ("0.1 set reflex.v_thr_mm_s -5\n", [], "bad.txt:1"),
         "a fixed key": ("0.1 set reflex.sensor 1\n", [], "cannot change during a trial"),
-        "a scenario that cannot run": ("0.1 pause\n", ["--set", "sim.timestep_s=-1"],
-                                       "sim.timestep_s"),
+        "a scenario that cannot run": (
+            "0.1 pause\n",
+            ["--set", "sim.timestep_s=-1"],
+            "sim.timestep_s",
+        ),
     }
     record = os.path.join(out, "never")
     for what, (text, extra, expected) in cases.items():

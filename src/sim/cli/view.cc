@@ -1,8 +1,8 @@
 // view.cc: `pamsim view SCENARIO [--set key=value ...] [--script FILE] [--record DIR]
-// [--quality fast|default] [--force]`: the scenario's trial live in a window (sim/view/viewer.h); with --script the
-// timed key presses and slider moves of a file (sim/view/view_script.h); with --record the
-// trial shown last as a run folder that `pamsim run --from DIR` runs again. Everything the
-// command reads is checked before the window opens: a bad scenario, script line or record
+// [--quality fast|default] [--force]`: the scenario's trial live in a window (sim/view/viewer.h);
+// with --script the timed key presses and slider moves of a file (sim/view/view_script.h); with
+// --record the trial shown last as a run folder that `pamsim run --from DIR` runs again. Everything
+// the command reads is checked before the window opens: a bad scenario, script line or record
 // folder is one line and exit 2, with nothing written. SIGINT/SIGTERM close the window as
 // its button does (the record is still written), and the command exits with the signal's
 // code.
@@ -48,8 +48,8 @@ void view(const ViewCliOptions& opt) {
   char rate[64];
   std::snprintf(rate, sizeof(rate), "%.1f", stats.frames_per_s);
   std::cerr << "pamsim view: " << stats.frames << " frames in " << stats.wall_s << " s (" << rate
-            << " frames/s, figures on), " << stats.simulated_s << " s of trials shown; "
-            << stats.gl << "\n";
+            << " frames/s, figures on), " << stats.simulated_s << " s of trials shown; " << stats.gl
+            << "\n";
   if (!opt.record.empty()) std::cerr << "pamsim: record in " << opt.record << "\n";
   if (stop_signal() != 0) throw CommandExit(128 + stop_signal());
 }

@@ -19,7 +19,9 @@ std::string& glfw_error() {
   return error;
 }
 
-void keep_glfw_error(int, const char* description) { glfw_error() = description ? description : ""; }
+void keep_glfw_error(int, const char* description) {
+  glfw_error() = description ? description : "";
+}
 
 class WindowContext final : public GlContext {
  public:
@@ -79,7 +81,9 @@ GlfwWindow::~GlfwWindow() {
   glfwTerminate();
 }
 
-std::unique_ptr<GlContext> GlfwWindow::context() { return std::make_unique<WindowContext>(window_); }
+std::unique_ptr<GlContext> GlfwWindow::context() {
+  return std::make_unique<WindowContext>(window_);
+}
 
 void GlfwWindow::set_size(int width, int height) {
   glfwSetWindowSize(window_, width, height);

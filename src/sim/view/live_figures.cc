@@ -16,10 +16,9 @@ namespace {
 enum Figure { kJoint = 0, kPressure = 1, kVelocity = 2, kWindows = 3 };
 
 // the muscles' colours, as the video's plots: red, blue, then more
-constexpr float kColours[][3] = {{0.95f, 0.30f, 0.25f}, {0.30f, 0.55f, 1.0f},
-                                 {0.35f, 0.85f, 0.35f}, {0.95f, 0.80f, 0.25f},
-                                 {0.80f, 0.45f, 0.95f}, {0.30f, 0.85f, 0.85f},
-                                 {0.95f, 0.55f, 0.20f}, {0.85f, 0.85f, 0.85f}};
+constexpr float kColours[][3] = {
+    {0.95f, 0.30f, 0.25f}, {0.30f, 0.55f, 1.0f},  {0.35f, 0.85f, 0.35f}, {0.95f, 0.80f, 0.25f},
+    {0.80f, 0.45f, 0.95f}, {0.30f, 0.85f, 0.85f}, {0.95f, 0.55f, 0.20f}, {0.85f, 0.85f, 0.85f}};
 
 void set_line(mjvFigure* f, int line, const std::string& name, const float rgb[3], float pale) {
   std::snprintf(f->linename[line], sizeof(f->linename[line]), "%s", name.c_str());

@@ -58,7 +58,8 @@ void LiveSession::write_record(const std::string& dir) {
       "# The scenario of a trial watched live with pamsim view " PAMSIM_VERSION " from " + path_ +
       ",\n# its live changes as keys (view_changes.json lists them); pamsim run --from "
       "<this folder> runs it again\n";
-  RecordedScenario recorded = load_recorded_scenario(text_, path_, provenance.overrides, dir, header);
+  RecordedScenario recorded =
+      load_recorded_scenario(text_, path_, provenance.overrides, dir, header);
   recorded.scenario.path = path_;
   provenance.inputs = fingerprint_inputs(recorded.input_paths);
   const TrialResult result = trial_->finish();

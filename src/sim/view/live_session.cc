@@ -149,10 +149,12 @@ void LiveSession::set_setting(const std::string& key, double value, const std::s
     if (s.key == key) s.value = value;
   }
   std::string list;
-  for (const std::string& a : assignments) list += (list.empty() ? "" : ", ") + toml_value_text(toml::value<std::string>(a));
+  for (const std::string& a : assignments)
+    list += (list.empty() ? "" : ", ") + toml_value_text(toml::value<std::string>(a));
   const std::string e = event_key();
   record("set " + key + "=" + format_shortest(value),
-         {e + ".action=set", e + ".when.at_s=" + format_shortest(time_s()), e + ".set=[" + list + "]"});
+         {e + ".action=set", e + ".when.at_s=" + format_shortest(time_s()),
+          e + ".set=[" + list + "]"});
 }
 
 }  // namespace pamsim

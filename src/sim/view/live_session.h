@@ -22,9 +22,9 @@ namespace pamsim {
 
 // One live change, as the record lists it (view_changes.json).
 struct LiveChange {
-  long tick = 0;       // the control tick it applies from (0 at t = 0)
-  double time_s = 0;   // that tick's time
-  std::string what;    // "drop", "reflex off", "set reflex.v_thr_mm_s=50"
+  long tick = 0;      // the control tick it applies from (0 at t = 0)
+  double time_s = 0;  // that tick's time
+  std::string what;   // "drop", "reflex off", "set reflex.v_thr_mm_s=50"
   // the scenario keys that hold it (--set form); empty where none can (`why_not` says)
   std::vector<std::string> keys;
   std::string why_not;

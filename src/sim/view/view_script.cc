@@ -18,13 +18,17 @@ namespace {
 
 constexpr double kMaxWaitS = 60.0;
 
-const std::map<std::string, ScriptCommand> kCommands = {
-    {"pause", ScriptCommand::kPause},           {"play", ScriptCommand::kPlay},
-    {"step", ScriptCommand::kStep},             {"slow", ScriptCommand::kSlow},
-    {"restart", ScriptCommand::kRestart},       {"drop", ScriptCommand::kDrop},
-    {"reflex", ScriptCommand::kReflex},         {"set", ScriptCommand::kSet},
-    {"screenshot", ScriptCommand::kScreenshot}, {"wait", ScriptCommand::kWait},
-    {"close", ScriptCommand::kClose}};
+const std::map<std::string, ScriptCommand> kCommands = {{"pause", ScriptCommand::kPause},
+                                                        {"play", ScriptCommand::kPlay},
+                                                        {"step", ScriptCommand::kStep},
+                                                        {"slow", ScriptCommand::kSlow},
+                                                        {"restart", ScriptCommand::kRestart},
+                                                        {"drop", ScriptCommand::kDrop},
+                                                        {"reflex", ScriptCommand::kReflex},
+                                                        {"set", ScriptCommand::kSet},
+                                                        {"screenshot", ScriptCommand::kScreenshot},
+                                                        {"wait", ScriptCommand::kWait},
+                                                        {"close", ScriptCommand::kClose}};
 
 [[noreturn]] void fail(const std::string& where, const std::string& problem) {
   throw InputError(where + ": " + problem);
@@ -32,7 +36,8 @@ const std::map<std::string, ScriptCommand> kCommands = {
 
 double number_of(const std::string& where, const std::string& word, const std::string& what) {
   double v = 0.0;
-  if (!parse_finite_cell(word, &v)) fail(where, what + " must be a finite number, got '" + word + "'");
+  if (!parse_finite_cell(word, &v))
+    fail(where, what + " must be a finite number, got '" + word + "'");
   return v;
 }
 
@@ -73,7 +78,8 @@ void read_argument(const std::vector<std::string>& words, const LiveSession& ses
       break;
     case ScriptCommand::kReflex:
       count(1, 1, "reflex <on|off>");
-      if (words[0] != "on" && words[0] != "off") fail(where, "reflex takes on or off, got '" + words[0] + "'");
+      if (words[0] != "on" && words[0] != "off")
+        fail(where, "reflex takes on or off, got '" + words[0] + "'");
       line->on = words[0] == "on";
       break;
     case ScriptCommand::kSet:
@@ -86,9 +92,11 @@ void read_argument(const std::vector<std::string>& words, const LiveSession& ses
       count(1, 1, "screenshot <FILE.png>");
       line->text = words[0];
       const std::filesystem::path file(line->text);
-      if (file.extension() != ".png") fail(where, "a screenshot is a .png file, got '" + words[0] + "'");
+      if (file.extension() != ".png")
+        fail(where, "a screenshot is a .png file, got '" + words[0] + "'");
       const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
-      if (!std::filesystem::is_directory(folder)) fail(where, "no folder " + folder.string() + " for the screenshot");
+      if (!std::filesystem::is_directory(folder))
+        fail(where, "no folder " + folder.string() + " for the screenshot");
       break;
     }
     case ScriptCommand::kWait:
@@ -122,8 +130,9 @@ std::vector<ScriptLine> read_view_script(const std::string& path, const LiveSess
     line.at_s = number_of(line.where, words[0], "the time");
     if (line.at_s < 0) fail(line.where, "the time must be >= 0, got '" + words[0] + "'");
     if (line.at_s < last_s) {
-      fail(line.where, "the time " + words[0] + " is before the line above's (times never decrease "
-                       "but after a restart)");
+      fail(line.where, "the time " + words[0] +
+                           " is before the line above's (times never decrease "
+                           "but after a restart)");
     }
     const auto command = kCommands.find(words[1]);
     if (command == kCommands.end()) {

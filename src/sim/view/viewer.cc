@@ -34,8 +34,8 @@ std::string fixed(double v, int decimals) {
 ViewerWindow::ViewerWindow(LiveSession& session, const ViewOptions& options)
     : session_(session),
       options_(options),
-      window_("pamsim view: " + session.scenario().path,
-              kSceneWidthPx + mjui_themeSpacing(0).total, kSceneHeightPx + kFiguresHeightPx),
+      window_("pamsim view: " + session.scenario().path, kSceneWidthPx + mjui_themeSpacing(0).total,
+              kSceneHeightPx + kFiguresHeightPx),
       figures_(muscle_labels(session.model()), session.model().joint.hinge) {
   SceneRenderOptions scene;
   scene.width_px = kSceneWidthPx;
@@ -64,7 +64,8 @@ void ViewerWindow::step_once() {
 }
 
 void ViewerWindow::advance(double wall_dt_s) {
-  if (!paused_ && !session_.done()) debt_s_ = std::min(debt_s_ + wall_dt_s / (1 << slow_index_), kMaxDebtS);
+  if (!paused_ && !session_.done())
+    debt_s_ = std::min(debt_s_ + wall_dt_s / (1 << slow_index_), kMaxDebtS);
   const double period = session_.control_period_s();
   while (run_script()) {
     if (paused_ || session_.done() || debt_s_ < period || window_.should_close()) break;
@@ -92,28 +93,42 @@ bool ViewerWindow::run_script() {
 
 void ViewerWindow::run_line(const ScriptLine& line) {
   switch (line.command) {
-    case ScriptCommand::kPause: paused_ = 1; break;
-    case ScriptCommand::kPlay: paused_ = 0; break;
+    case ScriptCommand::kPause:
+      paused_ = 1;
+      break;
+    case ScriptCommand::kPlay:
+      paused_ = 0;
+      break;
     case ScriptCommand::kStep:
       for (long k = 0; k < (line.has_number ? static_cast<long>(line.number) : 1); ++k) step_once();
       break;
-    case ScriptCommand::kSlow: set_slow(static_cast<int>(std::lround(std::log2(line.number)))); break;
+    case ScriptCommand::kSlow:
+      set_slow(static_cast<int>(std::lround(std::log2(line.number))));
+      break;
     case ScriptCommand::kRestart:
       restart(line.has_number ? static_cast<std::uint64_t>(line.number) : session_.seed());
       break;
-    case ScriptCommand::kDrop: session_.drop_now(); break;
-    case ScriptCommand::kReflex: session_.set_reflex(line.on); break;
+    case ScriptCommand::kDrop:
+      session_.drop_now();
+      break;
+    case ScriptCommand::kReflex:
+      session_.set_reflex(line.on);
+      break;
     case ScriptCommand::kSet:
       for (std::size_t k = 0; k < settings_.size(); ++k) {
         if (session_.settings()[k].key == line.text) settings_[k] = line.number;
       }
       break;
-    case ScriptCommand::kScreenshot: screenshot_ = line.text; break;
+    case ScriptCommand::kScreenshot:
+      screenshot_ = line.text;
+      break;
     case ScriptCommand::kWait:
       wait_until_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                        std::chrono::duration<double>(line.number));
       break;
-    case ScriptCommand::kClose: window_.close(); break;
+    case ScriptCommand::kClose:
+      window_.close();
+      break;
   }
   sync_ui();
 }

@@ -26,7 +26,7 @@ namespace pamsim {
 struct ViewOptions {
   std::vector<ScriptLine> script;
   RenderQuality quality = RenderQuality::kDefault;  // the scene's, as `pamsim render --quality`
-  std::function<bool()> stop_requested;  // polled every frame (SIGTERM)
+  std::function<bool()> stop_requested;             // polled every frame (SIGTERM)
 };
 
 struct ViewStats {

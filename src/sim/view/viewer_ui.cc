@@ -38,15 +38,14 @@ void ViewerWindow::make_ui() {
   ui_.color = mjui_themeColor(0);
   ui_.rectid = kUiRect;
   ui_.auxid = 0;
-  std::vector<mjuiDef> defs = {
-      item(mjITEM_SECTION, "Trial", nullptr, ""),
-      item(mjITEM_BUTTON, kPlay, nullptr, ""),
-      item(mjITEM_BUTTON, kStep, nullptr, ""),
-      item(mjITEM_BUTTON, kRestart, nullptr, ""),
-      item(mjITEM_EDITINT, "Seed", &seed_field_, "1 0 1000000000"),
-      item(mjITEM_BUTTON, kDrop, nullptr, ""),
-      item(mjITEM_CHECKINT, "Reflex", &reflex_, ""),
-      item(mjITEM_RADIO, "Speed", &slow_index_, "1\n1/2\n1/4\n1/8\n1/16")};
+  std::vector<mjuiDef> defs = {item(mjITEM_SECTION, "Trial", nullptr, ""),
+                               item(mjITEM_BUTTON, kPlay, nullptr, ""),
+                               item(mjITEM_BUTTON, kStep, nullptr, ""),
+                               item(mjITEM_BUTTON, kRestart, nullptr, ""),
+                               item(mjITEM_EDITINT, "Seed", &seed_field_, "1 0 1000000000"),
+                               item(mjITEM_BUTTON, kDrop, nullptr, ""),
+                               item(mjITEM_CHECKINT, "Reflex", &reflex_, ""),
+                               item(mjITEM_RADIO, "Speed", &slow_index_, "1\n1/2\n1/4\n1/8\n1/16")};
   if (!settings_.empty()) defs.push_back(item(mjITEM_SECTION, "Controller", nullptr, ""));
   for (std::size_t k = 0; k < settings_.size(); ++k) {
     const LiveSettingValue& s = session_.settings()[k];
@@ -97,20 +96,33 @@ void ViewerWindow::on_event(mjuiState& state) {
 
 void ViewerWindow::on_key(int key) {
   switch (key) {
-    case ' ': toggle_pause(); break;
+    case ' ':
+      toggle_pause();
+      break;
     case mjKEY_RIGHT:
       if (paused_) step_once();
       break;
-    case 'D': session_.drop_now(); break;
-    case 'R': session_.set_reflex(!session_.reflex_on()); break;
-    case '-': set_slow(slow_index_ + 1); break;
-    case '=': set_slow(slow_index_ - 1); break;
-    case mjKEY_BACKSPACE: restart(static_cast<std::uint64_t>(seed_field_)); break;
+    case 'D':
+      session_.drop_now();
+      break;
+    case 'R':
+      session_.set_reflex(!session_.reflex_on());
+      break;
+    case '-':
+      set_slow(slow_index_ + 1);
+      break;
+    case '=':
+      set_slow(slow_index_ - 1);
+      break;
+    case mjKEY_BACKSPACE:
+      restart(static_cast<std::uint64_t>(seed_field_));
+      break;
     case mjKEY_ESCAPE:
       free_camera_ = false;
       scene_->renderer().camera()->type = mjCAMERA_FIXED;
       break;
-    default: return;
+    default:
+      return;
   }
   sync_ui();
 }

@@ -68,8 +68,8 @@ TEST(LiveChangesTest, ReflexOffIsAControllerOffEvent) {
   const Scenario sc = load_scenario(kReflex, kShort);
   const TrialResult live =
       stepped_with(sc, 0.45, [](SteppedTrial& t) { t.set_controller_enabled(false); });
-  const TrialResult held = run(with(kShort, {"events.off.action=controller_off",
-                                             "events.off.when.at_s=0.45"}));
+  const TrialResult held =
+      run(with(kShort, {"events.off.action=controller_off", "events.off.when.at_s=0.45"}));
   expect_same_trial(live, held);
   // and it is not the trial with the reflex on (the drop at 0.4 triggers it by then)
   EXPECT_NE(std::memcmp(live.trajectory.values.data(), run(kShort).trajectory.values.data(),
@@ -80,8 +80,8 @@ TEST(LiveChangesTest, ReflexOffIsAControllerOffEvent) {
 TEST(LiveChangesTest, ASliderIsASetEventAndASetAtZeroIsTheKey) {
   const std::vector<std::string> set = {"reflex.v_thr_mm_s=150", "reflex.k_MPa_s_per_mm=0.002"};
   const Scenario sc = load_scenario(kReflex, kShort);
-  const auto config = load_controller_settings(read_text_file(kReflex), kReflex, kShort, set,
-                                               "the slider");
+  const auto config =
+      load_controller_settings(read_text_file(kReflex), kReflex, kShort, set, "the slider");
   const TrialResult live =
       stepped_with(sc, 0.2, [&](SteppedTrial& t) { t.retune_controller(*config); });
   const TrialResult held = run(with(kShort, {"events.tune.action=set", "events.tune.when.at_s=0.2",
@@ -100,7 +100,8 @@ TEST(LiveChangesTest, TheNextTriggerUsesTheNewThreshold) {
   const double base = first_trigger(run(kShort));
   ASSERT_GT(base, 0.4);
   const auto set_at = [](double at_s, const std::string& v_thr) {
-    return std::vector<std::string>{"events.t.action=set", "events.t.when.at_s=" + std::to_string(at_s),
+    return std::vector<std::string>{"events.t.action=set",
+                                    "events.t.when.at_s=" + std::to_string(at_s),
                                     "events.t.set=[\"reflex.v_thr_mm_s=" + v_thr + "\"]"};
   };
   EXPECT_TRUE(std::isnan(first_trigger(run(with(kShort, set_at(0.3, "5000"))))) ||
@@ -128,9 +129,8 @@ TEST(LiveChangesTest, BadSetEventsAreRefusedNamingTheEvent) {
   const std::string negative = refusal(with(at, {"events.s.set=[\"reflex.v_thr_mm_s=-3\"]"}));
   EXPECT_NE(negative.find("events.s.set is refused"), std::string::npos) << negative;
   EXPECT_NE(negative.find("reflex.v_thr_mm_s"), std::string::npos) << negative;
-  const std::string none =
-      refusal(with(at, {"events.s.set=[\"reflex.v_thr_mm_s=3\"]"}),
-              std::string(PAMSIM_SOURCE_DIR) + "/scenarios/reaching.toml");
+  const std::string none = refusal(with(at, {"events.s.set=[\"reflex.v_thr_mm_s=3\"]"}),
+                                   std::string(PAMSIM_SOURCE_DIR) + "/scenarios/reaching.toml");
   EXPECT_NE(none.find("lets none"), std::string::npos) << none;
 }
 

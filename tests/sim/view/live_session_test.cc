@@ -103,8 +103,8 @@ TEST(LiveSessionTest, AScriptsBadLinesAreRefusedNamingTheLine) {
     return std::string("accepted");
   };
   EXPECT_EQ(refusal("# fine\n0 pause\n0.5 step 3\n1 slow 4\n1 set reflex.v_thr_mm_s 50\n"
-                    "1.2 restart 7\n0.1 drop\n0.2 reflex off\n0.3 screenshot " + dir +
-                    "/a.png\n0.3 wait 1\n0.4 close\n"),
+                    "1.2 restart 7\n0.1 drop\n0.2 reflex off\n0.3 screenshot " +
+                    dir + "/a.png\n0.3 wait 1\n0.4 close\n"),
             "accepted");
   const std::string where = dir + "/s.txt:2: ";
   EXPECT_EQ(refusal("0 pause\n0.5 jump\n").rfind(where + "unknown command 'jump'", 0), 0u);
