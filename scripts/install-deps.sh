@@ -40,6 +40,7 @@ packages=(
   chromium                                   # scripts/docs_screenshot.py: the site in a 1280 px window
   chromium-driver python3-selenium           # tests/browser: report pages driven in Chromium
   xvfb xauth                                 # tests/viewer: pamsim view on a virtual display
+  socat                                      # tests/hil: a serial line as a pseudo-terminal pair
   jq                                         # the docs' generated blocks pick numbers from JSON
   clang-format-14                            # scripts/format.sh: the C and C++ as .clang-format says
   gcc-arm-none-eabi libnewlib-arm-none-eabi  # the embedded controller for Cortex-M (make embedded)

@@ -33,4 +33,8 @@ void add_plot_format_option(CLI::App* cmd, std::string* plot_format);
 void add_overrides_option(CLI::App* cmd, std::vector<std::string>* overrides,
                           const std::string& help);
 
+// "renders/<scenario name>", and for each override "__<key's last part>-<value>": the default
+// output folder of a command that runs a scenario (run, hil).
+std::string default_out_dir(const std::string& scenario, const std::vector<std::string>& overrides);
+
 }  // namespace pamsim

@@ -30,6 +30,7 @@ void add_keys_command(CLI::App& app);        // the scenario keys, documented
 void add_replay_command(CLI::App& app);      // one trial of a sweep database, again, in full
 void add_controller_command(CLI::App& app);  // the controller as embedded C: export, replay
 void add_view_command(CLI::App& app);        // a trial live in a window (GLFW, MuJoCo's UI)
+void add_hil_command(CLI::App& app);         // a controller board closing the loop (UDP, serial)
 
 // A CLI11 check for a --seed bound to an unsigned integer, which CLI11 would otherwise wrap
 // from a negative number: "" (valid) or the one-line problem.

@@ -110,6 +110,7 @@ int main(int argc, char** argv) {
   pamsim::add_replay_command(app);
   pamsim::add_controller_command(app);
   pamsim::add_view_command(app);
+  pamsim::add_hil_command(app);
 
   try {
     app.parse(argc, argv);

@@ -25,6 +25,7 @@ struct Metric {
 
 struct TrialSummary {
   std::string status = "ok";  // "ok" | "diverged" | "failed" (a sweep trial that could not run)
+                              // | "link_lost" (`pamsim hil`: the controller went silent)
   std::string message;        // why, when not ok; or which event ended the trial
   std::uint64_t seed = 0;
   std::vector<Metric> metrics;

@@ -137,6 +137,16 @@ struct EventSpec {
   std::shared_ptr<const ControllerConfig> controller;
 };
 
+// hil.*: what `pamsim hil` does when a controller board's command comes late or not at all
+// (the trial itself never reads them; scenario/scenario_hil.cc holds their rows).
+enum class SafeCommand { kVent, kHold };
+struct HilSpec {
+  int hold_ticks = 3;                     // the last command held this many ticks, then
+  SafeCommand safe = SafeCommand::kVent;  // every valve vented (0 Pa), or the last held on
+  double command_timeout_s = 0.1;         // lockstep: how long the plant waits for a command
+  double link_lost_s = 1.0;               // no packet for this long (wall clock): the run ends
+};
+
 struct Scenario {
   std::string path;  // the scenario file (for messages and summaries)
 
@@ -178,6 +188,7 @@ struct Scenario {
   SensingConfig sensing;
 
   std::vector<std::string> metrics;  // metric sets (metrics.h), in output order
+  HilSpec hil;                       // hil.*
 
   // The keys that may change its trial model, as its reader read them: the file's path, then
   // the document with its overrides, less the keys trial_only_key (trial_model.h) names, as

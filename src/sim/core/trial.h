@@ -83,10 +83,35 @@ struct ControlLog {
   }
 };
 
+// One control tick as a controller outside the process is handed it (`pamsim hil`): the
+// embedded controller's inputs (src/embedded/pamctl.h), and the commands the scenario's own
+// controller gave, which still runs beside it.
+struct ControlTick {
+  long index = 0;  // 0 at t = 0
+  double time_s = 0.0;
+  bool enabled = true;
+  const std::vector<MuscleReading>* readings = nullptr;  // raw: pressure_sensor_v, gauge_v,
+                                                         // fiber_rate_m_s
+  const std::vector<double>* p_tp_pa = nullptr;          // the scheduled goal pressures
+  const std::vector<double>* controller_pa = nullptr;    // the scenario's controller's
+};
+
+// Where the valve commands come from when not from the scenario's controller: at every
+// control tick, after that controller ran, the source writes the commands to apply into
+// *p_cmd_pa (one per muscle, model order). Returning false ends the trial at that tick with
+// status "link_lost" and *why (its log holds the ticks before it).
+class CommandSource {
+ public:
+  virtual ~CommandSource() = default;
+  virtual bool command(const ControlTick& tick, std::vector<double>* p_cmd_pa,
+                       std::string* why) = 0;
+};
+
 struct TrialOptions {
   bool keep_trajectory = true;
-  TrialObserver* observer = nullptr;  // not owned; none by default (nothing to pay for)
-  ControlLog* control_log = nullptr;  // not owned; filled at every control tick when given
+  TrialObserver* observer = nullptr;        // not owned; none by default (nothing to pay for)
+  ControlLog* control_log = nullptr;        // not owned; filled at every control tick when given
+  CommandSource* command_source = nullptr;  // not owned; the commands from outside
 };
 
 // The controller `scenario` runs on `model` as the embedded controller holds it (its

@@ -80,6 +80,7 @@ class TrialRun {
   bool condition_holds(std::size_t k) const;
   void hold_bodies();
   bool first_window_open() const;  // a window of the first window channel is open
+  bool source_command(double t);   // options_.command_source's commands; false: it ended
   void log_control(double t);      // one tick into options_.control_log
   void log_row(double t);
   void show_observer();
@@ -126,6 +127,7 @@ class TrialRun {
   TrialObservation tick_;  // the state the log's row is read from (trial_channels.h)
   std::vector<double> row_;
   std::vector<double> pressure_pa_, command_pa_;
+  std::vector<double> source_pa_;  // the command source's commands
   double first_trigger_s_ = std::numeric_limits<double>::quiet_NaN();  // for the observer
   std::vector<double> step_force_n_;  // per muscle, this physics step's pull (sensors)
   std::vector<std::array<double, 3>> hold_pos_;

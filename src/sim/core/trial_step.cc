@@ -150,7 +150,10 @@ bool TrialRun::control_tick(double t) {
     if (std::isnan(first_trigger_s_) && first_window_open()) {
       first_trigger_s_ = time_at(step_);  // recorded: the exact decimal time
     }
-    const std::vector<double>& p_cmd = external_pa_ ? *external_pa_ : out_.p_cmd_pa;
+    if (options_.command_source && !source_command(t)) return false;
+    const std::vector<double>& p_cmd = options_.command_source ? source_pa_
+                                       : external_pa_          ? *external_pa_
+                                                               : out_.p_cmd_pa;
     for (std::size_t i = 0; i < n_; ++i) pneumatics_.set_command(static_cast<int>(i), p_cmd[i]);
     if (options_.control_log) log_control(t);
   } catch (const std::exception& e) {
@@ -159,6 +162,21 @@ bool TrialRun::control_tick(double t) {
   }
   log_row(time_at(step_));
   return true;
+}
+
+bool TrialRun::source_command(double t) {
+  ControlTick tick;
+  tick.index = step_ / control_every_;
+  tick.time_s = time_at(step_);
+  tick.enabled = controller_enabled_;
+  tick.readings = &readings_;
+  tick.p_tp_pa = &p_tp_pa_;
+  tick.controller_pa = &out_.p_cmd_pa;
+  source_pa_ = out_.p_cmd_pa;
+  std::string why;
+  if (options_.command_source->command(tick, &source_pa_, &why)) return true;
+  set_status("link_lost", why, t);
+  return false;
 }
 
 bool TrialRun::first_window_open() const {

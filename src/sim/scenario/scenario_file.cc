@@ -15,6 +15,7 @@
 #include "sim/scenario/scenario_key_docs.h"  // trial_only_key
 #include "sim/scenario/scenario_key_docs.h"
 #include "sim/scenario/scenario_reading.h"
+#include "sim/scenario/scenario_hil.h"
 #include "sim/scenario/scenario_key_tables.h"
 
 namespace pamsim {
@@ -233,6 +234,7 @@ Scenario read_scenario(ConfigReader& in, const std::vector<std::string>& overrid
   read_controller_changes(in, &sc);
   read_sensors(in, &sc);
   read_metrics(in, &sc, has_drop);
+  read_hil(in, &sc);
   in.reject_unknown();
   // (pamsim calibrate's reading has placeholder lines: it shares no model with the others)
   if (lines_needed) sc.model_keys = model_keys(in);

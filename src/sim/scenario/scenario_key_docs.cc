@@ -3,6 +3,7 @@
 // value on to another file's rows: pneumatics.<table>.<field> and a muscle's plant given as a
 // table of the plant file's fields (muscles.<actuator>.plant.*), whose lines are here.
 #include "sim/scenario/scenario_key_docs.h"
+#include "sim/scenario/scenario_hil.h"
 #include "sim/scenario/scenario_key_tables.h"
 #include "sim/scenario/schedule_key_tables.h"
 
@@ -153,6 +154,11 @@ std::vector<KeyDoc> time_and_drop_docs() {
   return key_table_docs({sim_key_table(&scenario, &max_steps), drop_key_table(&drop)});
 }
 
+std::vector<KeyDoc> hil_docs() {
+  HilSpec defaults;  // the rows' defaults are the struct's own
+  return key_table_docs({hil_key_table(&defaults)});
+}
+
 std::vector<KeyDoc> sensor_docs() {
   SensorConfig defaults;  // the rows' defaults are the struct's own
   return key_table_docs({sensor_key_table(&defaults)});
@@ -197,7 +203,8 @@ std::vector<KeyDoc> all_docs() {
   std::vector<KeyDoc> docs;
   for (const std::vector<KeyDoc>& part :
        {model_docs(), schedule_docs(), valve_docs(), joint_docs(), time_and_drop_docs(),
-        body_and_hold_docs(), event_docs(), controller_docs(), sensor_docs(), instrument_docs()}) {
+        body_and_hold_docs(), event_docs(), controller_docs(), sensor_docs(), instrument_docs(),
+        hil_docs()}) {
     docs.insert(docs.end(), part.begin(), part.end());
   }
   return docs;

@@ -61,7 +61,8 @@ std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
         "events.b.after=\"a\"", "events.c.when.joint=\"shoulder\"", "events.c.when.below_deg=-60",
         "events.d.when.joint=\"shoulder\"", "events.d.when.above_deg=0",
         "events.e.when.body=\"ball\"", "events.e.when.below_z_m=-1", "events.f.when.at_s=0.7",
-        "events.f.action=\"set\"", "events.f.set=[\"reflex.v_thr_mm_s=50\"]"}},
+        "events.f.action=\"set\"", "events.f.set=[\"reflex.v_thr_mm_s=50\"]", "hil.hold_ticks=5",
+        "hil.safe_command=\"hold\"", "hil.command_timeout_ms=50", "hil.link_lost_s=2"}},
       {s + "reaching.toml",  // the long forms: plant, label, ramp; holds by position
        {"muscles.agonist.command={kind=\"constant\", MPa=0.4}",
         "muscles.antagonist.plant.geometry.wall_thickness_mm=3.0",
