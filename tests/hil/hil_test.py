@@ -198,7 +198,7 @@ def check_killed(pamsim, out, board):
         ["--udp", f"127.0.0.1:{port}"],
         folder,
         *["--set", "hil.link_lost_s=0.5", "--set", "hil.command_timeout_ms=50"],
-        *["--set", "sim.duration_s=60", "--set", "drop.time_s=1"],
+        *["--set", "sim.duration_s=300", "--set", "drop.time_s=1"],
     )
     time.sleep(0.3)
     controller = subprocess.Popen([board, "--udp", f"127.0.0.1:{port}"])

@@ -32,10 +32,10 @@ struct Read {
   std::vector<std::string> overrides;
 };
 
-// Scenarios that, together, make the reader ask for every key it knows.
+// Scenarios that, together, make the reader ask for every key it knows (a table schedule's
+// among them, from dir/schedule.csv, which the caller writes).
 std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
   const std::string s = kSource + "/scenarios/";
-  write_text(dir / "schedule.csv", "time_s,MPa\n0,0.4\n1,0.5\n");
   return {
       {s + "drop_mass.toml", {}},  // the 0.1 shorthands, drop, reflex, sensors
       {s + "drop_mass_fiber.toml", {}},
@@ -97,6 +97,7 @@ std::vector<Read> every_kind_of_scenario(const fs::path& dir) {
 
 TEST(ScenarioKeyDocsTest, TheDocumentedKeysAreExactlyTheKeysTheReaderAsksFor) {
   const fs::path dir = fresh_dir("keys_every");
+  write_text(dir / "schedule.csv", "time_s,MPa\n0,0.4\n1,0.5\n");
   std::set<std::string> documented;
   for (const pamsim::KeyDoc& d : pamsim::scenario_key_docs()) {
     EXPECT_TRUE(documented.insert(d.key).second) << "documented twice: " << d.key;
