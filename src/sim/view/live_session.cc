@@ -102,6 +102,8 @@ void LiveSession::restart(std::uint64_t seed) {
   }
 }
 
+bool LiveSession::has_mass_to_drop() const { return release_event(scenario_) != nullptr; }
+
 bool LiveSession::drop_now() {
   const EventSpec* release = release_event(scenario_);
   if (!release || !trial_->fire_event(release->name)) return false;

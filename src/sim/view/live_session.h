@@ -68,6 +68,7 @@ class LiveSession {
   // Drops the mass now (fires the scenario's first release event); false when there is none
   // left to drop (released already, or the scenario holds no mass).
   bool drop_now();
+  bool has_mass_to_drop() const;  // the scenario holds a release event (the leg's do not)
   void set_reflex(bool on);
   bool reflex_on() const { return trial_->controller_enabled(); }
   // A controller setting (`key` of settings(), `value` in its unit). Throws InputError

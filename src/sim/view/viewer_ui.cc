@@ -38,12 +38,14 @@ void ViewerWindow::make_ui() {
   ui_.color = mjui_themeColor(0);
   ui_.rectid = kUiRect;
   ui_.auxid = 0;
+  mjuiDef drop = item(mjITEM_BUTTON, kDrop, nullptr, "");
+  drop.state = session_.has_mass_to_drop() ? 1 : 0;  // (greyed out: the leg drops no mass)
   std::vector<mjuiDef> defs = {item(mjITEM_SECTION, "Trial", nullptr, ""),
                                item(mjITEM_BUTTON, kPlay, nullptr, ""),
                                item(mjITEM_BUTTON, kStep, nullptr, ""),
                                item(mjITEM_BUTTON, kRestart, nullptr, ""),
                                item(mjITEM_EDITINT, "Seed", &seed_field_, "1 0 1000000000"),
-                               item(mjITEM_BUTTON, kDrop, nullptr, ""),
+                               drop,
                                item(mjITEM_CHECKINT, "Reflex", &reflex_, ""),
                                item(mjITEM_RADIO, "Speed", &slow_index_, "1\n1/2\n1/4\n1/8\n1/16")};
   if (!settings_.empty()) defs.push_back(item(mjITEM_SECTION, "Controller", nullptr, ""));

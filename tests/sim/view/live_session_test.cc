@@ -77,6 +77,8 @@ TEST(LiveSessionTest, ADropOnAConditionIsMarkedAndNamed) {
   LiveSession s(kReaching, {"events.let_go.action=release", "events.let_go.body=ball",
                             "events.let_go.when.joint=shoulder",
                             "events.let_go.when.below_deg=-170", "sim.duration_s=1"});
+  EXPECT_TRUE(s.has_mass_to_drop());
+  EXPECT_FALSE(LiveSession(kReaching, {}).has_mass_to_drop());  // its ball is held, never let go
   step_to(s, 0.25);
   ASSERT_TRUE(s.drop_now());
   const std::string record = temp_dir("condition");
